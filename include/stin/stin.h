@@ -1,0 +1,428 @@
+/*
+ * stin — shadows, surface detail and image-based CSG on whatever OpenGL is there.
+ *
+ * stin is a C99 static library. It links no GL and no platform library and never
+ * touches the heap: the application owns the GL context, hands stin a function
+ * that resolves GL entry points and a block of memory, and stin does the rest.
+ *
+ * QUICK START
+ *
+ *     stin_desc desc = {0};                    // zero means "default" everywhere
+ *     desc.get_proc_address = my_get_proc;     // e.g. eglGetProcAddress wrapped
+ *     size_t bytes = stin_memory_size(&desc);
+ *     void *block = malloc(bytes);             // any memory, 16-byte aligned
+ *     stin_context *ctx;
+ *     if (stin_create(&desc, block, bytes, &ctx) != STIN_OK) fail();
+ *     stin_mesh ball;
+ *     stin_mesh_desc md = {0};
+ *     md.positions = pos; md.normals = nrm; md.vertex_count = nv;
+ *     md.indices = idx; md.index_count = ni;
+ *     stin_create_mesh(ctx, &md, &ball);
+ *     stin_frame_desc fd = {0};                // fill view, projection, viewport
+ *     stin_begin_frame(ctx, &fd);
+ *     stin_add_light(ctx, &light);
+ *     stin_draw(ctx, ball, transform, &material);
+ *     stin_end_frame(ctx);                     // runs the passes of the chosen tier
+ *     stin_destroy(ctx);                       // GL objects go; the block is yours
+ *
+ * TIERS
+ *   STIN_TIER_GL1  fixed function, GL 1.1 + stencil at the least; uses GL 1.3/1.4
+ *                  extensions where present. Per-vertex (Gouraud) lighting.
+ *   STIN_TIER_GL2  GLSL 1.10/1.20 on a GL 2.x (or compatibility) context.
+ *                  Per-pixel lighting.
+ *   STIN_TIER_GL4  GLSL 1.50+ on a GL 3.2+ context (core or compatibility),
+ *                  geometry shaders available. Per-pixel lighting.
+ * desc.tier = STIN_TIER_AUTO picks the highest tier the context runs. Any other
+ * value forces that tier; if the context (after desc.caps_mask) cannot run it,
+ * stin_create fails with STIN_ERROR_UNSUPPORTED and logs the missing
+ * capabilities by name. stin never changes a forced tier silently.
+ * Inside a tier every feature walks an ordered fallback chain; each step down
+ * is logged (STIN_LOG_FALLBACK) and can be read back with stin_query_choice().
+ *
+ * LIGHTING MODEL (all tiers, and the test reference)
+ * The OpenGL fixed-function equation with a local viewer, evaluated per vertex
+ * on GL1 and per pixel on GL2/GL4:
+ *   c = ambient * albedo
+ *     + sum_i att_i * spot_i * ( max(N.L,0) * light_i * albedo
+ *                              + [N.L>0] * max(N.H,0)^shininess * light_i * specular )
+ *   att  = 1 / (k0 + k1 d + k2 d^2) for point and spot lights, 1 for directional
+ *   spot = max(-L.D, 0)^exponent inside the cone, 0 outside
+ *   light_i = colour * intensity;  H = normalize(L + V)
+ * Colour is linear; alpha is the material's opacity. Per-vertex results are
+ * clamped to [0,1] before interpolation (as GL does); per-pixel at the end.
+ *
+ * GL STATE
+ * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
+ * viewport, and on return leaves these at their GL defaults: depth test off,
+ * depth mask on, depth func LESS, blending off, stencil test off, stencil mask
+ * all ones, colour mask all on, cull face off, scissor off, current program 0,
+ * texture unit 0 active with no texture bound, array buffer 0, vertex array 0,
+ * lighting off (GL1), all client arrays disabled (GL1). The viewport and the
+ * framebuffer binding stay as the frame set them; the caller's matrices (GL1
+ * matrix stacks) are restored. Clear colour, clear depth and polygon offset are
+ * overwritten. Every other piece of GL state is left as the caller had it.
+ * stin_create_mesh/stin_create_texture change buffer and texture bindings of
+ * unit 0 (left at 0). No call other than these touches GL.
+ *
+ * MEMORY
+ * stin_memory_size(&desc) returns the bytes a configuration needs; the block
+ * passed to stin_create must be at least that big (else STIN_ERROR_OUT_OF_MEMORY
+ * and a log line saying how many bytes are needed). All capacities live in the
+ * block. A full pool is a logged error that drops the item.
+ *
+ * THREADS: a context is used from the thread that owns its GL context.
+ */
+#ifndef STIN_H
+#define STIN_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define STIN_VERSION_MAJOR 0
+#define STIN_VERSION_MINOR 1
+
+/* ---- results ------------------------------------------------------------ */
+typedef enum stin_result {
+    STIN_OK = 0,
+    STIN_ERROR_INVALID_ARGUMENT, /* NULL pointer, bad enum, bad size */
+    STIN_ERROR_OUT_OF_MEMORY,    /* memory block smaller than stin_memory_size() */
+    STIN_ERROR_CAPACITY,         /* a pool from the desc is full; the item was dropped */
+    STIN_ERROR_UNSUPPORTED,      /* the context cannot run the forced tier/technique */
+    STIN_ERROR_GL,               /* missing entry point, GL error, shader failure */
+    STIN_ERROR_INVALID_HANDLE,   /* stale or foreign handle */
+    STIN_ERROR_INVALID_MESH,     /* index out of range, NaN/Inf, all triangles degenerate */
+    STIN_ERROR_INVALID_STATE     /* call out of order, e.g. draw outside a frame */
+} stin_result;
+
+const char *stin_result_name(stin_result r);
+
+/* ---- log items (one list: enum always, text too) ------------------------ */
+#define STIN_LOG_ITEMS(X)                                                           \
+    X(NONE, "no message")                                                           \
+    X(ARENA_TOO_SMALL, "memory block too small")                                    \
+    X(POOL_FULL, "pool full, item dropped")                                         \
+    X(MISSING_ENTRY_POINT, "GL entry point did not load")                           \
+    X(TIER_UNSUPPORTED, "forced tier needs capabilities the context lacks")         \
+    X(TECHNIQUE_UNSUPPORTED, "forced technique needs capabilities the context lacks") \
+    X(TIER_SELECTED, "tier selected")                                               \
+    X(TECHNIQUE_SELECTED, "technique selected")                                     \
+    X(FALLBACK, "feature fell back")                                                \
+    X(SHADER_COMPILE, "shader failed to compile")                                   \
+    X(SHADER_LINK, "shader program failed to link")                                 \
+    X(GL_ERROR, "GL reported an error")                                             \
+    X(BAD_ARGUMENT, "invalid argument")                                             \
+    X(BAD_HANDLE, "invalid handle")                                                 \
+    X(MESH_INDEX_RANGE, "mesh index out of range")                                  \
+    X(MESH_NOT_FINITE, "mesh has NaN or Inf")                                       \
+    X(MESH_DEGENERATE, "mesh has degenerate triangles")                             \
+    X(MESH_NOT_MANIFOLD, "mesh is not a closed 2-manifold")                         \
+    X(FRAME_STATE, "frame call out of order")                                       \
+    X(CAPS, "capabilities")
+
+typedef enum stin_log_item {
+#define STIN_X_(id, text) STIN_LOG_##id,
+    STIN_LOG_ITEMS(STIN_X_)
+#undef STIN_X_
+    STIN_LOG_ITEM_COUNT
+} stin_log_item;
+
+typedef enum stin_log_level {
+    STIN_LOG_LEVEL_ERROR = 0,
+    STIN_LOG_LEVEL_WARNING,
+    STIN_LOG_LEVEL_INFO
+} stin_log_level;
+
+const char *stin_log_item_text(stin_log_item item);
+
+/* message is a NUL-terminated line valid during the call only. */
+typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item,
+                            const char *message);
+
+/* ---- capabilities -------------------------------------------------------
+ * One bit per capability stin can use. A capability is present when the GL
+ * version or one of the listed extensions provides it AND every entry point it
+ * needs loaded. desc.caps_mask hides capabilities to emulate weaker hardware.
+ * X(id, name, min core version as major*10+minor (0 = never core), extensions)
+ */
+#define STIN_CAP_LIST(X)                                                              \
+    X(STENCIL, "stencil buffer", 11, "")                                              \
+    X(MULTITEXTURE, "multitexture", 13, "GL_ARB_multitexture")                        \
+    X(TEXTURE_ENV_COMBINE, "texture_env_combine", 13,                                 \
+      "GL_ARB_texture_env_combine GL_EXT_texture_env_combine")                        \
+    X(TEXTURE_ENV_DOT3, "texture_env_dot3", 13,                                       \
+      "GL_ARB_texture_env_dot3 GL_EXT_texture_env_dot3")                              \
+    X(TEXTURE_CUBE_MAP, "cube maps", 13, "GL_ARB_texture_cube_map")                   \
+    X(SEPARATE_SPECULAR, "separate specular colour", 12, "GL_EXT_separate_specular_color") \
+    X(DEPTH_TEXTURE, "depth textures", 14, "GL_ARB_depth_texture")                    \
+    X(SHADOW, "shadow compare", 14, "GL_ARB_shadow")                                  \
+    X(STENCIL_WRAP, "stencil wrap", 14, "GL_EXT_stencil_wrap")                        \
+    X(STENCIL_TWO_SIDE, "two-sided stencil", 0, "GL_EXT_stencil_two_side")            \
+    X(SEPARATE_STENCIL, "separate stencil", 20, "GL_ATI_separate_stencil")           \
+    X(DEPTH_CLAMP, "depth clamp", 32, "GL_ARB_depth_clamp GL_NV_depth_clamp")         \
+    X(VBO, "vertex buffer objects", 15, "GL_ARB_vertex_buffer_object")                \
+    X(GLSL, "GLSL 1.10 shaders", 20, "")                                              \
+    X(FBO, "framebuffer objects", 30, "GL_ARB_framebuffer_object GL_EXT_framebuffer_object") \
+    X(FLOAT_TEXTURE, "float textures", 30, "GL_ARB_texture_float")                    \
+    X(VAO, "vertex array objects", 30, "GL_ARB_vertex_array_object")                  \
+    X(GEOMETRY_SHADER, "geometry shaders (GLSL 1.50)", 32, "")                        \
+    X(TESSELLATION, "tessellation shaders", 40, "GL_ARB_tessellation_shader")         \
+    X(VERTEX_TEXTURE_FETCH, "vertex texture fetch", 0, "")                            \
+    X(OCCLUSION_QUERY, "occlusion queries", 15, "GL_ARB_occlusion_query")             \
+    X(COMPUTE, "compute shaders", 43, "GL_ARB_compute_shader")                        \
+    X(FIXED_FUNCTION, "fixed-function pipeline", 11, "")
+
+typedef enum stin_cap {
+#define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
+    STIN_CAP_LIST(STIN_X_)
+#undef STIN_X_
+    STIN_CAP_COUNT
+} stin_cap;
+
+#define STIN_CAP_BIT(cap) ((uint64_t)1 << (cap))
+
+typedef enum stin_gl_profile {
+    STIN_GL_PROFILE_COMPATIBILITY = 0, /* includes every pre-3.2 context */
+    STIN_GL_PROFILE_CORE
+} stin_gl_profile;
+
+typedef struct stin_caps {
+    int gl_major, gl_minor;       /* parsed from GL_VERSION */
+    int glsl_major, glsl_minor;   /* 0.0 when there is no GLSL */
+    stin_gl_profile profile;
+    uint64_t present;             /* STIN_CAP_BIT()s after desc.caps_mask */
+    uint64_t hidden;              /* bits the driver has but caps_mask hid */
+    int max_texture_size;
+    int max_texture_units;        /* fixed-function units (GL1), 1 without multitexture */
+    int max_texture_image_units;  /* fragment shader samplers, 0 without GLSL */
+    int max_vertex_texture_units;
+    int max_lights;               /* fixed-function lights, 0 on core profiles */
+    int stencil_bits, depth_bits;
+    int max_draw_buffers;
+    int max_geometry_output_vertices;
+    char renderer[64];            /* GL_RENDERER, truncated */
+} stin_caps;
+
+const char *stin_cap_name(stin_cap cap);
+
+/* ---- tiers, features, techniques ---------------------------------------- */
+typedef enum stin_tier {
+    STIN_TIER_AUTO = 0,
+    STIN_TIER_GL1 = 1,
+    STIN_TIER_GL2 = 2,
+    STIN_TIER_GL4 = 4
+} stin_tier;
+
+const char *stin_tier_name(stin_tier tier);
+
+typedef enum stin_feature {
+    STIN_FEATURE_LIGHTING = 0,
+    STIN_FEATURE_SHADOWS,
+    STIN_FEATURE_SURFACE,
+    STIN_FEATURE_COUNT
+} stin_feature;
+
+const char *stin_feature_name(stin_feature f);
+
+/* X(id, name, feature, tier it belongs to) — each feature's chain is this
+ * list's order, best first, filtered by the tier ceiling and the caps. */
+#define STIN_TECHNIQUE_LIST(X)                                             \
+    X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
+    X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
+    X(LIGHTING_GLSL110, "glsl110-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL2) \
+    X(LIGHTING_FIXED, "fixed-function", STIN_FEATURE_LIGHTING, STIN_TIER_GL1)      \
+    X(SHADOWS_OFF, "off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)             \
+    X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)
+
+typedef enum stin_technique {
+#define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
+    STIN_TECHNIQUE_LIST(STIN_X_)
+#undef STIN_X_
+    STIN_TECH_COUNT
+} stin_technique;
+
+const char *stin_technique_name(stin_technique t);
+/* Looks a technique up by its name ("fixed-function", "off", ...); STIN_TECH_NONE if unknown. */
+stin_technique stin_technique_from_name(const char *name);
+
+typedef struct stin_choice {
+    stin_technique technique;
+    char reason[160]; /* why this one; names the capability that made it fall back */
+} stin_choice;
+
+/* ---- context ------------------------------------------------------------ */
+typedef void *(*stin_get_proc_fn)(void *user, const char *name);
+
+typedef struct stin_desc {
+    stin_get_proc_fn get_proc_address; /* required */
+    void *get_proc_user;
+    stin_log_fn log;                   /* optional; default prints nothing */
+    void *log_user;
+    stin_tier tier;                    /* default AUTO: best the context runs */
+    uint64_t caps_mask;                /* STIN_CAP_BIT()s to hide; default 0 */
+    int max_gl_version;                /* e.g. 14 to treat the context as GL 1.4; 0 = as reported */
+    stin_technique techniques[STIN_FEATURE_COUNT]; /* forced technique per feature; NONE = auto */
+    /* capacities (0 = default) */
+    uint32_t max_meshes;               /* default 64 */
+    uint32_t max_textures;             /* default 64 */
+    uint32_t max_draws;                /* per frame, default 1024 */
+    uint32_t max_lights;               /* per frame, default 8, at most 32 */
+    uint32_t max_vertices;             /* all meshes together, default 262144 */
+    uint32_t max_triangles;            /* all meshes together, default 262144 */
+    uint32_t max_mesh_triangles;       /* one mesh, sizes creation scratch; default 65536 */
+    uint32_t max_texture_bytes;        /* staging for texture creation, default 4 MiB */
+} stin_desc;
+
+typedef struct stin_context stin_context;
+
+/* Bytes the configuration needs (the desc with defaults applied). 0 on a bad desc. */
+size_t stin_memory_size(const stin_desc *desc);
+
+/* Creates a context in the caller's block. The GL context must be current.
+ * Detects capabilities, selects the tier and the technique per feature. */
+stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
+                        stin_context **out);
+
+/* Deletes GL objects. The memory block can be reused or freed afterwards. */
+void stin_destroy(stin_context *ctx);
+
+/* The desc with every default filled in. */
+stin_desc stin_query_desc(const stin_context *ctx);
+const stin_caps *stin_query_caps(const stin_context *ctx);
+stin_tier stin_query_tier(const stin_context *ctx);
+stin_choice stin_query_choice(const stin_context *ctx, stin_feature feature);
+
+/* Detects capabilities of the current context without creating a stin context
+ * (for tools that print them). caps_mask and max_gl_version as in stin_desc. */
+stin_result stin_detect_caps(stin_get_proc_fn get_proc, void *user, uint64_t caps_mask,
+                             int max_gl_version, stin_caps *out);
+/* Best tier the caps run; writes the capabilities missing for `tier` into
+ * `missing` (comma separated, may be NULL). Returns 1 if `tier` can run. */
+int stin_tier_supported(const stin_caps *caps, stin_tier tier, char *missing, size_t size);
+stin_tier stin_best_tier(const stin_caps *caps);
+
+/* Exact token match against the context's extension list (GL_EXTENSIONS or
+ * glGetStringi). Reports what the driver says, before caps_mask. */
+int stin_has_extension(const stin_context *ctx, const char *name);
+
+/* ---- meshes ------------------------------------------------------------- */
+typedef struct { uint32_t id; } stin_mesh;
+typedef struct { uint32_t id; } stin_texture;
+
+typedef struct stin_mesh_desc {
+    const float *positions;   /* 3 floats per vertex, required */
+    const float *normals;     /* 3 per vertex; default: area-weighted face normals */
+    const float *uvs;         /* 2 per vertex; default 0 (no tangents without them) */
+    uint32_t vertex_count;
+    const uint32_t *indices;  /* 3 per triangle, counter-clockwise front faces */
+    uint32_t index_count;
+} stin_mesh_desc;
+
+typedef struct stin_mesh_info {
+    uint32_t vertex_count, triangle_count;
+    uint32_t degenerate_dropped;   /* zero-area triangles removed at creation */
+    uint32_t open_edges;           /* edges with one incident triangle */
+    uint32_t nonmanifold_edges;    /* edges with more than two */
+    int closed_manifold;           /* 1 when every edge has exactly two opposite triangles */
+    float bounds_min[3], bounds_max[3];
+} stin_mesh_info;
+
+/* Validates (indices in range, finite values, degenerate triangles dropped and
+ * counted), computes adjacency, manifold status and tangents, uploads. */
+stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin_mesh *out);
+stin_result stin_query_mesh(const stin_context *ctx, stin_mesh mesh, stin_mesh_info *out);
+/* Neighbour triangle across edge e (0..2: v0v1, v1v2, v2v0) of triangle t, or
+ * UINT32_MAX for an open or non-manifold edge. */
+stin_result stin_mesh_adjacency(const stin_context *ctx, stin_mesh mesh, uint32_t t,
+                                uint32_t out_neighbours[3]);
+/* Tangent (xyz) and handedness (w = +1/-1) of a vertex. */
+stin_result stin_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uint32_t vertex,
+                              float out_tangent[4]);
+void stin_destroy_mesh(stin_context *ctx, stin_mesh mesh);
+
+/* ---- textures ----------------------------------------------------------- */
+typedef enum stin_texture_kind {
+    STIN_TEXTURE_ALBEDO = 0, /* RGBA8, sRGB-free linear colour */
+    STIN_TEXTURE_NORMAL,     /* RGB8 tangent-space normal, 0.5 + 0.5 n */
+    STIN_TEXTURE_HEIGHT      /* R8 height, 1 = top */
+} stin_texture_kind;
+
+typedef struct stin_texture_desc {
+    stin_texture_kind kind;
+    uint32_t width, height;  /* each at most caps.max_texture_size; any size (GL1
+                              * contexts get a power-of-two resample) */
+    const uint8_t *pixels;   /* RGBA8, 4 bytes per pixel, rows bottom to top */
+    int no_mipmaps;          /* default 0: mipmaps are built */
+} stin_texture_desc;
+
+stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc,
+                                stin_texture *out);
+void stin_destroy_texture(stin_context *ctx, stin_texture tex);
+
+/* ---- frames ------------------------------------------------------------- */
+typedef enum stin_light_type {
+    STIN_LIGHT_POINT = 0,
+    STIN_LIGHT_SPOT,
+    STIN_LIGHT_DIRECTIONAL
+} stin_light_type;
+
+typedef struct stin_light_desc {
+    stin_light_type type;
+    float position[3];      /* world, point and spot */
+    float direction[3];     /* world, the way light travels; spot and directional */
+    float color[3];         /* default (1,1,1) when all zero */
+    float intensity;        /* default 1 */
+    float attenuation[3];   /* k0, k1, k2; default (1,0,0) when all zero */
+    float spot_cutoff_deg;  /* half angle, (0,90]; default 45 */
+    float spot_exponent;    /* default 0 */
+} stin_light_desc;
+
+typedef struct stin_material {
+    float color[4];         /* albedo and opacity; all zero means (0.8,0.8,0.8,1) */
+    float specular[3];      /* default 0 */
+    float shininess;        /* default 32, clamped to [0,128] */
+    stin_texture albedo;    /* optional, multiplies color */
+    stin_texture normal_map; /* optional (surface issue) */
+    stin_texture height_map; /* optional (surface issue) */
+} stin_material;
+
+typedef enum stin_output {
+    STIN_OUTPUT_BEAUTY = 0, /* lit colour */
+    STIN_OUTPUT_NORMAL,     /* world shading normal as 0.5 + 0.5 n, alpha 1 */
+    STIN_OUTPUT_VISIBILITY  /* visibility of light 0 (1 lit, 0 shadowed) in RGB */
+} stin_output;
+
+typedef struct stin_frame_desc {
+    float view[16];          /* column-major world -> eye */
+    float projection[16];    /* column-major eye -> clip */
+    int viewport[4];         /* x, y, width, height; required */
+    uint32_t framebuffer;    /* GL framebuffer name to draw into; 0 = default */
+    float clear_color[4];    /* cleared before drawing */
+    int no_clear;            /* 1: keep colour/depth/stencil as they are */
+    float ambient[3];        /* scene ambient, multiplies albedo */
+    stin_output output;
+} stin_frame_desc;
+
+stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc);
+/* At most desc.max_lights per frame; the light index order is kept (light 0 is
+ * the one STIN_OUTPUT_VISIBILITY shows). */
+stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light);
+/* transform: column-major object -> world; NULL means identity. */
+stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[16],
+                      const stin_material *material);
+stin_result stin_end_frame(stin_context *ctx);
+
+typedef struct stin_frame_stats {
+    uint32_t draws, lights, passes, triangles;
+    uint32_t dropped_draws, dropped_lights;
+} stin_frame_stats;
+
+stin_frame_stats stin_query_frame_stats(const stin_context *ctx);
+
+#ifdef __cplusplus
+}
+#endif
+#endif /* STIN_H */

@@ -1,0 +1,95 @@
+/*
+ * stin_platform — offscreen GL contexts for stin's tools and tests.
+ *
+ * Not part of libstin.a: this is libstin_platform.a, which links EGL and OSMesa
+ * itself. One small API over two backends:
+ *   EGL     surfaceless Mesa (EGL_MESA_platform_surfaceless) with a pbuffer
+ *           surface (24-bit depth, 8-bit stencil) so that legacy contexts have a
+ *           default framebuffer; device EGL (EGL_EXT_platform_device) when
+ *           STIN_EGL_DEVICE=1 or when surfaceless is missing (GPU machines).
+ *   OSMesa  Mesa's software context into client memory, compatibility or core.
+ *
+ * Capability profiles emulate weaker hardware. Each profile is run in its own
+ * process: stin_platform_create() applies the profile's Mesa overrides
+ * (MESA_GL_VERSION_OVERRIDE, MESA_GLSL_VERSION_OVERRIDE, MESA_EXTENSION_OVERRIDE)
+ * to the environment before the driver loads, and the profile's caps_mask and
+ * max_gl_version go into stin_desc — the in-process mask is the authority, since
+ * Mesa refuses to disable some extensions.
+ */
+#ifndef STIN_PLATFORM_H
+#define STIN_PLATFORM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef enum stin_platform_kind {
+    STIN_PLATFORM_EGL = 0,
+    STIN_PLATFORM_OSMESA
+} stin_platform_kind;
+
+typedef struct stin_profile {
+    const char *name;               /* "gl11", "gl13-combine", ... */
+    const char *summary;            /* one line for docs and --help */
+    int gl_major, gl_minor;         /* context version to ask for / override to */
+    int core;                       /* 1: core profile context */
+    const char *gl_version_override;   /* MESA_GL_VERSION_OVERRIDE, NULL = none */
+    const char *glsl_version_override; /* MESA_GLSL_VERSION_OVERRIDE, NULL = none */
+    const char *extension_override;    /* MESA_EXTENSION_OVERRIDE, NULL = none */
+    uint64_t caps_mask;             /* STIN_CAP_BIT()s hidden in-process */
+    int max_gl_version;             /* stin_desc.max_gl_version */
+} stin_profile;
+
+/* The table of named profiles (see docs/profiles.md). */
+size_t stin_profile_count(void);
+const stin_profile *stin_profile_at(size_t i);
+const stin_profile *stin_profile_find(const char *name); /* NULL if unknown */
+
+typedef struct stin_platform_desc {
+    stin_platform_kind kind;
+    int width, height;              /* default 256 x 256 */
+    const stin_profile *profile;    /* NULL: best compatibility context, no overrides */
+} stin_platform_desc;
+
+typedef struct stin_platform stin_platform;
+
+/* Creates and makes current an offscreen context. On failure returns NULL and
+ * writes a message into err.
+ * With a profile, the three MESA_*_OVERRIDE variables are set to the profile's
+ * values (unset where it has none) before the driver loads; a later create in
+ * the same process whose profile needs other values fails, since Mesa has
+ * already read them. profile = NULL leaves the environment as it is. */
+stin_platform *stin_platform_create(const stin_platform_desc *desc, char *err, size_t err_size);
+void stin_platform_destroy(stin_platform *p);
+
+/* Fits stin_desc.get_proc_address; user is the stin_platform. Resolves core
+ * GL 1.1 functions as well as extension functions. */
+void *stin_platform_get_proc_address(void *user, const char *name);
+
+const char *stin_platform_kind_name(stin_platform_kind kind);
+int stin_platform_kind_from_name(const char *name, stin_platform_kind *out); /* 1 ok */
+
+/* Framebuffer name to render into (0, the default framebuffer). */
+uint32_t stin_platform_framebuffer(const stin_platform *p);
+int stin_platform_width(const stin_platform *p);
+int stin_platform_height(const stin_platform *p);
+
+/* Readback of the current framebuffer, rows bottom to top.
+ * color: 4 bytes per pixel RGBA8; depth: window-space depth in [0,1];
+ * stencil: one byte per pixel. Return 1 on success.
+ * Reads width x height from (0,0) of the bound read framebuffer. The pack
+ * state (alignment, row length, skips, and on GL 2.1+ the PIXEL_PACK_BUFFER
+ * binding) is set for a tight read and restored. Returns 0 if GL reports an
+ * error afterwards; errors pending before the call count too and are
+ * consumed. */
+int stin_platform_read_color(stin_platform *p, uint8_t *rgba);
+int stin_platform_read_depth(stin_platform *p, float *depth);
+int stin_platform_read_stencil(stin_platform *p, uint8_t *stencil);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,56 @@
+#version 110
+// Per-pixel Blinn-Phong with GL's fixed-function equation (local viewer,
+// attenuation, spot cone), for one batch of up to 8 lights.
+// Light i is four vec4s: position (w 0 = directional), direction + cos(cutoff)
+// (cos = -2 for no cone), colour * intensity + spot exponent, attenuation.
+uniform vec3 u_eye;
+uniform vec3 u_ambient;
+uniform vec4 u_albedo;
+uniform vec3 u_specular;
+uniform float u_shininess;
+uniform int u_light_count;
+uniform vec4 u_lights[32];
+uniform sampler2D u_albedo_tex;
+uniform int u_has_albedo_tex;
+varying vec3 v_world;
+varying vec3 v_normal;
+varying vec2 v_uv;
+
+// pow(0, 0) is undefined in GLSL; GL's lighting takes it as 1.
+float safe_pow(float x, float e)
+{
+    return e == 0.0 ? 1.0 : pow(max(x, 0.0), e);
+}
+
+void main()
+{
+    vec3 n = normalize(v_normal);
+    vec3 v = normalize(u_eye - v_world);
+    vec3 diffuse = vec3(0.0);
+    vec3 specular = vec3(0.0);
+    for (int i = 0; i < 8; i++) {
+        if (i >= u_light_count)
+            break;
+        vec4 pos = u_lights[4 * i];
+        vec4 dir = u_lights[4 * i + 1];
+        vec4 col = u_lights[4 * i + 2];
+        vec3 att = u_lights[4 * i + 3].xyz;
+        vec3 l = pos.w == 0.0 ? pos.xyz : pos.xyz - v_world;
+        float d = length(l);
+        l /= d;
+        float k = pos.w == 0.0 ? 1.0 : 1.0 / (att.x + att.y * d + att.z * d * d);
+        if (dir.w > -1.5) {
+            float s = dot(-l, dir.xyz);
+            k *= s < dir.w ? 0.0 : safe_pow(s, col.w);
+        }
+        float ndotl = dot(n, l);
+        if (ndotl > 0.0) {
+            vec3 h = normalize(l + v);
+            diffuse += k * ndotl * col.rgb;
+            specular += k * safe_pow(dot(n, h), u_shininess) * col.rgb;
+        }
+    }
+    vec4 tex = u_has_albedo_tex != 0 ? texture2D(u_albedo_tex, v_uv) : vec4(1.0);
+    vec3 color = (u_ambient + diffuse) * u_albedo.rgb * tex.rgb + specular * u_specular;
+    gl_FragColor = vec4(clamp(color, 0.0, 1.0), u_albedo.a * tex.a);
+}

@@ -1,0 +1,20 @@
+#version 110
+// Per-pixel lighting, vertex stage: world-space position, normal and uv.
+uniform mat4 u_model;
+uniform mat4 u_view_proj;
+uniform mat3 u_normal_matrix;
+attribute vec3 a_position;
+attribute vec3 a_normal;
+attribute vec2 a_uv;
+varying vec3 v_world;
+varying vec3 v_normal;
+varying vec2 v_uv;
+
+void main()
+{
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_world = world.xyz;
+    v_normal = u_normal_matrix * a_normal;
+    v_uv = a_uv;
+    gl_Position = u_view_proj * world;
+}

@@ -1,0 +1,302 @@
+/* Capability detection: GL/GLSL versions, exact extension tokens (parsed in
+ * place, no copies), limits, and which entry points loaded. */
+#include "internal.h"
+
+static const int cap_min_version[] = {
+#define STIN_X_(id, name, ver, exts) ver,
+    STIN_CAP_LIST(STIN_X_)
+#undef STIN_X_
+};
+
+static const char *const cap_extensions[] = {
+#define STIN_X_(id, name, ver, exts) exts,
+    STIN_CAP_LIST(STIN_X_)
+#undef STIN_X_
+};
+
+int stin__token_in_list(const char *list, const char *token, size_t token_len)
+{
+    const char *p = list;
+    if (!list || token_len == 0)
+        return 0;
+    while (*p) {
+        const char *start;
+        size_t n = 0;
+        while (*p == ' ')
+            p++;
+        start = p;
+        while (*p && *p != ' ') {
+            p++;
+            n++;
+        }
+        if (n == token_len) {
+            size_t i = 0;
+            while (i < n && start[i] == token[i])
+                i++;
+            if (i == n)
+                return 1;
+        }
+    }
+    return 0;
+}
+
+/* "4.5 (Core Profile) Mesa 22.3.6" -> 4, 5; vendor prefixes such as "OpenGL ES"
+ * are skipped by starting at the first digit. */
+static int parse_version(const char *s, int *major, int *minor)
+{
+    int a = 0, b = 0;
+    if (!s)
+        return 0;
+    while (*s && (*s < '0' || *s > '9'))
+        s++;
+    if (!*s)
+        return 0;
+    while (*s >= '0' && *s <= '9')
+        a = a * 10 + (*s++ - '0');
+    if (*s != '.')
+        return 0;
+    s++;
+    if (*s < '0' || *s > '9')
+        return 0;
+    b = *s - '0'; /* one digit: "1.20" is GLSL 1.2(0) */
+    *major = a;
+    *minor = b;
+    return 1;
+}
+
+static void mark_extension(uint64_t *bits, const char *tok, size_t len)
+{
+    int c;
+    for (c = 0; c < STIN_CAP_COUNT; c++)
+        if (stin__token_in_list(cap_extensions[c], tok, len))
+            *bits |= STIN_CAP_BIT(c);
+}
+
+static uint64_t extension_bits(const stin__caps_input *in)
+{
+    uint64_t bits = 0;
+    if (in->extension_at) {
+        int i;
+        for (i = 0; i < in->extension_count; i++) {
+            const char *t = in->extension_at(in->extension_user, i);
+            size_t n = 0;
+            if (!t)
+                continue;
+            while (t[n])
+                n++;
+            mark_extension(&bits, t, n);
+        }
+    } else if (in->extensions) {
+        const char *p = in->extensions;
+        while (*p) {
+            const char *start;
+            while (*p == ' ')
+                p++;
+            start = p;
+            while (*p && *p != ' ')
+                p++;
+            if (p > start)
+                mark_extension(&bits, start, (size_t)(p - start));
+        }
+    }
+    return bits;
+}
+
+/* Entry points every capability needs, from the table's "needs" column. */
+static uint64_t caps_missing_entry_points(const unsigned char *loaded)
+{
+    uint64_t missing = 0;
+    int i;
+    if (!loaded)
+        return 0;
+    for (i = 0; i < STIN_GLFN_COUNT; i++) {
+        int need = stin__glfn_need((stin__glfn)i);
+        if (!loaded[i] && need < STIN_CAP_COUNT)
+            missing |= STIN_CAP_BIT(need);
+    }
+    return missing;
+}
+
+int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
+{
+    int ver, glsl, c;
+    uint64_t have = 0, ext;
+    if (!parse_version(in->version, &out->gl_major, &out->gl_minor))
+        return 0;
+    ver = out->gl_major * 10 + out->gl_minor;
+    if (in->max_gl_version > 0 && ver > in->max_gl_version) {
+        ver = in->max_gl_version;
+        out->gl_major = ver / 10;
+        out->gl_minor = ver % 10;
+    }
+    out->glsl_major = out->glsl_minor = 0;
+    if (ver >= 20 && parse_version(in->glsl_version, &out->glsl_major, &out->glsl_minor)) {
+        /* GLSL follows the GL version it ships with: 2.0 -> 1.10, 3.2 -> 1.50, 3.3+ -> same */
+        int cap = ver >= 33 ? ver : ver == 32 ? 15 : ver == 31 ? 14 : ver == 30 ? 13 : ver == 21 ? 12 : 11;
+        if (out->glsl_major * 10 + out->glsl_minor > cap) {
+            out->glsl_major = cap / 10;
+            out->glsl_minor = cap % 10;
+        }
+    }
+    glsl = out->glsl_major * 10 + out->glsl_minor;
+    out->profile = in->core_profile ? STIN_GL_PROFILE_CORE : STIN_GL_PROFILE_COMPATIBILITY;
+    ext = extension_bits(in);
+    for (c = 0; c < STIN_CAP_COUNT; c++) {
+        int min = cap_min_version[c];
+        if ((min > 0 && ver >= min) || (ext & STIN_CAP_BIT(c)))
+            have |= STIN_CAP_BIT(c);
+    }
+    /* Capabilities that are not a plain version-or-extension rule. */
+    have &= ~(STIN_CAP_BIT(STIN_CAP_GLSL) | STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER) |
+              STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION) | STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH));
+    if (ver >= 20 && glsl >= 11)
+        have |= STIN_CAP_BIT(STIN_CAP_GLSL);
+    if (ver >= 32 && glsl >= 15)
+        have |= STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER);
+    if (!in->core_profile)
+        have |= STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION);
+    have &= ~caps_missing_entry_points(in->loaded);
+    out->hidden = have & in->caps_mask;
+    out->present = have & ~in->caps_mask;
+    return 1;
+}
+
+/* ---- detection against the live context --------------------------------- */
+typedef struct stringi_user {
+    const stin__gl *gl;
+} stringi_user;
+
+static const char *ext_at(void *user, int i)
+{
+    const stringi_user *u = (const stringi_user *)user;
+    return (const char *)u->gl->GetStringi(GL_EXTENSIONS, (GLuint)i);
+}
+
+static int get_int(const stin__gl *gl, GLenum e)
+{
+    GLint v = 0;
+    gl->GetIntegerv(e, &v);
+    return v;
+}
+
+static void copy_text(char *dst, size_t size, const char *src)
+{
+    size_t i = 0;
+    if (src)
+        for (; src[i] && i + 1 < size; i++)
+            dst[i] = src[i];
+    dst[i] = '\0';
+}
+
+static void detect_limits(const stin__gl *gl, stin_caps *caps, int reported_version)
+{
+    int core = caps->profile == STIN_GL_PROFILE_CORE;
+    caps->max_texture_size = get_int(gl, GL_MAX_TEXTURE_SIZE);
+    if (!core) {
+        caps->stencil_bits = get_int(gl, GL_STENCIL_BITS);
+        caps->depth_bits = get_int(gl, GL_DEPTH_BITS);
+        caps->max_lights = get_int(gl, GL_MAX_LIGHTS);
+        caps->max_texture_units = gl->ActiveTexture ? get_int(gl, GL_MAX_TEXTURE_UNITS) : 1;
+    } else if (gl->GetFramebufferAttachmentParameteriv && gl->BindFramebuffer) {
+        GLint fb = get_int(gl, GL_DRAW_FRAMEBUFFER_BINDING);
+        GLenum st = fb ? 0x8D20 /* GL_STENCIL_ATTACHMENT */ : GL_STENCIL;
+        GLenum dp = fb ? 0x8D00 /* GL_DEPTH_ATTACHMENT */ : GL_DEPTH;
+        GLint v = 0;
+        gl->GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, st,
+                                                GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &v);
+        caps->stencil_bits = v;
+        v = 0;
+        gl->GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, dp,
+                                                GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &v);
+        caps->depth_bits = v;
+    }
+    if (caps->max_texture_units < 1)
+        caps->max_texture_units = 1;
+    if (reported_version >= 20 && gl->CreateShader) {
+        caps->max_texture_image_units = get_int(gl, GL_MAX_TEXTURE_IMAGE_UNITS);
+        caps->max_vertex_texture_units = get_int(gl, GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS);
+        caps->max_draw_buffers = get_int(gl, GL_MAX_DRAW_BUFFERS);
+    }
+    if (reported_version >= 32)
+        caps->max_geometry_output_vertices = get_int(gl, GL_MAX_GEOMETRY_OUTPUT_VERTICES);
+    while (gl->GetError() != GL_NO_ERROR) {
+        /* a limit the driver does not know is 0, not an error for the caller */
+    }
+}
+
+stin_result stin__caps_detect(const stin__gl *gl, const unsigned char *loaded,
+                              uint64_t caps_mask, int max_gl_version, stin_caps *caps)
+{
+    stin__caps_input in;
+    stringi_user su;
+    int major = 0, minor = 0, reported;
+    stin__memzero(caps, sizeof *caps);
+    stin__memzero(&in, sizeof in);
+    if (!gl->GetString || !gl->GetIntegerv || !gl->GetError)
+        return STIN_ERROR_GL;
+    in.version = (const char *)gl->GetString(GL_VERSION);
+    if (!parse_version(in.version, &major, &minor))
+        return STIN_ERROR_GL;
+    reported = major * 10 + minor;
+    if (reported >= 20)
+        in.glsl_version = (const char *)gl->GetString(GL_SHADING_LANGUAGE_VERSION);
+    if (reported >= 32) {
+        GLint mask = 0;
+        gl->GetIntegerv(GL_CONTEXT_PROFILE_MASK, &mask);
+        in.core_profile = (mask & GL_CONTEXT_CORE_PROFILE_BIT) != 0;
+    }
+    if (reported >= 30 && gl->GetStringi) {
+        su.gl = gl;
+        in.extension_at = ext_at;
+        in.extension_user = &su;
+        in.extension_count = get_int(gl, GL_NUM_EXTENSIONS);
+    } else {
+        in.extensions = (const char *)gl->GetString(GL_EXTENSIONS);
+    }
+    in.max_gl_version = max_gl_version;
+    in.caps_mask = caps_mask;
+    in.loaded = loaded;
+    if (!stin__caps_parse(&in, caps))
+        return STIN_ERROR_GL;
+    copy_text(caps->renderer, sizeof caps->renderer, (const char *)gl->GetString(GL_RENDERER));
+    detect_limits(gl, caps, reported);
+    if (caps->stencil_bits <= 0)
+        caps->present &= ~STIN_CAP_BIT(STIN_CAP_STENCIL);
+    if ((caps->present & STIN_CAP_BIT(STIN_CAP_GLSL)) && caps->max_vertex_texture_units > 0 &&
+        !(caps_mask & STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH)))
+        caps->present |= STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH);
+    if (!(caps->present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)))
+        caps->max_lights = 0;
+    return STIN_OK;
+}
+
+stin_result stin_detect_caps(stin_get_proc_fn get_proc, void *user, uint64_t caps_mask,
+                             int max_gl_version, stin_caps *out)
+{
+    stin__gl gl;
+    unsigned char loaded[STIN_GLFN_COUNT];
+    if (!get_proc || !out)
+        return STIN_ERROR_INVALID_ARGUMENT;
+    stin__gl_load(&gl, get_proc, user, loaded);
+    return stin__caps_detect(&gl, loaded, caps_mask, max_gl_version, out);
+}
+
+int stin_has_extension(const stin_context *ctx, const char *name)
+{
+    size_t n = 0;
+    if (!ctx || !name)
+        return 0;
+    while (name[n])
+        n++;
+    if (ctx->caps.gl_major >= 3 && ctx->gl.GetStringi) {
+        GLint count = 0, i;
+        ctx->gl.GetIntegerv(GL_NUM_EXTENSIONS, &count);
+        for (i = 0; i < count; i++) {
+            const char *t = (const char *)ctx->gl.GetStringi(GL_EXTENSIONS, (GLuint)i);
+            if (t && stin__token_in_list(t, name, n))
+                return 1;
+        }
+        return 0;
+    }
+    return stin__token_in_list((const char *)ctx->gl.GetString(GL_EXTENSIONS), name, n);
+}

@@ -1,0 +1,288 @@
+/* Context creation in the caller's block: defaults, layout, detection,
+ * selection and set-up of the chosen path. */
+#include "internal.h"
+
+#define DEFAULT(v, d) ((v) ? (v) : (d))
+
+stin_desc stin__desc_defaults(const stin_desc *desc)
+{
+    stin_desc d = *desc;
+    d.max_meshes = DEFAULT(d.max_meshes, 64u);
+    d.max_textures = DEFAULT(d.max_textures, 64u);
+    d.max_draws = DEFAULT(d.max_draws, 1024u);
+    d.max_lights = DEFAULT(d.max_lights, 8u);
+    d.max_vertices = DEFAULT(d.max_vertices, 262144u);
+    d.max_triangles = DEFAULT(d.max_triangles, 262144u);
+    d.max_mesh_triangles = DEFAULT(d.max_mesh_triangles, d.max_triangles < 65536u ? d.max_triangles : 65536u);
+    d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 4u << 20);
+    return d;
+}
+
+static int desc_valid(const stin_desc *d)
+{
+    return d->max_lights <= 32 && d->max_meshes <= 65535 && d->max_textures <= 65535 &&
+           d->max_mesh_triangles <= d->max_triangles && d->max_vertices < 0x40000000u &&
+           d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u;
+}
+
+static uint32_t mesh_vertex_limit(const stin_desc *d)
+{
+    uint64_t v = (uint64_t)d->max_mesh_triangles * 3u;
+    return v < d->max_vertices ? (uint32_t)v : d->max_vertices;
+}
+
+/* One layout for sizing (ctx NULL) and for carving. */
+static void *take(stin__arena *a, size_t bytes, int *ok)
+{
+    size_t start = stin__align16(a->used);
+    if (start + bytes < start) {
+        *ok = 0;
+        return NULL;
+    }
+    a->used = start + bytes;
+    if (!a->base)
+        return NULL;
+    if (a->used > a->size) {
+        *ok = 0;
+        return NULL;
+    }
+    return a->base + start;
+}
+
+static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
+{
+    int ok = 1;
+    uint32_t mv = mesh_vertex_limit(d);
+    size_t scratch = stin__adjacency_scratch_bytes(mv, d->max_mesh_triangles);
+    size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
+    void *p[12];
+    if (tangent_scratch > scratch)
+        scratch = tangent_scratch;
+    p[0] = take(a, sizeof(stin_context), &ok);
+    p[1] = take(a, sizeof(stin__mesh_slot) * d->max_meshes, &ok);
+    p[2] = take(a, sizeof(stin__texture_slot) * d->max_textures, &ok);
+    p[3] = take(a, sizeof(stin__vertex) * d->max_vertices, &ok);
+    p[4] = take(a, sizeof(uint32_t) * 3u * d->max_triangles, &ok);
+    p[5] = take(a, sizeof(uint32_t) * 3u * d->max_triangles, &ok);
+    p[6] = take(a, sizeof(stin__range) * d->max_meshes, &ok);
+    p[7] = take(a, sizeof(stin__range) * d->max_meshes, &ok);
+    p[8] = take(a, scratch, &ok);
+    p[9] = take(a, d->max_texture_bytes, &ok);
+    p[10] = take(a, sizeof(stin__draw) * d->max_draws + sizeof(uint32_t) * d->max_draws, &ok);
+    p[11] = take(a, sizeof(stin_light_desc) * d->max_lights, &ok);
+    if (!ok)
+        return 0;
+    if (ctx) {
+        ctx->meshes = (stin__mesh_slot *)p[1];
+        ctx->textures = (stin__texture_slot *)p[2];
+        ctx->vertices = (stin__vertex *)p[3];
+        ctx->indices = (uint32_t *)p[4];
+        ctx->adjacency = (uint32_t *)p[5];
+        ctx->vertex_range_store = (stin__range *)p[6];
+        ctx->triangle_range_store = (stin__range *)p[7];
+        ctx->scratch = (unsigned char *)p[8];
+        ctx->scratch_bytes = scratch;
+        ctx->staging = (unsigned char *)p[9];
+        ctx->staging_bytes = d->max_texture_bytes;
+        ctx->draws = (stin__draw *)p[10];
+        ctx->draw_order = (uint32_t *)(void *)((unsigned char *)p[10] +
+                                               sizeof(stin__draw) * d->max_draws);
+        ctx->lights = (stin_light_desc *)p[11];
+    }
+    return stin__align16(a->used) + 16u; /* slack for aligning the caller's block */
+}
+
+size_t stin_memory_size(const stin_desc *desc)
+{
+    stin_desc d;
+    stin__arena a;
+    if (!desc)
+        return 0;
+    d = stin__desc_defaults(desc);
+    if (!desc_valid(&d))
+        return 0;
+    a.base = NULL;
+    a.size = (size_t)-1;
+    a.used = 0;
+    return layout(&d, &a, NULL);
+}
+
+static void log_early(const stin_desc *d, stin_log_level level, stin_log_item item,
+                      const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    stin__logv(d->log, d->log_user, level, item, fmt, ap);
+    va_end(ap);
+}
+
+/* The lighting path; a shader failure walks one tier down and says so. */
+static stin_result init_lighting(stin_context *ctx)
+{
+    stin_choice *c = &ctx->sel.choice[STIN_FEATURE_LIGHTING];
+    char msg[160];
+    for (;;) {
+        stin_technique next;
+        if (c->technique == STIN_TECH_LIGHTING_FIXED)
+            return stin__fixed_init(ctx);
+        if (stin__glsl_init(ctx, c->technique == STIN_TECH_LIGHTING_GLSL150 ? STIN_TIER_GL4
+                                                                             : STIN_TIER_GL2,
+                            msg, sizeof msg) == STIN_OK)
+            return STIN_OK;
+        next = c->technique == STIN_TECH_LIGHTING_GLSL150 ? STIN_TECH_LIGHTING_GLSL110
+                                                          : STIN_TECH_LIGHTING_FIXED;
+        if (stin__technique_needs(next) & ~ctx->caps.present)
+            next = STIN_TECH_LIGHTING_FIXED;
+        if (stin__technique_needs(next) & ~ctx->caps.present) {
+            stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK,
+                      "lighting: %s failed (%s) and nothing below it runs here",
+                      stin_technique_name(c->technique), msg);
+            return STIN_ERROR_GL;
+        }
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                  "lighting: %s failed (%s); falling back to %s",
+                  stin_technique_name(c->technique), msg, stin_technique_name(next));
+        stin__formatf(c->reason, sizeof c->reason, "fallback: %s failed to build (%s)",
+                      stin_technique_name(c->technique), msg);
+        c->technique = next;
+    }
+}
+
+static void log_selection(stin_context *ctx)
+{
+    char names[512];
+    int f;
+    stin__cap_names(ctx->caps.present, names, sizeof names);
+    stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_CAPS, "GL %d.%d, GLSL %d.%d, %s: %s",
+              ctx->caps.gl_major, ctx->caps.gl_minor, ctx->caps.glsl_major,
+              ctx->caps.glsl_minor,
+              ctx->caps.profile == STIN_GL_PROFILE_CORE ? "core" : "compatibility", names);
+    if (ctx->caps.hidden) {
+        stin__cap_names(ctx->caps.hidden, names, sizeof names);
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_CAPS, "hidden by the caps mask: %s", names);
+    }
+    stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_TIER_SELECTED, "tier %s (%s)",
+              stin_tier_name(ctx->sel.tier),
+              ctx->desc.tier == STIN_TIER_AUTO ? "best available" : "forced");
+    for (f = 0; f < STIN_FEATURE_COUNT; f++) {
+        const stin_choice *c = &ctx->sel.choice[f];
+        int fell = c->reason[0] == 'f' && c->reason[1] == 'a';
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, fell ? STIN_LOG_FALLBACK : STIN_LOG_TECHNIQUE_SELECTED,
+                  "%s: %s (%s)", stin_feature_name((stin_feature)f),
+                  stin_technique_name(c->technique), c->reason);
+    }
+}
+
+stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
+                        stin_context **out)
+{
+    stin_desc d;
+    stin__arena a;
+    stin_context *ctx;
+    size_t need;
+    char msg[256];
+    stin_result r;
+    if (out)
+        *out = NULL;
+    if (!desc || !out || !desc->get_proc_address) {
+        if (desc)
+            log_early(desc, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                      "stin_create: desc, out and desc->get_proc_address are required");
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
+    d = stin__desc_defaults(desc);
+    need = stin_memory_size(desc);
+    if (!need) {
+        log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                  "stin_create: capacities out of range (max_lights <= 32, "
+                  "max_mesh_triangles <= max_triangles)");
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
+    if (!memory || memory_bytes < need) {
+        log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_ARENA_TOO_SMALL,
+                  "stin_create: memory block of %zu bytes is too small: this configuration "
+                  "needs %zu bytes (stin_memory_size)", memory ? memory_bytes : (size_t)0, need);
+        return STIN_ERROR_OUT_OF_MEMORY;
+    }
+    /* Align the block start; layout() reserved 16 bytes of slack for this. */
+    a.base = (unsigned char *)memory + ((16u - ((uintptr_t)memory & 15u)) & 15u);
+    a.size = memory_bytes - (size_t)(a.base - (unsigned char *)memory);
+    a.used = 0;
+    ctx = (stin_context *)(void *)a.base;
+    stin__memzero(ctx, sizeof *ctx);
+    layout(&d, &a, ctx);
+    ctx->desc = d;
+    stin__range_init(&ctx->vertex_ranges, ctx->vertex_range_store, d.max_meshes, d.max_vertices);
+    stin__range_init(&ctx->triangle_ranges, ctx->triangle_range_store, d.max_meshes,
+                     d.max_triangles);
+
+    if (stin__gl_load(&ctx->gl, d.get_proc_address, d.get_proc_user, ctx->gl_loaded))
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_MISSING_ENTRY_POINT,
+                  "some GL entry points did not load; their capabilities are off");
+    r = stin__caps_detect(&ctx->gl, ctx->gl_loaded, d.caps_mask, d.max_gl_version, &ctx->caps);
+    if (r != STIN_OK) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_CAPS,
+                  "stin_create: no current GL context (GL_VERSION unreadable)");
+        return r;
+    }
+    r = stin__select(&ctx->caps, d.tier, d.techniques, &ctx->sel, msg, sizeof msg);
+    if (r != STIN_OK) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR,
+                  d.tier != STIN_TIER_AUTO && msg[0] == 't' && msg[1] == 'i'
+                      ? STIN_LOG_TIER_UNSUPPORTED
+                      : STIN_LOG_TECHNIQUE_UNSUPPORTED,
+                  "stin_create: %s", msg);
+        return r;
+    }
+    r = init_lighting(ctx);
+    if (r != STIN_OK)
+        return r;
+    ctx->lights_per_pass = STIN__LIGHTS_PER_PASS;
+    if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED &&
+        ctx->caps.max_lights < ctx->lights_per_pass)
+        ctx->lights_per_pass = ctx->caps.max_lights > 0 ? ctx->caps.max_lights : 1;
+    log_selection(ctx);
+    stin__gl_check_errors(ctx, "stin_create");
+    *out = ctx;
+    return STIN_OK;
+}
+
+void stin_destroy(stin_context *ctx)
+{
+    if (!ctx)
+        return;
+    stin__mesh_release_all(ctx);
+    stin__texture_release_all(ctx);
+    stin__glsl_release(ctx);
+}
+
+stin_desc stin_query_desc(const stin_context *ctx)
+{
+    stin_desc empty;
+    if (ctx)
+        return ctx->desc;
+    stin__memzero(&empty, sizeof empty);
+    return empty;
+}
+
+const stin_caps *stin_query_caps(const stin_context *ctx) { return ctx ? &ctx->caps : NULL; }
+
+stin_tier stin_query_tier(const stin_context *ctx) { return ctx ? ctx->sel.tier : STIN_TIER_AUTO; }
+
+stin_choice stin_query_choice(const stin_context *ctx, stin_feature feature)
+{
+    stin_choice none;
+    if (ctx && (unsigned)feature < STIN_FEATURE_COUNT)
+        return ctx->sel.choice[feature];
+    stin__memzero(&none, sizeof none);
+    return none;
+}
+
+stin_frame_stats stin_query_frame_stats(const stin_context *ctx)
+{
+    stin_frame_stats none;
+    if (ctx)
+        return ctx->stats;
+    stin__memzero(&none, sizeof none);
+    return none;
+}

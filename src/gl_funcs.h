@@ -1,0 +1,100 @@
+/* Every GL entry point stin calls, as one X-macro list:
+ *   X(return type, name without "gl", parameter list, what it needs, alternate name)
+ * "needs" is a STIN_CAP_* or NEED_CORE (GL 1.1) / NEED_GL30 (GL 3.0); an entry
+ * point whose capability the context (after the caps mask) lacks must not be
+ * called, and the checked build (STIN_GL_CHECK) fails a test that does.
+ * The alternate name is tried when the core name does not resolve (ARB/EXT). */
+#ifndef STIN_GL_FUNCS_H
+#define STIN_GL_FUNCS_H
+
+#define STIN_GL_FUNCS(X)                                                                  \
+    /* GL 1.1 core */                                                                     \
+    X(const GLubyte *, GetString, (GLenum name), NEED_CORE, "")                           \
+    X(void, GetIntegerv, (GLenum pname, GLint *data), NEED_CORE, "")                      \
+    X(GLenum, GetError, (void), NEED_CORE, "")                                            \
+    X(void, Enable, (GLenum cap), NEED_CORE, "")                                          \
+    X(void, Disable, (GLenum cap), NEED_CORE, "")                                         \
+    X(void, Clear, (GLbitfield mask), NEED_CORE, "")                                      \
+    X(void, ClearColor, (GLfloat r, GLfloat g, GLfloat b, GLfloat a), NEED_CORE, "")      \
+    X(void, ClearDepth, (GLdouble d), NEED_CORE, "")                                      \
+    X(void, ClearStencil, (GLint s), NEED_CORE, "")                                       \
+    X(void, Viewport, (GLint x, GLint y, GLsizei w, GLsizei h), NEED_CORE, "")            \
+    X(void, DepthFunc, (GLenum func), NEED_CORE, "")                                      \
+    X(void, DepthMask, (GLboolean flag), NEED_CORE, "")                                   \
+    X(void, ColorMask, (GLboolean r, GLboolean g, GLboolean b, GLboolean a), NEED_CORE, "") \
+    X(void, BlendFunc, (GLenum s, GLenum d), NEED_CORE, "")                               \
+    X(void, CullFace, (GLenum mode), NEED_CORE, "")                                       \
+    X(void, StencilMask, (GLuint mask), NEED_CORE, "")                                    \
+    X(void, DrawElements, (GLenum mode, GLsizei count, GLenum type, const void *idx), NEED_CORE, "") \
+    X(void, GenTextures, (GLsizei n, GLuint *tex), NEED_CORE, "")                         \
+    X(void, DeleteTextures, (GLsizei n, const GLuint *tex), NEED_CORE, "")                \
+    X(void, BindTexture, (GLenum target, GLuint tex), NEED_CORE, "")                      \
+    X(void, TexImage2D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,    \
+                         GLint border, GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "") \
+    X(void, TexParameteri, (GLenum target, GLenum pname, GLint param), NEED_CORE, "")     \
+    X(void, PixelStorei, (GLenum pname, GLint param), NEED_CORE, "")                      \
+    X(void, Finish, (void), NEED_CORE, "")                                                \
+    /* fixed function (compatibility contexts) */                                         \
+    X(void, MatrixMode, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                       \
+    X(void, LoadMatrixf, (const GLfloat *m), STIN_CAP_FIXED_FUNCTION, "")                 \
+    X(void, PushMatrix, (void), STIN_CAP_FIXED_FUNCTION, "")                              \
+    X(void, PopMatrix, (void), STIN_CAP_FIXED_FUNCTION, "")                               \
+    X(void, Lightfv, (GLenum light, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, Lightf, (GLenum light, GLenum pname, GLfloat v), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, LightModelfv, (GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "")  \
+    X(void, LightModeli, (GLenum pname, GLint v), STIN_CAP_FIXED_FUNCTION, "")            \
+    X(void, Materialfv, (GLenum face, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, Materialf, (GLenum face, GLenum pname, GLfloat v), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, Color4f, (GLfloat r, GLfloat g, GLfloat b, GLfloat a), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, ShadeModel, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                       \
+    X(void, EnableClientState, (GLenum array), STIN_CAP_FIXED_FUNCTION, "")               \
+    X(void, DisableClientState, (GLenum array), STIN_CAP_FIXED_FUNCTION, "")              \
+    X(void, VertexPointer, (GLint size, GLenum type, GLsizei stride, const void *p), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, NormalPointer, (GLenum type, GLsizei stride, const void *p), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, TexCoordPointer, (GLint size, GLenum type, GLsizei stride, const void *p), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, TexEnvi, (GLenum target, GLenum pname, GLint param), STIN_CAP_FIXED_FUNCTION, "") \
+    /* multitexture (GL 1.3 / ARB) */                                                     \
+    X(void, ActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glActiveTextureARB")    \
+    X(void, ClientActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glClientActiveTextureARB") \
+    /* buffers (GL 1.5 / ARB_vertex_buffer_object) */                                     \
+    X(void, GenBuffers, (GLsizei n, GLuint *b), STIN_CAP_VBO, "glGenBuffersARB")          \
+    X(void, DeleteBuffers, (GLsizei n, const GLuint *b), STIN_CAP_VBO, "glDeleteBuffersARB") \
+    X(void, BindBuffer, (GLenum target, GLuint b), STIN_CAP_VBO, "glBindBufferARB")       \
+    X(void, BufferData, (GLenum target, GLsizeiptr size, const void *data, GLenum usage), STIN_CAP_VBO, "glBufferDataARB") \
+    /* GLSL (GL 2.0) */                                                                   \
+    X(GLuint, CreateShader, (GLenum type), STIN_CAP_GLSL, "")                             \
+    X(void, ShaderSource, (GLuint s, GLsizei n, const GLchar *const *src, const GLint *len), STIN_CAP_GLSL, "") \
+    X(void, CompileShader, (GLuint s), STIN_CAP_GLSL, "")                                 \
+    X(void, GetShaderiv, (GLuint s, GLenum pname, GLint *v), STIN_CAP_GLSL, "")           \
+    X(void, GetShaderInfoLog, (GLuint s, GLsizei size, GLsizei *len, GLchar *log), STIN_CAP_GLSL, "") \
+    X(void, DeleteShader, (GLuint s), STIN_CAP_GLSL, "")                                  \
+    X(GLuint, CreateProgram, (void), STIN_CAP_GLSL, "")                                   \
+    X(void, AttachShader, (GLuint p, GLuint s), STIN_CAP_GLSL, "")                        \
+    X(void, BindAttribLocation, (GLuint p, GLuint index, const GLchar *name), STIN_CAP_GLSL, "") \
+    X(void, LinkProgram, (GLuint p), STIN_CAP_GLSL, "")                                   \
+    X(void, GetProgramiv, (GLuint p, GLenum pname, GLint *v), STIN_CAP_GLSL, "")          \
+    X(void, GetProgramInfoLog, (GLuint p, GLsizei size, GLsizei *len, GLchar *log), STIN_CAP_GLSL, "") \
+    X(void, DeleteProgram, (GLuint p), STIN_CAP_GLSL, "")                                 \
+    X(void, UseProgram, (GLuint p), STIN_CAP_GLSL, "")                                    \
+    X(GLint, GetUniformLocation, (GLuint p, const GLchar *name), STIN_CAP_GLSL, "")       \
+    X(void, Uniform1i, (GLint loc, GLint v), STIN_CAP_GLSL, "")                           \
+    X(void, Uniform1f, (GLint loc, GLfloat v), STIN_CAP_GLSL, "")                         \
+    X(void, Uniform3fv, (GLint loc, GLsizei n, const GLfloat *v), STIN_CAP_GLSL, "")      \
+    X(void, Uniform4fv, (GLint loc, GLsizei n, const GLfloat *v), STIN_CAP_GLSL, "")      \
+    X(void, UniformMatrix3fv, (GLint loc, GLsizei n, GLboolean t, const GLfloat *v), STIN_CAP_GLSL, "") \
+    X(void, UniformMatrix4fv, (GLint loc, GLsizei n, GLboolean t, const GLfloat *v), STIN_CAP_GLSL, "") \
+    X(void, VertexAttribPointer, (GLuint i, GLint size, GLenum type, GLboolean norm,      \
+                                  GLsizei stride, const void *p), STIN_CAP_GLSL, "")      \
+    X(void, EnableVertexAttribArray, (GLuint i), STIN_CAP_GLSL, "")                       \
+    X(void, DisableVertexAttribArray, (GLuint i), STIN_CAP_GLSL, "")                      \
+    /* GL 3.0 */                                                                          \
+    X(const GLubyte *, GetStringi, (GLenum name, GLuint i), NEED_GL30, "")                \
+    X(void, GenVertexArrays, (GLsizei n, GLuint *a), STIN_CAP_VAO, "")                    \
+    X(void, DeleteVertexArrays, (GLsizei n, const GLuint *a), STIN_CAP_VAO, "")           \
+    X(void, BindVertexArray, (GLuint a), STIN_CAP_VAO, "")                                \
+    X(void, BindFramebuffer, (GLenum target, GLuint fb), STIN_CAP_FBO, "glBindFramebufferEXT") \
+    X(void, GetFramebufferAttachmentParameteriv, (GLenum target, GLenum att, GLenum pname, \
+                                                  GLint *v), NEED_GL30, "")               \
+    X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")
+
+#endif

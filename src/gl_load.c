@@ -1,0 +1,121 @@
+/* Resolves the GL entry-point table from the caller's get_proc_address and,
+ * in checked builds, audits each call against the capability profile. */
+#include "internal.h"
+
+static const char *const gl_names[] = {
+#define STIN_X_(ret, name, params, need, alt) "gl" #name,
+    STIN_GL_FUNCS(STIN_X_)
+#undef STIN_X_
+};
+
+static const char *const gl_alt_names[] = {
+#define STIN_X_(ret, name, params, need, alt) alt,
+    STIN_GL_FUNCS(STIN_X_)
+#undef STIN_X_
+};
+
+static const int gl_needs[] = {
+#define STIN_X_(ret, name, params, need, alt) need,
+    STIN_GL_FUNCS(STIN_X_)
+#undef STIN_X_
+};
+
+const char *stin__glfn_name(stin__glfn fn)
+{
+    return (unsigned)fn < STIN_GLFN_COUNT ? gl_names[fn] : "gl?";
+}
+
+int stin__glfn_need(stin__glfn fn) { return (unsigned)fn < STIN_GLFN_COUNT ? gl_needs[fn] : NEED_CORE; }
+
+/* Function and object pointers do not convert in ISO C; copy the bits. */
+typedef void (*stin__any_fn)(void);
+static void store_fn(void *slot, void *p) { stin__memcopy(slot, &p, sizeof p); }
+
+int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
+                  unsigned char loaded[STIN_GLFN_COUNT])
+{
+    stin__any_fn *slots = (stin__any_fn *)(void *)gl;
+    int i, missing = 0;
+    for (i = 0; i < STIN_GLFN_COUNT; i++) {
+        void *p = get_proc(user, gl_names[i]);
+        if (!p && gl_alt_names[i][0])
+            p = get_proc(user, gl_alt_names[i]);
+        store_fn(&slots[i], p);
+        loaded[i] = p != NULL;
+        if (!p)
+            missing++;
+    }
+    return missing;
+}
+
+#if defined(STIN_GL_CHECK) && STIN_GL_CHECK
+static int need_present(const stin_context *ctx, int need)
+{
+    if (need == NEED_CORE)
+        return 1;
+    if (need == NEED_GL30)
+        return ctx->caps.gl_major >= 3;
+    return (ctx->caps.present & STIN_CAP_BIT(need)) != 0;
+}
+
+void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn)
+{
+    int need = gl_needs[fn];
+    if (!ctx->gl_loaded[fn] || !need_present(ctx, need)) {
+        ctx->gl_violations++;
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
+                  "%s called but the profile lacks %s", gl_names[fn],
+                  need == NEED_GL30 ? "GL 3.0" : stin_cap_name((stin_cap)need));
+    }
+}
+
+/* Enums that belong to a capability, for the calls that take them. */
+static int enum_need(GLenum e)
+{
+    switch (e) {
+    case GL_LIGHTING: case GL_NORMALIZE: case GL_COLOR_MATERIAL: case GL_LIGHT0:
+    case GL_LIGHT0 + 1: case GL_LIGHT0 + 2: case GL_LIGHT0 + 3: case GL_LIGHT0 + 4:
+    case GL_LIGHT0 + 5: case GL_LIGHT0 + 6: case GL_LIGHT0 + 7:
+        return STIN_CAP_FIXED_FUNCTION;
+    case GL_TEXTURE_CUBE_MAP: return STIN_CAP_TEXTURE_CUBE_MAP;
+    case GL_DEPTH_CLAMP: return STIN_CAP_DEPTH_CLAMP;
+    case GL_LIGHT_MODEL_COLOR_CONTROL: return STIN_CAP_SEPARATE_SPECULAR;
+    case GL_TEXTURE_2D: return -1; /* enable-able only with fixed function: see below */
+    default: return NEED_CORE;
+    }
+}
+
+void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e)
+{
+    int need = enum_need(e);
+    stin__gl_check_call(ctx, fn);
+    if (need == -1)
+        need = (fn == STIN_GLFN_Enable || fn == STIN_GLFN_Disable) ? STIN_CAP_FIXED_FUNCTION
+                                                                   : NEED_CORE;
+    if (!need_present(ctx, need)) {
+        ctx->gl_violations++;
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
+                  "%s(0x%x) needs %s, which the profile lacks", gl_names[fn], (unsigned)e,
+                  stin_cap_name((stin_cap)need));
+    }
+}
+
+void stin__gl_check_errors(struct stin_context *ctx, const char *where)
+{
+    int guard;
+    for (guard = 0; guard < 8; guard++) {
+        GLenum err = ctx->gl.GetError();
+        if (err == GL_NO_ERROR)
+            return;
+        ctx->gl_errors++;
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR, "GL error 0x%x after %s",
+                  (unsigned)err, where);
+    }
+}
+#else
+void stin__gl_check_errors(struct stin_context *ctx, const char *where)
+{
+    (void)ctx;
+    (void)where;
+}
+#endif

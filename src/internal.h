@@ -1,0 +1,252 @@
+/* Internal declarations shared by libstin's source files. */
+#ifndef STIN_INTERNAL_H
+#define STIN_INTERNAL_H
+
+#include "stin/stin.h"
+#include "gl_types.h"
+#include "gl_funcs.h"
+
+#include <stdarg.h>
+
+/* ---- GL entry points ---------------------------------------------------- */
+enum { NEED_CORE = STIN_CAP_COUNT, NEED_GL30, NEED_COUNT };
+
+typedef enum stin__glfn {
+#define STIN_X_(ret, name, params, need, alt) STIN_GLFN_##name,
+    STIN_GL_FUNCS(STIN_X_)
+#undef STIN_X_
+    STIN_GLFN_COUNT
+} stin__glfn;
+
+typedef struct stin__gl {
+#define STIN_X_(ret, name, params, need, alt) ret(STIN_APIENTRY *name) params;
+    STIN_GL_FUNCS(STIN_X_)
+#undef STIN_X_
+} stin__gl;
+
+/* Resolves every entry point; returns the number that did not resolve.
+ * loaded[i] is 1 for each entry point i that did. */
+int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
+                  unsigned char loaded[STIN_GLFN_COUNT]);
+const char *stin__glfn_name(stin__glfn fn);
+int stin__glfn_need(stin__glfn fn);
+
+/* Calls go through GL(ctx, Name)(args). The checked build first verifies that
+ * the capability profile allows the entry point. */
+#if defined(STIN_GL_CHECK) && STIN_GL_CHECK
+void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn);
+void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e);
+#define GL(ctx, name) (stin__gl_check_call((ctx), STIN_GLFN_##name), (ctx)->gl.name)
+#define GL_ENUM(ctx, name, e) (stin__gl_check_enum((ctx), STIN_GLFN_##name, (e)), (ctx)->gl.name)
+#else
+#define GL(ctx, name) ((ctx)->gl.name)
+#define GL_ENUM(ctx, name, e) ((ctx)->gl.name)
+#endif
+/* glEnable/glDisable and friends take an enum whose capability is audited. */
+#define GL_ENABLE(ctx, e) GL_ENUM(ctx, Enable, e)(e)
+#define GL_DISABLE(ctx, e) GL_ENUM(ctx, Disable, e)(e)
+/* In checked builds, GL errors after a pass are logged and counted. */
+void stin__gl_check_errors(struct stin_context *ctx, const char *where);
+
+/* ---- logging ------------------------------------------------------------ */
+void stin__log(struct stin_context *ctx, stin_log_level level, stin_log_item item,
+               const char *fmt, ...);
+void stin__logv(stin_log_fn fn, void *user, stin_log_level level, stin_log_item item,
+                const char *fmt, va_list ap);
+/* A small formatter (%s %d %u %x %lu %zu %f %%) that never touches the heap. */
+size_t stin__format(char *buf, size_t size, const char *fmt, va_list ap);
+size_t stin__formatf(char *buf, size_t size, const char *fmt, ...);
+
+/* ---- memory ------------------------------------------------------------- */
+typedef struct stin__arena {
+    unsigned char *base;
+    size_t size, used;
+} stin__arena;
+/* Bump allocation aligned to 16 bytes; NULL when the arena is exhausted. */
+void *stin__arena_alloc(stin__arena *a, size_t bytes);
+size_t stin__align16(size_t n);
+void stin__memzero(void *p, size_t n);
+void stin__memcopy(void *dst, const void *src, size_t n);
+
+/* First-fit allocator of element ranges in a fixed store (vertices, triangles). */
+typedef struct stin__range {
+    uint32_t offset, count;
+} stin__range;
+typedef struct stin__range_alloc {
+    stin__range *used; /* sorted by offset */
+    uint32_t used_count, max_ranges;
+    uint32_t capacity;
+} stin__range_alloc;
+void stin__range_init(stin__range_alloc *r, stin__range *storage, uint32_t max_ranges,
+                      uint32_t capacity);
+/* Returns 1 and the offset on success, 0 when no gap is large enough. */
+int stin__range_take(stin__range_alloc *r, uint32_t count, uint32_t *offset);
+void stin__range_give(stin__range_alloc *r, uint32_t offset);
+
+/* ---- capabilities ------------------------------------------------------- */
+/* Parses what the driver reports; pure so that unit tests feed recorded strings. */
+typedef struct stin__caps_input {
+    const char *version;        /* GL_VERSION */
+    const char *glsl_version;   /* GL_SHADING_LANGUAGE_VERSION or NULL */
+    const char *extensions;     /* GL_EXTENSIONS (space separated) or NULL */
+    const char *(*extension_at)(void *user, int i); /* 3.0+: glGetStringi, or NULL */
+    void *extension_user;
+    int extension_count;
+    int core_profile;
+    int max_gl_version;         /* 0 = as reported */
+    uint64_t caps_mask;
+    const unsigned char *loaded; /* per stin__glfn, NULL = all loaded */
+} stin__caps_input;
+
+/* Fills version, GLSL version, profile and the present/hidden bits. Limits are
+ * left untouched. Returns 0 if GL_VERSION does not parse. */
+int stin__caps_parse(const stin__caps_input *in, stin_caps *out);
+stin_result stin__caps_detect(const stin__gl *gl, const unsigned char *loaded,
+                              uint64_t caps_mask, int max_gl_version, stin_caps *caps);
+/* Exact match of one token in a space-separated list. */
+int stin__token_in_list(const char *list, const char *token, size_t token_len);
+
+/* ---- selection ---------------------------------------------------------- */
+typedef struct stin__selection {
+    stin_tier tier;
+    stin_choice choice[STIN_FEATURE_COUNT];
+} stin__selection;
+
+/* Chooses the tier and one technique per feature. Fails (UNSUPPORTED) if a
+ * forced tier or technique cannot run; writes the reason into msg. */
+stin_result stin__select(const stin_caps *caps, stin_tier forced,
+                         const stin_technique forced_tech[STIN_FEATURE_COUNT],
+                         stin__selection *out, char *msg, size_t msg_size);
+/* Capabilities a technique needs (STIN_CAP_BIT mask). */
+uint64_t stin__technique_needs(stin_technique t);
+stin_feature stin__technique_feature(stin_technique t);
+stin_tier stin__technique_tier(stin_technique t);
+uint64_t stin__tier_needs(stin_tier t);
+/* Names of the bits in `bits`, comma separated. */
+void stin__cap_names(uint64_t bits, char *out, size_t size);
+
+/* ---- math --------------------------------------------------------------- */
+void stin__mat4_identity(float m[16]);
+void stin__mat4_mul(float out[16], const float a[16], const float b[16]);
+int stin__mat4_invert(float out[16], const float m[16]);
+/* Upper 3x3 of the inverse transpose, for normals. */
+void stin__mat3_normal(float out[9], const float m[16]);
+void stin__mat4_transform_point(const float m[16], const float p[3], float out[3]);
+float stin__sqrtf(float x);
+float stin__cos_deg(float degrees);
+int stin__isfinite(float x);
+
+/* ---- meshes and textures ------------------------------------------------ */
+typedef struct stin__vertex {
+    float position[3];
+    float normal[3];
+    float uv[2];
+    float tangent[4];
+} stin__vertex;
+
+typedef struct stin__mesh_slot {
+    uint32_t generation;
+    int alive;
+    uint32_t first_vertex, vertex_count;
+    uint32_t first_triangle, triangle_count;
+    stin_mesh_info info;
+    GLuint vbo, ibo, vao;
+} stin__mesh_slot;
+
+typedef struct stin__texture_slot {
+    uint32_t generation;
+    int alive;
+    stin_texture_kind kind;
+    uint32_t width, height;
+    GLuint name;
+} stin__texture_slot;
+
+/* ---- frame -------------------------------------------------------------- */
+typedef struct stin__draw {
+    uint32_t mesh_slot;
+    float transform[16];
+    stin_material material;
+    float sort_depth;  /* eye-space distance of the bounds centre, for blending order */
+} stin__draw;
+
+typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
+
+/* GLSL programs of one tier. */
+enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_COUNT };
+#define STIN__LIGHTS_PER_PASS 8
+typedef struct stin__program {
+    GLuint name;
+    GLint u_model, u_view_proj, u_normal_matrix, u_eye, u_ambient, u_albedo, u_specular,
+        u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
+} stin__program;
+
+struct stin_context {
+    stin_desc desc;           /* with defaults applied */
+    stin__gl gl;
+    unsigned char gl_loaded[STIN_GLFN_COUNT];
+    stin_caps caps;
+    stin__selection sel;
+    uint32_t gl_violations;   /* checked build: calls the profile does not allow */
+    uint32_t gl_errors;       /* checked build: glGetError results */
+
+    stin__mesh_slot *meshes;
+    stin__texture_slot *textures;
+    stin__vertex *vertices;   /* max_vertices */
+    uint32_t *indices;        /* 3 * max_triangles */
+    uint32_t *adjacency;      /* 3 * max_triangles */
+    stin__range_alloc vertex_ranges, triangle_ranges;
+    stin__range *vertex_range_store, *triangle_range_store;
+    unsigned char *scratch;   /* mesh creation: weld and edge tables */
+    size_t scratch_bytes;
+    unsigned char *staging;   /* texture creation */
+    size_t staging_bytes;
+
+    stin__draw *draws;
+    uint32_t *draw_order;
+    stin_light_desc *lights;
+    uint32_t draw_count, light_count;
+    stin_frame_desc frame;
+    stin__frame_state state;
+    stin_frame_stats stats;
+
+    stin__program programs[STIN__PROG_COUNT];
+    int lights_per_pass;
+};
+
+stin_desc stin__desc_defaults(const stin_desc *desc);
+
+/* Mesh internals. */
+stin__mesh_slot *stin__mesh_lookup(const stin_context *ctx, stin_mesh mesh, uint32_t *slot);
+void stin__mesh_release_all(stin_context *ctx);
+void stin__texture_release_all(stin_context *ctx);
+stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex);
+
+/* Points attributes 0..3 (position, normal, uv, tangent) at base (NULL with a VBO bound). */
+void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base);
+/* Adjacency over position-welded vertices; fills info's edge counts. */
+stin_result stin__mesh_adjacency_build(stin_context *ctx, const stin__vertex *verts,
+                                       uint32_t vertex_count, const uint32_t *tris,
+                                       uint32_t tri_count, uint32_t *adjacency,
+                                       stin_mesh_info *info);
+/* Bytes of scratch the adjacency build needs for these sizes. */
+size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count);
+/* Per-vertex tangents (Gram-Schmidt, handedness in w); uses scratch. */
+void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint32_t *tris,
+                         uint32_t tri_count, float *scratch_bitangents, int have_uvs);
+void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
+                                const uint32_t *tris, uint32_t tri_count);
+
+/* ---- passes ------------------------------------------------------------- */
+stin_result stin__fixed_init(stin_context *ctx);
+void stin__fixed_run(stin_context *ctx);
+stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size);
+void stin__glsl_release(stin_context *ctx);
+void stin__glsl_run(stin_context *ctx);
+/* Restores the GL state the header promises after a frame. */
+void stin__state_restore(stin_context *ctx);
+GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag, char *msg,
+                           size_t size);
+/* Embedded shader source by file name ("gl2/lit.vert"), NULL if unknown. */
+const char *stin__shader_source(const char *name);
+
+#endif

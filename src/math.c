@@ -1,0 +1,141 @@
+/* Column-major 4x4 helpers (GL conventions) and float checks without libm. */
+#include "internal.h"
+
+void stin__mat4_identity(float m[16])
+{
+    int i;
+    for (i = 0; i < 16; i++)
+        m[i] = (i % 5 == 0) ? 1.0f : 0.0f;
+}
+
+void stin__mat4_mul(float out[16], const float a[16], const float b[16])
+{
+    float r[16];
+    int c, row, k;
+    for (c = 0; c < 4; c++)
+        for (row = 0; row < 4; row++) {
+            float s = 0.0f;
+            for (k = 0; k < 4; k++)
+                s += a[k * 4 + row] * b[c * 4 + k];
+            r[c * 4 + row] = s;
+        }
+    stin__memcopy(out, r, sizeof r);
+}
+
+/* Cofactor expansion; returns 0 for a singular matrix. */
+int stin__mat4_invert(float out[16], const float m[16])
+{
+    float inv[16], det;
+    int i;
+    inv[0] = m[5] * m[10] * m[15] - m[5] * m[11] * m[14] - m[9] * m[6] * m[15] +
+             m[9] * m[7] * m[14] + m[13] * m[6] * m[11] - m[13] * m[7] * m[10];
+    inv[4] = -m[4] * m[10] * m[15] + m[4] * m[11] * m[14] + m[8] * m[6] * m[15] -
+             m[8] * m[7] * m[14] - m[12] * m[6] * m[11] + m[12] * m[7] * m[10];
+    inv[8] = m[4] * m[9] * m[15] - m[4] * m[11] * m[13] - m[8] * m[5] * m[15] +
+             m[8] * m[7] * m[13] + m[12] * m[5] * m[11] - m[12] * m[7] * m[9];
+    inv[12] = -m[4] * m[9] * m[14] + m[4] * m[10] * m[13] + m[8] * m[5] * m[14] -
+              m[8] * m[6] * m[13] - m[12] * m[5] * m[10] + m[12] * m[6] * m[9];
+    inv[1] = -m[1] * m[10] * m[15] + m[1] * m[11] * m[14] + m[9] * m[2] * m[15] -
+             m[9] * m[3] * m[14] - m[13] * m[2] * m[11] + m[13] * m[3] * m[10];
+    inv[5] = m[0] * m[10] * m[15] - m[0] * m[11] * m[14] - m[8] * m[2] * m[15] +
+             m[8] * m[3] * m[14] + m[12] * m[2] * m[11] - m[12] * m[3] * m[10];
+    inv[9] = -m[0] * m[9] * m[15] + m[0] * m[11] * m[13] + m[8] * m[1] * m[15] -
+             m[8] * m[3] * m[13] - m[12] * m[1] * m[11] + m[12] * m[3] * m[9];
+    inv[13] = m[0] * m[9] * m[14] - m[0] * m[10] * m[13] - m[8] * m[1] * m[14] +
+              m[8] * m[2] * m[13] + m[12] * m[1] * m[10] - m[12] * m[2] * m[9];
+    inv[2] = m[1] * m[6] * m[15] - m[1] * m[7] * m[14] - m[5] * m[2] * m[15] +
+             m[5] * m[3] * m[14] + m[13] * m[2] * m[7] - m[13] * m[3] * m[6];
+    inv[6] = -m[0] * m[6] * m[15] + m[0] * m[7] * m[14] + m[4] * m[2] * m[15] -
+             m[4] * m[3] * m[14] - m[12] * m[2] * m[7] + m[12] * m[3] * m[6];
+    inv[10] = m[0] * m[5] * m[15] - m[0] * m[7] * m[13] - m[4] * m[1] * m[15] +
+              m[4] * m[3] * m[13] + m[12] * m[1] * m[7] - m[12] * m[3] * m[5];
+    inv[14] = -m[0] * m[5] * m[14] + m[0] * m[6] * m[13] + m[4] * m[1] * m[14] -
+              m[4] * m[2] * m[13] - m[12] * m[1] * m[6] + m[12] * m[2] * m[5];
+    inv[3] = -m[1] * m[6] * m[11] + m[1] * m[7] * m[10] + m[5] * m[2] * m[11] -
+             m[5] * m[3] * m[10] - m[9] * m[2] * m[7] + m[9] * m[3] * m[6];
+    inv[7] = m[0] * m[6] * m[11] - m[0] * m[7] * m[10] - m[4] * m[2] * m[11] +
+             m[4] * m[3] * m[10] + m[8] * m[2] * m[7] - m[8] * m[3] * m[6];
+    inv[11] = -m[0] * m[5] * m[11] + m[0] * m[7] * m[9] + m[4] * m[1] * m[11] -
+              m[4] * m[3] * m[9] - m[8] * m[1] * m[7] + m[8] * m[3] * m[5];
+    inv[15] = m[0] * m[5] * m[10] - m[0] * m[6] * m[9] - m[4] * m[1] * m[10] +
+              m[4] * m[2] * m[9] + m[8] * m[1] * m[6] - m[8] * m[2] * m[5];
+    det = m[0] * inv[0] + m[1] * inv[4] + m[2] * inv[8] + m[3] * inv[12];
+    if (det == 0.0f || !stin__isfinite(det))
+        return 0;
+    det = 1.0f / det;
+    for (i = 0; i < 16; i++)
+        out[i] = inv[i] * det;
+    return 1;
+}
+
+void stin__mat3_normal(float out[9], const float m[16])
+{
+    /* inverse transpose of the upper 3x3 = cofactor matrix / det */
+    float a = m[0], b = m[4], c = m[8], d = m[1], e = m[5], f = m[9], g = m[2], h = m[6],
+          k = m[10];
+    float co[9], det;
+    int i;
+    co[0] = e * k - f * h;  co[3] = -(d * k - f * g); co[6] = d * h - e * g;
+    co[1] = -(b * k - c * h); co[4] = a * k - c * g; co[7] = -(a * h - b * g);
+    co[2] = b * f - c * e;  co[5] = -(a * f - c * d); co[8] = a * e - b * d;
+    det = a * co[0] + b * co[3] + c * co[6];
+    if (det == 0.0f)
+        det = 1.0f;
+    /* out is column-major: column j row i = cofactor(row i, col j) / det */
+    for (i = 0; i < 3; i++) {
+        out[i * 3 + 0] = co[i * 3 + 0] / det;
+        out[i * 3 + 1] = co[i * 3 + 1] / det;
+        out[i * 3 + 2] = co[i * 3 + 2] / det;
+    }
+}
+
+void stin__mat4_transform_point(const float m[16], const float p[3], float out[3])
+{
+    float r[3];
+    int i;
+    for (i = 0; i < 3; i++)
+        r[i] = m[i] * p[0] + m[4 + i] * p[1] + m[8 + i] * p[2] + m[12 + i];
+    out[0] = r[0];
+    out[1] = r[1];
+    out[2] = r[2];
+}
+
+/* Newton iterations from a bit-level guess: libm is not a dependency. */
+float stin__sqrtf(float x)
+{
+    union { float f; uint32_t u; } v;
+    float y;
+    int i;
+    if (!(x > 0.0f))
+        return 0.0f;
+    v.f = x;
+    v.u = (v.u >> 1) + 0x1fc00000u;
+    y = v.f;
+    for (i = 0; i < 4; i++)
+        y = 0.5f * (y + x / y);
+    return y;
+}
+
+int stin__isfinite(float x)
+{
+    union { float f; uint32_t u; } v;
+    v.f = x;
+    return (v.u & 0x7f800000u) != 0x7f800000u;
+}
+
+/* Cosine of an angle in degrees by range reduction and a Taylor series
+ * (accurate to float precision on [0, 180]); spot cones need nothing more. */
+float stin__cos_deg(float degrees)
+{
+    double x = (double)degrees * 3.14159265358979323846 / 180.0, term = 1.0, sum = 1.0;
+    int n;
+    while (x > 3.14159265358979323846)
+        x -= 2.0 * 3.14159265358979323846;
+    while (x < -3.14159265358979323846)
+        x += 2.0 * 3.14159265358979323846;
+    for (n = 1; n < 20; n++) {
+        term *= -x * x / ((2.0 * n - 1.0) * (2.0 * n));
+        sum += term;
+    }
+    return (float)sum;
+}

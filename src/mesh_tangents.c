@@ -1,0 +1,117 @@
+/* Per-vertex normals (when the caller gives none) and tangent frames: the uv
+ * gradient per triangle, accumulated per vertex, Gram-Schmidt against the
+ * normal, handedness stored in w. Every surface technique on every tier reads
+ * these same tangents. */
+#include "internal.h"
+
+static void sub3(float o[3], const float a[3], const float b[3])
+{
+    o[0] = a[0] - b[0];
+    o[1] = a[1] - b[1];
+    o[2] = a[2] - b[2];
+}
+
+static void cross3(float o[3], const float a[3], const float b[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static int normalize3(float v[3])
+{
+    float l = stin__sqrtf(dot3(v, v));
+    if (!(l > 1e-20f))
+        return 0;
+    v[0] /= l;
+    v[1] /= l;
+    v[2] /= l;
+    return 1;
+}
+
+void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
+                                const uint32_t *tris, uint32_t tri_count)
+{
+    uint32_t i, t;
+    for (i = 0; i < vertex_count; i++)
+        verts[i].normal[0] = verts[i].normal[1] = verts[i].normal[2] = 0.0f;
+    for (t = 0; t < tri_count; t++) {
+        float e1[3], e2[3], n[3];
+        int k;
+        sub3(e1, verts[tris[3 * t + 1]].position, verts[tris[3 * t]].position);
+        sub3(e2, verts[tris[3 * t + 2]].position, verts[tris[3 * t]].position);
+        cross3(n, e1, e2); /* length = twice the area: area weighting for free */
+        for (k = 0; k < 3; k++) {
+            float *vn = verts[tris[3 * t + k]].normal;
+            vn[0] += n[0];
+            vn[1] += n[1];
+            vn[2] += n[2];
+        }
+    }
+    for (i = 0; i < vertex_count; i++)
+        if (!normalize3(verts[i].normal)) {
+            verts[i].normal[0] = verts[i].normal[1] = 0.0f;
+            verts[i].normal[2] = 1.0f;
+        }
+}
+
+/* Any unit vector perpendicular to n. */
+static void perpendicular(const float n[3], float out[3])
+{
+    float a[3] = {1.0f, 0.0f, 0.0f};
+    if (n[0] > 0.9f || n[0] < -0.9f) {
+        a[0] = 0.0f;
+        a[1] = 1.0f;
+    }
+    cross3(out, n, a);
+    normalize3(out);
+}
+
+void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint32_t *tris,
+                         uint32_t tri_count, float *acc, int have_uvs)
+{
+    uint32_t i, t;
+    for (i = 0; i < 6u * vertex_count; i++)
+        acc[i] = 0.0f;
+    if (have_uvs) {
+        for (t = 0; t < tri_count; t++) {
+            const stin__vertex *a = &verts[tris[3 * t]], *b = &verts[tris[3 * t + 1]],
+                               *c = &verts[tris[3 * t + 2]];
+            float e1[3], e2[3], du1 = b->uv[0] - a->uv[0], dv1 = b->uv[1] - a->uv[1],
+                                du2 = c->uv[0] - a->uv[0], dv2 = c->uv[1] - a->uv[1];
+            float det = du1 * dv2 - du2 * dv1, s[3], u[3];
+            int k, j;
+            if (det == 0.0f || !stin__isfinite(1.0f / det))
+                continue; /* no uv gradient on this triangle */
+            sub3(e1, b->position, a->position);
+            sub3(e2, c->position, a->position);
+            for (j = 0; j < 3; j++) {
+                s[j] = (dv2 * e1[j] - dv1 * e2[j]) / det;
+                u[j] = (du1 * e2[j] - du2 * e1[j]) / det;
+            }
+            for (k = 0; k < 3; k++) {
+                float *ac = acc + 6u * tris[3 * t + k];
+                for (j = 0; j < 3; j++) {
+                    ac[j] += s[j];
+                    ac[3 + j] += u[j];
+                }
+            }
+        }
+    }
+    for (i = 0; i < vertex_count; i++) {
+        const float *n = verts[i].normal;
+        float *tan = verts[i].tangent, *ac = acc + 6u * i, d = dot3(ac, n), b[3];
+        tan[0] = ac[0] - n[0] * d;
+        tan[1] = ac[1] - n[1] * d;
+        tan[2] = ac[2] - n[2] * d;
+        if (!normalize3(tan)) {
+            perpendicular(n, tan);
+            tan[3] = 1.0f;
+            continue;
+        }
+        cross3(b, n, tan);
+        tan[3] = dot3(b, ac + 3) < 0.0f ? -1.0f : 1.0f;
+    }
+}

@@ -1,0 +1,271 @@
+/* GL1 tier: fixed-function lighting (per vertex, GL's own equation), lights
+ * in batches of GL_MAX_LIGHTS with additive passes, and the AOV outputs. */
+#include "internal.h"
+
+stin_result stin__fixed_init(stin_context *ctx)
+{
+    (void)ctx; /* nothing to build: the pipeline is fixed */
+    return STIN_OK;
+}
+
+static void set_light(stin_context *ctx, int unit, const stin_light_desc *l)
+{
+    GLenum id = (GLenum)(GL_LIGHT0 + unit);
+    float zero[4] = {0, 0, 0, 1}, c[4], p[4];
+    int k;
+    for (k = 0; k < 3; k++)
+        c[k] = l->color[k] * l->intensity;
+    c[3] = 1.0f;
+    if (l->type == STIN_LIGHT_DIRECTIONAL) {
+        p[0] = -l->direction[0];
+        p[1] = -l->direction[1];
+        p[2] = -l->direction[2];
+        p[3] = 0.0f;
+    } else {
+        p[0] = l->position[0];
+        p[1] = l->position[1];
+        p[2] = l->position[2];
+        p[3] = 1.0f;
+    }
+    GL(ctx, Lightfv)(id, GL_AMBIENT, zero);
+    GL(ctx, Lightfv)(id, GL_DIFFUSE, c);
+    GL(ctx, Lightfv)(id, GL_SPECULAR, c);
+    GL(ctx, Lightfv)(id, GL_POSITION, p); /* transformed by the view on the stack */
+    GL(ctx, Lightfv)(id, GL_SPOT_DIRECTION, l->direction);
+    GL(ctx, Lightf)(id, GL_SPOT_CUTOFF, l->type == STIN_LIGHT_SPOT ? l->spot_cutoff_deg : 180.0f);
+    GL(ctx, Lightf)(id, GL_SPOT_EXPONENT, l->type == STIN_LIGHT_SPOT ? l->spot_exponent : 0.0f);
+    GL(ctx, Lightf)(id, GL_CONSTANT_ATTENUATION, l->attenuation[0]);
+    GL(ctx, Lightf)(id, GL_LINEAR_ATTENUATION, l->attenuation[1]);
+    GL(ctx, Lightf)(id, GL_QUADRATIC_ATTENUATION, l->attenuation[2]);
+    GL_ENABLE(ctx, id);
+}
+
+/* A light with colour c along world axis dir: used by the normal output. */
+static void axis_light(stin_context *ctx, int unit, int axis, float sign, float value)
+{
+    stin_light_desc l;
+    stin__memzero(&l, sizeof l);
+    l.type = STIN_LIGHT_DIRECTIONAL;
+    l.direction[axis] = -sign; /* light travels against the axis it lights */
+    l.color[axis] = value;
+    l.intensity = 1.0f;
+    set_light(ctx, unit, &l);
+    GL(ctx, Lightfv)((GLenum)(GL_LIGHT0 + unit), GL_SPECULAR, (const float[4]){0, 0, 0, 1});
+}
+
+static void disable_lights(stin_context *ctx, int from)
+{
+    int i;
+    for (i = from; i < ctx->lights_per_pass; i++)
+        GL_DISABLE(ctx, (GLenum)(GL_LIGHT0 + i));
+}
+
+static int set_batch(stin_context *ctx, int batch)
+{
+    int first = batch * ctx->lights_per_pass, i, n = 0;
+    float ambient[4] = {0, 0, 0, 1};
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view);
+    for (i = first; i < (int)ctx->light_count && n < ctx->lights_per_pass; i++, n++)
+        set_light(ctx, n, &ctx->lights[i]);
+    disable_lights(ctx, n);
+    if (batch == 0) {
+        ambient[0] = ctx->frame.ambient[0];
+        ambient[1] = ctx->frame.ambient[1];
+        ambient[2] = ctx->frame.ambient[2];
+    }
+    GL(ctx, LightModelfv)(GL_LIGHT_MODEL_AMBIENT, ambient);
+    return n;
+}
+
+static void set_material(stin_context *ctx, const stin_material *m)
+{
+    float spec[4] = {m->specular[0], m->specular[1], m->specular[2], 1.0f};
+    float black[4] = {0, 0, 0, 1};
+    const stin__texture_slot *t = stin__texture_lookup(ctx, m->albedo);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, m->color);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_EMISSION, black);
+    GL(ctx, Materialf)(GL_FRONT_AND_BACK, GL_SHININESS, m->shininess);
+    if (t) {
+        GL_ENABLE(ctx, GL_TEXTURE_2D);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, t->name);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    } else {
+        GL_DISABLE(ctx, GL_TEXTURE_2D);
+    }
+}
+
+static void draw_mesh(stin_context *ctx, const stin__draw *d)
+{
+    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+    float mv[16];
+    const char *base;
+    const void *idx;
+    stin__mat4_mul(mv, ctx->frame.view, d->transform);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(mv);
+    if (m->vbo) {
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
+        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
+        base = NULL;
+        idx = NULL;
+    } else {
+        base = (const char *)(ctx->vertices + m->first_vertex);
+        idx = ctx->indices + 3u * m->first_triangle;
+    }
+    GL(ctx, VertexPointer)(3, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base);
+    GL(ctx, NormalPointer)(GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 12);
+    GL(ctx, TexCoordPointer)(2, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 24);
+    GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+}
+
+static void pass_state(stin_context *ctx, int additive, int blend_alpha)
+{
+    if (additive) {
+        GL(ctx, DepthFunc)(GL_EQUAL);
+        GL(ctx, DepthMask)(GL_FALSE);
+        GL_ENABLE(ctx, GL_BLEND);
+        GL(ctx, BlendFunc)(blend_alpha ? GL_SRC_ALPHA : GL_ONE, GL_ONE);
+    } else {
+        GL(ctx, DepthFunc)(GL_LESS);
+        GL(ctx, DepthMask)(GL_TRUE);
+        if (blend_alpha) {
+            GL_ENABLE(ctx, GL_BLEND);
+            GL(ctx, BlendFunc)(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        } else {
+            GL_DISABLE(ctx, GL_BLEND);
+        }
+    }
+}
+
+static int batch_count(const stin_context *ctx)
+{
+    int n = ((int)ctx->light_count + ctx->lights_per_pass - 1) / ctx->lights_per_pass;
+    return n > 0 ? n : 1;
+}
+
+static void run_beauty(stin_context *ctx)
+{
+    int batches = batch_count(ctx), b;
+    uint32_t i;
+    GL_ENABLE(ctx, GL_LIGHTING);
+    GL(ctx, LightModeli)(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 0);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
+        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
+                                                                GL_SEPARATE_SPECULAR_COLOR);
+    /* Opaque draws: all draws per light batch. */
+    for (b = 0; b < batches; b++) {
+        set_batch(ctx, b);
+        pass_state(ctx, b > 0, 0);
+        ctx->stats.passes++;
+        for (i = 0; i < ctx->draw_count; i++) {
+            const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+            if (d->material.color[3] < 1.0f)
+                break; /* blended draws come last in the order */
+            set_material(ctx, &d->material);
+            draw_mesh(ctx, d);
+        }
+    }
+    /* Blended draws: every batch of one draw before the next, far to near. */
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (d->material.color[3] >= 1.0f)
+            continue;
+        for (b = 0; b < batches; b++) {
+            set_batch(ctx, b);
+            pass_state(ctx, b > 0, 1);
+            set_material(ctx, &d->material);
+            draw_mesh(ctx, d);
+        }
+    }
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
+        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
+                                                                GL_SINGLE_COLOR);
+}
+
+static void draw_all_plain(stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++)
+        draw_mesh(ctx, &ctx->draws[ctx->draw_order[i]]);
+}
+
+/* World normal as 0.5 + 0.5 n without shaders: pass 1 lights +x,+y,+z with
+ * half intensity over a 0.5 ambient; pass 2 multiplies by 1 - max(0, -n)
+ * (negative light colours, which GL allows), which halves toward 0. */
+static void run_normals(stin_context *ctx)
+{
+    float half[4] = {0.5f, 0.5f, 0.5f, 1.0f}, one[4] = {1, 1, 1, 1}, black[4] = {0, 0, 0, 1};
+    int axis;
+    GL_ENABLE(ctx, GL_LIGHTING);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_DIFFUSE, one);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_SPECULAR, black);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_EMISSION, black);
+    GL(ctx, LightModelfv)(GL_LIGHT_MODEL_AMBIENT, one);
+
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view);
+    for (axis = 0; axis < 3; axis++)
+        axis_light(ctx, axis, axis, 1.0f, 0.5f);
+    disable_lights(ctx, 3);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_AMBIENT, half);
+    pass_state(ctx, 0, 0);
+    draw_all_plain(ctx);
+
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view);
+    for (axis = 0; axis < 3; axis++)
+        axis_light(ctx, axis, axis, -1.0f, -1.0f);
+    GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_AMBIENT, one);
+    GL(ctx, DepthFunc)(GL_EQUAL);
+    GL(ctx, DepthMask)(GL_FALSE);
+    GL_ENABLE(ctx, GL_BLEND);
+    GL(ctx, BlendFunc)(GL_ZERO, GL_SRC_COLOR);
+    draw_all_plain(ctx);
+    ctx->stats.passes += 2;
+}
+
+/* No shadow technique yet on this path: every covered pixel sees light 0. */
+static void run_visibility(stin_context *ctx)
+{
+    GL_DISABLE(ctx, GL_LIGHTING);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, Color4f)(1.0f, 1.0f, 1.0f, 1.0f);
+    pass_state(ctx, 0, 0);
+    draw_all_plain(ctx);
+    ctx->stats.passes++;
+}
+
+void stin__fixed_run(stin_context *ctx)
+{
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, PushMatrix)();
+    GL(ctx, LoadMatrixf)(ctx->frame.projection);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, PushMatrix)();
+    GL_ENABLE(ctx, GL_DEPTH_TEST);
+    GL_ENABLE(ctx, GL_NORMALIZE);
+    GL(ctx, ShadeModel)(GL_SMOOTH);
+    GL(ctx, EnableClientState)(GL_VERTEX_ARRAY);
+    GL(ctx, EnableClientState)(GL_NORMAL_ARRAY);
+    GL(ctx, EnableClientState)(GL_TEXTURE_COORD_ARRAY);
+    switch (ctx->frame.output) {
+    case STIN_OUTPUT_NORMAL: run_normals(ctx); break;
+    case STIN_OUTPUT_VISIBILITY: run_visibility(ctx); break;
+    default: run_beauty(ctx); break;
+    }
+    disable_lights(ctx, 0);
+    GL_DISABLE(ctx, GL_LIGHTING);
+    GL_DISABLE(ctx, GL_NORMALIZE);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
+    GL(ctx, DisableClientState)(GL_NORMAL_ARRAY);
+    GL(ctx, DisableClientState)(GL_TEXTURE_COORD_ARRAY);
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, PopMatrix)();
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, PopMatrix)();
+}

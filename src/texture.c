@@ -1,0 +1,193 @@
+/* Textures from caller pixels: resampled to a power of two where the GL
+ * version needs it, mipmaps built on the CPU (GL 1.1 has no mipmap
+ * generation), all through the arena's staging block. */
+#include "internal.h"
+
+#define HANDLE_ID(gen, slot) (((gen) << 16) | ((slot) + 1u))
+
+stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex)
+{
+    uint32_t s = tex.id & 0xffffu;
+    stin__texture_slot *t;
+    if (!ctx || s == 0 || s > ctx->desc.max_textures)
+        return NULL;
+    t = &ctx->textures[s - 1];
+    if (!t->alive || t->generation != (tex.id >> 16))
+        return NULL;
+    return t;
+}
+
+static uint32_t pot_at_least(uint32_t n)
+{
+    uint32_t p = 1;
+    while (p < n)
+        p <<= 1;
+    return p;
+}
+
+/* Bilinear resample with wrap addressing (the sampler's addressing too). */
+static void resample(const uint8_t *src, uint32_t sw, uint32_t sh, uint8_t *dst, uint32_t dw,
+                     uint32_t dh)
+{
+    uint32_t x, y;
+    int c;
+    for (y = 0; y < dh; y++)
+        for (x = 0; x < dw; x++) {
+            float fx = ((float)x + 0.5f) * (float)sw / (float)dw - 0.5f;
+            float fy = ((float)y + 0.5f) * (float)sh / (float)dh - 0.5f;
+            int x0 = fx < 0 ? -1 : (int)fx, y0 = fy < 0 ? -1 : (int)fy;
+            float ax = fx - (float)x0, ay = fy - (float)y0;
+            uint32_t xa = (uint32_t)(x0 + (int)sw) % sw, xb = (uint32_t)(x0 + 1) % sw;
+            uint32_t ya = (uint32_t)(y0 + (int)sh) % sh, yb = (uint32_t)(y0 + 1) % sh;
+            for (c = 0; c < 4; c++) {
+                float v = (1 - ax) * (1 - ay) * src[4u * (ya * sw + xa) + (uint32_t)c] +
+                          ax * (1 - ay) * src[4u * (ya * sw + xb) + (uint32_t)c] +
+                          (1 - ax) * ay * src[4u * (yb * sw + xa) + (uint32_t)c] +
+                          ax * ay * src[4u * (yb * sw + xb) + (uint32_t)c];
+                dst[4u * (y * dw + x) + (uint32_t)c] = (uint8_t)(v + 0.5f);
+            }
+        }
+}
+
+/* 2x2 box filter; a dimension of 1 stays 1. */
+static void halve(const uint8_t *src, uint32_t w, uint32_t h, uint8_t *dst)
+{
+    uint32_t nw = w > 1 ? w / 2 : 1, nh = h > 1 ? h / 2 : 1, x, y;
+    int c;
+    for (y = 0; y < nh; y++)
+        for (x = 0; x < nw; x++) {
+            uint32_t x0 = w > 1 ? 2 * x : 0, x1 = w > 1 ? 2 * x + 1 : 0;
+            uint32_t y0 = h > 1 ? 2 * y : 0, y1 = h > 1 ? 2 * y + 1 : 0;
+            for (c = 0; c < 4; c++) {
+                unsigned s = src[4u * (y0 * w + x0) + (uint32_t)c] + src[4u * (y0 * w + x1) + (uint32_t)c] +
+                             src[4u * (y1 * w + x0) + (uint32_t)c] + src[4u * (y1 * w + x1) + (uint32_t)c];
+                dst[4u * (y * nw + x) + (uint32_t)c] = (uint8_t)((s + 2u) / 4u);
+            }
+        }
+}
+
+static uint64_t chain_bytes(uint32_t w, uint32_t h, int mips)
+{
+    uint64_t total = 0;
+    for (;;) {
+        total += 4ull * w * h;
+        if (!mips || (w == 1 && h == 1))
+            return total;
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+    }
+}
+
+stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc,
+                                stin_texture *out)
+{
+    uint32_t w, h, slot, level = 0, max = 0;
+    const uint8_t *src;
+    uint8_t *buf;
+    stin__texture_slot *t = NULL;
+    int mips, resized;
+    if (out)
+        out->id = 0;
+    if (!ctx || !desc || !out || !desc->pixels || !desc->width || !desc->height ||
+        (unsigned)desc->kind > STIN_TEXTURE_HEIGHT) {
+        if (ctx)
+            stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                      "stin_create_texture: need pixels, width, height and a valid kind");
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
+    max = ctx->caps.max_texture_size > 0 ? (uint32_t)ctx->caps.max_texture_size : 64u;
+    w = desc->width;
+    h = desc->height;
+    if (ctx->caps.gl_major < 2) { /* NPOT textures are core from GL 2.0 */
+        w = pot_at_least(w);
+        h = pot_at_least(h);
+    }
+    while (w > max)
+        w /= 2;
+    while (h > max)
+        h /= 2;
+    resized = w != desc->width || h != desc->height;
+    mips = !desc->no_mipmaps;
+    if (chain_bytes(w, h, mips) > ctx->staging_bytes) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
+                  "stin_create_texture: %ux%u with mipmaps needs %lu staging bytes, "
+                  "desc.max_texture_bytes is %zu", w, h,
+                  (unsigned long)chain_bytes(w, h, mips), ctx->staging_bytes);
+        return STIN_ERROR_CAPACITY;
+    }
+    for (slot = 0; slot < ctx->desc.max_textures; slot++)
+        if (!ctx->textures[slot].alive) {
+            t = &ctx->textures[slot];
+            break;
+        }
+    if (!t) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
+                  "stin_create_texture: all %u texture slots in use (desc.max_textures)",
+                  ctx->desc.max_textures);
+        return STIN_ERROR_CAPACITY;
+    }
+    buf = ctx->staging;
+    src = desc->pixels;
+    if (resized) {
+        resample(desc->pixels, desc->width, desc->height, buf, w, h);
+        src = buf;
+    }
+    GL(ctx, GenTextures)(1, &t->name);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, t->name);
+    GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
+                           mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
+    for (;;) {
+        GL(ctx, TexImage2D)(GL_TEXTURE_2D, (GLint)level, GL_RGBA8, (GLsizei)w, (GLsizei)h, 0,
+                            GL_RGBA, GL_UNSIGNED_BYTE, src);
+        if (!mips || (w == 1 && h == 1))
+            break;
+        /* The next level goes right after this one in staging. */
+        {
+            uint8_t *next = (src == desc->pixels) ? buf : (uint8_t *)src + 4u * w * h;
+            halve(src, w, h, next);
+            src = next;
+        }
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+        level++;
+    }
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    stin__gl_check_errors(ctx, "texture upload");
+    t->alive = 1;
+    t->kind = desc->kind;
+    t->width = desc->width;
+    t->height = desc->height;
+    t->generation = (t->generation + 1u) & 0xffffu;
+    if (!t->generation)
+        t->generation = 1;
+    out->id = HANDLE_ID(t->generation, slot);
+    return STIN_OK;
+}
+
+void stin_destroy_texture(stin_context *ctx, stin_texture tex)
+{
+    stin__texture_slot *t = stin__texture_lookup(ctx, tex);
+    if (!t) {
+        if (ctx && tex.id)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_BAD_HANDLE,
+                      "stin_destroy_texture: stale or unknown handle 0x%x", tex.id);
+        return;
+    }
+    GL(ctx, DeleteTextures)(1, &t->name);
+    t->alive = 0;
+    t->name = 0;
+}
+
+void stin__texture_release_all(stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->desc.max_textures; i++)
+        if (ctx->textures[i].alive) {
+            GL(ctx, DeleteTextures)(1, &ctx->textures[i].name);
+            ctx->textures[i].alive = 0;
+        }
+}

@@ -1,0 +1,114 @@
+/*
+ * Scene files for stin's tools and tests (JSON, docs/scene-format.md).
+ *
+ * A scene is everything the render tool, the bench and the Embree reference
+ * need: meshes as indexed triangles with per-vertex normals and uvs (already
+ * tessellated primitives or files loaded with assimp), textures as RGBA8,
+ * materials, object instances (mesh + material + object->world matrix),
+ * lights and a camera. Memory comes from the heap (this is tool code, not
+ * libstin) and is released by scene_free().
+ */
+#ifndef STIN_TOOLS_SCENE_H
+#define STIN_TOOLS_SCENE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SCENE_NAME_MAX 64
+
+typedef struct scene_mesh {
+    char name[SCENE_NAME_MAX];
+    uint32_t vertex_count, triangle_count;
+    float *positions;   /* 3 per vertex, object space */
+    float *normals;     /* 3 per vertex, unit length */
+    float *uvs;         /* 2 per vertex */
+    uint32_t *indices;  /* 3 per triangle, counter-clockwise front faces */
+} scene_mesh;
+
+typedef enum scene_texture_kind {
+    SCENE_TEXTURE_ALBEDO = 0,
+    SCENE_TEXTURE_NORMAL,
+    SCENE_TEXTURE_HEIGHT
+} scene_texture_kind;
+
+typedef struct scene_texture {
+    char name[SCENE_NAME_MAX];
+    scene_texture_kind kind;   /* from how a material uses it */
+    int width, height;
+    uint8_t *rgba;             /* 4 bytes per pixel, rows bottom to top (GL order) */
+} scene_texture;
+
+typedef struct scene_material {
+    char name[SCENE_NAME_MAX];
+    float color[4];            /* linear albedo + opacity; default (0.8,0.8,0.8,1) */
+    float specular[3];         /* default (0,0,0) */
+    float shininess;           /* default 32 */
+    int albedo, normal, height; /* texture index or -1 */
+    float height_scale;        /* default 0.04 */
+    char surface[16];          /* requested surface technique, "" = auto */
+} scene_material;
+
+typedef struct scene_object {
+    int mesh;                  /* index into meshes */
+    int material;              /* index into materials */
+    float transform[16];       /* column-major object -> world */
+} scene_object;
+
+typedef enum scene_light_type {
+    SCENE_LIGHT_POINT = 0,
+    SCENE_LIGHT_SPOT,
+    SCENE_LIGHT_DIRECTIONAL
+} scene_light_type;
+
+typedef struct scene_light {
+    scene_light_type type;
+    float position[3];
+    float direction[3];        /* normalised, the way light travels */
+    float color[3];            /* default (1,1,1) */
+    float intensity;           /* default 1 */
+    float attenuation[3];      /* default (1,0,0) */
+    float spot_cutoff_deg;     /* default 45 */
+    float spot_exponent;       /* default 0 */
+    float radius;              /* area light radius, default 0 */
+} scene_light;
+
+typedef struct scene_camera {
+    float eye[3], target[3], up[3];
+    float fovy_deg;            /* vertical field of view, default 45 */
+    float near_plane, far_plane; /* defaults 0.1 and 100 */
+} scene_camera;
+
+typedef struct scene {
+    char path[512];
+    scene_mesh *meshes; int mesh_count;
+    scene_texture *textures; int texture_count;
+    scene_material *materials; int material_count;
+    scene_object *objects; int object_count;
+    scene_light *lights; int light_count;
+    scene_camera camera;
+    float ambient[3];          /* default (0.1,0.1,0.1) */
+    float background[4];       /* default (0,0,0,0) */
+    int width, height;         /* suggested image size, default 512 x 512 */
+} scene;
+
+/* Loads a scene file. On error returns 0, writes "FILE: problem" into err and
+ * leaves *out empty (nothing to free). */
+int scene_load(const char *path, scene *out, char *err, size_t err_size);
+void scene_free(scene *s);
+
+/* View and projection (column-major, GL conventions: right-handed eye space
+ * looking down -z, clip z in [-w, w]) for an image of width x height. */
+void scene_camera_matrices(const scene_camera *cam, int width, int height,
+                           float view[16], float projection[16]);
+
+/* Total triangles over all objects (instances counted each time). */
+uint64_t scene_triangle_count(const scene *s);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
