@@ -82,4 +82,8 @@ $(B)/libstin_tools.a: $(COMMON_OBJ)
 $(B)/libstin_reference.a: $(REF_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
--include Makefile.targets
+
+
+# ---- tools -----------------------------------------------------------------
+$(B)/stin-render: $(B)/obj/tools/render/main.o $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
+	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)

@@ -1,0 +1,40 @@
+#!/bin/sh
+# Installs the Debian packages stin needs to build and test, if any are
+# missing. Quiet when everything is there. As root it runs apt-get; otherwise
+# it names the packages and the command, and fails.
+set -u
+
+PACKAGES="build-essential pkg-config libegl-dev libgl-dev libosmesa6-dev \
+libegl-mesa0 libgl1-mesa-dri libembree-dev libopenimageio-dev openimageio-tools \
+libassimp-dev libcjson-dev libcmocka-dev"
+
+if ! command -v dpkg >/dev/null 2>&1; then
+    echo "install-deps: dpkg not found; install these (Debian names) by hand: $PACKAGES" >&2
+    exit 1
+fi
+
+missing=""
+for pkg in $PACKAGES; do
+    # dpkg -s also succeeds for removed-but-configured packages; require "installed".
+    if ! dpkg -s "$pkg" 2>/dev/null | grep -q '^Status: .* installed$'; then
+        missing="$missing $pkg"
+    fi
+done
+missing=${missing# }
+
+if [ -z "$missing" ]; then
+    exit 0
+fi
+
+if [ "$(id -u)" -eq 0 ]; then
+    echo "install-deps: installing $missing"
+    apt-get update || exit 1
+    # shellcheck disable=SC2086 # one word per package, on purpose
+    DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $missing || exit 1
+    exit 0
+fi
+
+echo "install-deps: missing Debian packages: $missing" >&2
+echo "install-deps: run as root:" >&2
+echo "  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends $missing" >&2
+exit 1

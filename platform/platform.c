@@ -1,0 +1,324 @@
+/*
+ * The common part of libstin_platform.a: kind names, the profile's Mesa
+ * environment, backend dispatch and framebuffer readback.
+ *
+ * GL is reached only through the backend's get_proc_address: this library
+ * never links libGL, because libOSMesa carries its own GL and the two clash.
+ */
+#include "platform_internal.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* The few GL 1.1 tokens readback needs (no GL header: it would invite
+ * calling libGL's symbols directly). */
+#define P_GL_UNSIGNED_BYTE 0x1401
+#define P_GL_FLOAT 0x1406
+#define P_GL_STENCIL_INDEX 0x1901
+#define P_GL_DEPTH_COMPONENT 0x1902
+#define P_GL_RGBA 0x1908
+#define P_GL_VERSION 0x1F02
+#define P_GL_NO_ERROR 0
+#define P_GL_PACK_ROW_LENGTH 0x0D02
+#define P_GL_PACK_SKIP_ROWS 0x0D03
+#define P_GL_PACK_SKIP_PIXELS 0x0D04
+#define P_GL_PACK_ALIGNMENT 0x0D05
+#define P_GL_PIXEL_PACK_BUFFER 0x88EB
+#define P_GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
+
+typedef void (*p_read_pixels_fn)(int x, int y, int w, int h, unsigned format,
+                                 unsigned type, void *data);
+typedef void (*p_get_integerv_fn)(unsigned pname, int *data);
+typedef void (*p_pixel_storei_fn)(unsigned pname, int param);
+typedef const unsigned char *(*p_get_string_fn)(unsigned name);
+typedef unsigned (*p_get_error_fn)(void);
+typedef void (*p_bind_buffer_fn)(unsigned target, unsigned buffer);
+
+struct stin_platform {
+    stin_platform_kind kind;
+    int width, height;
+    stin_egl *egl;
+    stin_osmesa *osmesa;
+    int has_pack_buffer; /* GL 2.1+: a bound PIXEL_PACK_BUFFER would hijack readback */
+    p_read_pixels_fn read_pixels;
+    p_get_integerv_fn get_integerv;
+    p_pixel_storei_fn pixel_storei;
+    p_get_error_fn get_error;
+    p_bind_buffer_fn bind_buffer;
+};
+
+static const char *const override_vars[3] = {
+    "MESA_GL_VERSION_OVERRIDE",
+    "MESA_GLSL_VERSION_OVERRIDE",
+    "MESA_EXTENSION_OVERRIDE",
+};
+
+/* Mesa reads the overrides once per process; a second context with other
+ * overrides would silently keep the first ones. */
+static int driver_loaded;
+
+void stin_platform_errorf(char *err, size_t err_size, const char *fmt, ...)
+{
+    va_list ap;
+    if (!err || err_size == 0)
+        return;
+    va_start(ap, fmt);
+    vsnprintf(err, err_size, fmt, ap);
+    va_end(ap);
+}
+
+void *stin_platform_fn_to_ptr(stin_platform_fn fn)
+{
+    void *p;
+    typedef char size_check[sizeof p == sizeof fn ? 1 : -1];
+    (void)sizeof(size_check);
+    memcpy(&p, &fn, sizeof p);
+    return p;
+}
+
+stin_platform_fn stin_platform_ptr_to_fn(void *ptr)
+{
+    stin_platform_fn fn;
+    memcpy(&fn, &ptr, sizeof fn);
+    return fn;
+}
+
+const char *stin_platform_kind_name(stin_platform_kind kind)
+{
+    switch (kind) {
+    case STIN_PLATFORM_EGL: return "egl";
+    case STIN_PLATFORM_OSMESA: return "osmesa";
+    }
+    return "unknown";
+}
+
+int stin_platform_kind_from_name(const char *name, stin_platform_kind *out)
+{
+    if (!name || !out)
+        return 0;
+    if (strcmp(name, "egl") == 0)
+        *out = STIN_PLATFORM_EGL;
+    else if (strcmp(name, "osmesa") == 0)
+        *out = STIN_PLATFORM_OSMESA;
+    else
+        return 0;
+    return 1;
+}
+
+static const char *profile_value(const stin_profile *profile, int i)
+{
+    switch (i) {
+    case 0: return profile->gl_version_override;
+    case 1: return profile->glsl_version_override;
+    default: return profile->extension_override;
+    }
+}
+
+static int same_value(const char *a, const char *b)
+{
+    return (!a && !b) || (a && b && strcmp(a, b) == 0);
+}
+
+/* Sets what the profile sets, unsets the rest. A NULL profile leaves the
+ * environment alone, so a developer's own MESA_* variables still apply. */
+static int apply_profile_env(const stin_profile *profile, char *err, size_t err_size)
+{
+    int i;
+    if (!profile)
+        return 1;
+    for (i = 0; i < 3; i++) {
+        const char *want = profile_value(profile, i);
+        if (driver_loaded && !same_value(getenv(override_vars[i]), want)) {
+            stin_platform_errorf(err, err_size,
+                                 "profile %s: %s must change but Mesa already read it in "
+                                 "this process; run each profile in its own process",
+                                 profile->name, override_vars[i]);
+            return 0;
+        }
+    }
+    for (i = 0; i < 3; i++) {
+        const char *want = profile_value(profile, i);
+        int rc = want ? setenv(override_vars[i], want, 1) : unsetenv(override_vars[i]);
+        if (rc != 0) {
+            stin_platform_errorf(err, err_size, "profile %s: cannot set %s", profile->name,
+                                 override_vars[i]);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+void *stin_platform_get_proc_address(void *user, const char *name)
+{
+    stin_platform *p = user;
+    if (!p || !name)
+        return NULL;
+    if (p->kind == STIN_PLATFORM_EGL)
+        return stin_egl_get_proc(p->egl, name);
+    return stin_osmesa_get_proc(p->osmesa, name);
+}
+
+static stin_platform_fn load(stin_platform *p, const char *name)
+{
+    return stin_platform_ptr_to_fn(stin_platform_get_proc_address(p, name));
+}
+
+/* "2.1 Mesa ..." or "4.5 (Core Profile) Mesa ..." -> 21, 45. */
+static int parse_gl_version(const unsigned char *s)
+{
+    int major = 0, minor = 0;
+    if (!s || sscanf((const char *)s, "%d.%d", &major, &minor) != 2)
+        return 0;
+    return major * 10 + minor;
+}
+
+static int load_readback(stin_platform *p, char *err, size_t err_size)
+{
+    p_get_string_fn get_string = (p_get_string_fn)load(p, "glGetString");
+    p->read_pixels = (p_read_pixels_fn)load(p, "glReadPixels");
+    p->get_integerv = (p_get_integerv_fn)load(p, "glGetIntegerv");
+    p->pixel_storei = (p_pixel_storei_fn)load(p, "glPixelStorei");
+    p->get_error = (p_get_error_fn)load(p, "glGetError");
+    if (!get_string || !p->read_pixels || !p->get_integerv || !p->pixel_storei ||
+        !p->get_error) {
+        stin_platform_errorf(err, err_size,
+                             "%s: GL 1.1 entry points (glReadPixels, glGetIntegerv, "
+                             "glPixelStorei, glGetString, glGetError) did not resolve",
+                             stin_platform_kind_name(p->kind));
+        return 0;
+    }
+    if (parse_gl_version(get_string(P_GL_VERSION)) >= 21) {
+        p->bind_buffer = (p_bind_buffer_fn)load(p, "glBindBuffer");
+        p->has_pack_buffer = p->bind_buffer != NULL;
+    }
+    return 1;
+}
+
+stin_platform *stin_platform_create(const stin_platform_desc *desc, char *err, size_t err_size)
+{
+    stin_platform *p;
+    if (err && err_size)
+        err[0] = '\0';
+    if (!desc) {
+        stin_platform_errorf(err, err_size, "stin_platform_create: desc is NULL");
+        return NULL;
+    }
+    if (desc->width < 0 || desc->height < 0 ||
+        (desc->kind != STIN_PLATFORM_EGL && desc->kind != STIN_PLATFORM_OSMESA)) {
+        stin_platform_errorf(err, err_size,
+                             "stin_platform_create: bad desc (kind %d, size %dx%d)",
+                             (int)desc->kind, desc->width, desc->height);
+        return NULL;
+    }
+    if (!apply_profile_env(desc->profile, err, err_size))
+        return NULL;
+    p = calloc(1, sizeof *p);
+    if (!p) {
+        stin_platform_errorf(err, err_size, "stin_platform_create: out of memory");
+        return NULL;
+    }
+    p->kind = desc->kind;
+    p->width = desc->width ? desc->width : 256;
+    p->height = desc->height ? desc->height : 256;
+    driver_loaded = 1;
+    if (p->kind == STIN_PLATFORM_EGL)
+        p->egl = stin_egl_create(p->width, p->height, desc->profile, err, err_size);
+    else
+        p->osmesa = stin_osmesa_create(p->width, p->height, desc->profile, err, err_size);
+    if ((!p->egl && !p->osmesa) || !load_readback(p, err, err_size)) {
+        stin_platform_destroy(p);
+        return NULL;
+    }
+    return p;
+}
+
+void stin_platform_destroy(stin_platform *p)
+{
+    if (!p)
+        return;
+    stin_egl_destroy(p->egl);
+    stin_osmesa_destroy(p->osmesa);
+    free(p);
+}
+
+uint32_t stin_platform_framebuffer(const stin_platform *p)
+{
+    (void)p;
+    return 0;
+}
+
+int stin_platform_width(const stin_platform *p)
+{
+    return p ? p->width : 0;
+}
+
+int stin_platform_height(const stin_platform *p)
+{
+    return p ? p->height : 0;
+}
+
+/* Pack state readback overrides, so tight rows come back whatever the
+ * caller left set; restored afterwards. */
+typedef struct pack_state {
+    int alignment, row_length, skip_rows, skip_pixels, buffer;
+} pack_state;
+
+static void pack_begin(stin_platform *p, pack_state *s)
+{
+    p->get_integerv(P_GL_PACK_ALIGNMENT, &s->alignment);
+    p->get_integerv(P_GL_PACK_ROW_LENGTH, &s->row_length);
+    p->get_integerv(P_GL_PACK_SKIP_ROWS, &s->skip_rows);
+    p->get_integerv(P_GL_PACK_SKIP_PIXELS, &s->skip_pixels);
+    s->buffer = 0;
+    if (p->has_pack_buffer) {
+        p->get_integerv(P_GL_PIXEL_PACK_BUFFER_BINDING, &s->buffer);
+        if (s->buffer)
+            p->bind_buffer(P_GL_PIXEL_PACK_BUFFER, 0);
+    }
+    p->pixel_storei(P_GL_PACK_ALIGNMENT, 1);
+    p->pixel_storei(P_GL_PACK_ROW_LENGTH, 0);
+    p->pixel_storei(P_GL_PACK_SKIP_ROWS, 0);
+    p->pixel_storei(P_GL_PACK_SKIP_PIXELS, 0);
+}
+
+static void pack_end(stin_platform *p, const pack_state *s)
+{
+    p->pixel_storei(P_GL_PACK_ALIGNMENT, s->alignment);
+    p->pixel_storei(P_GL_PACK_ROW_LENGTH, s->row_length);
+    p->pixel_storei(P_GL_PACK_SKIP_ROWS, s->skip_rows);
+    p->pixel_storei(P_GL_PACK_SKIP_PIXELS, s->skip_pixels);
+    if (s->buffer)
+        p->bind_buffer(P_GL_PIXEL_PACK_BUFFER, (unsigned)s->buffer);
+}
+
+/* Any GL error (pending ones included, which this consumes) fails the read. */
+static int read_pixels(stin_platform *p, unsigned format, unsigned type, void *out)
+{
+    pack_state s;
+    int ok = 1, i;
+    if (!p || !out)
+        return 0;
+    pack_begin(p, &s);
+    p->read_pixels(0, 0, p->width, p->height, format, type, out);
+    pack_end(p, &s);
+    for (i = 0; i < 32 && p->get_error() != P_GL_NO_ERROR; i++)
+        ok = 0; /* bounded: a lost context can report errors forever */
+    return ok;
+}
+
+int stin_platform_read_color(stin_platform *p, uint8_t *rgba)
+{
+    return read_pixels(p, P_GL_RGBA, P_GL_UNSIGNED_BYTE, rgba);
+}
+
+int stin_platform_read_depth(stin_platform *p, float *depth)
+{
+    return read_pixels(p, P_GL_DEPTH_COMPONENT, P_GL_FLOAT, depth);
+}
+
+int stin_platform_read_stencil(stin_platform *p, uint8_t *stencil)
+{
+    return read_pixels(p, P_GL_STENCIL_INDEX, P_GL_UNSIGNED_BYTE, stencil);
+}

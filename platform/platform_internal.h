@@ -1,0 +1,39 @@
+/*
+ * Private to libstin_platform.a: the two context backends and the shared
+ * error helper. Each backend creates, makes current, resolves GL entry
+ * points and destroys; platform.c does everything common.
+ */
+#ifndef STIN_PLATFORM_INTERNAL_H
+#define STIN_PLATFORM_INTERNAL_H
+
+#include "stin_platform.h"
+
+/* Generic function pointer: what get_proc_address returns before the caller
+ * casts it to the real signature. */
+typedef void (*stin_platform_fn)(void);
+
+/* Function pointer <-> void * without the ISO C object/function cast
+ * (POSIX guarantees both have the same representation). */
+void *stin_platform_fn_to_ptr(stin_platform_fn fn);
+stin_platform_fn stin_platform_ptr_to_fn(void *ptr);
+
+/* snprintf into err when err is not NULL. */
+void stin_platform_errorf(char *err, size_t err_size, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+typedef struct stin_egl stin_egl;
+stin_egl *stin_egl_create(int width, int height, const stin_profile *profile,
+                          char *err, size_t err_size);
+void stin_egl_destroy(stin_egl *egl);
+void *stin_egl_get_proc(stin_egl *egl, const char *name);
+
+typedef struct stin_osmesa stin_osmesa;
+stin_osmesa *stin_osmesa_create(int width, int height, const stin_profile *profile,
+                                char *err, size_t err_size);
+void stin_osmesa_destroy(stin_osmesa *osm);
+void *stin_osmesa_get_proc(stin_osmesa *osm, const char *name);
+
+#endif

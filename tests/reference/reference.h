@@ -1,0 +1,127 @@
+/*
+ * The exact CPU reference the image tests compare against: Embree ray casting
+ * of a tools/common scene plus the library's lighting model (stin.h, LIGHTING
+ * MODEL) evaluated on the CPU in double precision.
+ *
+ * Conventions match OpenGL rendering with scene_camera_matrices() (gluLookAt +
+ * gluPerspective, aspect = width / height): pixel (x, y) counts y from the
+ * BOTTOM row, samples sit at pixel centres, hits nearer than the near plane or
+ * farther than the far plane (distances along the view axis) are clipped.
+ * Images are row-major, bottom row first. Everything is linear colour.
+ *
+ * Lifetime: reference_create() snapshots the geometry (world-space positions,
+ * normals, uvs, indices); it keeps a pointer to the scene and reads its camera
+ * and lights at call time, so the scene must outlive the reference, and the
+ * camera and lights may change between calls without rebuilding.
+ */
+#ifndef STIN_TESTS_REFERENCE_H
+#define STIN_TESTS_REFERENCE_H
+
+#include <stddef.h>
+#include "scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct ref_hit {
+    int hit;            /* 0: background (every other field is zero) */
+    int object, prim;   /* scene object index, triangle index within its mesh */
+    float u, v;         /* Embree barycentrics: P = (1-u-v) A + u B + v C */
+    float t;            /* distance from the eye to P in world units */
+    float P[3];         /* world position (barycentric interpolation of A, B, C) */
+    float N[3];         /* world shading normal: interpolated vertex normals, normalised
+                           (the geometric normal where those cancel or are missing) */
+    float Ng[3];        /* world geometric normal, unit, facing the triangle's CCW front */
+    float uv[2];        /* interpolated texture coordinates (0 without uvs) */
+} ref_hit;
+
+typedef struct reference reference;
+
+/* Builds the Embree scene: one triangle geometry per object (geometry id =
+ * object index), positions transformed to world space by the object's
+ * transform, normals by the inverse transpose of its 3x3. Degenerate
+ * triangles are fine (Embree never hits them). Returns NULL and a message in
+ * err on bad input (mesh/material index out of range, vertex index out of
+ * range, missing positions) or an Embree error. */
+reference *reference_create(const scene *s, char *err, size_t err_size);
+void reference_destroy(reference *r);
+
+/* Offset a visibility ray starts from, along the geometric normal: this
+ * fraction of the scene's extent (bounding-box diagonal or largest coordinate,
+ * whichever is larger). */
+#define REFERENCE_EPS_SCALE 1e-4
+
+/* Primary rays through every pixel centre of a width x height image for the
+ * scene camera. hits has width*height entries, row-major, bottom row first.
+ * Returns 1, or 0 on bad arguments or an Embree error. */
+int reference_primary(const reference *r, int width, int height, ref_hit *hits);
+
+/* Geometric visibility of light `light` from a hit: 1 when the segment from P
+ * (offset along Ng toward the light's side by the scene epsilon) to the light
+ * position is unoccluded (directional: the ray toward -direction, to
+ * infinity), else 0. Spot cones are shading, not visibility. Area lights are
+ * treated as points (radius ignored). Background hits and bad light indices
+ * give 1. */
+float reference_visibility(const reference *r, const ref_hit *hit, int light);
+
+/* Unshadowed shading with the lighting model of stin.h:
+ *   per_vertex = 1 (GL1 Gouraud, GL 1.2 separate specular): the model at the
+ *     triangle's three world vertices with their world normals; each vertex's
+ *     primary (ambient + diffuse) and secondary (specular) colour clamped to
+ *     [0,1]; both interpolated with the barycentrics; colour =
+ *     primary * texture(uv) + secondary, clamped.
+ *   per_vertex = 0 (GL2/GL4): the model at hit P with hit N (never flipped);
+ *     colour = (ambient + diffuse) * albedo * texture(uv) + specular, clamped.
+ * albedo = material.color.rgb; alpha = material.color[3]; texture = the
+ * material's albedo texture (bilinear, repeat, no mipmaps) or 1. Background:
+ * the scene background colour. r is only read per vertex (may be NULL per
+ * pixel); a per-vertex call without the triangle in r gives NaN. */
+void reference_shade(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
+                     float out_rgba[4]);
+
+/* As reference_shade, with light i's diffuse and specular terms multiplied by
+ * light_weight[i] (visibility); NULL means all 1. Per vertex, the weights of
+ * this pixel are applied at the three vertices before the clamp, i.e. a
+ * shadowed pixel gets the Gouraud colour the triangle would have with that
+ * light off (what a GL1 stencil/shadow-map pass that drops the light where
+ * shadowed produces while the sum stays below 1). */
+void reference_shade_weighted(const scene *s, const reference *r, const ref_hit *hit,
+                              int per_vertex, const float *light_weight, float out_rgba[4]);
+
+/* Bilinear sample of an RGBA8 texture with repeat addressing, no mipmaps,
+ * texel centres at ((i + 0.5) / w, (j + 0.5) / h), rows bottom to top;
+ * out in [0,1]. */
+void reference_sample_texture(const scene_texture *t, float u, float v, float out_rgba[4]);
+
+/* AOV channels of reference_render, in order (the EXR names of DESIGN.md). */
+enum {
+    REFERENCE_CH_R = 0, REFERENCE_CH_G, REFERENCE_CH_B, REFERENCE_CH_A,
+    REFERENCE_CH_PX, REFERENCE_CH_PY, REFERENCE_CH_PZ,
+    REFERENCE_CH_NX, REFERENCE_CH_NY, REFERENCE_CH_NZ,
+    REFERENCE_CH_Z,
+    REFERENCE_CH_VIS_R, REFERENCE_CH_VIS_G, REFERENCE_CH_VIS_B,
+    REFERENCE_CHANNELS
+};
+extern const char *const reference_channel_names[REFERENCE_CHANNELS];
+
+/* Fills out (width*height*REFERENCE_CHANNELS floats, pixel-interleaved, rows
+ * bottom to top) with R,G,B,A (reference_shade, unshadowed), P, N, Z = |P - eye|
+ * and vis.R/G/B = visibility of light 0 (1 with no lights). Background pixels:
+ * RGBA = scene background, P = N = Z = 0, vis = 1. s must be the scene r was
+ * created from. Returns 1, or 0 on bad arguments, out of memory or an Embree
+ * error. All reference queries are read-only: threads may share r. */
+int reference_render(const scene *s, const reference *r, int width, int height, int per_vertex,
+                     float *out);
+
+/* reference_render with flags: REFERENCE_RENDER_SHADOWED makes the beauty
+ * hard-shadowed (every light weighted by its visibility, as
+ * reference_shade_weighted). */
+#define REFERENCE_RENDER_SHADOWED 1u
+int reference_render_ex(const scene *s, const reference *r, int width, int height, int per_vertex,
+                        unsigned flags, float *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

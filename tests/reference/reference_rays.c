@@ -1,0 +1,192 @@
+/* Primary rays (the camera of scene_camera_matrices(), recomputed here as an
+ * independent check) and visibility rays toward the lights. */
+#include <math.h>
+#include <string.h>
+
+#include "reference_internal.h"
+
+enum { BATCH = 64 }; /* rays per rtcIntersect1M call */
+
+static double dot3(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void cross3(const double a[3], const double b[3], double out[3])
+{
+    out[0] = a[1] * b[2] - a[2] * b[1];
+    out[1] = a[2] * b[0] - a[0] * b[2];
+    out[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double normalize3(double v[3])
+{
+    double len = sqrt(dot3(v, v));
+    if (len > 0.0 && isfinite(len))
+        for (int i = 0; i < 3; i++)
+            v[i] /= len;
+    return len;
+}
+
+void ref_fill_hit(const reference *r, unsigned object, unsigned prim, float u, float v,
+                  const float eye[3], ref_hit *hit)
+{
+    const ref_object *o = &r->objects[object];
+    const uint32_t *tri = o->indices + 3 * (size_t)prim;
+    double w[3] = {1.0 - (double)u - (double)v, u, v};
+    double P[3] = {0, 0, 0}, N[3] = {0, 0, 0}, uv[2] = {0, 0}, e1[3], e2[3], Ng[3];
+    for (int k = 0; k < 3; k++) {
+        const float *p = o->positions + 3 * (size_t)tri[k];
+        const float *n = o->normals + 3 * (size_t)tri[k];
+        for (int c = 0; c < 3; c++) {
+            P[c] += w[k] * p[c];
+            N[c] += w[k] * n[c];
+        }
+        if (o->uvs)
+            for (int c = 0; c < 2; c++)
+                uv[c] += w[k] * o->uvs[2 * (size_t)tri[k] + c];
+    }
+    const float *A = o->positions + 3 * (size_t)tri[0];
+    const float *B = o->positions + 3 * (size_t)tri[1];
+    const float *C = o->positions + 3 * (size_t)tri[2];
+    for (int c = 0; c < 3; c++) {
+        e1[c] = (double)B[c] - A[c];
+        e2[c] = (double)C[c] - A[c];
+    }
+    cross3(e1, e2, Ng);
+    if (!(normalize3(Ng) > 0.0)) { /* degenerate: Embree does not hit these, but be safe */
+        Ng[0] = 0; Ng[1] = 0; Ng[2] = 1;
+    }
+    if (!(normalize3(N) > 0.0)) /* no normals, or they cancel out */
+        memcpy(N, Ng, sizeof N);
+
+    memset(hit, 0, sizeof *hit);
+    hit->hit = 1;
+    hit->object = (int)object;
+    hit->prim = (int)prim;
+    hit->u = u;
+    hit->v = v;
+    double d[3] = {P[0] - eye[0], P[1] - eye[1], P[2] - eye[2]};
+    hit->t = (float)sqrt(dot3(d, d));
+    for (int c = 0; c < 3; c++) {
+        hit->P[c] = (float)P[c];
+        hit->N[c] = (float)N[c];
+        hit->Ng[c] = (float)Ng[c];
+    }
+    hit->uv[0] = (float)uv[0];
+    hit->uv[1] = (float)uv[1];
+}
+
+/* gluLookAt's basis: forward f, side s = f x up, true up u = s x f. */
+static int camera_basis(const scene_camera *cam, double f[3], double s[3], double u[3])
+{
+    double up[3] = {cam->up[0], cam->up[1], cam->up[2]};
+    for (int c = 0; c < 3; c++)
+        f[c] = (double)cam->target[c] - cam->eye[c];
+    if (!(normalize3(f) > 0.0))
+        return 0;
+    cross3(f, up, s);
+    if (!(normalize3(s) > 0.0))
+        return 0;
+    cross3(s, f, u);
+    return 1;
+}
+
+static void trace_batch(const reference *r, struct RTCRayHit *rays, unsigned n, ref_hit *out)
+{
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    rtcIntersect1M(r->rtc, &ctx, rays, n, sizeof *rays);
+    for (unsigned i = 0; i < n; i++) {
+        const struct RTCHit *h = &rays[i].hit;
+        if (h->geomID == RTC_INVALID_GEOMETRY_ID) {
+            memset(&out[i], 0, sizeof out[i]);
+            continue;
+        }
+        ref_fill_hit(r, h->geomID, h->primID, h->u, h->v, r->s->camera.eye, &out[i]);
+    }
+}
+
+int reference_primary(const reference *r, int width, int height, ref_hit *hits)
+{
+    if (!r || !hits || width <= 0 || height <= 0)
+        return 0;
+    const scene_camera *cam = &r->s->camera;
+    double f[3], s[3], u[3];
+    if (!camera_basis(cam, f, s, u) || !(cam->fovy_deg > 0.0f && cam->fovy_deg < 180.0f))
+        return 0;
+    double ty = tan(cam->fovy_deg * (3.14159265358979323846 / 360.0));
+    double tx = ty * width / height;
+    struct RTCRayHit rays[BATCH];
+    size_t total = (size_t)width * (size_t)height, base = 0;
+    unsigned n = 0;
+    for (size_t i = 0; i < total; i++) {
+        double nx = 2.0 * ((double)(i % (size_t)width) + 0.5) / width - 1.0;
+        double ny = 2.0 * ((double)(i / (size_t)width) + 0.5) / height - 1.0;
+        struct RTCRayHit *rh = &rays[n];
+        memset(rh, 0, sizeof *rh);
+        rh->ray.org_x = cam->eye[0];
+        rh->ray.org_y = cam->eye[1];
+        rh->ray.org_z = cam->eye[2];
+        /* Unnormalised, with a forward component of exactly 1: t is then the
+         * distance along the view axis, so [near, far] is GL's clipping. */
+        rh->ray.dir_x = (float)(f[0] + nx * tx * s[0] + ny * ty * u[0]);
+        rh->ray.dir_y = (float)(f[1] + nx * tx * s[1] + ny * ty * u[1]);
+        rh->ray.dir_z = (float)(f[2] + nx * tx * s[2] + ny * ty * u[2]);
+        rh->ray.tnear = cam->near_plane;
+        rh->ray.tfar = cam->far_plane;
+        rh->ray.mask = 0xffffffffu;
+        rh->hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh->hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        if (++n == BATCH || i + 1 == total) {
+            trace_batch(r, rays, n, hits + base);
+            base += n;
+            n = 0;
+        }
+    }
+    return rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
+}
+
+float reference_visibility(const reference *r, const ref_hit *hit, int light)
+{
+    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
+        return 1.0f;
+    const scene_light *l = &r->s->lights[light];
+    double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], dir[3], dist = INFINITY;
+    if (l->type == SCENE_LIGHT_DIRECTIONAL) {
+        for (int c = 0; c < 3; c++)
+            dir[c] = -(double)l->direction[c];
+    } else {
+        for (int c = 0; c < 3; c++)
+            dir[c] = (double)l->position[c] - hit->P[c];
+    }
+    if (!(normalize3(dir) > 0.0))
+        return 1.0f; /* the light sits on the point */
+    /* Leave the surface on the light's side so the ray cannot hit its own triangle. */
+    double side = dot3(Ng, dir) >= 0.0 ? r->eps : -r->eps;
+    for (int c = 0; c < 3; c++)
+        org[c] = hit->P[c] + side * Ng[c];
+    if (l->type != SCENE_LIGHT_DIRECTIONAL) {
+        for (int c = 0; c < 3; c++)
+            dir[c] = (double)l->position[c] - org[c];
+        dist = normalize3(dir);
+        if (!(dist > 0.0))
+            return 1.0f;
+    }
+    struct RTCRay ray;
+    memset(&ray, 0, sizeof ray);
+    ray.org_x = (float)org[0];
+    ray.org_y = (float)org[1];
+    ray.org_z = (float)org[2];
+    ray.dir_x = (float)dir[0];
+    ray.dir_y = (float)dir[1];
+    ray.dir_z = (float)dir[2];
+    ray.tnear = 0.0f;
+    ray.tfar = (float)dist;
+    ray.mask = 0xffffffffu;
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    rtcOccluded1(r->rtc, &ctx, &ray);
+    return ray.tfar < 0.0f ? 0.0f : 1.0f; /* Embree sets tfar to -inf on a hit */
+}

@@ -1,0 +1,739 @@
+/* Unit tests of the Embree reference (tests/reference). Scenes are built in
+ * memory so these tests do not depend on the scene loader. */
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include <cmocka.h>
+
+#include "reference.h"
+
+#define PI 3.14159265358979323846
+
+/* ---- in-memory scenes ----------------------------------------------------- */
+
+static void *grow(void *p, int count, size_t size)
+{
+    void *q = realloc(p, (size_t)(count + 1) * size);
+    assert_non_null(q);
+    return q;
+}
+
+static void scene_init(scene *s)
+{
+    memset(s, 0, sizeof *s);
+    s->camera = (scene_camera){{0, 0, 5}, {0, 0, 0}, {0, 1, 0}, 45.0f, 0.1f, 100.0f};
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.1f;
+    s->width = s->height = 512;
+}
+
+static void scene_release(scene *s)
+{
+    for (int i = 0; i < s->mesh_count; i++) {
+        free(s->meshes[i].positions);
+        free(s->meshes[i].normals);
+        free(s->meshes[i].uvs);
+        free(s->meshes[i].indices);
+    }
+    for (int i = 0; i < s->texture_count; i++)
+        free(s->textures[i].rgba);
+    free(s->meshes);
+    free(s->textures);
+    free(s->materials);
+    free(s->objects);
+    free(s->lights);
+    memset(s, 0, sizeof *s);
+}
+
+/* Mesh with room for nv vertices and nt triangles; the caller fills it. */
+static scene_mesh *add_mesh(scene *s, uint32_t nv, uint32_t nt)
+{
+    s->meshes = grow(s->meshes, s->mesh_count, sizeof *s->meshes);
+    scene_mesh *m = &s->meshes[s->mesh_count++];
+    memset(m, 0, sizeof *m);
+    m->vertex_count = nv;
+    m->triangle_count = nt;
+    m->positions = calloc(3 * (size_t)nv + 1, sizeof(float));
+    m->normals = calloc(3 * (size_t)nv + 1, sizeof(float));
+    m->uvs = calloc(2 * (size_t)nv + 1, sizeof(float));
+    m->indices = calloc(3 * (size_t)nt + 1, sizeof(uint32_t));
+    assert_true(m->positions && m->normals && m->uvs && m->indices);
+    return m;
+}
+
+static void set_vertex(scene_mesh *m, uint32_t i, double x, double y, double z, double nx,
+                       double ny, double nz, double u, double v)
+{
+    float *p = m->positions + 3 * i, *n = m->normals + 3 * i, *t = m->uvs + 2 * i;
+    p[0] = (float)x; p[1] = (float)y; p[2] = (float)z;
+    n[0] = (float)nx; n[1] = (float)ny; n[2] = (float)nz;
+    t[0] = (float)u; t[1] = (float)v;
+}
+
+static void set_tri(scene_mesh *m, uint32_t t, uint32_t a, uint32_t b, uint32_t c)
+{
+    m->indices[3 * t] = a;
+    m->indices[3 * t + 1] = b;
+    m->indices[3 * t + 2] = c;
+}
+
+/* Unit square [-1,1]^2 at z = 0 facing +z, uv (0,0) at (-1,-1). */
+static int add_quad(scene *s)
+{
+    scene_mesh *m = add_mesh(s, 4, 2);
+    set_vertex(m, 0, -1, -1, 0, 0, 0, 1, 0, 0);
+    set_vertex(m, 1, 1, -1, 0, 0, 0, 1, 1, 0);
+    set_vertex(m, 2, 1, 1, 0, 0, 0, 1, 1, 1);
+    set_vertex(m, 3, -1, 1, 0, 0, 0, 1, 0, 1);
+    set_tri(m, 0, 0, 1, 2);
+    set_tri(m, 1, 0, 2, 3);
+    return s->mesh_count - 1;
+}
+
+/* Axis-aligned cube [-1,1]^3 with face normals, CCW seen from outside. */
+static int add_box(scene *s)
+{
+    scene_mesh *m = add_mesh(s, 24, 12);
+    for (int f = 0; f < 6; f++) {
+        int axis = f / 2;
+        double sign = (f % 2) ? -1.0 : 1.0, n[3] = {0, 0, 0};
+        n[axis] = sign;
+        int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+        static const double corner[4][2] = {{-1, -1}, {1, -1}, {1, 1}, {-1, 1}};
+        for (int k = 0; k < 4; k++) {
+            double p[3];
+            p[axis] = sign;
+            p[a1] = corner[k][0] * sign; /* mirror one tangent to keep CCW outside */
+            p[a2] = corner[k][1];
+            set_vertex(m, (uint32_t)(4 * f + k), p[0], p[1], p[2], n[0], n[1], n[2],
+                       (corner[k][0] + 1) / 2, (corner[k][1] + 1) / 2);
+        }
+        set_tri(m, (uint32_t)(2 * f), (uint32_t)(4 * f), (uint32_t)(4 * f + 1), (uint32_t)(4 * f + 2));
+        set_tri(m, (uint32_t)(2 * f + 1), (uint32_t)(4 * f), (uint32_t)(4 * f + 2), (uint32_t)(4 * f + 3));
+    }
+    return s->mesh_count - 1;
+}
+
+/* Unit UV sphere: 2 * slices * (stacks - 1) triangles. */
+static int add_sphere(scene *s, int stacks, int slices)
+{
+    uint32_t nv = (uint32_t)((stacks + 1) * (slices + 1));
+    uint32_t nt = (uint32_t)(2 * slices * (stacks - 1));
+    scene_mesh *m = add_mesh(s, nv, nt);
+    for (int i = 0; i <= stacks; i++)
+        for (int j = 0; j <= slices; j++) {
+            double th = PI * i / stacks, ph = 2 * PI * j / slices;
+            double x = sin(th) * cos(ph), y = cos(th), z = -sin(th) * sin(ph);
+            set_vertex(m, (uint32_t)(i * (slices + 1) + j), x, y, z, x, y, z,
+                       (double)j / slices, 1.0 - (double)i / stacks);
+        }
+    uint32_t t = 0;
+    for (int i = 0; i < stacks; i++)
+        for (int j = 0; j < slices; j++) {
+            uint32_t a = (uint32_t)(i * (slices + 1) + j), b = a + (uint32_t)slices + 1;
+            if (i != 0)
+                set_tri(m, t++, a, b, a + 1);
+            if (i != stacks - 1)
+                set_tri(m, t++, a + 1, b, b + 1);
+        }
+    assert_int_equal(t, nt);
+    return s->mesh_count - 1;
+}
+
+static int add_material(scene *s, float r, float g, float b, float spec, float shininess)
+{
+    s->materials = grow(s->materials, s->material_count, sizeof *s->materials);
+    scene_material *m = &s->materials[s->material_count++];
+    memset(m, 0, sizeof *m);
+    m->color[0] = r; m->color[1] = g; m->color[2] = b; m->color[3] = 1.0f;
+    m->specular[0] = m->specular[1] = m->specular[2] = spec;
+    m->shininess = shininess;
+    m->albedo = m->normal = m->height = -1;
+    m->height_scale = 0.04f;
+    return s->material_count - 1;
+}
+
+/* Object with transform = translate(t) * scale(k). */
+static int add_object(scene *s, int mesh, int material, double k, double tx, double ty, double tz)
+{
+    s->objects = grow(s->objects, s->object_count, sizeof *s->objects);
+    scene_object *o = &s->objects[s->object_count++];
+    memset(o, 0, sizeof *o);
+    o->mesh = mesh;
+    o->material = material;
+    o->transform[0] = o->transform[5] = o->transform[10] = (float)k;
+    o->transform[15] = 1.0f;
+    o->transform[12] = (float)tx; o->transform[13] = (float)ty; o->transform[14] = (float)tz;
+    return s->object_count - 1;
+}
+
+static scene_light *add_light(scene *s, scene_light_type type)
+{
+    s->lights = grow(s->lights, s->light_count, sizeof *s->lights);
+    scene_light *l = &s->lights[s->light_count++];
+    memset(l, 0, sizeof *l);
+    l->type = type;
+    l->color[0] = l->color[1] = l->color[2] = 1.0f;
+    l->intensity = 1.0f;
+    l->attenuation[0] = 1.0f;
+    l->spot_cutoff_deg = 45.0f;
+    return l;
+}
+
+static reference *create(const scene *s)
+{
+    char err[256];
+    reference *r = reference_create(s, err, sizeof err);
+    if (!r)
+        fail_msg("reference_create: %s", err);
+    return r;
+}
+
+/* The hit of the single pixel of a 1x1 image: the ray through the target. */
+static ref_hit centre_hit(const reference *r)
+{
+    ref_hit h;
+    assert_true(reference_primary(r, 1, 1, &h));
+    return h;
+}
+
+static double dot3d(const double a[3], const double b[3])
+{
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+static void unit3d(double v[3])
+{
+    double l = sqrt(dot3d(v, v));
+    v[0] /= l; v[1] /= l; v[2] /= l;
+}
+
+/* |a - b| <= tol in double, reporting the caller's line. */
+#define assert_close(a, b, tol) assert_close_at((double)(a), (double)(b), (tol), __FILE__, __LINE__)
+static void assert_close_at(double a, double b, double tol, const char *file, int line)
+{
+    if (fabs(a - b) <= tol)
+        return;
+    print_error("%.9g != %.9g (tolerance %g)\n", a, b, tol);
+    _fail(file, line);
+}
+
+/* ---- geometry and rays ---------------------------------------------------- */
+
+static void test_quad_hits_analytic(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.camera.fovy_deg = 90.0f; /* tan(45 deg) = 1: the plane z = 0 spans [-5,5] vertically */
+    int mat = add_material(&s, 0.8f, 0.8f, 0.8f, 0, 32);
+    add_object(&s, add_quad(&s), mat, 10.0, 0, 0, 0);
+    reference *r = create(&s);
+    enum { W = 8, H = 4 };
+    ref_hit hits[W * H];
+    assert_true(reference_primary(r, W, H, hits));
+    for (int y = 0; y < H; y++)
+        for (int x = 0; x < W; x++) {
+            const ref_hit *h = &hits[y * W + x];
+            double px = (2.0 * (x + 0.5) / W - 1.0) * 5.0 * W / H, py = (2.0 * (y + 0.5) / H - 1.0) * 5.0;
+            assert_int_equal(h->hit, 1);
+            assert_int_equal(h->object, 0);
+            assert_close(h->P[0], px, 1e-5);
+            assert_close(h->P[1], py, 1e-5);
+            assert_close(h->P[2], 0.0, 1e-6);
+            assert_close(h->t, sqrt(px * px + py * py + 25.0), 1e-5);
+            assert_close(h->N[2], 1.0, 1e-6);
+            assert_close(h->Ng[2], 1.0, 1e-6);
+            assert_close(h->uv[0], (px / 10.0 + 1.0) / 2.0, 1e-6);
+            assert_close(h->uv[1], (py / 10.0 + 1.0) / 2.0, 1e-6);
+            /* the barycentrics reproduce P on the hit triangle (Embree's convention) */
+            const float *A, *B, *C;
+            const scene_mesh *m = &s.meshes[0];
+            A = m->positions + 3 * m->indices[3 * h->prim];
+            B = m->positions + 3 * m->indices[3 * h->prim + 1];
+            C = m->positions + 3 * m->indices[3 * h->prim + 2];
+            for (int c = 0; c < 2; c++)
+                assert_close(10.0 * ((1 - h->u - h->v) * A[c] + h->u * B[c] + h->v * C[c]), h->P[c], 1e-5);
+        }
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+static void test_normals_follow_inverse_transpose(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    /* Triangle in the plane x + y = 0 with normal (1,1,0)/sqrt2, then scaled by (2,1,1):
+     * the world plane is x/2 + y = 0 with normal (0.5,1,0)/|.|. */
+    scene_mesh *m = add_mesh(&s, 3, 1);
+    double k = 1 / sqrt(2.0);
+    set_vertex(m, 0, -1, 1, -1, k, k, 0, 0, 0);
+    set_vertex(m, 1, 1, -1, -1, k, k, 0, 0, 0);
+    set_vertex(m, 2, 0, 0, 2, k, k, 0, 0, 0);
+    set_tri(m, 0, 0, 1, 2);
+    add_object(&s, 0, add_material(&s, 1, 1, 1, 0, 1), 1, 0, 0, 0);
+    s.objects[0].transform[0] = 2.0f;
+    s.camera.eye[0] = 4; s.camera.eye[1] = 6; s.camera.eye[2] = 0.5f;
+    reference *r = create(&s);
+    ref_hit h = centre_hit(r);
+    assert_int_equal(h.hit, 1);
+    double n[3] = {0.5, 1, 0};
+    unit3d(n);
+    for (int c = 0; c < 3; c++) {
+        assert_close(h.N[c], n[c], 1e-6);
+        assert_close(h.P[c], 0.0, 1e-5);
+    }
+    /* CCW front of (A, B, C) in world space */
+    double e1[3] = {4, -2, 0}, e2[3] = {2, -1, 3};
+    double g[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                   e1[0] * e2[1] - e1[1] * e2[0]};
+    unit3d(g);
+    for (int c = 0; c < 3; c++)
+        assert_close(h.Ng[c], g[c], 1e-6);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+static void test_miss_and_clipping(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.background[0] = 0.25f; s.background[3] = 0.5f;
+    add_object(&s, add_quad(&s), add_material(&s, 1, 1, 1, 0, 1), 1, 3, 0, 0); /* off to the side */
+    reference *r = create(&s);
+    ref_hit h = centre_hit(r);
+    assert_int_equal(h.hit, 0);
+    float rgba[4];
+    reference_shade(&s, r, &h, 0, rgba);
+    assert_close(rgba[0], 0.25, 0);
+    assert_close(rgba[3], 0.5, 0);
+    assert_close(reference_visibility(r, &h, 0), 1.0, 0);
+
+    s.objects[0].transform[12] = 0; /* centred: the view axis meets it at distance 5 */
+    reference_destroy(r);
+    r = create(&s);
+    assert_int_equal(centre_hit(r).hit, 1);
+    s.camera.far_plane = 4.9f; /* beyond far: clipped like GL */
+    assert_int_equal(centre_hit(r).hit, 0);
+    s.camera.far_plane = 100.0f;
+    s.camera.near_plane = 5.1f; /* nearer than near: clipped, nothing behind */
+    assert_int_equal(centre_hit(r).hit, 0);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+static void test_bad_input(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    char err[128];
+    add_object(&s, add_quad(&s), add_material(&s, 1, 1, 1, 0, 1), 1, 0, 0, 0);
+    s.meshes[0].indices[4] = 7;
+    assert_null(reference_create(&s, err, sizeof err));
+    assert_non_null(strstr(err, "out of range"));
+    s.meshes[0].indices[4] = 2;
+    s.objects[0].mesh = 3;
+    assert_null(reference_create(&s, err, sizeof err));
+    assert_non_null(strstr(err, "mesh index"));
+    s.objects[0].mesh = 0;
+    /* a degenerate triangle is harmless */
+    set_tri(&s.meshes[0], 1, 0, 0, 2);
+    reference *r = create(&s);
+    assert_int_equal(centre_hit(r).hit, 1);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* ---- visibility ----------------------------------------------------------- */
+
+static void test_box_blocks_light(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    int mat = add_material(&s, 1, 1, 1, 0, 1);
+    add_object(&s, add_quad(&s), mat, 10, 0, 0, 0);
+    add_object(&s, add_box(&s), mat, 0.5, 0, 0, 1); /* [-.5,.5]^2 x [.5,1.5] */
+    scene_light *pt = add_light(&s, SCENE_LIGHT_POINT);
+    pt->position[2] = 3.0f;
+    scene_light *dl = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+    dl->direction[2] = -1.0f;
+    scene_light *grazing = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+    double d[3] = {-1, 0, -0.2};
+    unit3d(d);
+    for (int c = 0; c < 3; c++)
+        grazing->direction[c] = (float)d[c];
+    /* looks at the origin past the box */
+    s.camera.eye[0] = 4; s.camera.eye[1] = 0; s.camera.eye[2] = 2;
+    reference *r = create(&s);
+    ref_hit h = centre_hit(r);
+    assert_int_equal(h.hit, 1);
+    assert_int_equal(h.object, 0);
+    assert_close(reference_visibility(r, &h, 0), 0.0, 0);
+    assert_close(reference_visibility(r, &h, 1), 0.0, 0);
+    assert_close(reference_visibility(r, &h, 2), 1.0, 0);
+    assert_close(reference_visibility(r, &h, 3), 1.0, 0); /* no such light */
+    reference_destroy(r);
+
+    s.object_count = 1; /* without the box */
+    r = create(&s);
+    h = centre_hit(r);
+    assert_close(reference_visibility(r, &h, 0), 1.0, 0);
+    assert_close(reference_visibility(r, &h, 1), 1.0, 0);
+    /* light under the plane: the ray leaves on the light's side, so a single
+     * sheet does not hide its own underside (shading gives N.L < 0 anyway) */
+    s.lights[0].position[2] = -3.0f;
+    assert_close(reference_visibility(r, &h, 0), 1.0, 0);
+    s.object_count = 2;
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+static void test_closed_surface_self_shadows(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    add_object(&s, add_sphere(&s, 24, 32), add_material(&s, 1, 1, 1, 0, 1), 1, 0, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_POINT);
+    l->position[2] = 4.0f; /* same side as the eye */
+    reference *r = create(&s);
+    ref_hit h = centre_hit(r);
+    assert_int_equal(h.hit, 1);
+    assert_close(reference_visibility(r, &h, 0), 1.0, 0);
+    l->position[2] = -4.0f; /* behind the sphere */
+    assert_close(reference_visibility(r, &h, 0), 0.0, 0);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* ---- shading -------------------------------------------------------------- */
+
+static void test_plane_directional_per_pixel(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.ambient[0] = 0.1f; s.ambient[1] = 0.2f; s.ambient[2] = 0.3f;
+    int mat = add_material(&s, 0.8f, 0.6f, 0.4f, 0.5f, 16);
+    add_object(&s, add_quad(&s), mat, 10, 0, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+    double dir[3] = {-1, -0.5, -2};
+    unit3d(dir);
+    for (int c = 0; c < 3; c++)
+        l->direction[c] = (float)dir[c];
+    l->color[1] = 0.9f; l->color[2] = 0.8f;
+    l->intensity = 0.7f;
+    reference *r = create(&s);
+    enum { W = 5, H = 5 };
+    ref_hit hits[W * H];
+    assert_true(reference_primary(r, W, H, hits));
+    for (int i = 0; i < W * H; i++) {
+        const ref_hit *h = &hits[i];
+        assert_int_equal(h->hit, 1);
+        double L[3] = {-dir[0], -dir[1], -dir[2]};
+        double V[3] = {0 - h->P[0], 0 - h->P[1], 5 - h->P[2]};
+        unit3d(V);
+        double Hv[3] = {L[0] + V[0], L[1] + V[1], L[2] + V[2]};
+        unit3d(Hv);
+        double ndotl = L[2], spec = pow(Hv[2], 16); /* N = +z */
+        float rgba[4];
+        reference_shade(&s, r, h, 0, rgba);
+        for (int c = 0; c < 3; c++) {
+            double lc = l->color[c] * 0.7;
+            double want = s.ambient[c] * s.materials[0].color[c] + ndotl * lc * s.materials[0].color[c] +
+                          spec * lc * 0.5;
+            assert_close(rgba[c], fmin(want, 1.0), 1e-6);
+        }
+        assert_close(rgba[3], 1.0, 0);
+    }
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+static void test_per_vertex_flat_triangle_equals_per_pixel(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.camera.eye[0] = 1; s.camera.eye[1] = 2;
+    int mat = add_material(&s, 0.9f, 0.5f, 0.3f, 0, 32);
+    add_object(&s, add_quad(&s), mat, 2, 0, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+    double dir[3] = {0.3, -0.4, -1};
+    unit3d(dir);
+    for (int c = 0; c < 3; c++)
+        l->direction[c] = (float)dir[c];
+    reference *r = create(&s);
+    enum { W = 16, H = 16 };
+    ref_hit hits[W * H];
+    assert_true(reference_primary(r, W, H, hits));
+    int n = 0;
+    for (int i = 0; i < W * H; i++) {
+        if (!hits[i].hit)
+            continue;
+        float a[4], b[4];
+        reference_shade(&s, r, &hits[i], 1, a);
+        reference_shade(&s, r, &hits[i], 0, b);
+        for (int c = 0; c < 4; c++)
+            assert_close(a[c], b[c], 1e-6);
+        n++;
+    }
+    assert_true(n > 0);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+static void test_per_vertex_clamps_before_interpolation(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    /* vertex A faces the light (3x over-bright), B and C face away */
+    scene_mesh *m = add_mesh(&s, 3, 1);
+    set_vertex(m, 0, -2, -2, 0, 0, 0, 1, 0, 0);
+    set_vertex(m, 1, 2, -2, 0, 0, 0, -1, 0, 0);
+    set_vertex(m, 2, 0, 2, 0, 0, 0, -1, 0, 0);
+    set_tri(m, 0, 0, 1, 2);
+    add_object(&s, 0, add_material(&s, 0.5f, 0.5f, 0.5f, 0, 1), 1, 0, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+    l->direction[2] = -1.0f;
+    l->intensity = 6.0f;
+    s.camera.target[0] = -0.5f; s.camera.target[1] = -0.5f;
+    s.camera.eye[0] = -0.5f; s.camera.eye[1] = -0.5f;
+    reference *r = create(&s);
+    ref_hit h = centre_hit(r);
+    assert_int_equal(h.hit, 1);
+    float rgba[4];
+    reference_shade(&s, r, &h, 1, rgba);
+    double wa = 1.0 - h.u - h.v, amb = 0.1 * 0.5;
+    assert_close(rgba[0], wa * 1.0 + (1.0 - wa) * amb, 1e-6);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* Per-pixel shading of a hand-made hit (no Embree needed). */
+static void shade_at(const scene *s, double x, double y, float rgba[4])
+{
+    ref_hit h;
+    memset(&h, 0, sizeof h);
+    h.hit = 1;
+    h.P[0] = (float)x; h.P[1] = (float)y;
+    h.N[2] = h.Ng[2] = 1.0f;
+    reference_shade(s, NULL, &h, 0, rgba);
+}
+
+static void test_spot_cone(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    add_material(&s, 0.5f, 0.5f, 0.5f, 0, 1);
+    add_object(&s, add_quad(&s), 0, 10, 0, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_SPOT);
+    l->position[2] = 3.0f;
+    l->direction[2] = -1.0f;
+    l->spot_cutoff_deg = 10.0f;
+    float rgba[4];
+    shade_at(&s, 2, 0, rgba); /* 33.7 degrees off axis: outside, ambient only */
+    assert_close(rgba[0], 0.1 * 0.5, 1e-7);
+    l->spot_cutoff_deg = 45.0f;
+    l->spot_exponent = 2.0f;
+    shade_at(&s, 1, 0, rgba); /* inside: spot = cos^2, N.L = cos */
+    double cosa = 3 / sqrt(10.0);
+    assert_close(rgba[0], 0.1 * 0.5 + cosa * cosa * cosa * 0.5, 1e-6);
+    reference_sample_texture(NULL, 0, 0, rgba); /* no texture: white */
+    assert_close(rgba[0], 1.0, 0);
+    scene_release(&s);
+}
+
+static void test_attenuation(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    add_material(&s, 0.6f, 0.6f, 0.6f, 0.4f, 8);
+    add_object(&s, add_quad(&s), 0, 10, 0, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_POINT);
+    l->position[2] = 2.0f;
+    l->attenuation[0] = 1.0f; l->attenuation[1] = 0.5f; l->attenuation[2] = 0.25f;
+    s.camera.eye[2] = 2.0f; /* H = N: specular 1 */
+    float rgba[4];
+    shade_at(&s, 0, 0, rgba); /* d = 2: att = 1 / (1 + 1 + 1) */
+    assert_close(rgba[1], 0.1 * 0.6 + (0.6 + 0.4) / 3.0, 1e-6);
+    scene_release(&s);
+}
+
+static void test_texture_sampling(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    enum { TW = 4, TH = 2 };
+    s.textures = grow(NULL, 0, sizeof *s.textures);
+    s.texture_count = 1;
+    scene_texture *t = &s.textures[0];
+    memset(t, 0, sizeof *t);
+    t->width = TW;
+    t->height = TH;
+    t->rgba = malloc(TW * TH * 4);
+    assert_non_null(t->rgba);
+    for (int i = 0; i < TW * TH * 4; i++)
+        t->rgba[i] = (uint8_t)(37 * i + 11);
+    float px[4];
+    for (int j = 0; j < TH; j++)
+        for (int i = 0; i < TW; i++)
+            for (int wrapn = -2; wrapn <= 3; wrapn += 5) {
+                reference_sample_texture(t, (float)((i + 0.5) / TW + wrapn), (float)((j + 0.5) / TH), px);
+                for (int c = 0; c < 4; c++)
+                    assert_close(px[c], t->rgba[4 * (j * TW + i) + c] / 255.0, 1e-6);
+            }
+    /* halfway between texels 3 and 0 (wrapping) of the bottom row, at the row's centre */
+    reference_sample_texture(t, 1.0f, 0.25f, px);
+    assert_close(px[0], (t->rgba[12] + t->rgba[0]) / 2.0 / 255.0, 1e-6);
+
+    /* through reference_shade: the texture multiplies ambient + diffuse */
+    int mat = add_material(&s, 1, 1, 1, 0, 1);
+    s.materials[mat].albedo = 0;
+    add_object(&s, add_quad(&s), mat, 1, 0, 0, 0);
+    ref_hit h;
+    memset(&h, 0, sizeof h);
+    h.hit = 1;
+    h.N[2] = h.Ng[2] = 1.0f;
+    h.uv[0] = 2.5f / TW; h.uv[1] = 1.5f / TH;
+    reference_shade(&s, NULL, &h, 0, px);
+    assert_close(px[0], 0.1 * t->rgba[4 * (TW + 2)] / 255.0, 1e-6);
+    scene_release(&s);
+}
+
+/* ---- whole images ------------------------------------------------------------ */
+
+static void test_render_aovs(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    int mat = add_material(&s, 1, 1, 1, 0, 1);
+    add_object(&s, add_quad(&s), mat, 2, 0, 0, 0);
+    add_object(&s, add_box(&s), mat, 0.25, 0, 0, 1);
+    scene_light *l = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+    double d[3] = {-1, 0, -1};
+    unit3d(d);
+    for (int c = 0; c < 3; c++)
+        l->direction[c] = (float)d[c];
+    reference *r = create(&s);
+    enum { W = 32, H = 24 };
+    float *img = malloc(sizeof(float) * W * H * REFERENCE_CHANNELS);
+    float *lit = malloc(sizeof(float) * W * H * REFERENCE_CHANNELS);
+    ref_hit *hits = malloc(sizeof *hits * W * H);
+    assert_true(img && lit && hits);
+    assert_true(reference_render_ex(&s, r, W, H, 0, REFERENCE_RENDER_SHADOWED, img));
+    assert_true(reference_render(&s, r, W, H, 0, lit));
+    assert_true(reference_primary(r, W, H, hits));
+    int shadowed = 0, background = 0;
+    for (int i = 0; i < W * H; i++) {
+        const float *p = img + i * REFERENCE_CHANNELS, *q = lit + i * REFERENCE_CHANNELS;
+        if (!hits[i].hit) {
+            background++;
+            assert_close(p[REFERENCE_CH_A], 0.0, 0);
+            assert_close(p[REFERENCE_CH_Z], 0.0, 0);
+            assert_close(p[REFERENCE_CH_VIS_R], 1.0, 0);
+            continue;
+        }
+        double dz = p[REFERENCE_CH_PZ] - 5.0, dx = p[REFERENCE_CH_PX], dy = p[REFERENCE_CH_PY];
+        assert_close(p[REFERENCE_CH_Z], sqrt(dx * dx + dy * dy + dz * dz), 1e-5);
+        assert_close(p[REFERENCE_CH_VIS_R], p[REFERENCE_CH_VIS_B], 0);
+        float vis = reference_visibility(r, &hits[i], 0);
+        assert_close(p[REFERENCE_CH_VIS_G], vis, 0);
+        assert_close(q[REFERENCE_CH_VIS_G], vis, 0);
+        if (vis == 0.0f && hits[i].object == 0) {
+            shadowed++;
+            assert_close(p[REFERENCE_CH_R], 0.1, 1e-6); /* ambient only */
+            assert_true(q[REFERENCE_CH_R] > 0.5f);      /* unshadowed beauty is lit */
+        } else {
+            assert_close(p[REFERENCE_CH_R], q[REFERENCE_CH_R], 0);
+        }
+    }
+    assert_true(shadowed > 0);
+    assert_true(background > 0);
+    assert_string_equal(reference_channel_names[REFERENCE_CH_VIS_B], "vis.B");
+    free(hits);
+    free(lit);
+    free(img);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* 100 spheres of 1740 triangles: the size of the 174k-triangle test scene. */
+static void test_primary_timing(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.camera.eye[2] = 25.0f;
+    int mesh = add_sphere(&s, 30, 30);
+    int mat = add_material(&s, 1, 1, 1, 0, 1);
+    for (int i = 0; i < 100; i++)
+        add_object(&s, mesh, mat, 0.9, 2.0 * (i % 10) - 9.0, 2.0 * (i / 10) - 9.0, 0);
+    assert_int_equal(100 * s.meshes[0].triangle_count, 174000);
+    clock_t t0 = clock();
+    reference *r = create(&s);
+    clock_t t1 = clock();
+    ref_hit *hits = malloc(sizeof *hits * 512 * 512);
+    assert_non_null(hits);
+    struct timespec a, b;
+    clock_gettime(CLOCK_MONOTONIC, &a);
+    assert_true(reference_primary(r, 512, 512, hits));
+    clock_gettime(CLOCK_MONOTONIC, &b);
+    long n = 0;
+    for (int i = 0; i < 512 * 512; i++)
+        n += hits[i].hit;
+    assert_true(n > 512 * 512 / 2);
+    /* the whole AOV image with a shadowing light, for the record */
+    scene_light *l = add_light(&s, SCENE_LIGHT_POINT);
+    l->position[0] = 5; l->position[1] = 5; l->position[2] = 10;
+    float *img = malloc(sizeof(float) * 512 * 512 * REFERENCE_CHANNELS);
+    assert_non_null(img);
+    struct timespec c;
+    assert_true(reference_render_ex(&s, r, 512, 512, 1, REFERENCE_RENDER_SHADOWED, img));
+    clock_gettime(CLOCK_MONOTONIC, &c);
+    print_message("174000 triangles: build %.3f s cpu, primary 512x512 %.3f s, "
+                  "shadowed per-vertex render %.3f s wall (%ld hits)\n",
+                  (double)(t1 - t0) / CLOCKS_PER_SEC,
+                  (double)(b.tv_sec - a.tv_sec) + 1e-9 * (double)(b.tv_nsec - a.tv_nsec),
+                  (double)(c.tv_sec - b.tv_sec) + 1e-9 * (double)(c.tv_nsec - b.tv_nsec), n);
+    free(img);
+    free(hits);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_quad_hits_analytic),
+        cmocka_unit_test(test_normals_follow_inverse_transpose),
+        cmocka_unit_test(test_miss_and_clipping),
+        cmocka_unit_test(test_bad_input),
+        cmocka_unit_test(test_box_blocks_light),
+        cmocka_unit_test(test_closed_surface_self_shadows),
+        cmocka_unit_test(test_plane_directional_per_pixel),
+        cmocka_unit_test(test_per_vertex_flat_triangle_equals_per_pixel),
+        cmocka_unit_test(test_per_vertex_clamps_before_interpolation),
+        cmocka_unit_test(test_spot_cone),
+        cmocka_unit_test(test_attenuation),
+        cmocka_unit_test(test_texture_sampling),
+        cmocka_unit_test(test_render_aovs),
+        cmocka_unit_test(test_primary_timing),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,39 @@
+/*
+ * A loaded scene handed to libstin: meshes and textures created in a stin
+ * context, and one frame of it submitted. Shared by stin-render, stin-bench
+ * and the image tests so that all three draw a scene the same way.
+ */
+#ifndef STIN_TOOLS_SCENE_GPU_H
+#define STIN_TOOLS_SCENE_GPU_H
+
+#include "scene.h"
+#include "stin/stin.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct scene_gpu {
+    const scene *src;
+    stin_mesh *meshes;      /* one per scene mesh */
+    stin_texture *textures; /* one per scene texture */
+    stin_material *materials;
+} scene_gpu;
+
+/* The stin_desc capacities this scene needs (meshes, draws, lights, vertices,
+ * textures); fields already set larger are kept. */
+void scene_gpu_size_desc(const scene *s, stin_desc *desc);
+/* Creates every mesh and texture; on failure writes a message and releases
+ * what was created. 1 on success. */
+int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err, size_t err_size);
+void scene_gpu_destroy(scene_gpu *g, stin_context *ctx);
+/* begin -> lights -> draws -> end for one frame into the current framebuffer. */
+stin_result scene_gpu_frame(const scene_gpu *g, stin_context *ctx, int width, int height,
+                            stin_output output, uint32_t framebuffer);
+/* Converts a scene light to stin's. */
+void scene_gpu_light(const scene_light *in, stin_light_desc *out);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,76 @@
+/*
+ * Internals shared by the scene loader's files: the JSON reading helpers
+ * (scene_json_util.c), mesh files (scene_mesh_file.c) and textures
+ * (scene_texture.c). Not for use outside tools/common and its tests.
+ */
+#ifndef STIN_TOOLS_SCENE_INTERNAL_H
+#define STIN_TOOLS_SCENE_INTERNAL_H
+
+#include <cJSON.h>
+
+#include "scene.h"
+
+/* Largest magnitude any number in a scene file may have; bigger values are
+ * almost always typos and would overflow float maths downstream. */
+#define SCENE_NUMBER_LIMIT 1e6
+
+/* Error sink for one scene file. Every helper that fails writes
+ * "FILE: WHERE: problem" into err and returns 0. */
+typedef struct scene_parser {
+    const char *file;
+    char *err;
+    size_t err_size;
+} scene_parser;
+
+/* Allowed range of a number member. */
+typedef enum scene_range {
+    SCENE_ANY = 0,     /* finite, |x| <= SCENE_NUMBER_LIMIT */
+    SCENE_POSITIVE,    /* > 0 */
+    SCENE_NONNEGATIVE, /* >= 0 */
+    SCENE_UNIT         /* [0, 1] */
+} scene_range;
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+int scene_fail(scene_parser *p, const char *where, const char *fmt, ...);
+
+/* "where.key", or just "key" when where is empty; truncates to size. */
+void scene_join(char *out, size_t size, const char *where, const char *key);
+
+/* Fails unless v is a JSON object whose keys are all in the NULL-terminated
+ * list `allowed` (and none repeats). */
+int scene_check_object(scene_parser *p, const cJSON *v, const char *where,
+                       const char *const *allowed);
+/* Fails unless obj has member key. */
+int scene_require(scene_parser *p, const cJSON *obj, const char *key, const char *where);
+
+/* Optional members: when key is absent *out keeps its value (the default). */
+int scene_get_number(scene_parser *p, const cJSON *obj, const char *key, const char *where,
+                     scene_range range, float *out);
+int scene_get_int(scene_parser *p, const cJSON *obj, const char *key, const char *where,
+                  int lo, int hi, int *out);
+int scene_get_vector(scene_parser *p, const cJSON *obj, const char *key, const char *where,
+                     int n, scene_range range, float *out);
+int scene_get_bool(scene_parser *p, const cJSON *obj, const char *key, const char *where,
+                   int *out);
+/* Copies a string member; fails if it does not fit in size (with its NUL)
+ * or is empty. */
+int scene_get_string(scene_parser *p, const cJSON *obj, const char *key, const char *where,
+                     char *out, size_t size);
+
+/* Joins a path from a scene file with the directory of that file (absolute
+ * paths are kept). 0 if it does not fit. */
+int scene_resolve_path(const char *scene_file, const char *rel, char *out, size_t size);
+
+/* Loads every mesh of a model file into one mesh. On failure writes a
+ * reason (no file or key names) into why and returns 0. */
+int scene_mesh_load_file(const char *path, scene_mesh *out, char *why, size_t why_size);
+
+/* Builds texture `json` (member of "textures" at where) into *out.
+ * `done` holds the `done_count` textures built before it, which
+ * normal_from_height may name. out->name must be set by the caller. */
+int scene_texture_build(scene_parser *p, const cJSON *json, const char *where,
+                        const scene_texture *done, int done_count, scene_texture *out);
+
+#endif
