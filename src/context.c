@@ -212,6 +212,9 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     stin__memzero(ctx, sizeof *ctx);
     layout(&d, &a, ctx);
     ctx->desc = d;
+    /* The block is the caller's: nothing in it is assumed zero. */
+    stin__memzero(ctx->meshes, sizeof(stin__mesh_slot) * d.max_meshes);
+    stin__memzero(ctx->textures, sizeof(stin__texture_slot) * d.max_textures);
     stin__range_init(&ctx->vertex_ranges, ctx->vertex_range_store, d.max_meshes, d.max_vertices);
     stin__range_init(&ctx->triangle_ranges, ctx->triangle_range_store, d.max_meshes,
                      d.max_triangles);

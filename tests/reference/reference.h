@@ -77,6 +77,10 @@ float reference_visibility(const reference *r, const ref_hit *hit, int light);
  * material's albedo texture (bilinear, repeat, no mipmaps) or 1. Background:
  * the scene background colour. r is only read per vertex (may be NULL per
  * pixel); a per-vertex call without the triangle in r gives NaN. */
+/* per_vertex = REFERENCE_GOURAUD_SINGLE_COLOR: GL 1.1 without separate
+ * specular — each vertex's primary + secondary summed, clamped, interpolated,
+ * and the texture modulates the whole. */
+#define REFERENCE_GOURAUD_SINGLE_COLOR 2
 void reference_shade(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
                      float out_rgba[4]);
 

@@ -90,8 +90,8 @@ static void background(const scene *s, float out_rgba[4])
 /* Gouraud: the model at the three vertices, clamped per vertex (as GL clamps
  * the lit vertex colours), then interpolated. */
 static void per_vertex(const scene *s, const reference *r, const ref_hit *hit,
-                       const scene_material *m, const float *weight, double primary[3],
-                       double secondary[3])
+                       const scene_material *m, const float *weight, int single_color,
+                       double primary[3], double secondary[3])
 {
     const ref_object *o = &r->objects[hit->object];
     const uint32_t *tri = o->indices + 3 * (size_t)hit->prim;
@@ -109,8 +109,12 @@ static void per_vertex(const scene *s, const reference *r, const ref_hit *hit,
                 N[c] = hit->Ng[c];
         model(s, m, P, N, weight, pk, sk);
         for (int c = 0; c < 3; c++) {
-            primary[c] += w[k] * clamp01(pk[c]);
-            secondary[c] += w[k] * clamp01(sk[c]);
+            if (single_color) { /* GL 1.1: one colour, the sum clamped per vertex */
+                primary[c] += w[k] * clamp01(pk[c] + sk[c]);
+            } else {
+                primary[c] += w[k] * clamp01(pk[c]);
+                secondary[c] += w[k] * clamp01(sk[c]);
+            }
         }
     }
 }
@@ -140,7 +144,8 @@ void reference_shade_weighted(const scene *s, const reference *r, const ref_hit 
                 out_rgba[c] = NAN;
             return;
         }
-        per_vertex(s, r, hit, m, light_weight, primary, secondary);
+        per_vertex(s, r, hit, m, light_weight,
+                   per_vertex_lighting == REFERENCE_GOURAUD_SINGLE_COLOR, primary, secondary);
     } else {
         double P[3] = {hit->P[0], hit->P[1], hit->P[2]}, N[3] = {hit->N[0], hit->N[1], hit->N[2]};
         model(s, m, P, N, light_weight, primary, secondary);

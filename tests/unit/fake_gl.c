@@ -1,0 +1,541 @@
+/* The fake GL of fake_gl.h. Entry points that need behaviour (strings,
+ * integers, object names, shader status, counters) are written out; every
+ * other one is a counted no-op generated from the STIN_GL_FUNCS list, so the
+ * fake follows the library's table and every stub has the exact signature. */
+#include "fake_gl.h"
+
+#include <string.h>
+
+fake_gl_state fake_gl;
+
+/* ---- generated no-op stubs -------------------------------------------------
+ * FAKE_CUSTOM_<Name> marks an entry point written out by hand below; the
+ * probe turns "is it marked?" into 0 or 1 so the X-macro can skip it. A
+ * non-void entry point left unmarked fails to compile (no return value). */
+#define FAKE_CUSTOM_GetString ~, 1
+#define FAKE_CUSTOM_GetStringi ~, 1
+#define FAKE_CUSTOM_GetIntegerv ~, 1
+#define FAKE_CUSTOM_GetError ~, 1
+#define FAKE_CUSTOM_Enable ~, 1
+#define FAKE_CUSTOM_Disable ~, 1
+#define FAKE_CUSTOM_DrawElements ~, 1
+#define FAKE_CUSTOM_GenTextures ~, 1
+#define FAKE_CUSTOM_DeleteTextures ~, 1
+#define FAKE_CUSTOM_TexImage2D ~, 1
+#define FAKE_CUSTOM_GenBuffers ~, 1
+#define FAKE_CUSTOM_DeleteBuffers ~, 1
+#define FAKE_CUSTOM_GenVertexArrays ~, 1
+#define FAKE_CUSTOM_DeleteVertexArrays ~, 1
+#define FAKE_CUSTOM_CreateShader ~, 1
+#define FAKE_CUSTOM_ShaderSource ~, 1
+#define FAKE_CUSTOM_GetShaderiv ~, 1
+#define FAKE_CUSTOM_GetShaderInfoLog ~, 1
+#define FAKE_CUSTOM_DeleteShader ~, 1
+#define FAKE_CUSTOM_CreateProgram ~, 1
+#define FAKE_CUSTOM_GetProgramiv ~, 1
+#define FAKE_CUSTOM_GetProgramInfoLog ~, 1
+#define FAKE_CUSTOM_DeleteProgram ~, 1
+#define FAKE_CUSTOM_GetUniformLocation ~, 1
+#define FAKE_CUSTOM_GetFramebufferAttachmentParameteriv ~, 1
+
+#define FAKE_SECOND(a, b, ...) b
+#define FAKE_PROBE(...) FAKE_SECOND(__VA_ARGS__, 0, ~)
+#define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)
+#define FAKE_CAT(a, b) FAKE_CAT_(a, b)
+#define FAKE_CAT_(a, b) a##b
+
+#define FAKE_STUB_0(ret, name, params) \
+    static ret STIN_APIENTRY fake_##name params { fake_gl.calls[STIN_GLFN_##name]++; }
+#define FAKE_STUB_1(ret, name, params) /* written out below */
+#define FAKE_STUB(ret, name, params, need, alt) \
+    FAKE_CAT(FAKE_STUB_, FAKE_IS_CUSTOM(name))(ret, name, params)
+
+#if defined(__GNUC__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#endif
+STIN_GL_FUNCS(FAKE_STUB)
+#if defined(__GNUC__)
+#pragma GCC diagnostic pop
+#endif
+
+/* Every stub, by prototype: the hand-written ones below must match the table. */
+#define FAKE_PROTO(ret, name, params, need, alt) static ret STIN_APIENTRY fake_##name params;
+STIN_GL_FUNCS(FAKE_PROTO)
+#undef FAKE_PROTO
+
+#define COUNT(name) (fake_gl.calls[STIN_GLFN_##name]++)
+
+/* ---- strings and integers ---------------------------------------------- */
+static const GLubyte *STIN_APIENTRY fake_GetString(GLenum name)
+{
+    const char *s = NULL;
+    COUNT(GetString);
+    switch (name) {
+    case GL_VERSION: s = fake_gl.config.version; break;
+    case GL_SHADING_LANGUAGE_VERSION: s = fake_gl.config.glsl_version; break;
+    case GL_EXTENSIONS: s = fake_gl.config.extensions; break;
+    case GL_RENDERER: s = "stin fake GL"; break;
+    case GL_VENDOR: s = "stin unit tests"; break;
+    default: break;
+    }
+    return (const GLubyte *)s;
+}
+
+static const GLubyte *STIN_APIENTRY fake_GetStringi(GLenum name, GLuint i)
+{
+    COUNT(GetStringi);
+    if (name != GL_EXTENSIONS || i >= (GLuint)fake_gl.config.extension_count)
+        return NULL;
+    return (const GLubyte *)fake_gl.config.extension_list[i];
+}
+
+static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
+{
+    const fake_gl_config *c = &fake_gl.config;
+    COUNT(GetIntegerv);
+    switch (pname) {
+    case GL_MAX_LIGHTS: *data = c->max_lights; break;
+    case GL_STENCIL_BITS: *data = c->stencil_bits; break;
+    case GL_DEPTH_BITS: *data = c->depth_bits; break;
+    case GL_MAX_TEXTURE_SIZE: *data = c->max_texture_size; break;
+    case GL_MAX_TEXTURE_UNITS: *data = c->max_texture_units; break;
+    case GL_MAX_TEXTURE_IMAGE_UNITS: *data = c->max_texture_image_units; break;
+    case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: *data = c->max_vertex_texture_units; break;
+    case GL_MAX_DRAW_BUFFERS: *data = c->max_draw_buffers; break;
+    case GL_MAX_GEOMETRY_OUTPUT_VERTICES: *data = c->max_geometry_output_vertices; break;
+    case GL_NUM_EXTENSIONS: *data = c->extension_count; break;
+    case GL_CONTEXT_PROFILE_MASK: *data = c->core_profile ? GL_CONTEXT_CORE_PROFILE_BIT : 2; break;
+    default: *data = 0; break;
+    }
+}
+
+static void STIN_APIENTRY fake_GetFramebufferAttachmentParameteriv(GLenum target, GLenum att,
+                                                                   GLenum pname, GLint *v)
+{
+    (void)target;
+    (void)att;
+    COUNT(GetFramebufferAttachmentParameteriv);
+    *v = pname == GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE ? fake_gl.config.stencil_bits
+         : pname == GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE ? fake_gl.config.depth_bits
+                                                         : 0;
+}
+
+static GLenum STIN_APIENTRY fake_GetError(void)
+{
+    COUNT(GetError);
+    return GL_NO_ERROR;
+}
+
+/* ---- enable state and drawing ------------------------------------------- */
+static void set_cap(GLenum cap, int on)
+{
+    unsigned i;
+    for (i = 0; i < fake_gl.cap_count; i++)
+        if (fake_gl.cap_enum[i] == cap)
+            break;
+    if (i == fake_gl.cap_count) {
+        if (i == FAKE_GL_MAX_CAPS)
+            return;
+        fake_gl.cap_enum[fake_gl.cap_count++] = cap;
+    }
+    fake_gl.cap_on[i] = (unsigned char)on;
+}
+
+int fake_gl_is_enabled(GLenum cap)
+{
+    unsigned i;
+    for (i = 0; i < fake_gl.cap_count; i++)
+        if (fake_gl.cap_enum[i] == cap)
+            return fake_gl.cap_on[i];
+    return 0;
+}
+
+static void STIN_APIENTRY fake_Enable(GLenum cap)
+{
+    COUNT(Enable);
+    fake_gl.last_enabled = cap;
+    set_cap(cap, 1);
+}
+
+static void STIN_APIENTRY fake_Disable(GLenum cap)
+{
+    COUNT(Disable);
+    fake_gl.last_disabled = cap;
+    set_cap(cap, 0);
+}
+
+static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum type,
+                                            const void *idx)
+{
+    (void)mode;
+    (void)type;
+    (void)idx;
+    COUNT(DrawElements);
+    fake_gl.draw_calls++;
+    fake_gl.drawn_indices += (unsigned)count;
+}
+
+/* ---- object names ------------------------------------------------------- */
+static void gen_names(GLsizei n, GLuint *out, unsigned *created)
+{
+    GLsizei i;
+    for (i = 0; i < n; i++)
+        out[i] = ++fake_gl.next_name;
+    *created += (unsigned)n;
+}
+
+static void delete_names(GLsizei n, const GLuint *names, unsigned *deleted)
+{
+    GLsizei i;
+    for (i = 0; i < n; i++) {
+        if (names[i])
+            (*deleted)++;
+        else
+            fake_gl.deletes_of_zero++;
+    }
+}
+
+static void STIN_APIENTRY fake_GenTextures(GLsizei n, GLuint *t)
+{
+    COUNT(GenTextures);
+    gen_names(n, t, &fake_gl.textures_created);
+}
+
+static void STIN_APIENTRY fake_DeleteTextures(GLsizei n, const GLuint *t)
+{
+    COUNT(DeleteTextures);
+    delete_names(n, t, &fake_gl.textures_deleted);
+}
+
+static void STIN_APIENTRY fake_GenBuffers(GLsizei n, GLuint *b)
+{
+    COUNT(GenBuffers);
+    gen_names(n, b, &fake_gl.buffers_created);
+}
+
+static void STIN_APIENTRY fake_DeleteBuffers(GLsizei n, const GLuint *b)
+{
+    COUNT(DeleteBuffers);
+    delete_names(n, b, &fake_gl.buffers_deleted);
+}
+
+static void STIN_APIENTRY fake_GenVertexArrays(GLsizei n, GLuint *a)
+{
+    COUNT(GenVertexArrays);
+    gen_names(n, a, &fake_gl.vertex_arrays_created);
+}
+
+static void STIN_APIENTRY fake_DeleteVertexArrays(GLsizei n, const GLuint *a)
+{
+    COUNT(DeleteVertexArrays);
+    delete_names(n, a, &fake_gl.vertex_arrays_deleted);
+}
+
+static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt, GLsizei w,
+                                          GLsizei h, GLint border, GLenum fmt, GLenum type,
+                                          const void *pixels)
+{
+    (void)target;
+    (void)ifmt;
+    (void)border;
+    (void)fmt;
+    (void)type;
+    (void)pixels;
+    COUNT(TexImage2D);
+    fake_gl.tex_images++;
+    if (level == 0)
+        fake_gl.tex_levels = 0;
+    if (level >= 0 && level < FAKE_GL_MAX_LEVELS) {
+        fake_gl.tex_level_width[level] = w;
+        fake_gl.tex_level_height[level] = h;
+        if ((unsigned)level + 1 > fake_gl.tex_levels)
+            fake_gl.tex_levels = (unsigned)level + 1;
+    }
+}
+
+/* ---- shaders and programs ----------------------------------------------- */
+static int *shader_version(GLuint s)
+{
+    static int none;
+    none = 0;
+    return s >= 1 && s <= FAKE_GL_MAX_SHADERS ? &fake_gl.shader_version[s - 1] : &none;
+}
+
+static int shader_compiles(GLuint s)
+{
+    int from = fake_gl.config.fail_glsl_from;
+    return !(from > 0 && *shader_version(s) >= from);
+}
+
+/* Shader and program names come from their own small range so that the
+ * per-shader "#version" table can be indexed by name. */
+static GLuint STIN_APIENTRY fake_CreateShader(GLenum type)
+{
+    (void)type;
+    COUNT(CreateShader);
+    fake_gl.shaders_created++;
+    return (GLuint)fake_gl.shaders_created; /* 1, 2, ...; > FAKE_GL_MAX_SHADERS: no version kept */
+}
+
+static void STIN_APIENTRY fake_ShaderSource(GLuint s, GLsizei n, const GLchar *const *src,
+                                            const GLint *len)
+{
+    GLsizei i;
+    (void)len;
+    COUNT(ShaderSource);
+    for (i = 0; i < n; i++) {
+        const char *v = src[i] ? strstr(src[i], "#version") : NULL;
+        if (v) {
+            int version = 0;
+            v += 8;
+            while (*v == ' ')
+                v++;
+            while (*v >= '0' && *v <= '9')
+                version = version * 10 + (*v++ - '0');
+            *shader_version(s) = version;
+            return;
+        }
+    }
+    *shader_version(s) = 110; /* no #version line means GLSL 1.10 */
+}
+
+static void STIN_APIENTRY fake_GetShaderiv(GLuint s, GLenum pname, GLint *v)
+{
+    COUNT(GetShaderiv);
+    if (pname == GL_COMPILE_STATUS) {
+        *v = shader_compiles(s) ? GL_TRUE : GL_FALSE;
+        if (!*v)
+            fake_gl.shader_compile_failures++;
+    } else {
+        *v = 0;
+    }
+}
+
+static void copy_log(GLsizei size, GLsizei *len, GLchar *log, const char *text)
+{
+    GLsizei n = 0;
+    if (size <= 0)
+        return;
+    while (text[n] && n + 1 < size) {
+        log[n] = text[n];
+        n++;
+    }
+    log[n] = '\0';
+    if (len)
+        *len = n;
+}
+
+static void STIN_APIENTRY fake_GetShaderInfoLog(GLuint s, GLsizei size, GLsizei *len, GLchar *log)
+{
+    (void)s;
+    COUNT(GetShaderInfoLog);
+    copy_log(size, len, log, "0:1(10): error: GLSL version not supported by the fake GL");
+}
+
+static void STIN_APIENTRY fake_DeleteShader(GLuint s)
+{
+    COUNT(DeleteShader);
+    if (s)
+        fake_gl.shaders_deleted++;
+    else
+        fake_gl.deletes_of_zero++;
+}
+
+static GLuint STIN_APIENTRY fake_CreateProgram(void)
+{
+    COUNT(CreateProgram);
+    fake_gl.programs_created++;
+    return 1000u + fake_gl.programs_created;
+}
+
+static void STIN_APIENTRY fake_GetProgramiv(GLuint p, GLenum pname, GLint *v)
+{
+    (void)p;
+    COUNT(GetProgramiv);
+    if (pname == GL_LINK_STATUS) {
+        *v = fake_gl.config.fail_link ? GL_FALSE : GL_TRUE;
+        if (!*v)
+            fake_gl.program_link_failures++;
+    } else {
+        *v = 0;
+    }
+}
+
+static void STIN_APIENTRY fake_GetProgramInfoLog(GLuint p, GLsizei size, GLsizei *len, GLchar *log)
+{
+    (void)p;
+    COUNT(GetProgramInfoLog);
+    copy_log(size, len, log, "error: linking refused by the fake GL");
+}
+
+static void STIN_APIENTRY fake_DeleteProgram(GLuint p)
+{
+    COUNT(DeleteProgram);
+    if (p)
+        fake_gl.programs_deleted++;
+    else
+        fake_gl.deletes_of_zero++;
+}
+
+static GLint STIN_APIENTRY fake_GetUniformLocation(GLuint p, const GLchar *name)
+{
+    (void)p;
+    (void)name;
+    COUNT(GetUniformLocation);
+    return 1;
+}
+
+/* ---- resolution --------------------------------------------------------- */
+typedef void (*fake_any_fn)(void);
+
+static const struct {
+    const char *name;
+    fake_any_fn fn;
+} stubs[] = {
+#define FAKE_ENTRY(ret, name, params, need, alt) {"gl" #name, (fake_any_fn)fake_##name},
+    STIN_GL_FUNCS(FAKE_ENTRY)
+#undef FAKE_ENTRY
+};
+
+static int is_missing(const char *name)
+{
+    const char *const *m = fake_gl.config.missing;
+    for (; m && *m; m++)
+        if (strcmp(*m, name) == 0)
+            return 1;
+    return 0;
+}
+
+void *fake_gl_get_proc(void *user, const char *name)
+{
+    size_t i;
+    void *p = NULL;
+    (void)user;
+    if (!name || is_missing(name))
+        return NULL;
+    for (i = 0; i < sizeof stubs / sizeof stubs[0]; i++)
+        if (strcmp(stubs[i].name, name) == 0) {
+            memcpy(&p, &stubs[i].fn, sizeof p); /* function -> object pointer, as dlsym does */
+            return p;
+        }
+    return NULL;
+}
+
+void fake_gl_reset(const fake_gl_config *config)
+{
+    memset(&fake_gl, 0, sizeof fake_gl);
+    if (config)
+        fake_gl.config = *config;
+}
+
+/* ---- profiles ----------------------------------------------------------- */
+#define GL13_EXTS                                                                  \
+    "GL_ARB_multitexture GL_ARB_texture_env_combine GL_ARB_texture_env_dot3 "      \
+    "GL_ARB_texture_cube_map GL_EXT_separate_specular_color"
+#define GL14_EXTS                                                                  \
+    GL13_EXTS " GL_ARB_depth_texture GL_ARB_shadow GL_EXT_stencil_wrap "           \
+              "GL_EXT_stencil_two_side GL_ARB_depth_clamp"
+
+static const char *const core_extensions[] = {
+    "GL_ARB_depth_clamp", "GL_EXT_texture_filter_anisotropic", "GL_ARB_texture_float",
+    "GL_ARB_shader_bit_encoding"};
+
+fake_gl_config fake_gl_profile(fake_gl_profile_id id)
+{
+    fake_gl_config c;
+    memset(&c, 0, sizeof c);
+    c.stencil_bits = 8;
+    c.depth_bits = 24;
+    c.max_texture_size = 2048;
+    c.max_lights = 8;
+    c.max_texture_units = 1;
+    switch (id) {
+    case FAKE_GL11:
+        c.version = "1.1 Mesa 22.3.6";
+        c.extensions = "";
+        break;
+    case FAKE_GL13:
+        c.version = "1.3 Mesa 22.3.6";
+        c.extensions = GL13_EXTS;
+        c.max_texture_units = 4;
+        break;
+    case FAKE_GL14:
+        c.version = "1.4 Mesa 22.3.6";
+        c.extensions = GL14_EXTS;
+        c.max_texture_units = 4;
+        break;
+    case FAKE_GL21:
+        c.version = "2.1 Mesa 22.3.6";
+        c.glsl_version = "1.20";
+        c.extensions = GL14_EXTS " GL_ARB_framebuffer_object GL_ARB_texture_float";
+        c.max_texture_units = 8;
+        c.max_texture_image_units = 16;
+        c.max_vertex_texture_units = 16;
+        c.max_draw_buffers = 8;
+        break;
+    case FAKE_GL33_CORE:
+    case FAKE_GL45_CORE:
+        c.version = id == FAKE_GL33_CORE ? "3.3 (Core Profile) Mesa 22.3.6"
+                                         : "4.5 (Core Profile) Mesa 22.3.6";
+        c.glsl_version = id == FAKE_GL33_CORE ? "3.30" : "4.50";
+        c.extension_list = core_extensions;
+        c.extension_count = (int)(sizeof core_extensions / sizeof core_extensions[0]);
+        c.core_profile = 1;
+        c.max_lights = 0;
+        c.max_texture_size = 16384;
+        c.max_texture_image_units = 32;
+        c.max_vertex_texture_units = 32;
+        c.max_draw_buffers = 8;
+        c.max_geometry_output_vertices = 256;
+        break;
+    }
+    return c;
+}
+
+/* ---- recording logger --------------------------------------------------- */
+/* Lines are stored as "<item number> <message>\n". */
+void fake_log_fn(void *user, stin_log_level level, stin_log_item item, const char *message)
+{
+    fake_log *log = (fake_log *)user;
+    char head[8];
+    size_t n = 0, i;
+    if (!log)
+        return;
+    if ((unsigned)item < STIN_LOG_ITEM_COUNT)
+        log->items[item]++;
+    if (level == STIN_LOG_LEVEL_ERROR)
+        log->errors++;
+    else if (level == STIN_LOG_LEVEL_WARNING)
+        log->warnings++;
+    else
+        log->infos++;
+    head[n++] = (char)('0' + (unsigned)item / 10 % 10);
+    head[n++] = (char)('0' + (unsigned)item % 10);
+    head[n++] = ' ';
+    head[n] = '\0';
+    for (i = 0; head[i] && log->used + 2 < sizeof log->text; i++)
+        log->text[log->used++] = head[i];
+    for (i = 0; message[i] && log->used + 2 < sizeof log->text; i++)
+        log->text[log->used++] = message[i];
+    log->text[log->used++] = '\n';
+    log->text[log->used] = '\0';
+}
+
+int fake_log_has(const fake_log *log, stin_log_item item, const char *s)
+{
+    const char *line = log->text;
+    size_t len = strlen(s);
+    while (*line) {
+        const char *end = strchr(line, '\n'), *p;
+        unsigned it = (unsigned)(line[0] - '0') * 10u + (unsigned)(line[1] - '0');
+        if (!end)
+            end = line + strlen(line);
+        if (item == STIN_LOG_ITEM_COUNT || it == (unsigned)item)
+            for (p = line + 3; p + len <= end; p++)
+                if (strncmp(p, s, len) == 0)
+                    return 1;
+        line = *end ? end + 1 : end;
+    }
+    return 0;
+}

@@ -1,0 +1,96 @@
+/* A fake OpenGL for unit tests: every entry point of src/gl_funcs.h as a stub
+ * that records what stin asked for. No GL, no window, no heap.
+ *
+ *     fake_gl_config cfg = fake_gl_profile(FAKE_GL21);
+ *     cfg.max_lights = 2;                      // tweak what the driver reports
+ *     fake_gl_reset(&cfg);                     // installs cfg, zeroes the counters
+ *     desc.get_proc_address = fake_gl_get_proc;
+ *     ... stin calls ...
+ *     assert_int_equal(fake_gl.textures_created, fake_gl.textures_deleted);
+ *
+ * The config is copied by fake_gl_reset; the strings it points to must stay
+ * alive while the fake is used. Compile with -Isrc (uses gl_types.h). */
+#ifndef FAKE_GL_H
+#define FAKE_GL_H
+
+#include "internal.h"
+
+typedef struct fake_gl_config {
+    const char *version;                 /* GL_VERSION; NULL makes glGetString return NULL */
+    const char *glsl_version;            /* GL_SHADING_LANGUAGE_VERSION, NULL = none */
+    const char *extensions;              /* GL_EXTENSIONS (space separated), NULL = none */
+    const char *const *extension_list;   /* glGetStringi(GL_EXTENSIONS, i) */
+    int extension_count;                 /* GL_NUM_EXTENSIONS */
+    int core_profile;                    /* GL_CONTEXT_PROFILE_MASK reports core */
+    int max_lights, stencil_bits, depth_bits, max_texture_size, max_texture_units;
+    int max_texture_image_units, max_vertex_texture_units, max_draw_buffers;
+    int max_geometry_output_vertices;
+    const char *const *missing;          /* NULL-terminated names ("glGenBuffers") that do not resolve */
+    int fail_glsl_from;                  /* shaders with "#version N", N >= this, fail to
+                                          * compile (e.g. 150); 0 = every shader compiles */
+    int fail_link;                       /* every program fails to link */
+} fake_gl_config;
+
+/* Configs shaped like the emulation profiles of DESIGN.md. */
+typedef enum fake_gl_profile_id {
+    FAKE_GL11,      /* 1.1, no extensions */
+    FAKE_GL13,      /* 1.3 + combine/dot3, no depth textures */
+    FAKE_GL14,      /* 1.4 + ARB_shadow, two-sided stencil, wrap, depth clamp */
+    FAKE_GL21,      /* 2.1 compatibility, GLSL 1.20, FBO */
+    FAKE_GL33_CORE, /* 3.3 core, GLSL 3.30 */
+    FAKE_GL45_CORE  /* 4.5 core, GLSL 4.50 */
+} fake_gl_profile_id;
+
+fake_gl_config fake_gl_profile(fake_gl_profile_id id);
+
+/* What the stubs saw since the last fake_gl_reset. */
+#define FAKE_GL_MAX_LEVELS 16
+#define FAKE_GL_MAX_SHADERS 64
+#define FAKE_GL_MAX_CAPS 32
+typedef struct fake_gl_state {
+    fake_gl_config config;
+    unsigned calls[STIN_GLFN_COUNT];     /* per entry point, index STIN_GLFN_<Name> */
+    unsigned draw_calls, drawn_indices;
+    unsigned textures_created, textures_deleted;
+    unsigned buffers_created, buffers_deleted;
+    unsigned vertex_arrays_created, vertex_arrays_deleted;
+    unsigned shaders_created, shaders_deleted, shader_compile_failures;
+    unsigned programs_created, programs_deleted, program_link_failures;
+    unsigned deletes_of_zero;            /* glDelete* of name 0 (harmless, but suspicious) */
+    /* glTexImage2D: the mip chain of the most recent level-0 upload. */
+    unsigned tex_images;                 /* calls in total */
+    unsigned tex_levels;                 /* levels of the latest chain */
+    int tex_level_width[FAKE_GL_MAX_LEVELS], tex_level_height[FAKE_GL_MAX_LEVELS];
+    /* glEnable/glDisable */
+    GLenum last_enabled, last_disabled;
+    GLenum cap_enum[FAKE_GL_MAX_CAPS];
+    unsigned char cap_on[FAKE_GL_MAX_CAPS];
+    unsigned cap_count;
+    /* shader objects: "#version" of each, by name - 1 */
+    int shader_version[FAKE_GL_MAX_SHADERS];
+    unsigned next_name;
+} fake_gl_state;
+
+extern fake_gl_state fake_gl;
+
+void fake_gl_reset(const fake_gl_config *config);
+/* stin_get_proc_fn: resolves "gl<Name>" for every entry point in gl_funcs.h
+ * (alternate ARB/EXT names never resolve); `user` is ignored. */
+void *fake_gl_get_proc(void *user, const char *name);
+/* 1 if glEnable(cap) was the last of glEnable/glDisable(cap), 0 otherwise. */
+int fake_gl_is_enabled(GLenum cap);
+
+/* A stin_log_fn that records into a fake_log passed as log_user: a count per
+ * item and level, and the messages one per line (truncated when full). */
+typedef struct fake_log {
+    unsigned items[STIN_LOG_ITEM_COUNT];
+    unsigned errors, warnings, infos;
+    char text[16384];
+    size_t used;
+} fake_log;
+
+void fake_log_fn(void *user, stin_log_level level, stin_log_item item, const char *message);
+/* 1 if a logged message of `item` (STIN_LOG_ITEM_COUNT: any item) contains `s`. */
+int fake_log_has(const fake_log *log, stin_log_item item, const char *s);
+
+#endif
