@@ -38,7 +38,7 @@ PLATFORM_OBJ := $(PLATFORM_SRC:%.c=$(B)/obj/%.o)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(B)/obj/%.o) $(COMMON_CXX:%.cpp=$(B)/obj/%.o)
 REF_OBJ := $(REF_SRC:%.c=$(B)/obj/%.o)
 
-.PHONY: all check demo bench install clean deps unit-tests image-tests
+.PHONY: all check demo bench install clean deps tests
 all: $(B)/libstin.a $(B)/libstin_platform.a $(B)/stin-render $(B)/stin-bench
 
 deps:
@@ -89,4 +89,63 @@ $(B)/stin-render: $(B)/obj/tools/render/main.o $(B)/libstin_tools.a $(B)/libstin
 	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
 IMAGETEST_OBJ := $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tests/image/*.c)))
 $(B)/stin-imagetest: $(IMAGETEST_OBJ) $(B)/libstin_reference.a $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin_checked.a
+	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
+
+# ---- unit tests (cmocka, AddressSanitizer + UndefinedBehaviorSanitizer) ----
+SAN_CFLAGS := -std=c99 $(WARN) -g -O1 $(SAN) -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -I$(B) \
+  -Iplatform -Itools/common -Itests/reference -Itests/unit $(shell pkg-config --cflags libcjson 2>/dev/null)
+LIB_UNIT := $(filter-out test_noheap test_scene test_reference,$(patsubst tests/unit/%.c,%,$(wildcard tests/unit/test_*.c)))
+UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_reference $(B)/tests/test_noheap
+
+$(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c tests/unit/fake_gl.c $(LIB_SRC) $(B)/shaders_embedded.c $(wildcard src/*.h include/stin/*.h tests/unit/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(SAN_CFLAGS) -o $@ $< tests/unit/fake_gl.c $(LIB_SRC) $(B)/shaders_embedded.c -lcmocka
+$(B)/tests/test_scene: tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(wildcard tools/common/*.h)
+	@mkdir -p $(@D)/san
+	$(CXX) -std=c++17 $(WARN) -g -O1 $(SAN) -Iinclude -Itools/common -c tools/common/image_io.cpp -o $(@D)/san/image_io.o
+	$(CC) $(SAN_CFLAGS) -o $@ $< $(filter %.c,$(COMMON_SRC)) $(B)/libstin.a $(@D)/san/image_io.o -lcmocka $(TOOL_LIBS) $(PLATFORM_LIBS)
+$(B)/tests/test_reference: tests/unit/test_reference.c $(REF_SRC) $(wildcard tests/reference/*.h)
+	@mkdir -p $(@D)
+	$(CC) $(SAN_CFLAGS) -o $@ $< $(REF_SRC) -lcmocka $(REF_LIBS) -lm
+# The allocator is interposed here, so no AddressSanitizer (it owns malloc).
+$(B)/tests/test_noheap: tests/unit/test_noheap.c tests/unit/fake_gl.c $(B)/libstin.a
+	@mkdir -p $(@D)
+	$(CC) -std=c99 $(WARN) -g -O1 -fsanitize=undefined -fno-sanitize-recover=all -D_GNU_SOURCE -Iinclude -Isrc -I$(B) -Itests/unit \
+	  -o $@ $< tests/unit/fake_gl.c $(B)/libstin.a -lcmocka
+
+$(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
+	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
+
+tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/libstin.a
+
+check: deps
+	@$(MAKE) --no-print-directory tests
+	@sh tests/run.sh $(B)
+
+bench: deps
+	@$(MAKE) --no-print-directory $(B)/stin-bench
+	$(B)/stin-bench
+
+# Every example scene at every tier the default context runs, into out/.
+demo: deps
+	@$(MAKE) --no-print-directory $(B)/stin-render
+	@mkdir -p out
+	@for s in tests/scenes/*.json; do n=$$(basename $$s .json); \
+	  for t in gl1 gl2 gl4; do \
+	    $(B)/stin-render $$s --tier $$t -o out/$$n-$$t.png > out/$$n-$$t.txt 2>&1 \
+	      && echo "out/$$n-$$t.png" || echo "$$n at $$t: $$(tail -n 1 out/$$n-$$t.txt)"; \
+	  done; done
+
+# ---- install ---------------------------------------------------------------
+install: $(B)/libstin.a $(B)/libstin_platform.a
+	install -d $(DESTDIR)$(PREFIX)/include/stin $(DESTDIR)$(PREFIX)/lib/pkgconfig
+	install -m 644 include/stin/stin.h include/stin/stin_debug.h platform/stin_platform.h $(DESTDIR)$(PREFIX)/include/stin/
+	install -m 644 $(B)/libstin.a $(B)/libstin_platform.a $(DESTDIR)$(PREFIX)/lib/
+	sed -e 's|@PREFIX@|$(PREFIX)|' stin.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/stin.pc
+	sed -e 's|@PREFIX@|$(PREFIX)|' stin-platform.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/stin-platform.pc
+
+clean:
+	rm -rf $(B) out
+
+$(B)/stin-reference: $(B)/obj/tests/tools/reference_render.o $(B)/libstin_reference.a $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
