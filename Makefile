@@ -51,30 +51,30 @@ $(B)/shaders_embedded.c: $(SHADERS) tools/embed-shaders.sh
 
 $(B)/lib/%.o: %.c $(wildcard include/stin/*.h src/*.h)
 	@mkdir -p $(@D)
-	$(CC) $(LIB_CFLAGS) -c $< -o $@
+	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -c $< -o $@
 $(B)/lib/shaders_embedded.o: $(B)/shaders_embedded.c
 	@mkdir -p $(@D)
-	$(CC) $(LIB_CFLAGS) -c $< -o $@
+	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -c $< -o $@
 $(B)/libstin.a: $(LIB_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # Test build: every GL call is checked against the capability profile.
 $(B)/checked/%.o: %.c $(wildcard include/stin/*.h src/*.h)
 	@mkdir -p $(@D)
-	$(CC) $(LIB_CFLAGS) -DSTIN_GL_CHECK=1 -c $< -o $@
+	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -DSTIN_GL_CHECK=1 -c $< -o $@
 $(B)/checked/shaders_embedded.o: $(B)/shaders_embedded.c
 	@mkdir -p $(@D)
-	$(CC) $(LIB_CFLAGS) -c $< -o $@
+	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -c $< -o $@
 $(B)/libstin_checked.a: $(CHECKED_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # ---- platform, tool support, reference -------------------------------------
 $(B)/obj/%.o: %.c $(wildcard include/stin/*.h platform/*.h tools/common/*.h tests/reference/*.h)
 	@mkdir -p $(@D)
-	$(CC) $(TOOL_CFLAGS) -c $< -o $@
+	@echo "  CC      $<"; $(CC) $(TOOL_CFLAGS) -c $< -o $@
 $(B)/obj/%.o: %.cpp $(wildcard tools/common/*.h)
 	@mkdir -p $(@D)
-	$(CXX) $(TOOL_CXXFLAGS) -c $< -o $@
+	@echo "  CXX     $<"; $(CXX) $(TOOL_CXXFLAGS) -c $< -o $@
 $(B)/libstin_platform.a: $(PLATFORM_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 $(B)/libstin_tools.a: $(COMMON_OBJ)
@@ -103,7 +103,7 @@ $(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c tests/unit/fake_gl.c $(
 $(B)/tests/test_scene: tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(wildcard tools/common/*.h)
 	@mkdir -p $(@D)/san
 	$(CXX) -std=c++17 $(WARN) -g -O1 $(SAN) -Iinclude -Itools/common -c tools/common/image_io.cpp -o $(@D)/san/image_io.o
-	$(CC) $(SAN_CFLAGS) -o $@ $< $(filter %.c,$(COMMON_SRC)) $(B)/libstin.a $(@D)/san/image_io.o -lcmocka $(TOOL_LIBS) $(PLATFORM_LIBS)
+	$(CC) $(SAN_CFLAGS) -o $@ $< $(filter %.c,$(COMMON_SRC)) $(PLATFORM_SRC) $(B)/libstin.a $(@D)/san/image_io.o -lcmocka $(TOOL_LIBS) $(PLATFORM_LIBS)
 $(B)/tests/test_reference: tests/unit/test_reference.c $(REF_SRC) $(wildcard tests/reference/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(SAN_CFLAGS) -o $@ $< $(REF_SRC) -lcmocka $(REF_LIBS) -lm

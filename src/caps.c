@@ -156,6 +156,8 @@ int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
     if (!in->core_profile)
         have |= STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION);
     have &= ~caps_missing_entry_points(in->loaded);
+    if (!(have & STIN_CAP_BIT(STIN_CAP_GLSL))) /* geometry shaders are GLSL shaders */
+        have &= ~STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER);
     out->hidden = have & in->caps_mask;
     out->present = have & ~in->caps_mask;
     return 1;
@@ -262,9 +264,13 @@ stin_result stin__caps_detect(const stin__gl *gl, const unsigned char *loaded,
     detect_limits(gl, caps, reported);
     if (caps->stencil_bits <= 0)
         caps->present &= ~STIN_CAP_BIT(STIN_CAP_STENCIL);
-    if ((caps->present & STIN_CAP_BIT(STIN_CAP_GLSL)) && caps->max_vertex_texture_units > 0 &&
-        !(caps_mask & STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH)))
-        caps->present |= STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH);
+    if (((caps->present | caps->hidden) & STIN_CAP_BIT(STIN_CAP_GLSL)) &&
+        caps->max_vertex_texture_units > 0) {
+        if (caps_mask & STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH))
+            caps->hidden |= STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH);
+        else if (caps->present & STIN_CAP_BIT(STIN_CAP_GLSL))
+            caps->present |= STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH);
+    }
     if (!(caps->present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)))
         caps->max_lights = 0;
     return STIN_OK;

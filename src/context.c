@@ -148,6 +148,30 @@ static stin_result init_lighting(stin_context *ctx)
     }
 }
 
+/* A missing GL 1.1 entry point is fatal (it would be called); a missing
+ * extension entry point turns its capability off. Both are named. */
+static stin_result check_entry_points(stin_context *ctx)
+{
+    stin_result r = STIN_OK;
+    int i;
+    for (i = 0; i < STIN_GLFN_COUNT; i++) {
+        int need = stin__glfn_need((stin__glfn)i);
+        if (ctx->gl_loaded[i])
+            continue;
+        if (need == NEED_CORE) {
+            stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_MISSING_ENTRY_POINT,
+                      "stin_create: GL 1.1 entry point %s did not load",
+                      stin__glfn_name((stin__glfn)i));
+            r = STIN_ERROR_GL;
+        } else {
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_MISSING_ENTRY_POINT,
+                      "%s did not load: %s is off", stin__glfn_name((stin__glfn)i),
+                      need == NEED_GL30 ? "GL 3.0" : stin_cap_name((stin_cap)need));
+        }
+    }
+    return r;
+}
+
 static void log_selection(stin_context *ctx)
 {
     char names[512];
@@ -219,9 +243,11 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     stin__range_init(&ctx->triangle_ranges, ctx->triangle_range_store, d.max_meshes,
                      d.max_triangles);
 
-    if (stin__gl_load(&ctx->gl, d.get_proc_address, d.get_proc_user, ctx->gl_loaded))
-        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_MISSING_ENTRY_POINT,
-                  "some GL entry points did not load; their capabilities are off");
+    if (stin__gl_load(&ctx->gl, d.get_proc_address, d.get_proc_user, ctx->gl_loaded)) {
+        r = check_entry_points(ctx);
+        if (r != STIN_OK)
+            return r;
+    }
     r = stin__caps_detect(&ctx->gl, ctx->gl_loaded, d.caps_mask, d.max_gl_version, &ctx->caps);
     if (r != STIN_OK) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_CAPS,
@@ -231,7 +257,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     r = stin__select(&ctx->caps, d.tier, d.techniques, &ctx->sel, msg, sizeof msg);
     if (r != STIN_OK) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR,
-                  d.tier != STIN_TIER_AUTO && msg[0] == 't' && msg[1] == 'i'
+                  r == STIN_ERROR_INVALID_ARGUMENT ? STIN_LOG_BAD_ARGUMENT
+                  : d.tier != STIN_TIER_AUTO && msg[0] == 't' && msg[1] == 'i'
                       ? STIN_LOG_TIER_UNSUPPORTED
                       : STIN_LOG_TECHNIQUE_UNSUPPORTED,
                   "stin_create: %s", msg);

@@ -139,13 +139,17 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
         ctx->stats.dropped_draws++;
         return STIN_ERROR_INVALID_HANDLE;
     }
-    if (transform && !finite_n(transform, 16))
-        return arg_error(ctx, "stin_draw", "transform must be finite");
+    if (transform && !finite_n(transform, 16)) {
+        ctx->stats.dropped_draws++;
+        return arg_error(ctx, "stin_draw", "transform must be finite; draw dropped");
+    }
     stin__memzero(&mat, sizeof mat);
     if (material)
         mat = *material;
-    if (!finite_n(mat.color, 4) || !finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess))
-        return arg_error(ctx, "stin_draw", "material values must be finite");
+    if (!finite_n(mat.color, 4) || !finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess)) {
+        ctx->stats.dropped_draws++;
+        return arg_error(ctx, "stin_draw", "material values must be finite; draw dropped");
+    }
     if (mat.albedo.id && !stin__texture_lookup(ctx, mat.albedo)) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_HANDLE,
                   "stin_draw: stale or unknown albedo texture 0x%x; draw dropped", mat.albedo.id);

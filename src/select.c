@@ -112,11 +112,11 @@ static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
         }
         if (tech_tier[forced] > tier || lack) {
             stin__cap_names(lack, names, sizeof names);
-            stin__formatf(msg, msg_size, "%s technique %s needs %s%s%s", stin_feature_name(f),
+            stin__formatf(msg, msg_size, "%s technique %s needs %s%s%s%s", stin_feature_name(f),
                           stin_technique_name(forced),
                           tech_tier[forced] > tier ? "tier " : "",
                           tech_tier[forced] > tier ? stin_tier_name(tech_tier[forced]) : "",
-                          lack ? names : "");
+                          tech_tier[forced] > tier && lack ? ", " : "", lack ? names : "");
             return STIN_ERROR_UNSUPPORTED;
         }
         out->technique = forced;
@@ -128,12 +128,8 @@ static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
         if (tech_feature[t] != f)
             continue;
         lack = stin__technique_needs((stin_technique)t) & ~caps->present;
-        if (tech_tier[t] > tier) {
-            if (!why[0])
-                stin__formatf(why, sizeof why, "%s is above tier %s", stin_technique_name((stin_technique)t),
-                              stin_tier_name(tier));
-            continue;
-        }
+        if (tech_tier[t] > tier)
+            continue; /* above the tier ceiling: not a fallback */
         if (lack) {
             stin__cap_names(lack, names, sizeof names);
             stin__formatf(why, sizeof why, "%s needs %s", stin_technique_name((stin_technique)t),

@@ -26,7 +26,8 @@
  *     stin_destroy(ctx);                       // GL objects go; the block is yours
  *
  * TIERS
- *   STIN_TIER_GL1  fixed function, GL 1.1 + stencil at the least; uses GL 1.3/1.4
+ *   STIN_TIER_GL1  fixed function on any compatibility context from GL 1.1 up
+ *                  (stencil shadow volumes need a stencil buffer); uses GL 1.3/1.4
  *                  extensions where present. Per-vertex (Gouraud) lighting.
  *   STIN_TIER_GL2  GLSL 1.10/1.20 on a GL 2.x (or compatibility) context.
  *                  Per-pixel lighting.
@@ -325,7 +326,8 @@ typedef struct stin_mesh_info {
     uint32_t vertex_count, triangle_count;
     uint32_t degenerate_dropped;   /* zero-area triangles removed at creation */
     uint32_t open_edges;           /* edges with one incident triangle */
-    uint32_t nonmanifold_edges;    /* edges with more than two */
+    uint32_t nonmanifold_edges;    /* edges with more than two triangles, or two that
+                                    * traverse it in the same direction */
     int closed_manifold;           /* 1 when every edge has exactly two opposite triangles */
     float bounds_min[3], bounds_max[3];
 } stin_mesh_info;

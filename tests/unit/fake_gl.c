@@ -239,9 +239,6 @@ static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt
     (void)target;
     (void)ifmt;
     (void)border;
-    (void)fmt;
-    (void)type;
-    (void)pixels;
     COUNT(TexImage2D);
     fake_gl.tex_images++;
     if (level == 0)
@@ -249,6 +246,8 @@ static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt
     if (level >= 0 && level < FAKE_GL_MAX_LEVELS) {
         fake_gl.tex_level_width[level] = w;
         fake_gl.tex_level_height[level] = h;
+        if (pixels && fmt == GL_RGBA && type == GL_UNSIGNED_BYTE)
+            memcpy(fake_gl.tex_level_first_texel[level], pixels, 4);
         if ((unsigned)level + 1 > fake_gl.tex_levels)
             fake_gl.tex_levels = (unsigned)level + 1;
     }

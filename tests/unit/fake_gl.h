@@ -61,6 +61,7 @@ typedef struct fake_gl_state {
     unsigned tex_images;                 /* calls in total */
     unsigned tex_levels;                 /* levels of the latest chain */
     int tex_level_width[FAKE_GL_MAX_LEVELS], tex_level_height[FAKE_GL_MAX_LEVELS];
+    unsigned char tex_level_first_texel[FAKE_GL_MAX_LEVELS][4]; /* RGBA of texel (0, 0) */
     /* glEnable/glDisable */
     GLenum last_enabled, last_disabled;
     GLenum cap_enum[FAKE_GL_MAX_CAPS];

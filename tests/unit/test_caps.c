@@ -401,6 +401,22 @@ static void test_detect_mask_and_max_version_through_fake(void **state)
     assert_true(HAS(c, FBO)); /* GL_ARB_framebuffer_object is still in the string */
 }
 
+/* hidden is "bits the driver has but caps_mask hid": that includes the bits
+ * detection adds from limits (vertex texture fetch). */
+static void test_detect_masked_vertex_texture_fetch_is_hidden(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL21);
+    stin_caps open, masked;
+    (void)state;
+    fake_gl_reset(&cfg);
+    assert_int_equal(stin_detect_caps(fake_gl_get_proc, NULL, 0, 0, &open), STIN_OK);
+    assert_true(HAS(open, VERTEX_TEXTURE_FETCH));
+    assert_int_equal(stin_detect_caps(fake_gl_get_proc, NULL, BIT(VERTEX_TEXTURE_FETCH), 0, &masked),
+                     STIN_OK);
+    assert_false(HAS(masked, VERTEX_TEXTURE_FETCH));
+    assert_int_equal(masked.hidden, BIT(VERTEX_TEXTURE_FETCH));
+}
+
 static void test_detect_without_version_fails(void **state)
 {
     fake_gl_config cfg = fake_gl_profile(FAKE_GL21);
@@ -435,6 +451,7 @@ int main(void)
         cmocka_unit_test(test_detect_core_uses_indexed_extensions_and_fbo_queries),
         cmocka_unit_test(test_detect_missing_entry_points_through_fake),
         cmocka_unit_test(test_detect_mask_and_max_version_through_fake),
+        cmocka_unit_test(test_detect_masked_vertex_texture_fetch_is_hidden),
         cmocka_unit_test(test_detect_without_version_fails),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

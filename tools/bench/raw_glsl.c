@@ -58,13 +58,14 @@ static GLuint compile(const raw_gl *gl, GLenum type, const char *path, char *err
     return sh;
 }
 
-static GLuint link(const raw_gl *gl, const char *dir, char *err, size_t err_size)
+static GLuint link(const raw_gl *gl, const char *root, const char *sub, char *err,
+                   size_t err_size)
 {
     char vpath[1024], fpath[1024], log[1024];
     GLuint vs, fs, p;
     GLint ok = 0;
-    snprintf(vpath, sizeof vpath, "%s/lit.vert", dir);
-    snprintf(fpath, sizeof fpath, "%s/lit.frag", dir);
+    snprintf(vpath, sizeof vpath, "%s/%s/lit.vert", root, sub);
+    snprintf(fpath, sizeof fpath, "%s/%s/lit.frag", root, sub);
     if (!(vs = compile(gl, GL_VERTEX_SHADER, vpath, err, err_size)))
         return 0;
     if (!(fs = compile(gl, GL_FRAGMENT_SHADER, fpath, err, err_size))) {
@@ -96,10 +97,8 @@ int raw_glsl_create(raw_renderer *r, char *err, size_t err_size)
 {
     const raw_gl *gl = r->gl;
     raw_program *p = &r->prog;
-    char dir[1024];
-    snprintf(dir, sizeof dir, "%s/%s", r->cfg.shader_dir,
-             r->cfg.tier == STIN_TIER_GL4 ? "gl4" : "gl2");
-    if (!(p->name = link(gl, dir, err, err_size)))
+    const char *sub = r->cfg.tier == STIN_TIER_GL4 ? "gl4" : "gl2";
+    if (!(p->name = link(gl, r->cfg.shader_dir, sub, err, err_size)))
         return 0;
 #define LOC(field) p->field = gl->GetUniformLocation(p->name, #field)
     LOC(u_model);

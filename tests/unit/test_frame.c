@@ -1,0 +1,592 @@
+/* Frames and textures on the fake GL: call order, light and draw
+ * validation, capacities, stats and pass counts, the GL state left behind,
+ * and texture uploads (power-of-two resampling, mip chains, staging). */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h> /* NAN only: the test links without -lm */
+#include <stdlib.h>
+#include <string.h>
+
+#include "fake_gl.h"
+#include "internal.h"
+
+static fake_log log_;
+static void *block;
+static stin_context *ctx;
+static stin_mesh quad;
+
+static const float quad_pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
+static const uint32_t quad_idx[] = {0, 1, 2, 0, 2, 3};
+
+/* Built with -DSTIN_GL_CHECK=1, every GL call is audited against the
+ * profile; a violation is logged as STIN_LOG_GL_ERROR. */
+static void destroy_context(void)
+{
+    assert_int_equal(log_.items[STIN_LOG_GL_ERROR], 0);
+    if (ctx)
+        stin_destroy(ctx);
+    free(block);
+    ctx = NULL;
+    block = NULL;
+}
+
+/* A context on the fake `cfg`, with one quad mesh. */
+static void create_context(const fake_gl_config *cfg, uint32_t max_lights, uint32_t max_draws,
+                           uint32_t max_texture_bytes)
+{
+    stin_desc d;
+    stin_mesh_desc md;
+    size_t bytes;
+    destroy_context();
+    fake_gl_reset(cfg);
+    memset(&log_, 0, sizeof log_);
+    memset(&d, 0, sizeof d);
+    d.get_proc_address = fake_gl_get_proc;
+    d.log = fake_log_fn;
+    d.log_user = &log_;
+    d.max_meshes = 4;
+    d.max_textures = 2;
+    d.max_vertices = 64;
+    d.max_triangles = 64;
+    d.max_lights = max_lights;
+    d.max_draws = max_draws;
+    d.max_texture_bytes = max_texture_bytes;
+    bytes = stin_memory_size(&d);
+    assert_true(bytes > 0);
+    block = malloc(bytes);
+    assert_non_null(block);
+    assert_int_equal(stin_create(&d, block, bytes, &ctx), STIN_OK);
+    memset(&md, 0, sizeof md);
+    md.positions = quad_pos;
+    md.vertex_count = 4;
+    md.indices = quad_idx;
+    md.index_count = 6;
+    assert_int_equal(stin_create_mesh(ctx, &md, &quad), STIN_OK);
+}
+
+static void create_profile(fake_gl_profile_id id, uint32_t max_lights, uint32_t max_draws)
+{
+    fake_gl_config cfg = fake_gl_profile(id);
+    create_context(&cfg, max_lights, max_draws, 4096);
+}
+
+static int setup(void **state)
+{
+    (void)state;
+    create_profile(FAKE_GL21, 16, 8);
+    return 0;
+}
+
+static int teardown(void **state)
+{
+    (void)state;
+    destroy_context();
+    return 0;
+}
+
+static stin_frame_desc frame_desc(void)
+{
+    stin_frame_desc fd;
+    memset(&fd, 0, sizeof fd);
+    stin__mat4_identity(fd.view);
+    stin__mat4_identity(fd.projection);
+    fd.viewport[2] = 64;
+    fd.viewport[3] = 48;
+    return fd;
+}
+
+static void begin(void)
+{
+    stin_frame_desc fd = frame_desc();
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+}
+
+static stin_light_desc point_light(float x)
+{
+    stin_light_desc l;
+    memset(&l, 0, sizeof l);
+    l.position[0] = x;
+    l.position[2] = 3.0f;
+    return l;
+}
+
+static void add_lights(int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        stin_light_desc l = point_light((float)i);
+        assert_int_equal(stin_add_light(ctx, &l), STIN_OK);
+    }
+}
+
+/* ---- call order ------------------------------------------------------------ */
+static void test_call_order_errors(void **state)
+{
+    stin_light_desc l = point_light(0);
+    stin_frame_desc fd = frame_desc();
+    (void)state;
+    assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(stin_end_frame(ctx), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(log_.items[STIN_LOG_FRAME_STATE], 3);
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(log_.items[STIN_LOG_FRAME_STATE], 4);
+    /* The open frame is still usable. */
+    assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(fake_gl.draw_calls, 1);
+    assert_int_equal(stin_begin_frame(NULL, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(stin_begin_frame(ctx, NULL), STIN_ERROR_INVALID_ARGUMENT);
+}
+
+static void test_bad_frame_descs(void **state)
+{
+    stin_frame_desc fd;
+    (void)state;
+    fd = frame_desc();
+    fd.viewport[2] = 0;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    fd = frame_desc();
+    fd.view[5] = NAN;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    fd = frame_desc();
+    fd.ambient[1] = NAN;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    fd = frame_desc();
+    fd.output = (stin_output)7;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(log_.items[STIN_LOG_BAD_ARGUMENT], 4);
+    /* A rejected begin opens no frame. */
+    assert_int_equal(stin_end_frame(ctx), STIN_ERROR_INVALID_STATE);
+
+    create_profile(FAKE_GL11, 8, 8); /* no framebuffer objects */
+    fd = frame_desc();
+    fd.framebuffer = 3;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+}
+
+/* ---- lights ------------------------------------------------------------------ */
+static void test_bad_lights_are_rejected(void **state)
+{
+    stin_light_desc l;
+    stin_frame_stats st;
+    (void)state;
+    begin();
+    l = point_light(0);
+    l.position[1] = NAN;
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_INVALID_ARGUMENT);
+    l = point_light(0);
+    l.type = STIN_LIGHT_SPOT;
+    l.direction[2] = -1.0f;
+    l.spot_cutoff_deg = 120.0f;
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_INVALID_ARGUMENT);
+    l.spot_cutoff_deg = 90.0f; /* the upper bound is allowed */
+    assert_int_equal(stin_add_light(ctx, &l), STIN_OK);
+    l = point_light(0);
+    l.type = STIN_LIGHT_DIRECTIONAL; /* zero direction */
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_INVALID_ARGUMENT);
+    l = point_light(0);
+    l.attenuation[1] = -1.0f;
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_INVALID_ARGUMENT);
+    l = point_light(0);
+    l.spot_exponent = 200.0f;
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_INVALID_ARGUMENT);
+    l = point_light(0);
+    l.type = (stin_light_type)9;
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(stin_add_light(ctx, NULL), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(log_.items[STIN_LOG_BAD_ARGUMENT], 6);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    st = stin_query_frame_stats(ctx);
+    assert_int_equal(st.lights, 1);
+    assert_int_equal(st.dropped_lights, 0);
+}
+
+static void test_light_defaults_and_direction_normalised(void **state)
+{
+    stin_light_desc l;
+    const stin_light_desc *kept;
+    (void)state;
+    begin();
+    memset(&l, 0, sizeof l);
+    l.type = STIN_LIGHT_DIRECTIONAL;
+    l.direction[1] = -4.0f;
+    assert_int_equal(stin_add_light(ctx, &l), STIN_OK);
+    kept = &ctx->lights[0];
+    assert_true(kept->direction[1] == -1.0f);
+    assert_true(kept->color[0] == 1.0f && kept->color[1] == 1.0f && kept->color[2] == 1.0f);
+    assert_true(kept->intensity == 1.0f);
+    assert_true(kept->attenuation[0] == 1.0f && kept->attenuation[1] == 0.0f);
+    assert_true(kept->spot_cutoff_deg == 45.0f);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+}
+
+static void test_more_lights_than_max_lights(void **state)
+{
+    stin_light_desc l = point_light(0);
+    stin_frame_stats st;
+    (void)state;
+    create_profile(FAKE_GL21, 2, 8);
+    begin();
+    add_lights(2);
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_CAPACITY);
+    assert_int_equal(stin_add_light(ctx, &l), STIN_ERROR_CAPACITY);
+    assert_int_equal(log_.items[STIN_LOG_POOL_FULL], 2);
+    assert_true(fake_log_has(&log_, STIN_LOG_POOL_FULL, "max_lights"));
+    assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    st = stin_query_frame_stats(ctx);
+    assert_int_equal(st.lights, 2);
+    assert_int_equal(st.dropped_lights, 2);
+    /* The next frame starts counting from zero. */
+    begin();
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    st = stin_query_frame_stats(ctx);
+    assert_int_equal(st.dropped_lights, 0);
+    assert_int_equal(st.lights, 0);
+}
+
+/* ---- draws ------------------------------------------------------------------- */
+static void test_more_draws_than_max_draws(void **state)
+{
+    stin_frame_stats st;
+    int i;
+    (void)state;
+    begin();
+    for (i = 0; i < 8; i++)
+        assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_ERROR_CAPACITY);
+    assert_true(fake_log_has(&log_, STIN_LOG_POOL_FULL, "max_draws"));
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    st = stin_query_frame_stats(ctx);
+    assert_int_equal(st.draws, 8);
+    assert_int_equal(st.dropped_draws, 1);
+    assert_int_equal(st.triangles, 16);
+    assert_int_equal(fake_gl.draw_calls, 8);
+    assert_int_equal(fake_gl.drawn_indices, 48);
+}
+
+static void test_stale_mesh_handle_in_a_draw(void **state)
+{
+    stin_mesh stale = quad, foreign = {0x7fff0003u};
+    stin_frame_stats st;
+    (void)state;
+    stin_destroy_mesh(ctx, quad);
+    begin();
+    assert_int_equal(stin_draw(ctx, stale, NULL, NULL), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_draw(ctx, foreign, NULL, NULL), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(log_.items[STIN_LOG_BAD_HANDLE], 2);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    st = stin_query_frame_stats(ctx);
+    assert_int_equal(st.draws, 0);
+    assert_int_equal(st.dropped_draws, 2);
+    assert_int_equal(fake_gl.draw_calls, 0);
+}
+
+static void test_bad_draw_arguments(void **state)
+{
+    float xf[16];
+    stin_material mat;
+    (void)state;
+    begin();
+    stin__mat4_identity(xf);
+    xf[12] = NAN;
+    assert_int_equal(stin_draw(ctx, quad, xf, NULL), STIN_ERROR_INVALID_ARGUMENT);
+    memset(&mat, 0, sizeof mat);
+    mat.shininess = NAN;
+    assert_int_equal(stin_draw(ctx, quad, NULL, &mat), STIN_ERROR_INVALID_ARGUMENT);
+    memset(&mat, 0, sizeof mat);
+    mat.albedo.id = 0x00010002u; /* no such texture */
+    assert_int_equal(stin_draw(ctx, quad, NULL, &mat), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    assert_int_equal(stin_query_frame_stats(ctx).draws, 0);
+}
+
+/* ---- passes ------------------------------------------------------------------ */
+static stin_frame_stats frame_with(int lights, int opaque_draws, int blended_draws, stin_output out)
+{
+    stin_frame_desc fd = frame_desc();
+    stin_material glass;
+    int i;
+    memset(&glass, 0, sizeof glass);
+    glass.color[0] = glass.color[3] = 0.5f;
+    fd.output = out;
+    fake_gl.draw_calls = 0;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    add_lights(lights);
+    for (i = 0; i < opaque_draws; i++)
+        assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    for (i = 0; i < blended_draws; i++)
+        assert_int_equal(stin_draw(ctx, quad, NULL, &glass), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    return stin_query_frame_stats(ctx);
+}
+
+/* GLSL paths: 8 lights per pass. */
+static void test_glsl_passes_per_eight_lights(void **state)
+{
+    static const struct {
+        int lights;
+        uint32_t passes;
+    } cases[] = {{0, 1}, {1, 1}, {8, 1}, {9, 2}, {16, 2}};
+    size_t i;
+    int p;
+    static const fake_gl_profile_id profiles[] = {FAKE_GL21, FAKE_GL45_CORE};
+    (void)state;
+    for (p = 0; p < 2; p++) {
+        create_profile(profiles[p], 16, 8);
+        for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+            stin_frame_stats st = frame_with(cases[i].lights, 2, 0, STIN_OUTPUT_BEAUTY);
+            assert_int_equal(st.passes, cases[i].passes);
+            assert_int_equal(st.lights, (uint32_t)cases[i].lights);
+            assert_int_equal(st.draws, 2);
+            assert_int_equal(st.triangles, 4);
+            assert_int_equal(fake_gl.draw_calls, 2 * cases[i].passes);
+        }
+    }
+}
+
+/* Blended draws are drawn once per light batch each, after the opaque ones. */
+static void test_blended_draws_once_per_batch(void **state)
+{
+    stin_frame_stats st;
+    (void)state;
+    st = frame_with(9, 1, 2, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.passes, 2);
+    assert_int_equal(st.draws, 3);
+    assert_int_equal(fake_gl.draw_calls, 2 * 1 + 2 * 2);
+}
+
+/* Fixed function: GL_MAX_LIGHTS lights per pass (at most 8). */
+static void test_fixed_function_passes_per_max_lights(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL11);
+    stin_frame_stats st;
+    (void)state;
+    cfg.max_lights = 2;
+    create_context(&cfg, 16, 8, 4096);
+    st = frame_with(5, 1, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.passes, 3);
+    assert_int_equal(fake_gl.draw_calls, 3);
+    st = frame_with(0, 1, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.passes, 1);
+
+    create_profile(FAKE_GL14, 16, 8); /* GL_MAX_LIGHTS 8 */
+    st = frame_with(9, 1, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.passes, 2);
+    assert_int_equal(fake_gl.draw_calls, 2);
+}
+
+static void test_output_pass_counts(void **state)
+{
+    stin_frame_stats st;
+    (void)state;
+    st = frame_with(9, 2, 0, STIN_OUTPUT_NORMAL);
+    assert_int_equal(st.passes, 1);
+    assert_int_equal(fake_gl.draw_calls, 2);
+    st = frame_with(9, 2, 0, STIN_OUTPUT_VISIBILITY);
+    assert_int_equal(st.passes, 1);
+    create_profile(FAKE_GL11, 8, 8);
+    st = frame_with(1, 2, 0, STIN_OUTPUT_NORMAL); /* two multiplicative passes without shaders */
+    assert_int_equal(st.passes, 2);
+    assert_int_equal(fake_gl.draw_calls, 4);
+}
+
+/* stin.h: after a frame, depth/blend/stencil/cull/scissor are off, lighting too. */
+static void test_frame_leaves_documented_state(void **state)
+{
+    static const fake_gl_profile_id profiles[] = {FAKE_GL11, FAKE_GL21, FAKE_GL45_CORE};
+    static const GLenum off[] = {GL_DEPTH_TEST, GL_BLEND,    GL_STENCIL_TEST, GL_CULL_FACE,
+                                 GL_SCISSOR_TEST, GL_LIGHTING, GL_LIGHT0,      GL_TEXTURE_2D};
+    size_t p, i;
+    (void)state;
+    for (p = 0; p < sizeof profiles / sizeof profiles[0]; p++) {
+        create_profile(profiles[p], 16, 8);
+        frame_with(9, 1, 1, STIN_OUTPUT_BEAUTY);
+        assert_true(fake_gl.calls[STIN_GLFN_Enable] > 0);
+        for (i = 0; i < sizeof off / sizeof off[0]; i++)
+            assert_false(fake_gl_is_enabled(off[i]));
+    }
+}
+
+/* ---- textures ---------------------------------------------------------------- */
+static stin_texture_desc texture_desc(uint32_t w, uint32_t h, const uint8_t *pixels)
+{
+    stin_texture_desc td;
+    memset(&td, 0, sizeof td);
+    td.width = w;
+    td.height = h;
+    td.pixels = pixels;
+    return td;
+}
+
+static void fill(uint8_t *px, uint32_t n, const uint8_t rgba[4])
+{
+    uint32_t i;
+    for (i = 0; i < n; i++)
+        memcpy(px + 4 * i, rgba, 4);
+}
+
+static void test_npot_texture_on_gl11_is_resampled_with_mips(void **state)
+{
+    static const uint8_t rgba[4] = {10, 20, 30, 40};
+    static const int expect[4][2] = {{4, 8}, {2, 4}, {1, 2}, {1, 1}};
+    uint8_t px[3 * 5 * 4] = {0};
+    stin_texture_desc td = texture_desc(3, 5, px);
+    stin_texture t;
+    unsigned level;
+    (void)state;
+    create_profile(FAKE_GL11, 8, 8);
+    fill(px, 15, rgba);
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_OK);
+    assert_true(t.id != 0);
+    assert_int_equal(fake_gl.textures_created, 1);
+    assert_int_equal(fake_gl.tex_levels, 4);
+    assert_int_equal(fake_gl.tex_images, 4);
+    for (level = 0; level < 4; level++) {
+        assert_int_equal(fake_gl.tex_level_width[level], expect[level][0]);
+        assert_int_equal(fake_gl.tex_level_height[level], expect[level][1]);
+        /* a uniform image stays uniform through the resample and the box filter */
+        assert_memory_equal(fake_gl.tex_level_first_texel[level], rgba, 4);
+    }
+}
+
+static void test_texture_without_mips(void **state)
+{
+    uint8_t px[3 * 5 * 4] = {0};
+    stin_texture_desc td = texture_desc(3, 5, px);
+    stin_texture t;
+    (void)state;
+    create_profile(FAKE_GL11, 8, 8);
+    td.no_mipmaps = 1;
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_OK);
+    assert_int_equal(fake_gl.tex_levels, 1);
+    assert_int_equal(fake_gl.tex_level_width[0], 4);
+    assert_int_equal(fake_gl.tex_level_height[0], 8);
+}
+
+/* GL 2.0+ takes any size: no resample, a 3x5 chain. */
+static void test_npot_texture_on_gl21_keeps_its_size(void **state)
+{
+    static const uint8_t rgba[4] = {200, 100, 50, 255};
+    uint8_t px[3 * 5 * 4] = {0};
+    stin_texture_desc td = texture_desc(3, 5, px);
+    stin_texture t;
+    (void)state;
+    fill(px, 15, rgba);
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_OK);
+    assert_int_equal(fake_gl.tex_levels, 3);
+    assert_int_equal(fake_gl.tex_level_width[0], 3);
+    assert_int_equal(fake_gl.tex_level_height[0], 5);
+    assert_int_equal(fake_gl.tex_level_width[2], 1);
+    assert_int_equal(fake_gl.tex_level_height[2], 1);
+    assert_memory_equal(fake_gl.tex_level_first_texel[2], rgba, 4);
+}
+
+static void test_texture_is_clamped_to_max_texture_size(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL11);
+    uint8_t px[16 * 3 * 4] = {0};
+    stin_texture_desc td = texture_desc(16, 3, px);
+    stin_texture t;
+    (void)state;
+    cfg.max_texture_size = 4;
+    create_context(&cfg, 8, 8, 4096);
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_OK);
+    assert_int_equal(fake_gl.tex_level_width[0], 4);
+    assert_int_equal(fake_gl.tex_level_height[0], 4);
+}
+
+static void test_texture_staging_too_small(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL11);
+    uint8_t px[8 * 8 * 4] = {0};
+    stin_texture_desc td = texture_desc(8, 8, px);
+    stin_texture t = {99};
+    (void)state;
+    create_context(&cfg, 8, 8, 8 * 8 * 4); /* level 0 fits, the mip chain does not */
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_ERROR_CAPACITY);
+    assert_int_equal(t.id, 0);
+    assert_true(fake_log_has(&log_, STIN_LOG_POOL_FULL, "max_texture_bytes"));
+    assert_int_equal(fake_gl.textures_created, 0);
+    td.no_mipmaps = 1;
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_OK);
+}
+
+static void test_texture_pool_and_handles(void **state)
+{
+    uint8_t px[4 * 4 * 4] = {0};
+    stin_texture_desc td = texture_desc(4, 4, px);
+    stin_texture a, b, c;
+    stin_material mat;
+    (void)state;
+    assert_int_equal(stin_create_texture(ctx, &td, &a), STIN_OK);
+    assert_int_equal(stin_create_texture(ctx, &td, &b), STIN_OK);
+    assert_int_equal(stin_create_texture(ctx, &td, &c), STIN_ERROR_CAPACITY); /* max_textures 2 */
+    assert_true(fake_log_has(&log_, STIN_LOG_POOL_FULL, "max_textures"));
+    stin_destroy_texture(ctx, a);
+    assert_int_equal(fake_gl.textures_deleted, 1);
+    assert_int_equal(stin_create_texture(ctx, &td, &c), STIN_OK);
+    assert_true(c.id != a.id);
+    memset(&mat, 0, sizeof mat);
+    mat.albedo = a; /* stale */
+    begin();
+    assert_int_equal(stin_draw(ctx, quad, NULL, &mat), STIN_ERROR_INVALID_HANDLE);
+    mat.albedo = c;
+    assert_int_equal(stin_draw(ctx, quad, NULL, &mat), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    stin_destroy_texture(ctx, a); /* stale: logged, nothing deleted */
+    assert_int_equal(fake_gl.textures_deleted, 1);
+    assert_true(log_.items[STIN_LOG_BAD_HANDLE] >= 2);
+}
+
+static void test_texture_bad_arguments(void **state)
+{
+    uint8_t px[16] = {0};
+    stin_texture_desc td = texture_desc(2, 2, px);
+    stin_texture t;
+    (void)state;
+    td.width = 0;
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_ERROR_INVALID_ARGUMENT);
+    td = texture_desc(2, 2, NULL);
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_ERROR_INVALID_ARGUMENT);
+    td = texture_desc(2, 2, px);
+    td.kind = (stin_texture_kind)5;
+    assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(fake_gl.textures_created, 0);
+}
+
+#define TEST(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        TEST(test_call_order_errors),
+        TEST(test_bad_frame_descs),
+        TEST(test_bad_lights_are_rejected),
+        TEST(test_light_defaults_and_direction_normalised),
+        TEST(test_more_lights_than_max_lights),
+        TEST(test_more_draws_than_max_draws),
+        TEST(test_stale_mesh_handle_in_a_draw),
+        TEST(test_bad_draw_arguments),
+        TEST(test_glsl_passes_per_eight_lights),
+        TEST(test_blended_draws_once_per_batch),
+        TEST(test_fixed_function_passes_per_max_lights),
+        TEST(test_output_pass_counts),
+        TEST(test_frame_leaves_documented_state),
+        TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
+        TEST(test_texture_without_mips),
+        TEST(test_npot_texture_on_gl21_keeps_its_size),
+        TEST(test_texture_is_clamped_to_max_texture_size),
+        TEST(test_texture_staging_too_small),
+        TEST(test_texture_pool_and_handles),
+        TEST(test_texture_bad_arguments),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}

@@ -1,0 +1,295 @@
+/* Tier selection and per-feature technique chains (stin__select,
+ * stin_tier_supported, stin_best_tier) on hand-built capabilities shaped like
+ * the emulation profiles. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <string.h>
+
+#include "internal.h"
+
+#define BIT(c) STIN_CAP_BIT(STIN_CAP_##c)
+
+#define GL11_BITS (BIT(STENCIL) | BIT(FIXED_FUNCTION))
+#define GL13_BITS                                                                         \
+    (GL11_BITS | BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) |   \
+     BIT(TEXTURE_CUBE_MAP) | BIT(SEPARATE_SPECULAR))
+#define GL14_BITS                                                                         \
+    (GL13_BITS | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(STENCIL_WRAP) |                   \
+     BIT(STENCIL_TWO_SIDE) | BIT(DEPTH_CLAMP))
+#define GL21_BITS (GL14_BITS | BIT(VBO) | BIT(GLSL) | BIT(SEPARATE_STENCIL) | BIT(FBO) |  \
+                   BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH))
+#define GL33_CORE_BITS                                                                    \
+    ((GL21_BITS & ~BIT(FIXED_FUNCTION)) | BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER))
+#define GL45_CORE_BITS (GL33_CORE_BITS | BIT(TESSELLATION) | BIT(COMPUTE))
+
+static stin_caps caps_with(int gl, int glsl, int core, uint64_t present)
+{
+    stin_caps c;
+    memset(&c, 0, sizeof c);
+    c.gl_major = gl / 10;
+    c.gl_minor = gl % 10;
+    c.glsl_major = glsl / 10;
+    c.glsl_minor = glsl % 10;
+    c.profile = core ? STIN_GL_PROFILE_CORE : STIN_GL_PROFILE_COMPATIBILITY;
+    c.present = present;
+    c.stencil_bits = 8;
+    return c;
+}
+
+typedef struct expected {
+    const char *name;
+    stin_caps caps;
+    stin_tier tier;
+    stin_technique lighting;
+} expected;
+
+static void test_auto_selection_per_profile(void **state)
+{
+    const expected cases[] = {
+        {"gl11", caps_with(11, 0, 0, GL11_BITS), STIN_TIER_GL1, STIN_TECH_LIGHTING_FIXED},
+        {"gl13", caps_with(13, 0, 0, GL13_BITS), STIN_TIER_GL1, STIN_TECH_LIGHTING_FIXED},
+        {"gl14", caps_with(14, 0, 0, GL14_BITS), STIN_TIER_GL1, STIN_TECH_LIGHTING_FIXED},
+        {"gl21", caps_with(21, 12, 0, GL21_BITS), STIN_TIER_GL2, STIN_TECH_LIGHTING_GLSL110},
+        {"gl33", caps_with(33, 33, 1, GL33_CORE_BITS), STIN_TIER_GL4, STIN_TECH_LIGHTING_GLSL150},
+        {"gl45", caps_with(45, 45, 1, GL45_CORE_BITS), STIN_TIER_GL4, STIN_TECH_LIGHTING_GLSL150},
+    };
+    size_t i;
+    (void)state;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        stin__selection sel;
+        char msg[256] = "";
+        stin_result r = stin__select(&cases[i].caps, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg);
+        if (r != STIN_OK || sel.tier != cases[i].tier)
+            print_error("profile %s: %s, tier %d, %s\n", cases[i].name, stin_result_name(r),
+                        (int)sel.tier, msg);
+        assert_int_equal(r, STIN_OK);
+        assert_int_equal(sel.tier, cases[i].tier);
+        assert_int_equal(stin_best_tier(&cases[i].caps), cases[i].tier);
+        assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, cases[i].lighting);
+        assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_OFF);
+        assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
+        assert_true(sel.choice[STIN_FEATURE_LIGHTING].reason[0] != '\0');
+    }
+}
+
+static void test_tier_supported_names_missing_capabilities(void **state)
+{
+    stin_caps gl11 = caps_with(11, 0, 0, GL11_BITS), gl33 = caps_with(33, 33, 1, GL33_CORE_BITS);
+    char missing[256];
+    (void)state;
+    assert_true(stin_tier_supported(&gl11, STIN_TIER_GL1, missing, sizeof missing));
+    assert_string_equal(missing, "");
+    assert_false(stin_tier_supported(&gl11, STIN_TIER_GL2, missing, sizeof missing));
+    assert_string_equal(missing, "GLSL 1.10 shaders");
+    assert_false(stin_tier_supported(&gl11, STIN_TIER_GL4, missing, sizeof missing));
+    assert_string_equal(missing, "vertex buffer objects, GLSL 1.10 shaders, framebuffer objects, "
+                                 "vertex array objects, geometry shaders (GLSL 1.50)");
+    /* Core profiles run neither fixed-function tier. */
+    assert_false(stin_tier_supported(&gl33, STIN_TIER_GL1, missing, sizeof missing));
+    assert_string_equal(missing, stin_cap_name(STIN_CAP_FIXED_FUNCTION));
+    assert_false(stin_tier_supported(&gl33, STIN_TIER_GL2, missing, sizeof missing));
+    assert_string_equal(missing, stin_cap_name(STIN_CAP_FIXED_FUNCTION));
+    assert_true(stin_tier_supported(&gl33, STIN_TIER_GL4, NULL, 0));
+    /* AUTO is not a tier that runs. */
+    assert_false(stin_tier_supported(&gl33, STIN_TIER_AUTO, NULL, 0));
+}
+
+static void test_missing_list_truncates_safely(void **state)
+{
+    stin_caps none = caps_with(11, 0, 0, 0);
+    char missing[12];
+    (void)state;
+    memset(missing, 'X', sizeof missing);
+    assert_false(stin_tier_supported(&none, STIN_TIER_GL4, missing, 8));
+    assert_int_equal(missing[7], '\0');
+    assert_memory_equal(missing, "vertex ", 7);
+    assert_int_equal(missing[8], 'X');
+}
+
+static void test_forcing_a_tier_above_the_caps_fails(void **state)
+{
+    stin_caps gl11 = caps_with(11, 0, 0, GL11_BITS), gl21 = caps_with(21, 12, 0, GL21_BITS);
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__select(&gl11, STIN_TIER_GL2, NULL, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "gl2"));
+    assert_non_null(strstr(msg, "GLSL 1.10 shaders"));
+
+    assert_int_equal(stin__select(&gl21, STIN_TIER_GL4, NULL, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "geometry shaders (GLSL 1.50)"));
+    assert_non_null(strstr(msg, "vertex array objects"));
+    assert_null(strstr(msg, "GLSL 1.10 shaders")); /* it has those */
+}
+
+static void test_forcing_a_lower_tier_walks_down(void **state)
+{
+    stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS);
+    stin_caps gl45compat = caps_with(45, 45, 0, GL45_CORE_BITS | BIT(FIXED_FUNCTION));
+    stin__selection sel;
+    char msg[256];
+    const char *reason;
+    (void)state;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_GL1, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.tier, STIN_TIER_GL1);
+    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_FIXED);
+    /* A tier ceiling the caller chose is not a fallback: the reason names the tier. */
+    reason = sel.choice[STIN_FEATURE_LIGHTING].reason;
+    assert_null(strstr(reason, "fallback"));
+    assert_non_null(strstr(reason, "tier gl1"));
+
+    assert_int_equal(stin__select(&gl45compat, STIN_TIER_GL2, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.tier, STIN_TIER_GL2);
+    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL110);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_LIGHTING].reason, "tier gl2"));
+
+    assert_int_equal(stin__select(&gl45compat, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.tier, STIN_TIER_GL4);
+    assert_null(strstr(sel.choice[STIN_FEATURE_LIGHTING].reason, "fallback"));
+}
+
+static void test_hiding_a_capability_lowers_the_tier(void **state)
+{
+    stin_caps c = caps_with(45, 45, 0, (GL45_CORE_BITS | BIT(FIXED_FUNCTION)) & ~BIT(GEOMETRY_SHADER));
+    (void)state;
+    assert_int_equal(stin_best_tier(&c), STIN_TIER_GL2);
+    c.present &= ~BIT(GLSL);
+    assert_int_equal(stin_best_tier(&c), STIN_TIER_GL1);
+    c.present &= ~BIT(FIXED_FUNCTION);
+    assert_int_equal(stin_best_tier(&c), STIN_TIER_AUTO);
+}
+
+static void test_no_tier_runs(void **state)
+{
+    stin_caps c = caps_with(45, 45, 1, BIT(STENCIL) | BIT(GLSL));
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_FIXED_FUNCTION)));
+}
+
+static void test_unknown_tier_is_an_invalid_argument(void **state)
+{
+    stin_caps c = caps_with(45, 45, 1, GL45_CORE_BITS);
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__select(&c, (stin_tier)3, NULL, &sel, msg, sizeof msg),
+                     STIN_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(msg, "3"));
+}
+
+static void test_forced_technique_of_the_wrong_feature(void **state)
+{
+    stin_caps c = caps_with(21, 12, 0, GL21_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_NONE, STIN_TECH_NONE, STIN_TECH_NONE};
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    forced[STIN_FEATURE_LIGHTING] = STIN_TECH_SHADOWS_OFF;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(msg, "off"));
+    assert_non_null(strstr(msg, "lighting"));
+
+    forced[STIN_FEATURE_LIGHTING] = STIN_TECH_NONE;
+    forced[STIN_FEATURE_SURFACE] = STIN_TECH_LIGHTING_FIXED;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_INVALID_ARGUMENT);
+
+    forced[STIN_FEATURE_SURFACE] = (stin_technique)99;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_INVALID_ARGUMENT);
+}
+
+static void test_forced_technique_that_runs_is_taken(void **state)
+{
+    stin_caps c = caps_with(45, 45, 0, GL45_CORE_BITS | BIT(FIXED_FUNCTION));
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_LIGHTING_FIXED, STIN_TECH_NONE,
+                                                 STIN_TECH_NONE};
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.tier, STIN_TIER_GL4);
+    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_FIXED);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_LIGHTING].reason, "forced"));
+}
+
+static void test_forced_technique_the_caps_cannot_run(void **state)
+{
+    stin_caps core = caps_with(33, 33, 1, GL33_CORE_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_LIGHTING_FIXED, STIN_TECH_NONE,
+                                                 STIN_TECH_NONE};
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "fixed-function")); /* the technique */
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_FIXED_FUNCTION)));
+}
+
+/* A forced technique above the tier ceiling names the tier and what is missing,
+ * as separate items. */
+static void test_forced_technique_above_the_tier(void **state)
+{
+    stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_LIGHTING_GLSL150, STIN_TECH_NONE,
+                                                 STIN_TECH_NONE};
+    stin__selection sel;
+    char msg[256];
+    const char *tier;
+    (void)state;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "glsl150-per-pixel"));
+    assert_non_null(strstr(msg, "gl4"));
+    assert_non_null(strstr(msg, "geometry shaders (GLSL 1.50)"));
+    /* The tier name is its own word, not run together with the capability list. */
+    tier = strstr(msg, "gl4");
+    assert_non_null(tier);
+    assert_true(tier[3] == '\0' || tier[3] == ' ' || tier[3] == ',' || tier[3] == ';' ||
+                tier[3] == ')' || tier[3] == ':');
+}
+
+static void test_technique_tables(void **state)
+{
+    (void)state;
+    assert_int_equal(stin__technique_feature(STIN_TECH_LIGHTING_GLSL110), STIN_FEATURE_LIGHTING);
+    assert_int_equal(stin__technique_feature(STIN_TECH_SHADOWS_OFF), STIN_FEATURE_SHADOWS);
+    assert_int_equal(stin__technique_feature((stin_technique)99), STIN_FEATURE_COUNT);
+    assert_int_equal(stin__technique_tier(STIN_TECH_LIGHTING_GLSL150), STIN_TIER_GL4);
+    assert_int_equal(stin__technique_tier(STIN_TECH_LIGHTING_FIXED), STIN_TIER_GL1);
+    assert_int_equal(stin__technique_needs(STIN_TECH_LIGHTING_GLSL110),
+                     BIT(GLSL) | BIT(FIXED_FUNCTION));
+    assert_int_equal(stin__technique_needs(STIN_TECH_SHADOWS_OFF), 0);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_auto_selection_per_profile),
+        cmocka_unit_test(test_tier_supported_names_missing_capabilities),
+        cmocka_unit_test(test_missing_list_truncates_safely),
+        cmocka_unit_test(test_forcing_a_tier_above_the_caps_fails),
+        cmocka_unit_test(test_forcing_a_lower_tier_walks_down),
+        cmocka_unit_test(test_hiding_a_capability_lowers_the_tier),
+        cmocka_unit_test(test_no_tier_runs),
+        cmocka_unit_test(test_unknown_tier_is_an_invalid_argument),
+        cmocka_unit_test(test_forced_technique_of_the_wrong_feature),
+        cmocka_unit_test(test_forced_technique_that_runs_is_taken),
+        cmocka_unit_test(test_forced_technique_the_caps_cannot_run),
+        cmocka_unit_test(test_forced_technique_above_the_tier),
+        cmocka_unit_test(test_technique_tables),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
