@@ -69,7 +69,7 @@ $(B)/libstin_checked.a: $(CHECKED_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # ---- platform, tool support, reference -------------------------------------
-$(B)/obj/%.o: %.c $(wildcard include/stin/*.h platform/*.h tools/common/*.h tests/reference/*.h)
+$(B)/obj/%.o: %.c $(wildcard include/stin/*.h platform/*.h tools/common/*.h tools/bench/*.h tests/reference/*.h tests/image/*.h)
 	@mkdir -p $(@D)
 	@echo "  CC      $<"; $(CC) $(TOOL_CFLAGS) -c $< -o $@
 $(B)/obj/%.o: %.cpp $(wildcard tools/common/*.h)

@@ -210,6 +210,7 @@ struct stin_context {
     stin_frame_stats stats;
 
     stin__program programs[STIN__PROG_COUNT];
+    uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
     int lights_per_pass;
 };
 

@@ -105,18 +105,20 @@ static void draw_mesh(stin_context *ctx, const stin__draw *d)
     stin__mat4_mul(mv, ctx->frame.view, d->transform);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, LoadMatrixf)(mv);
-    if (m->vbo) {
-        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
-        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
-        base = NULL;
-        idx = NULL;
-    } else {
-        base = (const char *)(ctx->vertices + m->first_vertex);
-        idx = ctx->indices + 3u * m->first_triangle;
+    idx = m->vbo ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
+    if (ctx->bound_mesh != d->mesh_slot) { /* consecutive draws of one mesh share arrays */
+        if (m->vbo) {
+            GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
+            GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
+            base = NULL;
+        } else {
+            base = (const char *)(ctx->vertices + m->first_vertex);
+        }
+        GL(ctx, VertexPointer)(3, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base);
+        GL(ctx, NormalPointer)(GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 12);
+        GL(ctx, TexCoordPointer)(2, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 24);
+        ctx->bound_mesh = d->mesh_slot;
     }
-    GL(ctx, VertexPointer)(3, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base);
-    GL(ctx, NormalPointer)(GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 12);
-    GL(ctx, TexCoordPointer)(2, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 24);
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
 }
 
@@ -241,6 +243,7 @@ static void run_visibility(stin_context *ctx)
 
 void stin__fixed_run(stin_context *ctx)
 {
+    ctx->bound_mesh = 0xffffffffu;
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PushMatrix)();
     GL(ctx, LoadMatrixf)(ctx->frame.projection);

@@ -99,7 +99,10 @@ static void draw_mesh(stin_context *ctx, const stin__program *p, const stin__dra
     GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
     stin__mat3_normal(nm, d->transform);
     GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
-    if (m->vao) {
+    if (ctx->bound_mesh == d->mesh_slot) {
+        if (!m->vao && !m->vbo)
+            idx = ctx->indices + 3u * m->first_triangle;
+    } else if (m->vao) {
         GL(ctx, BindVertexArray)(m->vao);
     } else if (m->vbo) {
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
@@ -109,6 +112,7 @@ static void draw_mesh(stin_context *ctx, const stin__program *p, const stin__dra
         stin__mesh_bind_attributes(ctx, ctx->vertices + m->first_vertex);
         idx = ctx->indices + 3u * m->first_triangle;
     }
+    ctx->bound_mesh = d->mesh_slot;
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
 }
 
@@ -191,6 +195,7 @@ void stin__glsl_run(stin_context *ctx)
 {
     int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
     int i;
+    ctx->bound_mesh = 0xffffffffu;
     GL_ENABLE(ctx, GL_DEPTH_TEST);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
