@@ -69,7 +69,10 @@
  * stin_memory_size(&desc) returns the bytes a configuration needs; the block
  * passed to stin_create must be at least that big (else STIN_ERROR_OUT_OF_MEMORY
  * and a log line saying how many bytes are needed). All capacities live in the
- * block. A full pool is a logged error that drops the item.
+ * block. A full pool is a logged error that drops the item. With every default
+ * the block is about 30 MB, most of it the vertex and triangle stores
+ * (48 bytes a vertex, 24 a triangle) and the mesh-creation scratch for
+ * max_mesh_triangles: size them to the application's meshes.
  *
  * THREADS: a context is used from the thread that owns its GL context.
  */
