@@ -100,7 +100,7 @@ UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_re
 $(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c tests/unit/fake_gl.c $(LIB_SRC) $(B)/shaders_embedded.c $(wildcard src/*.h include/stin/*.h tests/unit/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(SAN_CFLAGS) -o $@ $< tests/unit/fake_gl.c $(LIB_SRC) $(B)/shaders_embedded.c -lcmocka
-$(B)/tests/test_scene: tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(wildcard tools/common/*.h)
+$(B)/tests/test_scene: tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(PLATFORM_SRC) $(B)/libstin.a $(wildcard tools/common/*.h)
 	@mkdir -p $(@D)/san
 	$(CXX) -std=c++17 $(WARN) -g -O1 $(SAN) -Iinclude -Itools/common -c tools/common/image_io.cpp -o $(@D)/san/image_io.o
 	$(CC) $(SAN_CFLAGS) -o $@ $< $(filter %.c,$(COMMON_SRC)) $(PLATFORM_SRC) $(B)/libstin.a $(@D)/san/image_io.o -lcmocka $(TOOL_LIBS) $(PLATFORM_LIBS)
