@@ -42,6 +42,8 @@ stin_feature stin__technique_feature(stin_technique t)
     return (unsigned)t < STIN_TECH_COUNT ? tech_feature[t] : STIN_FEATURE_COUNT;
 }
 
+stin_feature stin_technique_feature(stin_technique t) { return stin__technique_feature(t); }
+
 stin_tier stin__technique_tier(stin_technique t)
 {
     return (unsigned)t < STIN_TECH_COUNT ? tech_tier[t] : STIN_TIER_AUTO;

@@ -251,6 +251,8 @@ typedef enum stin_technique {
 const char *stin_technique_name(stin_technique t);
 /* Looks a technique up by its name ("fixed-function", "off", ...); STIN_TECH_NONE if unknown. */
 stin_technique stin_technique_from_name(const char *name);
+/* The feature a technique belongs to (STIN_FEATURE_COUNT for NONE). */
+stin_feature stin_technique_feature(stin_technique t);
 
 typedef struct stin_choice {
     stin_technique technique;

@@ -118,24 +118,21 @@ static int parse_args(int argc, char **argv, options *o)
 static int parse_technique(const char *name, stin_feature f, stin_technique *out)
 {
     int t;
-    if (!name || !strcmp(name, "auto")) {
-        *out = STIN_TECH_NONE;
+    *out = STIN_TECH_NONE;
+    if (!name || !strcmp(name, "auto"))
         return 1;
+    for (t = 1; t < STIN_TECH_COUNT; t++) {
+        stin_technique tech = (stin_technique)t;
+        if (!strcmp(stin_technique_name(tech), name) && stin_technique_feature(tech) == f) {
+            *out = tech;
+            return 1;
+        }
     }
-    *out = stin_technique_from_name(name);
-    if (*out != STIN_TECH_NONE) {
-        stin_desc probe;
-        memset(&probe, 0, sizeof probe);
-        (void)probe;
-    }
-    if (*out == STIN_TECH_NONE || stin_technique_from_name(name) == STIN_TECH_NONE)
-        goto unknown;
-    return 1;
-unknown:
-    fprintf(stderr, "stin-render: unknown %s technique '%s'; this build knows:",
+    fprintf(stderr, "stin-render: unknown %s technique '%s'; this build knows: auto",
             stin_feature_name(f), name);
     for (t = 1; t < STIN_TECH_COUNT; t++)
-        fprintf(stderr, " %s", stin_technique_name((stin_technique)t));
+        if (stin_technique_feature((stin_technique)t) == f)
+            fprintf(stderr, ", %s", stin_technique_name((stin_technique)t));
     fprintf(stderr, "\n");
     return 0;
 }
