@@ -15,12 +15,13 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_triangles = DEFAULT(d.max_triangles, 262144u);
     d.max_mesh_triangles = DEFAULT(d.max_mesh_triangles, d.max_triangles < 65536u ? d.max_triangles : 65536u);
     d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 4u << 20);
+    d.soft_shadow_samples = DEFAULT(d.soft_shadow_samples, 8u);
     return d;
 }
 
 static int desc_valid(const stin_desc *d)
 {
-    return d->max_lights <= 32 && d->max_meshes <= 65535 && d->max_textures <= 65535 &&
+    return d->max_lights <= 32 && d->soft_shadow_samples <= 64 && d->max_meshes <= 65535 && d->max_textures <= 65535 &&
            d->max_mesh_triangles <= d->max_triangles && d->max_vertices < 0x40000000u &&
            d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u;
 }

@@ -76,6 +76,8 @@ stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light)
         l.spot_cutoff_deg = 45.0f;
     if (l.type == STIN_LIGHT_SPOT && (l.spot_cutoff_deg < 0.0f || l.spot_cutoff_deg > 90.0f))
         return arg_error(ctx, "stin_add_light", "spot_cutoff_deg must be in (0, 90]");
+    if (l.radius < 0.0f || l.range < 0.0f || !stin__isfinite(l.radius) || !stin__isfinite(l.range))
+        return arg_error(ctx, "stin_add_light", "radius and range must be finite and >= 0");
     if (l.spot_exponent < 0.0f || l.spot_exponent > 128.0f)
         return arg_error(ctx, "stin_add_light", "spot_exponent must be in [0, 128]");
     if (l.type != STIN_LIGHT_POINT) {
@@ -177,6 +179,13 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
     return STIN_OK;
 }
 
+void stin_query_frame_projection(const stin_context *ctx, float out[16])
+{
+    if (!ctx || !out)
+        return;
+    stin__memcopy(out, ctx->projection, sizeof ctx->projection);
+}
+
 static int blended(const stin__draw *d) { return d->material.color[3] < 1.0f; }
 
 /* Stable: opaque draws first in submission order, then blended ones far to near. */
@@ -218,6 +227,100 @@ static void begin_target(stin_context *ctx)
     }
 }
 
+/* Samples of a light: several for an area light with soft shadows. */
+static uint32_t light_samples(const stin_context *ctx, const stin_light_desc *l)
+{
+    return l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL ? ctx->desc.soft_shadow_samples : 1u;
+}
+
+/* One light sample as a homogeneous world position (w = 0: toward the light). */
+static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_light_desc *out,
+                         float world[4])
+{
+    *out = *l;
+    if (l->type == STIN_LIGHT_DIRECTIONAL) {
+        world[0] = -l->direction[0];
+        world[1] = -l->direction[1];
+        world[2] = -l->direction[2];
+        world[3] = 0.0f;
+        return;
+    }
+    stin_light_sample(l, i, n, out->position);
+    out->intensity = l->intensity / (float)n;
+    world[0] = out->position[0];
+    world[1] = out->position[1];
+    world[2] = out->position[2];
+    world[3] = 1.0f;
+}
+
+/* Ambient first, then per light (sample): its stencil volumes, then the
+ * opaque draws lit by it where the stencil count is zero; blended draws
+ * last, unshadowed. The visibility output runs the same schedule for light 0
+ * and adds white where it is visible. */
+static void run_volumes(stin_context *ctx, const stin__path *path, int visibility)
+{
+    uint32_t li, s, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
+    path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
+    for (li = 0; li < lights; li++) {
+        const stin_light_desc *l = &ctx->lights[li];
+        uint32_t n = light_samples(ctx, l);
+        int rect[4], scissored = stin__light_scissor(ctx, l, rect);
+        if (scissored && (rect[2] <= 0 || rect[3] <= 0))
+            continue; /* the light touches nothing on screen */
+        for (s = 0; s < n; s++) {
+            stin_light_desc one;
+            float world[4];
+            sample_light(l, s, n, &one, world);
+            stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+            if (visibility) {
+                float w = 1.0f / (float)n, white[4];
+                white[0] = white[1] = white[2] = w;
+                white[3] = 1.0f;
+                path->flat(ctx, STIN__ALL, white);
+            } else {
+                path->lit(ctx, &one);
+            }
+        }
+        GL_DISABLE(ctx, GL_STENCIL_TEST);
+        GL_DISABLE(ctx, GL_SCISSOR_TEST);
+    }
+    if (visibility && !lights)
+        path->flat(ctx, STIN__ALL, (const float[4]){1, 1, 1, 1});
+    if (!visibility)
+        path->batches(ctx, STIN__BLENDED);
+}
+
+static void run_frame(stin_context *ctx)
+{
+    const stin__path *path =
+        ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED
+            ? stin__fixed_path()
+            : stin__glsl_path();
+    int volumes = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME;
+    stin__volume_frame_setup(ctx);
+    path->begin(ctx);
+    switch (ctx->frame.output) {
+    case STIN_OUTPUT_NORMAL:
+        path->normals(ctx);
+        break;
+    case STIN_OUTPUT_VISIBILITY:
+        if (volumes) {
+            run_volumes(ctx, path, 1);
+        } else {
+            path->ambient(ctx, STIN__ALL, 1);
+            path->flat(ctx, STIN__ALL, (const float[4]){1, 1, 1, 1});
+        }
+        break;
+    default:
+        if (volumes && ctx->light_count)
+            run_volumes(ctx, path, 0);
+        else
+            path->batches(ctx, STIN__ALL);
+        break;
+    }
+    path->end(ctx);
+}
+
 stin_result stin_end_frame(stin_context *ctx)
 {
     uint32_t i;
@@ -231,10 +334,7 @@ stin_result stin_end_frame(stin_context *ctx)
     ctx->stats.lights = ctx->light_count;
     for (i = 0; i < ctx->draw_count; i++)
         ctx->stats.triangles += ctx->meshes[ctx->draws[i].mesh_slot].triangle_count;
-    if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED)
-        stin__fixed_run(ctx);
-    else
-        stin__glsl_run(ctx);
+    run_frame(ctx);
     stin__state_restore(ctx);
     stin__gl_check_errors(ctx, "stin_end_frame");
     ctx->state = STIN__IDLE;

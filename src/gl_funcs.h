@@ -25,7 +25,12 @@
     X(void, BlendFunc, (GLenum s, GLenum d), NEED_CORE, "")                               \
     X(void, CullFace, (GLenum mode), NEED_CORE, "")                                       \
     X(void, StencilMask, (GLuint mask), NEED_CORE, "")                                    \
+    X(void, StencilFunc, (GLenum func, GLint ref, GLuint mask), NEED_CORE, "")            \
+    X(void, StencilOp, (GLenum sfail, GLenum dpfail, GLenum dppass), NEED_CORE, "")       \
+    X(void, Scissor, (GLint x, GLint y, GLsizei w, GLsizei h), NEED_CORE, "")             \
+    X(void, FrontFace, (GLenum mode), NEED_CORE, "")                                      \
     X(void, DrawElements, (GLenum mode, GLsizei count, GLenum type, const void *idx), NEED_CORE, "") \
+    X(void, DrawArrays, (GLenum mode, GLint first, GLsizei count), NEED_CORE, "")         \
     X(void, GenTextures, (GLsizei n, GLuint *tex), NEED_CORE, "")                         \
     X(void, DeleteTextures, (GLsizei n, const GLuint *tex), NEED_CORE, "")                \
     X(void, BindTexture, (GLenum target, GLuint tex), NEED_CORE, "")                      \
@@ -56,6 +61,10 @@
     /* multitexture (GL 1.3 / ARB) */                                                     \
     X(void, ActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glActiveTextureARB")    \
     X(void, ClientActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glClientActiveTextureARB") \
+    /* two-sided stencil: EXT_stencil_two_side, or GL 2.0 / ATI separate stencil */       \
+    X(void, ActiveStencilFaceEXT, (GLenum face), STIN_CAP_STENCIL_TWO_SIDE, "")           \
+    X(void, StencilOpSeparate, (GLenum face, GLenum sfail, GLenum dpfail, GLenum dppass), \
+      STIN_CAP_SEPARATE_STENCIL, "glStencilOpSeparateATI")                                \
     /* buffers (GL 1.5 / ARB_vertex_buffer_object) */                                     \
     X(void, GenBuffers, (GLsizei n, GLuint *b), STIN_CAP_VBO, "glGenBuffersARB")          \
     X(void, DeleteBuffers, (GLsizei n, const GLuint *b), STIN_CAP_VBO, "glDeleteBuffersARB") \

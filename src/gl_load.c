@@ -80,6 +80,8 @@ static int enum_need(GLenum e)
     case GL_TEXTURE_CUBE_MAP: return STIN_CAP_TEXTURE_CUBE_MAP;
     case GL_DEPTH_CLAMP: return STIN_CAP_DEPTH_CLAMP;
     case GL_LIGHT_MODEL_COLOR_CONTROL: return STIN_CAP_SEPARATE_SPECULAR;
+    case GL_STENCIL_TEST_TWO_SIDE_EXT: return STIN_CAP_STENCIL_TWO_SIDE;
+    case GL_INCR_WRAP: case GL_DECR_WRAP: return STIN_CAP_STENCIL_WRAP;
     case GL_TEXTURE_2D: return -1; /* enable-able only with fixed function: see below */
     default: return NEED_CORE;
     }

@@ -152,5 +152,12 @@ typedef void GLvoid;
 #define GL_MAX_GEOMETRY_OUTPUT_VERTICES 0x8DE0
 #define GL_DEPTH_CLAMP 0x864F
 #define GL_RED 0x1903
+/* stencil shadow volumes */
+#define GL_REPLACE 0x1E01
+#define GL_INCR_WRAP 0x8507
+#define GL_DECR_WRAP 0x8508
+#define GL_STENCIL_TEST_TWO_SIDE_EXT 0x8910
+#define GL_STREAM_DRAW 0x88E0
+#define GL_CCW 0x0901
 
 #endif

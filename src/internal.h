@@ -40,7 +40,7 @@ void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e);
 #define GL_ENUM(ctx, name, e) (stin__gl_check_enum((ctx), STIN_GLFN_##name, (e)), (ctx)->gl.name)
 #else
 #define GL(ctx, name) ((ctx)->gl.name)
-#define GL_ENUM(ctx, name, e) ((ctx)->gl.name)
+#define GL_ENUM(ctx, name, e) ((void)(e), (ctx)->gl.name)
 #endif
 /* glEnable/glDisable and friends take an enum whose capability is audited. */
 #define GL_ENABLE(ctx, e) GL_ENUM(ctx, Enable, e)(e)
@@ -172,7 +172,7 @@ typedef struct stin__draw {
 typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
 
 /* GLSL programs of one tier. */
-enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_COUNT };
+enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_VOLUME, STIN__PROG_COUNT };
 #define STIN__LIGHTS_PER_PASS 8
 typedef struct stin__program {
     GLuint name;
@@ -211,6 +211,11 @@ struct stin_context {
 
     stin__program programs[STIN__PROG_COUNT];
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
+    float projection[16];     /* what the frame draws with (P_inf for volumes) */
+    float view_proj[16];
+    int volume_depth_clamp;   /* volumes drawn with GL_DEPTH_CLAMP */
+    int volume_infinite;      /* projection moved the far plane to infinity */
+    GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
     int lights_per_pass;
 };
 
@@ -237,12 +242,63 @@ void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint3
 void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count);
 
+/* ---- shadow volumes ----------------------------------------------------- */
+typedef void (*stin__volume_sink)(void *user, const float *xyzw, uint32_t vertex_count);
+typedef struct stin__volume_request {
+    const stin__vertex *verts;
+    const uint32_t *tris, *adjacency;
+    uint32_t tri_count;
+    int closed;            /* classic volume of a closed 2-manifold caster */
+    int caps;              /* light and dark caps (z-fail) */
+    float light[4];        /* object space; w = 1 point, w = 0 directional (toward the light) */
+    float *buffer;         /* chunk of 4-float vertices */
+    uint32_t buffer_vertices;
+    unsigned char *facing; /* tri_count bytes of scratch */
+    stin__volume_sink sink;
+    void *user;
+} stin__volume_request;
+/* Emits the volume through r->sink; returns the triangles emitted. */
+uint32_t stin__volume_build(const stin__volume_request *r);
+int stin__triangle_faces_light(const float *a, const float *b, const float *c, const float l[4]);
+
 /* ---- passes ------------------------------------------------------------- */
+/* Which draws a pass covers. */
+enum { STIN__OPAQUE = 1, STIN__BLENDED = 2, STIN__ALL = 3 };
+
+/* What a lighting path (fixed function or GLSL) offers the pass schedule. */
+typedef struct stin__path {
+    void (*begin)(stin_context *ctx);
+    void (*end)(stin_context *ctx);
+    /* Ambient light only, depth LESS with writes; colour masked when depth_only. */
+    void (*ambient)(stin_context *ctx, int which, int depth_only);
+    /* Opaque draws lit by this one light, added with depth EQUAL; the stencil
+     * state the caller set applies. */
+    void (*lit)(stin_context *ctx, const stin_light_desc *light);
+    /* Draws in one colour, added with depth EQUAL (the visibility output). */
+    void (*flat)(stin_context *ctx, int which, const float color[4]);
+    /* Shadow-volume triangles: homogeneous object-space vertices. */
+    void (*volume_begin)(stin_context *ctx);
+    void (*volume_draw)(stin_context *ctx, const float model[16], const float *xyzw, uint32_t n);
+    void (*volume_end)(stin_context *ctx);
+    /* All lights in batches without shadows: the unshadowed beauty. */
+    void (*batches)(stin_context *ctx, int which);
+    /* World normals as 0.5 + 0.5 n. */
+    void (*normals)(stin_context *ctx);
+} stin__path;
+
 stin_result stin__fixed_init(stin_context *ctx);
-void stin__fixed_run(stin_context *ctx);
+const stin__path *stin__fixed_path(void);
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size);
 void stin__glsl_release(stin_context *ctx);
-void stin__glsl_run(stin_context *ctx);
+const stin__path *stin__glsl_path(void);
+/* One light (sample) of stencil shadow volumes: leaves the stencil test set to
+ * pass where the light is visible. */
+void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
+                        const int scissor[4]);
+/* Everything that differs per frame for shadow volumes is chosen here. */
+void stin__volume_frame_setup(stin_context *ctx);
+/* Screen rectangle a light of finite range can touch; 0 when unbounded. */
+int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
 /* Restores the GL state the header promises after a frame. */
 void stin__state_restore(stin_context *ctx);
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag, char *msg,

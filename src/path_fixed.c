@@ -1,5 +1,7 @@
 /* GL1 tier: fixed-function lighting (per vertex, GL's own equation), lights
- * in batches of GL_MAX_LIGHTS with additive passes, and the AOV outputs. */
+ * in batches of GL_MAX_LIGHTS with additive passes, the passes the shadow
+ * schedule needs (ambient, one light, flat colour, volumes), and the AOV
+ * outputs. */
 #include "internal.h"
 
 stin_result stin__fixed_init(stin_context *ctx)
@@ -60,22 +62,26 @@ static void disable_lights(stin_context *ctx, int from)
         GL_DISABLE(ctx, (GLenum)(GL_LIGHT0 + i));
 }
 
-static int set_batch(stin_context *ctx, int batch)
+static void scene_ambient(stin_context *ctx, int on)
 {
-    int first = batch * ctx->lights_per_pass, i, n = 0;
     float ambient[4] = {0, 0, 0, 1};
-    GL(ctx, MatrixMode)(GL_MODELVIEW);
-    GL(ctx, LoadMatrixf)(ctx->frame.view);
-    for (i = first; i < (int)ctx->light_count && n < ctx->lights_per_pass; i++, n++)
-        set_light(ctx, n, &ctx->lights[i]);
-    disable_lights(ctx, n);
-    if (batch == 0) {
+    if (on) {
         ambient[0] = ctx->frame.ambient[0];
         ambient[1] = ctx->frame.ambient[1];
         ambient[2] = ctx->frame.ambient[2];
     }
     GL(ctx, LightModelfv)(GL_LIGHT_MODEL_AMBIENT, ambient);
-    return n;
+}
+
+static void set_batch(stin_context *ctx, int batch)
+{
+    int first = batch * ctx->lights_per_pass, i, n = 0;
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view);
+    for (i = first; i < (int)ctx->light_count && n < ctx->lights_per_pass; i++, n++)
+        set_light(ctx, n, &ctx->lights[i]);
+    disable_lights(ctx, n);
+    scene_ambient(ctx, batch == 0);
 }
 
 static void set_material(stin_context *ctx, const stin_material *m)
@@ -100,7 +106,7 @@ static void draw_mesh(stin_context *ctx, const stin__draw *d)
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     float mv[16];
-    const char *base;
+    const char *base = NULL;
     const void *idx;
     stin__mat4_mul(mv, ctx->frame.view, d->transform);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
@@ -110,7 +116,6 @@ static void draw_mesh(stin_context *ctx, const stin__draw *d)
         if (m->vbo) {
             GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
             GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
-            base = NULL;
         } else {
             base = (const char *)(ctx->vertices + m->first_vertex);
         }
@@ -120,6 +125,24 @@ static void draw_mesh(stin_context *ctx, const stin__draw *d)
         ctx->bound_mesh = d->mesh_slot;
     }
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+}
+
+static int in_set(const stin__draw *d, int which)
+{
+    return (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE)) != 0;
+}
+
+static void draw_set(stin_context *ctx, int which, int materials)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (!in_set(d, which))
+            continue;
+        if (materials)
+            set_material(ctx, &d->material);
+        draw_mesh(ctx, d);
+    }
 }
 
 static void pass_state(stin_context *ctx, int additive, int blend_alpha)
@@ -147,57 +170,73 @@ static int batch_count(const stin_context *ctx)
     return n > 0 ? n : 1;
 }
 
-static void run_beauty(stin_context *ctx)
+static void fixed_batches(stin_context *ctx, int which)
 {
     int batches = batch_count(ctx), b;
     uint32_t i;
     GL_ENABLE(ctx, GL_LIGHTING);
-    GL(ctx, LightModeli)(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
-    GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 0);
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
-        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
-                                                                GL_SEPARATE_SPECULAR_COLOR);
-    /* Opaque draws: all draws per light batch. */
-    for (b = 0; b < batches; b++) {
-        set_batch(ctx, b);
-        pass_state(ctx, b > 0, 0);
-        ctx->stats.passes++;
-        for (i = 0; i < ctx->draw_count; i++) {
-            const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-            if (d->material.color[3] < 1.0f)
-                break; /* blended draws come last in the order */
-            set_material(ctx, &d->material);
-            draw_mesh(ctx, d);
-        }
-    }
-    /* Blended draws: every batch of one draw before the next, far to near. */
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        if (d->material.color[3] >= 1.0f)
-            continue;
-        for (b = 0; b < batches; b++) {
+    if (which & STIN__OPAQUE)
+        for (b = 0; b < batches; b++) { /* every opaque draw per light batch */
             set_batch(ctx, b);
-            pass_state(ctx, b > 0, 1);
-            set_material(ctx, &d->material);
-            draw_mesh(ctx, d);
+            pass_state(ctx, b > 0, 0);
+            ctx->stats.passes++;
+            draw_set(ctx, STIN__OPAQUE, 1);
         }
-    }
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
-        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
-                                                                GL_SINGLE_COLOR);
+    if (which & STIN__BLENDED)
+        for (i = 0; i < ctx->draw_count; i++) { /* each blended draw whole, far to near */
+            const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+            if (!in_set(d, STIN__BLENDED))
+                continue;
+            for (b = 0; b < batches; b++) {
+                set_batch(ctx, b);
+                pass_state(ctx, b > 0, 1);
+                set_material(ctx, &d->material);
+                draw_mesh(ctx, d);
+            }
+        }
 }
 
-static void draw_all_plain(stin_context *ctx)
+static void fixed_ambient(stin_context *ctx, int which, int depth_only)
 {
-    uint32_t i;
-    for (i = 0; i < ctx->draw_count; i++)
-        draw_mesh(ctx, &ctx->draws[ctx->draw_order[i]]);
+    GL_ENABLE(ctx, GL_LIGHTING);
+    disable_lights(ctx, 0);
+    scene_ambient(ctx, 1);
+    pass_state(ctx, 0, 0);
+    if (depth_only)
+        GL(ctx, ColorMask)(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    draw_set(ctx, which, !depth_only);
+    if (depth_only)
+        GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ctx->stats.passes++;
+}
+
+static void fixed_lit(stin_context *ctx, const stin_light_desc *light)
+{
+    GL_ENABLE(ctx, GL_LIGHTING);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view);
+    set_light(ctx, 0, light);
+    disable_lights(ctx, 1);
+    scene_ambient(ctx, 0);
+    pass_state(ctx, 1, 0);
+    draw_set(ctx, STIN__OPAQUE, 1);
+    ctx->stats.passes++;
+}
+
+static void fixed_flat(stin_context *ctx, int which, const float color[4])
+{
+    GL_DISABLE(ctx, GL_LIGHTING);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, Color4f)(color[0], color[1], color[2], color[3]);
+    pass_state(ctx, 1, 0);
+    draw_set(ctx, which, 0);
+    ctx->stats.passes++;
 }
 
 /* World normal as 0.5 + 0.5 n without shaders: pass 1 lights +x,+y,+z with
  * half intensity over a 0.5 ambient; pass 2 multiplies by 1 - max(0, -n)
  * (negative light colours, which GL allows), which halves toward 0. */
-static void run_normals(stin_context *ctx)
+static void fixed_normals(stin_context *ctx)
 {
     float half[4] = {0.5f, 0.5f, 0.5f, 1.0f}, one[4] = {1, 1, 1, 1}, black[4] = {0, 0, 0, 1};
     int axis;
@@ -215,7 +254,7 @@ static void run_normals(stin_context *ctx)
     disable_lights(ctx, 3);
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_AMBIENT, half);
     pass_state(ctx, 0, 0);
-    draw_all_plain(ctx);
+    draw_set(ctx, STIN__ALL, 0);
 
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, LoadMatrixf)(ctx->frame.view);
@@ -226,40 +265,65 @@ static void run_normals(stin_context *ctx)
     GL(ctx, DepthMask)(GL_FALSE);
     GL_ENABLE(ctx, GL_BLEND);
     GL(ctx, BlendFunc)(GL_ZERO, GL_SRC_COLOR);
-    draw_all_plain(ctx);
+    draw_set(ctx, STIN__ALL, 0);
     ctx->stats.passes += 2;
 }
 
-/* No shadow technique yet on this path: every covered pixel sees light 0. */
-static void run_visibility(stin_context *ctx)
+static void fixed_volume_begin(stin_context *ctx)
 {
     GL_DISABLE(ctx, GL_LIGHTING);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
-    GL(ctx, Color4f)(1.0f, 1.0f, 1.0f, 1.0f);
-    pass_state(ctx, 0, 0);
-    draw_all_plain(ctx);
-    ctx->stats.passes++;
+    GL(ctx, DisableClientState)(GL_NORMAL_ARRAY);
+    GL(ctx, DisableClientState)(GL_TEXTURE_COORD_ARRAY);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO))
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    ctx->bound_mesh = 0xffffffffu;
 }
 
-void stin__fixed_run(stin_context *ctx)
+static void fixed_volume_draw(stin_context *ctx, const float model[16], const float *xyzw,
+                              uint32_t n)
+{
+    float mv[16];
+    stin__mat4_mul(mv, ctx->frame.view, model);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(mv);
+    GL(ctx, VertexPointer)(4, GL_FLOAT, 0, xyzw);
+    GL(ctx, DrawArrays)(GL_TRIANGLES, 0, (GLsizei)n);
+}
+
+static void fixed_volume_end(stin_context *ctx)
+{
+    GL(ctx, EnableClientState)(GL_NORMAL_ARRAY);
+    GL(ctx, EnableClientState)(GL_TEXTURE_COORD_ARRAY);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void fixed_begin(stin_context *ctx)
 {
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PushMatrix)();
-    GL(ctx, LoadMatrixf)(ctx->frame.projection);
+    GL(ctx, LoadMatrixf)(ctx->projection);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PushMatrix)();
     GL_ENABLE(ctx, GL_DEPTH_TEST);
     GL_ENABLE(ctx, GL_NORMALIZE);
     GL(ctx, ShadeModel)(GL_SMOOTH);
+    GL(ctx, LightModeli)(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
+    GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 0);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
+        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
+                                                                GL_SEPARATE_SPECULAR_COLOR);
     GL(ctx, EnableClientState)(GL_VERTEX_ARRAY);
     GL(ctx, EnableClientState)(GL_NORMAL_ARRAY);
     GL(ctx, EnableClientState)(GL_TEXTURE_COORD_ARRAY);
-    switch (ctx->frame.output) {
-    case STIN_OUTPUT_NORMAL: run_normals(ctx); break;
-    case STIN_OUTPUT_VISIBILITY: run_visibility(ctx); break;
-    default: run_beauty(ctx); break;
-    }
+}
+
+static void fixed_end(stin_context *ctx)
+{
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
+        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
+                                                                GL_SINGLE_COLOR);
     disable_lights(ctx, 0);
     GL_DISABLE(ctx, GL_LIGHTING);
     GL_DISABLE(ctx, GL_NORMALIZE);
@@ -271,4 +335,13 @@ void stin__fixed_run(stin_context *ctx)
     GL(ctx, PopMatrix)();
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PopMatrix)();
+}
+
+const stin__path *stin__fixed_path(void)
+{
+    static const stin__path path = {fixed_begin,        fixed_end,         fixed_ambient,
+                                    fixed_lit,          fixed_flat,        fixed_volume_begin,
+                                    fixed_volume_draw,  fixed_volume_end,  fixed_batches,
+                                    fixed_normals};
+    return &path;
 }

@@ -1,9 +1,13 @@
 /* GL2 and GL4 tiers: per-pixel lighting in GLSL (shaders/gl2 with #version
  * 110 on compatibility contexts, shaders/gl4 with #version 150 and VAOs),
- * lights in batches of 8 with additive passes, and the AOV outputs. */
+ * lights in batches of 8 with additive passes, the passes the shadow
+ * schedule needs, and the AOV outputs. */
 #include "internal.h"
 
-static const char *const frag_names[STIN__PROG_COUNT] = {"lit.frag", "normal.frag", "flat.frag"};
+static const char *const vert_names[STIN__PROG_COUNT] = {"lit.vert", "lit.vert", "lit.vert",
+                                                         "volume.vert"};
+static const char *const frag_names[STIN__PROG_COUNT] = {"lit.frag", "normal.frag", "flat.frag",
+                                                         "flat.frag"};
 
 static void locate(stin_context *ctx, stin__program *p)
 {
@@ -30,9 +34,9 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
     char vert[32], frag[32];
     int i;
     stin__glsl_release(ctx);
-    stin__formatf(vert, sizeof vert, "%slit.vert", dir);
     for (i = 0; i < STIN__PROG_COUNT; i++) {
         stin__program *p = &ctx->programs[i];
+        stin__formatf(vert, sizeof vert, "%s%s", dir, vert_names[i]);
         stin__formatf(frag, sizeof frag, "%s%s", dir, frag_names[i]);
         p->name = stin__program_build(ctx, vert, frag, msg, msg_size);
         if (!p->name) {
@@ -40,6 +44,16 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
             return STIN_ERROR_GL;
         }
         locate(ctx, p);
+    }
+    if (tier == STIN_TIER_GL4) { /* core profiles have no client arrays: stream volumes */
+        GL(ctx, GenBuffers)(1, &ctx->volume_vbo);
+        GL(ctx, GenVertexArrays)(1, &ctx->volume_vao);
+        GL(ctx, BindVertexArray)(ctx->volume_vao);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
+        GL(ctx, EnableVertexAttribArray)(0);
+        GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, NULL);
+        GL(ctx, BindVertexArray)(0);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     }
     stin__gl_check_errors(ctx, "shader set-up");
     return STIN_OK;
@@ -53,16 +67,26 @@ void stin__glsl_release(stin_context *ctx)
             GL(ctx, DeleteProgram)(ctx->programs[i].name);
             ctx->programs[i].name = 0;
         }
+    if (ctx->volume_vbo)
+        GL(ctx, DeleteBuffers)(1, &ctx->volume_vbo);
+    if (ctx->volume_vao)
+        GL(ctx, DeleteVertexArrays)(1, &ctx->volume_vao);
+    ctx->volume_vbo = ctx->volume_vao = 0;
 }
 
-static void set_lights(stin_context *ctx, const stin__program *p, int batch)
+static int gl4(const stin_context *ctx) { return ctx->volume_vao != 0; }
+
+/* Packs up to 8 lights: position, direction + cos(cutoff), colour + exponent,
+ * attenuation (the layout lit.frag reads). */
+static void upload_lights(stin_context *ctx, const stin__program *p, const stin_light_desc *lights,
+                          int n, int with_ambient)
 {
     float packed[4 * 4 * STIN__LIGHTS_PER_PASS];
-    int first = batch * STIN__LIGHTS_PER_PASS, n = 0, i, k;
     const float zero[3] = {0, 0, 0};
-    for (i = first; i < (int)ctx->light_count && n < STIN__LIGHTS_PER_PASS; i++, n++) {
-        const stin_light_desc *l = &ctx->lights[i];
-        float *o = packed + 16 * n;
+    int i, k;
+    for (i = 0; i < n; i++) {
+        const stin_light_desc *l = &lights[i];
+        float *o = packed + 16 * i;
         int dir = l->type == STIN_LIGHT_DIRECTIONAL;
         for (k = 0; k < 3; k++) {
             o[k] = dir ? -l->direction[k] : l->position[k];
@@ -78,7 +102,17 @@ static void set_lights(stin_context *ctx, const stin__program *p, int batch)
     GL(ctx, Uniform1i)(p->u_light_count, n);
     if (n)
         GL(ctx, Uniform4fv)(p->u_lights, 4 * n, packed);
-    GL(ctx, Uniform3fv)(p->u_ambient, 1, batch == 0 ? ctx->frame.ambient : zero);
+    GL(ctx, Uniform3fv)(p->u_ambient, 1, with_ambient ? ctx->frame.ambient : zero);
+}
+
+static void set_batch(stin_context *ctx, const stin__program *p, int batch)
+{
+    int first = batch * STIN__LIGHTS_PER_PASS, n = (int)ctx->light_count - first;
+    if (n > STIN__LIGHTS_PER_PASS)
+        n = STIN__LIGHTS_PER_PASS;
+    if (n < 0)
+        n = 0;
+    upload_lights(ctx, p, ctx->lights + first, n, batch == 0);
 }
 
 static void set_material(stin_context *ctx, const stin__program *p, const stin_material *m)
@@ -91,18 +125,11 @@ static void set_material(stin_context *ctx, const stin__program *p, const stin_m
     GL(ctx, BindTexture)(GL_TEXTURE_2D, t ? t->name : 0);
 }
 
-static void draw_mesh(stin_context *ctx, const stin__program *p, const stin__draw *d)
+static void bind_mesh_arrays(stin_context *ctx, const stin__mesh_slot *m, uint32_t slot)
 {
-    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    float nm[9];
-    const void *idx = NULL;
-    GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
-    stin__mat3_normal(nm, d->transform);
-    GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
-    if (ctx->bound_mesh == d->mesh_slot) {
-        if (!m->vao && !m->vbo)
-            idx = ctx->indices + 3u * m->first_triangle;
-    } else if (m->vao) {
+    if (ctx->bound_mesh == slot)
+        return;
+    if (m->vao) {
         GL(ctx, BindVertexArray)(m->vao);
     } else if (m->vbo) {
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
@@ -110,10 +137,38 @@ static void draw_mesh(stin_context *ctx, const stin__program *p, const stin__dra
         stin__mesh_bind_attributes(ctx, NULL);
     } else {
         stin__mesh_bind_attributes(ctx, ctx->vertices + m->first_vertex);
-        idx = ctx->indices + 3u * m->first_triangle;
     }
-    ctx->bound_mesh = d->mesh_slot;
+    ctx->bound_mesh = slot;
+}
+
+static void draw_mesh(stin_context *ctx, const stin__program *p, const stin__draw *d)
+{
+    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+    float nm[9];
+    const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
+    GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
+    stin__mat3_normal(nm, d->transform);
+    GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
+    bind_mesh_arrays(ctx, m, d->mesh_slot);
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+}
+
+static int in_set(const stin__draw *d, int which)
+{
+    return (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE)) != 0;
+}
+
+static void draw_set(stin_context *ctx, const stin__program *p, int which, int materials)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (!in_set(d, which))
+            continue;
+        if (materials)
+            set_material(ctx, p, &d->material);
+        draw_mesh(ctx, p, d);
+    }
 }
 
 static void pass_state(stin_context *ctx, int additive, int blend_alpha)
@@ -132,82 +187,149 @@ static void pass_state(stin_context *ctx, int additive, int blend_alpha)
 static const stin__program *use(stin_context *ctx, int which)
 {
     const stin__program *p = &ctx->programs[which];
-    float vp[16];
     GL(ctx, UseProgram)(p->name);
-    stin__mat4_mul(vp, ctx->frame.projection, ctx->frame.view);
-    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, vp);
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
+    if (which == STIN__PROG_LIT) {
+        float inv[16];
+        stin__mat4_invert(inv, ctx->frame.view);
+        GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
+        GL(ctx, Uniform1i)(p->u_albedo_tex, 0);
+    }
     return p;
 }
 
-static void run_beauty(stin_context *ctx)
+static void glsl_batches(stin_context *ctx, int which)
 {
     const stin__program *p = use(ctx, STIN__PROG_LIT);
-    float eye[3], inv[16];
     int batches = ((int)ctx->light_count + STIN__LIGHTS_PER_PASS - 1) / STIN__LIGHTS_PER_PASS, b;
     uint32_t i;
     if (batches < 1)
         batches = 1;
-    stin__mat4_invert(inv, ctx->frame.view);
-    eye[0] = inv[12];
-    eye[1] = inv[13];
-    eye[2] = inv[14];
-    GL(ctx, Uniform3fv)(p->u_eye, 1, eye);
-    GL(ctx, Uniform1i)(p->u_albedo_tex, 0);
-    for (b = 0; b < batches; b++) {
-        set_lights(ctx, p, b);
-        pass_state(ctx, b > 0, 0);
-        ctx->stats.passes++;
+    if (which & STIN__OPAQUE)
+        for (b = 0; b < batches; b++) {
+            set_batch(ctx, p, b);
+            pass_state(ctx, b > 0, 0);
+            ctx->stats.passes++;
+            draw_set(ctx, p, STIN__OPAQUE, 1);
+        }
+    if (which & STIN__BLENDED)
         for (i = 0; i < ctx->draw_count; i++) {
             const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-            if (d->material.color[3] < 1.0f)
-                break; /* blended draws come last in the order */
+            if (!in_set(d, STIN__BLENDED))
+                continue;
             set_material(ctx, p, &d->material);
-            draw_mesh(ctx, p, d);
+            for (b = 0; b < batches; b++) {
+                set_batch(ctx, p, b);
+                pass_state(ctx, b > 0, 1);
+                draw_mesh(ctx, p, d);
+            }
         }
-    }
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        if (d->material.color[3] >= 1.0f)
-            continue;
-        set_material(ctx, p, &d->material);
-        for (b = 0; b < batches; b++) {
-            set_lights(ctx, p, b);
-            pass_state(ctx, b > 0, 1);
-            draw_mesh(ctx, p, d);
-        }
-    }
 }
 
-static void run_single(stin_context *ctx, int which)
+static void glsl_ambient(stin_context *ctx, int which, int depth_only)
 {
-    const stin__program *p = use(ctx, which);
-    const float white[4] = {1, 1, 1, 1};
-    uint32_t i;
-    if (which == STIN__PROG_FLAT)
-        GL(ctx, Uniform4fv)(p->u_color, 1, white);
+    const stin__program *p = use(ctx, STIN__PROG_LIT);
+    upload_lights(ctx, p, NULL, 0, 1);
     pass_state(ctx, 0, 0);
-    for (i = 0; i < ctx->draw_count; i++)
-        draw_mesh(ctx, p, &ctx->draws[ctx->draw_order[i]]);
+    if (depth_only)
+        GL(ctx, ColorMask)(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    draw_set(ctx, p, which, 1);
+    if (depth_only)
+        GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ctx->stats.passes++;
 }
 
-void stin__glsl_run(stin_context *ctx)
+static void glsl_lit(stin_context *ctx, const stin_light_desc *light)
 {
-    int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
+    const stin__program *p = use(ctx, STIN__PROG_LIT);
+    upload_lights(ctx, p, light, 1, 0);
+    pass_state(ctx, 1, 0);
+    draw_set(ctx, p, STIN__OPAQUE, 1);
+    ctx->stats.passes++;
+}
+
+static void glsl_flat(stin_context *ctx, int which, const float color[4])
+{
+    const stin__program *p = use(ctx, STIN__PROG_FLAT);
+    GL(ctx, Uniform4fv)(p->u_color, 1, color);
+    pass_state(ctx, 1, 0);
+    draw_set(ctx, p, which, 0);
+    ctx->stats.passes++;
+}
+
+static void glsl_normals(stin_context *ctx)
+{
+    const stin__program *p = use(ctx, STIN__PROG_NORMAL);
+    pass_state(ctx, 0, 0);
+    draw_set(ctx, p, STIN__ALL, 0);
+    ctx->stats.passes++;
+}
+
+static void glsl_volume_begin(stin_context *ctx)
+{
+    use(ctx, STIN__PROG_VOLUME);
+    if (gl4(ctx)) {
+        GL(ctx, BindVertexArray)(ctx->volume_vao);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
+    } else {
+        int i;
+        if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO))
+            GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+        for (i = 1; i < 4; i++)
+            GL(ctx, DisableVertexAttribArray)((GLuint)i);
+    }
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void glsl_volume_draw(stin_context *ctx, const float model[16], const float *xyzw,
+                             uint32_t n)
+{
+    GL(ctx, UniformMatrix4fv)(ctx->programs[STIN__PROG_VOLUME].u_model, 1, GL_FALSE, model);
+    if (gl4(ctx))
+        GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(16u * n), xyzw, GL_STREAM_DRAW);
+    else
+        GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, xyzw);
+    GL(ctx, DrawArrays)(GL_TRIANGLES, 0, (GLsizei)n);
+}
+
+static void glsl_volume_end(stin_context *ctx)
+{
+    if (gl4(ctx)) {
+        GL(ctx, BindVertexArray)(0);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    } else {
+        int i;
+        for (i = 1; i < 4; i++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)i);
+    }
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void glsl_begin(stin_context *ctx)
+{
     int i;
     ctx->bound_mesh = 0xffffffffu;
     GL_ENABLE(ctx, GL_DEPTH_TEST);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    if (!gl4)
+    if (!gl4(ctx))
         for (i = 0; i < 4; i++)
             GL(ctx, EnableVertexAttribArray)((GLuint)i);
-    switch (ctx->frame.output) {
-    case STIN_OUTPUT_NORMAL: run_single(ctx, STIN__PROG_NORMAL); break;
-    case STIN_OUTPUT_VISIBILITY: run_single(ctx, STIN__PROG_FLAT); break;
-    default: run_beauty(ctx); break;
-    }
-    if (!gl4)
+}
+
+static void glsl_end(stin_context *ctx)
+{
+    int i;
+    if (!gl4(ctx))
         for (i = 0; i < 4; i++)
             GL(ctx, DisableVertexAttribArray)((GLuint)i);
+}
+
+const stin__path *stin__glsl_path(void)
+{
+    static const stin__path path = {glsl_begin,       glsl_end,          glsl_ambient,
+                                    glsl_lit,         glsl_flat,         glsl_volume_begin,
+                                    glsl_volume_draw, glsl_volume_end,   glsl_batches,
+                                    glsl_normals};
+    return &path;
 }

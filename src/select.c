@@ -33,6 +33,7 @@ uint64_t stin__technique_needs(stin_technique t)
     case STIN_TECH_LIGHTING_GLSL150: return stin__tier_needs(STIN_TIER_GL4);
     case STIN_TECH_LIGHTING_GLSL110: return stin__tier_needs(STIN_TIER_GL2);
     case STIN_TECH_LIGHTING_FIXED: return stin__tier_needs(STIN_TIER_GL1);
+    case STIN_TECH_SHADOWS_VOLUME: return BIT(STENCIL);
     default: return 0;
     }
 }

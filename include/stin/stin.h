@@ -238,6 +238,7 @@ const char *stin_feature_name(stin_feature f);
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
     X(LIGHTING_GLSL110, "glsl110-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL2) \
     X(LIGHTING_FIXED, "fixed-function", STIN_FEATURE_LIGHTING, STIN_TIER_GL1)      \
+    X(SHADOWS_VOLUME, "volume", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)       \
     X(SHADOWS_OFF, "off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)             \
     X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)
 
@@ -280,7 +281,15 @@ typedef struct stin_desc {
     uint32_t max_triangles;            /* all meshes together, default 262144 */
     uint32_t max_mesh_triangles;       /* one mesh, sizes creation scratch; default 65536 */
     uint32_t max_texture_bytes;        /* staging for texture creation, default 4 MiB */
+    uint32_t soft_shadow_samples;      /* point samples of an area light (radius > 0),
+                                        * default 8, at most 64 */
+    uint32_t debug_flags;              /* STIN_DEBUG_*: diagnostics, default 0 */
 } stin_desc;
+
+/* Diagnostics for tests and bug reports; none changes what a correct frame
+ * looks like where the technique is exact. */
+#define STIN_DEBUG_VOLUME_ZFAIL 1u  /* z-fail for every caster (needs caps) */
+#define STIN_DEBUG_VOLUME_ZPASS 2u  /* z-pass for every caster: wrong with the eye in a volume */
 
 typedef struct stin_context stin_context;
 
@@ -385,6 +394,10 @@ typedef struct stin_light_desc {
     float attenuation[3];   /* k0, k1, k2; default (1,0,0) when all zero */
     float spot_cutoff_deg;  /* half angle, (0,90]; default 45 */
     float spot_exponent;    /* default 0 */
+    float radius;           /* > 0: area light, soft shadows from desc.soft_shadow_samples
+                             * point samples (stin_light_sample); default 0 */
+    float range;            /* > 0: the light reaches no farther (its attenuation makes it
+                             * negligible); shadow passes are scissored to it. 0 = unbounded */
 } stin_light_desc;
 
 typedef struct stin_material {
@@ -424,10 +437,24 @@ stin_result stin_end_frame(stin_context *ctx);
 
 typedef struct stin_frame_stats {
     uint32_t draws, lights, passes, triangles;
+    uint32_t shadow_volume_triangles; /* volume sides and caps drawn */
+    uint32_t zfail_casters, zpass_casters; /* per light sample */
     uint32_t dropped_draws, dropped_lights;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);
+
+/* The projection the last frame's depth buffer was rendered with. Stencil
+ * shadow volumes without depth clamp move the far plane to infinity (the
+ * nudged P_inf of Everitt & Kilgard), so a caller that unprojects depth must
+ * use this rather than its own. */
+void stin_query_frame_projection(const stin_context *ctx, float out[16]);
+
+/* Sample i of n of an area light: the point light the soft-shadow pass uses
+ * (a deterministic spiral over the sphere of the light's radius; n = 1 or
+ * radius 0 gives the light's position). For references that must use the
+ * same samples. */
+void stin_light_sample(const stin_light_desc *light, uint32_t i, uint32_t n, float out_position[3]);
 
 #ifdef __cplusplus
 }

@@ -3,7 +3,7 @@
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 uniform mat3 u_normal_matrix;
-in vec3 a_position;
+in vec4 a_position;
 in vec3 a_normal;
 in vec2 a_uv;
 out vec3 v_world;
@@ -12,7 +12,9 @@ out vec2 v_uv;
 
 void main()
 {
-    vec4 world = u_model * vec4(a_position, 1.0);
+    // w comes from the vertex fetch (1.0), exactly as in volume.vert, so that
+    // volume caps and the surfaces they coincide with rasterise to equal depths.
+    vec4 world = u_model * a_position;
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;

@@ -7,17 +7,17 @@
 #define LIGHT_FIXED STIN_TECH_LIGHTING_FIXED
 #define LIGHT_110 STIN_TECH_LIGHTING_GLSL110
 #define LIGHT_150 STIN_TECH_LIGHTING_GLSL150
-#define OFF STIN_TECH_SHADOWS_OFF
+#define VOLUME STIN_TECH_SHADOWS_VOLUME
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 
 static const expected_profile table[] = {
-    {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, OFF, PLAIN}, {1, 0, 0}},
-    {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, OFF, PLAIN}, {1, 0, 0}},
-    {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, OFF, PLAIN}, {1, 0, 0}},
-    {"gl21", STIN_TIER_GL2, {LIGHT_110, OFF, PLAIN}, {1, 1, 0}},
-    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, OFF, PLAIN}, {0, 0, 1}},
-    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, OFF, PLAIN}, {0, 0, 1}},
-    {"native", STIN_TIER_GL4, {LIGHT_150, OFF, PLAIN}, {1, 1, 1}},
+    {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN}, {1, 0, 0}},
+    {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN}, {1, 0, 0}},
+    {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN}, {1, 0, 0}},
+    {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, PLAIN}, {1, 1, 0}},
+    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, PLAIN}, {0, 0, 1}},
+    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, PLAIN}, {0, 0, 1}},
+    {"native", STIN_TIER_GL4, {LIGHT_150, VOLUME, PLAIN}, {1, 1, 1}},
 };
 
 const expected_profile *expected_find(const char *profile)

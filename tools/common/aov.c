@@ -136,7 +136,10 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
     if (!render_read(g, ctx, p, STIN_OUTPUT_NORMAL, normal, NULL, err, err_size) ||
         !render_read(g, ctx, p, STIN_OUTPUT_VISIBILITY, vis, NULL, err, err_size))
         goto done;
+    /* Depth was written with the frame's projection, which shadow volumes may
+     * have moved to an infinite far plane. */
     scene_camera_matrices(cam, w, h, view, proj);
+    stin_query_frame_projection(ctx, proj);
     if (!aov_inverse_view_proj(view, proj, inv)) {
         snprintf(err, err_size, "camera matrices are singular");
         goto done;

@@ -1,0 +1,12 @@
+#version 110
+// Shadow-volume vertices: homogeneous object space, w = 0 at infinity. The
+// transform is written exactly as in lit.vert so coincident caps get equal depths.
+uniform mat4 u_model;
+uniform mat4 u_view_proj;
+attribute vec4 a_position;
+
+void main()
+{
+    vec4 world = u_model * a_position;
+    gl_Position = u_view_proj * world;
+}
