@@ -104,9 +104,9 @@ $(B)/tests/test_scene: tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(PLA
 	@mkdir -p $(@D)/san
 	$(CXX) -std=c++17 $(WARN) -g -O1 $(SAN) -Iinclude -Itools/common -c tools/common/image_io.cpp -o $(@D)/san/image_io.o
 	$(CC) $(SAN_CFLAGS) -o $@ $< $(filter %.c,$(COMMON_SRC)) $(PLATFORM_SRC) $(B)/libstin.a $(@D)/san/image_io.o -lcmocka $(TOOL_LIBS) $(PLATFORM_LIBS)
-$(B)/tests/test_reference: tests/unit/test_reference.c $(REF_SRC) $(wildcard tests/reference/*.h)
+$(B)/tests/test_reference: tests/unit/test_reference.c $(REF_SRC) $(B)/libstin.a $(wildcard tests/reference/*.h)
 	@mkdir -p $(@D)
-	$(CC) $(SAN_CFLAGS) -o $@ $< $(REF_SRC) -lcmocka $(REF_LIBS) -lm
+	$(CC) $(SAN_CFLAGS) -o $@ $< $(REF_SRC) $(B)/libstin.a -lcmocka $(REF_LIBS) -lm
 # The allocator is interposed here, so no AddressSanitizer (it owns malloc).
 $(B)/tests/test_noheap: tests/unit/test_noheap.c tests/unit/fake_gl.c $(B)/libstin.a
 	@mkdir -p $(@D)

@@ -199,6 +199,7 @@ static void test_scene(run *r, stin_tier tier, const char *path)
         return;
     }
     base_desc(r, &d, &lc, tier);
+    d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_OFF; /* the unshadowed contract */
     scene_gpu_size_desc(&s, &d);
     size = stin_memory_size(&d);
     block = malloc(size);

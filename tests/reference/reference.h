@@ -61,9 +61,26 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits);
  * (offset along Ng toward the light's side by the scene epsilon) to the light
  * position is unoccluded (directional: the ray toward -direction, to
  * infinity), else 0. Spot cones are shading, not visibility. Area lights are
- * treated as points (radius ignored). Background hits and bad light indices
+ * treated as points (radius ignored; see reference_light_visibility). Background hits and bad light indices
  * give 1. */
 float reference_visibility(const reference *r, const ref_hit *hit, int light);
+
+/* As reference_visibility for a point light at `position` (the segment from
+ * the offset P to it). NULL position or a background hit gives 1. */
+float reference_visibility_to(const reference *r, const ref_hit *hit, const float position[3]);
+
+/* Point samples an area light (radius > 0, point or spot) is split into, as
+ * stin's desc.soft_shadow_samples (whose default this is): sample k of n is
+ * stin_light_sample(light, k, n) with intensity / n. */
+#define REFERENCE_SOFT_SHADOW_SAMPLES 8
+/* Sets the sample count of r (clamped to [1, 64] like stin's); match the
+ * stin_desc.soft_shadow_samples of the render under test. */
+void reference_set_soft_shadow_samples(reference *r, unsigned n);
+
+/* Visibility of light `light` as stin's shadow passes see it: for an area
+ * light (1/n) * sum of reference_visibility_to() its n samples (fractional
+ * in the penumbra); else reference_visibility(). */
+float reference_light_visibility(const reference *r, const ref_hit *hit, int light);
 
 /* Unshadowed shading with the lighting model of stin.h:
  *   per_vertex = 1 (GL1 Gouraud, GL 1.2 separate specular): the model at the
@@ -93,6 +110,19 @@ void reference_shade(const scene *s, const reference *r, const ref_hit *hit, int
 void reference_shade_weighted(const scene *s, const reference *r, const ref_hit *hit,
                               int per_vertex, const float *light_weight, float out_rgba[4]);
 
+/* The beauty of a stencil-shadow-volume frame, pass by pass: an ambient pass
+ * (ambient * albedo * texture), then per light and per sample (area lights:
+ * REFERENCE_SOFT_SHADOW_SAMPLES points with intensity / n, as
+ * reference_light_visibility) a pass with only that point light, dropped
+ * where the sample is not visible. Every pass is clamped to [0,1] on its own
+ * (per vertex: at its vertices, as each GL1 pass is Gouraud-shaded), the
+ * passes are added and the sum clamped at 1. A blended material (opacity < 1)
+ * is drawn after the passes, unshadowed: reference_shade(). r is required
+ * (NaN without it). Equals the shadowed single-pass shading wherever no pass
+ * and no sum exceeds 1. */
+void reference_shade_passes(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
+                            float out_rgba[4]);
+
 /* Bilinear sample of an RGBA8 texture with repeat addressing, no mipmaps,
  * texel centres at ((i + 0.5) / w, (j + 0.5) / h), rows bottom to top;
  * out in [0,1]. */
@@ -111,17 +141,23 @@ extern const char *const reference_channel_names[REFERENCE_CHANNELS];
 
 /* Fills out (width*height*REFERENCE_CHANNELS floats, pixel-interleaved, rows
  * bottom to top) with R,G,B,A (reference_shade, unshadowed), P, N, Z = |P - eye|
- * and vis.R/G/B = visibility of light 0 (1 with no lights). Background pixels:
+ * and vis.R/G/B = reference_light_visibility() of light 0 (1 with no lights;
+ * fractional for an area light). Background pixels:
  * RGBA = scene background, P = N = Z = 0, vis = 1. s must be the scene r was
  * created from. Returns 1, or 0 on bad arguments, out of memory or an Embree
  * error. All reference queries are read-only: threads may share r. */
 int reference_render(const scene *s, const reference *r, int width, int height, int per_vertex,
                      float *out);
 
-/* reference_render with flags: REFERENCE_RENDER_SHADOWED makes the beauty
- * hard-shadowed (every light weighted by its visibility, as
- * reference_shade_weighted). */
+/* reference_render with flags:
+ * REFERENCE_RENDER_SHADOWED makes the beauty shadowed in one clamped sum:
+ *   every light weighted by its visibility (as reference_shade_weighted), an
+ *   area light split into its samples, each weighted by its own visibility.
+ * REFERENCE_RENDER_PER_LIGHT_PASSES (implies shadowed) makes the beauty the
+ *   sum of separately clamped passes, reference_shade_passes(): what a
+ *   stencil-volume frame draws, including the unshadowed blended draws. */
 #define REFERENCE_RENDER_SHADOWED 1u
+#define REFERENCE_RENDER_PER_LIGHT_PASSES 2u
 int reference_render_ex(const scene *s, const reference *r, int width, int height, int per_vertex,
                         unsigned flags, float *out);
 

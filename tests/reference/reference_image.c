@@ -7,24 +7,32 @@
 const char *const reference_channel_names[REFERENCE_CHANNELS] = {
     "R", "G", "B", "A", "P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "Z", "vis.R", "vis.G", "vis.B"};
 
+/* Scratch of one render: the lights split into samples and their weights. */
+typedef struct scratch {
+    scene_light *lights;
+    float *weight;
+} scratch;
+
 static void pixel(const scene *s, const reference *r, const ref_hit *h, int per_vertex,
-                  unsigned flags, float *weight, float *px)
+                  unsigned flags, scratch *w, float *px)
 {
     memset(px, 0, REFERENCE_CHANNELS * sizeof *px);
-    float vis0 = 1.0f;
-    if (h->hit && s->light_count > 0) {
-        if (flags & REFERENCE_RENDER_SHADOWED)
-            for (int i = 0; i < s->light_count; i++)
-                weight[i] = reference_visibility(r, h, i);
-        vis0 = (flags & REFERENCE_RENDER_SHADOWED) ? weight[0] : reference_visibility(r, h, 0);
+    int opaque = h->hit && s->materials[s->objects[h->object].material].color[3] >= 1.0f;
+    if (h->hit && (flags & REFERENCE_RENDER_PER_LIGHT_PASSES) && !opaque) {
+        reference_shade(s, r, h, per_vertex, px); /* blended: drawn last, unshadowed */
+    } else if (h->hit && (flags & (REFERENCE_RENDER_SHADOWED | REFERENCE_RENDER_PER_LIGHT_PASSES))) {
+        int n = ref_expand_lights(r, h, w->lights, w->weight);
+        ref_shade_lights(s, r, h, per_vertex, w->lights, n, w->weight,
+                         (flags & REFERENCE_RENDER_PER_LIGHT_PASSES) != 0, px);
+    } else {
+        reference_shade(s, r, h, per_vertex, px);
     }
-    reference_shade_weighted(s, r, h, per_vertex,
-                             (flags & REFERENCE_RENDER_SHADOWED) && h->hit ? weight : NULL, px);
     if (h->hit) {
         memcpy(px + REFERENCE_CH_PX, h->P, sizeof h->P);
         memcpy(px + REFERENCE_CH_NX, h->N, sizeof h->N);
         px[REFERENCE_CH_Z] = h->t; /* |P - eye|, see ref_fill_hit */
     }
+    float vis0 = h->hit && s->light_count > 0 ? reference_light_visibility(r, h, 0) : 1.0f;
     px[REFERENCE_CH_VIS_R] = px[REFERENCE_CH_VIS_G] = px[REFERENCE_CH_VIS_B] = vis0;
 }
 
@@ -33,15 +41,16 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
 {
     if (!s || !r || r->s != s || !out || width <= 0 || height <= 0)
         return 0;
-    size_t n = (size_t)width * (size_t)height;
+    size_t n = (size_t)width * (size_t)height, cap = (size_t)ref_sample_capacity(r) + 1;
     ref_hit *hits = malloc(n * sizeof *hits);
-    float *weight = malloc((s->light_count > 0 ? (size_t)s->light_count : 1) * sizeof *weight);
-    int ok = hits && weight && reference_primary(r, width, height, hits);
+    scratch w = {malloc(cap * sizeof *w.lights), malloc(cap * sizeof *w.weight)};
+    int ok = hits && w.lights && w.weight && reference_primary(r, width, height, hits);
     for (size_t i = 0; ok && i < n; i++)
-        pixel(s, r, &hits[i], per_vertex, flags, weight, out + i * REFERENCE_CHANNELS);
+        pixel(s, r, &hits[i], per_vertex, flags, &w, out + i * REFERENCE_CHANNELS);
     if (ok)
         ok = rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
-    free(weight);
+    free(w.weight);
+    free(w.lights);
     free(hits);
     return ok;
 }

@@ -22,10 +22,33 @@ struct reference {
     int object_count;
     ref_object *objects;
     double eps;         /* visibility ray offset, REFERENCE_EPS_SCALE * scene extent */
+    unsigned soft_samples; /* point samples of an area light, REFERENCE_SOFT_SHADOW_SAMPLES */
 };
 
 /* Fills a hit from Embree's answer (geometry id = object index). */
 void ref_fill_hit(const reference *r, unsigned object, unsigned prim, float u, float v,
                   const float eye[3], ref_hit *hit);
+
+/* Samples light l of r's scene is split into: soft_samples for an area light
+ * (radius > 0, not directional), else 1 (stin's light_samples()). */
+unsigned ref_light_sample_count(const reference *r, const scene_light *l);
+
+/* Light l as its sample k of n: position from stin_light_sample(), intensity
+ * divided by n (n = 1: l unchanged). */
+void ref_light_sample(const scene_light *l, unsigned k, unsigned n, scene_light *out);
+
+/* Every light of the scene split into its samples, each with its visibility
+ * from hit as weight (1/0). lights and weight need ref_sample_capacity()
+ * entries. Returns how many were written. */
+int ref_sample_capacity(const reference *r);
+int ref_expand_lights(const reference *r, const ref_hit *hit, scene_light *lights, float *weight);
+
+/* Shading of hit with an explicit light list (weights as in
+ * reference_shade_weighted). passes = 0: one clamped sum (ambient + all lights);
+ * passes = 1: an ambient pass plus one pass per light, each clamped on its own
+ * (per vertex too), summed and clamped. */
+void ref_shade_lights(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
+                      const scene_light *lights, int light_count, const float *weight,
+                      int passes, float out_rgba[4]);
 
 #endif

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "reference_internal.h"
+#include "stin/stin.h"
 
 enum { BATCH = 64 }; /* rays per rtcIntersect1M call */
 
@@ -148,28 +149,23 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits)
     return rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
 }
 
-float reference_visibility(const reference *r, const ref_hit *hit, int light)
+/* 1 when nothing lies between hit's P (offset along Ng toward the light's
+ * side) and the light: toward `to` (a position) or, directional, along `to`
+ * (the direction toward the light) to infinity. */
+static float visible(const reference *r, const ref_hit *hit, const double to[3], int directional)
 {
-    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
-        return 1.0f;
-    const scene_light *l = &r->s->lights[light];
     double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], dir[3], dist = INFINITY;
-    if (l->type == SCENE_LIGHT_DIRECTIONAL) {
-        for (int c = 0; c < 3; c++)
-            dir[c] = -(double)l->direction[c];
-    } else {
-        for (int c = 0; c < 3; c++)
-            dir[c] = (double)l->position[c] - hit->P[c];
-    }
+    for (int c = 0; c < 3; c++)
+        dir[c] = directional ? to[c] : to[c] - hit->P[c];
     if (!(normalize3(dir) > 0.0))
         return 1.0f; /* the light sits on the point */
     /* Leave the surface on the light's side so the ray cannot hit its own triangle. */
     double side = dot3(Ng, dir) >= 0.0 ? r->eps : -r->eps;
     for (int c = 0; c < 3; c++)
         org[c] = hit->P[c] + side * Ng[c];
-    if (l->type != SCENE_LIGHT_DIRECTIONAL) {
+    if (!directional) {
         for (int c = 0; c < 3; c++)
-            dir[c] = (double)l->position[c] - org[c];
+            dir[c] = to[c] - org[c];
         dist = normalize3(dir);
         if (!(dist > 0.0))
             return 1.0f;
@@ -189,4 +185,86 @@ float reference_visibility(const reference *r, const ref_hit *hit, int light)
     rtcInitIntersectContext(&ctx);
     rtcOccluded1(r->rtc, &ctx, &ray);
     return ray.tfar < 0.0f ? 0.0f : 1.0f; /* Embree sets tfar to -inf on a hit */
+}
+
+float reference_visibility(const reference *r, const ref_hit *hit, int light)
+{
+    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
+        return 1.0f;
+    const scene_light *l = &r->s->lights[light];
+    int directional = l->type == SCENE_LIGHT_DIRECTIONAL;
+    double to[3];
+    for (int c = 0; c < 3; c++)
+        to[c] = directional ? -(double)l->direction[c] : (double)l->position[c];
+    return visible(r, hit, to, directional);
+}
+
+float reference_visibility_to(const reference *r, const ref_hit *hit, const float position[3])
+{
+    if (!r || !hit || !hit->hit || !position)
+        return 1.0f;
+    double to[3] = {position[0], position[1], position[2]};
+    return visible(r, hit, to, 0);
+}
+
+/* ---- area lights: the samples stin uses ----------------------------------- */
+
+unsigned ref_light_sample_count(const reference *r, const scene_light *l)
+{
+    return l->radius > 0.0f && l->type != SCENE_LIGHT_DIRECTIONAL ? r->soft_samples : 1u;
+}
+
+void ref_light_sample(const scene_light *l, unsigned k, unsigned n, scene_light *out)
+{
+    stin_light_desc d;
+    *out = *l;
+    if (n <= 1)
+        return;
+    memset(&d, 0, sizeof d);
+    d.type = l->type == SCENE_LIGHT_SPOT ? STIN_LIGHT_SPOT
+           : l->type == SCENE_LIGHT_DIRECTIONAL ? STIN_LIGHT_DIRECTIONAL : STIN_LIGHT_POINT;
+    memcpy(d.position, l->position, sizeof d.position);
+    d.radius = l->radius;
+    stin_light_sample(&d, k, n, out->position);
+    out->intensity = l->intensity / (float)n;
+}
+
+float reference_light_visibility(const reference *r, const ref_hit *hit, int light)
+{
+    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
+        return 1.0f;
+    const scene_light *l = &r->s->lights[light];
+    unsigned n = ref_light_sample_count(r, l);
+    if (n <= 1)
+        return reference_visibility(r, hit, light);
+    double sum = 0.0;
+    for (unsigned k = 0; k < n; k++) {
+        scene_light one;
+        ref_light_sample(l, k, n, &one);
+        sum += reference_visibility_to(r, hit, one.position);
+    }
+    return (float)(sum / n);
+}
+
+int ref_sample_capacity(const reference *r)
+{
+    int total = 0;
+    for (int i = 0; i < r->s->light_count; i++)
+        total += (int)ref_light_sample_count(r, &r->s->lights[i]);
+    return total;
+}
+
+int ref_expand_lights(const reference *r, const ref_hit *hit, scene_light *lights, float *weight)
+{
+    int count = 0;
+    for (int i = 0; i < r->s->light_count; i++) {
+        const scene_light *l = &r->s->lights[i];
+        unsigned n = ref_light_sample_count(r, l);
+        for (unsigned k = 0; k < n; k++, count++) {
+            ref_light_sample(l, k, n, &lights[count]);
+            weight[count] = n <= 1 ? reference_visibility(r, hit, i)
+                                   : reference_visibility_to(r, hit, lights[count].position);
+        }
+    }
+    return count;
 }

@@ -1,6 +1,7 @@
 /* The lighting model of stin.h (LIGHTING MODEL), per vertex (GL1 Gouraud with
  * separate specular) and per pixel (GL2/GL4), in double precision. */
 #include <math.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "reference_internal.h"
@@ -50,19 +51,29 @@ static double light_factor(const scene_light *l, const double P[3], double L[3])
     return factor;
 }
 
+/* The lights one evaluation of the model sees: ambient on or off, a light
+ * list with optional weights (NULL = all 1). */
+typedef struct light_set {
+    int ambient;
+    const scene_light *lights;
+    int count;
+    const float *weight;
+} light_set;
+
 /* primary = ambient * albedo + diffuse, secondary = specular, unclamped. */
 static void model(const scene *s, const scene_material *m, const double P[3], const double N[3],
-                  const float *weight, double primary[3], double secondary[3])
+                  const light_set *ls, double primary[3], double secondary[3])
 {
     double V[3];
+    const float *weight = ls->weight;
     for (int c = 0; c < 3; c++) {
         V[c] = (double)s->camera.eye[c] - P[c];
-        primary[c] = (double)s->ambient[c] * m->color[c];
+        primary[c] = ls->ambient ? (double)s->ambient[c] * m->color[c] : 0.0;
         secondary[c] = 0.0;
     }
     normalize3(V);
-    for (int i = 0; i < s->light_count; i++) {
-        const scene_light *l = &s->lights[i];
+    for (int i = 0; i < ls->count; i++) {
+        const scene_light *l = &ls->lights[i];
         double L[3], H[3];
         double f = light_factor(l, P, L) * (weight ? weight[i] : 1.0) * l->intensity;
         if (f == 0.0)
@@ -90,7 +101,7 @@ static void background(const scene *s, float out_rgba[4])
 /* Gouraud: the model at the three vertices, clamped per vertex (as GL clamps
  * the lit vertex colours), then interpolated. */
 static void per_vertex(const scene *s, const reference *r, const ref_hit *hit,
-                       const scene_material *m, const float *weight, int single_color,
+                       const scene_material *m, const light_set *ls, int single_color,
                        double primary[3], double secondary[3])
 {
     const ref_object *o = &r->objects[hit->object];
@@ -107,7 +118,7 @@ static void per_vertex(const scene *s, const reference *r, const ref_hit *hit,
         if (dot3(N, N) == 0.0) /* no usable vertex normal: the face normal */
             for (int c = 0; c < 3; c++)
                 N[c] = hit->Ng[c];
-        model(s, m, P, N, weight, pk, sk);
+        model(s, m, P, N, ls, pk, sk);
         for (int c = 0; c < 3; c++) {
             if (single_color) { /* GL 1.1: one colour, the sum clamped per vertex */
                 primary[c] += w[k] * clamp01(pk[c] + sk[c]);
@@ -119,9 +130,26 @@ static void per_vertex(const scene *s, const reference *r, const ref_hit *hit,
     }
 }
 
-void reference_shade_weighted(const scene *s, const reference *r, const ref_hit *hit,
-                              int per_vertex_lighting, const float *light_weight,
-                              float out_rgba[4])
+/* One clamped evaluation (a GL pass): 0 and NaN in out_rgb when the hit
+ * cannot be shaded per vertex. */
+static void shade_set(const scene *s, const reference *r, const ref_hit *hit, int per_vertex_lighting,
+                      const scene_material *m, const float tex[4], const light_set *ls, double out_rgb[3])
+{
+    double primary[3], secondary[3];
+    if (per_vertex_lighting) {
+        per_vertex(s, r, hit, m, ls, per_vertex_lighting == REFERENCE_GOURAUD_SINGLE_COLOR, primary,
+                   secondary);
+    } else {
+        double P[3] = {hit->P[0], hit->P[1], hit->P[2]}, N[3] = {hit->N[0], hit->N[1], hit->N[2]};
+        model(s, m, P, N, ls, primary, secondary);
+    }
+    for (int c = 0; c < 3; c++)
+        out_rgb[c] = clamp01(primary[c] * tex[c] + secondary[c]);
+}
+
+void ref_shade_lights(const scene *s, const reference *r, const ref_hit *hit, int per_vertex_lighting,
+                      const scene_light *lights, int light_count, const float *weight, int passes,
+                      float out_rgba[4])
 {
     if (!hit->hit || hit->object < 0 || hit->object >= s->object_count) {
         background(s, out_rgba);
@@ -136,27 +164,78 @@ void reference_shade_weighted(const scene *s, const reference *r, const ref_hit 
     float tex[4] = {1, 1, 1, 1};
     if (m->albedo >= 0 && m->albedo < s->texture_count)
         reference_sample_texture(&s->textures[m->albedo], hit->uv[0], hit->uv[1], tex);
-    double primary[3], secondary[3];
-    if (per_vertex_lighting) {
-        if (!r || hit->object >= r->object_count || hit->prim < 0 ||
-            (uint32_t)hit->prim >= r->objects[hit->object].triangle_count) {
-            for (int c = 0; c < 4; c++) /* loud, never a silent per-pixel answer */
-                out_rgba[c] = NAN;
-            return;
-        }
-        per_vertex(s, r, hit, m, light_weight,
-                   per_vertex_lighting == REFERENCE_GOURAUD_SINGLE_COLOR, primary, secondary);
+    if (per_vertex_lighting &&
+        (!r || hit->object >= r->object_count || hit->prim < 0 ||
+         (uint32_t)hit->prim >= r->objects[hit->object].triangle_count)) {
+        for (int c = 0; c < 4; c++) /* loud, never a silent per-pixel answer */
+            out_rgba[c] = NAN;
+        return;
+    }
+    double sum[3];
+    if (!passes) {
+        light_set all = {1, lights, light_count, weight};
+        shade_set(s, r, hit, per_vertex_lighting, m, tex, &all, sum);
     } else {
-        double P[3] = {hit->P[0], hit->P[1], hit->P[2]}, N[3] = {hit->N[0], hit->N[1], hit->N[2]};
-        model(s, m, P, N, light_weight, primary, secondary);
+        /* The ambient pass, then each light alone where it is visible: every
+         * pass clamped by itself, the framebuffer adds and clamps at 1. */
+        light_set ambient = {1, NULL, 0, NULL};
+        shade_set(s, r, hit, per_vertex_lighting, m, tex, &ambient, sum);
+        for (int i = 0; i < light_count; i++) {
+            double pass[3];
+            light_set one = {0, &lights[i], 1, weight ? &weight[i] : NULL};
+            if (weight && weight[i] == 0.0f)
+                continue; /* the stencil test drops the whole pass */
+            shade_set(s, r, hit, per_vertex_lighting, m, tex, &one, pass);
+            for (int c = 0; c < 3; c++)
+                sum[c] += pass[c];
+        }
     }
     for (int c = 0; c < 3; c++)
-        out_rgba[c] = (float)clamp01(primary[c] * tex[c] + secondary[c]);
+        out_rgba[c] = (float)clamp01(sum[c]);
     out_rgba[3] = m->color[3];
+}
+
+void reference_shade_weighted(const scene *s, const reference *r, const ref_hit *hit,
+                              int per_vertex_lighting, const float *light_weight,
+                              float out_rgba[4])
+{
+    ref_shade_lights(s, r, hit, per_vertex_lighting, s->lights, s->light_count, light_weight, 0,
+                     out_rgba);
 }
 
 void reference_shade(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
                      float out_rgba[4])
 {
     reference_shade_weighted(s, r, hit, per_vertex, NULL, out_rgba);
+}
+
+/* Opaque hits: the per-light-pass beauty of a stencil-volume frame. Blended
+ * materials (opacity < 1) are drawn after the passes, unshadowed, in one pass. */
+void reference_shade_passes(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
+                            float out_rgba[4])
+{
+    if (!r || r->s != s) {
+        for (int c = 0; c < 4; c++)
+            out_rgba[c] = NAN;
+        return;
+    }
+    if (hit->hit && hit->object >= 0 && hit->object < s->object_count) {
+        int mi = s->objects[hit->object].material;
+        if (mi >= 0 && mi < s->material_count && s->materials[mi].color[3] < 1.0f) {
+            reference_shade(s, r, hit, per_vertex, out_rgba);
+            return;
+        }
+    }
+    int cap = ref_sample_capacity(r);
+    scene_light *lights = malloc((cap > 0 ? (size_t)cap : 1) * sizeof *lights);
+    float *weight = malloc((cap > 0 ? (size_t)cap : 1) * sizeof *weight);
+    if (!lights || !weight) {
+        for (int c = 0; c < 4; c++)
+            out_rgba[c] = NAN;
+    } else {
+        int n = hit->hit ? ref_expand_lights(r, hit, lights, weight) : 0;
+        ref_shade_lights(s, r, hit, per_vertex, lights, n, weight, 1, out_rgba);
+    }
+    free(weight);
+    free(lights);
 }

@@ -32,6 +32,8 @@ static void fixture_init(fixture *f, const fake_gl_config *cfg)
     f->desc.max_vertices = 4096; /* small blocks keep the tests fast */
     f->desc.max_triangles = 4096;
     f->desc.max_texture_bytes = 64 * 1024;
+    /* pass and object counts below are the unshadowed path's */
+    f->desc.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_OFF;
 }
 
 /* Blocks are freed by the test's teardown too, so a failed assertion leaks nothing. */
@@ -519,8 +521,9 @@ static void test_link_failure_on_gl21_falls_back_to_fixed_function(void **state)
 }
 
 /* ---- destroy ------------------------------------------------------------- */
+/* per_context: the GL4 path's streaming buffer and VAO for shadow volumes */
 static void check_destroy_balances(fake_gl_profile_id id, unsigned buffers_per_mesh,
-                                   unsigned vaos_per_mesh, unsigned programs)
+                                   unsigned vaos_per_mesh, unsigned programs, unsigned per_context)
 {
     fake_gl_config cfg = fake_gl_profile(id);
     fixture f;
@@ -534,8 +537,8 @@ static void check_destroy_balances(fake_gl_profile_id id, unsigned buffers_per_m
     run_frame(f.ctx, a);
     stin_destroy_mesh(f.ctx, b);
     make_quad(f.ctx);
-    assert_int_equal(fake_gl.buffers_created, 3 * buffers_per_mesh);
-    assert_int_equal(fake_gl.vertex_arrays_created, 3 * vaos_per_mesh);
+    assert_int_equal(fake_gl.buffers_created, 3 * buffers_per_mesh + per_context);
+    assert_int_equal(fake_gl.vertex_arrays_created, 3 * vaos_per_mesh + per_context);
     assert_int_equal(fake_gl.textures_created, 2);
     assert_int_equal(fake_gl.programs_created, programs);
     assert_int_equal(fake_gl.textures_deleted, 1);
@@ -547,9 +550,9 @@ static void check_destroy_balances(fake_gl_profile_id id, unsigned buffers_per_m
 static void test_destroy_deletes_every_gl_object(void **state)
 {
     (void)state;
-    check_destroy_balances(FAKE_GL11, 0, 0, 0);
-    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT);
-    check_destroy_balances(FAKE_GL45_CORE, 2, 1, STIN__PROG_COUNT);
+    check_destroy_balances(FAKE_GL11, 0, 0, 0, 0);
+    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT, 0);
+    check_destroy_balances(FAKE_GL45_CORE, 2, 1, STIN__PROG_COUNT, 1);
 }
 
 /* ---- entry points and extensions ------------------------------------------ */

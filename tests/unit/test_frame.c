@@ -55,6 +55,7 @@ static void create_context(const fake_gl_config *cfg, uint32_t max_lights, uint3
     d.max_lights = max_lights;
     d.max_draws = max_draws;
     d.max_texture_bytes = max_texture_bytes;
+    d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_OFF; /* pass counts are unshadowed */
     bytes = stin_memory_size(&d);
     assert_true(bytes > 0);
     block = malloc(bytes);
@@ -390,8 +391,9 @@ static void test_output_pass_counts(void **state)
     st = frame_with(9, 2, 0, STIN_OUTPUT_NORMAL);
     assert_int_equal(st.passes, 1);
     assert_int_equal(fake_gl.draw_calls, 2);
-    st = frame_with(9, 2, 0, STIN_OUTPUT_VISIBILITY);
-    assert_int_equal(st.passes, 1);
+    st = frame_with(9, 2, 0, STIN_OUTPUT_VISIBILITY); /* depth, then white where visible */
+    assert_int_equal(st.passes, 2);
+    assert_int_equal(fake_gl.draw_calls, 4);
     create_profile(FAKE_GL11, 8, 8);
     st = frame_with(1, 2, 0, STIN_OUTPUT_NORMAL); /* two multiplicative passes without shaders */
     assert_int_equal(st.passes, 2);

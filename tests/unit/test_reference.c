@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "reference.h"
+#include "stin/stin.h"
 
 #define PI 3.14159265358979323846
 
@@ -673,6 +674,204 @@ static void test_render_aovs(void **state)
     scene_release(&s);
 }
 
+/* ---- per-light passes and area lights ------------------------------------------ */
+
+/* Floor quad (z = 0, 8 x 8) under a box caster, lit by two dim point lights
+ * and a dim area light: no pass and no sum reaches 1. */
+static void dim_two_light_scene(scene *s)
+{
+    scene_init(s);
+    s->camera.eye[0] = 1; s->camera.eye[1] = -6; s->camera.eye[2] = 6;
+    int mat = add_material(s, 0.5f, 0.5f, 0.5f, 0.2f, 16);
+    add_object(s, add_quad(s), mat, 4, 0, 0, 0);
+    add_object(s, add_box(s), mat, 0.5, 0, 0, 1);
+    scene_light *a = add_light(s, SCENE_LIGHT_POINT);
+    a->position[0] = 1.5f; a->position[2] = 3.0f; a->intensity = 0.3f;
+    scene_light *b = add_light(s, SCENE_LIGHT_POINT);
+    b->position[0] = -1.5f; b->position[1] = 1.0f; b->position[2] = 3.0f; b->intensity = 0.3f;
+    scene_light *c = add_light(s, SCENE_LIGHT_POINT);
+    c->position[1] = -1.0f; c->position[2] = 4.0f; c->intensity = 0.25f; c->radius = 0.5f;
+}
+
+static void test_passes_equal_single_pass_below_one(void **state)
+{
+    (void)state;
+    scene s;
+    dim_two_light_scene(&s);
+    reference *r = create(&s);
+    enum { W = 48, H = 36 };
+    float *one = malloc(sizeof(float) * W * H * REFERENCE_CHANNELS);
+    float *passes = malloc(sizeof(float) * W * H * REFERENCE_CHANNELS);
+    ref_hit *hits = malloc(sizeof *hits * W * H);
+    assert_true(one && passes && hits);
+    assert_true(reference_primary(r, W, H, hits));
+    for (int pv = 0; pv <= REFERENCE_GOURAUD_SINGLE_COLOR; pv++) {
+        assert_true(reference_render_ex(&s, r, W, H, pv, REFERENCE_RENDER_SHADOWED, one));
+        assert_true(reference_render_ex(&s, r, W, H, pv, REFERENCE_RENDER_PER_LIGHT_PASSES, passes));
+        int shadowed = 0, lit = 0;
+        for (int i = 0; i < W * H; i++) {
+            const float *p = one + (size_t)i * REFERENCE_CHANNELS;
+            const float *q = passes + (size_t)i * REFERENCE_CHANNELS;
+            for (int c = 0; c < REFERENCE_CHANNELS; c++)
+                assert_close(q[c], p[c], 1e-6);
+            assert_true(q[REFERENCE_CH_R] < 0.9f); /* nothing near the clamp */
+            if (hits[i].hit && hits[i].object == 0) {
+                float v0 = reference_visibility(r, &hits[i], 0), v1 = reference_visibility(r, &hits[i], 1);
+                shadowed += v0 == 0.0f || v1 == 0.0f;
+                lit += v0 == 1.0f && v1 == 1.0f;
+            }
+            if (pv == 0) { /* reference_shade_passes is the per-pixel function behind the flag */
+                float px[4];
+                reference_shade_passes(&s, r, &hits[i], 0, px);
+                for (int c = 0; c < 4; c++)
+                    assert_close(px[c], q[c], 0);
+            }
+        }
+        assert_true(shadowed > 0);
+        assert_true(lit > 0);
+    }
+    free(hits);
+    free(passes);
+    free(one);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* Two directional lights of intensity 1.5 straight onto a flat quad whose
+ * albedo texture is a constant t = 64/255: each light alone saturates the
+ * (GL1, per-vertex) lit colour before the texture modulates it. */
+static void test_passes_saturate(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.textures = grow(NULL, 0, sizeof *s.textures);
+    s.texture_count = 1;
+    memset(&s.textures[0], 0, sizeof s.textures[0]);
+    s.textures[0].width = s.textures[0].height = 1;
+    s.textures[0].rgba = malloc(4);
+    assert_non_null(s.textures[0].rgba);
+    memcpy(s.textures[0].rgba, (const uint8_t[4]){64, 64, 64, 255}, 4);
+    int mat = add_material(&s, 1, 1, 1, 0, 1);
+    s.materials[mat].albedo = 0;
+    add_object(&s, add_quad(&s), mat, 4, 0, 0, 0);
+    for (int k = 0; k < 2; k++) {
+        scene_light *l = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+        l->direction[2] = -1.0f;
+        l->intensity = 1.5f;
+    }
+    reference *r = create(&s);
+    ref_hit h = centre_hit(r);
+    assert_int_equal(h.hit, 1);
+    const double t = 64.0 / 255.0, amb = 0.1;
+    float one[4], passes[4];
+    for (int pv = 1; pv <= REFERENCE_GOURAUD_SINGLE_COLOR; pv++) {
+        float w[2] = {1, 1};
+        reference_shade_weighted(&s, r, &h, pv, w, one);
+        reference_shade_passes(&s, r, &h, pv, passes);
+        /* one pass: min(1, 0.1 + 1.5 + 1.5) * t; per pass: 0.1 t + min(1, 1.5) t + min(1, 1.5) t */
+        assert_close(one[0], 1.0 * t, 1e-6);
+        assert_close(passes[0], amb * t + 2.0 * t, 1e-6);
+        assert_true(passes[0] > one[0] + 0.2f);
+        /* the whole image through the flag agrees */
+        float img[4 * 3 * REFERENCE_CHANNELS];
+        assert_true(reference_render_ex(&s, r, 4, 3, pv, REFERENCE_RENDER_PER_LIGHT_PASSES, img));
+        for (int i = 0; i < 12; i++)
+            assert_close(img[i * REFERENCE_CHANNELS + REFERENCE_CH_G], amb * t + 2.0 * t, 1e-6);
+        /* one light in shadow: its pass is dropped */
+        s.lights[1].intensity = 0.0f;
+        reference_shade_passes(&s, r, &h, pv, passes);
+        assert_close(passes[0], amb * t + t, 1e-6);
+        s.lights[1].intensity = 1.5f;
+    }
+    /* per pixel (GL2/GL4) the texture is inside each pass's clamp: a pass that
+     * saturates makes the sum saturate too, so passes and one sum agree */
+    reference_shade_weighted(&s, r, &h, 0, NULL, one);
+    reference_shade_passes(&s, r, &h, 0, passes);
+    assert_close(one[0], fmin(1.0, 3.1 * t), 1e-6);
+    assert_close(passes[0], one[0], 1e-6);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* An area light of radius 0.5 at z = 3 over a floor at z = 0, seen at the
+ * origin: the samples are stin's (stin_light_sample). */
+static void test_area_light_visibility(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.camera.eye[1] = -4; s.camera.eye[2] = 4;
+    int mat = add_material(&s, 0.8f, 0.8f, 0.8f, 0, 1);
+    int quad = add_quad(&s);
+    add_object(&s, quad, mat, 10, 0, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_POINT);
+    l->position[2] = 3.0f;
+    l->radius = 0.5f;
+    reference *r = create(&s);
+    ref_hit h = centre_hit(r);
+    assert_int_equal(h.hit, 1);
+    assert_close(h.P[0], 0.0, 1e-5);
+    assert_close(h.P[1], 0.0, 1e-5);
+    assert_close(reference_light_visibility(r, &h, 0), 1.0, 0);
+    float img[REFERENCE_CHANNELS];
+    assert_true(reference_render_ex(&s, r, 1, 1, 0, 0, img));
+    assert_close(img[REFERENCE_CH_VIS_R], 1.0, 0);
+    reference_destroy(r);
+
+    /* a sheet at z = 2.4 ([-1,1]^2, out of the camera's way) hides every sample */
+    add_object(&s, quad, mat, 1, 0, 0, 2.4);
+    r = create(&s);
+    h = centre_hit(r);
+    assert_int_equal(h.object, 0);
+    assert_close(reference_light_visibility(r, &h, 0), 0.0, 0);
+    assert_true(reference_render_ex(&s, r, 1, 1, 0, REFERENCE_RENDER_PER_LIGHT_PASSES, img));
+    assert_close(img[REFERENCE_CH_VIS_G], 0.0, 0);
+    assert_close(img[REFERENCE_CH_R], 0.1 * 0.8, 1e-6); /* ambient pass only */
+    reference_destroy(r);
+
+    /* a sheet over x < 0 at z = 2.5 (just under the light's sphere) hides the
+     * samples with x < 0: visibility = the fraction of samples with x > 0 */
+    s.objects[1].transform[0] = 2.0f; s.objects[1].transform[5] = 2.0f;
+    s.objects[1].transform[12] = -2.0f; s.objects[1].transform[14] = 2.5f;
+    r = create(&s);
+    h = centre_hit(r);
+    assert_int_equal(h.object, 0);
+    stin_light_desc d;
+    memset(&d, 0, sizeof d);
+    d.position[2] = 3.0f;
+    d.radius = 0.5f;
+    int right = 0;
+    for (uint32_t k = 0; k < REFERENCE_SOFT_SHADOW_SAMPLES; k++) {
+        float p[3];
+        stin_light_sample(&d, k, REFERENCE_SOFT_SHADOW_SAMPLES, p);
+        assert_true(fabs(p[0]) > 1e-3); /* none on the sheet's edge */
+        right += p[0] > 0.0f;
+    }
+    float vis = reference_light_visibility(r, &h, 0);
+    assert_close(vis, (double)right / REFERENCE_SOFT_SHADOW_SAMPLES, 1e-7);
+    assert_true(vis > 0.0f && vis < 1.0f);
+    assert_true(reference_render_ex(&s, r, 1, 1, 0, REFERENCE_RENDER_PER_LIGHT_PASSES, img));
+    assert_close(img[REFERENCE_CH_VIS_B], vis, 0);
+    /* the beauty: ambient plus the visible samples, each with intensity / n */
+    double want = 0.1 * 0.8;
+    for (uint32_t k = 0; k < REFERENCE_SOFT_SHADOW_SAMPLES; k++) {
+        float p[3];
+        stin_light_sample(&d, k, REFERENCE_SOFT_SHADOW_SAMPLES, p);
+        if (p[0] <= 0.0f)
+            continue;
+        double L[3] = {p[0] - h.P[0], p[1] - h.P[1], p[2] - h.P[2]};
+        unit3d(L);
+        want += L[2] * 0.8 / REFERENCE_SOFT_SHADOW_SAMPLES;
+    }
+    assert_close(img[REFERENCE_CH_R], want, 1e-5);
+    /* one sample: the light's centre, the same as reference_visibility */
+    reference_set_soft_shadow_samples(r, 1);
+    assert_close(reference_light_visibility(r, &h, 0), reference_visibility(r, &h, 0), 0);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
 /* 100 spheres of 1740 triangles: the size of the 174k-triangle test scene. */
 static void test_primary_timing(void **state)
 {
@@ -733,6 +932,9 @@ int main(void)
         cmocka_unit_test(test_attenuation),
         cmocka_unit_test(test_texture_sampling),
         cmocka_unit_test(test_render_aovs),
+        cmocka_unit_test(test_passes_equal_single_pass_below_one),
+        cmocka_unit_test(test_passes_saturate),
+        cmocka_unit_test(test_area_light_visibility),
         cmocka_unit_test(test_primary_timing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -70,7 +70,9 @@ static void test_auto_selection_per_profile(void **state)
         assert_int_equal(sel.tier, cases[i].tier);
         assert_int_equal(stin_best_tier(&cases[i].caps), cases[i].tier);
         assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, cases[i].lighting);
-        assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_OFF);
+        assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique,
+                         (cases[i].caps.present & BIT(STENCIL)) ? STIN_TECH_SHADOWS_VOLUME
+                                                                 : STIN_TECH_SHADOWS_OFF);
         assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
         assert_true(sel.choice[STIN_FEATURE_LIGHTING].reason[0] != '\0');
     }

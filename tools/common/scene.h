@@ -74,6 +74,9 @@ typedef struct scene_light {
     float spot_cutoff_deg;     /* default 45 */
     float spot_exponent;       /* default 0 */
     float radius;              /* area light radius, default 0 */
+    float range;               /* point/spot: distance past which the light is negligible
+                                  (stin scissors its passes to it); 0 = unbounded, default 0.
+                                  Not part of the shading: the test reference ignores it */
 } scene_light;
 
 typedef struct scene_camera {

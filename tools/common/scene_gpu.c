@@ -140,6 +140,8 @@ void scene_gpu_light(const scene_light *in, stin_light_desc *out)
     memcpy(out->attenuation, in->attenuation, sizeof out->attenuation);
     out->spot_cutoff_deg = in->spot_cutoff_deg;
     out->spot_exponent = in->spot_exponent;
+    out->radius = in->radius;
+    out->range = in->range;
 }
 
 stin_result scene_gpu_frame(const scene_gpu *g, stin_context *ctx, int width, int height,
