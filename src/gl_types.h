@@ -158,6 +158,7 @@ typedef void GLvoid;
 #define GL_DECR_WRAP 0x8508
 #define GL_STENCIL_TEST_TWO_SIDE_EXT 0x8910
 #define GL_STREAM_DRAW 0x88E0
+#define GL_CW 0x0900
 #define GL_CCW 0x0901
 
 #endif

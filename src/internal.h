@@ -243,7 +243,10 @@ void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count);
 
 /* ---- shadow volumes ----------------------------------------------------- */
-typedef void (*stin__volume_sink)(void *user, const float *xyzw, uint32_t vertex_count);
+/* clockwise: the triangles are wound clockwise toward their outside (front
+ * face CW for this batch). */
+typedef void (*stin__volume_sink)(void *user, const float *xyzw, uint32_t vertex_count,
+                                  int clockwise);
 typedef struct stin__volume_request {
     const stin__vertex *verts;
     const uint32_t *tris, *adjacency;
@@ -279,6 +282,7 @@ typedef struct stin__path {
     /* Shadow-volume triangles: homogeneous object-space vertices. */
     void (*volume_begin)(stin_context *ctx);
     void (*volume_draw)(stin_context *ctx, const float model[16], const float *xyzw, uint32_t n);
+    /* (FrontFace is set by the caller around volume_draw.) */
     void (*volume_end)(stin_context *ctx);
     /* All lights in batches without shadows: the unshadowed beauty. */
     void (*batches)(stin_context *ctx, int which);

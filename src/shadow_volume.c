@@ -14,10 +14,14 @@ typedef struct volume_sink_state {
     const float *model;
 } volume_sink_state;
 
-static void sink(void *user, const float *xyzw, uint32_t n)
+static void sink(void *user, const float *xyzw, uint32_t n, int clockwise)
 {
     volume_sink_state *s = (volume_sink_state *)user;
+    if (clockwise)
+        GL(s->ctx, FrontFace)(GL_CW);
     s->path->volume_draw(s->ctx, s->model, xyzw, n);
+    if (clockwise)
+        GL(s->ctx, FrontFace)(GL_CCW);
 }
 
 /* ---- frame set-up: projection ------------------------------------------- */
@@ -34,16 +38,18 @@ void stin__volume_frame_setup(stin_context *ctx)
     ctx->volume_infinite = 0;
     if (ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME &&
         ctx->light_count > 0) {
-        if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP)) {
-            ctx->volume_depth_clamp = 1;
-        } else if (is_perspective(ctx->projection)) {
-            /* Row 3 of the frustum to (eps - 1, (eps - 2) n): w = 0 vertices land
-             * just inside NDC z = 1 instead of on it. */
+        if (is_perspective(ctx->projection)) {
+            /* Row 3 of the frustum to (eps - 1, (eps - 2) n): the far plane goes to
+             * infinity and w = 0 vertices land just inside NDC z = 1. Preferred
+             * over depth clamp, which ties far caps with receivers at the far
+             * plane (measured: a streak of false shadow along the horizon). */
             const float eps = 2.4e-7f;
             float n = ctx->projection[14] / (ctx->projection[10] - 1.0f);
             ctx->projection[10] = eps - 1.0f;
             ctx->projection[14] = (eps - 2.0f) * n;
             ctx->volume_infinite = 1;
+        } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP)) {
+            ctx->volume_depth_clamp = 1; /* orthographic: no P_inf exists */
         }
     }
     stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);

@@ -17,12 +17,13 @@
 typedef struct emitter {
     const stin__volume_request *r;
     uint32_t used, triangles;
+    int clockwise;
 } emitter;
 
 static void flush(emitter *e)
 {
     if (e->used) {
-        e->r->sink(e->r->user, e->r->buffer, e->used);
+        e->r->sink(e->r->user, e->r->buffer, e->used, e->clockwise);
         e->used = 0;
     }
 }
@@ -79,6 +80,7 @@ uint32_t stin__volume_build(const stin__volume_request *r)
     int k;
     e.r = r;
     e.used = e.triangles = 0;
+    e.clockwise = 0;
     for (t = 0; t < r->tri_count; t++) {
         const uint32_t *tri = r->tris + 3u * t;
         r->facing[t] = (unsigned char)stin__triangle_faces_light(
@@ -101,7 +103,8 @@ uint32_t stin__volume_build(const stin__volume_request *r)
             extrude(p[k], r->light, inf[k]);
         }
         if (r->caps) {
-            put(&e, fin[0], fin[1], fin[2]);
+            if (facing) /* an averted one's light cap follows below */
+                put(&e, fin[0], fin[1], fin[2]);
             put(&e, inf[2], inf[1], inf[0]);
         }
         for (k = 0; k < 3; k++) {
@@ -117,5 +120,21 @@ uint32_t stin__volume_build(const stin__volume_request *r)
         }
     }
     flush(&e);
+    /* Light caps of averted triangles lie on the surface they came from and
+     * must rasterise to exactly its depths: keep the stored vertex order and
+     * flip the winding convention instead of the vertices. */
+    if (r->caps && !r->closed) {
+        e.clockwise = 1;
+        for (t = 0; t < r->tri_count; t++) {
+            const uint32_t *tri = r->tris + 3u * t;
+            float fin[3][4];
+            if (r->facing[t])
+                continue;
+            for (k = 0; k < 3; k++)
+                finite_point(r->verts[tri[k]].position, fin[k]);
+            put(&e, fin[0], fin[1], fin[2]);
+        }
+        flush(&e);
+    }
     return e.triangles;
 }

@@ -1,5 +1,8 @@
-#version 110
+#version 120
 // Per-pixel lighting, vertex stage: world-space position, normal and uv.
+// Invariant: the depth of a volume cap must equal, bit for bit, the depth the
+// lit passes wrote for the surface it lies on (z-fail counts it behind).
+invariant gl_Position;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 uniform mat3 u_normal_matrix;

@@ -8,6 +8,7 @@
 #include "aov.h"
 #include "compare.h"
 #include "expected.h"
+#include "image_test.h"
 #include "reference.h"
 #include "scene_gpu.h"
 #include "stin/stin.h"
@@ -38,15 +39,7 @@
  * before single pixels pass 3/255: the mean must stay within 1/255. */
 #define BEAUTY_MAX_MEAN (1.0 / 255.0)
 
-typedef struct run {
-    const char *profile_name, *platform_name, *out_dir;
-    stin_platform *plat;
-    const stin_profile *profile;
-    int width, height;
-    int passed, failed, skipped;
-} run;
-
-static void report(run *r, const char *verdict, const char *name, const char *fmt, ...)
+void report(run *r, const char *verdict, const char *name, const char *fmt, ...)
 {
     va_list ap;
     printf("%s %s/%s/%s: ", verdict, r->platform_name, r->profile_name, name);
@@ -161,7 +154,7 @@ static void save_failure(run *r, const char *tier, const char *scene_name, const
         fprintf(stderr, "stin-imagetest: %s\n", err);
 }
 
-static const char *base_name(const char *path)
+const char *scene_base_name(const char *path)
 {
     const char *s = strrchr(path, '/');
     static char buf[128];
@@ -192,7 +185,7 @@ static void test_scene(run *r, stin_tier tier, const char *path)
     size_t size;
 
     memset(&img, 0, sizeof img);
-    snprintf(scene_name, sizeof scene_name, "%s", base_name(path));
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     snprintf(name, sizeof name, "%s/%s", stin_tier_name(tier), scene_name);
     if (!scene_load(path, &s, err, sizeof err)) {
         report(r, "FAIL", name, "%s", err);
@@ -327,8 +320,10 @@ int main(int argc, char **argv)
             test_refusal(&r, tiers[t]);
             continue;
         }
-        for (i = first_scene; i < argc; i++)
+        for (i = first_scene; i < argc; i++) {
             test_scene(&r, tiers[t], argv[i]);
+            shadow_tests(&r, tiers[t], argv[i]);
+        }
     }
     stin_platform_destroy(r.plat);
     return 0;

@@ -149,9 +149,11 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits)
     return rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
 }
 
-/* 1 when nothing lies between hit's P (offset along Ng toward the light's
- * side) and the light: toward `to` (a position) or, directional, along `to`
- * (the direction toward the light) to infinity. */
+/* 1 when nothing lies between hit's P (offset along Ng to the side the eye
+ * sees) and the light: toward `to` (a position) or, directional, along `to`
+ * (the direction toward the light) to infinity. The visible side is what is
+ * lit: a side turned away from the light is in its own shadow (0), for a
+ * sheet seen from behind as for a closed object's far side. */
 static float visible(const reference *r, const ref_hit *hit, const double to[3], int directional)
 {
     double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], dir[3], dist = INFINITY;
@@ -159,8 +161,13 @@ static float visible(const reference *r, const ref_hit *hit, const double to[3],
         dir[c] = directional ? to[c] : to[c] - hit->P[c];
     if (!(normalize3(dir) > 0.0))
         return 1.0f; /* the light sits on the point */
-    /* Leave the surface on the light's side so the ray cannot hit its own triangle. */
-    double side = dot3(Ng, dir) >= 0.0 ? r->eps : -r->eps;
+    /* Leave the surface on the eye's side so the ray cannot hit its own triangle. */
+    const float *eye = r->s->camera.eye;
+    double to_eye[3] = {eye[0] - hit->P[0], eye[1] - hit->P[1], eye[2] - hit->P[2]};
+    double side = dot3(Ng, to_eye) >= 0.0 ? r->eps : -r->eps;
+    /* The side the eye sees turns away from the light: it shadows itself. */
+    if (side * dot3(Ng, dir) <= 0.0)
+        return 0.0f;
     for (int c = 0; c < 3; c++)
         org[c] = hit->P[c] + side * Ng[c];
     if (!directional) {

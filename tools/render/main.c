@@ -15,6 +15,7 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 
 typedef struct options {
     const char *scene_path, *output, *profile, *platform, *shadows, *surface;
+    uint32_t debug_flags;
     stin_tier tier;
     int width, height, caps, verbose;
 } options;
@@ -35,6 +36,7 @@ static void usage(FILE *f)
                "  --size WxH                image size (default: the scene's, else 512x512)\n"
                "  --shadows NAME            shadow technique (default auto)\n"
                "  --surface NAME            surface technique (default auto)\n"
+               "  --volume-mode auto|zpass|zfail  shadow-volume counting (diagnostics)\n"
                "  --caps                    print capabilities and choices, render nothing\n"
                "  --verbose                 print stin's info log lines\n"
                "exit codes: 0 ok, 1 failure, 2 bad input, 3 tier/technique unsupported here\n");
@@ -81,6 +83,14 @@ static int parse_args(int argc, char **argv, options *o)
             o->platform = argv[++i];
         } else if (!strcmp(a, "--shadows")) {
             o->shadows = argv[++i];
+        } else if (!strcmp(a, "--volume-mode")) {
+            i++;
+            if (!strcmp(v, "zpass")) o->debug_flags |= STIN_DEBUG_VOLUME_ZPASS;
+            else if (!strcmp(v, "zfail")) o->debug_flags |= STIN_DEBUG_VOLUME_ZFAIL;
+            else if (strcmp(v, "auto")) {
+                fprintf(stderr, "stin-render: --volume-mode wants auto, zpass or zfail\n");
+                return 0;
+            }
         } else if (!strcmp(a, "--surface")) {
             o->surface = argv[++i];
         } else if (!strcmp(a, "--size")) {
@@ -231,6 +241,7 @@ int main(int argc, char **argv)
     desc.log = cli_log_fn;
     desc.log_user = &log;
     desc.tier = o.tier;
+    desc.debug_flags = o.debug_flags;
     if (pd.profile) {
         desc.caps_mask = pd.profile->caps_mask;
         desc.max_gl_version = pd.profile->max_gl_version;
@@ -277,8 +288,14 @@ int main(int argc, char **argv)
         fprintf(stderr, "stin-render: %s\n", err);
         goto done;
     }
-    printf("frame: %.2f ms (%dx%d, %llu triangles, %u passes)\n", ms, pd.width, pd.height,
-           (unsigned long long)scene_triangle_count(&s), stin_query_frame_stats(ctx).passes);
+    {
+        stin_frame_stats st = stin_query_frame_stats(ctx);
+        printf("frame: %.2f ms (%dx%d, %llu triangles, %u passes)\n", ms, pd.width, pd.height,
+               (unsigned long long)scene_triangle_count(&s), st.passes);
+        if (st.zpass_casters + st.zfail_casters)
+            printf("shadow volumes: %u triangles, %u casters z-pass, %u z-fail (last output)\n",
+                   st.shadow_volume_triangles, st.zpass_casters, st.zfail_casters);
+    }
     if (o.output) {
         const char *dot = strrchr(o.output, '.');
         if (!image_write(o.output, &img, strcmp(dot, ".png") == 0, err, sizeof err)) {

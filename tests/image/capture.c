@@ -1,0 +1,66 @@
+/* A stin context per render, sized to the scene, torn down afterwards. */
+#include "capture.h"
+#include "aov.h"
+#include "scene_gpu.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+static void keep_errors(void *user, stin_log_level level, stin_log_item item, const char *msg)
+{
+    capture *c = (capture *)user;
+    (void)item;
+    if (level != STIN_LOG_LEVEL_ERROR)
+        return;
+    c->log_errors++;
+    snprintf(c->last_error, sizeof c->last_error, "%s", msg);
+}
+
+int capture_render(stin_platform *plat, const stin_profile *profile, const scene *s,
+                   const capture_options *o, capture *out, char *err, size_t err_size)
+{
+    stin_desc d;
+    stin_context *ctx = NULL;
+    scene_gpu g;
+    void *block;
+    size_t size;
+    int ok = 0, have_gpu = 0;
+    memset(out, 0, sizeof *out);
+    memset(&d, 0, sizeof d);
+    d.get_proc_address = stin_platform_get_proc_address;
+    d.get_proc_user = plat;
+    d.log = keep_errors;
+    d.log_user = out;
+    d.tier = o->tier;
+    d.caps_mask = profile->caps_mask | o->extra_mask;
+    d.max_gl_version = profile->max_gl_version;
+    d.techniques[STIN_FEATURE_SHADOWS] = o->shadows;
+    d.debug_flags = o->debug_flags;
+    scene_gpu_size_desc(s, &d);
+    size = stin_memory_size(&d);
+    block = malloc(size);
+    if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {
+        snprintf(err, err_size, "stin_create: %s", out->last_error);
+        goto done;
+    }
+    out->caps_present = stin_query_caps(ctx)->present;
+    out->separate_specular = (out->caps_present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR)) != 0;
+    if (!scene_gpu_create(&g, s, ctx, err, err_size))
+        goto done;
+    have_gpu = 1;
+    if (!aov_capture(&g, ctx, plat, &out->img, NULL, err, err_size))
+        goto done;
+    out->counters = stin_debug_query_counters(ctx);
+    out->stats = stin_query_frame_stats(ctx);
+    ok = 1;
+done:
+    if (have_gpu)
+        scene_gpu_destroy(&g, ctx);
+    if (ctx)
+        stin_destroy(ctx);
+    free(block);
+    return ok;
+}
+
+void capture_free(capture *c) { image_free(&c->img); }

@@ -1,0 +1,34 @@
+/* One stin render of a scene under the run's profile, read back into the AOV
+ * image of the render tool's contract, with the checked build's counters. */
+#ifndef STIN_TESTS_CAPTURE_H
+#define STIN_TESTS_CAPTURE_H
+
+#include "image_io.h"
+#include "scene.h"
+#include "stin/stin.h"
+#include "stin/stin_debug.h"
+#include "stin_platform.h"
+
+typedef struct capture_options {
+    stin_tier tier;
+    stin_technique shadows;   /* forced shadow technique */
+    uint32_t debug_flags;     /* STIN_DEBUG_* */
+    uint64_t extra_mask;      /* capabilities hidden on top of the profile's */
+} capture_options;
+
+typedef struct capture {
+    image img;                /* AOV channels, rows top to bottom */
+    stin_debug_counters counters;
+    unsigned log_errors;
+    char last_error[512];
+    uint64_t caps_present;    /* after the masks */
+    int separate_specular;
+    stin_frame_stats stats;   /* of the last frame (the visibility output) */
+} capture;
+
+/* 1 on success; else err says why. Free with capture_free. */
+int capture_render(stin_platform *plat, const stin_profile *profile, const scene *s,
+                   const capture_options *o, capture *out, char *err, size_t err_size);
+void capture_free(capture *c);
+
+#endif

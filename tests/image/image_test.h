@@ -1,0 +1,23 @@
+/* Shared by the image-test files: the run of one profile on one platform and
+ * its PASS/FAIL/SKIP lines. */
+#ifndef STIN_TESTS_IMAGE_TEST_H
+#define STIN_TESTS_IMAGE_TEST_H
+
+#include "stin/stin.h"
+#include "stin_platform.h"
+
+typedef struct run {
+    const char *profile_name, *platform_name, *out_dir;
+    stin_platform *plat;
+    const stin_profile *profile;
+    int width, height;
+    int passed, failed, skipped;
+} run;
+
+void report(run *r, const char *verdict, const char *name, const char *fmt, ...);
+const char *scene_base_name(const char *path);
+
+/* Shadow-volume tests of one scene at one tier (shadow_test.c). */
+void shadow_tests(run *r, stin_tier tier, const char *path);
+
+#endif

@@ -1,0 +1,385 @@
+/*
+ * Shadow-volume tests of one scene at one tier, against the Embree
+ * visibility reference:
+ *   vis          the vis channel of light 0 equals the ray-cast visibility
+ *                from each pixel's surface point on all but 0.1% of the
+ *                pixels whose P matches, and no differing pixel lies farther
+ *                than one pixel from a reference shadow boundary;
+ *   zpass-zfail  with the eye outside every volume, z-pass and z-fail give
+ *                the same visibility, pixel for pixel;
+ *   two-pass     two-sided stencil with wrap equals the two-pass fallback;
+ *   additivity   where light 0 is blocked, the frame equals the frame
+ *                without light 0 within 1/255;
+ *   gl-clean     no GL error, no call outside the profile.
+ */
+#include "aov.h"
+#include "capture.h"
+#include "image_test.h"
+#include "reference.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define VIS_MAX_MISMATCH 0.001
+#define ADDITIVITY_TOLERANCE (1.0 / 255.0)
+
+typedef struct shadow_case {
+    const reference *refr;
+    run *r;
+    stin_tier tier;
+    const scene *s;
+    const char *scene_name;
+    int samples;          /* point samples of light 0 */
+    const float *ref;     /* reference AOVs, rows bottom to top */
+    const ref_hit *hits;
+} shadow_case;
+
+static void name_of(const shadow_case *c, const char *test, char *out, size_t size)
+{
+    snprintf(out, size, "%s/%s/volume-%s", stin_tier_name(c->tier), c->scene_name, test);
+}
+
+static const float *gl_px(const image *img, int x, int y)
+{
+    return img->pixels + ((size_t)(img->height - 1 - y) * img->width + x) * AOV_CHANNELS;
+}
+
+/* A shadow edge passes through the point: its triangle is within 0.1 degree
+ * of edge-on to the light (the terminator, where rounding decides), or moving
+ * the light by 0.1% of its distance changes its visibility (a ray grazing a
+ * silhouette). */
+static int grazing(const shadow_case *c, const ref_hit *h)
+{
+    const scene_light *l = &c->s->lights[0];
+    float base, d = 0, p[3], cosine = 0;
+    int k, axis;
+    if (l->type == SCENE_LIGHT_DIRECTIONAL || l->radius > 0.0f)
+        return 0;
+    for (k = 0; k < 3; k++) {
+        d += (l->position[k] - h->P[k]) * (l->position[k] - h->P[k]);
+        cosine += h->Ng[k] * (l->position[k] - h->P[k]);
+    }
+    d = sqrtf(d);
+    /* the pixel's own triangle within 0.1 degree of edge-on: the volume's
+     * silhouette quad is coplanar with it to rounding */
+    if (fabsf(cosine / d) < 2e-3f)
+        return 1;
+    d *= 1e-3f;
+    base = reference_visibility_to(c->refr, h, l->position);
+    for (axis = 0; axis < 6; axis++) {
+        for (k = 0; k < 3; k++)
+            p[k] = l->position[k] + (k == axis % 3 ? (axis < 3 ? d : -d) : 0.0f);
+        if (reference_visibility_to(c->refr, h, p) != base)
+            return 1;
+    }
+    return 0;
+}
+
+/* Reference visibility changes (or an object edge) within one pixel. */
+static int near_boundary(const shadow_case *c, int x, int y, double threshold)
+{
+    int w = c->r->width, h = c->r->height, dx, dy;
+    const ref_hit *me = &c->hits[(size_t)y * w + x];
+    float v = c->ref[((size_t)y * w + x) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R];
+    for (dy = -1; dy <= 1; dy++)
+        for (dx = -1; dx <= 1; dx++) {
+            int nx = x + dx, ny = y + dy;
+            const ref_hit *o;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+                continue;
+            o = &c->hits[(size_t)ny * w + nx];
+            if (o->hit != me->hit || o->object != me->object)
+                return 1;
+            if (fabs(c->ref[((size_t)ny * w + nx) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R] - v) >
+                threshold)
+                return 1;
+        }
+    return 0;
+}
+
+/* The side of the surface the eye sees faces light 0: only there can the
+ * light arrive, so only there is visibility a property of the technique
+ * (z-pass cannot know that a sheet seen from behind shadows itself). */
+static int faces_light(const shadow_case *c, const ref_hit *h)
+{
+    const scene_light *l = &c->s->lights[0];
+    const float *eye = c->s->camera.eye;
+    double to_eye = 0, to_light = 0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        double L = l->type == SCENE_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k] - h->P[k];
+        to_eye += h->Ng[k] * (eye[k] - h->P[k]);
+        to_light += h->Ng[k] * L;
+    }
+    return (to_eye >= 0) == (to_light > 0);
+}
+
+static int opaque(const shadow_case *c, const ref_hit *h)
+{
+    return c->s->materials[c->s->objects[h->object].material].color[3] >= 1.0f;
+}
+
+static int p_matches(const shadow_case *c, const float *g, const float *ref)
+{
+    double d2 = 0;
+    int k;
+    if (!(g[AOV_Z] > 0.0f))
+        return 0;
+    for (k = 0; k < 3; k++) {
+        double d = g[AOV_PX + k] - ref[REFERENCE_CH_PX + k];
+        d2 += d * d;
+    }
+    (void)c;
+    return sqrt(d2) <= 1e-3 * ref[REFERENCE_CH_Z] + 1e-3;
+}
+
+static void test_visibility(const shadow_case *c, const capture *cap)
+{
+    int w = c->r->width, h = c->r->height, x, y;
+    /* one sample's worth, less what 8-bit accumulation can add up to */
+    double threshold = 0.5 / c->samples;
+    long compared = 0, differ = 0, far = 0, edge_on = 0;
+    char name[256];
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
+            const float *g = gl_px(&cap->img, x, y);
+            if (!c->hits[(size_t)y * w + x].hit || !p_matches(c, g, ref))
+                continue;
+            compared++;
+            if (fabs(g[AOV_VIS_R] - ref[REFERENCE_CH_VIS_R]) <= threshold)
+                continue;
+            if (grazing(c, &c->hits[(size_t)y * w + x])) {
+                edge_on++; /* rounding decides: outside the budget */
+                continue;
+            }
+            differ++;
+            if (near_boundary(c, x, y, threshold))
+                continue;
+            {
+                far++;
+                if (getenv("STIN_TEST_VERBOSE")) /* file rows count from the top */
+                    fprintf(stderr, "  far mismatch at pixel %d,%d: stin %.3f, reference %.3f\n", x,
+                            h - 1 - y, g[AOV_VIS_R], ref[REFERENCE_CH_VIS_R]);
+            }
+        }
+    name_of(c, "vis", name, sizeof name);
+    if ((differ > VIS_MAX_MISMATCH * compared || far) && c->r->out_dir) {
+        char path[1024], err[256];
+        snprintf(path, sizeof path, "%s/%s-%s-%s-%s-volume.exr", c->r->out_dir, c->r->platform_name,
+                 c->r->profile_name, stin_tier_name(c->tier), c->scene_name);
+        if (!image_write(path, &cap->img, 0, err, sizeof err))
+            fprintf(stderr, "stin-imagetest: %s\n", err);
+    }
+    /* an area light has one shadow boundary per sample: 0.1% for each */
+    report(c->r, compared && differ <= VIS_MAX_MISMATCH * c->samples * compared && far == 0
+                     ? "PASS" : "FAIL",
+           name, "visibility differs on %ld of %ld pixels (%.4f%%; at most 0.1%% a sample), %ld of them "
+           "farther than one pixel from a reference shadow boundary (must be 0); not counted: %ld "
+           "on a shadow edge in light space (0.1 degree from edge-on, or a 0.1%% light move "
+           "changes them); %d sample%s",
+           differ, compared, compared ? 100.0 * differ / compared : 0.0, far, edge_on, c->samples,
+           c->samples == 1 ? "" : "s");
+}
+
+static void test_clean(const shadow_case *c, const capture *cap)
+{
+    char name[256];
+    name_of(c, "gl-clean", name, sizeof name);
+    if (cap->counters.gl_violations || cap->counters.gl_errors || cap->log_errors)
+        report(c->r, "FAIL", name, "%u profile violations, %u GL errors, %u error logs (last: %s)",
+               cap->counters.gl_violations, cap->counters.gl_errors, cap->log_errors,
+               cap->last_error);
+    else
+        report(c->r, "PASS", name, "no GL error, no call outside the profile");
+}
+
+/* Pixels whose channels [first, first+count) differ by more than tol, among
+ * the covered pixels where the light can arrive and the surface is opaque. */
+static long differing(const shadow_case *c, const image *a, const image *b, int first, int count,
+                      double tol, double *max_diff)
+{
+    long n = 0;
+    int x, y, k;
+    *max_diff = 0;
+    for (y = 0; y < a->height; y++)
+        for (x = 0; x < a->width; x++) {
+        const ref_hit *h = &c->hits[(size_t)y * a->width + x];
+        size_t i = (size_t)(a->height - 1 - y) * a->width + x;
+        double worst = 0;
+        if (!h->hit || !faces_light(c, h) || !opaque(c, h))
+            continue;
+        for (k = first; k < first + count; k++) {
+            double d = fabs(a->pixels[i * AOV_CHANNELS + k] - b->pixels[i * AOV_CHANNELS + k]);
+            if (d > worst)
+                worst = d;
+        }
+        if (worst > *max_diff)
+            *max_diff = worst;
+        if (worst > tol)
+            n++;
+        }
+    return n;
+}
+
+static int render(const shadow_case *c, const scene *s, uint32_t debug, uint64_t mask, capture *out,
+                  const char *test)
+{
+    capture_options o;
+    char err[512], name[256];
+    o.tier = c->tier;
+    o.shadows = STIN_TECH_SHADOWS_VOLUME;
+    o.debug_flags = debug;
+    o.extra_mask = mask;
+    if (capture_render(c->r->plat, c->r->profile, s, &o, out, err, sizeof err))
+        return 1;
+    name_of(c, test, name, sizeof name);
+    report(c->r, "FAIL", name, "%s", err);
+    capture_free(out);
+    return 0;
+}
+
+/* The casters stin counts with z-pass (its near-clip test found their
+ * volumes clear of the near plane) give exactly what z-fail gives. */
+static void test_zpass_zfail(const shadow_case *c, const capture *chosen)
+{
+    capture b;
+    char name[256];
+    double max_diff;
+    long n;
+    name_of(c, "zpass-zfail", name, sizeof name);
+    if (!chosen->stats.zpass_casters) {
+        report(c->r, "SKIP", name, "every caster needs z-fail here (its volume may reach the near "
+                                   "plane)");
+        return;
+    }
+    if (!render(c, c->s, STIN_DEBUG_VOLUME_ZFAIL, 0, &b, "zpass-zfail"))
+        return;
+    n = differing(c, &chosen->img, &b.img, AOV_VIS_R, 3, 0.0, &max_diff);
+    report(c->r, n == 0 ? "PASS" : "FAIL", name,
+           "with %u of %u casters counted by z-pass, visibility differs from all-z-fail on %ld "
+           "light-facing opaque pixels (max %.4f; must be 0)", chosen->stats.zpass_casters,
+           chosen->stats.zpass_casters + chosen->stats.zfail_casters, n, max_diff);
+    capture_free(&b);
+}
+
+static void test_two_pass(const shadow_case *c, const capture *one_pass)
+{
+    const uint64_t two_sided = STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
+                               STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL);
+    capture b;
+    char name[256];
+    double max_diff;
+    long n;
+    name_of(c, "two-pass", name, sizeof name);
+    if (!(one_pass->caps_present & STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP)) ||
+        !(one_pass->caps_present & two_sided)) {
+        report(c->r, "SKIP", name, "the profile has no two-sided stencil with wrap to compare");
+        return;
+    }
+    if (!render(c, c->s, 0, two_sided | STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP), &b, "two-pass"))
+        return;
+    n = differing(c, &one_pass->img, &b.img, AOV_R, AOV_CHANNELS, 0.0, &max_diff);
+    report(c->r, n == 0 ? "PASS" : "FAIL", name,
+           "two-sided+wrap and two-pass frames differ on %ld light-facing opaque pixels in any "
+           "channel (max %.4f; must be 0)", n, max_diff);
+    capture_free(&b);
+}
+
+/* Where light 0 is blocked, removing it changes nothing. */
+static void test_additivity(const shadow_case *c, const capture *all)
+{
+    scene without = *c->s;
+    capture b;
+    char name[256];
+    int w = c->r->width, h = c->r->height, x, y, k;
+    long compared = 0, over = 0;
+    double worst = 0;
+    name_of(c, "additivity", name, sizeof name);
+    if (c->s->light_count < 2) {
+        report(c->r, "SKIP", name, "needs two lights or more");
+        return;
+    }
+    without.lights = c->s->lights + 1;
+    without.light_count = c->s->light_count - 1;
+    if (!render(c, &without, 0, 0, &b, "additivity"))
+        return;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
+            const float *g = gl_px(&all->img, x, y), *g2 = gl_px(&b.img, x, y);
+            double d = 0;
+            if (!c->hits[(size_t)y * w + x].hit || !p_matches(c, g, ref) ||
+                ref[REFERENCE_CH_VIS_R] > 0.0f || g[AOV_VIS_R] > 0.0f || near_boundary(c, x, y, 0.5))
+                continue;
+            compared++;
+            for (k = 0; k < 3; k++)
+                if (fabs(g[AOV_R + k] - g2[AOV_R + k]) > d)
+                    d = fabs(g[AOV_R + k] - g2[AOV_R + k]);
+            if (d > worst)
+                worst = d;
+            if (d > ADDITIVITY_TOLERANCE + 1e-6)
+                over++;
+        }
+    if (!compared)
+        report(c->r, "SKIP", name, "light 0 is blocked nowhere in view");
+    else
+        report(c->r, over == 0 ? "PASS" : "FAIL", name,
+               "where light 0 is blocked (%ld pixels) the frame equals the frame without it "
+               "within 1/255 on all but %ld (max %.4f)", compared, over, worst);
+    capture_free(&b);
+}
+
+void shadow_tests(run *r, stin_tier tier, const char *path)
+{
+    scene s;
+    reference *ref = NULL;
+    ref_hit *hits = NULL;
+    float *refimg = NULL;
+    capture cap;
+    shadow_case c;
+    char err[512], scene_name[128];
+    memset(&cap, 0, sizeof cap);
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    if (!scene_load(path, &s, err, sizeof err))
+        return; /* test_scene reported it */
+    c.r = r;
+    c.tier = tier;
+    c.s = &s;
+    c.scene_name = scene_name;
+    c.samples = s.light_count > 0 && s.lights[0].radius > 0.0f &&
+                        s.lights[0].type != SCENE_LIGHT_DIRECTIONAL
+                    ? 8
+                    : 1;
+    if (!s.light_count)
+        goto done;
+    ref = reference_create(&s, err, sizeof err);
+    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
+    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
+    if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
+        !reference_render_ex(&s, ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED, refimg)) {
+        char name[256];
+        snprintf(name, sizeof name, "%s/%s/volume", stin_tier_name(tier), scene_name);
+        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
+        goto done;
+    }
+    c.ref = refimg;
+    c.hits = hits;
+    c.refr = ref;
+    if (!render(&c, &s, 0, 0, &cap, "vis"))
+        goto done;
+    test_clean(&c, &cap);
+    test_visibility(&c, &cap);
+    test_zpass_zfail(&c, &cap);
+    test_two_pass(&c, &cap);
+    test_additivity(&c, &cap);
+    capture_free(&cap);
+done:
+    free(hits);
+    free(refimg);
+    if (ref)
+        reference_destroy(ref);
+    scene_free(&s);
+}
