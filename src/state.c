@@ -14,6 +14,10 @@ void stin__state_restore(stin_context *ctx)
     GL(ctx, BlendFunc)(GL_ONE, GL_ZERO);
     GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     GL(ctx, StencilMask)(0xffffffffu);
+    GL(ctx, StencilFunc)(GL_ALWAYS, 0, 0xffffffffu);
+    GL(ctx, StencilOp)(GL_KEEP, GL_KEEP, GL_KEEP);
+    GL(ctx, CullFace)(GL_BACK);
+    GL(ctx, FrontFace)(GL_CCW);
     if (caps & STIN_CAP_BIT(STIN_CAP_GLSL))
         GL(ctx, UseProgram)(0);
     if (caps & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))

@@ -52,16 +52,32 @@
  * Colour is linear; alpha is the material's opacity. Per-vertex results are
  * clamped to [0,1] before interpolation (as GL does); per-pixel at the end.
  *
+ * SHADOWS
+ * The shadow feature's chain: "volume" (stencil shadow volumes, exact; needs a
+ * stencil buffer), then "off". Volumes: silhouettes from the adjacency built at
+ * mesh creation, extracted on the CPU each frame into the block; z-pass per
+ * caster where the near-clip region cannot reach its volume, else z-fail with
+ * caps; two-sided stencil with wrap in one pass where present, else two culled
+ * passes; casters that are not closed 2-manifolds get generalised volumes (each
+ * triangle's own, so open and non-manifold meshes cast without leaks). With a
+ * perspective projection the frame is drawn with the far plane at infinity
+ * (stin_query_frame_projection), so geometry past the caller's far plane shows;
+ * orthographic projections use depth clamp. Lights with radius > 0 are area
+ * lights: desc.soft_shadow_samples point samples, each a pass at intensity / n.
+ * Lights with range > 0 are scissored to their screen extent.
+ *
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
  * viewport, and on return leaves these at their GL defaults: depth test off,
  * depth mask on, depth func LESS, blending off, stencil test off, stencil mask
- * all ones, colour mask all on, cull face off, scissor off, current program 0,
+ * all ones, stencil func ALWAYS/0/all ones, stencil ops KEEP, front face CCW,
+ * cull face BACK and off, colour mask all on, scissor off, current program 0,
  * texture unit 0 active with no texture bound, array buffer 0, vertex array 0,
  * lighting off (GL1), all client arrays disabled (GL1). The viewport and the
  * framebuffer binding stay as the frame set them; the caller's matrices (GL1
  * matrix stacks) are restored. Clear colour, clear depth and polygon offset are
- * overwritten. Every other piece of GL state is left as the caller had it.
+ * overwritten, and so are the scissor box and the stencil buffer's contents.
+ * Every other piece of GL state is left as the caller had it.
  * stin_create_mesh/stin_create_texture change buffer and texture bindings of
  * unit 0 (left at 0). No call other than these touches GL.
  *

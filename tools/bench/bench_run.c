@@ -192,6 +192,9 @@ static int one_setup(const bench_settings *b, stin_tier tier, const scene *s, se
     desc.log = cli_log_fn;
     desc.log_user = &log;
     desc.tier = tier;
+    /* The raw loop draws no shadows: compare the unshadowed path (the default
+     * would pick stencil volumes wherever there is a stencil buffer). */
+    desc.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_OFF;
     scene_gpu_size_desc(s, &desc);
     bytes = stin_memory_size(&desc);
     if (!(block = malloc(bytes))) {

@@ -1,8 +1,10 @@
 /* stin-bench: median frame time of libstin's unshadowed path per tier on the
  * spheres scenes, next to a minimal raw-GL loop drawing the same geometry in
- * the same process, printed as markdown tables (docs/benchmarks.md). */
+ * the same process, then what stencil shadow volumes cost on top of stin's
+ * unshadowed frame; printed as markdown tables (docs/benchmarks.md). */
 #include "bench_machine.h"
 #include "bench_run.h"
+#include "bench_shadow.h"
 #include "raw_gl.h"
 #include "scene.h"
 #include "stin/stin.h"
@@ -27,6 +29,9 @@ typedef struct options {
     int scene_count;
     int width, height, frames, warmup, setups, quick, verbose;
     stin_tier tier; /* AUTO: every tier */
+    int raw_section, shadow_section; /* which sections run */
+    int shadow_frames, shadow_setups, small_frames;
+    int light_counts[SHADOW_MAX_COUNTS], count_n;
 } options;
 
 static void usage(FILE *f)
@@ -44,7 +49,15 @@ static void usage(FILE *f)
             "  --platform egl|osmesa     context backend (default egl)\n"
             "  --shaders DIR             where gl2/ and gl4/ lie for the raw loop (default shaders)\n"
             "  --verbose                 per-run details and stin's info lines on stderr\n"
-            "exit codes: 0 ok, 1 failure, 2 bad input, 3 the --tier is unsupported here\n");
+            "shadow-volume section (runs after the tables above by default):\n"
+            "  --shadows                 run only the shadow-volume section\n"
+            "  --no-shadows              skip it (the stin vs raw tables only)\n"
+            "  --shadow-lights 1,4,8     point-light counts (1..%d each, at most %d counts)\n"
+            "  --shadow-frames N         timed frames per side, set-up and light count (default 10)\n"
+            "  --shadow-setups N         fresh context pairs per scene (default 2)\n"
+            "  --shadow-small-frames N   timed frames per side at 64x36 (default 10)\n"
+            "exit codes: 0 ok, 1 failure, 2 bad input, 3 the --tier is unsupported here\n",
+            SHADOW_MAX_LIGHTS, SHADOW_MAX_COUNTS);
 }
 
 static int parse_int(const char *s, int lo, int hi, int *out)
@@ -74,10 +87,24 @@ static int split_scenes(options *o, const char *list)
     return o->scene_count > 0;
 }
 
+static int parse_light_counts(options *o, const char *v)
+{
+    char buf[128], *tok;
+    snprintf(buf, sizeof buf, "%s", v);
+    o->count_n = 0;
+    for (tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+        if (o->count_n == SHADOW_MAX_COUNTS ||
+            !parse_int(tok, 1, SHADOW_MAX_LIGHTS, &o->light_counts[o->count_n]))
+            return 0;
+        o->count_n++;
+    }
+    return o->count_n > 0;
+}
+
 static int parse_args(int argc, char **argv, options *o)
 {
     const char *scenes = NULL;
-    int i, frames = 0;
+    int i, frames = 0, shadow_frames = 0, small_frames = 0, shadow_setups = 0;
     memset(o, 0, sizeof *o);
     o->platform = "egl";
     o->shader_dir = "shaders";
@@ -85,6 +112,11 @@ static int parse_args(int argc, char **argv, options *o)
     o->height = 720;
     o->warmup = 3;
     o->setups = 5;
+    o->raw_section = o->shadow_section = 1;
+    o->light_counts[0] = 1;
+    o->light_counts[1] = 4;
+    o->light_counts[2] = 8;
+    o->count_n = 3;
     for (i = 1; i < argc; i++) {
         const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
@@ -94,6 +126,12 @@ static int parse_args(int argc, char **argv, options *o)
             o->quick = 1;
         } else if (!strcmp(a, "--verbose")) {
             o->verbose = 1;
+        } else if (!strcmp(a, "--shadows")) {
+            o->raw_section = 0;
+            o->shadow_section = 1;
+        } else if (!strcmp(a, "--no-shadows")) {
+            o->raw_section = 1;
+            o->shadow_section = 0;
         } else if (a[0] != '-') {
             fprintf(stderr, "stin-bench: unexpected argument '%s'\n", a);
             return 0;
@@ -132,6 +170,28 @@ static int parse_args(int argc, char **argv, options *o)
                 fprintf(stderr, "stin-bench: --setups wants 1..1000, got '%s'\n", v);
                 return 0;
             }
+        } else if (!strcmp(a, "--shadow-lights")) {
+            if (!parse_light_counts(o, v)) {
+                fprintf(stderr, "stin-bench: --shadow-lights wants up to %d counts of 1..%d, "
+                        "got '%s'\n", SHADOW_MAX_COUNTS, SHADOW_MAX_LIGHTS, v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--shadow-frames")) {
+            if (!parse_int(v, 1, 100000, &shadow_frames)) {
+                fprintf(stderr, "stin-bench: --shadow-frames wants 1..100000, got '%s'\n", v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--shadow-small-frames")) {
+            if (!parse_int(v, 1, 100000, &small_frames)) {
+                fprintf(stderr, "stin-bench: --shadow-small-frames wants 1..100000, got '%s'\n",
+                        v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--shadow-setups")) {
+            if (!parse_int(v, 1, 1000, &shadow_setups)) {
+                fprintf(stderr, "stin-bench: --shadow-setups wants 1..1000, got '%s'\n", v);
+                return 0;
+            }
         } else if (!strcmp(a, "--platform")) {
             o->platform = v;
         } else if (!strcmp(a, "--shaders")) {
@@ -143,6 +203,9 @@ static int parse_args(int argc, char **argv, options *o)
     }
     /* --quick sets defaults; explicit --frames/--scenes still win. */
     o->frames = frames ? frames : o->quick ? 5 : 30;
+    o->shadow_frames = shadow_frames ? shadow_frames : o->quick ? 3 : 10;
+    o->small_frames = small_frames ? small_frames : o->quick ? 3 : 10;
+    o->shadow_setups = shadow_setups ? shadow_setups : o->quick ? 1 : 2;
     if (!scenes)
         scenes = o->quick ? "tests/scenes/spheres-18k.json" : DEFAULT_SCENES;
     return split_scenes(o, scenes);
@@ -200,6 +263,152 @@ static int bench_tier(const bench_settings *b, stin_tier tier, scene *scenes, in
         fflush(stdout);
     }
     return 1;
+}
+
+/* ---- shadow volumes ----------------------------------------------------- */
+
+typedef struct shadow_table {
+    shadow_row rows[3][MAX_SCENES][SHADOW_MAX_COUNTS]; /* tier index, scene, count */
+    uint64_t triangles[MAX_SCENES];
+    int ran[3];
+    double worst, best;
+    char worst_at[160], best_at[160];
+} shadow_table;
+
+static int shadow_tier(const shadow_settings *st, int ti, stin_tier tier, scene *scenes, int n,
+                       const options *o, shadow_table *t)
+{
+    int i, c;
+    printf("\n### shadows, %s (%s)\n\n", stin_tier_name(tier), tier_label(tier));
+    printf("| scene | lights | volume triangles / frame | z-pass / z-fail casters | "
+           "off median ms | volume median ms | volume / off |\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|\n");
+    fflush(stdout);
+    for (i = 0; i < n; i++) {
+        char err[1024], label[128];
+        shadow_row *rows = t->rows[ti][i];
+        scene_label(o->scenes[i], label, sizeof label);
+        fprintf(stderr, "stin-bench: shadows %s %s ...\n", stin_tier_name(tier), label);
+        if (!bench_shadow_run(st, tier, &scenes[i], rows, err, sizeof err)) {
+            fprintf(stderr, "stin-bench: shadows, %s, %s: %s\n", stin_tier_name(tier), label,
+                    err);
+            return 0;
+        }
+        t->triangles[i] = scene_triangle_count(&scenes[i]);
+        for (c = 0; c < st->count_n; c++) {
+            const shadow_row *r = &rows[c];
+            double ratio = r->off_ms > 0 ? r->vol_ms / r->off_ms : 0.0;
+            if (ratio > t->worst || !t->worst_at[0]) {
+                t->worst = ratio;
+                snprintf(t->worst_at, sizeof t->worst_at, "%s %s, %d light(s)",
+                         stin_tier_name(tier), label, r->lights);
+            }
+            if (ratio < t->best || !t->best_at[0]) {
+                t->best = ratio;
+                snprintf(t->best_at, sizeof t->best_at, "%s %s, %d light(s)",
+                         stin_tier_name(tier), label, r->lights);
+            }
+            printf("| %s | %d | %u | %u / %u | %.2f | %.2f | %.2f |\n", label, r->lights,
+                   r->volume_triangles, r->zpass_casters, r->zfail_casters, r->off_ms, r->vol_ms,
+                   ratio);
+        }
+        fflush(stdout);
+    }
+    t->ran[ti] = 1;
+    return 1;
+}
+
+/* The CPU estimate of volume building, one row per tier, scene and count. */
+static void shadow_cpu_table(const shadow_settings *st, const shadow_table *t, const options *o)
+{
+    static const stin_tier all[] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
+    int ti, i, c;
+    printf("\n### shadows: stin_end_frame at %dx%d (volume building on the CPU)\n\n", st->small_w,
+           st->small_h);
+    printf("| tier | scene | lights | volume triangles / frame | end_frame off / volume ms | "
+           "difference ms | outside GL draws off / volume ms | difference ms | "
+           "ns per scene triangle and light | ns per volume triangle |\n");
+    printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (ti = 0; ti < 3; ti++) {
+        if (!t->ran[ti])
+            continue;
+        for (i = 0; i < o->scene_count; i++) {
+            char label[128];
+            scene_label(o->scenes[i], label, sizeof label);
+            for (c = 0; c < st->count_n; c++) {
+                const shadow_row *r = &t->rows[ti][i][c];
+                double cpu = r->vol_cpu_ms - r->off_cpu_ms;
+                double per_tri = t->triangles[i] ? 1e6 * cpu / ((double)t->triangles[i] *
+                                                                (double)r->lights) : 0.0;
+                double per_vol = r->volume_triangles ? 1e6 * cpu / (double)r->volume_triangles
+                                                     : 0.0;
+                printf("| %s | %s | %d | %u | %.3f / %.3f | %.3f | %.3f / %.3f | %.3f | %.2f | "
+                       "%.1f |\n", stin_tier_name(all[ti]), label, r->lights,
+                       r->volume_triangles, r->off_end_ms, r->vol_end_ms,
+                       r->vol_end_ms - r->off_end_ms, r->off_cpu_ms, r->vol_cpu_ms, cpu, per_tri,
+                       per_vol);
+            }
+        }
+    }
+    fflush(stdout);
+}
+
+static int run_shadows(const bench_settings *b, const stin_caps *caps, scene *scenes,
+                       const options *o, int *ran)
+{
+    static const stin_tier all[] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
+    shadow_settings st;
+    shadow_table *t = calloc(1, sizeof *t);
+    int i, rc = 0, any = 0;
+    char counts[64] = "";
+    if (!t) {
+        fprintf(stderr, "stin-bench: out of memory\n");
+        return EXIT_FAILED;
+    }
+    memset(&st, 0, sizeof st);
+    st.b = b;
+    st.frames = o->shadow_frames;
+    st.setups = o->shadow_setups;
+    st.small_w = 64;
+    st.small_h = 36;
+    st.small_frames = o->small_frames;
+    st.count_n = o->count_n;
+    for (i = 0; i < o->count_n; i++) {
+        size_t len = strlen(counts);
+        st.light_counts[i] = o->light_counts[i];
+        snprintf(counts + len, sizeof counts - len, "%s%d", i ? ", " : "", o->light_counts[i]);
+    }
+    printf("\n## Shadow volumes: %dx%d, %s point light(s); per side the lowest of %d set-ups' "
+           "median of %d frames (ABBA-interleaved, glFinish per frame, %d warm-up)\n",
+           b->width, b->height, counts, st.setups, st.frames, b->warmup > 0 ? b->warmup : 1);
+    for (i = 0; i < 3 && rc == 0; i++) {
+        char missing[512];
+        if (o->tier != STIN_TIER_AUTO && o->tier != all[i])
+            continue;
+        if (!stin_tier_supported(caps, all[i], missing, sizeof missing)) {
+            printf("\n### shadows, %s: SKIP (the context lacks %s)\n", stin_tier_name(all[i]),
+                   missing);
+            if (o->tier != STIN_TIER_AUTO)
+                rc = EXIT_UNSUPPORTED;
+            continue;
+        }
+        if (!(caps->present & STIN_CAP_BIT(STIN_CAP_STENCIL))) {
+            printf("\n### shadows, %s: SKIP (no stencil buffer)\n", stin_tier_name(all[i]));
+            continue;
+        }
+        if (!shadow_tier(&st, i, all[i], scenes, o->scene_count, o, t))
+            rc = EXIT_FAILED;
+        else
+            any = 1;
+    }
+    if (rc == 0 && any) {
+        shadow_cpu_table(&st, t, o);
+        printf("\nshadow volumes / shadows off: from %.2f (%s) to %.2f (%s)\n", t->best,
+               t->best_at, t->worst, t->worst_at);
+        ++*ran;
+    }
+    free(t);
+    return rc;
 }
 
 static void print_machine(const raw_gl *gl)
@@ -269,11 +478,12 @@ int main(int argc, char **argv)
     b.verbose = o.verbose;
     b.shader_dir = o.shader_dir;
 
-    printf("## stin-bench: %dx%d, %s; per side the lowest of %d set-ups' median of %d frames "
-           "(ABBA-interleaved, glFinish per frame, %d warm-up)\n", b.width, b.height,
-           stin_platform_kind_name(pd.kind), b.setups, b.frames, b.warmup);
     rc = 0;
-    for (i = 0; i < 3 && rc == 0; i++) {
+    if (o.raw_section)
+        printf("## stin-bench: %dx%d, %s; per side the lowest of %d set-ups' median of %d frames "
+               "(ABBA-interleaved, glFinish per frame, %d warm-up)\n", b.width, b.height,
+               stin_platform_kind_name(pd.kind), b.setups, b.frames, b.warmup);
+    for (i = 0; i < 3 && rc == 0 && o.raw_section; i++) {
         char missing[512];
         if (o.tier != STIN_TIER_AUTO && o.tier != all[i])
             continue;
@@ -292,6 +502,12 @@ int main(int argc, char **argv)
         print_machine(&gl);
         printf("goal stin / raw <= %.2f on every row: %s (worst %.3f, %s)\n", GOAL_RATIO,
                worst.ratio <= GOAL_RATIO ? "met" : "NOT met", worst.ratio, worst.at);
+    }
+    if (rc == 0 && o.shadow_section) {
+        int shadow_ran = 0;
+        rc = run_shadows(&b, &caps, scenes, &o, &shadow_ran);
+        if (rc == 0 && shadow_ran && !o.raw_section)
+            print_machine(&gl);
     }
 done:
     if (plat)
