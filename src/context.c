@@ -285,6 +285,7 @@ void stin_destroy(stin_context *ctx)
     stin__mesh_release_all(ctx);
     stin__texture_release_all(ctx);
     stin__glsl_release(ctx);
+    stin__dot3_release(ctx);
 }
 
 stin_desc stin_query_desc(const stin_context *ctx)

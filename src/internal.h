@@ -121,6 +121,8 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
 uint64_t stin__technique_needs(stin_technique t);
 stin_feature stin__technique_feature(stin_technique t);
 stin_tier stin__technique_tier(stin_technique t);
+/* The lighting technique a technique runs on top of (STIN_TECH_NONE: any). */
+stin_technique stin__technique_lighting(stin_technique t);
 uint64_t stin__tier_needs(stin_tier t);
 /* Names of the bits in `bits`, comma separated. */
 void stin__cap_names(uint64_t bits, char *out, size_t size);
@@ -217,6 +219,12 @@ struct stin_context {
     int volume_infinite;      /* projection moved the far plane to infinity */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
     int lights_per_pass;
+    struct {
+        GLuint cube;          /* normalisation cube map; 0 = DOT3 not in use */
+        GLenum dot3_rgb;      /* GL_DOT3_RGB (1.3/ARB) or GL_DOT3_RGB_EXT */
+        int units;            /* texture units (3 without an albedo texture, 4 with) */
+        int warned_scratch;   /* a mesh too big for the scratch was logged */
+    } dot3;
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);
@@ -303,6 +311,38 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
 void stin__volume_frame_setup(stin_context *ctx);
 /* Screen rectangle a light of finite range can touch; 0 when unbounded. */
 int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
+/* ---- surface: DOT3 bump mapping on the fixed-function path (surface_dot3.c) ----
+ * Draws whose material has a normal map get their diffuse term per pixel from
+ * the normal map; the fixed-function passes keep their ambient and specular
+ * (set_material blacks out their diffuse through stin__dot3_material). */
+/* Creates the cube map when the technique is selected; a context without the
+ * texture units or staging falls back to plain (an error if it was forced). */
+stin_result stin__dot3_init(stin_context *ctx);
+void stin__dot3_release(stin_context *ctx);
+/* 1 when this (opaque) material is drawn with DOT3 in the lit passes. */
+int stin__dot3_bumped(const stin_context *ctx, const stin_material *m);
+/* Called by the fixed path's set_material: diffuse off for bumped materials. */
+void stin__dot3_material(stin_context *ctx, const stin_material *m);
+/* Adds the DOT3 diffuse of the opaque bumped draws for the GL lights
+ * 0..count-1 (set up as lights[0..count-1]), one additive pass per light
+ * (depth EQUAL), under the caller's stencil test and scissor; the stencil
+ * operations are KEEP meanwhile, so a caller that increments where it lights
+ * calls this before its own draws of the same light. */
+void stin__dot3_lights(stin_context *ctx, const stin_light_desc *lights, int count);
+/* As stin__dot3_lights for light batch `batch` of fixed_batches, whose lights
+ * set_batch has just set up; restores the batch's scene ambient. */
+void stin__dot3_batch(stin_context *ctx, int batch);
+/* Per-vertex tangent-space light vectors (xyz, unnormalised) and the normal
+ * that points the fixed-function lighting at the light (xyz), 6 floats a
+ * vertex, for an object with transform `model` and a light at light_world
+ * (w = 1 point, w = 0 direction toward the light). */
+void stin__dot3_light_vectors(const stin__vertex *v, uint32_t n, const float model[16],
+                              const float light_world[4], float *out);
+/* Direction of the cube-map face (0..5 = +X -X +Y -Y +Z -Z) at texture
+ * coordinates (s, t), unnormalised; and a face as RGBA8 0.5 + 0.5 n. */
+void stin__dot3_cube_direction(int face, float s, float t, float out[3]);
+void stin__dot3_cube_face(int face, uint32_t size, unsigned char *rgba);
+
 /* Restores the GL state the header promises after a frame. */
 void stin__state_restore(stin_context *ctx);
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag, char *msg,

@@ -6,8 +6,7 @@
 
 stin_result stin__fixed_init(stin_context *ctx)
 {
-    (void)ctx; /* nothing to build: the pipeline is fixed */
-    return STIN_OK;
+    return stin__dot3_init(ctx); /* the pipeline is fixed; DOT3 needs its cube map */
 }
 
 static void set_light(stin_context *ctx, int unit, const stin_light_desc *l)
@@ -100,6 +99,7 @@ static void set_material(stin_context *ctx, const stin_material *m)
     } else {
         GL_DISABLE(ctx, GL_TEXTURE_2D);
     }
+    stin__dot3_material(ctx, m); /* bumped: diffuse comes from the DOT3 passes */
 }
 
 static void draw_mesh(stin_context *ctx, const stin__draw *d)
@@ -181,6 +181,7 @@ static void fixed_batches(stin_context *ctx, int which)
             pass_state(ctx, b > 0, 0);
             ctx->stats.passes++;
             draw_set(ctx, STIN__OPAQUE, 1);
+            stin__dot3_batch(ctx, b);
         }
     if (which & STIN__BLENDED)
         for (i = 0; i < ctx->draw_count; i++) { /* each blended draw whole, far to near */
@@ -219,6 +220,7 @@ static void fixed_lit(stin_context *ctx, const stin_light_desc *light)
     disable_lights(ctx, 1);
     scene_ambient(ctx, 0);
     pass_state(ctx, 1, 0);
+    stin__dot3_lights(ctx, light, 1); /* bumped diffuse first: the stencil may count lit pixels */
     draw_set(ctx, STIN__OPAQUE, 1);
     ctx->stats.passes++;
 }

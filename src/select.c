@@ -34,8 +34,23 @@ uint64_t stin__technique_needs(stin_technique t)
     case STIN_TECH_LIGHTING_GLSL110: return stin__tier_needs(STIN_TIER_GL2);
     case STIN_TECH_LIGHTING_FIXED: return stin__tier_needs(STIN_TIER_GL1);
     case STIN_TECH_SHADOWS_VOLUME: return BIT(STENCIL);
+    case STIN_TECH_SURFACE_DOT3:
+        return BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) |
+               BIT(TEXTURE_CUBE_MAP) | BIT(FIXED_FUNCTION);
     default: return 0;
     }
+}
+
+/* Techniques that only run on top of one lighting technique. Features are
+ * chosen one after the other (lighting first); a technique whose lighting
+ * requirement is not the lighting chosen is passed over like one whose
+ * capabilities are missing. DOT3 bump mapping is a fixed-function texture
+ * combiner set-up: it draws in the fixed-function path's lit passes only, so
+ * the GLSL tiers (whose normal mapping is their own surface technique) never
+ * pick it, even where the context has the capabilities. */
+stin_technique stin__technique_lighting(stin_technique t)
+{
+    return t == STIN_TECH_SURFACE_DOT3 ? STIN_TECH_LIGHTING_FIXED : STIN_TECH_NONE;
 }
 
 stin_feature stin__technique_feature(stin_technique t)
@@ -101,11 +116,12 @@ stin_tier stin_best_tier(const stin_caps *caps)
 /* Walks the feature's chain from the best technique down; records why each
  * better one was passed over. */
 static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
-                          stin_technique forced, stin_choice *out, char *msg, size_t msg_size)
+                          stin_technique forced, stin_technique lighting, stin_choice *out,
+                          char *msg, size_t msg_size)
 {
-    char why[160], names[160];
+    char why[160], names[160], note[96];
     int t;
-    why[0] = '\0';
+    why[0] = note[0] = '\0';
     if (forced != STIN_TECH_NONE) {
         uint64_t lack = stin__technique_needs(forced) & ~caps->present;
         if ((unsigned)forced >= STIN_TECH_COUNT || tech_feature[forced] != f) {
@@ -120,6 +136,14 @@ static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
                           tech_tier[forced] > tier ? "tier " : "",
                           tech_tier[forced] > tier ? stin_tier_name(tech_tier[forced]) : "",
                           tech_tier[forced] > tier && lack ? ", " : "", lack ? names : "");
+            return STIN_ERROR_UNSUPPORTED;
+        }
+        if (stin__technique_lighting(forced) != STIN_TECH_NONE &&
+            stin__technique_lighting(forced) != lighting) {
+            stin__formatf(msg, msg_size, "%s technique %s needs the %s lighting technique "
+                          "(lighting is %s)", stin_feature_name(f), stin_technique_name(forced),
+                          stin_technique_name(stin__technique_lighting(forced)),
+                          stin_technique_name(lighting));
             return STIN_ERROR_UNSUPPORTED;
         }
         out->technique = forced;
@@ -139,11 +163,19 @@ static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
                           names);
             continue;
         }
+        if (stin__technique_lighting((stin_technique)t) != STIN_TECH_NONE &&
+            stin__technique_lighting((stin_technique)t) != lighting) {
+            /* not a fallback: the chosen lighting path does not draw it */
+            stin__formatf(note, sizeof note, "%s runs with %s lighting only; ",
+                          stin_technique_name((stin_technique)t),
+                          stin_technique_name(stin__technique_lighting((stin_technique)t)));
+            continue;
+        }
         out->technique = (stin_technique)t;
         if (why[0])
             stin__formatf(out->reason, sizeof out->reason, "fallback: %s", why);
         else
-            stin__formatf(out->reason, sizeof out->reason, "best for tier %s",
+            stin__formatf(out->reason, sizeof out->reason, "%sbest for tier %s", note,
                           stin_tier_name(tier));
         return STIN_OK;
     }
@@ -177,8 +209,10 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
         out->tier = forced;
     }
     for (f = 0; f < STIN_FEATURE_COUNT; f++) {
+        /* features in enum order: lighting is chosen before the techniques that need it */
         stin_result r = choose(caps, out->tier, (stin_feature)f,
-                               forced_tech ? forced_tech[f] : STIN_TECH_NONE, &out->choice[f],
+                               forced_tech ? forced_tech[f] : STIN_TECH_NONE,
+                               out->choice[STIN_FEATURE_LIGHTING].technique, &out->choice[f],
                                msg, msg_size);
         if (r != STIN_OK)
             return r;

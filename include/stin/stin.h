@@ -77,6 +77,10 @@
  * framebuffer binding stay as the frame set them; the caller's matrices (GL1
  * matrix stacks) are restored. Clear colour, clear depth and polygon offset are
  * overwritten, and so are the scissor box and the stencil buffer's contents.
+ * With the dot3 surface technique (GL1), texture units 0-3 are left with GL's
+ * default texture environment (MODULATE, combine defaults, RGB scale 1), no
+ * 2D or cube-map texture bound or enabled, their texture coordinate arrays
+ * disabled and client unit 0 active.
  * Every other piece of GL state is left as the caller had it.
  * stin_create_mesh/stin_create_texture change buffer and texture bindings of
  * unit 0 (left at 0). No call other than these touches GL.
@@ -248,7 +252,18 @@ typedef enum stin_feature {
 const char *stin_feature_name(stin_feature f);
 
 /* X(id, name, feature, tier it belongs to) — each feature's chain is this
- * list's order, best first, filtered by the tier ceiling and the caps. */
+ * list's order, best first, filtered by the tier ceiling and the caps.
+ * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
+ * with a normalisation cube map; it needs multitexture, texture_env_combine,
+ * texture_env_dot3, cube maps and 3 texture units (4 for a material that
+ * also has an albedo texture; with 3 such a material stays plain), and runs
+ * only with the fixed-function lighting technique (the GLSL tiers never pick
+ * it; forcing it there is UNSUPPORTED). Opaque draws with a normal map get
+ * their diffuse term per pixel, one extra additive pass per light; ambient
+ * and specular stay per vertex (unbumped), blended draws stay plain, and a
+ * bumped normal tilted toward a light just below the surface's horizon still
+ * catches some of it (no self-shadowing term). Exact tangent frames for any
+ * affine transform. */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
@@ -256,6 +271,7 @@ const char *stin_feature_name(stin_feature f);
     X(LIGHTING_FIXED, "fixed-function", STIN_FEATURE_LIGHTING, STIN_TIER_GL1)      \
     X(SHADOWS_VOLUME, "volume", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)       \
     X(SHADOWS_OFF, "off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)             \
+    X(SURFACE_DOT3, "dot3", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
     X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)
 
 typedef enum stin_technique {
@@ -421,7 +437,8 @@ typedef struct stin_material {
     float specular[3];      /* default 0 */
     float shininess;        /* default 32, clamped to [0,128] */
     stin_texture albedo;    /* optional, multiplies color */
-    stin_texture normal_map; /* optional (surface issue) */
+    stin_texture normal_map; /* optional: tangent-space normals (STIN_TEXTURE_NORMAL),
+                              * used by the surface technique (GL1: dot3) */
     stin_texture height_map; /* optional (surface issue) */
 } stin_material;
 

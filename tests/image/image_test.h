@@ -19,5 +19,8 @@ const char *scene_base_name(const char *path);
 
 /* Shadow-volume tests of one scene at one tier (shadow_test.c). */
 void shadow_tests(run *r, stin_tier tier, const char *path);
+/* DOT3 bump mapping of one scene at one tier, plus a built-in analytic scene
+ * on the first call per tier (dot3_test.c). */
+void dot3_tests(run *r, stin_tier tier, const char *path);
 
 #endif

@@ -73,7 +73,13 @@ static void test_auto_selection_per_profile(void **state)
         assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique,
                          (cases[i].caps.present & BIT(STENCIL)) ? STIN_TECH_SHADOWS_VOLUME
                                                                  : STIN_TECH_SHADOWS_OFF);
-        assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
+        /* DOT3 where the fixed-function path has combine/dot3/cube maps (gl13, gl14);
+         * the GLSL tiers have the capabilities but not the lighting path. */
+        assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique,
+                         cases[i].lighting == STIN_TECH_LIGHTING_FIXED &&
+                                 (cases[i].caps.present & BIT(TEXTURE_ENV_DOT3))
+                             ? STIN_TECH_SURFACE_DOT3
+                             : STIN_TECH_SURFACE_PLAIN);
         assert_true(sel.choice[STIN_FEATURE_LIGHTING].reason[0] != '\0');
     }
 }
@@ -263,6 +269,33 @@ static void test_forced_technique_above_the_tier(void **state)
                 tier[3] == ')' || tier[3] == ':');
 }
 
+/* DOT3 is drawn by the fixed-function lighting path only: a feature chosen
+ * after lighting skips a technique bound to another lighting technique (not
+ * a fallback), and forcing it there is refused. */
+static void test_surface_follows_the_lighting_technique(void **state)
+{
+    stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS), gl13 = caps_with(13, 0, 0, GL13_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_NONE, STIN_TECH_NONE, STIN_TECH_NONE};
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__technique_lighting(STIN_TECH_SURFACE_DOT3), STIN_TECH_LIGHTING_FIXED);
+    assert_int_equal(stin__technique_lighting(STIN_TECH_SURFACE_PLAIN), STIN_TECH_NONE);
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
+    assert_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "fallback"));
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "fixed-function"));
+    assert_int_equal(stin__select(&gl21, STIN_TIER_GL1, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_DOT3);
+    forced[STIN_FEATURE_SURFACE] = STIN_TECH_SURFACE_DOT3;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "dot3"));
+    assert_non_null(strstr(msg, "glsl110-per-pixel"));
+    assert_int_equal(stin__select(&gl13, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_DOT3);
+}
+
 static void test_technique_tables(void **state)
 {
     (void)state;
@@ -291,6 +324,7 @@ int main(void)
         cmocka_unit_test(test_forced_technique_that_runs_is_taken),
         cmocka_unit_test(test_forced_technique_the_caps_cannot_run),
         cmocka_unit_test(test_forced_technique_above_the_tier),
+        cmocka_unit_test(test_surface_follows_the_lighting_technique),
         cmocka_unit_test(test_technique_tables),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

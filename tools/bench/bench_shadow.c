@@ -292,7 +292,8 @@ static int abba(const setup *u, int small, int frames, medians *out, char *err,
         }
     }
     if (u->st->b->verbose) {
-        fprintf(stderr, "stin-bench: %s frame ms (volume/off):", small ? "end_frame" : "full");
+        fprintf(stderr, "stin-bench: %s ms (volume/off):",
+                small ? "stin_end_frame" : "full frame");
         for (k = 0; k < frames; k++)
             fprintf(stderr, " %.2f/%.2f", tv[k], to[k]);
         fprintf(stderr, "\n");
@@ -343,7 +344,9 @@ static int one_setup(const shadow_settings *st, stin_tier tier, const scene *s, 
         medians full, small;
         make_lights(s, st->light_counts[i], u->lights);
         u->sc.light_count = st->light_counts[i];
-        for (k = 0; k < (b->warmup > 0 ? b->warmup : 1); k++)
+        /* The full warm-up before the first count; one frame per side before
+         * the others (new shader variants for the light count settle in it). */
+        for (k = 0; k < (i == 0 && b->warmup > 1 ? b->warmup : 1); k++)
             if (full_frame(u, &u->vol) < 0 || full_frame(u, &u->off) < 0) {
                 snprintf(err, err_size, "stin frame failed");
                 goto done;

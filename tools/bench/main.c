@@ -53,9 +53,9 @@ static void usage(FILE *f)
             "  --shadows                 run only the shadow-volume section\n"
             "  --no-shadows              skip it (the stin vs raw tables only)\n"
             "  --shadow-lights 1,4,8     point-light counts (1..%d each, at most %d counts)\n"
-            "  --shadow-frames N         timed frames per side, set-up and light count (default 10)\n"
+            "  --shadow-frames N         timed frames per side, set-up and light count (default 7)\n"
             "  --shadow-setups N         fresh context pairs per scene (default 2)\n"
-            "  --shadow-small-frames N   timed frames per side at 64x36 (default 10)\n"
+            "  --shadow-small-frames N   timed frames per side at 64x36 (default 7)\n"
             "exit codes: 0 ok, 1 failure, 2 bad input, 3 the --tier is unsupported here\n",
             SHADOW_MAX_LIGHTS, SHADOW_MAX_COUNTS);
 }
@@ -203,8 +203,8 @@ static int parse_args(int argc, char **argv, options *o)
     }
     /* --quick sets defaults; explicit --frames/--scenes still win. */
     o->frames = frames ? frames : o->quick ? 5 : 30;
-    o->shadow_frames = shadow_frames ? shadow_frames : o->quick ? 3 : 10;
-    o->small_frames = small_frames ? small_frames : o->quick ? 3 : 10;
+    o->shadow_frames = shadow_frames ? shadow_frames : o->quick ? 3 : 7;
+    o->small_frames = small_frames ? small_frames : o->quick ? 3 : 7;
     o->shadow_setups = shadow_setups ? shadow_setups : o->quick ? 1 : 2;
     if (!scenes)
         scenes = o->quick ? "tests/scenes/spheres-18k.json" : DEFAULT_SCENES;
@@ -379,8 +379,10 @@ static int run_shadows(const bench_settings *b, const stin_caps *caps, scene *sc
         snprintf(counts + len, sizeof counts - len, "%s%d", i ? ", " : "", o->light_counts[i]);
     }
     printf("\n## Shadow volumes: %dx%d, %s point light(s); per side the lowest of %d set-ups' "
-           "median of %d frames (ABBA-interleaved, glFinish per frame, %d warm-up)\n",
-           b->width, b->height, counts, st.setups, st.frames, b->warmup > 0 ? b->warmup : 1);
+           "median of %d frames (ABBA-interleaved, glFinish per frame, %d warm-up, 1 per later "
+           "light count); stin_end_frame alone at %dx%d: %d frames\n",
+           b->width, b->height, counts, st.setups, st.frames, b->warmup > 1 ? b->warmup : 1,
+           st.small_w, st.small_h, st.small_frames);
     for (i = 0; i < 3 && rc == 0; i++) {
         char missing[512];
         if (o->tier != STIN_TIER_AUTO && o->tier != all[i])
