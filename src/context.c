@@ -16,12 +16,15 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_mesh_triangles = DEFAULT(d.max_mesh_triangles, d.max_triangles < 65536u ? d.max_triangles : 65536u);
     d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 4u << 20);
     d.soft_shadow_samples = DEFAULT(d.soft_shadow_samples, 8u);
+    d.shadow_map_size = DEFAULT(d.shadow_map_size, 1024u);
     return d;
 }
 
 static int desc_valid(const stin_desc *d)
 {
-    return d->max_lights <= 32 && d->soft_shadow_samples <= 64 && d->max_meshes <= 65535 && d->max_textures <= 65535 &&
+    return d->max_lights <= 32 && d->soft_shadow_samples <= 64 &&
+           d->shadow_map_size <= 8192 && (d->shadow_map_size & (d->shadow_map_size - 1)) == 0 &&
+           d->max_meshes <= 65535 && d->max_textures <= 65535 &&
            d->max_mesh_triangles <= d->max_triangles && d->max_vertices < 0x40000000u &&
            d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u;
 }
@@ -268,6 +271,9 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     r = init_lighting(ctx);
     if (r != STIN_OK)
         return r;
+    r = stin__maps_init(ctx);
+    if (r != STIN_OK)
+        return r;
     ctx->lights_per_pass = STIN__LIGHTS_PER_PASS;
     if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED &&
         ctx->caps.max_lights < ctx->lights_per_pass)
@@ -286,6 +292,7 @@ void stin_destroy(stin_context *ctx)
     stin__texture_release_all(ctx);
     stin__glsl_release(ctx);
     stin__dot3_release(ctx);
+    stin__maps_release(ctx);
 }
 
 stin_desc stin_query_desc(const stin_context *ctx)

@@ -290,6 +290,35 @@ static void run_volumes(stin_context *ctx, const stin__path *path, int visibilit
         path->batches(ctx, STIN__BLENDED);
 }
 
+/* Shadow maps: ambient, then per light its map's test on the lit pass (point
+ * lights: stencil volumes where there is a stencil buffer); blended last. */
+static void run_maps(stin_context *ctx, const stin__path *path, int visibility)
+{
+    uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
+    const float white[4] = {1, 1, 1, 1};
+    int stencil = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) != 0;
+    path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
+    for (li = 0; li < lights; li++) {
+        const stin_light_desc *l = &ctx->lights[li];
+        int mapped = stin__maps_bind(ctx, li);
+        if (!mapped && l->type == STIN_LIGHT_POINT && stencil) {
+            float world[4] = {l->position[0], l->position[1], l->position[2], 1.0f};
+            stin__volume_light(ctx, path, world, NULL);
+        }
+        if (visibility)
+            path->flat(ctx, STIN__ALL, white);
+        else
+            path->lit(ctx, l);
+        if (mapped)
+            stin__maps_unbind(ctx);
+        GL_DISABLE(ctx, GL_STENCIL_TEST);
+    }
+    if (visibility && !lights)
+        path->flat(ctx, STIN__ALL, white);
+    if (!visibility)
+        path->batches(ctx, STIN__BLENDED);
+}
+
 static void run_frame(stin_context *ctx)
 {
     const stin__path *path =
@@ -297,6 +326,7 @@ static void run_frame(stin_context *ctx)
             ? stin__fixed_path()
             : stin__glsl_path();
     int volumes = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME;
+    int maps = stin__maps_active(ctx);
     stin__volume_frame_setup(ctx);
     path->begin(ctx);
     switch (ctx->frame.output) {
@@ -304,7 +334,9 @@ static void run_frame(stin_context *ctx)
         path->normals(ctx);
         break;
     case STIN_OUTPUT_VISIBILITY:
-        if (volumes) {
+        if (maps) {
+            run_maps(ctx, path, 1);
+        } else if (volumes) {
             run_volumes(ctx, path, 1);
         } else {
             path->ambient(ctx, STIN__ALL, 1);
@@ -312,7 +344,9 @@ static void run_frame(stin_context *ctx)
         }
         break;
     default:
-        if (volumes && ctx->light_count)
+        if (maps && ctx->light_count)
+            run_maps(ctx, path, 0);
+        else if (volumes && ctx->light_count)
             run_volumes(ctx, path, 0);
         else
             path->batches(ctx, STIN__ALL);
@@ -329,6 +363,8 @@ stin_result stin_end_frame(stin_context *ctx)
     if (ctx->state != STIN__IN_FRAME)
         return state_error(ctx, "stin_end_frame", "no frame is open");
     order_draws(ctx);
+    if (stin__maps_active(ctx) && ctx->light_count)
+        stin__maps_render(ctx); /* before the clear: without FBOs they use the frame's buffer */
     begin_target(ctx);
     ctx->stats.draws = ctx->draw_count;
     ctx->stats.lights = ctx->light_count;

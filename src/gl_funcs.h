@@ -39,6 +39,13 @@
     X(void, TexParameteri, (GLenum target, GLenum pname, GLint param), NEED_CORE, "")     \
     X(void, PixelStorei, (GLenum pname, GLint param), NEED_CORE, "")                      \
     X(void, Finish, (void), NEED_CORE, "")                                                \
+    X(void, PolygonOffset, (GLfloat factor, GLfloat units), NEED_CORE, "")                \
+    X(void, DrawBuffer, (GLenum buf), NEED_CORE, "")                                      \
+    X(void, ReadBuffer, (GLenum buf), NEED_CORE, "")                                      \
+    X(void, CopyTexSubImage2D, (GLenum target, GLint level, GLint xo, GLint yo, GLint x,  \
+                                GLint y, GLsizei w, GLsizei h), NEED_CORE, "")            \
+    X(void, TexImage1D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLint border, \
+                         GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "")     \
     /* fixed function (compatibility contexts) */                                         \
     X(void, MatrixMode, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                       \
     X(void, LoadMatrixf, (const GLfloat *m), STIN_CAP_FIXED_FUNCTION, "")                 \
@@ -58,6 +65,9 @@
     X(void, NormalPointer, (GLenum type, GLsizei stride, const void *p), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, TexCoordPointer, (GLint size, GLenum type, GLsizei stride, const void *p), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, TexEnvi, (GLenum target, GLenum pname, GLint param), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, TexGeni, (GLenum coord, GLenum pname, GLint param), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, TexGenfv, (GLenum coord, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, AlphaFunc, (GLenum func, GLfloat ref), STIN_CAP_FIXED_FUNCTION, "")           \
     /* multitexture (GL 1.3 / ARB) */                                                     \
     X(void, ActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glActiveTextureARB")    \
     X(void, ClientActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glClientActiveTextureARB") \
@@ -102,6 +112,11 @@
     X(void, DeleteVertexArrays, (GLsizei n, const GLuint *a), STIN_CAP_VAO, "")           \
     X(void, BindVertexArray, (GLuint a), STIN_CAP_VAO, "")                                \
     X(void, BindFramebuffer, (GLenum target, GLuint fb), STIN_CAP_FBO, "glBindFramebufferEXT") \
+    X(void, GenFramebuffers, (GLsizei n, GLuint *fb), STIN_CAP_FBO, "glGenFramebuffersEXT") \
+    X(void, DeleteFramebuffers, (GLsizei n, const GLuint *fb), STIN_CAP_FBO, "glDeleteFramebuffersEXT") \
+    X(void, FramebufferTexture2D, (GLenum target, GLenum att, GLenum textarget, GLuint tex, \
+                                   GLint level), STIN_CAP_FBO, "glFramebufferTexture2DEXT") \
+    X(GLenum, CheckFramebufferStatus, (GLenum target), STIN_CAP_FBO, "glCheckFramebufferStatusEXT") \
     X(void, GetFramebufferAttachmentParameteriv, (GLenum target, GLenum att, GLenum pname, \
                                                   GLint *v), NEED_GL30, "")               \
     X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")

@@ -92,6 +92,14 @@ static int enum_need(GLenum e)
     case GL_DEPTH_CLAMP: return STIN_CAP_DEPTH_CLAMP;
     case GL_LIGHT_MODEL_COLOR_CONTROL: return STIN_CAP_SEPARATE_SPECULAR;
     case GL_STENCIL_TEST_TWO_SIDE_EXT: return STIN_CAP_STENCIL_TWO_SIDE;
+    case GL_TEXTURE_COMPARE_MODE: case GL_TEXTURE_COMPARE_FUNC: case GL_COMPARE_R_TO_TEXTURE:
+    case GL_DEPTH_TEXTURE_MODE:
+        return STIN_CAP_SHADOW;
+    case GL_DEPTH_COMPONENT: case GL_DEPTH_COMPONENT24: return STIN_CAP_DEPTH_TEXTURE;
+    case GL_ADD_SIGNED: return STIN_CAP_TEXTURE_ENV_COMBINE;
+    case GL_ALPHA_TEST: case GL_TEXTURE_GEN_S: case GL_TEXTURE_GEN_T: case GL_TEXTURE_GEN_R:
+    case GL_TEXTURE_GEN_Q: case GL_TEXTURE_1D:
+        return STIN_CAP_FIXED_FUNCTION;
     case GL_INCR_WRAP: case GL_DECR_WRAP: return STIN_CAP_STENCIL_WRAP;
     case GL_TEXTURE_2D: return -1; /* enable-able only with fixed function: see below */
     default: return NEED_CORE;

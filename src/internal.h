@@ -218,6 +218,19 @@ struct stin_context {
     int volume_depth_clamp;   /* volumes drawn with GL_DEPTH_CLAMP */
     int volume_infinite;      /* projection moved the far plane to infinity */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
+    struct {
+        GLuint textures[32];  /* one per light slot: depth (map-depth) or intensity */
+        GLuint ramp;          /* map-combine: 1D ramp of light depth */
+        GLuint fbo;           /* with FBOs: render straight into the texture */
+        GLuint depth_scratch; /* map-combine with FBOs: the depth buffer of its pass */
+        uint32_t size;        /* allocated texels a side */
+        uint32_t used;        /* rendered this frame (no FBO: bounded by the viewport) */
+        int unit;             /* first texture unit of the shadow test */
+        unsigned char valid[32];
+        float texgen[32][16]; /* world -> shadow-map texture coordinates (rows s t r q) */
+        float ramp_plane[32][4]; /* world -> ramp coordinate (map-combine) */
+        int said_point, said_area;
+    } maps;
     int lights_per_pass;
     struct {
         GLuint cube;          /* normalisation cube map; 0 = DOT3 not in use */
@@ -309,6 +322,18 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
                         const int scissor[4]);
 /* Everything that differs per frame for shadow volumes is chosen here. */
 void stin__volume_frame_setup(stin_context *ctx);
+/* Fixed-function shadow maps (shadow_map_fixed.c). */
+int stin__maps_active(const stin_context *ctx);
+stin_result stin__maps_init(stin_context *ctx);
+void stin__maps_release(stin_context *ctx);
+/* Renders every spot and directional light's map (before the camera's clear). */
+void stin__maps_render(stin_context *ctx);
+/* 1 if light i has a map this frame; binds its test onto the shadow units. */
+int stin__maps_bind(stin_context *ctx, uint32_t light);
+void stin__maps_unbind(stin_context *ctx);
+/* Draws every draw's geometry with the current projection and ctx->frame.view
+ * (path_fixed.c), no materials: shadow-map casters. */
+void stin__fixed_draw_geometry(stin_context *ctx);
 /* Screen rectangle a light of finite range can touch; 0 when unbounded. */
 int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
 /* ---- surface: DOT3 bump mapping on the fixed-function path (surface_dot3.c) ----

@@ -145,6 +145,13 @@ static void draw_set(stin_context *ctx, int which, int materials)
     }
 }
 
+void stin__fixed_draw_geometry(stin_context *ctx)
+{
+    ctx->bound_mesh = 0xffffffffu;
+    draw_set(ctx, STIN__ALL, 0);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
 static void pass_state(stin_context *ctx, int additive, int blend_alpha)
 {
     if (additive) {

@@ -34,6 +34,8 @@ uint64_t stin__technique_needs(stin_technique t)
     case STIN_TECH_LIGHTING_GLSL110: return stin__tier_needs(STIN_TIER_GL2);
     case STIN_TECH_LIGHTING_FIXED: return stin__tier_needs(STIN_TIER_GL1);
     case STIN_TECH_SHADOWS_VOLUME: return BIT(STENCIL);
+    case STIN_TECH_SHADOWS_MAP_DEPTH: return BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE);
+    case STIN_TECH_SHADOWS_MAP_COMBINE: return BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE);
     case STIN_TECH_SURFACE_DOT3:
         return BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) |
                BIT(TEXTURE_CUBE_MAP) | BIT(FIXED_FUNCTION);
@@ -50,7 +52,14 @@ uint64_t stin__technique_needs(stin_technique t)
  * pick it, even where the context has the capabilities. */
 stin_technique stin__technique_lighting(stin_technique t)
 {
-    return t == STIN_TECH_SURFACE_DOT3 ? STIN_TECH_LIGHTING_FIXED : STIN_TECH_NONE;
+    switch (t) {
+    case STIN_TECH_SURFACE_DOT3:
+    case STIN_TECH_SHADOWS_MAP_DEPTH: /* texture-environment shadow tests, likewise */
+    case STIN_TECH_SHADOWS_MAP_COMBINE:
+        return STIN_TECH_LIGHTING_FIXED;
+    default:
+        return STIN_TECH_NONE;
+    }
 }
 
 stin_feature stin__technique_feature(stin_technique t)

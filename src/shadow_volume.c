@@ -31,12 +31,22 @@ static int is_perspective(const float p[16])
     return p[3] == 0.0f && p[7] == 0.0f && p[11] == -1.0f && p[15] == 0.0f;
 }
 
+static int point_lights(const stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->light_count; i++)
+        if (ctx->lights[i].type == STIN_LIGHT_POINT)
+            return 1;
+    return 0;
+}
+
 void stin__volume_frame_setup(stin_context *ctx)
 {
     stin__memcopy(ctx->projection, ctx->frame.projection, sizeof ctx->projection);
     ctx->volume_depth_clamp = 0;
     ctx->volume_infinite = 0;
-    if (ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME &&
+    if ((ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME ||
+         (stin__maps_active(ctx) && point_lights(ctx))) &&
         ctx->light_count > 0) {
         if (is_perspective(ctx->projection)) {
             /* Row 3 of the frustum to (eps - 1, (eps - 2) n): the far plane goes to
@@ -223,10 +233,12 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
                              STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)));
     GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
     uint32_t i;
-    if (!NO_SCISSOR(scissor)) {
-        GL_ENABLE(ctx, GL_SCISSOR_TEST);
-        GL(ctx, Scissor)(scissor[0], scissor[1], scissor[2], scissor[3]);
-    }
+    /* The frame's viewport at most: the stencil of the rest of the
+     * framebuffer (other viewports of a no_clear frame) is not ours. */
+    if (NO_SCISSOR(scissor))
+        scissor = ctx->frame.viewport;
+    GL_ENABLE(ctx, GL_SCISSOR_TEST);
+    GL(ctx, Scissor)(scissor[0], scissor[1], scissor[2], scissor[3]);
     GL(ctx, StencilMask)(0xffffffffu);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);

@@ -270,6 +270,8 @@ const char *stin_feature_name(stin_feature f);
     X(LIGHTING_GLSL110, "glsl110-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL2) \
     X(LIGHTING_FIXED, "fixed-function", STIN_FEATURE_LIGHTING, STIN_TIER_GL1)      \
     X(SHADOWS_VOLUME, "volume", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)       \
+    X(SHADOWS_MAP_DEPTH, "map-depth", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
+    X(SHADOWS_MAP_COMBINE, "map-combine", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
     X(SHADOWS_OFF, "off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)             \
     X(SURFACE_DOT3, "dot3", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
     X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)
@@ -316,6 +318,8 @@ typedef struct stin_desc {
     uint32_t soft_shadow_samples;      /* point samples of an area light (radius > 0),
                                         * default 8, at most 64 */
     uint32_t debug_flags;              /* STIN_DEBUG_*: diagnostics, default 0 */
+    uint32_t shadow_map_size;          /* texels a side of a light's shadow map, default
+                                        * 1024; a power of two, at most 8192 */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -430,6 +434,9 @@ typedef struct stin_light_desc {
                              * point samples (stin_light_sample); default 0 */
     float range;            /* > 0: the light reaches no farther (its attenuation makes it
                              * negligible); shadow passes are scissored to it. 0 = unbounded */
+    float shadow_offset[2]; /* shadow-map polygon offset (factor, units); default
+                             * (1.1, 4.0) when both are 0 */
+    int shadow_offset_off;  /* 1: no polygon offset (shows acne; for tests) */
 } stin_light_desc;
 
 typedef struct stin_material {
@@ -472,6 +479,7 @@ typedef struct stin_frame_stats {
     uint32_t draws, lights, passes, triangles;
     uint32_t shadow_volume_triangles; /* volume sides and caps drawn */
     uint32_t zfail_casters, zpass_casters; /* per light sample */
+    uint32_t shadow_map_size;  /* texels a side the maps were rendered at (0: none) */
     uint32_t dropped_draws, dropped_lights;
 } stin_frame_stats;
 

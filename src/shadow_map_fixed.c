@@ -1,0 +1,559 @@
+/* Shadow maps without shaders (the GL1 tier's two map techniques).
+ *
+ * map-depth: ARB_depth_texture + ARB_shadow. The light's depth (with polygon
+ * offset) goes into a depth texture — rendered into an FBO where there is one,
+ * else into the frame's own framebuffer before its clear and copied out. The
+ * lit pass generates (s, t, r, q) in light clip space by eye-linear texgen and
+ * the texture unit compares r/q with the stored depth (LEQUAL), LINEAR filtering
+ * giving the hardware's 2x2 PCF, and modulates the light's colour.
+ *
+ * map-combine: for TNT-class hardware without depth textures. The light's
+ * depth is drawn as colour (a 1D ramp indexed by texgen of the light-eye
+ * depth, near/far fitted to the scene so 8 bits cover it) and copied into an
+ * INTENSITY8 texture. In the lit pass one unit projects the map (stored depth
+ * in alpha), the next looks the fragment's own light depth up in the same
+ * ramp, and texture_env_combine forms map - own + 0.5 (ADD_SIGNED with
+ * ONE_MINUS_SRC_ALPHA); the alpha test GEQUAL 0.5 keeps the lit fragments.
+ *
+ * Spot lights get a perspective map over their cone, directional lights an
+ * orthographic one fitted to the draws. Point lights have no single map: they
+ * fall back to stencil volumes (or none) and the log says so once. */
+#include "internal.h"
+
+#define RAMP_SIZE 256
+
+int stin__maps_active(const stin_context *ctx)
+{
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
+    return t == STIN_TECH_SHADOWS_MAP_DEPTH || t == STIN_TECH_SHADOWS_MAP_COMBINE;
+}
+
+static int combine(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_MAP_COMBINE;
+}
+
+/* map-combine renders into its texture where FBOs and depth textures exist. */
+static int combine_fbo(const stin_context *ctx)
+{
+    uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE);
+    return combine(ctx) && (ctx->caps.present & need) == need;
+}
+
+static uint32_t pow2_at_most(uint32_t n)
+{
+    uint32_t p = 1;
+    while (p * 2u <= n)
+        p *= 2u;
+    return p;
+}
+
+stin_result stin__maps_init(stin_context *ctx)
+{
+    uint32_t i, size = ctx->desc.shadow_map_size;
+    int units = combine(ctx) ? 2 : 1;
+    if (!stin__maps_active(ctx))
+        return STIN_OK;
+    /* after the surface technique's units (DOT3 uses four), else after albedo */
+    ctx->maps.unit = ctx->sel.choice[STIN_FEATURE_SURFACE].technique == STIN_TECH_SURFACE_DOT3 ? 4 : 1;
+    if (ctx->maps.unit + units > ctx->caps.max_texture_units) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
+                  "shadows: %s needs texture units %d..%d, the context has %d",
+                  stin_technique_name(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique),
+                  ctx->maps.unit, ctx->maps.unit + units - 1, ctx->caps.max_texture_units);
+        return STIN_ERROR_UNSUPPORTED;
+    }
+    if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
+        size = pow2_at_most((uint32_t)ctx->caps.max_texture_size);
+    ctx->maps.size = size;
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    for (i = 0; i < ctx->desc.max_lights; i++) {
+        GLuint *t = &ctx->maps.textures[i];
+        GL(ctx, GenTextures)(1, t);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, *t);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        if (combine(ctx)) {
+            /* stored depths must not be averaged: nearest. Rendered into (FBO:
+             * RGBA8, colour-renderable, the ramp in every channel) or copied
+             * into (INTENSITY8). */
+            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+            GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, combine_fbo(ctx) ? GL_RGBA8 : GL_INTENSITY8,
+                                (GLsizei)size, (GLsizei)size, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE,
+                                NULL);
+        } else {
+            /* compare, then filter: LINEAR is the hardware's 2x2 PCF */
+            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_MODE)(
+                GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+            GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_FUNC)(GL_TEXTURE_2D,
+                                                                 GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+            GL_ENUM(ctx, TexParameteri, GL_DEPTH_TEXTURE_MODE)(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE,
+                                                               GL_INTENSITY);
+            GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(
+                GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, (GLsizei)size, (GLsizei)size, 0,
+                GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+        }
+    }
+    if (combine(ctx)) {
+        unsigned char ramp[RAMP_SIZE];
+        for (i = 0; i < RAMP_SIZE; i++)
+            ramp[i] = (unsigned char)i;
+        GL(ctx, GenTextures)(1, &ctx->maps.ramp);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->maps.ramp);
+        GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
+        GL(ctx, TexImage1D)(GL_TEXTURE_1D, 0, GL_INTENSITY8, RAMP_SIZE, 0, GL_LUMINANCE,
+                            GL_UNSIGNED_BYTE, ramp);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
+    }
+    if (combine_fbo(ctx)) {
+        GL(ctx, GenTextures)(1, &ctx->maps.depth_scratch);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.depth_scratch);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24,
+                                                       (GLsizei)size, (GLsizei)size, 0,
+                                                       GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+        GL(ctx, GenFramebuffers)(1, &ctx->maps.fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->maps.fbo);
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                      ctx->maps.depth_scratch, 0);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
+    } else if (!combine(ctx) && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO))) {
+        /* depth only: no colour buffer to draw or read */
+        GL(ctx, GenFramebuffers)(1, &ctx->maps.fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->maps.fbo);
+        GL(ctx, DrawBuffer)(GL_NONE);
+        GL(ctx, ReadBuffer)(GL_NONE);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
+    }
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    stin__gl_check_errors(ctx, "shadow-map set-up");
+    return STIN_OK;
+}
+
+void stin__maps_release(stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < 32; i++)
+        if (ctx->maps.textures[i]) {
+            GL(ctx, DeleteTextures)(1, &ctx->maps.textures[i]);
+            ctx->maps.textures[i] = 0;
+        }
+    if (ctx->maps.ramp)
+        GL(ctx, DeleteTextures)(1, &ctx->maps.ramp);
+    if (ctx->maps.fbo)
+        GL(ctx, DeleteFramebuffers)(1, &ctx->maps.fbo);
+    if (ctx->maps.depth_scratch)
+        GL(ctx, DeleteTextures)(1, &ctx->maps.depth_scratch);
+    ctx->maps.ramp = ctx->maps.fbo = ctx->maps.depth_scratch = 0;
+}
+
+/* ---- the light's camera ------------------------------------------------- */
+
+static float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+static void look_along(float m[16], const float eye[3], const float dir[3])
+{
+    float up[3] = {0, 1, 0}, s[3], u[3], f[3] = {dir[0], dir[1], dir[2]}, l;
+    if (f[1] > 0.99f || f[1] < -0.99f) {
+        up[1] = 0;
+        up[0] = 1;
+    }
+    s[0] = f[1] * up[2] - f[2] * up[1];
+    s[1] = f[2] * up[0] - f[0] * up[2];
+    s[2] = f[0] * up[1] - f[1] * up[0];
+    l = stin__sqrtf(dot3(s, s));
+    s[0] /= l;
+    s[1] /= l;
+    s[2] /= l;
+    u[0] = s[1] * f[2] - s[2] * f[1];
+    u[1] = s[2] * f[0] - s[0] * f[2];
+    u[2] = s[0] * f[1] - s[1] * f[0];
+    stin__mat4_identity(m);
+    m[0] = s[0], m[4] = s[1], m[8] = s[2];
+    m[1] = u[0], m[5] = u[1], m[9] = u[2];
+    m[2] = -f[0], m[6] = -f[1], m[10] = -f[2];
+    m[12] = -dot3(s, eye);
+    m[13] = -dot3(u, eye);
+    m[14] = dot3(f, eye);
+}
+
+/* Bounding spheres of every draw in world space, folded into a depth range
+ * along the light's view and, for directional lights, a lateral radius. */
+static void fit(const stin_context *ctx, const float view[16], float *near_d, float *far_d,
+                float *half_width, float center_out[3])
+{
+    uint32_t i;
+    float lo = 1e30f, hi = -1e30f, lat = 0.0f;
+    float cmin[3] = {1e30f, 1e30f, 1e30f}, cmax[3] = {-1e30f, -1e30f, -1e30f};
+    int k;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[i];
+        const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
+        float c[3], w[3], e[3], r2 = 0, r;
+        int corner;
+        for (k = 0; k < 3; k++)
+            c[k] = 0.5f * (info->bounds_min[k] + info->bounds_max[k]);
+        stin__mat4_transform_point(d->transform, c, w);
+        for (corner = 0; corner < 8; corner++) {
+            float p[3], q[3], dd = 0;
+            for (k = 0; k < 3; k++)
+                p[k] = (corner >> k) & 1 ? info->bounds_max[k] : info->bounds_min[k];
+            stin__mat4_transform_point(d->transform, p, q);
+            for (k = 0; k < 3; k++)
+                dd += (q[k] - w[k]) * (q[k] - w[k]);
+            if (dd > r2)
+                r2 = dd;
+        }
+        r = stin__sqrtf(r2);
+        stin__mat4_transform_point(view, w, e);
+        if (-e[2] - r < lo) lo = -e[2] - r;
+        if (-e[2] + r > hi) hi = -e[2] + r;
+        for (k = 0; k < 2; k++) {
+            float a = (e[k] < 0 ? -e[k] : e[k]) + r;
+            if (a > lat)
+                lat = a;
+        }
+        for (k = 0; k < 3; k++) {
+            if (w[k] - r < cmin[k]) cmin[k] = w[k] - r;
+            if (w[k] + r > cmax[k]) cmax[k] = w[k] + r;
+        }
+    }
+    *near_d = lo;
+    *far_d = hi;
+    *half_width = lat;
+    for (k = 0; k < 3; k++)
+        center_out[k] = 0.5f * (cmin[k] + cmax[k]);
+}
+
+static void perspective(float m[16], float fovy_deg, float n, float f)
+{
+    float half = 0.5f * fovy_deg, c = stin__cos_deg(half), s = stin__cos_deg(90.0f - half);
+    float cot = c / s;
+    stin__memzero(m, 16 * sizeof(float));
+    m[0] = cot;
+    m[5] = cot;
+    m[10] = -(f + n) / (f - n);
+    m[11] = -1.0f;
+    m[14] = -2.0f * f * n / (f - n);
+}
+
+static void ortho(float m[16], float half_width, float n, float f)
+{
+    stin__mat4_identity(m);
+    m[0] = 1.0f / half_width;
+    m[5] = 1.0f / half_width;
+    m[10] = -2.0f / (f - n);
+    m[14] = -(f + n) / (f - n);
+}
+
+/* The light's view and projection, and the [near, far] its depth spans. */
+static int light_camera(const stin_context *ctx, const stin_light_desc *l, float view[16],
+                        float proj[16], float *n_out, float *f_out)
+{
+    float n, f, half, center[3], eye[3];
+    int k;
+    if (l->type == STIN_LIGHT_SPOT) {
+        look_along(view, l->position, l->direction);
+        fit(ctx, view, &n, &f, &half, center);
+        if (f <= 0.0f)
+            return 0; /* everything is behind the spot */
+        if (n < f * 1e-3f)
+            n = f * 1e-3f; /* 24 bits can span a 1:1000 range */
+        {
+            float fov = 2.0f * l->spot_cutoff_deg + 2.0f;
+            perspective(proj, fov > 170.0f ? 170.0f : fov, n, f);
+        }
+    } else if (l->type == STIN_LIGHT_DIRECTIONAL) {
+        float probe[16];
+        stin__mat4_identity(probe);
+        look_along(probe, (const float[3]){0, 0, 0}, l->direction);
+        fit(ctx, probe, &n, &f, &half, center);
+        for (k = 0; k < 3; k++) /* back off along the light so every draw is in front */
+            eye[k] = center[k] - l->direction[k] * (f - n + 1.0f);
+        look_along(view, eye, l->direction);
+        fit(ctx, view, &n, &f, &half, center);
+        if (n < 1e-3f)
+            n = 1e-3f;
+        ortho(proj, half > 0 ? half : 1.0f, n, f);
+    } else {
+        return 0;
+    }
+    *n_out = n;
+    *f_out = f;
+    return 1;
+}
+
+/* ---- rendering the maps -------------------------------------------------- */
+
+static void set_offset(stin_context *ctx, const stin_light_desc *l)
+{
+    float factor = l->shadow_offset[0], units = l->shadow_offset[1];
+    if (l->shadow_offset_off) {
+        GL_DISABLE(ctx, GL_POLYGON_OFFSET_FILL);
+        return;
+    }
+    if (factor == 0.0f && units == 0.0f) {
+        factor = 1.1f;
+        units = 4.0f;
+    }
+    GL_ENABLE(ctx, GL_POLYGON_OFFSET_FILL);
+    GL(ctx, PolygonOffset)(factor, units);
+}
+
+/* Eye-linear plane of the light-eye depth mapped to [0, 1] over [n, f],
+ * specified while the modelview is the identity (light-eye coordinates). */
+static void ramp_texgen_light_eye(stin_context *ctx, float n, float f)
+{
+    float plane[4] = {0, 0, -1.0f / (f - n), -n / (f - n)};
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)((const float[16]){1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
+    GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+    GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, plane);
+    GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
+}
+
+static void render_one(stin_context *ctx, uint32_t li, const float view[16], const float proj[16],
+                       float n, float f)
+{
+    const stin_light_desc *l = &ctx->lights[li];
+    const int *vp = ctx->frame.viewport;
+    uint32_t used = ctx->maps.used;
+    float saved_view[16];
+    int fbo = ctx->maps.fbo != 0;
+    if (fbo) {
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->maps.fbo);
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER,
+                                      combine(ctx) ? GL_COLOR_ATTACHMENT0 : GL_DEPTH_ATTACHMENT,
+                                      GL_TEXTURE_2D, ctx->maps.textures[li], 0);
+        GL(ctx, Viewport)(0, 0, (GLsizei)used, (GLsizei)used);
+    } else {
+        GL(ctx, Viewport)(vp[0], vp[1], (GLsizei)used, (GLsizei)used);
+        GL_ENABLE(ctx, GL_SCISSOR_TEST);
+        GL(ctx, Scissor)(vp[0], vp[1], (GLsizei)used, (GLsizei)used);
+    }
+    GL(ctx, DepthMask)(GL_TRUE);
+    GL(ctx, ClearDepth)(1.0);
+    GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
+    GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (combine(ctx) ? GL_COLOR_BUFFER_BIT : 0u));
+    GL_ENABLE(ctx, GL_DEPTH_TEST);
+    GL(ctx, DepthFunc)(GL_LESS);
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, LoadMatrixf)(proj);
+    if (combine(ctx)) {
+        GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        GL_DISABLE(ctx, GL_POLYGON_OFFSET_FILL);
+        GL(ctx, ActiveTexture)(GL_TEXTURE0);
+        GL_ENABLE(ctx, GL_TEXTURE_1D);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->maps.ramp);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+        ramp_texgen_light_eye(ctx, n, f);
+    } else {
+        GL(ctx, ColorMask)(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        set_offset(ctx, l);
+    }
+    stin__memcopy(saved_view, ctx->frame.view, sizeof saved_view);
+    stin__memcopy(ctx->frame.view, view, sizeof saved_view);
+    stin__fixed_draw_geometry(ctx);
+    stin__memcopy(ctx->frame.view, saved_view, sizeof saved_view);
+    if (combine(ctx)) {
+        GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
+        GL_DISABLE(ctx, GL_TEXTURE_1D);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
+    }
+    GL_DISABLE(ctx, GL_POLYGON_OFFSET_FILL);
+    GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    if (fbo) {
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER,
+                                      combine(ctx) ? GL_COLOR_ATTACHMENT0 : GL_DEPTH_ATTACHMENT,
+                                      GL_TEXTURE_2D, 0, 0);
+    } else {
+        /* the colour (ramp) or depth of the region into the light's texture */
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.textures[li]);
+        GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, vp[0], vp[1], (GLsizei)used,
+                                   (GLsizei)used);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+        GL_DISABLE(ctx, GL_SCISSOR_TEST);
+    }
+    ctx->stats.passes++;
+}
+
+/* World -> texture: bias/scale into the used corner of the texture, then the
+ * light's projection and view. Rows are the texgen planes. */
+static void store_texgen(stin_context *ctx, uint32_t li, const float view[16],
+                         const float proj[16], float n, float f)
+{
+    float vp[16], bias[16], m[16];
+    float scale = (float)ctx->maps.used / (float)ctx->maps.size;
+    int r, c;
+    stin__mat4_mul(vp, proj, view);
+    stin__mat4_identity(bias);
+    bias[0] = bias[5] = 0.5f * scale;
+    bias[12] = bias[13] = 0.5f * scale;
+    bias[10] = bias[14] = 0.5f;
+    stin__mat4_mul(m, bias, vp);
+    for (r = 0; r < 4; r++)
+        for (c = 0; c < 4; c++)
+            ctx->maps.texgen[li][4 * r + c] = m[4 * c + r];
+    /* ramp coordinate of the fragment's own light-eye depth, a little nearer
+     * than the stored one so a surface does not shadow itself (8-bit steps) */
+    {
+        float bias_steps = ctx->lights[li].shadow_offset_off ? 0.0f : 1.5f;
+        float k = -1.0f / (f - n), o = -n / (f - n) - bias_steps / (float)(RAMP_SIZE - 1);
+        for (c = 0; c < 4; c++)
+            ctx->maps.ramp_plane[li][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
+    }
+}
+
+void stin__maps_render(stin_context *ctx)
+{
+    uint32_t i;
+    const int *vp = ctx->frame.viewport;
+    uint32_t limit = ctx->maps.size;
+    if (!ctx->maps.fbo) { /* drawn in the frame's own framebuffer */
+        uint32_t fit = (uint32_t)(vp[2] < vp[3] ? vp[2] : vp[3]);
+        if (fit < limit)
+            limit = pow2_at_most(fit);
+    }
+    ctx->maps.used = limit;
+    ctx->stats.shadow_map_size = limit;
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, PushMatrix)();
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, PushMatrix)();
+    GL(ctx, EnableClientState)(GL_VERTEX_ARRAY);
+    GL_DISABLE(ctx, GL_LIGHTING);
+    for (i = 0; i < ctx->light_count && i < 32; i++) {
+        const stin_light_desc *l = &ctx->lights[i];
+        float view[16], proj[16], n, f;
+        ctx->maps.valid[i] = 0;
+        if (l->type == STIN_LIGHT_POINT) {
+            if (!ctx->maps.said_point) {
+                stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                          "shadows: point lights have no single shadow map; they use %s",
+                          (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) ? "stencil volumes"
+                                                                               : "no shadows");
+                ctx->maps.said_point = 1;
+            }
+            continue;
+        }
+        if (l->radius > 0.0f && !ctx->maps.said_area) {
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "shadows: shadow maps treat area lights as points (hard shadows)");
+            ctx->maps.said_area = 1;
+        }
+        if (!light_camera(ctx, l, view, proj, &n, &f))
+            continue;
+        render_one(ctx, i, view, proj, n, f);
+        store_texgen(ctx, i, view, proj, n, f);
+        ctx->maps.valid[i] = 1;
+    }
+    GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, PopMatrix)();
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, PopMatrix)();
+    if (ctx->maps.fbo)
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
+    stin__gl_check_errors(ctx, "shadow maps");
+}
+
+/* ---- the lit pass's shadow test ----------------------------------------- */
+
+static void texgen_planes(stin_context *ctx, const float *rows, int with_r)
+{
+    static const GLenum coord[4] = {GL_S, GL_T, GL_R, GL_Q};
+    static const GLenum gen[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
+                                  GL_TEXTURE_GEN_Q};
+    int i;
+    for (i = 0; i < 4; i++) {
+        if (i == 2 && !with_r) {
+            GL_DISABLE(ctx, GL_TEXTURE_GEN_R);
+            continue;
+        }
+        GL(ctx, TexGeni)(coord[i], GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+        GL(ctx, TexGenfv)(coord[i], GL_EYE_PLANE, rows + 4 * i);
+        GL_ENABLE(ctx, gen[i]);
+    }
+}
+
+int stin__maps_bind(stin_context *ctx, uint32_t li)
+{
+    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->maps.unit);
+    if (li >= 32 || !ctx->maps.valid[li])
+        return 0;
+    /* planes are given in world space: specify them under the camera's view,
+     * whose inverse GL applies, so any draw's eye coordinates map back */
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view);
+    GL(ctx, ActiveTexture)(u);
+    GL_ENABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.textures[li]);
+    texgen_planes(ctx, ctx->maps.texgen[li], !combine(ctx));
+    if (!combine(ctx)) {
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    } else {
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_ALPHA);
+        /* next unit: stored - own + 0.5 into alpha, colour passed on */
+        GL(ctx, ActiveTexture)(u + 1u);
+        GL_ENABLE(ctx, GL_TEXTURE_1D);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->maps.ramp);
+        GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
+        GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->maps.ramp_plane[li]);
+        GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);
+        GL_ENUM(ctx, TexEnvi, GL_ADD_SIGNED)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_ADD_SIGNED);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_ALPHA);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_TEXTURE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND1_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        GL_ENABLE(ctx, GL_ALPHA_TEST);
+        GL(ctx, AlphaFunc)(GL_GEQUAL, 0.5f);
+    }
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    /* the shadow must darken the specular term too: one colour through the units */
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
+        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
+                                                                GL_SINGLE_COLOR);
+    return 1;
+}
+
+void stin__maps_unbind(stin_context *ctx)
+{
+    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->maps.unit);
+    GL(ctx, ActiveTexture)(u);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_T);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_R);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_Q);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    if (combine(ctx)) {
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        GL(ctx, ActiveTexture)(u + 1u);
+        GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
+        GL_DISABLE(ctx, GL_TEXTURE_1D);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        GL_DISABLE(ctx, GL_ALPHA_TEST);
+    }
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
+        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
+                                                                GL_SEPARATE_SPECULAR_COLOR);
+}
