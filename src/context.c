@@ -223,7 +223,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     if (!need) {
         log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "stin_create: capacities out of range (max_lights <= 32, "
-                  "max_mesh_triangles <= max_triangles)");
+                  "max_mesh_triangles <= max_triangles, soft_shadow_samples <= 64, "
+                  "shadow_map_size a power of two <= 8192)");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     if (!memory || memory_bytes < need) {

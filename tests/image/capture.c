@@ -37,6 +37,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.max_gl_version = profile->max_gl_version;
     d.techniques[STIN_FEATURE_SHADOWS] = o->shadows;
     d.debug_flags = o->debug_flags;
+    d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);
     size = stin_memory_size(&d);
     block = malloc(size);

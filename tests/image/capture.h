@@ -14,6 +14,7 @@ typedef struct capture_options {
     stin_technique shadows;   /* forced shadow technique */
     uint32_t debug_flags;     /* STIN_DEBUG_* */
     uint64_t extra_mask;      /* capabilities hidden on top of the profile's */
+    uint32_t shadow_map_size; /* 0: stin's default */
 } capture_options;
 
 typedef struct capture {

@@ -323,6 +323,7 @@ int main(int argc, char **argv)
         for (i = first_scene; i < argc; i++) {
             test_scene(&r, tiers[t], argv[i]);
             shadow_tests(&r, tiers[t], argv[i]);
+            map_tests(&r, tiers[t], argv[i]);
             dot3_tests(&r, tiers[t], argv[i]);
         }
     }

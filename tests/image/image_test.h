@@ -17,6 +17,9 @@ typedef struct run {
 void report(run *r, const char *verdict, const char *name, const char *fmt, ...);
 const char *scene_base_name(const char *path);
 
+/* Fixed-function shadow-map tests of one scene (map_test.c; GL1 only). */
+void map_tests(run *r, stin_tier tier, const char *path);
+
 /* Shadow-volume tests of one scene at one tier (shadow_test.c). */
 void shadow_tests(run *r, stin_tier tier, const char *path);
 /* DOT3 bump mapping of one scene at one tier, plus a built-in analytic scene

@@ -229,6 +229,7 @@ static int render(const shadow_case *c, const scene *s, uint32_t debug, uint64_t
 {
     capture_options o;
     char err[512], name[256];
+    memset(&o, 0, sizeof o);
     o.tier = c->tier;
     o.shadows = STIN_TECH_SHADOWS_VOLUME;
     o.debug_flags = debug;

@@ -77,6 +77,9 @@ typedef struct scene_light {
     float range;               /* point/spot: distance past which the light is negligible
                                   (stin scissors its passes to it); 0 = unbounded, default 0.
                                   Not part of the shading: the test reference ignores it */
+    float shadow_offset[2];    /* spot/directional "shadow_offset": shadow-map polygon offset
+                                  (factor, units); (0, 0) = stin's default (1.1, 4) */
+    int shadow_offset_off;     /* not in files: tests turn the offset off with it */
 } scene_light;
 
 typedef struct scene_camera {

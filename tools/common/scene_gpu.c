@@ -140,6 +140,9 @@ void scene_gpu_light(const scene_light *in, stin_light_desc *out)
     memcpy(out->attenuation, in->attenuation, sizeof out->attenuation);
     out->spot_cutoff_deg = in->spot_cutoff_deg;
     out->spot_exponent = in->spot_exponent;
+    out->shadow_offset[0] = in->shadow_offset[0];
+    out->shadow_offset[1] = in->shadow_offset[1];
+    out->shadow_offset_off = in->shadow_offset_off;
     out->radius = in->radius;
     out->range = in->range;
 }

@@ -498,10 +498,11 @@ static int parse_light(scene_parser *p, const cJSON *j, const char *where, scene
                                               "attenuation", "radius", "range", NULL };
     static const char *const spot_keys[] = { "type", "position", "direction", "color", "intensity",
                                              "attenuation", "radius", "range", "cutoff", "exponent",
-                                             NULL };
-    static const char *const dir_keys[] = { "type", "direction", "color", "intensity", NULL };
+                                             "shadow_offset", NULL };
+    static const char *const dir_keys[] = { "type", "direction", "color", "intensity",
+                                            "shadow_offset", NULL };
     const scene_light d = { SCENE_LIGHT_POINT, { 0, 0, 0 }, { 0, -1, 0 }, { 1, 1, 1 }, 1,
-                            { 1, 0, 0 }, 45, 0, 0, 0 };
+                            { 1, 0, 0 }, 45, 0, 0, 0, { 0, 0 }, 0 };
     char type[16] = "", path[256];
     *l = d;
     if (!cJSON_IsObject(j))
@@ -532,6 +533,7 @@ static int parse_light(scene_parser *p, const cJSON *j, const char *where, scene
         !scene_get_vector(p, j, "attenuation", where, 3, SCENE_NONNEGATIVE, l->attenuation) ||
         !scene_get_number(p, j, "radius", where, SCENE_NONNEGATIVE, &l->radius) ||
         !scene_get_number(p, j, "range", where, SCENE_NONNEGATIVE, &l->range) ||
+        !scene_get_vector(p, j, "shadow_offset", where, 2, SCENE_ANY, l->shadow_offset) ||
         !scene_get_number(p, j, "cutoff", where, SCENE_POSITIVE, &l->spot_cutoff_deg) ||
         !scene_get_number(p, j, "exponent", where, SCENE_NONNEGATIVE, &l->spot_exponent) ||
         !unit_direction(p, where, l->direction))
