@@ -54,7 +54,20 @@
  *
  * SHADOWS
  * The shadow feature's chain: "volume" (stencil shadow volumes, exact; needs a
- * stencil buffer), then "off". Volumes: silhouettes from the adjacency built at
+ * stencil buffer), "map-depth", "map-combine", then "off".
+ * Shadow maps (fixed-function lighting only; spot and directional lights, a
+ * point light falls back to volumes where there is a stencil buffer and says
+ * so): "map-depth" uses ARB_depth_texture + ARB_shadow, compare LEQUAL with
+ * LINEAR filtering (2x2 PCF), polygon offset per light (shadow_offset,
+ * default factor 1.1, units 4); "map-combine" needs only texture_env_combine:
+ * the light's depth drawn as an 8-bit ramp over a near/far fitted to the draws,
+ * compared in the combiner, kept by the alpha test. Maps are desc.shadow_map_size
+ * texels a side where the context has FBOs; without them they are drawn in the
+ * frame's own framebuffer before its clear and so are at most the viewport's
+ * largest power of two (stin_frame_stats.shadow_map_size says what was used).
+ * Spot maps cover the cone; directional maps are orthographic, fitted to the
+ * bounds of all draws. Area lights are hard-shadowed by maps.
+ * Volumes: silhouettes from the adjacency built at
  * mesh creation, extracted on the CPU each frame into the block; z-pass per
  * caster where the near-clip region cannot reach its volume, else z-fail with
  * caps; two-sided stencil with wrap in one pass where present, else two culled

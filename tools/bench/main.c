@@ -1,8 +1,10 @@
 /* stin-bench: median frame time of libstin's unshadowed path per tier on the
  * spheres scenes, next to a minimal raw-GL loop drawing the same geometry in
  * the same process, then what stencil shadow volumes cost on top of stin's
- * unshadowed frame; printed as markdown tables (docs/benchmarks.md). */
+ * unshadowed frame, then what the GL1 shadow maps cost at each map size;
+ * printed as markdown tables (docs/benchmarks.md). */
 #include "bench_machine.h"
+#include "bench_maps.h"
 #include "bench_run.h"
 #include "bench_shadow.h"
 #include "raw_gl.h"
@@ -21,6 +23,10 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 #define DEFAULT_SCENES                                                                   \
     "tests/scenes/spheres-18k.json,tests/scenes/spheres-76k.json,"                       \
     "tests/scenes/spheres-174k.json"
+#define DEFAULT_MAPS_SCENE "tests/scenes/spheres-18k-spot.json"
+
+/* The sections; --shadows / --maps pick only those named, --no-* drop one. */
+enum { SECTION_RAW = 1, SECTION_SHADOWS = 2, SECTION_MAPS = 4 };
 
 typedef struct options {
     const char *platform, *shader_dir;
@@ -29,9 +35,12 @@ typedef struct options {
     int scene_count;
     int width, height, frames, warmup, setups, quick, verbose;
     stin_tier tier; /* AUTO: every tier */
-    int raw_section, shadow_section; /* which sections run */
+    int raw_section, shadow_section, maps_section; /* which sections run */
     int shadow_frames, shadow_setups, small_frames;
     int light_counts[SHADOW_MAX_COUNTS], count_n;
+    const char *maps_scene;
+    int maps_frames, maps_setups, maps_no_fbo;
+    int map_sizes[MAPS_MAX_SIZES], map_size_n;
 } options;
 
 static void usage(FILE *f)
@@ -56,8 +65,19 @@ static void usage(FILE *f)
             "  --shadow-frames N         timed frames per side, set-up and light count (default 7)\n"
             "  --shadow-setups N         fresh context pairs per scene (default 2)\n"
             "  --shadow-small-frames N   timed frames per side at 64x36 (default 7)\n"
+            "shadow-map section (gl1; runs after the shadow-volume section by default):\n"
+            "  --maps                    run only the shadow-map section (with --shadows: both)\n"
+            "  --no-maps                 skip it\n"
+            "  --maps-scene FILE         scene with a spot or directional light\n"
+            "                            (default " DEFAULT_MAPS_SCENE ")\n"
+            "  --maps-sizes 512,1024     map sizes, powers of two 16..8192, at most %d\n"
+            "                            (default 512,1024,2048,4096)\n"
+            "  --maps-frames N           timed frames per side, set-up and row (default 15)\n"
+            "  --maps-setups N           fresh shadows-off context per set-up (default 3)\n"
+            "  --maps-no-fbo             hide the FBO capability from stin (maps drawn in the\n"
+            "                            frame's framebuffer, at most the viewport's size)\n"
             "exit codes: 0 ok, 1 failure, 2 bad input, 3 the --tier is unsupported here\n",
-            SHADOW_MAX_LIGHTS, SHADOW_MAX_COUNTS);
+            SHADOW_MAX_LIGHTS, SHADOW_MAX_COUNTS, MAPS_MAX_SIZES);
 }
 
 static int parse_int(const char *s, int lo, int hi, int *out)
@@ -101,10 +121,26 @@ static int parse_light_counts(options *o, const char *v)
     return o->count_n > 0;
 }
 
+static int parse_map_sizes(options *o, const char *v)
+{
+    char buf[128], *tok;
+    snprintf(buf, sizeof buf, "%s", v);
+    o->map_size_n = 0;
+    for (tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+        int *size = &o->map_sizes[o->map_size_n];
+        if (o->map_size_n == MAPS_MAX_SIZES || !parse_int(tok, 16, 8192, size) ||
+            (*size & (*size - 1)))
+            return 0;
+        o->map_size_n++;
+    }
+    return o->map_size_n > 0;
+}
+
 static int parse_args(int argc, char **argv, options *o)
 {
     const char *scenes = NULL;
     int i, frames = 0, shadow_frames = 0, small_frames = 0, shadow_setups = 0;
+    int maps_frames = 0, maps_setups = 0, only = 0, skip = 0;
     memset(o, 0, sizeof *o);
     o->platform = "egl";
     o->shader_dir = "shaders";
@@ -112,7 +148,12 @@ static int parse_args(int argc, char **argv, options *o)
     o->height = 720;
     o->warmup = 3;
     o->setups = 5;
-    o->raw_section = o->shadow_section = 1;
+    o->maps_scene = DEFAULT_MAPS_SCENE;
+    o->map_sizes[0] = 512;
+    o->map_sizes[1] = 1024;
+    o->map_sizes[2] = 2048;
+    o->map_sizes[3] = 4096;
+    o->map_size_n = 4;
     o->light_counts[0] = 1;
     o->light_counts[1] = 4;
     o->light_counts[2] = 8;
@@ -127,11 +168,15 @@ static int parse_args(int argc, char **argv, options *o)
         } else if (!strcmp(a, "--verbose")) {
             o->verbose = 1;
         } else if (!strcmp(a, "--shadows")) {
-            o->raw_section = 0;
-            o->shadow_section = 1;
+            only |= SECTION_SHADOWS;
         } else if (!strcmp(a, "--no-shadows")) {
-            o->raw_section = 1;
-            o->shadow_section = 0;
+            skip |= SECTION_SHADOWS;
+        } else if (!strcmp(a, "--maps")) {
+            only |= SECTION_MAPS;
+        } else if (!strcmp(a, "--no-maps")) {
+            skip |= SECTION_MAPS;
+        } else if (!strcmp(a, "--maps-no-fbo")) {
+            o->maps_no_fbo = 1;
         } else if (a[0] != '-') {
             fprintf(stderr, "stin-bench: unexpected argument '%s'\n", a);
             return 0;
@@ -192,6 +237,24 @@ static int parse_args(int argc, char **argv, options *o)
                 fprintf(stderr, "stin-bench: --shadow-setups wants 1..1000, got '%s'\n", v);
                 return 0;
             }
+        } else if (!strcmp(a, "--maps-scene")) {
+            o->maps_scene = v;
+        } else if (!strcmp(a, "--maps-sizes")) {
+            if (!parse_map_sizes(o, v)) {
+                fprintf(stderr, "stin-bench: --maps-sizes wants up to %d powers of two "
+                        "16..8192, got '%s'\n", MAPS_MAX_SIZES, v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--maps-frames")) {
+            if (!parse_int(v, 1, 100000, &maps_frames)) {
+                fprintf(stderr, "stin-bench: --maps-frames wants 1..100000, got '%s'\n", v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--maps-setups")) {
+            if (!parse_int(v, 1, 1000, &maps_setups)) {
+                fprintf(stderr, "stin-bench: --maps-setups wants 1..1000, got '%s'\n", v);
+                return 0;
+            }
         } else if (!strcmp(a, "--platform")) {
             o->platform = v;
         } else if (!strcmp(a, "--shaders")) {
@@ -206,6 +269,12 @@ static int parse_args(int argc, char **argv, options *o)
     o->shadow_frames = shadow_frames ? shadow_frames : o->quick ? 3 : 7;
     o->small_frames = small_frames ? small_frames : o->quick ? 3 : 7;
     o->shadow_setups = shadow_setups ? shadow_setups : o->quick ? 1 : 2;
+    o->maps_frames = maps_frames ? maps_frames : o->quick ? 3 : 15;
+    o->maps_setups = maps_setups ? maps_setups : o->quick ? 1 : 3;
+    only = only ? only : SECTION_RAW | SECTION_SHADOWS | SECTION_MAPS;
+    o->raw_section = !!(only & ~skip & SECTION_RAW);
+    o->shadow_section = !!(only & ~skip & SECTION_SHADOWS);
+    o->maps_section = !!(only & ~skip & SECTION_MAPS);
     if (!scenes)
         scenes = o->quick ? "tests/scenes/spheres-18k.json" : DEFAULT_SCENES;
     return split_scenes(o, scenes);
@@ -413,6 +482,90 @@ static int run_shadows(const bench_settings *b, const stin_caps *caps, scene *sc
     return rc;
 }
 
+/* ---- shadow maps --------------------------------------------------------- */
+
+static int run_maps(const bench_settings *b, const stin_caps *caps, const scene *s,
+                    const options *o, int *ran)
+{
+    maps_settings st;
+    maps_row rows[MAPS_MAX_ROWS];
+    char err[1024], label[128], missing[512];
+    const maps_row *best = NULL, *worst = NULL, *vol = NULL;
+    int i, row_n = 0;
+    memset(&st, 0, sizeof st);
+    st.b = b;
+    st.frames = o->maps_frames;
+    st.setups = o->maps_setups;
+    st.size_n = o->map_size_n;
+    for (i = 0; i < o->map_size_n; i++)
+        st.sizes[i] = o->map_sizes[i];
+    st.caps_mask = o->maps_no_fbo ? STIN_CAP_BIT(STIN_CAP_FBO) : 0;
+    scene_label(o->maps_scene, label, sizeof label);
+    printf("\n## Shadow maps (gl1, %s): %s, %dx%d, the scene's %d light(s)%s; per side the "
+           "lowest of %d set-ups' median of %d frames (ABBA-interleaved, glFinish per frame, "
+           "%d warm-up per row)\n", tier_label(STIN_TIER_GL1), label, b->width, b->height,
+           s->light_count, o->maps_no_fbo ? ", FBO hidden from stin" : "", st.setups, st.frames,
+           b->warmup > 1 ? b->warmup : 1);
+    if (o->tier != STIN_TIER_AUTO && o->tier != STIN_TIER_GL1) {
+        printf("\n### shadow maps: SKIP (the map techniques are gl1 only; --tier %s)\n",
+               stin_tier_name(o->tier));
+        return 0;
+    }
+    if (!stin_tier_supported(caps, STIN_TIER_GL1, missing, sizeof missing)) {
+        printf("\n### shadow maps: SKIP (the context lacks %s)\n", missing);
+        return o->tier != STIN_TIER_AUTO ? EXIT_UNSUPPORTED : 0;
+    }
+    fprintf(stderr, "stin-bench: shadow maps gl1 %s ...\n", label);
+    fflush(stdout);
+    if (!bench_maps_run(&st, s, rows, &row_n, err, sizeof err)) {
+        fprintf(stderr, "stin-bench: shadow maps, gl1, %s: %s\n", label, err);
+        return EXIT_FAILED;
+    }
+    printf("\n| shadows | map size asked | map size rendered | passes | off median ms | "
+           "shadowed median ms | shadowed / off |\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < row_n; i++) {
+        const maps_row *r = &rows[i];
+        int is_vol = r->technique == STIN_TECH_SHADOWS_VOLUME;
+        char asked[32], rendered[48];
+        if (is_vol) {
+            snprintf(asked, sizeof asked, "-");
+            snprintf(rendered, sizeof rendered, "- (%u volume triangles)", r->volume_triangles);
+        } else {
+            snprintf(asked, sizeof asked, "%u", r->requested);
+            snprintf(rendered, sizeof rendered, "%u", r->rendered);
+        }
+        if (r->skipped) {
+            printf("| %s | %s | SKIP: %s | | | | |\n", stin_technique_name(r->technique), asked,
+                   r->why);
+            continue;
+        }
+        printf("| %s | %s | %s | %u | %.2f | %.2f | %.2f |\n", stin_technique_name(r->technique),
+               asked, rendered, r->passes, r->off_ms, r->on_ms,
+               r->off_ms > 0 ? r->on_ms / r->off_ms : 0.0);
+        if (is_vol) {
+            vol = r;
+        } else {
+            if (!best || r->on_ms / r->off_ms < best->on_ms / best->off_ms)
+                best = r;
+            if (!worst || r->on_ms / r->off_ms > worst->on_ms / worst->off_ms)
+                worst = r;
+        }
+    }
+    if (best && worst)
+        printf("\nshadow maps / shadows off: from %.2f (%s %u) to %.2f (%s %u)",
+               best->on_ms / best->off_ms, stin_technique_name(best->technique), best->rendered,
+               worst->on_ms / worst->off_ms, stin_technique_name(worst->technique),
+               worst->rendered);
+    if (vol)
+        printf("%sshadow volumes / shadows off: %.2f", best && worst ? "; " : "\n",
+               vol->on_ms / vol->off_ms);
+    printf("\n");
+    fflush(stdout);
+    ++*ran;
+    return 0;
+}
+
 static void print_machine(const raw_gl *gl)
 {
     char cpu[256];
@@ -427,7 +580,7 @@ int main(int argc, char **argv)
 {
     static const stin_tier all[] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
     options o;
-    scene scenes[MAX_SCENES];
+    scene scenes[MAX_SCENES], maps_scene;
     stin_platform_desc pd;
     stin_platform *plat = NULL;
     raw_gl gl;
@@ -435,7 +588,7 @@ int main(int argc, char **argv)
     stin_caps caps;
     char err[1024];
     worst_ratio worst;
-    int loaded = 0, rc = EXIT_FAILED, i, ran = 0;
+    int loaded = 0, rc = EXIT_FAILED, i, ran = 0, maps_loaded = 0, machine_printed = 0;
 
     if (!parse_args(argc, argv, &o)) {
         usage(stderr);
@@ -452,6 +605,14 @@ int main(int argc, char **argv)
             rc = EXIT_BAD_INPUT;
             goto done;
         }
+    if (o.maps_section) {
+        if (!scene_load(o.maps_scene, &maps_scene, err, sizeof err)) {
+            fprintf(stderr, "stin-bench: %s\n", err);
+            rc = EXIT_BAD_INPUT;
+            goto done;
+        }
+        maps_loaded = 1;
+    }
     /* The default (NULL profile) compatibility context runs all three tiers. */
     pd.width = o.width;
     pd.height = o.height;
@@ -502,13 +663,22 @@ int main(int argc, char **argv)
     }
     if (rc == 0 && ran) {
         print_machine(&gl);
+        machine_printed = 1;
         printf("goal stin / raw <= %.2f on every row: %s (worst %.3f, %s)\n", GOAL_RATIO,
                worst.ratio <= GOAL_RATIO ? "met" : "NOT met", worst.ratio, worst.at);
     }
     if (rc == 0 && o.shadow_section) {
         int shadow_ran = 0;
         rc = run_shadows(&b, &caps, scenes, &o, &shadow_ran);
-        if (rc == 0 && shadow_ran && !o.raw_section)
+        if (rc == 0 && shadow_ran && !machine_printed) {
+            print_machine(&gl);
+            machine_printed = 1;
+        }
+    }
+    if (rc == 0 && o.maps_section) {
+        int maps_ran = 0;
+        rc = run_maps(&b, &caps, &maps_scene, &o, &maps_ran);
+        if (rc == 0 && maps_ran && !machine_printed)
             print_machine(&gl);
     }
 done:
@@ -516,5 +686,7 @@ done:
         stin_platform_destroy(plat);
     for (i = 0; i < loaded; i++)
         scene_free(&scenes[i]);
+    if (maps_loaded)
+        scene_free(&maps_scene);
     return rc;
 }

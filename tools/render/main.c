@@ -34,7 +34,9 @@ static void usage(FILE *f)
     fprintf(f, "\n"
                "  --platform egl|osmesa     context backend (default egl)\n"
                "  --size WxH                image size (default: the scene's, else 512x512)\n"
-               "  --shadows NAME            shadow technique (default auto)\n"
+               "  --shadows NAME            shadow technique: volume, map (map-depth where the\n"
+               "                            context has ARB_shadow, else map-combine), map-depth,\n"
+               "                            map-combine, off (default auto)\n"
                "  --surface NAME            surface technique (default auto)\n"
                "  --volume-mode auto|zpass|zfail  shadow-volume counting (diagnostics)\n"
                "  --caps                    print capabilities and choices, render nothing\n"
@@ -131,6 +133,10 @@ static int parse_technique(const char *name, stin_feature f, stin_technique *out
     *out = STIN_TECH_NONE;
     if (!name || !strcmp(name, "auto"))
         return 1;
+    if (f == STIN_FEATURE_SHADOWS && !strcmp(name, "map")) {
+        *out = STIN_TECH_SHADOWS_MAP_DEPTH; /* narrowed to what the context has, see main */
+        return 1;
+    }
     for (t = 1; t < STIN_TECH_COUNT; t++) {
         stin_technique tech = (stin_technique)t;
         if (!strcmp(stin_technique_name(tech), name) && stin_technique_feature(tech) == f) {
@@ -138,8 +144,8 @@ static int parse_technique(const char *name, stin_feature f, stin_technique *out
             return 1;
         }
     }
-    fprintf(stderr, "stin-render: unknown %s technique '%s'; this build knows: auto",
-            stin_feature_name(f), name);
+    fprintf(stderr, "stin-render: unknown %s technique '%s'; this build knows: auto%s",
+            stin_feature_name(f), name, f == STIN_FEATURE_SHADOWS ? ", map" : "");
     for (t = 1; t < STIN_TECH_COUNT; t++)
         if (stin_technique_feature((stin_technique)t) == f)
             fprintf(stderr, ", %s", stin_technique_name((stin_technique)t));
@@ -245,6 +251,14 @@ int main(int argc, char **argv)
     if (pd.profile) {
         desc.caps_mask = pd.profile->caps_mask;
         desc.max_gl_version = pd.profile->max_gl_version;
+    }
+    if (o.shadows && !strcmp(o.shadows, "map")) { /* the best map path the context has */
+        stin_caps caps;
+        uint64_t depth = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
+        if (stin_detect_caps(stin_platform_get_proc_address, plat, desc.caps_mask,
+                             desc.max_gl_version, &caps) == STIN_OK &&
+            (caps.present & depth) != depth)
+            desc.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_COMBINE;
     }
     if (o.caps) {
         stin_caps caps;
