@@ -300,7 +300,18 @@ static void run_maps(stin_context *ctx, const stin__path *path, int visibility)
     path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
     for (li = 0; li < lights; li++) {
         const stin_light_desc *l = &ctx->lights[li];
-        int mapped = stin__maps_bind(ctx, li);
+        int mapped = stin__maps_bind(ctx, li), face;
+        if (!mapped && l->type == STIN_LIGHT_POINT && ctx->maps.faces) {
+            for (face = 0; face < 6; face++) /* six maps, each lighting its own pyramid */
+                if (stin__maps_face(ctx, li, face)) {
+                    if (visibility)
+                        path->flat(ctx, STIN__ALL, white);
+                    else
+                        path->lit(ctx, l);
+                    stin__maps_face_end(ctx);
+                }
+            continue;
+        }
         if (!mapped && l->type == STIN_LIGHT_POINT && stencil) {
             float world[4] = {l->position[0], l->position[1], l->position[2], 1.0f};
             stin__volume_light(ctx, path, world, NULL);

@@ -219,16 +219,19 @@ struct stin_context {
     int volume_infinite;      /* projection moved the far plane to infinity */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
     struct {
-        GLuint textures[32];  /* one per light slot: depth (map-depth) or intensity */
+        GLuint textures[38];  /* per light slot, then 6 shared cube faces for point lights */
         GLuint ramp;          /* map-combine: 1D ramp of light depth */
         GLuint fbo;           /* with FBOs: render straight into the texture */
         GLuint depth_scratch; /* map-combine with FBOs: the depth buffer of its pass */
         uint32_t size;        /* allocated texels a side */
         uint32_t used;        /* rendered this frame (no FBO: bounded by the viewport) */
         int unit;             /* first texture unit of the shadow test */
-        unsigned char valid[32];
-        float texgen[32][16]; /* world -> shadow-map texture coordinates (rows s t r q) */
-        float ramp_plane[32][4]; /* world -> ramp coordinate (map-combine) */
+        unsigned char valid[38];
+        float texgen[38][16]; /* world -> shadow-map texture coordinates (rows s t r q) */
+        float ramp_plane[38][4]; /* world -> ramp coordinate (map-combine) */
+        int faces;            /* point lights get six maps (needs FBOs: drawn mid-frame) */
+        GLuint face_mask;     /* 1 inside a face's 90-degree square, 0 outside */
+        int face_active;
         int said_point, said_area;
     } maps;
     int lights_per_pass;
@@ -331,6 +334,11 @@ void stin__maps_render(stin_context *ctx);
 /* 1 if light i has a map this frame; binds its test onto the shadow units. */
 int stin__maps_bind(stin_context *ctx, uint32_t light);
 void stin__maps_unbind(stin_context *ctx);
+/* Point lights with FBOs: renders cube face f (0..5: +x -x +y -y +z -z) of
+ * light i into the shared face map, binds its test and clips drawing to the
+ * face's frustum. 0 when the face sees nothing. stin__maps_face_end undoes it. */
+int stin__maps_face(stin_context *ctx, uint32_t light, int face);
+void stin__maps_face_end(stin_context *ctx);
 /* Draws every draw's geometry with the current projection and ctx->frame.view
  * (path_fixed.c), no materials: shadow-map casters. */
 void stin__fixed_draw_geometry(stin_context *ctx);

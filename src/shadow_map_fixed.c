@@ -21,6 +21,10 @@
 #include "internal.h"
 
 #define RAMP_SIZE 256
+/* The face mask's border texel lies just outside the 90-degree square: the
+ * face frustum is widened so that the square's edge falls exactly between
+ * the border texel and the first inner one (NEAREST sampling). */
+#define FACE_MASK 256u
 
 int stin__maps_active(const stin_context *ctx)
 {
@@ -48,6 +52,37 @@ static uint32_t pow2_at_most(uint32_t n)
     return p;
 }
 
+static void create_map_texture(stin_context *ctx, GLuint *t, uint32_t size)
+{
+    GL(ctx, GenTextures)(1, t);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, *t);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (combine(ctx)) {
+        /* stored depths must not be averaged: nearest. Rendered into (FBO:
+         * RGBA8, colour-renderable, the ramp in every channel) or copied
+         * into (INTENSITY8). */
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, combine_fbo(ctx) ? GL_RGBA8 : GL_INTENSITY8,
+                            (GLsizei)size, (GLsizei)size, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE,
+                            NULL);
+    } else {
+        /* compare, then filter: LINEAR is the hardware's 2x2 PCF */
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_MODE)(
+            GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
+        GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_FUNC)(GL_TEXTURE_2D,
+                                                             GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        GL_ENUM(ctx, TexParameteri, GL_DEPTH_TEXTURE_MODE)(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE,
+                                                           GL_INTENSITY);
+        GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(
+            GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, (GLsizei)size, (GLsizei)size, 0,
+            GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    }
+}
+
 stin_result stin__maps_init(stin_context *ctx)
 {
     uint32_t i, size = ctx->desc.shadow_map_size;
@@ -67,36 +102,8 @@ stin_result stin__maps_init(stin_context *ctx)
         size = pow2_at_most((uint32_t)ctx->caps.max_texture_size);
     ctx->maps.size = size;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    for (i = 0; i < ctx->desc.max_lights; i++) {
-        GLuint *t = &ctx->maps.textures[i];
-        GL(ctx, GenTextures)(1, t);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, *t);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        if (combine(ctx)) {
-            /* stored depths must not be averaged: nearest. Rendered into (FBO:
-             * RGBA8, colour-renderable, the ramp in every channel) or copied
-             * into (INTENSITY8). */
-            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-            GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, combine_fbo(ctx) ? GL_RGBA8 : GL_INTENSITY8,
-                                (GLsizei)size, (GLsizei)size, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE,
-                                NULL);
-        } else {
-            /* compare, then filter: LINEAR is the hardware's 2x2 PCF */
-            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-            GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_MODE)(
-                GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-            GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_FUNC)(GL_TEXTURE_2D,
-                                                                 GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
-            GL_ENUM(ctx, TexParameteri, GL_DEPTH_TEXTURE_MODE)(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE,
-                                                               GL_INTENSITY);
-            GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(
-                GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, (GLsizei)size, (GLsizei)size, 0,
-                GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
-        }
-    }
+    for (i = 0; i < ctx->desc.max_lights; i++)
+        create_map_texture(ctx, &ctx->maps.textures[i], size);
     if (combine(ctx)) {
         unsigned char ramp[RAMP_SIZE];
         for (i = 0; i < RAMP_SIZE; i++)
@@ -132,6 +139,29 @@ stin_result stin__maps_init(stin_context *ctx)
         GL(ctx, ReadBuffer)(GL_NONE);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     }
+    /* point lights: six maps drawn mid-frame (FBOs), shared by all of them,
+     * and a mask unit that keeps each face to its own 90-degree square */
+    if (ctx->maps.fbo && !combine(ctx) && ctx->maps.unit + units + 1 <= ctx->caps.max_texture_units &&
+        (FACE_MASK * FACE_MASK) <= ctx->staging_bytes + ctx->scratch_bytes) {
+        unsigned char *m = ctx->staging_bytes >= FACE_MASK * FACE_MASK ? ctx->staging : ctx->scratch;
+        uint32_t x, y;
+        for (i = 0; i < 6; i++)
+            create_map_texture(ctx, &ctx->maps.textures[32 + i], size);
+        for (y = 0; y < FACE_MASK; y++)
+            for (x = 0; x < FACE_MASK; x++)
+                m[y * FACE_MASK + x] =
+                    (x == 0 || y == 0 || x == FACE_MASK - 1 || y == FACE_MASK - 1) ? 0 : 255;
+        GL(ctx, GenTextures)(1, &ctx->maps.face_mask);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.face_mask);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
+        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_LUMINANCE, FACE_MASK, FACE_MASK, 0, GL_LUMINANCE,
+                            GL_UNSIGNED_BYTE, m);
+        ctx->maps.faces = 1;
+    }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__gl_check_errors(ctx, "shadow-map set-up");
     return STIN_OK;
@@ -140,7 +170,7 @@ stin_result stin__maps_init(stin_context *ctx)
 void stin__maps_release(stin_context *ctx)
 {
     uint32_t i;
-    for (i = 0; i < 32; i++)
+    for (i = 0; i < 38; i++)
         if (ctx->maps.textures[i]) {
             GL(ctx, DeleteTextures)(1, &ctx->maps.textures[i]);
             ctx->maps.textures[i] = 0;
@@ -151,6 +181,10 @@ void stin__maps_release(stin_context *ctx)
         GL(ctx, DeleteFramebuffers)(1, &ctx->maps.fbo);
     if (ctx->maps.depth_scratch)
         GL(ctx, DeleteTextures)(1, &ctx->maps.depth_scratch);
+    if (ctx->maps.face_mask)
+        GL(ctx, DeleteTextures)(1, &ctx->maps.face_mask);
+    ctx->maps.face_mask = 0;
+    ctx->maps.faces = 0;
     ctx->maps.ramp = ctx->maps.fbo = ctx->maps.depth_scratch = 0;
 }
 
@@ -319,8 +353,8 @@ static void ramp_texgen_light_eye(stin_context *ctx, float n, float f)
     GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
 }
 
-static void render_one(stin_context *ctx, uint32_t li, const float view[16], const float proj[16],
-                       float n, float f)
+static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const float view[16],
+                       const float proj[16], float n, float f)
 {
     const stin_light_desc *l = &ctx->lights[li];
     const int *vp = ctx->frame.viewport;
@@ -331,15 +365,18 @@ static void render_one(stin_context *ctx, uint32_t li, const float view[16], con
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->maps.fbo);
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER,
                                       combine(ctx) ? GL_COLOR_ATTACHMENT0 : GL_DEPTH_ATTACHMENT,
-                                      GL_TEXTURE_2D, ctx->maps.textures[li], 0);
+                                      GL_TEXTURE_2D, ctx->maps.textures[slot], 0);
         GL(ctx, Viewport)(0, 0, (GLsizei)used, (GLsizei)used);
     } else {
         GL(ctx, Viewport)(vp[0], vp[1], (GLsizei)used, (GLsizei)used);
         GL_ENABLE(ctx, GL_SCISSOR_TEST);
         GL(ctx, Scissor)(vp[0], vp[1], (GLsizei)used, (GLsizei)used);
     }
+    GL_DISABLE(ctx, GL_BLEND); /* a lit pass may come before (point-light faces) */
     GL(ctx, DepthMask)(GL_TRUE);
-    GL(ctx, ClearDepth)(1.0);
+    /* A point-light face's empty texels hold a depth just under 1: a point
+     * behind the face has r past 1, clamped to 1, and must fail there. */
+    GL(ctx, ClearDepth)(slot >= 32 ? 1.0 - 1.0 / 65536.0 : 1.0);
     GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (combine(ctx) ? GL_COLOR_BUFFER_BIT : 0u));
     GL_ENABLE(ctx, GL_DEPTH_TEST);
@@ -375,7 +412,7 @@ static void render_one(stin_context *ctx, uint32_t li, const float view[16], con
                                       GL_TEXTURE_2D, 0, 0);
     } else {
         /* the colour (ramp) or depth of the region into the light's texture */
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.textures[li]);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.textures[slot]);
         GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, vp[0], vp[1], (GLsizei)used,
                                    (GLsizei)used);
         GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
@@ -386,7 +423,7 @@ static void render_one(stin_context *ctx, uint32_t li, const float view[16], con
 
 /* World -> texture: bias/scale into the used corner of the texture, then the
  * light's projection and view. Rows are the texgen planes. */
-static void store_texgen(stin_context *ctx, uint32_t li, const float view[16],
+static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const float view[16],
                          const float proj[16], float n, float f)
 {
     float vp[16], bias[16], m[16];
@@ -400,14 +437,14 @@ static void store_texgen(stin_context *ctx, uint32_t li, const float view[16],
     stin__mat4_mul(m, bias, vp);
     for (r = 0; r < 4; r++)
         for (c = 0; c < 4; c++)
-            ctx->maps.texgen[li][4 * r + c] = m[4 * c + r];
+            ctx->maps.texgen[slot][4 * r + c] = m[4 * c + r];
     /* ramp coordinate of the fragment's own light-eye depth, a little nearer
      * than the stored one so a surface does not shadow itself (8-bit steps) */
     {
         float bias_steps = ctx->lights[li].shadow_offset_off ? 0.0f : 1.5f;
         float k = -1.0f / (f - n), o = -n / (f - n) - bias_steps / (float)(RAMP_SIZE - 1);
         for (c = 0; c < 4; c++)
-            ctx->maps.ramp_plane[li][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
+            ctx->maps.ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
     }
 }
 
@@ -434,9 +471,10 @@ void stin__maps_render(stin_context *ctx)
         float view[16], proj[16], n, f;
         ctx->maps.valid[i] = 0;
         if (l->type == STIN_LIGHT_POINT) {
-            if (!ctx->maps.said_point) {
+            if (!ctx->maps.said_point && !ctx->maps.faces) {
                 stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                          "shadows: point lights have no single shadow map; they use %s",
+                          "shadows: point lights need six depth maps drawn mid-frame (map-depth "
+                          "with framebuffer objects); here they use %s",
                           (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) ? "stencil volumes"
                                                                                : "no shadows");
                 ctx->maps.said_point = 1;
@@ -450,8 +488,8 @@ void stin__maps_render(stin_context *ctx)
         }
         if (!light_camera(ctx, l, view, proj, &n, &f))
             continue;
-        render_one(ctx, i, view, proj, n, f);
-        store_texgen(ctx, i, view, proj, n, f);
+        render_one(ctx, i, i, view, proj, n, f);
+        store_texgen(ctx, i, i, view, proj, n, f);
         ctx->maps.valid[i] = 1;
     }
     GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
@@ -483,11 +521,19 @@ static void texgen_planes(stin_context *ctx, const float *rows, int with_r)
     }
 }
 
+static void bind_slot(stin_context *ctx, uint32_t li);
+
 int stin__maps_bind(stin_context *ctx, uint32_t li)
 {
-    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->maps.unit);
     if (li >= 32 || !ctx->maps.valid[li])
         return 0;
+    bind_slot(ctx, li);
+    return 1;
+}
+
+static void bind_slot(stin_context *ctx, uint32_t li)
+{
+    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->maps.unit);
     /* planes are given in world space: specify them under the camera's view,
      * whose inverse GL applies, so any draw's eye coordinates map back */
     GL(ctx, MatrixMode)(GL_MODELVIEW);
@@ -530,7 +576,6 @@ int stin__maps_bind(stin_context *ctx, uint32_t li)
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
         GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
                                                                 GL_SINGLE_COLOR);
-    return 1;
 }
 
 void stin__maps_unbind(stin_context *ctx)
@@ -556,4 +601,84 @@ void stin__maps_unbind(stin_context *ctx)
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
         GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
                                                                 GL_SEPARATE_SPECULAR_COLOR);
+}
+
+/* ---- point lights: six 90-degree maps ------------------------------------ */
+
+static const float face_axis[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                      {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+static float face_fov_deg(void)
+{
+    /* atan(x) for x = 128 / 127 near 1: 45 degrees + (x - 1) / 2 radians to
+     * first order, plenty for one texel */
+    double x = (double)(FACE_MASK / 2u) / (double)(FACE_MASK / 2u - 1u);
+    double half = 45.0 + ((x - 1.0) / (1.0 + x * 1.0) ) * 57.29577951308232;
+    return (float)(2.0 * half);
+}
+
+int stin__maps_face(stin_context *ctx, uint32_t li, int face)
+{
+    const stin_light_desc *l = &ctx->lights[li];
+    const float *ax = face_axis[face];
+    float view[16], proj[16], n, f, half, center[3];
+    uint32_t slot = 32u + (uint32_t)face;
+    if (!ctx->maps.faces || l->type != STIN_LIGHT_POINT)
+        return 0;
+    look_along(view, l->position, ax);
+    fit(ctx, view, &n, &f, &half, center);
+    if (f <= 0.0f)
+        return 0; /* nothing in front of this face */
+    if (n < f * 1e-3f)
+        n = f * 1e-3f;
+    /* tan(fov/2) = (N/2) / (N/2 - 1): the 90-degree square ends on a texel edge */
+    perspective(proj, face_fov_deg(), n, f);
+    ctx->maps.used = ctx->maps.size;
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    GL_DISABLE(ctx, GL_LIGHTING);
+    render_one(ctx, slot, li, view, proj, n, f);
+    store_texgen(ctx, slot, li, view, proj, n, f);
+    /* back to the frame */
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
+    GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
+                      ctx->frame.viewport[3]);
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, LoadMatrixf)(ctx->projection);
+    /* No clip planes: they would change the passes' vertex processing and
+     * break the depth EQUAL test. The mask keeps the face to its square;
+     * behind the face the depth is past 1 and fails the comparison. */
+    bind_slot(ctx, slot);
+    {
+        GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->maps.unit + (combine(ctx) ? 2 : 1)));
+        GL(ctx, ActiveTexture)(mu);
+        GL_ENABLE(ctx, GL_TEXTURE_2D);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.face_mask);
+        texgen_planes(ctx, ctx->maps.texgen[slot], 0);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND1_RGB, GL_SRC_COLOR);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_ALPHA);
+        GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    }
+    return 1;
+}
+
+void stin__maps_face_end(stin_context *ctx)
+{
+    GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->maps.unit + (combine(ctx) ? 2 : 1)));
+    stin__maps_unbind(ctx);
+    GL(ctx, ActiveTexture)(mu);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_T);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_Q);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
