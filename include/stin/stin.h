@@ -55,9 +55,12 @@
  * SHADOWS
  * The shadow feature's chain: "volume" (stencil shadow volumes, exact; needs a
  * stencil buffer), "map-depth", "map-combine", then "off".
- * Shadow maps (fixed-function lighting only; spot and directional lights, a
- * point light falls back to volumes where there is a stencil buffer and says
- * so): "map-depth" uses ARB_depth_texture + ARB_shadow, compare LEQUAL with
+ * Shadow maps (fixed-function lighting only): spot lights get one map over the
+ * cone, directional lights one orthographic map, point lights six 90-degree
+ * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a
+ * time, each kept to its square by a mask texture unit); otherwise a point
+ * light falls back to volumes where there is a stencil buffer and says so.
+ * "map-depth" uses ARB_depth_texture + ARB_shadow, compare LEQUAL with
  * LINEAR filtering (2x2 PCF), polygon offset per light (shadow_offset,
  * default factor 1.1, units 4); "map-combine" needs only texture_env_combine:
  * the light's depth drawn as an 8-bit ramp over a near/far fitted to the draws,
