@@ -521,6 +521,31 @@ static void texgen_planes(stin_context *ctx, const float *rows, int with_r)
     }
 }
 
+/* One texture_env_combine stage: operation, sources and operands for RGB and
+ * alpha (a second source of 0 is unused). */
+typedef struct combine_stage {
+    GLenum rgb, rgb_src[2], rgb_op[2];
+    GLenum alpha, alpha_src[2], alpha_op[2];
+} combine_stage;
+
+static void set_combine(stin_context *ctx, const combine_stage *c)
+{
+    int i;
+    GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
+    GL_ENUM(ctx, TexEnvi, c->rgb)(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)c->rgb);
+    GL_ENUM(ctx, TexEnvi, c->alpha)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, (GLint)c->alpha);
+    for (i = 0; i < 2; i++) {
+        if (c->rgb_src[i]) {
+            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_SOURCE0_RGB + i), (GLint)c->rgb_src[i]);
+            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_OPERAND0_RGB + i), (GLint)c->rgb_op[i]);
+        }
+        if (c->alpha_src[i]) {
+            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_SOURCE0_ALPHA + i), (GLint)c->alpha_src[i]);
+            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_OPERAND0_ALPHA + i), (GLint)c->alpha_op[i]);
+        }
+    }
+}
+
 static void bind_slot(stin_context *ctx, uint32_t li);
 
 int stin__maps_bind(stin_context *ctx, uint32_t li)
@@ -545,13 +570,13 @@ static void bind_slot(stin_context *ctx, uint32_t li)
     if (!combine(ctx)) {
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     } else {
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_TEXTURE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_ALPHA);
+        /* colour passed on, the stored depth into alpha */
+        const combine_stage stored = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
+                                      GL_REPLACE, {GL_TEXTURE, 0}, {GL_SRC_ALPHA, 0}};
+        const combine_stage compare = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
+                                       GL_ADD_SIGNED, {GL_PREVIOUS, GL_TEXTURE},
+                                       {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}};
+        set_combine(ctx, &stored);
         /* next unit: stored - own + 0.5 into alpha, colour passed on */
         GL(ctx, ActiveTexture)(u + 1u);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
@@ -559,15 +584,7 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
         GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->maps.ramp_plane[li]);
         GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_REPLACE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);
-        GL_ENUM(ctx, TexEnvi, GL_ADD_SIGNED)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_ADD_SIGNED);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_ALPHA);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_TEXTURE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND1_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+        set_combine(ctx, &compare);
         GL_ENABLE(ctx, GL_ALPHA_TEST);
         GL(ctx, AlphaFunc)(GL_GEQUAL, 0.5f);
     }
@@ -655,15 +672,10 @@ int stin__maps_face(stin_context *ctx, uint32_t li, int face)
         GL_ENABLE(ctx, GL_TEXTURE_2D);
         GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.face_mask);
         texgen_planes(ctx, ctx->maps.texgen[slot], 0);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_MODULATE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_RGB, GL_PREVIOUS);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_RGB, GL_SRC_COLOR);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND1_RGB, GL_SRC_COLOR);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_REPLACE);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS);
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_OPERAND0_ALPHA, GL_SRC_ALPHA);
+        const combine_stage mask = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
+                                    {GL_SRC_COLOR, GL_SRC_COLOR}, GL_REPLACE, {GL_PREVIOUS, 0},
+                                    {GL_SRC_ALPHA, 0}};
+        set_combine(ctx, &mask);
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     }
     return 1;
