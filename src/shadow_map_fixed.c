@@ -91,6 +91,18 @@ stin_result stin__maps_init(stin_context *ctx)
         return STIN_OK;
     /* after the surface technique's units (DOT3 uses four), else after albedo */
     ctx->maps.unit = ctx->sel.choice[STIN_FEATURE_SURFACE].technique == STIN_TECH_SURFACE_DOT3 ? 4 : 1;
+    if (ctx->maps.unit == 4 && 4 + units > ctx->caps.max_texture_units &&
+        ctx->desc.techniques[STIN_FEATURE_SURFACE] != STIN_TECH_SURFACE_DOT3) {
+        /* shadows outrank bump: DOT3 gives its units up unless it was forced */
+        stin_choice *c = &ctx->sel.choice[STIN_FEATURE_SURFACE];
+        stin__dot3_release(ctx);
+        c->technique = STIN_TECH_SURFACE_PLAIN;
+        stin__formatf(c->reason, sizeof c->reason,
+                      "fallback: dot3 needs texture units 0..3 and the shadow maps %d more",
+                      units);
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "surface: %s", c->reason);
+        ctx->maps.unit = 1;
+    }
     if (ctx->maps.unit + units > ctx->caps.max_texture_units) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
                   "shadows: %s needs texture units %d..%d, the context has %d",

@@ -279,7 +279,8 @@ int bench_maps_run(const maps_settings *st, const scene *s, maps_row *rows, int 
         if (s->lights[i].type == SCENE_LIGHT_SPOT || s->lights[i].type == SCENE_LIGHT_DIRECTIONAL)
             has_map_light = 1;
     if (!has_map_light) {
-        snprintf(err, err_size, "%s: no spot or directional light (shadow maps need one)",
+        snprintf(err, err_size,
+                 "%s: no spot or directional light (every map path and size needs one)",
                  s->path);
         return 0;
     }
