@@ -232,13 +232,45 @@ static void look_along(float m[16], const float eye[3], const float dir[3])
 
 /* Bounding spheres of every draw in world space, folded into a depth range
  * along the light's view and, for directional lights, a lateral radius. */
-static void fit(const stin_context *ctx, const float view[16], float *near_d, float *far_d,
-                float *half_width, float center_out[3])
+/* A world-space sphere touches the camera's frustum (Gribb-Hartmann planes
+ * of projection * view). */
+static int in_view(const float vp[16], const float c[3], float r)
+{
+    int p, k;
+    for (p = 0; p < 6; p++) {
+        float pl[4], len;
+        for (k = 0; k < 4; k++) /* row 3 +/- row p/2 */
+            pl[k] = vp[4 * k + 3] + (p % 2 ? -vp[4 * k + p / 2] : vp[4 * k + p / 2]);
+        len = stin__sqrtf(pl[0] * pl[0] + pl[1] * pl[1] + pl[2] * pl[2]);
+        if (len > 0.0f && (pl[0] * c[0] + pl[1] * c[1] + pl[2] * c[2] + pl[3]) / len < -r)
+            return 0;
+    }
+    return 1;
+}
+
+/* receivers_only: the lateral extent (and centre) covers only the draws the
+ * camera sees, the depth range still every caster along the light. */
+static void fit(const stin_context *ctx, const float view[16], int receivers_only, float *near_d,
+                float *far_d, float *half_width, float center_out[3])
 {
     uint32_t i;
-    float lo = 1e30f, hi = -1e30f, lat = 0.0f;
+    float lo = 1e30f, hi = -1e30f, lat = 0.0f, vp[16];
     float cmin[3] = {1e30f, 1e30f, 1e30f}, cmax[3] = {-1e30f, -1e30f, -1e30f};
-    int k;
+    int k, seen = 0;
+    stin__mat4_mul(vp, ctx->frame.projection, ctx->frame.view);
+    for (i = 0; i < ctx->draw_count && receivers_only; i++) {
+        const stin_mesh_info *info = &ctx->meshes[ctx->draws[i].mesh_slot].info;
+        float c[3], w[3], half = 0;
+        for (k = 0; k < 3; k++) {
+            c[k] = 0.5f * (info->bounds_min[k] + info->bounds_max[k]);
+            half += (info->bounds_max[k] - c[k]) * (info->bounds_max[k] - c[k]);
+        }
+        stin__mat4_transform_point(ctx->draws[i].transform, c, w);
+        /* a generous radius (scale ignored is fine: only whether it is seen) */
+        seen |= in_view(vp, w, 4.0f * stin__sqrtf(half) + 1e-3f);
+    }
+    if (!seen)
+        receivers_only = 0; /* nothing in view: cover everything */
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[i];
         const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
@@ -261,6 +293,8 @@ static void fit(const stin_context *ctx, const float view[16], float *near_d, fl
         stin__mat4_transform_point(view, w, e);
         if (-e[2] - r < lo) lo = -e[2] - r;
         if (-e[2] + r > hi) hi = -e[2] + r;
+        if (receivers_only && !in_view(vp, w, r))
+            continue; /* casts into the map's depth range, but needs no texels */
         for (k = 0; k < 2; k++) {
             float a = (e[k] < 0 ? -e[k] : e[k]) + r;
             if (a > lat)
@@ -307,7 +341,7 @@ static int light_camera(const stin_context *ctx, const stin_light_desc *l, float
     int k;
     if (l->type == STIN_LIGHT_SPOT) {
         look_along(view, l->position, l->direction);
-        fit(ctx, view, &n, &f, &half, center);
+        fit(ctx, view, 0, &n, &f, &half, center);
         if (f <= 0.0f)
             return 0; /* everything is behind the spot */
         if (n < f * 1e-3f)
@@ -320,11 +354,11 @@ static int light_camera(const stin_context *ctx, const stin_light_desc *l, float
         float probe[16];
         stin__mat4_identity(probe);
         look_along(probe, (const float[3]){0, 0, 0}, l->direction);
-        fit(ctx, probe, &n, &f, &half, center);
+        fit(ctx, probe, 1, &n, &f, &half, center);
         for (k = 0; k < 3; k++) /* back off along the light so every draw is in front */
             eye[k] = center[k] - l->direction[k] * (f - n + 1.0f);
         look_along(view, eye, l->direction);
-        fit(ctx, view, &n, &f, &half, center);
+        fit(ctx, view, 1, &n, &f, &half, center);
         if (n < 1e-3f)
             n = 1e-3f;
         ortho(proj, half > 0 ? half : 1.0f, n, f);
@@ -655,7 +689,7 @@ int stin__maps_face(stin_context *ctx, uint32_t li, int face)
     if (!ctx->maps.faces || l->type != STIN_LIGHT_POINT)
         return 0;
     look_along(view, l->position, ax);
-    fit(ctx, view, &n, &f, &half, center);
+    fit(ctx, view, 0, &n, &f, &half, center);
     if (f <= 0.0f)
         return 0; /* nothing in front of this face */
     if (n < f * 1e-3f)

@@ -68,8 +68,8 @@
  * texels a side where the context has FBOs; without them they are drawn in the
  * frame's own framebuffer before its clear and so are at most the viewport's
  * largest power of two (stin_frame_stats.shadow_map_size says what was used).
- * Spot maps cover the cone; directional maps are orthographic, fitted to the
- * bounds of all draws. Area lights are hard-shadowed by maps. Each of the
+ * Spot maps cover the cone; directional maps are orthographic, their square
+ * fitted to the draws the camera sees and their depth to every caster. Area lights are hard-shadowed by maps. Each of the
  * desc.max_lights light slots holds a map of shadow_map_size squared texels
  * (4 bytes each), made at stin_create: size max_lights to the scene.
  * Volumes: silhouettes from the adjacency built at
