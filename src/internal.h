@@ -378,8 +378,10 @@ void stin__dot3_cube_face(int face, uint32_t size, unsigned char *rgba);
 
 /* Restores the GL state the header promises after a frame. */
 void stin__state_restore(stin_context *ctx);
-GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag, char *msg,
-                           size_t size);
+/* frag_chunks: NULL or a NULL-terminated list of embedded files spliced in
+ * at the fragment shader's "// @chunks" line (its functions). */
+GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
+                           const char *const *frag_chunks, char *msg, size_t size);
 /* Embedded shader source by file name ("gl2/lit.vert"), NULL if unknown. */
 const char *stin__shader_source(const char *name);
 

@@ -38,7 +38,18 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
         stin__program *p = &ctx->programs[i];
         stin__formatf(vert, sizeof vert, "%s%s", dir, vert_names[i]);
         stin__formatf(frag, sizeof frag, "%s%s", dir, frag_names[i]);
-        p->name = stin__program_build(ctx, vert, frag, msg, msg_size);
+        {
+            /* the lit program's surface and shadow functions */
+            char s0[40], s1[40];
+            const char *chunks[3];
+            stin__formatf(s0, sizeof s0, "%ssurface_plain.glsl", dir);
+            stin__formatf(s1, sizeof s1, "%sshadow_none.glsl", dir);
+            chunks[0] = s0;
+            chunks[1] = s1;
+            chunks[2] = NULL;
+            p->name = stin__program_build(ctx, vert, frag, i == STIN__PROG_LIT ? chunks : NULL, msg,
+                                          msg_size);
+        }
         if (!p->name) {
             stin__glsl_release(ctx);
             return STIN_ERROR_GL;

@@ -1,18 +1,65 @@
 /* GLSL compile and link with the driver's info log in a stack buffer. */
 #include "internal.h"
 
-static GLuint compile(stin_context *ctx, GLenum type, const char *name, char *msg, size_t size)
+#define MAX_CHUNKS 6
+#define CHUNK_MARKER "// @chunks"
+
+/* Where the marker line starts in src, or NULL. */
+static const char *find_marker(const char *src)
 {
-    const char *src = stin__shader_source(name);
+    const char *p = src;
+    for (; *p; p++) {
+        const char *a = p, *b = CHUNK_MARKER;
+        while (*b && *a == *b) {
+            a++;
+            b++;
+        }
+        if (!*b)
+            return p;
+    }
+    return NULL;
+}
+
+/* The main file's text up to its "// @chunks" line, then each chunk, then
+ * the rest: one shader from several embedded files, without copying (GL
+ * takes the pieces with their lengths). */
+static GLuint compile(stin_context *ctx, GLenum type, const char *name,
+                      const char *const *chunks, char *msg, size_t size)
+{
+    const char *src = stin__shader_source(name), *marker;
+    const GLchar *parts[MAX_CHUNKS + 2];
+    GLint lengths[MAX_CHUNKS + 2];
+    GLsizei count = 0;
     GLuint s;
     GLint ok = 0;
     char log[1024];
+    int i;
     if (!src) {
         stin__formatf(msg, size, "shader %s is not embedded", name);
         return 0;
     }
+    marker = chunks && chunks[0] ? find_marker(src) : NULL;
+    if (chunks && chunks[0] && !marker) {
+        stin__formatf(msg, size, "shader %s has no %s line for its chunks", name, CHUNK_MARKER);
+        return 0;
+    }
+    parts[count] = src;
+    lengths[count++] = marker ? (GLint)(marker - src) : -1;
+    for (i = 0; marker && chunks[i] && i < MAX_CHUNKS; i++) {
+        const char *c = stin__shader_source(chunks[i]);
+        if (!c) {
+            stin__formatf(msg, size, "shader chunk %s is not embedded", chunks[i]);
+            return 0;
+        }
+        parts[count] = c;
+        lengths[count++] = -1;
+    }
+    if (marker) {
+        parts[count] = marker;
+        lengths[count++] = -1;
+    }
     s = GL(ctx, CreateShader)(type);
-    GL(ctx, ShaderSource)(s, 1, &src, NULL);
+    GL(ctx, ShaderSource)(s, count, parts, lengths);
     GL(ctx, CompileShader)(s);
     GL(ctx, GetShaderiv)(s, GL_COMPILE_STATUS, &ok);
     if (!ok) {
@@ -28,15 +75,15 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name, char *ms
 
 /* Attribute locations are fixed so that one vertex layout (and one VAO per
  * mesh) serves every program. */
-GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag, char *msg,
-                           size_t size)
+GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
+                           const char *const *frag_chunks, char *msg, size_t size)
 {
-    GLuint vs = compile(ctx, GL_VERTEX_SHADER, vert, msg, size), fs, p;
+    GLuint vs = compile(ctx, GL_VERTEX_SHADER, vert, NULL, msg, size), fs, p;
     GLint ok = 0;
     char log[1024];
     if (!vs)
         return 0;
-    fs = compile(ctx, GL_FRAGMENT_SHADER, frag, msg, size);
+    fs = compile(ctx, GL_FRAGMENT_SHADER, frag, frag_chunks, msg, size);
     if (!fs) {
         GL(ctx, DeleteShader)(vs);
         return 0;

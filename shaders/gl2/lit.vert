@@ -9,9 +9,11 @@ uniform mat3 u_normal_matrix;
 attribute vec4 a_position;
 attribute vec3 a_normal;
 attribute vec2 a_uv;
+attribute vec4 a_tangent;
 varying vec3 v_world;
 varying vec3 v_normal;
 varying vec2 v_uv;
+varying vec4 v_tangent;
 
 void main()
 {
@@ -21,5 +23,8 @@ void main()
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
+    // tangents follow the surface (the model matrix), normals its inverse transpose
+    v_tangent = vec4(mat3(u_model[0].xyz, u_model[1].xyz, u_model[2].xyz) * a_tangent.xyz,
+                     a_tangent.w);
     gl_Position = u_view_proj * world;
 }

@@ -16,6 +16,13 @@ uniform int u_has_albedo_tex;
 in vec3 v_world;
 in vec3 v_normal;
 in vec2 v_uv;
+in vec4 v_tangent; // world tangent, w = handedness
+
+// @chunks
+// The chunks spliced in here define (see src/path_glsl.c for which):
+//   vec3 surface_normal(inout vec2 uv, vec3 v)  the shading normal; may move uv (parallax)
+//   float surface_shadow(vec2 uv, vec3 l)       the height field's shadow toward l (1 lit)
+//   float shadow_visibility(int i)              the shadow technique's visibility of light i
 
 // pow(0, 0) is undefined in GLSL; GL's lighting takes it as 1.
 float safe_pow(float x, float e)
@@ -25,8 +32,9 @@ float safe_pow(float x, float e)
 
 void main()
 {
-    vec3 n = normalize(v_normal);
     vec3 v = normalize(u_eye - v_world);
+    vec2 uv = v_uv;
+    vec3 n = surface_normal(uv, v);
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
     for (int i = 0; i < 8; i++) {
@@ -46,12 +54,13 @@ void main()
         }
         float ndotl = dot(n, l);
         if (ndotl > 0.0) {
+            k *= shadow_visibility(i) * surface_shadow(uv, l);
             vec3 h = normalize(l + v);
             diffuse += k * ndotl * col.rgb;
             specular += k * safe_pow(dot(n, h), u_shininess) * col.rgb;
         }
     }
-    vec4 tex = u_has_albedo_tex != 0 ? texture(u_albedo_tex, v_uv) : vec4(1.0);
+    vec4 tex = u_has_albedo_tex != 0 ? texture(u_albedo_tex, uv) : vec4(1.0);
     vec3 color = (u_ambient + diffuse) * u_albedo.rgb * tex.rgb + specular * u_specular;
     frag_color = vec4(clamp(color, 0.0, 1.0), u_albedo.a * tex.a);
 }

@@ -9,9 +9,11 @@ uniform mat3 u_normal_matrix;
 in vec4 a_position;
 in vec3 a_normal;
 in vec2 a_uv;
+in vec4 a_tangent;
 out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
+out vec4 v_tangent;
 
 void main()
 {
@@ -21,5 +23,8 @@ void main()
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;
+    // tangents follow the surface (the model matrix), normals its inverse transpose
+    v_tangent = vec4(mat3(u_model[0].xyz, u_model[1].xyz, u_model[2].xyz) * a_tangent.xyz,
+                     a_tangent.w);
     gl_Position = u_view_proj * world;
 }

@@ -1,0 +1,10 @@
+// Surface "plain": the interpolated vertex normal, no height field.
+vec3 surface_normal(inout vec2 uv, vec3 v)
+{
+    return normalize(v_normal);
+}
+
+float surface_shadow(vec2 uv, vec3 l)
+{
+    return 1.0;
+}
