@@ -121,8 +121,15 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
 uint64_t stin__technique_needs(stin_technique t);
 stin_feature stin__technique_feature(stin_technique t);
 stin_tier stin__technique_tier(stin_technique t);
-/* The lighting technique a technique runs on top of (STIN_TECH_NONE: any). */
+/* The lighting technique a technique runs on top of (STIN_TECH_NONE: any;
+ * STIN_TECH_LIGHTING_GLSL110: any GLSL lighting). */
 stin_technique stin__technique_lighting(stin_technique t);
+/* 1 when technique t can run with this lighting technique. */
+int stin__technique_runs_with(stin_technique t, stin_technique lighting);
+/* One feature's chain walk (stin__select does all features). */
+stin_result stin__choose(const stin_caps *caps, stin_tier tier, stin_feature f,
+                         stin_technique forced, stin_technique lighting, stin_choice *out,
+                         char *msg, size_t msg_size);
 uint64_t stin__tier_needs(stin_tier t);
 /* Names of the bits in `bits`, comma separated. */
 void stin__cap_names(uint64_t bits, char *out, size_t size);
@@ -180,7 +187,15 @@ typedef struct stin__program {
     GLuint name;
     GLint u_model, u_view_proj, u_normal_matrix, u_eye, u_ambient, u_albedo, u_specular,
         u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
+    /* surface chunks (surface_glsl.c): samplers and (scale, bias, min, max steps) */
+    GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
+    uint32_t frame_serial;   /* ctx->glsl_surface.serial its per-frame uniforms have */
 } stin__program;
+
+/* GLSL surface variants of the lit program: one program each (surface_glsl.c). */
+enum { STIN__SURF_PLAIN = 0, STIN__SURF_NORMAL, STIN__SURF_PARALLAX, STIN__SURF_POM,
+       STIN__SURF_COUNT };
+#define STIN__SURF_LOG_KEYS 32
 
 struct stin_context {
     stin_desc desc;           /* with defaults applied */
@@ -235,6 +250,19 @@ struct stin_context {
         int said_point, said_area;
     } maps;
     int lights_per_pass;
+    struct {
+        /* lit programs per surface variant; [STIN__SURF_PLAIN] is unused (the
+         * plain one is programs[STIN__PROG_LIT]) */
+        stin__program lit[STIN__SURF_COUNT];
+        int best;             /* best variant built (STIN__SURF_*) */
+        const stin__program *current; /* lit program in use this pass, NULL = other */
+        uint32_t serial;      /* bumped when the per-frame lit uniforms change */
+        float packed[4 * 4 * STIN__LIGHTS_PER_PASS]; /* the lights last uploaded */
+        int light_n, with_ambient;
+        int units_bound;      /* units 1-2 hold textures this frame */
+        uint32_t logged[STIN__SURF_LOG_KEYS]; /* per-material step-downs already logged */
+        uint32_t logged_count;
+    } glsl_surface;
     struct {
         GLuint cube;          /* normalisation cube map; 0 = DOT3 not in use */
         GLenum dot3_rgb;      /* GL_DOT3_RGB (1.3/ARB) or GL_DOT3_RGB_EXT */
@@ -325,6 +353,17 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
                         const int scissor[4]);
 /* Everything that differs per frame for shadow volumes is chosen here. */
 void stin__volume_frame_setup(stin_context *ctx);
+/* Light cameras for shadow maps (shadow_light_camera.c). */
+void stin__light_look_along(float m[16], const float eye[3], const float dir[3]);
+void stin__light_fit(const stin_context *ctx, const float view[16], int receivers_only,
+                     float *near_d, float *far_d, float *half_width, float center_out[3]);
+void stin__light_perspective(float m[16], float fovy_deg, float n, float f);
+/* The view and projection of a spot or directional light and the depth range
+ * [n, f] it spans; 0 for a point light or when nothing is in front. map_size
+ * snaps a directional map to whole texels (0: no snapping). */
+int stin__light_camera(const stin_context *ctx, const stin_light_desc *l, float view[16],
+                       float proj[16], float *n, float *f, uint32_t map_size);
+
 /* Fixed-function shadow maps (shadow_map_fixed.c). */
 int stin__maps_active(const stin_context *ctx);
 stin_result stin__maps_init(stin_context *ctx);
@@ -375,6 +414,31 @@ void stin__dot3_light_vectors(const stin__vertex *v, uint32_t n, const float mod
  * coordinates (s, t), unnormalised; and a face as RGBA8 0.5 + 0.5 n. */
 void stin__dot3_cube_direction(int face, float s, float t, float out[3]);
 void stin__dot3_cube_face(int face, uint32_t size, unsigned char *rgba);
+
+/* ---- surface: GLSL normal / parallax / POM chunks (surface_glsl.c) --------
+ * The lit program is built once per surface variant, from the context's
+ * surface choice down to plain; a variant that fails to build lowers the
+ * best one (logged). */
+/* Variant of a technique (plain for dot3/plain/none). */
+int stin__surf_variant_of(stin_technique t);
+stin_technique stin__surf_technique_of(int variant);
+/* The chunk files of a variant for directory dir ("gl2/"): writes up to 3
+ * names into names (each 40 bytes) and a NULL-terminated list into list,
+ * shadow_chunk last. */
+void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk,
+                       char names[3][40], const char *list[4]);
+/* The variant a draw's material gets (logs a step down once per material). */
+int stin__surf_variant_for(stin_context *ctx, const stin_material *m);
+/* Uniform locations of the surface chunks. */
+void stin__surf_locate(stin_context *ctx, stin__program *p);
+/* Sampler units (once per program use). */
+void stin__surf_units(stin_context *ctx, const stin__program *p);
+/* Per-draw: binds the normal and height maps to units 1 and 2, uploads the
+ * material's height scale, bias, steps and self-shadow mode. */
+void stin__surf_material(stin_context *ctx, const stin__program *p, const stin_material *m,
+                         int variant);
+/* Unbinds units 1 and 2 after a frame that bound them; unit 0 active. */
+void stin__surf_unbind(stin_context *ctx);
 
 /* Restores the GL state the header promises after a frame. */
 void stin__state_restore(stin_context *ctx);

@@ -1,0 +1,61 @@
+// Shadow maps with percentage-closer filtering (technique "map-pcf").
+// u_shadow_kind: 0 no map for this pass's light, 1 one map (spot or
+// directional), 2 a point light's six 90-degree maps (u_shadow_faces).
+// Each map: world -> [0,1] texture space by u_shadow_matrix[face]; the
+// position is pushed along the geometric normal by u_shadow_params.z world
+// units (normal-offset bias) before the lookup; the kernel is
+// (2 r + 1) x (2 r + 1) taps of the hardware's 2x2 compare, r = params.y.
+uniform int u_shadow_kind;
+uniform mat4 u_shadow_matrix[6];
+uniform vec4 u_shadow_params; // x: 1 / map size, y: kernel radius, z: normal offset
+uniform sampler2DShadow u_shadow_map;
+uniform sampler2DShadow u_shadow_face1;
+uniform sampler2DShadow u_shadow_face2;
+uniform sampler2DShadow u_shadow_face3;
+uniform sampler2DShadow u_shadow_face4;
+uniform sampler2DShadow u_shadow_face5;
+
+float shadow_tap(int face, vec3 c)
+{
+    // samplers cannot be indexed in GLSL 1.10: one branch per face
+    if (face == 0) return shadow2D(u_shadow_map, c).r;
+    if (face == 1) return shadow2D(u_shadow_face1, c).r;
+    if (face == 2) return shadow2D(u_shadow_face2, c).r;
+    if (face == 3) return shadow2D(u_shadow_face3, c).r;
+    if (face == 4) return shadow2D(u_shadow_face4, c).r;
+    return shadow2D(u_shadow_face5, c).r;
+}
+
+float shadow_visibility(int i)
+{
+    if (u_shadow_kind == 0)
+        return 1.0; // a shadowed pass lights one light, so i is always that one
+    vec3 ng = normalize(cross(dFdx(v_world), dFdy(v_world)));
+    vec3 p = v_world;
+    int face = 0;
+    if (u_shadow_kind == 2) {
+        // the face is the major axis of the direction from the light
+        vec3 d = v_world - u_lights[4 * i].xyz;
+        vec3 a = abs(d);
+        if (a.x >= a.y && a.x >= a.z) face = d.x > 0.0 ? 0 : 1;
+        else if (a.y >= a.z) face = d.y > 0.0 ? 2 : 3;
+        else face = d.z > 0.0 ? 4 : 5;
+    }
+    // push toward the side the eye sees, which is the lit side here
+    if (dot(ng, u_eye - v_world) < 0.0)
+        ng = -ng;
+    p += ng * u_shadow_params.z;
+    vec4 c = u_shadow_matrix[face] * vec4(p, 1.0);
+    if (c.w <= 0.0)
+        return 0.0;
+    vec3 t = c.xyz / c.w;
+    float sum = 0.0, n = 0.0;
+    for (int y = -2; y <= 2; y++)
+        for (int x = -2; x <= 2; x++) {
+            if (abs(float(x)) > u_shadow_params.y || abs(float(y)) > u_shadow_params.y)
+                continue;
+            sum += shadow_tap(face, vec3(t.xy + vec2(float(x), float(y)) * u_shadow_params.x, t.z));
+            n += 1.0;
+        }
+    return sum / n;
+}
