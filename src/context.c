@@ -149,6 +149,18 @@ static stin_result init_lighting(stin_context *ctx)
         stin__formatf(c->reason, sizeof c->reason, "fallback: %s failed to build (%s)",
                       stin_technique_name(c->technique), msg);
         c->technique = next;
+        if (!stin__technique_runs_with(ctx->sel.choice[STIN_FEATURE_SURFACE].technique, next)) {
+            /* the GLSL surface chunks went with the GLSL lighting: choose again */
+            stin_choice *sc = &ctx->sel.choice[STIN_FEATURE_SURFACE];
+            stin_result r = stin__choose(&ctx->caps, ctx->sel.tier, STIN_FEATURE_SURFACE,
+                                         ctx->desc.techniques[STIN_FEATURE_SURFACE], next, sc,
+                                         msg, sizeof msg);
+            if (r != STIN_OK) {
+                stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
+                          "stin_create: %s", msg);
+                return r;
+            }
+        }
     }
 }
 

@@ -110,6 +110,18 @@ static void material_defaults(stin_material *m)
         m->shininess = 128.0f;
     if (m->shininess < 0.0f)
         m->shininess = 0.0f;
+    if (m->height_scale == 0.0f)
+        m->height_scale = 0.04f;
+    if (m->height_bias == 0.0f)
+        m->height_bias = 0.5f * m->height_scale;
+    if (m->pom_min_steps == 0)
+        m->pom_min_steps = 8;
+    if (m->pom_max_steps == 0)
+        m->pom_max_steps = 32;
+    if (m->pom_max_steps > 64)
+        m->pom_max_steps = 64;
+    if (m->pom_min_steps > m->pom_max_steps)
+        m->pom_min_steps = m->pom_max_steps;
 }
 
 static float eye_depth(const stin_context *ctx, const stin__mesh_slot *m, const float xf[16])
@@ -148,9 +160,25 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
     stin__memzero(&mat, sizeof mat);
     if (material)
         mat = *material;
-    if (!finite_n(mat.color, 4) || !finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess)) {
+    if (!finite_n(mat.color, 4) || !finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess) ||
+        !stin__isfinite(mat.height_scale) || !stin__isfinite(mat.height_bias)) {
         ctx->stats.dropped_draws++;
         return arg_error(ctx, "stin_draw", "material values must be finite; draw dropped");
+    }
+    if (mat.height_scale < 0.0f || mat.self_shadow < 0 || mat.self_shadow > 2 ||
+        (mat.surface != STIN_TECH_NONE &&
+         stin__technique_feature(mat.surface) != STIN_FEATURE_SURFACE)) {
+        ctx->stats.dropped_draws++;
+        return arg_error(ctx, "stin_draw", "material height_scale must be >= 0, self_shadow 0..2 "
+                                           "and surface a surface technique or none; draw dropped");
+    }
+    if ((mat.normal_map.id && !stin__texture_lookup(ctx, mat.normal_map)) ||
+        (mat.height_map.id && !stin__texture_lookup(ctx, mat.height_map))) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_HANDLE,
+                  "stin_draw: stale or unknown normal or height map 0x%x/0x%x; draw dropped",
+                  mat.normal_map.id, mat.height_map.id);
+        ctx->stats.dropped_draws++;
+        return STIN_ERROR_INVALID_HANDLE;
     }
     if (mat.albedo.id && !stin__texture_lookup(ctx, mat.albedo)) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_HANDLE,

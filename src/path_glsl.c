@@ -26,6 +26,55 @@ static void locate(stin_context *ctx, stin__program *p)
     LOC(u_has_albedo_tex, "u_has_albedo_tex");
     LOC(u_color, "u_color");
 #undef LOC
+    stin__surf_locate(ctx, p);
+    p->frame_serial = 0;
+}
+
+/* The shadow chunk of the lit programs. */
+static const char *lit_shadow_chunk(const stin_context *ctx)
+{
+    (void)ctx;
+    return "shadow_none.glsl";
+}
+
+/* The lit program of a surface variant. */
+static stin__program *lit_program(stin_context *ctx, int variant)
+{
+    return variant == STIN__SURF_PLAIN ? &ctx->programs[STIN__PROG_LIT]
+                                       : &ctx->glsl_surface.lit[variant];
+}
+
+/* One lit program per surface variant from normal up to the surface choice;
+ * a variant that does not build leaves the best at the one below it. */
+static void build_surface_variants(stin_context *ctx, const char *dir)
+{
+    stin_choice *c = &ctx->sel.choice[STIN_FEATURE_SURFACE];
+    int top = stin__surf_variant_of(c->technique), v;
+    char vert[32], frag[32], names[3][40], msg[160];
+    const char *chunks[4];
+    ctx->glsl_surface.best = STIN__SURF_PLAIN;
+    if (c->technique == STIN_TECH_SURFACE_DOT3) /* not chosen with GLSL lighting */
+        top = STIN__SURF_PLAIN;
+    stin__formatf(vert, sizeof vert, "%slit.vert", dir);
+    stin__formatf(frag, sizeof frag, "%slit.frag", dir);
+    for (v = STIN__SURF_NORMAL; v <= top; v++) {
+        stin__program *p = &ctx->glsl_surface.lit[v];
+        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), names, chunks);
+        p->name = stin__program_build(ctx, vert, frag, chunks, msg, sizeof msg);
+        if (!p->name) {
+            stin_technique to = stin__surf_technique_of(ctx->glsl_surface.best);
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "surface: %s failed (%s); falling back to %s",
+                      stin_technique_name(stin__surf_technique_of(v)), msg,
+                      stin_technique_name(to));
+            stin__formatf(c->reason, sizeof c->reason, "fallback: %s failed to build (%s)",
+                          stin_technique_name(stin__surf_technique_of(v)), msg);
+            c->technique = to;
+            return;
+        }
+        locate(ctx, p);
+        ctx->glsl_surface.best = v;
+    }
 }
 
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size)
@@ -39,14 +88,10 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
         stin__formatf(vert, sizeof vert, "%s%s", dir, vert_names[i]);
         stin__formatf(frag, sizeof frag, "%s%s", dir, frag_names[i]);
         {
-            /* the lit program's surface and shadow functions */
-            char s0[40], s1[40];
-            const char *chunks[3];
-            stin__formatf(s0, sizeof s0, "%ssurface_plain.glsl", dir);
-            stin__formatf(s1, sizeof s1, "%sshadow_none.glsl", dir);
-            chunks[0] = s0;
-            chunks[1] = s1;
-            chunks[2] = NULL;
+            /* the lit program's surface and shadow functions (plain variant) */
+            char names[3][40];
+            const char *chunks[4];
+            stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), names, chunks);
             p->name = stin__program_build(ctx, vert, frag, i == STIN__PROG_LIT ? chunks : NULL, msg,
                                           msg_size);
         }
@@ -56,6 +101,7 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
         }
         locate(ctx, p);
     }
+    build_surface_variants(ctx, dir);
     if (tier == STIN_TIER_GL4) { /* core profiles have no client arrays: stream volumes */
         GL(ctx, GenBuffers)(1, &ctx->volume_vbo);
         GL(ctx, GenVertexArrays)(1, &ctx->volume_vao);
@@ -78,6 +124,12 @@ void stin__glsl_release(stin_context *ctx)
             GL(ctx, DeleteProgram)(ctx->programs[i].name);
             ctx->programs[i].name = 0;
         }
+    for (i = 0; i < STIN__SURF_COUNT; i++)
+        if (ctx->glsl_surface.lit[i].name) {
+            GL(ctx, DeleteProgram)(ctx->glsl_surface.lit[i].name);
+            ctx->glsl_surface.lit[i].name = 0;
+        }
+    ctx->glsl_surface.current = NULL;
     if (ctx->volume_vbo)
         GL(ctx, DeleteBuffers)(1, &ctx->volume_vbo);
     if (ctx->volume_vao)
@@ -89,11 +141,12 @@ static int gl4(const stin_context *ctx) { return ctx->volume_vao != 0; }
 
 /* Packs up to 8 lights: position, direction + cos(cutoff), colour + exponent,
  * attenuation (the layout lit.frag reads). */
+static void lit_bind(stin_context *ctx, const stin__program *p);
+
 static void upload_lights(stin_context *ctx, const stin__program *p, const stin_light_desc *lights,
                           int n, int with_ambient)
 {
-    float packed[4 * 4 * STIN__LIGHTS_PER_PASS];
-    const float zero[3] = {0, 0, 0};
+    float *packed = ctx->glsl_surface.packed;
     int i, k;
     for (i = 0; i < n; i++) {
         const stin_light_desc *l = &lights[i];
@@ -110,10 +163,53 @@ static void upload_lights(stin_context *ctx, const stin__program *p, const stin_
         o[11] = l->type == STIN_LIGHT_SPOT ? l->spot_exponent : 0.0f;
         o[15] = 0.0f;
     }
-    GL(ctx, Uniform1i)(p->u_light_count, n);
-    if (n)
-        GL(ctx, Uniform4fv)(p->u_lights, 4 * n, packed);
-    GL(ctx, Uniform3fv)(p->u_ambient, 1, with_ambient ? ctx->frame.ambient : zero);
+    ctx->glsl_surface.light_n = n;
+    ctx->glsl_surface.with_ambient = with_ambient;
+    ctx->glsl_surface.serial++; /* every lit program's copy is stale now */
+    lit_bind(ctx, p);
+}
+
+/* The per-frame uniforms of a lit program (matrices, eye, sampler units,
+ * the current light batch), uploaded when the program is bound after they
+ * changed: switching surface variants per draw costs this only once per
+ * variant and pass. */
+static void lit_refresh(stin_context *ctx, stin__program *p)
+{
+    const float zero[3] = {0, 0, 0};
+    float inv[16];
+    if (p->frame_serial == ctx->glsl_surface.serial)
+        return;
+    p->frame_serial = ctx->glsl_surface.serial;
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
+    stin__mat4_invert(inv, ctx->frame.view);
+    GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
+    GL(ctx, Uniform1i)(p->u_albedo_tex, 0);
+    stin__surf_units(ctx, p);
+    GL(ctx, Uniform1i)(p->u_light_count, ctx->glsl_surface.light_n);
+    if (ctx->glsl_surface.light_n)
+        GL(ctx, Uniform4fv)(p->u_lights, 4 * ctx->glsl_surface.light_n, ctx->glsl_surface.packed);
+    GL(ctx, Uniform3fv)(p->u_ambient, 1,
+                        ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
+}
+
+/* Makes p (a lit program) current with this pass's uniforms. */
+static void lit_bind(stin_context *ctx, const stin__program *p)
+{
+    if (ctx->glsl_surface.current != p) {
+        GL(ctx, UseProgram)(p->name);
+        ctx->glsl_surface.current = p;
+    }
+    lit_refresh(ctx, (stin__program *)p);
+}
+
+/* The lit program of a draw's surface variant, bound, with its material. */
+static const stin__program *lit_for_draw(stin_context *ctx, const stin__draw *d)
+{
+    int v = stin__surf_variant_for(ctx, &d->material);
+    const stin__program *q = lit_program(ctx, v);
+    lit_bind(ctx, q);
+    stin__surf_material(ctx, q, &d->material, v);
+    return q;
 }
 
 static void set_batch(stin_context *ctx, const stin__program *p, int batch)
@@ -174,11 +270,14 @@ static void draw_set(stin_context *ctx, const stin__program *p, int which, int m
     uint32_t i;
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        const stin__program *q = p;
         if (!in_set(d, which))
             continue;
+        if (materials && ctx->glsl_surface.current) /* a lit pass: the draw's variant */
+            q = lit_for_draw(ctx, d);
         if (materials)
-            set_material(ctx, p, &d->material);
-        draw_mesh(ctx, p, d);
+            set_material(ctx, q, &d->material);
+        draw_mesh(ctx, q, d);
     }
 }
 
@@ -198,14 +297,14 @@ static void pass_state(stin_context *ctx, int additive, int blend_alpha)
 static const stin__program *use(stin_context *ctx, int which)
 {
     const stin__program *p = &ctx->programs[which];
+    if (which == STIN__PROG_LIT) {
+        ctx->glsl_surface.serial++; /* a new pass: the view may have changed */
+        lit_bind(ctx, p);
+        return p;
+    }
+    ctx->glsl_surface.current = NULL;
     GL(ctx, UseProgram)(p->name);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
-    if (which == STIN__PROG_LIT) {
-        float inv[16];
-        stin__mat4_invert(inv, ctx->frame.view);
-        GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
-        GL(ctx, Uniform1i)(p->u_albedo_tex, 0);
-    }
     return p;
 }
 
@@ -226,13 +325,15 @@ static void glsl_batches(stin_context *ctx, int which)
     if (which & STIN__BLENDED)
         for (i = 0; i < ctx->draw_count; i++) {
             const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+            const stin__program *q;
             if (!in_set(d, STIN__BLENDED))
                 continue;
-            set_material(ctx, p, &d->material);
+            q = lit_for_draw(ctx, d);
+            set_material(ctx, q, &d->material);
             for (b = 0; b < batches; b++) {
-                set_batch(ctx, p, b);
+                set_batch(ctx, q, b);
                 pass_state(ctx, b > 0, 1);
-                draw_mesh(ctx, p, d);
+                draw_mesh(ctx, q, d);
             }
         }
 }
@@ -320,6 +421,7 @@ static void glsl_begin(stin_context *ctx)
 {
     int i;
     ctx->bound_mesh = 0xffffffffu;
+    ctx->glsl_surface.current = NULL;
     GL_ENABLE(ctx, GL_DEPTH_TEST);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
@@ -331,6 +433,8 @@ static void glsl_begin(stin_context *ctx)
 static void glsl_end(stin_context *ctx)
 {
     int i;
+    stin__surf_unbind(ctx);
+    ctx->glsl_surface.current = NULL;
     if (!gl4(ctx))
         for (i = 0; i < 4; i++)
             GL(ctx, DisableVertexAttribArray)((GLuint)i);

@@ -36,6 +36,10 @@ uint64_t stin__technique_needs(stin_technique t)
     case STIN_TECH_SHADOWS_VOLUME: return BIT(STENCIL);
     case STIN_TECH_SHADOWS_MAP_DEPTH: return BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE);
     case STIN_TECH_SHADOWS_MAP_COMBINE: return BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE);
+    case STIN_TECH_SURFACE_POM:
+    case STIN_TECH_SURFACE_PARALLAX:
+    case STIN_TECH_SURFACE_NORMAL: /* three samplers: albedo, normal map, height map */
+        return BIT(GLSL) | BIT(MULTITEXTURE);
     case STIN_TECH_SURFACE_DOT3:
         return BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) |
                BIT(TEXTURE_CUBE_MAP) | BIT(FIXED_FUNCTION);
@@ -49,10 +53,17 @@ uint64_t stin__technique_needs(stin_technique t)
  * capabilities are missing. DOT3 bump mapping is a fixed-function texture
  * combiner set-up: it draws in the fixed-function path's lit passes only, so
  * the GLSL tiers (whose normal mapping is their own surface technique) never
- * pick it, even where the context has the capabilities. */
+ * pick it, even where the context has the capabilities. The GLSL surface
+ * techniques (normal, parallax, pom) are chunks of the GLSL lit programs:
+ * they name STIN_TECH_LIGHTING_GLSL110, which stands for "any GLSL lighting"
+ * (stin__technique_runs_with). */
 stin_technique stin__technique_lighting(stin_technique t)
 {
     switch (t) {
+    case STIN_TECH_SURFACE_POM:
+    case STIN_TECH_SURFACE_PARALLAX:
+    case STIN_TECH_SURFACE_NORMAL:
+        return STIN_TECH_LIGHTING_GLSL110;
     case STIN_TECH_SURFACE_DOT3:
     case STIN_TECH_SHADOWS_MAP_DEPTH: /* texture-environment shadow tests, likewise */
     case STIN_TECH_SHADOWS_MAP_COMBINE:
@@ -60,6 +71,21 @@ stin_technique stin__technique_lighting(stin_technique t)
     default:
         return STIN_TECH_NONE;
     }
+}
+
+int stin__technique_runs_with(stin_technique t, stin_technique lighting)
+{
+    stin_technique need = stin__technique_lighting(t);
+    if (need == STIN_TECH_NONE || need == lighting)
+        return 1;
+    /* GLSL 1.10 lighting stands for the GLSL class: 1.50 runs those too */
+    return need == STIN_TECH_LIGHTING_GLSL110 && lighting == STIN_TECH_LIGHTING_GLSL150;
+}
+
+/* How a lighting requirement reads in messages. */
+static const char *lighting_class(stin_technique need)
+{
+    return need == STIN_TECH_LIGHTING_GLSL110 ? "GLSL" : stin_technique_name(need);
 }
 
 stin_feature stin__technique_feature(stin_technique t)
@@ -124,7 +150,7 @@ stin_tier stin_best_tier(const stin_caps *caps)
 
 /* Walks the feature's chain from the best technique down; records why each
  * better one was passed over. */
-static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
+stin_result stin__choose(const stin_caps *caps, stin_tier tier, stin_feature f,
                           stin_technique forced, stin_technique lighting, stin_choice *out,
                           char *msg, size_t msg_size)
 {
@@ -147,11 +173,10 @@ static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
                           tech_tier[forced] > tier && lack ? ", " : "", lack ? names : "");
             return STIN_ERROR_UNSUPPORTED;
         }
-        if (stin__technique_lighting(forced) != STIN_TECH_NONE &&
-            stin__technique_lighting(forced) != lighting) {
-            stin__formatf(msg, msg_size, "%s technique %s needs the %s lighting technique "
+        if (!stin__technique_runs_with(forced, lighting)) {
+            stin__formatf(msg, msg_size, "%s technique %s needs %s lighting "
                           "(lighting is %s)", stin_feature_name(f), stin_technique_name(forced),
-                          stin_technique_name(stin__technique_lighting(forced)),
+                          lighting_class(stin__technique_lighting(forced)),
                           stin_technique_name(lighting));
             return STIN_ERROR_UNSUPPORTED;
         }
@@ -172,12 +197,12 @@ static stin_result choose(const stin_caps *caps, stin_tier tier, stin_feature f,
                           names);
             continue;
         }
-        if (stin__technique_lighting((stin_technique)t) != STIN_TECH_NONE &&
-            stin__technique_lighting((stin_technique)t) != lighting) {
+        if (!stin__technique_runs_with((stin_technique)t, lighting)) {
             /* not a fallback: the chosen lighting path does not draw it */
-            stin__formatf(note, sizeof note, "%s runs with %s lighting only; ",
-                          stin_technique_name((stin_technique)t),
-                          stin_technique_name(stin__technique_lighting((stin_technique)t)));
+            if (!note[0])
+                stin__formatf(note, sizeof note, "%s runs with %s lighting only; ",
+                              stin_technique_name((stin_technique)t),
+                              lighting_class(stin__technique_lighting((stin_technique)t)));
             continue;
         }
         out->technique = (stin_technique)t;
@@ -219,7 +244,7 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
     }
     for (f = 0; f < STIN_FEATURE_COUNT; f++) {
         /* features in enum order: lighting is chosen before the techniques that need it */
-        stin_result r = choose(caps, out->tier, (stin_feature)f,
+        stin_result r = stin__choose(caps, out->tier, (stin_feature)f,
                                forced_tech ? forced_tech[f] : STIN_TECH_NONE,
                                out->choice[STIN_FEATURE_LIGHTING].technique, &out->choice[f],
                                msg, msg_size);

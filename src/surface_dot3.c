@@ -165,7 +165,8 @@ void stin__dot3_release(stin_context *ctx)
 
 int stin__dot3_bumped(const stin_context *ctx, const stin_material *m)
 {
-    if (!ctx->dot3.cube || m->color[3] < 1.0f || !stin__texture_lookup(ctx, m->normal_map))
+    if (!ctx->dot3.cube || m->color[3] < 1.0f || !stin__texture_lookup(ctx, m->normal_map) ||
+        m->surface == STIN_TECH_SURFACE_PLAIN) /* the material asks for no bump */
         return 0;
     return ctx->dot3.units >= (stin__texture_lookup(ctx, m->albedo) ? 4 : 3);
 }

@@ -66,6 +66,77 @@ static void halve(const uint8_t *src, uint32_t w, uint32_t h, uint8_t *dst)
         }
 }
 
+/* Normal maps: 128 + 127 n per channel (128 is zero). */
+static float decode_n(uint8_t c) { return ((float)c - 128.0f) / 127.0f; }
+
+static uint8_t encode_unit(float x, float scale, float offset)
+{
+    float v = offset + scale * x + 0.5f;
+    return (uint8_t)(v < 0.0f ? 0.0f : v > 255.0f ? 255.0f : v);
+}
+
+/* Normal-map mip level: the mean of the four unit normals (each scaled by
+ * its own mean length in A); RGB its direction, A its length (Toksvig). */
+static void halve_normals(const uint8_t *src, uint32_t w, uint32_t h, uint8_t *dst)
+{
+    uint32_t nw = w > 1 ? w / 2 : 1, nh = h > 1 ? h / 2 : 1, x, y;
+    for (y = 0; y < nh; y++)
+        for (x = 0; x < nw; x++) {
+            uint32_t xs[2], ys[2];
+            float sum[3] = {0, 0, 0}, len;
+            int i, j, c;
+            uint8_t *o = dst + 4u * (y * nw + x);
+            xs[0] = w > 1 ? 2 * x : 0;
+            xs[1] = w > 1 ? 2 * x + 1 : 0;
+            ys[0] = h > 1 ? 2 * y : 0;
+            ys[1] = h > 1 ? 2 * y + 1 : 0;
+            for (j = 0; j < 2; j++)
+                for (i = 0; i < 2; i++) {
+                    const uint8_t *p = src + 4u * (ys[j] * w + xs[i]);
+                    float d[3], l;
+                    for (c = 0; c < 3; c++)
+                        d[c] = decode_n(p[c]);
+                    l = stin__sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+                    if (l > 0.0f)
+                        for (c = 0; c < 3; c++)
+                            sum[c] += 0.25f * d[c] / l * ((float)p[3] / 255.0f);
+                }
+            len = stin__sqrtf(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+            if (!(len > 1e-6f)) {
+                sum[0] = sum[1] = 0.0f;
+                sum[2] = len = 1e-6f;
+            }
+            for (c = 0; c < 3; c++)
+                o[c] = encode_unit(sum[c] / len, 127.0f, 128.0f);
+            o[3] = encode_unit(len > 1.0f ? 1.0f : len, 255.0f, 0.0f);
+        }
+}
+
+/* A normal map from the R channel of a height field: central differences
+ * with wrap-around, n = normalize(-s dh/dx, -s dh/dy, 1), h in [0,1]. */
+static void normals_from_height(const uint8_t *src, uint32_t w, uint32_t h, float strength,
+                                uint8_t *dst)
+{
+    uint32_t x, y;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            float hl = src[4u * (y * w + (x + w - 1) % w)] / 255.0f;
+            float hr = src[4u * (y * w + (x + 1) % w)] / 255.0f;
+            float hd = src[4u * (((y + h - 1) % h) * w + x)] / 255.0f;
+            float hu = src[4u * (((y + 1) % h) * w + x)] / 255.0f;
+            float n[3], l;
+            uint8_t *o = dst + 4u * (y * w + x);
+            n[0] = -strength * 0.5f * (hr - hl);
+            n[1] = -strength * 0.5f * (hu - hd);
+            n[2] = 1.0f;
+            l = stin__sqrtf(n[0] * n[0] + n[1] * n[1] + 1.0f);
+            o[0] = encode_unit(n[0] / l, 127.0f, 128.0f);
+            o[1] = encode_unit(n[1] / l, 127.0f, 128.0f);
+            o[2] = encode_unit(n[2] / l, 127.0f, 128.0f);
+            o[3] = 255;
+        }
+}
+
 static uint64_t chain_bytes(uint32_t w, uint32_t h, int mips)
 {
     uint64_t total = 0;
@@ -85,14 +156,18 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     const uint8_t *src;
     uint8_t *buf;
     stin__texture_slot *t = NULL;
-    int mips, resized;
+    int mips, resized, normal, derive;
+    uint64_t need;
     if (out)
         out->id = 0;
     if (!ctx || !desc || !out || !desc->pixels || !desc->width || !desc->height ||
-        (unsigned)desc->kind > STIN_TEXTURE_HEIGHT) {
+        (unsigned)desc->kind > STIN_TEXTURE_HEIGHT || !stin__isfinite(desc->normal_from_height) ||
+        desc->normal_from_height < 0.0f ||
+        (desc->normal_from_height > 0.0f && desc->kind != STIN_TEXTURE_NORMAL)) {
         if (ctx)
             stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
-                      "stin_create_texture: need pixels, width, height and a valid kind");
+                      "stin_create_texture: need pixels, width, height and a valid kind "
+                      "(normal_from_height: finite, >= 0, normal maps only)");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     max = ctx->caps.max_texture_size > 0 ? (uint32_t)ctx->caps.max_texture_size : 64u;
@@ -107,12 +182,17 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     while (h > max)
         h /= 2;
     resized = w != desc->width || h != desc->height;
-    mips = !desc->no_mipmaps;
-    if (chain_bytes(w, h, mips) > ctx->staging_bytes) {
+    /* height maps: level 0 only (the parallax march reads the true field) */
+    mips = !desc->no_mipmaps && desc->kind != STIN_TEXTURE_HEIGHT;
+    normal = desc->kind == STIN_TEXTURE_NORMAL;
+    derive = desc->normal_from_height > 0.0f;
+    need = chain_bytes(w, h, mips) + (derive && resized ? 4ull * desc->width * desc->height : 0);
+    if (need > ctx->staging_bytes) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
-                  "stin_create_texture: %ux%u with mipmaps needs %lu staging bytes, "
-                  "desc.max_texture_bytes is %zu", w, h,
-                  (unsigned long)chain_bytes(w, h, mips), ctx->staging_bytes);
+                  "stin_create_texture: %ux%u%s%s needs %lu staging bytes, "
+                  "desc.max_texture_bytes is %zu", w, h, mips ? " with mipmaps" : "",
+                  derive ? " derived from a height map" : "", (unsigned long)need,
+                  ctx->staging_bytes);
         return STIN_ERROR_CAPACITY;
     }
     for (slot = 0; slot < ctx->desc.max_textures; slot++)
@@ -128,9 +208,23 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     }
     buf = ctx->staging;
     src = desc->pixels;
+    if (derive) { /* level 0 (before any resample) computed into staging */
+        uint8_t *at = resized ? buf + chain_bytes(w, h, mips) : buf;
+        normals_from_height(desc->pixels, desc->width, desc->height, desc->normal_from_height, at);
+        src = at;
+    }
     if (resized) {
-        resample(desc->pixels, desc->width, desc->height, buf, w, h);
+        resample(src, desc->width, desc->height, buf, w, h);
         src = buf;
+    }
+    if (normal && src == desc->pixels) { /* A = 1 at level 0: a copy to own */
+        stin__memcopy(buf, src, 4u * w * h);
+        src = buf;
+    }
+    if (normal) {
+        uint32_t i;
+        for (i = 0; i < w * h; i++)
+            buf[4u * i + 3u] = 255;
     }
     GL(ctx, GenTextures)(1, &t->name);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, t->name);
@@ -148,7 +242,10 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         /* The next level goes right after this one in staging. */
         {
             uint8_t *next = (src == desc->pixels) ? buf : (uint8_t *)src + 4u * w * h;
-            halve(src, w, h, next);
+            if (normal)
+                halve_normals(src, w, h, next);
+            else
+                halve(src, w, h, next);
             src = next;
         }
         w = w > 1 ? w / 2 : 1;

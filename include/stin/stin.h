@@ -99,6 +99,8 @@
  * default texture environment (MODULATE, combine defaults, RGB scale 1), no
  * 2D or cube-map texture bound or enabled, their texture coordinate arrays
  * disabled and client unit 0 active.
+ * With a GLSL surface technique (normal, parallax, pom), texture units 1
+ * and 2 are left with no 2D texture bound and unit 0 active.
  * Every other piece of GL state is left as the caller had it.
  * stin_create_mesh/stin_create_texture change buffer and texture bindings of
  * unit 0 (left at 0). No call other than these touches GL.
@@ -281,7 +283,40 @@ const char *stin_feature_name(stin_feature f);
  * and specular stay per vertex (unbumped), blended draws stay plain, and a
  * bumped normal tilted toward a light just below the surface's horizon still
  * catches some of it (no self-shadowing term). Exact tangent frames for any
- * affine transform. */
+ * affine transform.
+ * Surface on the GLSL tiers (GL2 and GL4; they run with either GLSL lighting
+ * technique, never with fixed-function lighting): the chain is
+ * pom -> parallax -> normal -> (dot3, GL1 only) -> plain. One lit program per
+ * technique from the chosen one down is built at stin_create; each draw uses
+ * the best technique at or below both the context's choice and its
+ * material's `surface` request that its textures allow (no normal map:
+ * plain; no height map: normal at most), and each such per-material step
+ * down is logged once (STIN_LOG_FALLBACK, info). All of them read the mesh
+ * tangent frame (T, B = w * cross(N, T), N), the material's normal_map on
+ * texture unit 1 and height_map on unit 2 (albedo on unit 0):
+ *   "normal"   tangent-space normal mapping; the map decodes as
+ *              n = (rgb * 255 - 128) / 127 (128 is zero, so (128,128,255) is
+ *              exactly the vertex normal); Toksvig: the specular exponent s
+ *              becomes s * |n| / (|n| + s (1 - |n|)) with |n| the mean-normal
+ *              length that stin_create_texture stores in the alpha of the
+ *              normal map's mip levels (1 at level 0).
+ *   "parallax" offset limiting: uv' = uv + V.xy * (h * height_scale -
+ *              height_bias) with V the unit vector to the eye in the tangent
+ *              frame and lengths in scene units (the uv-per-unit scale is
+ *              taken from the surface's screen-space derivatives); every map
+ *              is sampled at uv'.
+ *   "pom"      parallax occlusion mapping: the height field is recessed, its
+ *              top (h = 1) in the polygon and h = 0 at height_scale below;
+ *              the view ray is marched through it in n linear steps, n from
+ *              pom_min_steps (straight on) to pom_max_steps (grazing), then
+ *              refined by 5 bisections and a secant step; with self_shadow a
+ *              second march from the hit toward each light (1 hard, 2 soft
+ *              penumbra estimate). Limitations: the silhouette stays the
+ *              polygon's (no clipping of the recessed edges), depth is the
+ *              polygon's (no gl_FragDepth: shadows and depth-EQUAL passes
+ *              see the flat surface), the N output shows the vertex normal.
+ * Height maps are sampled at full resolution (their mipmaps are not built):
+ * the march needs the true field. */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
@@ -291,6 +326,9 @@ const char *stin_feature_name(stin_feature f);
     X(SHADOWS_MAP_DEPTH, "map-depth", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
     X(SHADOWS_MAP_COMBINE, "map-combine", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
     X(SHADOWS_OFF, "off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)             \
+    X(SURFACE_POM, "pom", STIN_FEATURE_SURFACE, STIN_TIER_GL2)            \
+    X(SURFACE_PARALLAX, "parallax", STIN_FEATURE_SURFACE, STIN_TIER_GL2)  \
+    X(SURFACE_NORMAL, "normal", STIN_FEATURE_SURFACE, STIN_TIER_GL2)      \
     X(SURFACE_DOT3, "dot3", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
     X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)
 
@@ -425,7 +463,16 @@ typedef struct stin_texture_desc {
     uint32_t width, height;  /* each at most caps.max_texture_size; any size (GL1
                               * contexts get a power-of-two resample) */
     const uint8_t *pixels;   /* RGBA8, 4 bytes per pixel, rows bottom to top */
-    int no_mipmaps;          /* default 0: mipmaps are built */
+    int no_mipmaps;          /* default 0: mipmaps are built (never for
+                              * STIN_TEXTURE_HEIGHT: POM marches level 0) */
+    /* STIN_TEXTURE_NORMAL only: > 0 derives the normal map from a height
+     * field in the R channel of `pixels` (1 = top): central differences
+     * with wrap-around, n = normalize(-s dh/dx, -s dh/dy, 1) with dh per
+     * texel and s = normal_from_height, stored as 128 + 127 n. Done on the
+     * CPU into the staging block (needs 4 bytes a texel more than the mip
+     * chain). Normal maps' mip levels average the unit normals: RGB holds
+     * the mean's direction, A its length (Toksvig). */
+    float normal_from_height;
 } stin_texture_desc;
 
 stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc,
@@ -464,7 +511,17 @@ typedef struct stin_material {
     stin_texture albedo;    /* optional, multiplies color */
     stin_texture normal_map; /* optional: tangent-space normals (STIN_TEXTURE_NORMAL),
                               * used by the surface technique (GL1: dot3) */
-    stin_texture height_map; /* optional (surface issue) */
+    stin_texture height_map; /* optional: height field in R (STIN_TEXTURE_HEIGHT, 1 =
+                              * top), used by parallax and pom */
+    float height_scale;     /* scene units from h = 1 to h = 0; default (0) 0.04 */
+    float height_bias;      /* parallax: uv' = uv + V.xy (h scale - bias); default (0)
+                             * height_scale / 2 (a negative tiny value gives ~0) */
+    uint32_t pom_min_steps; /* pom linear steps straight on, default 8 */
+    uint32_t pom_max_steps; /* pom linear steps at grazing angles, default 32, at most 64 */
+    int self_shadow;        /* pom: 0 off (default), 1 hard, 2 soft */
+    stin_technique surface; /* requested surface technique; STIN_TECH_NONE = the
+                             * context's choice. The draw uses the lower of the two
+                             * (dot3 asks for normal mapping at most on GLSL tiers) */
 } stin_material;
 
 typedef enum stin_output {

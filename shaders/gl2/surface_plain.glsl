@@ -8,3 +8,8 @@ float surface_shadow(vec2 uv, vec3 l)
 {
     return 1.0;
 }
+
+vec4 surface_sample(sampler2D t, vec2 uv)
+{
+    return texture2D(t, uv);
+}

@@ -18,10 +18,14 @@ in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent; // world tangent, w = handedness
 
+// Length of the filtered normal-map normal (Toksvig); surface_normal sets it.
+float s_normal_length = 1.0;
+
 // @chunks
-// The chunks spliced in here define (see src/path_glsl.c for which):
-//   vec3 surface_normal(inout vec2 uv, vec3 v)  the shading normal; may move uv (parallax)
+// The chunks spliced in here define (see src/path_glsl.c and src/surface_glsl.c):
+//   vec3 surface_normal(inout vec2 uv, vec3 v)  the unit shading normal; may move uv (parallax)
 //   float surface_shadow(vec2 uv, vec3 l)       the height field's shadow toward l (1 lit)
+//   vec4 surface_sample(sampler2D t, vec2 uv)   a colour map at the (moved) uv
 //   float shadow_visibility(int i)              the shadow technique's visibility of light i
 
 // pow(0, 0) is undefined in GLSL; GL's lighting takes it as 1.
@@ -35,6 +39,10 @@ void main()
     vec3 v = normalize(u_eye - v_world);
     vec2 uv = v_uv;
     vec3 n = surface_normal(uv, v);
+    // Toksvig: a shorter mean normal (a filtered normal map) widens the lobe;
+    // exactly u_shininess when the length is 1
+    float shininess = u_shininess * s_normal_length /
+                      (s_normal_length + u_shininess * (1.0 - s_normal_length));
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
     for (int i = 0; i < 8; i++) {
@@ -57,10 +65,10 @@ void main()
             k *= shadow_visibility(i) * surface_shadow(uv, l);
             vec3 h = normalize(l + v);
             diffuse += k * ndotl * col.rgb;
-            specular += k * safe_pow(dot(n, h), u_shininess) * col.rgb;
+            specular += k * safe_pow(dot(n, h), shininess) * col.rgb;
         }
     }
-    vec4 tex = u_has_albedo_tex != 0 ? texture(u_albedo_tex, uv) : vec4(1.0);
+    vec4 tex = u_has_albedo_tex != 0 ? surface_sample(u_albedo_tex, uv) : vec4(1.0);
     vec3 color = (u_ambient + diffuse) * u_albedo.rgb * tex.rgb + specular * u_specular;
     frag_color = vec4(clamp(color, 0.0, 1.0), u_albedo.a * tex.a);
 }

@@ -36,6 +36,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.caps_mask = profile->caps_mask | o->extra_mask;
     d.max_gl_version = profile->max_gl_version;
     d.techniques[STIN_FEATURE_SHADOWS] = o->shadows;
+    d.techniques[STIN_FEATURE_SURFACE] = o->surface;
     d.debug_flags = o->debug_flags;
     d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);

@@ -15,6 +15,7 @@ typedef struct capture_options {
     uint32_t debug_flags;     /* STIN_DEBUG_* */
     uint64_t extra_mask;      /* capabilities hidden on top of the profile's */
     uint32_t shadow_map_size; /* 0: stin's default */
+    stin_technique surface;   /* forced surface technique; NONE = auto */
 } capture_options;
 
 typedef struct capture {

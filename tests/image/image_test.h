@@ -25,5 +25,8 @@ void shadow_tests(run *r, stin_tier tier, const char *path);
 /* DOT3 bump mapping of one scene at one tier, plus a built-in analytic scene
  * on the first call per tier (dot3_test.c). */
 void dot3_tests(run *r, stin_tier tier, const char *path);
+/* GLSL surface detail (normal, parallax, pom) of one scene at one tier, and
+ * the shaders/gl2 version check once (surface_test.c). */
+void surface_tests(run *r, stin_tier tier, const char *path);
 
 #endif

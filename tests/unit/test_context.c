@@ -481,7 +481,8 @@ static void test_glsl150_compile_failure_falls_back_to_glsl110(void **state)
     assert_true(fake_log_has(&f.log, STIN_LOG_FALLBACK, "glsl110-per-pixel"));
     assert_true(fake_log_has(&f.log, STIN_LOG_SHADER_COMPILE, "GLSL version not supported"));
     assert_int_equal(fake_gl.shader_compile_failures, 1);
-    assert_int_equal(fake_gl.programs_created, STIN__PROG_COUNT);
+    /* the shared programs plus the lit program's normal, parallax and pom variants */
+    assert_int_equal(fake_gl.programs_created, STIN__PROG_COUNT + 3);
     m = make_quad(f.ctx);
     run_frame(f.ctx, m);
     assert_int_equal(fake_gl.draw_calls, 1);
@@ -551,8 +552,8 @@ static void test_destroy_deletes_every_gl_object(void **state)
 {
     (void)state;
     check_destroy_balances(FAKE_GL11, 0, 0, 0, 0);
-    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT, 0);
-    check_destroy_balances(FAKE_GL45_CORE, 2, 1, STIN__PROG_COUNT, 1);
+    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3, 0);
+    check_destroy_balances(FAKE_GL45_CORE, 2, 1, STIN__PROG_COUNT + 3, 1);
 }
 
 /* ---- entry points and extensions ------------------------------------------ */

@@ -252,12 +252,11 @@ static void test_selection_rule(void **state)
     assert_int_equal(stin__select(&gl11, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
     assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "dot3 needs multitexture"));
-    /* the GLSL tier has the capabilities but not the lighting path */
+    /* the GLSL tier has the capabilities but not the lighting path: its own
+     * surface techniques come first (pom) */
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL110);
-    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
-    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason,
-                           "dot3 runs with fixed-function lighting only"));
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_POM);
     assert_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "fallback"));
     /* the same context at tier gl1, or with fixed-function lighting forced */
     assert_int_equal(stin__select(&gl21, STIN_TIER_GL1, NULL, &sel, msg, sizeof msg), STIN_OK);

@@ -74,10 +74,10 @@ static void test_auto_selection_per_profile(void **state)
                          (cases[i].caps.present & BIT(STENCIL)) ? STIN_TECH_SHADOWS_VOLUME
                                                                  : STIN_TECH_SHADOWS_OFF);
         /* DOT3 where the fixed-function path has combine/dot3/cube maps (gl13, gl14);
-         * the GLSL tiers have the capabilities but not the lighting path. */
+         * the GLSL tiers take parallax occlusion mapping (GLSL lighting). */
         assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique,
-                         cases[i].lighting == STIN_TECH_LIGHTING_FIXED &&
-                                 (cases[i].caps.present & BIT(TEXTURE_ENV_DOT3))
+                         cases[i].lighting != STIN_TECH_LIGHTING_FIXED ? STIN_TECH_SURFACE_POM
+                         : (cases[i].caps.present & BIT(TEXTURE_ENV_DOT3))
                              ? STIN_TECH_SURFACE_DOT3
                              : STIN_TECH_SURFACE_PLAIN);
         assert_true(sel.choice[STIN_FEATURE_LIGHTING].reason[0] != '\0');
@@ -281,10 +281,25 @@ static void test_surface_follows_the_lighting_technique(void **state)
     (void)state;
     assert_int_equal(stin__technique_lighting(STIN_TECH_SURFACE_DOT3), STIN_TECH_LIGHTING_FIXED);
     assert_int_equal(stin__technique_lighting(STIN_TECH_SURFACE_PLAIN), STIN_TECH_NONE);
+    /* the GLSL surface techniques run with either GLSL lighting, never fixed */
+    assert_true(stin__technique_runs_with(STIN_TECH_SURFACE_POM, STIN_TECH_LIGHTING_GLSL110));
+    assert_true(stin__technique_runs_with(STIN_TECH_SURFACE_NORMAL, STIN_TECH_LIGHTING_GLSL150));
+    assert_false(stin__technique_runs_with(STIN_TECH_SURFACE_PARALLAX, STIN_TECH_LIGHTING_FIXED));
+    assert_false(stin__technique_runs_with(STIN_TECH_SURFACE_DOT3, STIN_TECH_LIGHTING_GLSL150));
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
-    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_POM);
     assert_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "fallback"));
-    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "fixed-function"));
+    /* fixed-function lighting on the GL2 tier: pom is passed over (not a fallback) */
+    forced[STIN_FEATURE_LIGHTING] = STIN_TECH_LIGHTING_FIXED;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_DOT3);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "pom runs with GLSL lighting"));
+    forced[STIN_FEATURE_SURFACE] = STIN_TECH_SURFACE_NORMAL;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "needs GLSL lighting"));
+    forced[STIN_FEATURE_LIGHTING] = STIN_TECH_NONE;
+    forced[STIN_FEATURE_SURFACE] = STIN_TECH_NONE;
     assert_int_equal(stin__select(&gl21, STIN_TIER_GL1, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_DOT3);
     forced[STIN_FEATURE_SURFACE] = STIN_TECH_SURFACE_DOT3;

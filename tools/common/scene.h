@@ -50,6 +50,7 @@ typedef struct scene_material {
     int albedo, normal, height; /* texture index or -1 */
     float height_scale;        /* default 0.04 */
     char surface[16];          /* requested surface technique, "" = auto */
+    int self_shadow;           /* pom self-shadowing: 0 off (default), 1 hard, 2 soft */
 } scene_material;
 
 typedef struct scene_object {
