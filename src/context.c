@@ -149,16 +149,23 @@ static stin_result init_lighting(stin_context *ctx)
         stin__formatf(c->reason, sizeof c->reason, "fallback: %s failed to build (%s)",
                       stin_technique_name(c->technique), msg);
         c->technique = next;
-        if (!stin__technique_runs_with(ctx->sel.choice[STIN_FEATURE_SURFACE].technique, next)) {
-            /* the GLSL surface chunks went with the GLSL lighting: choose again */
-            stin_choice *sc = &ctx->sel.choice[STIN_FEATURE_SURFACE];
-            stin_result r = stin__choose(&ctx->caps, ctx->sel.tier, STIN_FEATURE_SURFACE,
-                                         ctx->desc.techniques[STIN_FEATURE_SURFACE], next, sc,
-                                         msg, sizeof msg);
-            if (r != STIN_OK) {
-                stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
-                          "stin_create: %s", msg);
-                return r;
+        {
+            /* chunks of the GLSL lit programs (surface, map-pcf) went with the
+             * GLSL lighting: those features choose again */
+            static const stin_feature tied[2] = {STIN_FEATURE_SURFACE, STIN_FEATURE_SHADOWS};
+            int k;
+            for (k = 0; k < 2; k++) {
+                stin_choice *sc = &ctx->sel.choice[tied[k]];
+                stin_result r;
+                if (stin__technique_runs_with(sc->technique, next))
+                    continue;
+                r = stin__choose(&ctx->caps, ctx->sel.tier, tied[k], ctx->desc.techniques[tied[k]],
+                                 next, sc, msg, sizeof msg);
+                if (r != STIN_OK) {
+                    stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
+                              "stin_create: %s", msg);
+                    return r;
+                }
             }
         }
     }
@@ -285,6 +292,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     if (r != STIN_OK)
         return r;
     r = stin__maps_init(ctx);
+    if (r == STIN_OK)
+        r = stin__pcf_init(ctx);
     if (r != STIN_OK)
         return r;
     ctx->lights_per_pass = STIN__LIGHTS_PER_PASS;

@@ -76,6 +76,10 @@ stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light)
         l.spot_cutoff_deg = 45.0f;
     if (l.type == STIN_LIGHT_SPOT && (l.spot_cutoff_deg < 0.0f || l.spot_cutoff_deg > 90.0f))
         return arg_error(ctx, "stin_add_light", "spot_cutoff_deg must be in (0, 90]");
+    if (l.pcf_kernel == 0)
+        l.pcf_kernel = 3;
+    if (l.pcf_kernel != 1 && l.pcf_kernel != 3 && l.pcf_kernel != 5)
+        return arg_error(ctx, "stin_add_light", "pcf_kernel must be 1, 3 or 5");
     if (l.radius < 0.0f || l.range < 0.0f || !stin__isfinite(l.radius) || !stin__isfinite(l.range))
         return arg_error(ctx, "stin_add_light", "radius and range must be finite and >= 0");
     if (l.spot_exponent < 0.0f || l.spot_exponent > 128.0f)
@@ -328,7 +332,19 @@ static void run_maps(stin_context *ctx, const stin__path *path, int visibility)
     path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
     for (li = 0; li < lights; li++) {
         const stin_light_desc *l = &ctx->lights[li];
-        int mapped = stin__maps_bind(ctx, li), face;
+        int mapped, face;
+        if (stin__pcf_active(ctx)) { /* the lit program does the test */
+            ctx->pcf_light = li;
+            ctx->pcf_kind = l->type == STIN_LIGHT_POINT ? (stin__pcf_point(ctx, li) ? 2 : 0)
+                                                         : (ctx->maps.valid[li] ? 1 : 0);
+            if (visibility)
+                path->flat(ctx, STIN__ALL, white);
+            else
+                path->lit(ctx, l);
+            ctx->pcf_kind = 0;
+            continue;
+        }
+        mapped = stin__maps_bind(ctx, li);
         if (!mapped && l->type == STIN_LIGHT_POINT && ctx->maps.faces) {
             for (face = 0; face < 6; face++) /* six maps, each lighting its own pyramid */
                 if (stin__maps_face(ctx, li, face)) {
@@ -365,7 +381,7 @@ static void run_frame(stin_context *ctx)
             ? stin__fixed_path()
             : stin__glsl_path();
     int volumes = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME;
-    int maps = stin__maps_active(ctx);
+    int maps = stin__maps_active(ctx) || stin__pcf_active(ctx);
     stin__volume_frame_setup(ctx);
     path->begin(ctx);
     switch (ctx->frame.output) {
@@ -404,6 +420,8 @@ stin_result stin_end_frame(stin_context *ctx)
     order_draws(ctx);
     if (stin__maps_active(ctx) && ctx->light_count)
         stin__maps_render(ctx); /* before the clear: without FBOs they use the frame's buffer */
+    if (stin__pcf_active(ctx) && ctx->light_count)
+        stin__pcf_render(ctx);
     begin_target(ctx);
     ctx->stats.draws = ctx->draw_count;
     ctx->stats.lights = ctx->light_count;

@@ -189,6 +189,8 @@ typedef struct stin__program {
         u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
     /* surface chunks (surface_glsl.c): samplers and (scale, bias, min, max steps) */
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
+    /* map-pcf chunk (shadow_map_glsl.c) */
+    GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_maps[6];
     uint32_t frame_serial;   /* ctx->glsl_surface.serial its per-frame uniforms have */
 } stin__program;
 
@@ -229,6 +231,8 @@ struct stin_context {
     stin__program programs[STIN__PROG_COUNT];
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
     float projection[16];     /* what the frame draws with (P_inf for volumes) */
+    int pcf_kind;             /* the shadow test of the lit pass being drawn (map-pcf) */
+    uint32_t pcf_light;
     float view_proj[16];
     int volume_depth_clamp;   /* volumes drawn with GL_DEPTH_CLAMP */
     int volume_infinite;      /* projection moved the far plane to infinity */
@@ -363,6 +367,18 @@ void stin__light_perspective(float m[16], float fovy_deg, float n, float f);
  * snaps a directional map to whole texels (0: no snapping). */
 int stin__light_camera(const stin_context *ctx, const stin_light_desc *l, float view[16],
                        float proj[16], float *n, float *f, uint32_t map_size);
+
+/* GLSL shadow maps with PCF (shadow_map_glsl.c). */
+int stin__pcf_active(const stin_context *ctx);
+stin_result stin__pcf_init(stin_context *ctx);
+/* Maps of every spot and directional light (before the camera's passes). */
+void stin__pcf_render(stin_context *ctx);
+/* A point light's six faces, just before its pass; 1 if drawn. */
+int stin__pcf_point(stin_context *ctx, uint32_t light);
+/* The shadow test's uniforms for program p: kind 0 none, 1 light's map, 2 faces. */
+void stin__pcf_apply(stin_context *ctx, const stin__program *p, int kind, uint32_t light);
+/* Every draw's depth with the volume program (path_glsl.c): shadow maps. */
+void stin__glsl_draw_depth(stin_context *ctx, const float view_proj[16]);
 
 /* Fixed-function shadow maps (shadow_map_fixed.c). */
 int stin__maps_active(const stin_context *ctx);

@@ -24,6 +24,15 @@ static void locate(stin_context *ctx, stin__program *p)
     LOC(u_lights, "u_lights");
     LOC(u_albedo_tex, "u_albedo_tex");
     LOC(u_has_albedo_tex, "u_has_albedo_tex");
+    LOC(u_shadow_kind, "u_shadow_kind");
+    LOC(u_shadow_matrix, "u_shadow_matrix");
+    LOC(u_shadow_params, "u_shadow_params");
+    LOC(u_shadow_maps[0], "u_shadow_map");
+    LOC(u_shadow_maps[1], "u_shadow_face1");
+    LOC(u_shadow_maps[2], "u_shadow_face2");
+    LOC(u_shadow_maps[3], "u_shadow_face3");
+    LOC(u_shadow_maps[4], "u_shadow_face4");
+    LOC(u_shadow_maps[5], "u_shadow_face5");
     LOC(u_color, "u_color");
 #undef LOC
     stin__surf_locate(ctx, p);
@@ -33,8 +42,7 @@ static void locate(stin_context *ctx, stin__program *p)
 /* The shadow chunk of the lit programs. */
 static const char *lit_shadow_chunk(const stin_context *ctx)
 {
-    (void)ctx;
-    return "shadow_none.glsl";
+    return stin__pcf_active(ctx) ? "shadow_pcf.glsl" : "shadow_none.glsl";
 }
 
 /* The lit program of a surface variant. */
@@ -92,8 +100,24 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
             char names[3][40];
             const char *chunks[4];
             stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), names, chunks);
-            p->name = stin__program_build(ctx, vert, frag, i == STIN__PROG_LIT ? chunks : NULL, msg,
-                                          msg_size);
+            const char *shadow_only[2];
+            char shadow_name[40];
+            stin__formatf(shadow_name, sizeof shadow_name, "%s%s", dir, lit_shadow_chunk(ctx));
+            shadow_only[0] = shadow_name;
+            shadow_only[1] = NULL;
+            const char *no_shadow[2];
+            char none_name[40];
+            stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
+            no_shadow[0] = none_name;
+            no_shadow[1] = NULL;
+            /* flat.frag serves the visibility output (the shadow test) and,
+             * with no test, the depth-only volume and map passes */
+            p->name = stin__program_build(ctx, vert, frag,
+                                          i == STIN__PROG_LIT      ? chunks
+                                          : i == STIN__PROG_FLAT   ? shadow_only
+                                          : i == STIN__PROG_VOLUME ? no_shadow
+                                                                   : NULL,
+                                          msg, msg_size);
         }
         if (!p->name) {
             stin__glsl_release(ctx);
@@ -190,6 +214,8 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
         GL(ctx, Uniform4fv)(p->u_lights, 4 * ctx->glsl_surface.light_n, ctx->glsl_surface.packed);
     GL(ctx, Uniform3fv)(p->u_ambient, 1,
                         ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
+    if (stin__pcf_active(ctx))
+        stin__pcf_apply(ctx, p, ctx->pcf_kind, ctx->pcf_light);
 }
 
 /* Makes p (a lit program) current with this pass's uniforms. */
@@ -364,6 +390,21 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4])
 {
     const stin__program *p = use(ctx, STIN__PROG_FLAT);
     GL(ctx, Uniform4fv)(p->u_color, 1, color);
+    if (stin__pcf_active(ctx)) { /* visibility through the same shadow test */
+        float inv[16];
+        stin__mat4_invert(inv, ctx->frame.view);
+        GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
+        if (ctx->pcf_light < ctx->light_count) { /* the light's position (point faces) */
+            const float *lp = ctx->lights[ctx->pcf_light].position;
+            float pos[4];
+            pos[0] = lp[0];
+            pos[1] = lp[1];
+            pos[2] = lp[2];
+            pos[3] = 1.0f;
+            GL(ctx, Uniform4fv)(p->u_lights, 1, pos);
+        }
+        stin__pcf_apply(ctx, p, ctx->pcf_kind, ctx->pcf_light);
+    }
     pass_state(ctx, 1, 0);
     draw_set(ctx, p, which, 0);
     ctx->stats.passes++;
@@ -447,4 +488,23 @@ const stin__path *stin__glsl_path(void)
                                     glsl_volume_draw, glsl_volume_end,   glsl_batches,
                                     glsl_normals};
     return &path;
+}
+
+void stin__glsl_draw_depth(stin_context *ctx, const float view_proj[16])
+{
+    const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
+    uint32_t i;
+    GL(ctx, UseProgram)(p->name);
+    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
+    ctx->bound_mesh = 0xffffffffu;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+        const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
+        GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
+        bind_mesh_arrays(ctx, m, d->mesh_slot);
+        GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+    }
+    ctx->bound_mesh = 0xffffffffu;
 }

@@ -35,6 +35,8 @@ uint64_t stin__technique_needs(stin_technique t)
     case STIN_TECH_LIGHTING_FIXED: return stin__tier_needs(STIN_TIER_GL1);
     case STIN_TECH_SHADOWS_VOLUME: return BIT(STENCIL);
     case STIN_TECH_SHADOWS_MAP_DEPTH: return BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE);
+    case STIN_TECH_SHADOWS_MAP_PCF:
+        return BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE);
     case STIN_TECH_SHADOWS_MAP_COMBINE: return BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE);
     case STIN_TECH_SURFACE_POM:
     case STIN_TECH_SURFACE_PARALLAX:
@@ -63,6 +65,7 @@ stin_technique stin__technique_lighting(stin_technique t)
     case STIN_TECH_SURFACE_POM:
     case STIN_TECH_SURFACE_PARALLAX:
     case STIN_TECH_SURFACE_NORMAL:
+    case STIN_TECH_SHADOWS_MAP_PCF: /* a chunk of the lit programs too */
         return STIN_TECH_LIGHTING_GLSL110;
     case STIN_TECH_SURFACE_DOT3:
     case STIN_TECH_SHADOWS_MAP_DEPTH: /* texture-environment shadow tests, likewise */

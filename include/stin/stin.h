@@ -323,6 +323,7 @@ const char *stin_feature_name(stin_feature f);
     X(LIGHTING_GLSL110, "glsl110-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL2) \
     X(LIGHTING_FIXED, "fixed-function", STIN_FEATURE_LIGHTING, STIN_TIER_GL1)      \
     X(SHADOWS_VOLUME, "volume", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)       \
+    X(SHADOWS_MAP_PCF, "map-pcf", STIN_FEATURE_SHADOWS, STIN_TIER_GL2)     \
     X(SHADOWS_MAP_DEPTH, "map-depth", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
     X(SHADOWS_MAP_COMBINE, "map-combine", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
     X(SHADOWS_OFF, "off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)             \
@@ -502,6 +503,8 @@ typedef struct stin_light_desc {
     float shadow_offset[2]; /* shadow-map polygon offset (factor, units); default
                              * (1.1, 4.0) when both are 0 */
     int shadow_offset_off;  /* 1: no polygon offset (shows acne; for tests) */
+    uint32_t pcf_kernel;    /* map-pcf: 1, 3 or 5 taps a side (each the hardware's 2x2
+                             * compare); default 3 */
 } stin_light_desc;
 
 typedef struct stin_material {
