@@ -496,6 +496,8 @@ void stin__glsl_draw_depth(stin_context *ctx, const float view_proj[16])
     uint32_t i;
     GL(ctx, UseProgram)(p->name);
     ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    if (!gl4(ctx)) /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
+        GL(ctx, EnableVertexAttribArray)(0);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++) {

@@ -324,6 +324,7 @@ int main(int argc, char **argv)
             test_scene(&r, tiers[t], argv[i]);
             shadow_tests(&r, tiers[t], argv[i]);
             map_tests(&r, tiers[t], argv[i]);
+            pcf_tests(&r, tiers[t], argv[i]);
             surface_tests(&r, tiers[t], argv[i]);
             dot3_tests(&r, tiers[t], argv[i]);
         }

@@ -17,6 +17,9 @@ typedef struct run {
 void report(run *r, const char *verdict, const char *name, const char *fmt, ...);
 const char *scene_base_name(const char *path);
 
+/* GLSL PCF shadow-map tests of one scene (pcf_test.c; GL2/GL4). */
+void pcf_tests(run *r, stin_tier tier, const char *path);
+
 /* Fixed-function shadow-map tests of one scene (map_test.c; GL1 only). */
 void map_tests(run *r, stin_tier tier, const char *path);
 

@@ -81,6 +81,7 @@ typedef struct scene_light {
     float shadow_offset[2];    /* spot/directional "shadow_offset": shadow-map polygon offset
                                   (factor, units); (0, 0) = stin's default (1.1, 4) */
     int shadow_offset_off;     /* not in files: tests turn the offset off with it */
+    int pcf_kernel;            /* "pcf_kernel": 1, 3 or 5 taps a side (map-pcf); 0 = 3 */
 } scene_light;
 
 typedef struct scene_camera {

@@ -504,14 +504,14 @@ static int unit_direction(scene_parser *p, const char *where, float d[3])
 static int parse_light(scene_parser *p, const cJSON *j, const char *where, scene_light *l)
 {
     static const char *const point_keys[] = { "type", "position", "color", "intensity",
-                                              "attenuation", "radius", "range", NULL };
+                                              "attenuation", "radius", "range", "pcf_kernel", NULL };
     static const char *const spot_keys[] = { "type", "position", "direction", "color", "intensity",
                                              "attenuation", "radius", "range", "cutoff", "exponent",
-                                             "shadow_offset", NULL };
+                                             "shadow_offset", "pcf_kernel", NULL };
     static const char *const dir_keys[] = { "type", "direction", "color", "intensity",
-                                            "shadow_offset", NULL };
+                                            "shadow_offset", "pcf_kernel", NULL };
     const scene_light d = { SCENE_LIGHT_POINT, { 0, 0, 0 }, { 0, -1, 0 }, { 1, 1, 1 }, 1,
-                            { 1, 0, 0 }, 45, 0, 0, 0, { 0, 0 }, 0 };
+                            { 1, 0, 0 }, 45, 0, 0, 0, { 0, 0 }, 0, 0 };
     char type[16] = "", path[256];
     *l = d;
     if (!cJSON_IsObject(j))
@@ -543,10 +543,15 @@ static int parse_light(scene_parser *p, const cJSON *j, const char *where, scene
         !scene_get_number(p, j, "radius", where, SCENE_NONNEGATIVE, &l->radius) ||
         !scene_get_number(p, j, "range", where, SCENE_NONNEGATIVE, &l->range) ||
         !scene_get_vector(p, j, "shadow_offset", where, 2, SCENE_ANY, l->shadow_offset) ||
+        !scene_get_int(p, j, "pcf_kernel", where, 0, 5, &l->pcf_kernel) ||
         !scene_get_number(p, j, "cutoff", where, SCENE_POSITIVE, &l->spot_cutoff_deg) ||
         !scene_get_number(p, j, "exponent", where, SCENE_NONNEGATIVE, &l->spot_exponent) ||
         !unit_direction(p, where, l->direction))
         return 0;
+    if (l->pcf_kernel == 2 || l->pcf_kernel == 4) {
+        scene_join(path, sizeof path, where, "pcf_kernel");
+        return scene_fail(p, path, "must be 1, 3 or 5 (got %d)", l->pcf_kernel);
+    }
     if (l->attenuation[0] + l->attenuation[1] + l->attenuation[2] <= 0) {
         scene_join(path, sizeof path, where, "attenuation");
         return scene_fail(p, path, "must not be all zero");

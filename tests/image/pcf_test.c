@@ -1,0 +1,210 @@
+/*
+ * GLSL shadow maps with PCF ("map-pcf", GL2/GL4) against the Embree
+ * visibility reference, per map size and kernel: the fraction of pixels the
+ * light reaches whose visibility differs (a filtered value is taken as lit
+ * at >= 0.5), outside the kernel's penumbra band (pixels whose reference
+ * visibility, or the object hit, changes within 1 + r * (2048 / size) / 4
+ * pixels, r the kernel radius: at 2048 a texel is about a quarter of a
+ * pixel on these scenes). A map that casts nothing must not pass on the lit
+ * majority: at least 100 shadowed pixels are compared and at most 2% of
+ * them may come out lit.
+ * Bound (issue 4): at 2048x2048 at most 1% on the spheres scenes; other sizes
+ * are printed as INFO lines.
+ */
+#include "aov.h"
+#include "capture.h"
+#include "image_test.h"
+#include "reference.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct pcf_case {
+    run *r;
+    const scene *s;
+    const char *scene_name;
+    const float *ref;
+    const ref_hit *hits;
+} pcf_case;
+
+static int reachable(const pcf_case *c, const ref_hit *h)
+{
+    const scene_light *l = &c->s->lights[0];
+    const float *eye = c->s->camera.eye;
+    double to_eye = 0, to_light = 0, len = 0, along = 0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        double L = l->type == SCENE_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k] - h->P[k];
+        to_eye += h->Ng[k] * (eye[k] - h->P[k]);
+        to_light += h->Ng[k] * L;
+        len += L * L;
+        along += -L * l->direction[k];
+    }
+    if ((to_eye >= 0) != (to_light > 0))
+        return 0;
+    if (l->type == SCENE_LIGHT_SPOT &&
+        along / sqrt(len) < cos(l->spot_cutoff_deg * 3.14159265358979323846 / 180.0))
+        return 0;
+    return 1;
+}
+
+static int in_band(const pcf_case *c, int x, int y, int band)
+{
+    int w = c->r->width, h = c->r->height, dx, dy;
+    float v = c->ref[((size_t)y * w + x) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R];
+    for (dy = -band; dy <= band; dy++)
+        for (dx = -band; dx <= band; dx++) {
+            int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+                continue;
+            if (c->hits[(size_t)ny * w + nx].object != c->hits[(size_t)y * w + x].object ||
+                fabsf(c->ref[((size_t)ny * w + nx) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R] - v) > 0.5f)
+                return 1;
+        }
+    return 0;
+}
+
+/* Also counts the shadowed pixels compared and how many of them came out
+ * lit: a map that casts nothing must not pass on the lit majority. */
+static double mismatch(const pcf_case *c, const capture *cap, int band, long *compared_out,
+                       long *shadowed_out, long *shadowed_wrong_out)
+{
+    int w = c->r->width, h = c->r->height, x, y, k;
+    long compared = 0, differ = 0, shadowed = 0, shadowed_wrong = 0;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const ref_hit *hit = &c->hits[(size_t)y * w + x];
+            const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
+            const float *g = cap->img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
+            double d2 = 0;
+            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !reachable(c, hit) || in_band(c, x, y, band))
+                continue;
+            for (k = 0; k < 3; k++)
+                d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) *
+                      (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]);
+            if (sqrt(d2) > 1e-3 * ref[REFERENCE_CH_Z] + 1e-3)
+                continue;
+            compared++;
+            if ((g[AOV_VIS_R] >= 0.5f) != (ref[REFERENCE_CH_VIS_R] >= 0.5f))
+                differ++;
+            if (ref[REFERENCE_CH_VIS_R] < 0.5f) {
+                shadowed++;
+                if (g[AOV_VIS_R] >= 0.5f)
+                    shadowed_wrong++;
+            }
+        }
+    *compared_out = compared;
+    *shadowed_out = shadowed;
+    *shadowed_wrong_out = shadowed_wrong;
+    return compared ? (double)differ / compared : 1.0;
+}
+
+static void one(pcf_case *c, stin_tier tier, uint32_t size, int kernel)
+{
+    capture cap;
+    capture_options o;
+    scene copy = *c->s;
+    scene_light lights[8];
+    char name[256], err[512];
+    long compared, shadowed, shadowed_wrong;
+    double f;
+    int i;
+    for (i = 0; i < copy.light_count && i < 8; i++) {
+        lights[i] = copy.lights[i];
+        lights[i].pcf_kernel = kernel;
+    }
+    copy.lights = lights;
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    o.shadows = STIN_TECH_SHADOWS_MAP_PCF;
+    o.shadow_map_size = size;
+    snprintf(name, sizeof name, "%s/%s/map-pcf-%u-k%d", stin_tier_name(tier), c->scene_name, size,
+             kernel);
+    if (!capture_render(c->r->plat, c->r->profile, &copy, &o, &cap, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        return;
+    }
+    /* The kernel's penumbra in pixels: on these scenes a 2048 map's texel is
+     * about a quarter of a pixel where the shadows fall, so r texels stay
+     * within the one pixel every edge gets; smaller maps widen it. */
+    f = mismatch(c, &cap, 1 + (kernel / 2) * (int)(2048u / size) / 4, &compared, &shadowed,
+                 &shadowed_wrong);
+    if (cap.counters.gl_violations || cap.counters.gl_errors || cap.log_errors)
+        report(c->r, "FAIL", name, "%u profile violations, %u GL errors (last log: %s)",
+               cap.counters.gl_violations, cap.counters.gl_errors, cap.last_error);
+    else if (size != 2048 || !strstr(c->scene_name, "spheres"))
+        printf("INFO %s/%s/%s: visibility differs on %.3f%% of %ld reachable pixels outside the "
+               "penumbra band\n", c->r->platform_name, c->r->profile_name, name, 100.0 * f,
+               compared);
+    else
+        report(c->r,
+               f <= 0.01 && shadowed >= 100 && shadowed_wrong <= shadowed / 50 ? "PASS" : "FAIL",
+               name,
+               "visibility differs on %.3f%% of %ld reachable pixels outside the kernel's "
+               "penumbra band (at most 1%%); of the %ld shadowed ones (at least 100) %ld came out "
+               "lit (at most 2%%)", 100.0 * f, compared, shadowed, shadowed_wrong);
+    capture_free(&cap);
+}
+
+void pcf_tests(run *r, stin_tier tier, const char *path)
+{
+    static const uint32_t sizes[] = {512, 1024, 2048};
+    static const int kernels[] = {1, 3, 5};
+    scene s;
+    reference *ref = NULL;
+    ref_hit *hits = NULL;
+    float *refimg = NULL;
+    pcf_case c;
+    capture probe;
+    capture_options o;
+    char err[512], scene_name[128], name[256];
+    size_t i, k;
+    if (tier == STIN_TIER_GL1)
+        return; /* GLSL only */
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    if (!scene_load(path, &s, err, sizeof err))
+        return;
+    if (!s.light_count || !strstr(scene_name, "spheres")) {
+        scene_free(&s); /* the spheres scenes carry the bound; others would only repeat it */
+        return;
+    }
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    o.shadows = STIN_TECH_SHADOWS_OFF;
+    snprintf(name, sizeof name, "%s/%s/map-pcf", stin_tier_name(tier), scene_name);
+    ref = reference_create(&s, err, sizeof err);
+    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
+    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
+    if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
+        !reference_render_ex(&s, ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED, refimg) ||
+        !capture_render(r->plat, r->profile, &s, &o, &probe, err, sizeof err)) {
+        report(r, "FAIL", name, "set-up: %s", err);
+        goto done;
+    }
+    {
+        uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
+                        STIN_CAP_BIT(STIN_CAP_SHADOW);
+        if ((probe.caps_present & need) != need) {
+            report(r, "SKIP", name, "the profile has no FBOs with depth textures and ARB_shadow");
+            capture_free(&probe);
+            goto done;
+        }
+    }
+    capture_free(&probe);
+    c.r = r;
+    c.s = &s;
+    c.scene_name = scene_name;
+    c.ref = refimg;
+    c.hits = hits;
+    for (i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
+        for (k = 0; k < sizeof kernels / sizeof kernels[0]; k++)
+            one(&c, tier, sizes[i], kernels[k]);
+done:
+    free(hits);
+    free(refimg);
+    if (ref)
+        reference_destroy(ref);
+    scene_free(&s);
+}
