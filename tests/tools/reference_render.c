@@ -4,6 +4,7 @@
 #include "aov.h"
 #include "image_io.h"
 #include "reference.h"
+#include "reference_surface.h"
 #include "scene.h"
 
 #include <stdio.h>
@@ -13,7 +14,7 @@
 int main(int argc, char **argv)
 {
     const char *scene_path = NULL, *out = NULL;
-    int w = 0, h = 0, per_vertex = 0, x, y, c, rc = 1;
+    int w = 0, h = 0, per_vertex = 0, x, y, c, rc = 1, surface = -1;
     unsigned flags = 0;
     scene s;
     reference *r = NULL;
@@ -26,9 +27,21 @@ int main(int argc, char **argv)
             if (sscanf(argv[++x], "%dx%d", &w, &h) != 2 || w < 1 || h < 1) return 2;
         } else if (!strcmp(argv[x], "--gouraud")) per_vertex = 1;
         else if (!strcmp(argv[x], "--shadowed")) flags |= REFERENCE_RENDER_SHADOWED;
+        else if (!strcmp(argv[x], "--surface") && x + 1 < argc) {
+            const char *t = argv[++x];
+            surface = !strcmp(t, "plain") ? REF_SURFACE_PLAIN
+                    : !strcmp(t, "normal") ? REF_SURFACE_NORMAL
+                    : !strcmp(t, "parallax") ? REF_SURFACE_PARALLAX
+                    : !strcmp(t, "pom") ? REF_SURFACE_POM : -2;
+            if (surface == -2) {
+                fprintf(stderr, "stin-reference: --surface wants plain, normal, parallax or pom\n");
+                return 2;
+            }
+        }
         else if (argv[x][0] != '-' && !scene_path) scene_path = argv[x];
         else {
-            fprintf(stderr, "usage: stin-reference SCENE.json -o OUT [--size WxH] [--gouraud] [--shadowed]\n");
+            fprintf(stderr, "usage: stin-reference SCENE.json -o OUT [--size WxH] [--gouraud] "
+                            "[--shadowed] [--surface plain|normal|parallax|pom]\n");
             return 2;
         }
     }
@@ -51,6 +64,23 @@ int main(int argc, char **argv)
         !reference_render_ex(&s, r, w, h, per_vertex, flags, px)) {
         fprintf(stderr, "stin-reference: %s\n", r ? "render failed" : err);
         goto done;
+    }
+    if (surface >= 0) { /* the beauty with the surface technique (unshadowed) */
+        ref_surface *rs = ref_surface_create(&s);
+        ref_hit *hits = malloc(sizeof *hits * (size_t)w * h);
+        if (!rs || !hits || !reference_primary(r, w, h, hits)) {
+            fprintf(stderr, "stin-reference: surface reference failed\n");
+            free(hits);
+            if (rs)
+                ref_surface_destroy(rs);
+            goto done;
+        }
+        for (y = 0; y < w * h; y++)
+            if (hits[y].hit)
+                ref_surface_shade(&s, rs, &hits[y], surface, -1.0f,
+                                  px + (size_t)y * REFERENCE_CHANNELS + REFERENCE_CH_R, NULL);
+        free(hits);
+        ref_surface_destroy(rs);
     }
     for (c = 0; c < REFERENCE_CHANNELS; c++)
         snprintf(img.channel_names[c], sizeof img.channel_names[c], "%s", reference_channel_names[c]);
