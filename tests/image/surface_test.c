@@ -12,7 +12,23 @@
  *                    interpolated tangent frame) on the normal-mapped pixels;
  *   pom-reference    parallax occlusion mapping against the CPU height-field
  *                    march along each pixel's true ray (4096 steps + 40
- *                    bisections), unshadowed, on the normal-mapped pixels.
+ *                    bisections), unshadowed, on the normal-mapped pixels;
+ *   parallax-limit   offset limiting: the albedo replaced by a uv gradient
+ *                    (texel (i, j) = (i, j, 0), 256 a side), ambient 1 and no
+ *                    lights, so the beauty's R,G is the sampled uv'; seen at a
+ *                    grazing angle with height_scale raised to 0.3, the shift
+ *                    uv' - uv (the hit's uv), taken to scene units on the
+ *                    tangent plane, is at most |h'| = |h scale - bias| plus the
+ *                    8-bit read-back (1/256 uv a channel) on every pixel off
+ *                    the gradient's seam, and is V.xy h' (so the shift is really
+ *                    measured); the test also counts the pixels where the
+ *                    unlimited V.xy h' / V.z would exceed the bound (it must);
+ *   pom-self-shadow  hard self-shadowing: white directional light at L.N 0.2,
+ *                    ambient 0, no albedo or specular; the GL factor is the
+ *                    beauty with self_shadow 1 over the beauty with 0 (same
+ *                    N.L), the reference marches the light ray from its pom hit
+ *                    (ref_surface_pom_shadow); self_shadow off would match only
+ *                    where the reference is lit, which must fail the fraction.
  * The reference comparisons count pixels within SURF_REF_TOLERANCE: the
  * reference samples albedo and normal map at level 0 while GL filters
  * mipmaps (the stone wall is minified 2-4x at 256x192), so brick edges,
@@ -38,6 +54,21 @@
 #define SURF_REF_TOLERANCE (8.0 / 255.0)
 #define SURF_REF_MIN_MATCH 0.80
 #define SURF_REF_MAX_MEAN (6.0 / 255.0)
+/* parallax-limit: the height scale is raised so that the 8-bit read-back of
+ * the uv (1/256 uv a channel, 0.016 scene units across the 4-unit wall) is
+ * small against |h'| (up to scale / 2); pixels whose hit uv lies within the
+ * margin of the gradient's repeat seam (where bilinear and mip filtering mix
+ * both ends) are left out */
+#define SURF_LIMIT_SCALE 0.3f
+#define SURF_LIMIT_UV_LSB (1.0 / 256.0)
+#define SURF_LIMIT_MARGIN 0.12
+#define SURF_LIMIT_MIN_MATCH 0.90
+/* pom-self-shadow */
+#define SURF_SHADOW_LIGHT_Z 0.2f
+#define SURF_SHADOW_EPSILON 0.004 /* depth units: the shader's acne margin */
+#define SURF_SHADOW_MIN_LIT 0.1   /* unshadowed beauty under which the ratio is noise */
+#define SURF_SHADOW_TOLERANCE 0.25
+#define SURF_SHADOW_MIN_MATCH 0.97
 
 static const float *px(const image *img, int x, int y)
 {
@@ -333,6 +364,317 @@ done:
     capture_free(&a);
 }
 
+/* ---- parallax-limit ------------------------------------------------------- */
+
+/* The first object with both a normal and a height map: its index, or -1. */
+static int parallax_object(const scene *s)
+{
+    int o;
+    for (o = 0; o < s->object_count; o++) {
+        const scene_material *m = &s->materials[s->objects[o].material];
+        if (m->normal >= 0 && m->height >= 0 && s->meshes[s->objects[o].mesh].uvs)
+            return o;
+    }
+    return -1;
+}
+
+/* A unit vector in the plane of n (for the grazing camera and light). */
+static void in_plane(const float n[3], float t[3], float b[3])
+{
+    float up[3] = {0, 1, 0}, len;
+    int k;
+    if (fabsf(n[1]) > 0.9f) {
+        up[0] = 1;
+        up[1] = 0;
+    }
+    t[0] = n[1] * up[2] - n[2] * up[1];
+    t[1] = n[2] * up[0] - n[0] * up[2];
+    t[2] = n[0] * up[1] - n[1] * up[0];
+    len = sqrtf(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    for (k = 0; k < 3; k++)
+        t[k] /= len;
+    b[0] = n[1] * t[2] - n[2] * t[1];
+    b[1] = n[2] * t[0] - n[0] * t[2];
+    b[2] = n[0] * t[1] - n[1] * t[0];
+}
+
+static int near_seam(double x, double margin)
+{
+    double f = x - floor(x);
+    return f < margin || f > 1.0 - margin;
+}
+
+static void test_parallax_limit(run *r, stin_tier tier, const scene *s, const char *scene_name)
+{
+    char name[256], err[512];
+    scene g = *s;
+    scene_texture *tex = NULL;
+    scene_material *mat = NULL;
+    capture a;
+    reference *ref = NULL;
+    ref_surface *rs = NULL;
+    ref_hit *hits = NULL;
+    float c[3], n[3], t[3], b[3];
+    const double bias = 0.5 * SURF_LIMIT_SCALE, e = SURF_LIMIT_UV_LSB;
+    const double tol_h = SURF_LIMIT_SCALE / 255.0;
+    long cnt = 0, over = 0, agree = 0, unl_over = 0;
+    double max_ratio = 0, max_tight = 0, max_excess = -1e30, max_tol = 0, max_unl = 0, min_vz = 1, max_shift = 0;
+    int o, mi, x, y, i, k, captured = 0;
+    snprintf(name, sizeof name, "%s/%s/parallax-limit", stin_tier_name(tier), scene_name);
+    o = parallax_object(s);
+    if (o < 0 || !mapped_object(s, c, n)) {
+        report(r, "SKIP", name, "no object with normal and height maps");
+        return;
+    }
+    mi = s->objects[o].material;
+    tex = calloc((size_t)s->texture_count + 1, sizeof *tex);
+    mat = calloc((size_t)s->material_count, sizeof *mat);
+    if (!tex || !mat)
+        goto oom;
+    /* the albedo: a 256 x 256 gradient whose texel (i, j) is (i, j, 0): the
+     * bilinear sample at any uv away from the repeat seam is exactly
+     * ((u * 256 - 0.5) / 255, (v * 256 - 0.5) / 255), at every mip level */
+    memcpy(tex, s->textures, sizeof *tex * (size_t)s->texture_count);
+    tex[s->texture_count].kind = SCENE_TEXTURE_ALBEDO;
+    snprintf(tex[s->texture_count].name, sizeof tex[s->texture_count].name, "uv-gradient");
+    tex[s->texture_count].width = tex[s->texture_count].height = 256;
+    tex[s->texture_count].rgba = malloc(4 * 256 * 256);
+    if (!tex[s->texture_count].rgba)
+        goto oom;
+    for (y = 0; y < 256; y++)
+        for (x = 0; x < 256; x++) {
+            uint8_t *q = tex[s->texture_count].rgba + 4 * (256 * y + x);
+            q[0] = (uint8_t)x;
+            q[1] = (uint8_t)y;
+            q[2] = 0;
+            q[3] = 255;
+        }
+    memcpy(mat, s->materials, sizeof *mat * (size_t)s->material_count);
+    mat[mi].albedo = s->texture_count;
+    for (k = 0; k < 4; k++)
+        mat[mi].color[k] = 1.0f;
+    for (k = 0; k < 3; k++)
+        mat[mi].specular[k] = 0.0f;
+    mat[mi].height_scale = SURF_LIMIT_SCALE;
+    mat[mi].self_shadow = 0;
+    g.textures = tex;
+    g.texture_count = s->texture_count + 1;
+    g.materials = mat;
+    g.light_count = 0; /* beauty = ambient 1 * albedo: the sampled uv */
+    for (k = 0; k < 3; k++)
+        g.ambient[k] = 1.0f;
+    in_plane(n, t, b);
+    for (k = 0; k < 3; k++) { /* grazing: V.z from ~0.2 to ~0.45 over the object */
+        g.camera.eye[k] = c[k] + 5.0f * t[k] + 1.5f * n[k];
+        g.camera.target[k] = c[k];
+        g.camera.up[k] = b[k];
+    }
+    g.camera.fovy_deg = 40.0f;
+    g.camera.near_plane = 0.5f;
+    g.camera.far_plane = 30.0f;
+    if (!render(r, &g, tier, STIN_TECH_SURFACE_PARALLAX, &a, name))
+        goto done;
+    captured = 1;
+    ref = reference_create(&g, err, sizeof err);
+    rs = ref_surface_create(&g);
+    hits = malloc(sizeof *hits * (size_t)a.img.width * a.img.height);
+    if (!ref || !rs || !hits || !reference_primary(ref, a.img.width, a.img.height, hits)) {
+        report(r, "FAIL", name, "reference: %s", ref ? "out of memory" : err);
+        goto done;
+    }
+    for (y = 0; y < a.img.height; y++)
+        for (x = 0; x < a.img.width; x++) {
+            const ref_hit *h = &hits[(size_t)(a.img.height - 1 - y) * a.img.width + x];
+            const float *p = px(&a.img, x, y);
+            double hp, vt[3], duv[2], off[2], q[2], shift, tol = 0, lim, vxy, dev;
+            if (!h->hit || !(p[AOV_Z] > 0) || s->objects[h->object].material != mi ||
+                near_seam(h->uv[0], SURF_LIMIT_MARGIN) || near_seam(h->uv[1], SURF_LIMIT_MARGIN) ||
+                !ref_surface_parallax_terms(&g, rs, h, -1.0f, &hp, vt))
+                continue;
+            for (k = 0; k < 2; k++) { /* the sampled uv, unwrapped to the hit's period */
+                double us = (p[AOV_R + k] * 255.0 + 0.5) / 256.0;
+                us += floor(h->uv[k] - us + 0.5);
+                duv[k] = us - h->uv[k];
+            }
+            if (!ref_surface_uv_to_plane(&g, rs, h, duv, off))
+                continue;
+            for (i = 0; i < 2; i++) { /* 8-bit uv error (+-e, +-e) in scene units */
+                double qe[2] = {e, i ? -e : e};
+                ref_surface_uv_to_plane(&g, rs, h, qe, q);
+                if (sqrt(q[0] * q[0] + q[1] * q[1]) > tol)
+                    tol = sqrt(q[0] * q[0] + q[1] * q[1]);
+            }
+            tol += tol_h;
+            shift = sqrt(off[0] * off[0] + off[1] * off[1]);
+            lim = fabs(hp);
+            cnt++;
+            if (shift > lim + tol)
+                over++;
+            if (shift - lim > max_excess)
+                max_excess = shift - lim;
+            if (tol > max_tol)
+                max_tol = tol;
+            if (shift > max_shift)
+                max_shift = shift;
+            if (lim >= 0.5 * bias && shift / lim > max_ratio)
+                max_ratio = shift / lim;
+            if (shift / (lim + tol) > max_tight)
+                max_tight = shift / (lim + tol);
+            dev = hypot(off[0] - vt[0] * hp, off[1] - vt[1] * hp);
+            if (dev <= tol)
+                agree++;
+            /* what the unlimited offset V.xy h' / V.z would shift by here */
+            vxy = hypot(vt[0], vt[1]);
+            if (vt[2] < min_vz)
+                min_vz = vt[2];
+            if (vxy / (vt[2] > 1e-3 ? vt[2] : 1e-3) * lim > lim + tol)
+                unl_over++;
+            if (lim >= 0.5 * bias && vxy / (vt[2] > 1e-3 ? vt[2] : 1e-3) > max_unl)
+                max_unl = vxy / (vt[2] > 1e-3 ? vt[2] : 1e-3);
+        }
+    {
+        double match = cnt ? (double)agree / cnt : 0;
+        report(r, cnt && !over && match >= SURF_LIMIT_MIN_MATCH && unl_over ? "PASS" : "FAIL",
+               name, "parallax uv shift read back through a uv-gradient albedo (ambient 1, no "
+               "lights, height_scale %.2f, grazing view V.z >= %.3f): |shift| <= |h'| + tol on "
+               "%ld of %ld pixels (%ld over; max |shift| / (|h'| + tol) %.3f; max |shift| / |h'| %.3f "
+               "where |h'| >= bias/2, max "
+               "|shift| - |h'| %.4f, max |shift| %.4f; tol = 1/256 uv a channel in scene units + "
+               "scale/255, up to %.4f); shift equals V.xy h' within tol on %.2f%% (need %.0f%%); "
+               "the unlimited V.xy h' / V.z would exceed the bound on %ld pixels (up to %.2f |h'|)",
+               SURF_LIMIT_SCALE, min_vz, cnt - over, cnt, over, max_tight, max_ratio, max_excess, max_shift,
+               max_tol, 100.0 * match, 100.0 * SURF_LIMIT_MIN_MATCH, unl_over, max_unl);
+    }
+    goto done;
+oom:
+    report(r, "FAIL", name, "out of memory");
+done:
+    free(hits);
+    ref_surface_destroy(rs);
+    if (ref)
+        reference_destroy(ref);
+    if (captured)
+        capture_free(&a);
+    if (tex)
+        free(tex[s->texture_count].rgba);
+    free(tex);
+    free(mat);
+}
+
+/* ---- pom-self-shadow ------------------------------------------------------ */
+
+static void test_pom_shadow(run *r, stin_tier tier, const scene *s, const char *scene_name)
+{
+    char name[256], err[512];
+    scene g = *s;
+    scene_material *mat = NULL;
+    scene_light light;
+    capture on, off;
+    reference *ref = NULL;
+    ref_surface *rs = NULL;
+    ref_hit *hits = NULL;
+    float c[3], n[3], t[3], b[3], l[3], len;
+    long cnt = 0, agree = 0, agree_off = 0, gl_dark = 0, ref_dark = 0;
+    int o, mi, x, y, k, have_on = 0, have_off = 0;
+    snprintf(name, sizeof name, "%s/%s/pom-self-shadow", stin_tier_name(tier), scene_name);
+    o = parallax_object(s);
+    if (o < 0 || !mapped_object(s, c, n)) {
+        report(r, "SKIP", name, "no object with normal and height maps");
+        return;
+    }
+    mi = s->objects[o].material;
+    mat = calloc((size_t)s->material_count, sizeof *mat);
+    if (!mat) {
+        report(r, "FAIL", name, "out of memory");
+        return;
+    }
+    memcpy(mat, s->materials, sizeof *mat * (size_t)s->material_count);
+    mat[mi].albedo = -1; /* beauty = N.L * shadow: white, no specular */
+    for (k = 0; k < 4; k++)
+        mat[mi].color[k] = 1.0f;
+    for (k = 0; k < 3; k++)
+        mat[mi].specular[k] = 0.0f;
+    mat[mi].self_shadow = 1;
+    in_plane(n, t, b);
+    /* a grazing white directional light (L.N = SURF_SHADOW_LIGHT_Z), from
+     * above and the side: brick ledges shadow the mortar under them */
+    for (k = 0; k < 3; k++)
+        l[k] = SURF_SHADOW_LIGHT_Z * n[k] + 0.6f * t[k] + 0.8f * b[k] * 1.0f;
+    len = sqrtf(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    memset(&light, 0, sizeof light);
+    light.type = SCENE_LIGHT_DIRECTIONAL;
+    for (k = 0; k < 3; k++) {
+        l[k] /= len;
+        light.direction[k] = -l[k];
+        light.color[k] = 1.0f;
+    }
+    light.intensity = 1.0f;
+    light.attenuation[0] = 1.0f;
+    light.spot_cutoff_deg = 45.0f;
+    g.materials = mat;
+    g.lights = &light;
+    g.light_count = 1;
+    for (k = 0; k < 3; k++)
+        g.ambient[k] = 0.0f;
+    if (!render(r, &g, tier, STIN_TECH_SURFACE_POM, &on, name))
+        goto done;
+    have_on = 1;
+    mat[mi].self_shadow = 0;
+    if (!render(r, &g, tier, STIN_TECH_SURFACE_POM, &off, name))
+        goto done;
+    have_off = 1;
+    mat[mi].self_shadow = 1;
+    ref = reference_create(&g, err, sizeof err);
+    rs = ref_surface_create(&g);
+    hits = malloc(sizeof *hits * (size_t)on.img.width * on.img.height);
+    if (!ref || !rs || !hits || !reference_primary(ref, on.img.width, on.img.height, hits)) {
+        report(r, "FAIL", name, "reference: %s", ref ? "out of memory" : err);
+        goto done;
+    }
+    for (y = 0; y < on.img.height; y++)
+        for (x = 0; x < on.img.width; x++) {
+            const ref_hit *h = &hits[(size_t)(on.img.height - 1 - y) * on.img.width + x];
+            const float *p = px(&on.img, x, y), *q = px(&off.img, x, y);
+            double gl, want;
+            if (!h->hit || !(p[AOV_Z] > 0) || !(q[AOV_Z] > 0) ||
+                s->objects[h->object].material != mi || q[AOV_R] < SURF_SHADOW_MIN_LIT)
+                continue;
+            gl = p[AOV_R] / q[AOV_R]; /* the same N.L either way: the shadow factor */
+            want = ref_surface_pom_shadow(&g, rs, h, l, SURF_SHADOW_EPSILON, NULL, NULL);
+            cnt++;
+            if (fabs(gl - want) <= SURF_SHADOW_TOLERANCE)
+                agree++;
+            if (fabs(1.0 - want) <= SURF_SHADOW_TOLERANCE)
+                agree_off++;
+            if (gl < 0.5)
+                gl_dark++;
+            if (want < 0.5)
+                ref_dark++;
+        }
+    {
+        double match = cnt ? (double)agree / cnt : 0, match_off = cnt ? (double)agree_off / cnt : 0;
+        report(r, cnt && match >= SURF_SHADOW_MIN_MATCH && match_off < SURF_SHADOW_MIN_MATCH ? "PASS"
+                                                                                               : "FAIL",
+               name, "hard pom self-shadow factor (beauty with / without self_shadow, ambient 0, "
+               "white directional light at L.N %.2f) vs the CPU march toward the light from the "
+               "reference pom hit: within %.2f on %.2f%% of %ld lit mapped pixels (need %.0f%%; "
+               "shadowed: GL %.2f%%, reference %.2f%%); self_shadow off would match on %.2f%%",
+               SURF_SHADOW_LIGHT_Z, SURF_SHADOW_TOLERANCE, 100.0 * match, cnt,
+               100.0 * SURF_SHADOW_MIN_MATCH, cnt ? 100.0 * gl_dark / cnt : 0.0,
+               cnt ? 100.0 * ref_dark / cnt : 0.0, 100.0 * match_off);
+    }
+done:
+    free(hits);
+    ref_surface_destroy(rs);
+    if (ref)
+        reference_destroy(ref);
+    if (have_on)
+        capture_free(&on);
+    if (have_off)
+        capture_free(&off);
+    free(mat);
+}
+
 void surface_tests(run *r, stin_tier tier, const char *path)
 {
     static int shaders_done;
@@ -354,6 +696,8 @@ void surface_tests(run *r, stin_tier tier, const char *path)
                            "normal-reference");
             test_reference(r, tier, &s, scene_name, STIN_TECH_SURFACE_POM, REF_SURFACE_POM,
                            "pom-reference");
+            test_parallax_limit(r, tier, &s, scene_name);
+            test_pom_shadow(r, tier, &s, scene_name);
         }
     }
     scene_free(&s);

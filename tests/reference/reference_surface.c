@@ -194,6 +194,40 @@ static double height_at(const scene_texture *h, double u, double v)
     return px[0];
 }
 
+/* The POM view march (reference_surface.h, pom): moves uv to where the view
+ * ray (vt: unit, toward the eye, tangent frame) meets the recessed field and
+ * returns the depth there, 0..1 of the scale. */
+static double pom_march(const scene_texture *ht, const frame *f, const double vt[3], double scale,
+                        double uv[2])
+{
+    double vz = vt[2] > 1e-3 ? vt[2] : 1e-3, dir[2], lo = 0, hi = 0, d = 0;
+    const int steps = 4096;
+    int i, j;
+    for (j = 0; j < 2; j++)
+        dir[j] = -(f->au[j] * vt[0] + f->av[j] * vt[1]) / vz * scale;
+    if (1.0 - height_at(ht, uv[0], uv[1]) > 0.0) {
+        for (i = 1; i <= steps; i++) {
+            double dd = (double)i / steps;
+            if (1.0 - height_at(ht, uv[0] + dir[0] * dd, uv[1] + dir[1] * dd) <= dd) {
+                hi = dd;
+                break;
+            }
+            lo = dd;
+        }
+        for (i = 0; i < 40; i++) {
+            double mid = 0.5 * (lo + hi);
+            if (1.0 - height_at(ht, uv[0] + dir[0] * mid, uv[1] + dir[1] * mid) <= mid)
+                hi = mid;
+            else
+                lo = mid;
+        }
+        d = 0.5 * (lo + hi);
+    }
+    uv[0] += dir[0] * d;
+    uv[1] += dir[1] * d;
+    return d;
+}
+
 void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit, int technique,
                        float height_bias, float out_rgba[4], float out_uv[2])
 {
@@ -237,32 +271,7 @@ void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit
         uv[0] += f.au[0] * ox + f.av[0] * oy;
         uv[1] += f.au[1] * ox + f.av[1] * oy;
     } else if (technique == REF_SURFACE_POM) {
-        const scene_texture *ht = &s->textures[m->height];
-        double vz = vt[2] > 1e-3 ? vt[2] : 1e-3, dir[2], lo = 0, hi = 0, d = 0;
-        const int steps = 4096;
-        int i;
-        for (j = 0; j < 2; j++)
-            dir[j] = -(f.au[j] * vt[0] + f.av[j] * vt[1]) / vz * scale;
-        if (1.0 - height_at(ht, uv[0], uv[1]) > 0.0) {
-            for (i = 1; i <= steps; i++) {
-                double dd = (double)i / steps;
-                if (1.0 - height_at(ht, uv[0] + dir[0] * dd, uv[1] + dir[1] * dd) <= dd) {
-                    hi = dd;
-                    break;
-                }
-                lo = dd;
-            }
-            for (i = 0; i < 40; i++) {
-                double mid = 0.5 * (lo + hi);
-                if (1.0 - height_at(ht, uv[0] + dir[0] * mid, uv[1] + dir[1] * mid) <= mid)
-                    hi = mid;
-                else
-                    lo = mid;
-            }
-            d = 0.5 * (lo + hi);
-        }
-        uv[0] += dir[0] * d;
-        uv[1] += dir[1] * d;
+        pom_march(&s->textures[m->height], &f, vt, scale, uv);
     }
     reference_sample_texture(&s->textures[m->normal], (float)uv[0], (float)uv[1], nm);
     h2 = *hit;
@@ -283,4 +292,107 @@ void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit
         out_uv[1] = h2.uv[1];
     }
     reference_shade(s, NULL, &h2, 0, out_rgba);
+}
+
+/* The material of a hit with a normal and a height map, its scale and the
+ * tangent frame; 0 where the hit has none. */
+static const scene_material *mapped(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                                    frame *f, double *scale)
+{
+    const scene_material *m;
+    if (!hit->hit || !rs || hit->object < 0 || hit->object >= s->object_count)
+        return NULL;
+    m = &s->materials[s->objects[hit->object].material];
+    if (m->normal < 0 || m->height < 0)
+        return NULL;
+    hit_frame(s, rs, hit, f);
+    *scale = m->height_scale > 0 ? m->height_scale : 1e-30;
+    return m;
+}
+
+int ref_surface_parallax_terms(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                               float height_bias, double *h_prime, double vt[3])
+{
+    const scene_material *m;
+    frame f;
+    double V[3], scale, bias;
+    int j;
+    if (!(m = mapped(s, rs, hit, &f, &scale)))
+        return 0;
+    for (j = 0; j < 3; j++)
+        V[j] = s->camera.eye[j] - hit->P[j];
+    normalize3(V);
+    vt[0] = dot3(V, f.T);
+    vt[1] = dot3(V, f.B);
+    vt[2] = dot3(V, f.N);
+    bias = height_bias < 0 ? 0.5 * scale : height_bias;
+    *h_prime = height_at(&s->textures[m->height], hit->uv[0], hit->uv[1]) * scale - bias;
+    return 1;
+}
+
+int ref_surface_uv_to_plane(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                            const double duv[2], double out[2])
+{
+    frame f;
+    double scale, det;
+    if (!mapped(s, rs, hit, &f, &scale))
+        return 0;
+    /* duv = au x + av y: solve the 2x2 */
+    det = f.au[0] * f.av[1] - f.av[0] * f.au[1];
+    if (fabs(det) < 1e-30)
+        return 0;
+    out[0] = (duv[0] * f.av[1] - f.av[0] * duv[1]) / det;
+    out[1] = (f.au[0] * duv[1] - duv[0] * f.au[1]) / det;
+    return 1;
+}
+
+float ref_surface_pom_shadow(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                             const float to_light[3], double epsilon, float out_uv[2],
+                             float *out_depth)
+{
+    const scene_material *m;
+    const scene_texture *ht;
+    frame f;
+    double V[3], L[3], vt[3], lt[3], uv[2], dir[2], scale, d;
+    long i, steps;
+    int j;
+    if (!(m = mapped(s, rs, hit, &f, &scale)))
+        return 1.0f;
+    ht = &s->textures[m->height];
+    for (j = 0; j < 3; j++) {
+        V[j] = s->camera.eye[j] - hit->P[j];
+        L[j] = to_light[j];
+    }
+    normalize3(V);
+    normalize3(L);
+    vt[0] = dot3(V, f.T);
+    vt[1] = dot3(V, f.B);
+    vt[2] = dot3(V, f.N);
+    uv[0] = hit->uv[0];
+    uv[1] = hit->uv[1];
+    d = pom_march(ht, &f, vt, scale, uv);
+    if (out_uv) {
+        out_uv[0] = (float)uv[0];
+        out_uv[1] = (float)uv[1];
+    }
+    if (out_depth)
+        *out_depth = (float)d;
+    if (!(d > 0.0))
+        return 1.0f; /* on the top: nothing of the field is above it */
+    lt[0] = dot3(L, f.T);
+    lt[1] = dot3(L, f.B);
+    lt[2] = dot3(L, f.N);
+    if (!(lt[2] > 0.0))
+        return 0.0f; /* toward a light under the polygon the ray never leaves the field */
+    /* uv change per unit of depth climbed toward the light */
+    for (j = 0; j < 2; j++)
+        dir[j] = (f.au[j] * lt[0] + f.av[j] * lt[1]) / lt[2] * scale;
+    steps = (long)ceil(4096.0 * d);
+    for (i = 1; i < steps; i++) { /* climb c from the hit (depth d) to the top (depth 0) */
+        double c = d * (double)i / steps, ray = d - c;
+        double field = 1.0 - height_at(ht, uv[0] + dir[0] * c, uv[1] + dir[1] * c);
+        if (ray - field > epsilon)
+            return 0.0f;
+    }
+    return 1.0f;
 }

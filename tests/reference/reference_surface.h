@@ -13,7 +13,8 @@
  *   pom      the true view ray marched through the recessed height field
  *            (h = 1 in the polygon, h = 0 at scale below) in 4096 steps,
  *            then 40 bisections: the uv where the ray meets the field.
- * Albedo and normal map are sampled at the final uv. No self-shadowing.
+ * Albedo and normal map are sampled at the final uv. No self-shadowing in
+ * ref_surface_shade; ref_surface_pom_shadow marches the light ray on its own.
  */
 #ifndef STIN_TESTS_REFERENCE_SURFACE_H
 #define STIN_TESTS_REFERENCE_SURFACE_H
@@ -37,5 +38,29 @@ void ref_mesh_tangents(const scene_mesh *m, float *out);
  * (may be NULL). height_bias < 0: the default scale / 2. */
 void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit, int technique,
                        float height_bias, float out_rgba[4], float out_uv[2]);
+
+/* Parallax terms of a hit with a normal and a height map: h' = h(uv) scale -
+ * bias in scene units (h bilinear at the hit uv, level 0; height_bias < 0:
+ * scale / 2) and vt, the unit vector to the eye in the tangent frame (T, B,
+ * N). 0 (outputs untouched) for a hit without both maps. */
+int ref_surface_parallax_terms(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                               float height_bias, double *h_prime, double vt[3]);
+
+/* The tangent-plane offset (scene units along T and B) whose uv change at the
+ * hit's triangle is duv (the inverse of the parallax map A). 0 without both
+ * maps or for a degenerate uv map. */
+int ref_surface_uv_to_plane(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                            const double duv[2], double out[2]);
+
+/* POM self-shadowing (hard) of a hit toward the unit direction to_light
+ * (world): the view ray is marched to the field as in pom; from that point
+ * (depth d, 0..1 of the scale) the ray toward the light climbs to the
+ * polygon in ceil(4096 d) steps and the hit is shadowed (0) where the field
+ * at some step lies more than epsilon (depth units) above the ray; 1 where
+ * it stays below, where d = 0 (the top) or without both maps; 0 toward a
+ * light under the polygon. out_uv / out_depth (may be NULL): the pom hit. */
+float ref_surface_pom_shadow(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                             const float to_light[3], double epsilon, float out_uv[2],
+                             float *out_depth);
 
 #endif
