@@ -1,12 +1,15 @@
 /* stin-bench: median frame time of libstin's unshadowed path per tier on the
  * spheres scenes, next to a minimal raw-GL loop drawing the same geometry in
  * the same process, then what stencil shadow volumes cost on top of stin's
- * unshadowed frame, then what the GL1 shadow maps cost at each map size;
- * printed as markdown tables (docs/benchmarks.md). */
+ * unshadowed frame, then what the GL1 shadow maps cost at each map size, then
+ * what the GLSL tiers' PCF shadow maps cost per map size and kernel, then
+ * what each GLSL surface technique costs against plain; printed as markdown
+ * tables (docs/benchmarks.md). */
 #include "bench_machine.h"
 #include "bench_maps.h"
 #include "bench_run.h"
 #include "bench_shadow.h"
+#include "bench_tech.h"
 #include "raw_gl.h"
 #include "scene.h"
 #include "stin/stin.h"
@@ -24,9 +27,20 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
     "tests/scenes/spheres-18k.json,tests/scenes/spheres-76k.json,"                       \
     "tests/scenes/spheres-174k.json"
 #define DEFAULT_MAPS_SCENE "tests/scenes/spheres-18k-spot.json"
+#define DEFAULT_PCF_SCENE "tests/scenes/spheres-18k-spot.json"
+#define DEFAULT_SURFACE_SCENE "tests/scenes/stone-wall.json"
+#define PCF_MAX_SIZES 4
+#define PCF_MAX_KERNELS 3
 
-/* The sections; --shadows / --maps pick only those named, --no-* drop one. */
-enum { SECTION_RAW = 1, SECTION_SHADOWS = 2, SECTION_MAPS = 4 };
+/* The sections; --shadows / --maps / --pcf / --surface pick only those named,
+ * --no-* drop one. */
+enum {
+    SECTION_RAW = 1,
+    SECTION_SHADOWS = 2,
+    SECTION_MAPS = 4,
+    SECTION_PCF = 8,
+    SECTION_SURFACE = 16
+};
 
 typedef struct options {
     const char *platform, *shader_dir;
@@ -35,12 +49,16 @@ typedef struct options {
     int scene_count;
     int width, height, frames, warmup, setups, quick, verbose;
     stin_tier tier; /* AUTO: every tier */
-    int raw_section, shadow_section, maps_section; /* which sections run */
+    int raw_section, shadow_section, maps_section, pcf_section, surface_section; /* which run */
     int shadow_frames, shadow_setups, small_frames;
     int light_counts[SHADOW_MAX_COUNTS], count_n;
     const char *maps_scene;
     int maps_frames, maps_setups, maps_no_fbo;
     int map_sizes[MAPS_MAX_SIZES], map_size_n;
+    const char *pcf_scene, *surface_scene;
+    int pcf_frames, pcf_setups, surface_frames, surface_setups;
+    int pcf_sizes[PCF_MAX_SIZES], pcf_size_n;
+    int pcf_kernels[PCF_MAX_KERNELS], pcf_kernel_n;
 } options;
 
 static void usage(FILE *f)
@@ -76,8 +94,26 @@ static void usage(FILE *f)
             "  --maps-setups N           fresh shadows-off context per set-up (default 3)\n"
             "  --maps-no-fbo             hide the FBO capability from stin (maps drawn in the\n"
             "                            frame's framebuffer, at most the viewport's size)\n"
+            "PCF shadow-map section (gl2, gl4; runs after the shadow-map section by default):\n"
+            "  --pcf                     run only the PCF section (with --shadows, --maps or\n"
+            "                            --surface: those too)\n"
+            "  --no-pcf                  skip it\n"
+            "  --pcf-scene FILE          scene (default " DEFAULT_PCF_SCENE ")\n"
+            "  --pcf-sizes 1024,2048     map sizes, powers of two 16..8192, at most %d\n"
+            "                            (default 1024,2048,4096)\n"
+            "  --pcf-kernels 1,3,5       PCF kernels (1, 3 or 5), at most %d (default 1,3,5)\n"
+            "  --pcf-frames N            timed frames per side, set-up and row (default 5)\n"
+            "  --pcf-setups N            fresh shadows-off context per set-up (default 2)\n"
+            "surface section (gl2, gl4; runs last by default):\n"
+            "  --surface                 run only the surface section (with --shadows, --maps or\n"
+            "                            --pcf: those too)\n"
+            "  --no-surface              skip it\n"
+            "  --surface-scene FILE      scene (default " DEFAULT_SURFACE_SCENE ")\n"
+            "  --surface-frames N        timed frames per side, set-up and row (default 7)\n"
+            "  --surface-setups N        fresh plain context per set-up (default 3)\n"
             "exit codes: 0 ok, 1 failure, 2 bad input, 3 the --tier is unsupported here\n",
-            SHADOW_MAX_LIGHTS, SHADOW_MAX_COUNTS, MAPS_MAX_SIZES);
+            SHADOW_MAX_LIGHTS, SHADOW_MAX_COUNTS, MAPS_MAX_SIZES, PCF_MAX_SIZES,
+            PCF_MAX_KERNELS);
 }
 
 static int parse_int(const char *s, int lo, int hi, int *out)
@@ -136,11 +172,41 @@ static int parse_map_sizes(options *o, const char *v)
     return o->map_size_n > 0;
 }
 
+static int parse_pcf_sizes(options *o, const char *v)
+{
+    char buf[128], *tok;
+    snprintf(buf, sizeof buf, "%s", v);
+    o->pcf_size_n = 0;
+    for (tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+        int *size = &o->pcf_sizes[o->pcf_size_n];
+        if (o->pcf_size_n == PCF_MAX_SIZES || !parse_int(tok, 16, 8192, size) ||
+            (*size & (*size - 1)))
+            return 0;
+        o->pcf_size_n++;
+    }
+    return o->pcf_size_n > 0;
+}
+
+static int parse_pcf_kernels(options *o, const char *v)
+{
+    char buf[128], *tok;
+    snprintf(buf, sizeof buf, "%s", v);
+    o->pcf_kernel_n = 0;
+    for (tok = strtok(buf, ","); tok; tok = strtok(NULL, ",")) {
+        int *k = &o->pcf_kernels[o->pcf_kernel_n];
+        if (o->pcf_kernel_n == PCF_MAX_KERNELS || !parse_int(tok, 1, 5, k) || !(*k & 1))
+            return 0;
+        o->pcf_kernel_n++;
+    }
+    return o->pcf_kernel_n > 0;
+}
+
 static int parse_args(int argc, char **argv, options *o)
 {
     const char *scenes = NULL;
     int i, frames = 0, shadow_frames = 0, small_frames = 0, shadow_setups = 0;
     int maps_frames = 0, maps_setups = 0, only = 0, skip = 0;
+    int pcf_frames = 0, pcf_setups = 0, surface_frames = 0, surface_setups = 0;
     memset(o, 0, sizeof *o);
     o->platform = "egl";
     o->shader_dir = "shaders";
@@ -154,6 +220,16 @@ static int parse_args(int argc, char **argv, options *o)
     o->map_sizes[2] = 2048;
     o->map_sizes[3] = 4096;
     o->map_size_n = 4;
+    o->pcf_scene = DEFAULT_PCF_SCENE;
+    o->surface_scene = DEFAULT_SURFACE_SCENE;
+    o->pcf_sizes[0] = 1024;
+    o->pcf_sizes[1] = 2048;
+    o->pcf_sizes[2] = 4096;
+    o->pcf_size_n = 3;
+    o->pcf_kernels[0] = 1;
+    o->pcf_kernels[1] = 3;
+    o->pcf_kernels[2] = 5;
+    o->pcf_kernel_n = 3;
     o->light_counts[0] = 1;
     o->light_counts[1] = 4;
     o->light_counts[2] = 8;
@@ -175,6 +251,14 @@ static int parse_args(int argc, char **argv, options *o)
             only |= SECTION_MAPS;
         } else if (!strcmp(a, "--no-maps")) {
             skip |= SECTION_MAPS;
+        } else if (!strcmp(a, "--pcf")) {
+            only |= SECTION_PCF;
+        } else if (!strcmp(a, "--no-pcf")) {
+            skip |= SECTION_PCF;
+        } else if (!strcmp(a, "--surface")) {
+            only |= SECTION_SURFACE;
+        } else if (!strcmp(a, "--no-surface")) {
+            skip |= SECTION_SURFACE;
         } else if (!strcmp(a, "--maps-no-fbo")) {
             o->maps_no_fbo = 1;
         } else if (a[0] != '-') {
@@ -255,6 +339,42 @@ static int parse_args(int argc, char **argv, options *o)
                 fprintf(stderr, "stin-bench: --maps-setups wants 1..1000, got '%s'\n", v);
                 return 0;
             }
+        } else if (!strcmp(a, "--pcf-scene")) {
+            o->pcf_scene = v;
+        } else if (!strcmp(a, "--pcf-sizes")) {
+            if (!parse_pcf_sizes(o, v)) {
+                fprintf(stderr, "stin-bench: --pcf-sizes wants up to %d powers of two "
+                        "16..8192, got '%s'\n", PCF_MAX_SIZES, v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--pcf-kernels")) {
+            if (!parse_pcf_kernels(o, v)) {
+                fprintf(stderr, "stin-bench: --pcf-kernels wants up to %d of 1, 3, 5, got "
+                        "'%s'\n", PCF_MAX_KERNELS, v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--pcf-frames")) {
+            if (!parse_int(v, 1, 100000, &pcf_frames)) {
+                fprintf(stderr, "stin-bench: --pcf-frames wants 1..100000, got '%s'\n", v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--pcf-setups")) {
+            if (!parse_int(v, 1, 1000, &pcf_setups)) {
+                fprintf(stderr, "stin-bench: --pcf-setups wants 1..1000, got '%s'\n", v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--surface-scene")) {
+            o->surface_scene = v;
+        } else if (!strcmp(a, "--surface-frames")) {
+            if (!parse_int(v, 1, 100000, &surface_frames)) {
+                fprintf(stderr, "stin-bench: --surface-frames wants 1..100000, got '%s'\n", v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--surface-setups")) {
+            if (!parse_int(v, 1, 1000, &surface_setups)) {
+                fprintf(stderr, "stin-bench: --surface-setups wants 1..1000, got '%s'\n", v);
+                return 0;
+            }
         } else if (!strcmp(a, "--platform")) {
             o->platform = v;
         } else if (!strcmp(a, "--shaders")) {
@@ -271,10 +391,17 @@ static int parse_args(int argc, char **argv, options *o)
     o->shadow_setups = shadow_setups ? shadow_setups : o->quick ? 1 : 2;
     o->maps_frames = maps_frames ? maps_frames : o->quick ? 3 : 15;
     o->maps_setups = maps_setups ? maps_setups : o->quick ? 1 : 3;
-    only = only ? only : SECTION_RAW | SECTION_SHADOWS | SECTION_MAPS;
+    o->pcf_frames = pcf_frames ? pcf_frames : o->quick ? 3 : 5;
+    o->pcf_setups = pcf_setups ? pcf_setups : o->quick ? 1 : 2;
+    o->surface_frames = surface_frames ? surface_frames : o->quick ? 3 : 7;
+    o->surface_setups = surface_setups ? surface_setups : o->quick ? 1 : 3;
+    only = only ? only
+                : SECTION_RAW | SECTION_SHADOWS | SECTION_MAPS | SECTION_PCF | SECTION_SURFACE;
     o->raw_section = !!(only & ~skip & SECTION_RAW);
     o->shadow_section = !!(only & ~skip & SECTION_SHADOWS);
     o->maps_section = !!(only & ~skip & SECTION_MAPS);
+    o->pcf_section = !!(only & ~skip & SECTION_PCF);
+    o->surface_section = !!(only & ~skip & SECTION_SURFACE);
     if (!scenes)
         scenes = o->quick ? "tests/scenes/spheres-18k.json" : DEFAULT_SCENES;
     return split_scenes(o, scenes);
@@ -566,6 +693,213 @@ static int run_maps(const bench_settings *b, const stin_caps *caps, const scene 
     return 0;
 }
 
+/* ---- PCF shadow maps and surface techniques (gl2, gl4) ------------------ */
+
+/* The GLSL tiers a technique section runs: gl2 and gl4, or the --tier one.
+ * 0 and a SKIP line when --tier names gl1. */
+static int glsl_tiers(const options *o, const char *what, stin_tier *out)
+{
+    if (o->tier == STIN_TIER_GL1) {
+        printf("\n### %s: SKIP (gl2 and gl4 only; --tier gl1)\n", what);
+        return 0;
+    }
+    if (o->tier != STIN_TIER_AUTO) {
+        out[0] = o->tier;
+        return 1;
+    }
+    out[0] = STIN_TIER_GL2;
+    out[1] = STIN_TIER_GL4;
+    return 2;
+}
+
+/* Runs st over rows on one tier; prints a SKIP line and returns 0 or
+ * EXIT_UNSUPPORTED where the context lacks the tier, EXIT_FAILED on failure,
+ * -1 when it ran. */
+static int tech_tier(tech_settings *st, stin_tier tier, const stin_caps *caps, const options *o,
+                     const char *what, const scene *s, tech_row *rows, int row_n)
+{
+    char missing[512], err[1024], label[128];
+    if (!stin_tier_supported(caps, tier, missing, sizeof missing)) {
+        printf("\n### %s, %s: SKIP (the context lacks %s)\n", what, stin_tier_name(tier),
+               missing);
+        return o->tier != STIN_TIER_AUTO ? EXIT_UNSUPPORTED : 0;
+    }
+    scene_label(s->path, label, sizeof label);
+    st->tier = tier;
+    fprintf(stderr, "stin-bench: %s %s %s ...\n", what, stin_tier_name(tier), label);
+    fflush(stdout);
+    if (!bench_tech_run(st, s, rows, row_n, err, sizeof err)) {
+        fprintf(stderr, "stin-bench: %s, %s, %s: %s\n", what, stin_tier_name(tier), label, err);
+        return EXIT_FAILED;
+    }
+    return -1;
+}
+
+static double row_ratio(const tech_row *r)
+{
+    return r->base_ms > 0 ? r->on_ms / r->base_ms : 0.0;
+}
+
+static int run_pcf(const bench_settings *b, const stin_caps *caps, const scene *s,
+                   const options *o, int *ran)
+{
+    static tech_row rows[2][TECH_MAX_ROWS];
+    stin_tier tiers[2];
+    tech_settings st;
+    char label[128];
+    const tech_row *best = NULL, *worst = NULL;
+    stin_tier best_tier = STIN_TIER_AUTO, worst_tier = STIN_TIER_AUTO;
+    int tier_n, t, i, k, row_n = 0, rc, done[2] = {0, 0}, any = 0;
+    memset(&st, 0, sizeof st);
+    st.b = b;
+    st.frames = o->pcf_frames;
+    st.setups = o->pcf_setups;
+    st.base.shadows = STIN_TECH_SHADOWS_OFF;
+    st.base.surface = STIN_TECH_NONE;
+    scene_label(o->pcf_scene, label, sizeof label);
+    printf("\n## PCF shadow maps (map-pcf, gl2/gl4): %s, %dx%d, the scene's %d light(s); per "
+           "side the lowest of %d set-ups' median of %d frames (ABBA-interleaved, glFinish per "
+           "frame, %d warm-up per row)\n", label, b->width, b->height, s->light_count,
+           st.setups, st.frames, b->warmup > 1 ? b->warmup : 1);
+    if (!(tier_n = glsl_tiers(o, "PCF shadow maps", tiers)))
+        return 0;
+    for (t = 0; t < tier_n; t++) {
+        for (row_n = 0, i = 0; i < o->pcf_size_n; i++)
+            for (k = 0; k < o->pcf_kernel_n; k++, row_n++) {
+                tech_config *c = &rows[t][row_n].cfg;
+                c->shadows = STIN_TECH_SHADOWS_MAP_PCF;
+                c->surface = STIN_TECH_NONE;
+                c->map_size = (uint32_t)o->pcf_sizes[i];
+                c->pcf_kernel = o->pcf_kernels[k];
+            }
+        rc = tech_tier(&st, tiers[t], caps, o, "PCF shadow maps", s, rows[t], row_n);
+        if (rc >= 0) {
+            if (rc)
+                return rc;
+            continue;
+        }
+        done[t] = 1;
+        any = 1;
+        printf("\n### PCF shadow maps, %s (%s)\n\n", stin_tier_name(tiers[t]),
+               tier_label(tiers[t]));
+        printf("| map size asked | map size rendered | kernel | passes | off median ms | "
+               "map-pcf median ms | map-pcf / off |\n");
+        printf("|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (i = 0; i < row_n; i++) {
+            const tech_row *r = &rows[t][i];
+            if (r->skipped) {
+                printf("| %u | SKIP: %s | %d | | | | |\n", r->cfg.map_size, r->why,
+                       r->cfg.pcf_kernel);
+                continue;
+            }
+            printf("| %u | %u | %d | %u | %.2f | %.2f | %.2f |\n", r->cfg.map_size, r->rendered,
+                   r->cfg.pcf_kernel, r->passes, r->base_ms, r->on_ms, row_ratio(r));
+            if (!best || row_ratio(r) < row_ratio(best))
+                best = r, best_tier = tiers[t];
+            if (!worst || row_ratio(r) > row_ratio(worst))
+                worst = r, worst_tier = tiers[t];
+        }
+        fflush(stdout);
+    }
+    if (!any)
+        return 0;
+    /* the ratios again as one grid: a line per tier and map size, a column per kernel */
+    printf("\n### PCF shadow maps: map-pcf / off\n\n| tier | map size |");
+    for (k = 0; k < o->pcf_kernel_n; k++)
+        printf(" kernel %d |", o->pcf_kernels[k]);
+    printf("\n|---|---:|");
+    for (k = 0; k < o->pcf_kernel_n; k++)
+        printf("---:|");
+    printf("\n");
+    for (t = 0; t < tier_n; t++) {
+        if (!done[t])
+            continue;
+        for (i = 0; i < o->pcf_size_n; i++) {
+            printf("| %s | %d |", stin_tier_name(tiers[t]), o->pcf_sizes[i]);
+            for (k = 0; k < o->pcf_kernel_n; k++) {
+                const tech_row *r = &rows[t][i * o->pcf_kernel_n + k];
+                if (r->skipped)
+                    printf(" SKIP |");
+                else
+                    printf(" %.2f |", row_ratio(r));
+            }
+            printf("\n");
+        }
+    }
+    if (best && worst)
+        printf("\nmap-pcf / shadows off: from %.2f (%s %u, kernel %d) to %.2f (%s %u, kernel "
+               "%d)\n", row_ratio(best), stin_tier_name(best_tier), best->rendered,
+               best->cfg.pcf_kernel, row_ratio(worst), stin_tier_name(worst_tier),
+               worst->rendered, worst->cfg.pcf_kernel);
+    fflush(stdout);
+    ++*ran;
+    return 0;
+}
+
+static int run_surface(const bench_settings *b, const stin_caps *caps, const scene *s,
+                       const options *o, int *ran)
+{
+    static const stin_technique surfaces[] = {STIN_TECH_SURFACE_PLAIN, STIN_TECH_SURFACE_NORMAL,
+                                              STIN_TECH_SURFACE_PARALLAX,
+                                              STIN_TECH_SURFACE_POM};
+    enum { N = sizeof surfaces / sizeof surfaces[0] };
+    tech_row rows[2][N];
+    stin_tier tiers[2];
+    tech_settings st;
+    char label[128];
+    int tier_n, t, i, rc, any = 0;
+    memset(&st, 0, sizeof st);
+    memset(rows, 0, sizeof rows);
+    st.b = b;
+    st.frames = o->surface_frames;
+    st.setups = o->surface_setups;
+    st.base.shadows = STIN_TECH_SHADOWS_OFF;
+    st.base.surface = STIN_TECH_SURFACE_PLAIN;
+    scene_label(o->surface_scene, label, sizeof label);
+    printf("\n## Surface techniques (gl2/gl4, shadows off): %s, %dx%d; per side the lowest of "
+           "%d set-ups' median of %d frames (ABBA-interleaved, glFinish per frame, %d warm-up "
+           "per row); the plain row is a second plain context against the first\n", label,
+           b->width, b->height, st.setups, st.frames, b->warmup > 1 ? b->warmup : 1);
+    if (!(tier_n = glsl_tiers(o, "surface techniques", tiers)))
+        return 0;
+    for (t = 0; t < tier_n; t++) {
+        const tech_row *worst = NULL;
+        for (i = 0; i < N; i++) {
+            rows[t][i].cfg.shadows = STIN_TECH_SHADOWS_OFF;
+            rows[t][i].cfg.surface = surfaces[i];
+        }
+        rc = tech_tier(&st, tiers[t], caps, o, "surface techniques", s, rows[t], N);
+        if (rc >= 0) {
+            if (rc)
+                return rc;
+            continue;
+        }
+        any = 1;
+        printf("\n### surface techniques, %s (%s)\n\n", stin_tier_name(tiers[t]),
+               tier_label(tiers[t]));
+        printf("| surface | passes | plain median ms | surface median ms | surface / plain |\n");
+        printf("|---|---:|---:|---:|---:|\n");
+        for (i = 0; i < N; i++) {
+            const tech_row *r = &rows[t][i];
+            if (r->skipped) {
+                printf("| %s | SKIP: %s | | | |\n", stin_technique_name(r->cfg.surface), r->why);
+                continue;
+            }
+            printf("| %s | %u | %.2f | %.2f | %.2f |\n", stin_technique_name(r->cfg.surface),
+                   r->passes, r->base_ms, r->on_ms, row_ratio(r));
+            if (!worst || row_ratio(r) > row_ratio(worst))
+                worst = r;
+        }
+        if (worst)
+            printf("\n%s: surface / plain at most %.2f (%s)\n", stin_tier_name(tiers[t]),
+                   row_ratio(worst), stin_technique_name(worst->cfg.surface));
+        fflush(stdout);
+    }
+    if (any)
+        ++*ran;
+    return 0;
+}
+
 static void print_machine(const raw_gl *gl)
 {
     char cpu[256];
@@ -580,7 +914,7 @@ int main(int argc, char **argv)
 {
     static const stin_tier all[] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
     options o;
-    scene scenes[MAX_SCENES], maps_scene;
+    scene scenes[MAX_SCENES], maps_scene, pcf_scene, surface_scene;
     stin_platform_desc pd;
     stin_platform *plat = NULL;
     raw_gl gl;
@@ -589,6 +923,7 @@ int main(int argc, char **argv)
     char err[1024];
     worst_ratio worst;
     int loaded = 0, rc = EXIT_FAILED, i, ran = 0, maps_loaded = 0, machine_printed = 0;
+    int pcf_loaded = 0, surface_loaded = 0;
 
     if (!parse_args(argc, argv, &o)) {
         usage(stderr);
@@ -612,6 +947,22 @@ int main(int argc, char **argv)
             goto done;
         }
         maps_loaded = 1;
+    }
+    if (o.pcf_section) {
+        if (!scene_load(o.pcf_scene, &pcf_scene, err, sizeof err)) {
+            fprintf(stderr, "stin-bench: %s\n", err);
+            rc = EXIT_BAD_INPUT;
+            goto done;
+        }
+        pcf_loaded = 1;
+    }
+    if (o.surface_section) {
+        if (!scene_load(o.surface_scene, &surface_scene, err, sizeof err)) {
+            fprintf(stderr, "stin-bench: %s\n", err);
+            rc = EXIT_BAD_INPUT;
+            goto done;
+        }
+        surface_loaded = 1;
     }
     /* The default (NULL profile) compatibility context runs all three tiers. */
     pd.width = o.width;
@@ -678,7 +1029,23 @@ int main(int argc, char **argv)
     if (rc == 0 && o.maps_section) {
         int maps_ran = 0;
         rc = run_maps(&b, &caps, &maps_scene, &o, &maps_ran);
-        if (rc == 0 && maps_ran && !machine_printed)
+        if (rc == 0 && maps_ran && !machine_printed) {
+            print_machine(&gl);
+            machine_printed = 1;
+        }
+    }
+    if (rc == 0 && o.pcf_section) {
+        int pcf_ran = 0;
+        rc = run_pcf(&b, &caps, &pcf_scene, &o, &pcf_ran);
+        if (rc == 0 && pcf_ran && !machine_printed) {
+            print_machine(&gl);
+            machine_printed = 1;
+        }
+    }
+    if (rc == 0 && o.surface_section) {
+        int surface_ran = 0;
+        rc = run_surface(&b, &caps, &surface_scene, &o, &surface_ran);
+        if (rc == 0 && surface_ran && !machine_printed)
             print_machine(&gl);
     }
 done:
@@ -688,5 +1055,9 @@ done:
         scene_free(&scenes[i]);
     if (maps_loaded)
         scene_free(&maps_scene);
+    if (pcf_loaded)
+        scene_free(&pcf_scene);
+    if (surface_loaded)
+        scene_free(&surface_scene);
     return rc;
 }

@@ -1,5 +1,6 @@
 /* GL2/GL4 raw loop: stin's lit shaders read from disk (shaders/gl2 or
- * shaders/gl4), per frame the view and light uniforms, per object the model
+ * shaders/gl4; lit.frag with the plain-surface and no-shadow chunks spliced
+ * in at its marker, as stin builds its unshadowed program), per frame the view and light uniforms, per object the model
  * and material uniforms and a draw; attributes (GL2) or the VAO (GL4) are
  * re-bound only when the mesh changes. */
 #include "raw.h"
@@ -34,41 +35,77 @@ static char *read_text(const char *path, char *err, size_t err_size)
     return text;
 }
 
-static GLuint compile(const raw_gl *gl, GLenum type, const char *path, char *err, size_t err_size)
+#define CHUNK_MARKER "// @chunks"
+
+/* Compiles `path`; with chunks (a NULL-terminated list of files), their text
+ * is spliced in at the file's "// @chunks" line, as stin composes its lit
+ * shaders (src/shader.c): the file up to the marker, each chunk, the rest. */
+static GLuint compile(const raw_gl *gl, GLenum type, const char *path, const char *const *chunks,
+                      char *err, size_t err_size)
 {
-    char *src = read_text(path, err, err_size), log[1024];
-    const GLchar *srcs[1];
-    GLuint sh;
+    enum { MAX_PARTS = 6 };
+    char *src = read_text(path, err, err_size), *texts[MAX_PARTS], log[1024];
+    const GLchar *parts[MAX_PARTS + 1];
+    GLint lengths[MAX_PARTS + 1];
+    const char *marker = NULL;
+    GLsizei count = 0;
+    GLuint sh = 0;
     GLint ok = 0;
+    int i, n = 0;
     if (!src)
         return 0;
-    srcs[0] = src;
+    if (chunks && chunks[0] && !(marker = strstr(src, CHUNK_MARKER))) {
+        snprintf(err, err_size, "%s has no '%s' line for its chunks", path, CHUNK_MARKER);
+        goto done;
+    }
+    parts[count] = src;
+    lengths[count++] = marker ? (GLint)(marker - src) : -1;
+    for (i = 0; marker && chunks[i]; i++) {
+        if (n == MAX_PARTS - 1 || !(texts[n] = read_text(chunks[i], err, err_size)))
+            goto done;
+        parts[count] = texts[n++];
+        lengths[count++] = -1;
+    }
+    if (marker) {
+        parts[count] = marker;
+        lengths[count++] = -1;
+    }
     sh = gl->CreateShader(type);
-    gl->ShaderSource(sh, 1, srcs, NULL);
+    gl->ShaderSource(sh, count, parts, lengths);
     gl->CompileShader(sh);
-    free(src);
     gl->GetShaderiv(sh, GL_COMPILE_STATUS, &ok);
     if (!ok) {
         log[0] = '\0';
         gl->GetShaderInfoLog(sh, (GLsizei)sizeof log, NULL, log);
         snprintf(err, err_size, "%s did not compile: %s", path, log);
         gl->DeleteShader(sh);
-        return 0;
+        sh = 0;
     }
+done:
+    while (n > 0)
+        free(texts[--n]);
+    free(src);
     return sh;
 }
 
 static GLuint link(const raw_gl *gl, const char *root, const char *sub, char *err,
                    size_t err_size)
 {
-    char vpath[1024], fpath[1024], log[1024];
+    char vpath[1024], fpath[1024], surface[1024], shadow[1024], log[1024];
+    const char *chunks[3];
     GLuint vs, fs, p;
     GLint ok = 0;
     snprintf(vpath, sizeof vpath, "%s/%s/lit.vert", root, sub);
     snprintf(fpath, sizeof fpath, "%s/%s/lit.frag", root, sub);
-    if (!(vs = compile(gl, GL_VERTEX_SHADER, vpath, err, err_size)))
+    /* stin's unshadowed plain-surface variant: these two chunks in lit.frag */
+    snprintf(surface, sizeof surface, "%s/%s/surface_plain.glsl", root, sub);
+    snprintf(shadow, sizeof shadow, "%s/%s/shadow_none.glsl", root, sub);
+    chunks[0] = surface;
+    chunks[1] = shadow;
+    chunks[2] = NULL;
+    if (!(vs = compile(gl, GL_VERTEX_SHADER, vpath, NULL, err, err_size)))
         return 0;
-    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, fpath, err, err_size))) {
+    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, fpath, chunks, err, err_size))) {
         gl->DeleteShader(vs);
         return 0;
     }
@@ -79,6 +116,7 @@ static GLuint link(const raw_gl *gl, const char *root, const char *sub, char *er
     gl->BindAttribLocation(p, 0, "a_position");
     gl->BindAttribLocation(p, 1, "a_normal");
     gl->BindAttribLocation(p, 2, "a_uv");
+    gl->BindAttribLocation(p, 3, "a_tangent"); /* no array: lit.vert's tangent is unused */
     gl->LinkProgram(p);
     gl->DeleteShader(vs);
     gl->DeleteShader(fs);

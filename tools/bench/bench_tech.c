@@ -1,0 +1,316 @@
+/* The technique sections of stin-bench (PCF shadow maps, surface techniques).
+ *
+ * On one GLSL tier. Per set-up one stin context forced to the baseline
+ * configuration (shadows off; or shadows off and the plain surface) is
+ * created on the one GL context and kept for the set-up; then per row a
+ * second one, forced to the row's configuration (shadow technique,
+ * desc.shadow_map_size, surface technique), each with its own copy of the
+ * scene's meshes and textures. The row's context draws a copy of the scene
+ * struct whose lights carry the row's pcf_kernel (the baseline draws the
+ * scene as it is); both go through scene_gpu_frame: warm-up, then whole
+ * frames (glFinish included) in ABBA order, row first. The bench checks that
+ * stin_query_choice reports the forced techniques, and takes the row's
+ * frame statistics after the warm-up (the map size actually rendered,
+ * passes). Per side and row the lowest set-up median is kept, as in
+ * bench_run.c, bench_shadow.c and bench_maps.c. */
+#include "bench_tech.h"
+#include "bench_time.h"
+#include "cli_log.h"
+#include "raw_gl.h"
+#include "scene_gpu.h"
+#include "stin_platform.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct side {
+    stin_context *ctx;
+    void *block;
+    scene_gpu gpu;
+    int made;
+} side;
+
+typedef struct setup {
+    const tech_settings *st;
+    const scene *s;     /* the scene as loaded: the baseline draws it */
+    scene sc;           /* a copy whose lights carry the row's pcf_kernel */
+    scene_light *lights;
+    side base;
+    cli_log log;
+} setup;
+
+static void side_destroy(side *sd)
+{
+    if (sd->made)
+        scene_gpu_destroy(&sd->gpu, sd->ctx);
+    if (sd->ctx)
+        stin_destroy(sd->ctx);
+    free(sd->block);
+    memset(sd, 0, sizeof *sd);
+}
+
+static void config_name(const tech_config *c, char *out, size_t size)
+{
+    snprintf(out, size, "shadows %s, map size %u, surface %s", stin_technique_name(c->shadows),
+             c->map_size, c->surface == STIN_TECH_NONE ? "auto" : stin_technique_name(c->surface));
+}
+
+/* 1 made; 0 failed (err); -1 the context cannot run the configuration (why). */
+static int side_create(setup *u, side *sd, const tech_config *c, const scene *s, char *why,
+                       size_t why_size, char *err, size_t err_size)
+{
+    const bench_settings *b = u->st->b;
+    stin_tier tier = u->st->tier;
+    stin_desc desc;
+    size_t bytes;
+    stin_result r;
+    stin_choice ch;
+    char name[160];
+    config_name(c, name, sizeof name);
+    memset(&desc, 0, sizeof desc);
+    desc.get_proc_address = stin_platform_get_proc_address;
+    desc.get_proc_user = b->plat;
+    desc.log = cli_log_fn;
+    desc.log_user = &u->log;
+    desc.tier = tier;
+    desc.techniques[STIN_FEATURE_SHADOWS] = c->shadows;
+    desc.techniques[STIN_FEATURE_SURFACE] = c->surface;
+    desc.shadow_map_size = c->map_size;
+    scene_gpu_size_desc(s, &desc);
+    bytes = stin_memory_size(&desc);
+    if (!bytes) {
+        snprintf(err, err_size, "stin_memory_size: bad desc (%s)", name);
+        return 0;
+    }
+    if (!(sd->block = malloc(bytes))) {
+        snprintf(err, err_size, "cannot allocate %zu bytes for stin", bytes);
+        return 0;
+    }
+    r = stin_create(&desc, sd->block, bytes, &sd->ctx);
+    if (r == STIN_ERROR_UNSUPPORTED) {
+        snprintf(why, why_size, "the context cannot run it (stin_create: %s)",
+                 stin_result_name(r));
+        side_destroy(sd);
+        return -1;
+    }
+    if (r != STIN_OK) {
+        snprintf(err, err_size, "stin_create (%s, %s): %s", stin_tier_name(tier), name,
+                 stin_result_name(r));
+        free(sd->block);
+        sd->block = NULL;
+        return 0;
+    }
+    ch = stin_query_choice(sd->ctx, STIN_FEATURE_SHADOWS);
+    if (ch.technique != c->shadows) {
+        snprintf(err, err_size, "%s: shadows are '%s', not the forced '%s' (%s)",
+                 stin_tier_name(tier), stin_technique_name(ch.technique),
+                 stin_technique_name(c->shadows), ch.reason);
+        return 0;
+    }
+    ch = stin_query_choice(sd->ctx, STIN_FEATURE_SURFACE);
+    if (c->surface != STIN_TECH_NONE && ch.technique != c->surface) {
+        snprintf(err, err_size, "%s: surface is '%s', not the forced '%s' (%s)",
+                 stin_tier_name(tier), stin_technique_name(ch.technique),
+                 stin_technique_name(c->surface), ch.reason);
+        return 0;
+    }
+    if (!scene_gpu_create(&sd->gpu, s, sd->ctx, err, err_size))
+        return 0;
+    sd->made = 1;
+    return 1;
+}
+
+/* A whole frame, glFinish included; negative on failure. */
+static double full_frame(const setup *u, const side *sd)
+{
+    const bench_settings *b = u->st->b;
+    double t0 = bench_now_ms();
+    stin_result r = scene_gpu_frame(&sd->gpu, sd->ctx, b->width, b->height, STIN_OUTPUT_BEAUTY,
+                                    stin_platform_framebuffer(b->plat));
+    b->gl->Finish();
+    return r == STIN_OK ? bench_now_ms() - t0 : -1.0;
+}
+
+/* ABBA over st->frames pairs (row, base, base, row, ...); per side the median. */
+static int abba(const setup *u, const side *on, double *on_ms, double *base_ms, char *err,
+                size_t err_size)
+{
+    int frames = u->st->frames, k, ok = 0;
+    double *ton = calloc((size_t)frames, sizeof *ton);
+    double *tbase = calloc((size_t)frames, sizeof *tbase);
+    if (!ton || !tbase) {
+        snprintf(err, err_size, "out of memory");
+        goto done;
+    }
+    for (k = 0; k < frames; k++) {
+        int j;
+        for (j = 0; j < 2; j++) {
+            int on_now = (k % 2 == 0) == (j == 0);
+            double t = full_frame(u, on_now ? on : &u->base);
+            if (t < 0.0) {
+                snprintf(err, err_size, "stin frame failed");
+                goto done;
+            }
+            (on_now ? ton : tbase)[k] = t;
+        }
+    }
+    if (u->st->b->verbose) {
+        fprintf(stderr, "stin-bench: full frame ms (row/baseline):");
+        for (k = 0; k < frames; k++)
+            fprintf(stderr, " %.2f/%.2f", ton[k], tbase[k]);
+        fprintf(stderr, "\n");
+    }
+    *on_ms = bench_median(ton, (size_t)frames);
+    *base_ms = bench_median(tbase, (size_t)frames);
+    ok = 1;
+done:
+    free(ton);
+    free(tbase);
+    return ok;
+}
+
+static void keep_min(double *best, double v, int first)
+{
+    if (first || v < *best)
+        *best = v;
+}
+
+static int is_map(stin_technique t)
+{
+    return t == STIN_TECH_SHADOWS_MAP_PCF || t == STIN_TECH_SHADOWS_MAP_DEPTH ||
+           t == STIN_TECH_SHADOWS_MAP_COMBINE;
+}
+
+static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_size)
+{
+    const bench_settings *b = u->st->b;
+    side on;
+    stin_frame_stats fs;
+    double on_ms, base_ms;
+    unsigned errors_before = u->log.errors;
+    int i, k, ok = 0, made;
+    memset(&on, 0, sizeof on);
+    for (i = 0; i < u->sc.light_count; i++) {
+        u->lights[i] = u->s->lights[i];
+        if (row->cfg.pcf_kernel)
+            u->lights[i].pcf_kernel = row->cfg.pcf_kernel;
+    }
+    made = side_create(u, &on, &row->cfg, &u->sc, row->why, sizeof row->why, err, err_size);
+    if (made < 0) {
+        /* the forced technique's error line is the expected answer here */
+        u->log.errors = errors_before;
+        row->skipped = 1;
+        return 1;
+    }
+    if (!made)
+        goto done;
+    for (k = 0; k < (b->warmup > 1 ? b->warmup : 1); k++)
+        if (full_frame(u, &on) < 0 || full_frame(u, &u->base) < 0) {
+            snprintf(err, err_size, "stin frame failed");
+            goto done;
+        }
+    /* the last warm-up frame's statistics: the same every frame */
+    fs = stin_query_frame_stats(on.ctx);
+    if (is_map(row->cfg.shadows) && fs.shadow_map_size == 0) {
+        snprintf(err, err_size, "the %s frame rendered no shadow map",
+                 stin_technique_name(row->cfg.shadows));
+        goto done;
+    }
+    if (!abba(u, &on, &on_ms, &base_ms, err, err_size))
+        goto done;
+    if (b->verbose)
+        fprintf(stderr, "stin-bench: %s shadows %s %u (rendered %u) kernel %d surface %s: "
+                "medians row %.2f baseline %.2f ms\n", stin_tier_name(u->st->tier),
+                stin_technique_name(row->cfg.shadows), row->cfg.map_size, fs.shadow_map_size,
+                row->cfg.pcf_kernel, stin_technique_name(row->cfg.surface), on_ms, base_ms);
+    row->rendered = fs.shadow_map_size;
+    row->passes = fs.passes;
+    keep_min(&row->on_ms, on_ms, first);
+    keep_min(&row->base_ms, base_ms, first);
+    ok = 1;
+done:
+    side_destroy(&on);
+    return ok;
+}
+
+static int one_setup(const tech_settings *st, const scene *s, int first, tech_row *rows,
+                     int row_n, char *err, size_t err_size)
+{
+    const bench_settings *b = st->b;
+    setup *u = calloc(1, sizeof *u);
+    char why[160];
+    int i, ok = 0, made;
+    GLenum e;
+    if (!u) {
+        snprintf(err, err_size, "out of memory");
+        return 0;
+    }
+    u->st = st;
+    u->s = s;
+    u->sc = *s;
+    u->lights = calloc((size_t)s->light_count + 1, sizeof *u->lights);
+    if (!u->lights) {
+        snprintf(err, err_size, "out of memory");
+        goto done;
+    }
+    u->sc.lights = u->lights;
+    u->log.program = "stin-bench";
+    u->log.verbose = b->verbose;
+    made = side_create(u, &u->base, &st->base, s, why, sizeof why, err, err_size);
+    if (made < 0)
+        snprintf(err, err_size, "%s, baseline: %s", stin_tier_name(st->tier), why);
+    if (made <= 0)
+        goto done;
+    for (i = 0; i < row_n; i++) {
+        if (rows[i].skipped)
+            continue; /* known from the first set-up */
+        if (!one_row(u, &rows[i], first, err, err_size))
+            goto done;
+        if (!first && rows[i].skipped) {
+            snprintf(err, err_size, "%s / %s ran in one set-up and not in another",
+                     stin_technique_name(rows[i].cfg.shadows),
+                     stin_technique_name(rows[i].cfg.surface));
+            goto done;
+        }
+    }
+    if ((e = b->gl->GetError()) != 0) {
+        snprintf(err, err_size, "GL error 0x%x during the frames", e);
+        goto done;
+    }
+    if (u->log.errors) {
+        snprintf(err, err_size, "stin logged %u error(s)", u->log.errors);
+        goto done;
+    }
+    ok = 1;
+done:
+    side_destroy(&u->base);
+    free(u->lights);
+    free(u);
+    return ok;
+}
+
+int bench_tech_run(const tech_settings *st, const scene *s, tech_row *rows, int row_n,
+                   char *err, size_t err_size)
+{
+    int i, j;
+    for (i = 0; i < row_n; i++) {
+        rows[i].rendered = rows[i].passes = 0;
+        rows[i].base_ms = rows[i].on_ms = 0.0;
+        rows[i].skipped = 0;
+        rows[i].why[0] = 0;
+        if (rows[i].cfg.pcf_kernel != 0 && rows[i].cfg.pcf_kernel != 1 &&
+            rows[i].cfg.pcf_kernel != 3 && rows[i].cfg.pcf_kernel != 5) {
+            snprintf(err, err_size, "PCF kernels are 1, 3 or 5");
+            return 0;
+        }
+    }
+    if (row_n < 1 || row_n > TECH_MAX_ROWS) {
+        snprintf(err, err_size, "1..%d rows", TECH_MAX_ROWS);
+        return 0;
+    }
+    for (j = 0; j < st->setups; j++)
+        if (!one_setup(st, s, j == 0, rows, row_n, err, err_size))
+            return 0;
+    return 1;
+}

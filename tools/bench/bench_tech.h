@@ -1,0 +1,49 @@
+/* stin-bench's technique sections on the GLSL tiers: rows of one forced
+ * technique configuration each (a shadow technique with a map size and a PCF
+ * kernel, or a surface technique), each timed as a ratio to a baseline
+ * configuration of the same tier and scene (shadows off, or the plain
+ * surface). Used by the "PCF shadow maps" and "Surface techniques" sections. */
+#ifndef STIN_BENCH_TECH_H
+#define STIN_BENCH_TECH_H
+
+#include "bench_run.h"
+#include "scene.h"
+#include "stin/stin.h"
+
+#include <stdint.h>
+
+#define TECH_MAX_ROWS 40
+
+/* What one stin context is forced to. */
+typedef struct tech_config {
+    stin_technique shadows;  /* desc.techniques[STIN_FEATURE_SHADOWS] (never NONE here) */
+    stin_technique surface;  /* desc.techniques[STIN_FEATURE_SURFACE]; NONE = the tier's */
+    uint32_t map_size;       /* desc.shadow_map_size; 0 = stin's default */
+    int pcf_kernel;          /* every scene light's pcf_kernel; 0 = as the scene has it */
+} tech_config;
+
+typedef struct tech_settings {
+    const bench_settings *b; /* plat, gl, size, verbose; b->warmup is used too */
+    stin_tier tier;
+    int frames;              /* timed frames per side, set-up and row */
+    int setups;              /* fresh baseline context per set-up, fresh row context per row */
+    tech_config base;        /* the baseline every row is timed against */
+} tech_settings;
+
+/* One row: its configuration (set by the caller) and what was measured. */
+typedef struct tech_row {
+    tech_config cfg;
+    uint32_t rendered;       /* stin_frame_stats.shadow_map_size of the row's frame */
+    uint32_t passes;         /* stin_frame_stats.passes of the row's frame */
+    double base_ms, on_ms;   /* per side the lowest set-up median (glFinish included) */
+    int skipped;             /* 1: the context cannot run it; why says so */
+    char why[160];
+} tech_row;
+
+/* Runs every row (rows[i].cfg set by the caller) on st->tier: per set-up one
+ * baseline context kept for the set-up, per row a fresh context forced to the
+ * row's configuration, ABBA frames. Returns 1, or 0 with a message in err. */
+int bench_tech_run(const tech_settings *st, const scene *s, tech_row *rows, int row_n,
+                   char *err, size_t err_size);
+
+#endif
