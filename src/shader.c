@@ -20,6 +20,22 @@ static const char *find_marker(const char *src)
     return NULL;
 }
 
+/* A chunk of the gl4 directory, or the gl2 one it shares (GLSL 1.10 names,
+ * mapped by a #define in the gl4 main files) when gl4 has none of its own. */
+static const char *shared_chunk(const char *name)
+{
+    const char *src = stin__shader_source(name);
+    char gl2[64];
+    size_t i;
+    if (src || name[0] != 'g' || name[1] != 'l' || name[2] != '4')
+        return src;
+    for (i = 0; name[i] && i + 1 < sizeof gl2; i++)
+        gl2[i] = name[i];
+    gl2[i] = '\0';
+    gl2[2] = '2';
+    return stin__shader_source(gl2);
+}
+
 /* The main file's text up to its "// @chunks" line, then each chunk, then
  * the rest: one shader from several embedded files, without copying (GL
  * takes the pieces with their lengths). */
@@ -46,7 +62,7 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
     parts[count] = src;
     lengths[count++] = marker ? (GLint)(marker - src) : -1;
     for (i = 0; marker && chunks[i] && i < MAX_CHUNKS; i++) {
-        const char *c = stin__shader_source(chunks[i]);
+        const char *c = shared_chunk(chunks[i]);
         if (!c) {
             stin__formatf(msg, size, "shader chunk %s is not embedded", chunks[i]);
             return 0;

@@ -8,6 +8,10 @@ uniform vec4 u_lights[32]; // light 0: the light whose visibility this shows
 in vec3 v_world;
 in vec3 v_normal;
 
+// The chunks are shared with shaders/gl2 and use GLSL 1.10's names: map them.
+#define texture2D texture
+#define shadow2D(s, c) vec4(texture(s, c))
+
 // @chunks
 // float shadow_visibility(int i): the shadow technique's test of light i
 

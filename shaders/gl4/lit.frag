@@ -21,6 +21,10 @@ in vec4 v_tangent; // world tangent, w = handedness
 // Length of the filtered normal-map normal (Toksvig); surface_normal sets it.
 float s_normal_length = 1.0;
 
+// The chunks are shared with shaders/gl2 and use GLSL 1.10's names: map them.
+#define texture2D texture
+#define shadow2D(s, c) vec4(texture(s, c))
+
 // @chunks
 // The chunks spliced in here define (see src/path_glsl.c and src/surface_glsl.c):
 //   vec3 surface_normal(inout vec2 uv, vec3 v)  the unit shading normal; may move uv (parallax)
