@@ -13,6 +13,7 @@
 #include "aov.h"
 #include "capture.h"
 #include "image_test.h"
+#include "light_reach.h"
 #include "reference.h"
 
 #include <math.h>
@@ -28,26 +29,6 @@ typedef struct map_case {
     const ref_hit *hits;
 } map_case;
 
-/* Light 0 can reach the visible side of this surface point. */
-static int reachable(const map_case *c, const ref_hit *h)
-{
-    const scene_light *l = &c->s->lights[0];
-    const float *eye = c->s->camera.eye;
-    double to_eye = 0, to_light = 0, len = 0, along = 0;
-    int k;
-    for (k = 0; k < 3; k++) {
-        double L = l->type == SCENE_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k] - h->P[k];
-        to_eye += h->Ng[k] * (eye[k] - h->P[k]);
-        to_light += h->Ng[k] * L;
-        len += L * L;
-        along += -L * l->direction[k];
-    }
-    if ((to_eye >= 0) != (to_light > 0))
-        return 0;
-    if (l->type == SCENE_LIGHT_SPOT && along / sqrt(len) < cos(l->spot_cutoff_deg * 3.14159265358979323846 / 180.0))
-        return 0;
-    return 1;
-}
 
 static double mismatch(const map_case *c, const capture *cap, long *compared_out)
 {
@@ -60,7 +41,7 @@ static double mismatch(const map_case *c, const capture *cap, long *compared_out
             const float *g = cap->img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
             double d2 = 0;
             int k;
-            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !reachable(c, hit))
+            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit))
                 continue;
             for (k = 0; k < 3; k++)
                 d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) *

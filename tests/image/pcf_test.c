@@ -14,6 +14,7 @@
 #include "aov.h"
 #include "capture.h"
 #include "image_test.h"
+#include "light_reach.h"
 #include "reference.h"
 
 #include <math.h>
@@ -29,26 +30,6 @@ typedef struct pcf_case {
     const ref_hit *hits;
 } pcf_case;
 
-static int reachable(const pcf_case *c, const ref_hit *h)
-{
-    const scene_light *l = &c->s->lights[0];
-    const float *eye = c->s->camera.eye;
-    double to_eye = 0, to_light = 0, len = 0, along = 0;
-    int k;
-    for (k = 0; k < 3; k++) {
-        double L = l->type == SCENE_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k] - h->P[k];
-        to_eye += h->Ng[k] * (eye[k] - h->P[k]);
-        to_light += h->Ng[k] * L;
-        len += L * L;
-        along += -L * l->direction[k];
-    }
-    if ((to_eye >= 0) != (to_light > 0))
-        return 0;
-    if (l->type == SCENE_LIGHT_SPOT &&
-        along / sqrt(len) < cos(l->spot_cutoff_deg * 3.14159265358979323846 / 180.0))
-        return 0;
-    return 1;
-}
 
 static int in_band(const pcf_case *c, int x, int y, int band)
 {
@@ -79,7 +60,7 @@ static double mismatch(const pcf_case *c, const capture *cap, int band, long *co
             const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
             const float *g = cap->img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
             double d2 = 0;
-            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !reachable(c, hit) || in_band(c, x, y, band))
+            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit) || in_band(c, x, y, band))
                 continue;
             for (k = 0; k < 3; k++)
                 d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) *
