@@ -112,48 +112,26 @@ static double full_frame(const setup *u, const side *sd)
     return r == STIN_OK ? bench_now_ms() - t0 : -1.0;
 }
 
-/* ABBA over st->frames pairs (shadowed, off, off, shadowed, ...); per side the
- * median frame time. */
+/* The pair bench_abba alternates: side 0 the row's context, side 1 the baseline. */
+typedef struct abba_pair {
+    const setup *u;
+    const side *on;
+} abba_pair;
+
+static double pair_frame(void *user, int which)
+{
+    const abba_pair *p = (const abba_pair *)user;
+    return full_frame(p->u, which == 0 ? p->on : &p->u->off);
+}
+
 static int abba(const setup *u, const side *on, double *on_ms, double *off_ms, char *err,
                 size_t err_size)
 {
-    int frames = u->st->frames, k, ok = 0;
-    double *ton = calloc((size_t)frames, sizeof *ton), *toff = calloc((size_t)frames, sizeof *toff);
-    if (!ton || !toff) {
-        snprintf(err, err_size, "out of memory");
-        goto done;
-    }
-    for (k = 0; k < frames; k++) {
-        int j;
-        for (j = 0; j < 2; j++) {
-            int on_now = (k % 2 == 0) == (j == 0);
-            double t = full_frame(u, on_now ? on : &u->off);
-            if (t < 0.0) {
-                snprintf(err, err_size, "stin frame failed");
-                goto done;
-            }
-            (on_now ? ton : toff)[k] = t;
-        }
-    }
-    if (u->st->b->verbose) {
-        fprintf(stderr, "stin-bench: full frame ms (shadowed/off):");
-        for (k = 0; k < frames; k++)
-            fprintf(stderr, " %.2f/%.2f", ton[k], toff[k]);
-        fprintf(stderr, "\n");
-    }
-    *on_ms = bench_median(ton, (size_t)frames);
-    *off_ms = bench_median(toff, (size_t)frames);
-    ok = 1;
-done:
-    free(ton);
-    free(toff);
-    return ok;
-}
-
-static void keep_min(double *best, double v, int first)
-{
-    if (first || v < *best)
-        *best = v;
+    abba_pair p;
+    p.u = u;
+    p.on = on;
+    return bench_abba(u->st->frames, pair_frame, &p, "full frame ms (shadowed/off)", u->st->b->verbose,
+                      on_ms, off_ms, err, err_size);
 }
 
 /* The rows in order: map-depth per size, map-combine per size, volume. */
@@ -214,8 +192,8 @@ static int one_row(setup *u, maps_row *row, int first, char *err, size_t err_siz
     row->rendered = fs.shadow_map_size;
     row->passes = fs.passes;
     row->volume_triangles = fs.shadow_volume_triangles;
-    keep_min(&row->on_ms, on_ms, first);
-    keep_min(&row->off_ms, off_ms, first);
+    bench_keep_min(&row->on_ms, on_ms, first);
+    bench_keep_min(&row->off_ms, off_ms, first);
     ok = 1;
 done:
     side_destroy(&on);

@@ -311,11 +311,6 @@ done:
     return ok;
 }
 
-static void keep_min(double *best, double v, int first)
-{
-    if (first || v < *best)
-        *best = v;
-}
 
 static int one_setup(const shadow_settings *st, stin_tier tier, const scene *s, int first,
                      shadow_row *rows, char *err, size_t err_size)
@@ -375,12 +370,12 @@ static int one_setup(const shadow_settings *st, stin_tier tier, const scene *s, 
         row->passes = fs.passes;
         row->zpass_casters = fs.zpass_casters;
         row->zfail_casters = fs.zfail_casters;
-        keep_min(&row->vol_ms, full.vol_ms, first);
-        keep_min(&row->off_ms, full.off_ms, first);
-        keep_min(&row->vol_end_ms, small.vol_ms, first);
-        keep_min(&row->off_end_ms, small.off_ms, first);
-        keep_min(&row->vol_cpu_ms, small.vol_cpu_ms, first);
-        keep_min(&row->off_cpu_ms, small.off_cpu_ms, first);
+        bench_keep_min(&row->vol_ms, full.vol_ms, first);
+        bench_keep_min(&row->off_ms, full.off_ms, first);
+        bench_keep_min(&row->vol_end_ms, small.vol_ms, first);
+        bench_keep_min(&row->off_end_ms, small.off_ms, first);
+        bench_keep_min(&row->vol_cpu_ms, small.vol_cpu_ms, first);
+        bench_keep_min(&row->off_cpu_ms, small.off_cpu_ms, first);
     }
     if ((e = b->gl->GetError()) != 0) {
         snprintf(err, err_size, "GL error 0x%x during the shadow frames", e);

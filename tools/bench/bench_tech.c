@@ -132,48 +132,26 @@ static double full_frame(const setup *u, const side *sd)
     return r == STIN_OK ? bench_now_ms() - t0 : -1.0;
 }
 
-/* ABBA over st->frames pairs (row, base, base, row, ...); per side the median. */
+/* The pair bench_abba alternates: side 0 the row's context, side 1 the baseline. */
+typedef struct abba_pair {
+    const setup *u;
+    const side *on;
+} abba_pair;
+
+static double pair_frame(void *user, int which)
+{
+    const abba_pair *p = (const abba_pair *)user;
+    return full_frame(p->u, which == 0 ? p->on : &p->u->base);
+}
+
 static int abba(const setup *u, const side *on, double *on_ms, double *base_ms, char *err,
                 size_t err_size)
 {
-    int frames = u->st->frames, k, ok = 0;
-    double *ton = calloc((size_t)frames, sizeof *ton);
-    double *tbase = calloc((size_t)frames, sizeof *tbase);
-    if (!ton || !tbase) {
-        snprintf(err, err_size, "out of memory");
-        goto done;
-    }
-    for (k = 0; k < frames; k++) {
-        int j;
-        for (j = 0; j < 2; j++) {
-            int on_now = (k % 2 == 0) == (j == 0);
-            double t = full_frame(u, on_now ? on : &u->base);
-            if (t < 0.0) {
-                snprintf(err, err_size, "stin frame failed");
-                goto done;
-            }
-            (on_now ? ton : tbase)[k] = t;
-        }
-    }
-    if (u->st->b->verbose) {
-        fprintf(stderr, "stin-bench: full frame ms (row/baseline):");
-        for (k = 0; k < frames; k++)
-            fprintf(stderr, " %.2f/%.2f", ton[k], tbase[k]);
-        fprintf(stderr, "\n");
-    }
-    *on_ms = bench_median(ton, (size_t)frames);
-    *base_ms = bench_median(tbase, (size_t)frames);
-    ok = 1;
-done:
-    free(ton);
-    free(tbase);
-    return ok;
-}
-
-static void keep_min(double *best, double v, int first)
-{
-    if (first || v < *best)
-        *best = v;
+    abba_pair p;
+    p.u = u;
+    p.on = on;
+    return bench_abba(u->st->frames, pair_frame, &p, "full frame ms (row/baseline)", u->st->b->verbose,
+                      on_ms, base_ms, err, err_size);
 }
 
 static int is_map(stin_technique t)
@@ -226,8 +204,8 @@ static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_siz
                 row->cfg.pcf_kernel, stin_technique_name(row->cfg.surface), on_ms, base_ms);
     row->rendered = fs.shadow_map_size;
     row->passes = fs.passes;
-    keep_min(&row->on_ms, on_ms, first);
-    keep_min(&row->base_ms, base_ms, first);
+    bench_keep_min(&row->on_ms, on_ms, first);
+    bench_keep_min(&row->base_ms, base_ms, first);
     ok = 1;
 done:
     side_destroy(&on);
