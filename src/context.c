@@ -35,6 +35,18 @@ static uint32_t mesh_vertex_limit(const stin_desc *d)
     return v < d->max_vertices ? (uint32_t)v : d->max_vertices;
 }
 
+/* Vertices of one chunk of shadow-volume triangles (16 bytes each). */
+#define VOLUME_CHUNK_VERTICES (3u * 8192u)
+
+/* The per-frame scratch: volumes need a facing byte per triangle and a
+ * vertex chunk, DOT3 six floats per vertex, of the biggest mesh. */
+static size_t frame_scratch_bytes(const stin_desc *d)
+{
+    size_t volumes = stin__align16(d->max_mesh_triangles) + 16u * VOLUME_CHUNK_VERTICES;
+    size_t dot3 = (size_t)mesh_vertex_limit(d) * 6u * sizeof(float);
+    return volumes > dot3 ? volumes : dot3;
+}
+
 /* One layout for sizing (ctx NULL) and for carving. */
 static void *take(stin__arena *a, size_t bytes, int *ok)
 {
@@ -59,7 +71,8 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     uint32_t mv = mesh_vertex_limit(d);
     size_t scratch = stin__adjacency_scratch_bytes(mv, d->max_mesh_triangles);
     size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
-    void *p[12];
+    size_t frame_scratch = frame_scratch_bytes(d);
+    void *p[13];
     if (tangent_scratch > scratch)
         scratch = tangent_scratch;
     p[0] = take(a, sizeof(stin_context), &ok);
@@ -74,6 +87,7 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     p[9] = take(a, d->max_texture_bytes, &ok);
     p[10] = take(a, sizeof(stin__draw) * d->max_draws + sizeof(uint32_t) * d->max_draws, &ok);
     p[11] = take(a, sizeof(stin_light_desc) * d->max_lights, &ok);
+    p[12] = take(a, frame_scratch, &ok);
     if (!ok)
         return 0;
     if (ctx) {
@@ -92,6 +106,8 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
         ctx->draw_order = (uint32_t *)(void *)((unsigned char *)p[10] +
                                                sizeof(stin__draw) * d->max_draws);
         ctx->lights = (stin_light_desc *)p[11];
+        ctx->frame_scratch = (unsigned char *)p[12];
+        ctx->frame_scratch_bytes = frame_scratch;
     }
     return stin__align16(a->used) + 16u; /* slack for aligning the caller's block */
 }
@@ -120,13 +136,15 @@ static void log_early(const stin_desc *d, stin_log_level level, stin_log_item it
     va_end(ap);
 }
 
-/* The lighting path; a shader failure walks one tier down and says so. */
+/* The lighting path; a shader failure walks one tier down and says so, and
+ * the features that ran on the old lighting choose again. */
 static stin_result init_lighting(stin_context *ctx)
 {
     stin_choice *c = &ctx->sel.choice[STIN_FEATURE_LIGHTING];
-    char msg[160];
+    char msg[160], why[200];
     for (;;) {
         stin_technique next;
+        stin_result r;
         if (c->technique == STIN_TECH_LIGHTING_FIXED)
             return stin__fixed_init(ctx);
         if (stin__glsl_init(ctx, c->technique == STIN_TECH_LIGHTING_GLSL150 ? STIN_TIER_GL4
@@ -143,31 +161,17 @@ static stin_result init_lighting(stin_context *ctx)
                       stin_technique_name(c->technique), msg);
             return STIN_ERROR_GL;
         }
-        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                  "lighting: %s failed (%s); falling back to %s",
-                  stin_technique_name(c->technique), msg, stin_technique_name(next));
-        stin__formatf(c->reason, sizeof c->reason, "fallback: %s failed to build (%s)",
+        stin__formatf(why, sizeof why, "%s failed to build (%s)",
                       stin_technique_name(c->technique), msg);
-        c->technique = next;
-        {
-            /* chunks of the GLSL lit programs (surface, map-pcf) went with the
-             * GLSL lighting: those features choose again */
-            static const stin_feature tied[2] = {STIN_FEATURE_SURFACE, STIN_FEATURE_SHADOWS};
-            int k;
-            for (k = 0; k < 2; k++) {
-                stin_choice *sc = &ctx->sel.choice[tied[k]];
-                stin_result r;
-                if (stin__technique_runs_with(sc->technique, next))
-                    continue;
-                r = stin__choose(&ctx->caps, ctx->sel.tier, tied[k], ctx->desc.techniques[tied[k]],
-                                 next, sc, msg, sizeof msg);
-                if (r != STIN_OK) {
-                    stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
-                              "stin_create: %s", msg);
-                    return r;
-                }
-            }
+        stin__demote(ctx, STIN_FEATURE_LIGHTING, next, why);
+        r = stin__select_after_lighting(&ctx->caps, ctx->desc.techniques, &ctx->sel, msg,
+                                        sizeof msg);
+        if (r != STIN_OK) {
+            stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED, "stin_create: %s",
+                      msg);
+            return r;
         }
+        ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     }
 }
 
@@ -213,11 +217,21 @@ static void log_selection(stin_context *ctx)
               ctx->desc.tier == STIN_TIER_AUTO ? "best available" : "forced");
     for (f = 0; f < STIN_FEATURE_COUNT; f++) {
         const stin_choice *c = &ctx->sel.choice[f];
-        int fell = c->reason[0] == 'f' && c->reason[1] == 'a';
-        stin__log(ctx, STIN_LOG_LEVEL_INFO, fell ? STIN_LOG_FALLBACK : STIN_LOG_TECHNIQUE_SELECTED,
+        stin__log(ctx, STIN_LOG_LEVEL_INFO,
+                  c->fell_back ? STIN_LOG_FALLBACK : STIN_LOG_TECHNIQUE_SELECTED,
                   "%s: %s (%s)", stin_feature_name((stin_feature)f),
                   stin_technique_name(c->technique), c->reason);
     }
+}
+
+/* Every GL object the context made at set-up (each release is a no-op for
+ * what was never made). */
+static void release_gl(stin_context *ctx)
+{
+    stin__glsl_release(ctx);
+    stin__dot3_release(ctx);
+    if (ctx->shadow && ctx->shadow->release)
+        ctx->shadow->release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
@@ -288,14 +302,14 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
                   "stin_create: %s", msg);
         return r;
     }
+    ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     r = init_lighting(ctx);
-    if (r != STIN_OK)
+    if (r == STIN_OK && ctx->shadow->init)
+        r = ctx->shadow->init(ctx);
+    if (r != STIN_OK) {
+        release_gl(ctx); /* nothing half-made stays behind */
         return r;
-    r = stin__maps_init(ctx);
-    if (r == STIN_OK)
-        r = stin__pcf_init(ctx);
-    if (r != STIN_OK)
-        return r;
+    }
     ctx->lights_per_pass = STIN__LIGHTS_PER_PASS;
     if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED &&
         ctx->caps.max_lights < ctx->lights_per_pass)
@@ -312,9 +326,7 @@ void stin_destroy(stin_context *ctx)
         return;
     stin__mesh_release_all(ctx);
     stin__texture_release_all(ctx);
-    stin__glsl_release(ctx);
-    stin__dot3_release(ctx);
-    stin__maps_release(ctx);
+    release_gl(ctx);
 }
 
 stin_desc stin_query_desc(const stin_context *ctx)

@@ -1,6 +1,7 @@
 /* The frame: begin -> lights -> draws -> end. Lists live in the arena; end
  * orders the draws (opaque in submission order, then blended ones back to
- * front) and runs the pass schedule of the chosen lighting path. */
+ * front) and runs the frame plan: one list of stages, the same for every
+ * tier and technique (run_plan below). */
 #include "internal.h"
 
 static int finite_n(const float *v, int n)
@@ -240,15 +241,37 @@ static void order_draws(stin_context *ctx)
         }
 }
 
-static void begin_target(stin_context *ctx)
+/* ---- stages ---------------------------------------------------------------- */
+
+/* The projection every pass draws with; a shadow technique may move its far
+ * plane to infinity (volumes). */
+static void stage_prepare(stin_context *ctx)
+{
+    stin__memcopy(ctx->projection, ctx->frame.projection, sizeof ctx->projection);
+    ctx->volume.depth_clamp = ctx->volume.infinite = 0;
+    stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);
+    stin__pass_forget(ctx); /* the caller's state is unknown */
+    ctx->units_used = 0;
+    if (ctx->shadow->prepare)
+        ctx->shadow->prepare(ctx);
+}
+
+/* Light pre-passes (shadow maps): before the target is bound and cleared,
+ * because without FBOs they draw in the frame's own buffer. */
+static void stage_light_prepasses(stin_context *ctx)
+{
+    if (ctx->shadow->light_prepass && ctx->light_count)
+        ctx->shadow->light_prepass(ctx);
+}
+
+static void stage_target(stin_context *ctx)
 {
     const stin_frame_desc *f = &ctx->frame;
+    stin__pass_state ps = stin__pass_defaults;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO))
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, f->framebuffer);
     GL(ctx, Viewport)(f->viewport[0], f->viewport[1], f->viewport[2], f->viewport[3]);
-    GL(ctx, DepthMask)(GL_TRUE);
-    GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    GL(ctx, StencilMask)(0xffffffffu);
+    stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the buffer */
     if (!f->no_clear) {
         GL(ctx, ClearColor)(f->clear_color[0], f->clear_color[1], f->clear_color[2],
                             f->clear_color[3]);
@@ -259,153 +282,60 @@ static void begin_target(stin_context *ctx)
     }
 }
 
-/* Samples of a light: several for an area light with soft shadows. */
-static uint32_t light_samples(const stin_context *ctx, const stin_light_desc *l)
+/* How a light is shaded once its visibility is set up: the lit pass, or for
+ * the visibility output the same pass with a flat white material at the
+ * sample's weight (the shadow test is the technique's either way). */
+static void shade_lit(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                      float weight)
 {
-    return l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL ? ctx->desc.soft_shadow_samples : 1u;
+    (void)weight;
+    path->lit(ctx, l);
 }
 
-/* One light sample as a homogeneous world position (w = 0: toward the light). */
-static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_light_desc *out,
-                         float world[4])
+static void shade_flat(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                       float weight)
 {
-    *out = *l;
-    if (l->type == STIN_LIGHT_DIRECTIONAL) {
-        world[0] = -l->direction[0];
-        world[1] = -l->direction[1];
-        world[2] = -l->direction[2];
-        world[3] = 0.0f;
-        return;
-    }
-    stin_light_sample(l, i, n, out->position);
-    out->intensity = l->intensity / (float)n;
-    world[0] = out->position[0];
-    world[1] = out->position[1];
-    world[2] = out->position[2];
-    world[3] = 1.0f;
+    float white[4];
+    white[0] = white[1] = white[2] = weight;
+    white[3] = 1.0f;
+    path->flat(ctx, STIN__ALL, white, l);
 }
 
-/* Ambient first, then per light (sample): its stencil volumes, then the
- * opaque draws lit by it where the stencil count is zero; blended draws
- * last, unshadowed. The visibility output runs the same schedule for light 0
- * and adds white where it is visible. */
-static void run_volumes(stin_context *ctx, const stin__path *path, int visibility)
-{
-    uint32_t li, s, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
-    path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
-    for (li = 0; li < lights; li++) {
-        const stin_light_desc *l = &ctx->lights[li];
-        uint32_t n = light_samples(ctx, l);
-        int rect[4], scissored = stin__light_scissor(ctx, l, rect);
-        if (scissored && (rect[2] <= 0 || rect[3] <= 0))
-            continue; /* the light touches nothing on screen */
-        for (s = 0; s < n; s++) {
-            stin_light_desc one;
-            float world[4];
-            sample_light(l, s, n, &one, world);
-            stin__volume_light(ctx, path, world, scissored ? rect : NULL);
-            if (visibility) {
-                float w = 1.0f / (float)n, white[4];
-                white[0] = white[1] = white[2] = w;
-                white[3] = 1.0f;
-                path->flat(ctx, STIN__ALL, white);
-            } else {
-                path->lit(ctx, &one);
-            }
-        }
-        GL_DISABLE(ctx, GL_STENCIL_TEST);
-        GL_DISABLE(ctx, GL_SCISSOR_TEST);
-    }
-    if (visibility && !lights)
-        path->flat(ctx, STIN__ALL, (const float[4]){1, 1, 1, 1});
-    if (!visibility)
-        path->batches(ctx, STIN__BLENDED);
-}
-
-/* Shadow maps: ambient, then per light its map's test on the lit pass (point
- * lights: stencil volumes where there is a stencil buffer); blended last. */
-static void run_maps(stin_context *ctx, const stin__path *path, int visibility)
+/* Per light: its visibility (stencil count, map test) and its lighting. The
+ * visibility output shows light 0 only. */
+static void stage_lights(stin_context *ctx, const stin__path *path, int visibility)
 {
     uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
-    const float white[4] = {1, 1, 1, 1};
-    int stencil = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) != 0;
-    path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
-    for (li = 0; li < lights; li++) {
-        const stin_light_desc *l = &ctx->lights[li];
-        int mapped, face;
-        if (stin__pcf_active(ctx)) { /* the lit program does the test */
-            ctx->pcf_light = li;
-            ctx->pcf_kind = l->type == STIN_LIGHT_POINT ? (stin__pcf_point(ctx, li) ? 2 : 0)
-                                                         : (ctx->maps.valid[li] ? 1 : 0);
-            if (visibility)
-                path->flat(ctx, STIN__ALL, white);
-            else
-                path->lit(ctx, l);
-            ctx->pcf_kind = 0;
-            continue;
-        }
-        mapped = stin__maps_bind(ctx, li);
-        if (!mapped && l->type == STIN_LIGHT_POINT && ctx->maps.faces) {
-            for (face = 0; face < 6; face++) /* six maps, each lighting its own pyramid */
-                if (stin__maps_face(ctx, li, face)) {
-                    if (visibility)
-                        path->flat(ctx, STIN__ALL, white);
-                    else
-                        path->lit(ctx, l);
-                    stin__maps_face_end(ctx);
-                }
-            continue;
-        }
-        if (!mapped && l->type == STIN_LIGHT_POINT && stencil) {
-            float world[4] = {l->position[0], l->position[1], l->position[2], 1.0f};
-            stin__volume_light(ctx, path, world, NULL);
-        }
-        if (visibility)
-            path->flat(ctx, STIN__ALL, white);
-        else
-            path->lit(ctx, l);
-        if (mapped)
-            stin__maps_unbind(ctx);
-        GL_DISABLE(ctx, GL_STENCIL_TEST);
-    }
-    if (visibility && !lights)
-        path->flat(ctx, STIN__ALL, white);
-    if (!visibility)
-        path->batches(ctx, STIN__BLENDED);
+    for (li = 0; li < lights; li++)
+        ctx->shadow->light(ctx, path, li, visibility ? shade_flat : shade_lit);
 }
 
-static void run_frame(stin_context *ctx)
+/* The frame plan. Stages: light pre-passes -> target -> depth and ambient ->
+ * per light visibility and lighting -> blended draws. Without shadows (no
+ * technique, or no lights) the lighting is all lights in batches of the
+ * path's size and the blended draws go with it. */
+static void run_plan(stin_context *ctx)
 {
-    const stin__path *path =
-        ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED
-            ? stin__fixed_path()
-            : stin__glsl_path();
-    int volumes = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME;
-    int maps = stin__maps_active(ctx) || stin__pcf_active(ctx);
-    stin__volume_frame_setup(ctx);
+    const stin__path *path = stin__path_of(ctx);
+    int visibility = ctx->frame.output == STIN_OUTPUT_VISIBILITY;
+    int shadowed = ctx->shadow->light && ctx->light_count > 0;
+    stage_prepare(ctx);
+    stage_light_prepasses(ctx);
+    stage_target(ctx);
     path->begin(ctx);
-    switch (ctx->frame.output) {
-    case STIN_OUTPUT_NORMAL:
+    if (ctx->frame.output == STIN_OUTPUT_NORMAL) {
         path->normals(ctx);
-        break;
-    case STIN_OUTPUT_VISIBILITY:
-        if (maps) {
-            run_maps(ctx, path, 1);
-        } else if (volumes) {
-            run_volumes(ctx, path, 1);
-        } else {
-            path->ambient(ctx, STIN__ALL, 1);
-            path->flat(ctx, STIN__ALL, (const float[4]){1, 1, 1, 1});
-        }
-        break;
-    default:
-        if (maps && ctx->light_count)
-            run_maps(ctx, path, 0);
-        else if (volumes && ctx->light_count)
-            run_volumes(ctx, path, 0);
-        else
-            path->batches(ctx, STIN__ALL);
-        break;
+    } else if (shadowed) {
+        path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
+        stage_lights(ctx, path, visibility);
+        if (!visibility)
+            path->batches(ctx, STIN__BLENDED); /* blended draws: unshadowed, far to near */
+    } else if (visibility) {
+        static const float white[4] = {1, 1, 1, 1};
+        path->ambient(ctx, STIN__ALL, 1);
+        path->flat(ctx, STIN__ALL, white, NULL);
+    } else {
+        path->batches(ctx, STIN__ALL);
     }
     path->end(ctx);
 }
@@ -418,16 +348,11 @@ stin_result stin_end_frame(stin_context *ctx)
     if (ctx->state != STIN__IN_FRAME)
         return state_error(ctx, "stin_end_frame", "no frame is open");
     order_draws(ctx);
-    if (stin__maps_active(ctx) && ctx->light_count)
-        stin__maps_render(ctx); /* before the clear: without FBOs they use the frame's buffer */
-    if (stin__pcf_active(ctx) && ctx->light_count)
-        stin__pcf_render(ctx);
-    begin_target(ctx);
     ctx->stats.draws = ctx->draw_count;
     ctx->stats.lights = ctx->light_count;
     for (i = 0; i < ctx->draw_count; i++)
         ctx->stats.triangles += ctx->meshes[ctx->draws[i].mesh_slot].triangle_count;
-    run_frame(ctx);
+    run_plan(ctx);
     stin__state_restore(ctx);
     stin__gl_check_errors(ctx, "stin_end_frame");
     ctx->state = STIN__IDLE;

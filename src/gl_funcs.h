@@ -51,6 +51,8 @@
     X(void, MatrixMode, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                       \
     X(void, LoadMatrixf, (const GLfloat *m), STIN_CAP_FIXED_FUNCTION, "")                 \
     X(void, PushMatrix, (void), STIN_CAP_FIXED_FUNCTION, "")                              \
+    X(void, PushAttrib, (GLbitfield mask), STIN_CAP_FIXED_FUNCTION, "")                   \
+    X(void, PopAttrib, (void), STIN_CAP_FIXED_FUNCTION, "")                               \
     X(void, PopMatrix, (void), STIN_CAP_FIXED_FUNCTION, "")                               \
     X(void, Lightfv, (GLenum light, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, Lightf, (GLenum light, GLenum pname, GLfloat v), STIN_CAP_FIXED_FUNCTION, "") \

@@ -189,6 +189,8 @@ typedef void GLvoid;
 #define GL_RED 0x1903
 /* fixed-function shadow maps */
 #define GL_TEXTURE_1D 0x0DE0
+#define GL_CURRENT_BIT 0x00000001
+#define GL_LIGHTING_BIT 0x00000040
 #define GL_TEXTURE_GEN_S 0x0C60
 #define GL_TEXTURE_GEN_T 0x0C61
 #define GL_TEXTURE_GEN_R 0x0C62

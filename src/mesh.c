@@ -345,6 +345,12 @@ void stin_destroy_mesh(stin_context *ctx, stin_mesh mesh)
                       "stin_destroy_mesh: stale or unknown handle 0x%x", mesh.id);
         return;
     }
+    if (ctx->state == STIN__IN_FRAME) { /* queued draws still name it */
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE,
+                  "%s: a frame is open and its draws may use this %s; destroy it after "
+                  "stin_end_frame", "stin_destroy_mesh", "mesh");
+        return;
+    }
     release(ctx, m);
 }
 

@@ -145,30 +145,27 @@ static void draw_set(stin_context *ctx, int which, int materials)
     }
 }
 
-void stin__fixed_draw_geometry(stin_context *ctx)
+/* Every draw's geometry seen from a light (its view and projection), no
+ * materials: shadow-map casters. The camera's view comes back after. */
+static void fixed_depth(stin_context *ctx, const float view[16], const float proj[16])
 {
+    float saved_view[16];
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, LoadMatrixf)(proj);
+    stin__memcopy(saved_view, ctx->frame.view, sizeof saved_view);
+    stin__memcopy(ctx->frame.view, view, sizeof saved_view);
     ctx->bound_mesh = 0xffffffffu;
     draw_set(ctx, STIN__ALL, 0);
     ctx->bound_mesh = 0xffffffffu;
+    stin__memcopy(ctx->frame.view, saved_view, sizeof saved_view);
 }
 
+/* Fixed-function passes add with SRC_ALPHA/ONE when blended (the lit
+ * passes of a blended draw keep its opacity). */
 static void pass_state(stin_context *ctx, int additive, int blend_alpha)
 {
-    if (additive) {
-        GL(ctx, DepthFunc)(GL_EQUAL);
-        GL(ctx, DepthMask)(GL_FALSE);
-        GL_ENABLE(ctx, GL_BLEND);
-        GL(ctx, BlendFunc)(blend_alpha ? GL_SRC_ALPHA : GL_ONE, GL_ONE);
-    } else {
-        GL(ctx, DepthFunc)(GL_LESS);
-        GL(ctx, DepthMask)(GL_TRUE);
-        if (blend_alpha) {
-            GL_ENABLE(ctx, GL_BLEND);
-            GL(ctx, BlendFunc)(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-        } else {
-            GL_DISABLE(ctx, GL_BLEND);
-        }
-    }
+    stin__pass_state ps = stin__pass_draw(ctx, additive, blend_alpha);
+    stin__pass_apply(ctx, &ps);
 }
 
 static int batch_count(const stin_context *ctx)
@@ -206,15 +203,13 @@ static void fixed_batches(stin_context *ctx, int which)
 
 static void fixed_ambient(stin_context *ctx, int which, int depth_only)
 {
+    stin__pass_state ps = stin__pass_draw(ctx, 0, 0);
     GL_ENABLE(ctx, GL_LIGHTING);
     disable_lights(ctx, 0);
     scene_ambient(ctx, 1);
-    pass_state(ctx, 0, 0);
-    if (depth_only)
-        GL(ctx, ColorMask)(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ps.color_write = !depth_only;
+    stin__pass_apply(ctx, &ps);
     draw_set(ctx, which, !depth_only);
-    if (depth_only)
-        GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ctx->stats.passes++;
 }
 
@@ -232,8 +227,10 @@ static void fixed_lit(stin_context *ctx, const stin_light_desc *light)
     ctx->stats.passes++;
 }
 
-static void fixed_flat(stin_context *ctx, int which, const float color[4])
+static void fixed_flat(stin_context *ctx, int which, const float color[4],
+                       const stin_light_desc *light)
 {
+    (void)light; /* the fixed maps' tests sit on the texture units already */
     GL_DISABLE(ctx, GL_LIGHTING);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     GL(ctx, Color4f)(color[0], color[1], color[2], color[3]);
@@ -270,10 +267,12 @@ static void fixed_normals(stin_context *ctx)
     for (axis = 0; axis < 3; axis++)
         axis_light(ctx, axis, axis, -1.0f, -1.0f);
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_AMBIENT, one);
-    GL(ctx, DepthFunc)(GL_EQUAL);
-    GL(ctx, DepthMask)(GL_FALSE);
-    GL_ENABLE(ctx, GL_BLEND);
-    GL(ctx, BlendFunc)(GL_ZERO, GL_SRC_COLOR);
+    {
+        stin__pass_state ps = stin__pass_draw(ctx, 1, 0);
+        ps.blend_src = GL_ZERO;
+        ps.blend_dst = GL_SRC_COLOR;
+        stin__pass_apply(ctx, &ps);
+    }
     draw_set(ctx, STIN__ALL, 0);
     ctx->stats.passes += 2;
 }
@@ -310,12 +309,14 @@ static void fixed_volume_end(stin_context *ctx)
 static void fixed_begin(stin_context *ctx)
 {
     ctx->bound_mesh = 0xffffffffu;
+    /* lights, materials, the light model and the current colour are the
+     * caller's: GL1's own save and restore */
+    GL(ctx, PushAttrib)(GL_LIGHTING_BIT | GL_CURRENT_BIT);
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PushMatrix)();
     GL(ctx, LoadMatrixf)(ctx->projection);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PushMatrix)();
-    GL_ENABLE(ctx, GL_DEPTH_TEST);
     GL_ENABLE(ctx, GL_NORMALIZE);
     GL(ctx, ShadeModel)(GL_SMOOTH);
     GL(ctx, LightModeli)(GL_LIGHT_MODEL_LOCAL_VIEWER, 1);
@@ -344,6 +345,7 @@ static void fixed_end(stin_context *ctx)
     GL(ctx, PopMatrix)();
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PopMatrix)();
+    GL(ctx, PopAttrib)();
 }
 
 const stin__path *stin__fixed_path(void)
@@ -351,6 +353,6 @@ const stin__path *stin__fixed_path(void)
     static const stin__path path = {fixed_begin,        fixed_end,         fixed_ambient,
                                     fixed_lit,          fixed_flat,        fixed_volume_begin,
                                     fixed_volume_draw,  fixed_volume_end,  fixed_batches,
-                                    fixed_normals};
+                                    fixed_normals,      fixed_depth};
     return &path;
 }

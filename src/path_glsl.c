@@ -42,7 +42,7 @@ static void locate(stin_context *ctx, stin__program *p)
 /* The shadow chunk of the lit programs. */
 static const char *lit_shadow_chunk(const stin_context *ctx)
 {
-    return stin__pcf_active(ctx) ? "shadow_pcf.glsl" : "shadow_none.glsl";
+    return ctx->shadow->glsl_chunk ? ctx->shadow->glsl_chunk : "shadow_none.glsl";
 }
 
 /* The lit program of a surface variant. */
@@ -70,14 +70,11 @@ static void build_surface_variants(stin_context *ctx, const char *dir)
         stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), names, chunks);
         p->name = stin__program_build(ctx, vert, frag, chunks, msg, sizeof msg);
         if (!p->name) {
-            stin_technique to = stin__surf_technique_of(ctx->glsl_surface.best);
-            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                      "surface: %s failed (%s); falling back to %s",
-                      stin_technique_name(stin__surf_technique_of(v)), msg,
-                      stin_technique_name(to));
-            stin__formatf(c->reason, sizeof c->reason, "fallback: %s failed to build (%s)",
+            char why[200];
+            stin__formatf(why, sizeof why, "%s failed to build (%s)",
                           stin_technique_name(stin__surf_technique_of(v)), msg);
-            c->technique = to;
+            stin__demote(ctx, STIN_FEATURE_SURFACE, stin__surf_technique_of(ctx->glsl_surface.best),
+                         why);
             return;
         }
         locate(ctx, p);
@@ -214,8 +211,8 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
         GL(ctx, Uniform4fv)(p->u_lights, 4 * ctx->glsl_surface.light_n, ctx->glsl_surface.packed);
     GL(ctx, Uniform3fv)(p->u_ambient, 1,
                         ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
-    if (stin__pcf_active(ctx))
-        stin__pcf_apply(ctx, p, ctx->pcf_kind, ctx->pcf_light);
+    if (ctx->shadow->uniforms)
+        ctx->shadow->uniforms(ctx, p);
 }
 
 /* Makes p (a lit program) current with this pass's uniforms. */
@@ -274,14 +271,18 @@ static void bind_mesh_arrays(stin_context *ctx, const stin__mesh_slot *m, uint32
     ctx->bound_mesh = slot;
 }
 
-static void draw_mesh(stin_context *ctx, const stin__program *p, const stin__draw *d)
+/* The one geometry submission of the GLSL path: a draw's transform and
+ * mesh through program p (its normal matrix where p has one). */
+static void submit(stin_context *ctx, const stin__program *p, const stin__draw *d)
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    float nm[9];
     const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
     GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
-    stin__mat3_normal(nm, d->transform);
-    GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
+    if (p->u_normal_matrix >= 0) {
+        float nm[9];
+        stin__mat3_normal(nm, d->transform);
+        GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
+    }
     bind_mesh_arrays(ctx, m, d->mesh_slot);
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
 }
@@ -303,21 +304,14 @@ static void draw_set(stin_context *ctx, const stin__program *p, int which, int m
             q = lit_for_draw(ctx, d);
         if (materials)
             set_material(ctx, q, &d->material);
-        draw_mesh(ctx, q, d);
+        submit(ctx, q, d);
     }
 }
 
 static void pass_state(stin_context *ctx, int additive, int blend_alpha)
 {
-    GL(ctx, DepthFunc)(additive ? GL_EQUAL : GL_LESS);
-    GL(ctx, DepthMask)(additive ? GL_FALSE : GL_TRUE);
-    if (additive || blend_alpha) {
-        GL_ENABLE(ctx, GL_BLEND);
-        GL(ctx, BlendFunc)(blend_alpha ? GL_SRC_ALPHA : GL_ONE,
-                           additive ? GL_ONE : GL_ONE_MINUS_SRC_ALPHA);
-    } else {
-        GL_DISABLE(ctx, GL_BLEND);
-    }
+    stin__pass_state ps = stin__pass_draw(ctx, additive, blend_alpha);
+    stin__pass_apply(ctx, &ps);
 }
 
 static const stin__program *use(stin_context *ctx, int which)
@@ -359,7 +353,7 @@ static void glsl_batches(stin_context *ctx, int which)
             for (b = 0; b < batches; b++) {
                 set_batch(ctx, q, b);
                 pass_state(ctx, b > 0, 1);
-                draw_mesh(ctx, q, d);
+                submit(ctx, q, d);
             }
         }
 }
@@ -367,13 +361,11 @@ static void glsl_batches(stin_context *ctx, int which)
 static void glsl_ambient(stin_context *ctx, int which, int depth_only)
 {
     const stin__program *p = use(ctx, STIN__PROG_LIT);
+    stin__pass_state ps = stin__pass_draw(ctx, 0, 0);
     upload_lights(ctx, p, NULL, 0, 1);
-    pass_state(ctx, 0, 0);
-    if (depth_only)
-        GL(ctx, ColorMask)(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    ps.color_write = !depth_only;
+    stin__pass_apply(ctx, &ps);
     draw_set(ctx, p, which, 1);
-    if (depth_only)
-        GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     ctx->stats.passes++;
 }
 
@@ -386,24 +378,24 @@ static void glsl_lit(stin_context *ctx, const stin_light_desc *light)
     ctx->stats.passes++;
 }
 
-static void glsl_flat(stin_context *ctx, int which, const float color[4])
+static void glsl_flat(stin_context *ctx, int which, const float color[4],
+                      const stin_light_desc *light)
 {
     const stin__program *p = use(ctx, STIN__PROG_FLAT);
     GL(ctx, Uniform4fv)(p->u_color, 1, color);
-    if (stin__pcf_active(ctx)) { /* visibility through the same shadow test */
+    if (ctx->shadow->uniforms) { /* visibility through the lit pass's shadow test */
         float inv[16];
         stin__mat4_invert(inv, ctx->frame.view);
         GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
-        if (ctx->pcf_light < ctx->light_count) { /* the light's position (point faces) */
-            const float *lp = ctx->lights[ctx->pcf_light].position;
+        if (light) { /* the light's position (point faces) */
             float pos[4];
-            pos[0] = lp[0];
-            pos[1] = lp[1];
-            pos[2] = lp[2];
+            pos[0] = light->position[0];
+            pos[1] = light->position[1];
+            pos[2] = light->position[2];
             pos[3] = 1.0f;
             GL(ctx, Uniform4fv)(p->u_lights, 1, pos);
         }
-        stin__pcf_apply(ctx, p, ctx->pcf_kind, ctx->pcf_light);
+        ctx->shadow->uniforms(ctx, p);
     }
     pass_state(ctx, 1, 0);
     draw_set(ctx, p, which, 0);
@@ -463,7 +455,6 @@ static void glsl_begin(stin_context *ctx)
     int i;
     ctx->bound_mesh = 0xffffffffu;
     ctx->glsl_surface.current = NULL;
-    GL_ENABLE(ctx, GL_DEPTH_TEST);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     if (!gl4(ctx))
@@ -481,32 +472,36 @@ static void glsl_end(stin_context *ctx)
             GL(ctx, DisableVertexAttribArray)((GLuint)i);
 }
 
-const stin__path *stin__glsl_path(void)
-{
-    static const stin__path path = {glsl_begin,       glsl_end,          glsl_ambient,
-                                    glsl_lit,         glsl_flat,         glsl_volume_begin,
-                                    glsl_volume_draw, glsl_volume_end,   glsl_batches,
-                                    glsl_normals};
-    return &path;
-}
-
-void stin__glsl_draw_depth(stin_context *ctx, const float view_proj[16])
+/* Every draw's depth through the volume program (shadow-map casters). */
+static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16])
 {
     const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
+    float view_proj[16];
     uint32_t i;
+    stin__mat4_mul(view_proj, proj, view);
     GL(ctx, UseProgram)(p->name);
     ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
     if (!gl4(ctx)) /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
         GL(ctx, EnableVertexAttribArray)(0);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-        const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
-        GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
-        bind_mesh_arrays(ctx, m, d->mesh_slot);
-        GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
-    }
+    for (i = 0; i < ctx->draw_count; i++)
+        submit(ctx, p, &ctx->draws[ctx->draw_order[i]]);
     ctx->bound_mesh = 0xffffffffu;
+}
+
+const stin__path *stin__glsl_path(void)
+{
+    static const stin__path path = {glsl_begin,       glsl_end,        glsl_ambient,
+                                    glsl_lit,         glsl_flat,       glsl_volume_begin,
+                                    glsl_volume_draw, glsl_volume_end, glsl_batches,
+                                    glsl_normals,     glsl_depth};
+    return &path;
+}
+
+const stin__path *stin__path_of(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED
+               ? stin__fixed_path()
+               : stin__glsl_path();
 }

@@ -1,106 +1,10 @@
 /* Tier selection and the per-feature fallback chains. */
 #include "internal.h"
 
-#define BIT(c) STIN_CAP_BIT(STIN_CAP_##c)
-
-static const stin_feature tech_feature[] = {
-#define STIN_X_(id, name, feature, tier) feature,
-    STIN_TECHNIQUE_LIST(STIN_X_)
-#undef STIN_X_
-};
-
-static const stin_tier tech_tier[] = {
-#define STIN_X_(id, name, feature, tier) tier,
-    STIN_TECHNIQUE_LIST(STIN_X_)
-#undef STIN_X_
-};
-
-uint64_t stin__tier_needs(stin_tier t)
-{
-    switch (t) {
-    case STIN_TIER_GL1: return BIT(FIXED_FUNCTION);
-    /* GLSL 1.10 shaders need a compatibility context next to GL 2.0. */
-    case STIN_TIER_GL2: return BIT(GLSL) | BIT(FIXED_FUNCTION);
-    case STIN_TIER_GL4: return BIT(GLSL) | BIT(GEOMETRY_SHADER) | BIT(VBO) | BIT(VAO) | BIT(FBO);
-    case STIN_TIER_AUTO: break;
-    }
-    return 0;
-}
-
-uint64_t stin__technique_needs(stin_technique t)
-{
-    switch (t) {
-    case STIN_TECH_LIGHTING_GLSL150: return stin__tier_needs(STIN_TIER_GL4);
-    case STIN_TECH_LIGHTING_GLSL110: return stin__tier_needs(STIN_TIER_GL2);
-    case STIN_TECH_LIGHTING_FIXED: return stin__tier_needs(STIN_TIER_GL1);
-    case STIN_TECH_SHADOWS_VOLUME: return BIT(STENCIL);
-    case STIN_TECH_SHADOWS_MAP_DEPTH: return BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE);
-    case STIN_TECH_SHADOWS_MAP_PCF:
-        return BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE);
-    case STIN_TECH_SHADOWS_MAP_COMBINE: return BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE);
-    case STIN_TECH_SURFACE_POM:
-    case STIN_TECH_SURFACE_PARALLAX:
-    case STIN_TECH_SURFACE_NORMAL: /* three samplers: albedo, normal map, height map */
-        return BIT(GLSL) | BIT(MULTITEXTURE);
-    case STIN_TECH_SURFACE_DOT3:
-        return BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) |
-               BIT(TEXTURE_CUBE_MAP) | BIT(FIXED_FUNCTION);
-    default: return 0;
-    }
-}
-
-/* Techniques that only run on top of one lighting technique. Features are
- * chosen one after the other (lighting first); a technique whose lighting
- * requirement is not the lighting chosen is passed over like one whose
- * capabilities are missing. DOT3 bump mapping is a fixed-function texture
- * combiner set-up: it draws in the fixed-function path's lit passes only, so
- * the GLSL tiers (whose normal mapping is their own surface technique) never
- * pick it, even where the context has the capabilities. The GLSL surface
- * techniques (normal, parallax, pom) are chunks of the GLSL lit programs:
- * they name STIN_TECH_LIGHTING_GLSL110, which stands for "any GLSL lighting"
- * (stin__technique_runs_with). */
-stin_technique stin__technique_lighting(stin_technique t)
-{
-    switch (t) {
-    case STIN_TECH_SURFACE_POM:
-    case STIN_TECH_SURFACE_PARALLAX:
-    case STIN_TECH_SURFACE_NORMAL:
-    case STIN_TECH_SHADOWS_MAP_PCF: /* a chunk of the lit programs too */
-        return STIN_TECH_LIGHTING_GLSL110;
-    case STIN_TECH_SURFACE_DOT3:
-    case STIN_TECH_SHADOWS_MAP_DEPTH: /* texture-environment shadow tests, likewise */
-    case STIN_TECH_SHADOWS_MAP_COMBINE:
-        return STIN_TECH_LIGHTING_FIXED;
-    default:
-        return STIN_TECH_NONE;
-    }
-}
-
-int stin__technique_runs_with(stin_technique t, stin_technique lighting)
-{
-    stin_technique need = stin__technique_lighting(t);
-    if (need == STIN_TECH_NONE || need == lighting)
-        return 1;
-    /* GLSL 1.10 lighting stands for the GLSL class: 1.50 runs those too */
-    return need == STIN_TECH_LIGHTING_GLSL110 && lighting == STIN_TECH_LIGHTING_GLSL150;
-}
-
 /* How a lighting requirement reads in messages. */
 static const char *lighting_class(stin_technique need)
 {
     return need == STIN_TECH_LIGHTING_GLSL110 ? "GLSL" : stin_technique_name(need);
-}
-
-stin_feature stin__technique_feature(stin_technique t)
-{
-    return (unsigned)t < STIN_TECH_COUNT ? tech_feature[t] : STIN_FEATURE_COUNT;
-}
-
-stin_feature stin_technique_feature(stin_technique t) { return stin__technique_feature(t); }
-
-stin_tier stin__technique_tier(stin_technique t)
-{
-    return (unsigned)t < STIN_TECH_COUNT ? tech_tier[t] : STIN_TIER_AUTO;
 }
 
 static size_t append(char *out, size_t size, size_t at, const char *s)
@@ -151,73 +55,183 @@ stin_tier stin_best_tier(const stin_caps *caps)
     return STIN_TIER_AUTO;
 }
 
+
+/* ---- the solver ----------------------------------------------------------- */
+
+/* What one feature's choice may use. */
+typedef struct chain_input {
+    const stin_caps *caps;
+    stin_tier tier;
+    stin_feature feature;
+    stin_technique forced, lighting;
+    uint64_t chosen;   /* STIN__TECH_BIT()s of the features chosen so far */
+    int units_left;    /* texture units still free for this feature */
+    int unit_limit;    /* the context's units for the chosen lighting */
+} chain_input;
+
+static int frag_units(stin_technique t)
+{
+    const stin__technique_row *r = stin__technique_row_of(t);
+    return r ? r->fragment_units : 0;
+}
+
+/* Why t cannot be this feature's choice here, or "" if it can. A technique
+ * above the tier ceiling or on another lighting path is not a fallback; the
+ * return value says so (0: passed over, 1: could not run). */
+static int why_not(const chain_input *in, stin_technique t, char *why, size_t size)
+{
+    const stin__technique_row *r = stin__technique_row_of(t);
+    uint64_t lack = r->needs & ~in->caps->present;
+    char names[160];
+    why[0] = '\0';
+    stin__cap_names(lack, names, sizeof names);
+    if (stin__technique_tier(t) > in->tier) {
+        stin__formatf(why, size, "%s needs tier %s%s%s", stin_technique_name(t),
+                      stin_tier_name(stin__technique_tier(t)), lack ? ", " : "", names);
+        return 0;
+    }
+    if (lack) {
+        stin__formatf(why, size, "%s needs %s", stin_technique_name(t), names);
+        return 1;
+    }
+    if (!stin__technique_runs_with(t, in->lighting)) {
+        stin__formatf(why, size, "%s needs %s lighting (lighting is %s)", stin_technique_name(t),
+                      lighting_class(r->lighting), stin_technique_name(in->lighting));
+        return 0;
+    }
+    if (r->conflicts & in->chosen) {
+        stin__formatf(why, size, "%s cannot run beside the techniques chosen before it",
+                      stin_technique_name(t));
+        return 1;
+    }
+    if (r->fragment_units > in->units_left) {
+        stin__formatf(why, size, "%s needs %d texture units together with the features "
+                      "chosen before it, the context has %d", stin_technique_name(t),
+                      in->unit_limit - in->units_left + r->fragment_units, in->unit_limit);
+        return 1;
+    }
+    return 1;
+}
+
+static stin_result choose_forced(const chain_input *in, stin_choice *out, char *msg,
+                                 size_t msg_size)
+{
+    char why[160];
+    if ((unsigned)in->forced >= STIN_TECH_COUNT || in->forced == STIN_TECH_NONE ||
+        stin__technique_feature(in->forced) != in->feature) {
+        stin__formatf(msg, msg_size, "technique %s is not a %s technique",
+                      stin_technique_name(in->forced), stin_feature_name(in->feature));
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
+    why_not(in, in->forced, why, sizeof why);
+    if (why[0]) {
+        stin__formatf(msg, msg_size, "%s technique %s", stin_feature_name(in->feature), why);
+        return STIN_ERROR_UNSUPPORTED;
+    }
+    out->technique = in->forced;
+    out->fell_back = 0;
+    stin__formatf(out->reason, sizeof out->reason, "forced by the caller");
+    return STIN_OK;
+}
+
 /* Walks the feature's chain from the best technique down; records why each
  * better one was passed over. */
-stin_result stin__choose(const stin_caps *caps, stin_tier tier, stin_feature f,
-                          stin_technique forced, stin_technique lighting, stin_choice *out,
-                          char *msg, size_t msg_size)
+static stin_result choose(const chain_input *in, stin_choice *out, char *msg, size_t msg_size)
 {
-    char why[160], names[160], note[96];
-    int t;
-    why[0] = note[0] = '\0';
-    if (forced != STIN_TECH_NONE) {
-        uint64_t lack = stin__technique_needs(forced) & ~caps->present;
-        if ((unsigned)forced >= STIN_TECH_COUNT || tech_feature[forced] != f) {
-            stin__formatf(msg, msg_size, "technique %s is not a %s technique",
-                          stin_technique_name(forced), stin_feature_name(f));
-            return STIN_ERROR_INVALID_ARGUMENT;
-        }
-        if (tech_tier[forced] > tier || lack) {
-            stin__cap_names(lack, names, sizeof names);
-            stin__formatf(msg, msg_size, "%s technique %s needs %s%s%s%s", stin_feature_name(f),
-                          stin_technique_name(forced),
-                          tech_tier[forced] > tier ? "tier " : "",
-                          tech_tier[forced] > tier ? stin_tier_name(tech_tier[forced]) : "",
-                          tech_tier[forced] > tier && lack ? ", " : "", lack ? names : "");
-            return STIN_ERROR_UNSUPPORTED;
-        }
-        if (!stin__technique_runs_with(forced, lighting)) {
-            stin__formatf(msg, msg_size, "%s technique %s needs %s lighting "
-                          "(lighting is %s)", stin_feature_name(f), stin_technique_name(forced),
-                          lighting_class(stin__technique_lighting(forced)),
-                          stin_technique_name(lighting));
-            return STIN_ERROR_UNSUPPORTED;
-        }
-        out->technique = forced;
-        stin__formatf(out->reason, sizeof out->reason, "forced by the caller");
-        return STIN_OK;
-    }
-    for (t = 1; t < STIN_TECH_COUNT; t++) {
-        uint64_t lack;
-        if (tech_feature[t] != f)
-            continue;
-        lack = stin__technique_needs((stin_technique)t) & ~caps->present;
-        if (tech_tier[t] > tier)
-            continue; /* above the tier ceiling: not a fallback */
-        if (lack) {
-            stin__cap_names(lack, names, sizeof names);
-            stin__formatf(why, sizeof why, "%s needs %s", stin_technique_name((stin_technique)t),
-                          names);
-            continue;
-        }
-        if (!stin__technique_runs_with((stin_technique)t, lighting)) {
-            /* not a fallback: the chosen lighting path does not draw it */
-            if (!note[0])
+    stin_technique chain[STIN_TECH_COUNT];
+    char why[160], fell[160], note[96];
+    int n, i;
+    if (in->forced != STIN_TECH_NONE)
+        return choose_forced(in, out, msg, msg_size);
+    fell[0] = note[0] = '\0';
+    n = stin__feature_chain(in->feature, chain);
+    for (i = 0; i < n; i++) {
+        int could_not = why_not(in, chain[i], why, sizeof why);
+        if (why[0]) {
+            if (could_not)
+                stin__formatf(fell, sizeof fell, "%s", why);
+            else if (!note[0] && stin__technique_tier(chain[i]) <= in->tier)
                 stin__formatf(note, sizeof note, "%s runs with %s lighting only; ",
-                              stin_technique_name((stin_technique)t),
-                              lighting_class(stin__technique_lighting((stin_technique)t)));
+                              stin_technique_name(chain[i]),
+                              lighting_class(stin__technique_lighting(chain[i])));
             continue;
         }
-        out->technique = (stin_technique)t;
-        if (why[0])
-            stin__formatf(out->reason, sizeof out->reason, "fallback: %s", why);
+        out->technique = chain[i];
+        out->fell_back = fell[0] != '\0';
+        if (fell[0])
+            stin__formatf(out->reason, sizeof out->reason, "fallback: %s", fell);
         else
             stin__formatf(out->reason, sizeof out->reason, "%sbest for tier %s", note,
-                          stin_tier_name(tier));
+                          stin_tier_name(in->tier));
         return STIN_OK;
     }
-    stin__formatf(msg, msg_size, "no %s technique runs here (%s)", stin_feature_name(f), why);
+    stin__formatf(msg, msg_size, "no %s technique runs here (%s)", stin_feature_name(in->feature),
+                  fell);
     return STIN_ERROR_UNSUPPORTED;
+}
+
+/* The unit limit of a lighting technique's draws; 0 (not reported) is no limit. */
+static int unit_limit(const stin_caps *caps, stin_technique lighting)
+{
+    int n = lighting == STIN_TECH_LIGHTING_FIXED ? caps->max_texture_units
+                                                 : caps->max_texture_image_units;
+    return n > 0 ? n : 1 << 20;
+}
+
+/* Where each feature's texture units start: albedo 0, the surface's, then the
+ * shadows'. DOT3 takes a fourth unit (albedo textures) when one is spare. */
+static void place_units(stin__selection *sel)
+{
+    stin_technique surface = sel->choice[STIN_FEATURE_SURFACE].technique;
+    int shadow = frag_units(sel->choice[STIN_FEATURE_SHADOWS].technique);
+    int surf = frag_units(surface);
+    sel->surface_unit = frag_units(sel->choice[STIN_FEATURE_LIGHTING].technique);
+    if (surface == STIN_TECH_SURFACE_DOT3 && sel->surface_unit + surf + 1 + shadow <= sel->unit_limit)
+        surf++;
+    sel->shadow_unit = sel->surface_unit + surf;
+    sel->units_used = sel->shadow_unit + shadow;
+}
+
+/* Chooses every feature after lighting, for the lighting in sel. Forced
+ * techniques' units are set aside first, so an automatic choice cannot take
+ * what a forced one needs. */
+static stin_result choose_after_lighting(const stin_caps *caps, const stin_technique *forced,
+                                         stin__selection *sel, char *msg, size_t msg_size)
+{
+    stin_technique lighting = sel->choice[STIN_FEATURE_LIGHTING].technique;
+    int f, reserved = 0, used = frag_units(lighting);
+    uint64_t chosen = STIN__TECH_BIT(lighting);
+    sel->unit_limit = unit_limit(caps, lighting);
+    for (f = STIN_FEATURE_LIGHTING + 1; f < STIN_FEATURE_COUNT; f++)
+        if (forced && forced[f] != STIN_TECH_NONE)
+            reserved += frag_units(forced[f]);
+    for (f = STIN_FEATURE_LIGHTING + 1; f < STIN_FEATURE_COUNT; f++) {
+        chain_input in;
+        stin_result r;
+        in.caps = caps;
+        in.tier = sel->tier;
+        in.feature = (stin_feature)f;
+        in.forced = forced ? forced[f] : STIN_TECH_NONE;
+        in.lighting = lighting;
+        in.chosen = chosen;
+        if (in.forced != STIN_TECH_NONE)
+            reserved -= frag_units(in.forced);
+        in.units_left = sel->unit_limit - used - reserved;
+        in.unit_limit = sel->unit_limit;
+        r = choose(&in, &sel->choice[f], msg, msg_size);
+        if (r != STIN_OK)
+            return r;
+        used += frag_units(sel->choice[f].technique);
+        chosen |= STIN__TECH_BIT(sel->choice[f].technique);
+    }
+    place_units(sel);
+    return STIN_OK;
+}
+
+stin_result stin__select_after_lighting(const stin_caps *caps, const stin_technique *forced,
+                                        stin__selection *sel, char *msg, size_t msg_size)
+{
+    return choose_after_lighting(caps, forced, sel, msg, msg_size);
 }
 
 stin_result stin__select(const stin_caps *caps, stin_tier forced,
@@ -225,7 +239,8 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
                          stin__selection *out, char *msg, size_t msg_size)
 {
     char missing[256];
-    int f;
+    chain_input in;
+    stin_result r;
     stin__memzero(out, sizeof *out);
     if (forced != STIN_TIER_AUTO && forced != STIN_TIER_GL1 && forced != STIN_TIER_GL2 &&
         forced != STIN_TIER_GL4) {
@@ -245,14 +260,26 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
     } else {
         out->tier = forced;
     }
-    for (f = 0; f < STIN_FEATURE_COUNT; f++) {
-        /* features in enum order: lighting is chosen before the techniques that need it */
-        stin_result r = stin__choose(caps, out->tier, (stin_feature)f,
-                               forced_tech ? forced_tech[f] : STIN_TECH_NONE,
-                               out->choice[STIN_FEATURE_LIGHTING].technique, &out->choice[f],
-                               msg, msg_size);
-        if (r != STIN_OK)
-            return r;
-    }
-    return STIN_OK;
+    /* lighting first: every other feature's chain depends on it */
+    stin__memzero(&in, sizeof in);
+    in.caps = caps;
+    in.tier = out->tier;
+    in.feature = STIN_FEATURE_LIGHTING;
+    in.forced = forced_tech ? forced_tech[STIN_FEATURE_LIGHTING] : STIN_TECH_NONE;
+    in.units_left = in.unit_limit = 1 << 20;
+    r = choose(&in, &out->choice[STIN_FEATURE_LIGHTING], msg, msg_size);
+    if (r != STIN_OK)
+        return r;
+    return choose_after_lighting(caps, forced_tech, out, msg, msg_size);
+}
+
+void stin__demote(stin_context *ctx, stin_feature f, stin_technique to, const char *why)
+{
+    stin_choice *c = &ctx->sel.choice[f];
+    stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "%s: %s falls back to %s: %s",
+              stin_feature_name(f), stin_technique_name(c->technique), stin_technique_name(to),
+              why);
+    c->technique = to;
+    c->fell_back = 1;
+    stin__formatf(c->reason, sizeof c->reason, "fallback: %s", why);
 }

@@ -16,8 +16,10 @@
  * ONE_MINUS_SRC_ALPHA); the alpha test GEQUAL 0.5 keeps the lit fragments.
  *
  * Spot lights get a perspective map over their cone, directional lights an
- * orthographic one fitted to the draws. Point lights have no single map: they
- * fall back to stencil volumes (or none) and the log says so once. */
+ * orthographic one fitted to the draws. Point lights get six 90-degree maps
+ * drawn mid-frame where there are FBOs (map-depth), kept to their squares by
+ * a mask unit; elsewhere they fall back to stencil volumes (or none) and the
+ * log says so once. */
 #include "internal.h"
 
 #define RAMP_SIZE 256
@@ -25,12 +27,6 @@
  * face frustum is widened so that the square's edge falls exactly between
  * the border texel and the first inner one (NEAREST sampling). */
 #define FACE_MASK 256u
-
-int stin__maps_active(const stin_context *ctx)
-{
-    stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
-    return t == STIN_TECH_SHADOWS_MAP_DEPTH || t == STIN_TECH_SHADOWS_MAP_COMBINE;
-}
 
 static int combine(const stin_context *ctx)
 {
@@ -83,138 +79,107 @@ static void create_map_texture(stin_context *ctx, GLuint *t, uint32_t size)
     }
 }
 
-stin_result stin__maps_init(stin_context *ctx)
+static stin_result fixed_init(stin_context *ctx)
 {
     uint32_t i, size = ctx->desc.shadow_map_size;
     int units = combine(ctx) ? 2 : 1;
-    if (!stin__maps_active(ctx))
-        return STIN_OK;
-    /* after the surface technique's units (DOT3 uses four), else after albedo */
-    ctx->maps.unit = ctx->sel.choice[STIN_FEATURE_SURFACE].technique == STIN_TECH_SURFACE_DOT3 ? 4 : 1;
-    if (ctx->maps.unit == 4 && 4 + units > ctx->caps.max_texture_units &&
-        ctx->desc.techniques[STIN_FEATURE_SURFACE] != STIN_TECH_SURFACE_DOT3) {
-        /* shadows outrank bump: DOT3 gives its units up unless it was forced */
-        stin_choice *c = &ctx->sel.choice[STIN_FEATURE_SURFACE];
-        stin__dot3_release(ctx);
-        c->technique = STIN_TECH_SURFACE_PLAIN;
-        stin__formatf(c->reason, sizeof c->reason,
-                      "fallback: dot3 needs texture units 0..3 and the shadow maps %d more",
-                      units);
-        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "surface: %s", c->reason);
-        ctx->maps.unit = 1;
-    }
-    if (ctx->maps.unit + units > ctx->caps.max_texture_units) {
-        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
-                  "shadows: %s needs texture units %d..%d, the context has %d",
-                  stin_technique_name(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique),
-                  ctx->maps.unit, ctx->maps.unit + units - 1, ctx->caps.max_texture_units);
-        return STIN_ERROR_UNSUPPORTED;
-    }
+    /* after the surface technique's units (selection placed them) */
+    ctx->map_fixed.unit = ctx->sel.shadow_unit;
     if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
         size = pow2_at_most((uint32_t)ctx->caps.max_texture_size);
-    ctx->maps.size = size;
+    ctx->map_fixed.size = size;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (i = 0; i < ctx->desc.max_lights; i++)
-        create_map_texture(ctx, &ctx->maps.textures[i], size);
+        create_map_texture(ctx, &ctx->map_fixed.textures[i], size);
     if (combine(ctx)) {
         unsigned char ramp[RAMP_SIZE];
         for (i = 0; i < RAMP_SIZE; i++)
             ramp[i] = (unsigned char)i;
-        GL(ctx, GenTextures)(1, &ctx->maps.ramp);
-        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->maps.ramp);
+        GL(ctx, GenTextures)(1, &ctx->map_fixed.ramp);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->map_fixed.ramp);
         GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
-        GL(ctx, TexImage1D)(GL_TEXTURE_1D, 0, GL_INTENSITY8, RAMP_SIZE, 0, GL_LUMINANCE,
-                            GL_UNSIGNED_BYTE, ramp);
+        stin__upload_bytes(ctx, GL_TEXTURE_1D, GL_INTENSITY8, RAMP_SIZE, 1, GL_LUMINANCE, ramp);
         GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
     }
     if (combine_fbo(ctx)) {
-        GL(ctx, GenTextures)(1, &ctx->maps.depth_scratch);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.depth_scratch);
+        GL(ctx, GenTextures)(1, &ctx->map_fixed.depth_scratch);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.depth_scratch);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24,
                                                        (GLsizei)size, (GLsizei)size, 0,
                                                        GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
-        GL(ctx, GenFramebuffers)(1, &ctx->maps.fbo);
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->maps.fbo);
+        GL(ctx, GenFramebuffers)(1, &ctx->map_fixed.fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                      ctx->maps.depth_scratch, 0);
+                                      ctx->map_fixed.depth_scratch, 0);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     } else if (!combine(ctx) && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO))) {
         /* depth only: no colour buffer to draw or read */
-        GL(ctx, GenFramebuffers)(1, &ctx->maps.fbo);
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->maps.fbo);
+        GL(ctx, GenFramebuffers)(1, &ctx->map_fixed.fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
         GL(ctx, DrawBuffer)(GL_NONE);
         GL(ctx, ReadBuffer)(GL_NONE);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     }
     /* point lights: six maps drawn mid-frame (FBOs), shared by all of them,
      * and a mask unit that keeps each face to its own 90-degree square */
-    if (ctx->maps.fbo && !combine(ctx) && ctx->maps.unit + units + 1 <= ctx->caps.max_texture_units &&
+    if (ctx->map_fixed.fbo && !combine(ctx) && ctx->map_fixed.unit + units + 1 <= ctx->caps.max_texture_units &&
         (FACE_MASK * FACE_MASK) <= ctx->staging_bytes + ctx->scratch_bytes) {
         unsigned char *m = ctx->staging_bytes >= FACE_MASK * FACE_MASK ? ctx->staging : ctx->scratch;
         uint32_t x, y;
-        for (i = 0; i < 6; i++)
-            create_map_texture(ctx, &ctx->maps.textures[32 + i], size);
+        for (i = 0; i < STIN__CUBE_FACES; i++)
+            create_map_texture(ctx, &ctx->map_fixed.textures[STIN__FACE_SLOT + i], size);
         for (y = 0; y < FACE_MASK; y++)
             for (x = 0; x < FACE_MASK; x++)
                 m[y * FACE_MASK + x] =
                     (x == 0 || y == 0 || x == FACE_MASK - 1 || y == FACE_MASK - 1) ? 0 : 255;
-        GL(ctx, GenTextures)(1, &ctx->maps.face_mask);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.face_mask);
+        GL(ctx, GenTextures)(1, &ctx->map_fixed.face_mask);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.face_mask);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_LUMINANCE, FACE_MASK, FACE_MASK, 0, GL_LUMINANCE,
-                            GL_UNSIGNED_BYTE, m);
-        ctx->maps.faces = 1;
+        stin__upload_bytes(ctx, GL_TEXTURE_2D, GL_LUMINANCE, FACE_MASK, FACE_MASK, GL_LUMINANCE, m);
+        ctx->map_fixed.faces = 1;
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__gl_check_errors(ctx, "shadow-map set-up");
     return STIN_OK;
 }
 
-void stin__maps_release(stin_context *ctx)
+static void fixed_release(stin_context *ctx)
 {
     uint32_t i;
-    for (i = 0; i < 38; i++)
-        if (ctx->maps.textures[i]) {
-            GL(ctx, DeleteTextures)(1, &ctx->maps.textures[i]);
-            ctx->maps.textures[i] = 0;
+    for (i = 0; i < STIN__MAP_SLOTS; i++)
+        if (ctx->map_fixed.textures[i]) {
+            GL(ctx, DeleteTextures)(1, &ctx->map_fixed.textures[i]);
+            ctx->map_fixed.textures[i] = 0;
         }
-    if (ctx->maps.ramp)
-        GL(ctx, DeleteTextures)(1, &ctx->maps.ramp);
-    if (ctx->maps.fbo)
-        GL(ctx, DeleteFramebuffers)(1, &ctx->maps.fbo);
-    if (ctx->maps.depth_scratch)
-        GL(ctx, DeleteTextures)(1, &ctx->maps.depth_scratch);
-    if (ctx->maps.face_mask)
-        GL(ctx, DeleteTextures)(1, &ctx->maps.face_mask);
-    ctx->maps.face_mask = 0;
-    ctx->maps.faces = 0;
-    ctx->maps.ramp = ctx->maps.fbo = ctx->maps.depth_scratch = 0;
+    if (ctx->map_fixed.ramp)
+        GL(ctx, DeleteTextures)(1, &ctx->map_fixed.ramp);
+    if (ctx->map_fixed.fbo)
+        GL(ctx, DeleteFramebuffers)(1, &ctx->map_fixed.fbo);
+    if (ctx->map_fixed.depth_scratch)
+        GL(ctx, DeleteTextures)(1, &ctx->map_fixed.depth_scratch);
+    if (ctx->map_fixed.face_mask)
+        GL(ctx, DeleteTextures)(1, &ctx->map_fixed.face_mask);
+    stin__memzero(&ctx->map_fixed, sizeof ctx->map_fixed);
 }
 
 /* ---- rendering the maps -------------------------------------------------- */
 
-static void set_offset(stin_context *ctx, const stin_light_desc *l)
+int stin__map_offset(const stin_light_desc *l, float *factor, float *units)
 {
-    float factor = l->shadow_offset[0], units = l->shadow_offset[1];
-    if (l->shadow_offset_off) {
-        GL_DISABLE(ctx, GL_POLYGON_OFFSET_FILL);
-        return;
+    *factor = l->shadow_offset[0];
+    *units = l->shadow_offset[1];
+    if (*factor == 0.0f && *units == 0.0f) {
+        *factor = 1.1f;
+        *units = 4.0f;
     }
-    if (factor == 0.0f && units == 0.0f) {
-        factor = 1.1f;
-        units = 4.0f;
-    }
-    GL_ENABLE(ctx, GL_POLYGON_OFFSET_FILL);
-    GL(ctx, PolygonOffset)(factor, units);
+    return !l->shadow_offset_off;
 }
 
 /* Eye-linear plane of the light-eye depth mapped to [0, 1] over [n, f],
@@ -234,65 +199,57 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
 {
     const stin_light_desc *l = &ctx->lights[li];
     const int *vp = ctx->frame.viewport;
-    uint32_t used = ctx->maps.used;
-    float saved_view[16];
-    int fbo = ctx->maps.fbo != 0;
+    uint32_t used = ctx->map_fixed.used;
+    stin__pass_state ps = stin__pass_defaults;
+    int fbo = ctx->map_fixed.fbo != 0;
+    ps.depth_test = 1;
     if (fbo) {
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->maps.fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER,
                                       combine(ctx) ? GL_COLOR_ATTACHMENT0 : GL_DEPTH_ATTACHMENT,
-                                      GL_TEXTURE_2D, ctx->maps.textures[slot], 0);
+                                      GL_TEXTURE_2D, ctx->map_fixed.textures[slot], 0);
         GL(ctx, Viewport)(0, 0, (GLsizei)used, (GLsizei)used);
     } else {
         GL(ctx, Viewport)(vp[0], vp[1], (GLsizei)used, (GLsizei)used);
-        GL_ENABLE(ctx, GL_SCISSOR_TEST);
-        GL(ctx, Scissor)(vp[0], vp[1], (GLsizei)used, (GLsizei)used);
+        ps.scissor = 1;
+        ps.scissor_box[0] = vp[0];
+        ps.scissor_box[1] = vp[1];
+        ps.scissor_box[2] = ps.scissor_box[3] = (int)used;
     }
-    GL_DISABLE(ctx, GL_BLEND); /* a lit pass may come before (point-light faces) */
-    GL(ctx, DepthMask)(GL_TRUE);
+    if (!combine(ctx)) {
+        ps.color_write = 0;
+        ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor, &ps.offset_units);
+    }
+    stin__pass_apply(ctx, &ps);
     /* A point-light face's empty texels hold a depth just under 1: a point
      * behind the face has r past 1, clamped to 1, and must fail there. */
-    GL(ctx, ClearDepth)(slot >= 32 ? 1.0 - 1.0 / 65536.0 : 1.0);
+    GL(ctx, ClearDepth)(slot >= STIN__FACE_SLOT ? 1.0 - 1.0 / 65536.0 : 1.0);
     GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (combine(ctx) ? GL_COLOR_BUFFER_BIT : 0u));
-    GL_ENABLE(ctx, GL_DEPTH_TEST);
-    GL(ctx, DepthFunc)(GL_LESS);
-    GL(ctx, MatrixMode)(GL_PROJECTION);
-    GL(ctx, LoadMatrixf)(proj);
     if (combine(ctx)) {
-        GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-        GL_DISABLE(ctx, GL_POLYGON_OFFSET_FILL);
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
-        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->maps.ramp);
+        stin__bind_unit(ctx, 0, GL_TEXTURE_1D, ctx->map_fixed.ramp);
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
         ramp_texgen_light_eye(ctx, n, f);
-    } else {
-        GL(ctx, ColorMask)(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        set_offset(ctx, l);
     }
-    stin__memcopy(saved_view, ctx->frame.view, sizeof saved_view);
-    stin__memcopy(ctx->frame.view, view, sizeof saved_view);
-    stin__fixed_draw_geometry(ctx);
-    stin__memcopy(ctx->frame.view, saved_view, sizeof saved_view);
+    stin__fixed_path()->depth(ctx, view, proj);
     if (combine(ctx)) {
         GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
         GL_DISABLE(ctx, GL_TEXTURE_1D);
         GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
+        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE); /* GL's default */
     }
-    GL_DISABLE(ctx, GL_POLYGON_OFFSET_FILL);
-    GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     if (fbo) {
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER,
                                       combine(ctx) ? GL_COLOR_ATTACHMENT0 : GL_DEPTH_ATTACHMENT,
                                       GL_TEXTURE_2D, 0, 0);
     } else {
         /* the colour (ramp) or depth of the region into the light's texture */
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.textures[slot]);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.textures[slot]);
         GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, vp[0], vp[1], (GLsizei)used,
                                    (GLsizei)used);
         GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-        GL_DISABLE(ctx, GL_SCISSOR_TEST);
     }
     ctx->stats.passes++;
 }
@@ -303,7 +260,7 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
                          const float proj[16], float n, float f)
 {
     float vp[16], bias[16], m[16];
-    float scale = (float)ctx->maps.used / (float)ctx->maps.size;
+    float scale = (float)ctx->map_fixed.used / (float)ctx->map_fixed.size;
     int r, c;
     stin__mat4_mul(vp, proj, view);
     stin__mat4_identity(bias);
@@ -313,28 +270,29 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
     stin__mat4_mul(m, bias, vp);
     for (r = 0; r < 4; r++)
         for (c = 0; c < 4; c++)
-            ctx->maps.texgen[slot][4 * r + c] = m[4 * c + r];
+            ctx->map_fixed.texgen[slot][4 * r + c] = m[4 * c + r];
     /* ramp coordinate of the fragment's own light-eye depth, a little nearer
      * than the stored one so a surface does not shadow itself (8-bit steps) */
     {
         float bias_steps = ctx->lights[li].shadow_offset_off ? 0.0f : 1.5f;
         float k = -1.0f / (f - n), o = -n / (f - n) - bias_steps / (float)(RAMP_SIZE - 1);
         for (c = 0; c < 4; c++)
-            ctx->maps.ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
+            ctx->map_fixed.ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
     }
 }
 
-void stin__maps_render(stin_context *ctx)
+/* Every spot and directional light's map, before the camera's clear. */
+static void fixed_prepass(stin_context *ctx)
 {
     uint32_t i;
     const int *vp = ctx->frame.viewport;
-    uint32_t limit = ctx->maps.size;
-    if (!ctx->maps.fbo) { /* drawn in the frame's own framebuffer */
+    uint32_t limit = ctx->map_fixed.size;
+    if (!ctx->map_fixed.fbo) { /* drawn in the frame's own framebuffer */
         uint32_t fit = (uint32_t)(vp[2] < vp[3] ? vp[2] : vp[3]);
         if (fit < limit)
             limit = pow2_at_most(fit);
     }
-    ctx->maps.used = limit;
+    ctx->map_fixed.used = limit;
     ctx->stats.shadow_map_size = limit;
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PushMatrix)();
@@ -342,38 +300,38 @@ void stin__maps_render(stin_context *ctx)
     GL(ctx, PushMatrix)();
     GL(ctx, EnableClientState)(GL_VERTEX_ARRAY);
     GL_DISABLE(ctx, GL_LIGHTING);
-    for (i = 0; i < ctx->light_count && i < 32; i++) {
+    for (i = 0; i < ctx->light_count && i < STIN__MAX_LIGHTS; i++) {
         const stin_light_desc *l = &ctx->lights[i];
         float view[16], proj[16], n, f;
-        ctx->maps.valid[i] = 0;
+        ctx->map_fixed.valid[i] = 0;
         if (l->type == STIN_LIGHT_POINT) {
-            if (!ctx->maps.said_point && !ctx->maps.faces) {
+            if (!ctx->map_fixed.said_point && !ctx->map_fixed.faces) {
                 stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                           "shadows: point lights need six depth maps drawn mid-frame (map-depth "
                           "with framebuffer objects); here they use %s",
                           (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) ? "stencil volumes"
                                                                                : "no shadows");
-                ctx->maps.said_point = 1;
+                ctx->map_fixed.said_point = 1;
             }
             continue;
         }
-        if (l->radius > 0.0f && !ctx->maps.said_area) {
+        if (l->radius > 0.0f && !ctx->map_fixed.said_area) {
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                       "shadows: shadow maps treat area lights as points (hard shadows)");
-            ctx->maps.said_area = 1;
+            ctx->map_fixed.said_area = 1;
         }
-        if (!stin__light_camera(ctx, l, view, proj, &n, &f, ctx->maps.used))
+        if (!stin__light_camera(ctx, l, view, proj, &n, &f, ctx->map_fixed.used))
             continue;
         render_one(ctx, i, i, view, proj, n, f);
         store_texgen(ctx, i, i, view, proj, n, f);
-        ctx->maps.valid[i] = 1;
+        ctx->map_fixed.valid[i] = 1;
     }
     GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PopMatrix)();
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PopMatrix)();
-    if (ctx->maps.fbo)
+    if (ctx->map_fixed.fbo)
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
     stin__gl_check_errors(ctx, "shadow maps");
 }
@@ -424,9 +382,10 @@ static void set_combine(stin_context *ctx, const combine_stage *c)
 
 static void bind_slot(stin_context *ctx, uint32_t li);
 
-int stin__maps_bind(stin_context *ctx, uint32_t li)
+/* 1 if light li has a map this frame; binds its test onto the shadow units. */
+static int bind_light(stin_context *ctx, uint32_t li)
 {
-    if (li >= 32 || !ctx->maps.valid[li])
+    if (li >= STIN__MAX_LIGHTS || !ctx->map_fixed.valid[li])
         return 0;
     bind_slot(ctx, li);
     return 1;
@@ -434,15 +393,15 @@ int stin__maps_bind(stin_context *ctx, uint32_t li)
 
 static void bind_slot(stin_context *ctx, uint32_t li)
 {
-    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->maps.unit);
+    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed.unit);
     /* planes are given in world space: specify them under the camera's view,
      * whose inverse GL applies, so any draw's eye coordinates map back */
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, LoadMatrixf)(ctx->frame.view);
     GL(ctx, ActiveTexture)(u);
     GL_ENABLE(ctx, GL_TEXTURE_2D);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.textures[li]);
-    texgen_planes(ctx, ctx->maps.texgen[li], !combine(ctx));
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.textures[li]);
+    texgen_planes(ctx, ctx->map_fixed.texgen[li], !combine(ctx));
     if (!combine(ctx)) {
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     } else {
@@ -456,9 +415,9 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         /* next unit: stored - own + 0.5 into alpha, colour passed on */
         GL(ctx, ActiveTexture)(u + 1u);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
-        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->maps.ramp);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->map_fixed.ramp);
         GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
-        GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->maps.ramp_plane[li]);
+        GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->map_fixed.ramp_plane[li]);
         GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
         set_combine(ctx, &compare);
         GL_ENABLE(ctx, GL_ALPHA_TEST);
@@ -471,9 +430,9 @@ static void bind_slot(stin_context *ctx, uint32_t li)
                                                                 GL_SINGLE_COLOR);
 }
 
-void stin__maps_unbind(stin_context *ctx)
+static void unbind(stin_context *ctx)
 {
-    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->maps.unit);
+    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed.unit);
     GL(ctx, ActiveTexture)(u);
     GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
     GL_DISABLE(ctx, GL_TEXTURE_GEN_T);
@@ -510,13 +469,16 @@ static float face_fov_deg(void)
     return (float)(2.0 * half);
 }
 
-int stin__maps_face(stin_context *ctx, uint32_t li, int face)
+/* Point lights with FBOs: renders cube face f (0..5: +x -x +y -y +z -z) of
+ * light li into the shared face map, binds its test and keeps drawing to the
+ * face's square (mask unit). 0 when the face sees nothing; face_end undoes it. */
+static int face_begin(stin_context *ctx, uint32_t li, int face)
 {
     const stin_light_desc *l = &ctx->lights[li];
     const float *ax = face_axis[face];
     float view[16], proj[16], n, f, half, center[3];
-    uint32_t slot = 32u + (uint32_t)face;
-    if (!ctx->maps.faces || l->type != STIN_LIGHT_POINT)
+    uint32_t slot = STIN__FACE_SLOT + (uint32_t)face;
+    if (!ctx->map_fixed.faces || l->type != STIN_LIGHT_POINT)
         return 0;
     stin__light_look_along(view, l->position, ax);
     stin__light_fit(ctx, view, 0, &n, &f, &half, center);
@@ -526,7 +488,7 @@ int stin__maps_face(stin_context *ctx, uint32_t li, int face)
         n = f * 1e-3f;
     /* tan(fov/2) = (N/2) / (N/2 - 1): the 90-degree square ends on a texel edge */
     stin__light_perspective(proj, face_fov_deg(), n, f);
-    ctx->maps.used = ctx->maps.size;
+    ctx->map_fixed.used = ctx->map_fixed.size;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     GL_DISABLE(ctx, GL_LIGHTING);
@@ -543,11 +505,11 @@ int stin__maps_face(stin_context *ctx, uint32_t li, int face)
      * behind the face the depth is past 1 and fails the comparison. */
     bind_slot(ctx, slot);
     {
-        GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->maps.unit + (combine(ctx) ? 2 : 1)));
+        GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->map_fixed.unit + (combine(ctx) ? 2 : 1)));
         GL(ctx, ActiveTexture)(mu);
         GL_ENABLE(ctx, GL_TEXTURE_2D);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->maps.face_mask);
-        texgen_planes(ctx, ctx->maps.texgen[slot], 0);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.face_mask);
+        texgen_planes(ctx, ctx->map_fixed.texgen[slot], 0);
         const combine_stage mask = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
                                     {GL_SRC_COLOR, GL_SRC_COLOR}, GL_REPLACE, {GL_PREVIOUS, 0},
                                     {GL_SRC_ALPHA, 0}};
@@ -557,10 +519,10 @@ int stin__maps_face(stin_context *ctx, uint32_t li, int face)
     return 1;
 }
 
-void stin__maps_face_end(stin_context *ctx)
+static void face_end(stin_context *ctx)
 {
-    GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->maps.unit + (combine(ctx) ? 2 : 1)));
-    stin__maps_unbind(ctx);
+    GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->map_fixed.unit + (combine(ctx) ? 2 : 1)));
+    unbind(ctx);
     GL(ctx, ActiveTexture)(mu);
     GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
     GL_DISABLE(ctx, GL_TEXTURE_GEN_T);
@@ -570,3 +532,56 @@ void stin__maps_face_end(stin_context *ctx)
     GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
+
+/* ---- the module ------------------------------------------------------------ */
+
+static int any_point_light(const stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->light_count; i++)
+        if (ctx->lights[i].type == STIN_LIGHT_POINT)
+            return 1;
+    return 0;
+}
+
+/* Point lights without faces fall back to volumes: the frame needs their
+ * projection then (the faces' passes are drawn with it too). */
+static void fixed_prepare(stin_context *ctx)
+{
+    if (any_point_light(ctx))
+        stin__volume_projection(ctx);
+}
+
+/* The light's map test on the lit pass; a point light's six faces each
+ * light their own pyramid, or its stencil volumes where there are no faces. */
+static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
+                        stin__shade_fn shade)
+{
+    const stin_light_desc *l = &ctx->lights[li];
+    int mapped = bind_light(ctx, li), face;
+    if (!mapped && l->type == STIN_LIGHT_POINT && ctx->map_fixed.faces) {
+        for (face = 0; face < STIN__CUBE_FACES; face++)
+            if (face_begin(ctx, li, face)) {
+                shade(ctx, path, l, 1.0f);
+                face_end(ctx);
+            }
+        return;
+    }
+    if (!mapped && l->type == STIN_LIGHT_POINT && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL))) {
+        float world[4];
+        world[0] = l->position[0];
+        world[1] = l->position[1];
+        world[2] = l->position[2];
+        world[3] = 1.0f;
+        stin__volume_light(ctx, path, world, NULL);
+    }
+    shade(ctx, path, l, 1.0f);
+    if (mapped)
+        unbind(ctx);
+    stin__volume_light_end(ctx);
+}
+
+const stin__shadow_technique stin__shadow_map_fixed = {
+    STIN_TECH_SHADOWS_MAP_DEPTH, NULL, fixed_init, fixed_release, fixed_prepare, fixed_prepass,
+    fixed_light, NULL,
+};

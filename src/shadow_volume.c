@@ -17,11 +17,10 @@ typedef struct volume_sink_state {
 static void sink(void *user, const float *xyzw, uint32_t n, int clockwise)
 {
     volume_sink_state *s = (volume_sink_state *)user;
-    if (clockwise)
-        GL(s->ctx, FrontFace)(GL_CW);
+    stin__pass_state ps = *stin__pass_current(s->ctx);
+    ps.front_face = clockwise ? GL_CW : GL_CCW;
+    stin__pass_apply(s->ctx, &ps);
     s->path->volume_draw(s->ctx, s->model, xyzw, n);
-    if (clockwise)
-        GL(s->ctx, FrontFace)(GL_CCW);
 }
 
 /* ---- frame set-up: projection ------------------------------------------- */
@@ -31,36 +30,22 @@ static int is_perspective(const float p[16])
     return p[3] == 0.0f && p[7] == 0.0f && p[11] == -1.0f && p[15] == 0.0f;
 }
 
-static int point_lights(const stin_context *ctx)
+void stin__volume_projection(stin_context *ctx)
 {
-    uint32_t i;
-    for (i = 0; i < ctx->light_count; i++)
-        if (ctx->lights[i].type == STIN_LIGHT_POINT)
-            return 1;
-    return 0;
-}
-
-void stin__volume_frame_setup(stin_context *ctx)
-{
-    stin__memcopy(ctx->projection, ctx->frame.projection, sizeof ctx->projection);
-    ctx->volume_depth_clamp = 0;
-    ctx->volume_infinite = 0;
-    if ((ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME ||
-         (stin__maps_active(ctx) && point_lights(ctx))) &&
-        ctx->light_count > 0) {
-        if (is_perspective(ctx->projection)) {
-            /* Row 3 of the frustum to (eps - 1, (eps - 2) n): the far plane goes to
-             * infinity and w = 0 vertices land just inside NDC z = 1. Preferred
-             * over depth clamp, which ties far caps with receivers at the far
-             * plane (measured: a streak of false shadow along the horizon). */
-            const float eps = 2.4e-7f;
-            float n = ctx->projection[14] / (ctx->projection[10] - 1.0f);
-            ctx->projection[10] = eps - 1.0f;
-            ctx->projection[14] = (eps - 2.0f) * n;
-            ctx->volume_infinite = 1;
-        } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP)) {
-            ctx->volume_depth_clamp = 1; /* orthographic: no P_inf exists */
-        }
+    if (ctx->light_count == 0)
+        return;
+    if (is_perspective(ctx->projection)) {
+        /* Row 3 of the frustum to (eps - 1, (eps - 2) n): the far plane goes to
+         * infinity and w = 0 vertices land just inside NDC z = 1. Preferred
+         * over depth clamp, which ties far caps with receivers at the far
+         * plane (measured: a streak of false shadow along the horizon). */
+        const float eps = 2.4e-7f;
+        float n = ctx->projection[14] / (ctx->projection[10] - 1.0f);
+        ctx->projection[10] = eps - 1.0f;
+        ctx->projection[14] = (eps - 2.0f) * n;
+        ctx->volume.infinite = 1;
+    } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP)) {
+        ctx->volume.depth_clamp = 1; /* orthographic: no P_inf exists */
     }
     stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);
 }
@@ -152,23 +137,6 @@ static int needs_zfail(const stin_context *ctx, const float light[4], const floa
     return 1;
 }
 
-/* ---- stencil state ------------------------------------------------------ */
-
-static void stencil_op(stin_context *ctx, GLenum fail, GLenum zfail, GLenum zpass)
-{
-    GLenum audited = zfail != GL_KEEP ? zfail : zpass;
-    GL_ENUM(ctx, StencilOp, audited)(fail, zfail, zpass);
-}
-
-/* Ops for back and front faces: z-pass counts faces in front of the
- * surface, z-fail the ones behind it. */
-static void ops_for(int zfail, int back, GLenum incr, GLenum decr, GLenum out[3])
-{
-    out[0] = GL_KEEP;
-    out[1] = zfail ? (back ? incr : decr) : GL_KEEP;
-    out[2] = zfail ? GL_KEEP : (back ? decr : incr);
-}
-
 static void draw_caster(stin_context *ctx, const stin__path *path, const stin__draw *d,
                         const float light_world[4], int zfail)
 {
@@ -189,9 +157,10 @@ static void draw_caster(stin_context *ctx, const stin__path *path, const stin__d
     r.tri_count = m->triangle_count;
     r.closed = m->info.closed_manifold;
     r.caps = zfail;
-    r.facing = ctx->scratch;
-    r.buffer = (float *)(void *)(ctx->scratch + stin__align16(m->triangle_count));
-    r.buffer_vertices = (uint32_t)((ctx->scratch_bytes - stin__align16(m->triangle_count)) / 16u);
+    r.facing = ctx->frame_scratch;
+    r.buffer = (float *)(void *)(ctx->frame_scratch + stin__align16(m->triangle_count));
+    r.buffer_vertices =
+        (uint32_t)((ctx->frame_scratch_bytes - stin__align16(m->triangle_count)) / 16u);
     r.buffer_vertices -= r.buffer_vertices % 3u;
     st.ctx = ctx;
     st.path = path;
@@ -224,6 +193,18 @@ static void caster_bounds(const stin_context *ctx, const stin__draw *d, float ce
     *radius = stin__sqrtf(r2) * 1.001f;
 }
 
+/* Stencil operations of one face: z-pass counts faces in front of the
+ * surface, z-fail the ones behind it. */
+static void face_ops(stin__stencil_face *f, int zfail, int back, GLenum incr, GLenum decr)
+{
+    f->func = GL_ALWAYS;
+    f->ref = 0;
+    f->mask = 0xffffffffu;
+    f->fail = GL_KEEP;
+    f->zfail = zfail ? (back ? incr : decr) : GL_KEEP;
+    f->zpass = zfail ? GL_KEEP : (back ? decr : incr);
+}
+
 void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
                         const int scissor[4])
 {
@@ -232,30 +213,29 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
                     (caps & (STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
                              STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)));
     GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
+    stin__pass_state ps = stin__pass_defaults;
     uint32_t i;
+    int k;
     /* The frame's viewport at most: the stencil of the rest of the
      * framebuffer (other viewports of a no_clear frame) is not ours. */
     if (NO_SCISSOR(scissor))
         scissor = ctx->frame.viewport;
-    GL_ENABLE(ctx, GL_SCISSOR_TEST);
-    GL(ctx, Scissor)(scissor[0], scissor[1], scissor[2], scissor[3]);
-    GL(ctx, StencilMask)(0xffffffffu);
+    ps.depth_test = 1;
+    ps.depth_write = 0;
+    ps.color_write = 0;
+    ps.scissor = 1;
+    for (k = 0; k < 4; k++)
+        ps.scissor_box[k] = scissor[k];
+    ps.depth_clamp = (unsigned char)ctx->volume.depth_clamp;
+    ps.stencil_test = 1;
+    stin__pass_apply(ctx, &ps);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);
-    GL_ENABLE(ctx, GL_STENCIL_TEST);
-    GL(ctx, StencilFunc)(GL_ALWAYS, 0, 0xffffffffu);
-    GL(ctx, ColorMask)(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    GL(ctx, DepthMask)(GL_FALSE);
-    GL(ctx, DepthFunc)(GL_LESS);
-    GL_DISABLE(ctx, GL_BLEND);
-    GL(ctx, FrontFace)(GL_CCW);
-    if (ctx->volume_depth_clamp)
-        GL_ENABLE(ctx, GL_DEPTH_CLAMP);
     path->volume_begin(ctx);
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         float center[3], radius;
-        GLenum back[3], front[3];
+        stin__stencil_face back, front;
         int zfail;
         caster_bounds(ctx, d, center, &radius);
         zfail = (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_ZFAIL)   ? 1
@@ -265,51 +245,54 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
             ctx->stats.zfail_casters++;
         else
             ctx->stats.zpass_casters++;
-        ops_for(zfail, 1, incr, decr, back);
-        ops_for(zfail, 0, incr, decr, front);
+        face_ops(&back, zfail, 1, incr, decr);
+        face_ops(&front, zfail, 0, incr, decr);
         if (two_sided) {
-            GL_DISABLE(ctx, GL_CULL_FACE);
-            if (caps & STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)) {
-                GL(ctx, StencilOpSeparate)(GL_BACK, back[0], back[1], back[2]);
-                GL(ctx, StencilOpSeparate)(GL_FRONT, front[0], front[1], front[2]);
-            } else {
-                GL_ENABLE(ctx, GL_STENCIL_TEST_TWO_SIDE_EXT);
-                GL(ctx, ActiveStencilFaceEXT)(GL_BACK);
-                stencil_op(ctx, back[0], back[1], back[2]);
-                GL(ctx, StencilFunc)(GL_ALWAYS, 0, 0xffffffffu);
-                GL(ctx, ActiveStencilFaceEXT)(GL_FRONT);
-                stencil_op(ctx, front[0], front[1], front[2]);
-            }
+            ps.cull = 0;
+            ps.two_sided = 1;
+            ps.front = front;
+            ps.back = back;
+            stin__pass_apply(ctx, &ps);
             draw_caster(ctx, path, d, light_world, zfail);
         } else {
             /* Increments first (z-pass: front faces, z-fail: back faces), so a
              * clamped count never has to go below zero. */
-            GL_ENABLE(ctx, GL_CULL_FACE);
-            GL(ctx, CullFace)(zfail ? GL_FRONT : GL_BACK);
-            stencil_op(ctx, zfail ? back[0] : front[0], zfail ? back[1] : front[1],
-                       zfail ? back[2] : front[2]);
+            ps.cull = 1;
+            ps.cull_face = zfail ? GL_FRONT : GL_BACK;
+            ps.front = zfail ? back : front;
+            stin__pass_apply(ctx, &ps);
             draw_caster(ctx, path, d, light_world, zfail);
-            GL(ctx, CullFace)(zfail ? GL_BACK : GL_FRONT);
-            stencil_op(ctx, zfail ? front[0] : back[0], zfail ? front[1] : back[1],
-                       zfail ? front[2] : back[2]);
+            ps.cull_face = zfail ? GL_BACK : GL_FRONT;
+            ps.front = zfail ? front : back;
+            stin__pass_apply(ctx, &ps);
             draw_caster(ctx, path, d, light_world, zfail);
         }
     }
     path->volume_end(ctx);
-    if (two_sided && !(caps & STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL))) {
-        GL_DISABLE(ctx, GL_STENCIL_TEST_TWO_SIDE_EXT);
-        GL(ctx, ActiveStencilFaceEXT)(GL_FRONT);
-    }
-    GL_DISABLE(ctx, GL_CULL_FACE);
-    GL(ctx, CullFace)(GL_BACK);
-    if (ctx->volume_depth_clamp)
-        GL_DISABLE(ctx, GL_DEPTH_CLAMP);
-    GL(ctx, ColorMask)(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    ps = *stin__pass_current(ctx);
+    ps.front_face = GL_CCW;
     /* Lit where the count is zero; INCR keeps a second fragment at the same
      * depth from being lit twice. */
-    GL(ctx, StencilFunc)(GL_EQUAL, 0, 0xffffffffu);
-    GL(ctx, StencilOp)(GL_KEEP, GL_KEEP, GL_INCR);
+    ps.cull = 0;
+    ps.cull_face = GL_BACK;
+    ps.depth_clamp = 0;
+    ps.color_write = 1;
+    ps.two_sided = 0;
+    ps.front.func = GL_EQUAL;
+    ps.front.ref = 0;
+    ps.front.mask = 0xffffffffu;
+    ps.front.fail = ps.front.zfail = GL_KEEP;
+    ps.front.zpass = GL_INCR;
+    stin__pass_apply(ctx, &ps);
     ctx->stats.passes++;
+}
+
+void stin__volume_light_end(stin_context *ctx)
+{
+    stin__pass_state ps = *stin__pass_current(ctx);
+    ps.stencil_test = 0;
+    ps.scissor = 0;
+    stin__pass_apply(ctx, &ps);
 }
 
 /* Bounding rectangle of the light's sphere of influence on screen. */
@@ -353,3 +336,58 @@ int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int o
     out[3] = vp[1] + (int)((maxy * 0.5f + 0.5f) * (float)vp[3] + 1.0f) - out[1];
     return 1;
 }
+
+/* ---- the module ------------------------------------------------------------ */
+
+/* Samples of a light: several for an area light with soft shadows. */
+static uint32_t light_samples(const stin_context *ctx, const stin_light_desc *l)
+{
+    return l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL ? ctx->desc.soft_shadow_samples
+                                                                  : 1u;
+}
+
+/* One light sample as a homogeneous world position (w = 0: toward the light). */
+static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_light_desc *out,
+                         float world[4])
+{
+    *out = *l;
+    if (l->type == STIN_LIGHT_DIRECTIONAL) {
+        world[0] = -l->direction[0];
+        world[1] = -l->direction[1];
+        world[2] = -l->direction[2];
+        world[3] = 0.0f;
+        return;
+    }
+    stin_light_sample(l, i, n, out->position);
+    out->intensity = l->intensity / (float)n;
+    world[0] = out->position[0];
+    world[1] = out->position[1];
+    world[2] = out->position[2];
+    world[3] = 1.0f;
+}
+
+static void volume_prepare(stin_context *ctx) { stin__volume_projection(ctx); }
+
+/* Per light sample: its volumes counted into the stencil, then the sample
+ * shaded where the count is zero, within the light's scissor. */
+static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint32_t li,
+                                stin__shade_fn shade)
+{
+    const stin_light_desc *l = &ctx->lights[li];
+    uint32_t s, n = light_samples(ctx, l);
+    int rect[4], scissored = stin__light_scissor(ctx, l, rect);
+    if (scissored && (rect[2] <= 0 || rect[3] <= 0))
+        return; /* the light touches nothing on screen */
+    for (s = 0; s < n; s++) {
+        stin_light_desc one;
+        float world[4];
+        sample_light(l, s, n, &one, world);
+        stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+        shade(ctx, path, &one, 1.0f / (float)n);
+    }
+    stin__volume_light_end(ctx);
+}
+
+const stin__shadow_technique stin__shadow_volume = {
+    STIN_TECH_SHADOWS_VOLUME, NULL, NULL, NULL, volume_prepare, NULL, volume_shadow_light, NULL,
+};

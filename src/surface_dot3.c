@@ -14,7 +14,7 @@
  *
  *   unit 0  normalisation cube map; texture coordinates = the vector from the
  *           vertex to the light in the vertex's tangent frame (unnormalised,
- *           computed per frame into the arena scratch), interpolated, and
+ *           computed per frame into the frame scratch), interpolated, and
  *           normalised per pixel by the lookup: REPLACE
  *   unit 1  normal map at uv: DOT3_RGB(texture, previous) = max(N . L, 0)
  *   unit 2  MODULATE(previous, primary colour)
@@ -89,16 +89,14 @@ static void env(stin_context *ctx, GLenum pname, GLenum param)
 
 static stin_result fall_back(stin_context *ctx, const char *why)
 {
-    stin_choice *c = &ctx->sel.choice[STIN_FEATURE_SURFACE];
+    char text[160];
     if (ctx->desc.techniques[STIN_FEATURE_SURFACE] == STIN_TECH_SURFACE_DOT3) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_TECHNIQUE_UNSUPPORTED,
                   "stin_create: surface technique dot3 was forced but %s", why);
         return STIN_ERROR_UNSUPPORTED;
     }
-    stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "surface: dot3 %s; falling back to plain",
-              why);
-    c->technique = STIN_TECH_SURFACE_PLAIN;
-    stin__formatf(c->reason, sizeof c->reason, "fallback: dot3 %s", why);
+    stin__formatf(text, sizeof text, "dot3 %s", why);
+    stin__demote(ctx, STIN_FEATURE_SURFACE, STIN_TECH_SURFACE_PLAIN, text);
     return STIN_OK;
 }
 
@@ -115,11 +113,6 @@ stin_result stin__dot3_init(stin_context *ctx)
     stin__memzero(&ctx->dot3, sizeof ctx->dot3);
     if (ctx->sel.choice[STIN_FEATURE_SURFACE].technique != STIN_TECH_SURFACE_DOT3)
         return STIN_OK;
-    if (ctx->caps.max_texture_units < 3) {
-        stin__formatf(why, sizeof why, "needs 3 texture units, the context has %d",
-                      ctx->caps.max_texture_units);
-        return fall_back(ctx, why);
-    }
     while (size > 8u && 4u * size * size > buf_bytes)
         size /= 2u; /* 16 or 8 texels a side still normalise to within 0.5% */
     if (4u * size * size > buf_bytes) {
@@ -127,7 +120,7 @@ stin_result stin__dot3_init(stin_context *ctx)
                       "the context has %zu", 4u * size * size, buf_bytes);
         return fall_back(ctx, why);
     }
-    ctx->dot3.units = ctx->caps.max_texture_units >= 4 ? 4 : 3;
+    ctx->dot3.units = ctx->sel.shadow_unit; /* 3, or 4 where selection spared one (albedo) */
     ctx->dot3.dot3_rgb = ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 13 ||
                                  stin_has_extension(ctx, "GL_ARB_texture_env_dot3")
                              ? GL_DOT3_RGB
@@ -135,7 +128,6 @@ stin_result stin__dot3_init(stin_context *ctx)
     GL(ctx, GenTextures)(1, &ctx->dot3.cube);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL_ENUM(ctx, BindTexture, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, ctx->dot3.cube);
-    GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
     GL_ENUM(ctx, TexParameteri, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER,
                                                      GL_LINEAR);
     GL_ENUM(ctx, TexParameteri, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER,
@@ -148,8 +140,7 @@ stin_result stin__dot3_init(stin_context *ctx)
     for (face = 0; face < 6; face++) {
         GLenum target = (GLenum)(GL_TEXTURE_CUBE_MAP_POSITIVE_X + (GLenum)face);
         stin__dot3_cube_face(face, size, buf);
-        GL_ENUM(ctx, TexImage2D, target)(target, 0, GL_RGBA8, (GLsizei)size, (GLsizei)size, 0,
-                                         GL_RGBA, GL_UNSIGNED_BYTE, buf);
+        stin__upload_bytes(ctx, target, GL_RGBA8, size, size, GL_RGBA, buf);
     }
     GL_ENUM(ctx, BindTexture, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, 0);
     stin__gl_check_errors(ctx, "dot3 normalisation cube map");
@@ -409,10 +400,10 @@ static void draw_plain_diffuse(stin_context *ctx, const stin__draw *d, const voi
     if (!ctx->dot3.warned_scratch) {
         ctx->dot3.warned_scratch = 1;
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                  "surface dot3: a mesh of %u vertices needs %lu scratch bytes, %zu available; "
+                  "surface dot3: a mesh of %u vertices needs %lu frame scratch bytes, %zu available; "
                   "drawn with per-vertex diffuse", m->vertex_count,
                   (unsigned long)(m->vertex_count * FLOATS_PER_VERTEX * sizeof(float)),
-                  ctx->scratch_bytes);
+                  ctx->frame_scratch_bytes);
     }
     if (m->vbo)
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
@@ -443,8 +434,8 @@ static void draw_bumped(stin_context *ctx, const stin__draw *d, const float ligh
     const GLsizei stride = (GLsizei)sizeof(stin__vertex);
     const void *base = m->vbo ? NULL : (const void *)(ctx->vertices + m->first_vertex);
     const void *idx = m->vbo ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
-    const float *vec = (const float *)(void *)ctx->scratch;
-    int fits = (size_t)m->vertex_count * FLOATS_PER_VERTEX * sizeof(float) <= ctx->scratch_bytes;
+    const float *vec = (const float *)(void *)ctx->frame_scratch;
+    int fits = (size_t)m->vertex_count * FLOATS_PER_VERTEX * sizeof(float) <= ctx->frame_scratch_bytes;
     float mv[16];
     stin__mat4_mul(mv, ctx->frame.view, d->transform);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
@@ -474,9 +465,9 @@ static void draw_bumped(stin_context *ctx, const stin__draw *d, const float ligh
         draw_plain_diffuse(ctx, d, base);
         return;
     }
-    /* The lit pass runs after the volume pass: the scratch is free. */
+    /* The lit pass runs after the volume pass: the frame scratch is free. */
     stin__dot3_light_vectors(ctx->vertices + m->first_vertex, m->vertex_count, d->transform,
-                             light_world, (float *)(void *)ctx->scratch);
+                             light_world, (float *)(void *)ctx->frame_scratch);
     client_unit(ctx, 0);
     GL(ctx, TexCoordPointer)(3, GL_FLOAT, (GLsizei)(FLOATS_PER_VERTEX * sizeof(float)), vec);
     GL(ctx, NormalPointer)(GL_FLOAT, (GLsizei)(FLOATS_PER_VERTEX * sizeof(float)), vec + 3);
@@ -525,7 +516,7 @@ static int light_scale(stin_context *ctx, const stin_light_desc *l, int gl_light
 static int passes(stin_context *ctx, const stin_light_desc *lights, int count)
 {
     static const float black[4] = {0, 0, 0, 1};
-    GLint op[3];
+    stin__pass_state saved, ps;
     int k, j, scale;
     uint32_t i;
     if (count <= 0 || !ctx->dot3.cube || !any_bumped(ctx))
@@ -534,18 +525,15 @@ static int passes(stin_context *ctx, const stin_light_desc *lights, int count)
      * schedule increments where it lights (so coplanar fragments are lit
      * once), which would keep the plain pass of the same light from adding
      * its specular after this one. */
-    GL(ctx, GetIntegerv)(GL_STENCIL_FAIL, &op[0]);
-    GL(ctx, GetIntegerv)(GL_STENCIL_PASS_DEPTH_FAIL, &op[1]);
-    GL(ctx, GetIntegerv)(GL_STENCIL_PASS_DEPTH_PASS, &op[2]);
-    GL(ctx, StencilOp)(GL_KEEP, GL_KEEP, GL_KEEP);
+    saved = *stin__pass_current(ctx);
+    ps = stin__pass_draw(ctx, 1, 0);
+    ps.two_sided = 0;
+    ps.front.fail = ps.front.zfail = ps.front.zpass = GL_KEEP;
+    stin__pass_apply(ctx, &ps);
     GL(ctx, LightModelfv)(GL_LIGHT_MODEL_AMBIENT, black);
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_AMBIENT, black);
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_SPECULAR, black);
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_EMISSION, black);
-    GL(ctx, DepthFunc)(GL_EQUAL);
-    GL(ctx, DepthMask)(GL_FALSE);
-    GL_ENABLE(ctx, GL_BLEND);
-    GL(ctx, BlendFunc)(GL_ONE, GL_ONE);
     setup_units(ctx);
     for (k = 0; k < count; k++) {
         float lw[4];
@@ -578,7 +566,7 @@ static int passes(stin_context *ctx, const stin_light_desc *lights, int count)
         for (j = 0; j < count; j++)
             GL_ENABLE(ctx, (GLenum)(GL_LIGHT0 + j));
     restore_units(ctx);
-    GL(ctx, StencilOp)((GLenum)op[0], (GLenum)op[1], (GLenum)op[2]);
+    stin__pass_apply(ctx, &saved);
     return 1;
 }
 

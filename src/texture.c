@@ -228,15 +228,13 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     }
     GL(ctx, GenTextures)(1, &t->name);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, t->name);
-    GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
                            mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
     for (;;) {
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, (GLint)level, GL_RGBA8, (GLsizei)w, (GLsizei)h, 0,
-                            GL_RGBA, GL_UNSIGNED_BYTE, src);
+        stin__upload_level(ctx, GL_TEXTURE_2D, (GLint)level, GL_RGBA8, w, h, GL_RGBA, src);
         if (!mips || (w == 1 && h == 1))
             break;
         /* The next level goes right after this one in staging. */
@@ -274,6 +272,12 @@ void stin_destroy_texture(stin_context *ctx, stin_texture tex)
                       "stin_destroy_texture: stale or unknown handle 0x%x", tex.id);
         return;
     }
+    if (ctx->state == STIN__IN_FRAME) { /* queued draws still name it */
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE,
+                  "%s: a frame is open and its draws may use this %s; destroy it after "
+                  "stin_end_frame", "stin_destroy_texture", "texture");
+        return;
+    }
     GL(ctx, DeleteTextures)(1, &t->name);
     t->alive = 0;
     t->name = 0;
@@ -287,4 +291,29 @@ void stin__texture_release_all(stin_context *ctx)
             GL(ctx, DeleteTextures)(1, &ctx->textures[i].name);
             ctx->textures[i].alive = 0;
         }
+}
+
+/* Tightly packed rows: alignment 1 for the upload, the caller's value after
+ * (the header promises pixel-store state is left alone). */
+void stin__upload_level(stin_context *ctx, GLenum target, GLint level, GLenum internal_format,
+                        uint32_t w, uint32_t h, GLenum format, const void *pixels)
+{
+    GLint saved = 4;
+    GL(ctx, GetIntegerv)(GL_UNPACK_ALIGNMENT, &saved);
+    if (saved != 1)
+        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
+    if (target == GL_TEXTURE_1D)
+        GL(ctx, TexImage1D)(target, level, (GLint)internal_format, (GLsizei)w, 0, format,
+                            GL_UNSIGNED_BYTE, pixels);
+    else
+        GL_ENUM(ctx, TexImage2D, target)(target, level, (GLint)internal_format, (GLsizei)w,
+                                         (GLsizei)h, 0, format, GL_UNSIGNED_BYTE, pixels);
+    if (saved != 1)
+        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, saved);
+}
+
+void stin__upload_bytes(stin_context *ctx, GLenum target, GLenum internal_format, uint32_t w,
+                        uint32_t h, GLenum format, const void *pixels)
+{
+    stin__upload_level(ctx, target, 0, internal_format, w, h, format, pixels);
 }

@@ -266,13 +266,29 @@ typedef enum stin_feature {
     STIN_FEATURE_LIGHTING = 0,
     STIN_FEATURE_SHADOWS,
     STIN_FEATURE_SURFACE,
+    /* Reserved axes: each has one technique today, the behaviour stin has
+     * had so far; the GL4 work adds the others to their chains. */
+    STIN_FEATURE_TRANSLUCENT_SHADOWS, /* how casters with alpha < 1 shadow */
+    STIN_FEATURE_DISPLACEMENT,        /* geometry moved by height maps */
+    STIN_FEATURE_CSG,                 /* image-based CSG products */
     STIN_FEATURE_COUNT
 } stin_feature;
 
 const char *stin_feature_name(stin_feature f);
 
-/* X(id, name, feature, tier it belongs to) — each feature's chain is this
- * list's order, best first, filtered by the tier ceiling and the caps.
+/* X(id, name, feature, tier it belongs to). New techniques are appended, so
+ * values never change; each feature's chain (best first) is the library's
+ * own ranking, filtered by the tier ceiling, the caps and the texture units
+ * the chosen techniques need together (GL_MAX_TEXTURE_IMAGE_UNITS with GLSL
+ * lighting, GL_MAX_TEXTURE_UNITS with fixed-function lighting; features are
+ * chosen lighting, shadows, surface, so shadows outrank surface detail for
+ * units, and a forced technique's units are set aside first):
+ *   lighting: glsl150-per-pixel, glsl110-per-pixel, fixed-function
+ *   shadows:  volume, map-pcf, map-depth, map-combine, off
+ *   surface:  pom, parallax, normal, dot3, plain
+ * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 3 (its
+ * four are units 0-3); map-pcf 6; map-depth 1 (plus 1 for point-light faces
+ * when there is one to spare); map-combine 2.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
  * with a normalisation cube map; it needs multitexture, texture_env_combine,
  * texture_env_dot3, cube maps and 3 texture units (4 for a material that
@@ -331,7 +347,10 @@ const char *stin_feature_name(stin_feature f);
     X(SURFACE_PARALLAX, "parallax", STIN_FEATURE_SURFACE, STIN_TIER_GL2)  \
     X(SURFACE_NORMAL, "normal", STIN_FEATURE_SURFACE, STIN_TIER_GL2)      \
     X(SURFACE_DOT3, "dot3", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
-    X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)
+    X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
+    X(TRANSLUCENT_SOLID, "translucent-solid", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
+    X(DISPLACEMENT_OFF, "displacement-off", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL1) \
+    X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -348,6 +367,7 @@ stin_feature stin_technique_feature(stin_technique t);
 
 typedef struct stin_choice {
     stin_technique technique;
+    int fell_back;    /* 1 when a better technique of the chain could not run */
     char reason[160]; /* why this one; names the capability that made it fall back */
 } stin_choice;
 
@@ -450,6 +470,7 @@ stin_result stin_mesh_adjacency(const stin_context *ctx, stin_mesh mesh, uint32_
 /* Tangent (xyz) and handedness (w = +1/-1) of a vertex. */
 stin_result stin_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uint32_t vertex,
                               float out_tangent[4]);
+/* Refused (logged, the mesh stays) while a frame is open: its draws may use it. */
 void stin_destroy_mesh(stin_context *ctx, stin_mesh mesh);
 
 /* ---- textures ----------------------------------------------------------- */
@@ -478,6 +499,7 @@ typedef struct stin_texture_desc {
 
 stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc,
                                 stin_texture *out);
+/* Refused (logged, the texture stays) while a frame is open: its draws may use it. */
 void stin_destroy_texture(stin_context *ctx, stin_texture tex);
 
 /* ---- frames ------------------------------------------------------------- */

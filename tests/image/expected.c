@@ -11,15 +11,17 @@
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 #define DOT3 STIN_TECH_SURFACE_DOT3
 #define POM STIN_TECH_SURFACE_POM
+/* the reserved axes have one technique each so far */
+#define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_OFF
 
 static const expected_profile table[] = {
-    {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN}, {1, 0, 0}},
-    {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3}, {1, 0, 0}},
-    {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3}, {1, 0, 0}},
-    {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM}, {1, 1, 0}},
-    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM}, {0, 0, 1}},
-    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM}, {0, 0, 1}},
-    {"native", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM}, {1, 1, 1}},
+    {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},
+    {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
+    {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
+    {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED}, {1, 1, 0}},
+    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, RESERVED}, {0, 0, 1}},
+    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, RESERVED}, {0, 0, 1}},
+    {"native", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, RESERVED}, {1, 1, 1}},
 };
 
 const expected_profile *expected_find(const char *profile)

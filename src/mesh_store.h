@@ -1,0 +1,85 @@
+/* Meshes and textures in the caller's block (mesh*.c, texture.c) and the
+ * shadow-volume geometry built from them (shadow_volume_geometry.c). */
+#ifndef STIN_MESH_STORE_H
+#define STIN_MESH_STORE_H
+
+#include "stin/stin.h"
+#include "gl_types.h"
+
+
+/* ---- meshes and textures ------------------------------------------------ */
+typedef struct stin__vertex {
+    float position[3];
+    float normal[3];
+    float uv[2];
+    float tangent[4];
+} stin__vertex;
+
+typedef struct stin__mesh_slot {
+    uint32_t generation;
+    int alive;
+    uint32_t first_vertex, vertex_count;
+    uint32_t first_triangle, triangle_count;
+    stin_mesh_info info;
+    GLuint vbo, ibo, vao;
+} stin__mesh_slot;
+
+typedef struct stin__texture_slot {
+    uint32_t generation;
+    int alive;
+    stin_texture_kind kind;
+    uint32_t width, height;
+    GLuint name;
+} stin__texture_slot;
+
+
+stin__mesh_slot *stin__mesh_lookup(const stin_context *ctx, stin_mesh mesh, uint32_t *slot);
+void stin__mesh_release_all(stin_context *ctx);
+void stin__texture_release_all(stin_context *ctx);
+stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex);
+
+/* Points attributes 0..3 (position, normal, uv, tangent) at base (NULL with a VBO bound). */
+void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base);
+/* Adjacency over position-welded vertices; fills info's edge counts. */
+stin_result stin__mesh_adjacency_build(stin_context *ctx, const stin__vertex *verts,
+                                       uint32_t vertex_count, const uint32_t *tris,
+                                       uint32_t tri_count, uint32_t *adjacency,
+                                       stin_mesh_info *info);
+/* Bytes of scratch the adjacency build needs for these sizes. */
+size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count);
+/* Per-vertex tangents (Gram-Schmidt, handedness in w); uses scratch. */
+void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint32_t *tris,
+                         uint32_t tri_count, float *scratch_bitangents, int have_uvs);
+void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
+                                const uint32_t *tris, uint32_t tri_count);
+
+/* ---- shadow volumes ----------------------------------------------------- */
+/* clockwise: the triangles are wound clockwise toward their outside (front
+ * face CW for this batch). */
+typedef void (*stin__volume_sink)(void *user, const float *xyzw, uint32_t vertex_count,
+                                  int clockwise);
+typedef struct stin__volume_request {
+    const stin__vertex *verts;
+    const uint32_t *tris, *adjacency;
+    uint32_t tri_count;
+    int closed;            /* classic volume of a closed 2-manifold caster */
+    int caps;              /* light and dark caps (z-fail) */
+    float light[4];        /* object space; w = 1 point, w = 0 directional (toward the light) */
+    float *buffer;         /* chunk of 4-float vertices */
+    uint32_t buffer_vertices;
+    unsigned char *facing; /* tri_count bytes of scratch */
+    stin__volume_sink sink;
+    void *user;
+} stin__volume_request;
+/* Emits the volume through r->sink; returns the triangles emitted. */
+uint32_t stin__volume_build(const stin__volume_request *r);
+int stin__triangle_faces_light(const float *a, const float *b, const float *c, const float l[4]);
+
+/* Uploads one level of 8-bit texels, tightly packed (GL_UNPACK_ALIGNMENT
+ * 1 for the call, the caller's value restored); a 1D target ignores h. */
+void stin__upload_level(stin_context *ctx, GLenum target, GLint level, GLenum internal_format,
+                        uint32_t w, uint32_t h, GLenum format, const void *pixels);
+void stin__upload_bytes(stin_context *ctx, GLenum target, GLenum internal_format, uint32_t w,
+                        uint32_t h, GLenum format, const void *pixels);
+
+#endif

@@ -1,0 +1,76 @@
+/* The lighting paths (path_fixed.c: GL1 fixed function; path_glsl.c: GL2 and
+ * GL4 GLSL) and what the frame plan asks of them. */
+#ifndef STIN_PATH_H
+#define STIN_PATH_H
+
+#include "stin/stin.h"
+#include "gl_types.h"
+
+
+typedef struct stin__draw {
+    uint32_t mesh_slot;
+    float transform[16];
+    stin_material material;
+    float sort_depth;  /* eye-space distance of the bounds centre, for blending order */
+} stin__draw;
+
+/* GLSL programs of one tier. */
+enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_VOLUME, STIN__PROG_COUNT };
+#define STIN__LIGHTS_PER_PASS 8
+#define STIN__SHADOW_SAMPLERS 6 /* map-pcf: one map, or a point light's six faces */
+typedef struct stin__program {
+    GLuint name;
+    GLint u_model, u_view_proj, u_normal_matrix, u_eye, u_ambient, u_albedo, u_specular,
+        u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
+    /* surface chunks (surface_glsl.c): samplers and (scale, bias, min, max steps) */
+    GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
+    /* map-pcf chunk (shadow_map_pcf.c) */
+    GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_maps[STIN__SHADOW_SAMPLERS];
+    uint32_t frame_serial;   /* ctx->glsl.serial its per-frame uniforms have */
+} stin__program;
+
+/* Which draws a pass covers. */
+enum { STIN__OPAQUE = 1, STIN__BLENDED = 2, STIN__ALL = 3 };
+
+/* What a lighting path (fixed function or GLSL) offers the frame plan. */
+typedef struct stin__path {
+    void (*begin)(stin_context *ctx);
+    void (*end)(stin_context *ctx);
+    /* Ambient light only, depth LESS with writes; colour masked when depth_only. */
+    void (*ambient)(stin_context *ctx, int which, int depth_only);
+    /* Opaque draws lit by this one light, added with depth EQUAL; the stencil
+     * state the shadow technique set applies. */
+    void (*lit)(stin_context *ctx, const stin_light_desc *light);
+    /* Draws in one colour times the shadow test of `light` where the shader
+     * does it (NULL: none), added with depth EQUAL: the visibility output. */
+    void (*flat)(stin_context *ctx, int which, const float color[4], const stin_light_desc *light);
+    /* Shadow-volume triangles: homogeneous object-space vertices. */
+    void (*volume_begin)(stin_context *ctx);
+    void (*volume_draw)(stin_context *ctx, const float model[16], const float *xyzw, uint32_t n);
+    /* (FrontFace is set by the caller around volume_draw.) */
+    void (*volume_end)(stin_context *ctx);
+    /* All lights in batches without shadows: the unshadowed beauty. */
+    void (*batches)(stin_context *ctx, int which);
+    /* World normals as 0.5 + 0.5 n. */
+    void (*normals)(stin_context *ctx);
+    /* Every draw's depth seen through view_proj (light views, matrices
+     * restored after), no materials: shadow-map casters. */
+    void (*depth)(stin_context *ctx, const float view[16], const float proj[16]);
+} stin__path;
+
+stin_result stin__fixed_init(stin_context *ctx);
+const stin__path *stin__fixed_path(void);
+stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size);
+void stin__glsl_release(stin_context *ctx);
+const stin__path *stin__glsl_path(void);
+/* The chosen lighting technique's path. */
+const stin__path *stin__path_of(const stin_context *ctx);
+
+/* frag_chunks: NULL or a NULL-terminated list of embedded files spliced in
+ * at the fragment shader's "// @chunks" line (its functions). */
+GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
+                           const char *const *frag_chunks, char *msg, size_t size);
+/* Embedded shader source by file name ("gl2/lit.vert"), NULL if unknown. */
+const char *stin__shader_source(const char *name);
+
+#endif

@@ -1,0 +1,112 @@
+/* Shadow techniques: one module each behind one interface (shadow_volume.c,
+ * shadow_map_fixed.c, shadow_map_pcf.c, shadow_off.c), each owning its
+ * state, and the light cameras the map techniques share
+ * (shadow_light_camera.c). The frame plan (frame.c) calls the hooks; a new
+ * technique is a module plus a row in technique_table.c. */
+#ifndef STIN_SHADOW_H
+#define STIN_SHADOW_H
+
+#include "stin/stin.h"
+#include "gl_types.h"
+#include "path.h"
+
+#define STIN__MAX_LIGHTS 32  /* desc.max_lights at most */
+#define STIN__CUBE_FACES 6
+/* Map slots: one per light, then the point lights' six shared faces. */
+#define STIN__FACE_SLOT STIN__MAX_LIGHTS
+#define STIN__MAP_SLOTS (STIN__MAX_LIGHTS + STIN__CUBE_FACES)
+
+/* Draws light (a sample of it) with its visibility set up, at `weight` of
+ * its intensity in the visibility output: the frame plan's lighting. */
+typedef void (*stin__shade_fn)(stin_context *ctx, const stin__path *path,
+                               const stin_light_desc *light, float weight);
+
+typedef struct stin__shadow_technique {
+    stin_technique technique;
+    /* The GLSL lit and flat programs' shadow chunk (shaders/gl2), defining
+     * vec3 shadow_transmittance(int light). */
+    const char *glsl_chunk;
+    /* Set-up at stin_create (GL objects) and their release; init may demote. */
+    stin_result (*init)(stin_context *ctx);
+    void (*release)(stin_context *ctx);
+    /* Per frame, before anything is drawn: the projection the frame uses. */
+    void (*prepare)(stin_context *ctx);
+    /* Light pre-passes (maps): before the frame's target is bound and
+     * cleared, since without FBOs they draw in the frame's own buffer. */
+    void (*light_prepass)(stin_context *ctx);
+    /* Light li's visibility: sets it up and calls shade once per sub-pass
+     * (samples, faces). NULL: the technique casts no shadows. */
+    void (*light)(stin_context *ctx, const stin__path *path, uint32_t li, stin__shade_fn shade);
+    /* GLSL: the chunk's uniforms and samplers on program p for the light
+     * being shaded (none outside light()). NULL: nothing to set. */
+    void (*uniforms)(stin_context *ctx, const stin__program *p);
+} stin__shadow_technique;
+
+extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
+    stin__shadow_map_pcf, stin__shadow_off;
+/* The module of a shadows technique (off for anything else). */
+const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
+
+/* ---- module state --------------------------------------------------------- */
+typedef struct stin__volume_state {
+    int depth_clamp;      /* volumes drawn with GL_DEPTH_CLAMP (orthographic) */
+    int infinite;         /* the frame's projection has its far plane at infinity */
+} stin__volume_state;
+
+typedef struct stin__map_fixed_state {
+    GLuint textures[STIN__MAP_SLOTS];
+    GLuint ramp;          /* map-combine: 1D ramp of light depth */
+    GLuint fbo;           /* with FBOs: render straight into the texture */
+    GLuint depth_scratch; /* map-combine with FBOs: the depth buffer of its pass */
+    GLuint face_mask;     /* 1 inside a face's 90-degree square, 0 outside */
+    uint32_t size;        /* allocated texels a side */
+    uint32_t used;        /* rendered this frame (no FBO: bounded by the viewport) */
+    int unit;             /* first texture unit of the shadow test */
+    int faces;            /* point lights get six maps (needs FBOs: drawn mid-frame) */
+    unsigned char valid[STIN__MAX_LIGHTS];
+    float texgen[STIN__MAP_SLOTS][16];   /* world -> map texture coordinates (rows s t r q) */
+    float ramp_plane[STIN__MAP_SLOTS][4]; /* world -> ramp coordinate (map-combine) */
+    int said_point, said_area;
+} stin__map_fixed_state;
+
+typedef struct stin__map_pcf_state {
+    GLuint textures[STIN__MAP_SLOTS];
+    GLuint fbo;
+    uint32_t size;
+    int unit;             /* first sampler unit (STIN__SHADOW_SAMPLERS of them) */
+    unsigned char valid[STIN__MAX_LIGHTS];
+    float matrix[STIN__MAP_SLOTS][16];   /* world -> [0,1] map space */
+    float normal_offset[STIN__MAP_SLOTS]; /* world units: about 1.5 texels at the receivers */
+    /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
+    int kind;
+    uint32_t light;
+} stin__map_pcf_state;
+
+/* ---- shared by the modules ------------------------------------------------ */
+/* One light (sample) of stencil shadow volumes: leaves the stencil test set to
+ * pass where the light is visible (shadow_volume.c; map-fixed's point lights). */
+void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
+                        const int scissor[4]);
+/* After a light's last sample: stencil test and scissor off. */
+void stin__volume_light_end(stin_context *ctx);
+/* The frame's projection with the far plane at infinity (perspective) or
+ * depth clamp (orthographic), for volumes. */
+void stin__volume_projection(stin_context *ctx);
+/* Screen rectangle a light of finite range can touch; 0 when unbounded. */
+int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
+/* The slope-scaled polygon offset of a light's map pass (its shadow_offset,
+ * default 1.1 / 4); returns 0 when the light turns offsets off. */
+int stin__map_offset(const stin_light_desc *l, float *factor, float *units);
+
+/* Light cameras for shadow maps (shadow_light_camera.c). */
+void stin__light_look_along(float m[16], const float eye[3], const float dir[3]);
+void stin__light_fit(const stin_context *ctx, const float view[16], int receivers_only,
+                     float *near_d, float *far_d, float *half_width, float center_out[3]);
+void stin__light_perspective(float m[16], float fovy_deg, float n, float f);
+/* The view and projection of a spot or directional light and the depth range
+ * [n, f] it spans; 0 for a point light or when nothing is in front. map_size
+ * snaps a directional map to whole texels (0: no snapping). */
+int stin__light_camera(const stin_context *ctx, const stin_light_desc *l, float view[16],
+                       float proj[16], float *n, float *f, uint32_t map_size);
+
+#endif
