@@ -54,8 +54,12 @@
  *
  * SHADOWS
  * The shadow feature's chain: "volume" (stencil shadow volumes, exact; needs a
- * stencil buffer), "map-depth", "map-combine", then "off".
- * Shadow maps (fixed-function lighting only): spot lights get one map over the
+ * stencil buffer), "map-pcf" (GLSL lighting), "map-depth" and "map-combine"
+ * (fixed-function lighting), then "off".
+ * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
+ * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
+ * point lights get six 90-degree maps drawn before their pass.
+ * Fixed-function shadow maps: spot lights get one map over the
  * cone, directional lights one orthographic map, point lights six 90-degree
  * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a
  * time, each kept to its square by a mask texture unit); otherwise a point
@@ -69,7 +73,8 @@
  * frame's own framebuffer before its clear and so are at most the viewport's
  * largest power of two (stin_frame_stats.shadow_map_size says what was used).
  * Spot maps cover the cone; directional maps are orthographic, their square
- * fitted to the draws the camera sees and their depth to every caster. Area lights are hard-shadowed by maps. Each of the
+ * fitted to the draws the camera sees and their depth to every caster. Area
+ * lights are hard-shadowed by maps. Each of the
  * desc.max_lights light slots holds a map of shadow_map_size squared texels
  * (4 bytes each), made at stin_create: size max_lights to the scene.
  * Volumes: silhouettes from the adjacency built at
@@ -286,9 +291,11 @@ const char *stin_feature_name(stin_feature f);
  *   lighting: glsl150-per-pixel, glsl110-per-pixel, fixed-function
  *   shadows:  volume, map-pcf, map-depth, map-combine, off
  *   surface:  pom, parallax, normal, dot3, plain
- * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 3 (its
- * four are units 0-3); map-pcf 6; map-depth 1 (plus 1 for point-light faces
- * when there is one to spare); map-combine 2.
+ * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
+ * 0-2, and unit 3 for materials with an albedo texture when it is spare);
+ * map-pcf 6; map-depth 1 (plus 1 for point-light faces when there is one to
+ * spare); map-combine 2. Surface units follow the albedo, shadow units follow
+ * the surface's.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
  * with a normalisation cube map; it needs multitexture, texture_env_combine,
  * texture_env_dot3, cube maps and 3 texture units (4 for a material that

@@ -8,9 +8,15 @@ varying vec3 v_world;
 varying vec3 v_normal;
 
 // @chunks
-// float shadow_visibility(int i): the shadow technique's test of light i
+// vec3 shadow_transmittance(int light): the shadow technique's test of a light
+
+// Alpha carries the mean, so a grey transmittance scales all four as before.
+vec4 transmittance_rgba(vec3 t)
+{
+    return vec4(t, (t.r + t.g + t.b) / 3.0);
+}
 
 void main()
 {
-    gl_FragColor = u_color * shadow_visibility(0);
+    gl_FragColor = u_color * transmittance_rgba(shadow_transmittance(0));
 }

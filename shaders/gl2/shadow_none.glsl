@@ -1,5 +1,5 @@
 // No shadow test in the shader (none, or the stencil already decided).
-float shadow_visibility(int i)
+vec3 shadow_transmittance(int light)
 {
-    return 1.0;
+    return vec3(1.0);
 }

@@ -26,7 +26,8 @@ float shadow_tap(int face, vec3 c)
     return shadow2D(u_shadow_face5, c).r;
 }
 
-float shadow_visibility(int i)
+// The filtered visibility of light i (1 lit): maps carry no colour.
+float pcf_visibility(int i)
 {
     if (u_shadow_kind == 0)
         return 1.0; // a shadowed pass lights one light, so i is always that one
@@ -58,4 +59,10 @@ float shadow_visibility(int i)
             n += 1.0;
         }
     return sum / n;
+}
+
+// The seam every shadow chunk defines: grey for an opaque caster's map.
+vec3 shadow_transmittance(int light)
+{
+    return vec3(pcf_visibility(light));
 }

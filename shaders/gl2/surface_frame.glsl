@@ -1,6 +1,9 @@
 // Shared by the surface chunks "normal", "parallax" and "pom" (spliced in
 // before them): the tangent frame, the map from tangent-plane offsets in
-// scene units to uv, and the normal-map decode.
+// scene units to uv, and the normal-map decode. One file for both tiers: the
+// lit.frag of each defines how a sample is taken (SAMPLE_FOOTPRINT: a colour
+// map at the unmoved uv's footprint; SAMPLE_LEVEL0: the height field's top
+// level, legal inside loops).
 uniform sampler2D u_normal_tex;  // unit 1: 128 + 127 n, A = mean-normal length
 uniform sampler2D u_height_tex;  // unit 2: height in R, 1 = top, level 0 only
 uniform vec4 u_surface;          // height scale, height bias, pom min steps, max steps
@@ -13,7 +16,7 @@ float s_depth;                   // pom: depth of the hit, 0..1 of the height sc
 // Colour maps at the (moved) uv.
 vec4 surface_sample(sampler2D t, vec2 uv)
 {
-    return texture2D(t, uv);
+    return SAMPLE_FOOTPRINT(t, uv, s_dx, s_dy);
 }
 
 void surface_frame()
@@ -57,5 +60,5 @@ vec3 surface_map_normal(vec2 uv)
 
 float surface_height(vec2 uv)
 {
-    return texture2D(u_height_tex, uv).r;
+    return SAMPLE_LEVEL0(u_height_tex, uv).r;
 }

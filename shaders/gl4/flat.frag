@@ -13,9 +13,15 @@ in vec3 v_normal;
 #define shadow2D(s, c) vec4(texture(s, c))
 
 // @chunks
-// float shadow_visibility(int i): the shadow technique's test of light i
+// vec3 shadow_transmittance(int light): the shadow technique's test of a light
+
+// Alpha carries the mean, so a grey transmittance scales all four as before.
+vec4 transmittance_rgba(vec3 t)
+{
+    return vec4(t, (t.r + t.g + t.b) / 3.0);
+}
 
 void main()
 {
-    frag_color = u_color * shadow_visibility(0);
+    frag_color = u_color * transmittance_rgba(shadow_transmittance(0));
 }

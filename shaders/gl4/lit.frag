@@ -24,13 +24,17 @@ float s_normal_length = 1.0;
 // The chunks are shared with shaders/gl2 and use GLSL 1.10's names: map them.
 #define texture2D texture
 #define shadow2D(s, c) vec4(texture(s, c))
+// The unmoved footprint: no mip jumps where pom steps; level 0 of the height
+// field, defined inside loops too.
+#define SAMPLE_FOOTPRINT(t, uv, dx, dy) textureGrad(t, uv, dx, dy)
+#define SAMPLE_LEVEL0(t, uv) textureLod(t, uv, 0.0)
 
 // @chunks
 // The chunks spliced in here define (see src/path_glsl.c and src/surface_glsl.c):
 //   vec3 surface_normal(inout vec2 uv, vec3 v)  the unit shading normal; may move uv (parallax)
 //   float surface_shadow(vec2 uv, vec3 l)       the height field's shadow toward l (1 lit)
 //   vec4 surface_sample(sampler2D t, vec2 uv)   a colour map at the (moved) uv
-//   float shadow_visibility(int i)              the shadow technique's visibility of light i
+//   vec3 shadow_transmittance(int light)        what reaches the point of light's colour (1 lit)
 
 // pow(0, 0) is undefined in GLSL; GL's lighting takes it as 1.
 float safe_pow(float x, float e)
@@ -66,10 +70,11 @@ void main()
         }
         float ndotl = dot(n, l);
         if (ndotl > 0.0) {
-            k *= shadow_visibility(i) * surface_shadow(uv, l);
+            // per channel: a coloured transmittance tints the light it lets through
+            vec3 c = shadow_transmittance(i) * (k * surface_shadow(uv, l)) * col.rgb;
             vec3 h = normalize(l + v);
-            diffuse += k * ndotl * col.rgb;
-            specular += k * safe_pow(dot(n, h), shininess) * col.rgb;
+            diffuse += ndotl * c;
+            specular += safe_pow(dot(n, h), shininess) * c;
         }
     }
     vec4 tex = u_has_albedo_tex != 0 ? surface_sample(u_albedo_tex, uv) : vec4(1.0);

@@ -290,6 +290,36 @@ static void test_stale_mesh_handle_in_a_draw(void **state)
     assert_int_equal(fake_gl.draw_calls, 0);
 }
 
+/* A mesh or texture a queued draw may use is not destroyed mid-frame: the
+ * call is refused and logged, and the frame still draws it. */
+static void test_destroy_inside_a_frame_is_refused(void **state)
+{
+    static const uint8_t white[4] = {255, 255, 255, 255};
+    stin_texture_desc td;
+    stin_texture tex;
+    stin_material m;
+    (void)state;
+    memset(&td, 0, sizeof td);
+    td.width = td.height = 1;
+    td.pixels = white;
+    assert_int_equal(stin_create_texture(ctx, &td, &tex), STIN_OK);
+    memset(&m, 0, sizeof m);
+    m.albedo = tex;
+    begin();
+    assert_int_equal(stin_draw(ctx, quad, NULL, &m), STIN_OK);
+    stin_destroy_mesh(ctx, quad);
+    stin_destroy_texture(ctx, tex);
+    assert_int_equal(log_.items[STIN_LOG_FRAME_STATE], 2);
+    assert_true(fake_log_has(&log_, STIN_LOG_FRAME_STATE, "after stin_end_frame"));
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    assert_int_equal(stin_query_frame_stats(ctx).draws, 1);
+    assert_int_equal(fake_gl.textures_deleted, 0);
+    stin_destroy_texture(ctx, tex); /* between frames: fine */
+    stin_destroy_mesh(ctx, quad);
+    assert_int_equal(fake_gl.textures_deleted, 1);
+    assert_int_equal(log_.items[STIN_LOG_FRAME_STATE], 2);
+}
+
 static void test_bad_draw_arguments(void **state)
 {
     float xf[16];
@@ -576,6 +606,7 @@ int main(void)
         TEST(test_more_lights_than_max_lights),
         TEST(test_more_draws_than_max_draws),
         TEST(test_stale_mesh_handle_in_a_draw),
+        TEST(test_destroy_inside_a_frame_is_refused),
         TEST(test_bad_draw_arguments),
         TEST(test_glsl_passes_per_eight_lights),
         TEST(test_blended_draws_once_per_batch),

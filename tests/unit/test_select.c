@@ -324,6 +324,81 @@ static void test_technique_tables(void **state)
     assert_int_equal(stin__technique_needs(STIN_TECH_SHADOWS_OFF), 0);
 }
 
+/* Every technique has one row; ranks order each chain without ties; the
+ * chains read as the header documents them, whatever the enum values. */
+static void test_every_technique_has_a_row_and_a_rank(void **state)
+{
+    static const stin_technique shadows[] = {STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF,
+                                             STIN_TECH_SHADOWS_MAP_DEPTH,
+                                             STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SHADOWS_OFF};
+    stin_technique chain[STIN_TECH_COUNT];
+    int t, f, n, i, total = 0;
+    (void)state;
+    assert_null(stin__technique_row_of(STIN_TECH_NONE));
+    for (t = 1; t < STIN_TECH_COUNT; t++)
+        assert_non_null(stin__technique_row_of((stin_technique)t));
+    for (f = 0; f < STIN_FEATURE_COUNT; f++) {
+        n = stin__feature_chain((stin_feature)f, chain);
+        assert_true(n >= 1);
+        for (i = 1; i < n; i++)
+            assert_true(stin__technique_row_of(chain[i - 1])->rank <
+                        stin__technique_row_of(chain[i])->rank);
+        total += n;
+    }
+    assert_int_equal(total, STIN_TECH_COUNT - 1);
+    n = stin__feature_chain(STIN_FEATURE_SHADOWS, chain);
+    assert_int_equal(n, 5);
+    for (i = 0; i < n; i++)
+        assert_int_equal(chain[i], shadows[i]);
+    /* every shadows technique names its module, and only those */
+    for (t = 1; t < STIN_TECH_COUNT; t++)
+        assert_int_equal(stin__technique_row_of((stin_technique)t)->shadow != NULL,
+                         stin__technique_feature((stin_technique)t) == STIN_FEATURE_SHADOWS);
+}
+
+/* A GL2 part with 8 fragment samplers: map-pcf (6 maps) and albedo leave
+ * one unit, so pom, parallax and normal (2 more each) are passed over for
+ * plain, naming the limit;
+ * with 6 units map-pcf itself cannot be forced. Units are placed after
+ * the albedo (unit 0) in feature order. */
+static void test_texture_unit_budget(void **state)
+{
+    stin_caps c = caps_with(21, 12, 0, GL21_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT];
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    memset(forced, 0, sizeof forced);
+    c.max_texture_image_units = 8;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_POM);
+    assert_int_equal(sel.surface_unit, 1);
+    assert_int_equal(sel.shadow_unit, 3); /* volumes take none */
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_MAP_PCF);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
+    assert_true(sel.choice[STIN_FEATURE_SURFACE].fell_back);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "needs 9 texture units"));
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "the context has 8"));
+    assert_int_equal(sel.shadow_unit, 1);
+    assert_true(sel.units_used <= 8);
+    /* a forced surface keeps its units: the automatic shadows walk past map-pcf */
+    c.present &= ~BIT(STENCIL);
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_NONE;
+    forced[STIN_FEATURE_SURFACE] = STIN_TECH_SURFACE_NORMAL;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_OFF);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SHADOWS].reason, "map-pcf needs 9"));
+    /* too few units for the forced technique itself: an error naming the limit */
+    c.max_texture_image_units = 6;
+    forced[STIN_FEATURE_SURFACE] = STIN_TECH_NONE;
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "map-pcf needs 7 texture units"));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -341,6 +416,8 @@ int main(void)
         cmocka_unit_test(test_forced_technique_above_the_tier),
         cmocka_unit_test(test_surface_follows_the_lighting_technique),
         cmocka_unit_test(test_technique_tables),
+        cmocka_unit_test(test_every_technique_has_a_row_and_a_rank),
+        cmocka_unit_test(test_texture_unit_budget),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
