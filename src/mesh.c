@@ -2,20 +2,18 @@
  * adjacency, and the GPU copy where buffers exist. */
 #include "internal.h"
 
-#define HANDLE_ID(gen, slot) (((gen) << 16) | ((slot) + 1u))
-
 stin__mesh_slot *stin__mesh_lookup(const stin_context *ctx, stin_mesh mesh, uint32_t *slot)
 {
-    uint32_t s = (mesh.id & 0xffffu);
-    stin__mesh_slot *m;
-    if (!ctx || s == 0 || s > ctx->desc.max_meshes)
+    uint32_t s;
+    if (!ctx)
         return NULL;
-    m = &ctx->meshes[s - 1];
-    if (!m->alive || m->generation != (mesh.id >> 16))
+    s = stin__handle_resolve(&ctx->meshes[0].handle, sizeof ctx->meshes[0], ctx->desc.max_meshes,
+                             mesh.id);
+    if (s == STIN__NO_SLOT)
         return NULL;
     if (slot)
-        *slot = s - 1;
-    return m;
+        *slot = s;
+    return &ctx->meshes[s];
 }
 
 static stin_result fail(stin_context *ctx, stin_result r, stin_log_item item, const char *fmt,
@@ -191,11 +189,8 @@ static void upload(stin_context *ctx, stin__mesh_slot *m)
 
 static uint32_t free_slot(const stin_context *ctx)
 {
-    uint32_t i;
-    for (i = 0; i < ctx->desc.max_meshes; i++)
-        if (!ctx->meshes[i].alive)
-            return i;
-    return 0xffffffffu;
+    return stin__handle_free_slot(&ctx->meshes[0].handle, sizeof ctx->meshes[0],
+                                  ctx->desc.max_meshes);
 }
 
 stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin_mesh *out)
@@ -263,10 +258,7 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->info.degenerate_dropped = desc->index_count / 3u - kept;
     bounds(&m->info, verts, desc->vertex_count);
     m->vbo = m->ibo = m->vao = 0;
-    m->alive = 1;
-    m->generation = (m->generation + 1u) & 0xffffu;
-    if (m->generation == 0)
-        m->generation = 1;
+    out->id = stin__handle_issue(&m->handle, slot);
     upload(ctx, m);
     if (m->info.degenerate_dropped)
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_MESH_DEGENERATE,
@@ -277,7 +269,6 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
                   "stin_create_mesh: not a closed 2-manifold (%u open edges, %u non-manifold "
                   "or inconsistently oriented edges)", m->info.open_edges,
                   m->info.nonmanifold_edges);
-    out->id = HANDLE_ID(m->generation, slot);
     return STIN_OK;
 }
 
@@ -332,7 +323,7 @@ static void release(stin_context *ctx, stin__mesh_slot *m)
         GL(ctx, DeleteVertexArrays)(1, &m->vao);
     stin__range_give(&ctx->vertex_ranges, m->first_vertex);
     stin__range_give(&ctx->triangle_ranges, m->first_triangle);
-    m->alive = 0;
+    m->handle.alive = 0;
     m->vbo = m->ibo = m->vao = 0;
 }
 
@@ -358,6 +349,6 @@ void stin__mesh_release_all(stin_context *ctx)
 {
     uint32_t i;
     for (i = 0; i < ctx->desc.max_meshes; i++)
-        if (ctx->meshes[i].alive)
+        if (ctx->meshes[i].handle.alive)
             release(ctx, &ctx->meshes[i]);
 }

@@ -8,6 +8,20 @@
 
 
 /* ---- meshes and textures ------------------------------------------------ */
+/* The head of every pooled slot (handle_pool.c). */
+typedef struct stin__handle {
+    uint32_t generation;
+    int alive;
+} stin__handle;
+#define STIN__NO_SLOT 0xffffffffu
+/* The first free slot of a pool of `count` slots `stride` bytes apart. */
+uint32_t stin__handle_free_slot(const stin__handle *first, size_t stride, uint32_t count);
+/* Marks slot h (index `slot`) alive with a new generation; returns its handle id. */
+uint32_t stin__handle_issue(stin__handle *h, uint32_t slot);
+/* The slot a handle id names while it is alive, else STIN__NO_SLOT. */
+uint32_t stin__handle_resolve(const stin__handle *first, size_t stride, uint32_t count,
+                              uint32_t id);
+
 typedef struct stin__vertex {
     float position[3];
     float normal[3];
@@ -16,8 +30,7 @@ typedef struct stin__vertex {
 } stin__vertex;
 
 typedef struct stin__mesh_slot {
-    uint32_t generation;
-    int alive;
+    stin__handle handle;
     uint32_t first_vertex, vertex_count;
     uint32_t first_triangle, triangle_count;
     stin_mesh_info info;
@@ -25,8 +38,7 @@ typedef struct stin__mesh_slot {
 } stin__mesh_slot;
 
 typedef struct stin__texture_slot {
-    uint32_t generation;
-    int alive;
+    stin__handle handle;
     stin_texture_kind kind;
     uint32_t width, height;
     GLuint name;

@@ -3,18 +3,14 @@
  * generation), all through the arena's staging block. */
 #include "internal.h"
 
-#define HANDLE_ID(gen, slot) (((gen) << 16) | ((slot) + 1u))
-
 stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex)
 {
-    uint32_t s = tex.id & 0xffffu;
-    stin__texture_slot *t;
-    if (!ctx || s == 0 || s > ctx->desc.max_textures)
+    uint32_t s;
+    if (!ctx)
         return NULL;
-    t = &ctx->textures[s - 1];
-    if (!t->alive || t->generation != (tex.id >> 16))
-        return NULL;
-    return t;
+    s = stin__handle_resolve(&ctx->textures[0].handle, sizeof ctx->textures[0],
+                             ctx->desc.max_textures, tex.id);
+    return s == STIN__NO_SLOT ? NULL : &ctx->textures[s];
 }
 
 static uint32_t pot_at_least(uint32_t n)
@@ -195,11 +191,10 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
                   ctx->staging_bytes);
         return STIN_ERROR_CAPACITY;
     }
-    for (slot = 0; slot < ctx->desc.max_textures; slot++)
-        if (!ctx->textures[slot].alive) {
-            t = &ctx->textures[slot];
-            break;
-        }
+    slot = stin__handle_free_slot(&ctx->textures[0].handle, sizeof ctx->textures[0],
+                                  ctx->desc.max_textures);
+    if (slot != STIN__NO_SLOT)
+        t = &ctx->textures[slot];
     if (!t) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
                   "stin_create_texture: all %u texture slots in use (desc.max_textures)",
@@ -252,14 +247,10 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__gl_check_errors(ctx, "texture upload");
-    t->alive = 1;
     t->kind = desc->kind;
     t->width = desc->width;
     t->height = desc->height;
-    t->generation = (t->generation + 1u) & 0xffffu;
-    if (!t->generation)
-        t->generation = 1;
-    out->id = HANDLE_ID(t->generation, slot);
+    out->id = stin__handle_issue(&t->handle, slot);
     return STIN_OK;
 }
 
@@ -279,7 +270,7 @@ void stin_destroy_texture(stin_context *ctx, stin_texture tex)
         return;
     }
     GL(ctx, DeleteTextures)(1, &t->name);
-    t->alive = 0;
+    t->handle.alive = 0;
     t->name = 0;
 }
 
@@ -287,9 +278,9 @@ void stin__texture_release_all(stin_context *ctx)
 {
     uint32_t i;
     for (i = 0; i < ctx->desc.max_textures; i++)
-        if (ctx->textures[i].alive) {
+        if (ctx->textures[i].handle.alive) {
             GL(ctx, DeleteTextures)(1, &ctx->textures[i].name);
-            ctx->textures[i].alive = 0;
+            ctx->textures[i].handle.alive = 0;
         }
 }
 
