@@ -1,6 +1,7 @@
 # stin — build, test, bench, install.
 #   make            libstin.a, libstin_platform.a, stin-render, stin-bench
-#   make check      install deps if missing, unit tests (ASan+UBSan), image tests per profile
+#   make check      install deps if missing, unit tests (ASan+UBSan), image tests per profile,
+#                   the stin-bench --quick smoke
 #   make demo       install deps if missing, render the example scenes at every tier into out/
 #   make bench      run stin-bench (docs/benchmarks.md)
 #   make install    PREFIX=/usr/local DESTDIR=  headers, archives, stin.pc
@@ -116,7 +117,7 @@ $(B)/tests/test_noheap: tests/unit/test_noheap.c tests/unit/fake_gl.c $(B)/libst
 $(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
 
-tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/libstin.a
+tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/libstin.a
 
 check: deps
 	@$(MAKE) --no-print-directory tests

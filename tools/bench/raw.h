@@ -58,6 +58,10 @@ void raw_fixed_reset(const raw_renderer *r); /* GL state back to defaults */
 int raw_glsl_create(raw_renderer *r, char *err, size_t err_size);
 void raw_glsl_frame(const raw_renderer *r, int width, int height);
 void raw_glsl_destroy(raw_renderer *r);
+/* The tier's lit program as stin builds its unshadowed plain one, from the
+ * GLSL files under root (raw_program.c). 0 with a message on failure. */
+GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier, char *err,
+                        size_t err_size);
 
 /* Interleaved vertex: position, normal, uv, tangent — stin's layout, so that
  * both fetch the same bytes. */

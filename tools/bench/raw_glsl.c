@@ -1,142 +1,19 @@
-/* GL2/GL4 raw loop: stin's lit shaders read from disk (shaders/gl2 or
- * shaders/gl4; lit.frag with the plain-surface and no-shadow chunks spliced
- * in at its marker, as stin builds its unshadowed program), per frame the view and light uniforms, per object the model
- * and material uniforms and a draw; attributes (GL2) or the VAO (GL4) are
- * re-bound only when the mesh changes. */
+/* GL2/GL4 raw loop: stin's unshadowed plain lit program (raw_program.c),
+ * per frame the view and light uniforms, per object the model and material
+ * uniforms and a draw; attributes (GL2) or the VAO (GL4) are re-bound only
+ * when the mesh changes. */
 #include "raw.h"
 #include "raw_math.h"
 
 #include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
 
 #define RAW_LIGHTS_PER_PASS 8
-
-static char *read_text(const char *path, char *err, size_t err_size)
-{
-    FILE *f = fopen(path, "rb");
-    char *text = NULL;
-    long n;
-    if (!f) {
-        snprintf(err, err_size, "cannot open shader %s (run from the repository root or pass "
-                 "--shaders DIR)", path);
-        return NULL;
-    }
-    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
-        (text = malloc((size_t)n + 1)) && fread(text, 1, (size_t)n, f) == (size_t)n) {
-        text[n] = '\0';
-    } else {
-        snprintf(err, err_size, "cannot read shader %s", path);
-        free(text);
-        text = NULL;
-    }
-    fclose(f);
-    return text;
-}
-
-#define CHUNK_MARKER "// @chunks"
-
-/* Compiles `path`; with chunks (a NULL-terminated list of files), their text
- * is spliced in at the file's "// @chunks" line, as stin composes its lit
- * shaders (src/shader.c): the file up to the marker, each chunk, the rest. */
-static GLuint compile(const raw_gl *gl, GLenum type, const char *path, const char *const *chunks,
-                      char *err, size_t err_size)
-{
-    enum { MAX_PARTS = 6 };
-    char *src = read_text(path, err, err_size), *texts[MAX_PARTS], log[1024];
-    const GLchar *parts[MAX_PARTS + 1];
-    GLint lengths[MAX_PARTS + 1];
-    const char *marker = NULL;
-    GLsizei count = 0;
-    GLuint sh = 0;
-    GLint ok = 0;
-    int i, n = 0;
-    if (!src)
-        return 0;
-    if (chunks && chunks[0] && !(marker = strstr(src, CHUNK_MARKER))) {
-        snprintf(err, err_size, "%s has no '%s' line for its chunks", path, CHUNK_MARKER);
-        goto done;
-    }
-    parts[count] = src;
-    lengths[count++] = marker ? (GLint)(marker - src) : -1;
-    for (i = 0; marker && chunks[i]; i++) {
-        if (n == MAX_PARTS - 1 || !(texts[n] = read_text(chunks[i], err, err_size)))
-            goto done;
-        parts[count] = texts[n++];
-        lengths[count++] = -1;
-    }
-    if (marker) {
-        parts[count] = marker;
-        lengths[count++] = -1;
-    }
-    sh = gl->CreateShader(type);
-    gl->ShaderSource(sh, count, parts, lengths);
-    gl->CompileShader(sh);
-    gl->GetShaderiv(sh, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        log[0] = '\0';
-        gl->GetShaderInfoLog(sh, (GLsizei)sizeof log, NULL, log);
-        snprintf(err, err_size, "%s did not compile: %s", path, log);
-        gl->DeleteShader(sh);
-        sh = 0;
-    }
-done:
-    while (n > 0)
-        free(texts[--n]);
-    free(src);
-    return sh;
-}
-
-static GLuint link(const raw_gl *gl, const char *root, const char *sub, char *err,
-                   size_t err_size)
-{
-    char vpath[1024], fpath[1024], surface[1024], shadow[1024], log[1024];
-    const char *chunks[3];
-    GLuint vs, fs, p;
-    GLint ok = 0;
-    snprintf(vpath, sizeof vpath, "%s/%s/lit.vert", root, sub);
-    snprintf(fpath, sizeof fpath, "%s/%s/lit.frag", root, sub);
-    /* stin's unshadowed plain-surface variant: these two chunks in lit.frag */
-    snprintf(surface, sizeof surface, "%s/%s/surface_plain.glsl", root, sub);
-    snprintf(shadow, sizeof shadow, "%s/%s/shadow_none.glsl", root, sub);
-    chunks[0] = surface;
-    chunks[1] = shadow;
-    chunks[2] = NULL;
-    if (!(vs = compile(gl, GL_VERTEX_SHADER, vpath, NULL, err, err_size)))
-        return 0;
-    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, fpath, chunks, err, err_size))) {
-        gl->DeleteShader(vs);
-        return 0;
-    }
-    p = gl->CreateProgram();
-    gl->AttachShader(p, vs);
-    gl->AttachShader(p, fs);
-    /* stin's fixed attribute locations, so the same layout feeds both */
-    gl->BindAttribLocation(p, 0, "a_position");
-    gl->BindAttribLocation(p, 1, "a_normal");
-    gl->BindAttribLocation(p, 2, "a_uv");
-    gl->BindAttribLocation(p, 3, "a_tangent"); /* no array: lit.vert's tangent is unused */
-    gl->LinkProgram(p);
-    gl->DeleteShader(vs);
-    gl->DeleteShader(fs);
-    gl->GetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        log[0] = '\0';
-        gl->GetProgramInfoLog(p, (GLsizei)sizeof log, NULL, log);
-        snprintf(err, err_size, "%s + %s did not link: %s", vpath, fpath, log);
-        gl->DeleteProgram(p);
-        return 0;
-    }
-    return p;
-}
 
 int raw_glsl_create(raw_renderer *r, char *err, size_t err_size)
 {
     const raw_gl *gl = r->gl;
     raw_program *p = &r->prog;
-    const char *sub = r->cfg.tier == STIN_TIER_GL4 ? "gl4" : "gl2";
-    if (!(p->name = link(gl, r->cfg.shader_dir, sub, err, err_size)))
+    if (!(p->name = raw_program_link(gl, r->cfg.shader_dir, r->cfg.tier, err, err_size)))
         return 0;
 #define LOC(field) p->field = gl->GetUniformLocation(p->name, #field)
     LOC(u_model);

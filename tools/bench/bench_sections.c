@@ -1,0 +1,11 @@
+/* The sections of stin-bench, in the order they run (see bench_section.h). */
+#include "bench_section.h"
+
+const bench_section bench_sections[SECTION_COUNT] = {
+    {"raw", "libstin against the raw-GL loop per tier and scene; the goal line", section_raw},
+    {"shadows", "stencil shadow volumes against shadows off per tier, scene and light count",
+     section_shadows},
+    {"maps", "GL1 shadow maps per map size, and volumes, against shadows off", section_maps},
+    {"pcf", "GL2/GL4 PCF shadow maps per map size and kernel against shadows off", section_pcf},
+    {"surface", "GL2/GL4 surface techniques against the plain surface", section_surface},
+};

@@ -1,0 +1,153 @@
+/* The raw loop's GLSL program, built from the same files stin embeds: the
+ * tier's lit.vert and lit.frag, with the chunks of stin's unshadowed plain
+ * program spliced in at lit.frag's "// @chunks" line (src/shader.c,
+ * src/path_glsl.c, src/surface_glsl.c). Read from disk, not from stin's
+ * embedded copy, so the raw side shares no code path with the library. */
+#include "raw.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CHUNK_MARKER "// @chunks"
+#define MAX_CHUNKS 4
+#define PATH_SIZE 1024
+
+/* stin's unshadowed plain-surface program: these chunks, in this order. */
+static const char *const plain_chunks[] = {"surface_plain.glsl", "shadow_none.glsl", NULL};
+
+/* The whole file as a string, or NULL with err set. */
+static char *read_file(FILE *f, const char *path, char *err, size_t err_size)
+{
+    char *text = NULL;
+    long n;
+    if (fseek(f, 0, SEEK_END) == 0 && (n = ftell(f)) >= 0 && fseek(f, 0, SEEK_SET) == 0 &&
+        (text = malloc((size_t)n + 1)) && fread(text, 1, (size_t)n, f) == (size_t)n) {
+        text[n] = '\0';
+    } else {
+        snprintf(err, err_size, "cannot read shader %s", path);
+        free(text);
+        text = NULL;
+    }
+    fclose(f);
+    return text;
+}
+
+/* root/dir/name; a chunk falls back to root/gl2/name as stin's lookup does
+ * (gl4 shares the GLSL 1.10 chunks, mapped by #define in its main files).
+ * Trying both, rather than naming each file's owner, keeps the raw loop on
+ * stin's files wherever a chunk moves between the two folders. */
+static char *read_shader(const char *root, const char *dir, const char *name, int chunk,
+                         char *err, size_t err_size)
+{
+    char path[PATH_SIZE], first[PATH_SIZE];
+    FILE *f;
+    snprintf(first, sizeof first, "%s/%s/%s", root, dir, name);
+    snprintf(path, sizeof path, "%s", first);
+    if (!(f = fopen(path, "rb")) && chunk && strcmp(dir, "gl2") != 0) {
+        snprintf(path, sizeof path, "%s/gl2/%s", root, name);
+        f = fopen(path, "rb");
+    }
+    if (!f) {
+        snprintf(err, err_size, "cannot open shader %s%s (run from the repository root or "
+                 "pass --shaders DIR)", first, strcmp(path, first) ? " or its gl2 copy" : "");
+        return NULL;
+    }
+    return read_file(f, path, err, err_size);
+}
+
+/* 1 if the shader compiled (program: linked); else err gets `what` and the
+ * driver's log, and the object is deleted. */
+static int built(const raw_gl *gl, GLuint obj, int program, const char *what, char *err,
+                 size_t err_size)
+{
+    char log[1024] = "";
+    GLint ok = 0;
+    if (program)
+        gl->GetProgramiv(obj, GL_LINK_STATUS, &ok);
+    else
+        gl->GetShaderiv(obj, GL_COMPILE_STATUS, &ok);
+    if (ok)
+        return 1;
+    if (program) {
+        gl->GetProgramInfoLog(obj, (GLsizei)sizeof log, NULL, log);
+        gl->DeleteProgram(obj);
+    } else {
+        gl->GetShaderInfoLog(obj, (GLsizei)sizeof log, NULL, log);
+        gl->DeleteShader(obj);
+    }
+    snprintf(err, err_size, "%s: %s", what, log);
+    return 0;
+}
+
+/* The file up to its marker, each chunk, the rest: as stin composes its lit
+ * shaders. chunks is NULL-terminated, or NULL for a plain file. */
+static GLuint compile(const raw_gl *gl, GLenum type, const char *root, const char *dir,
+                      const char *name, const char *const *chunks, char *err, size_t err_size)
+{
+    char *src = read_shader(root, dir, name, 0, err, err_size), *texts[MAX_CHUNKS] = {NULL};
+    char what[PATH_SIZE];
+    const GLchar *parts[MAX_CHUNKS + 2];
+    GLint lengths[MAX_CHUNKS + 2];
+    const char *marker = NULL;
+    GLsizei count = 0;
+    GLuint sh = 0;
+    int n = 0, i;
+    if (!src)
+        return 0;
+    if (chunks && !(marker = strstr(src, CHUNK_MARKER))) {
+        snprintf(err, err_size, "%s/%s has no '%s' line for its chunks", dir, name, CHUNK_MARKER);
+        goto done;
+    }
+    parts[count] = src;
+    lengths[count++] = marker ? (GLint)(marker - src) : -1;
+    for (; marker && chunks[n]; n++) {
+        if (n == MAX_CHUNKS || !(texts[n] = read_shader(root, dir, chunks[n], 1, err, err_size)))
+            goto done;
+        parts[count] = texts[n];
+        lengths[count++] = -1;
+    }
+    if (marker) {
+        parts[count] = marker;
+        lengths[count++] = -1;
+    }
+    sh = gl->CreateShader(type);
+    gl->ShaderSource(sh, count, parts, lengths);
+    gl->CompileShader(sh);
+    snprintf(what, sizeof what, "%s/%s did not compile", dir, name);
+    if (!built(gl, sh, 0, what, err, err_size))
+        sh = 0;
+done:
+    for (i = 0; i < MAX_CHUNKS; i++)
+        free(texts[i]);
+    free(src);
+    return sh;
+}
+
+GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier, char *err,
+                        size_t err_size)
+{
+    const char *dir = tier == STIN_TIER_GL4 ? "gl4" : "gl2";
+    char what[64];
+    GLuint vs, fs, p;
+    if (!(vs = compile(gl, GL_VERTEX_SHADER, root, dir, "lit.vert", NULL, err, err_size)))
+        return 0;
+    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, root, dir, "lit.frag", plain_chunks, err,
+                       err_size))) {
+        gl->DeleteShader(vs);
+        return 0;
+    }
+    p = gl->CreateProgram();
+    gl->AttachShader(p, vs);
+    gl->AttachShader(p, fs);
+    /* stin's fixed attribute locations, so the same layout feeds both */
+    gl->BindAttribLocation(p, 0, "a_position");
+    gl->BindAttribLocation(p, 1, "a_normal");
+    gl->BindAttribLocation(p, 2, "a_uv");
+    gl->BindAttribLocation(p, 3, "a_tangent"); /* no array: lit.vert's tangent is unused */
+    gl->LinkProgram(p);
+    gl->DeleteShader(vs);
+    gl->DeleteShader(fs);
+    snprintf(what, sizeof what, "%s/lit.vert + %s/lit.frag did not link", dir, dir);
+    return built(gl, p, 1, what, err, err_size) ? p : 0;
+}
