@@ -22,3 +22,19 @@ int light_reaches(const scene *s, const ref_hit *h)
         return 0;
     return 1;
 }
+
+int near_shadow_edge(const ref_hit *hits, const float *ref, int w, int h, int x, int y, int band)
+{
+    float v = ref[((size_t)y * w + x) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R];
+    int dx, dy;
+    for (dy = -band; dy <= band; dy++)
+        for (dx = -band; dx <= band; dx++) {
+            int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+                continue;
+            if (hits[(size_t)ny * w + nx].object != hits[(size_t)y * w + x].object ||
+                fabsf(ref[((size_t)ny * w + nx) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R] - v) > 0.5f)
+                return 1;
+        }
+    return 0;
+}

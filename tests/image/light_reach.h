@@ -10,4 +10,9 @@
 
 int light_reaches(const scene *s, const ref_hit *h);
 
+/* 1 where the reference visibility of light 0 (the vis channel of ref, a
+ * reference_render image of w x h) or the object hit changes within band
+ * pixels of (x, y): a shadow map's texels blur edges over that band. */
+int near_shadow_edge(const ref_hit *hits, const float *ref, int w, int h, int x, int y, int band);
+
 #endif

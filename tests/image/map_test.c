@@ -4,8 +4,11 @@
  * of light 0 differs, among the pixels the light can reach (the side the eye
  * sees faces the light, inside a spot's cone). Issue 3's bounds hold at
  * 2048x2048: map-depth (ARB_shadow) at most 2%, map-combine at most 5%.
- * Smaller maps are measured and printed, not bounded. A map smaller than
- * asked (no FBO: the map is drawn in the frame's own framebuffer) says so.
+ * 512 and 1024 with FBOs are measured and printed, not bounded.
+ * Without FBOs the map is drawn in the frame's own framebuffer and so is the
+ * viewport's largest power of two S (128 at 256x192) whatever was asked; it
+ * is bounded once per path at that size (no_fbo_bound below): outside the
+ * band a texel of S spans on screen, at most NOFBO_MAX_MISMATCH.
  * Without polygon offset the depth path must do clearly worse (acne).
  * Point lights use six 90-degree maps (with FBOs), spot lights one over the
  * cone, directional lights one orthographic map.
@@ -21,6 +24,21 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* No-FBO bound. A 2048 texel is about a quarter of a pixel where these
+ * scenes' shadows fall (pcf_test.c), so a texel of an S map spans 2048 / S / 4
+ * pixels, 4 at S = 128; a hard map may move a shadow edge by a texel, so
+ * pixels within that many pixels of a reference shadow (or object) edge are
+ * left out. Everywhere else a map of any size must be right: measured 0.000%
+ * (map-depth) and at most 0.03% (map-combine, spheres scenes) on llvmpipe,
+ * 22-47% with the bias off. Not excused: map-combine on stone-wall (24.7%),
+ * whose constant 1.5-step ramp bias cannot hold the grazing wall and floor at
+ * 128 texels (acne stripes; 7.4% at 512 with FBOs) - a library limitation. */
+#define NOFBO_MAX_MISMATCH 0.005
+/* ...and a map that casts nothing must not pass on the lit majority: of the
+ * reference-shadowed pixels (no band) at least half come out shadowed (a
+ * hard map errs along edges only; measured 76-99%). */
+#define NOFBO_MIN_SHADOWED 0.5
+
 typedef struct map_case {
     run *r;
     const scene *s;
@@ -30,10 +48,18 @@ typedef struct map_case {
 } map_case;
 
 
-static double mismatch(const map_case *c, const capture *cap, long *compared_out)
+/* Pixels compared (light 0 reaches them, P matches the reference), those
+ * whose visibility differs, and the reference-shadowed ones that came out
+ * lit. */
+typedef struct map_counts {
+    long compared, differ, shadowed, shadowed_lit;
+} map_counts;
+
+/* band: pixels within it of a reference shadow edge are left out (0: none). */
+static double mismatch(const map_case *c, const capture *cap, int band, map_counts *n)
 {
     int w = c->r->width, h = c->r->height, x, y;
-    long compared = 0, differ = 0;
+    memset(n, 0, sizeof *n);
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
             const ref_hit *hit = &c->hits[(size_t)y * w + x];
@@ -41,19 +67,24 @@ static double mismatch(const map_case *c, const capture *cap, long *compared_out
             const float *g = cap->img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
             double d2 = 0;
             int k;
-            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit))
+            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit) ||
+                (band > 0 && near_shadow_edge(c->hits, c->ref, w, h, x, y, band)))
                 continue;
             for (k = 0; k < 3; k++)
                 d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) *
                       (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]);
             if (sqrt(d2) > 1e-3 * ref[REFERENCE_CH_Z] + 1e-3)
                 continue;
-            compared++;
+            n->compared++;
             if (fabs(g[AOV_VIS_R] - ref[REFERENCE_CH_VIS_R]) > 0.5)
-                differ++;
+                n->differ++;
+            if (ref[REFERENCE_CH_VIS_R] < 0.5f) {
+                n->shadowed++;
+                if (g[AOV_VIS_R] >= 0.5f)
+                    n->shadowed_lit++;
+            }
         }
-    *compared_out = compared;
-    return compared ? (double)differ / compared : 1.0;
+    return n->compared ? (double)n->differ / n->compared : 1.0;
 }
 
 static int render(const map_case *c, stin_technique t, uint32_t size, int no_offset, capture *out,
@@ -77,6 +108,27 @@ static int render(const map_case *c, stin_technique t, uint32_t size, int no_off
     return capture_render(c->r->plat, c->r->profile, &copy, &o, out, err, err_size);
 }
 
+/* The map drawn in the frame itself (no FBO) at cap's size, whatever was
+ * asked: bounded outside its texel band, named by that size. */
+static void no_fbo_bound(const map_case *c, stin_technique t, const capture *cap)
+{
+    uint32_t size = cap->stats.shadow_map_size;
+    int band = (int)ceil(2048.0 / size / 4.0);
+    map_counts all, out;
+    double f_all, f, shadowed;
+    char name[256];
+    snprintf(name, sizeof name, "gl1/%s/%s-%u", c->scene_name, stin_technique_name(t), size);
+    f_all = mismatch(c, cap, 0, &all);
+    f = mismatch(c, cap, band, &out);
+    shadowed = all.shadowed ? 1.0 - (double)all.shadowed_lit / all.shadowed : 0.0;
+    report(c->r, f <= NOFBO_MAX_MISMATCH && shadowed >= NOFBO_MIN_SHADOWED ? "PASS" : "FAIL", name,
+           "no FBO, so the map is %ux%u: visibility differs on %.3f%% of %ld reachable pixels, "
+           "on %.3f%% of the %ld outside the %d-pixel texel band (at most %.1f%%); %.1f%% of the "
+           "%ld shadowed ones came out shadowed (at least %.0f%%)", size, size, 100.0 * f_all,
+           all.compared, 100.0 * f, out.compared, band, 100.0 * NOFBO_MAX_MISMATCH,
+           100.0 * shadowed, all.shadowed, 100.0 * NOFBO_MIN_SHADOWED);
+}
+
 static void one_path(map_case *c, stin_technique t, uint64_t caps, double bound)
 {
     static const uint32_t sizes[] = {512, 1024, 2048};
@@ -93,8 +145,9 @@ static void one_path(map_case *c, stin_technique t, uint64_t caps, double bound)
     }
     for (i = 0; i < sizeof sizes / sizeof sizes[0]; i++) {
         capture cap;
-        long compared;
+        map_counts n;
         double f;
+        int drawn_in_frame;
         snprintf(name, sizeof name, "gl1/%s/%s-%u", c->scene_name, stin_technique_name(t), sizes[i]);
         if ((caps & need) != need) {
             report(c->r, "SKIP", name, "the profile has no %s", t == STIN_TECH_SHADOWS_MAP_DEPTH
@@ -106,24 +159,24 @@ static void one_path(map_case *c, stin_technique t, uint64_t caps, double bound)
             report(c->r, "FAIL", name, "%s", err);
             return;
         }
-        f = mismatch(c, &cap, &compared);
+        f = mismatch(c, &cap, 0, &n);
+        drawn_in_frame = cap.stats.shadow_map_size < sizes[i];
         if (cap.counters.gl_violations || cap.counters.gl_errors || cap.log_errors)
             report(c->r, "FAIL", name, "%u profile violations, %u GL errors (last log: %s)",
                    cap.counters.gl_violations, cap.counters.gl_errors, cap.last_error);
+        else if (drawn_in_frame)
+            no_fbo_bound(c, t, &cap);
         else if (sizes[i] != 2048)
             printf("INFO %s/%s/%s: visibility differs on %.3f%% of %ld reachable pixels with a "
                    "%ux%u map\n", c->r->platform_name, c->r->profile_name, name, 100.0 * f,
-                   compared, cap.stats.shadow_map_size, cap.stats.shadow_map_size);
-        else if (cap.stats.shadow_map_size < 2048)
-            report(c->r, "SKIP", name, "the map is %ux%u here (no FBO: it is drawn in the %dx%d "
-                   "frame); measured %.3f%%, the %.0f%% bound is for 2048x2048",
-                   cap.stats.shadow_map_size, cap.stats.shadow_map_size, c->r->width,
-                   c->r->height, 100.0 * f, 100.0 * bound);
+                   n.compared, cap.stats.shadow_map_size, cap.stats.shadow_map_size);
         else
             report(c->r, f <= bound ? "PASS" : "FAIL", name,
                    "visibility differs on %.3f%% of %ld reachable pixels (at most %.0f%%)",
-                   100.0 * f, compared, 100.0 * bound);
+                   100.0 * f, n.compared, 100.0 * bound);
         capture_free(&cap);
+        if (drawn_in_frame)
+            return; /* every larger size asked gives the same map */
     }
 }
 
@@ -133,7 +186,7 @@ static void acne(map_case *c, uint64_t caps)
     const uint64_t need = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
     capture with, without;
     char name[256], err[512];
-    long n1, n2;
+    map_counts n1, n2;
     double a, b;
     snprintf(name, sizeof name, "gl1/%s/map-depth-offset", c->scene_name);
     if ((caps & need) != need) {
@@ -149,8 +202,8 @@ static void acne(map_case *c, uint64_t caps)
         capture_free(&with);
         return;
     }
-    a = mismatch(c, &with, &n1);
-    b = mismatch(c, &without, &n2);
+    a = mismatch(c, &with, 0, &n1);
+    b = mismatch(c, &without, 0, &n2);
     report(c->r, b > 2.0 * a + 0.01 ? "PASS" : "FAIL", name,
            "default offset (1.1, 4): %.3f%% wrong; no offset: %.3f%% (acne must show)", 100.0 * a,
            100.0 * b);

@@ -31,22 +31,6 @@ typedef struct pcf_case {
 } pcf_case;
 
 
-static int in_band(const pcf_case *c, int x, int y, int band)
-{
-    int w = c->r->width, h = c->r->height, dx, dy;
-    float v = c->ref[((size_t)y * w + x) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R];
-    for (dy = -band; dy <= band; dy++)
-        for (dx = -band; dx <= band; dx++) {
-            int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
-                continue;
-            if (c->hits[(size_t)ny * w + nx].object != c->hits[(size_t)y * w + x].object ||
-                fabsf(c->ref[((size_t)ny * w + nx) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R] - v) > 0.5f)
-                return 1;
-        }
-    return 0;
-}
-
 /* Also counts the shadowed pixels compared and how many of them came out
  * lit: a map that casts nothing must not pass on the lit majority. */
 static double mismatch(const pcf_case *c, const capture *cap, int band, long *compared_out,
@@ -60,7 +44,7 @@ static double mismatch(const pcf_case *c, const capture *cap, int band, long *co
             const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
             const float *g = cap->img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
             double d2 = 0;
-            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit) || in_band(c, x, y, band))
+            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit) || near_shadow_edge(c->hits, c->ref, w, h, x, y, band))
                 continue;
             for (k = 0; k < 3; k++)
                 d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) *

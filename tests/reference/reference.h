@@ -57,6 +57,16 @@ void reference_destroy(reference *r);
  * Returns 1, or 0 on bad arguments or an Embree error. */
 int reference_primary(const reference *r, int width, int height, ref_hit *hits);
 
+/* The point of hit's triangle seen through window point (px, py) of a
+ * width x height image (pixels from the bottom-left corner: pixel (x, y) has
+ * its centre at (x + 0.5, y + 0.5)), on the triangle's plane and beyond its
+ * edges where the point lies outside (barycentrics extrapolated, as GL
+ * interpolates for the helper pixels of a 2x2 quad): a hit there, its uv
+ * among the rest. Screen derivatives of the uv are differences of these.
+ * Returns 1, or 0 for a background hit or a ray along the plane. */
+int reference_hit_on_plane(const reference *r, int width, int height, const ref_hit *hit,
+                           double px, double py, ref_hit *out);
+
 /* Geometric visibility of light `light` from a hit: 1 when the segment from P
  * (offset along Ng toward the light's side by the scene epsilon) to the light
  * position is unoccluded (directional: the ray toward -direction, to
@@ -127,6 +137,34 @@ void reference_shade_passes(const scene *s, const reference *r, const ref_hit *h
  * texel centres at ((i + 0.5) / w, (j + 0.5) / h), rows bottom to top;
  * out in [0,1]. */
 void reference_sample_texture(const scene_texture *t, float u, float v, float out_rgba[4]);
+
+/* A texture's mip chain as stin builds it at texture creation (src/texture.c;
+ * the GLSL tiers keep the size): level 0 the texels, each next level the 2x2
+ * box average of the one before, (a + b + c + d + 2) / 4 per channel, a side
+ * of 1 staying 1, down to 1x1. normal_map: level 0's alpha is 255 and each
+ * next level holds the mean of the four unit normals (n = (rgb - 128) / 127,
+ * each weighted by its alpha / 255), RGB its direction as 128 + 127 n, A its
+ * length (Toksvig). NULL on bad input or out of memory. */
+typedef struct reference_mips reference_mips;
+reference_mips *reference_mips_create(const scene_texture *t, int normal_map);
+void reference_mips_destroy(reference_mips *m);
+int reference_mips_levels(const reference_mips *m);
+/* Level i (0 = the texels, with a normal map's alpha 255), or NULL. */
+const scene_texture *reference_mips_level(const reference_mips *m, int i);
+
+/* GL's level of detail of a 2D texture of width x height texels (GL 4.6
+ * core, 8.14.1, no bias or clamp): lambda = log2(rho), rho the larger of the
+ * lengths of (du/dx width, dv/dx height) and (du/dy width, dv/dy height),
+ * from the uv derivatives along the window's x and y. -HUGE_VAL when both
+ * derivatives are 0. */
+double reference_mip_lambda(const double duv_dx[2], const double duv_dy[2], int width, int height);
+
+/* A sample as GL_LINEAR_MIPMAP_LINEAR minification with GL_LINEAR
+ * magnification and GL_REPEAT: lambda <= 0 magnifies (bilinear at level 0);
+ * else levels floor(lambda) and floor(lambda) + 1, each bilinear, mixed by
+ * the fraction of lambda; from the last level on, that level alone. */
+void reference_sample_mips(const reference_mips *m, float u, float v, double lambda,
+                           float out_rgba[4]);
 
 /* AOV channels of reference_render, in order (the EXR names of DESIGN.md). */
 enum {

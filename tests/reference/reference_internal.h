@@ -50,5 +50,10 @@ int ref_expand_lights(const reference *r, const ref_hit *hit, scene_light *light
 void ref_shade_lights(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
                       const scene_light *lights, int light_count, const float *weight,
                       int passes, float out_rgba[4]);
+/* ref_shade_lights of a hit with its material and albedo texel given (the
+ * surface reference filters the maps and widens the highlight itself). */
+void ref_shade_material(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
+                        const scene_material *m, const float tex[4], const scene_light *lights,
+                        int light_count, const float *weight, int passes, float out_rgba[4]);
 
 #endif

@@ -109,32 +109,56 @@ static void trace_batch(const reference *r, struct RTCRayHit *rays, unsigned n, 
     }
 }
 
+/* The camera's frame for a width x height image: basis f, s, u and the
+ * half extents tx, ty of the image plane at distance 1. 0 on a bad camera. */
+typedef struct camera_frame {
+    double f[3], s[3], u[3], tx, ty;
+} camera_frame;
+
+static int frame_of(const scene_camera *cam, int width, int height, camera_frame *cf)
+{
+    if (width <= 0 || height <= 0 || !camera_basis(cam, cf->f, cf->s, cf->u) ||
+        !(cam->fovy_deg > 0.0f && cam->fovy_deg < 180.0f))
+        return 0;
+    cf->ty = tan(cam->fovy_deg * (3.14159265358979323846 / 360.0));
+    cf->tx = cf->ty * width / height;
+    return 1;
+}
+
+/* Unnormalised, with a forward component of exactly 1: t along it is the
+ * distance along the view axis, so [near, far] is GL's clipping. (px, py):
+ * window position in pixels from the bottom-left corner. */
+static void window_dir(const camera_frame *cf, int width, int height, double px, double py,
+                       double dir[3])
+{
+    double nx = 2.0 * px / width - 1.0, ny = 2.0 * py / height - 1.0;
+    for (int c = 0; c < 3; c++)
+        dir[c] = cf->f[c] + nx * cf->tx * cf->s[c] + ny * cf->ty * cf->u[c];
+}
+
 int reference_primary(const reference *r, int width, int height, ref_hit *hits)
 {
-    if (!r || !hits || width <= 0 || height <= 0)
+    if (!r || !hits)
         return 0;
     const scene_camera *cam = &r->s->camera;
-    double f[3], s[3], u[3];
-    if (!camera_basis(cam, f, s, u) || !(cam->fovy_deg > 0.0f && cam->fovy_deg < 180.0f))
+    camera_frame cf;
+    if (!frame_of(cam, width, height, &cf))
         return 0;
-    double ty = tan(cam->fovy_deg * (3.14159265358979323846 / 360.0));
-    double tx = ty * width / height;
     struct RTCRayHit rays[BATCH];
     size_t total = (size_t)width * (size_t)height, base = 0;
     unsigned n = 0;
     for (size_t i = 0; i < total; i++) {
-        double nx = 2.0 * ((double)(i % (size_t)width) + 0.5) / width - 1.0;
-        double ny = 2.0 * ((double)(i / (size_t)width) + 0.5) / height - 1.0;
+        double dir[3];
         struct RTCRayHit *rh = &rays[n];
+        window_dir(&cf, width, height, (double)(i % (size_t)width) + 0.5,
+                   (double)(i / (size_t)width) + 0.5, dir);
         memset(rh, 0, sizeof *rh);
         rh->ray.org_x = cam->eye[0];
         rh->ray.org_y = cam->eye[1];
         rh->ray.org_z = cam->eye[2];
-        /* Unnormalised, with a forward component of exactly 1: t is then the
-         * distance along the view axis, so [near, far] is GL's clipping. */
-        rh->ray.dir_x = (float)(f[0] + nx * tx * s[0] + ny * ty * u[0]);
-        rh->ray.dir_y = (float)(f[1] + nx * tx * s[1] + ny * ty * u[1]);
-        rh->ray.dir_z = (float)(f[2] + nx * tx * s[2] + ny * ty * u[2]);
+        rh->ray.dir_x = (float)dir[0];
+        rh->ray.dir_y = (float)dir[1];
+        rh->ray.dir_z = (float)dir[2];
         rh->ray.tnear = cam->near_plane;
         rh->ray.tfar = cam->far_plane;
         rh->ray.mask = 0xffffffffu;
@@ -147,6 +171,40 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits)
         }
     }
     return rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
+}
+
+int reference_hit_on_plane(const reference *r, int width, int height, const ref_hit *hit,
+                           double px, double py, ref_hit *out)
+{
+    if (!r || !hit || !out || !hit->hit || hit->object < 0 || hit->object >= r->object_count)
+        return 0;
+    const ref_object *o = &r->objects[hit->object];
+    const uint32_t *tri = o->indices + 3 * (size_t)hit->prim;
+    const float *eye = r->s->camera.eye;
+    camera_frame cf;
+    double dir[3], e1[3], e2[3], q[3], Ng[3];
+    if (!frame_of(&r->s->camera, width, height, &cf))
+        return 0;
+    window_dir(&cf, width, height, px, py, dir);
+    for (int c = 0; c < 3; c++) {
+        double a = o->positions[3 * (size_t)tri[0] + c];
+        e1[c] = o->positions[3 * (size_t)tri[1] + c] - a;
+        e2[c] = o->positions[3 * (size_t)tri[2] + c] - a;
+        q[c] = eye[c] - a;
+    }
+    cross3(e1, e2, Ng);
+    double den = dot3(dir, Ng);
+    if (!(fabs(den) > 1e-30 * sqrt(dot3(Ng, Ng) * dot3(dir, dir))))
+        return 0; /* the ray runs along the plane */
+    double t = -dot3(q, Ng) / den;
+    for (int c = 0; c < 3; c++)
+        q[c] += t * dir[c]; /* the point on the plane, from vertex A */
+    /* barycentrics of q in (e1, e2), beyond the triangle's edges too */
+    double d11 = dot3(e1, e1), d12 = dot3(e1, e2), d22 = dot3(e2, e2);
+    double dq1 = dot3(q, e1), dq2 = dot3(q, e2), det = d11 * d22 - d12 * d12;
+    ref_fill_hit(r, (unsigned)hit->object, (unsigned)hit->prim, (float)((d22 * dq1 - d12 * dq2) / det),
+                 (float)((d11 * dq2 - d12 * dq1) / det), eye, out);
+    return 1;
 }
 
 /* 1 when nothing lies between hit's P (offset along Ng to the side the eye

@@ -164,6 +164,15 @@ void ref_shade_lights(const scene *s, const reference *r, const ref_hit *hit, in
     float tex[4] = {1, 1, 1, 1};
     if (m->albedo >= 0 && m->albedo < s->texture_count)
         reference_sample_texture(&s->textures[m->albedo], hit->uv[0], hit->uv[1], tex);
+    ref_shade_material(s, r, hit, per_vertex_lighting, m, tex, lights, light_count, weight, passes,
+                       out_rgba);
+}
+
+void ref_shade_material(const scene *s, const reference *r, const ref_hit *hit,
+                        int per_vertex_lighting, const scene_material *m, const float tex[4],
+                        const scene_light *lights, int light_count, const float *weight,
+                        int passes, float out_rgba[4])
+{
     if (per_vertex_lighting &&
         (!r || hit->object >= r->object_count || hit->prim < 0 ||
          (uint32_t)hit->prim >= r->objects[hit->object].triangle_count)) {

@@ -3,11 +3,14 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "reference_internal.h"
 #include "reference_surface.h"
 
 struct ref_surface {
     int object_count;
     float **tangents; /* per object: world tangent xyz + w per vertex */
+    int texture_count;
+    reference_mips **mips; /* per texture: stin's chain (none for height maps) */
 };
 
 static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -79,6 +82,25 @@ void ref_mesh_tangents(const scene_mesh *m, float *out)
     free(acc);
 }
 
+/* Height maps have level 0 only in stin (the march reads the true field). */
+static int build_mips(const scene *s, ref_surface *rs)
+{
+    int i;
+    rs->mips = calloc((size_t)s->texture_count + 1, sizeof *rs->mips);
+    if (!rs->mips)
+        return 0;
+    rs->texture_count = s->texture_count;
+    for (i = 0; i < s->texture_count; i++) {
+        const scene_texture *t = &s->textures[i];
+        if (t->kind == SCENE_TEXTURE_HEIGHT)
+            continue;
+        rs->mips[i] = reference_mips_create(t, t->kind == SCENE_TEXTURE_NORMAL);
+        if (!rs->mips[i])
+            return 0;
+    }
+    return 1;
+}
+
 ref_surface *ref_surface_create(const scene *s)
 {
     ref_surface *rs = calloc(1, sizeof *rs);
@@ -109,7 +131,7 @@ ref_surface *ref_surface_create(const scene *s)
         }
         rs->tangents[o] = t;
     }
-    return rs;
+    return build_mips(s, rs) ? rs : (ref_surface_destroy(rs), NULL);
 }
 
 void ref_surface_destroy(ref_surface *rs)
@@ -119,6 +141,9 @@ void ref_surface_destroy(ref_surface *rs)
         return;
     for (o = 0; o < rs->object_count; o++)
         free(rs->tangents[o]);
+    for (o = 0; rs->mips && o < rs->texture_count; o++)
+        reference_mips_destroy(rs->mips[o]);
+    free(rs->mips);
     free(rs->tangents);
     free(rs);
 }
@@ -228,8 +253,45 @@ static double pom_march(const scene_texture *ht, const frame *f, const double vt
     return d;
 }
 
+/* A colour or normal map at uv: through its mip chain with fp's level of
+ * detail, else bilinear at level 0. */
+static void sample_map(const scene *s, const ref_surface *rs, int tex, const double uv[2],
+                       const ref_footprint *fp, float out[4])
+{
+    const scene_texture *t = &s->textures[tex];
+    if (fp && rs->mips[tex])
+        reference_sample_mips(rs->mips[tex], (float)uv[0], (float)uv[1],
+                              reference_mip_lambda(fp->dx, fp->dy, t->width, t->height), out);
+    else
+        reference_sample_texture(t, (float)uv[0], (float)uv[1], out);
+}
+
+/* Per-pixel shading at the final uv: the albedo sampled as the normal map
+ * was, the shininess widened by the filtered normal's length (the lit
+ * shader's Toksvig: s l / (l + s (1 - l)), l clamped to [0.05, 1]). */
+static void shade_mapped(const scene *s, const ref_surface *rs, const ref_hit *h2,
+                         const scene_material *m, float normal_length, const ref_footprint *fp,
+                         float out_rgba[4])
+{
+    scene_material mm = *m;
+    float tex[4] = {1, 1, 1, 1};
+    double uv[2] = {h2->uv[0], h2->uv[1]};
+    float l = normal_length < 0.05f ? 0.05f : normal_length > 1.0f ? 1.0f : normal_length;
+    if (m->albedo >= 0 && m->albedo < s->texture_count)
+        sample_map(s, rs, m->albedo, uv, fp, tex);
+    mm.shininess = m->shininess * l / (l + m->shininess * (1.0f - l));
+    ref_shade_material(s, NULL, h2, 0, &mm, tex, s->lights, s->light_count, NULL, 0, out_rgba);
+}
+
 void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit, int technique,
                        float height_bias, float out_rgba[4], float out_uv[2])
+{
+    ref_surface_shade_filtered(s, rs, hit, technique, height_bias, NULL, out_rgba, out_uv);
+}
+
+void ref_surface_shade_filtered(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                                int technique, float height_bias, const ref_footprint *fp,
+                                float out_rgba[4], float out_uv[2])
 {
     const scene_material *m;
     ref_hit h2;
@@ -251,7 +313,7 @@ void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit
     if (m->height < 0 && technique > REF_SURFACE_NORMAL)
         technique = REF_SURFACE_NORMAL;
     if (technique == REF_SURFACE_PLAIN) {
-        reference_shade(s, NULL, hit, 0, out_rgba);
+        shade_mapped(s, rs, hit, m, 1.0f, fp, out_rgba);
         return;
     }
     hit_frame(s, rs, hit, &f);
@@ -273,7 +335,7 @@ void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit
     } else if (technique == REF_SURFACE_POM) {
         pom_march(&s->textures[m->height], &f, vt, scale, uv);
     }
-    reference_sample_texture(&s->textures[m->normal], (float)uv[0], (float)uv[1], nm);
+    sample_map(s, rs, m->normal, uv, fp, nm);
     h2 = *hit;
     {
         double n[3], c[3];
@@ -291,7 +353,7 @@ void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit
         out_uv[0] = h2.uv[0];
         out_uv[1] = h2.uv[1];
     }
-    reference_shade(s, NULL, &h2, 0, out_rgba);
+    shade_mapped(s, rs, &h2, m, fp ? nm[3] : 1.0f, fp, out_rgba);
 }
 
 /* The material of a hit with a normal and a height map, its scale and the

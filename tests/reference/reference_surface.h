@@ -2,7 +2,7 @@
  * The CPU reference of stin's surface techniques (stin.h, surface), per hit:
  *   normal   per-pixel lighting (reference_shade's model) with the shading
  *            normal decoded from the material's normal map, n = (rgb * 255 -
- *            128) / 127, bilinear at the hit uv (level 0, no mipmaps), in the
+ *            128) / 127, sampled at the hit uv (see below), in the
  *            tangent frame interpolated at the hit: per-vertex tangents by
  *            mesh_tangents.c's rule (uv gradients summed per vertex,
  *            Gram-Schmidt against the normal, handedness in w), moved to
@@ -13,7 +13,11 @@
  *   pom      the true view ray marched through the recessed height field
  *            (h = 1 in the polygon, h = 0 at scale below) in 4096 steps,
  *            then 40 bisections: the uv where the ray meets the field.
- * Albedo and normal map are sampled at the final uv. No self-shadowing in
+ * Albedo and normal map are sampled at the final uv: bilinear at level 0
+ * (ref_surface_shade), or through stin's mip chains at the level GL picks
+ * for the pixel's footprint (ref_surface_shade_filtered), the normal map's
+ * filtered length widening the highlight as the lit shader does (Toksvig).
+ * Height maps have level 0 only, as in stin. No self-shadowing in
  * ref_surface_shade; ref_surface_pom_shadow marches the light ray on its own.
  */
 #ifndef STIN_TESTS_REFERENCE_SURFACE_H
@@ -38,6 +42,19 @@ void ref_mesh_tangents(const scene_mesh *m, float *out);
  * (may be NULL). height_bias < 0: the default scale / 2. */
 void ref_surface_shade(const scene *s, const ref_surface *rs, const ref_hit *hit, int technique,
                        float height_bias, float out_rgba[4], float out_uv[2]);
+
+/* What chooses the mip level of a pixel's samples: the screen derivatives of
+ * the uv the sampler is given (per window pixel along x and along y). */
+typedef struct ref_footprint {
+    double dx[2], dy[2];
+} ref_footprint;
+
+/* ref_surface_shade with albedo and normal map filtered as GL filters stin's
+ * textures (GL_LINEAR_MIPMAP_LINEAR over the chains of reference_mips_create,
+ * lambda from fp by reference_mip_lambda); fp NULL: ref_surface_shade. */
+void ref_surface_shade_filtered(const scene *s, const ref_surface *rs, const ref_hit *hit,
+                                int technique, float height_bias, const ref_footprint *fp,
+                                float out_rgba[4], float out_uv[2]);
 
 /* Parallax terms of a hit with a normal and a height map: h' = h(uv) scale -
  * bias in scene units (h bilinear at the hit uv, level 0; height_bias < 0:

@@ -13,6 +13,7 @@
 #include <cmocka.h>
 
 #include "reference.h"
+#include "reference_surface.h"
 #include "stin/stin.h"
 
 #define PI 3.14159265358979323846
@@ -616,6 +617,211 @@ static void test_texture_sampling(void **state)
     scene_release(&s);
 }
 
+/* ---- mipmaps and footprints --------------------------------------------------- */
+
+/* A w x h texture of the given kind, its texels left to the caller. */
+static scene_texture *add_texture(scene *s, int w, int h, scene_texture_kind kind)
+{
+    s->textures = grow(s->textures, s->texture_count, sizeof *s->textures);
+    scene_texture *t = &s->textures[s->texture_count++];
+    memset(t, 0, sizeof *t);
+    t->kind = kind;
+    t->width = w;
+    t->height = h;
+    t->rgba = calloc(4 * (size_t)w * h, 1);
+    assert_non_null(t->rgba);
+    return t;
+}
+
+static void set_texel(scene_texture *t, int x, int y, int r, int g, int b, int a)
+{
+    uint8_t *p = t->rgba + 4 * ((size_t)y * t->width + x);
+    p[0] = (uint8_t)r; p[1] = (uint8_t)g; p[2] = (uint8_t)b; p[3] = (uint8_t)a;
+}
+
+/* Two normals tilted +-0.6 in x, two of them each, in a 2x2 normal map:
+ * 128 + 127 n rounded, alpha 0 (level 0's alpha must become 255). */
+static void tilted_normals(scene_texture *t)
+{
+    set_texel(t, 0, 0, 204, 128, 230, 0);
+    set_texel(t, 1, 0, 52, 128, 230, 0);
+    set_texel(t, 0, 1, 52, 128, 230, 0);
+    set_texel(t, 1, 1, 204, 128, 230, 0);
+}
+
+static void test_mips_box_chain(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    scene_texture *t = add_texture(&s, 4, 2, SCENE_TEXTURE_ALBEDO);
+    for (int i = 0; i < 4 * 4 * 2; i++)
+        t->rgba[i] = (uint8_t)(29 * i + 3);
+    reference_mips *m = reference_mips_create(t, 0);
+    assert_non_null(m);
+    assert_int_equal(reference_mips_levels(m), 3); /* 4x2, 2x1, 1x1 */
+    const scene_texture *l0 = reference_mips_level(m, 0), *l1 = reference_mips_level(m, 1);
+    const scene_texture *l2 = reference_mips_level(m, 2);
+    assert_non_null(l2);
+    assert_null(reference_mips_level(m, 3));
+    assert_memory_equal(l0->rgba, t->rgba, 4 * 4 * 2);
+    assert_int_equal(l1->width, 2);
+    assert_int_equal(l1->height, 1);
+    assert_int_equal(l2->width, 1);
+    assert_int_equal(l2->height, 1);
+    for (int x = 0; x < 2; x++)
+        for (int c = 0; c < 4; c++) { /* (a + b + c + d + 2) / 4 of the 2x2 block */
+            const uint8_t *p = t->rgba + 4 * 2 * x + c;
+            assert_int_equal(l1->rgba[4 * x + c], (p[0] + p[4] + p[16] + p[20] + 2) / 4);
+        }
+    for (int c = 0; c < 4; c++) /* a height of 1 stays 1: the row is used twice */
+        assert_int_equal(l2->rgba[c], (2 * l1->rgba[c] + 2 * l1->rgba[4 + c] + 2) / 4);
+    reference_mips_destroy(m);
+    assert_null(reference_mips_create(NULL, 0));
+    scene_release(&s);
+}
+
+static void test_mips_normal_chain(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    scene_texture *t = add_texture(&s, 2, 2, SCENE_TEXTURE_NORMAL);
+    tilted_normals(t);
+    reference_mips *m = reference_mips_create(t, 1);
+    assert_non_null(m);
+    assert_int_equal(reference_mips_levels(m), 2);
+    const scene_texture *l0 = reference_mips_level(m, 0), *l1 = reference_mips_level(m, 1);
+    for (int i = 0; i < 4; i++)
+        assert_int_equal(l0->rgba[4 * i + 3], 255);
+    /* the mean of (+-0.598, 0, 0.803) / 1.0016 points straight up, length 0.8019 */
+    double nx = (204 - 128) / 127.0, nz = (230 - 128) / 127.0, len = nz / sqrt(nx * nx + nz * nz);
+    assert_int_equal(l1->rgba[0], 128);
+    assert_int_equal(l1->rgba[1], 128);
+    assert_int_equal(l1->rgba[2], 255);
+    assert_int_equal(l1->rgba[3], (int)(255.0 * len + 0.5));
+    reference_mips_destroy(m);
+    scene_release(&s);
+}
+
+static void test_mip_lambda(void **state)
+{
+    (void)state;
+    double one[2] = {1.0 / 256, 0}, up[2] = {0, 1.0 / 256}, four[2] = {4.0 / 256, 0};
+    double slant[2] = {3.0 / 256, 4.0 / 128}, zero[2] = {0, 0};
+    assert_close(reference_mip_lambda(one, up, 256, 256), 0.0, 1e-12);
+    assert_close(reference_mip_lambda(four, up, 256, 256), 2.0, 1e-12); /* the longer side */
+    assert_close(reference_mip_lambda(up, four, 256, 256), 2.0, 1e-12);
+    assert_close(reference_mip_lambda(slant, zero, 256, 128), log2(5.0), 1e-12); /* texels */
+    assert_true(reference_mip_lambda(zero, zero, 256, 256) < -1e300);
+}
+
+static void test_sample_mips(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    scene_texture *t = add_texture(&s, 2, 2, SCENE_TEXTURE_ALBEDO);
+    set_texel(t, 0, 0, 0, 40, 200, 255);
+    set_texel(t, 1, 0, 100, 40, 0, 255);
+    set_texel(t, 0, 1, 20, 80, 200, 255);
+    set_texel(t, 1, 1, 80, 80, 0, 255);
+    reference_mips *m = reference_mips_create(t, 0);
+    const uint8_t *top = reference_mips_level(m, 1)->rgba;
+    float a[4], b[4];
+    for (int i = 0; i < 5; i++) {
+        float u = 0.1f + 0.2f * i, v = 0.3f + 0.1f * i;
+        reference_sample_texture(t, u, v, a); /* magnified: level 0 */
+        reference_sample_mips(m, u, v, -0.5, b);
+        for (int c = 0; c < 4; c++)
+            assert_close(a[c], b[c], 1e-7);
+        reference_sample_mips(m, u, v, 1.0, b); /* the last level, and beyond it */
+        for (int c = 0; c < 4; c++)
+            assert_close(b[c], top[c] / 255.0, 1e-6);
+        reference_sample_mips(m, u, v, 7.0, b);
+        assert_close(b[0], top[0] / 255.0, 1e-6);
+    }
+    reference_sample_mips(m, 0.25f, 0.25f, 0.25, b); /* texel (0,0)'s centre, a quarter up */
+    for (int c = 0; c < 3; c++)
+        assert_close(b[c], (0.75 * t->rgba[c] + 0.25 * top[c]) / 255.0, 1e-6);
+    reference_mips_destroy(m);
+    scene_release(&s);
+}
+
+/* The plane of the hit's triangle through other window points: the primary
+ * hits where they land on the triangle, its extension beyond the edges. */
+static void test_hit_on_plane(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.camera.fovy_deg = 90.0f; /* the plane z = 0 spans [-5,5] vertically */
+    add_object(&s, add_quad(&s), add_material(&s, 1, 1, 1, 0, 1), 1.0, 0, 0, 0);
+    reference *r = create(&s);
+    enum { W = 20, H = 10 };
+    ref_hit hits[W * H], o;
+    assert_true(reference_primary(r, W, H, hits));
+    const ref_hit *centre = &hits[(H / 2) * W + W / 2]; /* P (0.5, 0.5, 0) */
+    assert_int_equal(centre->hit, 1);
+    for (int y = H / 2 - 1; y <= H / 2; y++)
+        for (int x = W / 2 - 1; x <= W / 2; x++) {
+            const ref_hit *h = &hits[y * W + x];
+            assert_true(reference_hit_on_plane(r, W, H, centre, x + 0.5, y + 0.5, &o));
+            assert_int_equal(o.object, h->object);
+            for (int c = 0; c < 2; c++) {
+                assert_close(o.P[c], h->P[c], 1e-5);
+                assert_close(o.uv[c], h->uv[c], 1e-6);
+            }
+        }
+    /* window (0, 0): x = -10, y = -5 on the plane, far outside the unit quad */
+    assert_true(reference_hit_on_plane(r, W, H, centre, 0.0, 0.0, &o));
+    assert_close(o.P[0], -10.0, 1e-4);
+    assert_close(o.P[1], -5.0, 1e-4);
+    assert_close(o.uv[0], (-10.0 + 1.0) / 2.0, 1e-5);
+    assert_close(o.uv[1], (-5.0 + 1.0) / 2.0, 1e-5);
+    ref_hit none;
+    memset(&none, 0, sizeof none);
+    assert_false(reference_hit_on_plane(r, W, H, &none, 1.0, 1.0, &o));
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* Filtered surface shading: a magnified footprint is the level-0 answer; one
+ * wider than the map reads the 1x1 level, the mean normal straight up and its
+ * length widening the highlight (Toksvig). */
+static void test_surface_filtered(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.ambient[0] = s.ambient[1] = s.ambient[2] = 0.0f;
+    int mat = add_material(&s, 0.5f, 0.5f, 0.5f, 0.5f, 16.0f);
+    add_object(&s, add_quad(&s), mat, 1.0, 0, 0, 0);
+    tilted_normals(add_texture(&s, 2, 2, SCENE_TEXTURE_NORMAL));
+    s.materials[mat].normal = 0;
+    scene_light *l = add_light(&s, SCENE_LIGHT_DIRECTIONAL);
+    l->direction[0] = -0.6f; /* toward the light: (0.6, 0, 0.8) */
+    l->direction[2] = -0.8f;
+    reference *r = create(&s);
+    ref_surface *rs = ref_surface_create(&s);
+    assert_non_null(rs);
+    ref_hit h = centre_hit(r);
+    float a[4], b[4];
+    ref_footprint tiny = {{1e-4, 0}, {0, 1e-4}}, wide = {{4.0, 0}, {0, 4.0}};
+    ref_surface_shade(&s, rs, &h, REF_SURFACE_NORMAL, -1.0f, a, NULL);
+    ref_surface_shade_filtered(&s, rs, &h, REF_SURFACE_NORMAL, -1.0f, &tiny, b, NULL);
+    for (int c = 0; c < 4; c++)
+        assert_close(a[c], b[c], 1e-7);
+    ref_surface_shade_filtered(&s, rs, &h, REF_SURFACE_NORMAL, -1.0f, &wide, b, NULL);
+    double len = (int)(255.0 * 0.80186 + 0.5) / 255.0, n_dot_h = 1.8 / sqrt(0.36 + 3.24);
+    double shin = 16.0 * len / (len + 16.0 * (1.0 - len));
+    assert_close(b[0], 0.8 * 0.5 + 0.5 * pow(n_dot_h, shin), 2e-6); /* below 1: unclamped */
+    assert_true(fabs(b[0] - (0.8 * 0.5 + 0.5 * pow(n_dot_h, 16.0))) > 0.1); /* Toksvig shows */
+    ref_surface_destroy(rs);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
 /* ---- whole images ------------------------------------------------------------ */
 
 static void test_render_aovs(void **state)
@@ -931,6 +1137,12 @@ int main(void)
         cmocka_unit_test(test_spot_cone),
         cmocka_unit_test(test_attenuation),
         cmocka_unit_test(test_texture_sampling),
+        cmocka_unit_test(test_mips_box_chain),
+        cmocka_unit_test(test_mips_normal_chain),
+        cmocka_unit_test(test_mip_lambda),
+        cmocka_unit_test(test_sample_mips),
+        cmocka_unit_test(test_hit_on_plane),
+        cmocka_unit_test(test_surface_filtered),
         cmocka_unit_test(test_render_aovs),
         cmocka_unit_test(test_passes_equal_single_pass_below_one),
         cmocka_unit_test(test_passes_saturate),
