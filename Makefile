@@ -98,9 +98,10 @@ SAN_CFLAGS := -std=c99 $(WARN) -g -O1 $(SAN) -D_POSIX_C_SOURCE=200809L -Iinclude
 LIB_UNIT := $(filter-out test_noheap test_scene test_reference,$(patsubst tests/unit/%.c,%,$(wildcard tests/unit/test_*.c)))
 UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_reference $(B)/tests/test_noheap
 
-$(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c tests/unit/fake_gl.c $(LIB_SRC) $(B)/shaders_embedded.c $(wildcard src/*.h include/stin/*.h tests/unit/*.h)
+FAKE_GL_SRC := tests/unit/fake_gl.c tests/unit/fake_gl_state.c
+$(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c $(FAKE_GL_SRC) $(LIB_SRC) $(B)/shaders_embedded.c $(wildcard src/*.h include/stin/*.h tests/unit/*.h)
 	@mkdir -p $(@D)
-	$(CC) $(SAN_CFLAGS) -o $@ $< tests/unit/fake_gl.c $(LIB_SRC) $(B)/shaders_embedded.c -lcmocka
+	$(CC) $(SAN_CFLAGS) -o $@ $< $(FAKE_GL_SRC) $(LIB_SRC) $(B)/shaders_embedded.c -lcmocka
 $(B)/tests/test_scene: tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(PLATFORM_SRC) $(B)/libstin.a $(wildcard tools/common/*.h)
 	@mkdir -p $(@D)/san
 	$(CXX) -std=c++17 $(WARN) -g -O1 $(SAN) -Iinclude -Itools/common -c tools/common/image_io.cpp -o $(@D)/san/image_io.o
@@ -109,10 +110,10 @@ $(B)/tests/test_reference: tests/unit/test_reference.c $(REF_SRC) $(B)/libstin.a
 	@mkdir -p $(@D)
 	$(CC) $(SAN_CFLAGS) -o $@ $< $(REF_SRC) $(B)/libstin.a -lcmocka $(REF_LIBS) -lm
 # The allocator is interposed here, so no AddressSanitizer (it owns malloc).
-$(B)/tests/test_noheap: tests/unit/test_noheap.c tests/unit/fake_gl.c $(B)/libstin.a
+$(B)/tests/test_noheap: tests/unit/test_noheap.c $(FAKE_GL_SRC) $(B)/libstin.a
 	@mkdir -p $(@D)
 	$(CC) -std=c99 $(WARN) -g -O1 -fsanitize=undefined -fno-sanitize-recover=all -D_GNU_SOURCE -Iinclude -Isrc -I$(B) -Itests/unit \
-	  -o $@ $< tests/unit/fake_gl.c $(B)/libstin.a -lcmocka
+	  -o $@ $< $(FAKE_GL_SRC) $(B)/libstin.a -lcmocka
 
 $(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)

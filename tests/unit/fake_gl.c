@@ -1,7 +1,9 @@
 /* The fake GL of fake_gl.h. Entry points that need behaviour (strings,
- * integers, object names, shader status, counters) are written out; every
- * other one is a counted no-op generated from the STIN_GL_FUNCS list, so the
- * fake follows the library's table and every stub has the exact signature. */
+ * integers, object names, shader status, counters) are written out here,
+ * the ones that change GL state in fake_gl_state.c; every other one is a
+ * counted no-op generated from the STIN_GL_FUNCS list, so the fake follows
+ * the library's table and every stub has the exact signature. */
+#define FAKE_GL_STUBS
 #include "fake_gl.h"
 
 #include <string.h>
@@ -9,15 +11,14 @@
 fake_gl_state fake_gl;
 
 /* ---- generated no-op stubs -------------------------------------------------
- * FAKE_CUSTOM_<Name> marks an entry point written out by hand below; the
- * probe turns "is it marked?" into 0 or 1 so the X-macro can skip it. A
- * non-void entry point left unmarked fails to compile (no return value). */
+ * FAKE_CUSTOM_<Name> marks an entry point written out by hand below,
+ * FAKE_STATE_<Name> (fake_gl_state.h) one written out in fake_gl_state.c;
+ * the probes turn "is it marked?" into 0 or 1 so the X-macro can skip them.
+ * A non-void entry point left unmarked fails to compile (no return value). */
 #define FAKE_CUSTOM_GetString ~, 1
 #define FAKE_CUSTOM_GetStringi ~, 1
 #define FAKE_CUSTOM_GetIntegerv ~, 1
 #define FAKE_CUSTOM_GetError ~, 1
-#define FAKE_CUSTOM_Enable ~, 1
-#define FAKE_CUSTOM_Disable ~, 1
 #define FAKE_CUSTOM_DrawElements ~, 1
 #define FAKE_CUSTOM_GenTextures ~, 1
 #define FAKE_CUSTOM_DeleteTextures ~, 1
@@ -26,6 +27,8 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_DeleteBuffers ~, 1
 #define FAKE_CUSTOM_GenVertexArrays ~, 1
 #define FAKE_CUSTOM_DeleteVertexArrays ~, 1
+#define FAKE_CUSTOM_GenFramebuffers ~, 1
+#define FAKE_CUSTOM_DeleteFramebuffers ~, 1
 #define FAKE_CUSTOM_CreateShader ~, 1
 #define FAKE_CUSTOM_ShaderSource ~, 1
 #define FAKE_CUSTOM_GetShaderiv ~, 1
@@ -39,17 +42,46 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GetFramebufferAttachmentParameteriv ~, 1
 #define FAKE_CUSTOM_CheckFramebufferStatus ~, 1
 
-#define FAKE_SECOND(a, b, ...) b
-#define FAKE_PROBE(...) FAKE_SECOND(__VA_ARGS__, 0, ~)
-#define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)
-#define FAKE_CAT(a, b) FAKE_CAT_(a, b)
-#define FAKE_CAT_(a, b) a##b
+/* Generated no-ops that leave the state fake_gl_state.h keeps alone: they
+ * draw, upload, or set program, texture-object or array-pointer state,
+ * which the fake does not keep. Any other generated one is reported by
+ * fake_gl_untracked_entry_point when called. */
+#define FAKE_STATELESS_Clear ~, 1
+#define FAKE_STATELESS_DrawArrays ~, 1
+#define FAKE_STATELESS_TexParameteri ~, 1
+#define FAKE_STATELESS_TexParameterfv ~, 1
+#define FAKE_STATELESS_Finish ~, 1
+#define FAKE_STATELESS_CopyTexSubImage2D ~, 1
+#define FAKE_STATELESS_TexImage1D ~, 1
+#define FAKE_STATELESS_VertexPointer ~, 1
+#define FAKE_STATELESS_NormalPointer ~, 1
+#define FAKE_STATELESS_TexCoordPointer ~, 1
+#define FAKE_STATELESS_BufferData ~, 1
+#define FAKE_STATELESS_CompileShader ~, 1
+#define FAKE_STATELESS_AttachShader ~, 1
+#define FAKE_STATELESS_BindAttribLocation ~, 1
+#define FAKE_STATELESS_LinkProgram ~, 1
+#define FAKE_STATELESS_Uniform1i ~, 1
+#define FAKE_STATELESS_Uniform1f ~, 1
+#define FAKE_STATELESS_Uniform3fv ~, 1
+#define FAKE_STATELESS_Uniform4fv ~, 1
+#define FAKE_STATELESS_UniformMatrix3fv ~, 1
+#define FAKE_STATELESS_UniformMatrix4fv ~, 1
+#define FAKE_STATELESS_VertexAttribPointer ~, 1
+#define FAKE_STATELESS_FramebufferTexture2D ~, 1
+#define FAKE_STATELESS_GenerateMipmap ~, 1
 
-#define FAKE_STUB_0(ret, name, params) \
+#define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)
+#define FAKE_IS_STATELESS(name) FAKE_PROBE(FAKE_STATELESS_##name)
+/* 00: generated here, 10: written out here, 01: written out in fake_gl_state.c */
+#define FAKE_KIND(name) FAKE_CAT(FAKE_IS_CUSTOM(name), FAKE_IS_STATE(name))
+
+#define FAKE_STUB_00(ret, name, params) \
     static ret STIN_APIENTRY fake_##name params { fake_gl.calls[STIN_GLFN_##name]++; }
-#define FAKE_STUB_1(ret, name, params) /* written out below */
+#define FAKE_STUB_10(ret, name, params) /* written out below */
+#define FAKE_STUB_01(ret, name, params) /* in fake_gl_state.c */
 #define FAKE_STUB(ret, name, params, need, alt) \
-    FAKE_CAT(FAKE_STUB_, FAKE_IS_CUSTOM(name))(ret, name, params)
+    FAKE_CAT(FAKE_STUB_, FAKE_KIND(name))(ret, name, params)
 
 #if defined(__GNUC__)
 #pragma GCC diagnostic push
@@ -60,12 +92,32 @@ STIN_GL_FUNCS(FAKE_STUB)
 #pragma GCC diagnostic pop
 #endif
 
-/* Every stub, by prototype: the hand-written ones below must match the table. */
-#define FAKE_PROTO(ret, name, params, need, alt) static ret STIN_APIENTRY fake_##name params;
+/* Every stub of this file, by prototype: the hand-written ones below must
+ * match the table (fake_gl_state.h declares the others). */
+#define FAKE_PROTO_0(ret, name, params) static ret STIN_APIENTRY fake_##name params;
+#define FAKE_PROTO_1(ret, name, params)
+#define FAKE_PROTO(ret, name, params, need, alt) \
+    FAKE_CAT(FAKE_PROTO_, FAKE_IS_STATE(name))(ret, name, params)
 STIN_GL_FUNCS(FAKE_PROTO)
 #undef FAKE_PROTO
 
-#define COUNT(name) (fake_gl.calls[STIN_GLFN_##name]++)
+/* 1 for a generated no-op that is not marked stateless. */
+#define FAKE_UNTRACKED_000 1
+#define FAKE_UNTRACKED_001 0
+#define FAKE_UNTRACKED_100 0
+#define FAKE_UNTRACKED_010 0
+#define FAKE_UNTRACKED(ret, name, params, need, alt) \
+    FAKE_CAT(FAKE_UNTRACKED_, FAKE_CAT(FAKE_KIND(name), FAKE_IS_STATELESS(name))),
+static const unsigned char untracked_noop[STIN_GLFN_COUNT] = {STIN_GL_FUNCS(FAKE_UNTRACKED)};
+
+const char *fake_gl_untracked_entry_point(void)
+{
+    int i;
+    for (i = 0; i < STIN_GLFN_COUNT; i++)
+        if (untracked_noop[i] && fake_gl.calls[i])
+            return stin__glfn_name((stin__glfn)i);
+    return NULL;
+}
 
 /* ---- strings and integers ---------------------------------------------- */
 static const GLubyte *STIN_APIENTRY fake_GetString(GLenum name)
@@ -107,7 +159,12 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     case GL_MAX_GEOMETRY_OUTPUT_VERTICES: *data = c->max_geometry_output_vertices; break;
     case GL_NUM_EXTENSIONS: *data = c->extension_count; break;
     case GL_CONTEXT_PROFILE_MASK: *data = c->core_profile ? GL_CONTEXT_CORE_PROFILE_BIT : 2; break;
-    default: *data = 0; break;
+    default:
+        if (!fake_gl_state_get(pname, data)) {
+            *data = 0;
+            fake_gl_state_untracked("glGetIntegerv", pname);
+        }
+        break;
     }
 }
 
@@ -128,44 +185,7 @@ static GLenum STIN_APIENTRY fake_GetError(void)
     return GL_NO_ERROR;
 }
 
-/* ---- enable state and drawing ------------------------------------------- */
-static void set_cap(GLenum cap, int on)
-{
-    unsigned i;
-    for (i = 0; i < fake_gl.cap_count; i++)
-        if (fake_gl.cap_enum[i] == cap)
-            break;
-    if (i == fake_gl.cap_count) {
-        if (i == FAKE_GL_MAX_CAPS)
-            return;
-        fake_gl.cap_enum[fake_gl.cap_count++] = cap;
-    }
-    fake_gl.cap_on[i] = (unsigned char)on;
-}
-
-int fake_gl_is_enabled(GLenum cap)
-{
-    unsigned i;
-    for (i = 0; i < fake_gl.cap_count; i++)
-        if (fake_gl.cap_enum[i] == cap)
-            return fake_gl.cap_on[i];
-    return 0;
-}
-
-static void STIN_APIENTRY fake_Enable(GLenum cap)
-{
-    COUNT(Enable);
-    fake_gl.last_enabled = cap;
-    set_cap(cap, 1);
-}
-
-static void STIN_APIENTRY fake_Disable(GLenum cap)
-{
-    COUNT(Disable);
-    fake_gl.last_disabled = cap;
-    set_cap(cap, 0);
-}
-
+/* ---- drawing ------------------------------------------------------------ */
 static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum type,
                                             const void *idx)
 {
@@ -197,41 +217,24 @@ static void delete_names(GLsizei n, const GLuint *names, unsigned *deleted)
     }
 }
 
-static void STIN_APIENTRY fake_GenTextures(GLsizei n, GLuint *t)
-{
-    COUNT(GenTextures);
-    gen_names(n, t, &fake_gl.textures_created);
-}
-
-static void STIN_APIENTRY fake_DeleteTextures(GLsizei n, const GLuint *t)
-{
-    COUNT(DeleteTextures);
-    delete_names(n, t, &fake_gl.textures_deleted);
-}
-
-static void STIN_APIENTRY fake_GenBuffers(GLsizei n, GLuint *b)
-{
-    COUNT(GenBuffers);
-    gen_names(n, b, &fake_gl.buffers_created);
-}
-
-static void STIN_APIENTRY fake_DeleteBuffers(GLsizei n, const GLuint *b)
-{
-    COUNT(DeleteBuffers);
-    delete_names(n, b, &fake_gl.buffers_deleted);
-}
-
-static void STIN_APIENTRY fake_GenVertexArrays(GLsizei n, GLuint *a)
-{
-    COUNT(GenVertexArrays);
-    gen_names(n, a, &fake_gl.vertex_arrays_created);
-}
-
-static void STIN_APIENTRY fake_DeleteVertexArrays(GLsizei n, const GLuint *a)
-{
-    COUNT(DeleteVertexArrays);
-    delete_names(n, a, &fake_gl.vertex_arrays_deleted);
-}
+/* glGen<Kind>s / glDelete<Kind>s: names from one counter, counted; a
+ * deleted name is unbound where it was bound (fake_gl_state.c). */
+#define FAKE_OBJECTS(kind, counter, obj)                                                \
+    static void STIN_APIENTRY fake_Gen##kind(GLsizei n, GLuint *names)                  \
+    {                                                                                   \
+        COUNT(Gen##kind);                                                               \
+        gen_names(n, names, &fake_gl.counter##_created);                                \
+    }                                                                                   \
+    static void STIN_APIENTRY fake_Delete##kind(GLsizei n, const GLuint *names)         \
+    {                                                                                   \
+        COUNT(Delete##kind);                                                            \
+        delete_names(n, names, &fake_gl.counter##_deleted);                             \
+        fake_gl_state_deleted(obj, n, names);                                           \
+    }
+FAKE_OBJECTS(Textures, textures, FAKE_OBJ_TEXTURE)
+FAKE_OBJECTS(Buffers, buffers, FAKE_OBJ_BUFFER)
+FAKE_OBJECTS(VertexArrays, vertex_arrays, FAKE_OBJ_VERTEX_ARRAY)
+FAKE_OBJECTS(Framebuffers, framebuffers, FAKE_OBJ_FRAMEBUFFER)
 
 static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt, GLsizei w,
                                           GLsizei h, GLint border, GLenum fmt, GLenum type,
@@ -430,11 +433,25 @@ void *fake_gl_get_proc(void *user, const char *name)
     return NULL;
 }
 
+stin_desc fake_gl_desc(fake_log *log)
+{
+    stin_desc d;
+    memset(&d, 0, sizeof d);
+    d.get_proc_address = fake_gl_get_proc;
+    if (log) {
+        memset(log, 0, sizeof *log);
+        d.log = fake_log_fn;
+        d.log_user = log;
+    }
+    return d;
+}
+
 void fake_gl_reset(const fake_gl_config *config)
 {
     memset(&fake_gl, 0, sizeof fake_gl);
     if (config)
         fake_gl.config = *config;
+    fake_gl_state_reset();
 }
 
 /* ---- profiles ----------------------------------------------------------- */

@@ -8,12 +8,15 @@
  *     ... stin calls ...
  *     assert_int_equal(fake_gl.textures_created, fake_gl.textures_deleted);
  *
+ * fake_gl.gl is the GL state the calls left (fake_gl_state.h); link
+ * fake_gl_state.c too.
  * The config is copied by fake_gl_reset; the strings it points to must stay
  * alive while the fake is used. Compile with -Isrc (uses gl_types.h). */
 #ifndef FAKE_GL_H
 #define FAKE_GL_H
 
 #include "internal.h"
+#include "fake_gl_state.h"
 
 typedef struct fake_gl_config {
     const char *version;                 /* GL_VERSION; NULL makes glGetString return NULL */
@@ -46,7 +49,7 @@ fake_gl_config fake_gl_profile(fake_gl_profile_id id);
 /* What the stubs saw since the last fake_gl_reset. */
 #define FAKE_GL_MAX_LEVELS 16
 #define FAKE_GL_MAX_SHADERS 64
-#define FAKE_GL_MAX_CAPS 32
+#define FAKE_GL_MAX_VAOS 64
 typedef struct fake_gl_state {
     fake_gl_config config;
     unsigned calls[STIN_GLFN_COUNT];     /* per entry point, index STIN_GLFN_<Name> */
@@ -62,14 +65,22 @@ typedef struct fake_gl_state {
     unsigned tex_levels;                 /* levels of the latest chain */
     int tex_level_width[FAKE_GL_MAX_LEVELS], tex_level_height[FAKE_GL_MAX_LEVELS];
     unsigned char tex_level_first_texel[FAKE_GL_MAX_LEVELS][4]; /* RGBA of texel (0, 0) */
-    /* glEnable/glDisable */
-    GLenum last_enabled, last_disabled;
-    GLenum cap_enum[FAKE_GL_MAX_CAPS];
-    unsigned char cap_on[FAKE_GL_MAX_CAPS];
-    unsigned cap_count;
+    unsigned framebuffers_created, framebuffers_deleted;
     /* shader objects: "#version" of each, by name - 1 */
     int shader_version[FAKE_GL_MAX_SHADERS];
     unsigned next_name;
+    /* GL state (fake_gl_state.h) */
+    fake_gl_glstate gl;
+    struct {
+        GLuint name;
+        fake_gl_vao state;
+    } vaos[FAKE_GL_MAX_VAOS];            /* named vertex array objects, as first bound */
+    int version;                         /* GL_VERSION as 10 * major + minor */
+    /* State calls or queries the fake does not model (an enum it does not
+     * know), and calls a real GL would refuse (a stack overflow, a unit out
+     * of range): counted, the first of each described. */
+    unsigned untracked, gl_errors;
+    char untracked_what[96], gl_error_what[96];
 } fake_gl_state;
 
 extern fake_gl_state fake_gl;
@@ -78,8 +89,13 @@ void fake_gl_reset(const fake_gl_config *config);
 /* stin_get_proc_fn: resolves "gl<Name>" for every entry point in gl_funcs.h
  * (alternate ARB/EXT names never resolve); `user` is ignored. */
 void *fake_gl_get_proc(void *user, const char *name);
-/* 1 if glEnable(cap) was the last of glEnable/glDisable(cap), 0 otherwise. */
+/* glIsEnabled(cap): per-unit caps (GL_TEXTURE_2D, ...) of the active unit;
+ * 0 for a cap the fake does not know. */
 int fake_gl_is_enabled(GLenum cap);
+/* The first entry point called since fake_gl_reset that is a generated
+ * no-op yet not known to leave the tracked state alone ("glFoo"), or NULL:
+ * a new state-changing entry point needs a stub in fake_gl_state.c. */
+const char *fake_gl_untracked_entry_point(void);
 
 /* A stin_log_fn that records into a fake_log passed as log_user: a count per
  * item and level, and the messages one per line (truncated when full). */
@@ -91,6 +107,8 @@ typedef struct fake_log {
 } fake_log;
 
 void fake_log_fn(void *user, stin_log_level level, stin_log_item item, const char *message);
+/* A zeroed desc on the fake GL; with `log` (emptied) it records the log. */
+stin_desc fake_gl_desc(fake_log *log);
 /* 1 if a logged message of `item` (STIN_LOG_ITEM_COUNT: any item) contains `s`. */
 int fake_log_has(const fake_log *log, stin_log_item item, const char *s);
 
