@@ -98,7 +98,7 @@ SAN_CFLAGS := -std=c99 $(WARN) -g -O1 $(SAN) -D_POSIX_C_SOURCE=200809L -Iinclude
 LIB_UNIT := $(filter-out test_noheap test_scene test_reference,$(patsubst tests/unit/%.c,%,$(wildcard tests/unit/test_*.c)))
 UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_reference $(B)/tests/test_noheap
 
-FAKE_GL_SRC := tests/unit/fake_gl.c tests/unit/fake_gl_state.c
+FAKE_GL_SRC := tests/unit/fake_gl.c tests/unit/fake_gl_state.c tests/unit/fake_gl_attrib.c
 $(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c $(FAKE_GL_SRC) $(LIB_SRC) $(B)/shaders_embedded.c $(wildcard src/*.h include/stin/*.h tests/unit/*.h)
 	@mkdir -p $(@D)
 	$(CC) $(SAN_CFLAGS) -o $@ $< $(FAKE_GL_SRC) $(LIB_SRC) $(B)/shaders_embedded.c -lcmocka

@@ -352,6 +352,7 @@ stin_result stin_end_frame(stin_context *ctx)
     ctx->stats.lights = ctx->light_count;
     for (i = 0; i < ctx->draw_count; i++)
         ctx->stats.triangles += ctx->meshes[ctx->draws[i].mesh_slot].triangle_count;
+    stin__state_save(ctx);
     run_plan(ctx);
     stin__state_restore(ctx);
     stin__gl_check_errors(ctx, "stin_end_frame");

@@ -93,7 +93,9 @@ struct stin_context {
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);
-/* Restores the GL state the header promises after a frame. */
+/* Around a frame (state.c): save what the header promises to give back,
+ * then restore it and reset the rest to the documented defaults. */
+void stin__state_save(stin_context *ctx);
 void stin__state_restore(stin_context *ctx);
 
 #endif

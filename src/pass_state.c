@@ -47,7 +47,7 @@ static void apply_stencil(stin_context *ctx, const stin__pass_state *s, const st
         return;
     if (ext && (force || s->two_sided != c->two_sided))
         toggle(ctx, GL_STENCIL_TEST_TWO_SIDE_EXT, s->two_sided);
-    if (ext && s->two_sided) {
+    if (ext && (s->two_sided || force)) { /* forced: the back face to the front's */
         GL(ctx, ActiveStencilFaceEXT)(GL_BACK);
         stencil_op(ctx, back);
         GL(ctx, StencilFunc)(back->func, back->ref, back->mask);
@@ -161,13 +161,13 @@ void stin__bind_unit(stin_context *ctx, int unit, GLenum target, GLuint name)
         ctx->units_used |= 1u << unit;
 }
 
-void stin__unbind_used_units(stin_context *ctx)
+void stin__unbind_units(stin_context *ctx, uint32_t units)
 {
     int u;
     int cube = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_TEXTURE_CUBE_MAP)) != 0;
     int core = ctx->caps.profile == STIN_GL_PROFILE_CORE;
     for (u = 31; u >= 0; u--) {
-        if (!(ctx->units_used & (1u << u)))
+        if (!(units & (1u << u)))
             continue;
         if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
             GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + u));
@@ -179,5 +179,7 @@ void stin__unbind_used_units(stin_context *ctx)
     }
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    ctx->units_used = 0;
+    ctx->units_used &= ~units;
 }
+
+void stin__unbind_used_units(stin_context *ctx) { stin__unbind_units(ctx, ctx->units_used); }

@@ -45,8 +45,10 @@ stin__pass_state stin__pass_draw(const struct stin_context *ctx, int additive, i
 /* Binds texture `name` of `target` on unit `unit` and records the unit as
  * used this frame; leaves `unit` active. */
 void stin__bind_unit(struct stin_context *ctx, int unit, GLenum target, GLuint name);
-/* Unbinds every 2D, 1D and cube-map texture on the units the frame used and
- * makes unit 0 active. */
+/* Unbinds every 2D, 1D and cube-map texture on the units of the bit mask
+ * `units` (bit u: unit u) and makes unit 0 active. */
+void stin__unbind_units(struct stin_context *ctx, uint32_t units);
+/* The same for the units the frame used. */
 void stin__unbind_used_units(struct stin_context *ctx);
 
 #endif

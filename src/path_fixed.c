@@ -309,9 +309,6 @@ static void fixed_volume_end(stin_context *ctx)
 static void fixed_begin(stin_context *ctx)
 {
     ctx->bound_mesh = 0xffffffffu;
-    /* lights, materials, the light model and the current colour are the
-     * caller's: GL1's own save and restore */
-    GL(ctx, PushAttrib)(GL_LIGHTING_BIT | GL_CURRENT_BIT);
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PushMatrix)();
     GL(ctx, LoadMatrixf)(ctx->projection);
@@ -329,15 +326,10 @@ static void fixed_begin(stin_context *ctx)
     GL(ctx, EnableClientState)(GL_TEXTURE_COORD_ARRAY);
 }
 
+/* Lights, enables, texture units and the matrix mode come back with the
+ * frame's glPopAttrib (state.c); the client arrays and matrices are ours. */
 static void fixed_end(stin_context *ctx)
 {
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
-        GL_ENUM(ctx, LightModeli, GL_LIGHT_MODEL_COLOR_CONTROL)(GL_LIGHT_MODEL_COLOR_CONTROL,
-                                                                GL_SINGLE_COLOR);
-    disable_lights(ctx, 0);
-    GL_DISABLE(ctx, GL_LIGHTING);
-    GL_DISABLE(ctx, GL_NORMALIZE);
-    GL_DISABLE(ctx, GL_TEXTURE_2D);
     GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
     GL(ctx, DisableClientState)(GL_NORMAL_ARRAY);
     GL(ctx, DisableClientState)(GL_TEXTURE_COORD_ARRAY);
@@ -345,7 +337,6 @@ static void fixed_end(stin_context *ctx)
     GL(ctx, PopMatrix)();
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PopMatrix)();
-    GL(ctx, PopAttrib)();
 }
 
 const stin__path *stin__fixed_path(void)

@@ -92,23 +92,30 @@
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
  * viewport, and on return leaves these at their GL defaults: depth test off,
- * depth mask on, depth func LESS, blending off, stencil test off, stencil mask
- * all ones, stencil func ALWAYS/0/all ones, stencil ops KEEP, front face CCW,
- * cull face BACK and off, colour mask all on, scissor off, current program 0,
- * texture unit 0 active with no texture bound, array buffer 0, vertex array 0,
- * lighting off (GL1), all client arrays disabled (GL1). The viewport and the
- * framebuffer binding stay as the frame set them; the caller's matrices (GL1
- * matrix stacks) are restored. Clear colour, clear depth and polygon offset are
- * overwritten, and so are the scissor box and the stencil buffer's contents.
- * With the dot3 surface technique (GL1), texture units 0-3 are left with GL's
- * default texture environment (MODULATE, combine defaults, RGB scale 1), no
- * 2D or cube-map texture bound or enabled, their texture coordinate arrays
- * disabled and client unit 0 active.
- * With a GLSL surface technique (normal, parallax, pom), texture units 1
- * and 2 are left with no 2D texture bound and unit 0 active.
+ * depth mask on, depth func LESS, blending off with blend function ONE/ZERO,
+ * stencil test off, stencil mask all ones, stencil func ALWAYS/0/all ones and
+ * stencil ops KEEP on both faces, front face CCW, cull face BACK and off,
+ * colour mask all on, scissor off, current program 0, texture unit 0 active
+ * with no texture bound, array buffer 0, vertex array 0, all client arrays
+ * disabled with client unit 0 active (GL1), alpha function ALWAYS/0 (GL1).
+ * The viewport and the framebuffer binding stay as the frame set them; the
+ * caller's matrices (GL1 matrix stacks) are restored. Clear colour, clear
+ * depth and polygon offset are overwritten, and so are the scissor box and
+ * the stencil buffer's contents.
+ * On the GL1 tier the frame saves the caller's fixed-function state with one
+ * level of the attribute stack (glPushAttrib of the current, lighting,
+ * transform, enable and texture groups) and restores it before the list
+ * above is applied: lights, materials, light model, shade model, normalize,
+ * matrix mode, current colour, and every texture unit's bindings,
+ * environment, coordinate generation and enables are the caller's again.
+ * Leave one level of the attribute stack free for it.
+ * With a GLSL technique, the texture units a frame used (the surface
+ * technique's units 1 and 2, the shadow maps' units) are left with no 2D,
+ * 1D or cube-map texture bound.
  * Every other piece of GL state is left as the caller had it.
  * stin_create_mesh/stin_create_texture change buffer and texture bindings of
- * unit 0 (left at 0). No call other than these touches GL.
+ * unit 0 (left at 0); stin_create and the destroy calls create or delete GL
+ * objects and leave every binding as they found it. Queries touch no GL.
  *
  * MEMORY
  * stin_memory_size(&desc) returns the bytes a configuration needs; the block

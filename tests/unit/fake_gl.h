@@ -71,6 +71,10 @@ typedef struct fake_gl_state {
     unsigned next_name;
     /* GL state (fake_gl_state.h) */
     fake_gl_glstate gl;
+    /* glPushAttrib's stack: the whole state and the mask at each push */
+    fake_gl_glstate attrib_stack[FAKE_GL_ATTRIB_STACK_DEPTH];
+    GLbitfield attrib_mask[FAKE_GL_ATTRIB_STACK_DEPTH];
+    unsigned attrib_depth;
     struct {
         GLuint name;
         fake_gl_vao state;

@@ -29,6 +29,7 @@
 #define FAKE_GL_MODELVIEW_DEPTH 32 /* GL's minimum stack depths */
 #define FAKE_GL_PROJECTION_DEPTH 2
 #define FAKE_GL_TEXTURE_DEPTH 2
+#define FAKE_GL_ATTRIB_STACK_DEPTH 16 /* GL's minimum */
 #define FAKE_GL_WINDOW_W 640       /* the default framebuffer: initial viewport and scissor box */
 #define FAKE_GL_WINDOW_H 480
 
@@ -237,6 +238,8 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_DisableVertexAttribArray ~, 1
 #define FAKE_STATE_BindVertexArray ~, 1
 #define FAKE_STATE_BindFramebuffer ~, 1
+#define FAKE_STATE_PushAttrib ~, 1 /* fake_gl_attrib.c */
+#define FAKE_STATE_PopAttrib ~, 1
 
 /* "Is FAKE_<KIND>_<name> defined as '~, 1'?" as 0 or 1, usable by ## */
 #define FAKE_SECOND(a, b, ...) b

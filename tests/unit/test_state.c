@@ -116,6 +116,12 @@ static void check_fake(void)
         record(NULL, "fake GL: call a GL would refuse", "none", fake_gl.gl_error_what);
     if (fn)
         record(NULL, "fake GL: generated no-op that may change state", "none", fn);
+    if (fake_gl.attrib_depth) { /* a push without its pop */
+        char depth[16];
+        snprintf(depth, sizeof depth, "%u", fake_gl.attrib_depth);
+        record(NULL, "attribute stack depth", "0", depth);
+        fake_gl.attrib_depth = 0;
+    }
     fake_gl.untracked = fake_gl.gl_errors = 0;
 }
 
@@ -369,17 +375,20 @@ static void expected_after_frame(fake_gl_glstate *e, const stin_frame_desc *fd)
     fake_gl_glstate def;
     const fake_gl_glstate *got = &fake_gl.gl;
     stin_technique surface = stin_query_choice(ctx, STIN_FEATURE_SURFACE).technique;
-    int gl1 = stin_query_tier(ctx) == STIN_TIER_GL1, u, t;
+    int gl1 = stin_query_tier(ctx) == STIN_TIER_GL1, u;
     fake_gl_state_init(&def);
-    /* left at GL's defaults: the header's list, item by item (it does not
-     * name the blend function; the stencil items are taken as the front
-     * face's, the back face keeps the caller's) */
+    /* left at GL's defaults: the header's list, item by item */
     e->enabled[FAKE_GL_DEPTH_TEST] = 0;
     e->depth_mask = GL_TRUE;
     e->depth_func = GL_LESS;
     e->enabled[FAKE_GL_BLEND] = 0;
+    e->blend_src_rgb = def.blend_src_rgb;
+    e->blend_dst_rgb = def.blend_dst_rgb;
+    e->blend_src_alpha = def.blend_src_alpha;
+    e->blend_dst_alpha = def.blend_dst_alpha;
     e->enabled[FAKE_GL_STENCIL_TEST] = 0;
     e->stencil[0] = def.stencil[0];
+    e->stencil[1] = def.stencil[1];
     e->front_face = GL_CCW;
     e->cull_face = GL_BACK;
     e->enabled[FAKE_GL_CULL_FACE] = 0;
@@ -390,11 +399,13 @@ static void expected_after_frame(fake_gl_glstate *e, const stin_frame_desc *fd)
     memset(e->units[0].binding, 0, sizeof e->units[0].binding);
     e->array_buffer = 0;
     e->vertex_array_binding = 0;
-    if (gl1) {
-        e->enabled[FAKE_GL_LIGHTING] = 0;
+    if (gl1) { /* the rest of the fixed-function state is the caller's */
+        e->alpha_func = def.alpha_func;
+        e->alpha_ref = def.alpha_ref;
         e->vertex_array = e->normal_array = e->color_array = 0;
         for (u = 0; u < FAKE_GL_UNITS; u++)
             e->units[u].texcoord_array = 0;
+        e->client_active_texture = GL_TEXTURE0;
     }
     /* set by the frame */
     memcpy(e->viewport, fd->viewport, sizeof e->viewport);
@@ -406,20 +417,9 @@ static void expected_after_frame(fake_gl_glstate *e, const stin_frame_desc *fd)
     e->polygon_offset_factor = got->polygon_offset_factor;
     e->polygon_offset_units = got->polygon_offset_units;
     memcpy(e->scissor, got->scissor, sizeof e->scissor);
-    /* the surface technique's units */
-    if (surface == STIN_TECH_SURFACE_DOT3) {
-        for (u = 0; u < 4; u++) {
-            e->units[u].env = def.units[u].env;
-            for (t = 0; t < FAKE_GL_TARGET_COUNT; t++)
-                if (t != FAKE_GL_TARGET_1D)
-                    e->units[u].binding[t] = 0;
-            e->units[u].enabled[FAKE_GL_TEXTURE_2D] = 0;
-            e->units[u].enabled[FAKE_GL_TEXTURE_CUBE_MAP] = 0;
-            e->units[u].texcoord_array = 0;
-        }
-        e->client_active_texture = GL_TEXTURE0;
-    } else if (surface == STIN_TECH_SURFACE_NORMAL || surface == STIN_TECH_SURFACE_PARALLAX ||
-               surface == STIN_TECH_SURFACE_POM) {
+    /* the GLSL surface technique's units */
+    if (surface == STIN_TECH_SURFACE_NORMAL || surface == STIN_TECH_SURFACE_PARALLAX ||
+        surface == STIN_TECH_SURFACE_POM) {
         e->units[1].binding[FAKE_GL_TARGET_2D] = 0;
         e->units[2].binding[FAKE_GL_TARGET_2D] = 0;
     }
