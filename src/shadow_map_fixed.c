@@ -23,6 +23,8 @@
 #include "internal.h"
 
 #define RAMP_SIZE 256
+#define RAMP_BIAS_STEPS 1.5f /* the stored depth's rounding, with margin */
+#define SLOPE_BIAS 2.0f      /* steepest receiver slope (depth per texel) */
 /* The face mask's border texel lies just outside the 90-degree square: the
  * face frustum is widened so that the square's edge falls exactly between
  * the border texel and the first inner one (NEAREST sampling). */
@@ -271,11 +273,20 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
     for (r = 0; r < 4; r++)
         for (c = 0; c < 4; c++)
             ctx->map_fixed.texgen[slot][4 * r + c] = m[4 * c + r];
-    /* ramp coordinate of the fragment's own light-eye depth, a little nearer
-     * than the stored one so a surface does not shadow itself (8-bit steps) */
+    /* Ramp coordinate of the fragment's own light-eye depth d, nearer than
+     * the stored one so that a surface does not shadow itself: a constant
+     * for the 8-bit steps, plus what a slope up to SLOPE_BIAS changes the
+     * depth over one texel - d times the texel's angular size for a
+     * perspective map (still a plane in d), the texel's width for an
+     * orthographic one. */
     {
-        float bias_steps = ctx->lights[li].shadow_offset_off ? 0.0f : 1.5f;
-        float k = -1.0f / (f - n), o = -n / (f - n) - bias_steps / (float)(RAMP_SIZE - 1);
+        int off = ctx->lights[li].shadow_offset_off;
+        float texel = 2.0f / (proj[0] * (float)ctx->map_fixed.used);
+        int ortho = proj[15] != 0.0f;
+        float slope = off ? 0.0f : SLOPE_BIAS * texel;
+        float k = -(1.0f - (ortho ? 0.0f : slope)) / (f - n);
+        float o = -n / (f - n) - (off ? 0.0f : RAMP_BIAS_STEPS / (float)(RAMP_SIZE - 1)) -
+                  (ortho ? slope / (f - n) : 0.0f);
         for (c = 0; c < 4; c++)
             ctx->map_fixed.ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
     }

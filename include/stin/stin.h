@@ -68,7 +68,11 @@
  * LINEAR filtering (2x2 PCF), polygon offset per light (shadow_offset,
  * default factor 1.1, units 4); "map-combine" needs only texture_env_combine:
  * the light's depth drawn as an 8-bit ramp over a near/far fitted to the draws,
- * compared in the combiner, kept by the alpha test. Maps are desc.shadow_map_size
+ * compared in the combiner, kept by the alpha test. Its bias (1.5 ramp steps
+ * plus two texels' depth per texel of slope, a plane in the light's depth)
+ * cannot follow each receiver's slope as polygon offset does: surfaces lit at
+ * more than about 75 degrees from their normal (N.L under 0.25) can shadow
+ * themselves in stripes; use map-depth or map-pcf where they matter. Maps are desc.shadow_map_size
  * texels a side where the context has FBOs; without them they are drawn in the
  * frame's own framebuffer before its clear and so are at most the viewport's
  * largest power of two (stin_frame_stats.shadow_map_size says what was used).
