@@ -71,7 +71,7 @@ static void test_caps_have_names(void **state)
 static void test_tiers_and_features_have_names(void **state)
 {
     static const stin_tier tiers[] = {STIN_TIER_AUTO, STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
-    const char *names[4];
+    const char *names[4], *features[STIN_FEATURE_COUNT];
     int i;
     (void)state;
     for (i = 0; i < 4; i++) {
@@ -81,10 +81,10 @@ static void test_tiers_and_features_have_names(void **state)
     assert_distinct(names, 4);
     assert_string_equal(stin_tier_name((stin_tier)3), "unknown tier");
     for (i = 0; i < STIN_FEATURE_COUNT; i++) {
-        names[i] = stin_feature_name((stin_feature)i);
-        assert_named(names[i], "unknown feature");
+        features[i] = stin_feature_name((stin_feature)i);
+        assert_named(features[i], "unknown feature");
     }
-    assert_distinct(names, STIN_FEATURE_COUNT);
+    assert_distinct(features, STIN_FEATURE_COUNT);
     assert_string_equal(stin_feature_name(STIN_FEATURE_COUNT), "unknown feature");
 }
 
