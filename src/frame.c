@@ -301,13 +301,49 @@ static void shade_flat(stin_context *ctx, const stin__path *path, const stin_lig
     path->flat(ctx, STIN__ALL, white, l);
 }
 
-/* Per light: its visibility (stencil count, map test) and its lighting. The
- * visibility output shows light 0 only. */
+/* Lights whose visibility the technique writes into the screen mask, in
+ * groups of four: each group's visibility into the mask's channels, then
+ * one lit pass (or, for the visibility output, light 0's flat pass) reading
+ * them. Returns 0 when the mask cannot be drawn; lights the technique
+ * declines (area lights' samples) are left unmarked in `masked`. */
+static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lights,
+                         int visibility, unsigned char *masked)
+{
+    stin_light_desc group[STIN__MASK_CHANNELS];
+    uint32_t li = 0;
+    while (li < lights) {
+        int n = 0;
+        if (!stin__mask_begin(ctx, path, visibility ? STIN__ALL : STIN__OPAQUE))
+            return 0;
+        for (; li < lights && n < STIN__MASK_CHANNELS; li++)
+            if (ctx->shadow->mask(ctx, path, li, n)) {
+                masked[li] = 1;
+                group[n++] = ctx->lights[li];
+            }
+        stin__mask_end(ctx);
+        if (n > 0 && visibility) {
+            static const float white[4] = {1, 1, 1, 1};
+            path->flat(ctx, STIN__ALL, white, &group[0]);
+        } else if (n > 0) {
+            path->lit_lights(ctx, group, n);
+        }
+        stin__mask_read_done(ctx);
+    }
+    return 1;
+}
+
+/* Per light: its visibility (stencil count, map test, screen mask) and its
+ * lighting. The visibility output shows light 0 only. */
 static void stage_lights(stin_context *ctx, const stin__path *path, int visibility)
 {
     uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
+    unsigned char masked[STIN__MAX_LIGHTS] = {0};
+    if (ctx->shadow->mask && ctx->mask.usable && path->lit_lights)
+        (void)masked_lights(ctx, path, lights, visibility, masked);
     for (li = 0; li < lights; li++)
-        ctx->shadow->light(ctx, path, li, visibility ? shade_flat : shade_lit);
+        if (!masked[li])
+            ctx->shadow->light(ctx, path, li, visibility ? shade_flat : shade_lit);
+    stin__mask_frame_end(ctx);
 }
 
 /* The frame plan. Stages: light pre-passes -> target -> depth and ambient ->

@@ -69,6 +69,7 @@ struct stin_context {
     stin__volume_state volume;
     stin__map_fixed_state map_fixed;
     stin__map_pcf_state map_pcf;
+    stin__mask_state mask;
 
     /* surface detail */
     struct {

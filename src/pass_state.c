@@ -10,6 +10,7 @@ const stin__pass_state stin__pass_defaults = {
     {0, 0, 0, 0},
     0xffffffffu,
     STENCIL_DEFAULT, STENCIL_DEFAULT,
+    0,
 };
 
 static void toggle(stin_context *ctx, GLenum cap, unsigned char on)
@@ -73,9 +74,12 @@ void stin__pass_apply(stin_context *ctx, const stin__pass_state *s)
         GL(ctx, DepthFunc)(s->depth_func);
     if (CHANGED(depth_write))
         GL(ctx, DepthMask)(s->depth_write ? GL_TRUE : GL_FALSE);
-    if (CHANGED(color_write)) {
-        GLboolean w = s->color_write ? GL_TRUE : GL_FALSE;
-        GL(ctx, ColorMask)(w, w, w, w);
+    if (CHANGED(color_write) || CHANGED(color_only)) {
+        GLboolean w[4];
+        int k;
+        for (k = 0; k < 4; k++)
+            w[k] = s->color_write && (!s->color_only || s->color_only == k + 1) ? GL_TRUE : GL_FALSE;
+        GL(ctx, ColorMask)(w[0], w[1], w[2], w[3]);
     }
     if (CHANGED(blend))
         toggle(ctx, GL_BLEND, s->blend);
@@ -140,6 +144,7 @@ stin__pass_state stin__pass_draw(const stin_context *ctx, int additive, int blen
     s.depth_func = additive ? GL_EQUAL : GL_LESS;
     s.depth_write = !additive;
     s.color_write = 1;
+    s.color_only = 0;
     s.blend = additive || blend_alpha;
     s.blend_src = blend_alpha ? GL_SRC_ALPHA : GL_ONE;
     s.blend_dst = additive ? GL_ONE : blend_alpha ? GL_ONE_MINUS_SRC_ALPHA : GL_ZERO;

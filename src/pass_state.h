@@ -25,6 +25,7 @@ typedef struct stin__pass_state {
     int scissor_box[4];
     GLuint stencil_write_mask;
     stin__stencil_face front, back; /* back is used only when two_sided */
+    unsigned char color_only; /* with color_write: 0 every channel, 1-4 only R, G, B or A */
 } stin__pass_state;
 
 /* GL's defaults: the state the header promises after a frame. */

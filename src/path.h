@@ -56,6 +56,10 @@ typedef struct stin__path {
     /* Every draw's depth seen through view_proj (light views, matrices
      * restored after), no materials: shadow-map casters. */
     void (*depth)(stin_context *ctx, const float view[16], const float proj[16]);
+    /* Opaque draws lit by lights[0..n) in one additive pass; light i reads
+     * channel i of the screen mask where one is bound (shadow_mask.c). NULL:
+     * the path has no masks (fixed function). */
+    void (*lit_lights)(stin_context *ctx, const stin_light_desc *lights, int n);
 } stin__path;
 
 stin_result stin__fixed_init(stin_context *ctx);

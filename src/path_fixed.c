@@ -344,6 +344,6 @@ const stin__path *stin__fixed_path(void)
     static const stin__path path = {fixed_begin,        fixed_end,         fixed_ambient,
                                     fixed_lit,          fixed_flat,        fixed_volume_begin,
                                     fixed_volume_draw,  fixed_volume_end,  fixed_batches,
-                                    fixed_normals,      fixed_depth};
+                                    fixed_normals,      fixed_depth,       NULL};
     return &path;
 }

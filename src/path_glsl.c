@@ -369,13 +369,18 @@ static void glsl_ambient(stin_context *ctx, int which, int depth_only)
     ctx->stats.passes++;
 }
 
-static void glsl_lit(stin_context *ctx, const stin_light_desc *light)
+static void glsl_lit_lights(stin_context *ctx, const stin_light_desc *lights, int n)
 {
     const stin__program *p = use(ctx, STIN__PROG_LIT);
-    upload_lights(ctx, p, light, 1, 0);
+    upload_lights(ctx, p, lights, n, 0);
     pass_state(ctx, 1, 0);
     draw_set(ctx, p, STIN__OPAQUE, 1);
     ctx->stats.passes++;
+}
+
+static void glsl_lit(stin_context *ctx, const stin_light_desc *light)
+{
+    glsl_lit_lights(ctx, light, 1);
 }
 
 static void glsl_flat(stin_context *ctx, int which, const float color[4],
@@ -495,7 +500,7 @@ const stin__path *stin__glsl_path(void)
     static const stin__path path = {glsl_begin,       glsl_end,        glsl_ambient,
                                     glsl_lit,         glsl_flat,       glsl_volume_begin,
                                     glsl_volume_draw, glsl_volume_end, glsl_batches,
-                                    glsl_normals,     glsl_depth};
+                                    glsl_normals,     glsl_depth,      glsl_lit_lights};
     return &path;
 }
 

@@ -40,6 +40,10 @@ typedef struct stin__shadow_technique {
     /* GLSL: the chunk's uniforms and samplers on program p for the light
      * being shaded (none outside light()). NULL: nothing to set. */
     void (*uniforms)(stin_context *ctx, const stin__program *p);
+    /* Per-light visibility as data (shadow_mask.c): writes light li's
+     * visibility into channel `channel` of the bound screen mask and returns
+     * 1, or returns 0 and leaves the light to light(). NULL: never. */
+    int (*mask)(stin_context *ctx, const stin__path *path, uint32_t li, int channel);
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
@@ -81,6 +85,39 @@ typedef struct stin__map_pcf_state {
     int kind;
     uint32_t light;
 } stin__map_pcf_state;
+
+/* Screen visibility masks (shadow_mask.c): an RGBA8 texture the size of the
+ * frame's viewport, one light per channel, with its own depth-stencil
+ * texture holding the frame's depth; the lit pass reads four lights' masks
+ * at once through shadow_mask.glsl. */
+#define STIN__MASK_CHANNELS 4
+typedef struct stin__mask_state {
+    GLuint fbo, color, depth_stencil;
+    int width, height;    /* allocated texels (0: not yet) */
+    int unit;             /* the texture unit the lit pass reads it on */
+    int usable;           /* the context can draw masks (set at stin_create) */
+    int active;           /* lights of the current lit pass read from it */
+    int depth_done;       /* the frame's depth is in the mask's buffer */
+} stin__mask_state;
+
+/* At stin_create with GLSL lighting: decides whether masks are usable. */
+void stin__mask_init(stin_context *ctx);
+void stin__mask_release(stin_context *ctx);
+/* Binds the mask as the target (clearing its colour; the first time in a
+ * frame also its depth and stencil, then the frame's depth is drawn). 0:
+ * the mask cannot be made (logged once), draw the lights the old way. */
+int stin__mask_begin(stin_context *ctx, const stin__path *path, int which);
+/* After a technique left the stencil passing where light is visible: 1
+ * into `channel` there. */
+void stin__mask_write(stin_context *ctx, const stin__path *path, int channel);
+/* Back to the frame's target, the mask bound for the lit pass. */
+void stin__mask_end(stin_context *ctx);
+/* The lit pass that read the mask is done. */
+void stin__mask_read_done(stin_context *ctx);
+/* The frame is over: the next one draws its depth again. */
+void stin__mask_frame_end(stin_context *ctx);
+/* The shadow_mask.glsl uniforms of program p. */
+void stin__mask_uniforms(stin_context *ctx, const stin__program *p);
 
 /* ---- shared by the modules ------------------------------------------------ */
 /* One light (sample) of stencil shadow volumes: leaves the stencil test set to

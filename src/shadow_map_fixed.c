@@ -594,5 +594,5 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
 
 const stin__shadow_technique stin__shadow_map_fixed = {
     STIN_TECH_SHADOWS_MAP_DEPTH, NULL, fixed_init, fixed_release, fixed_prepare, fixed_prepass,
-    fixed_light, NULL,
+    fixed_light, NULL, NULL,
 };

@@ -388,6 +388,34 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     stin__volume_light_end(ctx);
 }
 
+/* A light of one sample into a mask channel: its volumes counted in the
+ * mask's stencil, then 1 where the count is zero. Area lights with several
+ * samples are shaded per sample by volume_shadow_light instead. */
+static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, int channel)
+{
+    const stin_light_desc *l = &ctx->lights[li];
+    stin_light_desc one;
+    float world[4];
+    int rect[4], scissored = stin__light_scissor(ctx, l, rect);
+    if (light_samples(ctx, l) != 1)
+        return 0;
+    if (scissored && (rect[2] <= 0 || rect[3] <= 0))
+        return 1; /* the light touches nothing on screen: its channel stays 0 */
+    sample_light(l, 0, 1, &one, world);
+    stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+    stin__mask_write(ctx, path, channel);
+    stin__volume_light_end(ctx);
+    return 1;
+}
+
+static stin_result volume_init(stin_context *ctx)
+{
+    stin__mask_init(ctx);
+    return STIN_OK;
+}
+
 const stin__shadow_technique stin__shadow_volume = {
-    STIN_TECH_SHADOWS_VOLUME, NULL, NULL, NULL, volume_prepare, NULL, volume_shadow_light, NULL,
+    STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", volume_init,       stin__mask_release,
+    volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
+    volume_mask,
 };

@@ -233,7 +233,9 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(VERTEX_TEXTURE_FETCH, "vertex texture fetch", 0, "")                            \
     X(OCCLUSION_QUERY, "occlusion queries", 15, "GL_ARB_occlusion_query")             \
     X(COMPUTE, "compute shaders", 43, "GL_ARB_compute_shader")                        \
-    X(FIXED_FUNCTION, "compatibility profile (fixed function)", 11, "")
+    X(FIXED_FUNCTION, "compatibility profile (fixed function)", 11, "")                \
+    X(PACKED_DEPTH_STENCIL, "packed depth-stencil textures", 30,                      \
+      "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,

@@ -18,6 +18,8 @@ static fake_log log_;
 static void *block;
 static stin_context *ctx;
 static stin_mesh quad;
+static stin_technique shadows = STIN_TECH_SHADOWS_OFF; /* of the next context */
+static uint64_t caps_mask;
 
 static const float quad_pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 static const uint32_t quad_idx[] = {0, 1, 2, 0, 2, 3};
@@ -55,7 +57,8 @@ static void create_context(const fake_gl_config *cfg, uint32_t max_lights, uint3
     d.max_lights = max_lights;
     d.max_draws = max_draws;
     d.max_texture_bytes = max_texture_bytes;
-    d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_OFF; /* pass counts are unshadowed */
+    d.techniques[STIN_FEATURE_SHADOWS] = shadows; /* pass counts are unshadowed by default */
+    d.caps_mask = caps_mask;
     bytes = stin_memory_size(&d);
     assert_true(bytes > 0);
     block = malloc(bytes);
@@ -383,6 +386,29 @@ static void test_glsl_passes_per_eight_lights(void **state)
     }
 }
 
+/* Volumes on GLSL tiers with FBOs and packed depth-stencil: each light's
+ * visibility goes into a channel of the screen mask and one lit pass shades
+ * four lights; without the mask every light gets its own lit pass. */
+static void test_volume_lights_share_lit_passes_through_masks(void **state)
+{
+    stin_frame_stats st;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VOLUME;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    st = frame_with(8, 1, 0, STIN_OUTPUT_BEAUTY);
+    /* ambient, the mask's copy of the depth, 8 stencil counts, 2 lit passes */
+    assert_int_equal(st.passes, 1 + 1 + 8 + 2);
+    st = frame_with(8, 1, 0, STIN_OUTPUT_VISIBILITY); /* light 0 only */
+    assert_int_equal(st.passes, 1 + 1 + 1 + 1);
+    caps_mask = STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    st = frame_with(8, 1, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.passes, 1 + 8 + 8);
+    caps_mask = 0;
+    shadows = STIN_TECH_SHADOWS_OFF;
+    create_profile(FAKE_GL21, 16, 8);
+}
+
 /* Blended draws are drawn once per light batch each, after the opaque ones. */
 static void test_blended_draws_once_per_batch(void **state)
 {
@@ -610,6 +636,7 @@ int main(void)
         TEST(test_bad_draw_arguments),
         TEST(test_glsl_passes_per_eight_lights),
         TEST(test_blended_draws_once_per_batch),
+        TEST(test_volume_lights_share_lit_passes_through_masks),
         TEST(test_fixed_function_passes_per_max_lights),
         TEST(test_output_pass_counts),
         TEST(test_frame_leaves_documented_state),

@@ -1,0 +1,177 @@
+/* Per-light visibility as data: a shadow technique writes each light's
+ * visibility into one channel of a screen mask (drawn in its own
+ * framebuffer with a copy of the frame's depth), and one lit pass then
+ * shades four lights reading their channels (shaders/gl2/shadow_mask.glsl).
+ * N shadowed lights cost N visibility passes and N/4 lit passes instead of
+ * N lit passes. Needs GLSL lighting, FBOs, packed depth-stencil textures
+ * and one texture unit beyond the surface's. */
+#include "internal.h"
+
+void stin__mask_init(stin_context *ctx)
+{
+    uint64_t need = STIN_CAP_BIT(STIN_CAP_GLSL) | STIN_CAP_BIT(STIN_CAP_FBO) |
+                    STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
+    int limit = ctx->sel.unit_limit;
+    stin__memzero(&ctx->mask, sizeof ctx->mask);
+    ctx->mask.unit = ctx->sel.shadow_unit;
+    if ((ctx->caps.present & need) != need ||
+        ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED)
+        return;
+    if (limit > 0 && ctx->mask.unit >= limit) {
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                  "shadow masks need texture unit %d of %d: each shadowed light gets its own "
+                  "lit pass", ctx->mask.unit, limit);
+        return;
+    }
+    ctx->mask.usable = 1;
+}
+
+void stin__mask_release(stin_context *ctx)
+{
+    if (ctx->mask.fbo)
+        GL(ctx, DeleteFramebuffers)(1, &ctx->mask.fbo);
+    if (ctx->mask.color)
+        GL(ctx, DeleteTextures)(1, &ctx->mask.color);
+    if (ctx->mask.depth_stencil)
+        GL(ctx, DeleteTextures)(1, &ctx->mask.depth_stencil);
+    ctx->mask.fbo = ctx->mask.color = ctx->mask.depth_stencil = 0;
+    ctx->mask.width = ctx->mask.height = 0;
+}
+
+static void texture_storage(stin_context *ctx, GLuint tex, GLenum internal, GLenum format,
+                            GLenum type, int w, int h)
+{
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    GL_ENUM(ctx, TexImage2D, internal)(GL_TEXTURE_2D, 0, (GLint)internal, w, h, 0, format, type,
+                                       NULL);
+}
+
+/* The mask covers the viewport's pixels at the same window coordinates (so
+ * scissor boxes and gl_FragCoord need no offset): (x + w) x (y + h). */
+static int ensure_size(stin_context *ctx)
+{
+    const int *vp = ctx->frame.viewport;
+    int w = vp[0] + vp[2], h = vp[1] + vp[3];
+    GLenum status;
+    if (ctx->mask.fbo && w <= ctx->mask.width && h <= ctx->mask.height)
+        return 1;
+    if (!ctx->mask.fbo) {
+        GL(ctx, GenFramebuffers)(1, &ctx->mask.fbo);
+        GL(ctx, GenTextures)(1, &ctx->mask.color);
+        GL(ctx, GenTextures)(1, &ctx->mask.depth_stencil);
+    }
+    if (w < ctx->mask.width)
+        w = ctx->mask.width;
+    if (h < ctx->mask.height)
+        h = ctx->mask.height;
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    texture_storage(ctx, ctx->mask.color, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+    texture_storage(ctx, ctx->mask.depth_stencil, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL,
+                    GL_UNSIGNED_INT_24_8, w, h);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                  ctx->mask.color, 0);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                  ctx->mask.depth_stencil, 0);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                                  ctx->mask.depth_stencil, 0);
+    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    ctx->mask.width = w;
+    ctx->mask.height = h;
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                  "shadow mask framebuffer incomplete (0x%x): each shadowed light gets its own "
+                  "lit pass", (unsigned)status);
+        stin__mask_release(ctx);
+        ctx->mask.usable = 0;
+        return 0;
+    }
+    return 1;
+}
+
+int stin__mask_begin(stin_context *ctx, const stin__path *path, int which)
+{
+    stin__pass_state ps = stin__pass_defaults;
+    if (!ctx->mask.usable || !ensure_size(ctx))
+        return 0;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
+    stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the mask */
+    GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
+    if (!ctx->mask.depth_done) {
+        GL(ctx, ClearDepth)(1.0);
+        GL(ctx, ClearStencil)(0);
+        GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        /* the same program and draws as the target's ambient pass: equal depths */
+        path->ambient(ctx, which, 1);
+        ctx->mask.depth_done = 1;
+    } else {
+        GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
+    }
+    return 1;
+}
+
+void stin__mask_write(stin_context *ctx, const stin__path *path, int channel)
+{
+    static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
+                                      -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
+    static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    static const float one[4] = {1, 1, 1, 1};
+    const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
+    stin__pass_state ps = *stin__pass_current(ctx);
+    ps.depth_test = 0;
+    ps.depth_clamp = 0;
+    ps.color_write = 1;
+    ps.color_only = (unsigned char)(channel + 1);
+    ps.blend = 0;
+    stin__pass_apply(ctx, &ps);
+    path->volume_begin(ctx);
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, identity);
+    GL(ctx, Uniform4fv)(p->u_color, 1, one);
+    path->volume_draw(ctx, identity, quad, 6);
+    path->volume_end(ctx);
+}
+
+void stin__mask_end(stin_context *ctx)
+{
+    const int *vp = ctx->frame.viewport;
+    stin__pass_state ps = *stin__pass_current(ctx);
+    ps.color_only = 0;
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
+    GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
+    stin__bind_unit(ctx, ctx->mask.unit, GL_TEXTURE_2D, ctx->mask.color);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
+        GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    ctx->mask.active = 1;
+    ctx->glsl_surface.serial++; /* the lit programs' mask uniforms change */
+}
+
+void stin__mask_read_done(stin_context *ctx)
+{
+    ctx->mask.active = 0;
+    ctx->glsl_surface.serial++;
+}
+
+void stin__mask_frame_end(stin_context *ctx)
+{
+    ctx->mask.active = 0;
+    ctx->mask.depth_done = 0;
+}
+
+void stin__mask_uniforms(stin_context *ctx, const stin__program *p)
+{
+    float params[4];
+    GL(ctx, Uniform1i)(p->u_shadow_kind, ctx->mask.active);
+    if (!ctx->mask.active)
+        return;
+    params[0] = 1.0f / (float)ctx->mask.width;
+    params[1] = 1.0f / (float)ctx->mask.height;
+    params[2] = params[3] = 0.0f;
+    GL(ctx, Uniform4fv)(p->u_shadow_params, 1, params);
+    GL(ctx, Uniform1i)(p->u_shadow_maps[0], ctx->mask.unit);
+}
