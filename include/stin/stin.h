@@ -92,6 +92,15 @@
  * orthographic projections use depth clamp. Lights with radius > 0 are area
  * lights: desc.soft_shadow_samples point samples, each a pass at intensity / n.
  * Lights with range > 0 are scissored to their screen extent.
+ * On GLSL tiers with FBOs and packed depth-stencil textures (GL 3.0,
+ * ARB_framebuffer_object or EXT_packed_depth_stencil) and a texture unit to
+ * spare, each point light's visibility is counted in stin's own screen mask
+ * (an RGBA8 colour and a DEPTH24_STENCIL8 texture the size of the viewport's
+ * far corner, 8 bytes a pixel of GL memory, made at the first frame and kept)
+ * and one lit pass shades four lights reading their channels, so N lights
+ * cost N stencil counts and N/4 lit passes; area lights keep a lit pass per
+ * sample. Without those, each light's lit pass is stencil-tested in the
+ * frame's framebuffer, which then needs a stencil buffer.
  *
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
