@@ -89,6 +89,7 @@ static int ensure_size(stin_context *ctx)
                   "lit pass", (unsigned)status);
         stin__mask_release(ctx);
         ctx->mask.usable = 0;
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer); /* lights go on there */
         return 0;
     }
     return 1;

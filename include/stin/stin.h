@@ -99,8 +99,11 @@
  * far corner, 8 bytes a pixel of GL memory, made at the first frame and kept)
  * and one lit pass shades four lights reading their channels, so N lights
  * cost N stencil counts and N/4 lit passes; area lights keep a lit pass per
- * sample. Without those, each light's lit pass is stencil-tested in the
- * frame's framebuffer, which then needs a stencil buffer.
+ * sample (their stencil test runs in the frame's framebuffer). Without
+ * masks each light's lit pass is stencil-tested in the frame's framebuffer.
+ * Either way "volume" is chosen only where the frame's framebuffer has a
+ * stencil buffer (probed at stin_create); an incomplete mask framebuffer is
+ * logged once and the context goes on without masks.
  *
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
