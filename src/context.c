@@ -175,6 +175,22 @@ static stin_result init_lighting(stin_context *ctx)
     }
 }
 
+/* The shadow module's set-up; a module that cannot run here releases what
+ * it made and demotes itself (stin__demote), and the next one is set up. */
+static stin_result init_shadows(stin_context *ctx)
+{
+    for (;;) {
+        stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
+        stin_result r;
+        ctx->shadow = stin__shadow_technique_of(t);
+        if (!ctx->shadow->init)
+            return STIN_OK;
+        r = ctx->shadow->init(ctx);
+        if (r != STIN_OK || ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == t)
+            return r;
+    }
+}
+
 /* A missing GL 1.1 entry point is fatal (it would be called); a missing
  * extension entry point turns its capability off. Both are named. */
 static stin_result check_entry_points(stin_context *ctx)
@@ -304,8 +320,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     }
     ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     r = init_lighting(ctx);
-    if (r == STIN_OK && ctx->shadow->init)
-        r = ctx->shadow->init(ctx);
+    if (r == STIN_OK)
+        r = init_shadows(ctx);
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */
         return r;

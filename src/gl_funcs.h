@@ -122,6 +122,15 @@
     X(GLenum, CheckFramebufferStatus, (GLenum target), STIN_CAP_FBO, "glCheckFramebufferStatusEXT") \
     X(void, GetFramebufferAttachmentParameteriv, (GLenum target, GLenum att, GLenum pname, \
                                                   GLint *v), NEED_GL30, "")               \
-    X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")
+    X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")         \
+    X(void, DrawBuffers, (GLsizei n, const GLenum *bufs), STIN_CAP_GLSL, "")              \
+    X(void, BindFragDataLocation, (GLuint p, GLuint color, const GLchar *name), NEED_GL30, "") \
+    X(void, BeginQuery, (GLenum target, GLuint id), STIN_CAP_OCCLUSION_QUERY, "glBeginQueryARB") \
+    X(void, EndQuery, (GLenum target), STIN_CAP_OCCLUSION_QUERY, "glEndQueryARB")          \
+    X(void, GenQueries, (GLsizei n, GLuint *ids), STIN_CAP_OCCLUSION_QUERY, "glGenQueriesARB") \
+    X(void, DeleteQueries, (GLsizei n, const GLuint *ids), STIN_CAP_OCCLUSION_QUERY,       \
+      "glDeleteQueriesARB")                                                                \
+    X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *v), STIN_CAP_OCCLUSION_QUERY, \
+      "glGetQueryObjectuivARB")
 
 #endif

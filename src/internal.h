@@ -70,6 +70,7 @@ struct stin_context {
     stin__map_fixed_state map_fixed;
     stin__map_pcf_state map_pcf;
     stin__mask_state mask;
+    stin__vdsm_state vdsm;
 
     /* surface detail */
     struct {

@@ -67,6 +67,8 @@ const stin__path *stin__fixed_path(void);
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size);
 void stin__glsl_release(stin_context *ctx);
 const stin__path *stin__glsl_path(void);
+/* A draw's mesh through the bound program, its transform in u_model. */
+void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__draw *d);
 /* The chosen lighting technique's path. */
 const stin__path *stin__path_of(const stin_context *ctx);
 
@@ -74,6 +76,17 @@ const stin__path *stin__path_of(const stin_context *ctx);
  * at the fragment shader's "// @chunks" line (its functions). */
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
                            const char *const *frag_chunks, char *msg, size_t size);
+/* A program's stages by embedded file name: geom NULL for none; frag_outputs
+ * names the fragment outputs bound to draw buffers 0, 1, ... (GL 3.0; NULL
+ * entries end the list, all NULL: the single output). */
+#define STIN__MAX_FRAG_OUTPUTS 2
+typedef struct stin__program_source {
+    const char *vert, *geom, *frag;
+    const char *const *frag_chunks;
+    const char *frag_outputs[STIN__MAX_FRAG_OUTPUTS];
+} stin__program_source;
+GLuint stin__program_build_source(stin_context *ctx, const stin__program_source *src, char *msg,
+                                  size_t size);
 /* Embedded shader source by file name ("gl2/lit.vert"), NULL if unknown. */
 const char *stin__shader_source(const char *name);
 

@@ -271,20 +271,25 @@ static void bind_mesh_arrays(stin_context *ctx, const stin__mesh_slot *m, uint32
     ctx->bound_mesh = slot;
 }
 
+void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__draw *d)
+{
+    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+    const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
+    GL(ctx, UniformMatrix4fv)(u_model, 1, GL_FALSE, d->transform);
+    bind_mesh_arrays(ctx, m, d->mesh_slot);
+    GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+}
+
 /* The one geometry submission of the GLSL path: a draw's transform and
  * mesh through program p (its normal matrix where p has one). */
 static void submit(stin_context *ctx, const stin__program *p, const stin__draw *d)
 {
-    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
-    GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
     if (p->u_normal_matrix >= 0) {
         float nm[9];
         stin__mat3_normal(nm, d->transform);
         GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
     }
-    bind_mesh_arrays(ctx, m, d->mesh_slot);
-    GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+    stin__glsl_submit_geometry(ctx, p->u_model, d);
 }
 
 static int in_set(const stin__draw *d, int which)

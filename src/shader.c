@@ -94,32 +94,57 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
                            const char *const *frag_chunks, char *msg, size_t size)
 {
-    GLuint vs = compile(ctx, GL_VERTEX_SHADER, vert, NULL, msg, size), fs, p;
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = vert;
+    src.frag = frag;
+    src.frag_chunks = frag_chunks;
+    return stin__program_build_source(ctx, &src, msg, size);
+}
+
+static void delete_stages(stin_context *ctx, const GLuint *stages, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (stages[i])
+            GL(ctx, DeleteShader)(stages[i]); /* flagged; freed with the program */
+}
+
+GLuint stin__program_build_source(stin_context *ctx, const stin__program_source *src, char *msg,
+                                  size_t size)
+{
+    GLuint stages[3] = {0, 0, 0}, p;
     GLint ok = 0;
     char log[1024];
-    if (!vs)
-        return 0;
-    fs = compile(ctx, GL_FRAGMENT_SHADER, frag, frag_chunks, msg, size);
-    if (!fs) {
-        GL(ctx, DeleteShader)(vs);
+    int i;
+    stages[0] = compile(ctx, GL_VERTEX_SHADER, src->vert, NULL, msg, size);
+    if (stages[0] && src->geom)
+        stages[1] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, msg, size);
+    if (stages[0] && (stages[1] || !src->geom))
+        stages[2] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks, msg, size);
+    if (!stages[2]) {
+        delete_stages(ctx, stages, 3);
         return 0;
     }
     p = GL(ctx, CreateProgram)();
-    GL(ctx, AttachShader)(p, vs);
-    GL(ctx, AttachShader)(p, fs);
+    for (i = 0; i < 3; i++)
+        if (stages[i])
+            GL(ctx, AttachShader)(p, stages[i]);
     GL(ctx, BindAttribLocation)(p, 0, "a_position");
     GL(ctx, BindAttribLocation)(p, 1, "a_normal");
     GL(ctx, BindAttribLocation)(p, 2, "a_uv");
     GL(ctx, BindAttribLocation)(p, 3, "a_tangent");
+    for (i = 0; i < STIN__MAX_FRAG_OUTPUTS && src->frag_outputs[i]; i++)
+        GL(ctx, BindFragDataLocation)(p, (GLuint)i, src->frag_outputs[i]);
     GL(ctx, LinkProgram)(p);
-    GL(ctx, DeleteShader)(vs); /* flagged; freed with the program */
-    GL(ctx, DeleteShader)(fs);
+    delete_stages(ctx, stages, 3);
     GL(ctx, GetProgramiv)(p, GL_LINK_STATUS, &ok);
     if (!ok) {
         log[0] = '\0';
         GL(ctx, GetProgramInfoLog)(p, (GLsizei)sizeof log, NULL, log);
-        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_SHADER_LINK, "%s + %s: %s", vert, frag, log);
-        stin__formatf(msg, size, "%s + %s did not link", vert, frag);
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_SHADER_LINK, "%s + %s: %s", src->vert,
+                  src->frag, log);
+        stin__formatf(msg, size, "%s + %s did not link", src->vert, src->frag);
         GL(ctx, DeleteProgram)(p);
         return 0;
     }

@@ -47,7 +47,7 @@ typedef struct stin__shadow_technique {
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
-    stin__shadow_map_pcf, stin__shadow_off;
+    stin__shadow_map_pcf, stin__shadow_off, stin__shadow_vdsm;
 /* The module of a shadows technique (off for anything else). */
 const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
 
@@ -85,6 +85,26 @@ typedef struct stin__map_pcf_state {
     int kind;
     uint32_t light;
 } stin__map_pcf_state;
+
+/* VDSM (shadow_vdsm.c): the position buffer - per pixel the visible
+ * surface's world position and its facet normal - and the programs that
+ * turn each triangle into shadow polygons over it. */
+typedef struct stin__vdsm_state {
+    GLuint fbo, position, normal, depth;
+    int width, height;      /* allocated texels (0: not yet) */
+    GLuint position_prog, facing_prog, polygon_prog, query;
+    GLint pos_model, pos_view_proj, pos_camera;
+    GLint face_position, face_normal, face_light;
+    GLint poly_model, poly_view_proj, poly_light, poly_camera, poly_viewport, poly_grow,
+        poly_cull_lit, poly_caps, poly_position, poly_normal;
+    float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
+    int ready;              /* this frame's position buffer is drawn */
+    int said_area, said_failed;
+} stin__vdsm_state;
+
+/* The position buffer stage and its release (shadow_vdsm_buffer.c). */
+void stin__vdsm_buffer_draw(stin_context *ctx);
+void stin__vdsm_buffer_release(stin_context *ctx);
 
 /* Screen visibility masks (shadow_mask.c): an RGBA8 texture the size of the
  * frame's viewport, one light per channel, with its own depth-stencil

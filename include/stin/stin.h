@@ -382,7 +382,8 @@ const char *stin_feature_name(stin_feature f);
     X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
     X(TRANSLUCENT_SOLID, "translucent-solid", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
     X(DISPLACEMENT_OFF, "displacement-off", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL1) \
-    X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)
+    X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)                 \
+    X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -435,6 +436,14 @@ typedef struct stin_desc {
  * looks like where the technique is exact. */
 #define STIN_DEBUG_VOLUME_ZFAIL 1u  /* z-fail for every caster (needs caps) */
 #define STIN_DEBUG_VOLUME_ZPASS 2u  /* z-pass for every caster: wrong with the eye in a volume */
+/* VDSM steps, each on by default, off for measurement and tests; the mask is
+ * the same without them (NO_GROW: pixels a shadow polygon covers only in
+ * part, not at their centre, may be lost - the artifact the growth fixes). */
+#define STIN_DEBUG_VDSM_NO_EP 4u    /* keep triangles facing the light */
+#define STIN_DEBUG_VDSM_NO_GROW 8u  /* no conservative growth of the shadow polygons */
+#define STIN_DEBUG_VDSM_COUNT 16u   /* count the primitives the geometry shader emits into
+                                     * stin_frame_stats.vdsm_primitives (waits for the GPU
+                                     * after each light) */
 
 typedef struct stin_context stin_context;
 
@@ -613,6 +622,9 @@ typedef struct stin_frame_stats {
     uint32_t zfail_casters, zpass_casters; /* per light sample */
     uint32_t shadow_map_size;  /* texels a side the maps were rendered at (0: none) */
     uint32_t dropped_draws, dropped_lights;
+    /* vdsm: primitives its geometry shader emitted, all lights (GL_PRIMITIVES_GENERATED,
+     * the seed's P_c; 0 where the context has no queries) */
+    uint32_t vdsm_primitives;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

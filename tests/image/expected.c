@@ -8,6 +8,7 @@
 #define LIGHT_110 STIN_TECH_LIGHTING_GLSL110
 #define LIGHT_150 STIN_TECH_LIGHTING_GLSL150
 #define VOLUME STIN_TECH_SHADOWS_VOLUME
+#define VDSM STIN_TECH_SHADOWS_VDSM
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 #define DOT3 STIN_TECH_SURFACE_DOT3
 #define POM STIN_TECH_SURFACE_POM
@@ -19,9 +20,9 @@ static const expected_profile table[] = {
     {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
     {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
     {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED}, {1, 1, 0}},
-    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, RESERVED}, {0, 0, 1}},
-    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, RESERVED}, {0, 0, 1}},
-    {"native", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, RESERVED}, {1, 1, 1}},
+    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, RESERVED}, {0, 0, 1}},
+    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, RESERVED}, {0, 0, 1}},
+    {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, RESERVED}, {1, 1, 1}},
 };
 
 const expected_profile *expected_find(const char *profile)

@@ -323,6 +323,7 @@ int main(int argc, char **argv)
         for (i = first_scene; i < argc; i++) {
             test_scene(&r, tiers[t], argv[i]);
             shadow_tests(&r, tiers[t], argv[i]);
+            vdsm_tests(&r, tiers[t], argv[i]);
             map_tests(&r, tiers[t], argv[i]);
             pcf_tests(&r, tiers[t], argv[i]);
             surface_tests(&r, tiers[t], argv[i]);

@@ -25,6 +25,8 @@ void map_tests(run *r, stin_tier tier, const char *path);
 
 /* Shadow-volume tests of one scene at one tier (shadow_test.c). */
 void shadow_tests(run *r, stin_tier tier, const char *path);
+/* VDSM exact shadows of one scene (vdsm_test.c; GL4 only). */
+void vdsm_tests(run *r, stin_tier tier, const char *path);
 /* DOT3 bump mapping of one scene at one tier, plus a built-in analytic scene
  * on the first call per tier (dot3_test.c). */
 void dot3_tests(run *r, stin_tier tier, const char *path);

@@ -75,6 +75,11 @@ int reference_hit_on_plane(const reference *r, int width, int height, const ref_
  * give 1. */
 float reference_visibility(const reference *r, const ref_hit *hit, int light);
 
+/* As reference_visibility with the ray leaving P by `offset` world units
+ * (> 0) along Ng instead of the scene epsilon: for techniques that offset
+ * by less, whose exactness the scene epsilon would blur. */
+float reference_visibility_offset(const reference *r, const ref_hit *hit, int light, double offset);
+
 /* As reference_visibility for a point light at `position` (the segment from
  * the offset P to it). NULL position or a background hit gives 1. */
 float reference_visibility_to(const reference *r, const ref_hit *hit, const float position[3]);

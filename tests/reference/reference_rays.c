@@ -212,7 +212,8 @@ int reference_hit_on_plane(const reference *r, int width, int height, const ref_
  * (the direction toward the light) to infinity. The visible side is what is
  * lit: a side turned away from the light is in its own shadow (0), for a
  * sheet seen from behind as for a closed object's far side. */
-static float visible(const reference *r, const ref_hit *hit, const double to[3], int directional)
+static float visible_off(const reference *r, const ref_hit *hit, const double to[3], int directional,
+                         double eps)
 {
     double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], dir[3], dist = INFINITY;
     for (int c = 0; c < 3; c++)
@@ -222,7 +223,7 @@ static float visible(const reference *r, const ref_hit *hit, const double to[3],
     /* Leave the surface on the eye's side so the ray cannot hit its own triangle. */
     const float *eye = r->s->camera.eye;
     double to_eye[3] = {eye[0] - hit->P[0], eye[1] - hit->P[1], eye[2] - hit->P[2]};
-    double side = dot3(Ng, to_eye) >= 0.0 ? r->eps : -r->eps;
+    double side = dot3(Ng, to_eye) >= 0.0 ? eps : -eps;
     /* The side the eye sees turns away from the light: it shadows itself. */
     if (side * dot3(Ng, dir) <= 0.0)
         return 0.0f;
@@ -252,16 +253,26 @@ static float visible(const reference *r, const ref_hit *hit, const double to[3],
     return ray.tfar < 0.0f ? 0.0f : 1.0f; /* Embree sets tfar to -inf on a hit */
 }
 
-float reference_visibility(const reference *r, const ref_hit *hit, int light)
+static float visible(const reference *r, const ref_hit *hit, const double to[3], int directional)
 {
-    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
+    return visible_off(r, hit, to, directional, r->eps);
+}
+
+float reference_visibility_offset(const reference *r, const ref_hit *hit, int light, double offset)
+{
+    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count || !(offset > 0.0))
         return 1.0f;
     const scene_light *l = &r->s->lights[light];
     int directional = l->type == SCENE_LIGHT_DIRECTIONAL;
     double to[3];
     for (int c = 0; c < 3; c++)
         to[c] = directional ? -(double)l->direction[c] : (double)l->position[c];
-    return visible(r, hit, to, directional);
+    return visible_off(r, hit, to, directional, offset);
+}
+
+float reference_visibility(const reference *r, const ref_hit *hit, int light)
+{
+    return reference_visibility_offset(r, hit, light, r ? r->eps : 1.0);
 }
 
 float reference_visibility_to(const reference *r, const ref_hit *hit, const float position[3])

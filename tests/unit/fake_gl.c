@@ -70,6 +70,13 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_VertexAttribPointer ~, 1
 #define FAKE_STATELESS_FramebufferTexture2D ~, 1
 #define FAKE_STATELESS_GenerateMipmap ~, 1
+#define FAKE_STATELESS_DrawBuffers ~, 1
+#define FAKE_STATELESS_BindFragDataLocation ~, 1
+#define FAKE_STATELESS_BeginQuery ~, 1
+#define FAKE_STATELESS_EndQuery ~, 1
+#define FAKE_STATELESS_GenQueries ~, 1
+#define FAKE_STATELESS_DeleteQueries ~, 1
+#define FAKE_STATELESS_GetQueryObjectuiv ~, 1
 
 #define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)
 #define FAKE_IS_STATELESS(name) FAKE_PROBE(FAKE_STATELESS_##name)

@@ -23,7 +23,8 @@
 #define GL21_BITS (GL14_BITS | BIT(VBO) | BIT(GLSL) | BIT(SEPARATE_STENCIL) | BIT(FBO) |  \
                    BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH))
 #define GL33_CORE_BITS                                                                    \
-    ((GL21_BITS & ~BIT(FIXED_FUNCTION)) | BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER))
+    ((GL21_BITS & ~BIT(FIXED_FUNCTION)) | BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | \
+     BIT(PACKED_DEPTH_STENCIL))
 #define GL45_CORE_BITS (GL33_CORE_BITS | BIT(TESSELLATION) | BIT(COMPUTE))
 
 static stin_caps caps_with(int gl, int glsl, int core, uint64_t present)
@@ -71,8 +72,9 @@ static void test_auto_selection_per_profile(void **state)
         assert_int_equal(stin_best_tier(&cases[i].caps), cases[i].tier);
         assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, cases[i].lighting);
         assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique,
-                         (cases[i].caps.present & BIT(STENCIL)) ? STIN_TECH_SHADOWS_VOLUME
-                                                                 : STIN_TECH_SHADOWS_OFF);
+                         cases[i].tier == STIN_TIER_GL4          ? STIN_TECH_SHADOWS_VDSM
+                         : (cases[i].caps.present & BIT(STENCIL)) ? STIN_TECH_SHADOWS_VOLUME
+                                                                  : STIN_TECH_SHADOWS_OFF);
         /* DOT3 where the fixed-function path has combine/dot3/cube maps (gl13, gl14);
          * the GLSL tiers take parallax occlusion mapping (GLSL lighting). */
         assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique,
@@ -246,6 +248,30 @@ static void test_forced_technique_the_caps_cannot_run(void **state)
     assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_FIXED_FUNCTION)));
 }
 
+/* vdsm heads the GL4 shadow chain (no stencil needed); on GL2 forcing it is
+ * an error that names the geometry shaders it needs, and without float
+ * textures the chain goes on to volumes. */
+static void test_vdsm_on_gl4_only(void **state)
+{
+    stin_caps core = caps_with(33, 33, 1, GL33_CORE_BITS);
+    stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_NONE, STIN_TECH_SHADOWS_VDSM,
+                                                 STIN_TECH_NONE};
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VDSM);
+    core.present &= ~STIN_CAP_BIT(STIN_CAP_FLOAT_TEXTURE);
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
+    assert_true(sel.choice[STIN_FEATURE_SHADOWS].fell_back);
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "vdsm"));
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_GEOMETRY_SHADER)));
+}
+
 /* A forced technique above the tier ceiling names the tier and what is missing,
  * as separate items. */
 static void test_forced_technique_above_the_tier(void **state)
@@ -328,7 +354,8 @@ static void test_technique_tables(void **state)
  * chains read as the header documents them, whatever the enum values. */
 static void test_every_technique_has_a_row_and_a_rank(void **state)
 {
-    static const stin_technique shadows[] = {STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF,
+    static const stin_technique shadows[] = {STIN_TECH_SHADOWS_VDSM,   STIN_TECH_SHADOWS_VOLUME,
+                                             STIN_TECH_SHADOWS_MAP_PCF,
                                              STIN_TECH_SHADOWS_MAP_DEPTH,
                                              STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SHADOWS_OFF};
     stin_technique chain[STIN_TECH_COUNT];
@@ -347,7 +374,7 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
     }
     assert_int_equal(total, STIN_TECH_COUNT - 1);
     n = stin__feature_chain(STIN_FEATURE_SHADOWS, chain);
-    assert_int_equal(n, 5);
+    assert_int_equal(n, 6);
     for (i = 0; i < n; i++)
         assert_int_equal(chain[i], shadows[i]);
     /* every shadows technique names its module, and only those */
@@ -414,6 +441,7 @@ int main(void)
         cmocka_unit_test(test_forced_technique_that_runs_is_taken),
         cmocka_unit_test(test_forced_technique_the_caps_cannot_run),
         cmocka_unit_test(test_forced_technique_above_the_tier),
+        cmocka_unit_test(test_vdsm_on_gl4_only),
         cmocka_unit_test(test_surface_follows_the_lighting_technique),
         cmocka_unit_test(test_technique_tables),
         cmocka_unit_test(test_every_technique_has_a_row_and_a_rank),

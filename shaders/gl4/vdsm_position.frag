@@ -1,0 +1,20 @@
+#version 150
+// VDSM position buffer: per pixel the visible surface's world position (w = 1,
+// 0 where nothing was drawn) and its facet normal turned to the side the eye
+// sees. The facet normal comes from the position's screen derivatives, which
+// are exact for the triangle's plane (its interpolation is linear).
+uniform vec4 u_camera; // world: the eye (w 1), or the direction toward it (w 0)
+in vec3 v_world;
+out vec4 o_position;
+out vec4 o_normal;
+
+void main()
+{
+    vec3 n = cross(dFdx(v_world), dFdy(v_world));
+    float len = length(n);
+    n = len > 0.0 ? n / len : vec3(0.0);
+    if (dot(n, u_camera.xyz - v_world * u_camera.w) < 0.0)
+        n = -n;
+    o_position = vec4(v_world, 1.0);
+    o_normal = vec4(n, 0.0);
+}

@@ -1,0 +1,243 @@
+/* VDSM, view-dependent shadow maps (seed 000; shaders/gl4/vdsm*): exact hard
+ * shadows at camera resolution. A frame stage draws the visible surface's
+ * positions (shadow_vdsm_buffer.c). Per light, into a channel of the screen
+ * mask (shadow_mask.c): a full-screen pass writes 1 where the visible side
+ * faces the light, then a geometry shader turns every triangle into the
+ * faces of its shadow volume the eye sees, grown by half a pixel, and the
+ * fragment stage writes 0 wherever the segment from the pixel's surface
+ * point to the light hits that triangle. Steps: EP drops triangles facing
+ * the light on closed meshes (the ones behind them cast the same shadow);
+ * the growth is conservative rasterisation. Triangles alone are needed: no
+ * adjacency, so open and non-manifold meshes cast exactly. */
+#include "internal.h"
+
+static GLuint build(stin_context *ctx, const char *vert, const char *geom, const char *frag,
+                    const char *out1, char *msg, size_t size)
+{
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = vert;
+    src.geom = geom;
+    src.frag = frag;
+    if (out1) {
+        src.frag_outputs[0] = "o_position";
+        src.frag_outputs[1] = out1;
+    }
+    return stin__program_build_source(ctx, &src, msg, size);
+}
+
+static void release(stin_context *ctx)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    GLuint *progs[3];
+    int i;
+    progs[0] = &v->position_prog;
+    progs[1] = &v->facing_prog;
+    progs[2] = &v->polygon_prog;
+    for (i = 0; i < 3; i++)
+        if (*progs[i]) {
+            GL(ctx, DeleteProgram)(*progs[i]);
+            *progs[i] = 0;
+        }
+    if (v->query)
+        GL(ctx, DeleteQueries)(1, &v->query);
+    v->query = 0;
+    stin__vdsm_buffer_release(ctx);
+    stin__mask_release(ctx);
+}
+
+static void locate(stin_context *ctx)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+#define LOC(field, prog, name) v->field = GL(ctx, GetUniformLocation)(v->prog, name)
+    LOC(pos_model, position_prog, "u_model");
+    LOC(pos_view_proj, position_prog, "u_view_proj");
+    LOC(pos_camera, position_prog, "u_camera");
+    LOC(face_position, facing_prog, "u_position");
+    LOC(face_normal, facing_prog, "u_normal");
+    LOC(face_light, facing_prog, "u_light");
+    LOC(poly_model, polygon_prog, "u_model");
+    LOC(poly_view_proj, polygon_prog, "u_view_proj");
+    LOC(poly_light, polygon_prog, "u_light");
+    LOC(poly_camera, polygon_prog, "u_camera");
+    LOC(poly_viewport, polygon_prog, "u_viewport");
+    LOC(poly_grow, polygon_prog, "u_grow");
+    LOC(poly_cull_lit, polygon_prog, "u_cull_lit");
+    LOC(poly_caps, polygon_prog, "u_caps");
+    LOC(poly_position, polygon_prog, "u_position");
+    LOC(poly_normal, polygon_prog, "u_normal");
+#undef LOC
+}
+
+/* The technique below vdsm that runs here: volumes where the frame has a
+ * stencil buffer, else PCF maps when their samplers fit, else none. */
+static stin_technique fallback(const stin_context *ctx)
+{
+    uint64_t pcf = stin__technique_needs(STIN_TECH_SHADOWS_MAP_PCF);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL))
+        return STIN_TECH_SHADOWS_VOLUME;
+    if ((ctx->caps.present & pcf) == pcf &&
+        ctx->sel.shadow_unit + STIN__SHADOW_SAMPLERS <= ctx->sel.unit_limit)
+        return STIN_TECH_SHADOWS_MAP_PCF;
+    return STIN_TECH_SHADOWS_OFF;
+}
+
+static stin_result vdsm_init(stin_context *ctx)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    char msg[160], why[200];
+    stin__memzero(v, sizeof *v);
+    stin__mask_init(ctx);
+    if (!ctx->mask.usable) {
+        stin__demote(ctx, STIN_FEATURE_SHADOWS, fallback(ctx),
+                     "vdsm writes into the screen mask, which needs a texture unit beyond the "
+                     "surface's");
+        return STIN_OK;
+    }
+    msg[0] = '\0';
+    v->position_prog = build(ctx, "gl4/vdsm_position.vert", NULL, "gl4/vdsm_position.frag",
+                             "o_normal", msg, sizeof msg);
+    if (v->position_prog)
+        v->facing_prog = build(ctx, "gl4/vdsm_screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
+                               msg, sizeof msg);
+    if (v->facing_prog)
+        v->polygon_prog = build(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag", NULL,
+                                msg, sizeof msg);
+    if (!v->polygon_prog) {
+        release(ctx);
+        stin__formatf(why, sizeof why, "its shaders failed to build (%s)", msg);
+        stin__demote(ctx, STIN_FEATURE_SHADOWS, fallback(ctx), why);
+        return STIN_OK;
+    }
+    locate(ctx);
+    if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
+        GL(ctx, GenQueries)(1, &v->query);
+    return STIN_OK;
+}
+
+static void vdsm_prepass(stin_context *ctx) { stin__vdsm_buffer_draw(ctx); }
+
+/* The light as a homogeneous world point: position (w 1) or the direction
+ * toward it (w 0). Area lights are shadowed from their centre. */
+static void light_point(const stin_light_desc *l, float out[4])
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        out[k] = l->type == STIN_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k];
+    out[3] = l->type == STIN_LIGHT_DIRECTIONAL ? 0.0f : 1.0f;
+}
+
+/* A full-viewport quad through the bound program (the GL4 streaming arrays). */
+static void screen_quad(stin_context *ctx)
+{
+    static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
+                                      -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
+    GL(ctx, BindVertexArray)(ctx->volume_vao);
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
+    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)sizeof quad, quad, GL_STREAM_DRAW);
+    GL(ctx, DrawArrays)(GL_TRIANGLES, 0, 6);
+    GL(ctx, BindVertexArray)(0);
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+/* 1 when EP may drop a draw's light-facing triangles: the step is on and
+ * the mesh is closed (an open one's back may be missing). */
+static int cull_lit(const stin_context *ctx, const stin__draw *d)
+{
+    return !(ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_EP) &&
+           ctx->meshes[d->mesh_slot].info.closed_manifold;
+}
+
+static void polygons(stin_context *ctx, const float light[4])
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    const int *vp = ctx->frame.viewport;
+    float viewport[4];
+    uint32_t i;
+    int culled = -1;
+    viewport[0] = (float)vp[0];
+    viewport[1] = (float)vp[1];
+    viewport[2] = (float)vp[2];
+    viewport[3] = (float)vp[3];
+    GL(ctx, UseProgram)(v->polygon_prog);
+    GL(ctx, UniformMatrix4fv)(v->poly_view_proj, 1, GL_FALSE, ctx->view_proj);
+    GL(ctx, Uniform4fv)(v->poly_light, 1, light);
+    GL(ctx, Uniform4fv)(v->poly_camera, 1, v->camera);
+    GL(ctx, Uniform4fv)(v->poly_viewport, 1, viewport);
+    GL(ctx, Uniform1f)(v->poly_grow, ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_GROW ? 0.0f : 0.5f);
+    GL(ctx, Uniform1i)(v->poly_position, 0);
+    GL(ctx, Uniform1i)(v->poly_normal, 1);
+    if (v->query)
+        GL(ctx, BeginQuery)(GL_PRIMITIVES_GENERATED, v->query);
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        int c = cull_lit(ctx, d);
+        if (c != culled)
+            GL(ctx, Uniform1i)(v->poly_cull_lit, c);
+        culled = c;
+        /* a blended caster is not in the depth buffer: what lies behind it shows */
+        GL(ctx, Uniform1i)(v->poly_caps, d->material.color[3] < 1.0f);
+        stin__glsl_submit_geometry(ctx, v->poly_model, d);
+    }
+    if (v->query) {
+        GLuint n = 0;
+        GL(ctx, EndQuery)(GL_PRIMITIVES_GENERATED);
+        GL(ctx, GetQueryObjectuiv)(v->query, GL_QUERY_RESULT, &n);
+        ctx->stats.vdsm_primitives += n;
+    }
+}
+
+/* Light li's visibility into mask channel `channel`. */
+static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int channel)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    const stin_light_desc *l = &ctx->lights[li];
+    stin__pass_state ps = *stin__pass_current(ctx);
+    float light[4];
+    (void)path;
+    if (!v->ready)
+        return 0;
+    if (l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL && !v->said_area) {
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                  "vdsm: area lights cast hard shadows from their centre");
+        v->said_area = 1;
+    }
+    light_point(l, light);
+    ps.depth_test = ps.depth_write = ps.stencil_test = ps.blend = ps.cull = 0;
+    ps.scissor = ps.depth_clamp = ps.polygon_offset = 0;
+    ps.color_write = 1;
+    ps.color_only = (unsigned char)(channel + 1);
+    stin__pass_apply(ctx, &ps);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, v->position);
+    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, v->normal);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    GL(ctx, UseProgram)(v->facing_prog);
+    ctx->glsl_surface.current = NULL;
+    GL(ctx, Uniform1i)(v->face_position, 0);
+    GL(ctx, Uniform1i)(v->face_normal, 1);
+    GL(ctx, Uniform4fv)(v->face_light, 1, light);
+    screen_quad(ctx);
+    polygons(ctx, light);
+    ctx->stats.passes += 2;
+    return 1;
+}
+
+/* Without the mask (its framebuffer failed) vdsm has nowhere to write:
+ * the light is drawn unshadowed, and the log says so once. */
+static void vdsm_light(stin_context *ctx, const stin__path *path, uint32_t li,
+                       stin__shade_fn shade)
+{
+    if (!ctx->vdsm.said_failed)
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK,
+                  "vdsm: no screen mask or position buffer this frame: lights are drawn "
+                  "without shadows");
+    ctx->vdsm.said_failed = 1;
+    shade(ctx, path, &ctx->lights[li], 1.0f);
+}
+
+const stin__shadow_technique stin__shadow_vdsm = {
+    STIN_TECH_SHADOWS_VDSM, "shadow_mask.glsl", vdsm_init,  release,
+    NULL,                   vdsm_prepass,       vdsm_light, stin__mask_uniforms,
+    vdsm_mask,
+};
