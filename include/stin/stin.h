@@ -53,9 +53,30 @@
  * clamped to [0,1] before interpolation (as GL does); per-pixel at the end.
  *
  * SHADOWS
- * The shadow feature's chain: "volume" (stencil shadow volumes, exact; needs a
- * stencil buffer), "map-pcf" (GLSL lighting), "map-depth" and "map-combine"
- * (fixed-function lighting), then "off".
+ * The shadow feature's chain: "vdsm" (GL4 only), "volume" (stencil shadow
+ * volumes, exact; needs a stencil buffer), "map-pcf" (GLSL lighting),
+ * "map-depth" and "map-combine" (fixed-function lighting), then "off".
+ * "vdsm" (view-dependent shadow maps: GL 3.2 geometry shaders, float and
+ * packed depth-stencil textures, a texture unit beyond the surface's): exact
+ * hard shadows at the frame's resolution without a stencil buffer, adjacency
+ * or map resolution. A stage draws the visible surface into a position
+ * buffer (RGBA32F world position + RGBA16F facet normal, 24 bytes a pixel of
+ * GL memory plus a 24-bit depth texture, the size of the viewport's far
+ * corner, made at the first frame and kept); per light, into a channel of
+ * the screen mask below, 1 where the side the eye sees faces the light, then
+ * each triangle's shadow-volume faces the eye sees, grown by half a pixel,
+ * write 0 wherever the segment from the pixel's surface point to the light
+ * hits that triangle. The segment leaves the surface by 2^-13 of the point's
+ * largest coordinate along its facet normal (no self-shadowing; contact
+ * shadows closer than that are lost, as with the test reference's own
+ * 1e-4 of the scene). Closed meshes drop the triangles facing the light
+ * (STIN_DEBUG_VDSM_NO_EP keeps them); open ones keep them. Blended casters
+ * also draw their own face (what is behind them is in the position buffer).
+ * Area lights are shadowed from their centre (logged once). Cost: every
+ * triangle of every draw once per light through the geometry shader, plus
+ * the screen area of its grown shadow faces; STIN_DEBUG_VDSM_COUNT counts
+ * the emitted primitives. Without its shaders or the mask it falls back
+ * (logged) to "volume" where there is a stencil buffer, else "map-pcf".
  * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
  * point lights get six 90-degree maps drawn before their pass.
