@@ -28,6 +28,8 @@ struct stin_context {
     uint32_t gl_errors;       /* checked build: glGetError results */
 
     /* meshes and textures (mesh.c, texture.c) */
+    uint32_t creation_serial; /* contexts made in this block so far (kept across them) */
+    uint32_t handle_tag;      /* top 8 bits of this context's handles (handle_pool.c) */
     stin__mesh_slot *meshes;
     stin__texture_slot *textures;
     stin__vertex *vertices;   /* max_vertices */

@@ -12,15 +12,21 @@
 typedef struct stin__handle {
     uint32_t generation;
     int alive;
+    int retired;          /* its generation reached the top: never issued again */
 } stin__handle;
 #define STIN__NO_SLOT 0xffffffffu
+/* The context's 8-bit handle tag from its creation serial in the block and
+ * the block's address. */
+uint32_t stin__handle_tag(uint32_t serial, const void *block);
 /* The first free slot of a pool of `count` slots `stride` bytes apart. */
 uint32_t stin__handle_free_slot(const stin__handle *first, size_t stride, uint32_t count);
-/* Marks slot h (index `slot`) alive with a new generation; returns its handle id. */
-uint32_t stin__handle_issue(stin__handle *h, uint32_t slot);
+/* Marks slot h (index `slot` of `count`) alive with a new generation; returns its id. */
+uint32_t stin__handle_issue(stin__handle *h, uint32_t slot, uint32_t count, uint32_t tag);
+/* Marks h free, or retired when its generation cannot grow. */
+void stin__handle_release(stin__handle *h, uint32_t count);
 /* The slot a handle id names while it is alive, else STIN__NO_SLOT. */
 uint32_t stin__handle_resolve(const stin__handle *first, size_t stride, uint32_t count,
-                              uint32_t id);
+                              uint32_t tag, uint32_t id);
 
 typedef struct stin__vertex {
     float position[3];

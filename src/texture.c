@@ -3,20 +3,24 @@
  * generation), all through the arena's staging block. */
 #include "internal.h"
 
+/* The caller's texels are addressed with 32-bit byte offsets (4 a texel). */
+#define STIN__MAX_TEXELS (1ull << 30)
+
 stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex)
 {
     uint32_t s;
     if (!ctx)
         return NULL;
     s = stin__handle_resolve(&ctx->textures[0].handle, sizeof ctx->textures[0],
-                             ctx->desc.max_textures, tex.id);
+                             ctx->desc.max_textures, ctx->handle_tag, tex.id);
     return s == STIN__NO_SLOT ? NULL : &ctx->textures[s];
 }
 
+/* n is at most STIN__MAX_TEXELS (checked first): p cannot shift out. */
 static uint32_t pot_at_least(uint32_t n)
 {
     uint32_t p = 1;
-    while (p < n)
+    while (p < n && p < 0x80000000u)
         p <<= 1;
     return p;
 }
@@ -157,13 +161,15 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     if (out)
         out->id = 0;
     if (!ctx || !desc || !out || !desc->pixels || !desc->width || !desc->height ||
+        (uint64_t)desc->width * desc->height > STIN__MAX_TEXELS ||
         (unsigned)desc->kind > STIN_TEXTURE_HEIGHT || !stin__isfinite(desc->normal_from_height) ||
         desc->normal_from_height < 0.0f ||
         (desc->normal_from_height > 0.0f && desc->kind != STIN_TEXTURE_NORMAL)) {
         if (ctx)
             stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
-                      "stin_create_texture: need pixels, width, height and a valid kind "
-                      "(normal_from_height: finite, >= 0, normal maps only)");
+                      "stin_create_texture: need pixels, width and height (width * height "
+                      "at most 2^30) and a valid kind (normal_from_height: finite, >= 0, "
+                      "normal maps only)");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     max = ctx->caps.max_texture_size > 0 ? (uint32_t)ctx->caps.max_texture_size : 64u;
@@ -250,7 +256,7 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     t->kind = desc->kind;
     t->width = desc->width;
     t->height = desc->height;
-    out->id = stin__handle_issue(&t->handle, slot);
+    out->id = stin__handle_issue(&t->handle, slot, ctx->desc.max_textures, ctx->handle_tag);
     return STIN_OK;
 }
 
@@ -270,7 +276,7 @@ void stin_destroy_texture(stin_context *ctx, stin_texture tex)
         return;
     }
     GL(ctx, DeleteTextures)(1, &t->name);
-    t->handle.alive = 0;
+    stin__handle_release(&t->handle, ctx->desc.max_textures);
     t->name = 0;
 }
 
@@ -280,7 +286,7 @@ void stin__texture_release_all(stin_context *ctx)
     for (i = 0; i < ctx->desc.max_textures; i++)
         if (ctx->textures[i].handle.alive) {
             GL(ctx, DeleteTextures)(1, &ctx->textures[i].name);
-            ctx->textures[i].handle.alive = 0;
+            stin__handle_release(&ctx->textures[i].handle, ctx->desc.max_textures);
         }
 }
 

@@ -460,7 +460,9 @@ stin_choice stin_query_choice(const stin_context *ctx, stin_feature feature);
 stin_result stin_detect_caps(stin_get_proc_fn get_proc, void *user, uint64_t caps_mask,
                              int max_gl_version, stin_caps *out);
 /* Best tier the caps run; writes the capabilities missing for `tier` into
- * `missing` (comma separated, may be NULL). Returns 1 if `tier` can run. */
+ * `missing` (comma separated, may be NULL). Returns 1 if `tier` can run.
+ * NULL caps: stin_tier_supported returns 0 (missing emptied) and
+ * stin_best_tier STIN_TIER_AUTO. */
 int stin_tier_supported(const stin_caps *caps, stin_tier tier, char *missing, size_t size);
 stin_tier stin_best_tier(const stin_caps *caps);
 
@@ -469,6 +471,21 @@ stin_tier stin_best_tier(const stin_caps *caps);
 int stin_has_extension(const stin_context *ctx, const char *name);
 
 /* ---- meshes ------------------------------------------------------------- */
+/* Handles: 0 is never a handle. A handle resolves only in the context that
+ * made it, while its mesh or texture lives; anything else is
+ * STIN_ERROR_INVALID_HANDLE (or logged and ignored by the destroy calls):
+ *   - a stale handle: each slot's generation grows with every re-creation
+ *     and never wraps; a slot whose generation is spent (2^24 / the next
+ *     power of two above max_meshes or max_textures, less one, issues: 255 with
+ *     65535 slots, 131071 with 64) is retired for the context's life, so
+ *     the pool loses that slot rather than reviving an old id;
+ *   - another context's handle: each context's handles carry an 8-bit tag
+ *     from a creation counter kept in the block and the block's address. A
+ *     context made in the block of a destroyed one gets the next tag, so
+ *     the old context's handles never resolve in it (for 255 re-creations
+ *     in a row; keep the block's bytes between destroy and create, since
+ *     the counter lives there). Two blocks' tags differ unless their
+ *     addresses hash alike (1 in 256). */
 typedef struct { uint32_t id; } stin_mesh;
 typedef struct { uint32_t id; } stin_texture;
 
@@ -492,7 +509,10 @@ typedef struct stin_mesh_info {
 } stin_mesh_info;
 
 /* Validates (indices in range, finite values, degenerate triangles dropped and
- * counted), computes adjacency, manifold status and tangents, uploads. */
+ * counted), computes adjacency, manifold status and tangents, uploads.
+ * Degenerate means twice the area under 1e-7 of the longest edge squared
+ * (or repeated indices): a test of shape, the same at every scale from
+ * float's smallest to its largest values. */
 stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin_mesh *out);
 stin_result stin_query_mesh(const stin_context *ctx, stin_mesh mesh, stin_mesh_info *out);
 /* Neighbour triangle across edge e (0..2: v0v1, v1v2, v2v0) of triangle t, or
@@ -515,7 +535,8 @@ typedef enum stin_texture_kind {
 typedef struct stin_texture_desc {
     stin_texture_kind kind;
     uint32_t width, height;  /* each at most caps.max_texture_size; any size (GL1
-                              * contexts get a power-of-two resample) */
+                              * contexts get a power-of-two resample); width *
+                              * height above 2^30: STIN_ERROR_INVALID_ARGUMENT */
     const uint8_t *pixels;   /* RGBA8, 4 bytes per pixel, rows bottom to top */
     int no_mipmaps;          /* default 0: mipmaps are built (never for
                               * STIN_TEXTURE_HEIGHT: POM marches level 0) */
@@ -544,7 +565,8 @@ typedef enum stin_light_type {
 typedef struct stin_light_desc {
     stin_light_type type;
     float position[3];      /* world, point and spot */
-    float direction[3];     /* world, the way light travels; spot and directional */
+    float direction[3];     /* world, the way light travels; spot and directional:
+                             * any non-zero length (normalised scale-free) */
     float color[3];         /* default (1,1,1) when all zero */
     float intensity;        /* default 1 */
     float attenuation[3];   /* k0, k1, k2; default (1,0,0) when all zero */
@@ -554,8 +576,8 @@ typedef struct stin_light_desc {
                              * point samples (stin_light_sample); default 0 */
     float range;            /* > 0: the light reaches no farther (its attenuation makes it
                              * negligible); shadow passes are scissored to it. 0 = unbounded */
-    float shadow_offset[2]; /* shadow-map polygon offset (factor, units); default
-                             * (1.1, 4.0) when both are 0 */
+    float shadow_offset[2]; /* shadow-map polygon offset (factor, units), finite;
+                             * default (1.1, 4.0) when both are 0 */
     int shadow_offset_off;  /* 1: no polygon offset (shows acne; for tests) */
     uint32_t pcf_kernel;    /* map-pcf: 1, 3 or 5 taps a side (each the hardware's 2x2
                              * compare); default 3 */
@@ -600,7 +622,8 @@ typedef struct stin_frame_desc {
 
 stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc);
 /* At most desc.max_lights per frame; the light index order is kept (light 0 is
- * the one STIN_OUTPUT_VISIBILITY shows). */
+ * the one STIN_OUTPUT_VISIBILITY shows). A NaN or infinite field, an unknown
+ * type or a zero direction (spot, directional) is STIN_ERROR_INVALID_ARGUMENT. */
 stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light);
 /* transform: column-major object -> world; NULL means identity. */
 stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[16],

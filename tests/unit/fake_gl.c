@@ -539,6 +539,8 @@ void fake_log_fn(void *user, stin_log_level level, stin_log_item item, const cha
     head[n++] = (char)('0' + (unsigned)item % 10);
     head[n++] = ' ';
     head[n] = '\0';
+    if (log->used + 2 >= sizeof log->text)
+        return; /* full: counted above, not stored */
     for (i = 0; head[i] && log->used + 2 < sizeof log->text; i++)
         log->text[log->used++] = head[i];
     for (i = 0; message[i] && log->used + 2 < sizeof log->text; i++)
