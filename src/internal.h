@@ -60,6 +60,7 @@ struct stin_context {
     stin__pass_state pass;    /* what GL holds, when pass_known */
     int pass_known;
     uint32_t units_used;      /* texture units bound this frame (bit per unit) */
+    GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
 
     /* lighting paths */
     stin__program programs[STIN__PROG_COUNT];

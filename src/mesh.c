@@ -163,8 +163,10 @@ void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base)
 static void upload(stin_context *ctx, stin__mesh_slot *m)
 {
     int i;
+    GLuint caller_vao;
     if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO)))
         return; /* client arrays straight from the arena */
+    caller_vao = stin__vao_begin(ctx); /* the element buffer is VAO state */
     GL(ctx, GenBuffers)(1, &m->vbo);
     GL(ctx, GenBuffers)(1, &m->ibo);
     if (ctx->sel.tier == STIN_TIER_GL4) {
@@ -186,6 +188,7 @@ static void upload(stin_context *ctx, stin__mesh_slot *m)
     }
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
+    stin__vao_end(ctx, caller_vao);
     stin__gl_check_errors(ctx, "mesh upload");
 }
 

@@ -157,6 +157,7 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     uint8_t *buf;
     stin__texture_slot *t = NULL;
     int mips, resized, normal, derive;
+    GLint caller_binding = 0;
     uint64_t need;
     if (out)
         out->id = 0;
@@ -227,6 +228,7 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         for (i = 0; i < w * h; i++)
             buf[4u * i + 3u] = 255;
     }
+    GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &caller_binding); /* the active unit's */
     GL(ctx, GenTextures)(1, &t->name);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, t->name);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -251,7 +253,7 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         h = h > 1 ? h / 2 : 1;
         level++;
     }
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)caller_binding);
     stin__gl_check_errors(ctx, "texture upload");
     t->kind = desc->kind;
     t->width = desc->width;
@@ -290,23 +292,20 @@ void stin__texture_release_all(stin_context *ctx)
         }
 }
 
-/* Tightly packed rows: alignment 1 for the upload, the caller's value after
- * (the header promises pixel-store state is left alone). */
+/* Tightly packed rows from client memory whatever the caller's unpack
+ * state (the header promises pixel-store state is left alone). */
 void stin__upload_level(stin_context *ctx, GLenum target, GLint level, GLenum internal_format,
                         uint32_t w, uint32_t h, GLenum format, const void *pixels)
 {
-    GLint saved = 4;
-    GL(ctx, GetIntegerv)(GL_UNPACK_ALIGNMENT, &saved);
-    if (saved != 1)
-        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
+    stin__unpack_saved saved;
+    stin__unpack_begin(ctx, &saved);
     if (target == GL_TEXTURE_1D)
         GL(ctx, TexImage1D)(target, level, (GLint)internal_format, (GLsizei)w, 0, format,
                             GL_UNSIGNED_BYTE, pixels);
     else
         GL_ENUM(ctx, TexImage2D, target)(target, level, (GLint)internal_format, (GLsizei)w,
                                          (GLsizei)h, 0, format, GL_UNSIGNED_BYTE, pixels);
-    if (saved != 1)
-        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, saved);
+    stin__unpack_end(ctx, &saved);
 }
 
 void stin__upload_bytes(stin_context *ctx, GLenum target, GLenum internal_format, uint32_t w,

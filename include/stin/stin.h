@@ -112,8 +112,11 @@
  * stencil test off, stencil mask all ones, stencil func ALWAYS/0/all ones and
  * stencil ops KEEP on both faces, front face CCW, cull face BACK and off,
  * colour mask all on, scissor off, current program 0, texture unit 0 active
- * with no texture bound, array buffer 0, vertex array 0, all client arrays
- * disabled with client unit 0 active (GL1), alpha function ALWAYS/0 (GL1).
+ * with no texture bound, array buffer 0, vertex array 0's element buffer 0,
+ * all client arrays disabled with client unit 0 active (GL1), alpha function
+ * ALWAYS/0 (GL1). Where there are vertex array objects the frame draws with
+ * vertex array 0 or its own, never through the caller's, and binds the
+ * caller's again at the end.
  * The viewport and the framebuffer binding stay as the frame set them; the
  * caller's matrices (GL1 matrix stacks) are restored. Clear colour, clear
  * depth and polygon offset are overwritten, and so are the scissor box and
@@ -129,9 +132,15 @@
  * technique's units 1 and 2, the shadow maps' units) are left with no 2D,
  * 1D or cube-map texture bound.
  * Every other piece of GL state is left as the caller had it.
- * stin_create_mesh/stin_create_texture change buffer and texture bindings of
- * unit 0 (left at 0); stin_create and the destroy calls create or delete GL
- * objects and leave every binding as they found it. Queries touch no GL.
+ * stin_create_mesh leaves the array buffer and vertex array 0's element
+ * buffer at 0; the caller's vertex array object stays bound and untouched.
+ * stin_create_texture leaves every binding as it found it (the active
+ * unit's 2D texture included) and reads `pixels` as tightly packed client
+ * memory whatever the caller's unpack state: alignment, row length, skip
+ * rows and pixels and (GL 2.1+) a bound pixel unpack buffer are set for the
+ * upload and restored after. stin_create and the destroy calls create or
+ * delete GL objects and leave every binding as they found it. Queries touch
+ * no GL.
  *
  * MEMORY
  * stin_memory_size(&desc) returns the bytes a configuration needs; the block

@@ -53,9 +53,6 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Finish ~, 1
 #define FAKE_STATELESS_CopyTexSubImage2D ~, 1
 #define FAKE_STATELESS_TexImage1D ~, 1
-#define FAKE_STATELESS_VertexPointer ~, 1
-#define FAKE_STATELESS_NormalPointer ~, 1
-#define FAKE_STATELESS_TexCoordPointer ~, 1
 #define FAKE_STATELESS_BufferData ~, 1
 #define FAKE_STATELESS_CompileShader ~, 1
 #define FAKE_STATELESS_AttachShader ~, 1
@@ -67,7 +64,6 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Uniform4fv ~, 1
 #define FAKE_STATELESS_UniformMatrix3fv ~, 1
 #define FAKE_STATELESS_UniformMatrix4fv ~, 1
-#define FAKE_STATELESS_VertexAttribPointer ~, 1
 #define FAKE_STATELESS_FramebufferTexture2D ~, 1
 #define FAKE_STATELESS_GenerateMipmap ~, 1
 
@@ -245,6 +241,8 @@ static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt
     (void)border;
     COUNT(TexImage2D);
     fake_gl.tex_images++;
+    if (fake_gl_unpack_loose())
+        fake_gl.tex_images_loose++;
     if (level == 0)
         fake_gl.tex_levels = 0;
     if (level >= 0 && level < FAKE_GL_MAX_LEVELS) {
