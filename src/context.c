@@ -299,6 +299,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
                   "stin_create: no current GL context (GL_VERSION unreadable)");
         return r;
     }
+    stin__target_init(ctx);
     r = stin__select(&ctx->caps, d.tier, d.techniques, &ctx->sel, msg, sizeof msg);
     if (r != STIN_OK) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR,

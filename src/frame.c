@@ -41,6 +41,8 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         return arg_error(ctx, "stin_begin_frame", "unknown output");
     if (desc->framebuffer && !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)))
         return arg_error(ctx, "stin_begin_frame", "a framebuffer name needs framebuffer objects");
+    if (stin__target_check(ctx, desc->framebuffer, "stin_begin_frame") != STIN_OK)
+        return STIN_ERROR_INVALID_ARGUMENT;
     ctx->frame = *desc;
     ctx->draw_count = ctx->light_count = 0;
     stin__memzero(&ctx->stats, sizeof ctx->stats);
@@ -269,7 +271,7 @@ static void stage_target(stin_context *ctx)
         GL(ctx, ClearDepth)(1.0);
         GL(ctx, ClearStencil)(0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |
-                       (ctx->caps.stencil_bits > 0 ? GL_STENCIL_BUFFER_BIT : 0u));
+                       (ctx->target.stencil_bits > 0 ? GL_STENCIL_BUFFER_BIT : 0u));
     }
 }
 
@@ -345,7 +347,7 @@ static void run_plan(stin_context *ctx)
 {
     const stin__path *path = stin__path_of(ctx);
     int visibility = ctx->frame.output == STIN_OUTPUT_VISIBILITY;
-    int shadowed = ctx->shadow->light && ctx->light_count > 0;
+    int shadowed = ctx->shadow->light && ctx->light_count > 0 && !ctx->target.shadows_off;
     stage_prepare(ctx);
     stage_light_prepasses(ctx);
     stage_target(ctx);
@@ -374,6 +376,10 @@ stin_result stin_end_frame(stin_context *ctx)
         return STIN_ERROR_INVALID_ARGUMENT;
     if (ctx->state != STIN__IN_FRAME)
         return state_error(ctx, "stin_end_frame", "no frame is open");
+    if (stin__target_check(ctx, ctx->frame.framebuffer, "stin_end_frame") != STIN_OK) {
+        ctx->state = STIN__IDLE; /* nothing drawn: the target went bad since begin */
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
     order_draws(ctx);
     ctx->stats.draws = ctx->draw_count;
     ctx->stats.lights = ctx->light_count;

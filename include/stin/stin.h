@@ -101,9 +101,18 @@
  * cost N stencil counts and N/4 lit passes; area lights keep a lit pass per
  * sample (their stencil test runs in the frame's framebuffer). Without
  * masks each light's lit pass is stencil-tested in the frame's framebuffer.
- * Either way "volume" is chosen only where the frame's framebuffer has a
- * stencil buffer (probed at stin_create); an incomplete mask framebuffer is
- * logged once and the context goes on without masks.
+ * An incomplete mask framebuffer is logged once and the context goes on
+ * without masks.
+ * Stencil and depth belong to a framebuffer, not to the context. stin_create
+ * chooses "volume" where the framebuffer bound then or the default one has
+ * a stencil buffer (so a stencil-less framebuffer left bound, e.g. by an
+ * earlier frame, does not decide for every later frame). Each frame probes
+ * its own framebuffer (desc.framebuffer; the bits are read again only when
+ * a frame names another framebuffer than the one probed last): a frame into
+ * one without a stencil buffer draws without shadows and without the point
+ * lights' volume fallback of the fixed-function maps, logged (FALLBACK) when
+ * the frames' target changes to it; stin_query_choice keeps the context's
+ * choice.
  *
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
@@ -283,7 +292,8 @@ typedef struct stin_caps {
     int max_texture_image_units;  /* fragment shader samplers, 0 without GLSL */
     int max_vertex_texture_units;
     int max_lights;               /* fixed-function lights, 0 on core profiles */
-    int stencil_bits, depth_bits;
+    int stencil_bits, depth_bits; /* at stin_create: the bound or the default framebuffer's,
+                                   * whichever has the larger stencil; frames probe their own */
     int max_draw_buffers;
     int max_geometry_output_vertices;
     char renderer[64];            /* GL_RENDERER, truncated */
@@ -622,7 +632,14 @@ typedef struct stin_frame_desc {
     float view[16];          /* column-major world -> eye */
     float projection[16];    /* column-major eye -> clip */
     int viewport[4];         /* x, y, width, height; required */
-    uint32_t framebuffer;    /* GL framebuffer name to draw into; 0 = default */
+    uint32_t framebuffer;    /* GL framebuffer name to draw into; 0 = default. Else a
+                              * complete framebuffer object of the context:
+                              * stin_begin_frame checks (binding it for the
+                              * check, the caller's binding given back) and an
+                              * unknown or incomplete one is a logged
+                              * STIN_ERROR_INVALID_ARGUMENT; stin_end_frame
+                              * checks again and, if it went bad in between,
+                              * drops the frame with the same error. */
     float clear_color[4];    /* cleared before drawing */
     int no_clear;            /* 1: keep colour/depth/stencil as they are */
     float ambient[3];        /* scene ambient, multiplies albedo */

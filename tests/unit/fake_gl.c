@@ -41,6 +41,7 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GetUniformLocation ~, 1
 #define FAKE_CUSTOM_GetFramebufferAttachmentParameteriv ~, 1
 #define FAKE_CUSTOM_CheckFramebufferStatus ~, 1
+#define FAKE_CUSTOM_IsFramebuffer ~, 1
 
 /* Generated no-ops that leave the state fake_gl_state.h keeps alone: they
  * draw, upload, or set program, texture-object or array-pointer state,
@@ -139,14 +140,33 @@ static const GLubyte *STIN_APIENTRY fake_GetStringi(GLenum name, GLuint i)
     return (const GLubyte *)fake_gl.config.extension_list[i];
 }
 
+/* The caller's framebuffer object `name` of the config, or NULL. */
+static const fake_gl_fbo *caller_fbo(GLuint name)
+{
+    int i;
+    for (i = 0; name && i < fake_gl.config.framebuffer_count; i++)
+        if (fake_gl.config.framebuffers[i].name == name)
+            return &fake_gl.config.framebuffers[i];
+    return NULL;
+}
+
+/* Stencil and depth bits of the bound draw framebuffer. */
+static int bound_bits(int stencil)
+{
+    const fake_gl_fbo *f = caller_fbo(fake_gl.gl.draw_framebuffer);
+    if (f)
+        return stencil ? f->stencil_bits : f->depth_bits;
+    return stencil ? fake_gl.config.stencil_bits : fake_gl.config.depth_bits;
+}
+
 static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
 {
     const fake_gl_config *c = &fake_gl.config;
     COUNT(GetIntegerv);
     switch (pname) {
     case GL_MAX_LIGHTS: *data = c->max_lights; break;
-    case GL_STENCIL_BITS: *data = c->stencil_bits; break;
-    case GL_DEPTH_BITS: *data = c->depth_bits; break;
+    case GL_STENCIL_BITS: *data = bound_bits(1); break;
+    case GL_DEPTH_BITS: *data = bound_bits(0); break;
     case GL_MAX_TEXTURE_SIZE: *data = c->max_texture_size; break;
     case GL_MAX_TEXTURE_UNITS: *data = c->max_texture_units; break;
     case GL_MAX_TEXTURE_IMAGE_UNITS: *data = c->max_texture_image_units; break;
@@ -170,8 +190,14 @@ static void STIN_APIENTRY fake_GetFramebufferAttachmentParameteriv(GLenum target
     (void)target;
     (void)att;
     COUNT(GetFramebufferAttachmentParameteriv);
-    *v = pname == GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE ? fake_gl.config.stencil_bits
-         : pname == GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE ? fake_gl.config.depth_bits
+    if (pname == 0x8CD0) { /* GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE: none without bits */
+        int bits = bound_bits(att == GL_STENCIL || att == 0x8D20);
+        *v = !bits ? GL_NONE : fake_gl.gl.draw_framebuffer ? 0x8D41 /* RENDERBUFFER */
+                                                           : 0x8218 /* FRAMEBUFFER_DEFAULT */;
+        return;
+    }
+    *v = pname == GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE ? bound_bits(1)
+         : pname == GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE ? bound_bits(0)
                                                          : 0;
 }
 
@@ -379,12 +405,20 @@ static void STIN_APIENTRY fake_DeleteProgram(GLuint p)
         fake_gl.deletes_of_zero++;
 }
 
-/* Framebuffers the library builds are always complete here. */
+/* Framebuffers the library builds are always complete here; the caller's
+ * report their configured status. */
 static GLenum STIN_APIENTRY fake_CheckFramebufferStatus(GLenum target)
 {
+    const fake_gl_fbo *f = caller_fbo(fake_gl.gl.draw_framebuffer);
     (void)target;
     COUNT(CheckFramebufferStatus);
-    return GL_FRAMEBUFFER_COMPLETE;
+    return f && f->status ? f->status : GL_FRAMEBUFFER_COMPLETE;
+}
+
+static GLboolean STIN_APIENTRY fake_IsFramebuffer(GLuint fb)
+{
+    COUNT(IsFramebuffer);
+    return caller_fbo(fb) || (fb && fb <= fake_gl.next_name);
 }
 
 static GLint STIN_APIENTRY fake_GetUniformLocation(GLuint p, const GLchar *name)

@@ -18,6 +18,13 @@
 #include "internal.h"
 #include "fake_gl_state.h"
 
+/* A framebuffer object of the caller's: its bits and status (0: complete). */
+typedef struct fake_gl_fbo {
+    GLuint name;
+    int stencil_bits, depth_bits;
+    GLenum status;
+} fake_gl_fbo;
+
 typedef struct fake_gl_config {
     const char *version;                 /* GL_VERSION; NULL makes glGetString return NULL */
     const char *glsl_version;            /* GL_SHADING_LANGUAGE_VERSION, NULL = none */
@@ -32,6 +39,13 @@ typedef struct fake_gl_config {
     int fail_glsl_from;                  /* shaders with "#version N", N >= this, fail to
                                           * compile (e.g. 150); 0 = every shader compiles */
     int fail_link;                       /* every program fails to link */
+    /* The caller's framebuffer objects: bound, their bits are what
+     * GL_STENCIL_BITS/GL_DEPTH_BITS and the attachment queries report and
+     * their status what glCheckFramebufferStatus does. Other names made by
+     * glGen* are complete framebuffers with the default's bits; names never
+     * made are not framebuffers (glIsFramebuffer). */
+    fake_gl_fbo *framebuffers;
+    int framebuffer_count;
 } fake_gl_config;
 
 /* Configs shaped like the emulation profiles of DESIGN.md. */

@@ -89,6 +89,133 @@ static void open_frame(context *c)
     assert_int_equal(stin_begin_frame(c->ctx, &fd), STIN_OK);
 }
 
+/* ---- items 9 and 14: the frame's framebuffer ------------------------------------ */
+/* The caller's framebuffers on a GL 2.1 context whose default framebuffer
+ * has a stencil buffer: 5 colour and depth only, 6 incomplete. */
+static fake_gl_fbo fbos[2];
+
+static void use_framebuffers(int default_stencil)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL21);
+    fake_gl_fbo colour_only = {5, 0, 24, 0}, incomplete = {6, 8, 24, 0x8CD6};
+    fbos[0] = colour_only;
+    fbos[1] = incomplete;
+    cfg.framebuffers = fbos;
+    cfg.framebuffer_count = 2;
+    cfg.stencil_bits = default_stencil;
+    fake_gl_reset(&cfg);
+}
+
+/* A frame into `framebuffer` with a point light over a quad; its stats. */
+static stin_frame_stats shadow_frame(context *c, stin_mesh m, uint32_t framebuffer)
+{
+    stin_frame_desc fd = {.viewport = {0, 0, 64, 48}};
+    stin_light_desc l = {.position = {0.5f, 0.5f, 2.0f}};
+    float below[16];
+    stin__mat4_identity(fd.view);
+    stin__mat4_identity(fd.projection);
+    stin__mat4_identity(below);
+    below[14] = -1.0f;
+    fd.framebuffer = framebuffer;
+    assert_int_equal(stin_begin_frame(c->ctx, &fd), STIN_OK);
+    assert_int_equal(stin_add_light(c->ctx, &l), STIN_OK);
+    assert_int_equal(stin_draw(c->ctx, m, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_draw(c->ctx, m, below, NULL), STIN_OK);
+    assert_int_equal(stin_end_frame(c->ctx), STIN_OK);
+    assert_int_equal(fake_gl.gl.draw_framebuffer, framebuffer);
+    return stin_query_frame_stats(c->ctx);
+}
+
+static void create_auto(context *c)
+{
+    stin_desc d = small_desc(2);
+    d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_NONE; /* the context's choice */
+    d.techniques[STIN_FEATURE_SURFACE] = STIN_TECH_SURFACE_PLAIN; /* no per-draw step-downs */
+    if (!c->block) {
+        c->bytes = stin_memory_size(&d);
+        c->block = malloc(c->bytes);
+        assert_non_null(c->block);
+    }
+    assert_int_equal(stin_create(&d, c->block, c->bytes, &c->ctx), STIN_OK);
+}
+
+static void test_stencil_is_probed_per_frame_target(void **state)
+{
+    context c = {0};
+    stin_mesh m;
+    unsigned fallbacks;
+    (void)state;
+    use_framebuffers(8);
+    fake_gl.gl.draw_framebuffer = fake_gl.gl.read_framebuffer = 5; /* bound at create */
+    create_auto(&c);
+    assert_int_equal(stin_query_choice(c.ctx, STIN_FEATURE_SHADOWS).technique,
+                     STIN_TECH_SHADOWS_VOLUME);
+    assert_int_equal(fake_gl.gl.draw_framebuffer, 5);
+    assert_int_equal(quad(c.ctx, &m), STIN_OK);
+    fallbacks = log_.items[STIN_LOG_FALLBACK];
+    /* into the colour-only framebuffer: no volumes, said once */
+    assert_int_equal(shadow_frame(&c, m, 5).shadow_volume_triangles, 0);
+    assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "volume falls back to off in frames "
+                                                       "into framebuffer 5"));
+    assert_int_equal(shadow_frame(&c, m, 5).shadow_volume_triangles, 0);
+    assert_int_equal(log_.items[STIN_LOG_FALLBACK], fallbacks + 1);
+    /* into the default one: volumes again; the choice never changed */
+    assert_true(shadow_frame(&c, m, 0).shadow_volume_triangles > 0);
+    assert_true(fake_log_has(&log_, STIN_LOG_TECHNIQUE_SELECTED, "volume again"));
+    assert_int_equal(stin_query_choice(c.ctx, STIN_FEATURE_SHADOWS).technique,
+                     STIN_TECH_SHADOWS_VOLUME);
+    /* the frame into 5 leaves it bound: a context made now is not poisoned */
+    (void)shadow_frame(&c, m, 5);
+    stin_destroy(c.ctx);
+    create_auto(&c);
+    assert_int_equal(stin_query_choice(c.ctx, STIN_FEATURE_SHADOWS).technique,
+                     STIN_TECH_SHADOWS_VOLUME);
+    release(&c);
+    /* no stencil anywhere: maps, as before */
+    use_framebuffers(0);
+    create_auto(&c);
+    assert_int_equal(stin_query_choice(c.ctx, STIN_FEATURE_SHADOWS).technique,
+                     STIN_TECH_SHADOWS_MAP_PCF);
+    release(&c);
+}
+
+static void test_bad_frame_framebuffer_is_an_error(void **state)
+{
+    stin_frame_desc fd = {.viewport = {0, 0, 64, 48}};
+    context c = {0};
+    unsigned draws;
+    (void)state;
+    use_framebuffers(8);
+    create_auto(&c);
+    stin__mat4_identity(fd.view);
+    stin__mat4_identity(fd.projection);
+    fake_gl.gl.draw_framebuffer = fake_gl.gl.read_framebuffer = 0;
+    memset(&log_, 0, sizeof log_);
+    fd.framebuffer = 999; /* never made */
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    assert_true(fake_log_has(&log_, STIN_LOG_BAD_ARGUMENT, "framebuffer 999 is not"));
+    fd.framebuffer = 6; /* incomplete */
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    assert_true(fake_log_has(&log_, STIN_LOG_BAD_ARGUMENT, "framebuffer 6 is incomplete"));
+    assert_int_equal(log_.errors, 2); /* one line each */
+    assert_int_equal(fake_gl.gl.draw_framebuffer, 0); /* the caller's binding kept */
+    assert_int_equal(stin_end_frame(c.ctx), STIN_ERROR_INVALID_STATE); /* no frame opened */
+    /* complete at begin, incomplete by the end: reported, nothing drawn */
+    fd.framebuffer = 5;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_OK);
+    assert_int_equal(stin_draw(c.ctx, (stin_mesh){0}, NULL, NULL), STIN_ERROR_INVALID_HANDLE);
+    fbos[0].status = 0x8CD6;
+    draws = fake_gl.draw_calls;
+    assert_int_equal(stin_end_frame(c.ctx), STIN_ERROR_INVALID_ARGUMENT);
+    assert_true(fake_log_has(&log_, STIN_LOG_BAD_ARGUMENT, "stin_end_frame: framebuffer 5"));
+    assert_int_equal(fake_gl.draw_calls, draws);
+    assert_int_equal(fake_gl.gl.draw_framebuffer, 0);
+    fbos[0].status = 0;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_OK); /* the failed end closed it */
+    assert_int_equal(stin_end_frame(c.ctx), STIN_OK);
+    release(&c);
+}
+
 /* ---- item 10: texture sizes ----------------------------------------------------- */
 static void test_texture_size_overflow_is_an_error(void **state)
 {
@@ -320,6 +447,8 @@ static void test_light_directions_at_extreme_scales(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_stencil_is_probed_per_frame_target),
+        cmocka_unit_test(test_bad_frame_framebuffer_is_an_error),
         cmocka_unit_test(test_texture_size_overflow_is_an_error),
         cmocka_unit_test(test_non_finite_shadow_offset_is_rejected),
         cmocka_unit_test(test_handles_of_another_context_are_foreign),
