@@ -195,22 +195,12 @@ static void detect_limits(const stin__gl *gl, stin_caps *caps, int reported_vers
     int core = caps->profile == STIN_GL_PROFILE_CORE;
     caps->max_texture_size = get_int(gl, GL_MAX_TEXTURE_SIZE);
     if (!core) {
-        caps->stencil_bits = get_int(gl, GL_STENCIL_BITS);
-        caps->depth_bits = get_int(gl, GL_DEPTH_BITS);
+        stin__framebuffer_bits(gl, 0, 0, &caps->stencil_bits, &caps->depth_bits);
         caps->max_lights = get_int(gl, GL_MAX_LIGHTS);
         caps->max_texture_units = gl->ActiveTexture ? get_int(gl, GL_MAX_TEXTURE_UNITS) : 1;
     } else if (gl->GetFramebufferAttachmentParameteriv && gl->BindFramebuffer) {
-        GLint fb = get_int(gl, GL_DRAW_FRAMEBUFFER_BINDING);
-        GLenum st = fb ? 0x8D20 /* GL_STENCIL_ATTACHMENT */ : GL_STENCIL;
-        GLenum dp = fb ? 0x8D00 /* GL_DEPTH_ATTACHMENT */ : GL_DEPTH;
-        GLint v = 0;
-        gl->GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, st,
-                                                GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE, &v);
-        caps->stencil_bits = v;
-        v = 0;
-        gl->GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, dp,
-                                                GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE, &v);
-        caps->depth_bits = v;
+        stin__framebuffer_bits(gl, 1, (GLuint)get_int(gl, GL_DRAW_FRAMEBUFFER_BINDING),
+                               &caps->stencil_bits, &caps->depth_bits);
     }
     if (caps->max_texture_units < 1)
         caps->max_texture_units = 1;

@@ -257,6 +257,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     stin__arena a;
     stin_context *ctx;
     size_t need;
+    uint32_t serial;
     char msg[256];
     stin_result r;
     if (out)
@@ -287,7 +288,13 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     a.size = memory_bytes - (size_t)(a.base - (unsigned char *)memory);
     a.used = 0;
     ctx = (stin_context *)(void *)a.base;
+    /* The serial of the context made here before survives the clear (read
+     * bytewise: a fresh block holds any value), so this one's handles carry
+     * another tag and the old context's handles do not resolve here. */
+    stin__memcopy(&serial, &ctx->creation_serial, sizeof serial);
     stin__memzero(ctx, sizeof *ctx);
+    ctx->creation_serial = serial + 1u;
+    ctx->handle_tag = stin__handle_tag(ctx->creation_serial, ctx);
     layout(&d, &a, ctx);
     ctx->desc = d;
     /* The block is the caller's: nothing in it is assumed zero. */
@@ -308,6 +315,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
                   "stin_create: no current GL context (GL_VERSION unreadable)");
         return r;
     }
+    stin__target_init(ctx);
     r = stin__select(&ctx->caps, d.tier, d.techniques, &ctx->sel, msg, sizeof msg);
     if (r != STIN_OK) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR,

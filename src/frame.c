@@ -41,6 +41,8 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         return arg_error(ctx, "stin_begin_frame", "unknown output");
     if (desc->framebuffer && !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)))
         return arg_error(ctx, "stin_begin_frame", "a framebuffer name needs framebuffer objects");
+    if (stin__target_check(ctx, desc->framebuffer, "stin_begin_frame") != STIN_OK)
+        return STIN_ERROR_INVALID_ARGUMENT;
     ctx->frame = *desc;
     ctx->draw_count = ctx->light_count = 0;
     stin__memzero(&ctx->stats, sizeof ctx->stats);
@@ -48,13 +50,9 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
     return STIN_OK;
 }
 
-static float len3(const float v[3]) { return stin__sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
-
 stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light)
 {
     stin_light_desc l;
-    float n;
-    int k;
     if (!ctx || !light)
         return STIN_ERROR_INVALID_ARGUMENT;
     if (ctx->state != STIN__IN_FRAME)
@@ -63,7 +61,7 @@ stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light)
     if ((unsigned)l.type > STIN_LIGHT_DIRECTIONAL || !finite_n(l.position, 3) ||
         !finite_n(l.direction, 3) || !finite_n(l.color, 3) || !finite_n(l.attenuation, 3) ||
         !stin__isfinite(l.intensity) || !stin__isfinite(l.spot_cutoff_deg) ||
-        !stin__isfinite(l.spot_exponent))
+        !stin__isfinite(l.spot_exponent) || !finite_n(l.shadow_offset, 2))
         return arg_error(ctx, "stin_add_light", "unknown type or a non-finite value");
     if (l.color[0] == 0.0f && l.color[1] == 0.0f && l.color[2] == 0.0f)
         l.color[0] = l.color[1] = l.color[2] = 1.0f;
@@ -85,13 +83,8 @@ stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light)
         return arg_error(ctx, "stin_add_light", "radius and range must be finite and >= 0");
     if (l.spot_exponent < 0.0f || l.spot_exponent > 128.0f)
         return arg_error(ctx, "stin_add_light", "spot_exponent must be in [0, 128]");
-    if (l.type != STIN_LIGHT_POINT) {
-        n = len3(l.direction);
-        if (!(n > 0.0f))
-            return arg_error(ctx, "stin_add_light", "spot and directional lights need a direction");
-        for (k = 0; k < 3; k++)
-            l.direction[k] /= n;
-    }
+    if (l.type != STIN_LIGHT_POINT && !stin__normalize3(l.direction))
+        return arg_error(ctx, "stin_add_light", "spot and directional lights need a direction");
     if (ctx->light_count >= ctx->desc.max_lights) {
         ctx->stats.dropped_lights++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
@@ -278,7 +271,7 @@ static void stage_target(stin_context *ctx)
         GL(ctx, ClearDepth)(1.0);
         GL(ctx, ClearStencil)(0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |
-                       (ctx->caps.stencil_bits > 0 ? GL_STENCIL_BUFFER_BIT : 0u));
+                       (ctx->target.stencil_bits > 0 ? GL_STENCIL_BUFFER_BIT : 0u));
     }
 }
 
@@ -354,7 +347,7 @@ static void run_plan(stin_context *ctx)
 {
     const stin__path *path = stin__path_of(ctx);
     int visibility = ctx->frame.output == STIN_OUTPUT_VISIBILITY;
-    int shadowed = ctx->shadow->light && ctx->light_count > 0;
+    int shadowed = ctx->shadow->light && ctx->light_count > 0 && !ctx->target.shadows_off;
     stage_prepare(ctx);
     stage_light_prepasses(ctx);
     stage_target(ctx);
@@ -383,6 +376,10 @@ stin_result stin_end_frame(stin_context *ctx)
         return STIN_ERROR_INVALID_ARGUMENT;
     if (ctx->state != STIN__IN_FRAME)
         return state_error(ctx, "stin_end_frame", "no frame is open");
+    if (stin__target_check(ctx, ctx->frame.framebuffer, "stin_end_frame") != STIN_OK) {
+        ctx->state = STIN__IDLE; /* nothing drawn: the target went bad since begin */
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
     order_draws(ctx);
     ctx->stats.draws = ctx->draw_count;
     ctx->stats.lights = ctx->light_count;

@@ -120,6 +120,7 @@
     X(void, FramebufferTexture2D, (GLenum target, GLenum att, GLenum textarget, GLuint tex, \
                                    GLint level), STIN_CAP_FBO, "glFramebufferTexture2DEXT") \
     X(GLenum, CheckFramebufferStatus, (GLenum target), STIN_CAP_FBO, "glCheckFramebufferStatusEXT") \
+    X(GLboolean, IsFramebuffer, (GLuint fb), STIN_CAP_FBO, "glIsFramebufferEXT")           \
     X(void, GetFramebufferAttachmentParameteriv, (GLenum target, GLenum att, GLenum pname, \
                                                   GLint *v), NEED_GL30, "")               \
     X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")         \

@@ -28,6 +28,8 @@ struct stin_context {
     uint32_t gl_errors;       /* checked build: glGetError results */
 
     /* meshes and textures (mesh.c, texture.c) */
+    uint32_t creation_serial; /* contexts made in this block so far (kept across them) */
+    uint32_t handle_tag;      /* top 8 bits of this context's handles (handle_pool.c) */
     stin__mesh_slot *meshes;
     stin__texture_slot *textures;
     stin__vertex *vertices;   /* max_vertices */
@@ -58,6 +60,13 @@ struct stin_context {
     stin__pass_state pass;    /* what GL holds, when pass_known */
     int pass_known;
     uint32_t units_used;      /* texture units bound this frame (bit per unit) */
+    GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
+    struct {                  /* the frame's framebuffer (framebuffer_probe.c) */
+        GLuint name;          /* the one probed last (0 = default) */
+        int stencil_bits, depth_bits;
+        int shadows_off;      /* the shadows choice cannot run into it (no stencil) */
+        int separate_read;    /* draw and read bindings are separate (GL 3.0, ARB_fbo) */
+    } target;
 
     /* lighting paths */
     stin__program programs[STIN__PROG_COUNT];
@@ -99,5 +108,18 @@ stin_desc stin__desc_defaults(const stin_desc *desc);
  * then restore it and reset the rest to the documented defaults. */
 void stin__state_save(stin_context *ctx);
 void stin__state_restore(stin_context *ctx);
+
+/* The frame's framebuffer (framebuffer_probe.c). target_init, at
+ * stin_create after detection: the default framebuffer's bits, and the
+ * stencil capability if it or the bound one has a stencil buffer.
+ * target_check, at begin and end of a frame: `name` must be a complete
+ * framebuffer object (else a logged INVALID_ARGUMENT); reads its bits when
+ * it is not the one probed last and decides whether this frame's shadows
+ * run (logged when that changes). The caller's binding is kept. */
+void stin__framebuffer_bits(const stin__gl *gl, int core, GLuint bound, int *stencil, int *depth);
+void stin__target_init(stin_context *ctx);
+stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call);
+/* The frame's framebuffer has a stencil buffer (and stencil is not masked). */
+int stin__target_has_stencil(const stin_context *ctx);
 
 #endif

@@ -116,6 +116,29 @@ float stin__sqrtf(float x)
     return y;
 }
 
+/* Divides by the largest component first, so the squares can neither
+ * overflow (1e20) nor underflow (1e-30) whatever the vector's scale. */
+int stin__normalize3(float v[3])
+{
+    float m = 0.0f, l;
+    int k;
+    for (k = 0; k < 3; k++) {
+        float a = v[k] < 0.0f ? -v[k] : v[k];
+        if (!stin__isfinite(v[k]))
+            return 0;
+        if (a > m)
+            m = a;
+    }
+    if (!(m > 0.0f))
+        return 0;
+    for (k = 0; k < 3; k++)
+        v[k] /= m;
+    l = stin__sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (k = 0; k < 3; k++)
+        v[k] /= l;
+    return 1;
+}
+
 int stin__isfinite(float x)
 {
     union { float f; uint32_t u; } v;

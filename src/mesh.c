@@ -8,7 +8,7 @@ stin__mesh_slot *stin__mesh_lookup(const stin_context *ctx, stin_mesh mesh, uint
     if (!ctx)
         return NULL;
     s = stin__handle_resolve(&ctx->meshes[0].handle, sizeof ctx->meshes[0], ctx->desc.max_meshes,
-                             mesh.id);
+                             ctx->handle_tag, mesh.id);
     if (s == STIN__NO_SLOT)
         return NULL;
     if (slot)
@@ -36,17 +36,19 @@ static int finite_all(const float *v, uint32_t n, uint32_t *bad)
     return 1;
 }
 
-/* Zero area (relative to the longest edge) or repeated indices. */
+/* Zero area relative to the longest edge, or repeated indices. In double:
+ * float positions' differences, cross products and their squares all fit
+ * its range, so the test is the same at every scale (1e-30 or 1e30). */
 static int degenerate(const float *pos, const uint32_t *t)
 {
     const float *a = pos + 3u * t[0], *b = pos + 3u * t[1], *c = pos + 3u * t[2];
-    float e1[3], e2[3], n[3], l1, l2;
+    double e1[3], e2[3], n[3], l1, l2;
     int k;
     if (t[0] == t[1] || t[1] == t[2] || t[0] == t[2])
         return 1;
     for (k = 0; k < 3; k++) {
-        e1[k] = b[k] - a[k];
-        e2[k] = c[k] - a[k];
+        e1[k] = (double)b[k] - (double)a[k];
+        e2[k] = (double)c[k] - (double)a[k];
     }
     n[0] = e1[1] * e2[2] - e1[2] * e2[1];
     n[1] = e1[2] * e2[0] - e1[0] * e2[2];
@@ -55,7 +57,7 @@ static int degenerate(const float *pos, const uint32_t *t)
     l2 = e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2];
     if (l2 > l1)
         l1 = l2;
-    return n[0] * n[0] + n[1] * n[1] + n[2] * n[2] <= 1e-14f * l1 * l1;
+    return n[0] * n[0] + n[1] * n[1] + n[2] * n[2] <= 1e-14 * l1 * l1;
 }
 
 static stin_result validate(stin_context *ctx, const stin_mesh_desc *d, uint32_t *kept)
@@ -161,8 +163,10 @@ void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base)
 static void upload(stin_context *ctx, stin__mesh_slot *m)
 {
     int i;
+    GLuint caller_vao;
     if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO)))
         return; /* client arrays straight from the arena */
+    caller_vao = stin__vao_begin(ctx); /* the element buffer is VAO state */
     GL(ctx, GenBuffers)(1, &m->vbo);
     GL(ctx, GenBuffers)(1, &m->ibo);
     if (ctx->sel.tier == STIN_TIER_GL4) {
@@ -184,6 +188,7 @@ static void upload(stin_context *ctx, stin__mesh_slot *m)
     }
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
+    stin__vao_end(ctx, caller_vao);
     stin__gl_check_errors(ctx, "mesh upload");
 }
 
@@ -258,7 +263,7 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->info.degenerate_dropped = desc->index_count / 3u - kept;
     bounds(&m->info, verts, desc->vertex_count);
     m->vbo = m->ibo = m->vao = 0;
-    out->id = stin__handle_issue(&m->handle, slot);
+    out->id = stin__handle_issue(&m->handle, slot, ctx->desc.max_meshes, ctx->handle_tag);
     upload(ctx, m);
     if (m->info.degenerate_dropped)
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_MESH_DEGENERATE,
@@ -323,7 +328,7 @@ static void release(stin_context *ctx, stin__mesh_slot *m)
         GL(ctx, DeleteVertexArrays)(1, &m->vao);
     stin__range_give(&ctx->vertex_ranges, m->first_vertex);
     stin__range_give(&ctx->triangle_ranges, m->first_triangle);
-    m->handle.alive = 0;
+    stin__handle_release(&m->handle, ctx->desc.max_meshes);
     m->vbo = m->ibo = m->vao = 0;
 }
 

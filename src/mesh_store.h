@@ -12,15 +12,21 @@
 typedef struct stin__handle {
     uint32_t generation;
     int alive;
+    int retired;          /* its generation reached the top: never issued again */
 } stin__handle;
 #define STIN__NO_SLOT 0xffffffffu
+/* The context's 8-bit handle tag from its creation serial in the block and
+ * the block's address. */
+uint32_t stin__handle_tag(uint32_t serial, const void *block);
 /* The first free slot of a pool of `count` slots `stride` bytes apart. */
 uint32_t stin__handle_free_slot(const stin__handle *first, size_t stride, uint32_t count);
-/* Marks slot h (index `slot`) alive with a new generation; returns its handle id. */
-uint32_t stin__handle_issue(stin__handle *h, uint32_t slot);
+/* Marks slot h (index `slot` of `count`) alive with a new generation; returns its id. */
+uint32_t stin__handle_issue(stin__handle *h, uint32_t slot, uint32_t count, uint32_t tag);
+/* Marks h free, or retired when its generation cannot grow. */
+void stin__handle_release(stin__handle *h, uint32_t count);
 /* The slot a handle id names while it is alive, else STIN__NO_SLOT. */
 uint32_t stin__handle_resolve(const stin__handle *first, size_t stride, uint32_t count,
-                              uint32_t id);
+                              uint32_t tag, uint32_t id);
 
 typedef struct stin__vertex {
     float position[3];
@@ -87,8 +93,23 @@ typedef struct stin__volume_request {
 uint32_t stin__volume_build(const stin__volume_request *r);
 int stin__triangle_faces_light(const float *a, const float *b, const float *c, const float l[4]);
 
-/* Uploads one level of 8-bit texels, tightly packed (GL_UNPACK_ALIGNMENT
- * 1 for the call, the caller's value restored); a 1D target ignores h. */
+/* The caller's bindings around stin's uploads and draws (caller_bindings.c).
+ * vao_begin binds vertex array 0 where there are VAOs, so buffer and
+ * pointer calls do not land in the caller's; it returns the caller's,
+ * which vao_end binds again. unpack_begin makes rows tight (alignment 1,
+ * no row length or skips, no pixel unpack buffer); unpack_end restores. */
+GLuint stin__vao_begin(struct stin_context *ctx);
+void stin__vao_end(struct stin_context *ctx, GLuint saved);
+#define STIN__UNPACK_STORE 4
+typedef struct stin__unpack_saved {
+    GLint store[STIN__UNPACK_STORE]; /* alignment, row length, skip rows, skip pixels */
+    GLint buffer;                    /* the bound pixel unpack buffer */
+} stin__unpack_saved;
+void stin__unpack_begin(struct stin_context *ctx, stin__unpack_saved *s);
+void stin__unpack_end(struct stin_context *ctx, const stin__unpack_saved *s);
+
+/* Uploads one level of 8-bit texels, tightly packed (stin__unpack_begin
+ * for the call, the caller's state restored); a 1D target ignores h. */
 void stin__upload_level(stin_context *ctx, GLenum target, GLint level, GLenum internal_format,
                         uint32_t w, uint32_t h, GLenum format, const void *pixels);
 void stin__upload_bytes(stin_context *ctx, GLenum target, GLenum internal_format, uint32_t w,

@@ -20,29 +20,41 @@ static void cross3(float o[3], const float a[3], const float b[3])
 
 static float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-static int normalize3(float v[3])
-{
-    float l = stin__sqrtf(dot3(v, v));
-    if (!(l > 1e-20f))
-        return 0;
-    v[0] /= l;
-    v[1] /= l;
-    v[2] /= l;
-    return 1;
-}
+static int normalize3(float v[3]) { return stin__normalize3(v); }
 
+/* Face normals are taken on positions divided by the largest coordinate
+ * (in double), so that their products neither overflow nor underflow at
+ * any scale; the common factor leaves the area weighting as it is. */
 void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count)
 {
     uint32_t i, t;
-    for (i = 0; i < vertex_count; i++)
-        verts[i].normal[0] = verts[i].normal[1] = verts[i].normal[2] = 0.0f;
-    for (t = 0; t < tri_count; t++) {
-        float e1[3], e2[3], n[3];
+    double scale = 0.0;
+    for (i = 0; i < vertex_count; i++) {
         int k;
-        sub3(e1, verts[tris[3 * t + 1]].position, verts[tris[3 * t]].position);
-        sub3(e2, verts[tris[3 * t + 2]].position, verts[tris[3 * t]].position);
-        cross3(n, e1, e2); /* length = twice the area: area weighting for free */
+        for (k = 0; k < 3; k++) {
+            double a = verts[i].position[k] < 0.0f ? -(double)verts[i].position[k]
+                                                   : (double)verts[i].position[k];
+            if (a > scale)
+                scale = a;
+        }
+        verts[i].normal[0] = verts[i].normal[1] = verts[i].normal[2] = 0.0f;
+    }
+    scale = scale > 0.0 ? 1.0 / scale : 1.0;
+    for (t = 0; t < tri_count; t++) {
+        const float *p0 = verts[tris[3 * t]].position, *p1 = verts[tris[3 * t + 1]].position,
+                    *p2 = verts[tris[3 * t + 2]].position;
+        double e1[3], e2[3];
+        float n[3];
+        int k;
+        for (k = 0; k < 3; k++) {
+            e1[k] = ((double)p1[k] - (double)p0[k]) * scale;
+            e2[k] = ((double)p2[k] - (double)p0[k]) * scale;
+        }
+        /* length = twice the (scaled) area: area weighting for free */
+        n[0] = (float)(e1[1] * e2[2] - e1[2] * e2[1]);
+        n[1] = (float)(e1[2] * e2[0] - e1[0] * e2[2]);
+        n[2] = (float)(e1[0] * e2[1] - e1[1] * e2[0]);
         for (k = 0; k < 3; k++) {
             float *vn = verts[tris[3 * t + k]].normal;
             vn[0] += n[0];

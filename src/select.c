@@ -38,7 +38,13 @@ void stin__cap_names(uint64_t bits, char *out, size_t size)
 
 int stin_tier_supported(const stin_caps *caps, stin_tier tier, char *missing, size_t size)
 {
-    uint64_t lack = stin__tier_needs(tier) & ~caps->present;
+    uint64_t lack;
+    if (!caps) {
+        if (missing && size)
+            missing[0] = '\0';
+        return 0;
+    }
+    lack = stin__tier_needs(tier) & ~caps->present;
     if (missing)
         stin__cap_names(lack, missing, size);
     return tier != STIN_TIER_AUTO && lack == 0;
@@ -46,6 +52,8 @@ int stin_tier_supported(const stin_caps *caps, stin_tier tier, char *missing, si
 
 stin_tier stin_best_tier(const stin_caps *caps)
 {
+    if (!caps)
+        return STIN_TIER_AUTO;
     if (stin_tier_supported(caps, STIN_TIER_GL4, NULL, 0))
         return STIN_TIER_GL4;
     if (stin_tier_supported(caps, STIN_TIER_GL2, NULL, 0))

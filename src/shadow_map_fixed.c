@@ -320,7 +320,7 @@ static void fixed_prepass(stin_context *ctx)
                 stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                           "shadows: point lights need six depth maps drawn mid-frame (map-depth "
                           "with framebuffer objects); here they use %s",
-                          (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) ? "stencil volumes"
+                          stin__target_has_stencil(ctx) ? "stencil volumes"
                                                                                : "no shadows");
                 ctx->map_fixed.said_point = 1;
             }
@@ -578,7 +578,7 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
             }
         return;
     }
-    if (!mapped && l->type == STIN_LIGHT_POINT && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL))) {
+    if (!mapped && l->type == STIN_LIGHT_POINT && stin__target_has_stencil(ctx)) {
         float world[4];
         world[0] = l->position[0];
         world[1] = l->position[1];

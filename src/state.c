@@ -18,6 +18,7 @@ void stin__state_save(stin_context *ctx)
 {
     if (uses_fixed_function(ctx))
         GL(ctx, PushAttrib)(FIXED_FUNCTION_BITS);
+    ctx->caller_vao = stin__vao_begin(ctx);
 }
 
 void stin__state_restore(stin_context *ctx)
@@ -46,7 +47,8 @@ void stin__state_restore(stin_context *ctx)
         GL(ctx, BindVertexArray)(0);
     if (caps & STIN_CAP_BIT(STIN_CAP_VBO)) {
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
-        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
+        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0); /* vertex array 0's */
     }
+    stin__vao_end(ctx, ctx->caller_vao);
     stin__pass_forget(ctx); /* between frames GL is the caller's */
 }

@@ -3,20 +3,24 @@
  * generation), all through the arena's staging block. */
 #include "internal.h"
 
+/* The caller's texels are addressed with 32-bit byte offsets (4 a texel). */
+#define STIN__MAX_TEXELS (1ull << 30)
+
 stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex)
 {
     uint32_t s;
     if (!ctx)
         return NULL;
     s = stin__handle_resolve(&ctx->textures[0].handle, sizeof ctx->textures[0],
-                             ctx->desc.max_textures, tex.id);
+                             ctx->desc.max_textures, ctx->handle_tag, tex.id);
     return s == STIN__NO_SLOT ? NULL : &ctx->textures[s];
 }
 
+/* n is at most STIN__MAX_TEXELS (checked first): p cannot shift out. */
 static uint32_t pot_at_least(uint32_t n)
 {
     uint32_t p = 1;
-    while (p < n)
+    while (p < n && p < 0x80000000u)
         p <<= 1;
     return p;
 }
@@ -153,17 +157,20 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     uint8_t *buf;
     stin__texture_slot *t = NULL;
     int mips, resized, normal, derive;
+    GLint caller_binding = 0;
     uint64_t need;
     if (out)
         out->id = 0;
     if (!ctx || !desc || !out || !desc->pixels || !desc->width || !desc->height ||
+        (uint64_t)desc->width * desc->height > STIN__MAX_TEXELS ||
         (unsigned)desc->kind > STIN_TEXTURE_HEIGHT || !stin__isfinite(desc->normal_from_height) ||
         desc->normal_from_height < 0.0f ||
         (desc->normal_from_height > 0.0f && desc->kind != STIN_TEXTURE_NORMAL)) {
         if (ctx)
             stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
-                      "stin_create_texture: need pixels, width, height and a valid kind "
-                      "(normal_from_height: finite, >= 0, normal maps only)");
+                      "stin_create_texture: need pixels, width and height (width * height "
+                      "at most 2^30) and a valid kind (normal_from_height: finite, >= 0, "
+                      "normal maps only)");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     max = ctx->caps.max_texture_size > 0 ? (uint32_t)ctx->caps.max_texture_size : 64u;
@@ -221,6 +228,7 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         for (i = 0; i < w * h; i++)
             buf[4u * i + 3u] = 255;
     }
+    GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &caller_binding); /* the active unit's */
     GL(ctx, GenTextures)(1, &t->name);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, t->name);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
@@ -245,12 +253,12 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         h = h > 1 ? h / 2 : 1;
         level++;
     }
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)caller_binding);
     stin__gl_check_errors(ctx, "texture upload");
     t->kind = desc->kind;
     t->width = desc->width;
     t->height = desc->height;
-    out->id = stin__handle_issue(&t->handle, slot);
+    out->id = stin__handle_issue(&t->handle, slot, ctx->desc.max_textures, ctx->handle_tag);
     return STIN_OK;
 }
 
@@ -270,7 +278,7 @@ void stin_destroy_texture(stin_context *ctx, stin_texture tex)
         return;
     }
     GL(ctx, DeleteTextures)(1, &t->name);
-    t->handle.alive = 0;
+    stin__handle_release(&t->handle, ctx->desc.max_textures);
     t->name = 0;
 }
 
@@ -280,27 +288,24 @@ void stin__texture_release_all(stin_context *ctx)
     for (i = 0; i < ctx->desc.max_textures; i++)
         if (ctx->textures[i].handle.alive) {
             GL(ctx, DeleteTextures)(1, &ctx->textures[i].name);
-            ctx->textures[i].handle.alive = 0;
+            stin__handle_release(&ctx->textures[i].handle, ctx->desc.max_textures);
         }
 }
 
-/* Tightly packed rows: alignment 1 for the upload, the caller's value after
- * (the header promises pixel-store state is left alone). */
+/* Tightly packed rows from client memory whatever the caller's unpack
+ * state (the header promises pixel-store state is left alone). */
 void stin__upload_level(stin_context *ctx, GLenum target, GLint level, GLenum internal_format,
                         uint32_t w, uint32_t h, GLenum format, const void *pixels)
 {
-    GLint saved = 4;
-    GL(ctx, GetIntegerv)(GL_UNPACK_ALIGNMENT, &saved);
-    if (saved != 1)
-        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, 1);
+    stin__unpack_saved saved;
+    stin__unpack_begin(ctx, &saved);
     if (target == GL_TEXTURE_1D)
         GL(ctx, TexImage1D)(target, level, (GLint)internal_format, (GLsizei)w, 0, format,
                             GL_UNSIGNED_BYTE, pixels);
     else
         GL_ENUM(ctx, TexImage2D, target)(target, level, (GLint)internal_format, (GLsizei)w,
                                          (GLsizei)h, 0, format, GL_UNSIGNED_BYTE, pixels);
-    if (saved != 1)
-        GL(ctx, PixelStorei)(GL_UNPACK_ALIGNMENT, saved);
+    stin__unpack_end(ctx, &saved);
 }
 
 void stin__upload_bytes(stin_context *ctx, GLenum target, GLenum internal_format, uint32_t w,

@@ -122,9 +122,18 @@
  * cost N stencil counts and N/4 lit passes; area lights keep a lit pass per
  * sample (their stencil test runs in the frame's framebuffer). Without
  * masks each light's lit pass is stencil-tested in the frame's framebuffer.
- * Either way "volume" is chosen only where the frame's framebuffer has a
- * stencil buffer (probed at stin_create); an incomplete mask framebuffer is
- * logged once and the context goes on without masks.
+ * An incomplete mask framebuffer is logged once and the context goes on
+ * without masks.
+ * Stencil and depth belong to a framebuffer, not to the context. stin_create
+ * chooses "volume" where the framebuffer bound then or the default one has
+ * a stencil buffer (so a stencil-less framebuffer left bound, e.g. by an
+ * earlier frame, does not decide for every later frame). Each frame probes
+ * its own framebuffer (desc.framebuffer; the bits are read again only when
+ * a frame names another framebuffer than the one probed last): a frame into
+ * one without a stencil buffer draws without shadows and without the point
+ * lights' volume fallback of the fixed-function maps, logged (FALLBACK) when
+ * the frames' target changes to it; stin_query_choice keeps the context's
+ * choice.
  *
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
@@ -133,8 +142,11 @@
  * stencil test off, stencil mask all ones, stencil func ALWAYS/0/all ones and
  * stencil ops KEEP on both faces, front face CCW, cull face BACK and off,
  * colour mask all on, scissor off, current program 0, texture unit 0 active
- * with no texture bound, array buffer 0, vertex array 0, all client arrays
- * disabled with client unit 0 active (GL1), alpha function ALWAYS/0 (GL1).
+ * with no texture bound, array buffer 0, vertex array 0's element buffer 0,
+ * all client arrays disabled with client unit 0 active (GL1), alpha function
+ * ALWAYS/0 (GL1). Where there are vertex array objects the frame draws with
+ * vertex array 0 or its own, never through the caller's, and binds the
+ * caller's again at the end.
  * The viewport and the framebuffer binding stay as the frame set them; the
  * caller's matrices (GL1 matrix stacks) are restored. Clear colour, clear
  * depth and polygon offset are overwritten, and so are the scissor box and
@@ -150,9 +162,15 @@
  * technique's units 1 and 2, the shadow maps' units) are left with no 2D,
  * 1D or cube-map texture bound.
  * Every other piece of GL state is left as the caller had it.
- * stin_create_mesh/stin_create_texture change buffer and texture bindings of
- * unit 0 (left at 0); stin_create and the destroy calls create or delete GL
- * objects and leave every binding as they found it. Queries touch no GL.
+ * stin_create_mesh leaves the array buffer and vertex array 0's element
+ * buffer at 0; the caller's vertex array object stays bound and untouched.
+ * stin_create_texture leaves every binding as it found it (the active
+ * unit's 2D texture included) and reads `pixels` as tightly packed client
+ * memory whatever the caller's unpack state: alignment, row length, skip
+ * rows and pixels and (GL 2.1+) a bound pixel unpack buffer are set for the
+ * upload and restored after. stin_create and the destroy calls create or
+ * delete GL objects and leave every binding as they found it. Queries touch
+ * no GL.
  *
  * MEMORY
  * stin_memory_size(&desc) returns the bytes a configuration needs; the block
@@ -295,7 +313,8 @@ typedef struct stin_caps {
     int max_texture_image_units;  /* fragment shader samplers, 0 without GLSL */
     int max_vertex_texture_units;
     int max_lights;               /* fixed-function lights, 0 on core profiles */
-    int stencil_bits, depth_bits;
+    int stencil_bits, depth_bits; /* at stin_create: the bound or the default framebuffer's,
+                                   * whichever has the larger stencil; frames probe their own */
     int max_draw_buffers;
     int max_geometry_output_vertices;
     char renderer[64];            /* GL_RENDERER, truncated */
@@ -490,7 +509,9 @@ stin_choice stin_query_choice(const stin_context *ctx, stin_feature feature);
 stin_result stin_detect_caps(stin_get_proc_fn get_proc, void *user, uint64_t caps_mask,
                              int max_gl_version, stin_caps *out);
 /* Best tier the caps run; writes the capabilities missing for `tier` into
- * `missing` (comma separated, may be NULL). Returns 1 if `tier` can run. */
+ * `missing` (comma separated, may be NULL). Returns 1 if `tier` can run.
+ * NULL caps: stin_tier_supported returns 0 (missing emptied) and
+ * stin_best_tier STIN_TIER_AUTO. */
 int stin_tier_supported(const stin_caps *caps, stin_tier tier, char *missing, size_t size);
 stin_tier stin_best_tier(const stin_caps *caps);
 
@@ -499,6 +520,21 @@ stin_tier stin_best_tier(const stin_caps *caps);
 int stin_has_extension(const stin_context *ctx, const char *name);
 
 /* ---- meshes ------------------------------------------------------------- */
+/* Handles: 0 is never a handle. A handle resolves only in the context that
+ * made it, while its mesh or texture lives; anything else is
+ * STIN_ERROR_INVALID_HANDLE (or logged and ignored by the destroy calls):
+ *   - a stale handle: each slot's generation grows with every re-creation
+ *     and never wraps; a slot whose generation is spent (2^24 / the next
+ *     power of two above max_meshes or max_textures, less one, issues: 255 with
+ *     65535 slots, 131071 with 64) is retired for the context's life, so
+ *     the pool loses that slot rather than reviving an old id;
+ *   - another context's handle: each context's handles carry an 8-bit tag
+ *     from a creation counter kept in the block and the block's address. A
+ *     context made in the block of a destroyed one gets the next tag, so
+ *     the old context's handles never resolve in it (for 255 re-creations
+ *     in a row; keep the block's bytes between destroy and create, since
+ *     the counter lives there). Two blocks' tags differ unless their
+ *     addresses hash alike (1 in 256). */
 typedef struct { uint32_t id; } stin_mesh;
 typedef struct { uint32_t id; } stin_texture;
 
@@ -522,7 +558,10 @@ typedef struct stin_mesh_info {
 } stin_mesh_info;
 
 /* Validates (indices in range, finite values, degenerate triangles dropped and
- * counted), computes adjacency, manifold status and tangents, uploads. */
+ * counted), computes adjacency, manifold status and tangents, uploads.
+ * Degenerate means twice the area under 1e-7 of the longest edge squared
+ * (or repeated indices): a test of shape, the same at every scale from
+ * float's smallest to its largest values. */
 stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin_mesh *out);
 stin_result stin_query_mesh(const stin_context *ctx, stin_mesh mesh, stin_mesh_info *out);
 /* Neighbour triangle across edge e (0..2: v0v1, v1v2, v2v0) of triangle t, or
@@ -545,7 +584,8 @@ typedef enum stin_texture_kind {
 typedef struct stin_texture_desc {
     stin_texture_kind kind;
     uint32_t width, height;  /* each at most caps.max_texture_size; any size (GL1
-                              * contexts get a power-of-two resample) */
+                              * contexts get a power-of-two resample); width *
+                              * height above 2^30: STIN_ERROR_INVALID_ARGUMENT */
     const uint8_t *pixels;   /* RGBA8, 4 bytes per pixel, rows bottom to top */
     int no_mipmaps;          /* default 0: mipmaps are built (never for
                               * STIN_TEXTURE_HEIGHT: POM marches level 0) */
@@ -574,7 +614,8 @@ typedef enum stin_light_type {
 typedef struct stin_light_desc {
     stin_light_type type;
     float position[3];      /* world, point and spot */
-    float direction[3];     /* world, the way light travels; spot and directional */
+    float direction[3];     /* world, the way light travels; spot and directional:
+                             * any non-zero length (normalised scale-free) */
     float color[3];         /* default (1,1,1) when all zero */
     float intensity;        /* default 1 */
     float attenuation[3];   /* k0, k1, k2; default (1,0,0) when all zero */
@@ -584,8 +625,8 @@ typedef struct stin_light_desc {
                              * point samples (stin_light_sample); default 0 */
     float range;            /* > 0: the light reaches no farther (its attenuation makes it
                              * negligible); shadow passes are scissored to it. 0 = unbounded */
-    float shadow_offset[2]; /* shadow-map polygon offset (factor, units); default
-                             * (1.1, 4.0) when both are 0 */
+    float shadow_offset[2]; /* shadow-map polygon offset (factor, units), finite;
+                             * default (1.1, 4.0) when both are 0 */
     int shadow_offset_off;  /* 1: no polygon offset (shows acne; for tests) */
     uint32_t pcf_kernel;    /* map-pcf: 1, 3 or 5 taps a side (each the hardware's 2x2
                              * compare); default 3 */
@@ -621,7 +662,14 @@ typedef struct stin_frame_desc {
     float view[16];          /* column-major world -> eye */
     float projection[16];    /* column-major eye -> clip */
     int viewport[4];         /* x, y, width, height; required */
-    uint32_t framebuffer;    /* GL framebuffer name to draw into; 0 = default */
+    uint32_t framebuffer;    /* GL framebuffer name to draw into; 0 = default. Else a
+                              * complete framebuffer object of the context:
+                              * stin_begin_frame checks (binding it for the
+                              * check, the caller's binding given back) and an
+                              * unknown or incomplete one is a logged
+                              * STIN_ERROR_INVALID_ARGUMENT; stin_end_frame
+                              * checks again and, if it went bad in between,
+                              * drops the frame with the same error. */
     float clear_color[4];    /* cleared before drawing */
     int no_clear;            /* 1: keep colour/depth/stencil as they are */
     float ambient[3];        /* scene ambient, multiplies albedo */
@@ -630,7 +678,8 @@ typedef struct stin_frame_desc {
 
 stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc);
 /* At most desc.max_lights per frame; the light index order is kept (light 0 is
- * the one STIN_OUTPUT_VISIBILITY shows). */
+ * the one STIN_OUTPUT_VISIBILITY shows). A NaN or infinite field, an unknown
+ * type or a zero direction (spot, directional) is STIN_ERROR_INVALID_ARGUMENT. */
 stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light);
 /* transform: column-major object -> world; NULL means identity. */
 stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[16],

@@ -41,6 +41,7 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GetUniformLocation ~, 1
 #define FAKE_CUSTOM_GetFramebufferAttachmentParameteriv ~, 1
 #define FAKE_CUSTOM_CheckFramebufferStatus ~, 1
+#define FAKE_CUSTOM_IsFramebuffer ~, 1
 
 /* Generated no-ops that leave the state fake_gl_state.h keeps alone: they
  * draw, upload, or set program, texture-object or array-pointer state,
@@ -53,9 +54,6 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Finish ~, 1
 #define FAKE_STATELESS_CopyTexSubImage2D ~, 1
 #define FAKE_STATELESS_TexImage1D ~, 1
-#define FAKE_STATELESS_VertexPointer ~, 1
-#define FAKE_STATELESS_NormalPointer ~, 1
-#define FAKE_STATELESS_TexCoordPointer ~, 1
 #define FAKE_STATELESS_BufferData ~, 1
 #define FAKE_STATELESS_CompileShader ~, 1
 #define FAKE_STATELESS_AttachShader ~, 1
@@ -67,7 +65,6 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Uniform4fv ~, 1
 #define FAKE_STATELESS_UniformMatrix3fv ~, 1
 #define FAKE_STATELESS_UniformMatrix4fv ~, 1
-#define FAKE_STATELESS_VertexAttribPointer ~, 1
 #define FAKE_STATELESS_FramebufferTexture2D ~, 1
 #define FAKE_STATELESS_GenerateMipmap ~, 1
 #define FAKE_STATELESS_DrawBuffers ~, 1
@@ -150,14 +147,33 @@ static const GLubyte *STIN_APIENTRY fake_GetStringi(GLenum name, GLuint i)
     return (const GLubyte *)fake_gl.config.extension_list[i];
 }
 
+/* The caller's framebuffer object `name` of the config, or NULL. */
+static const fake_gl_fbo *caller_fbo(GLuint name)
+{
+    int i;
+    for (i = 0; name && i < fake_gl.config.framebuffer_count; i++)
+        if (fake_gl.config.framebuffers[i].name == name)
+            return &fake_gl.config.framebuffers[i];
+    return NULL;
+}
+
+/* Stencil and depth bits of the bound draw framebuffer. */
+static int bound_bits(int stencil)
+{
+    const fake_gl_fbo *f = caller_fbo(fake_gl.gl.draw_framebuffer);
+    if (f)
+        return stencil ? f->stencil_bits : f->depth_bits;
+    return stencil ? fake_gl.config.stencil_bits : fake_gl.config.depth_bits;
+}
+
 static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
 {
     const fake_gl_config *c = &fake_gl.config;
     COUNT(GetIntegerv);
     switch (pname) {
     case GL_MAX_LIGHTS: *data = c->max_lights; break;
-    case GL_STENCIL_BITS: *data = c->stencil_bits; break;
-    case GL_DEPTH_BITS: *data = c->depth_bits; break;
+    case GL_STENCIL_BITS: *data = bound_bits(1); break;
+    case GL_DEPTH_BITS: *data = bound_bits(0); break;
     case GL_MAX_TEXTURE_SIZE: *data = c->max_texture_size; break;
     case GL_MAX_TEXTURE_UNITS: *data = c->max_texture_units; break;
     case GL_MAX_TEXTURE_IMAGE_UNITS: *data = c->max_texture_image_units; break;
@@ -181,8 +197,14 @@ static void STIN_APIENTRY fake_GetFramebufferAttachmentParameteriv(GLenum target
     (void)target;
     (void)att;
     COUNT(GetFramebufferAttachmentParameteriv);
-    *v = pname == GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE ? fake_gl.config.stencil_bits
-         : pname == GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE ? fake_gl.config.depth_bits
+    if (pname == 0x8CD0) { /* GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE: none without bits */
+        int bits = bound_bits(att == GL_STENCIL || att == 0x8D20);
+        *v = !bits ? GL_NONE : fake_gl.gl.draw_framebuffer ? 0x8D41 /* RENDERBUFFER */
+                                                           : 0x8218 /* FRAMEBUFFER_DEFAULT */;
+        return;
+    }
+    *v = pname == GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE ? bound_bits(1)
+         : pname == GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE ? bound_bits(0)
                                                          : 0;
 }
 
@@ -252,6 +274,8 @@ static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt
     (void)border;
     COUNT(TexImage2D);
     fake_gl.tex_images++;
+    if (fake_gl_unpack_loose())
+        fake_gl.tex_images_loose++;
     if (level == 0)
         fake_gl.tex_levels = 0;
     if (level >= 0 && level < FAKE_GL_MAX_LEVELS) {
@@ -388,12 +412,20 @@ static void STIN_APIENTRY fake_DeleteProgram(GLuint p)
         fake_gl.deletes_of_zero++;
 }
 
-/* Framebuffers the library builds are always complete here. */
+/* Framebuffers the library builds are always complete here; the caller's
+ * report their configured status. */
 static GLenum STIN_APIENTRY fake_CheckFramebufferStatus(GLenum target)
 {
+    const fake_gl_fbo *f = caller_fbo(fake_gl.gl.draw_framebuffer);
     (void)target;
     COUNT(CheckFramebufferStatus);
-    return GL_FRAMEBUFFER_COMPLETE;
+    return f && f->status ? f->status : GL_FRAMEBUFFER_COMPLETE;
+}
+
+static GLboolean STIN_APIENTRY fake_IsFramebuffer(GLuint fb)
+{
+    COUNT(IsFramebuffer);
+    return caller_fbo(fb) || (fb && fb <= fake_gl.next_name);
 }
 
 static GLint STIN_APIENTRY fake_GetUniformLocation(GLuint p, const GLchar *name)
@@ -546,6 +578,8 @@ void fake_log_fn(void *user, stin_log_level level, stin_log_item item, const cha
     head[n++] = (char)('0' + (unsigned)item % 10);
     head[n++] = ' ';
     head[n] = '\0';
+    if (log->used + 2 >= sizeof log->text)
+        return; /* full: counted above, not stored */
     for (i = 0; head[i] && log->used + 2 < sizeof log->text; i++)
         log->text[log->used++] = head[i];
     for (i = 0; message[i] && log->used + 2 < sizeof log->text; i++)

@@ -18,6 +18,13 @@
 #include "internal.h"
 #include "fake_gl_state.h"
 
+/* A framebuffer object of the caller's: its bits and status (0: complete). */
+typedef struct fake_gl_fbo {
+    GLuint name;
+    int stencil_bits, depth_bits;
+    GLenum status;
+} fake_gl_fbo;
+
 typedef struct fake_gl_config {
     const char *version;                 /* GL_VERSION; NULL makes glGetString return NULL */
     const char *glsl_version;            /* GL_SHADING_LANGUAGE_VERSION, NULL = none */
@@ -32,6 +39,13 @@ typedef struct fake_gl_config {
     int fail_glsl_from;                  /* shaders with "#version N", N >= this, fail to
                                           * compile (e.g. 150); 0 = every shader compiles */
     int fail_link;                       /* every program fails to link */
+    /* The caller's framebuffer objects: bound, their bits are what
+     * GL_STENCIL_BITS/GL_DEPTH_BITS and the attachment queries report and
+     * their status what glCheckFramebufferStatus does. Other names made by
+     * glGen* are complete framebuffers with the default's bits; names never
+     * made are not framebuffers (glIsFramebuffer). */
+    fake_gl_fbo *framebuffers;
+    int framebuffer_count;
 } fake_gl_config;
 
 /* Configs shaped like the emulation profiles of DESIGN.md. */
@@ -62,6 +76,7 @@ typedef struct fake_gl_state {
     unsigned deletes_of_zero;            /* glDelete* of name 0 (harmless, but suspicious) */
     /* glTexImage2D: the mip chain of the most recent level-0 upload. */
     unsigned tex_images;                 /* calls in total */
+    unsigned tex_images_loose;           /* calls made while fake_gl_unpack_loose() */
     unsigned tex_levels;                 /* levels of the latest chain */
     int tex_level_width[FAKE_GL_MAX_LEVELS], tex_level_height[FAKE_GL_MAX_LEVELS];
     unsigned char tex_level_first_texel[FAKE_GL_MAX_LEVELS][4]; /* RGBA of texel (0, 0) */
@@ -93,6 +108,10 @@ void fake_gl_reset(const fake_gl_config *config);
 /* stin_get_proc_fn: resolves "gl<Name>" for every entry point in gl_funcs.h
  * (alternate ARB/EXT names never resolve); `user` is ignored. */
 void *fake_gl_get_proc(void *user, const char *name);
+/* 1 when glTexImage now would not read tightly packed client rows (any
+ * row length or skip, or a pixel unpack buffer bound; alignment is left
+ * out: stin's 4-byte texels keep every row aligned). */
+int fake_gl_unpack_loose(void);
 /* glIsEnabled(cap): per-unit caps (GL_TEXTURE_2D, ...) of the active unit;
  * 0 for a cap the fake does not know. */
 int fake_gl_is_enabled(GLenum cap);

@@ -40,6 +40,8 @@
 #define FAKE_ARRAY_BUFFER_BINDING 0x8894
 #define FAKE_ELEMENT_ARRAY_BUFFER_BINDING 0x8895
 #define FAKE_VERTEX_ARRAY_BINDING 0x85B5
+#define FAKE_PIXEL_UNPACK_BUFFER 0x88EC
+#define FAKE_PIXEL_UNPACK_BUFFER_BINDING 0x88EF
 #define FAKE_TEXTURE_BINDING_1D 0x8068
 #define FAKE_COLOR_INDEXES 0x1603
 #define FAKE_LIGHT_MODEL_COLOR_CONTROL 0x81F8
@@ -797,7 +799,9 @@ static void attrib_array(const char *call, GLuint i, GLuint on)
 void STIN_APIENTRY fake_BindBuffer(GLenum target, GLuint b)
 {
     COUNT(BindBuffer);
-    if (target == GL_ARRAY_BUFFER)
+    if (target == FAKE_PIXEL_UNPACK_BUFFER)
+        S.pixel_unpack_buffer = b;
+    else if (target == GL_ARRAY_BUFFER)
         S.array_buffer = b;
     else if (target == GL_ELEMENT_ARRAY_BUFFER)
         bound_vao()->element_buffer = b;
@@ -815,6 +819,50 @@ void STIN_APIENTRY fake_BindFramebuffer(GLenum target, GLuint fb)
     if (target != GL_FRAMEBUFFER && target != FAKE_DRAW_FRAMEBUFFER &&
         target != FAKE_READ_FRAMEBUFFER)
         gl_error("glBindFramebuffer", target);
+}
+
+/* Client-memory pointers are refused while a vertex array object is bound
+ * (GL 3.x compatibility): a caller's VAO with no array buffer bound makes
+ * them GL_INVALID_OPERATION. */
+static void pointer_call(const char *call, const void *p)
+{
+    if (S.vertex_array_binding && !S.array_buffer && p)
+        gl_error(call, S.vertex_array_binding);
+}
+
+void STIN_APIENTRY fake_VertexPointer(GLint size, GLenum type, GLsizei stride, const void *p)
+{
+    (void)size, (void)type, (void)stride;
+    COUNT(VertexPointer);
+    pointer_call("glVertexPointer with client memory in vertex array", p);
+}
+
+void STIN_APIENTRY fake_NormalPointer(GLenum type, GLsizei stride, const void *p)
+{
+    (void)type, (void)stride;
+    COUNT(NormalPointer);
+    pointer_call("glNormalPointer with client memory in vertex array", p);
+}
+
+void STIN_APIENTRY fake_TexCoordPointer(GLint size, GLenum type, GLsizei stride, const void *p)
+{
+    (void)size, (void)type, (void)stride;
+    COUNT(TexCoordPointer);
+    pointer_call("glTexCoordPointer with client memory in vertex array", p);
+}
+
+void STIN_APIENTRY fake_VertexAttribPointer(GLuint i, GLint size, GLenum type, GLboolean norm,
+                                           GLsizei stride, const void *p)
+{
+    (void)i, (void)size, (void)type, (void)norm, (void)stride;
+    COUNT(VertexAttribPointer);
+    pointer_call("glVertexAttribPointer with client memory in vertex array", p);
+}
+
+int fake_gl_unpack_loose(void)
+{
+    return S.pixel_store[FAKE_GL_UNPACK_ROW_LENGTH] || S.pixel_store[FAKE_GL_UNPACK_SKIP_ROWS] ||
+           S.pixel_store[FAKE_GL_UNPACK_SKIP_PIXELS] || S.pixel_unpack_buffer;
 }
 
 /* Draw and read buffers belong to the bound framebuffer: a framebuffer
@@ -854,6 +902,7 @@ void fake_gl_state_deleted(fake_gl_object kind, GLsizei n, const GLuint *names)
             break;
         case FAKE_OBJ_BUFFER:
             unbind(&S.array_buffer, name);
+            unbind(&S.pixel_unpack_buffer, name);
             unbind(&bound_vao()->element_buffer, name);
             break;
         case FAKE_OBJ_VERTEX_ARRAY:
@@ -910,6 +959,7 @@ int fake_gl_state_get(GLenum pname, GLint *data)
     case FAKE_ARRAY_BUFFER_BINDING: *data = (GLint)S.array_buffer; return 1;
     case FAKE_ELEMENT_ARRAY_BUFFER_BINDING: *data = (GLint)bound_vao()->element_buffer; return 1;
     case FAKE_VERTEX_ARRAY_BINDING: *data = (GLint)S.vertex_array_binding; return 1;
+    case FAKE_PIXEL_UNPACK_BUFFER_BINDING: *data = (GLint)S.pixel_unpack_buffer; return 1;
     case GL_DRAW_FRAMEBUFFER_BINDING: *data = (GLint)S.draw_framebuffer; return 1;
     case FAKE_READ_FRAMEBUFFER_BINDING: *data = (GLint)S.read_framebuffer; return 1;
     case FAKE_DRAW_BUFFER: *data = (GLint)S.draw_buffer; return 1;
@@ -1248,6 +1298,7 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(color_array, K_BOOL);
     WORD(array_buffer, K_INT);
     WORD(vertex_array_binding, K_INT);
+    WORD(pixel_unpack_buffer, K_INT);
     d->prefix = "vao0.";
     diff_vao(d, &a->vao0, &b->vao0);
     d->prefix = "";

@@ -159,6 +159,7 @@ typedef struct fake_gl_glstate {
     /* vertex arrays and buffers */
     GLuint vertex_array, normal_array, color_array;
     GLuint array_buffer, vertex_array_binding;
+    GLuint pixel_unpack_buffer;
     fake_gl_vao vao0;
     /* programs, framebuffers, pixel transfer */
     GLuint program;
@@ -238,6 +239,10 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_DisableVertexAttribArray ~, 1
 #define FAKE_STATE_BindVertexArray ~, 1
 #define FAKE_STATE_BindFramebuffer ~, 1
+#define FAKE_STATE_VertexPointer ~, 1 /* refused with a VAO bound and no buffer */
+#define FAKE_STATE_NormalPointer ~, 1
+#define FAKE_STATE_TexCoordPointer ~, 1
+#define FAKE_STATE_VertexAttribPointer ~, 1
 #define FAKE_STATE_PushAttrib ~, 1 /* fake_gl_attrib.c */
 #define FAKE_STATE_PopAttrib ~, 1
 

@@ -666,7 +666,7 @@ static void test_destroyed_handle_is_stale(void **state)
     assert_int_equal(fake_gl.buffers_deleted, 2);
 
     assert_int_equal(create(&md, &b), STIN_OK); /* reuses the slot */
-    assert_int_equal(b.id & 0xffffu, a.id & 0xffffu);
+    assert_int_equal(b.id & 0x1fu, a.id & 0x1fu); /* slot + 1: 5 bits for 16 meshes */
     assert_true(b.id != a.id);
     assert_int_equal(stin_query_mesh(ctx, a, &info), STIN_ERROR_INVALID_HANDLE);
     assert_int_equal(stin_query_mesh(ctx, b, &info), STIN_OK);
@@ -679,7 +679,7 @@ static void test_foreign_handles(void **state)
     stin_mesh a, zero = {0}, far_slot;
     (void)state;
     assert_int_equal(create(&md, &a), STIN_OK);
-    far_slot.id = (a.id & 0xffff0000u) | 17u; /* slot 16 of 16 meshes */
+    far_slot.id = (a.id & ~0x1fu) | 17u; /* slot 16 of 16 meshes */
     assert_int_equal(stin_query_mesh(ctx, zero, &info), STIN_ERROR_INVALID_HANDLE);
     assert_int_equal(stin_query_mesh(ctx, far_slot, &info), STIN_ERROR_INVALID_HANDLE);
     assert_int_equal(stin_query_mesh(NULL, a, &info), STIN_ERROR_INVALID_HANDLE);

@@ -229,15 +229,15 @@ static void destroy_context(void)
     block = NULL;
 }
 
-/* 1 if stin_create accepts the combination (the fake's state is reset first). */
-static int create_context(fake_gl_profile_id id, stin_tier tier, stin_technique shadow,
-                          stin_technique surface)
+/* 1 if stin_create accepts the combination on cfg (the fake's state is
+ * reset first). */
+static int create_context_on(const fake_gl_config *cfg, stin_tier tier, stin_technique shadow,
+                             stin_technique surface)
 {
-    fake_gl_config cfg = fake_gl_profile(id);
     stin_desc d = fake_gl_desc(&log_);
     size_t bytes;
     destroy_context();
-    fake_gl_reset(&cfg);
+    fake_gl_reset(cfg);
     d.tier = tier;
     d.techniques[STIN_FEATURE_SHADOWS] = shadow;
     d.techniques[STIN_FEATURE_SURFACE] = surface;
@@ -259,6 +259,13 @@ static int create_context(fake_gl_profile_id id, stin_tier tier, stin_technique 
         return 0;
     }
     return 1;
+}
+
+static int create_context(fake_gl_profile_id id, stin_tier tier, stin_technique shadow,
+                          stin_technique surface)
+{
+    fake_gl_config cfg = fake_gl_profile(id);
+    return create_context_on(&cfg, tier, shadow, surface);
 }
 
 static void perspective(float m[16], float near, float far)
@@ -398,7 +405,6 @@ static void expected_after_frame(fake_gl_glstate *e, const stin_frame_desc *fd)
     e->active_texture = GL_TEXTURE0;
     memset(e->units[0].binding, 0, sizeof e->units[0].binding);
     e->array_buffer = 0;
-    e->vertex_array_binding = 0;
     if (gl1) { /* the rest of the fixed-function state is the caller's */
         e->alpha_func = def.alpha_func;
         e->alpha_ref = def.alpha_ref;
@@ -549,6 +555,122 @@ static void test_texture_creation_keeps_unpack_alignment(void **state)
     finish_report("texture creation");
 }
 
+/* Texture creation reads tightly packed client rows whatever the caller's
+ * unpack state (row length, skips, a bound pixel unpack buffer) and gives
+ * every piece of state back, the active unit's 2D binding included. */
+static void test_texture_creation_ignores_and_keeps_unpack_state(void **state)
+{
+    static const uint8_t grey[4] = {100, 100, 100, 255};
+    char where[64];
+    size_t p;
+    (void)state;
+    reset_report();
+    setup = "create_texture, caller unpack state";
+    for (p = 0; p < sizeof profiles / sizeof profiles[0]; p++) {
+        fake_gl_glstate before;
+        assert_true(create_context(profiles[p].id, STIN_TIER_AUTO, STIN_TECH_NONE, STIN_TECH_NONE));
+        snprintf(where, sizeof where, "%s", profiles[p].name);
+        label = where;
+        fake_gl.gl.pixel_store[FAKE_GL_UNPACK_ROW_LENGTH] = 7;
+        fake_gl.gl.pixel_store[FAKE_GL_UNPACK_SKIP_ROWS] = 2;
+        fake_gl.gl.pixel_store[FAKE_GL_UNPACK_SKIP_PIXELS] = 3;
+        if (has(STIN_CAP_VBO) &&
+            stin_query_caps(ctx)->gl_major * 10 + stin_query_caps(ctx)->gl_minor >= 21)
+            fake_gl.gl.pixel_unpack_buffer = 99;
+        if (has(STIN_CAP_MULTITEXTURE))
+            fake_gl.gl.active_texture = GL_TEXTURE0 + 2;
+        fake_gl.gl.units[has(STIN_CAP_MULTITEXTURE) ? 2 : 0].binding[FAKE_GL_TARGET_2D] = 55;
+        before = fake_gl.gl;
+        fake_gl.tex_images_loose = 0;
+        (void)make_texture(STIN_TEXTURE_ALBEDO, grey);
+        checked++;
+        if (fake_gl.tex_images_loose) {
+            char got[16];
+            snprintf(got, sizeof got, "%u", fake_gl.tex_images_loose);
+            record(NULL, "uploads with the caller's row length, skips or unpack buffer", "0", got);
+        }
+        compare(&before);
+    }
+    destroy_context();
+    finish_report("texture creation, caller unpack state");
+}
+
+/* The fake's state of vertex array object `name` (bound once to make it). */
+static fake_gl_vao vao_state(GLuint name)
+{
+    int i;
+    for (i = 0; i < FAKE_GL_MAX_VAOS; i++)
+        if (fake_gl.vaos[i].name == name)
+            return fake_gl.vaos[i].state;
+    fail_msg("vertex array %u unknown to the fake", name);
+    return fake_gl.gl.vao0;
+}
+
+/* A caller's vertex array object (element buffer 55, attribute 5 on) and
+ * array buffer 66 bound: mesh creation and every frame, on every tier of
+ * a context with VAOs, leave the caller's VAO bound and as it was, and
+ * make no call a GL would refuse (client pointers into a bound VAO). */
+static void test_caller_vertex_array_is_left_alone(void **state)
+{
+    static const struct {
+        fake_gl_profile_id id;
+        const char *name;
+    } bases[] = {{FAKE_GL21, "GL21+ARB_vao"}, {FAKE_GL45_CORE, "GL45core"}};
+    size_t b, t, s, o;
+    char where[96];
+    (void)state;
+    reset_report();
+    for (b = 0; b < sizeof bases / sizeof bases[0]; b++)
+        for (t = 0; t < sizeof tiers / sizeof tiers[0]; t++)
+            for (s = 0; s < sizeof shadows / sizeof shadows[0]; s++) {
+                fake_gl_config cfg = fake_gl_profile(bases[b].id);
+                stin__gl gl;
+                unsigned char loaded[STIN_GLFN_COUNT];
+                fake_gl_vao caller;
+                if (bases[b].id == FAKE_GL21)
+                    cfg.extensions = "GL_ARB_multitexture GL_ARB_texture_env_combine "
+                                     "GL_ARB_depth_texture GL_ARB_shadow GL_EXT_stencil_wrap "
+                                     "GL_ARB_framebuffer_object GL_ARB_vertex_array_object";
+                if (!create_context_on(&cfg, tiers[t], shadows[s], STIN_TECH_NONE))
+                    continue;
+                assert_true(has(STIN_CAP_VAO));
+                snprintf(where, sizeof where, "%s/%s/%s", bases[b].name, tier_name(tiers[t]),
+                         stin_technique_name(shadows[s]));
+                label = where;
+                stin__gl_load(&gl, fake_gl_get_proc, NULL, loaded);
+                gl.BindVertexArray(77);
+                gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 55);
+                gl.EnableVertexAttribArray(5);
+                gl.BindBuffer(GL_ARRAY_BUFFER, 66);
+                caller = vao_state(77);
+                setup = "create_mesh, caller VAO";
+                make_cube();
+                for (o = 0; o <= sizeof outputs / sizeof outputs[0]; o++) {
+                    fake_gl_vao now;
+                    char got[16];
+                    checked++;
+                    if (fake_gl.gl.vertex_array_binding != 77) {
+                        snprintf(got, sizeof got, "%u", fake_gl.gl.vertex_array_binding);
+                        record(NULL, "vertex_array_binding", "77", got);
+                    }
+                    now = vao_state(77);
+                    if (memcmp(&now, &caller, sizeof now) != 0) {
+                        snprintf(got, sizeof got, "%u", now.element_buffer);
+                        record(NULL, "caller VAO (element buffer, attributes)", "55, attrib 5 on",
+                               got);
+                    }
+                    check_fake();
+                    if (o == sizeof outputs / sizeof outputs[0])
+                        break;
+                    setup = "frame, caller VAO";
+                    gl.BindBuffer(GL_ARRAY_BUFFER, 66);
+                    run_frame(outputs[o].output);
+                }
+            }
+    destroy_context();
+    finish_report("caller vertex array");
+}
+
 /* The fake itself: defaults, the two stencil models, eye-space lights and
  * planes, deletion unbinding, and the diff naming fields. */
 static void test_fake_gl_tracks_state(void **state)
@@ -613,10 +735,12 @@ static void test_fake_gl_tracks_state(void **state)
 
 int main(void)
 {
-    struct CMUnitTest tests[sizeof profiles / sizeof profiles[0] + 2];
+    struct CMUnitTest tests[sizeof profiles / sizeof profiles[0] + 4];
     size_t i, n = 0;
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_fake_gl_tracks_state);
     tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_texture_creation_keeps_unpack_alignment);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_texture_creation_ignores_and_keeps_unpack_state);
+    tests[n++] = (struct CMUnitTest)cmocka_unit_test(test_caller_vertex_array_is_left_alone);
     for (i = 0; i < sizeof profiles / sizeof profiles[0]; i++) {
         struct CMUnitTest t = cmocka_unit_test_prestate(test_profile, (void *)&profiles[i]);
         t.name = profiles[i].name;

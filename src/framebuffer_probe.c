@@ -1,0 +1,160 @@
+/* The framebuffer a frame draws into (desc.framebuffer, 0 = default): that
+ * it is a complete framebuffer object, its stencil and depth bits, and
+ * whether the context's shadows choice can run into it. Stencil and depth
+ * depend on the framebuffer, not the context, so they are read per target:
+ * once per name, again when a frame names another one. */
+#include "internal.h"
+
+#define READ_FRAMEBUFFER 0x8CA8
+#define DRAW_FRAMEBUFFER 0x8CA9
+#define READ_FRAMEBUFFER_BINDING 0x8CAA
+#define STENCIL_ATTACHMENT 0x8D20
+#define DEPTH_ATTACHMENT 0x8D00
+#define ATTACHMENT_OBJECT_TYPE 0x8CD0
+
+/* Size of one attachment of the bound framebuffer on a core context; an
+ * absent attachment has no size (asking would be a GL error). */
+static int attachment_bits(const stin__gl *gl, GLenum att, GLenum pname)
+{
+    GLint type = GL_NONE, v = 0;
+    gl->GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, att, ATTACHMENT_OBJECT_TYPE, &type);
+    if (type != GL_NONE)
+        gl->GetFramebufferAttachmentParameteriv(GL_FRAMEBUFFER, att, pname, &v);
+    return v;
+}
+
+void stin__framebuffer_bits(const stin__gl *gl, int core, GLuint bound, int *stencil, int *depth)
+{
+    GLint v = 0;
+    if (!core) {
+        gl->GetIntegerv(GL_STENCIL_BITS, &v);
+        *stencil = v;
+        v = 0;
+        gl->GetIntegerv(GL_DEPTH_BITS, &v);
+        *depth = v;
+    } else if (gl->GetFramebufferAttachmentParameteriv) {
+        *stencil = attachment_bits(gl, bound ? STENCIL_ATTACHMENT : GL_STENCIL,
+                                   GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE);
+        *depth = attachment_bits(gl, bound ? DEPTH_ATTACHMENT : GL_DEPTH,
+                                 GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE);
+    }
+}
+
+static int has_fbo(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
+}
+
+/* The caller's draw and read framebuffers, to be bound again after a probe. */
+static void save_binding(stin_context *ctx, GLint saved[2])
+{
+    saved[0] = saved[1] = 0;
+    GL(ctx, GetIntegerv)(GL_DRAW_FRAMEBUFFER_BINDING, &saved[0]);
+    saved[1] = saved[0];
+    if (ctx->target.separate_read)
+        GL(ctx, GetIntegerv)(READ_FRAMEBUFFER_BINDING, &saved[1]);
+}
+
+static void restore_binding(stin_context *ctx, const GLint saved[2])
+{
+    if (saved[0] == saved[1]) {
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, (GLuint)saved[0]);
+    } else {
+        GL(ctx, BindFramebuffer)(DRAW_FRAMEBUFFER, (GLuint)saved[0]);
+        GL(ctx, BindFramebuffer)(READ_FRAMEBUFFER, (GLuint)saved[1]);
+    }
+}
+
+/* Reads the bits of `name`, bound now, into the cache. */
+static void probe_bits(stin_context *ctx, GLuint name)
+{
+    ctx->target.name = name;
+    ctx->target.stencil_bits = ctx->target.depth_bits = 0;
+    stin__framebuffer_bits(&ctx->gl, ctx->caps.profile == STIN_GL_PROFILE_CORE, name,
+                           &ctx->target.stencil_bits, &ctx->target.depth_bits);
+}
+
+void stin__target_init(stin_context *ctx)
+{
+    GLint saved[2] = {0, 0};
+    int bound_stencil = ctx->caps.stencil_bits;
+    uint64_t stencil = STIN_CAP_BIT(STIN_CAP_STENCIL);
+    ctx->target.separate_read = ctx->caps.gl_major >= 3 ||
+                                stin_has_extension(ctx, "GL_ARB_framebuffer_object") ||
+                                stin_has_extension(ctx, "GL_EXT_framebuffer_blit");
+    if (has_fbo(ctx)) {
+        save_binding(ctx, saved);
+        if (saved[0])
+            GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
+    }
+    probe_bits(ctx, 0);
+    if (has_fbo(ctx) && (saved[0] || saved[1]))
+        restore_binding(ctx, saved);
+    /* Selection assumes a stencil buffer where the framebuffer bound now or
+     * the default one has one: a stencil-less target bound at create (an
+     * earlier frame's) must not decide for every later frame. */
+    if (ctx->target.stencil_bits > bound_stencil) {
+        ctx->caps.stencil_bits = ctx->target.stencil_bits;
+        ctx->caps.depth_bits = ctx->target.depth_bits;
+    }
+    if (ctx->caps.stencil_bits > 0 && !(ctx->caps.hidden & stencil))
+        ctx->caps.present |= stencil;
+}
+
+/* Whether the chosen shadows technique runs into the target; says so when
+ * the answer changes (a target without a stencil buffer turns volumes off
+ * for its frames, and the context's choice stays). */
+static void decide_shadows(stin_context *ctx)
+{
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
+    int off = (stin__technique_needs(t) & STIN_CAP_BIT(STIN_CAP_STENCIL)) &&
+              ctx->target.stencil_bits <= 0;
+    if (off != ctx->target.shadows_off)
+        stin__log(ctx, off ? STIN_LOG_LEVEL_WARNING : STIN_LOG_LEVEL_INFO,
+                  off ? STIN_LOG_FALLBACK : STIN_LOG_TECHNIQUE_SELECTED,
+                  off ? "shadows: %s falls back to off in frames into framebuffer %u: it has "
+                        "no stencil buffer"
+                      : "shadows: %s again in frames into framebuffer %u (%d stencil bits)",
+                  stin_technique_name(t), (unsigned)ctx->target.name, ctx->target.stencil_bits);
+    ctx->target.shadows_off = off;
+}
+
+stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call)
+{
+    GLint saved[2];
+    GLenum status = GL_FRAMEBUFFER_COMPLETE;
+    int rebind;
+    if (!has_fbo(ctx) || (name == 0 && ctx->target.name == 0)) {
+        decide_shadows(ctx); /* the default framebuffer, probed before */
+        return STIN_OK;
+    }
+    if (name && !GL(ctx, IsFramebuffer)(name)) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                  "%s: framebuffer %u is not a framebuffer object of this context", call,
+                  (unsigned)name);
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
+    save_binding(ctx, saved);
+    rebind = saved[0] != (GLint)name || saved[1] != (GLint)name;
+    if (rebind)
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, name);
+    if (name)
+        status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    if (status == GL_FRAMEBUFFER_COMPLETE && name != ctx->target.name)
+        probe_bits(ctx, name);
+    if (rebind)
+        restore_binding(ctx, saved);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                  "%s: framebuffer %u is incomplete (status 0x%x)", call, (unsigned)name,
+                  (unsigned)status);
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
+    decide_shadows(ctx);
+    return STIN_OK;
+}
+
+int stin__target_has_stencil(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) && ctx->target.stencil_bits > 0;
+}
