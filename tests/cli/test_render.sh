@@ -12,11 +12,14 @@ check() { # name, condition result (0 = pass), detail
     if [ "$2" -eq 0 ]; then echo "PASS $1"; else echo "FAIL $1: $3"; fi
 }
 
+# Each bad file: exit 2 in bounded time, exactly one stderr line of valid
+# UTF-8 naming the file, no image.
 for f in tests/scenes/bad/*.json; do
-    "$R" "$f" -o "$T/out.png" > "$T/stdout" 2> "$T/stderr"
+    timeout 60 "$R" "$f" -o "$T/out.png" > "$T/stdout" 2> "$T/stderr"
     rc=$?
     ok=1
-    [ $rc -eq 2 ] && grep -q "$f" "$T/stderr" && [ ! -e "$T/out.png" ] && ok=0
+    [ $rc -eq 2 ] && grep -q "$f" "$T/stderr" && [ ! -e "$T/out.png" ] &&
+        [ "$(wc -l < "$T/stderr")" -eq 1 ] && iconv -f UTF-8 -t UTF-8 "$T/stderr" > /dev/null 2>&1 && ok=0
     check "bad-scene $(basename "$f")" $ok "exit $rc, stderr: $(head -c 200 "$T/stderr")"
 done
 

@@ -576,6 +576,8 @@ static int parse_lights(scene_parser *p, const cJSON *j, scene *s)
         return scene_fail(p, "lights", "expected an array");
     if (n == 0)
         return 1;
+    if (n > SCENE_LIGHTS_MAX)
+        return scene_fail(p, "lights", "at most %d (got %d)", SCENE_LIGHTS_MAX, n);
     s->lights = calloc((size_t)n, sizeof *s->lights);
     if (!s->lights)
         return scene_fail(p, "lights", "out of memory");
