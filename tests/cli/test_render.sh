@@ -65,4 +65,12 @@ check "prints tier, choices and time" \
 
 "$R" tests/scenes/torus.json --size 64x48 -o "$T/t.png" > /dev/null 2>&1
 check "png output" $([ $? -eq 0 ] && [ -s "$T/t.png" ] && echo 0 || echo 1) "no png written"
+# A full disk, simulated by a file size limit (SIGXFSZ ignored, so writes
+# fail with EFBIG): non-zero exit, one line, no file and no temporary left.
+(trap '' XFSZ; ulimit -f 8; "$R" tests/scenes/torus.json --size 256x256 -o "$T/full.png") \
+    > /dev/null 2> "$T/stderr"
+rc=$?
+check "png write error on a full disk" \
+    $([ $rc -ne 0 ] && [ "$(wc -l < "$T/stderr")" -eq 1 ] && ! ls "$T"/full.png* > /dev/null 2>&1 &&
+      echo 0 || echo 1) "exit $rc, files: $(ls "$T" | tr '\n' ' ') stderr: $(head -c 200 "$T/stderr")"
 exit 0
