@@ -70,7 +70,7 @@ $(B)/libstin_checked.a: $(CHECKED_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # ---- platform, tool support, reference -------------------------------------
-$(B)/obj/%.o: %.c $(wildcard include/stin/*.h platform/*.h tools/common/*.h tools/bench/*.h tests/reference/*.h tests/image/*.h)
+$(B)/obj/%.o: %.c $(wildcard include/stin/*.h platform/*.h tools/common/*.h tools/bench/*.h tools/render/*.h tests/reference/*.h tests/image/*.h)
 	@mkdir -p $(@D)
 	@echo "  CC      $<"; $(CC) $(TOOL_CFLAGS) -c $< -o $@
 $(B)/obj/%.o: %.cpp $(wildcard tools/common/*.h)
@@ -86,7 +86,7 @@ $(B)/libstin_reference.a: $(REF_OBJ)
 
 
 # ---- tools -----------------------------------------------------------------
-$(B)/stin-render: $(B)/obj/tools/render/main.o $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
+$(B)/stin-render: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/render/*.c))) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
 IMAGETEST_OBJ := $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tests/image/*.c)))
 $(B)/stin-imagetest: $(IMAGETEST_OBJ) $(B)/libstin_reference.a $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin_checked.a

@@ -12,11 +12,14 @@ check() { # name, condition result (0 = pass), detail
     if [ "$2" -eq 0 ]; then echo "PASS $1"; else echo "FAIL $1: $3"; fi
 }
 
+# Each bad file: exit 2 in bounded time, exactly one stderr line of valid
+# UTF-8 naming the file, no image.
 for f in tests/scenes/bad/*.json; do
-    "$R" "$f" -o "$T/out.png" > "$T/stdout" 2> "$T/stderr"
+    timeout 60 "$R" "$f" -o "$T/out.png" > "$T/stdout" 2> "$T/stderr"
     rc=$?
     ok=1
-    [ $rc -eq 2 ] && grep -q "$f" "$T/stderr" && [ ! -e "$T/out.png" ] && ok=0
+    [ $rc -eq 2 ] && grep -q "$f" "$T/stderr" && [ ! -e "$T/out.png" ] &&
+        [ "$(wc -l < "$T/stderr")" -eq 1 ] && iconv -f UTF-8 -t UTF-8 "$T/stderr" > /dev/null 2>&1 && ok=0
     check "bad-scene $(basename "$f")" $ok "exit $rc, stderr: $(head -c 200 "$T/stderr")"
 done
 
@@ -62,4 +65,57 @@ check "prints tier, choices and time" \
 
 "$R" tests/scenes/torus.json --size 64x48 -o "$T/t.png" > /dev/null 2>&1
 check "png output" $([ $? -eq 0 ] && [ -s "$T/t.png" ] && echo 0 || echo 1) "no png written"
+# A full disk, simulated by a file size limit (SIGXFSZ ignored, so writes
+# fail with EFBIG): non-zero exit, one line, no file and no temporary left.
+(trap '' XFSZ; ulimit -f 8; "$R" tests/scenes/torus.json --size 256x256 -o "$T/full.png") \
+    > /dev/null 2> "$T/stderr"
+rc=$?
+check "png write error on a full disk" \
+    $([ $rc -ne 0 ] && [ "$(wc -l < "$T/stderr")" -eq 1 ] && ! ls "$T"/full.png* > /dev/null 2>&1 &&
+      echo 0 || echo 1) "exit $rc, files: $(ls "$T" | tr '\n' ' ') stderr: $(head -c 200 "$T/stderr")"
+# Capacities follow the scene: a 2048^2 texture (the format allows 8192) renders.
+cat > "$T/big-texture.json" <<'EOF'
+{"camera": {"eye": [0, 1, 3], "target": [0, 0, 0]},
+ "meshes": {"box": {"primitive": "box"}},
+ "textures": {"big": {"procedural": "checker", "size": [2048, 2048]}},
+ "materials": {"m": {"albedo": "big"}},
+ "objects": [{"mesh": "box", "material": "m"}],
+ "lights": [{"type": "point", "position": [2, 3, 2]}]}
+EOF
+"$R" "$T/big-texture.json" --size 32x32 -o "$T/big.png" > /dev/null 2> "$T/stderr"
+rc=$?
+check "2048^2 texture renders" $([ $rc -eq 0 ] && [ -s "$T/big.png" ] && echo 0 || echo 1) \
+    "exit $rc, stderr: $(head -c 300 "$T/stderr")"
+
+# Work limit: 100 instances of a 2M-triangle plane are refused at once.
+cat > "$T/heavy.json" <<'EOF'
+{"camera": {"eye": [0, 20, 30], "target": [0, 0, 0]},
+ "meshes": {"p": {"primitive": "plane", "size": [10, 10], "subdivisions": [1023, 1024]}},
+ "objects": [{"mesh": "p", "repeat": {"count": [10, 10, 1], "step": [0.1, 0, 0.1]}}],
+ "lights": [{"type": "point", "position": [0, 10, 0]}]}
+EOF
+timeout 120 "$R" "$T/heavy.json" --shadows volume --size 64x64 -o "$T/heavy.png" > /dev/null 2> "$T/stderr"
+rc=$?
+check "work limit" $([ $rc -eq 2 ] && grep -q "work limit" "$T/stderr" && [ "$(wc -l < "$T/stderr")" -eq 1 ] &&
+    [ ! -e "$T/heavy.png" ] && echo 0 || echo 1) "exit $rc, stderr: $(head -c 300 "$T/stderr")"
+
+# Shadow-map size: the option, the scene key, and what the frame used.
+"$R" tests/scenes/shadow-far.json --shadows map-pcf --shadow-map-size 256 --size 32x32 > "$T/stdout" 2>&1
+rc=$?
+check "--shadow-map-size" $([ $rc -eq 0 ] && grep -q "^shadow maps: 256 texels" "$T/stdout" && echo 0 || echo 1) \
+    "exit $rc: $(grep -i "shadow" "$T/stdout" | head -c 300)"
+sed 's/^{/{"shadow_map_size": 128,/' tests/scenes/shadow-far.json > "$T/map128.json"
+"$R" "$T/map128.json" --shadows map-pcf --size 32x32 > "$T/stdout" 2>&1
+rc=$?
+check "scene shadow_map_size" $([ $rc -eq 0 ] && grep -q "^shadow maps: 128 texels" "$T/stdout" && echo 0 || echo 1) \
+    "exit $rc: $(grep -i "shadow" "$T/stdout" | head -c 300)"
+"$R" tests/scenes/torus.json --shadow-map-size 1000 > /dev/null 2>&1
+check "bad --shadow-map-size" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --shadow-map-size 1000"
+
+# A point light under map-combine without FBO faces gets volumes: say so.
+"$R" tests/scenes/torus.json --profile gl13-combine --shadows map-combine --size 32x32 > "$T/stdout" 2>&1
+rc=$?
+check "point light fallback is printed" \
+    $([ $rc -eq 0 ] && grep "^shadows: map-combine" "$T/stdout" | grep -q "stencil volumes" && echo 0 || echo 1) \
+    "exit $rc: $(grep "^shadows" "$T/stdout")"
 exit 0

@@ -8,6 +8,7 @@
 
 #include <dirent.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +16,8 @@
 #include <unistd.h>
 
 #include "image_io.h"
+#include "isolate.h"
+#include "one_line.h"
 #include "scene.h"
 #include "scene_primitives.h"
 
@@ -129,6 +132,9 @@ static void check_closed(const scene_mesh *m)
 
 /* ---- bad scenes ---------------------------------------------------------- */
 
+/* where == NULL: the file loads and stin rejects it at the GPU stage
+ * (stin-render's test wants exit 2 and one line for it). */
+
 static const struct {
     const char *file, *where, *problem;
 } bad_scenes[] = {
@@ -147,6 +153,13 @@ static const struct {
     { "unknown-object-key.json", "objects[0]", "unknown key 'tranlsate'" },
     { "csg-unknown-object.json", "csg[0].b", "unknown object or csg result 'cube'" },
     { "csg-unknown-op.json", "csg[0].op", "unknown operation 'xor'" },
+    { "too-many-lights.json", "lights", "at most 32" },
+    { "out-of-range-face.json", "meshes.bad.file", "out of range" },
+    { "truncated-ply-header.json", "meshes.cut.file", "no end_header line" },
+    { "newline-in-name.json", "objects[0].mesh", "unknown mesh 'ball\\nx\xc3\xa9'" },
+    { "truncated-texture.json", "textures.cut.file", "cannot read 'truncated.png'" },
+    { "degenerate-mesh.json", NULL, "" },
+    { "raw-bytes.json", "", "line 2, column 13: unexpected '\\xff\\xfe\\n\\x01" },
 };
 #define BAD_COUNT (sizeof bad_scenes / sizeof bad_scenes[0])
 
@@ -179,7 +192,15 @@ static void test_bad_scenes(void **state)
         if (i == BAD_COUNT)
             fail_msg("%s/%s has no expected message in test_scene.c", BAD_DIR, e->d_name);
         snprintf(path, sizeof path, "%s/%s", BAD_DIR, e->d_name);
-        expect_failure(path, bad_scenes[i].where, bad_scenes[i].problem);
+        if (bad_scenes[i].where) {
+            expect_failure(path, bad_scenes[i].where, bad_scenes[i].problem);
+        } else {
+            scene s;
+            char err[512];
+            if (!scene_load(path, &s, err, sizeof err))
+                fail_msg("%s should load (stin rejects it later): %s", path, err);
+            scene_free(&s);
+        }
         seen[i] = 1;
     }
     closedir(d);
@@ -187,6 +208,62 @@ static void test_bad_scenes(void **state)
         if (!seen[i])
             fail_msg("%s/%s is missing", BAD_DIR, bad_scenes[i].file);
     expect_failure(BAD_DIR "/does-not-exist.json", "", "cannot open");
+}
+
+/* ---- decoders in a child process, one-line messages ------------------- */
+
+static int work_hangs(void *arg, int fd, char *why, size_t why_size)
+{
+    (void)arg, (void)fd, (void)why, (void)why_size;
+    while (pause() != 0 || 1)
+        ;
+    return 0;
+}
+
+static int work_crashes(void *arg, int fd, char *why, size_t why_size)
+{
+    (void)arg, (void)fd, (void)why, (void)why_size;
+    raise(SIGSEGV);
+    return 1;
+}
+
+static int work_says(void *arg, int fd, char *why, size_t why_size)
+{
+    if (arg)
+        return isolate_write(fd, arg, strlen(arg));
+    snprintf(why, why_size, "no such thing");
+    return 0;
+}
+
+/* A decoder that loops or crashes costs an error, never the caller. */
+static void test_isolate(void **state)
+{
+    unsigned char *out;
+    size_t size;
+    char why[256];
+    (void)state;
+    assert_int_equal(isolate_run(work_hangs, NULL, 1, 1024, &out, &size, why, sizeof why), 0);
+    assert_non_null(strstr(why, "took longer than 1 s"));
+    assert_int_equal(isolate_run(work_crashes, NULL, 10, 1024, &out, &size, why, sizeof why), 0);
+    assert_non_null(strstr(why, "crashed"));
+    assert_int_equal(isolate_run(work_says, NULL, 10, 1024, &out, &size, why, sizeof why), 0);
+    assert_string_equal(why, "no such thing");
+    assert_int_equal(isolate_run(work_says, "hello", 10, 1024, &out, &size, why, sizeof why), 1);
+    assert_int_equal(size, 5);
+    assert_memory_equal(out, "hello", 5);
+    free(out);
+    assert_int_equal(isolate_run(work_says, "hello", 10, 4, &out, &size, why, sizeof why), 0);
+    assert_non_null(strstr(why, "larger than 4 bytes"));
+}
+
+static void test_one_line(void **state)
+{
+    char out[32];
+    (void)state;
+    one_line_copy(out, sizeof out, "a\nb\t\x01\xff\xc3\xa9\xed\xa0\x80");
+    assert_string_equal(out, "a\\nb\\t\\x01\\xff\xc3\xa9\\xed\\xa0\\x80");
+    one_line_copy(out, 5, "abc\ndef");
+    assert_string_equal(out, "abc"); /* an escape that does not fit is left out */
 }
 
 /* ---- example scenes ----------------------------------------------------- */
@@ -606,6 +683,8 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_bad_scenes),
+        cmocka_unit_test(test_isolate),
+        cmocka_unit_test(test_one_line),
         cmocka_unit_test(test_examples_load),
         cmocka_unit_test(test_sphere_scenes),
         cmocka_unit_test(test_textures_and_files),

@@ -175,7 +175,7 @@ static int run_pair(pair *p, stin_tier tier, const scene *s, setup_result *out, 
 static int one_setup(const bench_settings *b, stin_tier tier, const scene *s, setup_result *out,
                      char *err, size_t err_size)
 {
-    cli_log log = {0, "stin-bench", 0};
+    cli_log log;
     stin_desc desc;
     pair p;
     void *block;
@@ -185,6 +185,8 @@ static int one_setup(const bench_settings *b, stin_tier tier, const scene *s, se
     memset(out, 0, sizeof *out);
     memset(&p, 0, sizeof p);
     p.b = b;
+    memset(&log, 0, sizeof log);
+    log.program = "stin-bench";
     log.verbose = b->verbose;
     memset(&desc, 0, sizeof desc);
     desc.get_proc_address = stin_platform_get_proc_address;

@@ -4,6 +4,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <unistd.h>
@@ -55,7 +56,30 @@ bool wants_float(const std::string &name)
     return name.compare(0, 2, "P.") == 0 || name.compare(0, 2, "N.") == 0 || name == "Z";
 }
 
-// Writes through an OIIO ImageOutput of format `ext` to `tmp`.
+// Writes all of bytes to path and makes sure they reached the file system:
+// a full disk shows up here (write, flush or close), not as a short file.
+// (No fsync: file systems that reserve space at write() report it there.)
+bool write_bytes(const std::string &path, const std::vector<unsigned char> &bytes, std::string &why)
+{
+    std::FILE *f = std::fopen(path.c_str(), "wb");
+    if (!f) {
+        why = std::string("cannot create: ") + std::strerror(errno);
+        return false;
+    }
+    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size() && std::fflush(f) == 0;
+    int saved = errno;
+    if (std::fclose(f) != 0 && ok) {
+        ok = false;
+        saved = errno;
+    }
+    if (!ok)
+        why = std::string("write failed: ") + std::strerror(saved);
+    return ok;
+}
+
+// Encodes through an OIIO ImageOutput of format `ext` into memory, then
+// writes `tmp` with checked I/O: OIIO's PNG writer reports no write errors,
+// so on a full disk it would leave a truncated file and say nothing.
 bool write_spec(const std::string &ext, const std::string &tmp, const ImageSpec &spec,
                 TypeDesc data_type, const void *data, std::string &why)
 {
@@ -64,11 +88,21 @@ bool write_spec(const std::string &ext, const std::string &tmp, const ImageSpec 
         why = "no writer for ." + ext + ": " + OIIO::geterror();
         return false;
     }
-    if (!out->open(tmp, spec) || !out->write_image(data_type, data) || !out->close()) {
+    if (!out->supports("ioproxy")) {
+        why = "the ." + ext + " writer cannot encode into memory";
+        return false;
+    }
+    std::vector<unsigned char> bytes;
+    Filesystem::IOVecOutput memory(bytes);
+    Filesystem::IOProxy *proxy = &memory;
+    ImageSpec to_memory = spec;
+    to_memory.attribute("oiio:ioproxy", TypeDesc::PTR, &proxy);
+    if (!out->open(tmp, to_memory) || !out->write_image(data_type, data) || !out->close() ||
+        out->has_error()) {
         why = out->geterror();
         return false;
     }
-    return true;
+    return write_bytes(tmp, bytes, why);
 }
 
 bool write_exr(const std::string &tmp, const image *img, std::string &why)

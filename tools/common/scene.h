@@ -101,6 +101,8 @@ typedef struct scene {
     float ambient[3];          /* default (0.1,0.1,0.1) */
     float background[4];       /* default (0,0,0,0) */
     int width, height;         /* suggested image size, default 512 x 512 */
+    int shadow_map_size;       /* texels a side of each shadow map (a power of two,
+                                  16..8192); 0 = stin's default */
 } scene;
 
 /* Loads a scene file. On error returns 0, writes "FILE: problem" into err and

@@ -5,16 +5,42 @@
 #include <stdio.h>
 #include <string.h>
 
-static uint32_t at_least(uint32_t have, uint64_t want)
+/* Each capacity stin_create accepts (include/stin/stin.h, stin_desc):
+ * max_meshes and max_textures <= 65535, max_vertices < 2^30,
+ * max_triangles < 2^29, max_draws < 2^24; max_texture_bytes is a uint32_t. */
+#define LIMIT_MESHES 65535u
+#define LIMIT_TEXTURES 65535u
+#define LIMIT_DRAWS (0x1000000u - 1u)
+#define LIMIT_VERTICES (0x40000000u - 1u)
+#define LIMIT_TRIANGLES (0x20000000u - 1u)
+#define LIMIT_TEXTURE_BYTES 0xffffffffu
+
+/* have, raised to want; 0 when want is past the library's limit. */
+static int raise_to(uint32_t *have, uint64_t want, uint32_t limit)
 {
-    if (want > 0xffffffu)
-        want = 0xffffffu;
-    return have > want ? have : (uint32_t)want;
+    if (want > limit)
+        return 0;
+    if (*have < want)
+        *have = (uint32_t)want;
+    return 1;
 }
 
-void scene_gpu_size_desc(const scene *s, stin_desc *desc)
+/* Staging for one texture: level 0 plus the mip chain, with room for a
+ * power-of-two resample (GL1). */
+static uint64_t texture_bytes(const scene_texture *t)
 {
-    uint64_t verts = 0, tris = 0, biggest = 0;
+    uint64_t w = 1, h = 1;
+    while (w < (uint64_t)t->width)
+        w <<= 1;
+    while (h < (uint64_t)t->height)
+        h <<= 1;
+    return w * h * 4u * 2u;
+}
+
+int scene_gpu_size_desc_checked(const scene *s, stin_desc *desc, char *err, size_t err_size)
+{
+    uint64_t verts = 0, tris = 0, biggest = 0, bytes = 0;
+    const char *what = NULL;
     int i;
     for (i = 0; i < s->mesh_count; i++) {
         verts += s->meshes[i].vertex_count;
@@ -22,22 +48,33 @@ void scene_gpu_size_desc(const scene *s, stin_desc *desc)
         if (s->meshes[i].triangle_count > biggest)
             biggest = s->meshes[i].triangle_count;
     }
-    desc->max_meshes = at_least(desc->max_meshes, (uint64_t)s->mesh_count);
-    desc->max_textures = at_least(desc->max_textures, (uint64_t)s->texture_count);
-    desc->max_draws = at_least(desc->max_draws, (uint64_t)s->object_count);
-    desc->max_lights = at_least(desc->max_lights, (uint64_t)s->light_count);
-    desc->max_vertices = at_least(desc->max_vertices, verts);
-    desc->max_triangles = at_least(desc->max_triangles, tris);
-    desc->max_mesh_triangles = at_least(desc->max_mesh_triangles, biggest);
-    for (i = 0; i < s->texture_count; i++) {
-        /* level 0 plus the mip chain, with room for a power-of-two resample */
-        uint64_t w = 1, h = 1;
-        while (w < (uint64_t)s->textures[i].width)
-            w <<= 1;
-        while (h < (uint64_t)s->textures[i].height)
-            h <<= 1;
-        desc->max_texture_bytes = at_least(desc->max_texture_bytes, w * h * 4u * 2u);
-    }
+    for (i = 0; i < s->texture_count; i++)
+        if (texture_bytes(&s->textures[i]) > bytes)
+            bytes = texture_bytes(&s->textures[i]);
+    if (!raise_to(&desc->max_meshes, (uint64_t)s->mesh_count, LIMIT_MESHES))
+        what = "meshes: more than 65535";
+    else if (!raise_to(&desc->max_textures, (uint64_t)s->texture_count, LIMIT_TEXTURES))
+        what = "textures: more than 65535";
+    else if (!raise_to(&desc->max_draws, (uint64_t)s->object_count, LIMIT_DRAWS))
+        what = "objects: more instances than stin draws in a frame";
+    else if (!raise_to(&desc->max_lights, (uint64_t)s->light_count, 32u))
+        what = "lights: at most 32";
+    else if (!raise_to(&desc->max_vertices, verts, LIMIT_VERTICES))
+        what = "meshes: more vertices than stin holds";
+    else if (!raise_to(&desc->max_triangles, tris, LIMIT_TRIANGLES))
+        what = "meshes: more triangles than stin holds";
+    else if (!raise_to(&desc->max_mesh_triangles, biggest, LIMIT_TRIANGLES))
+        what = "meshes: a mesh has more triangles than stin holds";
+    else if (!raise_to(&desc->max_texture_bytes, bytes, LIMIT_TEXTURE_BYTES))
+        what = "textures: a texture is too large to stage";
+    if (what && err && err_size)
+        snprintf(err, err_size, "%s: %s", s->path, what);
+    return what == NULL;
+}
+
+void scene_gpu_size_desc(const scene *s, stin_desc *desc)
+{
+    scene_gpu_size_desc_checked(s, desc, NULL, 0);
 }
 
 static stin_texture_kind texture_kind(scene_texture_kind k)
@@ -73,7 +110,7 @@ int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err,
         md.index_count = 3u * m->triangle_count;
         r = stin_create_mesh(ctx, &md, &g->meshes[i]);
         if (r != STIN_OK) {
-            snprintf(err, err_size, "%s: mesh '%s': %s", s->path, m->name, stin_result_name(r));
+            snprintf(err, err_size, "%s: meshes.%s: %s", s->path, m->name, stin_result_name(r));
             scene_gpu_destroy(g, ctx);
             return 0;
         }
@@ -89,7 +126,7 @@ int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err,
         td.pixels = t->rgba;
         r = stin_create_texture(ctx, &td, &g->textures[i]);
         if (r != STIN_OK) {
-            snprintf(err, err_size, "%s: texture '%s': %s", s->path, t->name, stin_result_name(r));
+            snprintf(err, err_size, "%s: textures.%s: %s", s->path, t->name, stin_result_name(r));
             scene_gpu_destroy(g, ctx);
             return 0;
         }

@@ -21,7 +21,11 @@ typedef struct scene_gpu {
 } scene_gpu;
 
 /* The stin_desc capacities this scene needs (meshes, draws, lights, vertices,
- * textures); fields already set larger are kept. */
+ * textures); fields already set larger are kept. Returns 0 and writes
+ * "FILE: where: problem" when the scene needs more than stin_create accepts
+ * (the capacities then stop at the first such field). */
+int scene_gpu_size_desc_checked(const scene *s, stin_desc *desc, char *err, size_t err_size);
+/* The same for callers whose scenes are known to fit. */
 void scene_gpu_size_desc(const scene *s, stin_desc *desc);
 /* Creates every mesh and texture; on failure writes a message and releases
  * what was created. 1 on success. */

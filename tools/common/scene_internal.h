@@ -14,6 +14,10 @@
  * almost always typos and would overflow float maths downstream. */
 #define SCENE_NUMBER_LIMIT 1e6
 
+/* Lights one frame can take: stin_desc.max_lights is "at most 32"
+ * (include/stin/stin.h). More is an error at load, naming the file. */
+#define SCENE_LIGHTS_MAX 32
+
 /* Error sink for one scene file. Every helper that fails writes
  * "FILE: WHERE: problem" into err and returns 0. */
 typedef struct scene_parser {
@@ -62,6 +66,21 @@ int scene_get_string(scene_parser *p, const cJSON *obj, const char *key, const c
 /* Joins a path from a scene file with the directory of that file (absolute
  * paths are kept). 0 if it does not fit. */
 int scene_resolve_path(const char *scene_file, const char *rel, char *out, size_t size);
+
+/* Model and texture files are decoded in a child process (isolate.h) that
+ * gets this long and may hand back this many bytes. */
+#define SCENE_IMPORT_SECONDS 60
+#define SCENE_IMPORT_BYTES_MAX ((size_t)2 << 30)
+/* The limit in force, SCENE_IMPORT_SECONDS unless a test or the fuzzer
+ * shortens it. */
+extern unsigned scene_import_seconds;
+
+/* Fails (reason in why) unless path names a regular file: a device or FIFO
+ * would feed a decoder forever. */
+int scene_check_regular_file(const char *path, char *why, size_t why_size);
+/* Cheap checks of a model file before any importer sees it: rejects what is
+ * known to make assimp loop (a PLY header without end_header). */
+int scene_model_precheck(const char *path, char *why, size_t why_size);
 
 /* Loads every mesh of a model file into one mesh. On failure writes a
  * reason (no file or key names) into why and returns 0. */

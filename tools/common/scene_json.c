@@ -576,6 +576,8 @@ static int parse_lights(scene_parser *p, const cJSON *j, scene *s)
         return scene_fail(p, "lights", "expected an array");
     if (n == 0)
         return 1;
+    if (n > SCENE_LIGHTS_MAX)
+        return scene_fail(p, "lights", "at most %d (got %d)", SCENE_LIGHTS_MAX, n);
     s->lights = calloc((size_t)n, sizeof *s->lights);
     if (!s->lights)
         return scene_fail(p, "lights", "out of memory");
@@ -669,7 +671,7 @@ static int parse_scene(scene_parser *p, const cJSON *root, scene *s)
 {
     static const char *const keys[] = { "description", "width", "height", "camera", "ambient",
                                         "background", "meshes", "textures", "materials", "objects",
-                                        "lights", "csg", NULL };
+                                        "lights", "csg", "shadow_map_size", NULL };
     const cJSON *objects = cJSON_GetObjectItemCaseSensitive(root, "objects");
     const cJSON *csg = cJSON_GetObjectItemCaseSensitive(root, "csg");
     const cJSON *tex = cJSON_GetObjectItemCaseSensitive(root, "textures");
@@ -685,6 +687,7 @@ static int parse_scene(scene_parser *p, const cJSON *root, scene *s)
         !scene_get_int(p, root, "height", "", 1, IMAGE_SIZE_MAX, &s->height) ||
         !scene_get_vector(p, root, "ambient", "", 3, SCENE_UNIT, s->ambient) ||
         !scene_get_vector(p, root, "background", "", 4, SCENE_UNIT, s->background) ||
+        !scene_get_int(p, root, "shadow_map_size", "", 16, 8192, &s->shadow_map_size) ||
         !scene_require(p, root, "camera", "") || !scene_require(p, root, "meshes", "") ||
         !scene_require(p, root, "objects", "") ||
         !parse_camera(p, cJSON_GetObjectItemCaseSensitive(root, "camera"), &s->camera) ||
@@ -693,6 +696,9 @@ static int parse_scene(scene_parser *p, const cJSON *root, scene *s)
         !parse_materials(p, cJSON_GetObjectItemCaseSensitive(root, "materials"), s) ||
         (lights && !parse_lights(p, lights, s)))
         return 0;
+    if (s->shadow_map_size & (s->shadow_map_size - 1))
+        return scene_fail(p, "shadow_map_size", "must be a power of two in [16, 8192] (got %d)",
+                          s->shadow_map_size);
     entries = cJSON_GetArraySize(objects);
     if (!cJSON_IsArray(objects) || entries == 0)
         return scene_fail(p, "objects", "expected a non-empty array");

@@ -2,6 +2,7 @@
  * errors; every check a scene file needs goes through here so messages stay
  * uniform. */
 #include "scene_internal.h"
+#include "one_line.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -10,16 +11,18 @@
 
 int scene_fail(scene_parser *p, const char *where, const char *fmt, ...)
 {
-    char msg[384];
+    char msg[384], line[1024];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(msg, sizeof msg, fmt, ap);
     va_end(ap);
     if (p->err && p->err_size) {
         if (where && where[0])
-            snprintf(p->err, p->err_size, "%s: %s: %s", p->file, where, msg);
+            snprintf(line, sizeof line, "%s: %s: %s", p->file, where, msg);
         else
-            snprintf(p->err, p->err_size, "%s: %s", p->file, msg);
+            snprintf(line, sizeof line, "%s: %s", p->file, msg);
+        /* Names and syntax errors quote the file's bytes: keep it one line. */
+        one_line_copy(p->err, p->err_size, line);
     }
     return 0;
 }

@@ -2,14 +2,17 @@
  * one indexed triangle mesh in the file's own coordinates. */
 #include "scene_internal.h"
 #include "scene_primitives.h"
+#include "isolate.h"
 
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
-#include <errno.h>
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+
+unsigned scene_import_seconds = SCENE_IMPORT_SECONDS;
 
 static int count_geometry(const struct aiScene *sc, uint64_t *verts, uint64_t *tris)
 {
@@ -66,40 +69,91 @@ static void copy_mesh(const struct aiMesh *src, scene_mesh *dst, uint32_t base, 
     }
 }
 
-int scene_mesh_load_file(const char *path, scene_mesh *out, char *why, size_t why_size)
+/* Child side: import, merge, then stream counts and arrays to the parent. */
+static int import_work(void *arg, int fd, char *why, size_t why_size)
 {
-    const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                           aiProcess_GenSmoothNormals | aiProcess_PreTransformVertices;
-    const struct aiScene *sc;
+    const unsigned flags = aiProcess_ValidateDataStructure | aiProcess_Triangulate |
+                           aiProcess_JoinIdenticalVertices | aiProcess_GenSmoothNormals |
+                           aiProcess_PreTransformVertices;
+    const struct aiScene *sc = aiImportFile((const char *)arg, flags);
+    scene_mesh m;
     uint64_t verts, tris;
-    uint32_t base = 0, tri = 0;
+    uint32_t base = 0, tri = 0, counts[2];
     unsigned i;
-    FILE *probe = fopen(path, "rb");
-    /* Check first so a missing file says why in the system's words. */
-    if (!probe) {
-        snprintf(why, why_size, "%s", strerror(errno));
-        return 0;
-    }
-    fclose(probe);
-    sc = aiImportFile(path, flags);
+    int ok;
     if (!sc) {
         snprintf(why, why_size, "%s", aiGetErrorString());
         return 0;
     }
+    memset(&m, 0, sizeof m);
     if (!count_geometry(sc, &verts, &tris) || tris == 0) {
         snprintf(why, why_size, tris ? "too many vertices" : "no triangles in the file");
-        aiReleaseImport(sc);
         return 0;
     }
-    if (!scene_mesh_alloc(out, (uint32_t)verts, (uint32_t)tris)) {
+    if (!scene_mesh_alloc(&m, (uint32_t)verts, (uint32_t)tris)) {
         snprintf(why, why_size, "out of memory");
-        aiReleaseImport(sc);
         return 0;
     }
     for (i = 0; i < sc->mNumMeshes; i++) {
-        copy_mesh(sc->mMeshes[i], out, base, &tri);
+        copy_mesh(sc->mMeshes[i], &m, base, &tri);
         base += sc->mMeshes[i]->mNumVertices;
     }
-    aiReleaseImport(sc);
+    counts[0] = m.vertex_count;
+    counts[1] = m.triangle_count;
+    ok = isolate_write(fd, counts, sizeof counts) &&
+         isolate_write(fd, m.positions, (size_t)verts * 3 * sizeof(float)) &&
+         isolate_write(fd, m.normals, (size_t)verts * 3 * sizeof(float)) &&
+         isolate_write(fd, m.uvs, (size_t)verts * 2 * sizeof(float)) &&
+         isolate_write(fd, m.indices, (size_t)tris * 3 * sizeof(uint32_t));
+    if (!ok)
+        snprintf(why, why_size, "cannot hand the mesh over");
+    return ok;
+}
+
+/* Parent side: the bytes must be exactly counts + arrays, every index in range. */
+static int unpack_mesh(const unsigned char *b, size_t size, scene_mesh *out, char *why,
+                       size_t why_size)
+{
+    uint32_t counts[2], t;
+    size_t need;
+    if (size < sizeof counts)
+        return snprintf(why, why_size, "the importer returned no mesh"), 0;
+    memcpy(counts, b, sizeof counts);
+    need = sizeof counts + (size_t)counts[0] * 8 * sizeof(float) + (size_t)counts[1] * 3 * sizeof(uint32_t);
+    if (size != need || !counts[0] || !counts[1])
+        return snprintf(why, why_size, "the importer returned a malformed mesh"), 0;
+    if (!scene_mesh_alloc(out, counts[0], counts[1]))
+        return snprintf(why, why_size, "out of memory"), 0;
+    b += sizeof counts;
+    memcpy(out->positions, b, (size_t)counts[0] * 3 * sizeof(float));
+    b += (size_t)counts[0] * 3 * sizeof(float);
+    memcpy(out->normals, b, (size_t)counts[0] * 3 * sizeof(float));
+    b += (size_t)counts[0] * 3 * sizeof(float);
+    memcpy(out->uvs, b, (size_t)counts[0] * 2 * sizeof(float));
+    b += (size_t)counts[0] * 2 * sizeof(float);
+    memcpy(out->indices, b, (size_t)counts[1] * 3 * sizeof(uint32_t));
+    for (t = 0; t < 3 * counts[1]; t++)
+        if (out->indices[t] >= counts[0]) {
+            snprintf(why, why_size, "face index %u out of range (%u vertices)", out->indices[t],
+                     counts[0]);
+            scene_mesh_release(out);
+            return 0;
+        }
     return 1;
+}
+
+int scene_mesh_load_file(const char *path, scene_mesh *out, char *why, size_t why_size)
+{
+    unsigned char *bytes;
+    size_t size;
+    int ok;
+    if (!scene_check_regular_file(path, why, why_size) || !scene_model_precheck(path, why, why_size))
+        return 0;
+    /* assimp can crash or loop on hostile files; the child takes the hit. */
+    if (!isolate_run(import_work, (void *)path, scene_import_seconds, SCENE_IMPORT_BYTES_MAX,
+                     &bytes, &size, why, why_size))
+        return 0;
+    ok = unpack_mesh(bytes, size, out, why, why_size);
+    free(bytes);
+    return ok;
 }

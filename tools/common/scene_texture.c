@@ -3,6 +3,7 @@
  * rows bottom to top; height maps keep the height in R (copied to G, B). */
 #include "scene_internal.h"
 #include "image_io.h"
+#include "isolate.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -176,39 +177,72 @@ static int alloc_pixels(scene_parser *p, const char *where, scene_texture *t, in
     return t->rgba ? 1 : scene_fail(p, where, "out of memory for a %d x %d texture", w, h);
 }
 
-/* Image file -> RGBA8, flipped to bottom-to-top rows. 1 and 2 channels are
- * grey (+ alpha); a missing alpha is opaque. */
-static int load_file(scene_parser *p, const cJSON *json, const char *where, scene_texture *t)
+/* Child side: image file -> width, height and RGBA8 rows bottom to top.
+ * 1 and 2 channels are grey (+ alpha); a missing alpha is opaque. */
+static int decode_work(void *arg, int fd, char *why, size_t why_size)
 {
-    char rel[512] = "", full[1024], why[512], path[256];
     image img;
-    int x, y;
-    scene_join(path, sizeof path, where, "file");
-    if (!scene_get_string(p, json, "file", where, rel, sizeof rel))
+    int x, y, size[2], ok = 1;
+    uint8_t *row;
+    if (!image_read((const char *)arg, &img, why, why_size))
         return 0;
-    if (!scene_resolve_path(p->file, rel, full, sizeof full))
-        return scene_fail(p, path, "path too long");
-    if (!image_read(full, &img, why, sizeof why))
-        return scene_fail(p, path, "cannot read '%s': %s", rel, why);
     if (img.width > TEXTURE_SIZE_MAX || img.height > TEXTURE_SIZE_MAX) {
-        image_free(&img);
-        return scene_fail(p, path, "'%s' is larger than %d texels", rel, TEXTURE_SIZE_MAX);
-    }
-    if (!alloc_pixels(p, path, t, img.width, img.height)) {
+        snprintf(why, why_size, "larger than %d texels", TEXTURE_SIZE_MAX);
         image_free(&img);
         return 0;
     }
-    for (y = 0; y < img.height; y++)
+    size[0] = img.width;
+    size[1] = img.height;
+    row = malloc(4 * (size_t)img.width);
+    ok = row && isolate_write(fd, size, sizeof size);
+    for (y = img.height - 1; ok && y >= 0; y--) {
         for (x = 0; x < img.width; x++) {
             const float *s = img.pixels + ((size_t)y * (size_t)img.width + (size_t)x) * (size_t)img.channels;
-            uint8_t *d = t->rgba + 4 * ((size_t)(img.height - 1 - y) * (size_t)img.width + (size_t)x);
+            uint8_t *d = row + 4 * (size_t)x;
             int grey = img.channels < 3;
             d[0] = to_byte(s[0]);
             d[1] = to_byte(grey ? s[0] : s[1]);
             d[2] = to_byte(grey ? s[0] : s[2]);
             d[3] = img.channels == 2 ? to_byte(s[1]) : img.channels >= 4 ? to_byte(s[3]) : 255;
         }
+        ok = isolate_write(fd, row, 4 * (size_t)img.width);
+    }
+    if (!ok)
+        snprintf(why, why_size, "out of memory");
+    free(row);
     image_free(&img);
+    return ok;
+}
+
+/* Image decoders are not ours: they run in a child (isolate.h). */
+static int load_file(scene_parser *p, const cJSON *json, const char *where, scene_texture *t)
+{
+    char rel[512] = "", full[1024], why[512], path[256];
+    unsigned char *bytes;
+    size_t size;
+    int wh[2];
+    scene_join(path, sizeof path, where, "file");
+    if (!scene_get_string(p, json, "file", where, rel, sizeof rel))
+        return 0;
+    if (!scene_resolve_path(p->file, rel, full, sizeof full))
+        return scene_fail(p, path, "path too long");
+    if (!scene_check_regular_file(full, why, sizeof why) ||
+        !isolate_run(decode_work, full, scene_import_seconds, SCENE_IMPORT_BYTES_MAX, &bytes,
+                     &size, why, sizeof why))
+        return scene_fail(p, path, "cannot read '%s': %s", rel, why);
+    if (size >= sizeof wh)
+        memcpy(wh, bytes, sizeof wh);
+    if (size < sizeof wh || wh[0] < 1 || wh[1] < 1 || wh[0] > TEXTURE_SIZE_MAX ||
+        wh[1] > TEXTURE_SIZE_MAX || size != sizeof wh + 4 * (size_t)wh[0] * (size_t)wh[1]) {
+        free(bytes);
+        return scene_fail(p, path, "cannot read '%s': the decoder returned a malformed image", rel);
+    }
+    if (!alloc_pixels(p, path, t, wh[0], wh[1])) {
+        free(bytes);
+        return 0;
+    }
+    memcpy(t->rgba, bytes + sizeof wh, size - sizeof wh);
+    free(bytes);
     return 1;
 }
 

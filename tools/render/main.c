@@ -1,156 +1,38 @@
 /* stin-render: renders a scene file through libstin on an offscreen context
- * and writes PNG or OpenEXR (the image contract of DESIGN.md). */
+ * and writes PNG or OpenEXR (the image contract of DESIGN.md). Every failure
+ * is one stderr line, "stin-render: FILE: where: problem". */
 #include "aov.h"
 #include "cli_log.h"
+#include "one_line.h"
+#include "render_options.h"
 #include "scene.h"
 #include "scene_gpu.h"
 #include "stin/stin.h"
 #include "stin_platform.h"
 
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
-
-typedef struct options {
-    const char *scene_path, *output, *profile, *platform, *shadows, *surface;
-    uint32_t debug_flags;
-    stin_tier tier;
-    int width, height, caps, verbose;
-} options;
-
-static void usage(FILE *f)
+/* The tool's one failure line: its own words, then what stin logged (its
+ * error lines are held back by the cli_log so that they join this one). */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static void fail_line(const cli_log *log, const char *fmt, ...)
 {
-    fprintf(f,
-            "usage: stin-render SCENE.json [-o OUT.png|OUT.exr] [options]\n"
-            "  --tier auto|gl1|gl2|gl4   force a tier (error if the context cannot run it)\n"
-            "  --profile NAME            capability profile (see docs/profiles.md):");
-    {
-        size_t i;
-        for (i = 0; i < stin_profile_count(); i++)
-            fprintf(f, " %s", stin_profile_at(i)->name);
-    }
-    fprintf(f, "\n"
-               "  --platform egl|osmesa     context backend (default egl)\n"
-               "  --size WxH                image size (default: the scene's, else 512x512)\n"
-               "  --shadows NAME            shadow technique: volume, map-pcf (GLSL tiers), map (map-depth where the\n"
-               "                            context has ARB_shadow, else map-combine), map-depth,\n"
-               "                            map-combine, off (default auto)\n"
-               "  --surface NAME            surface technique (default auto)\n"
-               "  --volume-mode auto|zpass|zfail  shadow-volume counting (diagnostics)\n"
-               "  --caps                    print capabilities and choices, render nothing\n"
-               "  --verbose                 print stin's info log lines\n"
-               "exit codes: 0 ok, 1 failure, 2 bad input, 3 tier/technique unsupported here\n");
-}
-
-static int parse_tier(const char *s, stin_tier *t)
-{
-    if (!strcmp(s, "auto")) *t = STIN_TIER_AUTO;
-    else if (!strcmp(s, "gl1")) *t = STIN_TIER_GL1;
-    else if (!strcmp(s, "gl2")) *t = STIN_TIER_GL2;
-    else if (!strcmp(s, "gl4")) *t = STIN_TIER_GL4;
-    else return 0;
-    return 1;
-}
-
-static int parse_args(int argc, char **argv, options *o)
-{
-    int i;
-    memset(o, 0, sizeof *o);
-    o->platform = "egl";
-    for (i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
-        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
-            usage(stdout);
-            exit(0);
-        } else if (!strcmp(a, "--caps")) {
-            o->caps = 1;
-        } else if (!strcmp(a, "--verbose")) {
-            o->verbose = 1;
-        } else if (a[0] == '-' && !v) {
-            fprintf(stderr, "stin-render: %s needs a value\n", a);
-            return 0;
-        } else if (!strcmp(a, "-o")) {
-            o->output = argv[++i];
-        } else if (!strcmp(a, "--tier")) {
-            if (!parse_tier(argv[++i], &o->tier)) {
-                fprintf(stderr, "stin-render: unknown tier '%s' (auto, gl1, gl2, gl4)\n", v);
-                return 0;
-            }
-        } else if (!strcmp(a, "--profile")) {
-            o->profile = argv[++i];
-        } else if (!strcmp(a, "--platform")) {
-            o->platform = argv[++i];
-        } else if (!strcmp(a, "--shadows")) {
-            o->shadows = argv[++i];
-        } else if (!strcmp(a, "--volume-mode")) {
-            i++;
-            if (!strcmp(v, "zpass")) o->debug_flags |= STIN_DEBUG_VOLUME_ZPASS;
-            else if (!strcmp(v, "zfail")) o->debug_flags |= STIN_DEBUG_VOLUME_ZFAIL;
-            else if (strcmp(v, "auto")) {
-                fprintf(stderr, "stin-render: --volume-mode wants auto, zpass or zfail\n");
-                return 0;
-            }
-        } else if (!strcmp(a, "--surface")) {
-            o->surface = argv[++i];
-        } else if (!strcmp(a, "--size")) {
-            char extra;
-            if (sscanf(argv[++i], "%dx%d%c", &o->width, &o->height, &extra) != 2 ||
-                o->width < 1 || o->height < 1 || o->width > 16384 || o->height > 16384) {
-                fprintf(stderr, "stin-render: --size wants WxH with 1..16384, got '%s'\n", v);
-                return 0;
-            }
-        } else if (a[0] == '-') {
-            fprintf(stderr, "stin-render: unknown option %s\n", a);
-            return 0;
-        } else if (!o->scene_path) {
-            o->scene_path = a;
-        } else {
-            fprintf(stderr, "stin-render: more than one scene given ('%s')\n", a);
-            return 0;
-        }
-    }
-    if (!o->scene_path && !o->caps) {
-        fprintf(stderr, "stin-render: no scene file given\n");
-        return 0;
-    }
-    if (o->output) {
-        const char *dot = strrchr(o->output, '.');
-        if (!dot || (strcmp(dot, ".png") && strcmp(dot, ".exr"))) {
-            fprintf(stderr, "stin-render: output must end in .png or .exr: '%s'\n", o->output);
-            return 0;
-        }
-    }
-    return 1;
-}
-
-/* --shadows/--surface: a technique name of that feature, or "auto". */
-static int parse_technique(const char *name, stin_feature f, stin_technique *out)
-{
-    int t;
-    *out = STIN_TECH_NONE;
-    if (!name || !strcmp(name, "auto"))
-        return 1;
-    if (f == STIN_FEATURE_SHADOWS && !strcmp(name, "map")) {
-        *out = STIN_TECH_SHADOWS_MAP_DEPTH; /* narrowed to what the context has, see main */
-        return 1;
-    }
-    for (t = 1; t < STIN_TECH_COUNT; t++) {
-        stin_technique tech = (stin_technique)t;
-        if (!strcmp(stin_technique_name(tech), name) && stin_technique_feature(tech) == f) {
-            *out = tech;
-            return 1;
-        }
-    }
-    fprintf(stderr, "stin-render: unknown %s technique '%s'; this build knows: auto%s",
-            stin_feature_name(f), name, f == STIN_FEATURE_SHADOWS ? ", map" : "");
-    for (t = 1; t < STIN_TECH_COUNT; t++)
-        if (stin_technique_feature((stin_technique)t) == f)
-            fprintf(stderr, ", %s", stin_technique_name((stin_technique)t));
-    fprintf(stderr, "\n");
-    return 0;
+    char msg[1024], line[1600];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(msg, sizeof msg, fmt, ap);
+    va_end(ap);
+    if (log && log->first_error[0])
+        snprintf(line, sizeof line, "%s: %s", msg, log->first_error);
+    else
+        snprintf(line, sizeof line, "%s", msg);
+    one_line_copy(msg, sizeof msg, line);
+    fprintf(stderr, "stin-render: %s\n", msg);
 }
 
 static void print_caps(const stin_caps *c)
@@ -179,15 +61,58 @@ static void print_caps(const stin_caps *c)
     }
 }
 
-static void print_choices(const stin_context *ctx)
+/* The technique per feature; after a frame, with what the frame fell back
+ * to (stin logs that at info level: e.g. point lights that get volumes
+ * under a map technique). */
+static void print_choices(const stin_context *ctx, const cli_log *log)
 {
-    int f;
+    int f, n;
     printf("tier: %s\n", stin_tier_name(stin_query_tier(ctx)));
     for (f = 0; f < STIN_FEATURE_COUNT; f++) {
+        const char *name = stin_feature_name((stin_feature)f);
+        size_t len = strlen(name);
         stin_choice c = stin_query_choice(ctx, (stin_feature)f);
-        printf("%s: %s (%s)\n", stin_feature_name((stin_feature)f),
-               stin_technique_name(c.technique), c.reason);
+        printf("%s: %s (%s)", name, stin_technique_name(c.technique), c.reason);
+        for (n = 0; n < log->note_count; n++)
+            if (!strncmp(log->notes[n], name, len) && !strncmp(log->notes[n] + len, ": ", 2))
+                printf("; frame: %s", log->notes[n] + len + 2);
+        printf("\n");
     }
+}
+
+/* The work limit (--max-triangles): instances x triangles over the scene. */
+static int within_work_limit(const options *o, const scene *s, const cli_log *log)
+{
+    uint64_t tris = scene_triangle_count(s);
+    if (!o->max_triangles || tris <= o->max_triangles)
+        return 1;
+    fail_line(log, "%s: objects: %llu triangles a frame (instances x triangles) exceed the work "
+                   "limit of %llu; raise it with --max-triangles",
+              s->path, (unsigned long long)tris, (unsigned long long)o->max_triangles);
+    return 0;
+}
+
+/* The best map path the context has for --shadows map. */
+static void narrow_map(stin_platform *plat, stin_desc *desc)
+{
+    stin_caps caps;
+    uint64_t depth = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
+    if (stin_detect_caps(stin_platform_get_proc_address, plat, desc->caps_mask,
+                         desc->max_gl_version, &caps) == STIN_OK &&
+        (caps.present & depth) != depth)
+        desc->techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_COMBINE;
+}
+
+static void print_frame(const stin_context *ctx, const scene *s, double ms, int w, int h)
+{
+    stin_frame_stats st = stin_query_frame_stats(ctx);
+    printf("frame: %.2f ms (%dx%d, %llu triangles, %u passes)\n", ms, w, h,
+           (unsigned long long)scene_triangle_count(s), st.passes);
+    if (st.shadow_map_size)
+        printf("shadow maps: %u texels a side\n", st.shadow_map_size);
+    if (st.zpass_casters + st.zfail_casters)
+        printf("shadow volumes: %u triangles, %u casters z-pass, %u z-fail (last output)\n",
+               st.shadow_volume_triangles, st.zpass_casters, st.zfail_casters);
 }
 
 int main(int argc, char **argv)
@@ -199,39 +124,47 @@ int main(int argc, char **argv)
     stin_platform *plat = NULL;
     stin_desc desc;
     stin_context *ctx = NULL;
-    cli_log log = {0, "stin-render", 0};
+    static cli_log log;
     void *block = NULL;
     char err[1024];
+    const char *file;
     int rc = EXIT_FAILED, have_scene = 0, have_gpu = 0;
     image img;
     double ms = 0;
 
     memset(&s, 0, sizeof s);
     memset(&img, 0, sizeof img);
-    if (!parse_args(argc, argv, &o)) {
-        usage(stderr);
+    if (!render_parse_args(argc, argv, &o)) {
+        render_usage(stderr);
         return EXIT_BAD_INPUT;
     }
+    log.program = "stin-render";
     log.verbose = o.verbose;
+    log.collect = 1;
     memset(&desc, 0, sizeof desc);
-    if (!parse_technique(o.shadows, STIN_FEATURE_SHADOWS, &desc.techniques[STIN_FEATURE_SHADOWS]) ||
-        !parse_technique(o.surface, STIN_FEATURE_SURFACE, &desc.techniques[STIN_FEATURE_SURFACE]))
+    if (!render_parse_technique(o.shadows, STIN_FEATURE_SHADOWS, &desc.techniques[STIN_FEATURE_SHADOWS]) ||
+        !render_parse_technique(o.surface, STIN_FEATURE_SURFACE, &desc.techniques[STIN_FEATURE_SURFACE]))
         return EXIT_BAD_INPUT;
     if (o.scene_path) {
         if (!scene_load(o.scene_path, &s, err, sizeof err)) {
-            fprintf(stderr, "stin-render: %s\n", err);
+            fail_line(NULL, "%s", err);
             return EXIT_BAD_INPUT;
         }
         have_scene = 1;
+        if (!within_work_limit(&o, &s, NULL)) {
+            rc = EXIT_BAD_INPUT;
+            goto done;
+        }
     }
+    file = have_scene ? s.path : "stin-render";
     memset(&pd, 0, sizeof pd);
     if (!stin_platform_kind_from_name(o.platform, &pd.kind)) {
-        fprintf(stderr, "stin-render: unknown platform '%s' (egl, osmesa)\n", o.platform);
+        fail_line(NULL, "unknown platform '%s' (egl, osmesa)", o.platform);
         rc = EXIT_BAD_INPUT;
         goto done;
     }
     if (o.profile && !(pd.profile = stin_profile_find(o.profile))) {
-        fprintf(stderr, "stin-render: unknown profile '%s'\n", o.profile);
+        fail_line(NULL, "unknown profile '%s'", o.profile);
         rc = EXIT_BAD_INPUT;
         goto done;
     }
@@ -239,7 +172,7 @@ int main(int argc, char **argv)
     pd.height = o.height ? o.height : (have_scene && s.height ? s.height : 512);
     plat = stin_platform_create(&pd, err, sizeof err);
     if (!plat) {
-        fprintf(stderr, "stin-render: no GL context: %s\n", err);
+        fail_line(NULL, "no GL context: %s", err);
         goto done;
     }
     desc.get_proc_address = stin_platform_get_proc_address;
@@ -248,77 +181,77 @@ int main(int argc, char **argv)
     desc.log_user = &log;
     desc.tier = o.tier;
     desc.debug_flags = o.debug_flags;
+    desc.shadow_map_size = o.shadow_map_size ? o.shadow_map_size
+                         : have_scene      ? (uint32_t)s.shadow_map_size : 0u;
     if (pd.profile) {
         desc.caps_mask = pd.profile->caps_mask;
         desc.max_gl_version = pd.profile->max_gl_version;
     }
-    if (o.shadows && !strcmp(o.shadows, "map")) { /* the best map path the context has */
-        stin_caps caps;
-        uint64_t depth = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
-        if (stin_detect_caps(stin_platform_get_proc_address, plat, desc.caps_mask,
-                             desc.max_gl_version, &caps) == STIN_OK &&
-            (caps.present & depth) != depth)
-            desc.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_COMBINE;
-    }
+    if (o.shadows && !strcmp(o.shadows, "map"))
+        narrow_map(plat, &desc);
     if (o.caps) {
         stin_caps caps;
         if (stin_detect_caps(stin_platform_get_proc_address, plat, desc.caps_mask,
                              desc.max_gl_version, &caps) != STIN_OK) {
-            fprintf(stderr, "stin-render: cannot read GL capabilities\n");
+            fail_line(NULL, "cannot read GL capabilities");
             goto done;
         }
         printf("platform: %s, profile: %s\n", stin_platform_kind_name(pd.kind),
                pd.profile ? pd.profile->name : "none");
         print_caps(&caps);
     }
-    if (have_scene)
-        scene_gpu_size_desc(&s, &desc);
+    if (have_scene && !scene_gpu_size_desc_checked(&s, &desc, err, sizeof err)) {
+        fail_line(NULL, "%s", err);
+        rc = EXIT_BAD_INPUT;
+        goto done;
+    }
     block = malloc(stin_memory_size(&desc));
     if (!block) {
-        fprintf(stderr, "stin-render: cannot allocate %zu bytes\n", stin_memory_size(&desc));
+        fail_line(NULL, "%s: cannot allocate %zu bytes for the stin context", file,
+                  stin_memory_size(&desc));
         goto done;
     }
     {
         stin_result r = stin_create(&desc, block, stin_memory_size(&desc), &ctx);
         if (r != STIN_OK) {
-            fprintf(stderr, "stin-render: cannot create the stin context: %s\n",
-                    stin_result_name(r));
+            fail_line(&log, "%s: cannot create the stin context (%s)", file, stin_result_name(r));
             rc = r == STIN_ERROR_UNSUPPORTED ? EXIT_UNSUPPORTED : EXIT_FAILED;
             goto done;
         }
     }
-    print_choices(ctx);
+    log.note_count = 0; /* from here on: what frames fell back to */
     if (o.caps || !have_scene) {
+        print_choices(ctx, &log);
         rc = 0;
         goto done;
     }
     if (!scene_gpu_create(&g, &s, ctx, err, sizeof err)) {
-        fprintf(stderr, "stin-render: %s\n", err);
+        print_choices(ctx, &log);
+        fail_line(&log, "%s", err);
         rc = EXIT_BAD_INPUT;
         goto done;
     }
     have_gpu = 1;
     if (!aov_capture(&g, ctx, plat, &img, &ms, err, sizeof err)) {
-        fprintf(stderr, "stin-render: %s\n", err);
+        print_choices(ctx, &log);
+        fail_line(&log, "%s: %s", file, err);
         goto done;
     }
-    {
-        stin_frame_stats st = stin_query_frame_stats(ctx);
-        printf("frame: %.2f ms (%dx%d, %llu triangles, %u passes)\n", ms, pd.width, pd.height,
-               (unsigned long long)scene_triangle_count(&s), st.passes);
-        if (st.zpass_casters + st.zfail_casters)
-            printf("shadow volumes: %u triangles, %u casters z-pass, %u z-fail (last output)\n",
-                   st.shadow_volume_triangles, st.zpass_casters, st.zfail_casters);
-    }
+    print_choices(ctx, &log);
+    print_frame(ctx, &s, ms, pd.width, pd.height);
     if (o.output) {
         const char *dot = strrchr(o.output, '.');
         if (!image_write(o.output, &img, strcmp(dot, ".png") == 0, err, sizeof err)) {
-            fprintf(stderr, "stin-render: %s\n", err);
+            fail_line(NULL, "%s", err);
             goto done;
         }
         printf("wrote %s\n", o.output);
     }
-    rc = log.errors ? EXIT_FAILED : 0;
+    rc = 0;
+    if (log.errors) {
+        fail_line(&log, "%s: stin logged %u error(s) during the frame", file, log.errors);
+        rc = EXIT_FAILED;
+    }
 done:
     image_free(&img);
     if (have_gpu)

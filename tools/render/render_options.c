@@ -1,0 +1,186 @@
+/* stin-render's options: parsing and the usage text. */
+#include "render_options.h"
+#include "stin_platform.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+
+void render_usage(FILE *f)
+{
+    fprintf(f,
+            "usage: stin-render SCENE.json [-o OUT.png|OUT.exr] [options]\n"
+            "  --tier auto|gl1|gl2|gl4   force a tier (error if the context cannot run it)\n"
+            "  --profile NAME            capability profile (see docs/profiles.md):");
+    {
+        size_t i;
+        for (i = 0; i < stin_profile_count(); i++)
+            fprintf(f, " %s", stin_profile_at(i)->name);
+    }
+    fprintf(f, "\n"
+               "  --platform egl|osmesa     context backend (default egl)\n"
+               "  --size WxH                image size (default: the scene's, else 512x512)\n"
+               "  --shadows NAME            shadow technique: volume, map-pcf (GLSL tiers), map (map-depth where the\n"
+               "                            context has ARB_shadow, else map-combine), map-depth,\n"
+               "                            map-combine, off (default auto)\n"
+               "  --surface NAME            surface technique (default auto)\n"
+               "  --shadow-map-size N       texels a side of each shadow map: a power of two, 16..8192\n"
+               "                            (default: the scene's shadow_map_size, else 1024)\n"
+               "  --max-triangles N         work limit: triangles one frame may draw, instances x\n"
+               "                            triangles (default %u; 0 = no limit)\n"
+               "  --volume-mode auto|zpass|zfail  shadow-volume counting (diagnostics)\n"
+               "  --caps                    print capabilities and choices, render nothing\n"
+               "  --verbose                 print stin's info log lines\n"
+               "exit codes: 0 ok, 1 failure, 2 bad input, 3 tier/technique unsupported here\n",
+            RENDER_MAX_TRIANGLES_DEFAULT);
+}
+
+static int parse_tier(const char *s, stin_tier *t)
+{
+    if (!strcmp(s, "auto")) *t = STIN_TIER_AUTO;
+    else if (!strcmp(s, "gl1")) *t = STIN_TIER_GL1;
+    else if (!strcmp(s, "gl2")) *t = STIN_TIER_GL2;
+    else if (!strcmp(s, "gl4")) *t = STIN_TIER_GL4;
+    else return 0;
+    return 1;
+}
+
+/* A whole decimal number, nothing after it. */
+static int parse_count(const char *s, uint64_t *out)
+{
+    char *end;
+    unsigned long long v;
+    if (!s[0] || s[0] == '-' || s[0] == '+')
+        return 0;
+    errno = 0;
+    v = strtoull(s, &end, 10);
+    if (errno || *end)
+        return 0;
+    *out = v;
+    return 1;
+}
+
+/* stin_desc.shadow_map_size: a power of two, at most 8192 (and at least 16
+ * here: smaller maps only show blocks). */
+static int parse_map_size(const char *s, uint32_t *out)
+{
+    uint64_t v;
+    if (!parse_count(s, &v) || v < 16 || v > 8192 || (v & (v - 1)))
+        return 0;
+    *out = (uint32_t)v;
+    return 1;
+}
+
+/* --shadow-map-size and --max-triangles; prints the problem. */
+static int parse_number_option(const char *name, const char *value, options *o)
+{
+    int map = !strcmp(name, "--shadow-map-size");
+    if (map ? parse_map_size(value, &o->shadow_map_size) : parse_count(value, &o->max_triangles))
+        return 1;
+    fprintf(stderr, "stin-render: %s wants %s, got '%s'\n", name,
+            map ? "a power of two in [16, 8192]" : "a whole number", value);
+    return 0;
+}
+
+int render_parse_args(int argc, char **argv, options *o)
+{
+    int i;
+    memset(o, 0, sizeof *o);
+    o->platform = "egl";
+    o->max_triangles = RENDER_MAX_TRIANGLES_DEFAULT;
+    for (i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char *v = i + 1 < argc ? argv[i + 1] : NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) {
+            render_usage(stdout);
+            exit(0);
+        } else if (!strcmp(a, "--caps")) {
+            o->caps = 1;
+        } else if (!strcmp(a, "--verbose")) {
+            o->verbose = 1;
+        } else if (a[0] == '-' && !v) {
+            fprintf(stderr, "stin-render: %s needs a value\n", a);
+            return 0;
+        } else if (!strcmp(a, "-o")) {
+            o->output = argv[++i];
+        } else if (!strcmp(a, "--tier")) {
+            if (!parse_tier(argv[++i], &o->tier)) {
+                fprintf(stderr, "stin-render: unknown tier '%s' (auto, gl1, gl2, gl4)\n", v);
+                return 0;
+            }
+        } else if (!strcmp(a, "--profile")) {
+            o->profile = argv[++i];
+        } else if (!strcmp(a, "--platform")) {
+            o->platform = argv[++i];
+        } else if (!strcmp(a, "--shadows")) {
+            o->shadows = argv[++i];
+        } else if (!strcmp(a, "--volume-mode")) {
+            i++;
+            if (!strcmp(v, "zpass")) o->debug_flags |= STIN_DEBUG_VOLUME_ZPASS;
+            else if (!strcmp(v, "zfail")) o->debug_flags |= STIN_DEBUG_VOLUME_ZFAIL;
+            else if (strcmp(v, "auto")) {
+                fprintf(stderr, "stin-render: --volume-mode wants auto, zpass or zfail\n");
+                return 0;
+            }
+        } else if (!strcmp(a, "--shadow-map-size") || !strcmp(a, "--max-triangles")) {
+            if (!parse_number_option(a, argv[++i], o))
+                return 0;
+        } else if (!strcmp(a, "--surface")) {
+            o->surface = argv[++i];
+        } else if (!strcmp(a, "--size")) {
+            char extra;
+            if (sscanf(argv[++i], "%dx%d%c", &o->width, &o->height, &extra) != 2 ||
+                o->width < 1 || o->height < 1 || o->width > 16384 || o->height > 16384) {
+                fprintf(stderr, "stin-render: --size wants WxH with 1..16384, got '%s'\n", v);
+                return 0;
+            }
+        } else if (a[0] == '-') {
+            fprintf(stderr, "stin-render: unknown option %s\n", a);
+            return 0;
+        } else if (!o->scene_path) {
+            o->scene_path = a;
+        } else {
+            fprintf(stderr, "stin-render: more than one scene given ('%s')\n", a);
+            return 0;
+        }
+    }
+    if (!o->scene_path && !o->caps) {
+        fprintf(stderr, "stin-render: no scene file given\n");
+        return 0;
+    }
+    if (o->output) {
+        const char *dot = strrchr(o->output, '.');
+        if (!dot || (strcmp(dot, ".png") && strcmp(dot, ".exr"))) {
+            fprintf(stderr, "stin-render: output must end in .png or .exr: '%s'\n", o->output);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+/* --shadows/--surface: a technique name of that feature, or "auto". */
+int render_parse_technique(const char *name, stin_feature f, stin_technique *out)
+{
+    int t;
+    *out = STIN_TECH_NONE;
+    if (!name || !strcmp(name, "auto"))
+        return 1;
+    if (f == STIN_FEATURE_SHADOWS && !strcmp(name, "map")) {
+        *out = STIN_TECH_SHADOWS_MAP_DEPTH; /* narrowed to what the context has, see main */
+        return 1;
+    }
+    for (t = 1; t < STIN_TECH_COUNT; t++) {
+        stin_technique tech = (stin_technique)t;
+        if (!strcmp(stin_technique_name(tech), name) && stin_technique_feature(tech) == f) {
+            *out = tech;
+            return 1;
+        }
+    }
+    fprintf(stderr, "stin-render: unknown %s technique '%s'; this build knows: auto%s",
+            stin_feature_name(f), name, f == STIN_FEATURE_SHADOWS ? ", map" : "");
+    for (t = 1; t < STIN_TECH_COUNT; t++)
+        if (stin_technique_feature((stin_technique)t) == f)
+            fprintf(stderr, ", %s", stin_technique_name((stin_technique)t));
+    fprintf(stderr, "\n");
+    return 0;
+}

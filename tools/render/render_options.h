@@ -1,0 +1,32 @@
+/* stin-render's command line (render_options.c). */
+#ifndef STIN_RENDER_OPTIONS_H
+#define STIN_RENDER_OPTIONS_H
+
+#include "stin/stin.h"
+
+#include <stdint.h>
+#include <stdio.h>
+
+enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
+
+/* Triangles one frame may draw (instances x triangles, summed over the
+ * objects) unless --max-triangles says otherwise: about 20 s a frame of
+ * shadow volumes on a software rasteriser, and the tool renders three. */
+#define RENDER_MAX_TRIANGLES_DEFAULT (16u << 20)
+
+typedef struct options {
+    const char *scene_path, *output, *profile, *platform, *shadows, *surface;
+    uint32_t debug_flags;
+    uint32_t shadow_map_size;   /* 0: the scene's, else stin's default */
+    uint64_t max_triangles;     /* work limit; 0 = none */
+    stin_tier tier;
+    int width, height, caps, verbose;
+} options;
+
+void render_usage(FILE *f);
+/* Parses argv into *o; on a bad option prints one line to stderr and returns 0. */
+int render_parse_args(int argc, char **argv, options *o);
+/* --shadows/--surface: a technique name of that feature, or "auto". */
+int render_parse_technique(const char *name, stin_feature f, stin_technique *out);
+
+#endif
