@@ -20,7 +20,7 @@ void render_usage(FILE *f)
     fprintf(f, "\n"
                "  --platform egl|osmesa     context backend (default egl)\n"
                "  --size WxH                image size (default: the scene's, else 512x512)\n"
-               "  --shadows NAME            shadow technique: volume, map-pcf (GLSL tiers), map (map-depth where the\n"
+               "  --shadows NAME            shadow technique: vdsm (GL4), volume, map-pcf (GLSL tiers), map (map-depth where the\n"
                "                            context has ARB_shadow, else map-combine), map-depth,\n"
                "                            map-combine, off (default auto)\n"
                "  --surface NAME            surface technique (default auto)\n"
