@@ -4,6 +4,8 @@
 #                   the stin-bench --quick smoke
 #   make demo       install deps if missing, render the example scenes at every tier into out/
 #   make bench      run stin-bench (docs/benchmarks.md)
+#   make fuzz       libFuzzer on the scene loader and on model/texture files, FUZZ_SECONDS
+#                   (default 60) each (docs/fuzzing.md)
 #   make install    PREFIX=/usr/local DESTDIR=  headers, archives, stin.pc
 #   make clean
 
@@ -39,7 +41,7 @@ PLATFORM_OBJ := $(PLATFORM_SRC:%.c=$(B)/obj/%.o)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(B)/obj/%.o) $(COMMON_CXX:%.cpp=$(B)/obj/%.o)
 REF_OBJ := $(REF_SRC:%.c=$(B)/obj/%.o)
 
-.PHONY: all check demo bench install clean deps tests
+.PHONY: all check demo bench install clean deps tests fuzz
 all: $(B)/libstin.a $(B)/libstin_platform.a $(B)/stin-render $(B)/stin-bench
 
 deps:
@@ -96,7 +98,8 @@ $(B)/stin-imagetest: $(IMAGETEST_OBJ) $(B)/libstin_reference.a $(B)/libstin_tool
 SAN_CFLAGS := -std=c99 $(WARN) -g -O1 $(SAN) -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -I$(B) \
   -Iplatform -Itools/common -Itests/reference -Itests/unit $(shell pkg-config --cflags libcjson 2>/dev/null)
 LIB_UNIT := $(filter-out test_noheap test_scene test_reference,$(patsubst tests/unit/%.c,%,$(wildcard tests/unit/test_*.c)))
-UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_reference $(B)/tests/test_noheap
+UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_reference $(B)/tests/test_noheap \
+  $(B)/tests/test_fuzz_scene $(B)/tests/test_fuzz_files
 
 FAKE_GL_SRC := tests/unit/fake_gl.c tests/unit/fake_gl_state.c tests/unit/fake_gl_attrib.c
 $(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c $(FAKE_GL_SRC) $(LIB_SRC) $(B)/shaders_embedded.c $(wildcard src/*.h include/stin/*.h tests/unit/*.h)
@@ -148,6 +151,30 @@ install: $(B)/libstin.a $(B)/libstin_platform.a
 
 clean:
 	rm -rf $(B) out
+
+# ---- fuzzing (docs/fuzzing.md) ----------------------------------------------
+# The loader's sources without GL: the targets link no stin, no platform.
+FUZZ_SRC := $(addprefix tools/common/,isolate.c one_line.c scene_camera.c scene_json.c \
+  scene_json_util.c scene_mesh_file.c scene_model_check.c scene_primitives.c scene_texture.c)
+FUZZ_LIBS := -lOpenImageIO -lOpenImageIO_Util -lassimp -lcjson -lstdc++ -lm
+FUZZ_CXX ?= clang++
+FUZZ_SECONDS ?= 60
+FUZZ_SAN := -g -O1 -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_DIRS_scene := tests/scenes:tests/scenes/bad:tests/fuzz/corpus/scene:tests/fuzz/crashes/scene
+FUZZ_DIRS_files := tests/fuzz/corpus/files:tests/fuzz/crashes/files
+$(B)/fuzz/image_io.o: tools/common/image_io.cpp tools/common/image_io.h
+	@mkdir -p $(@D)
+	$(FUZZ_CXX) -std=c++17 $(WARN) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -Itools/common -c $< -o $@
+$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_SRC) $(B)/fuzz/image_io.o $(wildcard tools/common/*.h)
+	$(FUZZ_CXX) -x c -std=c99 $(WARN) $(FUZZ_SAN) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude \
+	  -Itools/common $(shell pkg-config --cflags libcjson 2>/dev/null) -o $@ $< $(FUZZ_SRC) -x none \
+	  $(B)/fuzz/image_io.o $(FUZZ_LIBS)
+# make check replays the committed corpus and every crash found, without libFuzzer.
+$(B)/tests/test_fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(FUZZ_SRC) $(B)/tests/test_scene $(wildcard tools/common/*.h)
+	$(CC) $(SAN_CFLAGS) -DREPLAY_NAME='"fuzz_$*"' -DREPLAY_DIRS='"$(FUZZ_DIRS_$*)"' \
+	  -o $@ $< tests/fuzz/replay_main.c $(FUZZ_SRC) $(B)/tests/san/image_io.o $(FUZZ_LIBS)
+fuzz: deps $(B)/fuzz/fuzz_scene $(B)/fuzz/fuzz_files
+	@sh tests/fuzz/run.sh $(B) $(FUZZ_SECONDS)
 
 $(B)/stin-reference: $(B)/obj/tests/tools/reference_render.o $(B)/libstin_reference.a $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)

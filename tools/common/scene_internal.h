@@ -82,6 +82,12 @@ int scene_check_regular_file(const char *path, char *why, size_t why_size);
  * known to make assimp loop (a PLY header without end_header). */
 int scene_model_precheck(const char *path, char *why, size_t why_size);
 
+/* scene_load() of text already in memory (size bytes, text[size] == '\0')
+ * as if read from path; relative file names resolve against path. For the
+ * fuzzer, which has no file. */
+int scene_load_text(const char *path, const char *text, size_t size, scene *out, char *err,
+                    size_t err_size);
+
 /* Loads every mesh of a model file into one mesh. On failure writes a
  * reason (no file or key names) into why and returns 0. */
 int scene_mesh_load_file(const char *path, scene_mesh *out, char *why, size_t why_size);

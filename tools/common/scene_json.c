@@ -765,42 +765,63 @@ static char *read_text(scene_parser *p)
     return text;
 }
 
-int scene_load(const char *path, scene *out, char *err, size_t err_size)
+/* Parses text (NUL-terminated) as the contents of path. */
+static int load_from_text(scene_parser *p, const char *path, const char *text, scene *out)
 {
-    scene_parser p;
     scene s;
     cJSON *root;
     const char *end = NULL, *body;
-    char *text;
     int ok;
-    memset(out, 0, sizeof *out);
     memset(&s, 0, sizeof s);
-    p.file = path;
-    p.err = err;
-    p.err_size = err_size;
-    if (err && err_size)
-        err[0] = '\0';
-    if (strlen(path) >= sizeof s.path)
-        return scene_fail(&p, "", "path longer than %zu characters", sizeof s.path - 1);
-    if (!(text = read_text(&p)))
-        return 0;
     body = strncmp(text, "\xEF\xBB\xBF", 3) == 0 ? text + 3 : text; /* UTF-8 BOM */
     root = cJSON_ParseWithOpts(body, &end, 1);
-    if (!root) {
-        syntax_error(&p, body, end ? end : body);
-        free(text);
-        return 0;
-    }
+    if (!root)
+        return syntax_error(p, body, end ? end : body);
     strcpy(s.path, path);
-    ok = parse_scene(&p, root, &s);
+    ok = parse_scene(p, root, &s);
     cJSON_Delete(root);
-    free(text);
     if (!ok) {
         scene_free(&s);
         return 0;
     }
     *out = s;
     return 1;
+}
+
+static int start(scene_parser *p, const char *path, scene *out, char *err, size_t err_size)
+{
+    memset(out, 0, sizeof *out);
+    p->file = path;
+    p->err = err;
+    p->err_size = err_size;
+    if (err && err_size)
+        err[0] = '\0';
+    if (strlen(path) >= sizeof out->path)
+        return scene_fail(p, "", "path longer than %zu characters", sizeof out->path - 1);
+    return 1;
+}
+
+int scene_load(const char *path, scene *out, char *err, size_t err_size)
+{
+    scene_parser p;
+    char *text;
+    int ok;
+    if (!start(&p, path, out, err, err_size) || !(text = read_text(&p)))
+        return 0;
+    ok = load_from_text(&p, path, text, out);
+    free(text);
+    return ok;
+}
+
+int scene_load_text(const char *path, const char *text, size_t size, scene *out, char *err,
+                    size_t err_size)
+{
+    scene_parser p;
+    if (!start(&p, path, out, err, err_size))
+        return 0;
+    if (memchr(text, '\0', size))
+        return scene_fail(&p, "", "contains a NUL byte; not a JSON text file");
+    return load_from_text(&p, path, text, out);
 }
 
 void scene_free(scene *s)
