@@ -209,7 +209,7 @@ static stin_result check_entry_points(stin_context *ctx)
         } else {
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_MISSING_ENTRY_POINT,
                       "%s did not load: %s is off", stin__glfn_name((stin__glfn)i),
-                      need == NEED_GL30 ? "GL 3.0" : stin_cap_name((stin_cap)need));
+                      stin__need_name(need));
         }
     }
     return r;

@@ -8,7 +8,10 @@
 
 
 /* ---- GL entry points ---------------------------------------------------- */
-enum { NEED_CORE = STIN_CAP_COUNT, NEED_GL30, NEED_COUNT };
+/* What an entry point or enum needs: a capability (STIN_CAP_*), GL 1.1
+ * (NEED_CORE) or a core GL version (NEED_GLxy). */
+enum { NEED_CORE = STIN_CAP_COUNT, NEED_GL12, NEED_GL13, NEED_GL14, NEED_GL30, NEED_GL31, NEED_GL32,
+       NEED_GL33, NEED_GL43, NEED_COUNT };
 
 typedef enum stin__glfn {
 #define STIN_X_(ret, name, params, need, alt) STIN_GLFN_##name,
@@ -29,6 +32,14 @@ int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
                   unsigned char loaded[STIN_GLFN_COUNT]);
 const char *stin__glfn_name(stin__glfn fn);
 int stin__glfn_need(stin__glfn fn);
+/* The GL version (major * 10 + minor) a NEED_GLxy names, else 0. */
+int stin__need_version(int need);
+/* "GL 3.3" or the capability's name, for messages. */
+const char *stin__need_name(int need);
+struct stin_context;
+/* 1 when entry point fn loaded and what it needs is present (after the caps
+ * mask and the version cap): the test for optional calls. */
+int stin__gl_available(const struct stin_context *ctx, stin__glfn fn);
 
 /* Calls go through GL(ctx, Name)(args). The checked build first verifies that
  * the capability profile allows the entry point. */

@@ -47,6 +47,10 @@
                                 GLint y, GLsizei w, GLsizei h), NEED_CORE, "")            \
     X(void, TexImage1D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLint border, \
                          GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "")     \
+    X(void, PolygonMode, (GLenum face, GLenum mode), NEED_CORE, "")                       \
+    X(void, DepthRange, (GLdouble n, GLdouble f), NEED_CORE, "")                          \
+    X(void, BlendEquation, (GLenum mode), NEED_GL14, "glBlendEquationEXT")                \
+    X(void, BindSampler, (GLuint unit, GLuint sampler), NEED_GL33, "")                    \
     /* fixed function (compatibility contexts) */                                         \
     X(void, MatrixMode, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                       \
     X(void, LoadMatrixf, (const GLfloat *m), STIN_CAP_FIXED_FUNCTION, "")                 \
@@ -71,6 +75,7 @@
     X(void, TexGeni, (GLenum coord, GLenum pname, GLint param), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, TexGenfv, (GLenum coord, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, AlphaFunc, (GLenum func, GLfloat ref), STIN_CAP_FIXED_FUNCTION, "")           \
+    X(void, PixelTransferf, (GLenum pname, GLfloat v), STIN_CAP_FIXED_FUNCTION, "")       \
     /* multitexture (GL 1.3 / ARB) */                                                     \
     X(void, ActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glActiveTextureARB")    \
     X(void, ClientActiveTexture, (GLenum unit), STIN_CAP_MULTITEXTURE, "glClientActiveTextureARB") \

@@ -27,6 +27,33 @@ const char *stin__glfn_name(stin__glfn fn)
 
 int stin__glfn_need(stin__glfn fn) { return (unsigned)fn < STIN_GLFN_COUNT ? gl_needs[fn] : NEED_CORE; }
 
+int stin__need_version(int need)
+{
+    static const int versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 43};
+    return need >= NEED_CORE && need < NEED_COUNT ? versions[need - NEED_CORE] : 0;
+}
+
+const char *stin__need_name(int need)
+{
+    static const char *const names[NEED_COUNT - NEED_CORE] = {
+        "GL 1.1", "GL 1.2", "GL 1.3", "GL 1.4", "GL 3.0", "GL 3.1", "GL 3.2", "GL 3.3", "GL 4.3"};
+    return need >= NEED_CORE && need < NEED_COUNT ? names[need - NEED_CORE]
+                                                  : stin_cap_name((stin_cap)need);
+}
+
+static int need_present(const stin_context *ctx, int need)
+{
+    int version = stin__need_version(need);
+    if (version)
+        return ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= version;
+    return (ctx->caps.present & STIN_CAP_BIT(need)) != 0;
+}
+
+int stin__gl_available(const stin_context *ctx, stin__glfn fn)
+{
+    return ctx->gl_loaded[fn] && need_present(ctx, gl_needs[fn]);
+}
+
 /* Function and object pointers do not convert in ISO C; copy the bits. */
 typedef void (*stin__any_fn)(void);
 static void store_fn(void *slot, void *p) { stin__memcopy(slot, &p, sizeof p); }
@@ -49,14 +76,6 @@ int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
 }
 
 #if defined(STIN_GL_CHECK) && STIN_GL_CHECK
-static int need_present(const stin_context *ctx, int need)
-{
-    if (need == NEED_CORE)
-        return 1;
-    if (need == NEED_GL30)
-        return ctx->caps.gl_major >= 3;
-    return (ctx->caps.present & STIN_CAP_BIT(need)) != 0;
-}
 
 void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn)
 {
@@ -64,8 +83,7 @@ void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn)
     if (!ctx->gl_loaded[fn] || !need_present(ctx, need)) {
         ctx->gl_violations++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
-                  "%s called but the profile lacks %s", gl_names[fn],
-                  need == NEED_GL30 ? "GL 3.0" : stin_cap_name((stin_cap)need));
+                  "%s called but the profile lacks %s", gl_names[fn], stin__need_name(need));
     }
 }
 
@@ -103,6 +121,17 @@ static int enum_need(GLenum e)
     case GL_TEXTURE_GEN_Q: case GL_TEXTURE_1D:
         return STIN_CAP_FIXED_FUNCTION;
     case GL_INCR_WRAP: case GL_DECR_WRAP: return STIN_CAP_STENCIL_WRAP;
+    case GL_POLYGON_STIPPLE: case GL_FOG: case GL_COLOR_ARRAY: case GL_INDEX_ARRAY:
+    case GL_EDGE_FLAG_ARRAY:
+        return STIN_CAP_FIXED_FUNCTION;
+    case GL_COLOR_SUM: case GL_FOG_COORD_ARRAY: case GL_SECONDARY_COLOR_ARRAY: return NEED_GL14;
+    case GL_TEXTURE_3D: return NEED_GL12;
+    case GL_SAMPLE_ALPHA_TO_COVERAGE: case GL_SAMPLE_ALPHA_TO_ONE: case GL_SAMPLE_COVERAGE:
+        return NEED_GL13;
+    case GL_RASTERIZER_DISCARD: return NEED_GL30;
+    case GL_PRIMITIVE_RESTART: return NEED_GL31;
+    case GL_SAMPLE_MASK: return NEED_GL32;
+    case GL_PRIMITIVE_RESTART_FIXED_INDEX: return NEED_GL43;
     case GL_TEXTURE_2D: return -1; /* enable-able only with fixed function: see below */
     default: return NEED_CORE;
     }
@@ -119,7 +148,7 @@ void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e)
         ctx->gl_violations++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
                   "%s(0x%x) needs %s, which the profile lacks", gl_names[fn], (unsigned)e,
-                  stin_cap_name((stin_cap)need));
+                  stin__need_name(need));
     }
 }
 

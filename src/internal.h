@@ -108,6 +108,13 @@ stin_desc stin__desc_defaults(const stin_desc *desc);
  * then restore it and reset the rest to the documented defaults. */
 void stin__state_save(stin_context *ctx);
 void stin__state_restore(stin_context *ctx);
+/* Caller state no pass sets (caller_state.c): defaults sets GL's defaults
+ * for every tier; fixed_begin, after the attribute push, does the same for
+ * what the fixed pipeline mixes in (texture matrices get a stack level) and
+ * fixed_end, before the pop, gives the texture matrices back. */
+void stin__caller_state_defaults(stin_context *ctx);
+void stin__caller_state_fixed_begin(stin_context *ctx);
+void stin__caller_state_fixed_end(stin_context *ctx);
 
 /* The frame's framebuffer (framebuffer_probe.c). target_init, at
  * stin_create after detection: the default framebuffer's bits, and the

@@ -7,7 +7,8 @@
  * texture unit's bindings, environment and texgen) goes back with one
  * level of GL's own attribute stack. */
 #define FIXED_FUNCTION_BITS \
-    (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_TRANSFORM_BIT | GL_ENABLE_BIT | GL_TEXTURE_BIT)
+    (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_TRANSFORM_BIT | GL_ENABLE_BIT | GL_TEXTURE_BIT | \
+     GL_PIXEL_MODE_BIT)
 
 static int uses_fixed_function(const stin_context *ctx)
 {
@@ -16,9 +17,13 @@ static int uses_fixed_function(const stin_context *ctx)
 
 void stin__state_save(stin_context *ctx)
 {
-    if (uses_fixed_function(ctx))
+    int fixed = uses_fixed_function(ctx);
+    if (fixed)
         GL(ctx, PushAttrib)(FIXED_FUNCTION_BITS);
     ctx->caller_vao = stin__vao_begin(ctx);
+    stin__caller_state_defaults(ctx);
+    if (fixed)
+        stin__caller_state_fixed_begin(ctx);
 }
 
 void stin__state_restore(stin_context *ctx)
@@ -26,8 +31,10 @@ void stin__state_restore(stin_context *ctx)
     uint64_t caps = ctx->caps.present;
     int fixed = uses_fixed_function(ctx);
     if (fixed) {
+        stin__caller_state_fixed_end(ctx);
         GL(ctx, PopAttrib)();
         GL(ctx, AlphaFunc)(GL_ALWAYS, 0.0f); /* colour-buffer group: not pushed */
+        stin__caller_state_defaults(ctx); /* the pop gave back the caller's enables */
     }
     stin__pass_forget(ctx); /* set every field: a module may have touched one directly */
     stin__pass_apply(ctx, &stin__pass_defaults);

@@ -144,7 +144,17 @@
  * colour mask all on, scissor off, current program 0, texture unit 0 active
  * with no texture bound, array buffer 0, vertex array 0's element buffer 0,
  * all client arrays disabled with client unit 0 active (GL1), alpha function
- * ALWAYS/0 (GL1). Where there are vertex array objects the frame draws with
+ * ALWAYS/0 (GL1), and the state below that no pass of stin sets but every
+ * pass relies on, which the frame also establishes before its first draw:
+ * blend equation ADD (GL 1.4+), polygon mode FILL on both faces, depth range
+ * 0..1, logic op, polygon smooth, user clip planes (clip distances) 0-7,
+ * sample alpha-to-coverage, alpha-to-one and coverage (GL 1.3+), rasterizer
+ * discard (3.0+), primitive restart (3.1+; fixed index 4.3+) and sample mask
+ * (3.2+) off, no sampler object on texture units 0-15 (3.3+), and on
+ * compatibility contexts alpha test and polygon stipple off. So a caller may
+ * leave any of it set: the frame's pixels do not change (tests/image
+ * hostile_test.c renders under each such state and compares bit for bit).
+ * Where there are vertex array objects the frame draws with
  * vertex array 0 or its own, never through the caller's, and binds the
  * caller's again at the end.
  * The viewport and the framebuffer binding stay as the frame set them; the
@@ -153,15 +163,22 @@
  * the stencil buffer's contents.
  * On the GL1 tier the frame saves the caller's fixed-function state with one
  * level of the attribute stack (glPushAttrib of the current, lighting,
- * transform, enable and texture groups) and restores it before the list
- * above is applied: lights, materials, light model, shade model, normalize,
- * matrix mode, current colour, and every texture unit's bindings,
- * environment, coordinate generation and enables are the caller's again.
- * Leave one level of the attribute stack free for it.
+ * transform, enable, texture and pixel-mode groups) and one level of each
+ * unit's texture-matrix stack, draws from GL's defaults (no program bound,
+ * texturing, texture coordinate generation, fog, colour material and colour
+ * sum off, identity texture matrices, no pixel-transfer scale or bias,
+ * client arrays off) and restores it before the list above is applied:
+ * lights, materials, light model, shade model, normalize, fog, matrix mode,
+ * current colour, pixel transfer, and every texture unit's bindings,
+ * environment, coordinate generation, matrix and enables are the caller's
+ * again. Leave one level of the attribute stack and of each texture-matrix
+ * stack free for it. ARB assembly programs (GL_VERTEX_PROGRAM_ARB,
+ * GL_FRAGMENT_PROGRAM_ARB) must be off when a GL1 frame runs.
  * With a GLSL technique, the texture units a frame used (the surface
  * technique's units 1 and 2, the shadow maps' units) are left with no 2D,
  * 1D or cube-map texture bound.
- * Every other piece of GL state is left as the caller had it.
+ * Every other piece of GL state is left as the caller had it (framebuffer
+ * sRGB encoding and multisampling too: the frame honours them as the target's).
  * stin_create_mesh leaves the array buffer and vertex array 0's element
  * buffer at 0; the caller's vertex array object stays bound and untouched.
  * stin_create_texture leaves every binding as it found it (the active
@@ -313,6 +330,7 @@ typedef struct stin_caps {
     int max_texture_image_units;  /* fragment shader samplers, 0 without GLSL */
     int max_vertex_texture_units;
     int max_lights;               /* fixed-function lights, 0 on core profiles */
+    int max_clip_planes;          /* user clip planes (clip distances on core profiles) */
     int stencil_bits, depth_bits; /* at stin_create: the bound or the default framebuffer's,
                                    * whichever has the larger stencil; frames probe their own */
     int max_draw_buffers;

@@ -328,6 +328,7 @@ int main(int argc, char **argv)
             pcf_tests(&r, tiers[t], argv[i]);
             surface_tests(&r, tiers[t], argv[i]);
             dot3_tests(&r, tiers[t], argv[i]);
+            hostile_tests(&r, tiers[t], argv[i]);
         }
     }
     stin_platform_destroy(r.plat);

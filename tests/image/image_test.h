@@ -33,5 +33,8 @@ void dot3_tests(run *r, stin_tier tier, const char *path);
 /* GLSL surface detail (normal, parallax, pom) of one scene at one tier, and
  * the shaders/gl2 version check once (surface_test.c). */
 void surface_tests(run *r, stin_tier tier, const char *path);
+/* Frames under hostile caller state, on four-lights, glass-panes and
+ * stone-wall only (hostile_test.c). */
+void hostile_tests(run *r, stin_tier tier, const char *path);
 
 #endif

@@ -1,5 +1,5 @@
 /* glPushAttrib / glPopAttrib of the fake GL: the attribute groups the GL1
- * tier pushes (current, lighting, transform, enable, texture), each
+ * tier pushes (current, lighting, transform, enable, texture, pixel mode), each
  * restoring the fields the GL specification's attribute table puts in it.
  * A group the fake does not model is counted as untracked. */
 #define FAKE_GL_STUBS
@@ -9,7 +9,8 @@
 #include <string.h>
 
 #define FAKE_MODELLED_BITS                                                            \
-    (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_TRANSFORM_BIT | GL_ENABLE_BIT | GL_TEXTURE_BIT)
+    (GL_CURRENT_BIT | GL_LIGHTING_BIT | GL_TRANSFORM_BIT | GL_ENABLE_BIT | GL_TEXTURE_BIT | \
+     GL_PIXEL_MODE_BIT)
 #define S (fake_gl.gl)
 
 static const GLuint lighting_caps[] = {FAKE_GL_LIGHTING, FAKE_GL_COLOR_MATERIAL,
@@ -20,6 +21,7 @@ static const GLuint transform_caps[] = {FAKE_GL_NORMALIZE,   FAKE_GL_RESCALE_NOR
                                         FAKE_GL_CLIP_PLANE0, FAKE_GL_CLIP_PLANE1,
                                         FAKE_GL_CLIP_PLANE2, FAKE_GL_CLIP_PLANE3,
                                         FAKE_GL_CLIP_PLANE4, FAKE_GL_CLIP_PLANE5,
+                                        FAKE_GL_CLIP_PLANE6, FAKE_GL_CLIP_PLANE7,
                                         FAKE_GL_DEPTH_CLAMP};
 
 static void refuse(const char *what)
@@ -115,4 +117,6 @@ void STIN_APIENTRY fake_PopAttrib(void)
         restore_enables(&S, from);
     if (mask & GL_TEXTURE_BIT)
         restore_texture(&S, from);
+    if (mask & GL_PIXEL_MODE_BIT) /* the transfer part; pixel maps and zoom are not modelled */
+        memcpy(S.pixel_transfer, from->pixel_transfer, sizeof S.pixel_transfer);
 }

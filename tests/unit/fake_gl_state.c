@@ -56,6 +56,8 @@ typedef struct named {
 #define FAKE_X_CAP_(name, value, initial) {value, "GL_" #name, initial},
 static const named caps[FAKE_GL_CAP_COUNT] = {FAKE_GL_CAPS(FAKE_X_CAP_)};
 static const named pixel_store[FAKE_GL_PIXEL_STORE_COUNT] = {FAKE_GL_PIXEL_STORE(FAKE_X_CAP_)};
+static const named pixel_transfer[FAKE_GL_PIXEL_TRANSFER_COUNT] = {
+    FAKE_GL_PIXEL_TRANSFER(FAKE_X_CAP_)};
 #undef FAKE_X_CAP_
 #define FAKE_X_UNIT_CAP_(name, value) {value, "GL_" #name, 0},
 static const named unit_caps[FAKE_GL_UNIT_CAP_COUNT] = {FAKE_GL_UNIT_CAPS(FAKE_X_UNIT_CAP_)};
@@ -121,6 +123,9 @@ void fake_gl_state_init(fake_gl_glstate *s)
         s->color_mask[i] = GL_TRUE;
     s->blend_src_rgb = s->blend_src_alpha = GL_ONE;
     s->blend_dst_rgb = s->blend_dst_alpha = GL_ZERO;
+    s->blend_equation = 0x8006; /* GL_FUNC_ADD */
+    s->polygon_mode[0] = s->polygon_mode[1] = 0x1B02; /* GL_FILL */
+    s->depth_range[1] = 1.0f;
     for (i = 0; i < 2; i++) {
         fake_gl_stencil *f = &s->stencil[i];
         f->func = GL_ALWAYS;
@@ -168,6 +173,8 @@ void fake_gl_state_init(fake_gl_glstate *s)
     s->draw_buffer = s->read_buffer = GL_BACK;
     for (i = 0; i < FAKE_GL_PIXEL_STORE_COUNT; i++)
         s->pixel_store[i] = pixel_store[i].initial;
+    for (i = 0; i < FAKE_GL_PIXEL_TRANSFER_COUNT; i++)
+        s->pixel_transfer[i] = (GLfloat)pixel_transfer[i].initial;
 }
 
 static int parse_version(const char *v)
@@ -361,6 +368,49 @@ void STIN_APIENTRY fake_BlendFunc(GLenum s, GLenum d)
     COUNT(BlendFunc);
     S.blend_src_rgb = S.blend_src_alpha = s;
     S.blend_dst_rgb = S.blend_dst_alpha = d;
+}
+
+void STIN_APIENTRY fake_BlendEquation(GLenum mode)
+{
+    COUNT(BlendEquation);
+    S.blend_equation = mode;
+}
+
+void STIN_APIENTRY fake_PolygonMode(GLenum face, GLenum mode)
+{
+    COUNT(PolygonMode);
+    if (face == GL_FRONT || face == GL_FRONT_AND_BACK)
+        S.polygon_mode[0] = mode;
+    if (face == GL_BACK || face == GL_FRONT_AND_BACK)
+        S.polygon_mode[1] = mode;
+    if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
+        gl_error("glPolygonMode", face);
+}
+
+void STIN_APIENTRY fake_DepthRange(GLdouble n, GLdouble f)
+{
+    COUNT(DepthRange);
+    S.depth_range[0] = (GLfloat)(n < 0.0 ? 0.0 : n > 1.0 ? 1.0 : n); /* GL clamps */
+    S.depth_range[1] = (GLfloat)(f < 0.0 ? 0.0 : f > 1.0 ? 1.0 : f);
+}
+
+void STIN_APIENTRY fake_BindSampler(GLuint unit, GLuint sampler)
+{
+    COUNT(BindSampler);
+    if (unit >= FAKE_GL_UNITS)
+        gl_error("glBindSampler", unit);
+    else
+        S.units[unit].sampler = sampler;
+}
+
+void STIN_APIENTRY fake_PixelTransferf(GLenum pname, GLfloat v)
+{
+    int i = find(pixel_transfer, FAKE_GL_PIXEL_TRANSFER_COUNT, pname);
+    COUNT(PixelTransferf);
+    if (i < 0)
+        fake_gl_state_untracked("glPixelTransferf", pname);
+    else
+        S.pixel_transfer[i] = v;
 }
 
 void STIN_APIENTRY fake_AlphaFunc(GLenum func, GLfloat ref)
@@ -781,6 +831,10 @@ static void client_state(const char *call, GLenum array, GLuint on)
     case GL_VERTEX_ARRAY: S.vertex_array = on; break;
     case GL_NORMAL_ARRAY: S.normal_array = on; break;
     case FAKE_COLOR_ARRAY: S.color_array = on; break;
+    case 0x8077: S.index_array = on; break;           /* GL_INDEX_ARRAY */
+    case 0x8079: S.edge_flag_array = on; break;       /* GL_EDGE_FLAG_ARRAY */
+    case 0x8457: S.fog_coord_array = on; break;       /* GL_FOG_COORD_ARRAY */
+    case 0x845E: S.secondary_color_array = on; break; /* GL_SECONDARY_COLOR_ARRAY */
     case GL_TEXTURE_COORD_ARRAY:
         unit_of(S.client_active_texture, call)->texcoord_array = on;
         break;
@@ -980,6 +1034,8 @@ int fake_gl_state_get(GLenum pname, GLint *data)
     case 0x0BA4: *data = (GLint)S.projection_depth; return 1;   /* GL_PROJECTION_STACK_DEPTH */
     case 0x0BA5: *data = (GLint)u->matrix_depth; return 1;      /* GL_TEXTURE_STACK_DEPTH */
     case 0x0BC1: *data = (GLint)S.alpha_func; return 1;         /* GL_ALPHA_TEST_FUNC */
+    case 0x8009: *data = (GLint)S.blend_equation; return 1;     /* GL_BLEND_EQUATION */
+    case 0x0B40: return get_ints(data, (const GLint *)S.polygon_mode, 2); /* GL_POLYGON_MODE */
     case 0x0B91: *data = S.clear_stencil; return 1;             /* GL_STENCIL_CLEAR_VALUE */
     default: break;
     }
@@ -1188,6 +1244,7 @@ static void diff_unit(differ *d, int unit, const fake_gl_unit *a, const fake_gl_
     }
     WORD(texcoord_array, K_BOOL);
     WORD(matrix_depth, K_INT);
+    WORD(sampler, K_INT);
     for (i = 0; i < FAKE_GL_TEXTURE_DEPTH; i++) {
         snprintf(name, sizeof name, "texture matrix[%d]", i);
         floats(d, name, a->matrix[i], b->matrix[i], 16);
@@ -1238,6 +1295,7 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(blend_dst_rgb, K_ENUM);
     WORD(blend_src_alpha, K_ENUM);
     WORD(blend_dst_alpha, K_ENUM);
+    WORD(blend_equation, K_ENUM);
     for (i = 0; i < 2; i++) {
         d->prefix = i ? "stencil back." : "stencil front.";
         diff_stencil(d, &a->stencil[i], &b->stencil[i]);
@@ -1249,6 +1307,8 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(cull_face, K_ENUM);
     WORD(front_face, K_ENUM);
     WORD(shade_model, K_ENUM);
+    words(d, "polygon_mode", K_ENUM, a->polygon_mode, b->polygon_mode, 2);
+    FLOATS(depth_range, 2);
     FLOAT1(polygon_offset_factor);
     FLOAT1(polygon_offset_units);
     words(d, "scissor", K_INT, (const GLuint *)a->scissor, (const GLuint *)b->scissor, 4);
@@ -1296,6 +1356,10 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(vertex_array, K_BOOL);
     WORD(normal_array, K_BOOL);
     WORD(color_array, K_BOOL);
+    WORD(index_array, K_BOOL);
+    WORD(edge_flag_array, K_BOOL);
+    WORD(fog_coord_array, K_BOOL);
+    WORD(secondary_color_array, K_BOOL);
     WORD(array_buffer, K_INT);
     WORD(vertex_array_binding, K_INT);
     WORD(pixel_unpack_buffer, K_INT);
@@ -1309,5 +1373,7 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(read_buffer, K_ENUM);
     for (i = 0; i < FAKE_GL_PIXEL_STORE_COUNT; i++)
         word(d, pixel_store[i].name, K_INT, (GLuint)a->pixel_store[i], (GLuint)b->pixel_store[i]);
+    for (i = 0; i < FAKE_GL_PIXEL_TRANSFER_COUNT; i++)
+        floats(d, pixel_transfer[i].name, &a->pixel_transfer[i], &b->pixel_transfer[i], 1);
     return dd.count;
 }

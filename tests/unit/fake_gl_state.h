@@ -38,6 +38,7 @@
     X(ALPHA_TEST, 0x0BC0, 0) X(AUTO_NORMAL, 0x0D80, 0) X(BLEND, 0x0BE2, 0)                \
     X(CLIP_PLANE0, 0x3000, 0) X(CLIP_PLANE1, 0x3001, 0) X(CLIP_PLANE2, 0x3002, 0)         \
     X(CLIP_PLANE3, 0x3003, 0) X(CLIP_PLANE4, 0x3004, 0) X(CLIP_PLANE5, 0x3005, 0)         \
+    X(CLIP_PLANE6, 0x3006, 0) X(CLIP_PLANE7, 0x3007, 0)                                   \
     X(COLOR_LOGIC_OP, 0x0BF2, 0) X(COLOR_MATERIAL, 0x0B57, 0) X(COLOR_SUM, 0x8458, 0)     \
     X(CULL_FACE, 0x0B44, 0) X(DEPTH_CLAMP, 0x864F, 0) X(DEPTH_TEST, 0x0B71, 0)            \
     X(DITHER, 0x0BD0, 1) X(FOG, 0x0B60, 0) X(FRAMEBUFFER_SRGB, 0x8DB9, 0)                 \
@@ -48,9 +49,11 @@
     X(POINT_SPRITE, 0x8861, 0) X(POLYGON_OFFSET_FILL, 0x8037, 0)                          \
     X(POLYGON_OFFSET_LINE, 0x2A02, 0) X(POLYGON_OFFSET_POINT, 0x2A01, 0)                  \
     X(POLYGON_SMOOTH, 0x0B41, 0) X(POLYGON_STIPPLE, 0x0B42, 0)                            \
-    X(PRIMITIVE_RESTART, 0x8F9D, 0) X(PROGRAM_POINT_SIZE, 0x8642, 0)                      \
+    X(PRIMITIVE_RESTART, 0x8F9D, 0) X(PRIMITIVE_RESTART_FIXED_INDEX, 0x8D69, 0)           \
+    X(PROGRAM_POINT_SIZE, 0x8642, 0) X(RASTERIZER_DISCARD, 0x8C89, 0)                     \
     X(RESCALE_NORMAL, 0x803A, 0) X(SAMPLE_ALPHA_TO_COVERAGE, 0x809E, 0)                   \
     X(SAMPLE_ALPHA_TO_ONE, 0x809F, 0) X(SAMPLE_COVERAGE, 0x80A0, 0)                       \
+    X(SAMPLE_MASK, 0x8E51, 0)                                                             \
     X(SCISSOR_TEST, 0x0C11, 0) X(STENCIL_TEST, 0x0B90, 0)                                 \
     X(STENCIL_TEST_TWO_SIDE_EXT, 0x8910, 0) X(TEXTURE_CUBE_MAP_SEAMLESS, 0x884F, 0)       \
     X(VERTEX_PROGRAM_TWO_SIDE, 0x8643, 0)
@@ -74,10 +77,19 @@
     X(PACK_SKIP_ROWS, 0x0D03, 0) X(PACK_SKIP_PIXELS, 0x0D04, 0) X(PACK_ALIGNMENT, 0x0D05, 4) \
     X(PACK_IMAGE_HEIGHT, 0x806C, 0) X(PACK_SKIP_IMAGES, 0x806B, 0)
 
+/* glPixelTransferf: X(name without GL_, value, initial) */
+#define FAKE_GL_PIXEL_TRANSFER(X)                                                         \
+    X(MAP_COLOR, 0x0D10, 0) X(MAP_STENCIL, 0x0D11, 0) X(INDEX_SHIFT, 0x0D12, 0)           \
+    X(INDEX_OFFSET, 0x0D13, 0) X(RED_SCALE, 0x0D14, 1) X(RED_BIAS, 0x0D15, 0)             \
+    X(GREEN_SCALE, 0x0D18, 1) X(GREEN_BIAS, 0x0D19, 0) X(BLUE_SCALE, 0x0D1A, 1)           \
+    X(BLUE_BIAS, 0x0D1B, 0) X(ALPHA_SCALE, 0x0D1C, 1) X(ALPHA_BIAS, 0x0D1D, 0)            \
+    X(DEPTH_SCALE, 0x0D1E, 1) X(DEPTH_BIAS, 0x0D1F, 0)
+
 #define FAKE_X_ENUM_(name, ...) FAKE_GL_##name,
 enum { FAKE_GL_CAPS(FAKE_X_ENUM_) FAKE_GL_CAP_COUNT };
 enum { FAKE_GL_UNIT_CAPS(FAKE_X_ENUM_) FAKE_GL_UNIT_CAP_COUNT };
 enum { FAKE_GL_PIXEL_STORE(FAKE_X_ENUM_) FAKE_GL_PIXEL_STORE_COUNT };
+enum { FAKE_GL_PIXEL_TRANSFER(FAKE_X_ENUM_) FAKE_GL_PIXEL_TRANSFER_COUNT };
 #undef FAKE_X_ENUM_
 #define FAKE_X_ENUM_(name, value) FAKE_GL_TARGET_##name,
 enum { FAKE_GL_TARGETS(FAKE_X_ENUM_) FAKE_GL_TARGET_COUNT };
@@ -107,6 +119,7 @@ typedef struct fake_gl_unit {
     GLuint texcoord_array;                 /* client state of this client unit */
     GLuint matrix_depth;
     GLfloat matrix[FAKE_GL_TEXTURE_DEPTH][16];
+    GLuint sampler;                        /* glBindSampler (GL 3.3) */
 } fake_gl_unit;
 
 typedef struct fake_gl_light {
@@ -130,12 +143,15 @@ typedef struct fake_gl_glstate {
     GLenum depth_func;
     GLuint depth_mask, color_mask[4];
     GLenum blend_src_rgb, blend_dst_rgb, blend_src_alpha, blend_dst_alpha;
+    GLenum blend_equation;
     fake_gl_stencil stencil[2];            /* front, back */
     GLenum active_stencil_face;            /* EXT_stencil_two_side */
     GLenum alpha_func;
     GLfloat alpha_ref;
     /* rasterisation and the window */
     GLenum cull_face, front_face, shade_model;
+    GLenum polygon_mode[2];                /* front, back */
+    GLfloat depth_range[2];
     GLfloat polygon_offset_factor, polygon_offset_units;
     GLint scissor[4], viewport[4];
     GLfloat clear_color[4];
@@ -158,6 +174,7 @@ typedef struct fake_gl_glstate {
     fake_gl_unit units[FAKE_GL_UNITS];
     /* vertex arrays and buffers */
     GLuint vertex_array, normal_array, color_array;
+    GLuint index_array, edge_flag_array, fog_coord_array, secondary_color_array;
     GLuint array_buffer, vertex_array_binding;
     GLuint pixel_unpack_buffer;
     fake_gl_vao vao0;
@@ -166,6 +183,7 @@ typedef struct fake_gl_glstate {
     GLuint draw_framebuffer, read_framebuffer;
     GLenum draw_buffer, read_buffer;       /* of the default framebuffer */
     GLint pixel_store[FAKE_GL_PIXEL_STORE_COUNT];
+    GLfloat pixel_transfer[FAKE_GL_PIXEL_TRANSFER_COUNT];
 } fake_gl_glstate;
 
 /* GL's initial state (double-buffered default framebuffer of FAKE_GL_WINDOW_*). */
@@ -243,6 +261,11 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_NormalPointer ~, 1
 #define FAKE_STATE_TexCoordPointer ~, 1
 #define FAKE_STATE_VertexAttribPointer ~, 1
+#define FAKE_STATE_PolygonMode ~, 1
+#define FAKE_STATE_DepthRange ~, 1
+#define FAKE_STATE_BlendEquation ~, 1
+#define FAKE_STATE_BindSampler ~, 1
+#define FAKE_STATE_PixelTransferf ~, 1
 #define FAKE_STATE_PushAttrib ~, 1 /* fake_gl_attrib.c */
 #define FAKE_STATE_PopAttrib ~, 1
 

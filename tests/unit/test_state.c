@@ -329,6 +329,77 @@ static void run_frame(stin_output output)
 /* ---- what the caller had, and what the header says comes back ------------------ */
 static int has(stin_cap c) { return (stin_query_caps(ctx)->present & STIN_CAP_BIT(c)) != 0; }
 
+static int gl_version(void)
+{
+    const stin_caps *c = stin_query_caps(ctx);
+    return c->gl_major * 10 + c->gl_minor;
+}
+
+/* Caller state no pass sets, by the GL version that has it (issue 13 item
+ * 19): the caller leaves it on, the frame turns it off and leaves it off. */
+static const struct {
+    int cap, version;
+} hostile_caps[] = {
+    {FAKE_GL_COLOR_LOGIC_OP, 11},  {FAKE_GL_POLYGON_SMOOTH, 11},     {FAKE_GL_CLIP_PLANE2, 11},
+    {FAKE_GL_CLIP_PLANE7, 11},     {FAKE_GL_SAMPLE_ALPHA_TO_COVERAGE, 13},
+    {FAKE_GL_SAMPLE_COVERAGE, 13}, {FAKE_GL_RASTERIZER_DISCARD, 30}, {FAKE_GL_PRIMITIVE_RESTART, 31},
+    {FAKE_GL_SAMPLE_MASK, 32},     {FAKE_GL_PRIMITIVE_RESTART_FIXED_INDEX, 43}};
+#define HOSTILE_SAMPLER 77
+
+/* The caller's hostile state (non_default frames): everything above, a
+ * blend equation, polygon mode, depth range and sampler objects, and on
+ * compatibility contexts what the fixed pipeline would mix in. */
+static void hostile_values(fake_gl_glstate *s)
+{
+    size_t i;
+    for (i = 0; i < sizeof hostile_caps / sizeof hostile_caps[0]; i++)
+        if (gl_version() >= hostile_caps[i].version)
+            s->enabled[hostile_caps[i].cap] = 1;
+    if (gl_version() >= 14)
+        s->blend_equation = 0x8008; /* GL_MAX */
+    s->polygon_mode[0] = s->polygon_mode[1] = 0x1B01; /* GL_LINE */
+    s->depth_range[0] = 0.25f;
+    s->depth_range[1] = 0.75f;
+    if (gl_version() >= 33) {
+        s->units[3].sampler = HOSTILE_SAMPLER;
+        s->units[FAKE_GL_UNITS - 1].sampler = HOSTILE_SAMPLER; /* past stin's units: kept */
+    }
+    if (!has(STIN_CAP_FIXED_FUNCTION))
+        return;
+    s->enabled[FAKE_GL_ALPHA_TEST] = 1;
+    s->enabled[FAKE_GL_POLYGON_STIPPLE] = 1;
+    s->enabled[FAKE_GL_FOG] = 1;
+    s->enabled[FAKE_GL_COLOR_MATERIAL] = 1;
+    s->units[0].enabled[FAKE_GL_TEXTURE_2D] = 1;
+    s->units[0].enabled[FAKE_GL_TEXTURE_GEN_S] = 1;
+    s->units[0].matrix[0][0] = 2.0f;
+    s->color_array = s->edge_flag_array = 1;
+    s->pixel_transfer[FAKE_GL_DEPTH_SCALE] = 0.5f;
+    if (has(STIN_CAP_MULTITEXTURE)) {
+        s->units[1].enabled[FAKE_GL_TEXTURE_1D] = 1;
+        s->units[1].matrix[0][5] = 3.0f;
+        s->units[1].texcoord_array = 1;
+    }
+    if (gl_version() >= 14)
+        s->fog_coord_array = s->secondary_color_array = 1;
+}
+
+/* What the frame leaves of hostile_values: GL's defaults for the state of
+ * every tier (and alpha test and stipple on compatibility contexts). */
+static void hostile_after(fake_gl_glstate *e, const fake_gl_glstate *def)
+{
+    size_t i;
+    int u, units = stin_query_caps(ctx)->max_texture_image_units;
+    for (i = 0; i < sizeof hostile_caps / sizeof hostile_caps[0]; i++)
+        e->enabled[hostile_caps[i].cap] = 0;
+    e->blend_equation = def->blend_equation;
+    memcpy(e->polygon_mode, def->polygon_mode, sizeof e->polygon_mode);
+    memcpy(e->depth_range, def->depth_range, sizeof e->depth_range);
+    for (u = 0; u < units && u < 16; u++)
+        e->units[u].sampler = 0;
+    e->enabled[FAKE_GL_ALPHA_TEST] = e->enabled[FAKE_GL_POLYGON_STIPPLE] = 0;
+}
+
 static void translation(GLfloat *m, float x, float y, float z)
 {
     stin__mat4_identity(m);
@@ -364,6 +435,7 @@ static void caller_values(int non_default)
         s->program = 4242;
     if (has(STIN_CAP_MULTITEXTURE))
         s->active_texture = GL_TEXTURE0 + 1;
+    hostile_values(s);
     if (has(STIN_CAP_FIXED_FUNCTION)) {
         s->shade_model = 0x1D00; /* GL_FLAT */
         s->enabled[FAKE_GL_NORMALIZE] = 1;
@@ -385,6 +457,7 @@ static void expected_after_frame(fake_gl_glstate *e, const stin_frame_desc *fd)
     int gl1 = stin_query_tier(ctx) == STIN_TIER_GL1, u;
     fake_gl_state_init(&def);
     /* left at GL's defaults: the header's list, item by item */
+    hostile_after(e, &def);
     e->enabled[FAKE_GL_DEPTH_TEST] = 0;
     e->depth_mask = GL_TRUE;
     e->depth_func = GL_LESS;
@@ -409,6 +482,7 @@ static void expected_after_frame(fake_gl_glstate *e, const stin_frame_desc *fd)
         e->alpha_func = def.alpha_func;
         e->alpha_ref = def.alpha_ref;
         e->vertex_array = e->normal_array = e->color_array = 0;
+        e->index_array = e->edge_flag_array = e->fog_coord_array = e->secondary_color_array = 0;
         for (u = 0; u < FAKE_GL_UNITS; u++)
             e->units[u].texcoord_array = 0;
         e->client_active_texture = GL_TEXTURE0;

@@ -1,0 +1,82 @@
+/* The GL calls a test makes as the application would, resolved through the
+ * platform (the same entry points stin gets), for the caller-state tests. */
+#ifndef STIN_TESTS_CALLER_GL_H
+#define STIN_TESTS_CALLER_GL_H
+
+#include "stin_platform.h"
+
+#include <GL/gl.h>
+#include <GL/glext.h>
+
+#define CALLER_GL_FUNCS(X)                                                                \
+    X(void, Enable, (GLenum cap))                                                         \
+    X(void, Disable, (GLenum cap))                                                        \
+    X(GLboolean, IsEnabled, (GLenum cap))                                                 \
+    X(void, GetIntegerv, (GLenum pname, GLint *v))                                        \
+    X(void, GetFloatv, (GLenum pname, GLfloat *v))                                        \
+    X(GLenum, GetError, (void))                                                           \
+    X(void, BlendEquation, (GLenum mode))                                                 \
+    X(void, BlendFunc, (GLenum s, GLenum d))                                              \
+    X(void, PolygonMode, (GLenum face, GLenum mode))                                      \
+    X(void, PolygonOffset, (GLfloat factor, GLfloat units))                               \
+    X(void, LogicOp, (GLenum op))                                                         \
+    X(void, DepthRange, (GLdouble n, GLdouble f))                                         \
+    X(void, DepthFunc, (GLenum f))                                                        \
+    X(void, DepthMask, (GLboolean m))                                                     \
+    X(void, ColorMask, (GLboolean r, GLboolean g, GLboolean b, GLboolean a))             \
+    X(void, CullFace, (GLenum mode))                                                      \
+    X(void, FrontFace, (GLenum mode))                                                     \
+    X(void, Scissor, (GLint x, GLint y, GLsizei w, GLsizei h))                            \
+    X(void, StencilFunc, (GLenum f, GLint ref, GLuint mask))                              \
+    X(void, StencilMask, (GLuint mask))                                                   \
+    X(void, PrimitiveRestartIndex, (GLuint index))                                        \
+    X(void, GenSamplers, (GLsizei n, GLuint *s))                                          \
+    X(void, DeleteSamplers, (GLsizei n, const GLuint *s))                                 \
+    X(void, BindSampler, (GLuint unit, GLuint s))                                         \
+    X(void, SamplerParameteri, (GLuint s, GLenum pname, GLint v))                         \
+    X(void, ActiveTexture, (GLenum unit))                                                 \
+    X(void, GenTextures, (GLsizei n, GLuint *t))                                          \
+    X(void, DeleteTextures, (GLsizei n, const GLuint *t))                                 \
+    X(void, BindTexture, (GLenum target, GLuint t))                                       \
+    X(void, TexImage2D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,    \
+                         GLint border, GLenum fmt, GLenum type, const void *pixels))      \
+    X(void, TexParameteri, (GLenum target, GLenum pname, GLint v))                        \
+    X(GLuint, CreateShader, (GLenum type))                                                \
+    X(void, ShaderSource, (GLuint s, GLsizei n, const GLchar *const *src, const GLint *len)) \
+    X(void, CompileShader, (GLuint s))                                                    \
+    X(GLuint, CreateProgram, (void))                                                      \
+    X(void, AttachShader, (GLuint p, GLuint s))                                           \
+    X(void, LinkProgram, (GLuint p))                                                      \
+    X(void, GetProgramiv, (GLuint p, GLenum pname, GLint *v))                             \
+    X(void, UseProgram, (GLuint p))                                                       \
+    X(void, DeleteProgram, (GLuint p))                                                    \
+    X(void, DeleteShader, (GLuint s))                                                     \
+    /* compatibility profile */                                                           \
+    X(void, AlphaFunc, (GLenum f, GLclampf ref))                                          \
+    X(void, ClipPlane, (GLenum plane, const GLdouble *eq))                                \
+    X(void, PolygonStipple, (const GLubyte *mask))                                        \
+    X(void, Fogi, (GLenum pname, GLint v))                                                \
+    X(void, Fogf, (GLenum pname, GLfloat v))                                              \
+    X(void, Fogfv, (GLenum pname, const GLfloat *v))                                      \
+    X(void, MatrixMode, (GLenum mode))                                                    \
+    X(void, LoadMatrixf, (const GLfloat *m))                                              \
+    X(void, ColorMaterial, (GLenum face, GLenum mode))                                    \
+    X(void, Color4f, (GLfloat r, GLfloat g, GLfloat b, GLfloat a))                        \
+    X(void, TexGeni, (GLenum coord, GLenum pname, GLint v))                               \
+    X(void, EnableClientState, (GLenum array))                                            \
+    X(void, DisableClientState, (GLenum array))                                           \
+    X(void, ColorPointer, (GLint size, GLenum type, GLsizei stride, const void *p))       \
+    X(void, PixelTransferf, (GLenum pname, GLfloat v))                                    \
+    X(void, Lightfv, (GLenum light, GLenum pname, const GLfloat *v))                      \
+    X(void, Materialfv, (GLenum face, GLenum pname, const GLfloat *v))
+
+typedef struct caller_gl {
+#define CALLER_GL_X_(ret, name, params) ret(APIENTRY *name) params;
+    CALLER_GL_FUNCS(CALLER_GL_X_)
+#undef CALLER_GL_X_
+} caller_gl;
+
+/* Resolves every entry point the driver has (missing ones stay NULL). */
+void caller_gl_load(caller_gl *gl, stin_platform *plat);
+
+#endif
