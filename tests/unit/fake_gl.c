@@ -41,6 +41,7 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GetUniformLocation ~, 1
 #define FAKE_CUSTOM_GetFramebufferAttachmentParameteriv ~, 1
 #define FAKE_CUSTOM_CheckFramebufferStatus ~, 1
+#define FAKE_CUSTOM_DrawArrays ~, 1
 #define FAKE_CUSTOM_IsFramebuffer ~, 1
 
 /* Generated no-ops that leave the state fake_gl_state.h keeps alone: they
@@ -48,7 +49,6 @@ fake_gl_state fake_gl;
  * which the fake does not keep. Any other generated one is reported by
  * fake_gl_untracked_entry_point when called. */
 #define FAKE_STATELESS_Clear ~, 1
-#define FAKE_STATELESS_DrawArrays ~, 1
 #define FAKE_STATELESS_TexParameteri ~, 1
 #define FAKE_STATELESS_TexParameterfv ~, 1
 #define FAKE_STATELESS_Finish ~, 1
@@ -224,7 +224,17 @@ static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum t
     (void)idx;
     COUNT(DrawElements);
     fake_gl.draw_calls++;
+    fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
     fake_gl.drawn_indices += (unsigned)count;
+}
+
+static void STIN_APIENTRY fake_DrawArrays(GLenum mode, GLint first, GLsizei count)
+{
+    (void)mode;
+    (void)first;
+    (void)count;
+    COUNT(DrawArrays);
+    fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
 }
 
 /* ---- object names ------------------------------------------------------- */
@@ -386,10 +396,10 @@ static GLuint STIN_APIENTRY fake_CreateProgram(void)
 
 static void STIN_APIENTRY fake_GetProgramiv(GLuint p, GLenum pname, GLint *v)
 {
-    (void)p;
     COUNT(GetProgramiv);
     if (pname == GL_LINK_STATUS) {
-        *v = fake_gl.config.fail_link ? GL_FALSE : GL_TRUE;
+        unsigned from = fake_gl.config.fail_link_from;
+        *v = fake_gl.config.fail_link || (from && p - 1000u >= from) ? GL_FALSE : GL_TRUE;
         if (!*v)
             fake_gl.program_link_failures++;
     } else {
@@ -420,7 +430,11 @@ static GLenum STIN_APIENTRY fake_CheckFramebufferStatus(GLenum target)
     const fake_gl_fbo *f = caller_fbo(fake_gl.gl.draw_framebuffer);
     (void)target;
     COUNT(CheckFramebufferStatus);
-    return f && f->status ? f->status : GL_FRAMEBUFFER_COMPLETE;
+    if (f)
+        return f->status ? f->status : GL_FRAMEBUFFER_COMPLETE;
+    if (fake_gl.gl.draw_framebuffer && fake_gl.config.generated_framebuffer_status)
+        return fake_gl.config.generated_framebuffer_status;
+    return GL_FRAMEBUFFER_COMPLETE;
 }
 
 static GLboolean STIN_APIENTRY fake_IsFramebuffer(GLuint fb)

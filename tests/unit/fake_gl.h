@@ -39,6 +39,7 @@ typedef struct fake_gl_config {
     int fail_glsl_from;                  /* shaders with "#version N", N >= this, fail to
                                           * compile (e.g. 150); 0 = every shader compiles */
     int fail_link;                       /* every program fails to link */
+    unsigned fail_link_from;             /* programs from the Nth made on fail to link (0: none) */
     /* The caller's framebuffer objects: bound, their bits are what
      * GL_STENCIL_BITS/GL_DEPTH_BITS and the attachment queries report and
      * their status what glCheckFramebufferStatus does. Other names made by
@@ -46,6 +47,7 @@ typedef struct fake_gl_config {
      * made are not framebuffers (glIsFramebuffer). */
     fake_gl_fbo *framebuffers;
     int framebuffer_count;
+    GLenum generated_framebuffer_status; /* of the ones stin makes: 0 complete */
 } fake_gl_config;
 
 /* Configs shaped like the emulation profiles of DESIGN.md. */
@@ -68,6 +70,7 @@ typedef struct fake_gl_state {
     fake_gl_config config;
     unsigned calls[STIN_GLFN_COUNT];     /* per entry point, index STIN_GLFN_<Name> */
     unsigned draw_calls, drawn_indices;
+    unsigned draws_into_default;         /* draw calls while framebuffer 0 was bound */
     unsigned textures_created, textures_deleted;
     unsigned buffers_created, buffers_deleted;
     unsigned vertex_arrays_created, vertex_arrays_deleted;

@@ -490,6 +490,40 @@ static void test_glsl150_compile_failure_falls_back_to_glsl110(void **state)
     assert_gl_objects_balanced();
 }
 
+/* Programs that link, then one that does not: stin_create fails on a core
+ * context (nothing below GLSL) and must delete what it had built. */
+static void test_failed_create_after_linked_programs_leaves_nothing(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
+    fixture f;
+    (void)state;
+    cfg.fail_link_from = 3;
+    fixture_init(&f, &cfg);
+    assert_int_equal(fixture_create(&f), STIN_ERROR_GL);
+    assert_null(f.ctx);
+    assert_true(fake_gl.programs_created >= 3); /* two linked before the failure */
+    assert_gl_objects_balanced();
+    fixture_free(&f);
+}
+
+/* vdsm's programs fail after lighting's linked: vdsm steps down, logged,
+ * and keeps none of its objects. */
+static void test_vdsm_link_failure_steps_down_and_releases(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
+    fixture f;
+    (void)state;
+    cfg.fail_link_from = STIN__PROG_COUNT + 3 + 1; /* the first program after lighting's */
+    fixture_init(&f, &cfg);
+    f.desc.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VDSM;
+    assert_int_equal(fixture_create(&f), STIN_OK);
+    assert_int_not_equal(stin_query_choice(f.ctx, STIN_FEATURE_SHADOWS).technique,
+                         STIN_TECH_SHADOWS_VDSM);
+    assert_true(fake_log_has(&f.log, STIN_LOG_FALLBACK, "vdsm"));
+    fixture_free(&f);
+    assert_gl_objects_balanced();
+}
+
 static void test_glsl150_failure_on_core_has_nothing_below(void **state)
 {
     fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
@@ -639,6 +673,8 @@ int main(void)
         TEST(test_caps_mask_lowers_the_tier_and_is_logged),
         TEST(test_glsl150_compile_failure_falls_back_to_glsl110),
         TEST(test_glsl150_failure_on_core_has_nothing_below),
+        TEST(test_failed_create_after_linked_programs_leaves_nothing),
+        TEST(test_vdsm_link_failure_steps_down_and_releases),
         TEST(test_link_failure_on_gl21_falls_back_to_fixed_function),
         TEST(test_destroy_deletes_every_gl_object),
         TEST(test_missing_glsl_entry_point_lowers_the_tier),

@@ -386,6 +386,37 @@ static void test_glsl_passes_per_eight_lights(void **state)
     }
 }
 
+/* A driver that refuses the mask's framebuffer: the lights go back to a lit
+ * pass each, drawn into the frame's own target (a caller framebuffer here),
+ * with a warning. */
+#define TARGET_FBO 900u
+static void test_incomplete_mask_falls_back_into_the_target(void **state)
+{
+    static fake_gl_fbo target = {TARGET_FBO, 8, 24, 0};
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
+    stin_frame_desc fd = frame_desc();
+    stin_frame_stats st;
+    (void)state;
+    cfg.framebuffers = &target;
+    cfg.framebuffer_count = 1;
+    cfg.generated_framebuffer_status = 0x8CD6; /* GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT */
+    shadows = STIN_TECH_SHADOWS_VOLUME;
+    create_context(&cfg, 16, 8, 4096);
+    fd.framebuffer = TARGET_FBO;
+    fake_gl.draws_into_default = 0;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    add_lights(8);
+    assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    st = stin_query_frame_stats(ctx);
+    assert_int_equal(st.passes, 1 + 8 + 8); /* as without masks */
+    assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "mask framebuffer incomplete"));
+    assert_int_equal(fake_gl.draws_into_default, 0);
+    assert_int_equal(fake_gl.gl.draw_framebuffer, TARGET_FBO);
+    shadows = STIN_TECH_SHADOWS_OFF;
+    create_profile(FAKE_GL21, 16, 8);
+}
+
 /* Volumes on GLSL tiers with FBOs and packed depth-stencil: each light's
  * visibility goes into a channel of the screen mask and one lit pass shades
  * four lights; without the mask every light gets its own lit pass. */
@@ -637,6 +668,7 @@ int main(void)
         TEST(test_glsl_passes_per_eight_lights),
         TEST(test_blended_draws_once_per_batch),
         TEST(test_volume_lights_share_lit_passes_through_masks),
+        TEST(test_incomplete_mask_falls_back_into_the_target),
         TEST(test_fixed_function_passes_per_max_lights),
         TEST(test_output_pass_counts),
         TEST(test_frame_leaves_documented_state),
