@@ -187,7 +187,8 @@ static int unit_limit(const stin_caps *caps, stin_technique lighting)
 }
 
 /* Where each feature's texture units start: albedo 0, the surface's, then the
- * shadows'. DOT3 takes a fourth unit (albedo textures) when one is spare. */
+ * shadows'. DOT3 takes a fourth unit (albedo textures) when one is spare, and
+ * so does a shadow technique with spare units in its row. */
 static void place_units(stin__selection *sel)
 {
     stin_technique surface = sel->choice[STIN_FEATURE_SURFACE].technique;
@@ -198,6 +199,13 @@ static void place_units(stin__selection *sel)
         surf++;
     sel->shadow_unit = sel->surface_unit + surf;
     sel->units_used = sel->shadow_unit + shadow;
+    {
+        const stin__technique_row *r =
+            stin__technique_row_of(sel->choice[STIN_FEATURE_SHADOWS].technique);
+        int spare = r ? r->spare_units : 0;
+        sel->shadow_spare_units = sel->units_used + spare <= sel->unit_limit ? spare : 0;
+        sel->units_used += sel->shadow_spare_units;
+    }
 }
 
 /* Chooses every feature after lighting, for the lighting in sel. Forced

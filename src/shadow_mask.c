@@ -11,16 +11,18 @@ void stin__mask_init(stin_context *ctx)
 {
     uint64_t need = STIN_CAP_BIT(STIN_CAP_GLSL) | STIN_CAP_BIT(STIN_CAP_FBO) |
                     STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
-    int limit = ctx->sel.unit_limit;
+    const stin__technique_row *r =
+        stin__technique_row_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     stin__memzero(&ctx->mask, sizeof ctx->mask);
     ctx->mask.unit = ctx->sel.shadow_unit;
     if ((ctx->caps.present & need) != need ||
         ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED)
         return;
-    if (limit > 0 && ctx->mask.unit >= limit) {
+    /* the unit is the technique's own (vdsm) or a spare selection granted */
+    if (!(r && r->fragment_units > 0) && ctx->sel.shadow_spare_units < 1) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                   "shadow masks need texture unit %d of %d: each shadowed light gets its own "
-                  "lit pass", ctx->mask.unit, limit);
+                  "lit pass", ctx->mask.unit, ctx->sel.unit_limit);
         return;
     }
     ctx->mask.usable = 1;

@@ -18,6 +18,9 @@ typedef struct stin__technique_row {
     uint8_t fragment_units;  /* texture units its draws add (albedo counts to lighting) */
     uint8_t vertex_units;    /* vertex texture units it adds */
     const struct stin__shadow_technique *shadow; /* shadows: its module */
+    /* Texture units it takes only when they are spare and runs without
+     * otherwise (volumes: the screen mask that shares lit passes). */
+    uint8_t spare_units;
 } stin__technique_row;
 
 #define STIN__TECH_BIT(t) ((uint64_t)1 << (t))
@@ -33,6 +36,7 @@ typedef struct stin__selection {
     /* Texture units of the chosen techniques, in feature order from 0:
      * lighting's albedo, then the surface's, then the shadows'. */
     int surface_unit, shadow_unit, units_used, unit_limit;
+    int shadow_spare_units; /* the shadow technique's spare units it got (from shadow_unit) */
 } stin__selection;
 
 /* Chooses the tier and one technique per feature. Fails (UNSUPPORTED) if a

@@ -14,34 +14,36 @@
  * fixed maps are texture-environment set-ups of the fixed-function passes;
  * the GLSL surface chunks and map-pcf are chunks of the GLSL lit programs. */
 static const stin__technique_row rows[] = {
-    /* technique                      rank needs  lighting conflicts frag vert [module] */
-    {STIN_TECH_LIGHTING_GLSL150,       0, TIER4, STIN_TECH_NONE, 0, 1, 0, NULL},
-    {STIN_TECH_LIGHTING_GLSL110,       1, TIER2, STIN_TECH_NONE, 0, 1, 0, NULL},
-    {STIN_TECH_LIGHTING_FIXED,         2, TIER1, STIN_TECH_NONE, 0, 1, 0, NULL},
+    /* technique                      rank needs  lighting conflicts frag vert [module spare] */
+    {STIN_TECH_LIGHTING_GLSL150,       0, TIER4, STIN_TECH_NONE, 0, 1, 0, NULL, 0},
+    {STIN_TECH_LIGHTING_GLSL110,       1, TIER2, STIN_TECH_NONE, 0, 1, 0, NULL, 0},
+    {STIN_TECH_LIGHTING_FIXED,         2, TIER1, STIN_TECH_NONE, 0, 1, 0, NULL, 0},
     /* exact shadows from a position buffer and per-triangle shadow polygons
      * drawn by a geometry shader into the screen mask (its unit) */
     {STIN_TECH_SHADOWS_VDSM,           0,
      TIER4 | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL), STIN_TECH_LIGHTING_GLSL150, 0, 1, 0,
-     &stin__shadow_vdsm},
-    {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, &stin__shadow_volume},
+     &stin__shadow_vdsm, 0},
+    /* a spare unit holds the screen mask (several lights per lit pass) */
+    {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, &stin__shadow_volume,
+     1},
     {STIN_TECH_SHADOWS_MAP_PCF,        2,
-     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE), GLSL_ANY, 0, 6, 0, &stin__shadow_map_pcf},
+     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE), GLSL_ANY, 0, 6, 0, &stin__shadow_map_pcf, 0},
     {STIN_TECH_SHADOWS_MAP_DEPTH,      3, BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE),
-     STIN_TECH_LIGHTING_FIXED, 0, 1, 0, &stin__shadow_map_fixed},
+     STIN_TECH_LIGHTING_FIXED, 0, 1, 0, &stin__shadow_map_fixed, 0},
     {STIN_TECH_SHADOWS_MAP_COMBINE,    4, BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE),
-     STIN_TECH_LIGHTING_FIXED, 0, 2, 0, &stin__shadow_map_fixed},
-    {STIN_TECH_SHADOWS_OFF,            5, 0, STIN_TECH_NONE, 0, 0, 0, &stin__shadow_off},
+     STIN_TECH_LIGHTING_FIXED, 0, 2, 0, &stin__shadow_map_fixed, 0},
+    {STIN_TECH_SHADOWS_OFF,            5, 0, STIN_TECH_NONE, 0, 0, 0, &stin__shadow_off, 0},
     /* three samplers: albedo, normal map, height map */
-    {STIN_TECH_SURFACE_POM,            0, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, NULL},
-    {STIN_TECH_SURFACE_PARALLAX,       1, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, NULL},
-    {STIN_TECH_SURFACE_NORMAL,         2, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, NULL},
+    {STIN_TECH_SURFACE_POM,            0, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, NULL, 0},
+    {STIN_TECH_SURFACE_PARALLAX,       1, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, NULL, 0},
+    {STIN_TECH_SURFACE_NORMAL,         2, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, NULL, 0},
     {STIN_TECH_SURFACE_DOT3,           3,
      BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) | BIT(TEXTURE_CUBE_MAP) |
-         BIT(FIXED_FUNCTION), STIN_TECH_LIGHTING_FIXED, 0, 2, 0, NULL}, /* a 4th for albedo if spare */
-    {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, NULL},
-    {STIN_TECH_TRANSLUCENT_SOLID,      0, 0, STIN_TECH_NONE, 0, 0, 0, NULL},
-    {STIN_TECH_DISPLACEMENT_OFF,       0, 0, STIN_TECH_NONE, 0, 0, 0, NULL},
-    {STIN_TECH_CSG_OFF,                0, 0, STIN_TECH_NONE, 0, 0, 0, NULL},
+         BIT(FIXED_FUNCTION), STIN_TECH_LIGHTING_FIXED, 0, 2, 0, NULL, 0}, /* a 4th for albedo if spare */
+    {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_TRANSLUCENT_SOLID,      0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_DISPLACEMENT_OFF,       0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_OFF,                0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
 };
 
 static const stin_feature tech_feature[] = {

@@ -400,7 +400,16 @@ static void test_texture_unit_budget(void **state)
     assert_int_equal(stin__select(&c, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_POM);
     assert_int_equal(sel.surface_unit, 1);
-    assert_int_equal(sel.shadow_unit, 3); /* volumes take none */
+    assert_int_equal(sel.shadow_unit, 3); /* volumes need none ... */
+    assert_int_equal(sel.shadow_spare_units, 1); /* ... and take a spare one for the mask */
+    assert_int_equal(sel.units_used, 4);
+    /* with the surface's units the last, no unit is spare: volumes run without */
+    c.max_texture_image_units = 3;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
+    assert_int_equal(sel.shadow_spare_units, 0);
+    assert_int_equal(sel.units_used, 3);
+    c.max_texture_image_units = 8;
     forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
     assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_MAP_PCF);
