@@ -69,6 +69,9 @@ static stin_result validate(stin_context *ctx, const stin_mesh_desc *d, uint32_t
                     "stin_create_mesh: need positions, vertex_count > 0 and indices with "
                     "index_count a positive multiple of 3 (got %u vertices, %u indices)",
                     d->vertex_count, d->index_count);
+    if (!stin__isfinite(d->weld_tolerance))
+        return fail(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                    "stin_create_mesh: weld_tolerance is NaN or Inf", 0, 0);
     for (i = 0; i < d->index_count; i++)
         if (d->indices[i] >= d->vertex_count)
             return fail(ctx, STIN_ERROR_INVALID_MESH, STIN_LOG_MESH_INDEX_RANGE,
@@ -246,8 +249,8 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     fix_normals(verts, desc->vertex_count, tris, kept, desc->normals != NULL);
     stin__mesh_tangents(verts, desc->vertex_count, tris, kept, (float *)(void *)ctx->scratch,
                         desc->uvs != NULL);
-    r = stin__mesh_adjacency_build(ctx, verts, desc->vertex_count, tris, kept,
-                                   ctx->adjacency + 3u * tfirst, &m->info);
+    r = stin__mesh_adjacency_build(ctx, verts, desc->vertex_count, desc->weld_tolerance, tris,
+                                   kept, ctx->adjacency + 3u * tfirst, &m->info);
     if (r != STIN_OK) {
         stin__range_give(&ctx->vertex_ranges, vfirst);
         stin__range_give(&ctx->triangle_ranges, tfirst);

@@ -1,8 +1,8 @@
-/* Edge adjacency over position-welded vertices: which triangle lies across
- * each edge, how many edges are open or shared by more than two triangles,
- * and whether the mesh is a consistently oriented closed 2-manifold.
- * Vertices are welded by exact position so that split normals or uv seams
- * do not open the mesh. */
+/* Edge adjacency over position-welded vertices (mesh_weld.c): which
+ * triangle lies across each edge, how many edges are open or shared by more
+ * than two triangles, and whether the mesh is a consistently oriented closed
+ * 2-manifold. Welding by position means split normals or uv seams do not
+ * open the mesh. */
 #include "internal.h"
 
 #define NO_TRI 0xffffffffu
@@ -27,55 +27,10 @@ size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count)
     return stin__align16(weld) + (size_t)edges * (sizeof(edge_entry) + 1u) + 32u;
 }
 
-static uint32_t mix(uint32_t h)
-{
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    h ^= h >> 16;
-    return h;
-}
-
-static uint32_t float_bits(float f)
-{
-    union { float f; uint32_t u; } v;
-    v.f = f == 0.0f ? 0.0f : f; /* -0 welds with +0 */
-    return v.u;
-}
-
-static void weld_positions(const stin__vertex *verts, uint32_t n, uint32_t *weld,
-                           uint32_t *table, uint32_t size)
-{
-    uint32_t i;
-    for (i = 0; i < size; i++)
-        table[i] = NO_TRI;
-    for (i = 0; i < n; i++) {
-        const float *p = verts[i].position;
-        uint32_t h = mix(float_bits(p[0]) ^ mix(float_bits(p[1]) ^ mix(float_bits(p[2]))));
-        uint32_t s = h & (size - 1);
-        for (;;) {
-            uint32_t o = table[s];
-            if (o == NO_TRI) {
-                table[s] = i;
-                weld[i] = i;
-                break;
-            }
-            if (float_bits(verts[o].position[0]) == float_bits(p[0]) &&
-                float_bits(verts[o].position[1]) == float_bits(p[1]) &&
-                float_bits(verts[o].position[2]) == float_bits(p[2])) {
-                weld[i] = o;
-                break;
-            }
-            s = (s + 1) & (size - 1);
-        }
-    }
-}
-
-stin_result stin__mesh_adjacency_build(stin_context *ctx, const stin__vertex *verts,
-                                       uint32_t vertex_count, const uint32_t *tris,
-                                       uint32_t tri_count, uint32_t *adjacency,
-                                       stin_mesh_info *info)
+stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
+                                       uint32_t vertex_count, float weld_tolerance,
+                                       const uint32_t *tris, uint32_t tri_count,
+                                       uint32_t *adjacency, stin_mesh_info *info)
 {
     uint32_t weld_size = pow2_at_least(2ull * vertex_count);
     uint32_t edge_size = pow2_at_least(4ull * tri_count);
@@ -89,7 +44,8 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, const stin__vertex *ve
 
     if (stin__adjacency_scratch_bytes(vertex_count, tri_count) > ctx->scratch_bytes)
         return STIN_ERROR_CAPACITY;
-    weld_positions(verts, vertex_count, weld, weld_table, weld_size);
+    info->welded_vertices =
+        stin__weld_positions(verts, vertex_count, weld_tolerance, weld, weld_table, weld_size);
     for (i = 0; i < edge_size; i++) {
         edges[i].a = NO_TRI;
         counts[i] = 0;
@@ -98,7 +54,7 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, const stin__vertex *ve
         uint32_t t = he / 3u, e = he % 3u;
         uint32_t va = weld[tris[3 * t + e]], vb = weld[tris[3 * t + (e + 1) % 3]];
         uint32_t a = va < vb ? va : vb, b = va < vb ? vb : va;
-        uint32_t s = mix(a * 0x9e3779b9u ^ mix(b)) & (edge_size - 1);
+        uint32_t s = stin__weld_mix(a * 0x9e3779b9u ^ stin__weld_mix(b)) & (edge_size - 1);
         adjacency[he] = NO_TRI;
         while (edges[s].a != NO_TRI && (edges[s].a != a || edges[s].b != b))
             s = (s + 1) & (edge_size - 1);

@@ -58,11 +58,20 @@ stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture t
 
 /* Points attributes 0..3 (position, normal, uv, tangent) at base (NULL with a VBO bound). */
 void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base);
-/* Adjacency over position-welded vertices; fills info's edge counts. */
-stin_result stin__mesh_adjacency_build(stin_context *ctx, const stin__vertex *verts,
-                                       uint32_t vertex_count, const uint32_t *tris,
-                                       uint32_t tri_count, uint32_t *adjacency,
-                                       stin_mesh_info *info);
+/* Adjacency over position-welded vertices (weld_tolerance as in
+ * stin_mesh_desc; welded positions are snapped); fills info's edge counts
+ * and welded_vertices. */
+stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
+                                       uint32_t vertex_count, float weld_tolerance,
+                                       const uint32_t *tris, uint32_t tri_count,
+                                       uint32_t *adjacency, stin_mesh_info *info);
+/* weld[i] = the first vertex within `tolerance` of vertex i (see
+ * stin_mesh_desc.weld_tolerance), using `table` (size a power of two at least
+ * 2 n) as scratch; moves welded positions onto it and returns how many moved. */
+uint32_t stin__weld_positions(stin__vertex *verts, uint32_t n, float tolerance, uint32_t *weld,
+                              uint32_t *table, uint32_t size);
+/* The integer hash welding and adjacency use. */
+uint32_t stin__weld_mix(uint32_t h);
 /* Bytes of scratch the adjacency build needs for these sizes. */
 size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count);
 /* Per-vertex tangents (Gram-Schmidt, handedness in w); uses scratch. */

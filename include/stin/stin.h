@@ -563,6 +563,13 @@ typedef struct stin_mesh_desc {
     uint32_t vertex_count;
     const uint32_t *indices;  /* 3 per triangle, counter-clockwise front faces */
     uint32_t index_count;
+    /* Vertices whose positions differ by at most this much on every axis are
+     * one vertex for adjacency (closed meshes get closed volumes) and are
+     * snapped onto the first of them, so volumes and drawn surface stay
+     * watertight. 0 (default): 2^-20 of the mesh's largest bounding-box
+     * extent, which joins seams and poles that differ in their last bits;
+     * negative: bit-equal positions only. */
+    float weld_tolerance;
 } stin_mesh_desc;
 
 typedef struct stin_mesh_info {
@@ -572,6 +579,7 @@ typedef struct stin_mesh_info {
     uint32_t nonmanifold_edges;    /* edges with more than two triangles, or two that
                                     * traverse it in the same direction */
     int closed_manifold;           /* 1 when every edge has exactly two opposite triangles */
+    uint32_t welded_vertices;      /* vertices snapped onto another (weld_tolerance) */
     float bounds_min[3], bounds_max[3];
 } stin_mesh_info;
 

@@ -282,6 +282,78 @@ static void test_closed_cube_with_split_normals(void **state)
     assert_int_equal(stin_mesh_adjacency(ctx, m, 12, nb), STIN_ERROR_INVALID_ARGUMENT);
 }
 
+/* x moved by `ulps` units in the last place (no libm in this test). */
+static float ulp_step(float x, int ulps)
+{
+    union { float f; int32_t i; } u;
+    u.f = x;
+    u.i += x < 0.0f ? -ulps : ulps;
+    return u.f;
+}
+
+/* The cube's copies on faces 0-2 moved a few ulps, as exporters leave seams
+ * and poles: welded by default (closed, positions snapped onto the first
+ * copy), open with bit-equal welding, open when a face is really apart. */
+static void test_weld_tolerance_closes_seams(void **state)
+{
+    float pos[72], nrm[72];
+    uint32_t idx[36], v;
+    int k;
+    stin_mesh_desc md;
+    stin_mesh_info info;
+    stin_mesh m;
+    const stin__vertex *stored;
+    (void)state;
+    cube(pos, nrm, idx);
+    for (v = 0; v < 12; v++)
+        for (k = 0; k < 3; k++)
+            pos[3 * v + k] = ulp_step(pos[3 * v + k], 1 + (int)(v % 3));
+    md = mesh_desc(pos, 24, idx, 36);
+    assert_int_equal(create(&md, &m), STIN_OK);
+    info = info_of(m);
+    assert_int_equal(info.closed_manifold, 1);
+    assert_int_equal(info.open_edges, 0);
+    {
+        uint32_t moved = 0, w; /* copies that differ from their corner's first copy */
+        for (v = 0; v < 24; v++)
+            for (w = 0; w < v; w++)
+                if (absf(pos[3 * v] - pos[3 * w]) < 1e-4f && absf(pos[3 * v + 1] - pos[3 * w + 1]) < 1e-4f &&
+                    absf(pos[3 * v + 2] - pos[3 * w + 2]) < 1e-4f) {
+                    moved += memcmp(pos + 3 * v, pos + 3 * w, 3 * sizeof(float)) != 0;
+                    break;
+                }
+        assert_true(moved > 0);
+        assert_int_equal(info.welded_vertices, moved);
+    }
+    stored = ctx->vertices + stin__mesh_lookup(ctx, m, NULL)->first_vertex;
+    for (v = 0; v < 24; v++) {
+        uint32_t w;
+        for (w = 0; w < 24; w++) /* every copy of a corner holds one position now */
+            if (absf(stored[v].position[0] - stored[w].position[0]) < 1e-4f &&
+                absf(stored[v].position[1] - stored[w].position[1]) < 1e-4f &&
+                absf(stored[v].position[2] - stored[w].position[2]) < 1e-4f)
+                assert_memory_equal(stored[v].position, stored[w].position, 3 * sizeof(float));
+    }
+    md.weld_tolerance = -1.0f; /* bit-equal only */
+    assert_int_equal(create(&md, &m), STIN_OK);
+    info = info_of(m);
+    assert_int_equal(info.closed_manifold, 0);
+    assert_true(info.open_edges > 0);
+    assert_int_equal(info.welded_vertices, 0);
+    /* a face 1/1000 of the cube away stays apart at the default tolerance */
+    cube(pos, nrm, idx);
+    for (v = 0; v < 4; v++)
+        pos[3 * v] += 0.002f;
+    md = mesh_desc(pos, 24, idx, 36);
+    assert_int_equal(create(&md, &m), STIN_OK);
+    assert_int_equal(info_of(m).open_edges, 8); /* its 4 edges and its neighbours 4 */
+    md.weld_tolerance = 0.01f; /* unless the caller says so */
+    assert_int_equal(create(&md, &m), STIN_OK);
+    assert_int_equal(info_of(m).closed_manifold, 1);
+    md.weld_tolerance = NAN;
+    assert_int_equal(create(&md, &m), STIN_ERROR_INVALID_ARGUMENT);
+}
+
 /* -0 and +0 are the same position. */
 static void test_negative_zero_welds(void **state)
 {
@@ -702,6 +774,7 @@ int main(void)
         TEST(test_all_degenerate_is_invalid),
         TEST(test_some_degenerate_are_dropped),
         TEST(test_closed_cube_with_split_normals),
+        TEST(test_weld_tolerance_closes_seams),
         TEST(test_negative_zero_welds),
         TEST(test_open_quad),
         TEST(test_tetrahedron),
