@@ -45,6 +45,14 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         return STIN_ERROR_INVALID_ARGUMENT;
     ctx->frame = *desc;
     ctx->draw_count = ctx->light_count = 0;
+    /* The projection every pass draws with, known from here on
+     * (stin_query_frame_projection): a shadow technique may move its far
+     * plane to infinity (volumes), whatever lights the frame gets. */
+    stin__memcopy(ctx->projection, desc->projection, sizeof ctx->projection);
+    ctx->volume.depth_clamp = ctx->volume.infinite = 0;
+    if (ctx->shadow->prepare)
+        ctx->shadow->prepare(ctx);
+    stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);
     stin__memzero(&ctx->stats, sizeof ctx->stats);
     ctx->state = STIN__IN_FRAME;
     return STIN_OK;
@@ -236,17 +244,11 @@ static void order_draws(stin_context *ctx)
 
 /* ---- stages ---------------------------------------------------------------- */
 
-/* The projection every pass draws with; a shadow technique may move its far
- * plane to infinity (volumes). */
+/* GL is the caller's until now (the projection was set at begin). */
 static void stage_prepare(stin_context *ctx)
 {
-    stin__memcopy(ctx->projection, ctx->frame.projection, sizeof ctx->projection);
-    ctx->volume.depth_clamp = ctx->volume.infinite = 0;
-    stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);
     stin__pass_forget(ctx); /* the caller's state is unknown */
     ctx->units_used = 0;
-    if (ctx->shadow->prepare)
-        ctx->shadow->prepare(ctx);
 }
 
 /* Light pre-passes (shadow maps): before the target is bound and cleared,

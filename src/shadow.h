@@ -29,7 +29,10 @@ typedef struct stin__shadow_technique {
     /* Set-up at stin_create (GL objects) and their release; init may demote. */
     stin_result (*init)(stin_context *ctx);
     void (*release)(stin_context *ctx);
-    /* Per frame, before anything is drawn: the projection the frame uses. */
+    /* At stin_begin_frame: the camera projection the frame draws with
+     * (ctx->projection holds the caller's). It may not depend on the frame's
+     * lights, which come later: stin_query_frame_projection is valid from
+     * begin on, for the application's own draws into the same depth buffer. */
     void (*prepare)(stin_context *ctx);
     /* Light pre-passes (maps): before the frame's target is bound and
      * cleared, since without FBOs they draw in the frame's own buffer. */

@@ -546,22 +546,10 @@ static void face_end(stin_context *ctx)
 
 /* ---- the module ------------------------------------------------------------ */
 
-static int any_point_light(const stin_context *ctx)
-{
-    uint32_t i;
-    for (i = 0; i < ctx->light_count; i++)
-        if (ctx->lights[i].type == STIN_LIGHT_POINT)
-            return 1;
-    return 0;
-}
-
-/* Point lights without faces fall back to volumes: the frame needs their
- * projection then (the faces' passes are drawn with it too). */
-static void fixed_prepare(stin_context *ctx)
-{
-    if (any_point_light(ctx))
-        stin__volume_projection(ctx);
-}
+/* Point lights without faces fall back to volumes, whose projection the
+ * faces' passes are drawn with too; lights come after the projection is
+ * fixed, so every frame uses it. */
+static void fixed_prepare(stin_context *ctx) { stin__volume_projection(ctx); }
 
 /* The light's map test on the lit pass; a point light's six faces each
  * light their own pyramid, or its stencil volumes where there are no faces. */

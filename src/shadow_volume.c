@@ -32,8 +32,6 @@ static int is_perspective(const float p[16])
 
 void stin__volume_projection(stin_context *ctx)
 {
-    if (ctx->light_count == 0)
-        return;
     if (is_perspective(ctx->projection)) {
         /* Row 3 of the frustum to (eps - 1, (eps - 2) n): the far plane goes to
          * infinity and w = 0 vertices land just inside NDC z = 1. Preferred

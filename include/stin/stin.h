@@ -725,10 +725,13 @@ typedef struct stin_frame_stats {
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);
 
-/* The projection the last frame's depth buffer was rendered with. Stencil
- * shadow volumes without depth clamp move the far plane to infinity (the
- * nudged P_inf of Everitt & Kilgard), so a caller that unprojects depth must
- * use this rather than its own. */
+/* The projection the frame draws with, valid from stin_begin_frame until the
+ * next one. Stencil shadow volumes (and map-depth / map-combine, whose point
+ * lights may use them) move a perspective far plane to infinity (the nudged
+ * P_inf of Everitt & Kilgard) in every frame, whatever its lights, so an
+ * application that draws its own geometry into the same depth buffer (before
+ * stin with desc.no_clear, or after) must draw it with this projection, and
+ * one that unprojects depth must use it rather than its own. */
 void stin_query_frame_projection(const stin_context *ctx, float out[16]);
 
 /* Sample i of n of an area light: the point light the soft-shadow pass uses

@@ -386,6 +386,40 @@ static void test_glsl_passes_per_eight_lights(void **state)
     }
 }
 
+/* The frame's projection is known at stin_begin_frame, before any light,
+ * and does not depend on the lights (the application draws its own geometry
+ * with it): volumes move a perspective far plane to infinity in every
+ * frame; shadows off keep the caller's. */
+static void test_frame_projection_is_known_at_begin(void **state)
+{
+    stin_frame_desc fd = frame_desc();
+    float p[16], n = 0.5f, f = 20.0f;
+    (void)state;
+    memset(fd.projection, 0, sizeof fd.projection);
+    fd.projection[0] = fd.projection[5] = 1.0f;
+    fd.projection[10] = -(f + n) / (f - n);
+    fd.projection[11] = -1.0f;
+    fd.projection[14] = -2.0f * f * n / (f - n);
+    shadows = STIN_TECH_SHADOWS_VOLUME;
+    create_profile(FAKE_GL21, 16, 8);
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    stin_query_frame_projection(ctx, p);
+    assert_true(p[10] > -1.0f && p[10] < -0.999999f); /* eps - 1 */
+    assert_true(p[14] < -1.999f * n && p[14] > -2.001f * n);  /* (eps - 2) n */
+    assert_int_equal(stin_end_frame(ctx), STIN_OK); /* no lights: the same projection */
+    {
+        float after[16];
+        stin_query_frame_projection(ctx, after);
+        assert_memory_equal(p, after, sizeof p);
+    }
+    shadows = STIN_TECH_SHADOWS_OFF;
+    create_profile(FAKE_GL21, 16, 8);
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    stin_query_frame_projection(ctx, p);
+    assert_memory_equal(p, fd.projection, sizeof p);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+}
+
 /* A driver that refuses the mask's framebuffer: the lights go back to a lit
  * pass each, drawn into the frame's own target (a caller framebuffer here),
  * with a warning. */
@@ -669,6 +703,7 @@ int main(void)
         TEST(test_blended_draws_once_per_batch),
         TEST(test_volume_lights_share_lit_passes_through_masks),
         TEST(test_incomplete_mask_falls_back_into_the_target),
+        TEST(test_frame_projection_is_known_at_begin),
         TEST(test_fixed_function_passes_per_max_lights),
         TEST(test_output_pass_counts),
         TEST(test_frame_leaves_documented_state),
