@@ -37,6 +37,9 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         !finite_n(desc->ambient, 3) || !finite_n(desc->clear_color, 4))
         return arg_error(ctx, "stin_begin_frame", "view, projection, ambient and clear colour "
                                                   "must be finite");
+    if (stin__mat4_singular(desc->view) || stin__mat4_singular(desc->projection))
+        return arg_error(ctx, "stin_begin_frame", "view and projection must be invertible "
+                                                  "(an all-zero or singular matrix draws nothing)");
     if ((unsigned)desc->output > STIN_OUTPUT_VISIBILITY)
         return arg_error(ctx, "stin_begin_frame", "unknown output");
     if (desc->framebuffer && !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)))

@@ -68,6 +68,50 @@ int stin__mat4_invert(float out[16], const float m[16])
     return 1;
 }
 
+/* Singular or nearly so, whatever the scale: |det| within 1e-12 of the
+ * smaller of its Hadamard bounds (the product of the row lengths, or of the
+ * column lengths; the columns' keeps a far translation from looking
+ * singular). Determinant by elimination with partial pivoting, in double. */
+int stin__mat4_singular(const float m[16])
+{
+    double a[4][4], det = 1.0, rows = 1.0, cols = 1.0;
+    int r, c, k;
+    for (r = 0; r < 4; r++) {
+        double rl = 0.0, cl = 0.0;
+        for (c = 0; c < 4; c++) {
+            a[r][c] = m[4 * c + r]; /* column-major: row r, column c */
+            rl += (double)m[4 * c + r] * m[4 * c + r];
+            cl += (double)m[4 * r + c] * m[4 * r + c];
+        }
+        rows *= rl;
+        cols *= cl;
+    }
+    for (k = 0; k < 4; k++) {
+        int p = k;
+        for (r = k + 1; r < 4; r++)
+            if ((a[r][k] < 0 ? -a[r][k] : a[r][k]) > (a[p][k] < 0 ? -a[p][k] : a[p][k]))
+                p = r;
+        if (a[p][k] == 0.0)
+            return 1;
+        if (p != k)
+            for (c = 0; c < 4; c++) {
+                double t = a[k][c];
+                a[k][c] = a[p][c];
+                a[p][c] = t;
+            }
+        det *= a[k][k];
+        for (r = k + 1; r < 4; r++) {
+            double f = a[r][k] / a[k][k];
+            for (c = k; c < 4; c++)
+                a[r][c] -= f * a[k][c];
+        }
+    }
+    /* squared bounds: compare det^2 with (1e-12)^2 times them (an overflowing
+     * bound, entries near float's largest, cannot judge: exact zero only) */
+    rows = rows < cols ? rows : cols;
+    return rows > 1e300 ? det == 0.0 : det * det <= 1e-24 * rows;
+}
+
 void stin__mat3_normal(float out[9], const float m[16])
 {
     /* inverse transpose of the upper 3x3 = cofactor matrix / det */

@@ -685,8 +685,9 @@ typedef enum stin_output {
 } stin_output;
 
 typedef struct stin_frame_desc {
-    float view[16];          /* column-major world -> eye */
-    float projection[16];    /* column-major eye -> clip */
+    float view[16];          /* column-major world -> eye; required: finite and invertible */
+    float projection[16];    /* column-major eye -> clip; required: finite and invertible
+                              * (all zeros, e.g. a forgotten matrix, is an error) */
     int viewport[4];         /* x, y, width, height; required */
     uint32_t framebuffer;    /* GL framebuffer name to draw into; 0 = default. Else a
                               * complete framebuffer object of the context:

@@ -269,6 +269,40 @@ static void test_non_finite_shadow_offset_is_rejected(void **state)
     release(&c);
 }
 
+/* ---- embedding item 6: the frame's matrices ---------------------------------------- */
+/* All-zero (a forgotten matrix) or singular view and projection are refused
+ * with a message; far translations, tiny and huge scales and orthographic
+ * projections are fine. */
+static void test_singular_frame_matrices_are_rejected(void **state)
+{
+    context c = {0};
+    stin_frame_desc fd = {.viewport = {0, 0, 64, 48}};
+    static const float scales[] = {1e-18f, 1e-6f, 1.0f, 1e6f, 1e18f};
+    size_t i;
+    (void)state;
+    use_profile(FAKE_GL21);
+    create_in(&c, 2);
+    stin__mat4_identity(fd.view);
+    memset(fd.projection, 0, sizeof fd.projection);
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    assert_true(fake_log_has(&log_, STIN_LOG_BAD_ARGUMENT, "invertible"));
+    stin__mat4_identity(fd.projection);
+    fd.view[10] = 0.0f; /* flattens z */
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    fd.view[10] = 1.0f;
+    fd.view[4] = 1.0f; /* column 1 = column 0 */
+    fd.view[5] = 0.0f;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    for (i = 0; i < sizeof scales / sizeof scales[0]; i++) {
+        stin__mat4_identity(fd.view);
+        fd.view[0] = fd.view[5] = fd.view[10] = scales[i];
+        fd.view[12] = 1e6f; /* far from the origin */
+        assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_OK);
+        assert_int_equal(stin_end_frame(c.ctx), STIN_OK);
+    }
+    release(&c);
+}
+
 /* ---- item 12: handles ----------------------------------------------------------- */
 static void test_handles_of_another_context_are_foreign(void **state)
 {
@@ -451,6 +485,7 @@ int main(void)
         cmocka_unit_test(test_bad_frame_framebuffer_is_an_error),
         cmocka_unit_test(test_texture_size_overflow_is_an_error),
         cmocka_unit_test(test_non_finite_shadow_offset_is_rejected),
+        cmocka_unit_test(test_singular_frame_matrices_are_rejected),
         cmocka_unit_test(test_handles_of_another_context_are_foreign),
         cmocka_unit_test(test_generations_never_revive_a_stale_id),
         cmocka_unit_test(test_slot_at_top_generation_is_retired),
