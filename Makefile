@@ -6,7 +6,8 @@
 #   make bench      run stin-bench (docs/benchmarks.md)
 #   make fuzz       libFuzzer on the scene loader and on model/texture files, FUZZ_SECONDS
 #                   (default 60) each (docs/fuzzing.md)
-#   make install    PREFIX=/usr/local DESTDIR=  headers, archives, stin.pc
+#   make install    PREFIX=/usr/local DESTDIR=  headers, archives, pkg-config and CMake files
+#   make uninstall  the same PREFIX and DESTDIR: removes what install wrote
 #   make clean
 
 PREFIX ?= /usr/local
@@ -41,7 +42,7 @@ PLATFORM_OBJ := $(PLATFORM_SRC:%.c=$(B)/obj/%.o)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(B)/obj/%.o) $(COMMON_CXX:%.cpp=$(B)/obj/%.o)
 REF_OBJ := $(REF_SRC:%.c=$(B)/obj/%.o)
 
-.PHONY: all check demo bench install clean deps tests fuzz
+.PHONY: all check demo bench install uninstall clean deps tests fuzz
 all: $(B)/libstin.a $(B)/libstin_platform.a $(B)/stin-render $(B)/stin-bench
 
 deps:
@@ -142,12 +143,30 @@ demo: deps
 	  done; done
 
 # ---- install ---------------------------------------------------------------
-install: $(B)/libstin.a $(B)/libstin_platform.a
-	install -d $(DESTDIR)$(PREFIX)/include/stin $(DESTDIR)$(PREFIX)/lib/pkgconfig
+# The version comes from the header; the installed files are listed once, for
+# install and uninstall.
+VERSION := $(shell sed -n 's/^\#define STIN_VERSION_\(MAJOR\|MINOR\|PATCH\) \([0-9]*\)$$/\2/p' include/stin/stin.h | paste -sd.)
+INSTALLED := include/stin/stin.h include/stin/stin_debug.h include/stin/stin_platform.h \
+  lib/libstin.a lib/libstin_checked.a lib/libstin_platform.a lib/pkgconfig/stin.pc \
+  lib/pkgconfig/stin-platform.pc lib/cmake/stin/stinConfig.cmake \
+  lib/cmake/stin/stinConfigVersion.cmake
+SUBST = sed -e 's|@PREFIX@|$(PREFIX)|' -e 's|@VERSION@|$(VERSION)|'
+
+install: $(B)/libstin.a $(B)/libstin_checked.a $(B)/libstin_platform.a
+	install -d $(DESTDIR)$(PREFIX)/include/stin $(DESTDIR)$(PREFIX)/lib/pkgconfig \
+	  $(DESTDIR)$(PREFIX)/lib/cmake/stin
 	install -m 644 include/stin/stin.h include/stin/stin_debug.h platform/stin_platform.h $(DESTDIR)$(PREFIX)/include/stin/
-	install -m 644 $(B)/libstin.a $(B)/libstin_platform.a $(DESTDIR)$(PREFIX)/lib/
-	sed -e 's|@PREFIX@|$(PREFIX)|' stin.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/stin.pc
-	sed -e 's|@PREFIX@|$(PREFIX)|' stin-platform.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/stin-platform.pc
+	install -m 644 $(B)/libstin.a $(B)/libstin_checked.a $(B)/libstin_platform.a $(DESTDIR)$(PREFIX)/lib/
+	$(SUBST) stin.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/stin.pc
+	$(SUBST) stin-platform.pc.in > $(DESTDIR)$(PREFIX)/lib/pkgconfig/stin-platform.pc
+	$(SUBST) stinConfig.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/stin/stinConfig.cmake
+	$(SUBST) stinConfigVersion.cmake.in > $(DESTDIR)$(PREFIX)/lib/cmake/stin/stinConfigVersion.cmake
+
+# Removes exactly what install wrote, then the directories it made if empty.
+uninstall:
+	rm -f $(addprefix $(DESTDIR)$(PREFIX)/,$(INSTALLED))
+	-rmdir $(DESTDIR)$(PREFIX)/include/stin $(DESTDIR)$(PREFIX)/lib/cmake/stin \
+	  $(DESTDIR)$(PREFIX)/lib/cmake $(DESTDIR)$(PREFIX)/lib/pkgconfig 2>/dev/null || true
 
 clean:
 	rm -rf $(B) out

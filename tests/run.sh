@@ -53,6 +53,7 @@ for plat in $PLATFORMS; do
 done
 
 run "cli" sh tests/cli/test_render.sh "$B/stin-render"
+run "install" sh tests/cli/test_install.sh
 run "bench" sh tests/cli/test_bench.sh "$B/stin-bench" "$OUT/bench-quick.txt"
 
 awk '/^PASS /{p++} /^FAIL /{f++} /^SKIP /{s++} END {printf "%d passed, %d failed, %d skipped\n", p, f, s; exit f > 0}' "$LOG"

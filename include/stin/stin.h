@@ -210,8 +210,13 @@
 extern "C" {
 #endif
 
+/* The header's version (CHANGELOG.md). stin_version() returns the linked
+ * library's as STIN_VERSION does: an application can check they match. */
 #define STIN_VERSION_MAJOR 0
-#define STIN_VERSION_MINOR 1
+#define STIN_VERSION_MINOR 2
+#define STIN_VERSION_PATCH 0
+#define STIN_VERSION (STIN_VERSION_MAJOR * 10000 + STIN_VERSION_MINOR * 100 + STIN_VERSION_PATCH)
+int stin_version(void);
 
 /* ---- results ------------------------------------------------------------ */
 typedef enum stin_result {
