@@ -14,7 +14,7 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_vertices = DEFAULT(d.max_vertices, 262144u);
     d.max_triangles = DEFAULT(d.max_triangles, 262144u);
     d.max_mesh_triangles = DEFAULT(d.max_mesh_triangles, d.max_triangles < 65536u ? d.max_triangles : 65536u);
-    d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 4u << 20);
+    d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 8u << 20);
     d.soft_shadow_samples = DEFAULT(d.soft_shadow_samples, 8u);
     d.shadow_map_size = DEFAULT(d.shadow_map_size, 1024u);
     return d;

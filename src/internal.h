@@ -104,6 +104,15 @@ struct stin_context {
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);
+
+/* Texture staging (texture.c): the regions a texture's levels are built in. */
+#define STIN__MAX_TEXELS (1ull << 30) /* 32-bit byte offsets, 4 a texel */
+typedef struct stin__staging_plan {
+    uint64_t region_a, region_b, derived, total;
+} stin__staging_plan;
+stin__staging_plan stin__plan_staging(uint32_t w, uint32_t h, int mips, int staged0,
+                                      uint64_t derived_bytes);
+uint32_t stin__pot_at_least(uint32_t n);
 /* Around a frame (state.c): save what the header promises to give back,
  * then restore it and reset the rest to the documented defaults. */
 void stin__state_save(stin_context *ctx);

@@ -1,10 +1,9 @@
 /* Textures from caller pixels: resampled to a power of two where the GL
  * version needs it, mipmaps built on the CPU (GL 1.1 has no mipmap
- * generation), all through the arena's staging block. */
+ * generation, and the surface tests reproduce the CPU's box filter and
+ * Toksvig lengths), level by level through the arena's staging block. */
 #include "internal.h"
 
-/* The caller's texels are addressed with 32-bit byte offsets (4 a texel). */
-#define STIN__MAX_TEXELS (1ull << 30)
 
 stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex)
 {
@@ -17,7 +16,7 @@ stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture t
 }
 
 /* n is at most STIN__MAX_TEXELS (checked first): p cannot shift out. */
-static uint32_t pot_at_least(uint32_t n)
+uint32_t stin__pot_at_least(uint32_t n)
 {
     uint32_t p = 1;
     while (p < n && p < 0x80000000u)
@@ -137,16 +136,27 @@ static void normals_from_height(const uint8_t *src, uint32_t w, uint32_t h, floa
         }
 }
 
-static uint64_t chain_bytes(uint32_t w, uint32_t h, int mips)
+static uint64_t level_bytes(uint32_t w, uint32_t h, int level)
 {
-    uint64_t total = 0;
-    for (;;) {
-        total += 4ull * w * h;
-        if (!mips || (w == 1 && h == 1))
-            return total;
-        w = w > 1 ? w / 2 : 1;
-        h = h > 1 ? h / 2 : 1;
-    }
+    uint64_t lw = w >> level, lh = h >> level;
+    return 4ull * (lw ? lw : 1) * (lh ? lh : 1);
+}
+
+/* Staging for a texture built level by level. Level 0 is staged when it
+ * must be made (resampled, derived from a height map, or a normal map's
+ * alpha set to 1); otherwise the caller's pixels are uploaded as they are.
+ * Mip levels alternate between two regions, each made from the one before:
+ * level 0's region and one of level 1's size, or regions of levels 1 and 2
+ * (5/16 of level 0) when level 0 is the caller's. */
+stin__staging_plan stin__plan_staging(uint32_t w, uint32_t h, int mips, int staged0,
+                                      uint64_t derived_bytes)
+{
+    stin__staging_plan p;
+    p.region_a = staged0 ? level_bytes(w, h, 0) : mips ? level_bytes(w, h, 1) : 0;
+    p.region_b = !mips ? 0 : staged0 ? level_bytes(w, h, 1) : level_bytes(w, h, 2);
+    p.derived = derived_bytes;
+    p.total = p.region_a + p.region_b + p.derived;
+    return p;
 }
 
 stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc,
@@ -158,7 +168,8 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     stin__texture_slot *t = NULL;
     int mips, resized, normal, derive;
     GLint caller_binding = 0;
-    uint64_t need;
+    stin__staging_plan plan;
+    uint8_t *region_b;
     if (out)
         out->id = 0;
     if (!ctx || !desc || !out || !desc->pixels || !desc->width || !desc->height ||
@@ -177,8 +188,8 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     w = desc->width;
     h = desc->height;
     if (ctx->caps.gl_major < 2) { /* NPOT textures are core from GL 2.0 */
-        w = pot_at_least(w);
-        h = pot_at_least(h);
+        w = stin__pot_at_least(w);
+        h = stin__pot_at_least(h);
     }
     while (w > max)
         w /= 2;
@@ -189,12 +200,13 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     mips = !desc->no_mipmaps && desc->kind != STIN_TEXTURE_HEIGHT;
     normal = desc->kind == STIN_TEXTURE_NORMAL;
     derive = desc->normal_from_height > 0.0f;
-    need = chain_bytes(w, h, mips) + (derive && resized ? 4ull * desc->width * desc->height : 0);
-    if (need > ctx->staging_bytes) {
+    plan = stin__plan_staging(w, h, mips, resized || normal || derive,
+                        derive && resized ? 4ull * desc->width * desc->height : 0);
+    if (plan.total > ctx->staging_bytes) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
                   "stin_create_texture: %ux%u%s%s needs %lu staging bytes, "
                   "desc.max_texture_bytes is %zu", w, h, mips ? " with mipmaps" : "",
-                  derive ? " derived from a height map" : "", (unsigned long)need,
+                  derive ? " derived from a height map" : "", (unsigned long)plan.total,
                   ctx->staging_bytes);
         return STIN_ERROR_CAPACITY;
     }
@@ -209,9 +221,10 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         return STIN_ERROR_CAPACITY;
     }
     buf = ctx->staging;
+    region_b = buf + plan.region_a;
     src = desc->pixels;
     if (derive) { /* level 0 (before any resample) computed into staging */
-        uint8_t *at = resized ? buf + chain_bytes(w, h, mips) : buf;
+        uint8_t *at = resized ? region_b + plan.region_b : buf;
         normals_from_height(desc->pixels, desc->width, desc->height, desc->normal_from_height, at);
         src = at;
     }
@@ -240,9 +253,9 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         stin__upload_level(ctx, GL_TEXTURE_2D, (GLint)level, GL_RGBA8, w, h, GL_RGBA, src);
         if (!mips || (w == 1 && h == 1))
             break;
-        /* The next level goes right after this one in staging. */
+        /* the next level into the region this one is not in */
         {
-            uint8_t *next = (src == desc->pixels) ? buf : (uint8_t *)src + 4u * w * h;
+            uint8_t *next = src == buf ? region_b : buf;
             if (normal)
                 halve_normals(src, w, h, next);
             else

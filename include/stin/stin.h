@@ -194,9 +194,10 @@
  * passed to stin_create must be at least that big (else STIN_ERROR_OUT_OF_MEMORY
  * and a log line saying how many bytes are needed). All capacities live in the
  * block. A full pool is a logged error that drops the item. With every default
- * the block is about 30 MB, most of it the vertex and triangle stores
- * (48 bytes a vertex, 24 a triangle) and the mesh-creation scratch for
- * max_mesh_triangles: size them to the application's meshes.
+ * the block is about 39 MB, most of it the vertex and triangle stores
+ * (48 bytes a vertex, 24 a triangle), the mesh-creation scratch for
+ * max_mesh_triangles and the 8 MiB texture staging: size them to the
+ * application's assets (stin_desc_fit with stin_texture_staging_bytes).
  *
  * THREADS: a context is used from the thread that owns its GL context.
  */
@@ -487,7 +488,9 @@ typedef struct stin_desc {
     uint32_t max_vertices;             /* all meshes together, default 262144 */
     uint32_t max_triangles;            /* all meshes together, default 262144 */
     uint32_t max_mesh_triangles;       /* one mesh, sizes creation scratch; default 65536 */
-    uint32_t max_texture_bytes;        /* staging for texture creation, default 4 MiB */
+    uint32_t max_texture_bytes;        /* staging for texture creation, default 8 MiB
+                                        * (a 2048x2048 albedo texture with mipmaps, a
+                                        * 1024x1024 normal map; stin_texture_staging_bytes) */
     uint32_t soft_shadow_samples;      /* point samples of an area light (radius > 0),
                                         * default 8, at most 64 */
     uint32_t debug_flags;              /* STIN_DEBUG_*: diagnostics, default 0 */
@@ -629,6 +632,31 @@ typedef struct stin_texture_desc {
      * the mean's direction, A its length (Toksvig). */
     float normal_from_height;
 } stin_texture_desc;
+
+/* Sizing a desc from the application's assets. stin_texture_staging_bytes
+ * is the staging (desc.max_texture_bytes) stin_create_texture needs for a
+ * texture on any context (pixels may be NULL): 5/16 of w * h * 4 for an
+ * albedo texture uploaded as given with mipmaps (levels 1 and 2; none
+ * without mipmaps), 5/4 for normal maps and power-of-two resamples (GL1
+ * contexts resample non-power-of-two sizes up), plus the source for a
+ * derived-and-resampled normal map. 0 for a bad desc. */
+uint64_t stin_texture_staging_bytes(const stin_texture_desc *desc);
+
+typedef struct stin_asset_summary {
+    uint32_t meshes, textures;         /* alive at once */
+    uint64_t vertices, triangles;      /* of all meshes together */
+    uint32_t largest_mesh_triangles;
+    uint64_t largest_texture_staging;  /* the largest stin_texture_staging_bytes */
+    uint32_t draws, lights;            /* per frame */
+} stin_asset_summary;
+
+/* Raises each capacity of desc to what the summary needs (a larger value in
+ * desc stays; 0 in the summary changes nothing). STIN_ERROR_CAPACITY, desc
+ * unchanged and *field (if not NULL) naming the stin_desc field, when the
+ * assets need more than stin accepts: 65535 meshes or textures, 2^30 - 1
+ * vertices, 2^29 - 1 triangles, 2^24 - 1 draws, 32 lights, 2^32 - 1 staging
+ * bytes. Then stin_memory_size says the block's size. */
+stin_result stin_desc_fit(stin_desc *desc, const stin_asset_summary *assets, const char **field);
 
 stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc,
                                 stin_texture *out);

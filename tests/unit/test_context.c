@@ -165,7 +165,7 @@ static void test_memory_size_grows_with_capacities(void **state)
     GROWS(max_draws, 4096);
     GROWS(max_lights, 32);
     GROWS(max_vertices, 300000);
-    GROWS(max_texture_bytes, 8u << 20);
+    GROWS(max_texture_bytes, 16u << 20);
 #undef GROWS
     d.max_triangles = 300000;
     d.max_mesh_triangles = 100000;
@@ -319,7 +319,7 @@ static void test_query_desc_returns_documented_defaults(void **state)
     assert_int_equal(d.max_vertices, 262144);
     assert_int_equal(d.max_triangles, 262144);
     assert_int_equal(d.max_mesh_triangles, 65536);
-    assert_int_equal(d.max_texture_bytes, 4u << 20);
+    assert_int_equal(d.max_texture_bytes, 8u << 20);
     assert_int_equal(d.tier, STIN_TIER_AUTO);
     assert_int_equal(d.caps_mask, 0);
     assert_int_equal(d.max_gl_version, 0);

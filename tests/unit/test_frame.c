@@ -633,7 +633,8 @@ static void test_texture_staging_too_small(void **state)
     stin_texture_desc td = texture_desc(8, 8, px);
     stin_texture t = {99};
     (void)state;
-    create_context(&cfg, 8, 8, 8 * 8 * 4); /* level 0 fits, the mip chain does not */
+    /* level 0 is uploaded as given; levels 1 and 2 (4x4 and 2x2) need 80 bytes */
+    create_context(&cfg, 8, 8, 4 * (4 * 4 + 2 * 2) - 1);
     assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_ERROR_CAPACITY);
     assert_int_equal(t.id, 0);
     assert_true(fake_log_has(&log_, STIN_LOG_POOL_FULL, "max_texture_bytes"));

@@ -5,71 +5,59 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Each capacity stin_create accepts (include/stin/stin.h, stin_desc):
- * max_meshes and max_textures <= 65535, max_vertices < 2^30,
- * max_triangles < 2^29, max_draws < 2^24; max_texture_bytes is a uint32_t. */
-#define LIMIT_MESHES 65535u
-#define LIMIT_TEXTURES 65535u
-#define LIMIT_DRAWS (0x1000000u - 1u)
-#define LIMIT_VERTICES (0x40000000u - 1u)
-#define LIMIT_TRIANGLES (0x20000000u - 1u)
-#define LIMIT_TEXTURE_BYTES 0xffffffffu
+static stin_texture_kind texture_kind(scene_texture_kind k);
 
-/* have, raised to want; 0 when want is past the library's limit. */
-static int raise_to(uint32_t *have, uint64_t want, uint32_t limit)
+/* What stin_desc_fit could not raise, as the tool's message. */
+static const char *capacity_message(const char *field)
 {
-    if (want > limit)
-        return 0;
-    if (*have < want)
-        *have = (uint32_t)want;
-    return 1;
-}
-
-/* Staging for one texture: level 0 plus the mip chain, with room for a
- * power-of-two resample (GL1). */
-static uint64_t texture_bytes(const scene_texture *t)
-{
-    uint64_t w = 1, h = 1;
-    while (w < (uint64_t)t->width)
-        w <<= 1;
-    while (h < (uint64_t)t->height)
-        h <<= 1;
-    return w * h * 4u * 2u;
+    static const char *const names[][2] = {
+        {"max_meshes", "meshes: more than 65535"},
+        {"max_textures", "textures: more than 65535"},
+        {"max_draws", "objects: more instances than stin draws in a frame"},
+        {"max_lights", "lights: at most 32"},
+        {"max_vertices", "meshes: more vertices than stin holds"},
+        {"max_triangles", "meshes: more triangles than stin holds"},
+        {"max_mesh_triangles", "meshes: a mesh has more triangles than stin holds"},
+        {"max_texture_bytes", "textures: a texture is too large to stage"}};
+    size_t i;
+    for (i = 0; field && i < sizeof names / sizeof names[0]; i++)
+        if (!strcmp(field, names[i][0]))
+            return names[i][1];
+    return "more than stin holds";
 }
 
 int scene_gpu_size_desc_checked(const scene *s, stin_desc *desc, char *err, size_t err_size)
 {
-    uint64_t verts = 0, tris = 0, biggest = 0, bytes = 0;
-    const char *what = NULL;
+    stin_asset_summary a;
+    const char *field = NULL;
     int i;
+    memset(&a, 0, sizeof a);
+    a.meshes = (uint32_t)s->mesh_count;
+    a.textures = (uint32_t)s->texture_count;
+    a.draws = (uint32_t)s->object_count;
+    a.lights = (uint32_t)s->light_count;
     for (i = 0; i < s->mesh_count; i++) {
-        verts += s->meshes[i].vertex_count;
-        tris += s->meshes[i].triangle_count;
-        if (s->meshes[i].triangle_count > biggest)
-            biggest = s->meshes[i].triangle_count;
+        a.vertices += s->meshes[i].vertex_count;
+        a.triangles += s->meshes[i].triangle_count;
+        if (s->meshes[i].triangle_count > a.largest_mesh_triangles)
+            a.largest_mesh_triangles = s->meshes[i].triangle_count;
     }
-    for (i = 0; i < s->texture_count; i++)
-        if (texture_bytes(&s->textures[i]) > bytes)
-            bytes = texture_bytes(&s->textures[i]);
-    if (!raise_to(&desc->max_meshes, (uint64_t)s->mesh_count, LIMIT_MESHES))
-        what = "meshes: more than 65535";
-    else if (!raise_to(&desc->max_textures, (uint64_t)s->texture_count, LIMIT_TEXTURES))
-        what = "textures: more than 65535";
-    else if (!raise_to(&desc->max_draws, (uint64_t)s->object_count, LIMIT_DRAWS))
-        what = "objects: more instances than stin draws in a frame";
-    else if (!raise_to(&desc->max_lights, (uint64_t)s->light_count, 32u))
-        what = "lights: at most 32";
-    else if (!raise_to(&desc->max_vertices, verts, LIMIT_VERTICES))
-        what = "meshes: more vertices than stin holds";
-    else if (!raise_to(&desc->max_triangles, tris, LIMIT_TRIANGLES))
-        what = "meshes: more triangles than stin holds";
-    else if (!raise_to(&desc->max_mesh_triangles, biggest, LIMIT_TRIANGLES))
-        what = "meshes: a mesh has more triangles than stin holds";
-    else if (!raise_to(&desc->max_texture_bytes, bytes, LIMIT_TEXTURE_BYTES))
-        what = "textures: a texture is too large to stage";
-    if (what && err && err_size)
-        snprintf(err, err_size, "%s: %s", s->path, what);
-    return what == NULL;
+    for (i = 0; i < s->texture_count; i++) {
+        stin_texture_desc td;
+        uint64_t bytes;
+        memset(&td, 0, sizeof td);
+        td.kind = texture_kind(s->textures[i].kind);
+        td.width = (uint32_t)s->textures[i].width;
+        td.height = (uint32_t)s->textures[i].height;
+        bytes = stin_texture_staging_bytes(&td);
+        if (bytes > a.largest_texture_staging)
+            a.largest_texture_staging = bytes;
+    }
+    if (stin_desc_fit(desc, &a, &field) == STIN_OK)
+        return 1;
+    if (err && err_size)
+        snprintf(err, err_size, "%s: %s", s->path, capacity_message(field));
+    return 0;
 }
 
 void scene_gpu_size_desc(const scene *s, stin_desc *desc)
