@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: MIT
 # stin — build, test, bench, install.
 #   make            libstin.a, libstin_platform.a, stin-render, stin-bench
 #   make check      install deps if missing, unit tests (ASan+UBSan), image tests per profile,

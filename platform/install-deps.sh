@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Installs the Debian packages stin needs to build and test, if any are
 # missing. Quiet when everything is there. As root it runs apt-get; otherwise
 # it names the packages and the command, and fails.

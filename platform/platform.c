@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The common part of libstin_platform.a: kind names, the profile's Mesa
  * environment, backend dispatch and framebuffer readback.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * EGL backend: surfaceless Mesa by default, device EGL when STIN_EGL_DEVICE=1
  * or when the surfaceless platform is missing (GPU machines). Both render into

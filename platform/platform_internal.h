@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Private to libstin_platform.a: the two context backends and the shared
  * error helper. Each backend creates, makes current, resolves GL entry

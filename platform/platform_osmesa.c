@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * OSMesa backend: Mesa's software rasteriser rendering into a heap buffer.
  * Compatibility contexts take the driver's best version (the profile's

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The named capability profiles (docs/profiles.md is the documented copy).
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stin_platform — offscreen GL contexts for stin's tools and tests.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library's own small runtime: logging and formatting without the heap,
  * the arena, range allocation and math. */
 #ifndef STIN_BASE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Caller state that stin's uploads and draws would otherwise write through
  * or read from: the bound vertex array object (element buffer, attribute
  * pointers) and the pixel-unpack state (row length, skips, alignment, a

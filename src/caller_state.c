@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Caller state that no pass sets but every pass relies on: the blend
  * equation, polygon mode, logic op, depth range, clip planes, primitive
  * restart, rasterizer discard, multisample coverage, sampler objects and,

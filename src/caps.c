@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Capability detection: GL/GLSL versions, exact extension tokens (parsed in
  * place, no copies), limits, and which entry points loaded. */
 #include "internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Capability detection (caps.c). */
 #ifndef STIN_CAPS_PARSE_H
 #define STIN_CAPS_PARSE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Context creation in the caller's block: defaults, layout, detection,
  * selection and set-up of the chosen path. */
 #include "internal.h"

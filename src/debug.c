@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Counters of the checked build, for tests (include/stin/stin_debug.h). */
 #include "internal.h"
 #include "stin/stin_debug.h"

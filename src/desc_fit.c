@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sizing a desc from the application's assets: the staging a texture
  * needs on any context, and capacities raised to a summary of the assets
  * within the limits stin_create accepts. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The frame: begin -> lights -> draws -> end. Lists live in the arena; end
  * orders the draws (opaque in submission order, then blended ones back to
  * front) and runs the frame plan: one list of stages, the same for every

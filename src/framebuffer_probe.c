@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The framebuffer a frame draws into (desc.framebuffer, 0 = default): that
  * it is a complete framebuffer object, its stencil and depth bits, and
  * whether the context's shadows choice can run into it. Stencil and depth

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL entry points: one table from gl_funcs.h, called through GL(ctx, Name). */
 #ifndef STIN_GL_CALLS_H
 #define STIN_GL_CALLS_H

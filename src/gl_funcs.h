@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Every GL entry point stin calls, as one X-macro list:
  *   X(return type, name without "gl", parameter list, what it needs, alternate name)
  * "needs" is a STIN_CAP_* or NEED_CORE (GL 1.1) / NEED_GL30 (GL 3.0); an entry

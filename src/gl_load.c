@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Resolves the GL entry-point table from the caller's get_proc_address and,
  * in checked builds, audits each call against the capability profile. */
 #include "internal.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL types and enums stin uses. Declared here rather than taken from a
  * system GL header so the library builds with -pedantic anywhere and so every
  * enum stin touches is listed in one place (the checked build audits them). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Handles of the fixed slot pools (meshes, textures). An id holds, from the
  * top: the context's tag (8 bits), the slot's generation, and slot + 1 in
  * the fewest bits that hold the pool's count (so 0 is never a handle):

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The context and the headers of every subsystem, for libstin's sources.
  * Each subsystem's own header says what it offers; this one only puts the
  * context together. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Point samples of an area light for soft shadows: a Fibonacci spiral over
  * the sphere of the light's radius, the same for every frame (no shimmer)
  * and public so that a reference can use the very same points. */

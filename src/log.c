@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Logging through the caller's callback, with a formatter that never allocates. */
 #include "internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Column-major 4x4 helpers (GL conventions) and float checks without libm. */
 #include "internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The caller's block carved by a bump allocator, and a first-fit range
  * allocator for the shared vertex and triangle stores. */
 #include "internal.h"

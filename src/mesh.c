@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Mesh creation: validation, storage in the arena, normals, tangents,
  * adjacency, and the GPU copy where buffers exist. */
 #include "internal.h"

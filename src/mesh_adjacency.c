@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Edge adjacency over position-welded vertices (mesh_weld.c): which
  * triangle lies across each edge, how many edges are open or shared by more
  * than two triangles, and whether the mesh is a consistently oriented closed

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Meshes and textures in the caller's block (mesh*.c, texture.c) and the
  * shadow-volume geometry built from them (shadow_volume_geometry.c). */
 #ifndef STIN_MESH_STORE_H

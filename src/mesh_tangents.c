@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Per-vertex normals (when the caller gives none) and tangent frames: the uv
  * gradient per triangle, accumulated per vertex, Gram-Schmidt against the
  * normal, handedness stored in w. Every surface technique on every tier reads

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Which vertices are one position, for adjacency: bit-equal positions, or
  * positions within a tolerance on every axis (a grid of tolerance-sized
  * cells; a vertex looks for an earlier one in its own and the 26

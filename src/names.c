@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Printable names of the public enums, generated from the X-macro lists. */
 #include "internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The pass-state cache: compare with what GL holds, send the differences. */
 #include "internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Render state of a pass as one struct, applied through a cache of what GL
  * holds (pass_state.c), so passes say what they need instead of toggling GL
  * by hand, and the end of a frame is "apply the defaults". Texture units the

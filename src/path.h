@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The lighting paths (path_fixed.c: GL1 fixed function; path_glsl.c: GL2 and
  * GL4 GLSL) and what the frame plan asks of them. */
 #ifndef STIN_PATH_H

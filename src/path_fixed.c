@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL1 tier: fixed-function lighting (per vertex, GL's own equation), lights
  * in batches of GL_MAX_LIGHTS with additive passes, the passes the shadow
  * schedule needs (ambient, one light, flat colour, volumes), and the AOV

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL2 and GL4 tiers: per-pixel lighting in GLSL (shaders/gl2 with #version
  * 110 on compatibility contexts, shaders/gl4 with #version 150 and VAOs),
  * lights in batches of 8 with additive passes, the passes the shadow

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tier selection and the per-feature fallback chains. */
 #include "internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GLSL compile and link with the driver's info log in a stack buffer. */
 #include "internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shadow techniques: one module each behind one interface (shadow_volume.c,
  * shadow_map_fixed.c, shadow_map_pcf.c, shadow_off.c), each owning its
  * state, and the light cameras the map techniques share

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Light cameras for shadow maps (both tiers): a spot light's perspective
  * over its cone, a directional light's orthographic square fitted to the
  * receivers in view (snapped to whole texels so it does not swim as the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shadow maps without shaders (the GL1 tier's two map techniques).
  *
  * map-depth: ARB_depth_texture + ARB_shadow. The light's depth (with polygon

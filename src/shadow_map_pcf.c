@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shadow maps with percentage-closer filtering on the GLSL tiers ("map-pcf").
  *
  * Every spot and directional light gets a depth map (an FBO with a depth

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Per-light visibility as data: a shadow technique writes each light's
  * visibility into one channel of a screen mask (drawn in its own
  * framebuffer with a copy of the frame's depth), and one lit pass then

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shadows off: the module with no hooks, and the lookup of a technique's module. */
 #include "internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* VDSM, view-dependent shadow maps (seed 000; shaders/gl4/vdsm*): exact hard
  * shadows at camera resolution. A frame stage draws the visible surface's
  * positions (shadow_vdsm_buffer.c). Per light, into a channel of the screen

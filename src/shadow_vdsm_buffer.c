@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* VDSM's position buffer: a frame stage that draws the visible surface once
  * into two float textures - world position (RGBA32F, w 1 where something was
  * drawn) and the facet normal turned to the eye (RGBA16F) - the size of the

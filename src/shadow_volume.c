@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Stencil shadow volumes (Everitt & Kilgard's robust variant): per light,
  * every caster's volume counted into the stencil buffer — z-pass where the
  * near-clip region cannot touch the caster's volume, else z-fail with caps —

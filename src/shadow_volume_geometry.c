@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shadow-volume geometry of one caster for one light, on the CPU, in chunks
  * of homogeneous object-space triangles (w = 0 for vertices extruded to
  * infinity away from the light).

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL state contract of the public header ("GL STATE"): what a frame
  * gives back as the caller had it and what it leaves at GL's defaults. */
 #include "internal.h"

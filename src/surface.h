@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Surface detail: DOT3 bump mapping on the fixed-function path
  * (surface_dot3.c) and the GLSL normal / parallax / POM chunks
  * (surface_glsl.c). */

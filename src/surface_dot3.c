@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL1 surface detail: DOT3 bump mapping of tangent-space normal maps with
  * ARB_texture_env_dot3 and a normalisation cube map. It is the fixed-function
  * step of the surface chain (POM -> parallax -> normal -> dot3 -> plain) and

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL2/GL4 surface detail: the lit program's surface chunks (normal mapping,
  * parallax with offset limiting, parallax occlusion mapping), which variant a
  * draw gets, and the per-draw surface inputs. The programs themselves are

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The technique table and the solver that walks it (technique_table.c,
  * select.c). One row per technique holds everything selection needs, so a
  * new technique is a row, and chain order is the row's rank, not the public

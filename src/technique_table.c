@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The internal technique table: per technique its capabilities, the lighting
  * it runs on, its conflicts, its texture units and its rank in its chain.
  * The feature and tier come from the public X-macro list. */

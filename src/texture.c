@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Textures from caller pixels: resampled to a power of two where the GL
  * version needs it, mipmaps built on the CPU (GL 1.1 has no mipmap
  * generation, and the surface tests reproduce the CPU's box filter and

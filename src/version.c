@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The library's version, for applications that check it against the header. */
 #include "stin/stin.h"
 

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # The test runner of `make check`. Runs every test binary, each capability
 # profile in its own process on both platforms, and ends with the line
 #   N passed, N failed, N skipped
@@ -54,6 +55,7 @@ done
 
 run "cli" sh tests/cli/test_render.sh "$B/stin-render"
 run "install" sh tests/cli/test_install.sh
+run "licence" sh tests/cli/test_licence.sh
 run "bench" sh tests/cli/test_bench.sh "$B/stin-bench" "$OUT/bench-quick.txt"
 
 awk '/^PASS /{p++} /^FAIL /{f++} /^SKIP /{s++} END {printf "%d passed, %d failed, %d skipped\n", p, f, s; exit f > 0}' "$LOG"

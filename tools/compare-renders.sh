@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Before/after check for refactors that must not change a pixel: renders
 # every example scene under every profile, platform and shadow technique to
 # OpenEXR (beauty and AOVs), then compares two such sets channel by channel.

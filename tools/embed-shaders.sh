@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # Embeds GLSL files into C as byte arrays (no string literal length limits under
 # -pedantic, nothing read from disk at run time). Usage: embed-shaders.sh FILE...
 # Each file shaders/DIR/NAME is found by stin__shader_source("DIR/NAME").

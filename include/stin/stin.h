@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stin — shadows, surface detail and image-based CSG on whatever OpenGL is there.
  *

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Test support. libstin_checked.a (built with STIN_GL_CHECK) audits every GL
  * call against the capability profile: an entry point or enum whose

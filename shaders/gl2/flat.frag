@@ -1,4 +1,5 @@
 #version 110
+// SPDX-License-Identifier: MIT
 // One colour for every covered pixel, times the shadow test of light 0 where
 // the shader does it (map-pcf): the visibility output.
 uniform vec4 u_color;

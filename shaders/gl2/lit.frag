@@ -1,4 +1,5 @@
 #version 110
+// SPDX-License-Identifier: MIT
 // Per-pixel Blinn-Phong with GL's fixed-function equation (local viewer,
 // attenuation, spot cone), for one batch of up to 8 lights.
 // Light i is four vec4s: position (w 0 = directional), direction + cos(cutoff)

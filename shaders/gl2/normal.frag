@@ -1,4 +1,5 @@
 #version 110
+// SPDX-License-Identifier: MIT
 // World-space shading normal as 0.5 + 0.5 n (the N output).
 varying vec3 v_world;
 varying vec3 v_normal;

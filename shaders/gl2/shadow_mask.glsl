@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Per-light visibility from the screen mask (technique "volume" on GLSL
 // tiers with FBOs, src/shadow_mask.c): channel i of u_shadow_map holds light
 // i of this pass, 1 lit. u_shadow_kind 0: no mask in this pass (the stencil

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shadow maps with percentage-closer filtering (technique "map-pcf").
 // u_shadow_kind: 0 no map for this pass's light, 1 one map (spot or
 // directional), 2 a point light's six 90-degree maps (u_shadow_faces).

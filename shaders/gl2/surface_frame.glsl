@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Shared by the surface chunks "normal", "parallax" and "pom" (spliced in
 // before them): the tangent frame, the map from tangent-plane offsets in
 // scene units to uv, and the normal-map decode. One file for both tiers: the

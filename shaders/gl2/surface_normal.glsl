@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Surface "normal": tangent-space normal mapping (after surface_frame.glsl).
 vec3 surface_normal(inout vec2 uv, vec3 v)
 {

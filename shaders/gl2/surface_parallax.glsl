@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Surface "parallax": parallax mapping with offset limiting (Kaneko 2001,
 // Welsh 2004), after surface_frame.glsl: one height fetch at uv,
 //   uv' = uv + V.xy * (h * scale - bias)   (V: unit, toward the eye, tangent frame)

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Surface "plain": the interpolated vertex normal, no height field.
 vec3 surface_normal(inout vec2 uv, vec3 v)
 {

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // Surface "pom": parallax occlusion mapping (after surface_frame.glsl). The
 // height field is recessed: h = 1 lies in the polygon, h = 0 at u_surface.x
 // scene units below it. The view ray enters at uv and is marched in depth

@@ -1,4 +1,5 @@
 #version 120
+// SPDX-License-Identifier: MIT
 // Shadow-volume vertices: homogeneous object space, w = 0 at infinity. The
 // transform is written exactly as in lit.vert so coincident caps get equal depths.
 // Invariant: the depth of a volume cap must equal, bit for bit, the depth the

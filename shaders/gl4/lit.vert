@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // Per-pixel lighting, vertex stage: world-space position, normal and uv.
 // Invariant: the depth of a volume cap must equal, bit for bit, the depth the
 // lit passes wrote for the surface it lies on (z-fail counts it behind).

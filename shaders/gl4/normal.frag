@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // World-space shading normal as 0.5 + 0.5 n (the N output).
 out vec4 frag_color;
 in vec3 v_world;

@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // VDSM, per covered pixel: the exact segment-triangle test (Moller-Trumbore)
 // from the pixel's visible surface point to the light against the triangle
 // whose shadow polygon covers it. A hit writes 0 into the light's mask

@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // VDSM shadow polygons (seed 000, step SP): each triangle's volume - the
 // region its shadow fills, bounded by the triangle and its three edges
 // extruded away from the light to infinity (w = 0) - is drawn as the faces

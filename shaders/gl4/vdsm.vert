@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // VDSM shadow polygons, vertex stage: world positions for the geometry shader.
 uniform mat4 u_model;
 in vec4 a_position;

@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // VDSM, first pass of a light: 1 where the side of the surface the eye sees
 // faces the light, 0 where it turns away (it shadows itself, as the
 // reference defines it). The shadow polygons then write 0 where a triangle

@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // VDSM position buffer: per pixel the visible surface's world position (w = 1,
 // 0 where nothing was drawn) and its facet normal turned to the side the eye
 // sees. The facet normal comes from the position's screen derivatives, which

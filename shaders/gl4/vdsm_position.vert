@@ -1,4 +1,5 @@
 #version 150
+// SPDX-License-Identifier: MIT
 // VDSM position buffer, vertex stage: the world position of each vertex, drawn
 // exactly as lit.vert draws it so the buffer holds the frame's visible surface.
 invariant gl_Position;

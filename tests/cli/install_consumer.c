@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* An application built against an installed stin: the library linked in is
  * the header's version, and the API links without GL (stin loads it). */
 #include <stin/stin.h>

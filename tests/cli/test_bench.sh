@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # stin-bench smoke test: `stin-bench --quick` runs every section at a tiny
 # size and must exit 0 and print its goal line, so that the bench cannot
 # break silently between benchmark runs. Prints a PASS/FAIL line.

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # make install into a scratch DESTDIR; an application builds and runs against
 # it through pkg-config and through CMake's find_package (which refuses a
 # version the install is not); make uninstall leaves no file behind.

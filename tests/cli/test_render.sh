@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # stin-render's command line: bad input gets exit 2, a message naming the file
 # and the problem, and no output file; a forced tier above the context exits 3
 # naming the missing capabilities; good runs write the image contract.

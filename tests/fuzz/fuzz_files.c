@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: model and texture files. The first byte picks the file
  * type (its extension), the rest is the file; it goes through the loader's
  * own path (checks, the decoder in a child process, the hand-over back). */

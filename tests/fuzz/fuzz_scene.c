@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* libFuzzer target: the scene loader (JSON text -> scene) on any bytes.
  * Relative file names resolve against tests/scenes/, so mutated scenes reach
  * the example models and textures too. Run from the repository root. */

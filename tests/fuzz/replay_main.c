@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Replays fuzz inputs through a target without libFuzzer (plain cc with
  * AddressSanitizer + UBSan), for make check: every file of each directory
  * (or the file) named on the command line, else of REPLAY_DIRS (colon

@@ -1,4 +1,5 @@
 #!/bin/sh
+# SPDX-License-Identifier: MIT
 # make fuzz: each libFuzzer target for SECONDS, seeded from the committed
 # corpus and the example and bad scenes; new inputs go to BUILD/fuzz/corpus-*,
 # crashes to BUILD/fuzz/crashes/ (copy each into tests/fuzz/crashes/TARGET/

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "caller_gl.h"
 
 #include <string.h>

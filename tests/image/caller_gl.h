@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL calls a test makes as the application would, resolved through the
  * platform (the same entry points stin gets), for the caller-state tests. */
 #ifndef STIN_TESTS_CALLER_GL_H

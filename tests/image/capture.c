@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A stin context per render, sized to the scene, torn down afterwards. */
 #include "capture.h"
 #include "aov.h"

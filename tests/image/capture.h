@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One stin render of a scene under the run's profile, read back into the AOV
  * image of the render tool's contract, with the checked build's counters. */
 #ifndef STIN_TESTS_CAPTURE_H

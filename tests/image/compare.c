@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Per-pixel comparison of a render with the exact reference. */
 #include "compare.h"
 #include "aov.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Comparison of a stin render (the AOV image of tools/common/aov.h) with the
  * Embree reference (tests/reference/reference.h) of the same scene and camera.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * DOT3 bump mapping (GL1, src/surface_dot3.c), rendered:
  *   dot3-tilt   (built-in scene, once per tier) a quad under a directional

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The expected table: detected tier, runnable tiers and the technique per
  * feature for every named profile. */
 #include "expected.h"

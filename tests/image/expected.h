@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What each capability profile must detect and choose (docs/profiles.md). */
 #ifndef STIN_TESTS_EXPECTED_H
 #define STIN_TESTS_EXPECTED_H

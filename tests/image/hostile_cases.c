@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The caller states of the hostile-state test (issue 13 item 19): state an
  * application may leave set when it calls stin_end_frame, each with how to
  * set it, how to undo it, and what the header's GL STATE promises it reads

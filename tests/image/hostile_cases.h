@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Caller states a frame must neither inherit nor (beyond the header's list)
  * change: the cases of the hostile-state test (hostile_test.c). */
 #ifndef STIN_TESTS_HOSTILE_CASES_H

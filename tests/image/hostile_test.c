@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Frames under hostile caller state (issue 13 item 19): every state of
  * hostile_cases.c, left set by the caller, must leave the frame's colour
  * and depth bit-identical to a frame from GL's default state (the same

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * stin-imagetest: the tier-by-tier image tests of one capability profile.
  * Run once per profile and platform, each in its own process (Mesa reads its

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Shared by the image-test files: the run of one profile on one platform and
  * its PASS/FAIL/SKIP lines. */
 #ifndef STIN_TESTS_IMAGE_TEST_H

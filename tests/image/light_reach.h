@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Where light 0 of a scene can arrive: the side of the surface the eye sees
  * faces the light, and a spot light's cone holds the point. Shadow tests
  * compare visibility only there (elsewhere no light arrives whatever the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Fixed-function shadow maps (GL1 tier) against the Embree visibility
  * reference, per path and map size: the fraction of pixels whose visibility

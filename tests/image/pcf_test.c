@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * GLSL shadow maps with PCF ("map-pcf", GL2/GL4) against the Embree
  * visibility reference, per map size and kernel: the fraction of pixels the

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Shadow-volume tests of one scene at one tier, against the Embree
  * visibility reference:

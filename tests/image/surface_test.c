@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * GLSL surface detail (src/surface_glsl.c, shaders/gl2|gl4/surface_*.glsl):
  *   gl2-shaders      (once) every file in shaders/gl2 declares #version 110

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * VDSM ("vdsm", GL4) against the Embree visibility reference, light 0:
  *   vis        no pixel away from a reference shadow edge differs from the

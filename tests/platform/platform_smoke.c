@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * platform_smoke KIND PROFILE [--size WxH] [--extensions]
  *

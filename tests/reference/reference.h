@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The exact CPU reference the image tests compare against: Embree ray casting
  * of a tools/common scene plus the library's lighting model (stin.h, LIGHTING

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Whole-image reference AOVs: beauty, P, N, Z and the visibility of light 0. */
 #include <stdlib.h>
 #include <string.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the reference files share: the snapshot of the scene's geometry in
  * world space and the Embree handles. Not for users of reference.h. */
 #ifndef STIN_TESTS_REFERENCE_INTERNAL_H

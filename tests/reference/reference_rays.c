@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Primary rays (the camera of scene_camera_matrices(), recomputed here as an
  * independent check) and visibility rays toward the lights. */
 #include <math.h>

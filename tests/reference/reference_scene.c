@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Builds the Embree scene of a reference: world-space copies of every object. */
 #include <math.h>
 #include <stdarg.h>

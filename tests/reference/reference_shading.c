@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The lighting model of stin.h (LIGHTING MODEL), per vertex (GL1 Gouraud with
  * separate specular) and per pixel (GL2/GL4), in double precision. */
 #include <math.h>

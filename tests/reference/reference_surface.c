@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The CPU reference of the GLSL surface techniques (reference_surface.h). */
 #include <math.h>
 #include <stdlib.h>

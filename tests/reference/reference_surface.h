@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The CPU reference of stin's surface techniques (stin.h, surface), per hit:
  *   normal   per-pixel lighting (reference_shade's model) with the shading

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Texture sampling as GL does it with GL_LINEAR and GL_REPEAT, without and
  * with the mip chain stin builds (GL_LINEAR_MIPMAP_LINEAR). */
 #include <math.h>

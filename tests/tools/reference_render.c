@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-reference: the Embree reference of a scene written as an image with
  * the same channels as stin-render (for the README and for outside checks).
  *   stin-reference SCENE.json -o OUT.png|OUT.exr [--size WxH] [--gouraud] [--shadowed] */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The fake GL of fake_gl.h. Entry points that need behaviour (strings,
  * integers, object names, shader status, counters) are written out here,
  * the ones that change GL state in fake_gl_state.c; every other one is a

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A fake OpenGL for unit tests: every entry point of src/gl_funcs.h as a stub
  * that records what stin asked for. No GL, no window, no heap.
  *

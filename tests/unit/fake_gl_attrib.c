@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* glPushAttrib / glPopAttrib of the fake GL: the attribute groups the GL1
  * tier pushes (current, lighting, transform, enable, texture, pixel mode), each
  * restoring the fields the GL specification's attribute table puts in it.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL state of fake_gl_state.h: the entry points that change it, the
  * queries that read it, GL's initial values, and the field-by-field diff. */
 #define FAKE_GL_STUBS

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL state the fake GL keeps (fake_gl.gl): what a real context holds
  * after the calls it was given, starting from the defaults of the GL 2.1
  * state tables, so that a test can snapshot it and compare it field by field:

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Capability parsing from recorded driver strings (stin__caps_parse), exact
  * extension tokens, version clamping, the caps mask, missing entry points,
  * and detection through the fake GL (stin_detect_caps). */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Context creation on the fake GL: memory sizing, the caller's block,
  * defaults, tier forcing, shader fallback, and GL-object balance. */
 #include <setjmp.h>

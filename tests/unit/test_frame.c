@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Frames and textures on the fake GL: call order, light and draw
  * validation, capacities, stats and pass counts, the GL state left behind,
  * and texture uploads (power-of-two resampling, mip chains, staging). */

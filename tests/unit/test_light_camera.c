@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Light cameras for shadow maps. A directional map is fitted to the draws in
  * view, so as the camera moves the fitted square moves with the visible set;
  * snapped, it moves by whole texels only, so a static point keeps its place

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Meshes on the fake GL: validation, adjacency and manifold status,
  * tangents and default normals, capacities, handles, and range reuse. */
 #include <setjmp.h>

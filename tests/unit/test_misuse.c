@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* API misuse on the fake GL: inputs a hostile or careless caller passes
  * (sizes that overflow, NaN fields, handles of another context, NULL caps,
  * bad framebuffers, extreme scales) must come back as errors, never as a

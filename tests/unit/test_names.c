@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Printable names of every public enum, technique name round trips, and the
  * heap-free formatter (stin__format) that every log line goes through. */
 #include <setjmp.h>

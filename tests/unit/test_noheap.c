@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* No heap, anywhere: (1) the allocator functions are interposed in this
  * executable and count calls while `counting` is set around every public
  * stin call; (2) `nm -u` on the release archive names none of them.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Unit tests of the Embree reference (tests/reference). Scenes are built in
  * memory so these tests do not depend on the scene loader. */
 #include <math.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Unit tests for the tools' scene loader, primitives, camera and image I/O.
  * Run from the repository root (scene paths are relative to it). */
 #include <setjmp.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tier selection and per-feature technique chains (stin__select,
  * stin_tier_supported, stin_best_tier) on hand-built capabilities shaped like
  * the emulation profiles. */

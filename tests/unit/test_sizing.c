@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Sizing a desc from assets (issue 8 item 3): the staging a texture needs,
  * stin_desc_fit's capacities and limits, and real asset sizes (a
  * 4096x4096 texture, a 1M-triangle mesh) created with a fitted desc. */

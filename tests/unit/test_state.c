@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL state contract of stin.h ("GL STATE"), checked on the whole state
  * the fake GL keeps (fake_gl_state.h). For every fake profile, every tier
  * it runs, every shadow and surface technique stin_create accepts there and

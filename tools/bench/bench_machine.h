@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A one-line description of the machine for the bench's closing line. */
 #ifndef STIN_BENCH_MACHINE_H
 #define STIN_BENCH_MACHINE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The shadow-map section of stin-bench.
  *
  * GL1 tier only (the map techniques are fixed-function). Per set-up one stin

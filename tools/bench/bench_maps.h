@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-bench's shadow-map section: on the GL1 tier, the frame time with the
  * fixed-function shadow maps (map-depth, map-combine) at several map sizes,
  * and with stencil shadow volumes, each as a ratio to the unshadowed stin

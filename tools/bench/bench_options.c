@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The option table: every option of stin-bench with its default and --quick
  * value (both go through the option's own setter, so a default is checked
  * like a typed value), its help line and the section it belongs to. --help

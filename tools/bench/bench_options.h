@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-bench's command line: one table of options (bench_options.c) that
  * gives each its argument, default, --quick value, help and setter. */
 #ifndef STIN_BENCH_OPTIONS_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Labels, the machine line and tier selection for the sections (bench_report.h). */
 #include "bench_report.h"
 #include "bench_machine.h"

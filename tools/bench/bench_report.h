@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* What the sections share when they print: labels, the machine line, and
  * which tiers a section runs (with the SKIP lines for the others). */
 #ifndef STIN_BENCH_REPORT_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Per set-up: both renderers built afresh, warm-up, an image check that the
  * raw loop draws what stin draws, then the timed frames in ABBA order (stin,
  * raw, raw, stin, ...) so that drift and noise fall on both sides equally;

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* One measurement of stin-bench: a scene on one tier, drawn by libstin and
  * by the raw-GL loop on the same context, interleaved frame by frame, over
  * several independent set-ups. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A stin-bench section: one table of measurements (with its closing line)
  * that main runs in the order of bench_sections[]. A new section is a file
  * with its run function, a row in bench_sections.c, its index below and,

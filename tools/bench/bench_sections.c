@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The sections of stin-bench, in the order they run (see bench_section.h). */
 #include "bench_section.h"
 

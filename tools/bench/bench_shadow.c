@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The shadow-volume section of stin-bench.
  *
  * Per set-up two stin contexts are created on the one GL context, both forced

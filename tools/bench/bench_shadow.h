@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-bench's shadow-volume section: per tier and scene, the frame time with
  * stencil shadow volumes as a ratio to the unshadowed stin frame (shadows
  * off) for several point-light counts, and an estimate of the per-frame CPU

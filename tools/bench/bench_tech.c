@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The technique sections of stin-bench (PCF shadow maps, surface techniques).
  *
  * On one GLSL tier. Per set-up one stin context forced to the baseline

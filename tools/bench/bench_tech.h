@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-bench's technique sections on the GLSL tiers: rows of one forced
  * technique configuration each (a shadow technique with a map size and a PCF
  * kernel, or a surface technique), each timed as a ratio to a baseline

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Wall-clock timing and the median stin-bench reports. */
 #ifndef STIN_BENCH_TIME_H
 #define STIN_BENCH_TIME_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-bench: what libstin costs per frame, printed as markdown tables
  * (docs/benchmarks.md): the sections of bench_sections.c in turn, on one GL
  * context. Options: bench_options.c. */

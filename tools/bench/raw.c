@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The raw loop's set-up: checks the scene is one it covers, builds stin's
  * vertex layout per mesh in buffer objects (or client arrays, as stin does
  * without them) and dispatches frames to the tier's loop. */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The raw-GL loop stin-bench compares libstin with: the same scene drawn on
  * the same GL context by the minimum of GL calls that produce stin's image on

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL1 raw loop: fixed-function lighting with stin's light model (local
  * viewer, separate specular, GL_NORMALIZE), per object a modelview, a
  * material and a draw; vertex arrays are re-pointed only when the mesh

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Run-time resolution of the raw loop's GL entry points. */
 #include "raw_gl.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The few GL types, enums and entry points the bench's raw-GL loop uses.
  * Copied here rather than taken from a system GL header so that stin-bench

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* GL2/GL4 raw loop: stin's unshadowed plain lit program (raw_program.c),
  * per frame the view and light uniforms, per object the model and material
  * uniforms and a draw; attributes (GL2) or the VAO (GL4) are re-bound only

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "raw_math.h"
 
 void raw_mat4_mul(float out[16], const float a[16], const float b[16])

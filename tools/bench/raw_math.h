@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Column-major matrix helpers for the raw loop (what stin computes per draw). */
 #ifndef STIN_BENCH_RAW_MATH_H
 #define STIN_BENCH_RAW_MATH_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The raw loop's GLSL program, built from the same files stin embeds: the
  * tier's lit.vert and lit.frag, with the chunks of stin's unshadowed plain
  * program spliced in at lit.frag's "// @chunks" line (src/shader.c,

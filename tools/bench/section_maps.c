@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The GL1 shadow-map section: map-depth and map-combine per map size, and
  * stencil volumes, each against shadows off on one scene. */
 #include "bench_maps.h"

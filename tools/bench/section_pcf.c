@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The PCF section (gl2, gl4): map-pcf per map size and kernel against
  * shadows off, a table per tier, then the ratios as one grid. */
 #include "bench_options.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The stin / raw section: per tier a table of stin's and the raw loop's
  * median frame times per scene, then the goal line over every row. */
 #include "bench_options.h"

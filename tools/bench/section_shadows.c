@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The shadow-volume section: per tier the shadowed frame against shadows
  * off per scene and light count, then what building the volumes costs on
  * the CPU (stin_end_frame at a tiny viewport). */

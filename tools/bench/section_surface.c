@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* The surface section (gl2, gl4, shadows off): each GLSL surface technique
  * against the plain surface, a table per tier. */
 #include "bench_options.h"

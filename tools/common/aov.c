@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Readback of one frame into the EXR channel set of the image contract. */
 #include "aov.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * The render tool's image contract (DESIGN.md): one frame of a scene read
  * back into the fixed EXR channels

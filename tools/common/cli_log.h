@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* A stin log callback that prints to stderr, shared by the tools. */
 #ifndef STIN_TOOLS_CLI_LOG_H
 #define STIN_TOOLS_CLI_LOG_H

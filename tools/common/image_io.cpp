@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // image_io.h implemented with OpenImageIO. Every entry point catches all
 // exceptions: they must never unwind into the C callers.
 #include "image_io.h"

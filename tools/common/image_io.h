@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Image files through OpenImageIO, behind a C interface (image_io.cpp).
  * Pixels are float, rows TOP to bottom (file order), channels interleaved.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* isolate.h: fork, two pipes (result bytes, failure reason) and a deadline. */
 #include "isolate.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Runs untrusted-input work (model and image decoders we do not own) in a
  * child process with a time limit, so that a decoder that crashes or never

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 #include "one_line.h"
 
 #include <stdio.h>

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Makes text from a file safe to print as one line of an error message. */
 #ifndef STIN_TOOLS_ONE_LINE_H
 #define STIN_TOOLS_ONE_LINE_H

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Scene files for stin's tools and tests (JSON, docs/scene-format.md).
  *

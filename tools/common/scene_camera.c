@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Camera matrices with gluLookAt / gluPerspective semantics (so the GL1
  * tier, the shader tiers and the reference all agree), and scene stats. */
 #include "scene.h"

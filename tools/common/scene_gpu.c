@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Scene -> libstin: meshes, textures, materials and one frame. */
 #include "scene_gpu.h"
 

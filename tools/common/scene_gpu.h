@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * A loaded scene handed to libstin: meshes and textures created in a stin
  * context, and one frame of it submitted. Shared by stin-render, stin-bench

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Internals shared by the scene loader's files: the JSON reading helpers
  * (scene_json_util.c), mesh files (scene_mesh_file.c) and textures

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * scene_load: reads a JSON scene file (docs/scene-format.md), validates every
  * value and builds the scene. Any problem stops the load with one message

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Typed, range-checked reads of JSON members with "FILE: where: problem"
  * errors; every check a scene file needs goes through here so messages stay
  * uniform. */

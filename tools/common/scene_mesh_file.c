@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Model files (OBJ, PLY, STL, glTF/glb, anything assimp reads) merged into
  * one indexed triangle mesh in the file's own coordinates. */
 #include "scene_internal.h"

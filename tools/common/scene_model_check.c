@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Checks on a model or texture file before a decoder reads it. */
 #include "scene_internal.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Tessellated primitives; orientation and seam rules in scene_primitives.h. */
 #include "scene_primitives.h"
 

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /*
  * Tessellated primitives for scene files (scene_primitives.c). Internal to
  * the tool code; unit tests call these directly.

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* Textures of a scene file: image files, or procedural patterns generated
  * here so tests and demos need no binary assets. All results are RGBA8 with
  * rows bottom to top; height maps keep the height in R (copied to G, B). */

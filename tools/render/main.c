@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-render: renders a scene file through libstin on an offscreen context
  * and writes PNG or OpenEXR (the image contract of DESIGN.md). Every failure
  * is one stderr line, "stin-render: FILE: where: problem". */

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-render's options: parsing and the usage text. */
 #include "render_options.h"
 #include "stin_platform.h"

@@ -1,3 +1,4 @@
+/* SPDX-License-Identifier: MIT */
 /* stin-render's command line (render_options.c). */
 #ifndef STIN_RENDER_OPTIONS_H
 #define STIN_RENDER_OPTIONS_H
