@@ -141,11 +141,12 @@ static void screen_quad(stin_context *ctx)
     ctx->bound_mesh = 0xffffffffu;
 }
 
-/* 1 when EP may drop a draw's light-facing triangles: the step is on and
- * the mesh is closed (an open one's back may be missing). */
+/* 1 when EP may drop a draw's light-facing triangles: the step is on, the
+ * mesh is closed (an open one's back may be missing) and its material is
+ * not two-sided (the eye may see a closed mesh from inside). */
 static int cull_lit(const stin_context *ctx, const stin__draw *d)
 {
-    return !(ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_EP) &&
+    return !(ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_EP) && !d->material.two_sided &&
            ctx->meshes[d->mesh_slot].info.closed_manifold;
 }
 

@@ -650,6 +650,10 @@ typedef struct stin_material {
     stin_technique surface; /* requested surface technique; STIN_TECH_NONE = the
                              * context's choice. The draw uses the lower of the two
                              * (dot3 asks for normal mapping at most on GLSL tiers) */
+    int two_sided;          /* 0 (default): a closed mesh is seen from outside only;
+                             * nonzero: both sides of its surface may be seen (the eye
+                             * inside it), so vdsm keeps the triangles facing the light
+                             * (no EP). Open meshes are treated so anyway */
 } stin_material;
 
 typedef enum stin_output {
