@@ -243,6 +243,8 @@ typedef void GLvoid;
 #define GL_CCW 0x0901
 /* vdsm's light-view pyramid */
 #define GL_NOTEQUAL 0x0205
+#define GL_RG 0x8227
+#define GL_RG32F 0x8230
 #define GL_POINTS 0x0000
 #define GL_TRIANGLES_ADJACENCY 0x000C
 #define GL_NEAREST_MIPMAP_NEAREST 0x2700
