@@ -93,6 +93,7 @@ typedef struct stin__map_pcf_state {
 typedef struct stin__vdsm_pyramid {
     GLuint fbo, accum, levels;  /* accumulation (MAX-blended) and the pyramid, RG32F */
     GLuint stencil;             /* the light pass's per-draw outline marks */
+    GLuint points;              /* a vertex array without arrays: one point per pixel */
     GLuint light_prog, receiver_prog, reduce_prog;
     int size, top;              /* texels a side of level 0; the coarsest level (1 x 1) */
     int usable;                 /* programs and framebuffer are there */

@@ -36,6 +36,9 @@
  * texel counted as covered by one triangle is grown by it: room for the
  * rasteriser's snapping and the passes' rounding. */
 #define GROW_TEXELS 0.05f
+/* Texels a side at most (desc.shadow_map_size beyond it: this): 2048 is
+ * 96 MB of GL memory. */
+#define MAX_SIZE 2048u
 /* Widest half angle of a perspective light view, as its tangent (83
  * degrees). */
 #define MAX_TAN 8.0f
@@ -99,13 +102,15 @@ void stin__vdsm_pyramid_release(stin_context *ctx)
     stin__vdsm_delete_programs(ctx, &p->light_prog, &p->receiver_prog, &p->reduce_prog);
     if (p->fbo)
         GL(ctx, DeleteFramebuffers)(1, &p->fbo);
+    if (p->points)
+        GL(ctx, DeleteVertexArrays)(1, &p->points);
     if (p->accum)
         GL(ctx, DeleteTextures)(1, &p->accum);
     if (p->levels)
         GL(ctx, DeleteTextures)(1, &p->levels);
     if (p->stencil)
         GL(ctx, DeleteTextures)(1, &p->stencil);
-    p->fbo = p->accum = p->levels = p->stencil = 0;
+    p->fbo = p->accum = p->levels = p->stencil = p->points = 0;
     p->usable = p->ready = 0;
 }
 
@@ -114,7 +119,7 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
     char msg[160];
     GLenum status;
-    int size = (int)ctx->desc.shadow_map_size;
+    int size = (int)(ctx->desc.shadow_map_size < MAX_SIZE ? ctx->desc.shadow_map_size : MAX_SIZE);
     msg[0] = '\0';
     p->light_prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm_light.geom",
                                        "gl4/vdsm_light.frag", NULL, msg, sizeof msg);
@@ -136,6 +141,7 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
     for (p->top = 0; (1 << p->top) < size; p->top++)
         ;
     GL(ctx, GenFramebuffers)(1, &p->fbo);
+    GL(ctx, GenVertexArrays)(1, &p->points);
     GL(ctx, GenTextures)(1, &p->accum);
     GL(ctx, GenTextures)(1, &p->levels);
     GL(ctx, GenTextures)(1, &p->stencil);
@@ -151,6 +157,8 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, p->fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->accum,
+                                  0);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, p->stencil,
                                   0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                   p->stencil, 0);
@@ -360,7 +368,7 @@ static void receivers(stin_context *ctx, const float light[4])
             rect[k] = (float)vp[k];
         GL(ctx, Uniform4fv)(p->r_rect, 1, rect);
     }
-    GL(ctx, BindVertexArray)(ctx->volume_vao);
+    GL(ctx, BindVertexArray)(p->points);
     GL(ctx, DrawArrays)(GL_POINTS, 0, (GLsizei)vp[2] * vp[3]);
     GL(ctx, BindVertexArray)(0);
     ctx->bound_mesh = 0xffffffffu;

@@ -72,7 +72,7 @@
  * 1e-4 of the scene). Closed meshes drop the triangles facing the light
  * (EP; STIN_DEBUG_VDSM_NO_EP keeps them); open ones, and materials marked
  * two_sided, keep them. Per light a pyramid over the light's view (desc.
- * shadow_map_size texels a side: two RG32F textures, the second with its
+ * shadow_map_size texels a side, at most 2048: two RG32F textures, the second with its
  * mip levels, and a depth-stencil texture, about 23 bytes a texel of GL
  * memory, made at stin_create) drops triangles that lie wholly behind drawn
  * triangles nearer the light (SM) and triangles with no visible surface
