@@ -103,7 +103,7 @@ typedef struct stin__vdsm_pyramid {
     float view_proj[16];        /* world -> the light's clip space */
     float depth_row[4];         /* world -> light depth */
     GLint l_model, l_vp, l_depth, l_light, l_cull_lit, l_size, l_grow, l_bound, l_persp,
-        l_marks, l_frag_grow;
+        l_marks;
     GLint r_position, r_normal, r_light, r_vp, r_depth, r_rect;
     GLint d_source, d_first;
     GLint p_sm, p_dc, p_vp, p_depth, p_pyramid, p_size, p_top;

@@ -42,8 +42,8 @@
 /* Widest half angle of a perspective light view, as its tangent (83
  * degrees). */
 #define MAX_TAN 8.0f
-/* A perspective view's occluders and receivers lie clearly in front of the
- * light: deeper than this fraction of the deepest corner. */
+/* A perspective view's occluders lie clearly in front of the light: deeper
+ * than this fraction of the deepest corner. */
 #define FRONT 1e-3f
 
 static void locate(stin_context *ctx, GLuint polygon_prog)
