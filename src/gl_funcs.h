@@ -137,6 +137,7 @@
     X(void, GenQueries, (GLsizei n, GLuint *ids), STIN_CAP_OCCLUSION_QUERY, "glGenQueriesARB") \
     X(void, DeleteQueries, (GLsizei n, const GLuint *ids), STIN_CAP_OCCLUSION_QUERY,       \
       "glDeleteQueriesARB")                                                                \
+    X(void, BlendEquationSeparate, (GLenum rgb, GLenum alpha), NEED_GL30, "")              \
     X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *v), STIN_CAP_OCCLUSION_QUERY, \
       "glGetQueryObjectuivARB")
 

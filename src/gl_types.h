@@ -242,6 +242,18 @@ typedef void GLvoid;
 #define GL_STREAM_DRAW 0x88E0
 #define GL_CW 0x0900
 #define GL_CCW 0x0901
+/* vdsm's light-view pyramid */
+#define GL_NOTEQUAL 0x0205
+#define GL_RG 0x8227
+#define GL_RG32F 0x8230
+#define GL_POINTS 0x0000
+#define GL_TRIANGLES_ADJACENCY 0x000C
+#define GL_NEAREST_MIPMAP_NEAREST 0x2700
+#define GL_TEXTURE_BASE_LEVEL 0x813C
+#define GL_FUNC_ADD 0x8006
+#define GL_MAX 0x8008
+#define GL_BLEND_EQUATION_RGB 0x8009
+#define GL_BLEND_EQUATION_ALPHA 0x883D
 
 /* caller state a frame establishes (caller_state.c) */
 #define GL_FUNC_ADD 0x8006

@@ -266,9 +266,10 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->info.triangle_count = kept;
     m->info.degenerate_dropped = desc->index_count / 3u - kept;
     bounds(&m->info, verts, desc->vertex_count);
-    m->vbo = m->ibo = m->vao = 0;
+    m->vbo = m->ibo = m->vao = m->adj_ibo = m->adj_vao = 0;
     out->id = stin__handle_issue(&m->handle, slot, ctx->desc.max_meshes, ctx->handle_tag);
     upload(ctx, m);
+    stin__vdsm_mesh_upload(ctx, m);
     if (m->info.degenerate_dropped)
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_MESH_DEGENERATE,
                   "stin_create_mesh: dropped %u degenerate triangles of %u",
@@ -330,6 +331,7 @@ static void release(stin_context *ctx, stin__mesh_slot *m)
         GL(ctx, DeleteBuffers)(1, &m->ibo);
     if (m->vao)
         GL(ctx, DeleteVertexArrays)(1, &m->vao);
+    stin__vdsm_mesh_release(ctx, m);
     stin__range_give(&ctx->vertex_ranges, m->first_vertex);
     stin__range_give(&ctx->triangle_ranges, m->first_triangle);
     stin__handle_release(&m->handle, ctx->desc.max_meshes);

@@ -42,6 +42,7 @@ typedef struct stin__mesh_slot {
     uint32_t first_triangle, triangle_count;
     stin_mesh_info info;
     GLuint vbo, ibo, vao;
+    GLuint adj_ibo, adj_vao;  /* vdsm: GL_TRIANGLES_ADJACENCY indices (0: none) */
 } stin__mesh_slot;
 
 typedef struct stin__texture_slot {
@@ -80,6 +81,12 @@ void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint3
                          uint32_t tri_count, float *scratch_bitangents, int have_uvs);
 void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count);
+
+/* A mesh's triangles with their neighbours' far vertices, for vdsm's light
+ * pass (shadow_vdsm_adjacency.c): made at mesh creation where vdsm is the
+ * shadow technique, deleted with the mesh. */
+void stin__vdsm_mesh_upload(struct stin_context *ctx, stin__mesh_slot *m);
+void stin__vdsm_mesh_release(struct stin_context *ctx, stin__mesh_slot *m);
 
 /* ---- shadow volumes ----------------------------------------------------- */
 /* clockwise: the triangles are wound clockwise toward their outside (front

@@ -90,6 +90,30 @@ typedef struct stin__map_pcf_state {
     uint32_t light;
 } stin__map_pcf_state;
 
+/* VDSM steps SM and DC (shadow_vdsm_pyramid.c): per light, a pyramid over
+ * the light's view of the scene - the occluders' depth bound and the deepest
+ * receiver per texel, maxima up the levels - that the shadow polygons read
+ * to drop triangles and to stop their extrusion. */
+typedef struct stin__vdsm_pyramid {
+    GLuint fbo, accum, levels;  /* accumulation (MAX-blended) and the pyramid, RG32F */
+    GLuint stencil;             /* the light pass's per-draw outline marks */
+    GLuint points;              /* a vertex array without arrays: one point per pixel */
+    GLuint light_prog, receiver_prog, reduce_prog;
+    int size, top;              /* texels a side of level 0; the coarsest level (1 x 1) */
+    int usable;                 /* programs and framebuffer are there */
+    int ready;                  /* this light's pyramid is drawn (else SM and DC are off) */
+    int perspective;            /* the light's view is a perspective one */
+    float front;                /* occluders lie deeper than this (behind: no triangle) */
+    float view_proj[16];        /* world -> the light's clip space */
+    float depth_row[4];         /* world -> light depth */
+    GLint l_model, l_vp, l_depth, l_light, l_cull_lit, l_size, l_grow, l_bound, l_persp,
+        l_marks;
+    GLint r_position, r_normal, r_light, r_vp, r_depth, r_rect;
+    GLint d_source, d_first;
+    GLint p_sm, p_dc, p_vp, p_depth, p_pyramid, p_size, p_top;
+    int said_no_view, said_failed;
+} stin__vdsm_pyramid;
+
 /* VDSM (shadow_vdsm.c): the position buffer - per pixel the visible
  * surface's world position and its facet normal - and the programs that
  * turn each triangle into shadow polygons over it. */
@@ -104,11 +128,30 @@ typedef struct stin__vdsm_state {
     float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
     int ready;              /* this frame's position buffer is drawn */
     int said_area, said_failed;
+    stin__vdsm_pyramid pyramid;
 } stin__vdsm_state;
 
 /* The position buffer stage and its release (shadow_vdsm_buffer.c). */
 void stin__vdsm_buffer_draw(stin_context *ctx);
 void stin__vdsm_buffer_release(stin_context *ctx);
+/* The pyramid (shadow_vdsm_pyramid.c): programs and textures at set-up
+ * (a failure leaves SM and DC off, logged); per light, with the screen mask
+ * bound, draws it and binds the mask again; then the shadow-polygon
+ * program's uniforms (bound program) for that light. */
+void stin__vdsm_pyramid_init(stin_context *ctx);
+void stin__vdsm_pyramid_release(stin_context *ctx);
+void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4]);
+void stin__vdsm_pyramid_uniforms(stin_context *ctx);
+/* Shared by the vdsm files (shadow_vdsm.c): a program of embedded shaders
+ * (geom may be NULL; out1 names a second output after o_position), and the
+ * deletion of three programs (each set to 0). */
+GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
+                          const char *frag, const char *out1, char *msg, size_t size);
+void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint *c);
+/* A full-viewport quad through the bound program (shadow_vdsm.c). */
+void stin__vdsm_screen_quad(stin_context *ctx);
+/* 1 when EP may drop a draw's light-facing triangles (shadow_vdsm.c). */
+int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d);
 
 /* Screen visibility masks (shadow_mask.c): an RGBA8 texture the size of the
  * frame's viewport, one light per channel, with its own depth-stencil

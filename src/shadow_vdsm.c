@@ -8,12 +8,16 @@
  * fragment stage writes 0 wherever the segment from the pixel's surface
  * point to the light hits that triangle. Steps: EP drops triangles facing
  * the light on closed meshes (the ones behind them cast the same shadow);
- * the growth is conservative rasterisation. Triangles alone are needed: no
- * adjacency, so open and non-manifold meshes cast exactly. */
+ * SM and DC read a light-view pyramid (shadow_vdsm_pyramid.c) to drop
+ * triangles already in shadow or with nothing behind them, and to end the
+ * extrusion at the deepest receiver; the growth is conservative
+ * rasterisation. The shadow polygons need triangles alone: no adjacency, so
+ * open and non-manifold meshes cast exactly (SM's occluders use it where
+ * the mesh has it). */
 #include "internal.h"
 
-static GLuint build(stin_context *ctx, const char *vert, const char *geom, const char *frag,
-                    const char *out1, char *msg, size_t size)
+GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
+                          const char *frag, const char *out1, char *msg, size_t size)
 {
     stin__program_source src;
     stin__memzero(&src, sizeof src);
@@ -27,22 +31,28 @@ static GLuint build(stin_context *ctx, const char *vert, const char *geom, const
     return stin__program_build_source(ctx, &src, msg, size);
 }
 
-static void release(stin_context *ctx)
+void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint *c)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
     GLuint *progs[3];
     int i;
-    progs[0] = &v->position_prog;
-    progs[1] = &v->facing_prog;
-    progs[2] = &v->polygon_prog;
+    progs[0] = a;
+    progs[1] = b;
+    progs[2] = c;
     for (i = 0; i < 3; i++)
         if (*progs[i]) {
             GL(ctx, DeleteProgram)(*progs[i]);
             *progs[i] = 0;
         }
+}
+
+static void release(stin_context *ctx)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    stin__vdsm_delete_programs(ctx, &v->position_prog, &v->facing_prog, &v->polygon_prog);
     if (v->query)
         GL(ctx, DeleteQueries)(1, &v->query);
     v->query = 0;
+    stin__vdsm_pyramid_release(ctx);
     stin__vdsm_buffer_release(ctx);
     stin__mask_release(ctx);
 }
@@ -96,13 +106,13 @@ static stin_result vdsm_init(stin_context *ctx)
         return STIN_OK;
     }
     msg[0] = '\0';
-    v->position_prog = build(ctx, "gl4/vdsm_position.vert", NULL, "gl4/vdsm_position.frag",
+    v->position_prog = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL, "gl4/vdsm_position.frag",
                              "o_normal", msg, sizeof msg);
     if (v->position_prog)
-        v->facing_prog = build(ctx, "gl4/vdsm_screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
+        v->facing_prog = stin__vdsm_program(ctx, "gl4/vdsm_screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
                                msg, sizeof msg);
     if (v->facing_prog)
-        v->polygon_prog = build(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag", NULL,
+        v->polygon_prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag", NULL,
                                 msg, sizeof msg);
     if (!v->polygon_prog) {
         release(ctx);
@@ -111,6 +121,7 @@ static stin_result vdsm_init(stin_context *ctx)
         return STIN_OK;
     }
     locate(ctx);
+    stin__vdsm_pyramid_init(ctx);
     if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
         GL(ctx, GenQueries)(1, &v->query);
     return STIN_OK;
@@ -129,7 +140,7 @@ static void light_point(const stin_light_desc *l, float out[4])
 }
 
 /* A full-viewport quad through the bound program (the GL4 streaming arrays). */
-static void screen_quad(stin_context *ctx)
+void stin__vdsm_screen_quad(stin_context *ctx)
 {
     static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
                                       -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
@@ -142,11 +153,12 @@ static void screen_quad(stin_context *ctx)
     ctx->bound_mesh = 0xffffffffu;
 }
 
-/* 1 when EP may drop a draw's light-facing triangles: the step is on and
- * the mesh is closed (an open one's back may be missing). */
-static int cull_lit(const stin_context *ctx, const stin__draw *d)
+/* EP may drop a draw's light-facing triangles where the step is on, the
+ * mesh is closed (an open one's back may be missing) and its material is
+ * not two-sided (the eye may see a closed mesh from inside). */
+int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d)
 {
-    return !(ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_EP) &&
+    return !(ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_EP) && !d->material.two_sided &&
            ctx->meshes[d->mesh_slot].info.closed_manifold;
 }
 
@@ -169,11 +181,12 @@ static void polygons(stin_context *ctx, const float light[4])
     GL(ctx, Uniform1f)(v->poly_grow, ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_GROW ? 0.0f : 0.5f);
     GL(ctx, Uniform1i)(v->poly_position, 0);
     GL(ctx, Uniform1i)(v->poly_normal, 1);
+    stin__vdsm_pyramid_uniforms(ctx);
     if (v->query)
         GL(ctx, BeginQuery)(GL_PRIMITIVES_GENERATED, v->query);
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        int c = cull_lit(ctx, d);
+        int c = stin__vdsm_cull_lit(ctx, d);
         if (c != culled)
             GL(ctx, Uniform1i)(v->poly_cull_lit, c);
         culled = c;
@@ -205,6 +218,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         v->said_area = 1;
     }
     light_point(l, light);
+    stin__vdsm_pyramid_draw(ctx, light);
     ps.depth_test = ps.depth_write = ps.stencil_test = ps.blend = ps.cull = 0;
     ps.scissor = ps.depth_clamp = ps.polygon_offset = 0;
     ps.color_write = 1;
@@ -218,7 +232,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     GL(ctx, Uniform1i)(v->face_position, 0);
     GL(ctx, Uniform1i)(v->face_normal, 1);
     GL(ctx, Uniform4fv)(v->face_light, 1, light);
-    screen_quad(ctx);
+    stin__vdsm_screen_quad(ctx);
     polygons(ctx, light);
     ctx->stats.passes += 2;
     return 1;

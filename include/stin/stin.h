@@ -71,13 +71,29 @@
  * largest coordinate along its facet normal (no self-shadowing; contact
  * shadows closer than that are lost, as with the test reference's own
  * 1e-4 of the scene). Closed meshes drop the triangles facing the light
- * (STIN_DEBUG_VDSM_NO_EP keeps them); open ones keep them. Blended casters
+ * (EP; STIN_DEBUG_VDSM_NO_EP keeps them); open ones, and materials marked
+ * two_sided, keep them. Per light a pyramid over the light's view (desc.
+ * shadow_map_size texels a side, at most 2048: two RG32F textures, the second with its
+ * mip levels, and a depth-stencil texture, about 23 bytes a texel of GL
+ * memory, made at stin_create) drops triangles that lie wholly behind drawn
+ * triangles nearer the light (SM) and triangles with no visible surface
+ * behind them (DC), and ends each shadow face at the deepest visible
+ * surface behind its triangle instead of infinity (DC): the same mask at any
+ * map size. Its view looks from the light (along a directional one) at the
+ * centre of the draws, at most 166 degrees wide; triangles outside it cast
+ * as without these steps, and draws reaching behind a point or spot light
+ * do not count as occluders there. The occluders' outlines need the mesh's
+ * adjacency: vdsm keeps a GL_TRIANGLES_ADJACENCY index buffer per mesh (24
+ * bytes a triangle of GL memory). STIN_DEBUG_VDSM_NO_SM and _NO_DC turn the
+ * steps off. Blended casters
  * also draw their own face (what is behind them is in the position buffer).
  * Area lights are shadowed from their centre (logged once). Cost: every
- * triangle of every draw once per light through the geometry shader, plus
- * the screen area of its grown shadow faces; STIN_DEBUG_VDSM_COUNT counts
- * the emitted primitives. Without its shaders or the mask it falls back
- * (logged) to "volume" where there is a stencil buffer, else "map-pcf".
+ * triangle of every draw once per light through the geometry shader (twice
+ * more through the pyramid's light pass), plus the screen area of its grown
+ * shadow faces; STIN_DEBUG_VDSM_COUNT counts the emitted primitives. Without
+ * its shaders or the mask it falls back (logged) to "volume" where there is
+ * a stencil buffer, else "map-pcf"; without the pyramid's shaders or
+ * framebuffer it runs without SM and DC (logged).
  * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
  * point lights get six 90-degree maps drawn before their pass.
@@ -505,12 +521,16 @@ typedef struct stin_desc {
 #define STIN_DEBUG_VOLUME_ZPASS 2u  /* z-pass for every caster: wrong with the eye in a volume */
 /* VDSM steps, each on by default, off for measurement and tests; the mask is
  * the same without them (NO_GROW: pixels a shadow polygon covers only in
- * part, not at their centre, may be lost - the artifact the growth fixes). */
+ * part, not at their centre, may be lost - the artifact the growth fixes).
+ * STIN_DEBUG_VDSM_COUNT's count is of what the steps left. */
 #define STIN_DEBUG_VDSM_NO_EP 4u    /* keep triangles facing the light */
 #define STIN_DEBUG_VDSM_NO_GROW 8u  /* no conservative growth of the shadow polygons */
 #define STIN_DEBUG_VDSM_COUNT 16u   /* count the primitives the geometry shader emits into
                                      * stin_frame_stats.vdsm_primitives (waits for the GPU
                                      * after each light) */
+#define STIN_DEBUG_VDSM_NO_SM 32u   /* no light-view pyramid culling of triangles in shadow */
+#define STIN_DEBUG_VDSM_NO_DC 64u   /* extrude to infinity; no culling of triangles with no
+                                     * receiver behind them */
 
 typedef struct stin_context stin_context;
 
@@ -710,6 +730,10 @@ typedef struct stin_material {
     stin_technique surface; /* requested surface technique; STIN_TECH_NONE = the
                              * context's choice. The draw uses the lower of the two
                              * (dot3 asks for normal mapping at most on GLSL tiers) */
+    int two_sided;          /* 0 (default): a closed mesh is seen from outside only;
+                             * nonzero: both sides of its surface may be seen (the eye
+                             * inside it), so vdsm keeps the triangles facing the light
+                             * (no EP). Open meshes are treated so anyway */
 } stin_material;
 
 typedef enum stin_output {

@@ -11,6 +11,11 @@
 // bounding box cut by every edge moved out by the square's reach. A pixel a
 // face covers only in part is then tested too, so no pixel centre is lost to
 // rasterisation rules or vertex snapping.
+// Steps SM and DC read the light-view pyramid (src/shadow_vdsm_pyramid.c)
+// over the triangle's footprint in the light's view: SM drops a triangle
+// lying wholly deeper than the occluders there (every ray it meets already
+// meets a drawn triangle first), DC one with no receiver behind it, and
+// stops the extrusion at the deepest receiver there instead of infinity.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 48) out;
 in vec3 g_world[];
@@ -21,6 +26,13 @@ uniform vec4 u_viewport; // x, y, width, height in pixels
 uniform float u_grow;    // pixels every face grows by (0.5: conservative; 0: centres only)
 uniform int u_cull_lit;  // EP: drop triangles facing the light (closed meshes)
 uniform int u_caps;      // also draw the triangle itself where the eye sees its volume through it
+uniform int u_sm;        // SM: cull triangles behind the pyramid's occluders
+uniform int u_dc;        // DC: cull triangles with no receiver behind, clip the rest there
+uniform mat4 u_light_vp; // world -> the light's clip space (the pyramid's view)
+uniform vec4 u_depth_row; // world -> light depth (linear, grows away from the light)
+uniform sampler2D u_pyramid; // x: occluder bound (BIG unknown), y: deepest receiver (-BIG none)
+uniform float u_pyramid_size; // texels a side of level 0
+uniform int u_pyramid_top;    // its coarsest level (1 x 1)
 flat out vec3 f_v0;
 flat out vec3 f_v1;
 flat out vec3 f_v2;
@@ -151,6 +163,48 @@ void put_face(vec4 w[4], int n)
     put_polygon(r, m);
 }
 
+// Texels of the footprint are read this far out of it, against rounding
+// between this pass, the light pass and the receivers (texels).
+const float FOOTPRINT_MARGIN = 0.05;
+// Depths are compared with this relative room.
+const float DEPTH_ROOM = 1e-4;
+
+// The pyramid over the triangle's footprint: (occluder bound, deepest
+// receiver) of the finest level where it spans at most 2 x 2 texels.
+// Returns false where the footprint is not wholly in the map (nothing known).
+bool pyramid_read(vec3 v[3], out vec2 r)
+{
+    vec2 lo = vec2(3.4e38), hi = vec2(-3.4e38);
+    for (int i = 0; i < 3; i++) {
+        vec4 c = u_light_vp * vec4(v[i], 1.0);
+        if (!(c.w > 0.0))
+            return false;
+        vec2 t = (c.xy / c.w * 0.5 + 0.5) * u_pyramid_size;
+        lo = min(lo, t);
+        hi = max(hi, t);
+    }
+    lo -= FOOTPRINT_MARGIN;
+    hi += FOOTPRINT_MARGIN;
+    if (lo.x < 0.0 || lo.y < 0.0 || hi.x > u_pyramid_size || hi.y > u_pyramid_size)
+        return false;
+    int level = 0;
+    vec2 scale = vec2(1.0);
+    ivec2 a = ivec2(floor(lo)), b = ivec2(floor(hi));
+    while (level < u_pyramid_top && (b.x - a.x > 1 || b.y - a.y > 1)) {
+        level++;
+        scale *= 0.5;
+        a = ivec2(floor(lo * scale));
+        b = ivec2(floor(hi * scale));
+    }
+    int top = int(u_pyramid_size * scale.x) - 1;
+    b = min(b, ivec2(top));
+    r = vec2(-3.4e38);
+    for (int y = a.y; y <= b.y; y++)
+        for (int x = a.x; x <= b.x; x++)
+            r = max(r, texelFetch(u_pyramid, ivec2(x, y), level).xy);
+    return true;
+}
+
 void main()
 {
     vec3 v[3] = vec3[3](g_world[0], g_world[1], g_world[2]);
@@ -162,6 +216,43 @@ void main()
         return;
     if (u_cull_lit != 0 && lit > 0.0)
         return;
+    // SM and DC. depth: each vertex's light depth; clip: where DC stops the
+    // extrusion (3.4e38: at infinity).
+    float clip = 3.4e38;
+    vec2 pyr;
+    if ((u_sm != 0 || u_dc != 0) && pyramid_read(v, pyr)) {
+        float nearest = 3.4e38;
+        for (int i = 0; i < 3; i++)
+            nearest = min(nearest, dot(u_depth_row, vec4(v[i], 1.0)));
+        if (u_sm != 0 && nearest > pyr.x + DEPTH_ROOM * max(abs(pyr.x), abs(nearest)))
+            return;             // behind the occluders all over its footprint
+        if (u_dc != 0) {
+            clip = pyr.y + DEPTH_ROOM * abs(pyr.y);
+            if (clip < nearest)
+                return;         // no receiver behind it
+        }
+    }
+    // Each edge's far end: at infinity, or with DC where the light depth
+    // reaches the clip. The eye beyond that plane would see the far cap,
+    // which is not drawn: such a volume stays infinite.
+    vec4 far[3];
+    for (int i = 0; i < 3; i++)
+        far[i] = extruded(v[i]);
+    if (clip < 3.0e38) {
+        for (int i = 0; i < 3; i++) {
+            vec3 dir = far[i].xyz;
+            float rate = dot(u_depth_row.xyz, dir);
+            float t = rate > 0.0 ? max(clip - dot(u_depth_row, vec4(v[i], 1.0)), 0.0) / rate : -1.0;
+            far[i] = vec4(v[i] + dir * t, 1.0);
+            if (t < 0.0)
+                clip = 3.4e38;
+        }
+        vec3 fn = cross(far[1].xyz - far[0].xyz, far[2].xyz - far[0].xyz);
+        vec4 fp = vec4(fn, -dot(fn, far[0].xyz));
+        if (clip >= 3.0e38 || !(side(fp, u_camera) * side(fp, u_light) > 0.0))
+            for (int i = 0; i < 3; i++)
+                far[i] = extruded(v[i]);
+    }
     // The volume's faces, oriented so the triangle is inside each.
     vec4 faces[3];
     bool eye_inside = side(cap, u_camera) * lit < 0.0;
@@ -186,11 +277,11 @@ void main()
     for (int e = 0; e < 3; e++) {
         if (side(faces[e], u_camera) > 0.0)
             continue; // the eye is on the inner side: a face it sees from within
-        vec3 a = v[e], b = v[e < 2 ? e + 1 : 0];
-        w[0] = vec4(a, 1.0);
-        w[1] = vec4(b, 1.0);
-        w[2] = extruded(b);
-        w[3] = extruded(a);
+        int f = e < 2 ? e + 1 : 0;
+        w[0] = vec4(v[e], 1.0);
+        w[1] = vec4(v[f], 1.0);
+        w[2] = far[f];
+        w[3] = far[e];
         put_face(w, 4);
     }
     // The triangle itself: where the eye looks into the volume through it,

@@ -12,15 +12,36 @@
  *              Compared: covered pixels whose P matches the reference's.
  *   no-grow    the same count without conservative growth (the seed's
  *              isolated lit pixels): it may not come out lower than with it.
- *   steps      EP off gives the identical mask on every pixel away from a
- *              reference shadow edge (the chain's invariance; open meshes
- *              have EP off anyway), and at most 0.05% differ on one.
+ *   steps      SP alone (EP, SM and DC off) gives the identical mask to
+ *              SP + EP on every pixel away from a reference shadow edge
+ *              (open meshes have EP off anyway), and at most 0.05% differ on
+ *              one: EP changes which triangles a grazing segment is tested
+ *              against, and which of two that share an edge it hits is
+ *              rounding.
+ *   chain      SP + EP, + SM and + SM + DC give pixel-identical masks,
+ *              tolerance 0: SM drops only triangles whose every shadowed
+ *              pixel a nearer drawn triangle shadows too (tested against the
+ *              same segment), DC only what no pixel's test can hit, so no
+ *              test on any pixel changes. Reports each set's primitive count
+ *              (the seed's P_c).
+ *   culls      (spheres scenes) SM and DC each emit fewer primitives than
+ *              the step set before them: a cull that drops nothing fails.
+ *   map-size   the light pyramid at 64 texels a side gives the mask of the
+ *              default 1024, pixel for pixel (tolerance 0): the resolution
+ *              changes what is culled, not the mask.
  *   gl-clean   no GL error, no call outside the profile.
+ * Once per run, on a built-in scene (the eye inside a closed box lit from
+ * outside, so the floor's inside faces the light through the lid):
+ *   two-sided  with the box's material two-sided (EP off for it) the mask
+ *              matches the ray cast as in vis; with it one-sided EP drops
+ *              the lid, which faces the light, and the floor shows lit - that
+ *              render must differ (the flag is what makes it right).
  */
 #include "aov.h"
 #include "capture.h"
 #include "image_test.h"
 #include "reference.h"
+#include "scene_primitives.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -186,7 +207,16 @@ static long mismatches(const vdsm_case *c, const capture *cap, long *compared, l
     return differ;
 }
 
-static int render(const vdsm_case *c, uint32_t debug, capture *out, const char *test)
+/* The step sets of the chain, as debug flags (each counts its primitives). */
+#define SET_SP (STIN_DEBUG_VDSM_NO_EP | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC | \
+                STIN_DEBUG_VDSM_COUNT)
+#define SET_EP (STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC | STIN_DEBUG_VDSM_COUNT)
+#define SET_SM (STIN_DEBUG_VDSM_NO_DC | STIN_DEBUG_VDSM_COUNT)
+#define SET_ALL STIN_DEBUG_VDSM_COUNT
+#define SMALL_MAP 64
+
+static int render_sized(const vdsm_case *c, uint32_t debug, uint32_t map_size, capture *out,
+                        const char *test)
 {
     capture_options o;
     char err[512], name[256];
@@ -194,12 +224,18 @@ static int render(const vdsm_case *c, uint32_t debug, capture *out, const char *
     o.tier = STIN_TIER_GL4;
     o.shadows = STIN_TECH_SHADOWS_VDSM;
     o.debug_flags = debug;
+    o.shadow_map_size = map_size;
     if (capture_render(c->r->plat, c->r->profile, c->s, &o, out, err, sizeof err))
         return 1;
     name_of(c, test, name, sizeof name);
     report(c->r, "FAIL", name, "%s", err);
     capture_free(out);
     return 0;
+}
+
+static int render(const vdsm_case *c, uint32_t debug, capture *out, const char *test)
+{
+    return render_sized(c, debug, 0, out, test);
 }
 
 static void test_clean(const vdsm_case *c, const capture *cap)
@@ -264,73 +300,266 @@ static int on_shadow_edge(const vdsm_case *c, int x, int y)
     return 0;
 }
 
-static void test_steps(const vdsm_case *c, const capture *all)
+/* Pixels whose visibility differs between two renders; *edge counts
+ * those on a reference shadow edge (not in the return value). */
+static long differ(const vdsm_case *c, const capture *a, const capture *b, long *edge)
+{
+    long n = 0;
+    int x, y, w = c->r->width, h = c->r->height;
+    *edge = 0;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++)
+            if (gl_px(&a->img, x, y)[AOV_VIS_R] != gl_px(&b->img, x, y)[AOV_VIS_R]) {
+                if (on_shadow_edge(c, x, y))
+                    (*edge)++;
+                else
+                    n++;
+                if (getenv("STIN_TEST_VERBOSE"))
+                    fprintf(stderr, "  vdsm masks differ at pixel %d,%d: %.3f, %.3f\n", x,
+                            h - 1 - y, gl_px(&a->img, x, y)[AOV_VIS_R],
+                            gl_px(&b->img, x, y)[AOV_VIS_R]);
+            }
+    return n;
+}
+
+static void test_steps(const vdsm_case *c, const capture *sp, const capture *ep)
+{
+    char name[256];
+    long edge, n = differ(c, sp, ep, &edge);
+    int w = c->r->width, h = c->r->height;
+    name_of(c, "steps", name, sizeof name);
+    report(c->r, n == 0 && edge <= VIS_EDGE_BUDGET * w * h ? "PASS" : "FAIL", name,
+           "SP alone and SP + EP differ on %ld of %d pixels away from a reference shadow edge "
+           "(must be 0) and on %ld on one (at most %.2f%%: which triangle a grazing segment "
+           "hits first is rounding)", n, w * h, edge, 100.0 * VIS_EDGE_BUDGET);
+}
+
+/* SP + EP against + SM and + SM + DC: tolerance 0 anywhere. */
+static void test_chain(const vdsm_case *c, const capture *sp, const capture *ep,
+                       const capture *sm, const capture *all)
+{
+    char name[256];
+    long e1, e2, n1 = differ(c, ep, sm, &e1), n2 = differ(c, ep, all, &e2);
+    name_of(c, "chain", name, sizeof name);
+    report(c->r, n1 + e1 + n2 + e2 == 0 ? "PASS" : "FAIL", name,
+           "against SP + EP, + SM differs on %ld pixels and + SM + DC on %ld (must be 0); "
+           "primitives emitted: SP %u, + EP %u, + SM %u, + DC %u", n1 + e1, n2 + e2,
+           sp->stats.vdsm_primitives, ep->stats.vdsm_primitives, sm->stats.vdsm_primitives,
+           all->stats.vdsm_primitives);
+}
+
+static void test_culls(const vdsm_case *c, const capture *ep, const capture *sm,
+                       const capture *all)
+{
+    char name[256];
+    uint32_t p_ep = ep->stats.vdsm_primitives, p_sm = sm->stats.vdsm_primitives,
+             p_all = all->stats.vdsm_primitives;
+    name_of(c, "culls", name, sizeof name);
+    if (!p_ep) {
+        report(c->r, "SKIP", name, "the context counted no primitives (no queries)");
+        return;
+    }
+    report(c->r, p_sm < p_ep && p_all < p_sm ? "PASS" : "FAIL", name,
+           "primitives: SP + EP %u, + SM %u (%.1f%%), + DC %u (%.1f%%); each must be fewer",
+           p_ep, p_sm, 100.0 * p_sm / p_ep, p_all, 100.0 * p_all / p_ep);
+}
+
+static void test_map_size(const vdsm_case *c, const capture *all)
 {
     capture b;
     char name[256];
-    long n = 0, edge = 0;
-    int x, y, w = c->r->width, h = c->r->height;
-    name_of(c, "steps", name, sizeof name);
-    if (!render(c, STIN_DEBUG_VDSM_NO_EP, &b, "steps"))
+    long edge, n;
+    name_of(c, "map-size", name, sizeof name);
+    if (!render_sized(c, SET_ALL, SMALL_MAP, &b, "map-size"))
         return;
-    for (y = 0; y < h; y++)
-        for (x = 0; x < w; x++)
-            if (gl_px(&all->img, x, y)[AOV_VIS_R] != gl_px(&b.img, x, y)[AOV_VIS_R]) {
-                if (on_shadow_edge(c, x, y))
-                    edge++;
-                else
-                    n++;
-            }
-    report(c->r, n == 0 && edge <= VIS_EDGE_BUDGET * w * h ? "PASS" : "FAIL", name,
-           "without EP the visibility differs on %ld of %d pixels away from a reference shadow "
-           "edge (must be 0) and on %ld on one (at most %.2f%%: which triangle a grazing "
-           "segment hits first is rounding)", n, w * h, edge, 100.0 * VIS_EDGE_BUDGET);
+    n = differ(c, all, &b, &edge);
+    report(c->r, n + edge == 0 ? "PASS" : "FAIL", name,
+           "a %d-texel pyramid and the default one give masks differing on %ld pixels (must "
+           "be 0); primitives emitted with each: %u and %u", SMALL_MAP, n + edge,
+           b.stats.vdsm_primitives, all->stats.vdsm_primitives);
     capture_free(&b);
+}
+
+/* The chain's renders of one case and the tests on them. */
+static void chain_tests(const vdsm_case *c, const capture *all)
+{
+    capture sp, ep, sm;
+    int spheres = !strncmp(c->scene_name, "spheres", 7);
+    if (!render(c, SET_SP, &sp, "steps"))
+        return;
+    if (render(c, SET_EP, &ep, "steps")) {
+        test_steps(c, &sp, &ep);
+        if (render(c, SET_SM, &sm, "chain")) {
+            test_chain(c, &sp, &ep, &sm, all);
+            if (spheres)
+                test_culls(c, &ep, &sm, all);
+            capture_free(&sm);
+        }
+        capture_free(&ep);
+    }
+    capture_free(&sp);
+    test_map_size(c, all);
+}
+
+/* The reference of a case: 0 (reported under `test`) when it cannot be made. */
+static int case_open(vdsm_case *c, run *r, const scene *s, const char *scene_name,
+                     const char *test)
+{
+    char err[512];
+    reference *ref;
+    memset(c, 0, sizeof *c);
+    c->r = r;
+    c->s = s;
+    c->scene_name = scene_name;
+    ref = reference_create(s, err, sizeof err);
+    c->refr = ref;
+    c->hits = malloc(sizeof *c->hits * (size_t)r->width * r->height);
+    c->ref = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
+    if (!ref || !c->hits || !c->ref ||
+        !reference_primary(ref, r->width, r->height, (ref_hit *)c->hits) ||
+        !reference_render_ex(s, ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED,
+                             (float *)c->ref)) {
+        char name[256];
+        name_of(c, test, name, sizeof name);
+        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
+        return 0;
+    }
+    return 1;
+}
+
+static void case_close(vdsm_case *c)
+{
+    free((void *)c->hits);
+    free((void *)c->ref);
+    if (c->refr)
+        reference_destroy((reference *)c->refr);
+}
+
+/* The eye inside a closed 6 x 4 x 6 box (two-sided or not) with a ball on
+ * its floor, a point light above the box. */
+static int inside_box_scene(scene *s, int two_sided)
+{
+    int i;
+    memset(s, 0, sizeof *s);
+    snprintf(s->path, sizeof s->path, "vdsm-inside-box");
+    s->meshes = calloc(2, sizeof *s->meshes);
+    s->materials = calloc(2, sizeof *s->materials);
+    s->objects = calloc(2, sizeof *s->objects);
+    s->lights = calloc(1, sizeof *s->lights);
+    if (!s->meshes || !s->materials || !s->objects || !s->lights)
+        return 0;
+    s->mesh_count = s->material_count = s->object_count = 2;
+    s->light_count = 1;
+    if (!scene_prim_box(&s->meshes[0], 6.0f, 4.0f, 6.0f) ||
+        !scene_prim_sphere(&s->meshes[1], 0.6f, 16, 12))
+        return 0;
+    for (i = 0; i < 2; i++) {
+        int k;
+        scene_material *m = &s->materials[i];
+        m->color[0] = m->color[1] = m->color[2] = 0.7f;
+        m->color[3] = 1.0f;
+        m->shininess = 32.0f;
+        m->albedo = m->normal = m->height = -1;
+        m->height_scale = 0.04f;
+        for (k = 0; k < 16; k++)
+            s->objects[i].transform[k] = k % 5 == 0 ? 1.0f : 0.0f;
+        s->objects[i].mesh = s->objects[i].material = i;
+    }
+    s->materials[0].two_sided = two_sided;
+    s->objects[1].transform[12] = 0.8f;
+    s->objects[1].transform[13] = -1.4f;
+    s->lights[0].type = SCENE_LIGHT_POINT;
+    s->lights[0].position[0] = 0.7f;
+    s->lights[0].position[1] = 6.0f;
+    s->lights[0].position[2] = 0.4f;
+    s->lights[0].color[0] = s->lights[0].color[1] = s->lights[0].color[2] = 1.0f;
+    s->lights[0].intensity = 1.0f;
+    s->lights[0].attenuation[0] = 1.0f;
+    s->lights[0].spot_cutoff_deg = 45.0f;
+    s->camera.eye[0] = -1.0f;
+    s->camera.eye[1] = 1.0f;
+    s->camera.eye[2] = 2.5f;
+    s->camera.target[1] = -1.5f;
+    s->camera.up[1] = 1.0f;
+    s->camera.fovy_deg = 70.0f;
+    s->camera.near_plane = 0.1f;
+    s->camera.far_plane = 50.0f;
+    s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.1f;
+    s->width = 256;
+    s->height = 192;
+    return 1;
+}
+
+static void test_two_sided(run *r)
+{
+    scene s[2];
+    vdsm_case c;
+    capture cap;
+    char name[256];
+    long compared = 0, shown = 0, ambig, isolated, edge, right = -1, wrong = -1;
+    int i;
+    for (i = 0; i < 2; i++) {
+        if (!inside_box_scene(&s[i], i == 0)) {
+            snprintf(name, sizeof name, "gl4/vdsm-inside-box/vdsm-two-sided");
+            report(r, "FAIL", name, "out of memory building the scene");
+            goto done;
+        }
+    }
+    for (i = 0; i < 2; i++) {
+        long n;
+        if (!case_open(&c, r, &s[i], "vdsm-inside-box", "two-sided")) {
+            case_close(&c);
+            goto done;
+        }
+        if (!render(&c, 0, &cap, "two-sided")) {
+            case_close(&c);
+            goto done;
+        }
+        n = mismatches(&c, &cap, &compared, &ambig, &isolated, &edge);
+        if (i == 0) {
+            right = n == edge && edge <= VIS_EDGE_BUDGET * compared ? n : -1 - n;
+            shown = compared;
+        }
+        else
+            wrong = n;
+        capture_free(&cap);
+        case_close(&c);
+    }
+    name_of(&c, "two-sided", name, sizeof name);
+    report(r, right >= 0 && wrong > 0 ? "PASS" : "FAIL", name,
+           "eye inside a closed box lit from outside: with its material two-sided %ld of %ld "
+           "pixels differ from the ray cast (none away from a shadow edge allowed), one-sided "
+           "(EP drops the lid) %ld (must be more than 0)",
+           right >= 0 ? right : -1 - right, shown, wrong);
+done:
+    scene_free(&s[0]);
+    scene_free(&s[1]);
 }
 
 void vdsm_tests(run *r, stin_tier tier, const char *path)
 {
+    static int box_done;
     scene s;
-    reference *ref = NULL;
-    ref_hit *hits = NULL;
-    float *refimg = NULL;
     capture cap;
     vdsm_case c;
     char err[512], scene_name[128];
     if (tier != STIN_TIER_GL4)
         return;
+    if (!box_done) {
+        box_done = 1;
+        test_two_sided(r);
+    }
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     if (!scene_load(path, &s, err, sizeof err))
         return; /* test_scene reported it */
-    memset(&c, 0, sizeof c);
-    c.r = r;
-    c.s = &s;
-    c.scene_name = scene_name;
-    if (!s.light_count)
-        goto done;
-    ref = reference_create(&s, err, sizeof err);
-    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
-    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
-    if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
-        !reference_render_ex(&s, ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED, refimg)) {
-        char name[256];
-        name_of(&c, "vis", name, sizeof name);
-        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
-        goto done;
+    if (s.light_count && case_open(&c, r, &s, scene_name, "vis") &&
+        render(&c, SET_ALL, &cap, "vis")) {
+        test_clean(&c, &cap);
+        test_no_grow(&c, test_vis(&c, &cap));
+        chain_tests(&c, &cap);
+        capture_free(&cap);
     }
-    c.refr = ref;
-    c.hits = hits;
-    c.ref = refimg;
-    if (!render(&c, 0, &cap, "vis"))
-        goto done;
-    test_clean(&c, &cap);
-    test_no_grow(&c, test_vis(&c, &cap));
-    test_steps(&c, &cap);
-    capture_free(&cap);
-done:
-    free(hits);
-    free(refimg);
-    if (ref)
-        reference_destroy(ref);
+    if (s.light_count)
+        case_close(&c);
     scene_free(&s);
 }

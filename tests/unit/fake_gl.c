@@ -75,6 +75,7 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_GenQueries ~, 1
 #define FAKE_STATELESS_DeleteQueries ~, 1
 #define FAKE_STATELESS_GetQueryObjectuiv ~, 1
+#define FAKE_STATELESS_BlendEquationSeparate ~, 1
 
 #define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)
 #define FAKE_IS_STATELESS(name) FAKE_PROBE(FAKE_STATELESS_##name)

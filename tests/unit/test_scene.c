@@ -149,6 +149,7 @@ static const struct {
     { "zero-slices.json", "meshes.ball.slices", "expected an integer in [3, 1024]" },
     { "unknown-top-key.json", "", "unknown top-level key 'lihgts'" },
     { "unknown-material.json", "objects[0].material", "unknown material 'gold'" },
+    { "two-sided-number.json", "materials.grey.two_sided", "expected true or false" },
     { "unknown-mesh.json", "objects[0].mesh", "unknown mesh 'foo'" },
     { "wrong-array-length.json", "lights[0].position", "expected an array of 3 numbers" },
     { "unknown-object-key.json", "objects[0]", "unknown key 'tranlsate'" },

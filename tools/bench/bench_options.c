@@ -212,6 +212,9 @@ static const bench_option table[] = {
      F(sec[SEC_SURFACE].scene), 0, 0, 0, "scene"},
     FRAMES(SEC_SURFACE, "--surface-frames", "7", "1", PER_ROW),
     SETUPS(SEC_SURFACE, "--surface-setups", "3", "fresh plain context per set-up"),
+
+    FRAMES(SEC_VDSM, "--vdsm-frames", "3", "1", PER_ROW),
+    SETUPS(SEC_VDSM, "--vdsm-setups", "1", "fresh shadows-off context per set-up"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

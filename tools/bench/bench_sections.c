@@ -9,4 +9,6 @@ const bench_section bench_sections[SECTION_COUNT] = {
     {"maps", "GL1 shadow maps per map size, and volumes, against shadows off", section_maps},
     {"pcf", "GL2/GL4 PCF shadow maps per map size and kernel against shadows off", section_pcf},
     {"surface", "GL2/GL4 surface techniques against the plain surface", section_surface},
+    {"vdsm", "GL4 VDSM per step set (SP, +EP, +SM, +DC): the seed's P_c, against shadows off, "
+             "SP alone and stencil volumes, per --scenes scene", section_vdsm},
 };

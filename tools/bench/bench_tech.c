@@ -53,8 +53,10 @@ static void side_destroy(side *sd)
 
 static void config_name(const tech_config *c, char *out, size_t size)
 {
-    snprintf(out, size, "shadows %s, map size %u, surface %s", stin_technique_name(c->shadows),
-             c->map_size, c->surface == STIN_TECH_NONE ? "auto" : stin_technique_name(c->surface));
+    snprintf(out, size, "shadows %s, map size %u, surface %s, debug flags 0x%x",
+             stin_technique_name(c->shadows), c->map_size,
+             c->surface == STIN_TECH_NONE ? "auto" : stin_technique_name(c->surface),
+             (unsigned)c->debug_flags);
 }
 
 /* 1 made; 0 failed (err); -1 the context cannot run the configuration (why). */
@@ -78,6 +80,7 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
     desc.techniques[STIN_FEATURE_SHADOWS] = c->shadows;
     desc.techniques[STIN_FEATURE_SURFACE] = c->surface;
     desc.shadow_map_size = c->map_size;
+    desc.debug_flags = c->debug_flags;
     scene_gpu_size_desc(s, &desc);
     bytes = stin_memory_size(&desc);
     if (!bytes) {
@@ -205,6 +208,7 @@ static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_siz
                 row->cfg.pcf_kernel, stin_technique_name(row->cfg.surface), on_ms, base_ms);
     row->rendered = fs.shadow_map_size;
     row->passes = fs.passes;
+    row->primitives = fs.vdsm_primitives;
     bench_keep_min(&row->on_ms, on_ms, first);
     bench_keep_min(&row->base_ms, base_ms, first);
     ok = 1;
@@ -274,7 +278,7 @@ int bench_tech_run(const tech_settings *st, const scene *s, tech_row *rows, int 
 {
     int i, j;
     for (i = 0; i < row_n; i++) {
-        rows[i].rendered = rows[i].passes = 0;
+        rows[i].rendered = rows[i].passes = rows[i].primitives = 0;
         rows[i].base_ms = rows[i].on_ms = 0.0;
         rows[i].skipped = 0;
         rows[i].why[0] = 0;

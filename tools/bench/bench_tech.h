@@ -3,7 +3,8 @@
  * technique configuration each (a shadow technique with a map size and a PCF
  * kernel, or a surface technique), each timed as a ratio to a baseline
  * configuration of the same tier and scene (shadows off, or the plain
- * surface). Used by the "PCF shadow maps" and "Surface techniques" sections. */
+ * surface, or shadows off and a debug flag set). Used by the "PCF shadow
+ * maps", "Surface techniques" and "VDSM" sections. */
 #ifndef STIN_BENCH_TECH_H
 #define STIN_BENCH_TECH_H
 
@@ -21,6 +22,7 @@ typedef struct tech_config {
     stin_technique surface;  /* desc.techniques[STIN_FEATURE_SURFACE]; NONE = the tier's */
     uint32_t map_size;       /* desc.shadow_map_size; 0 = stin's default */
     int pcf_kernel;          /* every scene light's pcf_kernel; 0 = as the scene has it */
+    uint32_t debug_flags;    /* desc.debug_flags (vdsm's steps and counter) */
 } tech_config;
 
 typedef struct tech_settings {
@@ -36,6 +38,7 @@ typedef struct tech_row {
     tech_config cfg;
     uint32_t rendered;       /* stin_frame_stats.shadow_map_size of the row's frame */
     uint32_t passes;         /* stin_frame_stats.passes of the row's frame */
+    uint32_t primitives;     /* stin_frame_stats.vdsm_primitives of the row's frame */
     double base_ms, on_ms;   /* per side the lowest set-up median (glFinish included) */
     int skipped;             /* 1: the context cannot run it; why says so */
     char why[160];

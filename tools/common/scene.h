@@ -52,6 +52,7 @@ typedef struct scene_material {
     float height_scale;        /* default 0.04 */
     char surface[16];          /* requested surface technique, "" = auto */
     int self_shadow;           /* pom self-shadowing: 0 off (default), 1 hard, 2 soft */
+    int two_sided;             /* both sides of a closed mesh may be seen (stin_material) */
 } scene_material;
 
 typedef struct scene_object {

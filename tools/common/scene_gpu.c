@@ -135,6 +135,7 @@ int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err,
         /* stin's 0 means its default: a scene's explicit 0 is a flat field */
         m->height_scale = sm->height_scale > 0.0f ? sm->height_scale : 1e-30f;
         m->self_shadow = sm->self_shadow;
+        m->two_sided = sm->two_sided;
         if (sm->surface[0])
             m->surface = stin_technique_from_name(sm->surface);
     }

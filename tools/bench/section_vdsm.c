@@ -1,0 +1,84 @@
+/* SPDX-License-Identifier: MIT */
+/* The VDSM section (gl4): per --scenes scene the seed's optimisation chain
+ * one step set a row - SP alone, + EP, + SM, + DC (the full chain) - and
+ * stencil volumes, each timed against shadows off. The vdsm rows count the
+ * primitives their geometry shader emits (STIN_DEBUG_VDSM_COUNT, the seed's
+ * P_c: one wait for the GPU per light, in the timed frames too). */
+#include "bench_options.h"
+#include "bench_report.h"
+
+#include <stdio.h>
+#include <string.h>
+
+#define WHAT "VDSM"
+#define COUNT STIN_DEBUG_VDSM_COUNT
+
+static const struct step_set {
+    const char *name;
+    stin_technique shadows;
+    uint32_t flags;
+} sets[] = {
+    {"SP", STIN_TECH_SHADOWS_VDSM,
+     COUNT | STIN_DEBUG_VDSM_NO_EP | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC},
+    {"SP+EP", STIN_TECH_SHADOWS_VDSM, COUNT | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC},
+    {"SP+EP+SM", STIN_TECH_SHADOWS_VDSM, COUNT | STIN_DEBUG_VDSM_NO_DC},
+    {"SP+EP+SM+DC", STIN_TECH_SHADOWS_VDSM, COUNT},
+    {"volume", STIN_TECH_SHADOWS_VOLUME, 0},
+};
+enum { N = sizeof sets / sizeof sets[0], SP = 0, VOLUME = N - 1 };
+
+static void print_scene(const char *label, const tech_row *rows)
+{
+    const tech_row *sp = &rows[SP], *vol = &rows[VOLUME];
+    int i;
+    printf("\n### " WHAT ", %s\n\n", label);
+    printf("| step set | P_c | P_c / SP | off median ms | median ms | / off | / SP | "
+           "/ volume |\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < N; i++) {
+        const tech_row *r = &rows[i];
+        if (r->skipped) {
+            printf("| %s | SKIP: %s | | | | | | |\n", sets[i].name, r->why);
+            continue;
+        }
+        if (i == VOLUME)
+            printf("| %s | | |", sets[i].name);
+        else
+            printf("| %s | %u | %.3f |", sets[i].name, r->primitives,
+                   sp->primitives ? (double)r->primitives / sp->primitives : 0.0);
+        printf(" %.2f | %.2f | %.2f | %.2f | %.2f |\n", r->base_ms, r->on_ms, tech_ratio(r),
+               !sp->skipped && sp->on_ms > 0 ? r->on_ms / sp->on_ms : 0.0,
+               !vol->skipped && vol->on_ms > 0 ? r->on_ms / vol->on_ms : 0.0);
+    }
+    fflush(stdout);
+}
+
+int section_vdsm(bench_env *env, const scene *s, int *ran)
+{
+    tech_row rows[N];
+    stin_tier tier;
+    tech_settings st;
+    char label[128], timing[160];
+    int i, k, rc = 0;
+    (void)s;
+    bench_tech_settings(env, SEC_VDSM, &st);
+    printf("\n## VDSM step sets (gl4) against shadows off, SP alone and stencil volumes, "
+           "%dx%d, the scenes' lights; %s\n", env->b.width, env->b.height,
+           bench_row_timing(env, st.setups, st.frames, timing, sizeof timing));
+    if (!bench_tiers(env, TIER_BIT(STIN_TIER_GL4), WHAT, "gl4 only", &tier))
+        return 0;
+    for (i = 0; i < env->o->scene_count; i++) {
+        memset(rows, 0, sizeof rows);
+        for (k = 0; k < N; k++) {
+            rows[k].cfg.shadows = sets[k].shadows;
+            rows[k].cfg.surface = STIN_TECH_NONE;
+            rows[k].cfg.debug_flags = sets[k].flags;
+        }
+        scene_label(env->o->scenes[i], label, sizeof label);
+        if (!bench_tech_tier(env, &st, tier, WHAT, &env->scenes[i], rows, N, &rc))
+            return rc;
+        *ran = 1;
+        print_scene(label, rows);
+    }
+    return 0;
+}
