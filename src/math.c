@@ -100,6 +100,23 @@ void stin__mat4_transform_point(const float m[16], const float p[3], float out[3
     out[2] = r[2];
 }
 
+/* By the 2x2 minors of the top two rows (GL's column-major m[4 * col + row])
+ * and those of the bottom two. */
+double stin__mat4_det(const float m[16])
+{
+    static const int pair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    static const double sign[6] = {1, -1, 1, 1, -1, 1};
+    double det = 0.0;
+    int k;
+    for (k = 0; k < 6; k++) {
+        int a = pair[k][0], b = pair[k][1], c = pair[5 - k][0], d = pair[5 - k][1];
+        double top = (double)m[4 * a] * m[4 * b + 1] - (double)m[4 * b] * m[4 * a + 1];
+        double bottom = (double)m[4 * c + 2] * m[4 * d + 3] - (double)m[4 * d + 2] * m[4 * c + 3];
+        det += sign[k] * top * bottom;
+    }
+    return det;
+}
+
 /* Newton iterations from a bit-level guess: libm is not a dependency. */
 float stin__sqrtf(float x)
 {

@@ -87,7 +87,21 @@
  * light falls back to volumes where there is a stencil buffer and says so.
  * "map-depth" uses ARB_depth_texture + ARB_shadow, compare LEQUAL with
  * LINEAR filtering (2x2 PCF), polygon offset per light (shadow_offset,
- * default factor 1.1, units 4); "map-combine" needs only texture_env_combine:
+ * default factor 1.1, units 4). A depth map alone lights an open surface
+ * (a shell seen through its opening, a one-sided quad from behind) where
+ * the eye sees the side the light does not: the surface is its own nearest
+ * caster. So map-depth draws a second pass per map, without polygon offset
+ * (which would push a steep front face behind the back face under it near
+ * the light's silhouette), writing by two-sided lighting which side of the
+ * nearest surface the light sees into a LUMINANCE8 side map, and draws each
+ * lit pass twice with face culling, once per side the eye sees, the side map
+ * on the texture unit after the depth compare's (NEAREST): a fragment is lit
+ * only where the eye and the light see the same side, as volumes and the
+ * test reference decide. Within about a texel of the light's silhouette (the
+ * terminator) the side map may name the neighbouring facet's side. Without
+ * a spare texture unit the side test is left out (logged at create).
+ * "map-combine" has no side test: it lights such surfaces.
+ * "map-combine" needs only texture_env_combine:
  * the light's depth drawn as an 8-bit ramp over a near/far fitted to the draws,
  * compared in the combiner, kept by the alpha test. Its bias (1.5 ramp steps
  * plus two texels' depth per texel of slope, a plane in the light's depth)
@@ -102,6 +116,9 @@
  * lights are hard-shadowed by maps. Each of the
  * desc.max_lights light slots holds a map of shadow_map_size squared texels
  * (4 bytes each), made at stin_create: size max_lights to the scene.
+ * map-depth's side test adds a byte a texel to each slot (and to the six
+ * point-light faces), and with FBOs one RGBA8 colour and one 24-bit depth
+ * texture of the map's size that its side passes share.
  * Volumes: silhouettes from the adjacency built at
  * mesh creation, extracted on the CPU each frame into the block; z-pass per
  * caster where the near-clip region cannot reach its volume, else z-fail with
@@ -358,8 +375,8 @@ const char *stin_feature_name(stin_feature f);
  *   surface:  pom, parallax, normal, dot3, plain
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
- * map-pcf 6; map-depth 1 (plus 1 for point-light faces when there is one to
- * spare); map-combine 2. Surface units follow the albedo, shadow units follow
+ * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
+ * faces, each when there is one to spare); map-combine 2. Surface units follow the albedo, shadow units follow
  * the surface's.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
  * with a normalisation cube map; it needs multitexture, texture_env_combine,
