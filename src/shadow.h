@@ -86,7 +86,7 @@ typedef struct stin__map_pcf_state {
     int unit;             /* first sampler unit (STIN__SHADOW_SAMPLERS of them) */
     unsigned char valid[STIN__MAX_LIGHTS];
     float matrix[STIN__MAP_SLOTS][16];   /* world -> [0,1] map space */
-    float normal_offset[STIN__MAP_SLOTS]; /* world units: about 1.5 texels at the receivers */
+    float normal_offset[STIN__MAP_SLOTS]; /* world units per unit clip w: 1.5 texels */
     /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
     int kind;
     uint32_t light;

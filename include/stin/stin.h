@@ -79,7 +79,20 @@
  * (logged) to "volume" where there is a stencil buffer, else "map-pcf".
  * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
- * point lights get six 90-degree maps drawn before their pass.
+ * point lights get six 90-degree maps drawn before their pass. A point whose
+ * side the eye sees turns away from the light is in its own shadow, without
+ * a lookup (as the test reference decides). The others are looked up from a
+ * point moved along their geometric normal toward the eye by 1.5 texels'
+ * width of the map where the point is: 3 d / size for a point light (d the
+ * point's distance from the light along the face's axis, its largest
+ * coordinate difference), 3 d tan(cutoff + 1 degree) / size for a spot (d
+ * along its direction), 3 h / size for a directional light (h the map's
+ * half-width: the receivers in view, rounded up to a power of two). The
+ * limit of that bias: a receiver whose caster's far side lies nearer than
+ * the offset along the receiver's normal (the gap plus the caster's
+ * thickness, as between thin parallel fins) is looked up past the caster and
+ * lit where the caster shadows it; at 1.25 times the offset it is shadowed
+ * (tests/image/model_test.c, "map-pcf-gap": 1.25 shadowed, 0.8 leaks).
  * Fixed-function shadow maps: spot lights get one map over the
  * cone, directional lights one orthographic map, point lights six 90-degree
  * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a
