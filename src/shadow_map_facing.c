@@ -3,10 +3,13 @@
  * A depth map alone cannot tell the two sides of a sheet apart: where the
  * eye sees one side of an open surface (a shell seen through its opening, a
  * one-sided quad from behind) and the light the other, the surface is its own
- * nearest caster and passes the depth test, lit. So the map pass also writes,
- * by two-sided lighting (emission only: white on front faces, black on back
- * faces as the light's rasteriser sees them), which side of the nearest
- * surface faces the light, copied into a LUMINANCE8 texture per slot. The lit
+ * nearest caster and passes the depth test, lit. So each map gets a side
+ * pass: by two-sided lighting (emission only: white on front faces, black on
+ * back faces as the light's rasteriser sees them) it writes which side of
+ * the nearest surface faces the light, copied into a LUMINANCE8 texture per
+ * slot. It has a depth buffer of its own (with FBOs) and no polygon offset:
+ * a slope-scaled offset pushes a steep front face behind the back face under
+ * it near the light's silhouette and would name the wrong side there. The lit
  * pass is drawn once per side the eye sees (face culling): eye-front
  * fragments are multiplied by that texture (MODULATE), eye-back ones by one
  * minus it (BLEND, black environment colour). A fragment is lit only where
