@@ -49,6 +49,7 @@ void stin__range_give(stin__range_alloc *r, uint32_t offset);
 void stin__mat4_identity(float m[16]);
 void stin__mat4_mul(float out[16], const float a[16], const float b[16]);
 int stin__mat4_invert(float out[16], const float m[16]);
+double stin__mat4_det(const float m[16]);
 /* 1 when m is singular for any practical purpose, whatever its scale. */
 int stin__mat4_singular(const float m[16]);
 /* Upper 3x3 of the inverse transpose, for normals. */

@@ -73,6 +73,7 @@
     X(void, NormalPointer, (GLenum type, GLsizei stride, const void *p), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, TexCoordPointer, (GLint size, GLenum type, GLsizei stride, const void *p), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, TexEnvi, (GLenum target, GLenum pname, GLint param), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, TexEnvfv, (GLenum target, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, TexGeni, (GLenum coord, GLenum pname, GLint param), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, TexGenfv, (GLenum coord, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, AlphaFunc, (GLenum func, GLfloat ref), STIN_CAP_FIXED_FUNCTION, "")           \

@@ -60,6 +60,7 @@ struct stin_context {
     float view_proj[16];
     stin__pass_state pass;    /* what GL holds, when pass_known */
     int pass_known;
+    GLenum lit_cull;          /* face the lit passes cull (0: none): map-depth's facing test */
     uint32_t units_used;      /* texture units bound this frame (bit per unit) */
     GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
     struct {                  /* the frame's framebuffer (framebuffer_probe.c) */

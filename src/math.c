@@ -72,40 +72,19 @@ int stin__mat4_invert(float out[16], const float m[16])
 /* Singular or nearly so, whatever the scale: |det| within 1e-12 of the
  * smaller of its Hadamard bounds (the product of the row lengths, or of the
  * column lengths; the columns' keeps a far translation from looking
- * singular). Determinant by elimination with partial pivoting, in double. */
+ * singular). */
 int stin__mat4_singular(const float m[16])
 {
-    double a[4][4], det = 1.0, rows = 1.0, cols = 1.0;
-    int r, c, k;
+    double det = stin__mat4_det(m), rows = 1.0, cols = 1.0;
+    int r, c;
     for (r = 0; r < 4; r++) {
         double rl = 0.0, cl = 0.0;
         for (c = 0; c < 4; c++) {
-            a[r][c] = m[4 * c + r]; /* column-major: row r, column c */
             rl += (double)m[4 * c + r] * m[4 * c + r];
             cl += (double)m[4 * r + c] * m[4 * r + c];
         }
         rows *= rl;
         cols *= cl;
-    }
-    for (k = 0; k < 4; k++) {
-        int p = k;
-        for (r = k + 1; r < 4; r++)
-            if ((a[r][k] < 0 ? -a[r][k] : a[r][k]) > (a[p][k] < 0 ? -a[p][k] : a[p][k]))
-                p = r;
-        if (a[p][k] == 0.0)
-            return 1;
-        if (p != k)
-            for (c = 0; c < 4; c++) {
-                double t = a[k][c];
-                a[k][c] = a[p][c];
-                a[p][c] = t;
-            }
-        det *= a[k][k];
-        for (r = k + 1; r < 4; r++) {
-            double f = a[r][k] / a[k][k];
-            for (c = k; c < 4; c++)
-                a[r][c] -= f * a[k][c];
-        }
     }
     /* squared bounds: compare det^2 with (1e-12)^2 times them (an overflowing
      * bound, entries near float's largest, cannot judge: exact zero only) */
@@ -143,6 +122,23 @@ void stin__mat4_transform_point(const float m[16], const float p[3], float out[3
     out[0] = r[0];
     out[1] = r[1];
     out[2] = r[2];
+}
+
+/* By the 2x2 minors of the top two rows (GL's column-major m[4 * col + row])
+ * and those of the bottom two. */
+double stin__mat4_det(const float m[16])
+{
+    static const int pair[6][2] = {{0, 1}, {0, 2}, {0, 3}, {1, 2}, {1, 3}, {2, 3}};
+    static const double sign[6] = {1, -1, 1, 1, -1, 1};
+    double det = 0.0;
+    int k;
+    for (k = 0; k < 6; k++) {
+        int a = pair[k][0], b = pair[k][1], c = pair[5 - k][0], d = pair[5 - k][1];
+        double top = (double)m[4 * a] * m[4 * b + 1] - (double)m[4 * b] * m[4 * a + 1];
+        double bottom = (double)m[4 * c + 2] * m[4 * d + 3] - (double)m[4 * d + 2] * m[4 * c + 3];
+        det += sign[k] * top * bottom;
+    }
+    return det;
 }
 
 /* Newton iterations from a bit-level guess: libm is not a dependency. */

@@ -154,7 +154,9 @@ stin__pass_state stin__pass_draw(const stin_context *ctx, int additive, int blen
         s.blend_dst = ctx->pass_known ? ctx->pass.blend_dst : GL_ZERO;
     }
     s.polygon_offset = 0;
-    s.cull = 0;
+    s.cull = ctx->lit_cull != 0; /* a shadow test that differs by side draws one at a time */
+    if (s.cull)
+        s.cull_face = ctx->lit_cull;
     return s;
 }
 

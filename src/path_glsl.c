@@ -398,12 +398,12 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4],
         float inv[16];
         stin__mat4_invert(inv, ctx->frame.view);
         GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
-        if (light) { /* the light's position (point faces) */
+        if (light) { /* where the light is, as lit.frag has it: a point faces' */
+            int dir = light->type == STIN_LIGHT_DIRECTIONAL, k; /* pick, the side test */
             float pos[4];
-            pos[0] = light->position[0];
-            pos[1] = light->position[1];
-            pos[2] = light->position[2];
-            pos[3] = 1.0f;
+            for (k = 0; k < 3; k++)
+                pos[k] = dir ? -light->direction[k] : light->position[k];
+            pos[3] = dir ? 0.0f : 1.0f;
             GL(ctx, Uniform4fv)(p->u_lights, 1, pos);
         }
         ctx->shadow->uniforms(ctx, p);

@@ -67,6 +67,12 @@ typedef struct stin__map_fixed_state {
     GLuint fbo;           /* with FBOs: render straight into the texture */
     GLuint depth_scratch; /* map-combine with FBOs: the depth buffer of its pass */
     GLuint face_mask;     /* 1 inside a face's 90-degree square, 0 outside */
+    /* map-depth's side maps: per slot, which side of the nearest surface the
+     * light sees (LUMINANCE8: 1 front, 0 back), copied from the colour of a
+     * pass of their own (with FBOs: facing_fbo, RGBA8 colour and a depth) */
+    GLuint facing[STIN__MAP_SLOTS];
+    GLuint facing_fbo, facing_color, facing_depth;
+    int facing_test;      /* 1: the lit passes test the side (a unit was spare) */
     uint32_t size;        /* allocated texels a side */
     uint32_t used;        /* rendered this frame (no FBO: bounded by the viewport) */
     int unit;             /* first texture unit of the shadow test */
@@ -84,7 +90,7 @@ typedef struct stin__map_pcf_state {
     int unit;             /* first sampler unit (STIN__SHADOW_SAMPLERS of them) */
     unsigned char valid[STIN__MAX_LIGHTS];
     float matrix[STIN__MAP_SLOTS][16];   /* world -> [0,1] map space */
-    float normal_offset[STIN__MAP_SLOTS]; /* world units: about 1.5 texels at the receivers */
+    float normal_offset[STIN__MAP_SLOTS]; /* world units per unit clip w: 1.5 texels */
     /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
     int kind;
     uint32_t light;
@@ -201,6 +207,28 @@ int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int o
 /* The slope-scaled polygon offset of a light's map pass (its shadow_offset,
  * default 1.1 / 4); returns 0 when the light turns offsets off. */
 int stin__map_offset(const stin_light_desc *l, float *factor, float *units);
+
+/* map-depth's side test (shadow_map_facing.c). init decides it (a unit
+ * after the depth compare's, `units_after` more kept for later units) and
+ * makes its FBO; create makes slot's texture. draw renders slot's side map
+ * right after its depth map, under the same viewport (and, without FBOs,
+ * scissor). bind/unbind put slot's test on its unit; shade draws the lit
+ * pass once per side the eye sees. */
+void stin__map_facing_init(stin_context *ctx, int units_after);
+void stin__map_facing_create(stin_context *ctx, uint32_t slot);
+void stin__map_facing_release(stin_context *ctx);
+void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16],
+                           const float proj[16]);
+void stin__map_facing_bind(stin_context *ctx, uint32_t slot);
+void stin__map_facing_unbind(stin_context *ctx);
+void stin__map_facing_shade(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                            stin__shade_fn shade);
+/* Eye-linear texgen of s, t, (r,) q from rows (world -> texture, given under
+ * the camera's view) on the active unit; R is disabled when !with_r. */
+void stin__map_texgen(stin_context *ctx, const float *rows, int with_r);
+/* A projected 2D unit back off: texgen S, T, Q and the texture disabled,
+ * nothing bound, environment MODULATE; unit 0 active after. */
+void stin__map_unit_off(stin_context *ctx, int unit);
 
 /* Light cameras for shadow maps (shadow_light_camera.c). */
 void stin__light_look_along(float m[16], const float eye[3], const float dir[3]);

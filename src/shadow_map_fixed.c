@@ -6,7 +6,10 @@
  * else into the frame's own framebuffer before its clear and copied out. The
  * lit pass generates (s, t, r, q) in light clip space by eye-linear texgen and
  * the texture unit compares r/q with the stored depth (LEQUAL), LINEAR filtering
- * giving the hardware's 2x2 PCF, and modulates the light's colour.
+ * giving the hardware's 2x2 PCF, and modulates the light's colour. The
+ * next unit tests which side of the surface the light sees against the side
+ * the eye sees (shadow_map_facing.c), so an open surface seen from the side
+ * the light does not reach is in shadow.
  *
  * map-combine: for TNT-class hardware without depth textures. The light's
  * depth is drawn as colour (a 1D ramp indexed by texgen of the light-eye
@@ -120,12 +123,19 @@ static stin_result fixed_init(stin_context *ctx)
                                       ctx->map_fixed.depth_scratch, 0);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     } else if (!combine(ctx) && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO))) {
-        /* depth only: no colour buffer to draw or read */
+        /* depth only: no colour buffer to draw or read (the side test's
+         * colour, when there is one, is attached by its init) */
         GL(ctx, GenFramebuffers)(1, &ctx->map_fixed.fbo);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
         GL(ctx, DrawBuffer)(GL_NONE);
         GL(ctx, ReadBuffer)(GL_NONE);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
+    }
+    if (!combine(ctx)) {
+        stin__map_facing_init(ctx, 0);
+        units += ctx->map_fixed.facing_test;
+        for (i = 0; i < ctx->desc.max_lights; i++)
+            stin__map_facing_create(ctx, i);
     }
     /* point lights: six maps drawn mid-frame (FBOs), shared by all of them,
      * and a mask unit that keeps each face to its own 90-degree square */
@@ -133,8 +143,10 @@ static stin_result fixed_init(stin_context *ctx)
         (FACE_MASK * FACE_MASK) <= ctx->staging_bytes + ctx->scratch_bytes) {
         unsigned char *m = ctx->staging_bytes >= FACE_MASK * FACE_MASK ? ctx->staging : ctx->scratch;
         uint32_t x, y;
-        for (i = 0; i < STIN__CUBE_FACES; i++)
+        for (i = 0; i < STIN__CUBE_FACES; i++) {
             create_map_texture(ctx, &ctx->map_fixed.textures[STIN__FACE_SLOT + i], size);
+            stin__map_facing_create(ctx, STIN__FACE_SLOT + i);
+        }
         for (y = 0; y < FACE_MASK; y++)
             for (x = 0; x < FACE_MASK; x++)
                 m[y * FACE_MASK + x] =
@@ -169,6 +181,7 @@ static void fixed_release(stin_context *ctx)
         GL(ctx, DeleteTextures)(1, &ctx->map_fixed.depth_scratch);
     if (ctx->map_fixed.face_mask)
         GL(ctx, DeleteTextures)(1, &ctx->map_fixed.face_mask);
+    stin__map_facing_release(ctx);
     stin__memzero(&ctx->map_fixed, sizeof ctx->map_fixed);
 }
 
@@ -204,7 +217,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     const int *vp = ctx->frame.viewport;
     uint32_t used = ctx->map_fixed.used;
     stin__pass_state ps = stin__pass_defaults;
-    int fbo = ctx->map_fixed.fbo != 0;
+    int fbo = ctx->map_fixed.fbo != 0, facing = !combine(ctx) && ctx->map_fixed.facing_test;
     ps.depth_test = 1;
     if (fbo) {
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
@@ -255,6 +268,8 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
         GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     }
     ctx->stats.passes++;
+    if (facing) /* its own pass: no offset may reorder the surfaces */
+        stin__map_facing_draw(ctx, slot, view, proj);
 }
 
 /* World -> texture: bias/scale into the used corner of the texture, then the
@@ -350,7 +365,7 @@ static void fixed_prepass(stin_context *ctx)
 
 /* ---- the lit pass's shadow test ----------------------------------------- */
 
-static void texgen_planes(stin_context *ctx, const float *rows, int with_r)
+void stin__map_texgen(stin_context *ctx, const float *rows, int with_r)
 {
     static const GLenum coord[4] = {GL_S, GL_T, GL_R, GL_Q};
     static const GLenum gen[4] = {GL_TEXTURE_GEN_S, GL_TEXTURE_GEN_T, GL_TEXTURE_GEN_R,
@@ -365,6 +380,18 @@ static void texgen_planes(stin_context *ctx, const float *rows, int with_r)
         GL(ctx, TexGenfv)(coord[i], GL_EYE_PLANE, rows + 4 * i);
         GL_ENABLE(ctx, gen[i]);
     }
+}
+
+void stin__map_unit_off(stin_context *ctx, int unit)
+{
+    GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)unit));
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_T);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_Q);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
 /* One texture_env_combine stage: operation, sources and operands for RGB and
@@ -413,9 +440,11 @@ static void bind_slot(stin_context *ctx, uint32_t li)
     GL(ctx, ActiveTexture)(u);
     GL_ENABLE(ctx, GL_TEXTURE_2D);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.textures[li]);
-    texgen_planes(ctx, ctx->map_fixed.texgen[li], !combine(ctx));
+    stin__map_texgen(ctx, ctx->map_fixed.texgen[li], !combine(ctx));
     if (!combine(ctx)) {
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
+        if (ctx->map_fixed.facing_test)
+            stin__map_facing_bind(ctx, li);
     } else {
         /* colour passed on, the stored depth into alpha */
         const combine_stage stored = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
@@ -452,8 +481,9 @@ static void unbind(stin_context *ctx)
     GL_DISABLE(ctx, GL_TEXTURE_GEN_Q);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
+    if (!combine(ctx) && ctx->map_fixed.facing_test)
+        stin__map_facing_unbind(ctx);
     if (combine(ctx)) {
-        GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
         GL(ctx, ActiveTexture)(u + 1u);
         GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
         GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
@@ -479,6 +509,12 @@ static float face_fov_deg(void)
     double x = (double)(FACE_MASK / 2u) / (double)(FACE_MASK / 2u - 1u);
     double half = 45.0 + ((x - 1.0) / (1.0 + x * 1.0) ) * 57.29577951308232;
     return (float)(2.0 * half);
+}
+
+/* The face mask's unit: after the map test's (and the side test's). */
+static int mask_unit(const stin_context *ctx)
+{
+    return ctx->map_fixed.unit + (combine(ctx) ? 2 : 1 + ctx->map_fixed.facing_test);
 }
 
 /* Point lights with FBOs: renders cube face f (0..5: +x -x +y -y +z -z) of
@@ -517,11 +553,11 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
      * behind the face the depth is past 1 and fails the comparison. */
     bind_slot(ctx, slot);
     {
-        GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->map_fixed.unit + (combine(ctx) ? 2 : 1)));
+        GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)mask_unit(ctx));
         GL(ctx, ActiveTexture)(mu);
         GL_ENABLE(ctx, GL_TEXTURE_2D);
         GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.face_mask);
-        texgen_planes(ctx, ctx->map_fixed.texgen[slot], 0);
+        stin__map_texgen(ctx, ctx->map_fixed.texgen[slot], 0);
         const combine_stage mask = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
                                     {GL_SRC_COLOR, GL_SRC_COLOR}, GL_REPLACE, {GL_PREVIOUS, 0},
                                     {GL_SRC_ALPHA, 0}};
@@ -533,16 +569,8 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
 
 static void face_end(stin_context *ctx)
 {
-    GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)(ctx->map_fixed.unit + (combine(ctx) ? 2 : 1)));
     unbind(ctx);
-    GL(ctx, ActiveTexture)(mu);
-    GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
-    GL_DISABLE(ctx, GL_TEXTURE_GEN_T);
-    GL_DISABLE(ctx, GL_TEXTURE_GEN_Q);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-    GL_DISABLE(ctx, GL_TEXTURE_2D);
-    GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    stin__map_unit_off(ctx, mask_unit(ctx));
 }
 
 /* ---- the module ------------------------------------------------------------ */
@@ -562,7 +590,7 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
     if (!mapped && l->type == STIN_LIGHT_POINT && ctx->map_fixed.faces) {
         for (face = 0; face < STIN__CUBE_FACES; face++)
             if (face_begin(ctx, li, face)) {
-                shade(ctx, path, l, 1.0f);
+                stin__map_facing_shade(ctx, path, l, shade);
                 face_end(ctx);
             }
         return;
@@ -575,7 +603,10 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
         world[3] = 1.0f;
         stin__volume_light(ctx, path, world, NULL);
     }
-    shade(ctx, path, l, 1.0f);
+    if (mapped && !combine(ctx))
+        stin__map_facing_shade(ctx, path, l, shade);
+    else
+        shade(ctx, path, l, 1.0f);
     if (mapped)
         unbind(ctx);
     stin__volume_light_end(ctx);

@@ -6,10 +6,12 @@
  * drawn before the camera's passes; a point light gets six 90-degree maps,
  * drawn just before its lit pass into six shared textures, and the shader
  * picks the face by the major axis of the light-to-point direction. The lit
- * pass's shadow_pcf.glsl chunk pushes the point along its geometric normal
- * (normal-offset bias, about 1.5 texels), projects it, and averages a
- * (2r+1)^2 kernel (r = pcf_kernel / 2). Maps are drawn with polygon offset
- * (the light's shadow_offset: slope-scaled bias). */
+ * pass's shadow_pcf.glsl chunk shadows a point whose side the eye sees turns
+ * away from the light, else pushes it along its geometric normal toward the
+ * eye (normal-offset bias: 1.5 texels' width at the point, so a wide depth
+ * range does not inflate it at the receivers near the light), projects it,
+ * and averages a (2r+1)^2 kernel (r = pcf_kernel / 2). Maps are drawn with
+ * polygon offset (the light's shadow_offset: slope-scaled bias). */
 #include "internal.h"
 
 #define FACE_SLOT STIN__FACE_SLOT
@@ -103,13 +105,14 @@ static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
     ctx->stats.passes++;
 }
 
-/* About 1.5 texels in world units where the receivers are. */
-static float texel_offset(const stin_light_desc *l, float n, float f, const float proj[16],
-                          uint32_t size)
+/* 1.5 texels' width in world units per unit of the map's clip w: a texel
+ * of an orthographic map (w = 1) is 2 / (proj[0] size) wide everywhere, a
+ * perspective one's that times its distance along the light's axis (w), so
+ * the shader's offset is 1.5 texels at each receiver, however wide the
+ * depth range the map spans. */
+static float texel_offset(const float proj[16], uint32_t size)
 {
-    float across = l->type == STIN_LIGHT_DIRECTIONAL ? 2.0f / proj[0]
-                                                      : (n + f) / proj[0];
-    return 1.5f * across / (float)size;
+    return 1.5f * 2.0f / (proj[0] * (float)size);
 }
 
 /* Maps of every spot and directional light, before the camera's passes. */
@@ -127,7 +130,7 @@ static void pcf_prepass(stin_context *ctx)
         if (!stin__light_camera(ctx, l, view, proj, &n, &f, m->size))
             continue;
         draw_map(ctx, i, l, view, proj);
-        m->normal_offset[i] = texel_offset(l, n, f, proj, m->size);
+        m->normal_offset[i] = texel_offset(proj, m->size);
         m->valid[i] = 1;
     }
     stin__gl_check_errors(ctx, "pcf maps");
@@ -141,7 +144,6 @@ static int draw_faces(stin_context *ctx, uint32_t li)
 {
     const stin_light_desc *l = &ctx->lights[li];
     int face, any = 0;
-    float worst = 0.0f;
     for (face = 0; face < STIN__CUBE_FACES; face++) {
         float view[16], proj[16], n, f, half, center[3];
         uint32_t slot = FACE_SLOT + (uint32_t)face;
@@ -156,11 +158,10 @@ static int draw_faces(stin_context *ctx, uint32_t li)
         /* the shader picks the face by the major axis, so 90 degrees exactly */
         stin__light_perspective(proj, 90.0f, n, f);
         draw_map(ctx, slot, l, view, proj);
-        if (texel_offset(l, n, f, proj, ctx->map_pcf.size) > worst)
-            worst = texel_offset(l, n, f, proj, ctx->map_pcf.size);
+        /* every face is 90 degrees: one offset per unit w serves the six */
+        ctx->map_pcf.normal_offset[FACE_SLOT] = texel_offset(proj, ctx->map_pcf.size);
         any = 1;
     }
-    ctx->map_pcf.normal_offset[FACE_SLOT] = worst;
     return any;
 }
 

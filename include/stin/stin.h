@@ -96,7 +96,20 @@
  * framebuffer it runs without SM and DC (logged).
  * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
- * point lights get six 90-degree maps drawn before their pass.
+ * point lights get six 90-degree maps drawn before their pass. A point whose
+ * side the eye sees turns away from the light is in its own shadow, without
+ * a lookup (as the test reference decides). The others are looked up from a
+ * point moved along their geometric normal toward the eye by 1.5 texels'
+ * width of the map where the point is: 3 d / size for a point light (d the
+ * point's distance from the light along the face's axis, its largest
+ * coordinate difference), 3 d tan(cutoff + 1 degree) / size for a spot (d
+ * along its direction), 3 h / size for a directional light (h the map's
+ * half-width: the receivers in view, rounded up to a power of two). The
+ * limit of that bias: a receiver whose caster's far side lies nearer than
+ * the offset along the receiver's normal (the gap plus the caster's
+ * thickness, as between thin parallel fins) is looked up past the caster and
+ * lit where the caster shadows it; at 1.25 times the offset it is shadowed
+ * (tests/image/model_test.c, "map-pcf-gap": 1.25 shadowed, 0.8 leaks).
  * Fixed-function shadow maps: spot lights get one map over the
  * cone, directional lights one orthographic map, point lights six 90-degree
  * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a
@@ -104,7 +117,21 @@
  * light falls back to volumes where there is a stencil buffer and says so.
  * "map-depth" uses ARB_depth_texture + ARB_shadow, compare LEQUAL with
  * LINEAR filtering (2x2 PCF), polygon offset per light (shadow_offset,
- * default factor 1.1, units 4); "map-combine" needs only texture_env_combine:
+ * default factor 1.1, units 4). A depth map alone lights an open surface
+ * (a shell seen through its opening, a one-sided quad from behind) where
+ * the eye sees the side the light does not: the surface is its own nearest
+ * caster. So map-depth draws a second pass per map, without polygon offset
+ * (which would push a steep front face behind the back face under it near
+ * the light's silhouette), writing by two-sided lighting which side of the
+ * nearest surface the light sees into a LUMINANCE8 side map, and draws each
+ * lit pass twice with face culling, once per side the eye sees, the side map
+ * on the texture unit after the depth compare's (NEAREST): a fragment is lit
+ * only where the eye and the light see the same side, as volumes and the
+ * test reference decide. Within about a texel of the light's silhouette (the
+ * terminator) the side map may name the neighbouring facet's side. Without
+ * a spare texture unit the side test is left out (logged at create).
+ * "map-combine" has no side test: it lights such surfaces.
+ * "map-combine" needs only texture_env_combine:
  * the light's depth drawn as an 8-bit ramp over a near/far fitted to the draws,
  * compared in the combiner, kept by the alpha test. Its bias (1.5 ramp steps
  * plus two texels' depth per texel of slope, a plane in the light's depth)
@@ -119,6 +146,9 @@
  * lights are hard-shadowed by maps. Each of the
  * desc.max_lights light slots holds a map of shadow_map_size squared texels
  * (4 bytes each), made at stin_create: size max_lights to the scene.
+ * map-depth's side test adds a byte a texel to each slot (and to the six
+ * point-light faces), and with FBOs one RGBA8 colour and one 24-bit depth
+ * texture of the map's size that its side passes share.
  * Volumes: silhouettes from the adjacency built at
  * mesh creation, extracted on the CPU each frame into the block; z-pass per
  * caster where the near-clip region cannot reach its volume, else z-fail with
@@ -399,8 +429,8 @@ const char *stin_feature_name(stin_feature f);
  *   surface:  pom, parallax, normal, dot3, plain
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
- * map-pcf 6; map-depth 1 (plus 1 for point-light faces when there is one to
- * spare); map-combine 2. Surface units follow the albedo, shadow units follow
+ * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
+ * faces, each when there is one to spare); map-combine 2. Surface units follow the albedo, shadow units follow
  * the surface's.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
  * with a normalisation cube map; it needs multitexture, texture_env_combine,

@@ -3,12 +3,14 @@
 // u_shadow_kind: 0 no map for this pass's light, 1 one map (spot or
 // directional), 2 a point light's six 90-degree maps (u_shadow_faces).
 // Each map: world -> [0,1] texture space by u_shadow_matrix[face]; the
-// position is pushed along the geometric normal by u_shadow_params.z world
-// units (normal-offset bias) before the lookup; the kernel is
-// (2 r + 1) x (2 r + 1) taps of the hardware's 2x2 compare, r = params.y.
+// position is pushed along the geometric normal, toward the side the eye
+// sees, by u_shadow_params.z times its clip w (1.5 texels' width at the
+// point: w is 1 for an orthographic map, the distance along the light's axis
+// for a perspective one) before the lookup (normal-offset bias); the kernel
+// is (2 r + 1) x (2 r + 1) taps of the hardware's 2x2 compare, r = params.y.
 uniform int u_shadow_kind;
 uniform mat4 u_shadow_matrix[6];
-uniform vec4 u_shadow_params; // x: 1 / map size, y: kernel radius, z: normal offset
+uniform vec4 u_shadow_params; // x: 1 / map size, y: kernel radius, z: normal offset per unit w
 uniform sampler2DShadow u_shadow_map;
 uniform sampler2DShadow u_shadow_face1;
 uniform sampler2DShadow u_shadow_face2;
@@ -33,21 +35,28 @@ float pcf_visibility(int i)
     if (u_shadow_kind == 0)
         return 1.0; // a shadowed pass lights one light, so i is always that one
     vec3 ng = normalize(cross(dFdx(v_world), dFdy(v_world)));
-    vec3 p = v_world;
+    vec4 light = u_lights[4 * i];
     int face = 0;
     if (u_shadow_kind == 2) {
         // the face is the major axis of the direction from the light
-        vec3 d = v_world - u_lights[4 * i].xyz;
+        vec3 d = v_world - light.xyz;
         vec3 a = abs(d);
         if (a.x >= a.y && a.x >= a.z) face = d.x > 0.0 ? 0 : 1;
         else if (a.y >= a.z) face = d.y > 0.0 ? 2 : 3;
         else face = d.z > 0.0 ? 4 : 5;
     }
-    // push toward the side the eye sees, which is the lit side here
+    // the side the eye sees; turned away from the light, it is in its own
+    // shadow (no offset point past a thin caster may say otherwise)
     if (dot(ng, u_eye - v_world) < 0.0)
         ng = -ng;
-    p += ng * u_shadow_params.z;
-    vec4 c = u_shadow_matrix[face] * vec4(p, 1.0);
+    if (dot(ng, light.w == 0.0 ? light.xyz : light.xyz - v_world) <= 0.0)
+        return 0.0;
+    // the offset is u_shadow_params.z texels' width where this point is: a
+    // perspective map's texels grow with the distance from the light (w)
+    vec4 c = u_shadow_matrix[face] * vec4(v_world, 1.0);
+    if (c.w <= 0.0)
+        return 0.0;
+    c = u_shadow_matrix[face] * vec4(v_world + ng * (u_shadow_params.z * c.w), 1.0);
     if (c.w <= 0.0)
         return 0.0;
     vec3 t = c.xyz / c.w;

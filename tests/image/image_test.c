@@ -327,6 +327,7 @@ int main(int argc, char **argv)
             vdsm_tests(&r, tiers[t], argv[i]);
             map_tests(&r, tiers[t], argv[i]);
             pcf_tests(&r, tiers[t], argv[i]);
+            model_tests(&r, tiers[t], argv[i]);
             surface_tests(&r, tiers[t], argv[i]);
             dot3_tests(&r, tiers[t], argv[i]);
             hostile_tests(&r, tiers[t], argv[i]);

@@ -24,6 +24,11 @@ void pcf_tests(run *r, stin_tier tier, const char *path);
 /* Fixed-function shadow-map tests of one scene (map_test.c; GL1 only). */
 void map_tests(run *r, stin_tier tier, const char *path);
 
+/* Shadow maps on the scenes made for real-model defects (model_test.c):
+ * every pixel's visibility, the sides turned from the light included, and
+ * map-pcf's documented gap limit. */
+void model_tests(run *r, stin_tier tier, const char *path);
+
 /* Shadow-volume tests of one scene at one tier (shadow_test.c). */
 void shadow_tests(run *r, stin_tier tier, const char *path);
 /* VDSM exact shadows of one scene (vdsm_test.c; GL4 only). */

@@ -779,6 +779,16 @@ void STIN_APIENTRY fake_TexEnvi(GLenum target, GLenum pname, GLint param)
     }
 }
 
+void STIN_APIENTRY fake_TexEnvfv(GLenum target, GLenum pname, const GLfloat *v)
+{
+    COUNT(TexEnvfv);
+    if (target != GL_TEXTURE_ENV || pname != GL_TEXTURE_ENV_COLOR) {
+        fake_gl_state_untracked("glTexEnvfv", target != GL_TEXTURE_ENV ? target : pname);
+        return;
+    }
+    memcpy(active_unit()->env.color, v, sizeof active_unit()->env.color);
+}
+
 static int coord_of(GLenum coord, const char *call)
 {
     if (coord < GL_S || coord > GL_Q) {

@@ -245,6 +245,7 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_EnableClientState ~, 1
 #define FAKE_STATE_DisableClientState ~, 1
 #define FAKE_STATE_TexEnvi ~, 1
+#define FAKE_STATE_TexEnvfv ~, 1
 #define FAKE_STATE_TexGeni ~, 1
 #define FAKE_STATE_TexGenfv ~, 1
 #define FAKE_STATE_AlphaFunc ~, 1
