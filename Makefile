@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: MIT
 # stin — build, test, bench, install.
-#   make            libstin.a, libstin_platform.a, stin-render, stin-bench
+#   make            libstin.a, libstin_platform.a, stin-render, stin-bench, examples/
 #   make check      install deps if missing, unit tests (ASan+UBSan), image tests per profile,
 #                   the stin-bench --quick smoke
 #   make demo       install deps if missing, render the example scenes at every tier into out/
@@ -43,8 +43,8 @@ PLATFORM_OBJ := $(PLATFORM_SRC:%.c=$(B)/obj/%.o)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(B)/obj/%.o) $(COMMON_CXX:%.cpp=$(B)/obj/%.o)
 REF_OBJ := $(REF_SRC:%.c=$(B)/obj/%.o)
 
-.PHONY: all check demo bench install uninstall clean deps tests fuzz
-all: $(B)/libstin.a $(B)/libstin_platform.a $(B)/stin-render $(B)/stin-bench
+.PHONY: all check demo bench install uninstall clean deps tests fuzz examples
+all: $(B)/libstin.a $(B)/libstin_platform.a $(B)/stin-render $(B)/stin-bench examples
 
 deps:
 	@sh platform/install-deps.sh
@@ -142,6 +142,17 @@ demo: deps
 	    $(B)/stin-render $$s --tier $$t -o out/$$n-$$t.png > out/$$n-$$t.txt 2>&1 \
 	      && echo "out/$$n-$$t.png" || echo "$$n at $$t: $$(tail -n 1 out/$$n-$$t.txt)"; \
 	  done; done
+
+# ---- examples (examples/: headless programs; make check builds them again
+# against a scratch install and checks their pictures) ----------------------
+EXAMPLE_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARN) -pedantic $(OPT) -Iinclude
+examples: $(B)/examples/egl_shadow $(B)/examples/osmesa_shadow
+$(B)/examples/egl_shadow: examples/egl_shadow.c examples/example_scene.h $(B)/libstin.a
+	@mkdir -p $(@D)
+	$(CC) $(EXAMPLE_CFLAGS) -o $@ $< $(B)/libstin.a -lEGL -lm
+$(B)/examples/osmesa_shadow: examples/osmesa_shadow.c examples/example_scene.h $(B)/libstin.a
+	@mkdir -p $(@D)
+	$(CC) $(EXAMPLE_CFLAGS) -o $@ $< $(B)/libstin.a -lOSMesa -lm
 
 # ---- install ---------------------------------------------------------------
 # The version comes from the header; the installed files are listed once, for

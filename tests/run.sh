@@ -56,6 +56,7 @@ done
 run "cli" sh tests/cli/test_render.sh "$B/stin-render"
 run "install" sh tests/cli/test_install.sh
 run "licence" sh tests/cli/test_licence.sh
+run "readme" sh tests/cli/test_readme.sh
 run "bench" sh tests/cli/test_bench.sh "$B/stin-bench" "$OUT/bench-quick.txt"
 
 awk '/^PASS /{p++} /^FAIL /{f++} /^SKIP /{s++} END {printf "%d passed, %d failed, %d skipped\n", p, f, s; exit f > 0}' "$LOG"

@@ -50,6 +50,22 @@ else
     echo "FAIL install-cmake: $(tail -n 3 "$dir/log" | tr '\n' ' ')"
 fi
 
+# The examples, built against the install as their headers say, and their
+# pictures checked against the exact shadow (tests/cli/example_check.c).
+cc -std=c99 -D_DEFAULT_SOURCE -Wall -Wextra -Werror tests/cli/example_check.c -lm -o "$dir/check" 2> "$dir/log" ||
+    echo "FAIL examples: the checker does not build: $(tail -n 1 "$dir/log")"
+for ex in osmesa:-lOSMesa egl:-lEGL; do
+    name=${ex%%:*}
+    if ! cc -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -pedantic \
+        "examples/${name}_shadow.c" $flags ${ex#*:} -lm -o "$dir/$name" > "$dir/log" 2>&1; then
+        echo "FAIL example-$name: does not build: $(tail -n 1 "$dir/log")"
+    elif ! "$dir/$name" "$dir/$name.ppm" > "$dir/log" 2>&1; then
+        echo "SKIP example-$name: no context here: $(tail -n 1 "$dir/log")"
+    else
+        "$dir/check" "$dir/$name.ppm" | sed -e "s|$dir/||" -e 's#^\(PASS\|FAIL\) #\1 example-#'
+    fi
+done
+
 make -s --no-print-directory uninstall DESTDIR="$dir" PREFIX=$prefix > "$dir/log" 2>&1
 left=$(find "$root" -type f 2> /dev/null | sed "s|^$root/||" | tr '\n' ' ')
 if [ -z "$left" ]; then
