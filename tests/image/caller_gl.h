@@ -52,6 +52,23 @@
     X(void, UseProgram, (GLuint p))                                                       \
     X(void, DeleteProgram, (GLuint p))                                                    \
     X(void, DeleteShader, (GLuint s))                                                     \
+    X(void, BindAttribLocation, (GLuint p, GLuint index, const GLchar *name))             \
+    X(void, GenBuffers, (GLsizei n, GLuint *b))                                           \
+    X(void, DeleteBuffers, (GLsizei n, const GLuint *b))                                  \
+    X(void, BindBuffer, (GLenum target, GLuint b))                                        \
+    X(void, BufferData, (GLenum target, GLsizeiptr size, const void *data, GLenum usage)) \
+    X(void, GenVertexArrays, (GLsizei n, GLuint *a))                                      \
+    X(void, DeleteVertexArrays, (GLsizei n, const GLuint *a))                             \
+    X(void, BindVertexArray, (GLuint a))                                                  \
+    X(void, VertexAttribPointer, (GLuint i, GLint size, GLenum type, GLboolean norm,      \
+                                  GLsizei stride, const void *p))                         \
+    X(void, EnableVertexAttribArray, (GLuint i))                                          \
+    X(void, DisableVertexAttribArray, (GLuint i))                                         \
+    X(void, DrawArrays, (GLenum mode, GLint first, GLsizei count))                        \
+    X(void, BindFramebuffer, (GLenum target, GLuint fb))                                  \
+    X(void, Viewport, (GLint x, GLint y, GLsizei w, GLsizei h))                           \
+    X(void, Clear, (GLbitfield mask))                                                     \
+    X(void, ClearColor, (GLfloat r, GLfloat g, GLfloat b, GLfloat a))                     \
     /* compatibility profile */                                                           \
     X(void, AlphaFunc, (GLenum f, GLclampf ref))                                          \
     X(void, ClipPlane, (GLenum plane, const GLdouble *eq))                                \
@@ -79,5 +96,9 @@ typedef struct caller_gl {
 
 /* Resolves every entry point the driver has (missing ones stay NULL). */
 void caller_gl_load(caller_gl *gl, stin_platform *plat);
+/* A linked program writing (r, g, b, 1) at clip-space positions from
+ * attribute 0 ("p"): GLSL 1.50 on core contexts, 1.10 otherwise; 0 if the
+ * context has no GLSL or linking fails. */
+GLuint caller_gl_flat_program(const caller_gl *gl, int core, float r, float g, float b);
 
 #endif

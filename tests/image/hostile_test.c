@@ -46,41 +46,6 @@ typedef struct hostile_run {
     int failed;
 } hostile_run;
 
-static const char *const red_vs_110 =
-    "#version 110\nvoid main() { gl_Position = gl_Vertex; }\n";
-static const char *const red_fs_110 = "#version 110\nvoid main() { gl_FragColor = vec4(1.0, 0.0, 0.0, 1.0); }\n";
-static const char *const red_vs_150 =
-    "#version 150\nin vec4 p;\nvoid main() { gl_Position = p; }\n";
-static const char *const red_fs_150 =
-    "#version 150\nout vec4 c;\nvoid main() { c = vec4(1.0, 0.0, 0.0, 1.0); }\n";
-
-static GLuint red_program(const caller_gl *gl, int core)
-{
-    GLuint p, vs, fs;
-    GLint ok = 0;
-    const char *v = core ? red_vs_150 : red_vs_110, *f = core ? red_fs_150 : red_fs_110;
-    if (!gl->CreateProgram)
-        return 0;
-    p = gl->CreateProgram();
-    vs = gl->CreateShader(GL_VERTEX_SHADER);
-    fs = gl->CreateShader(GL_FRAGMENT_SHADER);
-    gl->ShaderSource(vs, 1, &v, NULL);
-    gl->ShaderSource(fs, 1, &f, NULL);
-    gl->CompileShader(vs);
-    gl->CompileShader(fs);
-    gl->AttachShader(p, vs);
-    gl->AttachShader(p, fs);
-    gl->LinkProgram(p);
-    gl->DeleteShader(vs);
-    gl->DeleteShader(fs);
-    gl->GetProgramiv(p, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        gl->DeleteProgram(p);
-        return 0;
-    }
-    return p;
-}
-
 /* The caller's objects the cases bind: a red texture, a program, a sampler. */
 static void make_objects(hostile_env *e, const caller_gl *gl, int core)
 {
@@ -91,7 +56,7 @@ static void make_objects(hostile_env *e, const caller_gl *gl, int core)
     gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
     gl->BindTexture(GL_TEXTURE_2D, 0);
     if (e->version >= 20)
-        e->program = red_program(gl, core);
+        e->program = caller_gl_flat_program(gl, core, 1.0f, 0.0f, 0.0f);
     if (e->version >= 33 && gl->GenSamplers) {
         gl->GenSamplers(1, &e->sampler);
         gl->SamplerParameteri(e->sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);

@@ -331,6 +331,7 @@ int main(int argc, char **argv)
             surface_tests(&r, tiers[t], argv[i]);
             dot3_tests(&r, tiers[t], argv[i]);
             hostile_tests(&r, tiers[t], argv[i]);
+            composite_tests(&r, tiers[t], argv[i]);
         }
     }
     stin_platform_destroy(r.plat);

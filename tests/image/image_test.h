@@ -42,5 +42,8 @@ void surface_tests(run *r, stin_tier tier, const char *path);
 /* Frames under hostile caller state, on four-lights, glass-panes and
  * stone-wall only (hostile_test.c). */
 void hostile_tests(run *r, stin_tier tier, const char *path);
+/* The application's own geometry in stin's depth buffer, before and after
+ * stin's draws, on four-lights only (composite_test.c). */
+void composite_tests(run *r, stin_tier tier, const char *path);
 
 #endif
