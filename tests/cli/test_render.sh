@@ -28,13 +28,32 @@ done
 rc=$?
 check "missing scene file" $([ $rc -eq 2 ] && grep -q does-not-exist "$T/stderr" && echo 0 || echo 1) "exit $rc"
 
+# The command line itself: a version, unknown options named as such, an
+# output required (or --no-output), its directory checked before rendering.
+out=$("$R" --version 2>&1)
+check "--version" $([ $? -eq 0 ] && echo "$out" | grep -q "^stin-render [0-9]*\.[0-9]*\.[0-9]* (libstin [0-9]*)$" &&
+    echo 0 || echo 1) "got: $out"
+"$R" tests/scenes/torus.json --bogus > /dev/null 2> "$T/stderr"
+rc=$?
+check "unknown option" $([ $rc -eq 2 ] && grep -q "unknown option --bogus" "$T/stderr" && echo 0 || echo 1) \
+    "exit $rc, stderr: $(head -c 200 "$T/stderr")"
+"$R" tests/scenes/torus.json > "$T/stdout" 2> "$T/stderr"
+rc=$?
+check "no output given" $([ $rc -eq 2 ] && grep -q -- "-o OUT" "$T/stderr" && [ "$(wc -l < "$T/stderr")" -eq 1 ] &&
+    ! grep -q "frame" "$T/stdout" && echo 0 || echo 1) "exit $rc, stderr: $(head -c 200 "$T/stderr")"
+"$R" tests/scenes/spheres-174k.json -o "$T/missing/out.png" > "$T/stdout" 2> "$T/stderr"
+rc=$?
+check "output directory checked first" $([ $rc -eq 2 ] && grep -q "$T/missing/out.png" "$T/stderr" &&
+    [ "$(wc -l < "$T/stderr")" -eq 1 ] && [ ! -s "$T/stdout" ] && echo 0 || echo 1) \
+    "exit $rc, stderr: $(head -c 200 "$T/stderr")"
+
 "$R" tests/scenes/torus.json --size 0x10 > /dev/null 2>&1
 check "bad --size" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --size 0x10"
 
 "$R" tests/scenes/torus.json --tier gl9 > /dev/null 2>&1
 check "unknown tier" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --tier gl9"
 
-"$R" tests/scenes/torus.json --shadows sideways > /dev/null 2>&1
+"$R" tests/scenes/torus.json --shadows sideways --no-output > /dev/null 2>&1
 check "unknown shadow technique" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --shadows sideways"
 
 "$R" tests/scenes/torus.json --profile gl11 --tier gl4 -o "$T/forced.png" > /dev/null 2> "$T/stderr"
@@ -43,7 +62,7 @@ check "forced tier above the context" \
     $([ $rc -eq 3 ] && grep -q "GLSL" "$T/stderr" && [ ! -e "$T/forced.png" ] && echo 0 || echo 1) \
     "exit $rc, stderr: $(head -c 300 "$T/stderr")"
 
-"$R" tests/scenes/torus.json --profile gl33-core --tier gl1 > /dev/null 2> "$T/stderr"
+"$R" tests/scenes/torus.json --profile gl33-core --tier gl1 --no-output > /dev/null 2> "$T/stderr"
 rc=$?
 check "forced GL1 on a core context" \
     $([ $rc -eq 3 ] && grep -q "compatibility" "$T/stderr" && echo 0 || echo 1) "exit $rc"
@@ -101,12 +120,13 @@ check "work limit" $([ $rc -eq 2 ] && grep -q "work limit" "$T/stderr" && [ "$(w
     [ ! -e "$T/heavy.png" ] && echo 0 || echo 1) "exit $rc, stderr: $(head -c 300 "$T/stderr")"
 
 # Shadow-map size: the option, the scene key, and what the frame used.
-"$R" tests/scenes/shadow-far.json --shadows map-pcf --shadow-map-size 256 --size 32x32 > "$T/stdout" 2>&1
+"$R" tests/scenes/shadow-far.json --shadows map-pcf --shadow-map-size 256 --size 32x32 --no-output \
+    > "$T/stdout" 2>&1
 rc=$?
 check "--shadow-map-size" $([ $rc -eq 0 ] && grep -q "^shadow maps: 256 texels" "$T/stdout" && echo 0 || echo 1) \
     "exit $rc: $(grep -i "shadow" "$T/stdout" | head -c 300)"
 sed 's/^{/{"shadow_map_size": 128,/' tests/scenes/shadow-far.json > "$T/map128.json"
-"$R" "$T/map128.json" --shadows map-pcf --size 32x32 > "$T/stdout" 2>&1
+"$R" "$T/map128.json" --shadows map-pcf --size 32x32 --no-output > "$T/stdout" 2>&1
 rc=$?
 check "scene shadow_map_size" $([ $rc -eq 0 ] && grep -q "^shadow maps: 128 texels" "$T/stdout" && echo 0 || echo 1) \
     "exit $rc: $(grep -i "shadow" "$T/stdout" | head -c 300)"
@@ -114,7 +134,8 @@ check "scene shadow_map_size" $([ $rc -eq 0 ] && grep -q "^shadow maps: 128 texe
 check "bad --shadow-map-size" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --shadow-map-size 1000"
 
 # A point light under map-combine without FBO faces gets volumes: say so.
-"$R" tests/scenes/torus.json --profile gl13-combine --shadows map-combine --size 32x32 > "$T/stdout" 2>&1
+"$R" tests/scenes/torus.json --profile gl13-combine --shadows map-combine --size 32x32 --no-output \
+    > "$T/stdout" 2>&1
 rc=$?
 check "point light fallback is printed" \
     $([ $rc -eq 0 ] && grep "^shadows: map-combine" "$T/stdout" | grep -q "stencil volumes" && echo 0 || echo 1) \

@@ -135,10 +135,8 @@ int main(int argc, char **argv)
 
     memset(&s, 0, sizeof s);
     memset(&img, 0, sizeof img);
-    if (!render_parse_args(argc, argv, &o)) {
-        render_usage(stderr);
-        return EXIT_BAD_INPUT;
-    }
+    if (!render_parse_args(argc, argv, &o))
+        return EXIT_BAD_INPUT; /* its one line says what is wrong; --help lists the options */
     log.program = "stin-render";
     log.verbose = o.verbose;
     log.collect = 1;

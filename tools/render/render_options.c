@@ -6,11 +6,13 @@
 #include <errno.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 void render_usage(FILE *f)
 {
     fprintf(f,
-            "usage: stin-render SCENE.json [-o OUT.png|OUT.exr] [options]\n"
+            "usage: stin-render SCENE.json -o OUT.png|OUT.exr [options]\n"
+            "       stin-render SCENE.json --no-output [options]   render, print statistics only\n"
             "  --tier auto|gl1|gl2|gl4   force a tier (error if the context cannot run it)\n"
             "  --profile NAME            capability profile (see docs/profiles.md):");
     {
@@ -32,6 +34,7 @@ void render_usage(FILE *f)
                "  --volume-mode auto|zpass|zfail  shadow-volume counting (diagnostics)\n"
                "  --caps                    print capabilities and choices, render nothing\n"
                "  --verbose                 print stin's info log lines\n"
+               "  --version                 print the versions of stin-render and libstin\n"
                "exit codes: 0 ok, 1 failure, 2 bad input, 3 tier/technique unsupported here\n",
             RENDER_MAX_TRIANGLES_DEFAULT);
 }
@@ -83,6 +86,33 @@ static int parse_number_option(const char *name, const char *value, options *o)
     return 0;
 }
 
+static int takes_value(const char *a)
+{
+    static const char *const names[] = {"-o", "--tier", "--profile", "--platform", "--shadows",
+                                        "--volume-mode", "--shadow-map-size", "--max-triangles",
+                                        "--surface", "--size"};
+    size_t i;
+    for (i = 0; i < sizeof names / sizeof names[0]; i++)
+        if (!strcmp(a, names[i]))
+            return 1;
+    return 0;
+}
+
+/* The output's directory must exist and be writable before anything renders. */
+static int output_writable(const char *path)
+{
+    char dir[4096];
+    const char *slash = strrchr(path, '/');
+    size_t n = slash ? (size_t)(slash - path) : 0;
+    if (n >= sizeof dir)
+        return 0;
+    memcpy(dir, slash ? path : ".", slash ? n : 1);
+    dir[slash ? n : 1] = '\0';
+    if (slash && n == 0)
+        dir[0] = '/', dir[1] = '\0';
+    return access(dir, W_OK | X_OK) == 0;
+}
+
 int render_parse_args(int argc, char **argv, options *o)
 {
     int i;
@@ -99,7 +129,13 @@ int render_parse_args(int argc, char **argv, options *o)
             o->caps = 1;
         } else if (!strcmp(a, "--verbose")) {
             o->verbose = 1;
-        } else if (a[0] == '-' && !v) {
+        } else if (!strcmp(a, "--version")) {
+            printf("stin-render %d.%d.%d (libstin %d)\n", STIN_VERSION_MAJOR, STIN_VERSION_MINOR,
+                   STIN_VERSION_PATCH, stin_version());
+            exit(0);
+        } else if (!strcmp(a, "--no-output")) {
+            o->no_output = 1;
+        } else if (takes_value(a) && !v) {
             fprintf(stderr, "stin-render: %s needs a value\n", a);
             return 0;
         } else if (!strcmp(a, "-o")) {
@@ -155,6 +191,15 @@ int render_parse_args(int argc, char **argv, options *o)
             fprintf(stderr, "stin-render: output must end in .png or .exr: '%s'\n", o->output);
             return 0;
         }
+        if (!output_writable(o->output)) {
+            fprintf(stderr, "%s: output: its directory does not exist or is not writable\n",
+                    o->output);
+            return 0;
+        }
+    } else if (!o->caps && !o->no_output) {
+        fprintf(stderr, "stin-render: no output: give -o OUT.png|OUT.exr, or --no-output to "
+                        "render and print statistics only\n");
+        return 0;
     }
     return 1;
 }

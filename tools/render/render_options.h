@@ -22,6 +22,7 @@ typedef struct options {
     uint64_t max_triangles;     /* work limit; 0 = none */
     stin_tier tier;
     int width, height, caps, verbose;
+    int no_output;              /* --no-output: render and print statistics only */
 } options;
 
 void render_usage(FILE *f);
