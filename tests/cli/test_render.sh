@@ -47,6 +47,13 @@ check "output directory checked first" $([ $rc -eq 2 ] && grep -q "$T/missing/ou
     [ "$(wc -l < "$T/stderr")" -eq 1 ] && [ ! -s "$T/stdout" ] && echo 0 || echo 1) \
     "exit $rc, stderr: $(head -c 200 "$T/stderr")"
 
+"$R" tests/scenes/torus.json --size 32x32 --no-output --progress > /dev/null 2> "$T/stderr"
+rc=$?
+"$R" tests/scenes/torus.json --size 32x32 --no-output > /dev/null 2> "$T/quiet"
+check "--progress" $([ $rc -eq 0 ] && grep -q "^stin-render: loaded tests/scenes/torus.json: 2 meshes" "$T/stderr" &&
+    grep -q "^stin-render: rendered in [0-9.]* s$" "$T/stderr" && [ ! -s "$T/quiet" ] && echo 0 || echo 1) \
+    "exit $rc, stderr: $(head -c 300 "$T/stderr"); without --progress: $(head -c 100 "$T/quiet")"
+
 "$R" tests/scenes/torus.json --size 0x10 > /dev/null 2>&1
 check "bad --size" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --size 0x10"
 

@@ -6,6 +6,7 @@
 #include "cli_log.h"
 #include "one_line.h"
 #include "render_options.h"
+#include "render_progress.h"
 #include "scene.h"
 #include "scene_gpu.h"
 #include "stin/stin.h"
@@ -132,11 +133,14 @@ int main(int argc, char **argv)
     int rc = EXIT_FAILED, have_scene = 0, have_gpu = 0;
     image img;
     double ms = 0;
+    progress pr;
 
     memset(&s, 0, sizeof s);
     memset(&img, 0, sizeof img);
+    setvbuf(stdout, NULL, _IOLBF, 0); /* piped output appears as it is printed */
     if (!render_parse_args(argc, argv, &o))
         return EXIT_BAD_INPUT; /* its one line says what is wrong; --help lists the options */
+    progress_init(&pr, o.progress);
     log.program = "stin-render";
     log.verbose = o.verbose;
     log.collect = 1;
@@ -145,11 +149,14 @@ int main(int argc, char **argv)
         !render_parse_technique(o.surface, STIN_FEATURE_SURFACE, &desc.techniques[STIN_FEATURE_SURFACE]))
         return EXIT_BAD_INPUT;
     if (o.scene_path) {
+        progress_start(&pr, "loading %s", o.scene_path);
         if (!scene_load(o.scene_path, &s, err, sizeof err)) {
             fail_line(NULL, "%s", err);
             return EXIT_BAD_INPUT;
         }
         have_scene = 1;
+        progress_done(&pr, "loaded %s: %d meshes, %d objects, %d textures", o.scene_path,
+                      s.mesh_count, s.object_count, s.texture_count);
         if (!within_work_limit(&o, &s, NULL)) {
             rc = EXIT_BAD_INPUT;
             goto done;
@@ -224,6 +231,7 @@ int main(int argc, char **argv)
         rc = 0;
         goto done;
     }
+    progress_start(&pr, "creating meshes and textures");
     if (!scene_gpu_create(&g, &s, ctx, err, sizeof err)) {
         print_choices(ctx, &log);
         fail_line(&log, "%s", err);
@@ -231,11 +239,15 @@ int main(int argc, char **argv)
         goto done;
     }
     have_gpu = 1;
+    progress_done(&pr, "created meshes and textures");
+    progress_start(&pr, "rendering %dx%d (beauty, normal and visibility frames)", pd.width,
+                   pd.height);
     if (!aov_capture(&g, ctx, plat, &img, &ms, err, sizeof err)) {
         print_choices(ctx, &log);
         fail_line(&log, "%s: %s", file, err);
         goto done;
     }
+    progress_done(&pr, "rendered");
     print_choices(ctx, &log);
     print_frame(ctx, &s, ms, pd.width, pd.height);
     if (o.output) {

@@ -35,6 +35,7 @@ void render_usage(FILE *f)
                "  --caps                    print capabilities and choices, render nothing\n"
                "  --verbose                 print stin's info log lines\n"
                "  --version                 print the versions of stin-render and libstin\n"
+               "  --progress                progress lines on stderr (default: when it is a terminal)\n"
                "exit codes: 0 ok, 1 failure, 2 bad input, 3 tier/technique unsupported here\n",
             RENDER_MAX_TRIANGLES_DEFAULT);
 }
@@ -135,6 +136,8 @@ int render_parse_args(int argc, char **argv, options *o)
             exit(0);
         } else if (!strcmp(a, "--no-output")) {
             o->no_output = 1;
+        } else if (!strcmp(a, "--progress")) {
+            o->progress = 1;
         } else if (takes_value(a) && !v) {
             fprintf(stderr, "stin-render: %s needs a value\n", a);
             return 0;

@@ -23,6 +23,7 @@ typedef struct options {
     stin_tier tier;
     int width, height, caps, verbose;
     int no_output;              /* --no-output: render and print statistics only */
+    int progress;               /* --progress: progress lines even when stderr is no terminal */
 } options;
 
 void render_usage(FILE *f);
