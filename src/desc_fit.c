@@ -18,8 +18,10 @@ uint64_t stin_texture_staging_bytes(const stin_texture_desc *d)
     normal = d->kind == STIN_TEXTURE_NORMAL;
     derive = normal && d->normal_from_height > 0.0f;
     mips = !d->no_mipmaps && d->kind != STIN_TEXTURE_HEIGHT;
+    /* the derived source is kept beside the chain whenever the size changes,
+     * which a context's max_texture_size may do to any size: always count it */
     return stin__plan_staging(w, h, mips, resampled || normal,
-                              derive && resampled ? 4ull * d->width * d->height : 0)
+                              derive ? 4ull * d->width * d->height : 0)
         .total;
 }
 

@@ -411,7 +411,6 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
     int sm = !(flags & STIN_DEBUG_VDSM_NO_SM), dc = !(flags & STIN_DEBUG_VDSM_NO_DC);
     stin__pass_state saved = *stin__pass_current(ctx), ps = saved;
     const int *vp = ctx->frame.viewport;
-    GLint equation[2] = {GL_FUNC_ADD, GL_FUNC_ADD};
     p->ready = 0;
     if (!p->usable || !(sm || dc))
         return;
@@ -436,9 +435,8 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
     GL(ctx, ClearColor)(-BIG, -BIG, 0.0f, 0.0f);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    /* MAX blending; the caller's equations are given back after */
-    GL(ctx, GetIntegerv)(GL_BLEND_EQUATION_RGB, &equation[0]);
-    GL(ctx, GetIntegerv)(GL_BLEND_EQUATION_ALPHA, &equation[1]);
+    /* MAX blending; ADD again after, the equation every other pass draws
+     * with (the frame set it at its start: caller_state.c) */
     ps.blend = 1;
     ps.blend_src = ps.blend_dst = GL_ONE;
     stin__pass_apply(ctx, &ps);
@@ -448,7 +446,7 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
         occluders(ctx, light, ps);
     if (dc)
         receivers(ctx, light);
-    GL(ctx, BlendEquationSeparate)((GLenum)equation[0], (GLenum)equation[1]);
+    GL(ctx, BlendEquationSeparate)(GL_FUNC_ADD, GL_FUNC_ADD);
     ps.blend = 0;
     stin__pass_apply(ctx, &ps);
     reduce(ctx);

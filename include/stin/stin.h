@@ -689,8 +689,9 @@ typedef struct stin_texture_desc {
  * texture on any context (pixels may be NULL): 5/16 of w * h * 4 for an
  * albedo texture uploaded as given with mipmaps (levels 1 and 2; none
  * without mipmaps), 5/4 for normal maps and power-of-two resamples (GL1
- * contexts resample non-power-of-two sizes up), plus the source for a
- * derived-and-resampled normal map. 0 for a bad desc. */
+ * contexts resample non-power-of-two sizes up), plus w * h * 4 for a normal
+ * map derived from a height field (kept while the size changes). 0 for a
+ * bad desc. */
 uint64_t stin_texture_staging_bytes(const stin_texture_desc *desc);
 
 typedef struct stin_asset_summary {

@@ -2,6 +2,7 @@
 /* A stin context per render, sized to the scene, torn down afterwards. */
 #include "capture.h"
 #include "aov.h"
+#include "image_test.h"
 #include "scene_gpu.h"
 
 #include <stdio.h>
@@ -67,3 +68,13 @@ done:
 }
 
 void capture_free(capture *c) { image_free(&c->img); }
+
+void capture_report_clean(struct run *r, const char *name, const capture *cap)
+{
+    if (cap->counters.gl_violations || cap->counters.gl_errors || cap->log_errors)
+        report(r, "FAIL", name, "%u profile violations, %u GL errors, %u error logs (last: %s)",
+               cap->counters.gl_violations, cap->counters.gl_errors, cap->log_errors,
+               cap->last_error);
+    else
+        report(r, "PASS", name, "no GL error, no call outside the profile");
+}

@@ -34,4 +34,9 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
                    const capture_options *o, capture *out, char *err, size_t err_size);
 void capture_free(capture *c);
 
+/* The gl-clean verdict of a render: no GL error, no call outside the
+ * profile, no error logged; one PASS/FAIL line under `name`. */
+struct run;
+void capture_report_clean(struct run *r, const char *name, const capture *cap);
+
 #endif

@@ -242,12 +242,7 @@ static void test_clean(const vdsm_case *c, const capture *cap)
 {
     char name[256];
     name_of(c, "gl-clean", name, sizeof name);
-    if (cap->counters.gl_violations || cap->counters.gl_errors || cap->log_errors)
-        report(c->r, "FAIL", name, "%u profile violations, %u GL errors, %u error logs (last: %s)",
-               cap->counters.gl_violations, cap->counters.gl_errors, cap->log_errors,
-               cap->last_error);
-    else
-        report(c->r, "PASS", name, "no GL error, no call outside the profile");
+    capture_report_clean(c->r, name, cap);
 }
 
 static long test_vis(const vdsm_case *c, const capture *cap)

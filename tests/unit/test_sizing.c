@@ -41,6 +41,10 @@ static void test_texture_staging_bytes(void **state)
     t.normal_from_height = 1.0f; /* and the derived source before the resample */
     assert_int_equal(stin_texture_staging_bytes(&t),
                      4u * (1024u * 1024u + 512u * 512u) + 4u * 1000u * 600u);
+    t = texture(STIN_TEXTURE_NORMAL, 8192, 8192); /* halved on a 4096 context: source kept */
+    t.normal_from_height = 1.0f;
+    assert_int_equal(stin_texture_staging_bytes(&t),
+                     4ull * (8192u * 8192u + 4096u * 4096u) + 4ull * 8192u * 8192u);
     t = texture(STIN_TEXTURE_HEIGHT, 256, 256); /* height maps: level 0 only, as given */
     assert_int_equal(stin_texture_staging_bytes(&t), 0);
     t = texture(STIN_TEXTURE_ALBEDO, 0, 16);
