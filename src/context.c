@@ -184,6 +184,7 @@ static stin_result init_shadows(stin_context *ctx)
         stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
         stin_result r;
         ctx->shadow = stin__shadow_technique_of(t);
+        stin__mask_init(ctx); /* for this technique's units */
         if (!ctx->shadow->init)
             return STIN_OK;
         r = ctx->shadow->init(ctx);
@@ -249,6 +250,8 @@ static void release_gl(stin_context *ctx)
     stin__dot3_release(ctx);
     if (ctx->shadow && ctx->shadow->release)
         ctx->shadow->release(ctx);
+    stin__mask_release(ctx);
+    stin__export_release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,

@@ -43,6 +43,14 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
                                                   "(an all-zero or singular matrix draws nothing)");
     if ((unsigned)desc->output > STIN_OUTPUT_VISIBILITY)
         return arg_error(ctx, "stin_begin_frame", "unknown output");
+    if ((unsigned)desc->export_visibility > STIN_EXPORT_VISIBILITY_ONLY)
+        return arg_error(ctx, "stin_begin_frame", "unknown export_visibility");
+    if (desc->export_visibility && !stin__export_supported(ctx)) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK,
+                  "stin_begin_frame: the visibility export needs framebuffer objects and packed "
+                  "depth-stencil textures");
+        return STIN_ERROR_UNSUPPORTED;
+    }
     if (desc->framebuffer && !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)))
         return arg_error(ctx, "stin_begin_frame", "a framebuffer name needs framebuffer objects");
     if (stin__target_check(ctx, desc->framebuffer, "stin_begin_frame") != STIN_OK)
@@ -253,6 +261,7 @@ static void stage_prepare(stin_context *ctx)
 {
     stin__pass_forget(ctx); /* the caller's state is unknown */
     ctx->units_used = 0;
+    ctx->draw_fbo = ctx->frame.framebuffer;
 }
 
 /* Light pre-passes (shadow maps): before the target is bound and cleared,
@@ -346,9 +355,9 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
 }
 
 /* The frame plan. Stages: light pre-passes -> target -> depth and ambient ->
- * per light visibility and lighting -> blended draws. Without shadows (no
- * technique, or no lights) the lighting is all lights in batches of the
- * path's size and the blended draws go with it. */
+ * per light visibility and lighting -> blended draws -> the visibility
+ * export. Without shadows (no technique, or no lights) the lighting is all
+ * lights in batches of the path's size and the blended draws go with it. */
 static void run_plan(stin_context *ctx)
 {
     const stin__path *path = stin__path_of(ctx);
@@ -358,7 +367,9 @@ static void run_plan(stin_context *ctx)
     stage_light_prepasses(ctx);
     stage_target(ctx);
     path->begin(ctx);
-    if (ctx->frame.output == STIN_OUTPUT_NORMAL) {
+    if (ctx->frame.export_visibility == STIN_EXPORT_VISIBILITY_ONLY) {
+        path->ambient(ctx, STIN__OPAQUE, 1); /* the depth the application shades against */
+    } else if (ctx->frame.output == STIN_OUTPUT_NORMAL) {
         path->normals(ctx);
     } else if (shadowed) {
         path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
@@ -372,6 +383,7 @@ static void run_plan(stin_context *ctx)
     } else {
         path->batches(ctx, STIN__ALL);
     }
+    stin__export_stage(ctx, path, shadowed);
     path->end(ctx);
 }
 

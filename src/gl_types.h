@@ -37,6 +37,7 @@ typedef void GLvoid;
 #define GL_LESS 0x0201
 #define GL_EQUAL 0x0202
 #define GL_LEQUAL 0x0203
+#define GL_GREATER 0x0204
 #define GL_ALWAYS 0x0207
 #define GL_ZERO 0
 #define GL_ONE 1

@@ -15,6 +15,7 @@
 #include "pass_state.h"
 #include "shadow.h"
 #include "surface.h"
+#include "visibility_export.h"
 
 typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
 
@@ -62,6 +63,11 @@ struct stin_context {
     int pass_known;
     GLenum lit_cull;          /* face the lit passes cull (0: none): map-depth's facing test */
     uint32_t units_used;      /* texture units bound this frame (bit per unit) */
+    GLuint draw_fbo;          /* where the frame plan draws now: the frame's framebuffer,
+                               * or the screen mask (visibility export); a module that
+                               * draws elsewhere mid-frame (maps) binds it back */
+    unsigned char pass_channel; /* 0, or 1-4: the draws' passes write only R, G, B or A
+                                 * (a light's channel of the visibility export) */
     GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
     struct {                  /* the frame's framebuffer (framebuffer_probe.c) */
         GLuint name;          /* the one probed last (0 = default) */
@@ -82,6 +88,7 @@ struct stin_context {
     stin__map_pcf_state map_pcf;
     stin__mask_state mask;
     stin__vdsm_state vdsm;
+    stin__export_state visibility; /* the visibility map (visibility_export.c) */
 
     /* surface detail */
     struct {

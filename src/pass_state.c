@@ -145,7 +145,7 @@ stin__pass_state stin__pass_draw(const stin_context *ctx, int additive, int blen
     s.depth_func = additive ? GL_EQUAL : GL_LESS;
     s.depth_write = !additive;
     s.color_write = 1;
-    s.color_only = 0;
+    s.color_only = ctx->pass_channel;
     s.blend = additive || blend_alpha;
     s.blend_src = blend_alpha ? GL_SRC_ALPHA : GL_ONE;
     s.blend_dst = additive ? GL_ONE : blend_alpha ? GL_ONE_MINUS_SRC_ALPHA : GL_ZERO;

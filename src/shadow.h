@@ -168,17 +168,21 @@ typedef struct stin__mask_state {
     GLuint fbo, color, depth_stencil;
     int width, height;    /* allocated texels (0: not yet) */
     int unit;             /* the texture unit the lit pass reads it on */
-    int usable;           /* the context can draw masks (set at stin_create) */
+    int drawable;         /* the context can draw masks (set at stin_create) */
+    int usable;           /* and the lit passes can read them (a unit for it) */
     int active;           /* lights of the current lit pass read from it */
     int depth_done;       /* the frame's depth is in the mask's buffer */
 } stin__mask_state;
 
-/* At stin_create with GLSL lighting: decides whether masks are usable. */
+/* At stin_create, before the shadow module's set-up: decides whether masks
+ * can be drawn (the visibility export, any path) and read by the lit passes
+ * (GLSL lighting and a texture unit: the frame's lights). */
 void stin__mask_init(stin_context *ctx);
 void stin__mask_release(stin_context *ctx);
 /* Binds the mask as the target (clearing its colour; the first time in a
  * frame also its depth and stencil, then the frame's depth is drawn). 0:
- * the mask cannot be made (logged once), draw the lights the old way. */
+ * the mask cannot be made (logged once), draw the lights the old way. The
+ * viewport stays the frame's (the mask has the same window coordinates). */
 int stin__mask_begin(stin_context *ctx, const stin__path *path, int which);
 /* After a technique left the stencil passing where light is visible: 1
  * into `channel` there. */

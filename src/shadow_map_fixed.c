@@ -359,7 +359,7 @@ static void fixed_prepass(stin_context *ctx)
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PopMatrix)();
     if (ctx->map_fixed.fbo)
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     stin__gl_check_errors(ctx, "shadow maps");
 }
 
@@ -543,7 +543,7 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
     render_one(ctx, slot, li, view, proj, n, f);
     store_texgen(ctx, slot, li, view, proj, n, f);
     /* back to the frame */
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
     GL(ctx, MatrixMode)(GL_PROJECTION);

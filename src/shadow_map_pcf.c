@@ -98,7 +98,7 @@ static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
     stin__path_of(ctx)->depth(ctx, view, proj);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
     store_matrix(ctx, slot, view, proj);

@@ -16,6 +16,7 @@ void stin__mask_init(stin_context *ctx)
         stin__technique_row_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     stin__memzero(&ctx->mask, sizeof ctx->mask);
     ctx->mask.unit = ctx->sel.shadow_unit;
+    ctx->mask.drawable = stin__export_supported(ctx);
     if ((ctx->caps.present & need) != need ||
         ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED)
         return;
@@ -91,8 +92,8 @@ static int ensure_size(stin_context *ctx)
                   "shadow mask framebuffer incomplete (0x%x): each shadowed light gets its own "
                   "lit pass", (unsigned)status);
         stin__mask_release(ctx);
-        ctx->mask.usable = 0;
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer); /* lights go on there */
+        ctx->mask.usable = ctx->mask.drawable = 0;
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo); /* lights go on there */
         return 0;
     }
     return 1;
@@ -101,7 +102,7 @@ static int ensure_size(stin_context *ctx)
 int stin__mask_begin(stin_context *ctx, const stin__path *path, int which)
 {
     stin__pass_state ps = stin__pass_defaults;
-    if (!ctx->mask.usable || !ensure_size(ctx))
+    if (!ctx->mask.drawable || !ensure_size(ctx))
         return 0;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the mask */
@@ -121,13 +122,17 @@ int stin__mask_begin(stin_context *ctx, const stin__path *path, int which)
 
 void stin__mask_write(stin_context *ctx, const stin__path *path, int channel)
 {
-    static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
-                                      -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
+    /* on the far plane, depth GREATER: only where a surface is (the
+     * visibility export hands out 0 elsewhere) */
+    static const float quad[6 * 4] = {-1, -1, 1, 1, 1, -1, 1, 1, 1, 1, 1, 1,
+                                      -1, -1, 1, 1, 1, 1, 1, 1, -1, 1, 1, 1};
     static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     static const float one[4] = {1, 1, 1, 1};
     const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
     stin__pass_state ps = *stin__pass_current(ctx);
-    ps.depth_test = 0;
+    ps.depth_test = 1;
+    ps.depth_func = GL_GREATER;
+    ps.depth_write = 0;
     ps.depth_clamp = 0;
     ps.color_write = 1;
     ps.color_only = (unsigned char)(channel + 1);

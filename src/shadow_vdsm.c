@@ -54,7 +54,6 @@ static void release(stin_context *ctx)
     v->query = 0;
     stin__vdsm_pyramid_release(ctx);
     stin__vdsm_buffer_release(ctx);
-    stin__mask_release(ctx);
 }
 
 static void locate(stin_context *ctx)
@@ -98,7 +97,6 @@ static stin_result vdsm_init(stin_context *ctx)
     stin__vdsm_state *v = &ctx->vdsm;
     char msg[160], why[200];
     stin__memzero(v, sizeof *v);
-    stin__mask_init(ctx);
     if (!ctx->mask.usable) {
         stin__demote(ctx, STIN_FEATURE_SHADOWS, fallback(ctx),
                      "vdsm writes into the screen mask, which needs a texture unit beyond the "

@@ -407,14 +407,8 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
     return 1;
 }
 
-static stin_result volume_init(stin_context *ctx)
-{
-    stin__mask_init(ctx);
-    return STIN_OK;
-}
-
 const stin__shadow_technique stin__shadow_volume = {
-    STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", volume_init,       stin__mask_release,
+    STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", NULL,              NULL,
     volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
     volume_mask,
 };

@@ -15,25 +15,23 @@ void caller_gl_load(caller_gl *gl, stin_platform *plat)
 #undef CALLER_GL_X_
 }
 
-GLuint caller_gl_flat_program(const caller_gl *gl, int core, float r, float g, float b)
+GLuint caller_gl_program(const caller_gl *gl, int core, const char *frag)
 {
-    char vs_src[160], fs_src[200];
-    const char *v = vs_src, *f = fs_src;
+    char vs_src[160];
+    const char *v = vs_src, *f[3];
     GLuint p, vs, fs;
     GLint ok = 0;
     if (!gl->CreateProgram)
         return 0;
     snprintf(vs_src, sizeof vs_src, "#version %s\n%s vec4 p;\nvoid main() { gl_Position = p; }\n",
              core ? "150" : "110", core ? "in" : "attribute");
-    snprintf(fs_src, sizeof fs_src,
-             core ? "#version 150\nout vec4 c;\nvoid main() { c = vec4(%g, %g, %g, 1.0); }\n"
-                  : "#version 110\nvoid main() { gl_FragColor = vec4(%g, %g, %g, 1.0); }\n",
-             r, g, b);
+    f[0] = core ? "#version 150\nout vec4 c;\n" : "#version 110\n#define c gl_FragColor\n";
+    f[1] = frag;
     p = gl->CreateProgram();
     vs = gl->CreateShader(GL_VERTEX_SHADER);
     fs = gl->CreateShader(GL_FRAGMENT_SHADER);
     gl->ShaderSource(vs, 1, &v, NULL);
-    gl->ShaderSource(fs, 1, &f, NULL);
+    gl->ShaderSource(fs, 2, f, NULL);
     gl->CompileShader(vs);
     gl->CompileShader(fs);
     gl->AttachShader(p, vs);
@@ -48,4 +46,30 @@ GLuint caller_gl_flat_program(const caller_gl *gl, int core, float r, float g, f
         return 0;
     }
     return p;
+}
+
+GLuint caller_gl_flat_program(const caller_gl *gl, int core, float r, float g, float b)
+{
+    char fs_src[96];
+    snprintf(fs_src, sizeof fs_src, "void main() { c = vec4(%g, %g, %g, 1.0); }\n", r, g, b);
+    return caller_gl_program(gl, core, fs_src);
+}
+
+void caller_gl_buffers(const caller_gl *gl, int core, GLuint *vbo, GLuint *vao)
+{
+    *vbo = *vao = 0;
+    gl->GenBuffers(1, vbo);
+    if (core && gl->GenVertexArrays)
+        gl->GenVertexArrays(1, vao);
+}
+
+void caller_gl_delete(const caller_gl *gl, GLuint *program, GLuint *vbo, GLuint *vao)
+{
+    if (*vao)
+        gl->DeleteVertexArrays(1, vao);
+    if (*vbo)
+        gl->DeleteBuffers(1, vbo);
+    if (*program)
+        gl->DeleteProgram(*program);
+    *program = *vbo = *vao = 0;
 }

@@ -42,6 +42,7 @@
     X(void, TexImage2D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,    \
                          GLint border, GLenum fmt, GLenum type, const void *pixels))      \
     X(void, TexParameteri, (GLenum target, GLenum pname, GLint v))                        \
+    X(void, GetTexImage, (GLenum target, GLint level, GLenum fmt, GLenum type, void *px)) \
     X(GLuint, CreateShader, (GLenum type))                                                \
     X(void, ShaderSource, (GLuint s, GLsizei n, const GLchar *const *src, const GLint *len)) \
     X(void, CompileShader, (GLuint s))                                                    \
@@ -53,6 +54,8 @@
     X(void, DeleteProgram, (GLuint p))                                                    \
     X(void, DeleteShader, (GLuint s))                                                     \
     X(void, BindAttribLocation, (GLuint p, GLuint index, const GLchar *name))             \
+    X(GLint, GetUniformLocation, (GLuint p, const GLchar *name))                          \
+    X(void, Uniform1i, (GLint loc, GLint v))                                              \
     X(void, GenBuffers, (GLsizei n, GLuint *b))                                           \
     X(void, DeleteBuffers, (GLsizei n, const GLuint *b))                                  \
     X(void, BindBuffer, (GLenum target, GLuint b))                                        \
@@ -100,5 +103,12 @@ void caller_gl_load(caller_gl *gl, stin_platform *plat);
  * attribute 0 ("p"): GLSL 1.50 on core contexts, 1.10 otherwise; 0 if the
  * context has no GLSL or linking fails. */
 GLuint caller_gl_flat_program(const caller_gl *gl, int core, float r, float g, float b);
+/* The same vertex shader with a fragment shader of `frag` after the
+ * #version line (core: 150, the output "c"; else 110, gl_FragColor). */
+GLuint caller_gl_program(const caller_gl *gl, int core, const char *frag);
+/* A vertex buffer, and on core contexts a vertex array object (else 0). */
+void caller_gl_buffers(const caller_gl *gl, int core, GLuint *vbo, GLuint *vao);
+/* Deletes what is not 0 of a program, buffer and vertex array; all 0 after. */
+void caller_gl_delete(const caller_gl *gl, GLuint *program, GLuint *vbo, GLuint *vao);
 
 #endif

@@ -15,6 +15,7 @@
 #include "reference.h"
 #include "scene.h"
 #include "scene_gpu.h"
+#include "test_context.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -31,9 +32,7 @@ typedef struct composite {
     run *r;
     const scene *s;
     const caller_gl *gl;
-    stin_context *ctx;
-    void *block;
-    scene_gpu g;
+    test_context t;
     GLuint program, vbo, vao;
     const ref_hit *hits;
     uint8_t *rgba;
@@ -88,12 +87,7 @@ static int frame(composite *c, int before)
     int w = c->r->width, h = c->r->height, i;
     stin_frame_desc fd;
     float proj[16];
-    memset(&fd, 0, sizeof fd);
-    scene_camera_matrices(&s->camera, w, h, fd.view, fd.projection);
-    fd.viewport[2] = w;
-    fd.viewport[3] = h;
-    fd.framebuffer = stin_platform_framebuffer(c->r->plat);
-    memcpy(fd.ambient, s->ambient, sizeof fd.ambient);
+    test_frame_desc(c->r, s, &fd);
     fd.no_clear = before;
     if (before) { /* the application clears, draws, then stin draws with it */
         c->gl->BindFramebuffer(GL_FRAMEBUFFER, fd.framebuffer);
@@ -101,21 +95,21 @@ static int frame(composite *c, int before)
         c->gl->ClearColor(0, 0, 0, 0);
         c->gl->Clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     }
-    if (stin_begin_frame(c->ctx, &fd) != STIN_OK)
+    if (stin_begin_frame(c->t.ctx, &fd) != STIN_OK)
         return 0;
-    stin_query_frame_projection(c->ctx, proj);
+    stin_query_frame_projection(c->t.ctx, proj);
     upload_quad(c, fd.view, proj);
     if (before)
         draw_quad(c);
     for (i = 0; i < s->light_count; i++) {
         stin_light_desc l;
         scene_gpu_light(&s->lights[i], &l);
-        stin_add_light(c->ctx, &l);
+        stin_add_light(c->t.ctx, &l);
     }
     for (i = 0; i < s->object_count; i++)
-        stin_draw(c->ctx, c->g.meshes[s->objects[i].mesh], s->objects[i].transform,
-                  &c->g.materials[s->objects[i].material]);
-    if (stin_end_frame(c->ctx) != STIN_OK)
+        stin_draw(c->t.ctx, c->t.g.meshes[s->objects[i].mesh], s->objects[i].transform,
+                  &c->t.g.materials[s->objects[i].material]);
+    if (stin_end_frame(c->t.ctx) != STIN_OK)
         return 0;
     if (!before)
         draw_quad(c);
@@ -166,43 +160,6 @@ static void check(composite *c, const char *name)
            "(%ld should show it; at most %.2f%%)", wrong, compared, quad, 100.0 * BUDGET);
 }
 
-static int create(composite *c, stin_tier tier, stin_technique shadows)
-{
-    stin_desc d;
-    size_t size;
-    char err[256];
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = c->r->plat;
-    d.tier = tier;
-    d.caps_mask = c->r->profile->caps_mask;
-    d.max_gl_version = c->r->profile->max_gl_version;
-    d.techniques[STIN_FEATURE_SHADOWS] = shadows;
-    scene_gpu_size_desc(c->s, &d);
-    size = stin_memory_size(&d);
-    c->block = malloc(size);
-    if (!c->block || stin_create(&d, c->block, size, &c->ctx) != STIN_OK) {
-        free(c->block);
-        c->ctx = NULL;
-        return 0;
-    }
-    if (!scene_gpu_create(&c->g, c->s, c->ctx, err, sizeof err)) {
-        stin_destroy(c->ctx);
-        free(c->block);
-        c->ctx = NULL;
-        return 0;
-    }
-    return 1;
-}
-
-static void destroy(composite *c)
-{
-    scene_gpu_destroy(&c->g, c->ctx);
-    stin_destroy(c->ctx);
-    free(c->block);
-    c->ctx = NULL;
-}
-
 void composite_tests(run *r, stin_tier tier, const char *path)
 {
     static const stin_technique techniques[2] = {STIN_TECH_NONE, STIN_TECH_SHADOWS_VOLUME};
@@ -237,14 +194,12 @@ void composite_tests(run *r, stin_tier tier, const char *path)
     } else if (!c.rgba || !hits || !ref || !reference_primary(ref, r->width, r->height, hits)) {
         report(r, "FAIL", name, "reference: %s", ref ? "primary rays failed" : err);
     } else {
-        gl.GenBuffers(1, &c.vbo);
-        if (r->profile->core && gl.GenVertexArrays)
-            gl.GenVertexArrays(1, &c.vao);
+        caller_gl_buffers(&gl, r->profile->core, &c.vbo, &c.vao);
         for (t = 0; t < 2; t++) {
             stin_technique chosen;
-            if (!create(&c, tier, techniques[t]))
+            if (!test_context_create(&c.t, r, &s, tier, techniques[t], 0))
                 continue;
-            chosen = stin_query_choice(c.ctx, STIN_FEATURE_SHADOWS).technique;
+            chosen = stin_query_choice(c.t.ctx, STIN_FEATURE_SHADOWS).technique;
             if (t == 0)
                 first = chosen;
             if (t == 0 || chosen != first) { /* volumes, where they are not the default */
@@ -258,14 +213,10 @@ void composite_tests(run *r, stin_tier tier, const char *path)
                         report(r, "FAIL", name, "the frame failed");
                 }
             }
-            destroy(&c);
+            test_context_destroy(&c.t);
         }
-        if (c.vao)
-            gl.DeleteVertexArrays(1, &c.vao);
-        gl.DeleteBuffers(1, &c.vbo);
     }
-    if (c.program)
-        gl.DeleteProgram(c.program);
+    caller_gl_delete(&gl, &c.program, &c.vbo, &c.vao);
     if (ref)
         reference_destroy(ref);
     free(hits);

@@ -18,6 +18,7 @@
 #include "aov.h"
 #include "capture.h"
 #include "image_test.h"
+#include "test_context.h"
 #include "scene_primitives.h"
 
 #include <math.h>
@@ -49,12 +50,7 @@ static int surface_choice(run *r, stin_tier tier, stin_choice *out)
     stin_context *ctx = NULL;
     size_t size;
     void *block;
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = r->plat;
-    d.tier = tier;
-    d.caps_mask = r->profile->caps_mask;
-    d.max_gl_version = r->profile->max_gl_version;
+    test_desc(r, tier, &d);
     d.max_meshes = d.max_textures = d.max_draws = 1;
     d.max_vertices = d.max_triangles = d.max_mesh_triangles = 64;
     size = stin_memory_size(&d);

@@ -332,6 +332,7 @@ int main(int argc, char **argv)
             dot3_tests(&r, tiers[t], argv[i]);
             hostile_tests(&r, tiers[t], argv[i]);
             composite_tests(&r, tiers[t], argv[i]);
+            visibility_tests(&r, tiers[t], argv[i]);
         }
     }
     stin_platform_destroy(r.plat);

@@ -45,5 +45,8 @@ void hostile_tests(run *r, stin_tier tier, const char *path);
 /* The application's own geometry in stin's depth buffer, before and after
  * stin's draws, on four-lights only (composite_test.c). */
 void composite_tests(run *r, stin_tier tier, const char *path);
+/* The visibility map for the application's own shaders, on four-lights
+ * (six lights) and shadow-soft (visibility_test.c). */
+void visibility_tests(run *r, stin_tier tier, const char *path);
 
 #endif

@@ -304,6 +304,61 @@ static void test_singular_frame_matrices_are_rejected(void **state)
     release(&c);
 }
 
+/* ---- issue 8 item 2: the visibility map ----------------------------------------- */
+static stin_result export_frame(context *c, stin_mesh m, stin_export ex, int check_open)
+{
+    stin_frame_desc fd = {.viewport = {2, 1, 64, 48}};
+    stin_light_desc l = {.position = {0.5f, 0.5f, 2.0f}};
+    stin_visibility_map map;
+    stin_result r;
+    stin__mat4_identity(fd.view);
+    stin__mat4_identity(fd.projection);
+    fd.export_visibility = ex;
+    if ((r = stin_begin_frame(c->ctx, &fd)) != STIN_OK)
+        return r;
+    assert_int_equal(stin_add_light(c->ctx, &l), STIN_OK);
+    assert_int_equal(stin_draw(c->ctx, m, NULL, NULL), STIN_OK);
+    if (check_open) /* nothing to hand out while a frame is open */
+        assert_int_equal(stin_query_visibility_map(c->ctx, &map), STIN_ERROR_INVALID_STATE);
+    return stin_end_frame(c->ctx);
+}
+
+static void test_visibility_map_contract(void **state)
+{
+    context c = {0};
+    stin_mesh m;
+    stin_visibility_map map;
+    (void)state;
+    use_profile(FAKE_GL21);
+    create_auto(&c);
+    assert_int_equal(quad(c.ctx, &m), STIN_OK);
+    assert_int_equal(stin_query_visibility_map(c.ctx, &map), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(stin_bind_visibility(c.ctx, 0), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(export_frame(&c, m, (stin_export)7, 0), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(export_frame(&c, m, STIN_EXPORT_VISIBILITY, 1), STIN_OK);
+    assert_int_equal(stin_query_visibility_map(c.ctx, &map), STIN_OK);
+    assert_true(map.texture != 0);
+    assert_int_equal(map.lights, 1);
+    assert_int_equal(map.tile_width, 66); /* the viewport's far corner */
+    assert_int_equal(map.tile_height, 49);
+    assert_true(map.width >= 66 && map.height >= 49);
+    /* the application's program must be current; units are the context's */
+    assert_int_equal(stin_bind_visibility(c.ctx, 0), STIN_ERROR_INVALID_STATE);
+    assert_int_equal(stin_bind_visibility(c.ctx, -1), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(stin_bind_visibility(c.ctx, 1 << 20), STIN_ERROR_INVALID_ARGUMENT);
+    /* a frame without the export leaves nothing to hand out */
+    assert_int_equal(export_frame(&c, m, STIN_EXPORT_NONE, 0), STIN_OK);
+    assert_int_equal(stin_query_visibility_map(c.ctx, &map), STIN_ERROR_INVALID_STATE);
+    release(&c);
+    /* no framebuffer objects: refused, said */
+    use_profile(FAKE_GL14);
+    create_auto(&c);
+    assert_int_equal(quad(c.ctx, &m), STIN_OK);
+    assert_int_equal(export_frame(&c, m, STIN_EXPORT_VISIBILITY_ONLY, 0), STIN_ERROR_UNSUPPORTED);
+    assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "packed depth-stencil"));
+    release(&c);
+}
+
 /* ---- item 12: handles ----------------------------------------------------------- */
 static void test_handles_of_another_context_are_foreign(void **state)
 {
@@ -493,6 +548,7 @@ int main(void)
         cmocka_unit_test(test_tier_queries_take_null_caps),
         cmocka_unit_test(test_meshes_at_extreme_scales),
         cmocka_unit_test(test_light_directions_at_extreme_scales),
+        cmocka_unit_test(test_visibility_map_contract),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

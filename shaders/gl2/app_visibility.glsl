@@ -1,0 +1,30 @@
+// SPDX-License-Identifier: MIT
+// stin's visibility map for the application's own fragment shaders
+// (stin_visibility_glsl, stin.h): light i is channel i % 3 of tile i / 3,
+// tiles two to a row, window pixel (x, y) at texel (x, y) of its tile.
+#if __VERSION__ >= 130
+#define STIN_VISIBILITY_FETCH(s, uv) texture(s, uv)
+#else
+#define STIN_VISIBILITY_FETCH(s, uv) texture2D(s, uv)
+#endif
+uniform sampler2D stin_visibility_map;
+uniform vec4 stin_visibility_layout; // tile width, tile height, 1 / map width, 1 / map height
+uniform float stin_visibility_lights;
+
+float stin_visibility(int light)
+{
+    float l = float(light);
+    if (l < 0.0 || l >= stin_visibility_lights)
+        return 1.0;
+    float tile = floor(l / 3.0);
+    float channel = l - 3.0 * tile;
+    vec2 origin = vec2(mod(tile, 2.0), floor(tile / 2.0)) * stin_visibility_layout.xy;
+    vec4 v = STIN_VISIBILITY_FETCH(stin_visibility_map,
+                                   (origin + gl_FragCoord.xy) * stin_visibility_layout.zw);
+    return channel < 0.5 ? v.r : channel < 1.5 ? v.g : v.b;
+}
+
+vec3 stin_shadow_transmittance(int light)
+{
+    return vec3(stin_visibility(light));
+}

@@ -1,0 +1,92 @@
+/* SPDX-License-Identifier: MIT */
+#include "test_context.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+void test_desc(const run *r, stin_tier tier, stin_desc *d)
+{
+    memset(d, 0, sizeof *d);
+    d->get_proc_address = stin_platform_get_proc_address;
+    d->get_proc_user = r->plat;
+    d->tier = tier;
+    d->caps_mask = r->profile->caps_mask;
+    d->max_gl_version = r->profile->max_gl_version;
+}
+
+int test_context_create(test_context *t, const run *r, const scene *s, stin_tier tier,
+                        stin_technique shadows, int exact)
+{
+    stin_desc d;
+    size_t size;
+    char err[256];
+    memset(t, 0, sizeof *t);
+    test_desc(r, tier, &d);
+    d.techniques[STIN_FEATURE_SHADOWS] = shadows;
+    scene_gpu_size_desc(s, &d);
+    size = stin_memory_size(&d);
+    t->block = malloc(size);
+    if (!t->block || stin_create(&d, t->block, size, &t->ctx) != STIN_OK) {
+        free(t->block);
+        memset(t, 0, sizeof *t);
+        return 0;
+    }
+    if ((exact && shadows != STIN_TECH_NONE &&
+         stin_query_choice(t->ctx, STIN_FEATURE_SHADOWS).technique != shadows) ||
+        !scene_gpu_create(&t->g, s, t->ctx, err, sizeof err)) {
+        stin_destroy(t->ctx);
+        free(t->block);
+        memset(t, 0, sizeof *t);
+        return 0;
+    }
+    return 1;
+}
+
+void test_context_destroy(test_context *t)
+{
+    if (!t->ctx)
+        return;
+    scene_gpu_destroy(&t->g, t->ctx);
+    stin_destroy(t->ctx);
+    free(t->block);
+    memset(t, 0, sizeof *t);
+}
+
+void test_frame_desc(const run *r, const scene *s, stin_frame_desc *fd)
+{
+    memset(fd, 0, sizeof *fd);
+    scene_camera_matrices(&s->camera, r->width, r->height, fd->view, fd->projection);
+    fd->viewport[2] = r->width;
+    fd->viewport[3] = r->height;
+    fd->framebuffer = stin_platform_framebuffer(r->plat);
+    memcpy(fd->ambient, s->ambient, sizeof fd->ambient);
+}
+
+static stin_result add_light(test_context *t, const scene *s, int i)
+{
+    stin_light_desc l;
+    scene_gpu_light(&s->lights[i], &l);
+    return stin_add_light(t->ctx, &l);
+}
+
+stin_result test_context_frame(test_context *t, const scene *s, const stin_frame_desc *fd,
+                               int first)
+{
+    stin_result res = stin_begin_frame(t->ctx, fd);
+    int i;
+    if (res != STIN_OK)
+        return res;
+    if (first >= 0 && first < s->light_count)
+        res = add_light(t, s, first);
+    for (i = 0; i < s->light_count && res == STIN_OK; i++)
+        if (i != first)
+            res = add_light(t, s, i);
+    for (i = 0; i < s->object_count && res == STIN_OK; i++)
+        res = stin_draw(t->ctx, t->g.meshes[s->objects[i].mesh], s->objects[i].transform,
+                        &t->g.materials[s->objects[i].material]);
+    if (res != STIN_OK) {
+        stin_end_frame(t->ctx);
+        return res;
+    }
+    return stin_end_frame(t->ctx);
+}

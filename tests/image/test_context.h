@@ -1,0 +1,35 @@
+/* SPDX-License-Identifier: MIT */
+/* A stin context for one test: created for the run's profile at a tier
+ * with a forced shadow technique, sized for a scene, the scene's meshes and
+ * textures made; and one frame of that scene. */
+#ifndef STIN_TESTS_TEST_CONTEXT_H
+#define STIN_TESTS_TEST_CONTEXT_H
+
+#include "image_test.h"
+#include "scene.h"
+#include "scene_gpu.h"
+
+typedef struct test_context {
+    stin_context *ctx;
+    void *block;
+    scene_gpu g;
+} test_context;
+
+/* A desc for the run's profile at `tier` (capacities left for the caller). */
+void test_desc(const run *r, stin_tier tier, stin_desc *d);
+/* 1 on success. 0 when the profile cannot run it (stin_create refused it)
+ * or, with `exact`, when the forced shadow technique fell back to another
+ * (that one's own run covers it), or when the scene could not be made. */
+int test_context_create(test_context *t, const run *r, const scene *s, stin_tier tier,
+                        stin_technique shadows, int exact);
+void test_context_destroy(test_context *t);
+
+/* The scene camera's frame into the platform's framebuffer at the run's
+ * size, the scene's ambient, cleared to 0. */
+void test_frame_desc(const run *r, const scene *s, stin_frame_desc *fd);
+/* begin (fd), the scene's lights - light `first` moved to the front when
+ * >= 0 - and draws, end. STIN_OK or the first error. */
+stin_result test_context_frame(test_context *t, const scene *s, const stin_frame_desc *fd,
+                               int first);
+
+#endif
