@@ -146,8 +146,8 @@ demo: deps
 # ---- examples (examples/: headless programs; make check builds them again
 # against a scratch install and checks their pictures) ----------------------
 EXAMPLE_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARN) -pedantic $(OPT) -Iinclude
-examples: $(B)/examples/egl_shadow $(B)/examples/osmesa_shadow
-$(B)/examples/egl_shadow: examples/egl_shadow.c examples/example_scene.h $(B)/libstin.a
+examples: $(B)/examples/egl_shadow $(B)/examples/egl_app_shader $(B)/examples/osmesa_shadow
+$(B)/examples/egl_%: examples/egl_%.c examples/example_scene.h examples/example_egl.h $(B)/libstin.a
 	@mkdir -p $(@D)
 	$(CC) $(EXAMPLE_CFLAGS) -o $@ $< $(B)/libstin.a -lEGL -lm
 $(B)/examples/osmesa_shadow: examples/osmesa_shadow.c examples/example_scene.h $(B)/libstin.a

@@ -59,11 +59,17 @@ static void perspective(float m[16], float fovy_deg, float aspect, float n, floa
 
 /* A UV sphere of radius 0.5 at (0, 0.6, 0): the seam column is a second
  * copy of the first (uv runs 0..1), which stin welds back into one. */
-static stin_result make_sphere(stin_context *ctx, stin_mesh *out)
+#define SPHERE_VERTICES ((SLICES + 1) * (STACKS + 1))
+static float sphere_pos[SPHERE_VERTICES * 3], sphere_nrm[SPHERE_VERTICES * 3];
+static uint32_t sphere_idx[SLICES * STACKS * 6];
+static const float floor_pos[] = {-4, 0, 4, 4, 0, 4, 4, 0, -4, -4, 0, -4};
+static const uint32_t floor_idx[] = {0, 1, 2, 0, 2, 3};
+
+/* Fills the sphere's arrays; returns its index count. */
+static uint32_t build_sphere(void)
 {
-    static float pos[(SLICES + 1) * (STACKS + 1) * 3], nrm[(SLICES + 1) * (STACKS + 1) * 3];
-    static uint32_t idx[SLICES * STACKS * 6];
-    stin_mesh_desc md = {0};
+    float *pos = sphere_pos, *nrm = sphere_nrm;
+    uint32_t *idx = sphere_idx;
     int i, j, k = 0;
     for (j = 0; j <= STACKS; j++)
         for (i = 0; i <= SLICES; i++) {
@@ -86,30 +92,41 @@ static stin_result make_sphere(stin_context *ctx, stin_mesh *out)
                 k += 3;
             }
         }
-    md.positions = pos;
-    md.normals = nrm;
-    md.vertex_count = (SLICES + 1) * (STACKS + 1);
-    md.indices = idx;
-    md.index_count = (uint32_t)k;
+    return (uint32_t)k;
+}
+
+static stin_result make_sphere(stin_context *ctx, stin_mesh *out)
+{
+    stin_mesh_desc md = {0};
+    md.index_count = build_sphere();
+    md.positions = sphere_pos;
+    md.normals = sphere_nrm;
+    md.vertex_count = SPHERE_VERTICES;
+    md.indices = sphere_idx;
     return stin_create_mesh(ctx, &md, out);
 }
 
 static stin_result make_floor(stin_context *ctx, stin_mesh *out)
 {
-    static const float pos[] = {-4, 0, 4, 4, 0, 4, 4, 0, -4, -4, 0, -4};
-    static const uint32_t idx[] = {0, 1, 2, 0, 2, 3};
     stin_mesh_desc md = {0};
-    md.positions = pos;
+    md.positions = floor_pos;
     md.vertex_count = 4;
-    md.indices = idx;
+    md.indices = floor_idx;
     md.index_count = 6;
     return stin_create_mesh(ctx, &md, out);
 }
 
+/* The application's own drawing after a frame that exported the lights'
+ * visibility (egl_app_shader.c): 0 on success. */
+typedef int (*example_app_pass)(stin_context *ctx, const stin_frame_desc *fd,
+                                const stin_light_desc *light);
+
 /* Creates stin on the current context, draws one frame into `framebuffer`
  * (0: the default one; it needs a stencil buffer for stencil volumes) and
- * tears stin down. 0 on success. */
-static int example_render(stin_get_proc_fn get_proc, void *user, uint32_t framebuffer)
+ * tears stin down. With app_pass, stin only computes the light's visibility
+ * (and depth) and the application shades the scene itself. 0 on success. */
+static int example_render(stin_get_proc_fn get_proc, void *user, uint32_t framebuffer,
+                          example_app_pass app_pass)
 {
     static const float eye[3] = {0, 3, 6}, at[3] = {0, 0.4f, 0};
     stin_desc desc = {0}; /* zero means default everywhere */
@@ -139,6 +156,7 @@ static int example_render(stin_get_proc_fn get_proc, void *user, uint32_t frameb
     fd.viewport[3] = EXAMPLE_H;
     fd.framebuffer = framebuffer;
     fd.ambient[0] = fd.ambient[1] = fd.ambient[2] = 0.15f; /* default 0: black shadows */
+    fd.export_visibility = app_pass ? STIN_EXPORT_VISIBILITY_ONLY : STIN_EXPORT_NONE;
     light.type = STIN_LIGHT_POINT;
     light.position[0] = 1.5f, light.position[1] = 4.0f, light.position[2] = 1.0f;
     ball.color[0] = 0.9f, ball.color[1] = 0.3f, ball.color[2] = 0.2f, ball.color[3] = 1.0f;
@@ -146,6 +164,7 @@ static int example_render(stin_get_proc_fn get_proc, void *user, uint32_t frameb
     ok = ok && stin_begin_frame(ctx, &fd) == STIN_OK && stin_add_light(ctx, &light) == STIN_OK &&
          stin_draw(ctx, sphere, NULL, &ball) == STIN_OK &&
          stin_draw(ctx, floor_mesh, NULL, &ground) == STIN_OK && stin_end_frame(ctx) == STIN_OK;
+    ok = ok && (!app_pass || app_pass(ctx, &fd, &light) == 0);
     stin_destroy(ctx);
     free(block);
     return !ok;

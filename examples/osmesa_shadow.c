@@ -28,7 +28,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "usage: osmesa_shadow OUT.ppm (and an OSMesa context)\n");
         return 2;
     }
-    failed = example_render(get_proc, NULL, 0);
+    failed = example_render(get_proc, NULL, 0, NULL);
     glFinish(); /* OSMesa draws into `pixels`, rows bottom to top */
     failed = failed || write_ppm(argv[1], pixels);
     OSMesaDestroyContext(osm);

@@ -54,10 +54,10 @@ fi
 # pictures checked against the exact shadow (tests/cli/example_check.c).
 cc -std=c99 -D_DEFAULT_SOURCE -Wall -Wextra -Werror tests/cli/example_check.c -lm -o "$dir/check" 2> "$dir/log" ||
     echo "FAIL examples: the checker does not build: $(tail -n 1 "$dir/log")"
-for ex in osmesa:-lOSMesa egl:-lEGL; do
+for ex in osmesa_shadow:-lOSMesa egl_shadow:-lEGL egl_app_shader:-lEGL; do
     name=${ex%%:*}
     if ! cc -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -pedantic \
-        "examples/${name}_shadow.c" $flags ${ex#*:} -lm -o "$dir/$name" > "$dir/log" 2>&1; then
+        "examples/${name}.c" $flags ${ex#*:} -lm -o "$dir/$name" > "$dir/log" 2>&1; then
         echo "FAIL example-$name: does not build: $(tail -n 1 "$dir/log")"
     elif ! "$dir/$name" "$dir/$name.ppm" > "$dir/log" 2>&1; then
         echo "SKIP example-$name: no context here: $(tail -n 1 "$dir/log")"
