@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* Counters of the checked build, for tests (include/stin/stin_debug.h). */
+/* Counters of the checked build, for tests, and the shadow maps for
+ * looking at (include/stin/stin_debug.h). */
 #include "internal.h"
 #include "stin/stin_debug.h"
 
@@ -15,4 +16,33 @@ stin_debug_counters stin_debug_query_counters(const stin_context *ctx)
         c.gl_errors = ctx->gl_errors;
     }
     return c;
+}
+
+stin_result stin_debug_query_shadow_map(const stin_context *ctx, uint32_t light,
+                                        stin_debug_map *out)
+{
+    stin_technique t;
+    if (!ctx || !out)
+        return STIN_ERROR_INVALID_ARGUMENT;
+    if (ctx->state != STIN__IDLE)
+        return STIN_ERROR_INVALID_STATE;
+    if (light >= ctx->light_count || light >= STIN__MAX_LIGHTS)
+        return STIN_ERROR_INVALID_ARGUMENT;
+    stin__memzero(out, sizeof *out);
+    t = ctx->shadow->technique;
+    if (t == STIN_TECH_SHADOWS_MAP_PCF && ctx->map_pcf.valid[light]) {
+        out->texture = ctx->map_pcf.textures[light];
+        out->size = out->allocated = ctx->map_pcf.size;
+        out->depth = 1;
+        return STIN_OK;
+    }
+    if ((t == STIN_TECH_SHADOWS_MAP_DEPTH || t == STIN_TECH_SHADOWS_MAP_COMBINE) &&
+        ctx->map_fixed.valid[light]) {
+        out->texture = ctx->map_fixed.textures[light];
+        out->size = ctx->map_fixed.used;
+        out->allocated = ctx->map_fixed.size;
+        out->depth = t == STIN_TECH_SHADOWS_MAP_DEPTH;
+        return STIN_OK;
+    }
+    return STIN_ERROR_UNSUPPORTED;
 }

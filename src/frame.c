@@ -383,6 +383,9 @@ static void run_plan(stin_context *ctx)
     } else {
         path->batches(ctx, STIN__ALL);
     }
+    if ((ctx->desc.debug_flags & STIN_DEBUG_SHOW_VOLUMES) && ctx->shadow == &stin__shadow_volume &&
+        shadowed)
+        stin__volume_debug_overlay(ctx, path);
     stin__export_stage(ctx, path, shadowed);
     path->end(ctx);
 }

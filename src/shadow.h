@@ -201,6 +201,8 @@ void stin__mask_uniforms(stin_context *ctx, const stin__program *p);
  * pass where the light is visible (shadow_volume.c; map-fixed's point lights). */
 void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
                         const int scissor[4]);
+/* STIN_DEBUG_SHOW_VOLUMES: each light's volumes added over the frame's colour. */
+void stin__volume_debug_overlay(stin_context *ctx, const stin__path *path);
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or

@@ -387,6 +387,33 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     stin__volume_light_end(ctx);
 }
 
+void stin__volume_debug_overlay(stin_context *ctx, const stin__path *path)
+{
+    static const float tint[4] = {0.10f, 0.05f, 0.0f, 1.0f};
+    stin__pass_state ps = stin__pass_defaults;
+    uint32_t li, i, counted = ctx->stats.shadow_volume_triangles;
+    ps.depth_test = 1;
+    ps.depth_write = 0;
+    ps.blend = 1;
+    ps.blend_src = ps.blend_dst = GL_ONE;
+    ps.depth_clamp = (unsigned char)ctx->volume.depth_clamp;
+    stin__pass_apply(ctx, &ps);
+    path->volume_begin(ctx);
+    if (path == stin__glsl_path())
+        GL(ctx, Uniform4fv)(ctx->programs[STIN__PROG_VOLUME].u_color, 1, tint);
+    else
+        GL(ctx, Color4f)(tint[0], tint[1], tint[2], tint[3]);
+    for (li = 0; li < ctx->light_count; li++) {
+        stin_light_desc one;
+        float world[4];
+        sample_light(&ctx->lights[li], 0, 1, &one, world);
+        for (i = 0; i < ctx->draw_count; i++)
+            draw_caster(ctx, path, &ctx->draws[ctx->draw_order[i]], world, 1);
+    }
+    path->volume_end(ctx);
+    ctx->stats.shadow_volume_triangles = counted; /* a picture, not the frame's work */
+}
+
 /* A light of one sample into a mask channel: its volumes counted in the
  * mask's stencil, then 1 where the count is zero. Area lights with several
  * samples are shaded per sample by volume_shadow_light instead. */

@@ -561,6 +561,10 @@ typedef struct stin_desc {
 #define STIN_DEBUG_VDSM_NO_SM 32u   /* no light-view pyramid culling of triangles in shadow */
 #define STIN_DEBUG_VDSM_NO_DC 64u   /* extrude to infinity; no culling of triangles with no
                                      * receiver behind them */
+/* volume: after the frame, every light's shadow volumes (its centre sample,
+ * capped) are added over the colour in orange where they lie in front of
+ * the surfaces: a picture of the volumes, not of the shadows */
+#define STIN_DEBUG_SHOW_VOLUMES 128u
 
 typedef struct stin_context stin_context;
 

@@ -23,6 +23,24 @@ typedef struct stin_debug_counters {
 
 stin_debug_counters stin_debug_query_counters(const stin_context *ctx);
 
+/* The shadow map light `light` of the last frame was tested against, for
+ * looking at (both builds). Maps of spot and directional lights under
+ * map-pcf, map-depth and map-combine; a point light's six faces are drawn
+ * again for each point light within the frame, so none is kept
+ * (STIN_ERROR_UNSUPPORTED, as for techniques without maps and lights the
+ * map did not cover). STIN_ERROR_INVALID_STATE while a frame is open. The
+ * texture is stin's: read it, do not change it. */
+typedef struct stin_debug_map {
+    uint32_t texture;   /* GL_TEXTURE_2D */
+    uint32_t size;      /* texels a side the frame drew, from texel (0, 0) */
+    uint32_t allocated; /* texels a side of the texture */
+    int depth;          /* 1: GL_DEPTH_COMPONENT (map-pcf, map-depth); 0: map-combine's
+                         * RGBA8 light-depth ramp */
+} stin_debug_map;
+
+stin_result stin_debug_query_shadow_map(const stin_context *ctx, uint32_t light,
+                                        stin_debug_map *out);
+
 #ifdef __cplusplus
 }
 #endif
