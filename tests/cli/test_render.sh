@@ -147,4 +147,28 @@ rc=$?
 check "point light fallback is printed" \
     $([ $rc -eq 0 ] && grep "^shadows: map-combine" "$T/stdout" | grep -q "stencil volumes" && echo 0 || echo 1) \
     "exit $rc: $(grep "^shadows" "$T/stdout")"
+# Debug pictures (issue 8 item 9). Channel averages come from oiiotool --stats.
+avg() { oiiotool --stats "$1" | sed -n 's/.*Stats Avg: //p' | cut -d' ' -f"$2"; }
+"$R" tests/scenes/four-lights.json --shadows map-pcf --size 96x72 -o "$T/dbg.png" \
+    --debug shadow-map --debug masks > "$T/stdout" 2>&1
+rc=$?
+check "--debug shadow-map" $([ $rc -eq 0 ] && [ -e "$T/dbg-shadow-map-2.png" ] &&
+    grep -q "^light 0: no shadow map kept" "$T/stdout" &&
+    oiiotool --stats "$T/dbg-shadow-map-2.png" | grep -q "Stats Min: 0 0 0 255" &&
+    oiiotool --stats "$T/dbg-shadow-map-2.png" | grep -q "Stats Max: 255 255 255 255" &&
+    echo 0 || echo 1) "exit $rc: $(grep -v '^  ' "$T/stdout" | tail -n 4 | tr '\n' ' ')"
+check "--debug masks" $([ $rc -eq 0 ] && grep -q "^masks: 4 lights" "$T/stdout" &&
+    oiiotool --stats "$T/dbg-masks.png" | grep -q "Stats Min: 0 0 0 255" &&
+    oiiotool --stats "$T/dbg-masks.png" | grep -q "Stats Max: 255 255 255 255" &&
+    echo 0 || echo 1) "exit $rc: $(grep "^masks" "$T/stdout")"
+"$R" tests/scenes/four-lights.json --shadows volume --size 96x72 -o "$T/plain.png" > /dev/null 2>&1
+"$R" tests/scenes/four-lights.json --shadows volume --size 96x72 -o "$T/volumes.png" \
+    --debug volumes > /dev/null 2>&1
+rc=$?
+check "--debug volumes" $([ $rc -eq 0 ] && awk -v a="$(avg "$T/plain.png" 1)" -v b="$(avg "$T/volumes.png" 1)" \
+    -v c="$(avg "$T/plain.png" 3)" -v d="$(avg "$T/volumes.png" 3)" 'BEGIN { exit !(b > a + 1 && c == d) }' &&
+    echo 0 || echo 1) "exit $rc: red $(avg "$T/plain.png" 1) -> $(avg "$T/volumes.png" 1), blue $(avg "$T/plain.png" 3) -> $(avg "$T/volumes.png" 3)"
+"$R" tests/scenes/four-lights.json --debug masks --no-output > /dev/null 2> "$T/stderr"
+check "--debug masks needs -o" $([ $? -eq 2 ] && grep -q "beside -o OUT" "$T/stderr" && echo 0 || echo 1) \
+    "$(head -c 200 "$T/stderr")"
 exit 0

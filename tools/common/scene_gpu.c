@@ -183,6 +183,12 @@ void scene_gpu_light(const scene_light *in, stin_light_desc *out)
 stin_result scene_gpu_frame(const scene_gpu *g, stin_context *ctx, int width, int height,
                             stin_output output, uint32_t framebuffer)
 {
+    return scene_gpu_frame_export(g, ctx, width, height, output, STIN_EXPORT_NONE, framebuffer);
+}
+
+stin_result scene_gpu_frame_export(const scene_gpu *g, stin_context *ctx, int width, int height,
+                                   stin_output output, stin_export ex, uint32_t framebuffer)
+{
     const scene *s = g->src;
     stin_frame_desc fd;
     stin_result r;
@@ -195,6 +201,7 @@ stin_result scene_gpu_frame(const scene_gpu *g, stin_context *ctx, int width, in
     memcpy(fd.clear_color, s->background, sizeof fd.clear_color);
     memcpy(fd.ambient, s->ambient, sizeof fd.ambient);
     fd.output = output;
+    fd.export_visibility = ex;
     if (output != STIN_OUTPUT_BEAUTY)
         memset(fd.clear_color, 0, sizeof fd.clear_color);
     r = stin_begin_frame(ctx, &fd);

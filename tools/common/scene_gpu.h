@@ -35,6 +35,9 @@ void scene_gpu_destroy(scene_gpu *g, stin_context *ctx);
 /* begin -> lights -> draws -> end for one frame into the current framebuffer. */
 stin_result scene_gpu_frame(const scene_gpu *g, stin_context *ctx, int width, int height,
                             stin_output output, uint32_t framebuffer);
+/* The same with the lights' visibility exported (stin_frame_desc.export_visibility). */
+stin_result scene_gpu_frame_export(const scene_gpu *g, stin_context *ctx, int width, int height,
+                                   stin_output output, stin_export ex, uint32_t framebuffer);
 /* Converts a scene light to stin's. */
 void scene_gpu_light(const scene_light *in, stin_light_desc *out);
 

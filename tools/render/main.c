@@ -5,6 +5,7 @@
 #include "aov.h"
 #include "cli_log.h"
 #include "one_line.h"
+#include "render_debug.h"
 #include "render_options.h"
 #include "render_progress.h"
 #include "scene.h"
@@ -257,6 +258,11 @@ int main(int argc, char **argv)
             goto done;
         }
         printf("wrote %s\n", o.output);
+        if (o.debug_outputs &&
+            !render_debug_write(o.debug_outputs, o.output, &g, ctx, plat, err, sizeof err)) {
+            fail_line(NULL, "%s", err);
+            goto done;
+        }
     }
     rc = 0;
     if (log.errors) {

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* stin-render's options: parsing and the usage text. */
 #include "render_options.h"
+#include "render_debug.h"
 #include "stin_platform.h"
 
 #include <errno.h>
@@ -32,6 +33,10 @@ void render_usage(FILE *f)
                "  --max-triangles N         work limit: triangles one frame may draw, instances x\n"
                "                            triangles (default %u; 0 = no limit)\n"
                "  --volume-mode auto|zpass|zfail  shadow-volume counting (diagnostics)\n"
+               "  --debug shadow-map|volumes|masks  (repeatable) pictures of the shadows' parts:\n"
+               "                            OUT-shadow-map-I.png per spot/directional light's map,\n"
+               "                            the volumes added over the beauty in orange,\n"
+               "                            OUT-masks.png with every light's visibility\n"
                "  --caps                    print capabilities and choices, render nothing\n"
                "  --verbose                 print stin's info log lines\n"
                "  --version                 print the versions of stin-render and libstin\n"
@@ -91,7 +96,7 @@ static int takes_value(const char *a)
 {
     static const char *const names[] = {"-o", "--tier", "--profile", "--platform", "--shadows",
                                         "--volume-mode", "--shadow-map-size", "--max-triangles",
-                                        "--surface", "--size"};
+                                        "--surface", "--size", "--debug"};
     size_t i;
     for (i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcmp(a, names[i]))
@@ -162,6 +167,16 @@ int render_parse_args(int argc, char **argv, options *o)
                 fprintf(stderr, "stin-render: --volume-mode wants auto, zpass or zfail\n");
                 return 0;
             }
+        } else if (!strcmp(a, "--debug")) {
+            unsigned kind = render_debug_parse(argv[++i]);
+            if (!kind) {
+                fprintf(stderr, "stin-render: --debug wants shadow-map, volumes or masks, got "
+                                "'%s'\n", v);
+                return 0;
+            }
+            o->debug_outputs |= kind;
+            if (kind == RENDER_DEBUG_VOLUMES)
+                o->debug_flags |= STIN_DEBUG_SHOW_VOLUMES;
         } else if (!strcmp(a, "--shadow-map-size") || !strcmp(a, "--max-triangles")) {
             if (!parse_number_option(a, argv[++i], o))
                 return 0;
@@ -199,6 +214,9 @@ int render_parse_args(int argc, char **argv, options *o)
                     o->output);
             return 0;
         }
+    } else if (o->debug_outputs & (RENDER_DEBUG_SHADOW_MAP | RENDER_DEBUG_MASKS)) {
+        fprintf(stderr, "stin-render: --debug shadow-map and masks write beside -o OUT\n");
+        return 0;
     } else if (!o->caps && !o->no_output) {
         fprintf(stderr, "stin-render: no output: give -o OUT.png|OUT.exr, or --no-output to "
                         "render and print statistics only\n");

@@ -18,6 +18,7 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 typedef struct options {
     const char *scene_path, *output, *profile, *platform, *shadows, *surface;
     uint32_t debug_flags;
+    unsigned debug_outputs;     /* RENDER_DEBUG_* (render_debug.h) */
     uint32_t shadow_map_size;   /* 0: the scene's, else stin's default */
     uint64_t max_triangles;     /* work limit; 0 = none */
     stin_tier tier;
