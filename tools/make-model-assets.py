@@ -5,6 +5,8 @@ tests/scenes/meshes/ (run from the repository root; the outputs are committed):
 
   quads.gltf + quads.bin + quads-cells.png   external buffer and texture
   quads.glb                                  the same, the PNG embedded
+  quads-missing-texture.gltf                 its image names no file
+  quad-mtl.obj + quad-mtl.mtl                a unit quad with Kd (0, 0.5, 1)
 
 Three nodes, each a unit quad in z = 0 facing +z, with its own transform and
 material:
@@ -137,6 +139,12 @@ def main(out):
     with open(out + "/quads-missing-texture.gltf", "w") as f:
         json.dump(doc, f, indent=1)
         f.write("\n")
+    with open(out + "/quad-mtl.obj", "w") as f:
+        f.write("# A unit quad in z = 0 facing +z with an MTL colour (tools/make-model-assets.py)\n"
+                "mtllib quad-mtl.mtl\nv -0.5 -0.5 0\nv 0.5 -0.5 0\nv 0.5 0.5 0\nv -0.5 0.5 0\n"
+                "vn 0 0 1\nusemtl sky\nf 1//1 2//1 3//1 4//1\n")
+    with open(out + "/quad-mtl.mtl", "w") as f:
+        f.write("newmtl sky\nKd 0 0.5 1\nKs 0 0 0\nd 1\n")
 
 
 if __name__ == "__main__":

@@ -122,7 +122,10 @@ int scene_entries_add_model(scene_parser *p, scene_entries *e, scene *s, const c
     }
     for (i = 0; i < m.mesh_count; i++) {
         char mesh_name[SCENE_NAME_MAX];
-        model_name(mesh_name, name, m.meshes[i].name);
+        if (m.mesh_count == 1) /* the entry's own name, as before nodes were kept */
+            snprintf(mesh_name, sizeof mesh_name, "%s", name);
+        else
+            model_name(mesh_name, name, m.meshes[i].name);
         s->meshes[s->mesh_count] = m.meshes[i];
         memcpy(s->meshes[s->mesh_count++].name, mesh_name, sizeof mesh_name);
     }
