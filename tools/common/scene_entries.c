@@ -179,7 +179,8 @@ static int add_model_materials(scene_parser *p, scene_entries *e, scene *s, int 
     const scene_entry *entry = &e->entries[e->model_entry[k]];
     int tex_base = s->texture_count, mat_base = s->material_count, i;
     char where[256], text[256];
-    scene_texture *tex = realloc(s->textures, ((size_t)s->texture_count + m->texture_count + 1) * sizeof *tex);
+    scene_texture *tex = realloc(s->textures,
+                                 ((size_t)s->texture_count + m->texture_count + 1) * sizeof *tex);
     scene_material *mat;
     if (tex)
         s->textures = tex;

@@ -157,7 +157,8 @@ static int add_part(importer *im, unsigned ai_mesh, const float world[16])
                                 src->mName.data) || fail(im, "out of memory");
     if (im->m->part_count >= SCENE_MODEL_PARTS_MAX)
         return fail(im, "more than 1000000 node meshes");
-    if ((mesh = use_mesh(im, ai_mesh, det < 0)) < 0 || (material = use_material(im, src->mMaterialIndex)) < -1)
+    mesh = use_mesh(im, ai_mesh, det < 0);
+    if (mesh < 0 || (material = use_material(im, src->mMaterialIndex)) < -1)
         return 0;
     part = realloc(im->m->parts, (im->m->part_count + 1) * sizeof *part);
     if (!part)

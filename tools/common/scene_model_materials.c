@@ -81,6 +81,7 @@ static int32_t use_texture(scene_model *m, const struct aiScene *sc, const char 
     scene_texture *grown, *t;
     image img;
     uint32_t i;
+    size_t n;
     int ok;
     for (i = 0; i < m->texture_count; i++)
         if (m->textures[i].kind == kind && strlen(ref) < SCENE_NAME_MAX && !strcmp(m->textures[i].name, ref))
@@ -103,7 +104,8 @@ static int32_t use_texture(scene_model *m, const struct aiScene *sc, const char 
     t = &grown[m->texture_count];
     memset(t, 0, sizeof *t);
     /* the end of a long path names it best */
-    snprintf(t->name, sizeof t->name, "%.63s", ref + (strlen(ref) < SCENE_NAME_MAX ? 0 : strlen(ref) - (SCENE_NAME_MAX - 1)));
+    n = strlen(ref);
+    snprintf(t->name, sizeof t->name, "%.63s", ref + (n < SCENE_NAME_MAX ? 0 : n - (SCENE_NAME_MAX - 1)));
     t->kind = kind;
     t->width = img.width;
     t->height = img.height;
