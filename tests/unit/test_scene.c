@@ -162,6 +162,7 @@ static const struct {
     { "truncated-texture.json", "textures.cut.file", "cannot read 'truncated.png'" },
     { "degenerate-mesh.json", NULL, "" },
     { "raw-bytes.json", "", "line 2, column 13: unexpected '\\xff\\xfe\\n\\x01" },
+    { "truncated-glb.json", "meshes.cut.file", "cannot open 'truncated.glb'" },
 };
 #define BAD_COUNT (sizeof bad_scenes / sizeof bad_scenes[0])
 
@@ -341,6 +342,58 @@ static void test_sphere_scenes(void **state)
         assert_float_equal(s.objects[2].transform[12], -5.4f, 1e-5f);
         assert_float_equal(s.objects[3].transform[12], -4.2f, 1e-5f);
         assert_float_equal(s.objects[3].transform[13], 0.4f, 1e-5f);
+        scene_free(&s);
+    }
+}
+
+/* A glTF model (tools/make-model-assets.py): one object per node with the
+ * node's transform times the object's, each with its own material; the
+ * .glb's embedded texture equals the .gltf's external one. */
+static void test_model_nodes(void **state)
+{
+    static const char *const paths[] = { "tests/scenes/meshes/quads-gltf.json",
+                                          "tests/scenes/meshes/quads-glb.json" };
+    const uint8_t yellow[4] = { 255, 255, 0, 255 }, magenta[4] = { 255, 0, 255, 255 };
+    size_t i;
+    (void)state;
+    for (i = 0; i < 2; i++) {
+        scene s;
+        char err[512];
+        const scene_object *o;
+        const scene_material *m;
+        const scene_texture *t;
+        if (!scene_load(paths[i], &s, err, sizeof err))
+            fail_msg("%s", err);
+        assert_int_equal(s.object_count, 3);
+        assert_int_equal(s.mesh_count, 3);
+        assert_true(s.warnings == NULL);
+        /* nodes in file order: red, group/cells (child of group), veil */
+        o = &s.objects[0];
+        m = &s.materials[o->material];
+        assert_string_equal(s.meshes[o->mesh].name, "quads/red");
+        assert_string_equal(m->name, "quads/red");
+        assert_float_equal(o->transform[12], -1.0f, 1e-6f);
+        assert_float_equal(o->transform[13], -0.25f, 1e-6f); /* the object's translate */
+        assert_true(m->color[0] == 1 && m->color[1] == 0 && m->color[2] == 0 && m->color[3] == 1);
+        assert_int_equal(m->albedo, -1);
+        o = &s.objects[1];
+        m = &s.materials[o->material];
+        assert_float_equal(o->transform[0], 0.5f, 1e-6f);
+        assert_float_equal(o->transform[12], 1.0f, 1e-6f);
+        assert_float_equal(o->transform[13], 0.25f, 1e-6f);
+        assert_true(m->albedo >= 0 && m->albedo < s.texture_count);
+        t = &s.textures[m->albedo];
+        assert_int_equal(t->width, 16);
+        assert_int_equal(t->kind, SCENE_TEXTURE_ALBEDO);
+        /* rows bottom first: the PNG's top-left cell is the last row's start */
+        assert_memory_equal(t->rgba + 4 * 15 * 16, yellow, 4);
+        assert_memory_equal(t->rgba + 4 * 15, magenta, 4);
+        o = &s.objects[2];
+        m = &s.materials[o->material];
+        assert_float_equal(o->transform[0], 0.5f, 1e-6f);
+        assert_float_equal(o->transform[14], 0.25f, 1e-6f);
+        assert_float_equal(m->color[3], 0.5f, 1e-6f); /* BLEND keeps its alpha */
+        assert_int_equal(s.has_camera, 1);
         scene_free(&s);
     }
 }
@@ -681,6 +734,35 @@ static void test_compare(void **state)
     image_free(&b);
 }
 
+/* No camera: one is made that frames every object. */
+static void test_framing(void **state)
+{
+    char path[300], err[512];
+    FILE *f;
+    scene s;
+    float d;
+    (void)state;
+    snprintf(path, sizeof path, "%s/no-camera.json", tmp_dir);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("{\"meshes\": {\"b\": {\"primitive\": \"box\", \"size\": [2, 2, 2]}},\n"
+          " \"objects\": [{\"mesh\": \"b\", \"translate\": [10, 0, 0]}]}\n", f);
+    fclose(f);
+    if (!scene_load(path, &s, err, sizeof err))
+        fail_msg("%s", err);
+    remove(path);
+    assert_int_equal(s.has_camera, 0);
+    assert_float_equal(s.camera.target[0], 10.0f, 1e-5f);
+    assert_float_equal(s.camera.target[1], 0.0f, 1e-5f);
+    /* the box's sphere (radius sqrt 3) fills fovy 45 with a 5% margin */
+    d = sqrtf(powf(s.camera.eye[0] - 10, 2) + powf(s.camera.eye[1], 2) + powf(s.camera.eye[2], 2));
+    assert_float_equal(d, 1.05f * sqrtf(3.0f) / sinf(22.5f * 3.14159265f / 180), 1e-4f);
+    assert_float_equal(s.camera.eye[1] * 2, s.camera.eye[2], 1e-4f); /* from (0, 1, 2) */
+    assert_true(s.camera.near_plane > 0 && s.camera.near_plane < d - sqrtf(3.0f));
+    assert_true(s.camera.far_plane > d + sqrtf(3.0f));
+    scene_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -690,6 +772,8 @@ int main(void)
         cmocka_unit_test(test_examples_load),
         cmocka_unit_test(test_sphere_scenes),
         cmocka_unit_test(test_textures_and_files),
+        cmocka_unit_test(test_model_nodes),
+        cmocka_unit_test(test_framing),
         cmocka_unit_test(test_primitive_sphere),
         cmocka_unit_test(test_primitive_others),
         cmocka_unit_test(test_camera),

@@ -255,49 +255,90 @@ extern "C" int image_write(const char *path, const image *img, int srgb, char *e
     return 0;
 }
 
-extern "C" int image_read(const char *path, image *img, char *err, size_t err_size)
+namespace {
+
+// Reads `name` through OpenImageIO, from `proxy` when it is not null (the
+// name then only picks the format by its extension).
+int read_image(const std::string &name, Filesystem::IOProxy *proxy, image *img, char *err,
+               size_t err_size)
 {
     std::memset(img, 0, sizeof *img);
     try {
         // Return pixels as stored: no premultiplying by alpha on read.
         ImageSpec config;
         config.attribute("oiio:UnassociatedAlpha", 1);
-        auto in = ImageInput::open(path, &config);
+        if (proxy) // the readers take it from the configuration
+            config.attribute("oiio:ioproxy", TypeDesc::PTR, &proxy);
+        auto in = ImageInput::open(name, &config, proxy);
         if (!in) {
-            set_error(err, err_size, std::string(path) + ": " + OIIO::geterror());
+            set_error(err, err_size, name + ": " + OIIO::geterror());
             return 0;
         }
         const ImageSpec &spec = in->spec();
         if (spec.deep || spec.depth > 1 || spec.nchannels > kMaxChannels) {
-            set_error(err, err_size, std::string(path) + ": deep, volume or more than 16 channels");
+            set_error(err, err_size, name + ": deep, volume or more than 16 channels");
             return 0;
         }
         for (int c = 0; c < spec.nchannels; c++)
             if (spec.channel_name(c).size() >= sizeof img->channel_names[0]) {
-                set_error(err, err_size, std::string(path) + ": channel name too long: " +
+                set_error(err, err_size, name + ": channel name too long: " +
                                              std::string(spec.channel_name(c)));
                 return 0;
             }
         if (!image_alloc(img, spec.width, spec.height, spec.nchannels)) {
-            set_error(err, err_size, std::string(path) + ": image too large or empty");
+            set_error(err, err_size, name + ": image too large or empty");
             return 0;
         }
         for (int c = 0; c < spec.nchannels; c++)
             std::snprintf(img->channel_names[c], sizeof img->channel_names[c], "%s",
                           std::string(spec.channel_name(c)).c_str());
         if (!in->read_image(0, 0, 0, spec.nchannels, TypeDesc::FLOAT, img->pixels)) {
-            set_error(err, err_size, std::string(path) + ": " + in->geterror());
+            set_error(err, err_size, name + ": " + in->geterror());
             image_free(img);
             return 0;
         }
         in->close();
         return 1;
     } catch (const std::exception &e) {
-        set_error(err, err_size, std::string(path) + ": " + e.what());
+        set_error(err, err_size, name + ": " + e.what());
     } catch (...) {
-        set_error(err, err_size, std::string(path) + ": unknown exception");
+        set_error(err, err_size, name + ": unknown exception");
     }
     image_free(img);
+    return 0;
+}
+
+} // namespace
+
+extern "C" int image_read(const char *path, image *img, char *err, size_t err_size)
+{
+    return read_image(path, nullptr, img, err, err_size);
+}
+
+extern "C" int image_read_memory(const void *data, size_t size, const char *format_hint, image *img,
+                                 char *err, size_t err_size)
+{
+    const unsigned char *b = (const unsigned char *)data;
+    std::string ext;
+    std::memset(img, 0, sizeof *img);
+    try {
+        for (const char *c = format_hint ? format_hint : ""; *c && ext.size() < 8; c++)
+            if (std::isalnum((unsigned char)*c))
+                ext += (char)std::tolower((unsigned char)*c);
+        // No hint: the signature decides (PNG, JPEG are what glTF allows).
+        if (ext.empty() && size >= 4 && std::memcmp(b, "\x89PNG", 4) == 0)
+            ext = "png";
+        if (ext.empty() && size >= 3 && b[0] == 0xFF && b[1] == 0xD8 && b[2] == 0xFF)
+            ext = "jpg";
+        if (ext.empty()) {
+            set_error(err, err_size, "embedded image of unknown format");
+            return 0;
+        }
+        Filesystem::IOMemReader memory(data, size);
+        return read_image("embedded." + ext, &memory, img, err, err_size);
+    } catch (...) {
+        set_error(err, err_size, "embedded image: cannot decode");
+    }
     return 0;
 }
 

@@ -32,6 +32,10 @@ int image_write(const char *path, const image *img, int srgb, char *err, size_t 
 /* Reads any format OpenImageIO knows; 8-bit files come back in [0,1] as
  * stored (no transfer applied). */
 int image_read(const char *path, image *img, char *err, size_t err_size);
+/* The same for a file already in memory (an image embedded in a model);
+ * format_hint is its extension ("png", "jpg") or "" to go by its signature. */
+int image_read_memory(const void *data, size_t size, const char *format_hint, image *img,
+                      char *err, size_t err_size);
 
 typedef struct image_diff {
     double mean_abs, max_abs;

@@ -99,7 +99,10 @@ typedef struct scene {
     scene_material *materials; int material_count;
     scene_object *objects; int object_count;
     scene_light *lights; int light_count;
-    scene_camera camera;
+    scene_camera camera;       /* the file's, or one framing everything (scene_camera_frame) */
+    int has_camera;            /* 0: the file has no camera */
+    char *warnings;            /* NULL or lines "FILE: where: text\n": what a model file lost
+                                  (a texture that cannot be read, an alpha mode stin lacks) */
     float ambient[3];          /* default (0.1,0.1,0.1) */
     float background[4];       /* default (0,0,0,0) */
     int width, height;         /* suggested image size, default 512 x 512 */
@@ -116,6 +119,14 @@ void scene_free(scene *s);
  * looking down -z, clip z in [-w, w]) for an image of width x height. */
 void scene_camera_matrices(const scene_camera *cam, int width, int height,
                            float view[16], float projection[16]);
+
+/* Points cam at every object whole: at the centre of the objects' world
+ * bounding box, from cam's direction (eye -> target, up and fovy kept) when
+ * s->has_camera, else from +z and above (direction (0, 1, 2), y up, fovy
+ * 45), at the distance where the box's bounding sphere fits the vertical and
+ * horizontal field of view of a width x height image with a 5% margin; near
+ * and far enclose the sphere. */
+void scene_camera_frame(const scene *s, int width, int height, scene_camera *cam);
 
 /* Total triangles over all objects (instances counted each time). */
 uint64_t scene_triangle_count(const scene *s);

@@ -9,6 +9,7 @@
 
 #include <cJSON.h>
 
+#include "image_io.h"
 #include "scene.h"
 
 /* Largest magnitude any number in a scene file may have; bigger values are
@@ -89,9 +90,19 @@ int scene_model_precheck(const char *path, char *why, size_t why_size);
 int scene_load_text(const char *path, const char *text, size_t size, scene *out, char *err,
                     size_t err_size);
 
-/* Loads every mesh of a model file into one mesh. On failure writes a
- * reason (no file or key names) into why and returns 0. */
-int scene_mesh_load_file(const char *path, scene_mesh *out, char *why, size_t why_size);
+/* Texels a side of a texture, at most (files, procedural, embedded). */
+#define SCENE_TEXTURE_SIZE_MAX 8192
+
+/* img (rows top first, 1-4 channels) -> RGBA8 rows bottom first into out
+ * (4 * width * height bytes): 1 and 2 channels are grey (+ alpha), a
+ * missing alpha is opaque; linearise decodes sRGB colour (not alpha). */
+void scene_image_to_rgba8(const image *img, int linearise, uint8_t *out);
+
+/* The defaults of docs/scene-format.md; the name is kept. */
+void scene_material_defaults(scene_material *m);
+
+/* out = a * b, column-major 4x4; out may alias a or b. */
+void scene_mat4_mul(const float a[16], const float b[16], float out[16]);
 
 /* Builds texture `json` (member of "textures" at where) into *out.
  * `done` holds the `done_count` textures built before it, which

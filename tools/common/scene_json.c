@@ -8,6 +8,7 @@
  * operands that exist) but not evaluated: the CSG renderer reads the file
  * itself, and every object stays an ordinary renderable mesh.
  */
+#include "scene_entries.h"
 #include "scene_internal.h"
 #include "scene_primitives.h"
 
@@ -117,14 +118,18 @@ static int build_primitive(scene_parser *p, const cJSON *j, const char *where, s
     return ok ? 1 : scene_fail(p, where, "out of memory");
 }
 
-static int build_mesh(scene_parser *p, const cJSON *j, const char *where, scene_mesh *m)
+static int build_mesh(scene_parser *p, const cJSON *j, const char *where, const char *name,
+                      scene *s, scene_entries *e)
 {
     static const char *const file_keys[] = { "file", NULL };
-    char rel[512] = "", full[1024], why[512], path[256];
+    char rel[512] = "", full[1024], path[256];
+    scene_mesh m;
     if (!cJSON_IsObject(j))
         return scene_fail(p, where, "expected an object");
-    if (cJSON_GetObjectItemCaseSensitive(j, "primitive"))
-        return build_primitive(p, j, where, m);
+    if (cJSON_GetObjectItemCaseSensitive(j, "primitive")) {
+        memset(&m, 0, sizeof m);
+        return build_primitive(p, j, where, &m) && scene_entries_add_mesh(p, e, s, name, &m);
+    }
     if (!cJSON_GetObjectItemCaseSensitive(j, "file"))
         return scene_fail(p, where, "needs a 'primitive' or a 'file'");
     if (!scene_check_object(p, j, where, file_keys) ||
@@ -133,29 +138,21 @@ static int build_mesh(scene_parser *p, const cJSON *j, const char *where, scene_
     scene_join(path, sizeof path, where, "file");
     if (!scene_resolve_path(p->file, rel, full, sizeof full))
         return scene_fail(p, path, "path too long");
-    if (!scene_mesh_load_file(full, m, why, sizeof why))
-        return scene_fail(p, path, "cannot open '%s': %s", rel, why);
-    return 1;
+    return scene_entries_add_model(p, e, s, name, path, full, rel);
 }
 
-static int parse_meshes(scene_parser *p, const cJSON *j, scene *s)
+static int parse_meshes(scene_parser *p, const cJSON *j, scene *s, scene_entries *e)
 {
     const cJSON *c;
     char where[256];
-    int n = cJSON_GetArraySize(j);
-    if (!cJSON_IsObject(j) || n == 0)
+    if (!cJSON_IsObject(j) || cJSON_GetArraySize(j) == 0)
         return scene_fail(p, "meshes", "expected an object of named meshes");
-    s->meshes = calloc((size_t)n, sizeof *s->meshes);
-    if (!s->meshes)
-        return scene_fail(p, "meshes", "out of memory");
-    s->mesh_count = n; /* zeroed entries are safe to free */
-    n = 0;
-    for (c = j->child; c; c = c->next, n++) {
-        if (!check_name(p, "meshes", c->string, s->meshes[0].name, sizeof *s->meshes, n))
+    for (c = j->child; c; c = c->next) {
+        if (!check_name(p, "meshes", c->string, e->entries ? e->entries[0].name : "",
+                        sizeof *e->entries, e->entry_count))
             return 0;
-        strcpy(s->meshes[n].name, c->string);
         snprintf(where, sizeof where, "meshes.%s", c->string);
-        if (!build_mesh(p, c, where, &s->meshes[n]))
+        if (!build_mesh(p, c, where, c->string, s, e))
             return 0;
     }
     return 1;
@@ -213,7 +210,7 @@ static int texture_slot(scene_parser *p, const cJSON *j, const char *key, const 
     return 1;
 }
 
-static void material_defaults(scene_material *m)
+void scene_material_defaults(scene_material *m)
 {
     const scene_material d = { "", { 0.8f, 0.8f, 0.8f, 1 }, { 0, 0, 0 }, 32, -1, -1, -1, 0.04f, "", 0, 0 };
     char name[SCENE_NAME_MAX];
@@ -231,7 +228,7 @@ static int parse_material(scene_parser *p, const cJSON *j, const char *where, sc
     char self_shadow[8] = "off";
     float shininess;
     char path[256];
-    material_defaults(m);
+    scene_material_defaults(m);
     shininess = m->shininess;
     if (!scene_check_object(p, j, where, keys) ||
         !scene_get_vector(p, j, "color", where, 3, SCENE_UNIT, m->color) ||
@@ -299,17 +296,6 @@ static int find_named(const char *base, size_t stride, int count, const char *na
 
 /* ---- objects ------------------------------------------------------------ */
 
-static void mat4_mul(const float a[16], const float b[16], float out[16])
-{
-    float r[16];
-    int i, k;
-    for (i = 0; i < 4; i++)
-        for (k = 0; k < 4; k++)
-            r[4 * i + k] = a[k] * b[4 * i] + a[4 + k] * b[4 * i + 1] + a[8 + k] * b[4 * i + 2] +
-                           a[12 + k] * b[4 * i + 3];
-    memcpy(out, r, sizeof r);
-}
-
 static float det3(const float m[16])
 {
     return m[0] * (m[5] * m[10] - m[9] * m[6]) - m[4] * (m[1] * m[10] - m[9] * m[2]) +
@@ -370,7 +356,7 @@ static int parse_transform(scene_parser *p, const cJSON *j, const char *where, f
     out[0] = sc[0];
     out[5] = sc[1];
     out[10] = sc[2];
-    mat4_mul(m, out, out);
+    scene_mat4_mul(m, out, out);
     out[12] = t[0];
     out[13] = t[1];
     out[14] = t[2];
@@ -412,7 +398,7 @@ static int ensure_default_material(scene *s)
     /* parse_materials left room for exactly this one. */
     i = s->material_count++;
     strcpy(s->materials[i].name, "default");
-    material_defaults(&s->materials[i]);
+    scene_material_defaults(&s->materials[i]);
     return i;
 }
 
@@ -445,8 +431,12 @@ static int add_instances(scene_parser *p, scene *s, int *cap, const char *where,
     return 1;
 }
 
-/* names: one SCENE_NAME_MAX slot per objects[] entry ("" when unnamed), for csg. */
-static int parse_objects(scene_parser *p, const cJSON *j, scene *s, char (*names)[SCENE_NAME_MAX])
+/* names: one SCENE_NAME_MAX slot per objects[] entry ("" when unnamed), for
+ * csg. An entry of several parts (a model file's nodes) gives one instance
+ * per part: object transform * node transform, and the node's material
+ * unless the object names one. */
+static int parse_objects(scene_parser *p, const cJSON *j, scene *s, const scene_entries *e,
+                         char (*names)[SCENE_NAME_MAX])
 {
     static const char *const keys[] = { "name", "mesh", "material", "translate", "rotate",
                                         "scale", "matrix", "repeat", NULL };
@@ -454,8 +444,8 @@ static int parse_objects(scene_parser *p, const cJSON *j, scene *s, char (*names
     char where[64], ref[SCENE_NAME_MAX], path[96];
     int i = 0, cap = 0;
     for (c = j->child; c; c = c->next, i++) {
-        float m[16], step[3];
-        int count[3], mesh, material;
+        float m[16], step[3], world[16];
+        int count[3], entry, material = -1, k;
         snprintf(where, sizeof where, "objects[%d]", i);
         if (!scene_check_object(p, c, where, keys) || !scene_require(p, c, "mesh", where) ||
             !scene_get_string(p, c, "name", where, names[i], SCENE_NAME_MAX))
@@ -467,8 +457,8 @@ static int parse_objects(scene_parser *p, const cJSON *j, scene *s, char (*names
         scene_join(path, sizeof path, where, "mesh");
         if (!scene_get_string(p, c, "mesh", where, ref, sizeof ref))
             return 0;
-        mesh = find_named(s->meshes[0].name, sizeof *s->meshes, s->mesh_count, ref);
-        if (mesh < 0)
+        entry = scene_entries_find(e, ref);
+        if (entry < 0)
             return scene_fail(p, path, "unknown mesh '%s'", ref);
         if (cJSON_GetObjectItemCaseSensitive(c, "material")) {
             scene_join(path, sizeof path, where, "material");
@@ -477,12 +467,17 @@ static int parse_objects(scene_parser *p, const cJSON *j, scene *s, char (*names
             material = find_named(s->materials[0].name, sizeof *s->materials, s->material_count, ref);
             if (material < 0)
                 return scene_fail(p, path, "unknown material '%s'", ref);
-        } else {
-            material = ensure_default_material(s);
         }
-        if (!parse_transform(p, c, where, m) || !parse_repeat(p, c, where, count, step) ||
-            !add_instances(p, s, &cap, where, mesh, material, m, count, step))
+        if (!parse_transform(p, c, where, m) || !parse_repeat(p, c, where, count, step))
             return 0;
+        for (k = 0; k < e->entries[entry].part_count; k++) {
+            const scene_part *part = &e->parts[e->entries[entry].first_part + k];
+            int mat = material >= 0 ? material : part->material >= 0 ? part->material
+                                                                     : ensure_default_material(s);
+            scene_mat4_mul(m, part->transform, world);
+            if (!add_instances(p, s, &cap, where, part->mesh, mat, world, count, step))
+                return 0;
+        }
     }
     return 1;
 }
@@ -669,17 +664,37 @@ static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_M
 
 /* ---- top level ------------------------------------------------------------ */
 
+static int parse_scene_objects(scene_parser *p, const cJSON *root, scene *s, const scene_entries *e)
+{
+    const cJSON *objects = cJSON_GetObjectItemCaseSensitive(root, "objects");
+    const cJSON *csg = cJSON_GetObjectItemCaseSensitive(root, "csg");
+    char (*names)[SCENE_NAME_MAX];
+    int ok, entries;
+    if (s->shadow_map_size & (s->shadow_map_size - 1))
+        return scene_fail(p, "shadow_map_size", "must be a power of two in [16, 8192] (got %d)",
+                          s->shadow_map_size);
+    entries = cJSON_GetArraySize(objects);
+    if (!cJSON_IsArray(objects) || entries == 0)
+        return scene_fail(p, "objects", "expected a non-empty array");
+    names = calloc((size_t)entries, SCENE_NAME_MAX);
+    if (!names)
+        return scene_fail(p, "objects", "out of memory");
+    ok = parse_objects(p, objects, s, e, names) && (!csg || parse_csg(p, csg, names, entries));
+    free(names);
+    return ok;
+}
+
 static int parse_scene(scene_parser *p, const cJSON *root, scene *s)
 {
     static const char *const keys[] = { "description", "width", "height", "camera", "ambient",
                                         "background", "meshes", "textures", "materials", "objects",
                                         "lights", "csg", "shadow_map_size", NULL };
-    const cJSON *objects = cJSON_GetObjectItemCaseSensitive(root, "objects");
-    const cJSON *csg = cJSON_GetObjectItemCaseSensitive(root, "csg");
     const cJSON *tex = cJSON_GetObjectItemCaseSensitive(root, "textures");
     const cJSON *lights = cJSON_GetObjectItemCaseSensitive(root, "lights");
-    char (*names)[SCENE_NAME_MAX], desc[1024];
-    int ok, entries;
+    const cJSON *camera = cJSON_GetObjectItemCaseSensitive(root, "camera");
+    char desc[1024];
+    scene_entries e;
+    int ok;
 
     s->width = s->height = 512;
     s->ambient[0] = s->ambient[1] = s->ambient[2] = 0.1f;
@@ -690,25 +705,20 @@ static int parse_scene(scene_parser *p, const cJSON *root, scene *s)
         !scene_get_vector(p, root, "ambient", "", 3, SCENE_UNIT, s->ambient) ||
         !scene_get_vector(p, root, "background", "", 4, SCENE_UNIT, s->background) ||
         !scene_get_int(p, root, "shadow_map_size", "", 16, 8192, &s->shadow_map_size) ||
-        !scene_require(p, root, "camera", "") || !scene_require(p, root, "meshes", "") ||
-        !scene_require(p, root, "objects", "") ||
-        !parse_camera(p, cJSON_GetObjectItemCaseSensitive(root, "camera"), &s->camera) ||
-        !parse_meshes(p, cJSON_GetObjectItemCaseSensitive(root, "meshes"), s) ||
-        (tex && !parse_textures(p, tex, s)) ||
-        !parse_materials(p, cJSON_GetObjectItemCaseSensitive(root, "materials"), s) ||
-        (lights && !parse_lights(p, lights, s)))
+        !scene_require(p, root, "meshes", "") || !scene_require(p, root, "objects", "") ||
+        (camera && !parse_camera(p, camera, &s->camera)))
         return 0;
-    if (s->shadow_map_size & (s->shadow_map_size - 1))
-        return scene_fail(p, "shadow_map_size", "must be a power of two in [16, 8192] (got %d)",
-                          s->shadow_map_size);
-    entries = cJSON_GetArraySize(objects);
-    if (!cJSON_IsArray(objects) || entries == 0)
-        return scene_fail(p, "objects", "expected a non-empty array");
-    names = calloc((size_t)entries, SCENE_NAME_MAX);
-    if (!names)
-        return scene_fail(p, "objects", "out of memory");
-    ok = parse_objects(p, objects, s, names) && (!csg || parse_csg(p, csg, names, entries));
-    free(names);
+    s->has_camera = camera != NULL;
+    memset(&e, 0, sizeof e);
+    ok = parse_meshes(p, cJSON_GetObjectItemCaseSensitive(root, "meshes"), s, &e) &&
+         (!tex || parse_textures(p, tex, s)) &&
+         parse_materials(p, cJSON_GetObjectItemCaseSensitive(root, "materials"), s) &&
+         scene_entries_add_materials(p, &e, s) && (!lights || parse_lights(p, lights, s)) &&
+         parse_scene_objects(p, root, s, &e);
+    scene_entries_free(&e);
+    /* No camera in the file: one that frames everything (scene_camera.c). */
+    if (ok && !camera)
+        scene_camera_frame(s, s->width, s->height, &s->camera);
     return ok;
 }
 
@@ -833,6 +843,7 @@ void scene_free(scene *s)
         scene_mesh_release(&s->meshes[i]);
     for (i = 0; i < s->texture_count; i++)
         free(s->textures[i].rgba);
+    free(s->warnings);
     free(s->meshes);
     free(s->textures);
     free(s->materials);

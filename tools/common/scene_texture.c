@@ -11,11 +11,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define TEXTURE_SIZE_MAX 8192
+#define TEXTURE_SIZE_MAX SCENE_TEXTURE_SIZE_MAX
 
 static uint8_t to_byte(float x)
 {
-    x = x < 0 ? 0 : x > 1 ? 1 : x;
+    x = x > 0 ? (x < 1 ? x : 1) : 0; /* also NaN -> 0 */
     return (uint8_t)lrintf(x * 255.0f);
 }
 
@@ -178,13 +178,35 @@ static int alloc_pixels(scene_parser *p, const char *where, scene_texture *t, in
     return t->rgba ? 1 : scene_fail(p, where, "out of memory for a %d x %d texture", w, h);
 }
 
-/* Child side: image file -> width, height and RGBA8 rows bottom to top.
- * 1 and 2 channels are grey (+ alpha); a missing alpha is opaque. */
+static float srgb_to_linear(float x)
+{
+    return x <= 0.04045f ? x / 12.92f : powf((x + 0.055f) / 1.055f, 2.4f);
+}
+
+void scene_image_to_rgba8(const image *img, int linearise, uint8_t *out)
+{
+    int x, y, k;
+    for (y = 0; y < img->height; y++)
+        for (x = 0; x < img->width; x++) {
+            const float *s = img->pixels + ((size_t)y * (size_t)img->width + (size_t)x) * (size_t)img->channels;
+            uint8_t *d = out + 4 * ((size_t)(img->height - 1 - y) * (size_t)img->width + (size_t)x);
+            int grey = img->channels < 3;
+            float c[3];
+            c[0] = s[0];
+            c[1] = grey ? s[0] : s[1];
+            c[2] = grey ? s[0] : s[2];
+            for (k = 0; k < 3; k++)
+                d[k] = to_byte(linearise ? srgb_to_linear(c[k] < 0 ? 0 : c[k]) : c[k]);
+            d[3] = img->channels == 2 ? to_byte(s[1]) : img->channels >= 4 ? to_byte(s[3]) : 255;
+        }
+}
+
+/* Child side: image file -> width, height and RGBA8 rows bottom to top. */
 static int decode_work(void *arg, int fd, char *why, size_t why_size)
 {
     image img;
-    int x, y, size[2], ok = 1;
-    uint8_t *row;
+    int size[2], ok;
+    uint8_t *rgba;
     if (!image_read((const char *)arg, &img, why, why_size))
         return 0;
     if (img.width > TEXTURE_SIZE_MAX || img.height > TEXTURE_SIZE_MAX) {
@@ -194,23 +216,14 @@ static int decode_work(void *arg, int fd, char *why, size_t why_size)
     }
     size[0] = img.width;
     size[1] = img.height;
-    row = malloc(4 * (size_t)img.width);
-    ok = row && isolate_write(fd, size, sizeof size);
-    for (y = img.height - 1; ok && y >= 0; y--) {
-        for (x = 0; x < img.width; x++) {
-            const float *s = img.pixels + ((size_t)y * (size_t)img.width + (size_t)x) * (size_t)img.channels;
-            uint8_t *d = row + 4 * (size_t)x;
-            int grey = img.channels < 3;
-            d[0] = to_byte(s[0]);
-            d[1] = to_byte(grey ? s[0] : s[1]);
-            d[2] = to_byte(grey ? s[0] : s[2]);
-            d[3] = img.channels == 2 ? to_byte(s[1]) : img.channels >= 4 ? to_byte(s[3]) : 255;
-        }
-        ok = isolate_write(fd, row, 4 * (size_t)img.width);
-    }
+    rgba = malloc(4 * (size_t)img.width * (size_t)img.height);
+    if (rgba)
+        scene_image_to_rgba8(&img, 0, rgba);
+    ok = rgba && isolate_write(fd, size, sizeof size) &&
+         isolate_write(fd, rgba, 4 * (size_t)img.width * (size_t)img.height);
     if (!ok)
         snprintf(why, why_size, "out of memory");
-    free(row);
+    free(rgba);
     image_free(&img);
     return ok;
 }

@@ -106,6 +106,29 @@ static void narrow_map(stin_platform *plat, stin_desc *desc)
         desc->techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_COMBINE;
 }
 
+/* What a model file lost, one stderr line each ("stin-render: warning: ..."). */
+static void print_warnings(const char *lines)
+{
+    char line[1024];
+    while (lines && *lines) {
+        const char *nl = strchr(lines, '\n');
+        int n = nl ? (int)(nl - lines) : (int)strlen(lines);
+        snprintf(line, sizeof line, "%.*s", n, lines);
+        fprintf(stderr, "stin-render: warning: %s\n", line);
+        lines += n + (nl != NULL);
+    }
+}
+
+/* --frame, or a scene without a camera: fit it to this image's aspect. */
+static void frame_camera(scene *s, int width, int height)
+{
+    const scene_camera *c = &s->camera;
+    scene_camera_frame(s, width, height, &s->camera);
+    printf("camera: framed, eye (%g, %g, %g), target (%g, %g, %g), fovy %g, near %g, far %g\n",
+           c->eye[0], c->eye[1], c->eye[2], c->target[0], c->target[1], c->target[2], c->fovy_deg,
+           c->near_plane, c->far_plane);
+}
+
 static void print_frame(const stin_context *ctx, const scene *s, double ms, int w, int h)
 {
     stin_frame_stats st = stin_query_frame_stats(ctx);
@@ -158,6 +181,7 @@ int main(int argc, char **argv)
         have_scene = 1;
         progress_done(&pr, "loaded %s: %d meshes, %d objects, %d textures", o.scene_path,
                       s.mesh_count, s.object_count, s.texture_count);
+        print_warnings(s.warnings);
         if (!within_work_limit(&o, &s, NULL)) {
             rc = EXIT_BAD_INPUT;
             goto done;
@@ -232,6 +256,8 @@ int main(int argc, char **argv)
         rc = 0;
         goto done;
     }
+    if (o.frame || !s.has_camera)
+        frame_camera(&s, pd.width, pd.height);
     progress_start(&pr, "creating meshes and textures");
     if (!scene_gpu_create(&g, &s, ctx, err, sizeof err)) {
         print_choices(ctx, &log);

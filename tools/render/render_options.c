@@ -37,6 +37,8 @@ void render_usage(FILE *f)
                "                            OUT-shadow-map-I.png per spot/directional light's map,\n"
                "                            the volumes added over the beauty in orange,\n"
                "                            OUT-masks.png with every light's visibility\n"
+               "  --frame                   fit the camera to the scene's bounds (its direction kept;\n"
+               "                            automatic when the scene has no camera)\n"
                "  --caps                    print capabilities and choices, render nothing\n"
                "  --verbose                 print stin's info log lines\n"
                "  --version                 print the versions of stin-render and libstin\n"
@@ -143,6 +145,8 @@ int render_parse_args(int argc, char **argv, options *o)
             o->no_output = 1;
         } else if (!strcmp(a, "--progress")) {
             o->progress = 1;
+        } else if (!strcmp(a, "--frame")) {
+            o->frame = 1;
         } else if (takes_value(a) && !v) {
             fprintf(stderr, "stin-render: %s needs a value\n", a);
             return 0;

@@ -25,6 +25,7 @@ typedef struct options {
     int width, height, caps, verbose;
     int no_output;              /* --no-output: render and print statistics only */
     int progress;               /* --progress: progress lines even when stderr is no terminal */
+    int frame;                  /* --frame: fit the camera to the scene's bounds */
 } options;
 
 void render_usage(FILE *f);
