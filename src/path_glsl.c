@@ -496,8 +496,11 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     stin__mat4_mul(view_proj, proj, view);
     GL(ctx, UseProgram)(p->name);
     ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
-    if (!gl4(ctx)) /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
-        GL(ctx, EnableVertexAttribArray)(0);
+    if (!gl4(ctx)) { /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
+        int k; /* all four: displacement reads the normal and uv */
+        for (k = 0; k < 4; k++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)k);
+    }
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++)

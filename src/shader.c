@@ -98,8 +98,9 @@ static const char *const *vertex_chunks(const stin_context *ctx, const char *ver
     const char *src = stin__shader_source(vert);
     if (!src || !find_marker(src))
         return NULL;
-    stin__formatf(name, 40, "%.4s%s", vert,
+    stin__formatf(name, 40, "gl2/%s",
                   stin__displace_built(ctx) ? "displace.glsl" : "displace_none.glsl");
+    name[2] = vert[2]; /* the vertex shader's directory: gl2/ or gl4/ */
     list[0] = name;
     list[1] = NULL;
     return list;

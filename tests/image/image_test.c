@@ -322,6 +322,10 @@ int main(int argc, char **argv)
             continue;
         }
         for (i = first_scene; i < argc; i++) {
+            if (displace_scene(argv[i])) {
+                displace_tests(&r, tiers[t], argv[i]);
+                continue;
+            }
             test_scene(&r, tiers[t], argv[i]);
             shadow_tests(&r, tiers[t], argv[i]);
             vdsm_tests(&r, tiers[t], argv[i]);
