@@ -56,7 +56,8 @@ static int displace_object(const scene *s, const scene_object *o, scene_mesh *m)
         }
         len = sqrt(len);
         reference_sample_texture(tex, uv[0], uv[1], h);
-        d = (double)h[0] * mat->height_scale - mat->height_bias;
+        d = (double)h[0] * mat->height_scale -
+            (mat->has_height_bias ? mat->height_bias : 0.5 * mat->height_scale);
         for (int r = 0; r < 3; r++) {
             n[r] = len > 0 ? n[r] / len : 0.0;
             m->positions[3 * v + r] = (float)(w[r] + n[r] * d);

@@ -215,7 +215,7 @@ static int texture_slot(scene_parser *p, const cJSON *j, const char *key, const 
 
 static void material_defaults(scene_material *m)
 {
-    const scene_material d = { "", { 0.8f, 0.8f, 0.8f, 1 }, { 0, 0, 0 }, 32, -1, -1, -1, 0.04f, "", 0, 0, 0, 0.02f };
+    const scene_material d = { "", { 0.8f, 0.8f, 0.8f, 1 }, { 0, 0, 0 }, 32, -1, -1, -1, 0.04f, "", 0, 0, 0, 0, 0 };
     char name[SCENE_NAME_MAX];
     memcpy(name, m->name, sizeof name);
     *m = d;
@@ -248,7 +248,7 @@ static int parse_material(scene_parser *p, const cJSON *j, const char *where, sc
         !scene_get_bool(p, j, "two_sided", where, &m->two_sided) ||
         !scene_get_bool(p, j, "displace", where, &m->displace))
         return 0;
-    m->height_bias = 0.5f * m->height_scale;
+    m->has_height_bias = cJSON_GetObjectItemCaseSensitive(j, "height_bias") != NULL;
     if (!scene_get_number(p, j, "height_bias", where, SCENE_ANY, &m->height_bias))
         return 0;
     m->self_shadow = !strcmp(self_shadow, "hard") ? 1 : !strcmp(self_shadow, "soft") ? 2 : 0;
