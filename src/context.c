@@ -18,6 +18,8 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 8u << 20);
     d.soft_shadow_samples = DEFAULT(d.soft_shadow_samples, 8u);
     d.shadow_map_size = DEFAULT(d.shadow_map_size, 1024u);
+    if (d.displace_guard_band == 0.0f)
+        d.displace_guard_band = 1.0f;
     return d;
 }
 
@@ -27,7 +29,8 @@ static int desc_valid(const stin_desc *d)
            d->shadow_map_size <= 8192 && (d->shadow_map_size & (d->shadow_map_size - 1)) == 0 &&
            d->max_meshes <= 65535 && d->max_textures <= 65535 &&
            d->max_mesh_triangles <= d->max_triangles && d->max_vertices < 0x40000000u &&
-           d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u;
+           d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u &&
+           d->displace_guard_band >= 0.0f && d->displace_guard_band <= 1e30f;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)
@@ -334,6 +337,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     r = init_lighting(ctx);
     if (r == STIN_OK)
         r = init_shadows(ctx);
+    if (r == STIN_OK)
+        stin__displace_init(ctx);
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */
         return r;

@@ -104,6 +104,10 @@ struct stin_context {
         uint32_t logged[STIN__SURF_LOG_KEYS]; /* per-material step-downs already logged */
         uint32_t logged_count;
     } glsl_surface;
+    struct {                  /* displacement (surface_displace.c) */
+        uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
+        uint32_t logged_count;
+    } displace;
     struct {
         GLuint cube;          /* normalisation cube map; 0 = DOT3 not in use */
         GLenum dot3_rgb;      /* GL_DOT3_RGB (1.3/ARB) or GL_DOT3_RGB_EXT */

@@ -70,6 +70,9 @@ static stin_result validate(stin_context *ctx, const stin_mesh_desc *d, uint32_t
                     "stin_create_mesh: need positions, vertex_count > 0 and indices with "
                     "index_count a positive multiple of 3 (got %u vertices, %u indices)",
                     d->vertex_count, d->index_count);
+    if (d->subdivide > 6u)
+        return fail(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                    "stin_create_mesh: subdivide is %u, at most %u levels", d->subdivide, 6u);
     if (!stin__isfinite(d->weld_tolerance))
         return fail(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
                     "stin_create_mesh: weld_tolerance is NaN or Inf", 0, 0);
@@ -202,9 +205,42 @@ static uint32_t free_slot(const stin_context *ctx)
                                   ctx->desc.max_meshes);
 }
 
+/* The kept (non-degenerate) triangles of desc into tris. */
+static void keep_triangles(const stin_mesh_desc *desc, uint32_t *tris)
+{
+    uint32_t i, t = 0;
+    for (i = 0; i < desc->index_count / 3u; i++)
+        if (!degenerate(desc->positions, desc->indices + 3u * i)) {
+            tris[3u * t] = desc->indices[3u * i];
+            tris[3u * t + 1] = desc->indices[3u * i + 1];
+            tris[3u * t + 2] = desc->indices[3u * i + 2];
+            t++;
+        }
+}
+
+/* The stored mesh's counts. Subdivided ones need the kept triangles'
+ * edges: their indices are staged at the end of the creation scratch, the
+ * edge table before them. */
+static stin_result stored_counts(stin_context *ctx, const stin_mesh_desc *desc, uint32_t kept,
+                                 uint32_t *verts, uint32_t *tris)
+{
+    size_t staged_bytes = 12u * (size_t)kept;
+    uint32_t *staged;
+    *verts = desc->vertex_count;
+    *tris = kept;
+    if (!desc->subdivide)
+        return STIN_OK;
+    if (staged_bytes > ctx->scratch_bytes)
+        return STIN_ERROR_CAPACITY;
+    staged = (uint32_t *)(void *)(ctx->scratch + ((ctx->scratch_bytes - staged_bytes) & ~(size_t)3));
+    keep_triangles(desc, staged);
+    return stin__subdivide_counts(ctx, staged, kept, desc->vertex_count, desc->subdivide,
+                                  (size_t)((unsigned char *)staged - ctx->scratch), verts, tris);
+}
+
 stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin_mesh *out)
 {
-    uint32_t kept = 0, slot, vfirst, tfirst, i, t = 0;
+    uint32_t kept = 0, kept0, slot, vfirst, tfirst, nv = 0, nt = 0;
     stin__mesh_slot *m;
     stin__vertex *verts;
     uint32_t *tris;
@@ -220,37 +256,40 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
         return fail(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
                     "stin_create_mesh: %u triangles exceed desc.max_mesh_triangles (%u)", kept,
                     ctx->desc.max_mesh_triangles);
+    if (stored_counts(ctx, desc, kept, &nv, &nt) != STIN_OK || nt > ctx->desc.max_mesh_triangles ||
+        nv > 3u * ctx->desc.max_mesh_triangles || nv > ctx->desc.max_vertices)
+        return fail(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
+                    "stin_create_mesh: %u levels of subdivision make more than "
+                    "desc.max_mesh_triangles (%u) triangles", desc->subdivide,
+                    ctx->desc.max_mesh_triangles);
     slot = free_slot(ctx);
     if (slot == 0xffffffffu)
         return fail(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
                     "stin_create_mesh: all %u mesh slots in use (desc.max_meshes)",
                     ctx->desc.max_meshes, 0);
-    if (!stin__range_take(&ctx->vertex_ranges, desc->vertex_count, &vfirst))
+    if (!stin__range_take(&ctx->vertex_ranges, nv, &vfirst))
         return fail(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
                     "stin_create_mesh: no room for %u vertices (desc.max_vertices %u)",
-                    desc->vertex_count, ctx->desc.max_vertices);
-    if (!stin__range_take(&ctx->triangle_ranges, kept, &tfirst)) {
+                    nv, ctx->desc.max_vertices);
+    if (!stin__range_take(&ctx->triangle_ranges, nt, &tfirst)) {
         stin__range_give(&ctx->vertex_ranges, vfirst);
         return fail(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
-                    "stin_create_mesh: no room for %u triangles (desc.max_triangles %u)", kept,
+                    "stin_create_mesh: no room for %u triangles (desc.max_triangles %u)", nt,
                     ctx->desc.max_triangles);
     }
     verts = ctx->vertices + vfirst;
     tris = ctx->indices + 3u * tfirst;
-    for (i = 0; i < desc->index_count / 3u; i++)
-        if (!degenerate(desc->positions, desc->indices + 3u * i)) {
-            tris[3u * t] = desc->indices[3u * i];
-            tris[3u * t + 1] = desc->indices[3u * i + 1];
-            tris[3u * t + 2] = desc->indices[3u * i + 2];
-            t++;
-        }
+    keep_triangles(desc, tris);
     m = &ctx->meshes[slot];
     stin__memzero(&m->info, sizeof m->info);
     copy_vertices(verts, desc);
-    fix_normals(verts, desc->vertex_count, tris, kept, desc->normals != NULL);
-    stin__mesh_tangents(verts, desc->vertex_count, tris, kept, (float *)(void *)ctx->scratch,
+    stin__subdivide(ctx, verts, desc->vertex_count, tris, kept, desc->subdivide);
+    kept0 = kept;
+    kept = nt;
+    fix_normals(verts, nv, tris, kept, desc->normals != NULL);
+    stin__mesh_tangents(verts, nv, tris, kept, (float *)(void *)ctx->scratch,
                         desc->uvs != NULL);
-    r = stin__mesh_adjacency_build(ctx, verts, desc->vertex_count, desc->weld_tolerance, tris,
+    r = stin__mesh_adjacency_build(ctx, verts, nv, desc->weld_tolerance, tris,
                                    kept, ctx->adjacency + 3u * tfirst, &m->info);
     if (r != STIN_OK) {
         stin__range_give(&ctx->vertex_ranges, vfirst);
@@ -259,13 +298,14 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
                     "for %u vertices, %u triangles", desc->vertex_count, kept);
     }
     m->first_vertex = vfirst;
-    m->vertex_count = desc->vertex_count;
+    m->vertex_count = nv;
     m->first_triangle = tfirst;
     m->triangle_count = kept;
-    m->info.vertex_count = desc->vertex_count;
+    m->uv_edge = stin__mesh_uv_edge(verts, tris, kept);
+    m->info.vertex_count = nv;
     m->info.triangle_count = kept;
-    m->info.degenerate_dropped = desc->index_count / 3u - kept;
-    bounds(&m->info, verts, desc->vertex_count);
+    m->info.degenerate_dropped = desc->index_count / 3u - kept0;
+    bounds(&m->info, verts, nv);
     m->vbo = m->ibo = m->vao = m->adj_ibo = m->adj_vao = 0;
     out->id = stin__handle_issue(&m->handle, slot, ctx->desc.max_meshes, ctx->handle_tag);
     upload(ctx, m);

@@ -43,6 +43,7 @@ typedef struct stin__mesh_slot {
     stin_mesh_info info;
     GLuint vbo, ibo, vao;
     GLuint adj_ibo, adj_vao;  /* vdsm: GL_TRIANGLES_ADJACENCY indices (0: none) */
+    float uv_edge;            /* mean uv length of its edges (displacement's coarse log) */
 } stin__mesh_slot;
 
 typedef struct stin__texture_slot {
@@ -79,6 +80,18 @@ size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count);
 /* Per-vertex tangents (Gram-Schmidt, handedness in w); uses scratch. */
 void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint32_t *tris,
                          uint32_t tri_count, float *scratch_bitangents, int have_uvs);
+/* Subdivision (mesh_subdivide.c): the vertex and triangle counts after
+ * `levels` levels (CAPACITY when the edge table exceeds the scratch or a
+ * count overflows), and the subdivision itself in place: verts and tris
+ * have room for those counts. */
+stin_result stin__subdivide_counts(struct stin_context *ctx, const uint32_t *tris,
+                                   uint32_t tri_count, uint32_t vertex_count, uint32_t levels,
+                                   size_t scratch_limit, uint32_t *out_vertices,
+                                   uint32_t *out_triangles);
+void stin__subdivide(struct stin_context *ctx, stin__vertex *verts, uint32_t vertex_count,
+                     uint32_t *tris, uint32_t tri_count, uint32_t levels);
+/* Mean uv length of the triangles' edges. */
+float stin__mesh_uv_edge(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count);
 void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count);
 

@@ -15,6 +15,14 @@ typedef struct stin__draw {
     float sort_depth;  /* eye-space distance of the bounds centre, for blending order */
 } stin__draw;
 
+/* The displacement chunk's uniforms in a program that draws meshes
+ * (surface_displace.c); camera: the program draws through the frame's
+ * camera (the guard band applies), not from a light. */
+typedef struct stin__displace_locs {
+    GLint map, params, size, normal, clip;
+    int camera;
+} stin__displace_locs;
+
 /* GLSL programs of one tier. */
 enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_VOLUME, STIN__PROG_COUNT };
 #define STIN__LIGHTS_PER_PASS 8
@@ -27,6 +35,7 @@ typedef struct stin__program {
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
     /* map-pcf chunk (shadow_map_pcf.c) */
     GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_maps[STIN__SHADOW_SAMPLERS];
+    stin__displace_locs displace; /* the vertex stage's displacement chunk */
     uint32_t frame_serial;   /* ctx->glsl.serial its per-frame uniforms have */
 } stin__program;
 
@@ -68,8 +77,10 @@ const stin__path *stin__fixed_path(void);
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size);
 void stin__glsl_release(stin_context *ctx);
 const stin__path *stin__glsl_path(void);
-/* A draw's mesh through the bound program, its transform in u_model. */
-void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__draw *d);
+/* A draw's mesh through the bound program, its transform in u_model, its
+ * displacement through dl (NULL: the program has no displacement chunk). */
+void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__displace_locs *dl,
+                                const stin__draw *d);
 /* The chosen lighting technique's path. */
 const stin__path *stin__path_of(const stin_context *ctx);
 

@@ -37,6 +37,8 @@ static void locate(stin_context *ctx, stin__program *p)
     LOC(u_color, "u_color");
 #undef LOC
     stin__surf_locate(ctx, p);
+    /* the volume program draws shadow-map depth from lights, the rest the camera's passes */
+    stin__displace_locate(ctx, p->name, p != &ctx->programs[STIN__PROG_VOLUME], &p->displace);
     p->frame_serial = 0;
 }
 
@@ -272,11 +274,13 @@ static void bind_mesh_arrays(stin_context *ctx, const stin__mesh_slot *m, uint32
     ctx->bound_mesh = slot;
 }
 
-void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__draw *d)
+void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__displace_locs *dl,
+                                const stin__draw *d)
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
     GL(ctx, UniformMatrix4fv)(u_model, 1, GL_FALSE, d->transform);
+    stin__displace_draw(ctx, dl, d);
     bind_mesh_arrays(ctx, m, d->mesh_slot);
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
 }
@@ -290,7 +294,7 @@ static void submit(stin_context *ctx, const stin__program *p, const stin__draw *
         stin__mat3_normal(nm, d->transform);
         GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
     }
-    stin__glsl_submit_geometry(ctx, p->u_model, d);
+    stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
 }
 
 static int in_set(const stin__draw *d, int which)
@@ -492,8 +496,11 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     stin__mat4_mul(view_proj, proj, view);
     GL(ctx, UseProgram)(p->name);
     ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
-    if (!gl4(ctx)) /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
-        GL(ctx, EnableVertexAttribArray)(0);
+    if (!gl4(ctx)) { /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
+        int k; /* all four: displacement reads the normal and uv */
+        for (k = 0; k < 4; k++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)k);
+    }
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++)

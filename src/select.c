@@ -74,9 +74,24 @@ typedef struct chain_input {
     stin_feature feature;
     stin_technique forced, lighting;
     uint64_t chosen;   /* STIN__TECH_BIT()s of the features chosen so far */
+    uint64_t forced_all; /* STIN__TECH_BIT()s of every feature's forced technique */
     int units_left;    /* texture units still free for this feature */
     int unit_limit;    /* the context's units for the chosen lighting */
 } chain_input;
+
+/* The techniques a set conflicts with, from either side's row: a conflict
+ * is recorded once, on the technique that has it. */
+static uint64_t conflicts_of(uint64_t set)
+{
+    uint64_t out = 0;
+    int t;
+    for (t = 0; t < STIN_TECH_COUNT; t++) {
+        const stin__technique_row *r = stin__technique_row_of((stin_technique)t);
+        if (r && (set & STIN__TECH_BIT(t)))
+            out |= r->conflicts;
+    }
+    return out;
+}
 
 static int frag_units(stin_technique t)
 {
@@ -108,9 +123,15 @@ static int why_not(const chain_input *in, stin_technique t, char *why, size_t si
                       lighting_class(r->lighting), stin_technique_name(in->lighting));
         return 0;
     }
-    if (r->conflicts & in->chosen) {
+    if ((r->conflicts & in->chosen) || (conflicts_of(in->chosen) & STIN__TECH_BIT(t))) {
         stin__formatf(why, size, "%s cannot run beside the techniques chosen before it",
                       stin_technique_name(t));
+        return 1;
+    }
+    /* an automatic choice leaves room for another feature's forced technique */
+    if (in->forced == STIN_TECH_NONE &&
+        ((r->conflicts & in->forced_all) || (conflicts_of(in->forced_all) & STIN__TECH_BIT(t)))) {
+        stin__formatf(why, size, "%s cannot run beside a forced technique", stin_technique_name(t));
         return 1;
     }
     if (r->fragment_units > in->units_left) {
@@ -207,6 +228,9 @@ static void place_units(stin__selection *sel)
         sel->shadow_spare_units = sel->units_used + spare <= sel->unit_limit ? spare : 0;
         sel->units_used += sel->shadow_spare_units;
     }
+    /* the vertex stage's height map: a unit of its own after the fragment
+     * stage's (vertex samplers count against the combined units) */
+    sel->displace_unit = sel->units_used;
 }
 
 /* Chooses every feature after lighting, for the lighting in sel. Forced
@@ -217,11 +241,14 @@ static stin_result choose_after_lighting(const stin_caps *caps, const stin_techn
 {
     stin_technique lighting = sel->choice[STIN_FEATURE_LIGHTING].technique;
     int f, reserved = 0, used = frag_units(lighting);
-    uint64_t chosen = STIN__TECH_BIT(lighting);
+    uint64_t chosen = STIN__TECH_BIT(lighting), forced_all = 0;
     sel->unit_limit = unit_limit(caps, lighting);
     for (f = STIN_FEATURE_LIGHTING + 1; f < STIN_FEATURE_COUNT; f++)
-        if (forced && forced[f] != STIN_TECH_NONE)
+        if (forced && forced[f] != STIN_TECH_NONE) {
             reserved += frag_units(forced[f]);
+            if ((unsigned)forced[f] < STIN_TECH_COUNT)
+                forced_all |= STIN__TECH_BIT(forced[f]);
+        }
     for (f = STIN_FEATURE_LIGHTING + 1; f < STIN_FEATURE_COUNT; f++) {
         chain_input in;
         stin_result r;
@@ -231,6 +258,7 @@ static stin_result choose_after_lighting(const stin_caps *caps, const stin_techn
         in.forced = forced ? forced[f] : STIN_TECH_NONE;
         in.lighting = lighting;
         in.chosen = chosen;
+        in.forced_all = forced_all;
         if (in.forced != STIN_TECH_NONE)
             reserved -= frag_units(in.forced);
         in.units_left = sel->unit_limit - used - reserved;

@@ -90,6 +90,22 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
     return s;
 }
 
+/* Vertex shaders that draw meshes have a chunk line for displacement: the
+ * context's displacement chunk of the shader's directory ("gl2/", "gl4/"). */
+static const char *const *vertex_chunks(const stin_context *ctx, const char *vert, char name[40],
+                                        const char *list[2])
+{
+    const char *src = stin__shader_source(vert);
+    if (!src || !find_marker(src))
+        return NULL;
+    stin__formatf(name, 40, "gl2/%s",
+                  stin__displace_built(ctx) ? "displace.glsl" : "displace_none.glsl");
+    name[2] = vert[2]; /* the vertex shader's directory: gl2/ or gl4/ */
+    list[0] = name;
+    list[1] = NULL;
+    return list;
+}
+
 /* Attribute locations are fixed so that one vertex layout (and one VAO per
  * mesh) serves every program. */
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
@@ -116,9 +132,11 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
 {
     GLuint stages[3] = {0, 0, 0}, p;
     GLint ok = 0;
-    char log[1024];
+    char log[1024], vname[40];
+    const char *vlist[2];
     int i;
-    stages[0] = compile(ctx, GL_VERTEX_SHADER, src->vert, NULL, msg, size);
+    stages[0] = compile(ctx, GL_VERTEX_SHADER, src->vert, vertex_chunks(ctx, src->vert, vname, vlist),
+                        msg, size);
     if (stages[0] && src->geom)
         stages[1] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, msg, size);
     if (stages[0] && (stages[1] || !src->geom))

@@ -131,6 +131,7 @@ typedef struct stin__vdsm_state {
     GLint face_position, face_normal, face_light;
     GLint poly_model, poly_view_proj, poly_light, poly_camera, poly_viewport, poly_grow,
         poly_cull_lit, poly_caps, poly_position, poly_normal;
+    stin__displace_locs pos_displace, poly_displace; /* their displacement chunks */
     float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
     int ready;              /* this frame's position buffer is drawn */
     int said_area, said_failed;

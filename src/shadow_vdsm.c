@@ -77,6 +77,9 @@ static void locate(stin_context *ctx)
     LOC(poly_position, polygon_prog, "u_position");
     LOC(poly_normal, polygon_prog, "u_normal");
 #undef LOC
+    /* the position buffer is the camera's view; shadow polygons cast from anywhere */
+    stin__displace_locate(ctx, v->position_prog, 1, &v->pos_displace);
+    stin__displace_locate(ctx, v->polygon_prog, 0, &v->poly_displace);
 }
 
 /* The technique below vdsm that runs here: volumes where the frame has a
@@ -84,8 +87,8 @@ static void locate(stin_context *ctx)
 static stin_technique fallback(const stin_context *ctx)
 {
     uint64_t pcf = stin__technique_needs(STIN_TECH_SHADOWS_MAP_PCF);
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL))
-        return STIN_TECH_SHADOWS_VOLUME;
+    if ((ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) && !stin__displace_built(ctx))
+        return STIN_TECH_SHADOWS_VOLUME; /* volumes cannot shadow displaced draws */
     if ((ctx->caps.present & pcf) == pcf &&
         ctx->sel.shadow_unit + STIN__SHADOW_SAMPLERS <= ctx->sel.unit_limit)
         return STIN_TECH_SHADOWS_MAP_PCF;
@@ -190,7 +193,7 @@ static void polygons(stin_context *ctx, const float light[4])
         culled = c;
         /* a blended caster is not in the depth buffer: what lies behind it shows */
         GL(ctx, Uniform1i)(v->poly_caps, d->material.color[3] < 1.0f);
-        stin__glsl_submit_geometry(ctx, v->poly_model, d);
+        stin__glsl_submit_geometry(ctx, v->poly_model, &v->poly_displace, d);
     }
     if (v->query) {
         GLuint n = 0;

@@ -160,7 +160,7 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE))
-            stin__glsl_submit_geometry(ctx, v->pos_model, d);
+            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, d);
     }
     ctx->stats.passes++;
     v->ready = 1;

@@ -319,8 +319,10 @@ static void occluders(stin_context *ctx, const float light[4], stin__pass_state 
         const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
         GLsizei count = (GLsizei)(6u * m->triangle_count);
         float nearest, deepest;
-        if (!m->adj_vao)
-            continue; /* not an occluder here; it still casts */
+        /* not an occluder here, it still casts: no adjacency, or displaced
+         * (its bounds, and so its depth range, are the flat mesh's) */
+        if (!m->adj_vao || stin__displace_active(ctx, &d->material))
+            continue;
         draw_depths(p, ctx, d, &nearest, &deepest);
         if (!(nearest > p->front))
             continue; /* reaches behind the light: its projection is no triangle */

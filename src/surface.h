@@ -70,4 +70,22 @@ void stin__surf_material(stin_context *ctx, const stin__program *p, const stin_m
 /* Unbinds units 1 and 2 after a frame that bound them; unit 0 active. */
 void stin__surf_unbind(stin_context *ctx);
 
+/* ---- displacement: "displace" by vertex texture fetch (surface_displace.c) ----
+ * Every vertex shader that draws meshes has a "// @chunks" line where
+ * shader.c splices displace.glsl (the context's displacement is displace)
+ * or displace_none.glsl; per draw the chunk's uniforms say whether and how
+ * far this draw's vertices move. */
+/* 1 when programs are built with the displacement chunk. */
+int stin__displace_built(const stin_context *ctx);
+/* After the shadow module's set-up: volumes cannot shadow displaced
+ * geometry, so displacement steps down beside them (logged). */
+void stin__displace_init(stin_context *ctx);
+/* 1 when this material's draws are displaced. */
+int stin__displace_active(const stin_context *ctx, const stin_material *m);
+void stin__displace_locate(stin_context *ctx, GLuint program, int camera,
+                           stin__displace_locs *out);
+/* Per draw, before its DrawElements through a program with the chunk:
+ * on or off, the height map on its vertex unit, the scale and bias. */
+void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const stin__draw *d);
+
 #endif

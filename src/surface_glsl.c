@@ -88,6 +88,8 @@ int stin__surf_variant_for(stin_context *ctx, const stin_material *m)
         if (asked < want)
             want = asked; /* the material's own request: not a fallback */
     }
+    if (want > STIN__SURF_NORMAL && stin__displace_active(ctx, m))
+        want = STIN__SURF_NORMAL; /* the relief is geometry: no parallax on top */
     v = want;
     if (v > STIN__SURF_PLAIN && !stin__texture_lookup(ctx, m->normal_map)) {
         v = STIN__SURF_PLAIN;

@@ -43,7 +43,11 @@ static const stin__technique_row rows[] = {
          BIT(FIXED_FUNCTION), STIN_TECH_LIGHTING_FIXED, 0, 2, 0, NULL, 0}, /* a 4th for albedo if spare */
     {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     {STIN_TECH_TRANSLUCENT_SOLID,      0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
-    {STIN_TECH_DISPLACEMENT_OFF,       0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* vertex texture fetch of the height map in every mesh-drawing vertex
+     * stage; volumes' CPU silhouettes would be the undisplaced mesh's */
+    {STIN_TECH_DISPLACEMENT_VTF,       0, BIT(GLSL) | BIT(VERTEX_TEXTURE_FETCH), GLSL_ANY,
+     STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, NULL, 0},
+    {STIN_TECH_DISPLACEMENT_OFF,       1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     {STIN_TECH_CSG_OFF,                0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
 };
 

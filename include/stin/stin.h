@@ -427,6 +427,7 @@ const char *stin_feature_name(stin_feature f);
  *   lighting: glsl150-per-pixel, glsl110-per-pixel, fixed-function
  *   shadows:  volume, map-pcf, map-depth, map-combine, off
  *   surface:  pom, parallax, normal, dot3, plain
+ *   displacement: displace, displacement-off
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
@@ -475,7 +476,47 @@ const char *stin_feature_name(stin_feature f);
  *              polygon's (no gl_FragDepth: shadows and depth-EQUAL passes
  *              see the flat surface), the N output shows the vertex normal.
  * Height maps are sampled at full resolution (their mipmaps are not built):
- * the march needs the true field. */
+ * the march needs the true field.
+ * Displacement: "displace" (GL2 and GL4, GLSL lighting, vertex texture
+ * fetch: GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS > 0, capability "vertex texture
+ * fetch", which desc.caps_mask can hide) moves the vertices of draws whose
+ * material sets `displace` and has a height map along their world normal by
+ *   d = h * height_scale - height_bias      (h the height map's R, 0..1)
+ * in scene units, the same h' as parallax (a material looks alike under
+ * both; the default bias, scale / 2, centres the relief on the polygon;
+ * `height_bias` a tiny negative value gives d = h * scale, raised only).
+ * It is a feature of its own, so a displaced draw's shading is still the
+ * surface chain's, capped at "normal" (the relief is geometry now: no
+ * parallax on top); without displace (another tier, no vertex textures, a
+ * material without `displace` or a height map) the draw walks the surface
+ * chain as before, so per draw the chain reads displace -> pom -> parallax
+ * -> normal -> dot3 -> plain. Every pass that draws a displaced draw moves
+ * the same vertices the same way (one vertex-shader chunk in every
+ * program that draws meshes: lit, ambient, flat, normals, shadow-map depth,
+ * vdsm's position buffer, shadow polygons and light-view pyramid), so
+ * depth-EQUAL passes match and map-pcf and vdsm shadow the displaced
+ * surface. Lighting normals come from the normal map (or are the vertex
+ * normals without one): the vertex stage cannot see its neighbours.
+ * Shadows: stencil volumes take silhouettes from the undisplaced mesh on
+ * the CPU, so "displace" conflicts with "volume" (technique table): with
+ * volumes chosen displacement is "displacement-off" (logged fallback) and
+ * materials get their surface chain; forcing "displace" makes the shadow
+ * chain skip "volume" (vdsm, map-pcf or off); a shadow technique demoted
+ * to volume at set-up demotes displacement too (logged). No technique
+ * shadows the flat mesh of a displaced draw.
+ * The height map is read with GL's filtering (bilinear at texel centres,
+ * repeat) at level 0; STIN_DEBUG_DISPLACE_MANUAL_BILINEAR fetches the four
+ * texels at their centres and blends them in the shader instead (for
+ * drivers whose vertex textures are nearest-only; the same surface within
+ * rounding). Vertices whose undisplaced clip position lies outside the view
+ * volume grown by desc.displace_guard_band (a fraction of the volume's
+ * half-size each side, default 1) are not displaced in the camera's passes
+ * (no fetch): a triangle with a vertex that far out and pixels on screen,
+ * or one crossing the eye plane, is drawn with that vertex undisplaced
+ * (STIN_DEBUG_DISPLACE_NO_GUARD turns the test off). Light passes (maps,
+ * vdsm) never skip. VTF needs vertices: stin_mesh_desc.subdivide splits
+ * each triangle at creation; a draw whose mesh's edges span more than 4
+ * texels of its height map on average is logged once as coarse. */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
@@ -494,7 +535,8 @@ const char *stin_feature_name(stin_feature f);
     X(TRANSLUCENT_SOLID, "translucent-solid", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
     X(DISPLACEMENT_OFF, "displacement-off", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL1) \
     X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)                 \
-    X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)
+    X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)           \
+    X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -543,6 +585,10 @@ typedef struct stin_desc {
     uint32_t debug_flags;              /* STIN_DEBUG_*: diagnostics, default 0 */
     uint32_t shadow_map_size;          /* texels a side of a light's shadow map, default
                                         * 1024; a power of two, at most 8192 */
+    float displace_guard_band;         /* "displace": the view volume grown by this
+                                        * fraction of its half-size each side before
+                                        * a vertex is left undisplaced; default (0) 1,
+                                        * finite and >= 0 */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -561,10 +607,15 @@ typedef struct stin_desc {
 #define STIN_DEBUG_VDSM_NO_SM 32u   /* no light-view pyramid culling of triangles in shadow */
 #define STIN_DEBUG_VDSM_NO_DC 64u   /* extrude to infinity; no culling of triangles with no
                                      * receiver behind them */
+/* Displacement speed-ups (see TIERS, displacement): */
+#define STIN_DEBUG_DISPLACE_NO_GUARD 128u /* fetch the height of every vertex, on screen
+                                           * or not */
+#define STIN_DEBUG_DISPLACE_MANUAL_BILINEAR 256u /* four fetches at texel centres,
+                                                  * blended in the shader */
 /* volume: after the frame, every light's shadow volumes (its centre sample,
  * capped) are added over the colour in orange where they lie in front of
  * the surfaces: a picture of the volumes, not of the shadows */
-#define STIN_DEBUG_SHOW_VOLUMES 128u
+#define STIN_DEBUG_SHOW_VOLUMES 512u
 
 typedef struct stin_context stin_context;
 
@@ -633,6 +684,15 @@ typedef struct stin_mesh_desc {
      * extent, which joins seams and poles that differ in their last bits;
      * negative: bit-equal positions only. */
     float weld_tolerance;
+    /* Levels of subdivision at creation, for vertex displacement: each
+     * level splits every triangle into four at its edges' midpoints
+     * (shared between neighbours, so the mesh stays watertight; normals
+     * normalised means, uvs means). Flat: the shape does not change.
+     * 0 (default) none, at most 6. The stored mesh (vertex_count,
+     * triangle_count, the capacities it takes) is the subdivided one: V + E
+     * vertices and 4 T triangles a level (E the edges); it must fit
+     * desc.max_mesh_triangles and the stores like any mesh. */
+    uint32_t subdivide;
 } stin_mesh_desc;
 
 typedef struct stin_mesh_info {
@@ -757,8 +817,13 @@ typedef struct stin_material {
     stin_texture height_map; /* optional: height field in R (STIN_TEXTURE_HEIGHT, 1 =
                               * top), used by parallax and pom */
     float height_scale;     /* scene units from h = 1 to h = 0; default (0) 0.04 */
-    float height_bias;      /* parallax: uv' = uv + V.xy (h scale - bias); default (0)
+    float height_bias;      /* parallax: uv' = uv + V.xy (h scale - bias); displace:
+                             * d = h scale - bias along the normal; default (0)
                              * height_scale / 2 (a negative tiny value gives ~0) */
+    int displace;           /* 1: displace the mesh by height_map where the displacement
+                             * feature is "displace" (see TIERS, displacement); 0
+                             * (default): the surface chain only. Opt-in: the mesh must
+                             * be dense enough (stin_mesh_desc.subdivide) */
     uint32_t pom_min_steps; /* pom linear steps straight on, default 8 */
     uint32_t pom_max_steps; /* pom linear steps at grazing angles, default 32, at most 64 */
     int self_shadow;        /* pom: 0 off (default), 1 hard, 2 soft */

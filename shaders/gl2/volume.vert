@@ -8,9 +8,14 @@ invariant gl_Position;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 attribute vec4 a_position;
+attribute vec3 a_normal; // displacement (shadow-map depth passes)
+attribute vec2 a_uv;
+
+// the displacement chunk (displace.glsl or displace_none.glsl)
+// @chunks
 
 void main()
 {
-    vec4 world = u_model * a_position;
+    vec4 world = displace_world(u_model * a_position, a_normal, a_uv);
     gl_Position = u_view_proj * world;
 }

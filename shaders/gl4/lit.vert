@@ -16,11 +16,15 @@ out vec3 v_normal;
 out vec2 v_uv;
 out vec4 v_tangent;
 
+// the displacement chunk (gl2's displace.glsl or displace_none.glsl)
+#define texture2DLod textureLod
+// @chunks
+
 void main()
 {
     // w comes from the vertex fetch (1.0), exactly as in volume.vert, so that
     // volume caps and the surfaces they coincide with rasterise to equal depths.
-    vec4 world = u_model * a_position;
+    vec4 world = displace_world(u_model * a_position, a_normal, a_uv);
     v_world = world.xyz;
     v_normal = u_normal_matrix * a_normal;
     v_uv = a_uv;

@@ -6,11 +6,17 @@ invariant gl_Position;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 in vec4 a_position;
+in vec3 a_normal; // displacement
+in vec2 a_uv;
 out vec3 v_world;
+
+// the displacement chunk (gl2's displace.glsl or displace_none.glsl)
+#define texture2DLod textureLod
+// @chunks
 
 void main()
 {
-    vec4 world = u_model * a_position;
+    vec4 world = displace_world(u_model * a_position, a_normal, a_uv);
     v_world = world.xyz;
     gl_Position = u_view_proj * world;
 }

@@ -8,9 +8,15 @@ invariant gl_Position;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 in vec4 a_position;
+in vec3 a_normal; // displacement (shadow-map depth passes)
+in vec2 a_uv;
+
+// the displacement chunk (gl2's displace.glsl or displace_none.glsl)
+#define texture2DLod textureLod
+// @chunks
 
 void main()
 {
-    vec4 world = u_model * a_position;
+    vec4 world = displace_world(u_model * a_position, a_normal, a_uv);
     gl_Position = u_view_proj * world;
 }

@@ -39,6 +39,8 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.max_gl_version = profile->max_gl_version;
     d.techniques[STIN_FEATURE_SHADOWS] = o->shadows;
     d.techniques[STIN_FEATURE_SURFACE] = o->surface;
+    d.techniques[STIN_FEATURE_DISPLACEMENT] = o->displacement;
+    d.displace_guard_band = o->guard_band;
     d.debug_flags = o->debug_flags;
     d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);
@@ -49,6 +51,11 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
         goto done;
     }
     out->caps_present = stin_query_caps(ctx)->present;
+    {
+        int f;
+        for (f = 0; f < STIN_FEATURE_COUNT; f++)
+            out->choice[f] = stin_query_choice(ctx, (stin_feature)f);
+    }
     out->separate_specular = (out->caps_present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR)) != 0;
     if (!scene_gpu_create(&g, s, ctx, err, err_size))
         goto done;

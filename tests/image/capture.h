@@ -17,6 +17,8 @@ typedef struct capture_options {
     uint64_t extra_mask;      /* capabilities hidden on top of the profile's */
     uint32_t shadow_map_size; /* 0: stin's default */
     stin_technique surface;   /* forced surface technique; NONE = auto */
+    stin_technique displacement; /* forced displacement technique; NONE = auto */
+    float guard_band;         /* stin_desc.displace_guard_band; 0 = stin's default */
 } capture_options;
 
 typedef struct capture {
@@ -27,6 +29,7 @@ typedef struct capture {
     uint64_t caps_present;    /* after the masks */
     int separate_specular;
     stin_frame_stats stats;   /* of the last frame (the visibility output) */
+    stin_choice choice[STIN_FEATURE_COUNT]; /* what the context chose */
 } capture;
 
 /* 1 on success; else err says why. Free with capture_free. */

@@ -13,17 +13,20 @@
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 #define DOT3 STIN_TECH_SURFACE_DOT3
 #define POM STIN_TECH_SURFACE_POM
-/* the reserved axes have one technique each so far */
+/* translucent shadows, displacement, CSG: displacement runs where there are
+ * vertex textures and the shadows are not volumes (their silhouettes are
+ * the undisplaced mesh's) */
 #define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_OFF
+#define DISPLACED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_VTF, STIN_TECH_CSG_OFF
 
 static const expected_profile table[] = {
     {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},
     {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
     {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
     {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED}, {1, 1, 0}},
-    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, RESERVED}, {0, 0, 1}},
-    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, RESERVED}, {0, 0, 1}},
-    {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, RESERVED}, {1, 1, 1}},
+    {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
+    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
+    {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {1, 1, 1}},
 };
 
 const expected_profile *expected_find(const char *profile)

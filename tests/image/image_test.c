@@ -283,6 +283,7 @@ int main(int argc, char **argv)
     const expected_profile *e;
     char err[512];
     int i, first_scene = argc, t;
+    char *displaced;
     const stin_tier tiers[3] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
     memset(&r, 0, sizeof r);
     r.width = 256;
@@ -316,12 +317,19 @@ int main(int argc, char **argv)
         return 0;
     }
     test_selection(&r, e);
+    displaced = calloc((size_t)argc, 1); /* once per scene, not per tier */
+    for (i = first_scene; displaced && i < argc; i++)
+        displaced[i] = (char)displace_scene(argv[i]);
     for (t = 0; t < 3; t++) {
         if (!e->tier_runs[t]) {
             test_refusal(&r, tiers[t]);
             continue;
         }
         for (i = first_scene; i < argc; i++) {
+            if (displaced && displaced[i]) {
+                displace_tests(&r, tiers[t], argv[i]);
+                continue;
+            }
             test_scene(&r, tiers[t], argv[i]);
             shadow_tests(&r, tiers[t], argv[i]);
             vdsm_tests(&r, tiers[t], argv[i]);
@@ -335,6 +343,7 @@ int main(int argc, char **argv)
             visibility_tests(&r, tiers[t], argv[i]);
         }
     }
+    free(displaced);
     stin_platform_destroy(r.plat);
     return 0;
 }

@@ -49,4 +49,10 @@ void composite_tests(run *r, stin_tier tier, const char *path);
  * (six lights) and shadow-soft (visibility_test.c). */
 void visibility_tests(run *r, stin_tier tier, const char *path);
 
+/* Displacement ("displace", GL2/GL4) on scenes with displaced materials,
+ * against the displaced Embree reference (displace_test.c). Such scenes get
+ * no other test: the others' references are of the undisplaced meshes. */
+int displace_scene(const char *path);
+void displace_tests(run *r, stin_tier tier, const char *path);
+
 #endif

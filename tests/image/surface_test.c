@@ -155,7 +155,7 @@ static void test_gl2_shaders(run *r)
     static const char *const files[] = {"flat.frag", "lit.frag", "lit.vert", "normal.frag",
                                         "shadow_none.glsl", "surface_plain.glsl",
                                         "surface_frame.glsl", "surface_normal.glsl",
-                                        "surface_parallax.glsl", "surface_pom.glsl",
+                                        "surface_parallax.glsl", "surface_pom.glsl", "displace.glsl", "displace_none.glsl",
                                         "volume.vert", NULL};
     char problems[1024] = "", path[256], line[512];
     size_t used = 0;

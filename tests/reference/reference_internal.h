@@ -26,6 +26,10 @@ struct reference {
     unsigned soft_samples; /* point samples of an area light, REFERENCE_SOFT_SHADOW_SAMPLES */
 };
 
+/* The inverse transpose of a column-major transform's 3x3, up to scale
+ * (normals are renormalised), row-major: n[r * 3 + c]. */
+void ref_normal_matrix(const float m[16], double n[9]);
+
 /* Fills a hit from Embree's answer (geometry id = object index). */
 void ref_fill_hit(const reference *r, unsigned object, unsigned prim, float u, float v,
                   const float eye[3], ref_hit *hit);

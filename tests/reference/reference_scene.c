@@ -29,7 +29,7 @@ static int device_ok(RTCDevice device, const char *what, char *err, size_t err_s
 
 /* Normals go through the inverse transpose = cofactor matrix / det, so a
  * mirroring transform keeps normals pointing out of the surface. */
-static void normal_matrix(const float m[16], double n[9])
+void ref_normal_matrix(const float m[16], double n[9])
 {
     /* a[r][c] = m[c*4 + r] (column-major) */
     double a[3][3];
@@ -84,7 +84,7 @@ static int copy_object(const scene *s, int index, ref_object *o, char *err, size
     }
     const float *t = so->transform;
     double nm[9];
-    normal_matrix(t, nm);
+    ref_normal_matrix(t, nm);
     for (size_t v = 0; v < nv; v++) {
         const float *p = m->positions + 3 * v;
         for (int r = 0; r < 3; r++)

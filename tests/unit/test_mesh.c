@@ -570,6 +570,47 @@ static void octahedron(float pos[18], uint32_t idx[24])
             }
 }
 
+/* Subdivision at creation: per level V + E vertices and 4 T triangles (E by
+ * vertex indices: the cube's split faces share no index, so its 24-vertex
+ * faces stay apart but welded), still closed; midpoints on the flat
+ * faces, uv means; too many levels for the capacities is CAPACITY, more
+ * than 6 INVALID_ARGUMENT. */
+static void test_subdivide(void **state)
+{
+    float pos[72], nrm[72], uv[48];
+    uint32_t idx[36], i;
+    stin_mesh_desc md;
+    stin_mesh_info info;
+    stin_mesh m;
+    (void)state;
+    cube(pos, nrm, idx);
+    for (i = 0; i < 24; i++) {
+        uv[2 * i] = (float)(i % 2);
+        uv[2 * i + 1] = (float)((i / 2) % 2);
+    }
+    md = mesh_desc(pos, 24, idx, 36);
+    md.normals = nrm;
+    md.uvs = uv;
+    md.subdivide = 1;
+    assert_int_equal(create(&md, &m), STIN_OK);
+    info = info_of(m);
+    /* 6 faces of 4 vertices, 5 edges each (4 sides and a diagonal) */
+    assert_int_equal(info.vertex_count, 24 + 30);
+    assert_int_equal(info.triangle_count, 48);
+    assert_int_equal(info.closed_manifold, 1);
+    assert_true(info.bounds_min[0] == -1.0f && info.bounds_max[1] == 1.0f);
+    md.subdivide = 2; /* 54 + E1, E1 = 2 * 30 + 3 * 12 */
+    assert_int_equal(create(&md, &m), STIN_OK);
+    info = info_of(m);
+    assert_int_equal(info.vertex_count, 54 + 96);
+    assert_int_equal(info.triangle_count, 192);
+    assert_int_equal(info.closed_manifold, 1);
+    md.subdivide = 3; /* 768 triangles: over max_mesh_triangles (256) */
+    assert_int_equal(create(&md, &m), STIN_ERROR_CAPACITY);
+    md.subdivide = 7;
+    assert_int_equal(create(&md, &m), STIN_ERROR_INVALID_ARGUMENT);
+}
+
 static void test_default_normals(void **state)
 {
     float pos[18];
@@ -786,6 +827,7 @@ int main(void)
         TEST(test_tangent_is_orthogonalised_against_the_normal),
         TEST(test_no_uvs_gives_some_perpendicular_tangent),
         TEST(test_default_normals),
+        TEST(test_subdivide),
         TEST(test_given_normals_are_normalised),
         TEST(test_max_meshes_full),
         TEST(test_max_mesh_triangles_exceeded),

@@ -389,6 +389,47 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
  * plain, naming the limit;
  * with 6 units map-pcf itself cannot be forced. Units are placed after
  * the albedo (unit 0) in feature order. */
+/* displace conflicts with volume (CPU silhouettes of the undisplaced mesh):
+ * beside auto volumes it steps down (logged reason), forcing it moves the
+ * shadow chain past volume, forcing both is refused; hidden vertex
+ * textures step it down with the capability named. */
+static void test_displacement_beside_volumes(void **state)
+{
+    stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS), gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT];
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    memset(forced, 0, sizeof forced);
+    gl21.max_texture_image_units = gl45.max_texture_image_units = 16;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
+    assert_true(sel.choice[STIN_FEATURE_DISPLACEMENT].fell_back);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_DISPLACEMENT].reason, "displace cannot run beside"));
+    forced[STIN_FEATURE_DISPLACEMENT] = STIN_TECH_DISPLACEMENT_VTF;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_MAP_PCF);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SHADOWS].reason, "volume cannot run beside a forced"));
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_VTF);
+    assert_int_equal(sel.displace_unit, sel.units_used);
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VOLUME;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "displace cannot run beside"));
+    /* GL4: vdsm shadows displaced geometry, so displace is the default */
+    assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_VTF);
+    assert_false(sel.choice[STIN_FEATURE_DISPLACEMENT].fell_back);
+    gl45.present &= ~BIT(VERTEX_TEXTURE_FETCH);
+    assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_DISPLACEMENT].reason, "vertex texture fetch"));
+    /* never on the fixed-function tier */
+    assert_int_equal(stin__select(&gl21, STIN_TIER_GL1, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
+}
+
 static void test_texture_unit_budget(void **state)
 {
     stin_caps c = caps_with(21, 12, 0, GL21_BITS);
@@ -456,6 +497,7 @@ int main(void)
         cmocka_unit_test(test_technique_tables),
         cmocka_unit_test(test_every_technique_has_a_row_and_a_rank),
         cmocka_unit_test(test_texture_unit_budget),
+        cmocka_unit_test(test_displacement_beside_volumes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

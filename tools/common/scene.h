@@ -53,6 +53,9 @@ typedef struct scene_material {
     char surface[16];          /* requested surface technique, "" = auto */
     int self_shadow;           /* pom self-shadowing: 0 off (default), 1 hard, 2 soft */
     int two_sided;             /* both sides of a closed mesh may be seen (stin_material) */
+    int displace;              /* "displace": move the mesh by the height map (stin_material) */
+    float height_bias;         /* "height_bias": d = h scale - bias; default scale / 2 */
+    int has_height_bias;       /* given in the file; else the default follows height_scale */
 } scene_material;
 
 typedef struct scene_object {

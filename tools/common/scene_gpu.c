@@ -136,6 +136,10 @@ int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err,
         m->height_scale = sm->height_scale > 0.0f ? sm->height_scale : 1e-30f;
         m->self_shadow = sm->self_shadow;
         m->two_sided = sm->two_sided;
+        m->displace = sm->displace;
+        /* stin's 0 is its default (scale / 2): an explicit 0 is the tiniest bias */
+        if (sm->has_height_bias)
+            m->height_bias = sm->height_bias != 0.0f ? sm->height_bias : -1e-30f;
         if (sm->surface[0])
             m->surface = stin_technique_from_name(sm->surface);
     }

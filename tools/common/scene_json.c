@@ -212,7 +212,7 @@ static int texture_slot(scene_parser *p, const cJSON *j, const char *key, const 
 
 void scene_material_defaults(scene_material *m)
 {
-    const scene_material d = { "", { 0.8f, 0.8f, 0.8f, 1 }, { 0, 0, 0 }, 32, -1, -1, -1, 0.04f, "", 0, 0 };
+    const scene_material d = { "", { 0.8f, 0.8f, 0.8f, 1 }, { 0, 0, 0 }, 32, -1, -1, -1, 0.04f, "", 0, 0, 0, 0, 0 };
     char name[SCENE_NAME_MAX];
     memcpy(name, m->name, sizeof name);
     *m = d;
@@ -224,7 +224,8 @@ static int parse_material(scene_parser *p, const cJSON *j, const char *where, sc
 {
     static const char *const keys[] = { "color", "opacity", "specular", "shininess", "albedo",
                                         "normal", "height", "height_scale", "surface",
-                                        "self_shadow", "two_sided", NULL };
+                                        "self_shadow", "two_sided", "displace", "height_bias",
+                                        NULL };
     char self_shadow[8] = "off";
     float shininess;
     char path[256];
@@ -241,7 +242,11 @@ static int parse_material(scene_parser *p, const cJSON *j, const char *where, sc
         !scene_get_number(p, j, "height_scale", where, SCENE_NONNEGATIVE, &m->height_scale) ||
         !scene_get_string(p, j, "surface", where, m->surface, sizeof m->surface) ||
         !scene_get_string(p, j, "self_shadow", where, self_shadow, sizeof self_shadow) ||
-        !scene_get_bool(p, j, "two_sided", where, &m->two_sided))
+        !scene_get_bool(p, j, "two_sided", where, &m->two_sided) ||
+        !scene_get_bool(p, j, "displace", where, &m->displace))
+        return 0;
+    m->has_height_bias = cJSON_GetObjectItemCaseSensitive(j, "height_bias") != NULL;
+    if (!scene_get_number(p, j, "height_bias", where, SCENE_ANY, &m->height_bias))
         return 0;
     m->self_shadow = !strcmp(self_shadow, "hard") ? 1 : !strcmp(self_shadow, "soft") ? 2 : 0;
     if (m->self_shadow == 0 && strcmp(self_shadow, "off")) {

@@ -154,7 +154,7 @@ int main(int argc, char **argv)
     void *block = NULL;
     char err[1024];
     const char *file;
-    int rc = EXIT_FAILED, have_scene = 0, have_gpu = 0;
+    int rc = EXIT_FAILED, have_scene = 0, have_gpu = 0, displace_all, i;
     image img;
     double ms = 0;
     progress pr;
@@ -169,8 +169,14 @@ int main(int argc, char **argv)
     log.verbose = o.verbose;
     log.collect = 1;
     memset(&desc, 0, sizeof desc);
+    /* --surface displace: the displacement feature, every height-mapped material displaced */
+    displace_all = o.surface && stin_technique_feature(stin_technique_from_name(o.surface)) ==
+                                    STIN_FEATURE_DISPLACEMENT;
+    if (displace_all)
+        desc.techniques[STIN_FEATURE_DISPLACEMENT] = stin_technique_from_name(o.surface);
     if (!render_parse_technique(o.shadows, STIN_FEATURE_SHADOWS, &desc.techniques[STIN_FEATURE_SHADOWS]) ||
-        !render_parse_technique(o.surface, STIN_FEATURE_SURFACE, &desc.techniques[STIN_FEATURE_SURFACE]))
+        (!displace_all &&
+         !render_parse_technique(o.surface, STIN_FEATURE_SURFACE, &desc.techniques[STIN_FEATURE_SURFACE])))
         return EXIT_BAD_INPUT;
     if (o.scene_path) {
         progress_start(&pr, "loading %s", o.scene_path);
@@ -179,6 +185,8 @@ int main(int argc, char **argv)
             return EXIT_BAD_INPUT;
         }
         have_scene = 1;
+        for (i = 0; displace_all && i < s.material_count; i++)
+            s.materials[i].displace |= s.materials[i].height >= 0;
         progress_done(&pr, "loaded %s: %d meshes, %d objects, %d textures", o.scene_path,
                       s.mesh_count, s.object_count, s.texture_count);
         print_warnings(s.warnings);

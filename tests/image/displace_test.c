@@ -1,0 +1,363 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Displacement ("displace", GL2/GL4; src/surface_displace.c,
+ * shaders/gl2/displace.glsl) on the scenes with displaced materials, against
+ * the displaced Embree reference (reference_displace.h: the same meshes moved
+ * on the CPU, the height map filtered as GL_LINEAR does at level 0):
+ *   position     P within 1e-3 Z + 2e-3 on >= 99.5% of the pixels covered in
+ *                the render or the reference (silhouettes included: a pixel
+ *                covered in one only counts against). The tolerance is the
+ *                other tests' (image_test.c) plus 1e-3: the GPU's bilinear
+ *                weights are 8-bit fractions on llvmpipe, so h differs from
+ *                the exact bilinear by up to 1/512 of a texel step, which
+ *                moves a vertex by up to height_scale / 512 (0.0007 here).
+ *   silhouette   the render's coverage differs from the undisplaced mesh's
+ *                (reference ray cast of the scene as loaded) on at least
+ *                0.5% of the covered pixels: the displacement changes the
+ *                outline (pom's would not), and the difference is reported
+ *                beside the displaced reference's coverage mismatch.
+ *   shadow-T     light 0's visibility (the visibility output) with shadow
+ *                technique T (map-pcf; vdsm on GL4) against the ray-cast
+ *                visibility of the displaced reference, on pixels whose P
+ *                matches, the light reaches the side seen, and no reference
+ *                shadow edge lies within 2 pixels: at most 1% differ
+ *                (map-pcf's bound, pcf_test.c) and 0.2% for vdsm (exact: its
+ *                edge budget plus the displaced surface's steep steps, where
+ *                the GPU's interpolated point and the reference's hit lie on
+ *                either side of a step). A shadow of the flat mesh fails it.
+ *   fallback     vertex texture units hidden (caps mask): displacement is
+ *                "displacement-off", marked fallen back, and the render's
+ *                coverage is the undisplaced mesh's (within 0.1%).
+ *   guard-band   (camera moved in, the displaced mesh partly off screen) the
+ *                default band (1) and no test at all give bit-identical AOVs;
+ *                a band of 1e-6 must change pixels (triangles crossing the
+ *                screen's edge keep an undisplaced vertex), so the test sees
+ *                the band at work.
+ *   manual-bilinear  four fetches at texel centres blended in the shader:
+ *                the position test's bound against the same reference.
+ *   gl-clean     no GL error, no call outside the profile.
+ * GL1 and contexts without vertex texture units report SKIP with the reason.
+ */
+#include "aov.h"
+#include "capture.h"
+#include "compare.h"
+#include "image_test.h"
+#include "light_reach.h"
+#include "reference.h"
+#include "reference_displace.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define DISP_P_RELATIVE 1e-3
+#define DISP_P_ABSOLUTE 2e-3
+#define DISP_P_MIN_MATCH 0.995
+#define DISP_SILHOUETTE_MIN 0.005
+#define DISP_FALLBACK_MAX 0.001
+#define DISP_EDGE_BAND 2
+#define DISP_PCF_MAX 0.0025
+#define DISP_VDSM_MAX 0.002
+#define DISP_GUARD_NARROW 1e-6f
+
+typedef struct disp_case {
+    run *r;
+    stin_tier tier;
+    char prefix[128];
+    const scene *s;      /* as loaded */
+    scene ds;            /* displaced */
+    ref_hit *hits, *flat_hits;
+    float *ref;          /* reference_render of ds */
+} disp_case;
+
+int displace_scene(const char *path)
+{
+    scene s;
+    char err[256];
+    int yes;
+    if (!scene_load(path, &s, err, sizeof err))
+        return 0;
+    yes = reference_scene_displaces(&s);
+    scene_free(&s);
+    return yes;
+}
+
+static void name_of(const disp_case *c, const char *test, char *out, size_t size)
+{
+    snprintf(out, size, "%s/%s", c->prefix, test);
+}
+
+static int render(disp_case *c, const scene *s, const capture_options *o, capture *cap,
+                  const char *test)
+{
+    char err[512], name[256];
+    if (capture_render(c->r->plat, c->r->profile, s, o, cap, err, sizeof err))
+        return 1;
+    name_of(c, test, name, sizeof name);
+    report(c->r, "FAIL", name, "%s", err);
+    return 0;
+}
+
+static void base_options(const disp_case *c, capture_options *o, stin_technique shadows)
+{
+    memset(o, 0, sizeof *o);
+    o->tier = c->tier;
+    o->shadows = shadows;
+    o->displacement = STIN_TECH_DISPLACEMENT_VTF;
+}
+
+static const float *gl_px(const capture *cap, int w, int h, int x, int y)
+{
+    return cap->img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
+}
+
+/* Pixels whose coverage differs between a render and reference hits. */
+static long coverage_differs(const disp_case *c, const capture *cap, const ref_hit *hits,
+                             long *covered)
+{
+    int w = c->r->width, h = c->r->height, x, y;
+    long n = 0;
+    *covered = 0;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            int g = gl_px(cap, w, h, x, y)[AOV_Z] > 0.0f, f = hits[(size_t)y * w + x].hit;
+            *covered += g || f;
+            n += g != f;
+        }
+    return n;
+}
+
+static void test_position(disp_case *c, const capture *cap, const char *test)
+{
+    compare_tolerance tol = {DISP_P_RELATIVE, DISP_P_ABSOLUTE, 1.0, 180.0};
+    compare_result cr;
+    char name[256];
+    double match;
+    compare_render(&c->ds, &cap->img, c->ref, c->hits, &tol, &cr);
+    match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) / cr.covered : 0;
+    name_of(c, test, name, sizeof name);
+    report(c->r, match >= DISP_P_MIN_MATCH && cr.covered ? "PASS" : "FAIL", name,
+           "P matches the displaced reference on %.3f%% of %ld covered pixels (coverage differs "
+           "on %ld, P on %ld; need %.1f%%)", 100.0 * match, cr.covered, cr.coverage_mismatch,
+           cr.p_mismatch, 100.0 * DISP_P_MIN_MATCH);
+}
+
+static void test_silhouette(disp_case *c, const capture *cap)
+{
+    long covered, flat = coverage_differs(c, cap, c->flat_hits, &covered), cov_ref;
+    long displaced = coverage_differs(c, cap, c->hits, &cov_ref);
+    char name[256];
+    double f = covered ? (double)flat / covered : 0;
+    name_of(c, "silhouette", name, sizeof name);
+    report(c->r, f >= DISP_SILHOUETTE_MIN ? "PASS" : "FAIL", name,
+           "coverage differs from the undisplaced mesh's on %ld of %ld pixels (%.2f%%, need "
+           ">= %.1f%%), from the displaced reference's on %ld", flat, covered, 100.0 * f,
+           100.0 * DISP_SILHOUETTE_MIN, displaced);
+}
+
+static void test_shadow(disp_case *c, stin_technique t, double bound)
+{
+    compare_tolerance tol = {DISP_P_RELATIVE, DISP_P_ABSOLUTE, 1.0, 180.0};
+    capture_options o;
+    capture cap;
+    char test[64], name[256];
+    int w = c->r->width, h = c->r->height, x, y;
+    long compared = 0, differ = 0, shadowed = 0;
+    snprintf(test, sizeof test, "shadow-%s", stin_technique_name(t));
+    name_of(c, test, name, sizeof name);
+    base_options(c, &o, t);
+    if (!render(c, c->s, &o, &cap, test))
+        return;
+    if (cap.choice[STIN_FEATURE_SHADOWS].technique != t) {
+        report(c->r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(t),
+               cap.choice[STIN_FEATURE_SHADOWS].reason);
+        capture_free(&cap);
+        return;
+    }
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const ref_hit *hit = &c->hits[(size_t)y * w + x];
+            const float *g = gl_px(&cap, w, h, x, y);
+            const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
+            double d2 = 0, limit = tol.p_relative * ref[REFERENCE_CH_Z] + tol.p_absolute;
+            int k;
+            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(&c->ds, hit) ||
+                near_shadow_edge(c->hits, c->ref, w, h, x, y, DISP_EDGE_BAND))
+                continue;
+            for (k = 0; k < 3; k++)
+                d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) * (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]);
+            if (d2 > limit * limit)
+                continue;
+            compared++;
+            shadowed += ref[REFERENCE_CH_VIS_R] < 0.5f;
+            differ += (g[AOV_VIS_R] >= 0.5f) != (ref[REFERENCE_CH_VIS_R] >= 0.5f);
+        }
+    report(c->r,
+           compared && shadowed >= 100 && (double)differ <= bound * (double)compared ? "PASS"
+                                                                                       : "FAIL",
+           name, "visibility differs on %ld of %ld pixels (%.3f%%, bound %.1f%%; %ld shadowed "
+           "compared, need >= 100)", differ, compared, compared ? 100.0 * differ / compared : 0.0,
+           100.0 * bound, shadowed);
+    capture_free(&cap);
+}
+
+static void test_fallback(disp_case *c)
+{
+    capture_options o;
+    capture cap;
+    char name[256];
+    long covered, flat;
+    const stin_choice *ch;
+    name_of(c, "fallback", name, sizeof name);
+    base_options(c, &o, STIN_TECH_SHADOWS_OFF);
+    o.displacement = STIN_TECH_NONE;
+    o.extra_mask = STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH);
+    if (!render(c, c->s, &o, &cap, "fallback"))
+        return;
+    ch = &cap.choice[STIN_FEATURE_DISPLACEMENT];
+    flat = coverage_differs(c, &cap, c->flat_hits, &covered);
+    report(c->r,
+           ch->technique == STIN_TECH_DISPLACEMENT_OFF && ch->fell_back &&
+                   (double)flat <= DISP_FALLBACK_MAX * (double)covered
+               ? "PASS"
+               : "FAIL",
+           name, "vertex textures hidden: displacement %s (%s); coverage differs from the "
+           "undisplaced mesh's on %ld of %ld pixels", stin_technique_name(ch->technique),
+           ch->reason, flat, covered);
+    capture_free(&cap);
+}
+
+/* Pixels where any AOV channel differs at all. */
+static long pixels_differ(const capture *a, const capture *b)
+{
+    size_t i, n = (size_t)a->img.width * a->img.height;
+    long d = 0;
+    for (i = 0; i < n; i++)
+        d += memcmp(a->img.pixels + i * AOV_CHANNELS, b->img.pixels + i * AOV_CHANNELS,
+                    sizeof(float) * AOV_CHANNELS) != 0;
+    return d;
+}
+
+static void test_guard_band(disp_case *c)
+{
+    scene near = *c->s;
+    capture_options o;
+    capture on, off, narrow;
+    char name[256];
+    long same, changed;
+    int k;
+    /* the camera moved in: the displaced mesh reaches past the screen's edges */
+    for (k = 0; k < 3; k++)
+        near.camera.eye[k] = near.camera.target[k] + 0.45f * (near.camera.eye[k] - near.camera.target[k]);
+    name_of(c, "guard-band", name, sizeof name);
+    base_options(c, &o, STIN_TECH_SHADOWS_OFF);
+    if (!render(c, &near, &o, &on, "guard-band"))
+        return;
+    o.debug_flags = STIN_DEBUG_DISPLACE_NO_GUARD;
+    if (!render(c, &near, &o, &off, "guard-band")) {
+        capture_free(&on);
+        return;
+    }
+    o.debug_flags = 0;
+    o.guard_band = DISP_GUARD_NARROW;
+    if (!render(c, &near, &o, &narrow, "guard-band")) {
+        capture_free(&on);
+        capture_free(&off);
+        return;
+    }
+    same = pixels_differ(&on, &off);
+    changed = pixels_differ(&narrow, &off);
+    report(c->r, same == 0 && changed > 0 ? "PASS" : "FAIL", name,
+           "band 1 vs no test: %ld pixels differ (need 0); band 1e-6 vs no test: %ld (need > 0)",
+           same, changed);
+    capture_free(&on);
+    capture_free(&off);
+    capture_free(&narrow);
+}
+
+static int setup(disp_case *c, char *err, size_t err_size)
+{
+    reference *ref = NULL, *flat = NULL;
+    size_t n = (size_t)c->r->width * c->r->height;
+    int ok;
+    if (!reference_displace(c->s, &c->ds, err, err_size))
+        return 0;
+    c->hits = malloc(sizeof *c->hits * n);
+    c->flat_hits = malloc(sizeof *c->flat_hits * n);
+    c->ref = malloc(sizeof(float) * REFERENCE_CHANNELS * n);
+    ref = reference_create(&c->ds, err, err_size);
+    flat = reference_create(c->s, err, err_size);
+    ok = ref && flat && c->hits && c->flat_hits && c->ref &&
+         reference_primary(ref, c->r->width, c->r->height, c->hits) &&
+         reference_primary(flat, c->r->width, c->r->height, c->flat_hits) &&
+         reference_render_ex(&c->ds, ref, c->r->width, c->r->height, 0, REFERENCE_RENDER_SHADOWED,
+                             c->ref);
+    if (!ok && ref && flat)
+        snprintf(err, err_size, "reference render failed");
+    reference_destroy(ref);
+    reference_destroy(flat);
+    return ok;
+}
+
+void displace_tests(run *r, stin_tier tier, const char *path)
+{
+    disp_case c;
+    scene s;
+    capture_options o;
+    capture cap;
+    char err[512], name[256];
+    memset(&c, 0, sizeof c);
+    c.r = r;
+    c.tier = tier;
+    snprintf(c.prefix, sizeof c.prefix, "%s/%s/displace", stin_tier_name(tier),
+             scene_base_name(path));
+    if (tier == STIN_TIER_GL1) {
+        report(r, "SKIP", c.prefix, "displace is GLSL only (vertex texture fetch)");
+        return;
+    }
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", c.prefix, "%s", err);
+        return;
+    }
+    c.s = &s;
+    base_options(&c, &o, STIN_TECH_SHADOWS_OFF);
+    o.displacement = STIN_TECH_NONE;
+    if (render(&c, &s, &o, &cap, "position")) {
+        int vtf = (cap.caps_present & STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH)) != 0;
+        capture_free(&cap);
+        if (!vtf) {
+            report(r, "SKIP", c.prefix, "the context has no vertex texture units");
+            scene_free(&s);
+            return;
+        }
+    }
+    if (!setup(&c, err, sizeof err)) {
+        report(r, "FAIL", c.prefix, "reference: %s", err);
+        goto done;
+    }
+    base_options(&c, &o, STIN_TECH_SHADOWS_OFF);
+    if (render(&c, &s, &o, &cap, "position")) {
+        name_of(&c, "gl-clean", name, sizeof name);
+        capture_report_clean(r, name, &cap);
+        test_position(&c, &cap, "position");
+        test_silhouette(&c, &cap);
+        capture_free(&cap);
+    }
+    o.debug_flags = STIN_DEBUG_DISPLACE_MANUAL_BILINEAR;
+    if (render(&c, &s, &o, &cap, "manual-bilinear")) {
+        test_position(&c, &cap, "manual-bilinear");
+        capture_free(&cap);
+    }
+    test_shadow(&c, STIN_TECH_SHADOWS_MAP_PCF, DISP_PCF_MAX);
+    if (tier == STIN_TIER_GL4)
+        test_shadow(&c, STIN_TECH_SHADOWS_VDSM, DISP_VDSM_MAX);
+    test_fallback(&c);
+    test_guard_band(&c);
+done:
+    free(c.hits);
+    free(c.flat_hits);
+    free(c.ref);
+    if (c.ds.meshes)
+        reference_displace_free(&c.ds, &s);
+    scene_free(&s);
+}

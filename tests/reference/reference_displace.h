@@ -1,0 +1,35 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * The displaced geometry of a scene, for the displacement tests: what stin's
+ * "displace" draws (stin.h, displacement). Every object whose material sets
+ * `displace` and has a height map gets its own mesh in world space (identity
+ * transform): each vertex moved along its world normal (the inverse
+ * transpose of the object's 3x3, normalised) by d = h * height_scale -
+ * height_bias, h the height map's R sampled bilinearly at texel centres
+ * with repeat at level 0 (reference_sample_texture: GL_LINEAR, and what the
+ * shader's manual bilinear computes). Normals stay the undisplaced ones
+ * (stin's vertex stage cannot see its neighbours). The result is a scene
+ * for reference_create; the other objects, textures, materials, lights and
+ * camera are shared with the source, which must outlive it.
+ */
+#ifndef STIN_TESTS_REFERENCE_DISPLACE_H
+#define STIN_TESTS_REFERENCE_DISPLACE_H
+
+#include <stddef.h>
+#include "scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* 1 when some object of s is displaced. */
+int reference_scene_displaces(const scene *s);
+/* Fills out (free with reference_displace_free and the same source, never
+ * scene_free). Returns 0 and a message in err on bad input or out of memory. */
+int reference_displace(const scene *s, scene *out, char *err, size_t err_size);
+void reference_displace_free(scene *out, const scene *source);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
