@@ -161,7 +161,7 @@ stin_result stin_bind_visibility(stin_context *ctx, int unit)
 {
     const stin__export_state *e;
     GLint program = 0, active = GL_TEXTURE0, loc;
-    int units;
+    int units, glsl;
     if (!ctx)
         return STIN_ERROR_INVALID_ARGUMENT;
     e = &ctx->visibility;
@@ -173,8 +173,14 @@ stin_result stin_bind_visibility(stin_context *ctx, int unit)
                   "stin_bind_visibility: unit %d is not one of the context's %d", unit, units);
         return STIN_ERROR_INVALID_ARGUMENT;
     }
-    if (ctx->state != STIN__IDLE || !e->valid || !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_GLSL)))
+    glsl = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_GLSL)) != 0;
+    if (ctx->state != STIN__IDLE || !e->valid || !glsl) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE, "stin_bind_visibility: %s",
+                  !glsl                      ? "the context has no GLSL"
+                  : ctx->state != STIN__IDLE ? "a frame is open"
+                                             : "the last frame exported no visibility map");
         return STIN_ERROR_INVALID_STATE;
+    }
     GL(ctx, GetIntegerv)(GL_CURRENT_PROGRAM, &program);
     if (program == 0) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE,

@@ -847,9 +847,10 @@ typedef enum stin_output {
 typedef enum stin_export {
     STIN_EXPORT_NONE = 0,        /* default */
     STIN_EXPORT_VISIBILITY,      /* the frame's output, then every light's visibility */
-    STIN_EXPORT_VISIBILITY_ONLY  /* the opaque draws' depth (into the target; colour is
-                                  * only cleared) and every light's visibility: the
-                                  * application shades with its own shaders */
+    STIN_EXPORT_VISIBILITY_ONLY  /* the opaque draws' depth (into the target, whose colour
+                                  * is cleared as usual and not drawn) and every light's
+                                  * visibility: the application shades with its own
+                                  * shaders */
 } stin_export;
 
 typedef struct stin_frame_desc {
@@ -963,7 +964,8 @@ const char *stin_visibility_glsl(void);
 /* Sets the chunk's uniforms on the program the caller has current
  * (glUseProgram) and binds the visibility map on texture unit `unit`; the
  * active texture unit is given back. STIN_ERROR_INVALID_STATE with no map
- * (see stin_query_visibility_map) or no current program,
+ * (see stin_query_visibility_map), on a context without GLSL or with no
+ * current program (each logged),
  * STIN_ERROR_INVALID_ARGUMENT for a unit the context does not have.
  * A program without the chunk's uniforms is fine (nothing is set). */
 stin_result stin_bind_visibility(stin_context *ctx, int unit);

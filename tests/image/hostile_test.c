@@ -11,6 +11,7 @@
  * (blended draws, surface detail): all cases at once. */
 #include "hostile_cases.h"
 #include "image_test.h"
+#include "test_context.h"
 #include "scene.h"
 #include "scene_gpu.h"
 #include "stin/stin_debug.h"
@@ -164,12 +165,7 @@ static int create(hostile_run *h, stin_technique shadows)
 {
     stin_desc d;
     size_t size;
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = h->r->plat;
-    d.tier = h->tier;
-    d.caps_mask = h->r->profile->caps_mask;
-    d.max_gl_version = h->r->profile->max_gl_version;
+    test_desc(h->r, h->tier, &d);
     d.techniques[STIN_FEATURE_SHADOWS] = shadows;
     scene_gpu_size_desc(h->s, &d);
     size = stin_memory_size(&d);
