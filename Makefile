@@ -31,7 +31,7 @@ TOOL_LIBS := -lOpenImageIO -lOpenImageIO_Util -lassimp -lcjson -lstdc++ -lm
 REF_LIBS := -lembree3
 
 LIB_SRC := $(sort $(wildcard src/*.c))
-SHADERS := $(sort $(wildcard shaders/gl2/*.vert shaders/gl2/*.frag shaders/gl2/*.glsl shaders/gl4/*.vert shaders/gl4/*.frag shaders/gl4/*.geom shaders/gl4/*.glsl))
+SHADERS := $(sort $(wildcard shaders/gl2/*.vert shaders/gl2/*.frag shaders/gl2/*.glsl shaders/gl4/*.vert shaders/gl4/*.frag shaders/gl4/*.geom shaders/gl4/*.tesc shaders/gl4/*.glsl))
 PLATFORM_SRC := $(sort $(wildcard platform/*.c))
 COMMON_SRC := $(sort $(wildcard tools/common/*.c))
 COMMON_CXX := $(sort $(wildcard tools/common/*.cpp))

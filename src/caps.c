@@ -213,6 +213,8 @@ static void detect_limits(const stin__gl *gl, stin_caps *caps, int reported_vers
     }
     if (reported_version >= 32)
         caps->max_geometry_output_vertices = get_int(gl, GL_MAX_GEOMETRY_OUTPUT_VERTICES);
+    if (reported_version >= 32 && gl->PatchParameteri) /* 4.0 or ARB_tessellation_shader */
+        caps->max_tess_gen_level = get_int(gl, GL_MAX_TESS_GEN_LEVEL);
     while (gl->GetError() != GL_NO_ERROR) {
         /* a limit the driver does not know is 0, not an error for the caller */
     }

@@ -20,6 +20,9 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.shadow_map_size = DEFAULT(d.shadow_map_size, 1024u);
     if (d.displace_guard_band == 0.0f)
         d.displace_guard_band = 1.0f;
+    if (d.displace_tess_pixels == 0.0f)
+        d.displace_tess_pixels = 4.0f;
+    d.displace_tess_max = DEFAULT(d.displace_tess_max, 64u);
     return d;
 }
 
@@ -30,7 +33,9 @@ static int desc_valid(const stin_desc *d)
            d->max_meshes <= 65535 && d->max_textures <= 65535 &&
            d->max_mesh_triangles <= d->max_triangles && d->max_vertices < 0x40000000u &&
            d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u &&
-           d->displace_guard_band >= 0.0f && d->displace_guard_band <= 1e30f;
+           d->displace_guard_band >= 0.0f && d->displace_guard_band <= 1e30f &&
+           d->displace_tess_pixels > 0.0f && d->displace_tess_pixels <= 1e30f &&
+           d->displace_tess_max <= 64u;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)

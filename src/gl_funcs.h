@@ -140,6 +140,8 @@
       "glDeleteQueriesARB")                                                                \
     X(void, BlendEquationSeparate, (GLenum rgb, GLenum alpha), NEED_GL30, "")              \
     X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *v), STIN_CAP_OCCLUSION_QUERY, \
-      "glGetQueryObjectuivARB")
+      "glGetQueryObjectuivARB")                                                            \
+    /* GL 4.0 / ARB_tessellation_shader */                                                 \
+    X(void, PatchParameteri, (GLenum pname, GLint value), STIN_CAP_TESSELLATION, "")
 
 #endif

@@ -19,8 +19,9 @@ typedef struct stin__draw {
  * (surface_displace.c); camera: the program draws through the frame's
  * camera (the guard band applies), not from a light. */
 typedef struct stin__displace_locs {
-    GLint map, params, size, normal, clip;
+    GLint map, params, size, normal, clip, tess, tess_eye;
     int camera;
+    int patches;  /* the program is tessellated: its draws are GL_PATCHES of 3 */
 } stin__displace_locs;
 
 /* GLSL programs of one tier. */
@@ -85,7 +86,9 @@ void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__di
 const stin__path *stin__path_of(const stin_context *ctx);
 
 /* frag_chunks: NULL or a NULL-terminated list of embedded files spliced in
- * at the fragment shader's "// @chunks" line (its functions). */
+ * at the fragment shader's "// @chunks" line (its functions). The program
+ * draws meshes: with "displace-tess" it is built tessellated (draw with
+ * stin__displace_primitive). */
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
                            const char *const *frag_chunks, char *msg, size_t size);
 /* A program's stages by embedded file name: geom NULL for none; frag_outputs
@@ -96,6 +99,10 @@ typedef struct stin__program_source {
     const char *vert, *geom, *frag;
     const char *const *frag_chunks;
     const char *frag_outputs[STIN__MAX_FRAG_OUTPUTS];
+    /* 1: a program that draws displaced meshes through vert (which has the
+     * chunk line): with "displace-tess", vert becomes the tessellation
+     * evaluation stage behind gl4/tess.vert and gl4/tess.tesc */
+    int tessellate;
 } stin__program_source;
 GLuint stin__program_build_source(stin_context *ctx, const stin__program_source *src, char *msg,
                                   size_t size);

@@ -282,7 +282,8 @@ void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__di
     GL(ctx, UniformMatrix4fv)(u_model, 1, GL_FALSE, d->transform);
     stin__displace_draw(ctx, dl, d);
     bind_mesh_arrays(ctx, m, d->mesh_slot);
-    GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+    GL(ctx, DrawElements)(stin__displace_primitive(dl), (GLsizei)(3u * m->triangle_count),
+                          GL_UNSIGNED_INT, idx);
 }
 
 /* The one geometry submission of the GLSL path: a draw's transform and
@@ -444,12 +445,14 @@ static void glsl_volume_begin(stin_context *ctx)
 static void glsl_volume_draw(stin_context *ctx, const float model[16], const float *xyzw,
                              uint32_t n)
 {
+    const stin__displace_locs *dl = &ctx->programs[STIN__PROG_VOLUME].displace;
     GL(ctx, UniformMatrix4fv)(ctx->programs[STIN__PROG_VOLUME].u_model, 1, GL_FALSE, model);
+    stin__displace_draw(ctx, dl, NULL); /* volumes are never displaced */
     if (gl4(ctx))
         GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(16u * n), xyzw, GL_STREAM_DRAW);
     else
         GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, xyzw);
-    GL(ctx, DrawArrays)(GL_TRIANGLES, 0, (GLsizei)n);
+    GL(ctx, DrawArrays)(stin__displace_primitive(dl), 0, (GLsizei)n);
 }
 
 static void glsl_volume_end(stin_context *ctx)

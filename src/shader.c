@@ -37,6 +37,16 @@ static const char *shared_chunk(const char *name)
     return stin__shader_source(gl2);
 }
 
+/* The first lines of a tessellation stage: GLSL 4.00, or 1.50 with the
+ * ARB extension (no `precise` there: the blend is written so that a shared
+ * edge's two patches evaluate it in the same order). */
+static const char *tess_version(const stin_context *ctx)
+{
+    if (ctx->caps.glsl_major * 100 + ctx->caps.glsl_minor >= 400)
+        return "#version 400 core\n#define STIN_PRECISE precise\n";
+    return "#version 150\n#extension GL_ARB_tessellation_shader : require\n#define STIN_PRECISE\n";
+}
+
 /* The main file's text up to its "// @chunks" line, then each chunk, then
  * the rest: one shader from several embedded files, without copying (GL
  * takes the pieces with their lengths). */
@@ -44,8 +54,8 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
                       const char *const *chunks, char *msg, size_t size)
 {
     const char *src = stin__shader_source(name), *marker;
-    const GLchar *parts[MAX_CHUNKS + 2];
-    GLint lengths[MAX_CHUNKS + 2];
+    const GLchar *parts[MAX_CHUNKS + 3];
+    GLint lengths[MAX_CHUNKS + 3];
     GLsizei count = 0;
     GLuint s;
     GLint ok = 0;
@@ -59,6 +69,13 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
     if (chunks && chunks[0] && !marker) {
         stin__formatf(msg, size, "shader %s has no %s line for its chunks", name, CHUNK_MARKER);
         return 0;
+    }
+    if (type == GL_TESS_CONTROL_SHADER || type == GL_TESS_EVALUATION_SHADER) {
+        /* the file's #version line gives way to the tessellation one */
+        parts[count] = tess_version(ctx);
+        lengths[count++] = -1;
+        while (*src && *src != '\n')
+            src++;
     }
     parts[count] = src;
     lengths[count++] = marker ? (GLint)(marker - src) : -1;
@@ -90,19 +107,23 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
     return s;
 }
 
-/* Vertex shaders that draw meshes have a chunk line for displacement: the
+/* Vertex shaders that draw meshes have a chunk line: on gl4 the attributes
+ * (or, built as a tessellation evaluation stage, tess_eval.glsl), then the
  * context's displacement chunk of the shader's directory ("gl2/", "gl4/"). */
-static const char *const *vertex_chunks(const stin_context *ctx, const char *vert, char name[40],
-                                        const char *list[2])
+static const char *const *vertex_chunks(const stin_context *ctx, const char *vert, int tess,
+                                        char name[40], const char *list[3])
 {
     const char *src = stin__shader_source(vert);
+    int n = 0;
     if (!src || !find_marker(src))
         return NULL;
+    if (vert[2] == '4')
+        list[n++] = tess ? "gl4/tess_eval.glsl" : "gl4/vertex_attributes.glsl";
     stin__formatf(name, 40, "gl2/%s",
                   stin__displace_built(ctx) ? "displace.glsl" : "displace_none.glsl");
     name[2] = vert[2]; /* the vertex shader's directory: gl2/ or gl4/ */
-    list[0] = name;
-    list[1] = NULL;
+    list[n++] = name;
+    list[n] = NULL;
     return list;
 }
 
@@ -116,6 +137,7 @@ GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag
     src.vert = vert;
     src.frag = frag;
     src.frag_chunks = frag_chunks;
+    src.tessellate = 1;
     return stin__program_build_source(ctx, &src, msg, size);
 }
 
@@ -130,23 +152,35 @@ static void delete_stages(stin_context *ctx, const GLuint *stages, int n)
 GLuint stin__program_build_source(stin_context *ctx, const stin__program_source *src, char *msg,
                                   size_t size)
 {
-    GLuint stages[3] = {0, 0, 0}, p;
+    /* vertex, tessellation control and evaluation, geometry, fragment */
+    GLuint stages[5] = {0, 0, 0, 0, 0}, p;
     GLint ok = 0;
     char log[1024], vname[40];
-    const char *vlist[2];
-    int i;
-    stages[0] = compile(ctx, GL_VERTEX_SHADER, src->vert, vertex_chunks(ctx, src->vert, vname, vlist),
-                        msg, size);
-    if (stages[0] && src->geom)
-        stages[1] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, msg, size);
-    if (stages[0] && (stages[1] || !src->geom))
-        stages[2] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks, msg, size);
-    if (!stages[2]) {
-        delete_stages(ctx, stages, 3);
+    const char *vlist[3];
+    int i, tess = src->tessellate && stin__displace_tessellated(ctx), ok_so_far;
+    if (tess) { /* the program's vertex shader displaces the tessellated points */
+        stages[0] = compile(ctx, GL_VERTEX_SHADER, "gl4/tess.vert", NULL, msg, size);
+        if (stages[0])
+            stages[1] = compile(ctx, GL_TESS_CONTROL_SHADER, "gl4/tess.tesc", NULL, msg, size);
+        if (stages[1])
+            stages[2] = compile(ctx, GL_TESS_EVALUATION_SHADER, src->vert,
+                                vertex_chunks(ctx, src->vert, 1, vname, vlist), msg, size);
+        ok_so_far = stages[2] != 0;
+    } else {
+        stages[0] = compile(ctx, GL_VERTEX_SHADER, src->vert,
+                            vertex_chunks(ctx, src->vert, 0, vname, vlist), msg, size);
+        ok_so_far = stages[0] != 0;
+    }
+    if (ok_so_far && src->geom)
+        ok_so_far = (stages[3] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, msg, size)) != 0;
+    if (ok_so_far)
+        stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks, msg, size);
+    if (!stages[4]) {
+        delete_stages(ctx, stages, 5);
         return 0;
     }
     p = GL(ctx, CreateProgram)();
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < 5; i++)
         if (stages[i])
             GL(ctx, AttachShader)(p, stages[i]);
     GL(ctx, BindAttribLocation)(p, 0, "a_position");
@@ -156,7 +190,7 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     for (i = 0; i < STIN__MAX_FRAG_OUTPUTS && src->frag_outputs[i]; i++)
         GL(ctx, BindFragDataLocation)(p, (GLuint)i, src->frag_outputs[i]);
     GL(ctx, LinkProgram)(p);
-    delete_stages(ctx, stages, 3);
+    delete_stages(ctx, stages, 5);
     GL(ctx, GetProgramiv)(p, GL_LINK_STATUS, &ok);
     if (!ok) {
         log[0] = '\0';

@@ -150,10 +150,12 @@ void stin__vdsm_pyramid_release(stin_context *ctx);
 void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4]);
 void stin__vdsm_pyramid_uniforms(stin_context *ctx);
 /* Shared by the vdsm files (shadow_vdsm.c): a program of embedded shaders
- * (geom may be NULL; out1 names a second output after o_position), and the
+ * (geom may be NULL; out1 names a second output after o_position;
+ * tessellate as in stin__program_source), and the
  * deletion of three programs (each set to 0). */
 GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
-                          const char *frag, const char *out1, char *msg, size_t size);
+                          const char *frag, const char *out1, int tessellate, char *msg,
+                          size_t size);
 void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint *c);
 /* A full-viewport quad through the bound program (shadow_vdsm.c). */
 void stin__vdsm_screen_quad(stin_context *ctx);

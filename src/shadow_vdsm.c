@@ -17,10 +17,12 @@
 #include "internal.h"
 
 GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
-                          const char *frag, const char *out1, char *msg, size_t size)
+                          const char *frag, const char *out1, int tessellate, char *msg,
+                          size_t size)
 {
     stin__program_source src;
     stin__memzero(&src, sizeof src);
+    src.tessellate = tessellate;
     src.vert = vert;
     src.geom = geom;
     src.frag = frag;
@@ -108,13 +110,13 @@ static stin_result vdsm_init(stin_context *ctx)
     }
     msg[0] = '\0';
     v->position_prog = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL, "gl4/vdsm_position.frag",
-                             "o_normal", msg, sizeof msg);
+                             "o_normal", 1, msg, sizeof msg);
     if (v->position_prog)
         v->facing_prog = stin__vdsm_program(ctx, "gl4/vdsm_screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
-                               msg, sizeof msg);
+                               0, msg, sizeof msg);
     if (v->facing_prog)
         v->polygon_prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag", NULL,
-                                msg, sizeof msg);
+                                1, msg, sizeof msg);
     if (!v->polygon_prog) {
         release(ctx);
         stin__formatf(why, sizeof why, "its shaders failed to build (%s)", msg);

@@ -123,13 +123,13 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
     int size = (int)(ctx->desc.shadow_map_size < MAX_SIZE ? ctx->desc.shadow_map_size : MAX_SIZE);
     msg[0] = '\0';
     p->light_prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm_light.geom",
-                                       "gl4/vdsm_light.frag", NULL, msg, sizeof msg);
+                                       "gl4/vdsm_light.frag", NULL, 0, msg, sizeof msg);
     if (p->light_prog)
         p->receiver_prog = stin__vdsm_program(ctx, "gl4/vdsm_receiver.vert", NULL,
-                                              "gl4/vdsm_receiver.frag", NULL, msg, sizeof msg);
+                                              "gl4/vdsm_receiver.frag", NULL, 0, msg, sizeof msg);
     if (p->receiver_prog)
         p->reduce_prog = stin__vdsm_program(ctx, "gl4/vdsm_screen.vert", NULL,
-                                            "gl4/vdsm_reduce.frag", NULL, msg, sizeof msg);
+                                            "gl4/vdsm_reduce.frag", NULL, 0, msg, sizeof msg);
     if (!p->reduce_prog) {
         stin__vdsm_pyramid_release(ctx);
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,

@@ -25,12 +25,14 @@ void stin__state_save(stin_context *ctx)
     stin__caller_state_defaults(ctx);
     if (fixed)
         stin__caller_state_fixed_begin(ctx);
+    stin__displace_frame_begin(ctx);
 }
 
 void stin__state_restore(stin_context *ctx)
 {
     uint64_t caps = ctx->caps.present;
     int fixed = uses_fixed_function(ctx);
+    stin__displace_frame_end(ctx);
     if (fixed) {
         stin__caller_state_fixed_end(ctx);
         GL(ctx, PopAttrib)();

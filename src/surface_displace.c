@@ -3,8 +3,11 @@
  * height map in every vertex stage that draws meshes (shaders/gl2/
  * displace.glsl, spliced in by shader.c), so the lit, ambient, flat and
  * normal passes, shadow-map depth and vdsm's buffers all see one displaced
- * surface. Here: the per-draw uniforms, the height map's vertex unit, the
- * step down beside stencil volumes and the coarse-mesh log. */
+ * surface; "displace-tess" (GL4 with tessellation) runs the same vertex
+ * shaders as evaluation stages behind gl4/tess.tesc's screen-space edge
+ * levels. Here: the per-frame tessellation scale, the per-draw uniforms,
+ * the height map's vertex unit, the step down beside stencil volumes and
+ * the coarse-mesh log. */
 #include "internal.h"
 
 /* Average edge of a mesh in texels of a map above which VTF shows facets. */
@@ -12,7 +15,48 @@
 
 int stin__displace_built(const stin_context *ctx)
 {
-    return ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique == STIN_TECH_DISPLACEMENT_VTF;
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique;
+    return t == STIN_TECH_DISPLACEMENT_VTF || t == STIN_TECH_DISPLACEMENT_TESS;
+}
+
+int stin__displace_tessellated(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique == STIN_TECH_DISPLACEMENT_TESS;
+}
+
+void stin__displace_frame_begin(stin_context *ctx)
+{
+    const float *view = ctx->frame.view, *proj = ctx->frame.projection;
+    float inv[16];
+    GLint levels = ctx->caps.max_tess_gen_level > 0 ? ctx->caps.max_tess_gen_level : 64;
+    int k;
+    if (!stin__displace_tessellated(ctx))
+        return;
+    /* pixels a unit spans at eye distance 1 (perspective) or anywhere
+     * (orthographic): the projection's y scale over half the viewport */
+    ctx->displace.tess[0] = proj[5] * 0.5f * (float)ctx->frame.viewport[3];
+    ctx->displace.tess[1] = ctx->desc.displace_tess_pixels;
+    ctx->displace.tess[2] = (float)((GLint)ctx->desc.displace_tess_max < levels
+                                        ? (GLint)ctx->desc.displace_tess_max
+                                        : levels);
+    ctx->displace.tess[3] = proj[11] != 0.0f ? 1.0f : 0.0f;
+    if (!stin__mat4_invert(inv, view))
+        stin__mat4_identity(inv); /* begin checked the view: not reached */
+    for (k = 0; k < 3; k++)
+        ctx->displace.tess_eye[k] = inv[12 + k];
+    GL(ctx, GetIntegerv)(GL_PATCH_VERTICES, &ctx->displace.caller_patch_vertices);
+    GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, 3);
+}
+
+void stin__displace_frame_end(stin_context *ctx)
+{
+    if (stin__displace_tessellated(ctx) && ctx->displace.caller_patch_vertices > 0)
+        GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, ctx->displace.caller_patch_vertices);
+}
+
+GLenum stin__displace_primitive(const stin__displace_locs *l)
+{
+    return l && l->patches ? GL_PATCHES : GL_TRIANGLES;
 }
 
 void stin__displace_init(stin_context *ctx)
@@ -37,6 +81,10 @@ void stin__displace_locate(stin_context *ctx, GLuint program, int camera, stin__
     out->size = GL(ctx, GetUniformLocation)(program, "u_displace_size");
     out->normal = GL(ctx, GetUniformLocation)(program, "u_displace_normal");
     out->clip = GL(ctx, GetUniformLocation)(program, "u_displace_clip");
+    /* only gl4/tess.tesc declares these: the program was built tessellated */
+    out->tess = GL(ctx, GetUniformLocation)(program, "u_tess");
+    out->tess_eye = GL(ctx, GetUniformLocation)(program, "u_tess_eye");
+    out->patches = stin__displace_tessellated(ctx) && out->tess >= 0;
     out->camera = camera;
 }
 
@@ -67,8 +115,9 @@ void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const 
     float p[4] = {0.0f, 0.0f, 0.0f, -1.0f}, size[4], nm[9];
     if (!l || l->params < 0)
         return;
-    t = stin__displace_active(ctx, &d->material) ? stin__texture_lookup(ctx, d->material.height_map)
-                                                 : NULL;
+    t = d && stin__displace_active(ctx, &d->material)
+            ? stin__texture_lookup(ctx, d->material.height_map)
+            : NULL;
     if (!t) {
         GL(ctx, Uniform4fv)(l->params, 1, p);
         return;
@@ -89,6 +138,10 @@ void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const 
     GL(ctx, UniformMatrix3fv)(l->normal, 1, GL_FALSE, nm);
     if (l->clip >= 0)
         GL(ctx, UniformMatrix4fv)(l->clip, 1, GL_FALSE, ctx->view_proj);
+    if (l->patches) {
+        GL(ctx, Uniform4fv)(l->tess, 1, ctx->displace.tess);
+        GL(ctx, Uniform3fv)(l->tess_eye, 1, ctx->displace.tess_eye);
+    }
     GL(ctx, Uniform1i)(l->map, ctx->sel.displace_unit);
     stin__bind_unit(ctx, ctx->sel.displace_unit, GL_TEXTURE_2D, t->name);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);

@@ -44,10 +44,13 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     {STIN_TECH_TRANSLUCENT_SOLID,      0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* vertex texture fetch of the height map in every mesh-drawing vertex
-     * stage; volumes' CPU silhouettes would be the undisplaced mesh's */
-    {STIN_TECH_DISPLACEMENT_VTF,       0, BIT(GLSL) | BIT(VERTEX_TEXTURE_FETCH), GLSL_ANY,
+     * stage (after tessellation where there is one); volumes' CPU
+     * silhouettes would be the undisplaced mesh's */
+    {STIN_TECH_DISPLACEMENT_TESS,      0, TIER4 | BIT(VERTEX_TEXTURE_FETCH) | BIT(TESSELLATION),
+     STIN_TECH_LIGHTING_GLSL150, STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, NULL, 0},
+    {STIN_TECH_DISPLACEMENT_VTF,       1, BIT(GLSL) | BIT(VERTEX_TEXTURE_FETCH), GLSL_ANY,
      STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, NULL, 0},
-    {STIN_TECH_DISPLACEMENT_OFF,       1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_DISPLACEMENT_OFF,       2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     {STIN_TECH_CSG_OFF,                0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
 };
 

@@ -388,6 +388,7 @@ typedef struct stin_caps {
                                    * whichever has the larger stencil; frames probe their own */
     int max_draw_buffers;
     int max_geometry_output_vertices;
+    int max_tess_gen_level;       /* 0 without tessellation */
     char renderer[64];            /* GL_RENDERER, truncated */
 } stin_caps;
 
@@ -508,7 +509,21 @@ const char *stin_feature_name(stin_feature f);
  * repeat) at level 0; STIN_DEBUG_DISPLACE_MANUAL_BILINEAR fetches the four
  * texels at their centres and blends them in the shader instead (for
  * drivers whose vertex textures are nearest-only; the same surface within
- * rounding). Vertices whose undisplaced clip position lies outside the view
+ * rounding).
+ * "displace-tess" (GL4 with tessellation shaders: GL 4.0 or
+ * ARB_tessellation_shader, capability "tessellation shaders") is the top of
+ * the chain: every program that draws meshes gets a tessellation stage, and
+ * each triangle of a displaced draw is split before the same vertex chunk
+ * displaces the new points. An edge's level is its length in the camera's
+ * pixels over desc.displace_tess_pixels (default 4), from 1 up to
+ * desc.displace_tess_max (default 64), computed from that edge's two ends
+ * only, so neighbouring triangles split a shared edge alike and no crack
+ * opens; light passes use the camera's levels, so maps and vdsm shadow the
+ * surface the camera sees. Undisplaced draws keep their triangles. Without
+ * tessellation "displace" moves the mesh's own vertices (the choice's
+ * reason says so). The frame sets GL_PATCH_VERTICES to 3 and gives the
+ * caller's value back.
+ * Vertices whose undisplaced clip position lies outside the view
  * volume grown by desc.displace_guard_band (a fraction of the volume's
  * half-size each side, default 1) are not displaced in the camera's passes
  * (no fetch): a triangle with a vertex that far out and pixels on screen,
@@ -536,7 +551,8 @@ const char *stin_feature_name(stin_feature f);
     X(DISPLACEMENT_OFF, "displacement-off", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL1) \
     X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)                 \
     X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)           \
-    X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2)
+    X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
+    X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -589,6 +605,12 @@ typedef struct stin_desc {
                                         * fraction of its half-size each side before
                                         * a vertex is left undisplaced; default (0) 1,
                                         * finite and >= 0 */
+    float displace_tess_pixels;        /* "displace-tess": the edge length, in the
+                                        * camera's pixels, tessellation aims at;
+                                        * default (0) 4, finite and > 0 */
+    uint32_t displace_tess_max;        /* "displace-tess": highest level an edge is
+                                        * split to, default (0) 64, at most 64 (and
+                                        * the driver's GL_MAX_TESS_GEN_LEVEL) */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame

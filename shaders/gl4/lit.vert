@@ -7,16 +7,14 @@ invariant gl_Position;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 uniform mat3 u_normal_matrix;
-in vec4 a_position;
-in vec3 a_normal;
-in vec2 a_uv;
-in vec4 a_tangent;
 out vec3 v_world;
 out vec3 v_normal;
 out vec2 v_uv;
 out vec4 v_tangent;
 
-// the displacement chunk (gl2's displace.glsl or displace_none.glsl)
+// the attributes (vertex_attributes.glsl, or tess_eval.glsl for a
+// tessellation evaluation stage) and the displacement chunk (gl2's
+// displace.glsl or displace_none.glsl)
 #define texture2DLod textureLod
 // @chunks
 

@@ -5,12 +5,11 @@
 invariant gl_Position;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
-in vec4 a_position;
-in vec3 a_normal; // displacement
-in vec2 a_uv;
 out vec3 v_world;
 
-// the displacement chunk (gl2's displace.glsl or displace_none.glsl)
+// the attributes (vertex_attributes.glsl, or tess_eval.glsl for a
+// tessellation evaluation stage) and the displacement chunk (gl2's
+// displace.glsl or displace_none.glsl)
 #define texture2DLod textureLod
 // @chunks
 

@@ -183,6 +183,7 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: *data = c->max_vertex_texture_units; break;
     case GL_MAX_DRAW_BUFFERS: *data = c->max_draw_buffers; break;
     case GL_MAX_GEOMETRY_OUTPUT_VERTICES: *data = c->max_geometry_output_vertices; break;
+    case GL_MAX_TESS_GEN_LEVEL: *data = c->max_tess_gen_level; break;
     case GL_NUM_EXTENSIONS: *data = c->extension_count; break;
     case GL_CONTEXT_PROFILE_MASK: *data = c->core_profile ? GL_CONTEXT_CORE_PROFILE_BIT : 2; break;
     default:
@@ -569,6 +570,7 @@ fake_gl_config fake_gl_profile(fake_gl_profile_id id)
         c.max_vertex_texture_units = 32;
         c.max_draw_buffers = 8;
         c.max_geometry_output_vertices = 256;
+        c.max_tess_gen_level = id == FAKE_GL45_CORE ? 64 : 0;
         break;
     }
     return c;

@@ -36,6 +36,7 @@ typedef struct fake_gl_config {
     int max_lights, stencil_bits, depth_bits, max_texture_size, max_texture_units;
     int max_texture_image_units, max_vertex_texture_units, max_draw_buffers;
     int max_geometry_output_vertices;
+    int max_tess_gen_level;
     const char *const *missing;          /* NULL-terminated names ("glGenBuffers") that do not resolve */
     int fail_glsl_from;                  /* shaders with "#version N", N >= this, fail to
                                           * compile (e.g. 150); 0 = every shader compiles */

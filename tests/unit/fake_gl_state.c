@@ -125,6 +125,7 @@ void fake_gl_state_init(fake_gl_glstate *s)
     s->blend_src_rgb = s->blend_src_alpha = GL_ONE;
     s->blend_dst_rgb = s->blend_dst_alpha = GL_ZERO;
     s->blend_equation = 0x8006; /* GL_FUNC_ADD */
+    s->patch_vertices = 3;
     s->polygon_mode[0] = s->polygon_mode[1] = 0x1B02; /* GL_FILL */
     s->depth_range[1] = 1.0f;
     for (i = 0; i < 2; i++) {
@@ -375,6 +376,13 @@ void STIN_APIENTRY fake_BlendEquation(GLenum mode)
 {
     COUNT(BlendEquation);
     S.blend_equation = mode;
+}
+
+void STIN_APIENTRY fake_PatchParameteri(GLenum pname, GLint value)
+{
+    COUNT(PatchParameteri);
+    if (pname == 0x8E72) /* GL_PATCH_VERTICES */
+        S.patch_vertices = value;
 }
 
 void STIN_APIENTRY fake_PolygonMode(GLenum face, GLenum mode)
@@ -1046,6 +1054,7 @@ int fake_gl_state_get(GLenum pname, GLint *data)
     case 0x0BA5: *data = (GLint)u->matrix_depth; return 1;      /* GL_TEXTURE_STACK_DEPTH */
     case 0x0BC1: *data = (GLint)S.alpha_func; return 1;         /* GL_ALPHA_TEST_FUNC */
     case 0x8009: *data = (GLint)S.blend_equation; return 1;     /* GL_BLEND_EQUATION */
+    case 0x8E72: *data = S.patch_vertices; return 1;            /* GL_PATCH_VERTICES */
     case 0x0B40: return get_ints(data, (const GLint *)S.polygon_mode, 2); /* GL_POLYGON_MODE */
     case 0x0B91: *data = S.clear_stencil; return 1;             /* GL_STENCIL_CLEAR_VALUE */
     default: break;
@@ -1307,6 +1316,7 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(blend_src_alpha, K_ENUM);
     WORD(blend_dst_alpha, K_ENUM);
     WORD(blend_equation, K_ENUM);
+    WORD(patch_vertices, K_INT);
     for (i = 0; i < 2; i++) {
         d->prefix = i ? "stencil back." : "stencil front.";
         diff_stencil(d, &a->stencil[i], &b->stencil[i]);

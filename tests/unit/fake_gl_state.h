@@ -145,6 +145,7 @@ typedef struct fake_gl_glstate {
     GLuint depth_mask, color_mask[4];
     GLenum blend_src_rgb, blend_dst_rgb, blend_src_alpha, blend_dst_alpha;
     GLenum blend_equation;
+    GLint patch_vertices;                  /* GL 4.0 */
     fake_gl_stencil stencil[2];            /* front, back */
     GLenum active_stencil_face;            /* EXT_stencil_two_side */
     GLenum alpha_func;
@@ -266,6 +267,7 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_PolygonMode ~, 1
 #define FAKE_STATE_DepthRange ~, 1
 #define FAKE_STATE_BlendEquation ~, 1
+#define FAKE_STATE_PatchParameteri ~, 1
 #define FAKE_STATE_BindSampler ~, 1
 #define FAKE_STATE_PixelTransferf ~, 1
 #define FAKE_STATE_PushAttrib ~, 1 /* fake_gl_attrib.c */

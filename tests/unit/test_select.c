@@ -417,10 +417,20 @@ static void test_displacement_beside_volumes(void **state)
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
     assert_non_null(strstr(msg, "displace cannot run beside"));
-    /* GL4: vdsm shadows displaced geometry, so displace is the default */
+    /* GL4: vdsm shadows displaced geometry, so displace is the default,
+     * tessellated where the context has tessellation shaders */
+    assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_TESS);
+    assert_false(sel.choice[STIN_FEATURE_DISPLACEMENT].fell_back);
+    gl45.present &= ~BIT(TESSELLATION);
     assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_VTF);
-    assert_false(sel.choice[STIN_FEATURE_DISPLACEMENT].fell_back);
+    /* tessellation is GL4 only: forcing it on GL2 is an error naming what is missing */
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_NONE;
+    forced[STIN_FEATURE_DISPLACEMENT] = STIN_TECH_DISPLACEMENT_TESS;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "displace-tess"));
     gl45.present &= ~BIT(VERTEX_TEXTURE_FETCH);
     assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);

@@ -373,6 +373,8 @@ static void hostile_values(fake_gl_glstate *s)
             s->enabled[hostile_caps[i].cap] = 1;
     if (gl_version() >= 14)
         s->blend_equation = 0x8008; /* GL_MAX */
+    if (gl_version() >= 40)
+        s->patch_vertices = 4; /* kept: stin gives it back */
     s->polygon_mode[0] = s->polygon_mode[1] = 0x1B01; /* GL_LINE */
     s->depth_range[0] = 0.25f;
     s->depth_range[1] = 0.75f;
