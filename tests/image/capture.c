@@ -41,6 +41,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.techniques[STIN_FEATURE_SURFACE] = o->surface;
     d.techniques[STIN_FEATURE_DISPLACEMENT] = o->displacement;
     d.displace_guard_band = o->guard_band;
+    d.displace_tess_pixels = o->tess_pixels;
     d.debug_flags = o->debug_flags;
     d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);

@@ -19,6 +19,7 @@ typedef struct capture_options {
     stin_technique surface;   /* forced surface technique; NONE = auto */
     stin_technique displacement; /* forced displacement technique; NONE = auto */
     float guard_band;         /* stin_desc.displace_guard_band; 0 = stin's default */
+    float tess_pixels;        /* stin_desc.displace_tess_pixels; 0 = stin's default */
 } capture_options;
 
 typedef struct capture {

@@ -36,7 +36,28 @@
  *   manual-bilinear  four fetches at texel centres blended in the shader:
  *                the position test's bound against the same reference.
  *   gl-clean     no GL error, no call outside the profile.
- * GL1 and contexts without vertex texture units report SKIP with the reason.
+ *   tess-level1  (GL4) "displace-tess" with a target edge length above
+ *                every edge (level 1 everywhere) draws the VTF surface: every
+ *                AOV within one 8-bit level of "displace"'s (the tessellator
+ *                may emit a triangle's corners in another order, which moves
+ *                interpolated values by ulps).
+ * A scene whose displaced mesh is coarse for its height map (edges spanning
+ * more than 4 texels on average, stin's own "coarse" log) is a tessellation
+ * scene: GL4 only, "displace-tess" against the reference of the tessellated
+ * limit (reference_displace_split, every triangle split 48 x 48):
+ *   tess-position  the position test's bound, silhouettes included.
+ *   tess-silhouette  coverage differs from the flat mesh's (as above).
+ *   tess-cracks  pixels the render leaves background (the scene puts sky
+ *                behind the displaced mesh) while the reference and all 8
+ *                of its neighbours hit: must be 0 - a crack between two
+ *                patches that split a shared edge differently shows here.
+ *   tess-shadow-T  the shadow test above against the limit (map-pcf at its
+ *                own bound, 1%: this relief has far more grazing slopes).
+ *   vtf-coarse   "displace" on the same coarse mesh against the same limit
+ *                must miss the position bound (below 95%): the test sees
+ *                what tessellation adds.
+ * GL1 and contexts without vertex texture units report SKIP with the reason;
+ * so do contexts without tessellation shaders for the tessellation tests.
  */
 #include "aov.h"
 #include "capture.h"
@@ -46,6 +67,7 @@
 #include "reference.h"
 #include "reference_displace.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -59,10 +81,19 @@
 #define DISP_PCF_MAX 0.0025
 #define DISP_VDSM_MAX 0.002
 #define DISP_GUARD_NARROW 1e-6f
+#define DISP_COARSE_TEXELS 4.0
+#define DISP_LIMIT_SPLIT 48
+#define DISP_VTF_COARSE_MAX 0.95
+/* level 1 draws the same triangles, but the tessellator may emit their
+ * corners in another order: interpolation moves by ulps, a colour by a level */
+#define DISP_LEVEL1_EPS (1.0 / 255.0 + 1e-6)
+#define DISP_PCF_TESS_MAX 0.01 /* pcf_test.c's bound: the relief's many grazing slopes */
 
 typedef struct disp_case {
     run *r;
     stin_tier tier;
+    stin_technique displacement; /* what the renders force */
+    int tessellation;            /* the context has tessellation shaders */
     char prefix[128];
     const scene *s;      /* as loaded */
     scene ds;            /* displaced */
@@ -103,7 +134,7 @@ static void base_options(const disp_case *c, capture_options *o, stin_technique 
     memset(o, 0, sizeof *o);
     o->tier = c->tier;
     o->shadows = shadows;
-    o->displacement = STIN_TECH_DISPLACEMENT_VTF;
+    o->displacement = c->displacement;
 }
 
 static const float *gl_px(const capture *cap, int w, int h, int x, int y)
@@ -127,14 +158,18 @@ static long coverage_differs(const disp_case *c, const capture *cap, const ref_h
     return n;
 }
 
-static void test_position(disp_case *c, const capture *cap, const char *test)
+static double position_match(disp_case *c, const capture *cap, compare_result *cr)
 {
     compare_tolerance tol = {DISP_P_RELATIVE, DISP_P_ABSOLUTE, 1.0, 180.0};
+    compare_render(&c->ds, &cap->img, c->ref, c->hits, &tol, cr);
+    return cr->covered ? 1.0 - (double)(cr->p_mismatch + cr->coverage_mismatch) / cr->covered : 0;
+}
+
+static void test_position(disp_case *c, const capture *cap, const char *test)
+{
     compare_result cr;
     char name[256];
-    double match;
-    compare_render(&c->ds, &cap->img, c->ref, c->hits, &tol, &cr);
-    match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) / cr.covered : 0;
+    double match = position_match(c, cap, &cr);
     name_of(c, test, name, sizeof name);
     report(c->r, match >= DISP_P_MIN_MATCH && cr.covered ? "PASS" : "FAIL", name,
            "P matches the displaced reference on %.3f%% of %ld covered pixels (coverage differs "
@@ -142,20 +177,20 @@ static void test_position(disp_case *c, const capture *cap, const char *test)
            cr.p_mismatch, 100.0 * DISP_P_MIN_MATCH);
 }
 
-static void test_silhouette(disp_case *c, const capture *cap)
+static void test_silhouette(disp_case *c, const capture *cap, const char *test)
 {
     long covered, flat = coverage_differs(c, cap, c->flat_hits, &covered), cov_ref;
     long displaced = coverage_differs(c, cap, c->hits, &cov_ref);
     char name[256];
     double f = covered ? (double)flat / covered : 0;
-    name_of(c, "silhouette", name, sizeof name);
+    name_of(c, test, name, sizeof name);
     report(c->r, f >= DISP_SILHOUETTE_MIN ? "PASS" : "FAIL", name,
            "coverage differs from the undisplaced mesh's on %ld of %ld pixels (%.2f%%, need "
            ">= %.1f%%), from the displaced reference's on %ld", flat, covered, 100.0 * f,
            100.0 * DISP_SILHOUETTE_MIN, displaced);
 }
 
-static void test_shadow(disp_case *c, stin_technique t, double bound)
+static void test_shadow(disp_case *c, stin_technique t, double bound, const char *prefix)
 {
     compare_tolerance tol = {DISP_P_RELATIVE, DISP_P_ABSOLUTE, 1.0, 180.0};
     capture_options o;
@@ -163,7 +198,7 @@ static void test_shadow(disp_case *c, stin_technique t, double bound)
     char test[64], name[256];
     int w = c->r->width, h = c->r->height, x, y;
     long compared = 0, differ = 0, shadowed = 0;
-    snprintf(test, sizeof test, "shadow-%s", stin_technique_name(t));
+    snprintf(test, sizeof test, "%sshadow-%s", prefix, stin_technique_name(t));
     name_of(c, test, name, sizeof name);
     base_options(c, &o, t);
     if (!render(c, c->s, &o, &cap, test))
@@ -195,7 +230,7 @@ static void test_shadow(disp_case *c, stin_technique t, double bound)
     report(c->r,
            compared && shadowed >= 100 && (double)differ <= bound * (double)compared ? "PASS"
                                                                                        : "FAIL",
-           name, "visibility differs on %ld of %ld pixels (%.3f%%, bound %.1f%%; %ld shadowed "
+           name, "visibility differs on %ld of %ld pixels (%.3f%%, bound %.2f%%; %ld shadowed "
            "compared, need >= 100)", differ, compared, compared ? 100.0 * differ / compared : 0.0,
            100.0 * bound, shadowed);
     capture_free(&cap);
@@ -275,12 +310,12 @@ static void test_guard_band(disp_case *c)
     capture_free(&narrow);
 }
 
-static int setup(disp_case *c, char *err, size_t err_size)
+static int setup(disp_case *c, int split, char *err, size_t err_size)
 {
     reference *ref = NULL, *flat = NULL;
     size_t n = (size_t)c->r->width * c->r->height;
     int ok;
-    if (!reference_displace(c->s, &c->ds, err, err_size))
+    if (!reference_displace_split(c->s, split, &c->ds, err, err_size))
         return 0;
     c->hits = malloc(sizeof *c->hits * n);
     c->flat_hits = malloc(sizeof *c->flat_hits * n);
@@ -299,6 +334,142 @@ static int setup(disp_case *c, char *err, size_t err_size)
     return ok;
 }
 
+/* Background pixels of the render inside the reference's coverage: the
+ * reference and its 8 neighbours hit (away from the outline). */
+static long cracks(const disp_case *c, const capture *cap)
+{
+    int w = c->r->width, h = c->r->height, x, y, dx, dy;
+    long n = 0;
+    for (y = 1; y + 1 < h; y++)
+        for (x = 1; x + 1 < w; x++) {
+            int inside = 1;
+            for (dy = -1; dy <= 1; dy++)
+                for (dx = -1; dx <= 1; dx++)
+                    inside &= c->hits[(size_t)(y + dy) * w + x + dx].hit;
+            n += inside && !(gl_px(cap, w, h, x, y)[AOV_Z] > 0.0f);
+        }
+    return n;
+}
+
+/* 1 when a displaced mesh's edges span more than DISP_COARSE_TEXELS texels
+ * of its height map on average (stin's coarse-mesh log). */
+static int coarse_scene(const scene *s)
+{
+    int i;
+    for (i = 0; i < s->object_count; i++) {
+        const scene_object *o = &s->objects[i];
+        const scene_mesh *m;
+        const scene_texture *t;
+        double sum = 0;
+        uint32_t k;
+        if (o->material < 0 || o->mesh < 0 || !s->materials[o->material].displace ||
+            s->materials[o->material].height < 0)
+            continue;
+        m = &s->meshes[o->mesh];
+        t = &s->textures[s->materials[o->material].height];
+        if (!m->uvs || !m->triangle_count)
+            continue;
+        for (k = 0; k < 3 * m->triangle_count; k++) {
+            uint32_t a = m->indices[k], b = m->indices[k % 3 == 2 ? k - 2 : k + 1];
+            double du = m->uvs[2 * a] - m->uvs[2 * b], dv = m->uvs[2 * a + 1] - m->uvs[2 * b + 1];
+            sum += sqrt(du * du + dv * dv);
+        }
+        if (sum / (3.0 * m->triangle_count) * (t->width > t->height ? t->width : t->height) >
+            DISP_COARSE_TEXELS)
+            return 1;
+    }
+    return 0;
+}
+
+/* Level 1 everywhere: the tessellated programs draw the VTF surface. */
+static void test_tess_level1(disp_case *c)
+{
+    capture_options o;
+    capture tess, vtf;
+    char name[256];
+    long n;
+    name_of(c, "tess-level1", name, sizeof name);
+    if (!c->tessellation) {
+        report(c->r, "SKIP", name, "the context has no tessellation shaders (GL 4.0)");
+        return;
+    }
+    c->displacement = STIN_TECH_DISPLACEMENT_VTF;
+    base_options(c, &o, STIN_TECH_SHADOWS_VDSM);
+    if (!render(c, c->s, &o, &vtf, "tess-level1"))
+        return;
+    o.displacement = STIN_TECH_DISPLACEMENT_TESS;
+    o.tess_pixels = 1e6f;
+    if (!render(c, c->s, &o, &tess, "tess-level1")) {
+        capture_free(&vtf);
+        return;
+    }
+    {
+        size_t i, px = (size_t)tess.img.width * tess.img.height;
+        double worst = 0;
+        n = 0;
+        for (i = 0; i < px; i++) {
+            double d = 0;
+            int k;
+            for (k = 0; k < AOV_CHANNELS; k++) {
+                double e = fabs((double)tess.img.pixels[i * AOV_CHANNELS + k] -
+                                vtf.img.pixels[i * AOV_CHANNELS + k]);
+                d = e > d ? e : d;
+            }
+            worst = d > worst ? d : worst;
+            n += d > DISP_LEVEL1_EPS;
+        }
+        report(c->r, n == 0 ? "PASS" : "FAIL", name,
+               "displace-tess at level 1 vs displace (vdsm shadows): %ld pixels differ by more "
+               "than one 8-bit level in any AOV (need 0); largest difference %g, %ld differ at all", n, worst,
+               pixels_differ(&tess, &vtf));
+    }
+    capture_free(&tess);
+    capture_free(&vtf);
+}
+
+/* A coarse scene under "displace-tess" against the tessellated limit. */
+static void tess_tests(disp_case *c)
+{
+    capture_options o;
+    capture cap;
+    compare_result cr;
+    char name[256];
+    double match;
+    name_of(c, "tess", name, sizeof name);
+    if (!c->tessellation) {
+        report(c->r, "SKIP", name, "the context has no tessellation shaders (GL 4.0)");
+        return;
+    }
+    c->displacement = STIN_TECH_DISPLACEMENT_TESS;
+    base_options(c, &o, STIN_TECH_SHADOWS_OFF);
+    if (!render(c, c->s, &o, &cap, "tess-position"))
+        return;
+    name_of(c, "tess-gl-clean", name, sizeof name);
+    capture_report_clean(c->r, name, &cap);
+    test_position(c, &cap, "tess-position");
+    test_silhouette(c, &cap, "tess-silhouette");
+    {
+        long n = cracks(c, &cap);
+        name_of(c, "tess-cracks", name, sizeof name);
+        report(c->r, n == 0 ? "PASS" : "FAIL", name,
+               "%ld background pixels inside the limit's coverage (need 0)", n);
+    }
+    capture_free(&cap);
+    test_shadow(c, STIN_TECH_SHADOWS_MAP_PCF, DISP_PCF_TESS_MAX, "tess-");
+    test_shadow(c, STIN_TECH_SHADOWS_VDSM, DISP_VDSM_MAX, "tess-");
+    c->displacement = STIN_TECH_DISPLACEMENT_VTF;
+    base_options(c, &o, STIN_TECH_SHADOWS_OFF);
+    if (!render(c, c->s, &o, &cap, "vtf-coarse"))
+        return;
+    match = position_match(c, &cap, &cr);
+    name_of(c, "vtf-coarse", name, sizeof name);
+    report(c->r, match < DISP_VTF_COARSE_MAX ? "PASS" : "FAIL", name,
+           "displace without tessellation matches the limit on %.2f%% of %ld pixels (must "
+           "stay below %.0f%%: the coarse scene needs tessellation)", 100.0 * match, cr.covered,
+           100.0 * DISP_VTF_COARSE_MAX);
+    capture_free(&cap);
+}
+
 void displace_tests(run *r, stin_tier tier, const char *path)
 {
     disp_case c;
@@ -309,6 +480,7 @@ void displace_tests(run *r, stin_tier tier, const char *path)
     memset(&c, 0, sizeof c);
     c.r = r;
     c.tier = tier;
+    c.displacement = STIN_TECH_DISPLACEMENT_VTF;
     snprintf(c.prefix, sizeof c.prefix, "%s/%s/displace", stin_tier_name(tier),
              scene_base_name(path));
     if (tier == STIN_TIER_GL1) {
@@ -324,6 +496,7 @@ void displace_tests(run *r, stin_tier tier, const char *path)
     o.displacement = STIN_TECH_NONE;
     if (render(&c, &s, &o, &cap, "position")) {
         int vtf = (cap.caps_present & STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH)) != 0;
+        c.tessellation = (cap.caps_present & STIN_CAP_BIT(STIN_CAP_TESSELLATION)) != 0;
         capture_free(&cap);
         if (!vtf) {
             report(r, "SKIP", c.prefix, "the context has no vertex texture units");
@@ -331,8 +504,16 @@ void displace_tests(run *r, stin_tier tier, const char *path)
             return;
         }
     }
-    if (!setup(&c, err, sizeof err)) {
+    if (coarse_scene(&s) && tier != STIN_TIER_GL4) {
+        report(r, "SKIP", c.prefix, "a coarse mesh: a tessellation scene (displace-tess, GL4)");
+        goto done;
+    }
+    if (!setup(&c, coarse_scene(&s) ? DISP_LIMIT_SPLIT : 1, err, sizeof err)) {
         report(r, "FAIL", c.prefix, "reference: %s", err);
+        goto done;
+    }
+    if (coarse_scene(&s)) {
+        tess_tests(&c);
         goto done;
     }
     base_options(&c, &o, STIN_TECH_SHADOWS_OFF);
@@ -340,7 +521,7 @@ void displace_tests(run *r, stin_tier tier, const char *path)
         name_of(&c, "gl-clean", name, sizeof name);
         capture_report_clean(r, name, &cap);
         test_position(&c, &cap, "position");
-        test_silhouette(&c, &cap);
+        test_silhouette(&c, &cap, "silhouette");
         capture_free(&cap);
     }
     o.debug_flags = STIN_DEBUG_DISPLACE_MANUAL_BILINEAR;
@@ -348,11 +529,13 @@ void displace_tests(run *r, stin_tier tier, const char *path)
         test_position(&c, &cap, "manual-bilinear");
         capture_free(&cap);
     }
-    test_shadow(&c, STIN_TECH_SHADOWS_MAP_PCF, DISP_PCF_MAX);
+    test_shadow(&c, STIN_TECH_SHADOWS_MAP_PCF, DISP_PCF_MAX, "");
     if (tier == STIN_TIER_GL4)
-        test_shadow(&c, STIN_TECH_SHADOWS_VDSM, DISP_VDSM_MAX);
+        test_shadow(&c, STIN_TECH_SHADOWS_VDSM, DISP_VDSM_MAX, "");
     test_fallback(&c);
     test_guard_band(&c);
+    if (tier == STIN_TIER_GL4)
+        test_tess_level1(&c);
 done:
     free(c.hits);
     free(c.flat_hits);

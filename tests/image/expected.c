@@ -18,6 +18,8 @@
  * the undisplaced mesh's) */
 #define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_OFF
 #define DISPLACED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_VTF, STIN_TECH_CSG_OFF
+/* and tessellated first where there are tessellation shaders (GL 4.0) */
+#define TESSELLATED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_TESS, STIN_TECH_CSG_OFF
 
 static const expected_profile table[] = {
     {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},
@@ -25,8 +27,8 @@ static const expected_profile table[] = {
     {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
     {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED}, {1, 1, 0}},
     {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
-    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
-    {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {1, 1, 1}},
+    {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {0, 0, 1}},
+    {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {1, 1, 1}},
 };
 
 const expected_profile *expected_find(const char *profile)

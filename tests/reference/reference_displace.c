@@ -24,53 +24,103 @@ int reference_scene_displaces(const scene *s)
     return 0;
 }
 
-/* Object o's mesh in world space, displaced, into m. */
-static int displace_object(const scene *s, const scene_object *o, scene_mesh *m)
+/* One point of the displaced surface: the object-space point p with normal
+ * q and uv, to world space, moved along its world normal by the height. */
+static void displace_point(const scene *s, const scene_object *o, const double p[3],
+                           const double q[3], const double uv[2], float *pos, float *nrm,
+                           float *tex)
+{
+    const scene_material *mat = &s->materials[o->material];
+    const scene_texture *tex_map = &s->textures[mat->height];
+    const float *t = o->transform;
+    double nm[9], w[3], n[3], len = 0, d;
+    float h[4];
+    ref_normal_matrix(t, nm);
+    for (int r = 0; r < 3; r++) {
+        w[r] = (double)t[r] * p[0] + (double)t[4 + r] * p[1] + (double)t[8 + r] * p[2] + t[12 + r];
+        n[r] = nm[r * 3] * q[0] + nm[r * 3 + 1] * q[1] + nm[r * 3 + 2] * q[2];
+        len += n[r] * n[r];
+    }
+    len = sqrt(len);
+    reference_sample_texture(tex_map, (float)uv[0], (float)uv[1], h);
+    d = (double)h[0] * mat->height_scale -
+        (mat->has_height_bias ? mat->height_bias : 0.5 * mat->height_scale);
+    for (int r = 0; r < 3; r++) {
+        n[r] = len > 0 ? n[r] / len : 0.0;
+        pos[r] = (float)(w[r] + n[r] * d);
+        nrm[r] = (float)n[r];
+    }
+    tex[0] = (float)uv[0];
+    tex[1] = (float)uv[1];
+}
+
+/* Object o's mesh in world space, each triangle split into split^2 (the
+ * points at barycentric weights (a, b, c) / split, a shared edge's points
+ * computed alike from either side), displaced, into m. */
+static int displace_object(const scene *s, const scene_object *o, int split, scene_mesh *m)
 {
     const scene_mesh *src = &s->meshes[o->mesh];
-    const scene_material *mat = &s->materials[o->material];
-    const scene_texture *tex = &s->textures[mat->height];
-    const float *t = o->transform;
-    double nm[9];
-    size_t nv = src->vertex_count;
+    size_t per_tri = (size_t)(split + 1) * (split + 2) / 2, nt = src->triangle_count;
+    size_t nv = nt * per_tri, v = 0, k = 0;
     memset(m, 0, sizeof *m);
     snprintf(m->name, sizeof m->name, "%.50s-displaced", src->name);
-    m->vertex_count = src->vertex_count;
-    m->triangle_count = src->triangle_count;
+    m->vertex_count = (uint32_t)nv;
+    m->triangle_count = (uint32_t)(nt * (size_t)split * split);
     m->positions = malloc((3 * nv + 1) * sizeof(float));
     m->normals = malloc((3 * nv + 1) * sizeof(float));
     m->uvs = malloc((2 * nv + 1) * sizeof(float));
-    m->indices = malloc((3 * (size_t)src->triangle_count + 1) * sizeof(uint32_t));
+    m->indices = malloc((3 * (size_t)m->triangle_count + 1) * sizeof(uint32_t));
     if (!m->positions || !m->normals || !m->uvs || !m->indices || !src->normals || !src->uvs)
         return 0;
-    ref_normal_matrix(t, nm);
-    for (size_t v = 0; v < nv; v++) {
-        const float *p = src->positions + 3 * v, *q = src->normals + 3 * v;
-        const float *uv = src->uvs + 2 * v;
-        double w[3], n[3], len = 0, d;
-        float h[4];
-        for (int r = 0; r < 3; r++) {
-            w[r] = (double)t[r] * p[0] + (double)t[4 + r] * p[1] + (double)t[8 + r] * p[2] + t[12 + r];
-            n[r] = nm[r * 3] * q[0] + nm[r * 3 + 1] * q[1] + nm[r * 3 + 2] * q[2];
-            len += n[r] * n[r];
+    for (size_t t = 0; t < nt; t++) {
+        const uint32_t *tri = src->indices + 3 * t;
+        size_t first = v;
+        /* row j (weight c = j), column i (weight b = i): index first + row start + i */
+        for (int j = 0; j <= split; j++)
+            for (int i = 0; i + j <= split; i++, v++) {
+                double wgt[3] = {(double)(split - i - j), (double)i, (double)j};
+                double p[3] = {0, 0, 0}, q[3] = {0, 0, 0}, uv[2] = {0, 0};
+                for (int c = 0; c < 3; c++) {
+                    for (int r = 0; r < 3; r++) {
+                        p[r] += wgt[c] * src->positions[3 * tri[c] + r];
+                        q[r] += wgt[c] * src->normals[3 * tri[c] + r];
+                    }
+                    for (int r = 0; r < 2; r++)
+                        uv[r] += wgt[c] * src->uvs[2 * tri[c] + r];
+                }
+                for (int r = 0; r < 3; r++) {
+                    p[r] /= split;
+                    q[r] /= split;
+                }
+                uv[0] /= split;
+                uv[1] /= split;
+                displace_point(s, o, p, q, uv, m->positions + 3 * v, m->normals + 3 * v,
+                               m->uvs + 2 * v);
+            }
+        for (int j = 0; j < split; j++) {
+            size_t row = first + (size_t)j * (split + 1) - (size_t)j * (j - 1) / 2;
+            size_t next = row + (size_t)(split + 1 - j);
+            for (int i = 0; i + j < split; i++) {
+                m->indices[k++] = (uint32_t)(row + i);
+                m->indices[k++] = (uint32_t)(row + i + 1);
+                m->indices[k++] = (uint32_t)(next + i);
+                if (i + j + 1 < split) {
+                    m->indices[k++] = (uint32_t)(row + i + 1);
+                    m->indices[k++] = (uint32_t)(next + i + 1);
+                    m->indices[k++] = (uint32_t)(next + i);
+                }
+            }
         }
-        len = sqrt(len);
-        reference_sample_texture(tex, uv[0], uv[1], h);
-        d = (double)h[0] * mat->height_scale -
-            (mat->has_height_bias ? mat->height_bias : 0.5 * mat->height_scale);
-        for (int r = 0; r < 3; r++) {
-            n[r] = len > 0 ? n[r] / len : 0.0;
-            m->positions[3 * v + r] = (float)(w[r] + n[r] * d);
-            m->normals[3 * v + r] = (float)n[r];
-        }
-        m->uvs[2 * v] = uv[0];
-        m->uvs[2 * v + 1] = uv[1];
     }
-    memcpy(m->indices, src->indices, 3 * (size_t)src->triangle_count * sizeof(uint32_t));
     return 1;
 }
 
 int reference_displace(const scene *s, scene *out, char *err, size_t err_size)
+{
+    return reference_displace_split(s, 1, out, err, err_size);
+}
+
+int reference_displace_split(const scene *s, int split, scene *out, char *err, size_t err_size)
 {
     static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     *out = *s;
@@ -89,9 +139,10 @@ int reference_displace(const scene *s, scene *out, char *err, size_t err_size)
         if (o->mesh < 0 || o->mesh >= s->mesh_count || o->material < 0 ||
             o->material >= s->material_count || !displaced(s, o))
             continue;
-        if (!displace_object(s, o, &out->meshes[out->mesh_count])) {
+        if (split < 1 || !displace_object(s, o, split, &out->meshes[out->mesh_count])) {
             out->mesh_count++;
-            snprintf(err, err_size, "object %d: out of memory, or its mesh has no normals or uvs", i);
+            snprintf(err, err_size, "object %d: out of memory, its mesh has no normals or uvs, "
+                                    "or split %d < 1", i, split);
             reference_displace_free(out, s);
             return 0;
         }

@@ -27,6 +27,13 @@ int reference_scene_displaces(const scene *s);
 /* Fills out (free with reference_displace_free and the same source, never
  * scene_free). Returns 0 and a message in err on bad input or out of memory. */
 int reference_displace(const scene *s, scene *out, char *err, size_t err_size);
+/* The same with every displaced triangle split into split^2 first (split
+ * >= 1; 1 is reference_displace): the points at barycentric weights
+ * (a, b, c) / split of the corners' positions, normals and uvs, each
+ * displaced - stin's "displace-tess" surface as its levels grow (the
+ * tessellated limit). A shared edge's points are computed alike from both
+ * triangles, so the split mesh has no cracks. */
+int reference_displace_split(const scene *s, int split, scene *out, char *err, size_t err_size);
 void reference_displace_free(scene *out, const scene *source);
 
 #ifdef __cplusplus
