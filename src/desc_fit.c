@@ -17,7 +17,9 @@ uint64_t stin_texture_staging_bytes(const stin_texture_desc *d)
     resampled = w != d->width || h != d->height;
     normal = d->kind == STIN_TEXTURE_NORMAL;
     derive = normal && d->normal_from_height > 0.0f;
-    mips = !d->no_mipmaps && d->kind != STIN_TEXTURE_HEIGHT;
+    /* height maps too: displacement's copy has the chain (any context may
+     * displace) */
+    mips = !d->no_mipmaps;
     /* the derived source is kept beside the chain whenever the size changes,
      * which a context's max_texture_size may do to any size: always count it */
     return stin__plan_staging(w, h, mips, resampled || normal,

@@ -107,8 +107,9 @@ struct stin_context {
     struct {                  /* displacement (surface_displace.c) */
         uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
         uint32_t logged_count;
-        float tess[4];        /* the frame's u_tess (gl4/tess.tesc) */
-        float tess_eye[3];
+        float tess[4];        /* the frame's u_tess (gl4/tess.tesc); [0] and [3] serve
+                               * the mip level too */
+        float tess_eye[3];    /* the camera's eye */
         GLint caller_patch_vertices;
     } displace;
     struct {

@@ -301,7 +301,7 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->vertex_count = nv;
     m->first_triangle = tfirst;
     m->triangle_count = kept;
-    m->uv_edge = stin__mesh_uv_edge(verts, tris, kept);
+    stin__mesh_mean_edges(verts, tris, kept, &m->uv_edge, &m->edge);
     m->info.vertex_count = nv;
     m->info.triangle_count = kept;
     m->info.degenerate_dropped = desc->index_count / 3u - kept0;

@@ -44,6 +44,8 @@ typedef struct stin__mesh_slot {
     GLuint vbo, ibo, vao;
     GLuint adj_ibo, adj_vao;  /* vdsm: GL_TRIANGLES_ADJACENCY indices (0: none) */
     float uv_edge;            /* mean uv length of its edges (displacement's coarse log) */
+    float edge;               /* mean object-space length of its edges (uv_edge / edge:
+                               * displacement's uv per unit, its mip level) */
 } stin__mesh_slot;
 
 typedef struct stin__texture_slot {
@@ -51,6 +53,11 @@ typedef struct stin__texture_slot {
     stin_texture_kind kind;
     uint32_t width, height;
     GLuint name;
+    /* height maps where displacement is built: a second texture with the
+     * mip chain (name keeps level 0 only, which the parallax march needs),
+     * and its highest level; 0 when there is none */
+    GLuint lod_name;
+    uint32_t lod_top;
 } stin__texture_slot;
 
 
@@ -90,8 +97,9 @@ stin_result stin__subdivide_counts(struct stin_context *ctx, const uint32_t *tri
                                    uint32_t *out_triangles);
 void stin__subdivide(struct stin_context *ctx, stin__vertex *verts, uint32_t vertex_count,
                      uint32_t *tris, uint32_t tri_count, uint32_t levels);
-/* Mean uv length of the triangles' edges. */
-float stin__mesh_uv_edge(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count);
+/* Mean uv length and mean object-space length of the triangles' edges. */
+void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
+                           float *uv_edge, float *edge);
 void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count);
 

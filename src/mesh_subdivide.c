@@ -129,14 +129,19 @@ void stin__subdivide(stin_context *ctx, stin__vertex *verts, uint32_t vertex_cou
     }
 }
 
-float stin__mesh_uv_edge(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count)
+void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
+                           float *uv_edge, float *edge)
 {
-    double sum = 0.0;
+    double uv = 0.0, len = 0.0;
     uint32_t i;
     for (i = 0; i < 3u * tri_count; i++) {
-        const float *a = verts[tris[i]].uv, *b = verts[tris[i - i % 3u + (i + 1u) % 3u]].uv;
-        float du = a[0] - b[0], dv = a[1] - b[1];
-        sum += (double)stin__sqrtf(du * du + dv * dv);
+        const stin__vertex *a = &verts[tris[i]], *b = &verts[tris[i - i % 3u + (i + 1u) % 3u]];
+        float du = a->uv[0] - b->uv[0], dv = a->uv[1] - b->uv[1];
+        float dx = a->position[0] - b->position[0], dy = a->position[1] - b->position[1];
+        float dz = a->position[2] - b->position[2];
+        uv += (double)stin__sqrtf(du * du + dv * dv);
+        len += (double)stin__sqrtf(dx * dx + dy * dy + dz * dz);
     }
-    return tri_count ? (float)(sum / (3.0 * (double)tri_count)) : 0.0f;
+    *uv_edge = tri_count ? (float)(uv / (3.0 * (double)tri_count)) : 0.0f;
+    *edge = tri_count ? (float)(len / (3.0 * (double)tri_count)) : 0.0f;
 }

@@ -19,7 +19,7 @@ typedef struct stin__draw {
  * (surface_displace.c); camera: the program draws through the frame's
  * camera (the guard band applies), not from a light. */
 typedef struct stin__displace_locs {
-    GLint map, params, size, normal, clip, tess, tess_eye;
+    GLint map, params, size, normal, clip, lod, eye, tess, tess_eye;
     int camera;
     int patches;  /* the program is tessellated: its draws are GL_PATCHES of 3 */
 } stin__displace_locs;

@@ -30,7 +30,7 @@ void stin__displace_frame_begin(stin_context *ctx)
     float inv[16];
     GLint levels = ctx->caps.max_tess_gen_level > 0 ? ctx->caps.max_tess_gen_level : 64;
     int k;
-    if (!stin__displace_tessellated(ctx))
+    if (!stin__displace_built(ctx))
         return;
     /* pixels a unit spans at eye distance 1 (perspective) or anywhere
      * (orthographic): the projection's y scale over half the viewport */
@@ -44,6 +44,8 @@ void stin__displace_frame_begin(stin_context *ctx)
         stin__mat4_identity(inv); /* begin checked the view: not reached */
     for (k = 0; k < 3; k++)
         ctx->displace.tess_eye[k] = inv[12 + k];
+    if (!stin__displace_tessellated(ctx))
+        return;
     GL(ctx, GetIntegerv)(GL_PATCH_VERTICES, &ctx->displace.caller_patch_vertices);
     GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, 3);
 }
@@ -81,6 +83,8 @@ void stin__displace_locate(stin_context *ctx, GLuint program, int camera, stin__
     out->size = GL(ctx, GetUniformLocation)(program, "u_displace_size");
     out->normal = GL(ctx, GetUniformLocation)(program, "u_displace_normal");
     out->clip = GL(ctx, GetUniformLocation)(program, "u_displace_clip");
+    out->lod = GL(ctx, GetUniformLocation)(program, "u_displace_lod");
+    out->eye = GL(ctx, GetUniformLocation)(program, "u_displace_eye");
     /* only gl4/tess.tesc declares these: the program was built tessellated */
     out->tess = GL(ctx, GetUniformLocation)(program, "u_tess");
     out->tess_eye = GL(ctx, GetUniformLocation)(program, "u_tess_eye");
@@ -109,10 +113,33 @@ static void log_coarse(stin_context *ctx, const stin__draw *d, const stin__textu
               "stin_mesh_desc.subdivide)", m->vertex_count, t->width, t->height, (int)texels);
 }
 
+/* The draw's mip parameters (displace.glsl's u_displace_lod): texels of the
+ * map one pixel spans at eye distance 1 - the mesh's texels per unit (its
+ * mean uv edge over its mean edge, times the map's size, over the
+ * transform's mean axis scale) over the pixels a unit spans there - and the
+ * highest level; level 0 alone without the chain or with NO_MIP. */
+static void lod_params(const stin_context *ctx, const stin__draw *d,
+                       const stin__texture_slot *t, float out[4])
+{
+    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+    const float *x = d->transform;
+    float scale = (stin__sqrtf(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) +
+                   stin__sqrtf(x[4] * x[4] + x[5] * x[5] + x[6] * x[6]) +
+                   stin__sqrtf(x[8] * x[8] + x[9] * x[9] + x[10] * x[10])) / 3.0f;
+    float size = (float)(t->width > t->height ? t->width : t->height);
+    float per_unit = m->edge > 0.0f && scale > 0.0f ? size * m->uv_edge / (m->edge * scale) : 0.0f;
+    int on = t->lod_name && !(ctx->desc.debug_flags & STIN_DEBUG_DISPLACE_NO_MIP) &&
+             ctx->displace.tess[0] > 0.0f && per_unit > 0.0f;
+    out[0] = on ? per_unit / ctx->displace.tess[0] : 0.0f;
+    out[1] = on ? (float)t->lod_top : 0.0f;
+    out[2] = ctx->displace.tess[3];
+    out[3] = 0.0f;
+}
+
 void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const stin__draw *d)
 {
     const stin__texture_slot *t;
-    float p[4] = {0.0f, 0.0f, 0.0f, -1.0f}, size[4], nm[9];
+    float p[4] = {0.0f, 0.0f, 0.0f, -1.0f}, size[4], nm[9], lod[4];
     if (!l || l->params < 0)
         return;
     t = d && stin__displace_active(ctx, &d->material)
@@ -138,11 +165,14 @@ void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const 
     GL(ctx, UniformMatrix3fv)(l->normal, 1, GL_FALSE, nm);
     if (l->clip >= 0)
         GL(ctx, UniformMatrix4fv)(l->clip, 1, GL_FALSE, ctx->view_proj);
+    lod_params(ctx, d, t, lod);
+    GL(ctx, Uniform4fv)(l->lod, 1, lod);
+    GL(ctx, Uniform3fv)(l->eye, 1, ctx->displace.tess_eye);
     if (l->patches) {
         GL(ctx, Uniform4fv)(l->tess, 1, ctx->displace.tess);
         GL(ctx, Uniform3fv)(l->tess_eye, 1, ctx->displace.tess_eye);
     }
     GL(ctx, Uniform1i)(l->map, ctx->sel.displace_unit);
-    stin__bind_unit(ctx, ctx->sel.displace_unit, GL_TEXTURE_2D, t->name);
+    stin__bind_unit(ctx, ctx->sel.displace_unit, GL_TEXTURE_2D, lod[1] > 0.0f ? t->lod_name : t->name);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }

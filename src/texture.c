@@ -160,14 +160,54 @@ stin__staging_plan stin__plan_staging(uint32_t w, uint32_t h, int mips, int stag
     return p;
 }
 
+/* Uploads src (w x h) as level 0 of the bound 2D texture and, with mips,
+ * each next level, halved into the staging region (buf or region_b) that
+ * the level before it is not in. Returns the highest level uploaded. */
+static uint32_t upload_levels(stin_context *ctx, const uint8_t *src, uint32_t w, uint32_t h,
+                              int mips, int normal, uint8_t *buf, uint8_t *region_b)
+{
+    uint32_t level = 0;
+    for (;;) {
+        stin__upload_level(ctx, GL_TEXTURE_2D, (GLint)level, GL_RGBA8, w, h, GL_RGBA, src);
+        if (!mips || (w == 1 && h == 1))
+            return level;
+        {
+            uint8_t *next = src == buf ? region_b : buf;
+            if (normal)
+                halve_normals(src, w, h, next);
+            else
+                halve(src, w, h, next);
+            src = next;
+        }
+        w = w > 1 ? w / 2 : 1;
+        h = h > 1 ? h / 2 : 1;
+        level++;
+    }
+}
+
+/* Displacement's copy of a height map with its mip chain (the draw's
+ * level from its distance, surface_displace.c): the sampling parameters of
+ * the two levels it blends. */
+static void create_lods(stin_context *ctx, stin__texture_slot *t, const uint8_t *level0,
+                        uint32_t w, uint32_t h, uint8_t *buf, uint8_t *region_b)
+{
+    GL(ctx, GenTextures)(1, &t->lod_name);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, t->lod_name);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_NEAREST);
+    t->lod_top = upload_levels(ctx, level0, w, h, 1, 0, buf, region_b);
+}
+
 stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc,
                                 stin_texture *out)
 {
-    uint32_t w, h, slot, level = 0, max = 0;
+    uint32_t w, h, slot, max = 0;
     const uint8_t *src;
     uint8_t *buf;
     stin__texture_slot *t = NULL;
-    int mips, resized, normal, derive;
+    int mips, resized, normal, derive, lods;
     GLint caller_binding = 0;
     stin__staging_plan plan;
     uint8_t *region_b;
@@ -199,14 +239,16 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     resized = w != desc->width || h != desc->height;
     /* height maps: level 0 only (the parallax march reads the true field) */
     mips = !desc->no_mipmaps && desc->kind != STIN_TEXTURE_HEIGHT;
+    /* and displacement's copy of a height map with its mip chain */
+    lods = desc->kind == STIN_TEXTURE_HEIGHT && !desc->no_mipmaps && stin__displace_built(ctx);
     normal = desc->kind == STIN_TEXTURE_NORMAL;
     derive = desc->normal_from_height > 0.0f;
-    plan = stin__plan_staging(w, h, mips, resized || normal || derive,
+    plan = stin__plan_staging(w, h, mips || lods, resized || normal || derive,
                         derive && resized ? 4ull * desc->width * desc->height : 0);
     if (plan.total > ctx->staging_bytes) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
                   "stin_create_texture: %ux%u%s%s needs %lu staging bytes, "
-                  "desc.max_texture_bytes is %zu", w, h, mips ? " with mipmaps" : "",
+                  "desc.max_texture_bytes is %zu", w, h, mips || lods ? " with mipmaps" : "",
                   derive ? " derived from a height map" : "", (unsigned long)plan.total,
                   ctx->staging_bytes);
         return STIN_ERROR_CAPACITY;
@@ -250,23 +292,11 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER,
                            mips ? GL_LINEAR_MIPMAP_LINEAR : GL_LINEAR);
-    for (;;) {
-        stin__upload_level(ctx, GL_TEXTURE_2D, (GLint)level, GL_RGBA8, w, h, GL_RGBA, src);
-        if (!mips || (w == 1 && h == 1))
-            break;
-        /* the next level into the region this one is not in */
-        {
-            uint8_t *next = src == buf ? region_b : buf;
-            if (normal)
-                halve_normals(src, w, h, next);
-            else
-                halve(src, w, h, next);
-            src = next;
-        }
-        w = w > 1 ? w / 2 : 1;
-        h = h > 1 ? h / 2 : 1;
-        level++;
-    }
+    (void)upload_levels(ctx, src, w, h, mips, normal, buf, region_b);
+    t->lod_name = 0;
+    t->lod_top = 0;
+    if (lods) /* level 0 is still src: upload_levels halved into other regions only */
+        create_lods(ctx, t, src, w, h, buf, region_b);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)caller_binding);
     stin__gl_check_errors(ctx, "texture upload");
     t->kind = desc->kind;
@@ -292,8 +322,10 @@ void stin_destroy_texture(stin_context *ctx, stin_texture tex)
         return;
     }
     GL(ctx, DeleteTextures)(1, &t->name);
+    if (t->lod_name)
+        GL(ctx, DeleteTextures)(1, &t->lod_name);
     stin__handle_release(&t->handle, ctx->desc.max_textures);
-    t->name = 0;
+    t->name = t->lod_name = 0;
 }
 
 void stin__texture_release_all(stin_context *ctx)
@@ -302,6 +334,8 @@ void stin__texture_release_all(stin_context *ctx)
     for (i = 0; i < ctx->desc.max_textures; i++)
         if (ctx->textures[i].handle.alive) {
             GL(ctx, DeleteTextures)(1, &ctx->textures[i].name);
+            if (ctx->textures[i].lod_name)
+                GL(ctx, DeleteTextures)(1, &ctx->textures[i].lod_name);
             stin__handle_release(&ctx->textures[i].handle, ctx->desc.max_textures);
         }
 }

@@ -476,8 +476,8 @@ const char *stin_feature_name(stin_feature f);
  *              polygon's (no clipping of the recessed edges), depth is the
  *              polygon's (no gl_FragDepth: shadows and depth-EQUAL passes
  *              see the flat surface), the N output shows the vertex normal.
- * Height maps are sampled at full resolution (their mipmaps are not built):
- * the march needs the true field.
+ * Parallax and pom sample height maps at full resolution (level 0: the
+ * march needs the true field).
  * Displacement: "displace" (GL2 and GL4, GLSL lighting, vertex texture
  * fetch: GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS > 0, capability "vertex texture
  * fetch", which desc.caps_mask can hide) moves the vertices of draws whose
@@ -506,10 +506,19 @@ const char *stin_feature_name(stin_feature f);
  * to volume at set-up demotes displacement too (logged). No technique
  * shadows the flat mesh of a displaced draw.
  * The height map is read with GL's filtering (bilinear at texel centres,
- * repeat) at level 0; STIN_DEBUG_DISPLACE_MANUAL_BILINEAR fetches the four
- * texels at their centres and blends them in the shader instead (for
- * drivers whose vertex textures are nearest-only; the same surface within
- * rounding).
+ * repeat) at a mip level from the vertex's linear distance d to the eye:
+ *   lambda = log2(d x texels per unit / pixels per unit at distance 1)
+ * (texels per unit: the map's larger side x the mesh's mean uv edge over its
+ * mean edge over the transform's mean axis scale; pixels per unit: the
+ * projection's y scale x half the viewport's height; d = 1 for an
+ * orthographic camera), the two levels around lambda blended, level 0 alone
+ * up close (lambda <= 0). Where displacement is built, stin_create_texture
+ * gives each height map (unless no_mipmaps) a second texture with its mip
+ * chain, CPU box-filtered as albedo chains are (parallax keeps level 0);
+ * STIN_DEBUG_DISPLACE_NO_MIP reads level 0 at every distance.
+ * STIN_DEBUG_DISPLACE_MANUAL_BILINEAR fetches the four texels at their
+ * centres and blends them in the shader instead (for drivers whose vertex
+ * textures are nearest-only; the same surface within rounding).
  * "displace-tess" (GL4 with tessellation shaders: GL 4.0 or
  * ARB_tessellation_shader, capability "tessellation shaders") is the top of
  * the chain: every program that draws meshes gets a tessellation stage, and
@@ -638,6 +647,8 @@ typedef struct stin_desc {
  * capped) are added over the colour in orange where they lie in front of
  * the surfaces: a picture of the volumes, not of the shadows */
 #define STIN_DEBUG_SHOW_VOLUMES 512u
+/* displacement: level 0 of the height map at every distance (no mip chain) */
+#define STIN_DEBUG_DISPLACE_NO_MIP 1024u
 
 typedef struct stin_context stin_context;
 
@@ -758,8 +769,10 @@ typedef struct stin_texture_desc {
                               * contexts get a power-of-two resample); width *
                               * height above 2^30: STIN_ERROR_INVALID_ARGUMENT */
     const uint8_t *pixels;   /* RGBA8, 4 bytes per pixel, rows bottom to top */
-    int no_mipmaps;          /* default 0: mipmaps are built (never for
-                              * STIN_TEXTURE_HEIGHT: POM marches level 0) */
+    int no_mipmaps;          /* default 0: mipmaps are built (for
+                              * STIN_TEXTURE_HEIGHT only into displacement's
+                              * copy, where displacement is built: parallax
+                              * and pom march level 0) */
     /* STIN_TEXTURE_NORMAL only: > 0 derives the normal map from a height
      * field in the R channel of `pixels` (1 = top): central differences
      * with wrap-around, n = normalize(-s dh/dx, -s dh/dy, 1) with dh per
@@ -773,8 +786,8 @@ typedef struct stin_texture_desc {
 /* Sizing a desc from the application's assets. stin_texture_staging_bytes
  * is the staging (desc.max_texture_bytes) stin_create_texture needs for a
  * texture on any context (pixels may be NULL): 5/16 of w * h * 4 for an
- * albedo texture uploaded as given with mipmaps (levels 1 and 2; none
- * without mipmaps), 5/4 for normal maps and power-of-two resamples (GL1
+ * albedo or height map uploaded as given with mipmaps (levels 1 and 2; none
+ * without mipmaps: a height map's chain is displacement's copy), 5/4 for normal maps and power-of-two resamples (GL1
  * contexts resample non-power-of-two sizes up), plus w * h * 4 for a normal
  * map derived from a height field (kept while the size changes). 0 for a
  * bad desc. */

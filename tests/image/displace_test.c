@@ -35,6 +35,14 @@
  *                the band at work.
  *   manual-bilinear  four fetches at texel centres blended in the shader:
  *                the position test's bound against the same reference.
+ *   mip-near     the scene's view with and without the height map's mip chain
+ *                (STIN_DEBUG_DISPLACE_NO_MIP): bit-identical (level 0 alone
+ *                up close).
+ *   mip-far      the camera 4x as far: P against the reference that reads
+ *                the same levels (reference_displace_ex: log2 of texels per
+ *                pixel at each vertex's distance, two levels blended) within
+ *                the position test's bound, and the render differs from
+ *                level 0 alone (the levels are in use).
  *   gl-clean     no GL error, no call outside the profile.
  *   tess-level1  (GL4) "displace-tess" with a target edge length above
  *                every edge (level 1 everywhere) draws the VTF surface: every
@@ -81,6 +89,7 @@
 #define DISP_PCF_MAX 0.0025
 #define DISP_VDSM_MAX 0.002
 #define DISP_GUARD_NARROW 1e-6f
+#define DISP_MIP_FAR 4.0 /* the camera this many times as far for the mip test */
 #define DISP_COARSE_TEXELS 4.0
 #define DISP_LIMIT_SPLIT 48
 #define DISP_VTF_COARSE_MAX 0.95
@@ -310,12 +319,13 @@ static void test_guard_band(disp_case *c)
     capture_free(&narrow);
 }
 
-static int setup(disp_case *c, int split, char *err, size_t err_size)
+static int setup(disp_case *c, int split, const reference_displace_lod *lod, char *err,
+                 size_t err_size)
 {
     reference *ref = NULL, *flat = NULL;
     size_t n = (size_t)c->r->width * c->r->height;
     int ok;
-    if (!reference_displace_split(c->s, split, &c->ds, err, err_size))
+    if (!reference_displace_ex(c->s, split, lod, &c->ds, err, err_size))
         return 0;
     c->hits = malloc(sizeof *c->hits * n);
     c->flat_hits = malloc(sizeof *c->flat_hits * n);
@@ -379,6 +389,81 @@ static int coarse_scene(const scene *s)
             return 1;
     }
     return 0;
+}
+
+static void case_free(disp_case *c, const scene *source)
+{
+    free(c->hits);
+    free(c->flat_hits);
+    free(c->ref);
+    if (c->ds.meshes)
+        reference_displace_free(&c->ds, source);
+}
+
+/* The mip chain: up close level 0 alone (on and off identical); from afar
+ * the levels stin picks by distance, against the reference that reads the
+ * same levels, and different from level 0 alone. */
+static void test_mips(disp_case *c)
+{
+    scene far = *c->s;
+    disp_case f = *c;
+    reference_displace_lod lod;
+    capture_options o;
+    capture on, off;
+    compare_result cr;
+    char name[256], err[512];
+    double match, match_off;
+    long near_differ, far_differ;
+    int k;
+    name_of(c, "mip-near", name, sizeof name);
+    base_options(c, &o, STIN_TECH_SHADOWS_OFF);
+    if (!render(c, c->s, &o, &on, "mip-near"))
+        return;
+    o.debug_flags = STIN_DEBUG_DISPLACE_NO_MIP;
+    if (!render(c, c->s, &o, &off, "mip-near")) {
+        capture_free(&on);
+        return;
+    }
+    near_differ = pixels_differ(&on, &off);
+    report(c->r, near_differ == 0 ? "PASS" : "FAIL", name,
+           "the scene's own view with and without the mip chain: %ld pixels differ (need 0)",
+           near_differ);
+    capture_free(&on);
+    capture_free(&off);
+    for (k = 0; k < 3; k++)
+        far.camera.eye[k] = far.camera.target[k] + DISP_MIP_FAR * (far.camera.eye[k] - far.camera.target[k]);
+    memset(&lod, 0, sizeof lod);
+    lod.pixels_per_unit = 0.5 * c->r->height / tan(far.camera.fovy_deg * (3.14159265358979 / 360.0));
+    lod.perspective = 1;
+    for (k = 0; k < 3; k++)
+        lod.eye[k] = far.camera.eye[k];
+    f.s = &far;
+    memset(&f.ds, 0, sizeof f.ds);
+    f.hits = f.flat_hits = NULL;
+    f.ref = NULL;
+    name_of(c, "mip-far", name, sizeof name);
+    if (!setup(&f, 1, &lod, err, sizeof err)) {
+        report(c->r, "FAIL", name, "reference: %s", err);
+        case_free(&f, &far);
+        return;
+    }
+    o.debug_flags = 0;
+    if (render(c, &far, &o, &on, "mip-far")) {
+        o.debug_flags = STIN_DEBUG_DISPLACE_NO_MIP;
+        if (render(c, &far, &o, &off, "mip-far")) {
+            match = position_match(&f, &on, &cr);
+            match_off = position_match(&f, &off, &cr);
+            far_differ = pixels_differ(&on, &off);
+            report(c->r, match >= DISP_P_MIN_MATCH && far_differ > 0 ? "PASS" : "FAIL", name,
+                   "camera %.0fx as far: P matches the mipped reference on %.3f%% of %ld covered "
+                   "pixels (need %.1f%%; level 0 alone: %.3f%%), %ld pixels differ from level 0 "
+                   "alone (need > 0)", DISP_MIP_FAR, 100.0 * match, cr.covered,
+                   100.0 * DISP_P_MIN_MATCH, 100.0 * match_off, far_differ);
+            capture_free(&off);
+        }
+        capture_free(&on);
+    }
+    case_free(&f, &far);
 }
 
 /* Level 1 everywhere: the tessellated programs draw the VTF surface. */
@@ -508,7 +593,7 @@ void displace_tests(run *r, stin_tier tier, const char *path)
         report(r, "SKIP", c.prefix, "a coarse mesh: a tessellation scene (displace-tess, GL4)");
         goto done;
     }
-    if (!setup(&c, coarse_scene(&s) ? DISP_LIMIT_SPLIT : 1, err, sizeof err)) {
+    if (!setup(&c, coarse_scene(&s) ? DISP_LIMIT_SPLIT : 1, NULL, err, sizeof err)) {
         report(r, "FAIL", c.prefix, "reference: %s", err);
         goto done;
     }
@@ -534,13 +619,10 @@ void displace_tests(run *r, stin_tier tier, const char *path)
         test_shadow(&c, STIN_TECH_SHADOWS_VDSM, DISP_VDSM_MAX, "");
     test_fallback(&c);
     test_guard_band(&c);
+    test_mips(&c);
     if (tier == STIN_TIER_GL4)
         test_tess_level1(&c);
 done:
-    free(c.hits);
-    free(c.flat_hits);
-    free(c.ref);
-    if (c.ds.meshes)
-        reference_displace_free(&c.ds, &s);
+    case_free(&c, &s);
     scene_free(&s);
 }

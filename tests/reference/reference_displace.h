@@ -34,6 +34,22 @@ int reference_displace(const scene *s, scene *out, char *err, size_t err_size);
  * tessellated limit). A shared edge's points are computed alike from both
  * triangles, so the split mesh has no cracks. */
 int reference_displace_split(const scene *s, int split, scene *out, char *err, size_t err_size);
+/* The same with the heights read from the map's mip chain
+ * (reference_mips_create) as stin's vertex stage reads them with its mip
+ * levels on: lambda = log2(spread x d), d the undisplaced world point's
+ * distance to the eye (1 for an orthographic camera), spread = the mesh's
+ * texels per unit (the map's larger side x its mean uv edge length over its
+ * mean edge length over the transform's mean axis scale) over
+ * pixels_per_unit (the projection's y scale x half the viewport's height),
+ * sampled as reference_sample_mips does (level 0 up close, two levels
+ * blended, the last one alone). lod NULL: level 0. */
+typedef struct reference_displace_lod {
+    double pixels_per_unit;
+    int perspective;
+    double eye[3];
+} reference_displace_lod;
+int reference_displace_ex(const scene *s, int split, const reference_displace_lod *lod,
+                          scene *out, char *err, size_t err_size);
 void reference_displace_free(scene *out, const scene *source);
 
 #ifdef __cplusplus

@@ -45,7 +45,10 @@ static void test_texture_staging_bytes(void **state)
     t.normal_from_height = 1.0f;
     assert_int_equal(stin_texture_staging_bytes(&t),
                      4ull * (8192u * 8192u + 4096u * 4096u) + 4ull * 8192u * 8192u);
-    t = texture(STIN_TEXTURE_HEIGHT, 256, 256); /* height maps: level 0 only, as given */
+    /* height maps: level 0 as given, and displacement's copy with the chain */
+    t = texture(STIN_TEXTURE_HEIGHT, 256, 256);
+    assert_int_equal(stin_texture_staging_bytes(&t), 4u * (128u * 128u + 64u * 64u));
+    t.no_mipmaps = 1;
     assert_int_equal(stin_texture_staging_bytes(&t), 0);
     t = texture(STIN_TEXTURE_ALBEDO, 0, 16);
     assert_int_equal(stin_texture_staging_bytes(&t), 0);
