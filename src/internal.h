@@ -104,6 +104,13 @@ struct stin_context {
         uint32_t logged[STIN__SURF_LOG_KEYS]; /* per-material step-downs already logged */
         uint32_t logged_count;
     } glsl_surface;
+    struct {                  /* "displace-tess": the programs above, tessellated
+                               * (path_glsl.c), swapped in for frames with
+                               * displaced draws */
+        stin__program programs[STIN__PROG_COUNT];
+        stin__program lit[STIN__SURF_COUNT];
+        int active;           /* they are in ctx->programs and glsl_surface.lit now */
+    } glsl_tess;
     struct {                  /* displacement (surface_displace.c) */
         uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
         uint32_t logged_count;
@@ -111,6 +118,7 @@ struct stin_context {
                                * the mip level too */
         float tess_eye[3];    /* the camera's eye */
         GLint caller_patch_vertices;
+        int tessellating;     /* this frame draws with the tessellated programs */
     } displace;
     struct {
         GLuint cube;          /* normalisation cube map; 0 = DOT3 not in use */

@@ -87,10 +87,13 @@ const stin__path *stin__path_of(const stin_context *ctx);
 
 /* frag_chunks: NULL or a NULL-terminated list of embedded files spliced in
  * at the fragment shader's "// @chunks" line (its functions). The program
- * draws meshes: with "displace-tess" it is built tessellated (draw with
+ * draws meshes; tessellate as in stin__program_source (draw with
  * stin__displace_primitive). */
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
-                           const char *const *frag_chunks, char *msg, size_t size);
+                           const char *const *frag_chunks, int tessellate, char *msg,
+                           size_t size);
+/* Swaps the tessellated programs in (on) or out; nothing without them. */
+void stin__glsl_tessellate(stin_context *ctx, int on);
 /* A program's stages by embedded file name: geom NULL for none; frag_outputs
  * names the fragment outputs bound to draw buffers 0, 1, ... (GL 3.0; NULL
  * entries end the list, all NULL: the single output). */

@@ -55,77 +55,142 @@ static stin__program *lit_program(stin_context *ctx, int variant)
                                        : &ctx->glsl_surface.lit[variant];
 }
 
+/* Lit programs per surface variant from normal up to `top` into lit[];
+ * returns the best one built (the one below the first that failed, whose
+ * message is in msg). */
+static int build_variants(stin_context *ctx, const char *dir, int tess, int top,
+                          stin__program *lit, char *msg, size_t size)
+{
+    char vert[32], frag[32], names[3][40];
+    const char *chunks[4];
+    int v, best = STIN__SURF_PLAIN;
+    stin__formatf(vert, sizeof vert, "%slit.vert", dir);
+    stin__formatf(frag, sizeof frag, "%slit.frag", dir);
+    for (v = STIN__SURF_NORMAL; v <= top; v++) {
+        stin__program *p = &lit[v];
+        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), names, chunks);
+        p->name = stin__program_build(ctx, vert, frag, chunks, tess, msg, size);
+        if (!p->name)
+            return best;
+        locate(ctx, p);
+        best = v;
+    }
+    return best;
+}
+
 /* One lit program per surface variant from normal up to the surface choice;
  * a variant that does not build leaves the best at the one below it. */
 static void build_surface_variants(stin_context *ctx, const char *dir)
 {
     stin_choice *c = &ctx->sel.choice[STIN_FEATURE_SURFACE];
-    int top = stin__surf_variant_of(c->technique), v;
-    char vert[32], frag[32], names[3][40], msg[160];
-    const char *chunks[4];
-    ctx->glsl_surface.best = STIN__SURF_PLAIN;
+    int top = stin__surf_variant_of(c->technique);
+    char msg[160];
     if (c->technique == STIN_TECH_SURFACE_DOT3) /* not chosen with GLSL lighting */
         top = STIN__SURF_PLAIN;
-    stin__formatf(vert, sizeof vert, "%slit.vert", dir);
-    stin__formatf(frag, sizeof frag, "%slit.frag", dir);
-    for (v = STIN__SURF_NORMAL; v <= top; v++) {
-        stin__program *p = &ctx->glsl_surface.lit[v];
-        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), names, chunks);
-        p->name = stin__program_build(ctx, vert, frag, chunks, msg, sizeof msg);
-        if (!p->name) {
-            char why[200];
-            stin__formatf(why, sizeof why, "%s failed to build (%s)",
-                          stin_technique_name(stin__surf_technique_of(v)), msg);
-            stin__demote(ctx, STIN_FEATURE_SURFACE, stin__surf_technique_of(ctx->glsl_surface.best),
-                         why);
-            return;
-        }
-        locate(ctx, p);
-        ctx->glsl_surface.best = v;
+    ctx->glsl_surface.best = build_variants(ctx, dir, 0, top, ctx->glsl_surface.lit, msg,
+                                            sizeof msg);
+    if (ctx->glsl_surface.best < top) {
+        char why[200];
+        stin__formatf(why, sizeof why, "%s failed to build (%s)",
+                      stin_technique_name(stin__surf_technique_of(ctx->glsl_surface.best + 1)),
+                      msg);
+        stin__demote(ctx, STIN_FEATURE_SURFACE, stin__surf_technique_of(ctx->glsl_surface.best),
+                     why);
     }
+}
+
+/* The lit, normal, flat and volume programs into progs; 0 on failure (msg). */
+static int build_programs(stin_context *ctx, const char *dir, int tess, stin__program *progs,
+                          char *msg, size_t msg_size)
+{
+    char vert[32], frag[32], names[3][40], shadow_name[40], none_name[40];
+    const char *chunks[4], *shadow_only[2], *no_shadow[2];
+    int i;
+    /* the lit program's surface and shadow functions (plain variant); flat.frag
+     * serves the visibility output (the shadow test) and, with no test, the
+     * depth-only volume and map passes */
+    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), names, chunks);
+    stin__formatf(shadow_name, sizeof shadow_name, "%s%s", dir, lit_shadow_chunk(ctx));
+    shadow_only[0] = shadow_name;
+    shadow_only[1] = NULL;
+    stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
+    no_shadow[0] = none_name;
+    no_shadow[1] = NULL;
+    for (i = 0; i < STIN__PROG_COUNT; i++) {
+        stin__program *p = &progs[i];
+        stin__formatf(vert, sizeof vert, "%s%s", dir, vert_names[i]);
+        stin__formatf(frag, sizeof frag, "%s%s", dir, frag_names[i]);
+        p->name = stin__program_build(ctx, vert, frag,
+                                      i == STIN__PROG_LIT      ? chunks
+                                      : i == STIN__PROG_FLAT   ? shadow_only
+                                      : i == STIN__PROG_VOLUME ? no_shadow
+                                                               : NULL,
+                                      tess, msg, msg_size);
+        if (!p->name)
+            return 0;
+        locate(ctx, p);
+    }
+    return 1;
+}
+
+static void delete_programs(stin_context *ctx, stin__program *progs, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (progs[i].name) {
+            GL(ctx, DeleteProgram)(progs[i].name);
+            progs[i].name = 0;
+        }
+}
+
+/* "displace-tess": the same programs tessellated, swapped in for frames
+ * with displaced draws (stin__glsl_tessellate); a set that does not build
+ * moves displacement to "displace". */
+static void build_tessellated(stin_context *ctx, const char *dir)
+{
+    char msg[160], why[220];
+    int ok = build_programs(ctx, dir, 1, ctx->glsl_tess.programs, msg, sizeof msg) &&
+             build_variants(ctx, dir, 1, ctx->glsl_surface.best, ctx->glsl_tess.lit, msg,
+                            sizeof msg) == ctx->glsl_surface.best;
+    if (ok)
+        return;
+    delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    stin__formatf(why, sizeof why, "its tessellated programs failed to build (%s)", msg);
+    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_VTF, why);
+}
+
+static void swap_programs(stin__program *a, stin__program *b, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        stin__program t = a[i];
+        a[i] = b[i];
+        b[i] = t;
+    }
+}
+
+void stin__glsl_tessellate(stin_context *ctx, int on)
+{
+    if (!on == !ctx->glsl_tess.active || !ctx->glsl_tess.programs[STIN__PROG_LIT].name)
+        return;
+    swap_programs(ctx->programs, ctx->glsl_tess.programs, STIN__PROG_COUNT);
+    swap_programs(ctx->glsl_surface.lit, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    ctx->glsl_tess.active = on;
+    ctx->glsl_surface.current = NULL;
 }
 
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size)
 {
     const char *dir = tier == STIN_TIER_GL4 ? "gl4/" : "gl2/";
-    char vert[32], frag[32];
-    int i;
     stin__glsl_release(ctx);
-    for (i = 0; i < STIN__PROG_COUNT; i++) {
-        stin__program *p = &ctx->programs[i];
-        stin__formatf(vert, sizeof vert, "%s%s", dir, vert_names[i]);
-        stin__formatf(frag, sizeof frag, "%s%s", dir, frag_names[i]);
-        {
-            /* the lit program's surface and shadow functions (plain variant) */
-            char names[3][40];
-            const char *chunks[4];
-            stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), names, chunks);
-            const char *shadow_only[2];
-            char shadow_name[40];
-            stin__formatf(shadow_name, sizeof shadow_name, "%s%s", dir, lit_shadow_chunk(ctx));
-            shadow_only[0] = shadow_name;
-            shadow_only[1] = NULL;
-            const char *no_shadow[2];
-            char none_name[40];
-            stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
-            no_shadow[0] = none_name;
-            no_shadow[1] = NULL;
-            /* flat.frag serves the visibility output (the shadow test) and,
-             * with no test, the depth-only volume and map passes */
-            p->name = stin__program_build(ctx, vert, frag,
-                                          i == STIN__PROG_LIT      ? chunks
-                                          : i == STIN__PROG_FLAT   ? shadow_only
-                                          : i == STIN__PROG_VOLUME ? no_shadow
-                                                                   : NULL,
-                                          msg, msg_size);
-        }
-        if (!p->name) {
-            stin__glsl_release(ctx);
-            return STIN_ERROR_GL;
-        }
-        locate(ctx, p);
+    if (!build_programs(ctx, dir, 0, ctx->programs, msg, msg_size)) {
+        stin__glsl_release(ctx);
+        return STIN_ERROR_GL;
     }
     build_surface_variants(ctx, dir);
+    if (stin__displace_tessellated(ctx))
+        build_tessellated(ctx, dir);
     if (tier == STIN_TIER_GL4) { /* core profiles have no client arrays: stream volumes */
         GL(ctx, GenBuffers)(1, &ctx->volume_vbo);
         GL(ctx, GenVertexArrays)(1, &ctx->volume_vao);
@@ -142,17 +207,11 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
 
 void stin__glsl_release(stin_context *ctx)
 {
-    int i;
-    for (i = 0; i < STIN__PROG_COUNT; i++)
-        if (ctx->programs[i].name) {
-            GL(ctx, DeleteProgram)(ctx->programs[i].name);
-            ctx->programs[i].name = 0;
-        }
-    for (i = 0; i < STIN__SURF_COUNT; i++)
-        if (ctx->glsl_surface.lit[i].name) {
-            GL(ctx, DeleteProgram)(ctx->glsl_surface.lit[i].name);
-            ctx->glsl_surface.lit[i].name = 0;
-        }
+    stin__glsl_tessellate(ctx, 0);
+    delete_programs(ctx, ctx->programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl_surface.lit, STIN__SURF_COUNT);
+    delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
     ctx->glsl_surface.current = NULL;
     if (ctx->volume_vbo)
         GL(ctx, DeleteBuffers)(1, &ctx->volume_vbo);

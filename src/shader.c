@@ -130,14 +130,15 @@ static const char *const *vertex_chunks(const stin_context *ctx, const char *ver
 /* Attribute locations are fixed so that one vertex layout (and one VAO per
  * mesh) serves every program. */
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
-                           const char *const *frag_chunks, char *msg, size_t size)
+                           const char *const *frag_chunks, int tessellate, char *msg,
+                           size_t size)
 {
     stin__program_source src;
     stin__memzero(&src, sizeof src);
     src.vert = vert;
     src.frag = frag;
     src.frag_chunks = frag_chunks;
-    src.tessellate = 1;
+    src.tessellate = tessellate;
     return stin__program_build_source(ctx, &src, msg, size);
 }
 

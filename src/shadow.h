@@ -127,6 +127,8 @@ typedef struct stin__vdsm_state {
     GLuint fbo, position, normal, depth;
     int width, height;      /* allocated texels (0: not yet) */
     GLuint position_prog, facing_prog, polygon_prog, query;
+    GLuint position_tess, polygon_tess; /* "displace-tess": the two, tessellated */
+    int tess_active;        /* they are swapped into position_prog and polygon_prog */
     GLint pos_model, pos_view_proj, pos_camera;
     GLint face_position, face_normal, face_light;
     GLint poly_model, poly_view_proj, poly_light, poly_camera, poly_viewport, poly_grow,
@@ -149,6 +151,12 @@ void stin__vdsm_pyramid_init(stin_context *ctx);
 void stin__vdsm_pyramid_release(stin_context *ctx);
 void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4]);
 void stin__vdsm_pyramid_uniforms(stin_context *ctx);
+/* The polygon program's pyramid uniforms again (it was swapped). */
+void stin__vdsm_pyramid_relocate(stin_context *ctx);
+/* "displace-tess": swaps the tessellated position-buffer and shadow-polygon
+ * programs in (on) or out, their uniforms located again; nothing without
+ * them (shadow_vdsm.c). */
+void stin__vdsm_tessellate(stin_context *ctx, int on);
 /* Shared by the vdsm files (shadow_vdsm.c): a program of embedded shaders
  * (geom may be NULL; out1 names a second output after o_position;
  * tessellate as in stin__program_source), and the

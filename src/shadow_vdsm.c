@@ -50,7 +50,10 @@ void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint 
 static void release(stin_context *ctx)
 {
     stin__vdsm_state *v = &ctx->vdsm;
+    GLuint none = 0;
     stin__vdsm_delete_programs(ctx, &v->position_prog, &v->facing_prog, &v->polygon_prog);
+    stin__vdsm_delete_programs(ctx, &v->position_tess, &v->polygon_tess, &none);
+    v->tess_active = 0;
     if (v->query)
         GL(ctx, DeleteQueries)(1, &v->query);
     v->query = 0;
@@ -97,6 +100,43 @@ static stin_technique fallback(const stin_context *ctx)
     return STIN_TECH_SHADOWS_OFF;
 }
 
+/* "displace-tess": the mesh-drawing programs again, tessellated; if they
+ * do not build, displacement moves to "displace". */
+static void build_tessellated(stin_context *ctx)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    char msg[160], why[220];
+    GLuint none = 0;
+    msg[0] = '\0';
+    v->position_tess = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL,
+                                          "gl4/vdsm_position.frag", "o_normal", 1, msg, sizeof msg);
+    if (v->position_tess)
+        v->polygon_tess = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag",
+                                             NULL, 1, msg, sizeof msg);
+    if (v->polygon_tess)
+        return;
+    stin__vdsm_delete_programs(ctx, &v->position_tess, &v->polygon_tess, &none);
+    stin__formatf(why, sizeof why, "vdsm's tessellated programs failed to build (%s)", msg);
+    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_VTF, why);
+}
+
+void stin__vdsm_tessellate(stin_context *ctx, int on)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    GLuint t;
+    if (!on == !v->tess_active || !v->polygon_tess)
+        return;
+    t = v->position_prog;
+    v->position_prog = v->position_tess;
+    v->position_tess = t;
+    t = v->polygon_prog;
+    v->polygon_prog = v->polygon_tess;
+    v->polygon_tess = t;
+    v->tess_active = on;
+    locate(ctx);
+    stin__vdsm_pyramid_relocate(ctx);
+}
+
 static stin_result vdsm_init(stin_context *ctx)
 {
     stin__vdsm_state *v = &ctx->vdsm;
@@ -124,6 +164,8 @@ static stin_result vdsm_init(stin_context *ctx)
         return STIN_OK;
     }
     locate(ctx);
+    if (stin__displace_tessellated(ctx))
+        build_tessellated(ctx);
     stin__vdsm_pyramid_init(ctx);
     if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
         GL(ctx, GenQueries)(1, &v->query);

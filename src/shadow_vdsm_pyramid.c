@@ -79,6 +79,12 @@ static void locate(stin_context *ctx, GLuint polygon_prog)
 #undef LOC
 }
 
+void stin__vdsm_pyramid_relocate(stin_context *ctx)
+{
+    if (ctx->vdsm.pyramid.light_prog && ctx->vdsm.pyramid.reduce_prog)
+        locate(ctx, ctx->vdsm.polygon_prog);
+}
+
 static void float_texture(stin_context *ctx, GLuint tex, int levels, int size)
 {
     int k;

@@ -24,6 +24,16 @@ int stin__displace_tessellated(const stin_context *ctx)
     return ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique == STIN_TECH_DISPLACEMENT_TESS;
 }
 
+/* 1 when a draw of the frame is displaced. */
+static int frame_displaces(const stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++)
+        if (stin__displace_active(ctx, &ctx->draws[i].material))
+            return 1;
+    return 0;
+}
+
 void stin__displace_frame_begin(stin_context *ctx)
 {
     const float *view = ctx->frame.view, *proj = ctx->frame.projection;
@@ -44,15 +54,25 @@ void stin__displace_frame_begin(stin_context *ctx)
         stin__mat4_identity(inv); /* begin checked the view: not reached */
     for (k = 0; k < 3; k++)
         ctx->displace.tess_eye[k] = inv[12 + k];
-    if (!stin__displace_tessellated(ctx))
+    if (!stin__displace_tessellated(ctx) || !frame_displaces(ctx))
         return;
+    /* only frames with displaced draws pay for tessellation stages */
+    stin__glsl_tessellate(ctx, 1);
+    if (ctx->shadow == &stin__shadow_vdsm)
+        stin__vdsm_tessellate(ctx, 1);
+    ctx->displace.tessellating = 1;
     GL(ctx, GetIntegerv)(GL_PATCH_VERTICES, &ctx->displace.caller_patch_vertices);
     GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, 3);
 }
 
 void stin__displace_frame_end(stin_context *ctx)
 {
-    if (stin__displace_tessellated(ctx) && ctx->displace.caller_patch_vertices > 0)
+    if (!ctx->displace.tessellating)
+        return;
+    stin__glsl_tessellate(ctx, 0);
+    stin__vdsm_tessellate(ctx, 0);
+    ctx->displace.tessellating = 0;
+    if (ctx->displace.caller_patch_vertices > 0)
         GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, ctx->displace.caller_patch_vertices);
 }
 

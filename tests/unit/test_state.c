@@ -338,6 +338,12 @@ static int run_frame(stin_output output, stin_export ex)
     xf[13] = 0.2f;
     xf[14] = 1.2f;
     assert_int_equal(stin_draw(ctx, cube, xf, &glass), STIN_OK);
+    /* displaced where the context displaces (GL 4.5: the tessellated
+     * programs and GL_PATCH_VERTICES, which the caller gets back) */
+    tex.displace = 1;
+    xf[14] = -1.2f;
+    assert_int_equal(stin_draw(ctx, cube, xf, &tex), STIN_OK);
+    tex.displace = 0;
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
     return 1;
 }

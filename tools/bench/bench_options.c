@@ -215,6 +215,16 @@ static const bench_option table[] = {
 
     FRAMES(SEC_VDSM, "--vdsm-frames", "3", "1", PER_ROW),
     SETUPS(SEC_VDSM, "--vdsm-setups", "1", "fresh shadows-off context per set-up"),
+
+    {SEC_DISPLACE, "--displace-scene", "FILE", "tools/bench/scenes/displace-grid.json", NULL,
+     set_text, F(sec[SEC_DISPLACE].scene), 0, 0, 0, "the dense grid (height-mapped materials "
+     "displaced; the camera moved in and out for the speed-ups)"},
+    {SEC_DISPLACE, "--displace-wall", "FILE", "tests/scenes/stone-wall.json", NULL, set_text,
+     F(displace_wall), 0, 0, 0, "the coarse scene"},
+    {SEC_DISPLACE, "--displace-levels", "1,4", "1,4,16,64", "1,4", set_list, F(displace_levels), 1,
+     64, 4, "fixed tessellation levels on the coarse scene (gl4)"},
+    FRAMES(SEC_DISPLACE, "--displace-frames", "5", "1", PER_ROW),
+    SETUPS(SEC_DISPLACE, "--displace-setups", "2", "fresh plain context per set-up"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

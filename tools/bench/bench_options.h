@@ -39,6 +39,8 @@ typedef struct options {
     int_list map_sizes;     /* maps */
     int maps_no_fbo;        /* maps */
     int_list pcf_sizes, pcf_kernels;
+    const char *displace_wall; /* displace: the coarse scene */
+    int_list displace_levels;  /* displace: fixed tessellation levels on it */
 } options;
 
 /* Fills o from the defaults (--quick's where it is given) and argv. Prints

@@ -13,7 +13,8 @@
 enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 
 /* Indices into bench_sections[], in the order they run. */
-enum { SEC_RAW, SEC_SHADOWS, SEC_MAPS, SEC_PCF, SEC_SURFACE, SEC_VDSM, SECTION_COUNT };
+enum { SEC_RAW, SEC_SHADOWS, SEC_MAPS, SEC_PCF, SEC_SURFACE, SEC_VDSM, SEC_DISPLACE,
+       SECTION_COUNT };
 
 struct options;
 
@@ -45,5 +46,6 @@ int section_maps(bench_env *env, const scene *s, int *ran);
 int section_pcf(bench_env *env, const scene *s, int *ran);
 int section_surface(bench_env *env, const scene *s, int *ran);
 int section_vdsm(bench_env *env, const scene *s, int *ran);
+int section_displace(bench_env *env, const scene *s, int *ran);
 
 #endif

@@ -11,4 +11,6 @@ const bench_section bench_sections[SECTION_COUNT] = {
     {"surface", "GL2/GL4 surface techniques against the plain surface", section_surface},
     {"vdsm", "GL4 VDSM per step set (SP, +EP, +SM, +DC): the seed's P_c, against shadows off, "
              "SP alone and stencil volumes, per --scenes scene", section_vdsm},
+    {"displace", "GL2/GL4 displacement (VTF, tessellation) against the surface chain and the "
+                 "plain surface, each speed-up on and off", section_displace},
 };

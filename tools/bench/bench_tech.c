@@ -53,9 +53,10 @@ static void side_destroy(side *sd)
 
 static void config_name(const tech_config *c, char *out, size_t size)
 {
-    snprintf(out, size, "shadows %s, map size %u, surface %s, debug flags 0x%x",
+    snprintf(out, size, "shadows %s, map size %u, surface %s, displacement %s, debug flags 0x%x",
              stin_technique_name(c->shadows), c->map_size,
              c->surface == STIN_TECH_NONE ? "auto" : stin_technique_name(c->surface),
+             c->displacement == STIN_TECH_NONE ? "auto" : stin_technique_name(c->displacement),
              (unsigned)c->debug_flags);
 }
 
@@ -79,8 +80,12 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
     desc.tier = tier;
     desc.techniques[STIN_FEATURE_SHADOWS] = c->shadows;
     desc.techniques[STIN_FEATURE_SURFACE] = c->surface;
+    desc.techniques[STIN_FEATURE_DISPLACEMENT] = c->displacement;
     desc.shadow_map_size = c->map_size;
     desc.debug_flags = c->debug_flags;
+    desc.displace_guard_band = c->guard_band;
+    desc.displace_tess_pixels = c->tess_pixels;
+    desc.displace_tess_max = c->tess_max;
     scene_gpu_size_desc(s, &desc);
     bytes = stin_memory_size(&desc);
     if (!bytes) {
@@ -117,6 +122,13 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
         snprintf(err, err_size, "%s: surface is '%s', not the forced '%s' (%s)",
                  stin_tier_name(tier), stin_technique_name(ch.technique),
                  stin_technique_name(c->surface), ch.reason);
+        return 0;
+    }
+    ch = stin_query_choice(sd->ctx, STIN_FEATURE_DISPLACEMENT);
+    if (c->displacement != STIN_TECH_NONE && ch.technique != c->displacement) {
+        snprintf(err, err_size, "%s: displacement is '%s', not the forced '%s' (%s)",
+                 stin_tier_name(tier), stin_technique_name(ch.technique),
+                 stin_technique_name(c->displacement), ch.reason);
         return 0;
     }
     if (!scene_gpu_create(&sd->gpu, s, sd->ctx, err, err_size))

@@ -4,7 +4,7 @@
  * kernel, or a surface technique), each timed as a ratio to a baseline
  * configuration of the same tier and scene (shadows off, or the plain
  * surface, or shadows off and a debug flag set). Used by the "PCF shadow
- * maps", "Surface techniques" and "VDSM" sections. */
+ * maps", "Surface techniques", "VDSM" and "Displacement" sections. */
 #ifndef STIN_BENCH_TECH_H
 #define STIN_BENCH_TECH_H
 
@@ -23,6 +23,9 @@ typedef struct tech_config {
     uint32_t map_size;       /* desc.shadow_map_size; 0 = stin's default */
     int pcf_kernel;          /* every scene light's pcf_kernel; 0 = as the scene has it */
     uint32_t debug_flags;    /* desc.debug_flags (vdsm's steps and counter) */
+    stin_technique displacement; /* desc.techniques[STIN_FEATURE_DISPLACEMENT]; NONE = auto */
+    float guard_band, tess_pixels; /* desc.displace_guard_band, displace_tess_pixels (0: default) */
+    uint32_t tess_max;       /* desc.displace_tess_max (0: default) */
 } tech_config;
 
 typedef struct tech_settings {
