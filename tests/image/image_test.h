@@ -33,6 +33,8 @@ void model_tests(run *r, stin_tier tier, const char *path);
 void shadow_tests(run *r, stin_tier tier, const char *path);
 /* VDSM exact shadows of one scene (vdsm_test.c; GL4 only). */
 void vdsm_tests(run *r, stin_tier tier, const char *path);
+/* The seed's VDSM behaviours on built-in scenes, once per run (GL4). */
+void vdsm_seed_tests(run *r, stin_tier tier);
 /* DOT3 bump mapping of one scene at one tier, plus a built-in analytic scene
  * on the first call per tier (dot3_test.c). */
 void dot3_tests(run *r, stin_tier tier, const char *path);

@@ -38,9 +38,7 @@
  *              render must differ (the flag is what makes it right).
  */
 #include "aov.h"
-#include "capture.h"
-#include "image_test.h"
-#include "reference.h"
+#include "vdsm_case.h"
 #include "scene_primitives.h"
 
 #include <math.h>
@@ -48,209 +46,21 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define AMBIGUOUS_MOVE 1e-5
-/* Pixels on a reference shadow edge that may differ: the GPU's interpolated
- * surface point is off the exact one by up to about 1e-5 of the eye
- * distance, which moves a shadow edge that far (measured: at most 4 pixels
- * of 18,002 on the spheres scenes at 256x192). */
-#define VIS_EDGE_BUDGET 0.0005
-#define AMBIGUOUS_COS 1e-4
-
-typedef struct vdsm_case {
-    run *r;
-    const scene *s;
-    const char *scene_name;
-    const reference *refr;
-    const ref_hit *hits;
-    const float *ref;        /* reference AOVs (P), rows bottom to top */
-} vdsm_case;
-
-/* The ray cast leaves the surface as vdsm's test does (shaders/gl4/vdsm.frag):
- * 2^-13 of the point's largest coordinate along the facet normal, not the
- * reference's scene epsilon (1e-4 of the scene), which would decide pixels
- * within that distance of a shadow edge differently. */
-static float truth_at(const vdsm_case *c, const ref_hit *h)
-{
-    double a = fabs(h->P[0]), b = fabs(h->P[1]), d = fabs(h->P[2]), m = a > b ? a : b;
-    m = m > d ? m : d;
-    return reference_visibility_offset(c->refr, h, 0, (m > 1e-3 ? m : 1e-3) / 8192.0);
-}
-
-static void name_of(const vdsm_case *c, const char *test, char *out, size_t size)
-{
-    snprintf(out, size, "gl4/%s/vdsm-%s", c->scene_name, test);
-}
-
-static const float *gl_px(const image *img, int x, int y)
-{
-    return img->pixels + ((size_t)(img->height - 1 - y) * img->width + x) * AOV_CHANNELS;
-}
-
-static int p_matches(const float *g, const float *ref)
-{
-    double d2 = 0;
-    int k;
-    if (!(g[AOV_Z] > 0.0f))
-        return 0;
-    for (k = 0; k < 3; k++) {
-        double d = g[AOV_PX + k] - ref[REFERENCE_CH_PX + k];
-        d2 += d * d;
-    }
-    return sqrt(d2) <= 1e-3 * ref[REFERENCE_CH_Z] + 1e-3;
-}
-
-/* The light's distance from the point (directional: the point's distance
- * from the origin plus one) plus the eye's. */
-static double ray_lengths(const vdsm_case *c, const ref_hit *h)
-{
-    const scene_light *l = &c->s->lights[0];
-    double d = 0, e = 0;
-    int k;
-    for (k = 0; k < 3; k++) {
-        double a = l->type == SCENE_LIGHT_DIRECTIONAL ? h->P[k] : l->position[k] - h->P[k];
-        double b = c->s->camera.eye[k] - h->P[k];
-        d += a * a;
-        e += b * b;
-    }
-    return (l->type == SCENE_LIGHT_DIRECTIONAL ? sqrt(d) + 1.0 : sqrt(d)) + sqrt(e);
-}
-
-/* The reference's answer is not robust here: see the file comment. */
-static int ambiguous(const vdsm_case *c, const ref_hit *h, float vis)
-{
-    const scene_light *l = &c->s->lights[0];
-    double to_light[3], len = 0, cosine = 0, move = AMBIGUOUS_MOVE * ray_lengths(c, h);
-    int k, axis;
-    for (k = 0; k < 3; k++) {
-        to_light[k] = l->type == SCENE_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k] - h->P[k];
-        len += to_light[k] * to_light[k];
-        cosine += to_light[k] * h->Ng[k];
-    }
-    if (len > 0 && fabs(cosine) / sqrt(len) < AMBIGUOUS_COS)
-        return 1;
-    /* along the surface (moving into it would only test the offset) */
-    {
-        double t1[3], t2[3], pick[3] = {0, 0, 0}, n1 = 0, n2 = 0;
-        pick[fabs(h->Ng[0]) < 0.5 ? 0 : 1] = 1.0;
-        t1[0] = h->Ng[1] * pick[2] - h->Ng[2] * pick[1];
-        t1[1] = h->Ng[2] * pick[0] - h->Ng[0] * pick[2];
-        t1[2] = h->Ng[0] * pick[1] - h->Ng[1] * pick[0];
-        t2[0] = h->Ng[1] * t1[2] - h->Ng[2] * t1[1];
-        t2[1] = h->Ng[2] * t1[0] - h->Ng[0] * t1[2];
-        t2[2] = h->Ng[0] * t1[1] - h->Ng[1] * t1[0];
-        for (k = 0; k < 3; k++) {
-            n1 += t1[k] * t1[k];
-            n2 += t2[k] * t2[k];
-        }
-        for (axis = 0; axis < 4; axis++) {
-            ref_hit moved = *h;
-            const double *t = axis & 1 ? t2 : t1;
-            double s = (axis & 2 ? -move : move) / sqrt(axis & 1 ? n2 : n1);
-            for (k = 0; k < 3; k++)
-                moved.P[k] += (float)(s * t[k]);
-            if (truth_at(c, &moved) != vis)
-                return 1;
-        }
-    }
-    return 0;
-}
-
-/* Pixels whose visibility differs from the reference; ambiguous ones are
- * counted apart, and of the rest those next to a reference shadow edge. */
-static long mismatches(const vdsm_case *c, const capture *cap, long *compared, long *ambig,
-                       long *isolated, long *on_edge)
-{
-    int w = c->r->width, h = c->r->height, x, y;
-    long differ = 0;
-    *compared = *ambig = *isolated = *on_edge = 0;
-    for (y = 0; y < h; y++)
-        for (x = 0; x < w; x++) {
-            const ref_hit *hit = &c->hits[(size_t)y * w + x];
-            const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
-            const float *g = gl_px(&cap->img, x, y);
-            float truth;
-            if (!hit->hit || !p_matches(g, ref))
-                continue;
-            (*compared)++;
-            truth = truth_at(c, hit);
-            if ((g[AOV_VIS_R] >= 0.5f) == (truth >= 0.5f))
-                continue;
-            if (ambiguous(c, hit, truth)) {
-                (*ambig)++;
-                continue;
-            }
-            differ++;
-            if (getenv("STIN_TEST_VERBOSE"))
-                fprintf(stderr, "  vdsm mismatch at pixel %d,%d: stin %.3f, reference %.3f\n", x,
-                        h - 1 - y, g[AOV_VIS_R], truth);
-            {
-                /* isolated: every neighbour agrees with the reference (the seed's
-                 * lone lit pixel in a shadow); on an edge: the reference changes
-                 * (or the object does) within one pixel */
-                int dx, dy, alone = 1, edge = 0;
-                for (dy = -1; dy <= 1; dy++)
-                    for (dx = -1; dx <= 1; dx++) {
-                        int nx = x + dx, ny = y + dy;
-                        const ref_hit *o;
-                        if (!(dx || dy) || nx < 0 || ny < 0 || nx >= w || ny >= h)
-                            continue;
-                        o = &c->hits[(size_t)ny * w + nx];
-                        if (!o->hit || o->object != hit->object || truth_at(c, o) != truth)
-                            edge = 1;
-                        else if ((gl_px(&cap->img, nx, ny)[AOV_VIS_R] >= 0.5f) != (truth >= 0.5f))
-                            alone = 0;
-                    }
-                *isolated += alone && !edge;
-                *on_edge += edge;
-            }
-        }
-    return differ;
-}
-
-/* The step sets of the chain, as debug flags (each counts its primitives). */
-#define SET_SP (STIN_DEBUG_VDSM_NO_EP | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC | \
-                STIN_DEBUG_VDSM_COUNT)
-#define SET_EP (STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC | STIN_DEBUG_VDSM_COUNT)
-#define SET_SM (STIN_DEBUG_VDSM_NO_DC | STIN_DEBUG_VDSM_COUNT)
-#define SET_ALL STIN_DEBUG_VDSM_COUNT
-#define SMALL_MAP 64
-
-static int render_sized(const vdsm_case *c, uint32_t debug, uint32_t map_size, capture *out,
-                        const char *test)
-{
-    capture_options o;
-    char err[512], name[256];
-    memset(&o, 0, sizeof o);
-    o.tier = STIN_TIER_GL4;
-    o.shadows = STIN_TECH_SHADOWS_VDSM;
-    o.debug_flags = debug;
-    o.shadow_map_size = map_size;
-    if (capture_render(c->r->plat, c->r->profile, c->s, &o, out, err, sizeof err))
-        return 1;
-    name_of(c, test, name, sizeof name);
-    report(c->r, "FAIL", name, "%s", err);
-    capture_free(out);
-    return 0;
-}
-
-static int render(const vdsm_case *c, uint32_t debug, capture *out, const char *test)
-{
-    return render_sized(c, debug, 0, out, test);
-}
+#define SMALL_MAP 64 /* texels a side of the small light pyramid (map-size) */
 
 static void test_clean(const vdsm_case *c, const capture *cap)
 {
     char name[256];
-    name_of(c, "gl-clean", name, sizeof name);
+    vdsm_name(c, "gl-clean", name, sizeof name);
     capture_report_clean(c->r, name, cap);
 }
 
 static long test_vis(const vdsm_case *c, const capture *cap)
 {
-    long compared, ambig, isolated, edge, differ = mismatches(c, cap, &compared, &ambig, &isolated,
+    long compared, ambig, isolated, edge, differ = vdsm_mismatches(c, cap, &compared, &ambig, &isolated,
                                                               &edge);
     char name[256];
-    name_of(c, "vis", name, sizeof name);
+    vdsm_name(c, "vis", name, sizeof name);
     report(c->r,
            compared > 0 && differ == edge && edge <= VIS_EDGE_BUDGET * compared ? "PASS" : "FAIL",
            name,
@@ -266,10 +76,10 @@ static void test_no_grow(const vdsm_case *c, long with_growth)
     capture b;
     long compared, ambig, isolated, edge, differ;
     char name[256];
-    name_of(c, "no-grow", name, sizeof name);
-    if (!render(c, STIN_DEBUG_VDSM_NO_GROW, &b, "no-grow"))
+    vdsm_name(c, "no-grow", name, sizeof name);
+    if (!vdsm_render(c, STIN_DEBUG_VDSM_NO_GROW, &b, "no-grow"))
         return;
-    differ = mismatches(c, &b, &compared, &ambig, &isolated, &edge);
+    differ = vdsm_mismatches(c, &b, &compared, &ambig, &isolated, &edge);
     report(c->r, differ >= with_growth ? "PASS" : "FAIL", name,
            "without conservative growth %ld of %ld pixels differ (%ld isolated), with it %ld",
            differ, compared, isolated, with_growth);
@@ -281,7 +91,7 @@ static int on_shadow_edge(const vdsm_case *c, int x, int y)
 {
     int w = c->r->width, h = c->r->height, dx, dy;
     const ref_hit *me = &c->hits[(size_t)y * w + x];
-    float v = me->hit ? truth_at(c, me) : 1.0f;
+    float v = me->hit ? vdsm_truth(c, me) : 1.0f;
     for (dy = -1; dy <= 1; dy++)
         for (dx = -1; dx <= 1; dx++) {
             int nx = x + dx, ny = y + dy;
@@ -289,7 +99,7 @@ static int on_shadow_edge(const vdsm_case *c, int x, int y)
             if (nx < 0 || ny < 0 || nx >= w || ny >= h)
                 continue;
             o = &c->hits[(size_t)ny * w + nx];
-            if (o->hit != me->hit || o->object != me->object || (o->hit && truth_at(c, o) != v))
+            if (o->hit != me->hit || o->object != me->object || (o->hit && vdsm_truth(c, o) != v))
                 return 1;
         }
     return 0;
@@ -304,15 +114,15 @@ static long differ(const vdsm_case *c, const capture *a, const capture *b, long 
     *edge = 0;
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++)
-            if (gl_px(&a->img, x, y)[AOV_VIS_R] != gl_px(&b->img, x, y)[AOV_VIS_R]) {
+            if (vdsm_px(&a->img, x, y)[AOV_VIS_R] != vdsm_px(&b->img, x, y)[AOV_VIS_R]) {
                 if (on_shadow_edge(c, x, y))
                     (*edge)++;
                 else
                     n++;
                 if (getenv("STIN_TEST_VERBOSE"))
                     fprintf(stderr, "  vdsm masks differ at pixel %d,%d: %.3f, %.3f\n", x,
-                            h - 1 - y, gl_px(&a->img, x, y)[AOV_VIS_R],
-                            gl_px(&b->img, x, y)[AOV_VIS_R]);
+                            h - 1 - y, vdsm_px(&a->img, x, y)[AOV_VIS_R],
+                            vdsm_px(&b->img, x, y)[AOV_VIS_R]);
             }
     return n;
 }
@@ -322,7 +132,7 @@ static void test_steps(const vdsm_case *c, const capture *sp, const capture *ep)
     char name[256];
     long edge, n = differ(c, sp, ep, &edge);
     int w = c->r->width, h = c->r->height;
-    name_of(c, "steps", name, sizeof name);
+    vdsm_name(c, "steps", name, sizeof name);
     report(c->r, n == 0 && edge <= VIS_EDGE_BUDGET * w * h ? "PASS" : "FAIL", name,
            "SP alone and SP + EP differ on %ld of %d pixels away from a reference shadow edge "
            "(must be 0) and on %ld on one (at most %.2f%%: which triangle a grazing segment "
@@ -335,7 +145,7 @@ static void test_chain(const vdsm_case *c, const capture *sp, const capture *ep,
 {
     char name[256];
     long e1, e2, n1 = differ(c, ep, sm, &e1), n2 = differ(c, ep, all, &e2);
-    name_of(c, "chain", name, sizeof name);
+    vdsm_name(c, "chain", name, sizeof name);
     report(c->r, n1 + e1 + n2 + e2 == 0 ? "PASS" : "FAIL", name,
            "against SP + EP, + SM differs on %ld pixels and + SM + DC on %ld (must be 0); "
            "primitives emitted: SP %u, + EP %u, + SM %u, + DC %u", n1 + e1, n2 + e2,
@@ -349,7 +159,7 @@ static void test_culls(const vdsm_case *c, const capture *ep, const capture *sm,
     char name[256];
     uint32_t p_ep = ep->stats.vdsm_primitives, p_sm = sm->stats.vdsm_primitives,
              p_all = all->stats.vdsm_primitives;
-    name_of(c, "culls", name, sizeof name);
+    vdsm_name(c, "culls", name, sizeof name);
     if (!p_ep) {
         report(c->r, "SKIP", name, "the context counted no primitives (no queries)");
         return;
@@ -364,8 +174,8 @@ static void test_map_size(const vdsm_case *c, const capture *all)
     capture b;
     char name[256];
     long edge, n;
-    name_of(c, "map-size", name, sizeof name);
-    if (!render_sized(c, SET_ALL, SMALL_MAP, &b, "map-size"))
+    vdsm_name(c, "map-size", name, sizeof name);
+    if (!vdsm_render_sized(c, SET_ALL, SMALL_MAP, &b, "map-size"))
         return;
     n = differ(c, all, &b, &edge);
     report(c->r, n + edge == 0 ? "PASS" : "FAIL", name,
@@ -380,11 +190,11 @@ static void chain_tests(const vdsm_case *c, const capture *all)
 {
     capture sp, ep, sm;
     int spheres = !strncmp(c->scene_name, "spheres", 7);
-    if (!render(c, SET_SP, &sp, "steps"))
+    if (!vdsm_render(c, SET_SP, &sp, "steps"))
         return;
-    if (render(c, SET_EP, &ep, "steps")) {
+    if (vdsm_render(c, SET_EP, &ep, "steps")) {
         test_steps(c, &sp, &ep);
-        if (render(c, SET_SM, &sm, "chain")) {
+        if (vdsm_render(c, SET_SM, &sm, "chain")) {
             test_chain(c, &sp, &ep, &sm, all);
             if (spheres)
                 test_culls(c, &ep, &sm, all);
@@ -394,40 +204,6 @@ static void chain_tests(const vdsm_case *c, const capture *all)
     }
     capture_free(&sp);
     test_map_size(c, all);
-}
-
-/* The reference of a case: 0 (reported under `test`) when it cannot be made. */
-static int case_open(vdsm_case *c, run *r, const scene *s, const char *scene_name,
-                     const char *test)
-{
-    char err[512];
-    reference *ref;
-    memset(c, 0, sizeof *c);
-    c->r = r;
-    c->s = s;
-    c->scene_name = scene_name;
-    ref = reference_create(s, err, sizeof err);
-    c->refr = ref;
-    c->hits = malloc(sizeof *c->hits * (size_t)r->width * r->height);
-    c->ref = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
-    if (!ref || !c->hits || !c->ref ||
-        !reference_primary(ref, r->width, r->height, (ref_hit *)c->hits) ||
-        !reference_render_ex(s, ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED,
-                             (float *)c->ref)) {
-        char name[256];
-        name_of(c, test, name, sizeof name);
-        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
-        return 0;
-    }
-    return 1;
-}
-
-static void case_close(vdsm_case *c)
-{
-    free((void *)c->hits);
-    free((void *)c->ref);
-    if (c->refr)
-        reference_destroy((reference *)c->refr);
 }
 
 /* The eye inside a closed 6 x 4 x 6 box (two-sided or not) with a ball on
@@ -502,15 +278,15 @@ static void test_two_sided(run *r)
     }
     for (i = 0; i < 2; i++) {
         long n;
-        if (!case_open(&c, r, &s[i], "vdsm-inside-box", "two-sided")) {
-            case_close(&c);
+        if (!vdsm_case_open(&c, r, &s[i], "vdsm-inside-box", "two-sided")) {
+            vdsm_case_close(&c);
             goto done;
         }
-        if (!render(&c, 0, &cap, "two-sided")) {
-            case_close(&c);
+        if (!vdsm_render(&c, 0, &cap, "two-sided")) {
+            vdsm_case_close(&c);
             goto done;
         }
-        n = mismatches(&c, &cap, &compared, &ambig, &isolated, &edge);
+        n = vdsm_mismatches(&c, &cap, &compared, &ambig, &isolated, &edge);
         if (i == 0) {
             right = n == edge && edge <= VIS_EDGE_BUDGET * compared ? n : -1 - n;
             shown = compared;
@@ -518,9 +294,9 @@ static void test_two_sided(run *r)
         else
             wrong = n;
         capture_free(&cap);
-        case_close(&c);
+        vdsm_case_close(&c);
     }
-    name_of(&c, "two-sided", name, sizeof name);
+    vdsm_name(&c, "two-sided", name, sizeof name);
     report(r, right >= 0 && wrong > 0 ? "PASS" : "FAIL", name,
            "eye inside a closed box lit from outside: with its material two-sided %ld of %ld "
            "pixels differ from the ray cast (none away from a shadow edge allowed), one-sided "
@@ -544,17 +320,18 @@ void vdsm_tests(run *r, stin_tier tier, const char *path)
         box_done = 1;
         test_two_sided(r);
     }
+    vdsm_seed_tests(r, tier);
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     if (!scene_load(path, &s, err, sizeof err))
         return; /* test_scene reported it */
-    if (s.light_count && case_open(&c, r, &s, scene_name, "vis") &&
-        render(&c, SET_ALL, &cap, "vis")) {
+    if (s.light_count && vdsm_case_open(&c, r, &s, scene_name, "vis") &&
+        vdsm_render(&c, SET_ALL, &cap, "vis")) {
         test_clean(&c, &cap);
         test_no_grow(&c, test_vis(&c, &cap));
         chain_tests(&c, &cap);
         capture_free(&cap);
     }
     if (s.light_count)
-        case_close(&c);
+        vdsm_case_close(&c);
     scene_free(&s);
 }
