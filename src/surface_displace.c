@@ -169,7 +169,8 @@ void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const 
         GL(ctx, Uniform4fv)(l->params, 1, p);
         return;
     }
-    log_coarse(ctx, d, t);
+    if (!l->patches) /* tessellation adds the vertices */
+        log_coarse(ctx, d, t);
     p[0] = d->material.height_scale;
     p[1] = d->material.height_bias;
     p[2] = 1.0f;
