@@ -589,6 +589,13 @@ typedef struct stin_desc {
                                         * fraction of its half-size each side before
                                         * a vertex is left undisplaced; default (0) 1,
                                         * finite and >= 0 */
+    /* CSG products (stin_draw_csg), per frame, all products together: */
+    uint32_t max_csg_primitives;       /* primitives, default 256, below 2^24 */
+    uint32_t max_csg_terms;            /* terms of the normal forms, default 256, below 2^24 */
+    uint32_t max_csg_literals;         /* primitives named by those terms, counted once per
+                                        * term; default 4096, below 2^24. Normalising takes
+                                        * a scratch of 2 (max_csg_terms + max_csg_literals)
+                                        * words, and the products a slot per term */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -883,6 +890,79 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
                       const stin_material *material);
 stin_result stin_end_frame(stin_context *ctx);
 
+/* ---- CSG products ----------------------------------------------------------
+ * A CSG product is a solid made of primitives (closed stin meshes, each with
+ * its transform and material) by an expression of union, intersection and
+ * subtraction. stin_draw_csg adds one to the open frame (like stin_draw) and
+ * normalises its expression into the context's block as Goldfeather's sum of
+ * products: a union of terms, each the intersection of some primitives and
+ * the complements of others (a - (b u c) = a !b !c; a - (b n c) = a !b u a !c;
+ * a n (b u c) = a b u a c). Each term keeps at least one primitive that is
+ * not complemented; literals are sorted by primitive, repeats within a term
+ * are merged and a term that holds a primitive and its complement is empty
+ * and dropped (a - a draws nothing). No other simplification is made: a
+ * union of n terms with k primitives each costs what Goldfeather's method
+ * costs for it.
+ * The product's visible surface is where the camera ray first enters the
+ * solid: a primitive's outside where it is not complemented, the inside of a
+ * complemented one (a cavity's wall, shaded with the primitive's material and
+ * its normal flipped to face the cavity). */
+typedef enum stin_csg_op {
+    STIN_CSG_PRIMITIVE = 0, /* a leaf: node.primitive */
+    STIN_CSG_UNION,         /* a u b */
+    STIN_CSG_INTERSECTION,  /* a n b */
+    STIN_CSG_SUBTRACTION    /* a - b */
+} stin_csg_op;
+
+typedef struct stin_csg_node {
+    stin_csg_op op;
+    uint32_t primitive;     /* STIN_CSG_PRIMITIVE: index into stin_csg_desc.primitives */
+    uint32_t a, b;          /* operations: operand nodes, each before this one in the array */
+} stin_csg_node;
+
+typedef struct stin_csg_primitive {
+    stin_mesh mesh;         /* a closed 2-manifold (stin_mesh_info.closed_manifold) */
+    float transform[16];    /* column-major object -> world, finite; all zero = identity */
+    stin_material material; /* as stin_draw's; opaque (colour alpha 1 after defaults) and
+                             * not displaced */
+} stin_csg_primitive;
+
+typedef struct stin_csg_desc {
+    const stin_csg_primitive *primitives;
+    uint32_t primitive_count;  /* at least 1 */
+    const stin_csg_node *nodes;
+    uint32_t node_count;       /* at least 1, at most 65536; the LAST node is the root.
+                                * Operands come before the node that uses them (a node
+                                * may be used several times); nesting at most 1024 deep */
+} stin_csg_desc;
+
+/* Adds a CSG product to the open frame. Errors (logged, nothing of the
+ * product kept): STIN_ERROR_INVALID_STATE outside a frame;
+ * STIN_ERROR_INVALID_ARGUMENT for a NULL desc, an empty expression (no
+ * nodes or no primitives), an unknown op, a primitive index out of range, an
+ * operand that does not come before its node, nesting deeper than 1024, a
+ * NaN/Inf or singular transform, a bad material (as stin_draw), a blended or
+ * displaced material; STIN_ERROR_INVALID_HANDLE for a stale mesh;
+ * STIN_ERROR_INVALID_MESH for a mesh that is not a closed 2-manifold (the
+ * parity of its surfaces along a ray is what says inside);
+ * STIN_ERROR_CAPACITY when the frame's max_csg_primitives, max_csg_terms or
+ * max_csg_literals would be passed, when the partial normal forms outgrow
+ * the scratch, or when expanding the expression visits more than 2^22 nodes
+ * (a shared node counts at each use) (the log names which; the product is
+ * dropped and counted in stin_frame_stats.dropped_csg). Primitives no term
+ * names are not drawn. A product whose every term is empty draws nothing
+ * and returns STIN_OK. stin_query_csg_terms reads the normal form back. */
+stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
+
+/* The normal form of the frame's product `product` (0 = the first accepted
+ * by stin_draw_csg since stin_begin_frame, until the next begin): the
+ * number of terms; when `literals` is not NULL, the literals of term
+ * `term` (at most `capacity` of them) as primitive index * 2 + 1 for a
+ * complemented primitive, * 2 for a plain one, and *count their number.
+ * Returns the term count, 0 for an unknown product. */
+uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_t term,
+                              uint32_t *literals, uint32_t capacity, uint32_t *count);
+
 typedef struct stin_frame_stats {
     uint32_t draws, lights, passes, triangles;
     uint32_t shadow_volume_triangles; /* volume sides and caps drawn */
@@ -892,6 +972,8 @@ typedef struct stin_frame_stats {
     /* vdsm: primitives its geometry shader emitted, all lights (GL_PRIMITIVES_GENERATED,
      * the seed's P_c; 0 where the context has no queries) */
     uint32_t vdsm_primitives;
+    uint32_t csg_products, csg_terms; /* accepted by stin_draw_csg (terms of their normal forms) */
+    uint32_t dropped_csg;      /* products stin_draw_csg refused */
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

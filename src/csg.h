@@ -1,0 +1,73 @@
+/* SPDX-License-Identifier: MIT */
+/* CSG products of a frame (csg.c: stin_draw_csg and its checks;
+ * csg_normal_form.c: the expression as Goldfeather's sum of products). */
+#ifndef STIN_CSG_H
+#define STIN_CSG_H
+
+#include "stin/stin.h"
+#include "path.h"
+
+/* A literal names a primitive of its product: index * 2, + 1 complemented. */
+#define STIN__CSG_LITERAL(primitive, complemented) ((primitive) * 2u + ((complemented) ? 1u : 0u))
+#define STIN__CSG_PRIMITIVE_OF(literal) ((literal) >> 1)
+#define STIN__CSG_COMPLEMENTED(literal) ((literal) & 1u)
+#define STIN__CSG_MAX_NODES 65536u
+#define STIN__CSG_MAX_DEPTH 1024u
+/* Node visits of one normalisation (shared subtrees are expanded at every
+ * use; a tree of a - a - a ... would otherwise take 2^depth visits). */
+#define STIN__CSG_MAX_VISITS (1u << 22)
+
+typedef struct stin__csg_term {
+    uint32_t first, count;   /* literals[first .. first + count), sorted, each primitive once */
+} stin__csg_term;
+
+typedef struct stin__csg_product {
+    uint32_t first_primitive, primitive_count; /* in the frame's primitive list */
+    uint32_t first_term, term_count;
+} stin__csg_product;
+
+/* The frame's products, in the caller's block (sizes from the desc). */
+typedef struct stin__csg_state {
+    stin__draw *primitives;   /* max_csg_primitives: mesh, transform, material each */
+    stin__csg_product *products; /* max_csg_terms (a product has at least one term) */
+    stin__csg_term *terms;    /* max_csg_terms */
+    uint32_t *literals;       /* max_csg_literals */
+    uint32_t *scratch;        /* normalisation, scratch_words */
+    uint32_t scratch_words;
+    uint32_t primitive_count, product_count, term_count, literal_count;
+} stin__csg_state;
+
+/* Words of normalisation scratch for the desc's capacities. */
+uint32_t stin__csg_scratch_words(const stin_desc *d);
+
+/* Where the normal form goes and how much room is left. */
+typedef struct stin__csg_out {
+    stin__csg_term *terms;
+    uint32_t max_terms, term_count;
+    uint32_t *literals;
+    uint32_t max_literals, literal_count;
+    uint32_t literal_base;    /* added to each term's `first` (the store's offset) */
+} stin__csg_out;
+
+typedef enum stin__csg_nf_result {
+    STIN__CSG_NF_OK = 0,
+    STIN__CSG_NF_TERMS,       /* more terms than out->max_terms */
+    STIN__CSG_NF_LITERALS,    /* more literals than out->max_literals */
+    STIN__CSG_NF_SCRATCH,     /* intermediate forms outgrew the scratch */
+    STIN__CSG_NF_DEPTH,       /* nested deeper than STIN__CSG_MAX_DEPTH */
+    STIN__CSG_NF_WORK         /* more than STIN__CSG_MAX_VISITS node visits */
+} stin__csg_nf_result;
+
+/* The normal form of nodes[node_count - 1] (nodes already checked: ops
+ * known, operands before their node, primitive indices in range) into out.
+ * Pure: no context, no GL. On failure out's counts are left at 0. */
+stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t node_count,
+                                          uint32_t *scratch, uint32_t scratch_words,
+                                          stin__csg_out *out);
+
+/* A material checked and its defaults applied (frame.c; stin_draw's rules). */
+stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,
+                                   const stin_material *material, stin_material *out,
+                                   stin_result *r);
+
+#endif
