@@ -81,7 +81,7 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     size_t scratch = stin__adjacency_scratch_bytes(mv, d->max_mesh_triangles);
     size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
     size_t frame_scratch = frame_scratch_bytes(d);
-    size_t csg = sizeof(stin__draw) * d->max_csg_primitives +
+    size_t csg = 3u * sizeof(stin__draw) * d->max_csg_primitives +
                  (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->max_csg_terms +
                  sizeof(uint32_t) * ((size_t)d->max_csg_literals + stin__csg_scratch_words(d));
     void *p[14];
@@ -128,6 +128,7 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
         ctx->csg.literals = (uint32_t *)(void *)(ctx->csg.terms + d->max_csg_terms);
         ctx->csg.scratch = ctx->csg.literals + d->max_csg_literals;
         ctx->csg.scratch_words = stin__csg_scratch_words(d);
+        ctx->csg.faces = (stin__draw *)(void *)(ctx->csg.scratch + ctx->csg.scratch_words);
     }
     return stin__align16(a->used) + 16u; /* slack for aligning the caller's block */
 }

@@ -93,8 +93,10 @@ static stin_result take_primitives(stin_context *ctx, const stin_csg_desc *desc)
             return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
                           "CSG primitives are opaque and not displaced (colour alpha 1, "
                           "displace 0), primitive", i);
+        d->material.normal_map.id = d->material.height_map.id = 0; /* see stin.h */
         d->mesh_slot = slot;
         d->sort_depth = 0.0f;
+        d->csg = 0;
     }
     return STIN_OK;
 }
@@ -202,4 +204,63 @@ uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_
             *count = i;
     }
     return p->term_count;
+}
+
+/* Each primitive's faces that a term shows: front where it is plain in a
+ * term, back where it is complemented (both when both). */
+void stin__csg_faces(stin_context *ctx)
+{
+    stin__csg_state *c = &ctx->csg;
+    uint32_t pi, ti, li;
+    c->face_count = 0;
+    if (!c->resolved)
+        return;
+    for (pi = 0; pi < c->product_count; pi++) {
+        const stin__csg_product *p = &c->products[pi];
+        uint32_t q;
+        for (q = 0; q < p->primitive_count; q++) {
+            int front = 0, back = 0;
+            for (ti = 0; ti < p->term_count; ti++) {
+                const stin__csg_term *t = &c->terms[p->first_term + ti];
+                for (li = 0; li < t->count; li++) {
+                    uint32_t l = c->literals[t->first + li];
+                    if (STIN__CSG_PRIMITIVE_OF(l) != q)
+                        continue;
+                    if (STIN__CSG_COMPLEMENTED(l))
+                        back = 1;
+                    else
+                        front = 1;
+                }
+            }
+            if (front) {
+                c->faces[c->face_count] = c->primitives[p->first_primitive + q];
+                c->faces[c->face_count++].csg = STIN__CSG_FRONT;
+            }
+            if (back) {
+                c->faces[c->face_count] = c->primitives[p->first_primitive + q];
+                c->faces[c->face_count++].csg = STIN__CSG_BACK;
+            }
+        }
+    }
+}
+
+int stin__csg_face_begin(stin_context *ctx, const stin__draw *d, stin__pass_state *saved)
+{
+    stin__pass_state ps = *stin__pass_current(ctx);
+    int mirrored = stin__mat4_det(d->transform) < 0.0;
+    GLenum hidden = ((d->csg == STIN__CSG_BACK) != mirrored) ? GL_FRONT : GL_BACK;
+    *saved = ps;
+    if (ps.cull && ps.cull_face != hidden)
+        return 0; /* the pass draws the other side only (map-depth's side passes) */
+    if (ps.depth_func == GL_LESS)
+        ps.depth_func = GL_EQUAL; /* on the resolved depth only */
+    ps.cull = 1;
+    ps.cull_face = hidden;
+    stin__pass_apply(ctx, &ps);
+    return 1;
+}
+
+void stin__csg_face_end(stin_context *ctx, const stin__pass_state *saved)
+{
+    stin__pass_apply(ctx, saved);
 }

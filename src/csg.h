@@ -6,6 +6,7 @@
 
 #include "stin/stin.h"
 #include "path.h"
+#include "pass_state.h"
 
 /* A literal names a primitive of its product: index * 2, + 1 complemented. */
 #define STIN__CSG_LITERAL(primitive, complemented) ((primitive) * 2u + ((complemented) ? 1u : 0u))
@@ -35,6 +36,10 @@ typedef struct stin__csg_state {
     uint32_t *scratch;        /* normalisation, scratch_words */
     uint32_t scratch_words;
     uint32_t primitive_count, product_count, term_count, literal_count;
+    stin__draw *faces;        /* 2 max_csg_primitives: the faces the frame's passes draw */
+    uint32_t face_count;
+    int resolved;             /* this frame's products are in its depth buffer */
+    int said_unusable, said_layers;
 } stin__csg_state;
 
 /* Words of normalisation scratch for the desc's capacities. */
@@ -64,6 +69,22 @@ typedef enum stin__csg_nf_result {
 stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t node_count,
                                           uint32_t *scratch, uint32_t scratch_words,
                                           stin__csg_out *out);
+
+/* Goldfeather (csg_goldfeather.c): the frame's products into its depth
+ * buffer (after the target's clear, before the ambient pass); 0 when it
+ * cannot (logged once): the products are not drawn. depth_again puts the
+ * resolved depth into the bound framebuffer too, depth LESS (the screen
+ * mask's copy of the frame's depth). */
+size_t stin__csg_goldfeather_bytes(int w, int h);
+int stin__csg_resolve(struct stin_context *ctx, const stin__path *path);
+void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
+/* The faces of the resolved products as draws (csg.c), after the resolve. */
+void stin__csg_faces(struct stin_context *ctx);
+/* Around a face draw of a path's pass: depth LESS becomes EQUAL, the face
+ * culled that the draw does not show (skipped, returning 0, where the pass
+ * culls the side it needs); end restores the pass state. */
+int stin__csg_face_begin(struct stin_context *ctx, const stin__draw *d, stin__pass_state *saved);
+void stin__csg_face_end(struct stin_context *ctx, const stin__pass_state *saved);
 
 /* A material checked and its defaults applied (frame.c; stin_draw's rules). */
 stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,

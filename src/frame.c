@@ -59,6 +59,8 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
     ctx->draw_count = ctx->light_count = 0;
     ctx->csg.primitive_count = ctx->csg.product_count = 0;
     ctx->csg.term_count = ctx->csg.literal_count = 0;
+    ctx->csg.face_count = 0;
+    ctx->csg.resolved = 0;
     /* The projection every pass draws with, known from here on
      * (stin_query_frame_projection): a shadow technique may move its far
      * plane to infinity (volumes), whatever lights the frame gets. */
@@ -236,6 +238,7 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
     }
     d = &ctx->draws[ctx->draw_count];
     d->mesh_slot = slot;
+    d->csg = 0;
     if (transform)
         stin__memcopy(d->transform, transform, sizeof d->transform);
     else
@@ -389,6 +392,8 @@ static void run_plan(stin_context *ctx)
     stage_light_prepasses(ctx);
     stage_target(ctx);
     path->begin(ctx);
+    if (stin__csg_resolve(ctx, path)) /* the products' depth, under every later pass */
+        stin__csg_faces(ctx);
     if (ctx->frame.export_visibility == STIN_EXPORT_VISIBILITY_ONLY) {
         path->ambient(ctx, STIN__OPAQUE, 1); /* the depth the application shades against */
     } else if (ctx->frame.output == STIN_OUTPUT_NORMAL) {

@@ -536,7 +536,8 @@ const char *stin_feature_name(stin_feature f);
     X(DISPLACEMENT_OFF, "displacement-off", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL1) \
     X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)                 \
     X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)           \
-    X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2)
+    X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
+    X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
