@@ -250,8 +250,11 @@ int stin__csg_face_begin(stin_context *ctx, const stin__draw *d, stin__pass_stat
     int mirrored = stin__mat4_det(d->transform) < 0.0;
     GLenum hidden = ((d->csg == STIN__CSG_BACK) != mirrored) ? GL_FRONT : GL_BACK;
     *saved = ps;
-    if (ps.cull && ps.cull_face != hidden)
-        return 0; /* the pass draws the other side only (map-depth's side passes) */
+    /* map-depth's side test draws the lit pass once per side the eye sees:
+     * a product's surface always shows its outside to the eye (a cavity's
+     * wall too), so it goes with the front sides' pass */
+    if (ps.cull && ps.cull_face != GL_BACK)
+        return 0;
     if (ps.depth_func == GL_LESS)
         ps.depth_func = GL_EQUAL; /* on the resolved depth only */
     ps.cull = 1;

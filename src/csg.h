@@ -81,8 +81,8 @@ void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
 /* The faces of the resolved products as draws (csg.c), after the resolve. */
 void stin__csg_faces(struct stin_context *ctx);
 /* Around a face draw of a path's pass: depth LESS becomes EQUAL, the face
- * culled that the draw does not show (skipped, returning 0, where the pass
- * culls the side it needs); end restores the pass state. */
+ * culled that the draw does not show (skipped, returning 0, in map-depth's
+ * pass for the back sides the eye sees); end restores the pass state. */
 int stin__csg_face_begin(struct stin_context *ctx, const stin__draw *d, stin__pass_state *saved);
 void stin__csg_face_end(struct stin_context *ctx, const stin__pass_state *saved);
 

@@ -155,17 +155,30 @@ static void test_union_equals(run *r, const csg_case *c, stin_tier tier, const s
  * and no reference shadow edge lies within 2 pixels (a map's texels blur
  * edges over that band; image_test.c's other shadow tests do the same). */
 static void test_shadow(run *r, const csg_case *c, stin_tier tier, const scene *s,
-                        const capture *cap, const ref_hit *hits, const float *ref)
+                        const capture_options *base, stin_technique t, const ref_hit *hits,
+                        const float *ref)
 {
-    stin_technique t = cap->choice[STIN_FEATURE_SHADOWS].technique;
     double bound = t == STIN_TECH_SHADOWS_VOLUME ? CSG_VIS_VOLUME_MAX : CSG_VIS_MAP_MAX;
     int w = r->width, h = r->height, x, y;
     long compared = 0, differ = 0, shadowed = 0;
-    char name[256];
-    case_name(c, tier, "shadow", name, sizeof name);
-    if (t == STIN_TECH_SHADOWS_VDSM || t == STIN_TECH_SHADOWS_OFF) {
-        report(r, "SKIP", name, "%s does not shadow CSG products (not done)",
-               stin_technique_name(t));
+    char test[64], name[256];
+    capture_options o = *base;
+    capture one, *cap = &one;
+    snprintf(test, sizeof test, "shadow-%s", stin_technique_name(t));
+    case_name(c, tier, test, name, sizeof name);
+    o.shadows = t;
+    {
+        char err[512];
+        if (!capture_render(r->plat, r->profile, s, &o, &one, err, sizeof err)) {
+            /* a forced technique the context cannot run is refused at create */
+            report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "%s", err);
+            return;
+        }
+    }
+    if (one.choice[STIN_FEATURE_SHADOWS].technique != t) {
+        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(t),
+               one.choice[STIN_FEATURE_SHADOWS].reason);
+        capture_free(&one);
         return;
     }
     for (y = 0; y < h; y++)
@@ -193,6 +206,7 @@ static void test_shadow(run *r, const csg_case *c, stin_tier tier, const scene *
            name, "%s: visibility differs on %ld of %ld pixels the light reaches (%.3f%%, bound "
            "%.1f%%; %ld shadowed compared, need >= 100)", stin_technique_name(t), differ,
            compared, compared ? 100.0 * differ / compared : 0.0, 100.0 * bound, shadowed);
+    capture_free(&one);
 }
 
 static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
@@ -261,8 +275,15 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
            name, "N within %.0f degrees on %ld of %ld pixels away from edges (max %.1f; need "
            "%.1f%%)", CSG_NORMAL_DEGREES, cr.normal_compared - cr.normal_over,
            cr.normal_compared, cr.normal_max_deg, 100.0 * CSG_NORMAL_MIN_MATCH);
-    if (c->shadows)
-        test_shadow(r, c, tier, &s, &cap, hits, refimg);
+    if (c->shadows) {
+        /* vdsm's position buffer does not hold CSG surfaces yet: not tested */
+        static const stin_technique shadow_techniques[] = {
+            STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_MAP_DEPTH,
+            STIN_TECH_SHADOWS_MAP_COMBINE};
+        size_t k;
+        for (k = 0; k < sizeof shadow_techniques / sizeof shadow_techniques[0]; k++)
+            test_shadow(r, c, tier, &s, &o, shadow_techniques[k], hits, refimg);
+    }
     if (c->union_equals)
         test_union_equals(r, c, tier, &s, &cap);
     case_name(c, tier, "gl-clean", name, sizeof name);
