@@ -392,8 +392,11 @@ static void run_plan(stin_context *ctx)
     stage_light_prepasses(ctx);
     stage_target(ctx);
     path->begin(ctx);
-    if (stin__csg_resolve(ctx, path)) /* the products' depth, under every later pass */
+    if (stin__csg_resolve(ctx, path)) { /* the products' depth, under every later pass */
         stin__csg_faces(ctx);
+        if (ctx->shadow == &stin__shadow_vdsm)
+            stin__vdsm_buffer_csg(ctx, path);
+    }
     if (ctx->frame.export_visibility == STIN_EXPORT_VISIBILITY_ONLY) {
         path->ambient(ctx, STIN__OPAQUE, 1); /* the depth the application shades against */
     } else if (ctx->frame.output == STIN_OUTPUT_NORMAL) {
