@@ -428,6 +428,7 @@ const char *stin_feature_name(stin_feature f);
  *   shadows:  volume, map-pcf, map-depth, map-combine, off
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace, displacement-off
+ *   csg:      goldfeather, csg-off (see "CSG products" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
@@ -925,7 +926,7 @@ typedef struct stin_csg_primitive {
     stin_mesh mesh;         /* a closed 2-manifold (stin_mesh_info.closed_manifold) */
     float transform[16];    /* column-major object -> world, finite; all zero = identity */
     stin_material material; /* as stin_draw's; opaque (colour alpha 1 after defaults) and
-                             * not displaced */
+                             * not displaced; normal_map and height_map are ignored */
 } stin_csg_primitive;
 
 typedef struct stin_csg_desc {
@@ -954,6 +955,49 @@ typedef struct stin_csg_desc {
  * names are not drawn. A product whose every term is empty draws nothing
  * and returns STIN_OK. stin_query_csg_terms reads the normal form back. */
 stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
+
+/* CSG technique "goldfeather" (any tier on a compatibility context with a
+ * stencil buffer: it copies depth with glReadPixels / glDrawPixels, which
+ * core profiles lack; there the choice is "csg-off", logged, and products
+ * are accepted but not drawn, said once as a FALLBACK warning). The frame
+ * plan resolves every product of the frame after the target's clear and
+ * before the ambient pass, in the frame's own depth and stencil buffers:
+ * per term, per literal, per layer of that primitive's front faces (back
+ * faces where complemented), the layer is picked by a stencil counter (the
+ * k-th fragment of a pixel, in any order; the first layer's count, read
+ * back, says how many layers there are: at most 255, more is logged once),
+ * then the term's other primitives invert a stencil bit each where their
+ * faces lie in front of it, eight (the stencil's bits) a batch, so no
+ * counter overflows whatever the primitive count; a pixel survives where
+ * every bit says inside a plain and outside a complemented primitive, and
+ * the nearest survivor per pixel is kept on the CPU. Faces that coincide
+ * with the candidate (within 4 depth units) count as crossed before it: a
+ * subtracted box sharing a face's plane takes it away, an intersected one
+ * keeps it, two touching faces cancel (the exact reference's rule for
+ * crossings at one distance; no speckle). The result is written into the
+ * depth buffer (what it held before the resolve stays where nearer:
+ * earlier products, a no_clear frame's depth). Then the products' faces
+ * are drawn like draws in every pass (ambient, lit, shadow tests, normal
+ * and visibility outputs, the screen mask) with depth EQUAL on the
+ * resolved surface, a complemented primitive's back faces with their
+ * normals turned to the eye (GL1: two-sided lighting for them). Products
+ * receive shadows from every technique (volume, map-pcf, map-depth and
+ * map-combine are tested against the exact reference; vdsm gets their
+ * surfaces into its position buffer but is not verified on them) and cast
+ * none. Products are opaque; a primitive's normal and height maps are
+ * ignored. Passes: about (1 + layers) x (1 + other literals / 8) per
+ * literal of each term, each layer reading depth back (and the stencil
+ * once per batch), so a resolve costs read-backs more than fill. Memory:
+ * the CPU copies use the block's texture staging or mesh-creation scratch,
+ * whichever is larger (both idle during a frame): 9 bytes a pixel of the
+ * viewport; a viewport that needs more is logged once and its products are
+ * not drawn (raise desc.max_texture_bytes). GL state: the stencil buffer is
+ * cleared to 0 after the resolve (its contents are the frame's anyway, see
+ * GL STATE); the caller's pixel pack state (alignment, row length, skips,
+ * a bound pixel pack buffer) is set aside around the read-backs and given
+ * back, unpack state as for textures. Not done: the camera inside a
+ * product (the near plane is not capped: a product that holds the near
+ * plane shows what lies behind it there), casting shadows, core profiles. */
 
 /* The normal form of the frame's product `product` (0 = the first accepted
  * by stin_draw_csg since stin_begin_frame, until the next begin): the
