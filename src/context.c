@@ -272,6 +272,7 @@ static void release_gl(stin_context *ctx)
         ctx->shadow->release(ctx);
     stin__mask_release(ctx);
     stin__export_release(ctx);
+    stin__csg_release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
@@ -354,8 +355,10 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     r = init_lighting(ctx);
     if (r == STIN_OK)
         r = init_shadows(ctx);
-    if (r == STIN_OK)
+    if (r == STIN_OK) {
         stin__displace_init(ctx);
+        stin__csg_init(ctx);
+    }
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */
         return r;

@@ -40,6 +40,12 @@ typedef struct stin__csg_state {
     uint32_t face_count;
     int resolved;             /* this frame's products are in its depth buffer */
     int said_unusable, said_layers;
+    /* core profiles: the resolved depth goes back through an R32F texture and
+     * a program writing gl_FragDepth (made at stin_create; the texture at the
+     * first frame, grown, never shrunk) */
+    GLuint depth_prog, depth_tex;
+    GLint u_depth, u_origin;
+    int tex_width, tex_height;
 } stin__csg_state;
 
 /* Words of normalisation scratch for the desc's capacities. */
@@ -76,6 +82,10 @@ stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t n
  * resolved depth into the bound framebuffer too, depth LESS (the screen
  * mask's copy of the frame's depth). */
 size_t stin__csg_goldfeather_bytes(int w, int h);
+/* At stin_create after the lighting and shadows: on a core profile the
+ * depth program (GL4 lighting), else csg-off (demoted, logged). */
+void stin__csg_init(struct stin_context *ctx);
+void stin__csg_release(struct stin_context *ctx);
 int stin__csg_resolve(struct stin_context *ctx, const stin__path *path);
 void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
 /* The faces of the resolved products as draws (csg.c), after the resolve. */

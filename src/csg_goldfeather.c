@@ -106,9 +106,39 @@ static void read_stencil(stin_context *ctx, const resolve *r)
     GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
 }
 
-/* The result into the depth buffer at the viewport's corner (depth ALWAYS),
- * with no program (the fragments keep the pixels' depth) and the raster
- * position at clip (-1, -1) through identity matrices. */
+#define GL_R32F 0x822E
+
+/* Core profiles: the result into the R32F texture (grown to the viewport)
+ * and a screen quad writing it as gl_FragDepth. */
+static void write_depth_core(stin_context *ctx, const resolve *r)
+{
+    stin__csg_state *c = &ctx->csg;
+    stin__unpack_saved saved;
+    float origin[4];
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, c->depth_tex);
+    stin__unpack_begin(ctx, &saved);
+    if (r->w > c->tex_width || r->h > c->tex_height) {
+        c->tex_width = r->w > c->tex_width ? r->w : c->tex_width;
+        c->tex_height = r->h > c->tex_height ? r->h : c->tex_height;
+        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R32F, c->tex_width, c->tex_height, 0, GL_RED,
+                            GL_FLOAT, NULL);
+    }
+    GL(ctx, TexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, r->w, r->h, GL_RED, GL_FLOAT, r->result);
+    stin__unpack_end(ctx, &saved);
+    GL(ctx, UseProgram)(c->depth_prog);
+    ctx->glsl_surface.current = NULL;
+    GL(ctx, Uniform1i)(c->u_depth, 0);
+    origin[0] = (float)r->x;
+    origin[1] = (float)r->y;
+    origin[2] = origin[3] = 0.0f;
+    GL(ctx, Uniform4fv)(c->u_origin, 1, origin);
+    stin__vdsm_screen_quad(ctx);
+}
+
+/* The result into the depth buffer at the viewport's corner: with no
+ * program (the fragments keep the pixels' depth) and the raster position
+ * at clip (-1, -1) through identity matrices; on core profiles through
+ * write_depth_core. */
 static void write_depth(stin_context *ctx, const stin__path *path, const resolve *r, GLenum func)
 {
     static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
@@ -119,6 +149,11 @@ static void write_depth(stin_context *ctx, const stin__path *path, const resolve
     ps.depth_func = func;
     ps.color_write = 0;
     stin__pass_apply(ctx, &ps);
+    if (ctx->csg.depth_prog) {
+        write_depth_core(ctx, r);
+        ctx->stats.passes++;
+        return;
+    }
     if (!fixed) {
         GL(ctx, UseProgram)(0);
         ctx->glsl_surface.current = NULL;
@@ -359,4 +394,48 @@ void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
     if (!ctx->csg.resolved || !usable(ctx, &r))
         return;
     write_depth(ctx, path, &r, GL_LESS);
+}
+
+void stin__csg_init(stin_context *ctx)
+{
+    stin__csg_state *c = &ctx->csg;
+    char msg[160], why[200];
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER ||
+        (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)))
+        return; /* csg-off, or glDrawPixels writes the depth */
+    if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_GLSL150) {
+        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
+                     "goldfeather writes depth with glDrawPixels (compatibility profile) or a "
+                     "GLSL 1.50 program (GL4 lighting)");
+        return;
+    }
+    c->depth_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_depth.frag", NULL,
+                                        msg, sizeof msg);
+    if (!c->depth_prog) {
+        stin__formatf(why, sizeof why, "its depth program failed to build (%s)", msg);
+        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF, why);
+        return;
+    }
+    c->u_depth = GL(ctx, GetUniformLocation)(c->depth_prog, "u_depth");
+    c->u_origin = GL(ctx, GetUniformLocation)(c->depth_prog, "u_origin");
+    GL(ctx, GenTextures)(1, &c->depth_tex);
+    {
+        GLint bound = 0;
+        GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &bound);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, c->depth_tex);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)bound);
+    }
+    c->tex_width = c->tex_height = 0;
+}
+
+void stin__csg_release(stin_context *ctx)
+{
+    stin__csg_state *c = &ctx->csg;
+    if (c->depth_prog)
+        GL(ctx, DeleteProgram)(c->depth_prog);
+    if (c->depth_tex)
+        GL(ctx, DeleteTextures)(1, &c->depth_tex);
+    c->depth_prog = c->depth_tex = 0;
 }

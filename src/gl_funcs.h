@@ -38,6 +38,8 @@
     X(void, TexImage2D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,    \
                          GLint border, GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "") \
     X(void, TexParameteri, (GLenum target, GLenum pname, GLint param), NEED_CORE, "")     \
+    X(void, TexSubImage2D, (GLenum target, GLint level, GLint xo, GLint yo, GLsizei w,     \
+                            GLsizei h, GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "") \
     X(void, TexParameterfv, (GLenum target, GLenum pname, const GLfloat *v), NEED_CORE, "") \
     X(void, PixelStorei, (GLenum pname, GLint param), NEED_CORE, "")                      \
     X(void, Finish, (void), NEED_CORE, "")                                                \

@@ -956,10 +956,13 @@ typedef struct stin_csg_desc {
  * and returns STIN_OK. stin_query_csg_terms reads the normal form back. */
 stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
 
-/* CSG technique "goldfeather" (any tier on a compatibility context with a
- * stencil buffer: it copies depth with glReadPixels / glDrawPixels, which
- * core profiles lack; there the choice is "csg-off", logged, and products
- * are accepted but not drawn, said once as a FALLBACK warning). The frame
+/* CSG technique "goldfeather" (every tier with a stencil buffer: it reads
+ * depth with glReadPixels and writes it back with glDrawPixels on
+ * compatibility contexts, on core profiles through an R32F texture the
+ * size of the viewport, made at the first frame and kept, and a GLSL 1.50
+ * program writing gl_FragDepth; a core context without GL4 lighting, or
+ * a frame into a framebuffer without stencil, draws no products: "csg-off"
+ * or a FALLBACK warning, logged once; products are still accepted). The frame
  * plan resolves every product of the frame after the target's clear and
  * before the ambient pass, in the frame's own depth and stencil buffers:
  * per term, per literal, per layer of that primitive's front faces (back
@@ -983,8 +986,8 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * normals turned to the eye (GL1: two-sided lighting for them). Products
  * receive shadows from every technique (volume, map-pcf, map-depth and
  * map-combine are tested against the exact reference; vdsm gets their
- * surfaces into its position buffer but is not verified on them) and cast
- * none. Products are opaque; a primitive's normal and height maps are
+ * surfaces into its position buffer but differs from the reference on about
+ * 1% of the pixels there: not done) and cast none. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + other literals / 8) per
  * literal of each term, each layer reading depth back (and the stencil
  * once per batch), so a resolve costs read-backs more than fill. Memory:
@@ -997,7 +1000,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * a bound pixel pack buffer) is set aside around the read-backs and given
  * back, unpack state as for textures. Not done: the camera inside a
  * product (the near plane is not capped: a product that holds the near
- * plane shows what lies behind it there), casting shadows, core profiles. */
+ * plane shows what lies behind it there), casting shadows, vdsm. */
 
 /* The normal form of the frame's product `product` (0 = the first accepted
  * by stin_draw_csg since stin_begin_frame, until the next begin): the

@@ -17,9 +17,7 @@
  * vertex textures and the shadows are not volumes (their silhouettes are
  * the undisplaced mesh's) */
 #define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_GOLDFEATHER
-#define DISPLACED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_VTF, STIN_TECH_CSG_OFF
-/* compatibility contexts at GL4: goldfeather copies depth with glDrawPixels */
-#define DISPLACED_COMPAT STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_VTF, \
+#define DISPLACED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_VTF, \
     STIN_TECH_CSG_GOLDFEATHER
 
 static const expected_profile table[] = {
@@ -29,7 +27,7 @@ static const expected_profile table[] = {
     {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED}, {1, 1, 0}},
     {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
     {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
-    {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED_COMPAT}, {1, 1, 1}},
+    {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {1, 1, 1}},
 };
 
 const expected_profile *expected_find(const char *profile)
