@@ -248,35 +248,48 @@ static const uint32_t tetra_idx[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
 static const float quad_pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 static const uint32_t quad_idx[] = {0, 1, 2, 0, 2, 3};
 
-static int setup(void **state)
+static void add_mesh(const float *pos, uint32_t nv, const uint32_t *idx, uint32_t ni,
+                     stin_mesh *out)
 {
-    fake_gl_config cfg = fake_gl_profile(FAKE_GL11);
-    stin_desc d;
     stin_mesh_desc md;
+    memset(&md, 0, sizeof md);
+    md.positions = pos;
+    md.vertex_count = nv;
+    md.indices = idx;
+    md.index_count = ni;
+    assert_int_equal(stin_create_mesh(ctx, &md, out), STIN_OK);
+}
+
+/* A context on the fake profile with the tetrahedron and the quad; small
+ * CSG capacities (8 primitives, 4 terms, 8 literals) unless `defaults`. */
+static void make_context(fake_gl_profile_id id, uint64_t caps_mask, int defaults)
+{
+    fake_gl_config cfg = fake_gl_profile(id);
+    stin_desc d;
     size_t bytes;
-    (void)state;
     fake_gl_reset(&cfg);
     d = fake_gl_desc(&log_);
     d.max_meshes = 4;
     d.max_textures = 1;
     d.max_vertices = 64;
     d.max_triangles = 64;
-    d.max_csg_primitives = 8;
-    d.max_csg_terms = 4;
-    d.max_csg_literals = 8;
+    d.caps_mask = caps_mask;
+    if (!defaults) {
+        d.max_csg_primitives = 8;
+        d.max_csg_terms = 4;
+        d.max_csg_literals = 8;
+    }
     bytes = stin_memory_size(&d);
     block = malloc(bytes);
     assert_int_equal(stin_create(&d, block, bytes, &ctx), STIN_OK);
-    memset(&md, 0, sizeof md);
-    md.positions = tetra_pos;
-    md.vertex_count = 4;
-    md.indices = tetra_idx;
-    md.index_count = 12;
-    assert_int_equal(stin_create_mesh(ctx, &md, &tetra), STIN_OK);
-    md.positions = quad_pos;
-    md.indices = quad_idx;
-    md.index_count = 6;
-    assert_int_equal(stin_create_mesh(ctx, &md, &quad), STIN_OK);
+    add_mesh(tetra_pos, 4, tetra_idx, 12, &tetra);
+    add_mesh(quad_pos, 4, quad_idx, 6, &quad);
+}
+
+static int setup(void **state)
+{
+    (void)state;
+    make_context(FAKE_GL11, 0, 0);
     return 0;
 }
 
@@ -473,29 +486,10 @@ static void test_memory_counts_the_capacities(void **state)
     assert_int_equal(d.max_csg_literals, 4096);
 }
 
-/* A context on the fake profile with one tetrahedron (tetra). */
 static void recreate(fake_gl_profile_id id, uint64_t caps_mask)
 {
-    fake_gl_config cfg = fake_gl_profile(id);
-    stin_desc desc;
-    size_t bytes;
-    stin_mesh_desc md;
     teardown(NULL);
-    fake_gl_reset(&cfg);
-    desc = fake_gl_desc(&log_);
-    desc.max_meshes = 2;
-    desc.max_vertices = 64;
-    desc.max_triangles = 64;
-    desc.caps_mask = caps_mask;
-    bytes = stin_memory_size(&desc);
-    block = malloc(bytes);
-    assert_int_equal(stin_create(&desc, block, bytes, &ctx), STIN_OK);
-    memset(&md, 0, sizeof md);
-    md.positions = tetra_pos;
-    md.vertex_count = 4;
-    md.indices = tetra_idx;
-    md.index_count = 12;
-    assert_int_equal(stin_create_mesh(ctx, &md, &tetra), STIN_OK);
+    make_context(id, caps_mask, 1);
     log_.items[STIN_LOG_FALLBACK] = 0; /* what stin_create logged */
 }
 
