@@ -18,6 +18,9 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 8u << 20);
     d.soft_shadow_samples = DEFAULT(d.soft_shadow_samples, 8u);
     d.shadow_map_size = DEFAULT(d.shadow_map_size, 1024u);
+    d.max_csg_primitives = DEFAULT(d.max_csg_primitives, 256u);
+    d.max_csg_terms = DEFAULT(d.max_csg_terms, 256u);
+    d.max_csg_literals = DEFAULT(d.max_csg_literals, 4096u);
     if (d.displace_guard_band == 0.0f)
         d.displace_guard_band = 1.0f;
     if (d.displace_tess_pixels == 0.0f)
@@ -35,7 +38,9 @@ static int desc_valid(const stin_desc *d)
            d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u &&
            d->displace_guard_band >= 0.0f && d->displace_guard_band <= 1e30f &&
            d->displace_tess_pixels > 0.0f && d->displace_tess_pixels <= 1e30f &&
-           d->displace_tess_max <= 64u;
+           d->displace_tess_max <= 64u &&
+           d->max_csg_primitives < 0x1000000u && d->max_csg_terms < 0x1000000u &&
+           d->max_csg_literals < 0x1000000u;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)
@@ -81,7 +86,10 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     size_t scratch = stin__adjacency_scratch_bytes(mv, d->max_mesh_triangles);
     size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
     size_t frame_scratch = frame_scratch_bytes(d);
-    void *p[13];
+    size_t csg = 3u * sizeof(stin__draw) * d->max_csg_primitives +
+                 (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->max_csg_terms +
+                 sizeof(uint32_t) * ((size_t)d->max_csg_literals + stin__csg_scratch_words(d));
+    void *p[14];
     if (tangent_scratch > scratch)
         scratch = tangent_scratch;
     p[0] = take(a, sizeof(stin_context), &ok);
@@ -97,6 +105,7 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     p[10] = take(a, sizeof(stin__draw) * d->max_draws + sizeof(uint32_t) * d->max_draws, &ok);
     p[11] = take(a, sizeof(stin_light_desc) * d->max_lights, &ok);
     p[12] = take(a, frame_scratch, &ok);
+    p[13] = take(a, csg, &ok);
     if (!ok)
         return 0;
     if (ctx) {
@@ -117,6 +126,14 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
         ctx->lights = (stin_light_desc *)p[11];
         ctx->frame_scratch = (unsigned char *)p[12];
         ctx->frame_scratch_bytes = frame_scratch;
+        ctx->csg.primitives = (stin__draw *)p[13];
+        ctx->csg.products = (stin__csg_product *)(void *)(ctx->csg.primitives +
+                                                          d->max_csg_primitives);
+        ctx->csg.terms = (stin__csg_term *)(void *)(ctx->csg.products + d->max_csg_terms);
+        ctx->csg.literals = (uint32_t *)(void *)(ctx->csg.terms + d->max_csg_terms);
+        ctx->csg.scratch = ctx->csg.literals + d->max_csg_literals;
+        ctx->csg.scratch_words = stin__csg_scratch_words(d);
+        ctx->csg.faces = (stin__draw *)(void *)(ctx->csg.scratch + ctx->csg.scratch_words);
     }
     return stin__align16(a->used) + 16u; /* slack for aligning the caller's block */
 }
@@ -260,6 +277,7 @@ static void release_gl(stin_context *ctx)
         ctx->shadow->release(ctx);
     stin__mask_release(ctx);
     stin__export_release(ctx);
+    stin__csg_release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
@@ -342,8 +360,10 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     r = init_lighting(ctx);
     if (r == STIN_OK)
         r = init_shadows(ctx);
-    if (r == STIN_OK)
+    if (r == STIN_OK) {
         stin__displace_init(ctx);
+        stin__csg_init(ctx);
+    }
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */
         return r;

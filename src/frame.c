@@ -57,6 +57,10 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         return STIN_ERROR_INVALID_ARGUMENT;
     ctx->frame = *desc;
     ctx->draw_count = ctx->light_count = 0;
+    ctx->csg.primitive_count = ctx->csg.product_count = 0;
+    ctx->csg.term_count = ctx->csg.literal_count = 0;
+    ctx->csg.face_count = 0;
+    ctx->csg.resolved = 0;
     /* The projection every pass draws with, known from here on
      * (stin_query_frame_projection): a shadow technique may move its far
      * plane to infinity (volumes), whatever lights the frame gets. */
@@ -142,6 +146,51 @@ static void material_defaults(stin_material *m)
         m->pom_min_steps = m->pom_max_steps;
 }
 
+/* A material checked (finite values, ranges, live textures) and its
+ * defaults applied; errors are logged as `call`'s, the item `dropped`. */
+stin_result stin__material_prepare(stin_context *ctx, const char *call, const char *dropped,
+                                   const stin_material *material, stin_material *out,
+                                   stin_result *r)
+{
+    stin_material mat;
+    stin__memzero(&mat, sizeof mat);
+    if (material)
+        mat = *material;
+    *r = STIN_ERROR_INVALID_ARGUMENT;
+    if (!finite_n(mat.color, 4) || !finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess) ||
+        !stin__isfinite(mat.height_scale) || !stin__isfinite(mat.height_bias)) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                  "%s: material values must be finite; %s dropped", call, dropped);
+        return *r;
+    }
+    if (mat.height_scale < 0.0f || mat.self_shadow < 0 || mat.self_shadow > 2 ||
+        (mat.surface != STIN_TECH_NONE &&
+         stin__technique_feature(mat.surface) != STIN_FEATURE_SURFACE)) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                  "%s: material height_scale must be >= 0, self_shadow 0..2 and surface a "
+                  "surface technique or none; %s dropped", call, dropped);
+        return *r;
+    }
+    *r = STIN_ERROR_INVALID_HANDLE;
+    if ((mat.normal_map.id && !stin__texture_lookup(ctx, mat.normal_map)) ||
+        (mat.height_map.id && !stin__texture_lookup(ctx, mat.height_map))) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_HANDLE,
+                  "%s: stale or unknown normal or height map 0x%x/0x%x; %s dropped", call,
+                  mat.normal_map.id, mat.height_map.id, dropped);
+        return *r;
+    }
+    if (mat.albedo.id && !stin__texture_lookup(ctx, mat.albedo)) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_HANDLE,
+                  "%s: stale or unknown albedo texture 0x%x; %s dropped", call, mat.albedo.id,
+                  dropped);
+        return *r;
+    }
+    material_defaults(&mat);
+    *out = mat;
+    *r = STIN_OK;
+    return STIN_OK;
+}
+
 static float eye_depth(const stin_context *ctx, const stin__mesh_slot *m, const float xf[16])
 {
     float c[3], w[3], e[3];
@@ -160,6 +209,7 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
     stin__mesh_slot *m;
     uint32_t slot;
     stin_material mat;
+    stin_result r;
     if (!ctx)
         return STIN_ERROR_INVALID_ARGUMENT;
     if (ctx->state != STIN__IN_FRAME)
@@ -175,36 +225,10 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
         ctx->stats.dropped_draws++;
         return arg_error(ctx, "stin_draw", "transform must be finite; draw dropped");
     }
-    stin__memzero(&mat, sizeof mat);
-    if (material)
-        mat = *material;
-    if (!finite_n(mat.color, 4) || !finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess) ||
-        !stin__isfinite(mat.height_scale) || !stin__isfinite(mat.height_bias)) {
+    if (stin__material_prepare(ctx, "stin_draw", "draw", material, &mat, &r) != STIN_OK) {
         ctx->stats.dropped_draws++;
-        return arg_error(ctx, "stin_draw", "material values must be finite; draw dropped");
+        return r;
     }
-    if (mat.height_scale < 0.0f || mat.self_shadow < 0 || mat.self_shadow > 2 ||
-        (mat.surface != STIN_TECH_NONE &&
-         stin__technique_feature(mat.surface) != STIN_FEATURE_SURFACE)) {
-        ctx->stats.dropped_draws++;
-        return arg_error(ctx, "stin_draw", "material height_scale must be >= 0, self_shadow 0..2 "
-                                           "and surface a surface technique or none; draw dropped");
-    }
-    if ((mat.normal_map.id && !stin__texture_lookup(ctx, mat.normal_map)) ||
-        (mat.height_map.id && !stin__texture_lookup(ctx, mat.height_map))) {
-        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_HANDLE,
-                  "stin_draw: stale or unknown normal or height map 0x%x/0x%x; draw dropped",
-                  mat.normal_map.id, mat.height_map.id);
-        ctx->stats.dropped_draws++;
-        return STIN_ERROR_INVALID_HANDLE;
-    }
-    if (mat.albedo.id && !stin__texture_lookup(ctx, mat.albedo)) {
-        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_HANDLE,
-                  "stin_draw: stale or unknown albedo texture 0x%x; draw dropped", mat.albedo.id);
-        ctx->stats.dropped_draws++;
-        return STIN_ERROR_INVALID_HANDLE;
-    }
-    material_defaults(&mat);
     if (ctx->draw_count >= ctx->desc.max_draws) {
         ctx->stats.dropped_draws++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_POOL_FULL,
@@ -214,6 +238,7 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
     }
     d = &ctx->draws[ctx->draw_count];
     d->mesh_slot = slot;
+    d->csg = 0;
     if (transform)
         stin__memcopy(d->transform, transform, sizeof d->transform);
     else
@@ -367,6 +392,11 @@ static void run_plan(stin_context *ctx)
     stage_light_prepasses(ctx);
     stage_target(ctx);
     path->begin(ctx);
+    if (stin__csg_resolve(ctx, path)) { /* the products' depth, under every later pass */
+        stin__csg_faces(ctx);
+        if (ctx->shadow == &stin__shadow_vdsm)
+            stin__vdsm_buffer_csg(ctx, path);
+    }
     if (ctx->frame.export_visibility == STIN_EXPORT_VISIBILITY_ONLY) {
         path->ambient(ctx, STIN__OPAQUE, 1); /* the depth the application shades against */
     } else if (ctx->frame.output == STIN_OUTPUT_NORMAL) {

@@ -38,9 +38,13 @@
     X(void, TexImage2D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,    \
                          GLint border, GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "") \
     X(void, TexParameteri, (GLenum target, GLenum pname, GLint param), NEED_CORE, "")     \
+    X(void, TexSubImage2D, (GLenum target, GLint level, GLint xo, GLint yo, GLsizei w,     \
+                            GLsizei h, GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "") \
     X(void, TexParameterfv, (GLenum target, GLenum pname, const GLfloat *v), NEED_CORE, "") \
     X(void, PixelStorei, (GLenum pname, GLint param), NEED_CORE, "")                      \
     X(void, Finish, (void), NEED_CORE, "")                                                \
+    X(void, ReadPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum fmt, GLenum type,  \
+                         void *pixels), NEED_CORE, "")                                    \
     X(void, PolygonOffset, (GLfloat factor, GLfloat units), NEED_CORE, "")                \
     X(void, DrawBuffer, (GLenum buf), NEED_CORE, "")                                      \
     X(void, ReadBuffer, (GLenum buf), NEED_CORE, "")                                      \
@@ -59,6 +63,9 @@
     X(void, PushAttrib, (GLbitfield mask), STIN_CAP_FIXED_FUNCTION, "")                   \
     X(void, PopAttrib, (void), STIN_CAP_FIXED_FUNCTION, "")                               \
     X(void, PopMatrix, (void), STIN_CAP_FIXED_FUNCTION, "")                               \
+    X(void, RasterPos2f, (GLfloat x, GLfloat y), STIN_CAP_FIXED_FUNCTION, "")             \
+    X(void, DrawPixels, (GLsizei w, GLsizei h, GLenum fmt, GLenum type, const void *pixels), \
+      STIN_CAP_FIXED_FUNCTION, "")                                                        \
     X(void, Lightfv, (GLenum light, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, Lightf, (GLenum light, GLenum pname, GLfloat v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, LightModelfv, (GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "")  \

@@ -13,7 +13,10 @@ typedef struct stin__draw {
     float transform[16];
     stin_material material;
     float sort_depth;  /* eye-space distance of the bounds centre, for blending order */
+    unsigned char csg; /* 0; or a CSG primitive's faces on the resolved depth, drawn
+                        * depth EQUAL: STIN__CSG_FRONT, STIN__CSG_BACK (normals flipped) */
 } stin__draw;
+enum { STIN__CSG_FRONT = 1, STIN__CSG_BACK = 2 };
 
 /* The displacement chunk's uniforms in a program that draws meshes
  * (surface_displace.c); camera: the program draws through the frame's
@@ -71,6 +74,12 @@ typedef struct stin__path {
      * channel i of the screen mask where one is bound (shadow_mask.c). NULL:
      * the path has no masks (fixed function). */
     void (*lit_lights)(stin_context *ctx, const stin_light_desc *lights, int n);
+    /* A draw's geometry alone through the camera, rasterised as the lit
+     * passes rasterise it (equal depths), between geometry_begin and _end;
+     * the render state is the caller's (csg_goldfeather.c). */
+    void (*geometry_begin)(stin_context *ctx);
+    void (*geometry)(stin_context *ctx, const stin__draw *d);
+    void (*geometry_end)(stin_context *ctx);
 } stin__path;
 
 stin_result stin__fixed_init(stin_context *ctx);

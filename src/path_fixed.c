@@ -133,6 +133,29 @@ static int in_set(const stin__draw *d, int which)
     return (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE)) != 0;
 }
 
+/* The CSG products' faces on their resolved depth (opaque): a back face
+ * lit from its side by two-sided lighting (GL flips its normal). */
+static void draw_csg_faces(stin_context *ctx, int which, int materials)
+{
+    uint32_t i;
+    stin__pass_state saved;
+    if (!(which & STIN__OPAQUE))
+        return;
+    for (i = 0; i < ctx->csg.face_count; i++) {
+        const stin__draw *d = &ctx->csg.faces[i];
+        if (!stin__csg_face_begin(ctx, d, &saved))
+            continue;
+        if (d->csg == STIN__CSG_BACK)
+            GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 1);
+        if (materials)
+            set_material(ctx, &d->material);
+        draw_mesh(ctx, d);
+        if (d->csg == STIN__CSG_BACK)
+            GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 0);
+        stin__csg_face_end(ctx, &saved);
+    }
+}
+
 static void draw_set(stin_context *ctx, int which, int materials)
 {
     uint32_t i;
@@ -144,6 +167,7 @@ static void draw_set(stin_context *ctx, int which, int materials)
             set_material(ctx, &d->material);
         draw_mesh(ctx, d);
     }
+    draw_csg_faces(ctx, which, materials);
 }
 
 /* Every draw's geometry seen from a light (its view and projection), no
@@ -278,6 +302,16 @@ static void fixed_normals(stin_context *ctx)
     ctx->stats.passes += 2;
 }
 
+/* CSG resolve (csg_goldfeather.c): geometry alone, the camera's matrices. */
+static void fixed_geometry_begin(stin_context *ctx)
+{
+    GL_DISABLE(ctx, GL_LIGHTING);
+    GL_DISABLE(ctx, GL_TEXTURE_2D);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void fixed_geometry_end(stin_context *ctx) { ctx->bound_mesh = 0xffffffffu; }
+
 static void fixed_volume_begin(stin_context *ctx)
 {
     GL_DISABLE(ctx, GL_LIGHTING);
@@ -345,6 +379,7 @@ const stin__path *stin__fixed_path(void)
     static const stin__path path = {fixed_begin,        fixed_end,         fixed_ambient,
                                     fixed_lit,          fixed_flat,        fixed_volume_begin,
                                     fixed_volume_draw,  fixed_volume_end,  fixed_batches,
-                                    fixed_normals,      fixed_depth,       NULL};
+                                    fixed_normals,      fixed_depth,       NULL,
+                                    fixed_geometry_begin, draw_mesh,       fixed_geometry_end};
     return &path;
 }

@@ -351,7 +351,11 @@ static void submit(stin_context *ctx, const stin__program *p, const stin__draw *
 {
     if (p->u_normal_matrix >= 0) {
         float nm[9];
+        int k;
         stin__mat3_normal(nm, d->transform);
+        if (d->csg == STIN__CSG_BACK) /* a cavity's wall faces into the cavity */
+            for (k = 0; k < 9; k++)
+                nm[k] = -nm[k];
         GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
     }
     stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
@@ -360,6 +364,27 @@ static void submit(stin_context *ctx, const stin__program *p, const stin__draw *
 static int in_set(const stin__draw *d, int which)
 {
     return (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE)) != 0;
+}
+
+/* The CSG products' faces on their resolved depth (opaque). */
+static void draw_csg_faces(stin_context *ctx, const stin__program *p, int which, int materials)
+{
+    uint32_t i;
+    stin__pass_state saved;
+    if (!(which & STIN__OPAQUE))
+        return;
+    for (i = 0; i < ctx->csg.face_count; i++) {
+        const stin__draw *d = &ctx->csg.faces[i];
+        const stin__program *q = p;
+        if (!stin__csg_face_begin(ctx, d, &saved))
+            continue;
+        if (materials && ctx->glsl_surface.current)
+            q = lit_for_draw(ctx, d);
+        if (materials)
+            set_material(ctx, q, &d->material);
+        submit(ctx, q, d);
+        stin__csg_face_end(ctx, &saved);
+    }
 }
 
 static void draw_set(stin_context *ctx, const stin__program *p, int which, int materials)
@@ -376,6 +401,7 @@ static void draw_set(stin_context *ctx, const stin__program *p, int which, int m
             set_material(ctx, q, &d->material);
         submit(ctx, q, d);
     }
+    draw_csg_faces(ctx, p, which, materials);
 }
 
 static void pass_state(stin_context *ctx, int additive, int blend_alpha)
@@ -570,12 +596,28 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     ctx->bound_mesh = 0xffffffffu;
 }
 
+/* CSG resolve (csg_goldfeather.c): geometry alone through the volume
+ * program, whose position is invariant with the lit passes'. */
+static void glsl_geometry_begin(stin_context *ctx)
+{
+    use(ctx, STIN__PROG_VOLUME);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void glsl_geometry(stin_context *ctx, const stin__draw *d)
+{
+    submit(ctx, &ctx->programs[STIN__PROG_VOLUME], d);
+}
+
+static void glsl_geometry_end(stin_context *ctx) { ctx->bound_mesh = 0xffffffffu; }
+
 const stin__path *stin__glsl_path(void)
 {
     static const stin__path path = {glsl_begin,       glsl_end,        glsl_ambient,
                                     glsl_lit,         glsl_flat,       glsl_volume_begin,
                                     glsl_volume_draw, glsl_volume_end, glsl_batches,
-                                    glsl_normals,     glsl_depth,      glsl_lit_lights};
+                                    glsl_normals,     glsl_depth,      glsl_lit_lights,
+                                    glsl_geometry_begin, glsl_geometry, glsl_geometry_end};
     return &path;
 }
 

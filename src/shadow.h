@@ -140,8 +140,10 @@ typedef struct stin__vdsm_state {
     stin__vdsm_pyramid pyramid;
 } stin__vdsm_state;
 
-/* The position buffer stage and its release (shadow_vdsm_buffer.c). */
+/* The position buffer stage and its release (shadow_vdsm_buffer.c);
+ * buffer_csg adds the CSG products' surfaces after their resolve. */
 void stin__vdsm_buffer_draw(stin_context *ctx);
+void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path);
 void stin__vdsm_buffer_release(stin_context *ctx);
 /* The pyramid (shadow_vdsm_pyramid.c): programs and textures at set-up
  * (a failure leaves SM and DC off, logged); per light, with the screen mask

@@ -165,3 +165,36 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
     ctx->stats.passes++;
     v->ready = 1;
 }
+
+/* After the CSG resolve (frame.c): the products' surfaces into the position
+ * buffer too. The buffer was drawn before the frame's target (a light
+ * pre-pass), so the resolved depth goes into its depth (LESS against the
+ * draws there) and the products' faces are drawn on it, depth EQUAL. */
+void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    const int *vp = ctx->frame.viewport;
+    stin__pass_state ps = stin__pass_defaults, saved;
+    uint32_t i;
+    if (!v->ready || !ctx->csg.face_count)
+        return;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
+    stin__csg_depth_again(ctx, path);
+    ps.depth_test = 1;
+    ps.depth_func = GL_LESS;
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, UseProgram)(v->position_prog);
+    ctx->glsl_surface.current = NULL;
+    GL(ctx, UniformMatrix4fv)(v->pos_view_proj, 1, GL_FALSE, ctx->view_proj);
+    GL(ctx, Uniform4fv)(v->pos_camera, 1, v->camera);
+    ctx->bound_mesh = 0xffffffffu;
+    for (i = 0; i < ctx->csg.face_count; i++)
+        if (stin__csg_face_begin(ctx, &ctx->csg.faces[i], &saved)) {
+            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &ctx->csg.faces[i]);
+            stin__csg_face_end(ctx, &saved);
+        }
+    ctx->bound_mesh = 0xffffffffu;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
+    ctx->stats.passes++;
+}

@@ -51,7 +51,10 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_DISPLACEMENT_VTF,       1, BIT(GLSL) | BIT(VERTEX_TEXTURE_FETCH), GLSL_ANY,
      STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, NULL, 0},
     {STIN_TECH_DISPLACEMENT_OFF,       2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
-    {STIN_TECH_CSG_OFF,                0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* stencil parity; depth written back by glDrawPixels (compatibility) or
+     * a GLSL 1.50 program (core: csg_goldfeather.c demotes without it) */
+    {STIN_TECH_CSG_GOLDFEATHER,        0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_OFF,                1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
 };
 
 static const stin_feature tech_feature[] = {

@@ -429,6 +429,7 @@ const char *stin_feature_name(stin_feature f);
  *   shadows:  volume, map-pcf, map-depth, map-combine, off
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace, displacement-off
+ *   csg:      goldfeather, csg-off (see "CSG products" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
@@ -561,7 +562,8 @@ const char *stin_feature_name(stin_feature f);
     X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)                 \
     X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)           \
     X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
-    X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4)
+    X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4) \
+    X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -620,6 +622,13 @@ typedef struct stin_desc {
     uint32_t displace_tess_max;        /* "displace-tess": highest level an edge is
                                         * split to, default (0) 64, at most 64 (and
                                         * the driver's GL_MAX_TESS_GEN_LEVEL) */
+    /* CSG products (stin_draw_csg), per frame, all products together: */
+    uint32_t max_csg_primitives;       /* primitives, default 256, below 2^24 */
+    uint32_t max_csg_terms;            /* terms of the normal forms, default 256, below 2^24 */
+    uint32_t max_csg_literals;         /* primitives named by those terms, counted once per
+                                        * term; default 4096, below 2^24. Normalising takes
+                                        * a scratch of 2 (max_csg_terms + max_csg_literals)
+                                        * words, and the products a slot per term */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -918,6 +927,125 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
                       const stin_material *material);
 stin_result stin_end_frame(stin_context *ctx);
 
+/* ---- CSG products ----------------------------------------------------------
+ * A CSG product is a solid made of primitives (closed stin meshes, each with
+ * its transform and material) by an expression of union, intersection and
+ * subtraction. stin_draw_csg adds one to the open frame (like stin_draw) and
+ * normalises its expression into the context's block as Goldfeather's sum of
+ * products: a union of terms, each the intersection of some primitives and
+ * the complements of others (a - (b u c) = a !b !c; a - (b n c) = a !b u a !c;
+ * a n (b u c) = a b u a c). Each term keeps at least one primitive that is
+ * not complemented; literals are sorted by primitive, repeats within a term
+ * are merged and a term that holds a primitive and its complement is empty
+ * and dropped (a - a draws nothing). No other simplification is made: a
+ * union of n terms with k primitives each costs what Goldfeather's method
+ * costs for it.
+ * The product's visible surface is where the camera ray first enters the
+ * solid: a primitive's outside where it is not complemented, the inside of a
+ * complemented one (a cavity's wall, shaded with the primitive's material and
+ * its normal flipped to face the cavity). */
+typedef enum stin_csg_op {
+    STIN_CSG_PRIMITIVE = 0, /* a leaf: node.primitive */
+    STIN_CSG_UNION,         /* a u b */
+    STIN_CSG_INTERSECTION,  /* a n b */
+    STIN_CSG_SUBTRACTION    /* a - b */
+} stin_csg_op;
+
+typedef struct stin_csg_node {
+    stin_csg_op op;
+    uint32_t primitive;     /* STIN_CSG_PRIMITIVE: index into stin_csg_desc.primitives */
+    uint32_t a, b;          /* operations: operand nodes, each before this one in the array */
+} stin_csg_node;
+
+typedef struct stin_csg_primitive {
+    stin_mesh mesh;         /* a closed 2-manifold (stin_mesh_info.closed_manifold) */
+    float transform[16];    /* column-major object -> world, finite; all zero = identity */
+    stin_material material; /* as stin_draw's; opaque (colour alpha 1 after defaults) and
+                             * not displaced; normal_map and height_map are ignored */
+} stin_csg_primitive;
+
+typedef struct stin_csg_desc {
+    const stin_csg_primitive *primitives;
+    uint32_t primitive_count;  /* at least 1 */
+    const stin_csg_node *nodes;
+    uint32_t node_count;       /* at least 1, at most 65536; the LAST node is the root.
+                                * Operands come before the node that uses them (a node
+                                * may be used several times); nesting at most 1024 deep */
+} stin_csg_desc;
+
+/* Adds a CSG product to the open frame. Errors (logged, nothing of the
+ * product kept): STIN_ERROR_INVALID_STATE outside a frame;
+ * STIN_ERROR_INVALID_ARGUMENT for a NULL desc, an empty expression (no
+ * nodes or no primitives), an unknown op, a primitive index out of range, an
+ * operand that does not come before its node, nesting deeper than 1024, a
+ * NaN/Inf or singular transform, a bad material (as stin_draw), a blended or
+ * displaced material; STIN_ERROR_INVALID_HANDLE for a stale mesh;
+ * STIN_ERROR_INVALID_MESH for a mesh that is not a closed 2-manifold (the
+ * parity of its surfaces along a ray is what says inside);
+ * STIN_ERROR_CAPACITY when the frame's max_csg_primitives, max_csg_terms or
+ * max_csg_literals would be passed, when the partial normal forms outgrow
+ * the scratch, or when expanding the expression visits more than 2^22 nodes
+ * (a shared node counts at each use) (the log names which; the product is
+ * dropped and counted in stin_frame_stats.dropped_csg). Primitives no term
+ * names are not drawn. A product whose every term is empty draws nothing
+ * and returns STIN_OK. stin_query_csg_terms reads the normal form back. */
+stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
+
+/* CSG technique "goldfeather" (every tier with a stencil buffer: it reads
+ * depth with glReadPixels and writes it back with glDrawPixels on
+ * compatibility contexts, on core profiles through an R32F texture the
+ * size of the viewport, made at the first frame and kept, and a GLSL 1.50
+ * program writing gl_FragDepth; a core context without GL4 lighting, or
+ * a frame into a framebuffer without stencil, draws no products: "csg-off"
+ * or a FALLBACK warning, logged once; products are still accepted). The frame
+ * plan resolves every product of the frame after the target's clear and
+ * before the ambient pass, in the frame's own depth and stencil buffers:
+ * per term, per literal, per layer of that primitive's front faces (back
+ * faces where complemented), the layer is picked by a stencil counter (the
+ * k-th fragment of a pixel, in any order; the first layer's count, read
+ * back, says how many layers there are: at most 255, more is logged once),
+ * then the term's other primitives invert a stencil bit each where their
+ * faces lie in front of it, eight (the stencil's bits) a batch, so no
+ * counter overflows whatever the primitive count; a pixel survives where
+ * every bit says inside a plain and outside a complemented primitive, and
+ * the nearest survivor per pixel is kept on the CPU. Faces that coincide
+ * with the candidate (within 4 depth units) count as crossed before it: a
+ * subtracted box sharing a face's plane takes it away, an intersected one
+ * keeps it, two touching faces cancel (the exact reference's rule for
+ * crossings at one distance; no speckle). The result is written into the
+ * depth buffer (what it held before the resolve stays where nearer:
+ * earlier products, a no_clear frame's depth). Then the products' faces
+ * are drawn like draws in every pass (ambient, lit, shadow tests, normal
+ * and visibility outputs, the screen mask) with depth EQUAL on the
+ * resolved surface, a complemented primitive's back faces with their
+ * normals turned to the eye (GL1: two-sided lighting for them). Products
+ * receive shadows from every technique (volume, map-pcf, map-depth and
+ * map-combine are tested against the exact reference; vdsm gets their
+ * surfaces into its position buffer but differs from the reference on about
+ * 1% of the pixels there: not done) and cast none. Products are opaque; a primitive's normal and height maps are
+ * ignored. Passes: about (1 + layers) x (1 + other literals / 8) per
+ * literal of each term, each layer reading depth back (and the stencil
+ * once per batch), so a resolve costs read-backs more than fill. Memory:
+ * the CPU copies use the block's texture staging or mesh-creation scratch,
+ * whichever is larger (both idle during a frame): 9 bytes a pixel of the
+ * viewport; a viewport that needs more is logged once and its products are
+ * not drawn (raise desc.max_texture_bytes). GL state: the stencil buffer is
+ * cleared to 0 after the resolve (its contents are the frame's anyway, see
+ * GL STATE); the caller's pixel pack state (alignment, row length, skips,
+ * a bound pixel pack buffer) is set aside around the read-backs and given
+ * back, unpack state as for textures. Not done: the camera inside a
+ * product (the near plane is not capped: a product that holds the near
+ * plane shows what lies behind it there), casting shadows, vdsm. */
+
+/* The normal form of the frame's product `product` (0 = the first accepted
+ * by stin_draw_csg since stin_begin_frame, until the next begin): the
+ * number of terms; when `literals` is not NULL, the literals of term
+ * `term` (at most `capacity` of them) as primitive index * 2 + 1 for a
+ * complemented primitive, * 2 for a plain one, and *count their number.
+ * Returns the term count, 0 for an unknown product. */
+uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_t term,
+                              uint32_t *literals, uint32_t capacity, uint32_t *count);
+
 typedef struct stin_frame_stats {
     uint32_t draws, lights, passes, triangles;
     uint32_t shadow_volume_triangles; /* volume sides and caps drawn */
@@ -927,6 +1055,8 @@ typedef struct stin_frame_stats {
     /* vdsm: primitives its geometry shader emitted, all lights (GL_PRIMITIVES_GENERATED,
      * the seed's P_c; 0 where the context has no queries) */
     uint32_t vdsm_primitives;
+    uint32_t csg_products, csg_terms; /* accepted by stin_draw_csg (terms of their normal forms) */
+    uint32_t dropped_csg;      /* products stin_draw_csg refused */
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -243,4 +243,25 @@ sed 's|^{|{"camera": {"eye": [0, 0, 1], "target": [0, 0, 0]},|' "$T/nocamera.jso
 rc=$?
 check "--frame" $([ $rc -eq 0 ] && grep -q "^camera: framed" "$T/stdout" && framed "$T/frame.exr" && echo 0 || echo 1) \
     "exit $rc: $(grep camera "$T/stdout")"
+
+# The scene's csg list (issue 12): the pocketed block of csg/coplanar.json
+# at every tier that draws CSG products. The centre ray enters the block's
+# top inside the pocket and goes on to the pocket's wall (Z 4.3); without
+# the csg list it ends on the block's top face (Z 3.9).
+grep -v '"csg":' tests/scenes/csg/coplanar.json > "$T/plain.json"
+"$R" "$T/plain.json" --size 160x120 -o "$T/plain.exr" > /dev/null 2>&1
+centre_z() { oiiotool "$1" --ch Z --cut 4x4+78+58 --printstats 2>/dev/null | sed -n 's/.*Stats Avg: \([0-9.]*\).*/\1/p'; }
+zp=$(centre_z "$T/plain.exr")
+for tier in gl1 gl2 gl4; do
+    "$R" tests/scenes/csg/coplanar.json --tier $tier --size 160x120 -o "$T/csg-$tier.exr" > "$T/stdout" 2>&1
+    rc=$?
+    if [ $rc -eq 3 ] || grep -q "CSG products are not drawn" "$T/stdout"; then
+        echo "SKIP csg list at $tier: $(grep -m1 -E 'needs|not drawn' "$T/stdout")"
+        continue
+    fi
+    z=$(centre_z "$T/csg-$tier.exr")
+    check "csg list at $tier: the pocket is cut" $([ $rc -eq 0 ] &&
+        awk -v z="$z" -v p="$zp" 'BEGIN { exit !(p > 3.8 && p < 4.0 && z > p + 0.3) }' && echo 0 || echo 1) \
+        "exit $rc, Z $z at the centre, $zp without the csg list"
+done
 exit 0

@@ -40,6 +40,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.techniques[STIN_FEATURE_SHADOWS] = o->shadows;
     d.techniques[STIN_FEATURE_SURFACE] = o->surface;
     d.techniques[STIN_FEATURE_DISPLACEMENT] = o->displacement;
+    d.techniques[STIN_FEATURE_CSG] = o->csg_technique;
     d.displace_guard_band = o->guard_band;
     d.displace_tess_pixels = o->tess_pixels;
     d.debug_flags = o->debug_flags;
@@ -61,6 +62,8 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     if (!scene_gpu_create(&g, s, ctx, err, err_size))
         goto done;
     have_gpu = 1;
+    g.csg = o->csg;
+    g.csg_count = o->csg_count;
     if (!aov_capture(&g, ctx, plat, &out->img, NULL, err, err_size))
         goto done;
     out->counters = stin_debug_query_counters(ctx);

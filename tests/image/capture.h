@@ -20,6 +20,9 @@ typedef struct capture_options {
     stin_technique displacement; /* forced displacement technique; NONE = auto */
     float guard_band;         /* stin_desc.displace_guard_band; 0 = stin's default */
     float tess_pixels;        /* stin_desc.displace_tess_pixels; 0 = stin's default */
+    const struct scene_gpu_csg *csg; /* CSG products of the scene's objects (NULL: none) */
+    int csg_count;
+    stin_technique csg_technique; /* forced CSG technique; NONE = auto */
 } capture_options;
 
 typedef struct capture {

@@ -55,6 +55,9 @@ void visibility_tests(run *r, stin_tier tier, const char *path);
  * against the displaced Embree reference (displace_test.c). Such scenes get
  * no other test: the others' references are of the undisplaced meshes. */
 int displace_scene(const char *path);
+/* CSG products against the exact CSG reference, on csg.json and the scenes
+ * of tests/scenes/csg/ beside it (csg_test.c). */
+void csg_tests(run *r, stin_tier tier, const char *path);
 void displace_tests(run *r, stin_tier tier, const char *path);
 
 #endif

@@ -24,6 +24,8 @@ struct reference {
     ref_object *objects;
     double eps;         /* visibility ray offset, REFERENCE_EPS_SCALE * scene extent */
     unsigned soft_samples; /* point samples of an area light, REFERENCE_SOFT_SHADOW_SAMPLES */
+    unsigned char *csg_primitive; /* per object, or NULL: 1 for a CSG primitive, which
+                                   * neither shows on its own nor casts (reference_csg.h) */
 };
 
 /* The inverse transpose of a column-major transform's 3x3, up to scale
@@ -60,5 +62,26 @@ void ref_shade_lights(const scene *s, const reference *r, const ref_hit *hit, in
 void ref_shade_material(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
                         const scene_material *m, const float tex[4], const scene_light *lights,
                         int light_count, const float *weight, int passes, float out_rgba[4]);
+
+/* The camera's frame for a width x height image: basis f, s, u and the
+ * half extents tx, ty of the image plane at distance 1. 0 on a bad camera. */
+typedef struct ref_camera_frame {
+    double f[3], s[3], u[3], tx, ty;
+} ref_camera_frame;
+int ref_frame_of(const scene_camera *cam, int width, int height, ref_camera_frame *cf);
+/* The primary ray's direction through window point (px, py) (pixels from
+ * the bottom-left corner), unnormalised with a forward component of 1: t
+ * along it is the distance along the view axis, [near, far] GL's clipping. */
+void ref_window_dir(const ref_camera_frame *cf, int width, int height, double px, double py,
+                    double dir[3]);
+
+/* An intersection context whose rays pass through CSG primitives (they do
+ * not cast: stin's shadow techniques do not draw CSG products from the
+ * lights); a plain context when the reference has none. */
+typedef struct ref_csg_context {
+    struct RTCIntersectContext rtc; /* first: Embree hands the filter this pointer */
+    const reference *r;
+} ref_csg_context;
+void ref_csg_context_init(const reference *r, ref_csg_context *ctx);
 
 #endif

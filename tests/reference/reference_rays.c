@@ -110,13 +110,7 @@ static void trace_batch(const reference *r, struct RTCRayHit *rays, unsigned n, 
     }
 }
 
-/* The camera's frame for a width x height image: basis f, s, u and the
- * half extents tx, ty of the image plane at distance 1. 0 on a bad camera. */
-typedef struct camera_frame {
-    double f[3], s[3], u[3], tx, ty;
-} camera_frame;
-
-static int frame_of(const scene_camera *cam, int width, int height, camera_frame *cf)
+int ref_frame_of(const scene_camera *cam, int width, int height, ref_camera_frame *cf)
 {
     if (width <= 0 || height <= 0 || !camera_basis(cam, cf->f, cf->s, cf->u) ||
         !(cam->fovy_deg > 0.0f && cam->fovy_deg < 180.0f))
@@ -129,7 +123,7 @@ static int frame_of(const scene_camera *cam, int width, int height, camera_frame
 /* Unnormalised, with a forward component of exactly 1: t along it is the
  * distance along the view axis, so [near, far] is GL's clipping. (px, py):
  * window position in pixels from the bottom-left corner. */
-static void window_dir(const camera_frame *cf, int width, int height, double px, double py,
+void ref_window_dir(const ref_camera_frame *cf, int width, int height, double px, double py,
                        double dir[3])
 {
     double nx = 2.0 * px / width - 1.0, ny = 2.0 * py / height - 1.0;
@@ -142,8 +136,8 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits)
     if (!r || !hits)
         return 0;
     const scene_camera *cam = &r->s->camera;
-    camera_frame cf;
-    if (!frame_of(cam, width, height, &cf))
+    ref_camera_frame cf;
+    if (!ref_frame_of(cam, width, height, &cf))
         return 0;
     struct RTCRayHit rays[BATCH];
     size_t total = (size_t)width * (size_t)height, base = 0;
@@ -151,7 +145,7 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits)
     for (size_t i = 0; i < total; i++) {
         double dir[3];
         struct RTCRayHit *rh = &rays[n];
-        window_dir(&cf, width, height, (double)(i % (size_t)width) + 0.5,
+        ref_window_dir(&cf, width, height, (double)(i % (size_t)width) + 0.5,
                    (double)(i / (size_t)width) + 0.5, dir);
         memset(rh, 0, sizeof *rh);
         rh->ray.org_x = cam->eye[0];
@@ -182,11 +176,11 @@ int reference_hit_on_plane(const reference *r, int width, int height, const ref_
     const ref_object *o = &r->objects[hit->object];
     const uint32_t *tri = o->indices + 3 * (size_t)hit->prim;
     const float *eye = r->s->camera.eye;
-    camera_frame cf;
+    ref_camera_frame cf;
     double dir[3], e1[3], e2[3], q[3], Ng[3];
-    if (!frame_of(&r->s->camera, width, height, &cf))
+    if (!ref_frame_of(&r->s->camera, width, height, &cf))
         return 0;
-    window_dir(&cf, width, height, px, py, dir);
+    ref_window_dir(&cf, width, height, px, py, dir);
     for (int c = 0; c < 3; c++) {
         double a = o->positions[3 * (size_t)tri[0] + c];
         e1[c] = o->positions[3 * (size_t)tri[1] + c] - a;
@@ -248,9 +242,9 @@ static float visible_off(const reference *r, const ref_hit *hit, const double to
     ray.tnear = 0.0f;
     ray.tfar = (float)dist;
     ray.mask = 0xffffffffu;
-    struct RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
-    rtcOccluded1(r->rtc, &ctx, &ray);
+    ref_csg_context ctx;
+    ref_csg_context_init(r, &ctx);
+    rtcOccluded1(r->rtc, &ctx.rtc, &ray);
     return ray.tfar < 0.0f ? 0.0f : 1.0f; /* Embree sets tfar to -inf on a hit */
 }
 

@@ -189,8 +189,10 @@ reference *reference_create(const scene *s, char *err, size_t err_size)
     r->rtc = rtcNewScene(r->device);
     if (!device_ok(r->device, "rtcNewScene", err, err_size))
         goto fail;
-    /* Robust mode: no hits lost through cracks between neighbouring triangles. */
-    rtcSetSceneFlags(r->rtc, RTC_SCENE_FLAG_ROBUST);
+    /* Robust mode: no hits lost through cracks between neighbouring triangles.
+     * Context filters: the CSG rays collect every hit along the ray, and
+     * visibility rays pass through CSG primitives (reference_csg.c). */
+    rtcSetSceneFlags(r->rtc, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(r->rtc, RTC_BUILD_QUALITY_HIGH);
     for (int i = 0; i < r->object_count; i++)
         if (!attach(r, (unsigned)i, err, err_size))
@@ -219,6 +221,7 @@ void reference_destroy(reference *r)
         free(r->objects[i].indices);
     }
     free(r->objects);
+    free(r->csg_primitive);
     free(r);
 }
 

@@ -53,6 +53,10 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_TexParameteri ~, 1
 #define FAKE_STATELESS_TexParameterfv ~, 1
 #define FAKE_STATELESS_Finish ~, 1
+#define FAKE_STATELESS_ReadPixels ~, 1
+#define FAKE_STATELESS_TexSubImage2D ~, 1
+#define FAKE_STATELESS_DrawPixels ~, 1
+#define FAKE_STATELESS_RasterPos2f ~, 1
 #define FAKE_STATELESS_CopyTexSubImage2D ~, 1
 #define FAKE_STATELESS_TexImage1D ~, 1
 #define FAKE_STATELESS_BufferData ~, 1

@@ -14,6 +14,7 @@
 #include <cmocka.h>
 
 #include "reference.h"
+#include "reference_csg.h"
 #include "reference_surface.h"
 #include "stin/stin.h"
 
@@ -1123,6 +1124,177 @@ static void test_primary_timing(void **state)
     scene_release(&s);
 }
 
+/* ---- CSG products (reference_csg.c) ------------------------------------- */
+enum { CSG_W = 48, CSG_H = 48 };
+
+static ref_hit *csg_hits(const scene *s, reference *r, const ref_csg_product *p, int n,
+                         int *product_of)
+{
+    ref_hit *h = calloc((size_t)CSG_W * CSG_H, sizeof *h);
+    (void)s;
+    assert_non_null(h);
+    assert_true(reference_csg_mark(r, p, n));
+    assert_true(reference_csg_primary(r, p, n, CSG_W, CSG_H, h, product_of));
+    return h;
+}
+
+static ref_hit *plain_hits(reference *r)
+{
+    ref_hit *h = calloc((size_t)CSG_W * CSG_H, sizeof *h);
+    assert_non_null(h);
+    assert_true(reference_primary(r, CSG_W, CSG_H, h));
+    return h;
+}
+
+static const stin_csg_node csg_a_minus_b[] = {
+    {STIN_CSG_PRIMITIVE, 0, 0, 0}, {STIN_CSG_PRIMITIVE, 1, 0, 0}, {STIN_CSG_SUBTRACTION, 0, 0, 1}};
+static const stin_csg_node csg_a_union_b[] = {
+    {STIN_CSG_PRIMITIVE, 0, 0, 0}, {STIN_CSG_PRIMITIVE, 1, 0, 0}, {STIN_CSG_UNION, 0, 0, 1}};
+static const stin_csg_node csg_a_inter_b[] = {
+    {STIN_CSG_PRIMITIVE, 0, 0, 0}, {STIN_CSG_PRIMITIVE, 1, 0, 0},
+    {STIN_CSG_INTERSECTION, 0, 0, 1}};
+
+/* Box [-1,1]^3 minus a sphere of radius 0.8 at (0,0,1): the centre ray
+ * (camera on +z) ends on the cavity's floor at z = 0.2, the sphere's inside
+ * wall, its normal turned to the eye; a ray outside the sphere ends on the
+ * box's front face; the far plane never shows. */
+static void test_csg_cavity(void **state)
+{
+    scene s;
+    int objects[2], of[CSG_W * CSG_H];
+    (void)state;
+    scene_init(&s);
+    int mat = add_material(&s, 0.8f, 0.8f, 0.8f, 0, 32);
+    objects[0] = add_object(&s, add_box(&s), mat, 1, 0, 0, 0);
+    objects[1] = add_object(&s, add_sphere(&s, 48, 96), mat, 0.8, 0, 0, 1);
+    reference *r = create(&s);
+    ref_csg_product p = {objects, 2, csg_a_minus_b, 3};
+    ref_hit *h = csg_hits(&s, r, &p, 1, of);
+    const ref_hit *c = &h[(CSG_H / 2) * CSG_W + CSG_W / 2];
+    assert_true(c->hit);
+    assert_int_equal(c->object, objects[1]);
+    assert_true(fabs(c->P[2] - 0.2) < 0.01);
+    assert_true(c->N[2] > 0.99f && c->Ng[2] > 0.99f); /* toward the eye */
+    assert_int_equal(of[(CSG_H / 2) * CSG_W + CSG_W / 2], 0);
+    /* near the box's corner, outside the sphere: its front face */
+    const ref_hit *e = &h[(CSG_H / 2 + 8) * CSG_W + CSG_W / 2 + 8];
+    assert_true(e->hit);
+    assert_int_equal(e->object, objects[0]);
+    assert_true(fabs(e->P[2] - 1.0) < 1e-5 && e->N[2] > 0.999f);
+    /* the background stays background */
+    assert_false(h[0].hit);
+    assert_int_equal(of[0], -1);
+    free(h);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* A sphere wholly inside the box leaves the box as it is; a union of two
+ * spheres is the depth-tested pair; their intersection is the lens whose
+ * near face is the farther sphere's. */
+static void test_csg_matches_plain_renders(void **state)
+{
+    scene s;
+    int objects[2];
+    (void)state;
+    scene_init(&s);
+    int mat = add_material(&s, 0.8f, 0.8f, 0.8f, 0, 32);
+    int sphere = add_sphere(&s, 32, 64);
+    objects[0] = add_object(&s, add_box(&s), mat, 1, 0, 0, 0);
+    objects[1] = add_object(&s, sphere, mat, 0.5, 0, 0, 0);
+    reference *r = create(&s);
+    ref_hit *box_only, *h;
+    ref_csg_product p = {objects, 2, csg_a_minus_b, 3};
+    /* the box alone: the sphere inside it is hidden in a plain render */
+    box_only = plain_hits(r);
+    h = csg_hits(&s, r, &p, 1, NULL);
+    for (int i = 0; i < CSG_W * CSG_H; i++) {
+        assert_int_equal(h[i].hit, box_only[i].hit);
+        if (h[i].hit) {
+            assert_int_equal(h[i].object, objects[0]);
+            assert_true(memcmp(h[i].P, box_only[i].P, sizeof h[i].P) == 0);
+        }
+    }
+    free(h);
+    free(box_only);
+    reference_destroy(r);
+    scene_release(&s);
+
+    /* two overlapping spheres */
+    scene_init(&s);
+    mat = add_material(&s, 0.8f, 0.8f, 0.8f, 0, 32);
+    sphere = add_sphere(&s, 32, 64);
+    objects[0] = add_object(&s, sphere, mat, 1, -0.5, 0, 0);
+    objects[1] = add_object(&s, sphere, mat, 1, 0.5, 0, -0.5);
+    r = create(&s);
+    ref_hit *both = plain_hits(r);
+    p.nodes = csg_a_union_b;
+    h = csg_hits(&s, r, &p, 1, NULL);
+    int covered = 0, lens = 0;
+    for (int i = 0; i < CSG_W * CSG_H; i++) {
+        assert_int_equal(h[i].hit, both[i].hit);
+        if (h[i].hit) {
+            covered++;
+            assert_int_equal(h[i].object, both[i].object);
+            assert_true(memcmp(h[i].P, both[i].P, sizeof h[i].P) == 0);
+        }
+    }
+    free(h);
+    p.nodes = csg_a_inter_b;
+    h = csg_hits(&s, r, &p, 1, NULL);
+    for (int i = 0; i < CSG_W * CSG_H; i++)
+        if (h[i].hit) {
+            float d0[3], d1[3];
+            lens++;
+            for (int k = 0; k < 3; k++) {
+                d0[k] = h[i].P[k] - s.objects[objects[0]].transform[12 + k];
+                d1[k] = h[i].P[k] - s.objects[objects[1]].transform[12 + k];
+            }
+            /* on one sphere, inside the other (within the tessellation) */
+            double r0 = sqrt(d0[0] * d0[0] + d0[1] * d0[1] + d0[2] * d0[2]);
+            double r1 = sqrt(d1[0] * d1[0] + d1[1] * d1[1] + d1[2] * d1[2]);
+            assert_true((fabs(r0 - 1) < 0.01 && r1 < 1.01) || (fabs(r1 - 1) < 0.01 && r0 < 1.01));
+            assert_true(h[i].N[2] > 0.0f);
+        }
+    assert_true(lens > 0 && lens < covered);
+    free(h);
+    free(both);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
+/* Marked primitives do not cast: a quad behind the box sees a light in
+ * front of the box once the box is a CSG primitive. */
+static void test_csg_primitives_cast_nothing(void **state)
+{
+    scene s;
+    int objects[1];
+    static const stin_csg_node only[] = {{STIN_CSG_PRIMITIVE, 0, 0, 0}};
+    (void)state;
+    scene_init(&s);
+    int mat = add_material(&s, 0.8f, 0.8f, 0.8f, 0, 32);
+    add_object(&s, add_quad(&s), mat, 4, 0, 0, -3);
+    objects[0] = add_object(&s, add_box(&s), mat, 0.5, 2.5, 0, 0);
+    scene_light *l = add_light(&s, SCENE_LIGHT_POINT);
+    l->position[0] = 2.5f; l->position[1] = 0; l->position[2] = 3.0f;
+    reference *r = create(&s);
+    ref_hit *h = plain_hits(r);
+    /* the quad's pixel straight behind the box, as seen from the light */
+    ref_hit q;
+    memset(&q, 0, sizeof q);
+    q.hit = 1;
+    q.P[0] = 2.5f; q.P[2] = -3.0f;
+    q.Ng[2] = q.N[2] = 1.0f;
+    assert_true(reference_visibility(r, &q, 0) == 0.0f);
+    ref_csg_product p = {objects, 1, only, 1};
+    free(h);
+    h = csg_hits(&s, r, &p, 1, NULL);
+    assert_true(reference_visibility(r, &q, 0) == 1.0f);
+    free(h);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1149,6 +1321,9 @@ int main(void)
         cmocka_unit_test(test_passes_saturate),
         cmocka_unit_test(test_area_light_visibility),
         cmocka_unit_test(test_primary_timing),
+        cmocka_unit_test(test_csg_cavity),
+        cmocka_unit_test(test_csg_matches_plain_renders),
+        cmocka_unit_test(test_csg_primitives_cast_nothing),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

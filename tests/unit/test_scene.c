@@ -20,6 +20,7 @@
 #include "isolate.h"
 #include "one_line.h"
 #include "scene.h"
+#include "scene_csg.h"
 #include "scene_primitives.h"
 
 #define BAD_DIR "tests/scenes/bad"
@@ -155,6 +156,7 @@ static const struct {
     { "unknown-object-key.json", "objects[0]", "unknown key 'tranlsate'" },
     { "csg-unknown-object.json", "csg[0].b", "unknown object or csg result 'cube'" },
     { "csg-unknown-op.json", "csg[0].op", "unknown operation 'xor'" },
+    { "csg-repeated-operand.json", "csg[0].a", "object 'balls' is 4 instances" },
     { "too-many-lights.json", "lights", "at most 32" },
     { "out-of-range-face.json", "meshes.bad.file", "out of range" },
     { "truncated-ply-header.json", "meshes.cut.file", "no end_header line" },
@@ -763,6 +765,54 @@ static void test_framing(void **state)
     scene_free(&s);
 }
 
+/* The csg list is kept (operands as objects or earlier results) and turned
+ * into products: one per entry no later entry uses, operands first. */
+static void test_csg_list(void **state)
+{
+    scene s;
+    scene_csg_products p;
+    char err[512];
+    (void)state;
+    assert_int_equal(scene_load("tests/scenes/csg.json", &s, err, sizeof err), 1);
+    assert_int_equal(s.csg_count, 3);
+    assert_int_equal(s.csg[0].op, SCENE_CSG_SUBTRACT);
+    assert_int_equal(s.csg[1].op, SCENE_CSG_UNION);
+    assert_int_equal(s.csg[2].op, SCENE_CSG_INTERSECT);
+    assert_int_equal(s.csg[0].a, 0); /* cube */
+    assert_int_equal(s.csg[0].b, 1); /* ball */
+    assert_int_equal(scene_csg_products_build(&s, &p), 1);
+    assert_int_equal(p.count, 3);
+    assert_int_equal(p.products[2].primitive_count, 2);
+    assert_int_equal(p.products[2].nodes[2].op, STIN_CSG_INTERSECTION);
+    scene_csg_products_free(&p);
+    scene_free(&s);
+
+    assert_int_equal(scene_load("tests/scenes/csg/nested.json", &s, err, sizeof err), 1);
+    assert_int_equal(s.csg_count, 2);
+    assert_int_equal(s.csg[0].used, 1);
+    assert_int_equal(s.csg[1].a, -1); /* the result of entry 0 */
+    assert_int_equal(s.csg[1].b, 3);  /* post */
+    assert_int_equal(scene_csg_products_build(&s, &p), 1);
+    assert_int_equal(p.count, 1);
+    assert_int_equal(p.products[0].primitive_count, 3);
+    assert_int_equal(p.products[0].objects[0], 1);
+    assert_int_equal(p.products[0].objects[1], 2);
+    assert_int_equal(p.products[0].objects[2], 3);
+    assert_int_equal(p.products[0].node_count, 5);
+    {
+        const stin_csg_node *n = p.products[0].nodes;
+        assert_int_equal(n[2].op, STIN_CSG_SUBTRACTION);
+        assert_int_equal(n[2].a, 0);
+        assert_int_equal(n[2].b, 1);
+        assert_int_equal(n[3].primitive, 2);
+        assert_int_equal(n[4].op, STIN_CSG_UNION);
+        assert_int_equal(n[4].a, 2);
+        assert_int_equal(n[4].b, 3);
+    }
+    scene_csg_products_free(&p);
+    scene_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -782,6 +832,7 @@ int main(void)
         cmocka_unit_test(test_write_failures),
         cmocka_unit_test(test_file_texture),
         cmocka_unit_test(test_compare),
+        cmocka_unit_test(test_csg_list),
     };
     return cmocka_run_group_tests(tests, make_tmp_dir, remove_tmp_dir);
 }

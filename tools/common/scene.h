@@ -95,6 +95,15 @@ typedef struct scene_camera {
     float near_plane, far_plane; /* defaults 0.1 and 100 */
 } scene_camera;
 
+/* One entry of the file's csg list: a op b. An operand is a scene object
+ * (>= 0) or an earlier entry's result (-1 - its index). */
+typedef enum scene_csg_op { SCENE_CSG_UNION = 0, SCENE_CSG_INTERSECT, SCENE_CSG_SUBTRACT } scene_csg_op;
+typedef struct scene_csg {
+    scene_csg_op op;
+    int a, b;
+    int used;                  /* an operand of a later entry (else a product of its own) */
+} scene_csg;
+
 typedef struct scene {
     char path[512];
     scene_mesh *meshes; int mesh_count;
@@ -102,6 +111,7 @@ typedef struct scene {
     scene_material *materials; int material_count;
     scene_object *objects; int object_count;
     scene_light *lights; int light_count;
+    scene_csg *csg; int csg_count; /* the csg list, in file order */
     scene_camera camera;       /* the file's, or one framing everything (scene_camera_frame) */
     int has_camera;            /* 0: the file has no camera */
     char *warnings;            /* NULL or lines "FILE: where: text\n": what a model file lost

@@ -190,6 +190,39 @@ stin_result scene_gpu_frame(const scene_gpu *g, stin_context *ctx, int width, in
     return scene_gpu_frame_export(g, ctx, width, height, output, STIN_EXPORT_NONE, framebuffer);
 }
 
+static int csg_primitive(const scene_gpu *g, int object)
+{
+    int p, i;
+    for (p = 0; p < g->csg_count; p++)
+        for (i = 0; i < g->csg[p].primitive_count; i++)
+            if (g->csg[p].objects[i] == object)
+                return 1;
+    return 0;
+}
+
+/* One product: its objects as primitives (a failure is stin's logged error). */
+static void draw_csg(const scene_gpu *g, stin_context *ctx, const scene_gpu_csg *c)
+{
+    stin_csg_primitive *prims = calloc((size_t)c->primitive_count + 1, sizeof *prims);
+    stin_csg_desc d;
+    int i;
+    if (!prims)
+        return;
+    for (i = 0; i < c->primitive_count; i++) {
+        const scene_object *o = &g->src->objects[c->objects[i]];
+        prims[i].mesh = g->meshes[o->mesh];
+        memcpy(prims[i].transform, o->transform, sizeof prims[i].transform);
+        prims[i].material = g->materials[o->material];
+    }
+    memset(&d, 0, sizeof d);
+    d.primitives = prims;
+    d.primitive_count = (uint32_t)c->primitive_count;
+    d.nodes = c->nodes;
+    d.node_count = (uint32_t)c->node_count;
+    stin_draw_csg(ctx, &d);
+    free(prims);
+}
+
 stin_result scene_gpu_frame_export(const scene_gpu *g, stin_context *ctx, int width, int height,
                                    stin_output output, stin_export ex, uint32_t framebuffer)
 {
@@ -218,7 +251,10 @@ stin_result scene_gpu_frame_export(const scene_gpu *g, stin_context *ctx, int wi
     }
     for (i = 0; i < s->object_count; i++) {
         const scene_object *o = &s->objects[i];
-        stin_draw(ctx, g->meshes[o->mesh], o->transform, &g->materials[o->material]);
+        if (!csg_primitive(g, i))
+            stin_draw(ctx, g->meshes[o->mesh], o->transform, &g->materials[o->material]);
     }
+    for (i = 0; i < g->csg_count; i++)
+        draw_csg(g, ctx, &g->csg[i]);
     return stin_end_frame(ctx);
 }

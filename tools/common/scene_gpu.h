@@ -14,11 +14,24 @@
 extern "C" {
 #endif
 
+/* A CSG product of scene objects (stin_draw_csg): primitive i is object
+ * objects[i] (its mesh, transform and material); the last node is the root. */
+typedef struct scene_gpu_csg {
+    const int *objects;
+    int primitive_count;
+    const stin_csg_node *nodes;
+    int node_count;
+} scene_gpu_csg;
+
 typedef struct scene_gpu {
     const scene *src;
     stin_mesh *meshes;      /* one per scene mesh */
     stin_texture *textures; /* one per scene texture */
     stin_material *materials;
+    /* CSG products drawn in each frame (NULL: none; the caller's, set after
+     * scene_gpu_create); their objects are not drawn on their own */
+    const scene_gpu_csg *csg;
+    int csg_count;
 } scene_gpu;
 
 /* The stin_desc capacities this scene needs (meshes, draws, lights, vertices,

@@ -441,7 +441,7 @@ static int add_instances(scene_parser *p, scene *s, int *cap, const char *where,
  * per part: object transform * node transform, and the node's material
  * unless the object names one. */
 static int parse_objects(scene_parser *p, const cJSON *j, scene *s, const scene_entries *e,
-                         char (*names)[SCENE_NAME_MAX])
+                         char (*names)[SCENE_NAME_MAX], int *first, int *instances)
 {
     static const char *const keys[] = { "name", "mesh", "material", "translate", "rotate",
                                         "scale", "matrix", "repeat", NULL };
@@ -475,6 +475,7 @@ static int parse_objects(scene_parser *p, const cJSON *j, scene *s, const scene_
         }
         if (!parse_transform(p, c, where, m) || !parse_repeat(p, c, where, count, step))
             return 0;
+        first[i] = s->object_count;
         for (k = 0; k < e->entries[entry].part_count; k++) {
             const scene_part *part = &e->parts[e->entries[entry].first_part + k];
             int mat = material >= 0 ? material : part->material >= 0 ? part->material
@@ -483,6 +484,7 @@ static int parse_objects(scene_parser *p, const cJSON *j, scene *s, const scene_
             if (!add_instances(p, s, &cap, where, part->mesh, mat, world, count, step))
                 return 0;
         }
+        instances[i] = s->object_count - first[i];
     }
     return 1;
 }
@@ -625,8 +627,10 @@ static int parse_camera(scene_parser *p, const cJSON *j, scene_camera *cam)
     return 1;
 }
 
-/* Operands name objects or earlier named csg results. */
-static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_MAX], int object_entries)
+/* Operands name objects or earlier named csg results; an object operand
+ * must be one instance (no repeat, not a model file of several parts). */
+static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_MAX], int object_entries,
+                     const int *first, const int *instances, scene *s)
 {
     static const char *const keys[] = { "op", "a", "b", "name", NULL };
     static const char *const operand[] = { "a", "b" };
@@ -636,8 +640,11 @@ static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_M
     if (!cJSON_IsArray(j))
         return scene_fail(p, "csg", "expected an array");
     results = calloc((size_t)cJSON_GetArraySize(j) + 1, SCENE_NAME_MAX);
-    if (!results)
+    s->csg = calloc((size_t)cJSON_GetArraySize(j) + 1, sizeof *s->csg);
+    if (!results || !s->csg) {
+        free(results);
         return scene_fail(p, "csg", "out of memory");
+    }
     for (c = j->child; c && ok; c = c->next, i++) {
         snprintf(where, sizeof where, "csg[%d]", i);
         ok = scene_check_object(p, c, where, keys) && scene_require(p, c, "op", where) &&
@@ -655,12 +662,27 @@ static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_M
             ok = scene_fail(p, path, "name '%s' is already taken", results[i]);
         }
         for (k = 0; k < 2 && ok; k++) {
+            int object, result, *to = k ? &s->csg[i].b : &s->csg[i].a;
             ok = scene_get_string(p, c, operand[k], where, ref, sizeof ref);
-            if (ok && find_named(names[0], SCENE_NAME_MAX, object_entries, ref) < 0 &&
-                find_named(results[0], SCENE_NAME_MAX, i, ref) < 0) {
-                scene_join(path, sizeof path, where, operand[k]);
+            object = ok ? find_named(names[0], SCENE_NAME_MAX, object_entries, ref) : -1;
+            result = ok && object < 0 ? find_named(results[0], SCENE_NAME_MAX, i, ref) : -1;
+            scene_join(path, sizeof path, where, operand[k]);
+            if (ok && object < 0 && result < 0)
                 ok = scene_fail(p, path, "unknown object or csg result '%s'", ref);
+            else if (ok && object >= 0 && instances[object] != 1)
+                ok = scene_fail(p, path, "object '%s' is %d instances (repeat or a model file's "
+                                "parts); a csg operand is one", ref, instances[object]);
+            else if (ok && object >= 0)
+                *to = first[object];
+            else if (ok) {
+                *to = -1 - result;
+                s->csg[result].used = 1;
             }
+        }
+        if (ok) {
+            s->csg[i].op = !strcmp(op, "union") ? SCENE_CSG_UNION
+                         : !strcmp(op, "intersect") ? SCENE_CSG_INTERSECT : SCENE_CSG_SUBTRACT;
+            s->csg_count = i + 1;
         }
     }
     free(results);
@@ -674,7 +696,7 @@ static int parse_scene_objects(scene_parser *p, const cJSON *root, scene *s, con
     const cJSON *objects = cJSON_GetObjectItemCaseSensitive(root, "objects");
     const cJSON *csg = cJSON_GetObjectItemCaseSensitive(root, "csg");
     char (*names)[SCENE_NAME_MAX];
-    int ok, entries;
+    int ok, entries, *first, *instances;
     if (s->shadow_map_size & (s->shadow_map_size - 1))
         return scene_fail(p, "shadow_map_size", "must be a power of two in [16, 8192] (got %d)",
                           s->shadow_map_size);
@@ -682,10 +704,16 @@ static int parse_scene_objects(scene_parser *p, const cJSON *root, scene *s, con
     if (!cJSON_IsArray(objects) || entries == 0)
         return scene_fail(p, "objects", "expected a non-empty array");
     names = calloc((size_t)entries, SCENE_NAME_MAX);
-    if (!names)
-        return scene_fail(p, "objects", "out of memory");
-    ok = parse_objects(p, objects, s, e, names) && (!csg || parse_csg(p, csg, names, entries));
+    first = calloc((size_t)entries, sizeof *first);
+    instances = calloc((size_t)entries, sizeof *instances);
+    ok = names && first && instances;
+    if (!ok)
+        scene_fail(p, "objects", "out of memory");
+    ok = ok && parse_objects(p, objects, s, e, names, first, instances) &&
+         (!csg || parse_csg(p, csg, names, entries, first, instances, s));
     free(names);
+    free(first);
+    free(instances);
     return ok;
 }
 
@@ -854,5 +882,6 @@ void scene_free(scene *s)
     free(s->materials);
     free(s->objects);
     free(s->lights);
+    free(s->csg);
     memset(s, 0, sizeof *s);
 }

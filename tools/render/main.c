@@ -9,6 +9,7 @@
 #include "render_options.h"
 #include "render_progress.h"
 #include "scene.h"
+#include "scene_csg.h"
 #include "scene_gpu.h"
 #include "stin/stin.h"
 #include "stin_platform.h"
@@ -146,6 +147,7 @@ int main(int argc, char **argv)
     options o;
     scene s;
     scene_gpu g;
+    scene_csg_products products = {0};
     stin_platform_desc pd;
     stin_platform *plat = NULL;
     stin_desc desc;
@@ -274,6 +276,12 @@ int main(int argc, char **argv)
         goto done;
     }
     have_gpu = 1;
+    if (!scene_csg_products_build(&s, &products)) {
+        fail_line(&log, "%s: out of memory", file);
+        goto done;
+    }
+    g.csg = products.products; /* the file's csg list: its objects drawn as products */
+    g.csg_count = products.count;
     progress_done(&pr, "created meshes and textures");
     progress_start(&pr, "rendering %dx%d (beauty, normal and visibility frames)", pd.width,
                    pd.height);
@@ -307,6 +315,7 @@ done:
     image_free(&img);
     if (have_gpu)
         scene_gpu_destroy(&g, ctx);
+    scene_csg_products_free(&products);
     if (ctx)
         stin_destroy(ctx);
     free(block);

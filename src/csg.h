@@ -1,0 +1,104 @@
+/* SPDX-License-Identifier: MIT */
+/* CSG products of a frame (csg.c: stin_draw_csg and its checks;
+ * csg_normal_form.c: the expression as Goldfeather's sum of products). */
+#ifndef STIN_CSG_H
+#define STIN_CSG_H
+
+#include "stin/stin.h"
+#include "path.h"
+#include "pass_state.h"
+
+/* A literal names a primitive of its product: index * 2, + 1 complemented. */
+#define STIN__CSG_LITERAL(primitive, complemented) ((primitive) * 2u + ((complemented) ? 1u : 0u))
+#define STIN__CSG_PRIMITIVE_OF(literal) ((literal) >> 1)
+#define STIN__CSG_COMPLEMENTED(literal) ((literal) & 1u)
+#define STIN__CSG_MAX_NODES 65536u
+#define STIN__CSG_MAX_DEPTH 1024u
+/* Node visits of one normalisation (shared subtrees are expanded at every
+ * use; a tree of a - a - a ... would otherwise take 2^depth visits). */
+#define STIN__CSG_MAX_VISITS (1u << 22)
+
+typedef struct stin__csg_term {
+    uint32_t first, count;   /* literals[first .. first + count), sorted, each primitive once */
+} stin__csg_term;
+
+typedef struct stin__csg_product {
+    uint32_t first_primitive, primitive_count; /* in the frame's primitive list */
+    uint32_t first_term, term_count;
+} stin__csg_product;
+
+/* The frame's products, in the caller's block (sizes from the desc). */
+typedef struct stin__csg_state {
+    stin__draw *primitives;   /* max_csg_primitives: mesh, transform, material each */
+    stin__csg_product *products; /* max_csg_terms (a product has at least one term) */
+    stin__csg_term *terms;    /* max_csg_terms */
+    uint32_t *literals;       /* max_csg_literals */
+    uint32_t *scratch;        /* normalisation, scratch_words */
+    uint32_t scratch_words;
+    uint32_t primitive_count, product_count, term_count, literal_count;
+    stin__draw *faces;        /* 2 max_csg_primitives: the faces the frame's passes draw */
+    uint32_t face_count;
+    int resolved;             /* this frame's products are in its depth buffer */
+    int said_unusable, said_layers;
+    /* core profiles: the resolved depth goes back through an R32F texture and
+     * a program writing gl_FragDepth (made at stin_create; the texture at the
+     * first frame, grown, never shrunk) */
+    GLuint depth_prog, depth_tex;
+    GLint u_depth, u_origin;
+    int tex_width, tex_height;
+} stin__csg_state;
+
+/* Words of normalisation scratch for the desc's capacities. */
+uint32_t stin__csg_scratch_words(const stin_desc *d);
+
+/* Where the normal form goes and how much room is left. */
+typedef struct stin__csg_out {
+    stin__csg_term *terms;
+    uint32_t max_terms, term_count;
+    uint32_t *literals;
+    uint32_t max_literals, literal_count;
+    uint32_t literal_base;    /* added to each term's `first` (the store's offset) */
+} stin__csg_out;
+
+typedef enum stin__csg_nf_result {
+    STIN__CSG_NF_OK = 0,
+    STIN__CSG_NF_TERMS,       /* more terms than out->max_terms */
+    STIN__CSG_NF_LITERALS,    /* more literals than out->max_literals */
+    STIN__CSG_NF_SCRATCH,     /* intermediate forms outgrew the scratch */
+    STIN__CSG_NF_DEPTH,       /* nested deeper than STIN__CSG_MAX_DEPTH */
+    STIN__CSG_NF_WORK         /* more than STIN__CSG_MAX_VISITS node visits */
+} stin__csg_nf_result;
+
+/* The normal form of nodes[node_count - 1] (nodes already checked: ops
+ * known, operands before their node, primitive indices in range) into out.
+ * Pure: no context, no GL. On failure out's counts are left at 0. */
+stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t node_count,
+                                          uint32_t *scratch, uint32_t scratch_words,
+                                          stin__csg_out *out);
+
+/* Goldfeather (csg_goldfeather.c): the frame's products into its depth
+ * buffer (after the target's clear, before the ambient pass); 0 when it
+ * cannot (logged once): the products are not drawn. depth_again puts the
+ * resolved depth into the bound framebuffer too, depth LESS (the screen
+ * mask's copy of the frame's depth). */
+size_t stin__csg_goldfeather_bytes(int w, int h);
+/* At stin_create after the lighting and shadows: on a core profile the
+ * depth program (GL4 lighting), else csg-off (demoted, logged). */
+void stin__csg_init(struct stin_context *ctx);
+void stin__csg_release(struct stin_context *ctx);
+int stin__csg_resolve(struct stin_context *ctx, const stin__path *path);
+void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
+/* The faces of the resolved products as draws (csg.c), after the resolve. */
+void stin__csg_faces(struct stin_context *ctx);
+/* Around a face draw of a path's pass: depth LESS becomes EQUAL, the face
+ * culled that the draw does not show (skipped, returning 0, in map-depth's
+ * pass for the back sides the eye sees); end restores the pass state. */
+int stin__csg_face_begin(struct stin_context *ctx, const stin__draw *d, stin__pass_state *saved);
+void stin__csg_face_end(struct stin_context *ctx, const stin__pass_state *saved);
+
+/* A material checked and its defaults applied (frame.c; stin_draw's rules). */
+stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,
+                                   const stin_material *material, stin_material *out,
+                                   stin_result *r);
+
+#endif

@@ -1,0 +1,441 @@
+/* SPDX-License-Identifier: MIT */
+/* CSG technique "goldfeather": Goldfeather's stencil parity method on any
+ * compatibility context from GL 1.1 up. Per term of a product's normal
+ * form, per primitive of the term, per layer of its candidate surface (its
+ * front faces, or its back faces where it is complemented):
+ *   1. the layer: depth and stencil cleared, the candidate faces drawn with
+ *      depth ALWAYS and a stencil test EQUAL k - 1 that counts every
+ *      fragment (fail and pass INCR), so the k-th fragment of each pixel in
+ *      rasterisation order writes its depth (any order: every layer is
+ *      tried). The first layer's stencil holds the depth complexity: its
+ *      maximum, read back, is the number of layers (at most 255);
+ *   2. parity: each other primitive of the term drawn whole with depth LESS
+ *      (its faces in front of the candidate) inverting its own stencil bit,
+ *      eight primitives a batch (the stencil's bits: no counter overflows,
+ *      whatever the primitive count); read back, a pixel survives where
+ *      every bit says inside for a plain primitive and outside for a
+ *      complemented one;
+ *   3. the surviving depths are kept, the nearest per pixel, on the CPU.
+ * The result goes into the frame's depth buffer with glDrawPixels (depth
+ * ALWAYS over what the buffer held before, itself read first and kept in
+ * the minimum, so earlier products and a caller's no_clear depth stay).
+ * The depth buffer is copied by glReadPixels / glDrawPixels through the
+ * block's texture staging (the larger of it and the mesh scratch, both idle
+ * during a frame): 9 bytes a pixel of the viewport. The primitives' faces
+ * on the resolved depth are then drawn like any draw, depth EQUAL (csg.c's
+ * face draws). */
+#include "internal.h"
+
+#define GL_STENCIL_INDEX 0x1901
+#ifndef OFFSET_UNITS
+#define OFFSET_UNITS 4.0f
+#endif
+#define GL_INVERT 0x150A
+#define GL_PACK_ROW_LENGTH 0x0D02
+#define GL_PACK_SKIP_ROWS 0x0D03
+#define GL_PACK_SKIP_PIXELS 0x0D04
+#define GL_PIXEL_PACK_BUFFER 0x88EB
+#define GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
+
+/* The CPU side of one resolve, carved from the staging. */
+typedef struct resolve {
+    float *result;            /* nearest surviving depth per pixel */
+    float *candidate;         /* this layer's depth; > 1 where it lost */
+    unsigned char *stencil;   /* a stencil read back */
+    int x, y, w, h;
+    size_t pixels;
+    int bits;                 /* stencil bits used (at most 8) */
+} resolve;
+
+static unsigned char *staging_of(stin_context *ctx, size_t *bytes)
+{
+    int staging = ctx->staging_bytes >= ctx->scratch_bytes;
+    *bytes = staging ? ctx->staging_bytes : ctx->scratch_bytes;
+    return staging ? ctx->staging : ctx->scratch;
+}
+
+size_t stin__csg_goldfeather_bytes(int w, int h) { return (size_t)w * (size_t)h * 9u; }
+
+/* ---- pixel transfer ------------------------------------------------------- */
+typedef struct pack_saved {
+    GLint store[4];
+    GLint buffer;
+} pack_saved;
+
+static const GLenum pack_store[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
+                                     GL_PACK_SKIP_PIXELS};
+
+static int has_pack_buffer(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO)) &&
+           ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 21;
+}
+
+/* The caller's pack state set aside: tightly packed rows into client memory. */
+static void pack_begin(stin_context *ctx, pack_saved *s)
+{
+    int i;
+    for (i = 0; i < 4; i++) {
+        GL(ctx, GetIntegerv)(pack_store[i], &s->store[i]);
+        GL(ctx, PixelStorei)(pack_store[i], i == 0 ? 1 : 0);
+    }
+    s->buffer = 0;
+    if (has_pack_buffer(ctx)) {
+        GL(ctx, GetIntegerv)(GL_PIXEL_PACK_BUFFER_BINDING, &s->buffer);
+        if (s->buffer)
+            GL(ctx, BindBuffer)(GL_PIXEL_PACK_BUFFER, 0);
+    }
+}
+
+static void pack_end(stin_context *ctx, const pack_saved *s)
+{
+    int i;
+    for (i = 0; i < 4; i++)
+        GL(ctx, PixelStorei)(pack_store[i], s->store[i]);
+    if (s->buffer)
+        GL(ctx, BindBuffer)(GL_PIXEL_PACK_BUFFER, (GLuint)s->buffer);
+}
+
+static void read_depth(stin_context *ctx, const resolve *r, float *out)
+{
+    GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+}
+
+static void read_stencil(stin_context *ctx, const resolve *r)
+{
+    GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
+}
+
+#define GL_R32F 0x822E
+
+/* Core profiles: the result into the R32F texture (grown to the viewport)
+ * and a screen quad writing it as gl_FragDepth. */
+static void write_depth_core(stin_context *ctx, const resolve *r)
+{
+    stin__csg_state *c = &ctx->csg;
+    stin__unpack_saved saved;
+    float origin[4];
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, c->depth_tex);
+    stin__unpack_begin(ctx, &saved);
+    if (r->w > c->tex_width || r->h > c->tex_height) {
+        c->tex_width = r->w > c->tex_width ? r->w : c->tex_width;
+        c->tex_height = r->h > c->tex_height ? r->h : c->tex_height;
+        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R32F, c->tex_width, c->tex_height, 0, GL_RED,
+                            GL_FLOAT, NULL);
+    }
+    GL(ctx, TexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, r->w, r->h, GL_RED, GL_FLOAT, r->result);
+    stin__unpack_end(ctx, &saved);
+    GL(ctx, UseProgram)(c->depth_prog);
+    ctx->glsl_surface.current = NULL;
+    GL(ctx, Uniform1i)(c->u_depth, 0);
+    origin[0] = (float)r->x;
+    origin[1] = (float)r->y;
+    origin[2] = origin[3] = 0.0f;
+    GL(ctx, Uniform4fv)(c->u_origin, 1, origin);
+    stin__vdsm_screen_quad(ctx);
+}
+
+/* The result into the depth buffer at the viewport's corner: with no
+ * program (the fragments keep the pixels' depth) and the raster position
+ * at clip (-1, -1) through identity matrices; on core profiles through
+ * write_depth_core. */
+static void write_depth(stin_context *ctx, const stin__path *path, const resolve *r, GLenum func)
+{
+    static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    stin__unpack_saved saved;
+    stin__pass_state ps = stin__pass_defaults;
+    int fixed = path == stin__fixed_path();
+    ps.depth_test = 1;
+    ps.depth_func = func;
+    ps.color_write = 0;
+    stin__pass_apply(ctx, &ps);
+    if (ctx->csg.depth_prog) {
+        write_depth_core(ctx, r);
+        ctx->stats.passes++;
+        return;
+    }
+    if (!fixed) {
+        GL(ctx, UseProgram)(0);
+        ctx->glsl_surface.current = NULL;
+    }
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    if (!fixed)
+        GL(ctx, PushMatrix)(); /* the caller's (the fixed path pushed its own level) */
+    GL(ctx, LoadMatrixf)(identity);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    if (!fixed)
+        GL(ctx, PushMatrix)();
+    GL(ctx, LoadMatrixf)(identity);
+    GL(ctx, RasterPos2f)(-1.0f, -1.0f);
+    stin__unpack_begin(ctx, &saved);
+    GL(ctx, DrawPixels)(r->w, r->h, GL_DEPTH_COMPONENT, GL_FLOAT, r->result);
+    stin__unpack_end(ctx, &saved);
+    if (!fixed) {
+        GL(ctx, PopMatrix)();
+        GL(ctx, MatrixMode)(GL_PROJECTION);
+        GL(ctx, PopMatrix)();
+    } else {
+        GL(ctx, MatrixMode)(GL_PROJECTION);
+        GL(ctx, LoadMatrixf)(ctx->projection);
+    }
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    ctx->stats.passes++;
+}
+
+/* ---- passes ----------------------------------------------------------------- */
+static void clear(stin_context *ctx, GLbitfield bits)
+{
+    stin__pass_state ps = stin__pass_defaults;
+    ps.color_write = 0;
+    stin__pass_apply(ctx, &ps); /* depth and stencil writes on, no scissor */
+    GL(ctx, Clear)(bits);
+}
+
+/* The face a primitive shows: its front faces, or its back faces where it
+ * is complemented; a mirroring transform swaps which winding is front. */
+static GLenum culled_face(const stin__draw *d, int complemented)
+{
+    int mirrored = stin__mat4_det(d->transform) < 0.0;
+    return (complemented != mirrored) ? GL_FRONT : GL_BACK;
+}
+
+/* Layer k (from 1) of d's candidate faces into the cleared depth. */
+static void draw_layer(stin_context *ctx, const stin__path *path, const stin__draw *d,
+                       int complemented, int k)
+{
+    stin__pass_state ps = stin__pass_defaults;
+    ps.depth_test = 1;
+    ps.depth_func = GL_ALWAYS;
+    ps.color_write = 0;
+    ps.cull = 1;
+    ps.cull_face = culled_face(d, complemented);
+    ps.stencil_test = 1;
+    ps.front.func = GL_EQUAL;
+    ps.front.ref = k - 1;
+    ps.front.mask = 0xffu;
+    ps.front.fail = ps.front.zfail = ps.front.zpass = GL_INCR;
+    ps.back = ps.front;
+    stin__pass_apply(ctx, &ps);
+    path->geometry(ctx, d);
+    ctx->stats.passes++;
+}
+
+/* Primitive d whole, toggling stencil bit `bit` where its faces lie in front
+ * of the candidate's depth. */
+static void draw_parity(stin_context *ctx, const stin__path *path, const stin__draw *d, int bit)
+{
+    stin__pass_state ps = stin__pass_defaults;
+    ps.depth_test = 1;
+    ps.depth_func = GL_LESS;
+    ps.depth_write = 0;
+    ps.color_write = 0;
+    ps.stencil_test = 1;
+    ps.stencil_write_mask = 1u << bit;
+    ps.front.func = GL_ALWAYS;
+    ps.front.mask = 0xffu;
+    ps.front.fail = ps.front.zfail = GL_KEEP;
+    ps.front.zpass = GL_INVERT;
+    ps.back = ps.front;
+    /* Faces that coincide with the candidate count as crossed before it,
+     * whatever their rounding: a subtracted box sharing the candidate's
+     * plane takes it away, an intersected one keeps it, a neighbour's face
+     * touching it cancels out (the reference applies crossings at one
+     * distance together). Pulled toward the eye by the depth slope and 4
+     * units: faces that near are the same plane. */
+    ps.polygon_offset = 1;
+    ps.offset_factor = 0.0f;
+    ps.offset_units = -OFFSET_UNITS;
+    stin__pass_apply(ctx, &ps);
+    path->geometry(ctx, d);
+}
+
+/* The candidate's pixels that a batch of the term's other literals keeps. */
+static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
+                         const stin__csg_product *p, const uint32_t *lits, uint32_t n)
+{
+    unsigned char want = 0, mask = 0;
+    uint32_t j;
+    size_t i;
+    clear(ctx, GL_STENCIL_BUFFER_BIT);
+    for (j = 0; j < n; j++) {
+        const stin__draw *d =
+            &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lits[j])];
+        draw_parity(ctx, path, d, (int)j);
+        mask |= (unsigned char)(1u << j);
+        if (!STIN__CSG_COMPLEMENTED(lits[j]))
+            want |= (unsigned char)(1u << j); /* odd: inside */
+    }
+    ctx->stats.passes++;
+    read_stencil(ctx, r);
+    for (i = 0; i < r->pixels; i++)
+        if ((r->stencil[i] & mask) != want)
+            r->candidate[i] = 2.0f;
+}
+
+/* Literal `self` of term t as the candidate: every layer, tested against
+ * the term's other literals, kept where nearer. */
+static void candidate(stin_context *ctx, const stin__path *path, resolve *r,
+                      const stin__csg_product *p, const stin__csg_term *t, uint32_t self)
+{
+    uint32_t lit = ctx->csg.literals[t->first + self], others[8], n, j;
+    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    int complemented = (int)STIN__CSG_COMPLEMENTED(lit), layers = 1, k;
+    size_t i;
+    for (k = 1; k <= layers; k++) {
+        int any = 0;
+        clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        draw_layer(ctx, path, d, complemented, k);
+        if (k == 1) { /* every fragment counted: the depth complexity */
+            unsigned char most = 0;
+            read_stencil(ctx, r);
+            for (i = 0; i < r->pixels; i++)
+                if (r->stencil[i] > most)
+                    most = r->stencil[i];
+            layers = most;
+            if (most == 255u && !ctx->csg.said_layers) {
+                stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                          "goldfeather: a primitive is 255 or more layers deep; layers past "
+                          "255 are not drawn");
+                ctx->csg.said_layers = 1;
+            }
+        }
+        read_depth(ctx, r, r->candidate);
+        for (i = 0; i < r->pixels; i++)
+            if (r->candidate[i] >= r->result[i]) /* no layer, or no nearer */
+                r->candidate[i] = 2.0f;
+            else
+                any = 1;
+        if (!any)
+            continue;
+        /* the other literals, a stencil bit each, in batches of the bits */
+        for (j = 0, n = 0; j < t->count; j++) {
+            if (j == self)
+                continue;
+            others[n++] = ctx->csg.literals[t->first + j];
+            if (n == (uint32_t)r->bits) {
+                parity_batch(ctx, path, r, p, others, n);
+                n = 0;
+            }
+        }
+        if (n)
+            parity_batch(ctx, path, r, p, others, n);
+        for (i = 0; i < r->pixels; i++)
+            if (r->candidate[i] < r->result[i])
+                r->result[i] = r->candidate[i];
+    }
+}
+
+/* Whether this frame can resolve its products; logs once per reason. */
+static int usable(stin_context *ctx, resolve *r)
+{
+    const int *vp = ctx->frame.viewport;
+    size_t bytes, need = stin__csg_goldfeather_bytes(vp[2], vp[3]);
+    unsigned char *base = staging_of(ctx, &bytes);
+    const char *why = NULL;
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER)
+        why = "the CSG technique is csg-off";
+    else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
+        why = "the frame's framebuffer has no stencil buffer";
+    else if (need > bytes)
+        why = "the viewport needs more than the texture staging (9 bytes a pixel; raise "
+              "desc.max_texture_bytes)";
+    if (why) {
+        if (!ctx->csg.said_unusable) {
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "CSG products are not drawn: %s", why);
+            ctx->csg.said_unusable = 1;
+        }
+        return 0;
+    }
+    r->x = vp[0];
+    r->y = vp[1];
+    r->w = vp[2];
+    r->h = vp[3];
+    r->pixels = (size_t)vp[2] * (size_t)vp[3];
+    r->result = (float *)(void *)base;
+    r->candidate = r->result + r->pixels;
+    r->stencil = (unsigned char *)(r->candidate + r->pixels);
+    r->bits = ctx->target.stencil_bits < 8 ? ctx->target.stencil_bits : 8;
+    return 1;
+}
+
+int stin__csg_resolve(stin_context *ctx, const stin__path *path)
+{
+    resolve r;
+    pack_saved saved;
+    uint32_t pi, ti, li;
+    ctx->csg.resolved = 0;
+    if (!ctx->csg.product_count || !usable(ctx, &r))
+        return 0;
+    pack_begin(ctx, &saved);
+    read_depth(ctx, &r, r.result); /* what the buffer holds stays where nearer */
+    path->geometry_begin(ctx);
+    for (pi = 0; pi < ctx->csg.product_count; pi++) {
+        const stin__csg_product *p = &ctx->csg.products[pi];
+        for (ti = 0; ti < p->term_count; ti++) {
+            const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
+            for (li = 0; li < t->count; li++)
+                candidate(ctx, path, &r, p, t, li);
+        }
+    }
+    path->geometry_end(ctx);
+    pack_end(ctx, &saved);
+    write_depth(ctx, path, &r, GL_ALWAYS);
+    clear(ctx, GL_STENCIL_BUFFER_BIT);
+    ctx->csg.resolved = 1;
+    return 1;
+}
+
+/* The resolved depth again into the bound framebuffer, depth LESS against
+ * what it holds (the screen mask's copy of the frame's depth). */
+void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
+{
+    resolve r;
+    if (!ctx->csg.resolved || !usable(ctx, &r))
+        return;
+    write_depth(ctx, path, &r, GL_LESS);
+}
+
+void stin__csg_init(stin_context *ctx)
+{
+    stin__csg_state *c = &ctx->csg;
+    char msg[160], why[200];
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER ||
+        (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)))
+        return; /* csg-off, or glDrawPixels writes the depth */
+    if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_GLSL150) {
+        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
+                     "goldfeather writes depth with glDrawPixels (compatibility profile) or a "
+                     "GLSL 1.50 program (GL4 lighting)");
+        return;
+    }
+    c->depth_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_depth.frag", NULL, 0,
+                                        msg, sizeof msg);
+    if (!c->depth_prog) {
+        stin__formatf(why, sizeof why, "its depth program failed to build (%s)", msg);
+        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF, why);
+        return;
+    }
+    c->u_depth = GL(ctx, GetUniformLocation)(c->depth_prog, "u_depth");
+    c->u_origin = GL(ctx, GetUniformLocation)(c->depth_prog, "u_origin");
+    GL(ctx, GenTextures)(1, &c->depth_tex);
+    {
+        GLint bound = 0;
+        GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &bound);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, c->depth_tex);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)bound);
+    }
+    c->tex_width = c->tex_height = 0;
+}
+
+void stin__csg_release(stin_context *ctx)
+{
+    stin__csg_state *c = &ctx->csg;
+    if (c->depth_prog)
+        GL(ctx, DeleteProgram)(c->depth_prog);
+    if (c->depth_tex)
+        GL(ctx, DeleteTextures)(1, &c->depth_tex);
+    c->depth_prog = c->depth_tex = 0;
+}

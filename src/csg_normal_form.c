@@ -1,0 +1,157 @@
+/* SPDX-License-Identifier: MIT */
+/* A CSG tree as Goldfeather's sum of products: a union of terms, each an
+ * intersection of literals (a primitive or its complement). The rules, with
+ * !x the complement:
+ *   nf(a u b)  = nf(a) + nf(b)           nf(!(a u b)) = nf(!a) x nf(!b)
+ *   nf(a n b)  = nf(a) x nf(b)           nf(!(a n b)) = nf(!a) + nf(!b)
+ *   nf(a - b)  = nf(a) x nf(!b)          nf(!(a - b)) = nf(!a) + nf(b)
+ * where + joins two term lists and x intersects every pair of terms. Lists
+ * are built on a stack of words in the scratch (a term is its length, then
+ * its sorted literals); a cross product is written above its operands and
+ * moved down over them, so the scratch holds one chain of partial results,
+ * never a heap. */
+#include "internal.h"
+
+typedef struct nf_work {
+    const stin_csg_node *nodes;
+    uint32_t *w;
+    uint32_t size, top;
+    uint32_t visits;        /* nodes visited: a shared subtree is expanded each time */
+    stin__csg_nf_result failed;
+} nf_work;
+
+static void push(nf_work *k, uint32_t v)
+{
+    if (k->top >= k->size) {
+        if (!k->failed)
+            k->failed = STIN__CSG_NF_SCRATCH;
+        return;
+    }
+    k->w[k->top++] = v;
+}
+
+/* The term a n b (both sorted) at the top of the stack; nothing when it
+ * holds a primitive and its complement (it is empty). */
+static void push_conjunction(nf_work *k, uint32_t a, uint32_t b)
+{
+    uint32_t na = k->w[a], nb = k->w[b], i = 0, j = 0, len_at = k->top, last = UINT32_MAX;
+    push(k, 0);
+    while (!k->failed && (i < na || j < nb)) {
+        uint32_t la = i < na ? k->w[a + 1 + i] : UINT32_MAX;
+        uint32_t lb = j < nb ? k->w[b + 1 + j] : UINT32_MAX;
+        uint32_t l = la < lb ? la : lb;
+        if (la == l)
+            i++;
+        if (lb == l)
+            j++;
+        if (l == last)
+            continue; /* in both terms: once */
+        if (last != UINT32_MAX && STIN__CSG_PRIMITIVE_OF(l) == STIN__CSG_PRIMITIVE_OF(last)) {
+            k->top = len_at; /* p and !p: the term is empty */
+            return;
+        }
+        push(k, l);
+        last = l;
+    }
+    if (!k->failed)
+        k->w[len_at] = k->top - len_at - 1;
+}
+
+static void normal_form(nf_work *k, uint32_t node, int complement, uint32_t depth);
+
+/* nf(x) x nf(y), left where nf(x) began. */
+static void cross(nf_work *k, uint32_t x, int cx, uint32_t y, int cy, uint32_t depth)
+{
+    uint32_t a0 = k->top, b0, r0, a, b;
+    normal_form(k, x, cx, depth);
+    b0 = k->top;
+    normal_form(k, y, cy, depth);
+    r0 = k->top;
+    for (a = a0; a < b0 && !k->failed; a += 1 + k->w[a])
+        for (b = b0; b < r0 && !k->failed; b += 1 + k->w[b])
+            push_conjunction(k, a, b);
+    if (k->failed)
+        return;
+    for (a = r0; a < k->top; a++) /* down over the operands (forward: r0 > a0) */
+        k->w[a0 + (a - r0)] = k->w[a];
+    k->top = a0 + (k->top - r0);
+}
+
+static void normal_form(nf_work *k, uint32_t node, int complement, uint32_t depth)
+{
+    const stin_csg_node *n = &k->nodes[node];
+    if (k->failed)
+        return;
+    if (depth >= STIN__CSG_MAX_DEPTH) {
+        k->failed = STIN__CSG_NF_DEPTH;
+        return;
+    }
+    if (++k->visits > STIN__CSG_MAX_VISITS) {
+        k->failed = STIN__CSG_NF_WORK;
+        return;
+    }
+    switch (n->op) {
+    case STIN_CSG_PRIMITIVE:
+        push(k, 1);
+        push(k, STIN__CSG_LITERAL(n->primitive, complement));
+        break;
+    case STIN_CSG_UNION:
+        if (complement) {
+            cross(k, n->a, 1, n->b, 1, depth + 1);
+        } else {
+            normal_form(k, n->a, 0, depth + 1);
+            normal_form(k, n->b, 0, depth + 1);
+        }
+        break;
+    case STIN_CSG_INTERSECTION:
+        if (complement) {
+            normal_form(k, n->a, 1, depth + 1);
+            normal_form(k, n->b, 1, depth + 1);
+        } else {
+            cross(k, n->a, 0, n->b, 0, depth + 1);
+        }
+        break;
+    case STIN_CSG_SUBTRACTION:
+        if (complement) {
+            normal_form(k, n->a, 1, depth + 1);
+            normal_form(k, n->b, 0, depth + 1);
+        } else {
+            cross(k, n->a, 0, n->b, 1, depth + 1);
+        }
+        break;
+    }
+}
+
+stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t node_count,
+                                          uint32_t *scratch, uint32_t scratch_words,
+                                          stin__csg_out *out)
+{
+    nf_work k;
+    uint32_t t, terms = 0, literals = 0;
+    out->term_count = out->literal_count = 0;
+    k.nodes = nodes;
+    k.w = scratch;
+    k.size = scratch_words;
+    k.top = 0;
+    k.visits = 0;
+    k.failed = STIN__CSG_NF_OK;
+    normal_form(&k, node_count - 1u, 0, 0);
+    if (k.failed)
+        return k.failed;
+    for (t = 0; t < k.top; t += 1 + k.w[t]) {
+        terms++;
+        literals += k.w[t];
+    }
+    if (terms > out->max_terms)
+        return STIN__CSG_NF_TERMS;
+    if (literals > out->max_literals)
+        return STIN__CSG_NF_LITERALS;
+    for (t = 0; t < k.top; t += 1 + k.w[t]) {
+        stin__csg_term *term = &out->terms[out->term_count++];
+        term->first = out->literal_base + out->literal_count;
+        term->count = k.w[t];
+        stin__memcopy(out->literals + out->literal_count, k.w + t + 1, k.w[t] * sizeof(uint32_t));
+        out->literal_count += k.w[t];
+    }
+    return STIN__CSG_NF_OK;
+}

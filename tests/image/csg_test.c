@@ -1,0 +1,317 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * CSG products ("goldfeather", src/csg_goldfeather.c) against the exact CSG
+ * reference (tests/reference/reference_csg.h: every crossing of the camera
+ * ray with the primitives, the expression evaluated along it). Run on
+ * csg.json (carved, both, common) and the scenes of tests/scenes/csg/
+ * beside it, at every tier the profile runs:
+ *   P           within 1e-3 Z + 1e-3 (image_test.c's tolerance: 24-bit
+ *               depth) on >= 99.9% of the pixels covered in the render or
+ *               the reference (a pixel covered in one only counts against:
+ *               a union that paints the background, or a hole, fails here);
+ *   N           within 2 degrees on >= 99.5% of the matching pixels away
+ *               from edges between primitives (8-bit normal output); the
+ *               inside walls of complemented primitives face the eye;
+ *   union-equals  the union of two spheres: its P equals the depth-tested
+ *               pair drawn as ordinary objects on >= 99.9% of the covered
+ *               pixels (within the same tolerance);
+ *   shadow      (shadowed.json) light 0's visibility on the matching pixels
+ *               that face the light, 2 pixels or more from a reference
+ *               shadow edge, within the shadow technique's bound (1% for
+ *               the maps, 0.5% for volumes) against the reference's rays,
+ *               which pass through CSG primitives (products cast no
+ *               shadows), with at least 100 shadowed pixels of the product
+ *               compared;
+ *   gl-clean    no GL error, no call outside the profile, no logged error.
+ * Contexts without the technique's needs (a stencil buffer; glDrawPixels
+ * or GL4 lighting to write the depth back) report SKIP with the reason.
+ */
+#include "aov.h"
+#include "capture.h"
+#include "compare.h"
+#include "image_test.h"
+#include "light_reach.h"
+#include "reference.h"
+#include "reference_csg.h"
+#include "scene_gpu.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define CSG_P_RELATIVE 1e-3
+#define CSG_P_ABSOLUTE 1e-3
+#define CSG_P_MIN_MATCH 0.999
+#define CSG_NORMAL_DEGREES 2.0
+#define CSG_NORMAL_MIN_MATCH 0.995
+#define CSG_VIS_MAP_MAX 0.01
+#define CSG_VIS_VOLUME_MAX 0.005
+
+static const stin_csg_node minus[] = {
+    {STIN_CSG_PRIMITIVE, 0, 0, 0}, {STIN_CSG_PRIMITIVE, 1, 0, 0}, {STIN_CSG_SUBTRACTION, 0, 0, 1}};
+static const stin_csg_node both[] = {
+    {STIN_CSG_PRIMITIVE, 0, 0, 0}, {STIN_CSG_PRIMITIVE, 1, 0, 0}, {STIN_CSG_UNION, 0, 0, 1}};
+static const stin_csg_node common[] = {
+    {STIN_CSG_PRIMITIVE, 0, 0, 0}, {STIN_CSG_PRIMITIVE, 1, 0, 0},
+    {STIN_CSG_INTERSECTION, 0, 0, 1}};
+
+/* A case: a scene file (relative to csg.json's folder), the objects that
+ * are its two primitives, the expression. */
+typedef struct csg_case {
+    const char *name, *file;
+    int objects[2];
+    const stin_csg_node *nodes;
+    int shadows;   /* test light 0's visibility too */
+    int union_equals; /* compare with the ordinary depth-tested render */
+} csg_case;
+
+static const csg_case cases[] = {
+    {"carved", "csg.json", {0, 1}, minus, 0, 0},
+    {"both", "csg.json", {0, 1}, both, 0, 0},
+    {"common", "csg.json", {0, 1}, common, 0, 0},
+    {"inside", "csg/inside.json", {0, 1}, minus, 0, 0},
+    {"union", "csg/spheres.json", {0, 1}, both, 0, 1},
+    {"lens", "csg/spheres.json", {0, 1}, common, 0, 0},
+    {"torus-groove", "csg/torus.json", {0, 1}, minus, 0, 0},
+    {"torus-cut", "csg/torus.json", {1, 0}, common, 0, 0},
+    {"coplanar", "csg/coplanar.json", {0, 1}, minus, 0, 0},
+    {"shadowed", "csg/shadowed.json", {0, 1}, minus, 1, 0},
+};
+
+static void case_name(const csg_case *c, stin_tier tier, const char *test, char *out, size_t n)
+{
+    snprintf(out, n, "%s/csg-%s/%s", stin_tier_name(tier), c->name, test);
+}
+
+/* The reference image of the case: P, N, Z and light 0's visibility. */
+static float *reference_image(const scene *s, reference *ref, const ref_hit *hits, int w, int h)
+{
+    float *img = calloc((size_t)w * h * REFERENCE_CHANNELS, sizeof *img);
+    size_t i;
+    if (!img)
+        return NULL;
+    for (i = 0; i < (size_t)w * h; i++) {
+        float *p = img + i * REFERENCE_CHANNELS;
+        const ref_hit *hit = &hits[i];
+        int k;
+        p[REFERENCE_CH_VIS_R] = p[REFERENCE_CH_VIS_G] = p[REFERENCE_CH_VIS_B] = 1.0f;
+        if (!hit->hit)
+            continue;
+        reference_shade(s, NULL, hit, 0, p + REFERENCE_CH_R);
+        for (k = 0; k < 3; k++) {
+            p[REFERENCE_CH_PX + k] = hit->P[k];
+            p[REFERENCE_CH_NX + k] = hit->N[k];
+        }
+        p[REFERENCE_CH_Z] = hit->t;
+        if (s->light_count)
+            p[REFERENCE_CH_VIS_R] = p[REFERENCE_CH_VIS_G] = p[REFERENCE_CH_VIS_B] =
+                reference_light_visibility(ref, hit, 0);
+    }
+    return img;
+}
+
+static int render(run *r, const scene *s, const capture_options *o, capture *cap,
+                  const char *name)
+{
+    char err[512];
+    if (capture_render(r->plat, r->profile, s, o, cap, err, sizeof err))
+        return 1;
+    report(r, "FAIL", name, "render failed: %s", err);
+    return 0;
+}
+
+/* The ordinary render's P against the union's, pixel by pixel. */
+static void test_union_equals(run *r, const csg_case *c, stin_tier tier, const scene *s,
+                              const capture *csg)
+{
+    capture_options o;
+    capture plain;
+    char name[256];
+    long covered = 0, differ = 0;
+    int w = r->width, h = r->height, i;
+    case_name(c, tier, "union-equals", name, sizeof name);
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    if (!render(r, s, &o, &plain, name))
+        return;
+    for (i = 0; i < w * h; i++) {
+        const float *a = csg->img.pixels + (size_t)i * AOV_CHANNELS;
+        const float *b = plain.img.pixels + (size_t)i * AOV_CHANNELS;
+        double d2 = 0, limit = CSG_P_RELATIVE * b[AOV_Z] + CSG_P_ABSOLUTE;
+        int k, ca = a[AOV_Z] > 0.0f, cb = b[AOV_Z] > 0.0f;
+        if (!ca && !cb)
+            continue;
+        covered++;
+        for (k = 0; k < 3; k++)
+            d2 += (a[AOV_PX + k] - b[AOV_PX + k]) * (a[AOV_PX + k] - b[AOV_PX + k]);
+        differ += ca != cb || d2 > limit * limit;
+    }
+    report(r, covered && differ <= (1.0 - CSG_P_MIN_MATCH) * covered ? "PASS" : "FAIL", name,
+           "P differs from the depth-tested pair on %ld of %ld covered pixels (need <= %.1f%%)",
+           differ, covered, 100.0 * (1.0 - CSG_P_MIN_MATCH));
+    capture_free(&plain);
+}
+
+/* Light 0's visibility where P matches, the light reaches the side seen
+ * and no reference shadow edge lies within 2 pixels (a map's texels blur
+ * edges over that band; image_test.c's other shadow tests do the same). */
+static void test_shadow(run *r, const csg_case *c, stin_tier tier, const scene *s,
+                        const capture_options *base, stin_technique t, const ref_hit *hits,
+                        const float *ref)
+{
+    double bound = t == STIN_TECH_SHADOWS_VOLUME ? CSG_VIS_VOLUME_MAX : CSG_VIS_MAP_MAX;
+    int w = r->width, h = r->height, x, y;
+    long compared = 0, differ = 0, shadowed = 0, on_product = 0;
+    char test[64], name[256];
+    capture_options o = *base;
+    capture one, *cap = &one;
+    snprintf(test, sizeof test, "shadow-%s", stin_technique_name(t));
+    case_name(c, tier, test, name, sizeof name);
+    o.shadows = t;
+    {
+        char err[512];
+        if (!capture_render(r->plat, r->profile, s, &o, &one, err, sizeof err)) {
+            /* a forced technique the context cannot run is refused at create */
+            report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "%s", err);
+            return;
+        }
+    }
+    if (one.choice[STIN_FEATURE_SHADOWS].technique != t) {
+        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(t),
+               one.choice[STIN_FEATURE_SHADOWS].reason);
+        capture_free(&one);
+        return;
+    }
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const ref_hit *hit = &hits[(size_t)y * w + x];
+            const float *g = cap->img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
+            const float *p = ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
+            double d2 = 0, limit = CSG_P_RELATIVE * p[REFERENCE_CH_Z] + CSG_P_ABSOLUTE;
+            int k;
+            if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(s, hit) ||
+                near_shadow_edge(hits, ref, w, h, x, y, 2))
+                continue;
+            for (k = 0; k < 3; k++)
+                d2 += (g[AOV_PX + k] - p[REFERENCE_CH_PX + k]) *
+                      (g[AOV_PX + k] - p[REFERENCE_CH_PX + k]);
+            if (d2 > limit * limit)
+                continue;
+            compared++;
+            shadowed += p[REFERENCE_CH_VIS_R] < 0.5f;
+            on_product += p[REFERENCE_CH_VIS_R] < 0.5f &&
+                          (hit->object == c->objects[0] || hit->object == c->objects[1]);
+            differ += (g[AOV_VIS_R] >= 0.5f) != (p[REFERENCE_CH_VIS_R] >= 0.5f);
+        }
+    report(r,
+           compared && on_product >= 100 && (double)differ <= bound * (double)compared
+               ? "PASS"
+               : "FAIL",
+           name, "%s: visibility differs on %ld of %ld pixels the light reaches (%.3f%%, bound "
+           "%.1f%%; %ld shadowed compared, %ld of them on the product, need >= 100)",
+           stin_technique_name(t), differ, compared, compared ? 100.0 * differ / compared : 0.0,
+           100.0 * bound, shadowed, on_product);
+    capture_free(&one);
+}
+
+static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
+{
+    char path[1200], err[512], name[256];
+    scene s;
+    reference *ref = NULL;
+    ref_hit *hits = NULL;
+    float *refimg = NULL;
+    capture cap;
+    capture_options o;
+    scene_gpu_csg product;
+    ref_csg_product rp;
+    compare_result cr;
+    compare_tolerance tol = {CSG_P_RELATIVE, CSG_P_ABSOLUTE, 1.0, CSG_NORMAL_DEGREES};
+    int w = r->width, h = r->height, have_cap = 0;
+    snprintf(path, sizeof path, "%s/%s", dir, c->file);
+    case_name(c, tier, "P", name, sizeof name);
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        return;
+    }
+    product.objects = c->objects;
+    product.primitive_count = 2;
+    product.nodes = c->nodes;
+    product.node_count = 3;
+    rp.objects = c->objects;
+    rp.primitive_count = 2;
+    rp.nodes = c->nodes;
+    rp.node_count = 3;
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    o.csg = &product;
+    o.csg_count = 1;
+    if (!render(r, &s, &o, &cap, name))
+        goto done;
+    have_cap = 1;
+    if (cap.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER) {
+        report(r, "SKIP", name, "goldfeather does not run here (%s)",
+               cap.choice[STIN_FEATURE_CSG].reason);
+        goto done;
+    }
+    ref = reference_create(&s, err, sizeof err);
+    hits = calloc((size_t)w * h, sizeof *hits);
+    if (!ref || !hits || !reference_csg_mark(ref, &rp, 1) ||
+        !reference_csg_primary(ref, &rp, 1, w, h, hits, NULL) ||
+        !(refimg = reference_image(&s, ref, hits, w, h))) {
+        report(r, "FAIL", name, "reference failed: %s", ref ? "out of memory or embree" : err);
+        goto done;
+    }
+    compare_render(&s, &cap.img, refimg, hits, &tol, &cr);
+    {
+        double match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) /
+                                              cr.covered : 0;
+        report(r, cr.covered && match >= CSG_P_MIN_MATCH ? "PASS" : "FAIL", name,
+               "P matches the CSG reference on %.3f%% of %ld covered pixels (coverage differs on "
+               "%ld, P on %ld; need %.1f%%)", 100.0 * match, cr.covered, cr.coverage_mismatch,
+               cr.p_mismatch, 100.0 * CSG_P_MIN_MATCH);
+    }
+    case_name(c, tier, "N", name, sizeof name);
+    report(r,
+           cr.normal_compared &&
+                   cr.normal_over <= (1.0 - CSG_NORMAL_MIN_MATCH) * cr.normal_compared
+               ? "PASS"
+               : "FAIL",
+           name, "N within %.0f degrees on %ld of %ld pixels away from edges (max %.1f; need "
+           "%.1f%%)", CSG_NORMAL_DEGREES, cr.normal_compared - cr.normal_over,
+           cr.normal_compared, cr.normal_max_deg, 100.0 * CSG_NORMAL_MIN_MATCH);
+    if (c->shadows) {
+        /* vdsm is not among them: it gets the products' surfaces into its
+         * position buffer but measures 1.1% here (not done, docs/testing.md) */
+        static const stin_technique shadow_techniques[] = {
+            STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_MAP_DEPTH,
+            STIN_TECH_SHADOWS_MAP_COMBINE};
+        size_t k;
+        for (k = 0; k < sizeof shadow_techniques / sizeof shadow_techniques[0]; k++)
+            test_shadow(r, c, tier, &s, &o, shadow_techniques[k], hits, refimg);
+    }
+    if (c->union_equals)
+        test_union_equals(r, c, tier, &s, &cap);
+    case_name(c, tier, "gl-clean", name, sizeof name);
+    capture_report_clean(r, name, &cap);
+done:
+    if (have_cap)
+        capture_free(&cap);
+    free(refimg);
+    free(hits);
+    reference_destroy(ref);
+    scene_free(&s);
+}
+
+void csg_tests(run *r, stin_tier tier, const char *path)
+{
+    char dir[1024];
+    const char *slash;
+    size_t i;
+    if (strcmp(scene_base_name(path), "csg") != 0)
+        return;
+    slash = strrchr(path, '/');
+    snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        run_case(r, tier, dir, &cases[i]);
+}

@@ -1,0 +1,286 @@
+/* SPDX-License-Identifier: MIT */
+/* CSG products by ray intervals: every crossing of the camera ray with the
+ * primitives (an Embree context filter that records each hit and rejects
+ * it, so traversal goes on to the next), in/out per primitive, and the
+ * expression evaluated along the ray. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "reference_csg.h"
+#include "reference_internal.h"
+
+/* The SOA layout of Embree's RTCRayN / RTCHitN (its accessors are C++ only):
+ * field k of ray i of N at k * N + i. */
+#define RAY_F(ray, N, i, k) (((const float *)(const void *)(ray))[(k) * (N) + (i)])
+#define HIT_F(hit, N, i, k) (((const float *)(const void *)(hit))[(k) * (N) + (i)])
+#define HIT_U(hit, N, i, k) (((const unsigned *)(const void *)(hit))[(k) * (N) + (i)])
+enum { RAY_DIR_X = 4, RAY_TFAR = 8, HIT_NG_X = 0, HIT_U_ = 3, HIT_V_ = 4, HIT_PRIM = 5,
+       HIT_GEOM = 6 };
+
+typedef struct crossing {
+    float t, u, v;
+    unsigned object, prim;
+    int exit;            /* back face: the ray leaves the primitive */
+} crossing;
+
+typedef struct collector {
+    struct RTCIntersectContext rtc; /* first: the filter gets this pointer */
+    const reference *r;
+    crossing *list;
+    int count, capacity, overflow;
+} collector;
+
+/* Visibility rays: hits on CSG primitives are not occluders. */
+static void skip_csg(const struct RTCFilterFunctionNArguments *args)
+{
+    const ref_csg_context *c = (const ref_csg_context *)(const void *)args->context;
+    for (unsigned i = 0; i < args->N; i++)
+        if (args->valid[i] && c->r->csg_primitive[HIT_U(args->hit, args->N, i, HIT_GEOM)])
+            args->valid[i] = 0;
+}
+
+void ref_csg_context_init(const reference *r, ref_csg_context *ctx)
+{
+    rtcInitIntersectContext(&ctx->rtc);
+    ctx->r = r;
+    if (r->csg_primitive)
+        ctx->rtc.filter = skip_csg;
+}
+
+/* Primary CSG rays: every hit on a CSG primitive is recorded and rejected. */
+static void collect(const struct RTCFilterFunctionNArguments *args)
+{
+    collector *c = (collector *)(void *)args->context;
+    for (unsigned i = 0; i < args->N; i++) {
+        unsigned g;
+        if (!args->valid[i])
+            continue;
+        g = HIT_U(args->hit, args->N, i, HIT_GEOM);
+        args->valid[i] = 0;
+        if (!c->r->csg_primitive[g])
+            continue;
+        if (c->count == c->capacity) {
+            c->overflow = 1;
+            continue;
+        }
+        crossing *x = &c->list[c->count++];
+        float facing = 0.0f;
+        for (int k = 0; k < 3; k++)
+            facing += HIT_F(args->hit, args->N, i, HIT_NG_X + k) *
+                      RAY_F(args->ray, args->N, i, RAY_DIR_X + k);
+        x->t = RAY_F(args->ray, args->N, i, RAY_TFAR);
+        x->u = HIT_F(args->hit, args->N, i, HIT_U_);
+        x->v = HIT_F(args->hit, args->N, i, HIT_V_);
+        x->object = g;
+        x->prim = HIT_U(args->hit, args->N, i, HIT_PRIM);
+        x->exit = facing > 0.0f;
+    }
+}
+
+int reference_csg_mark(reference *r, const ref_csg_product *products, int count)
+{
+    if (!r || (count && !products))
+        return 0;
+    if (!r->csg_primitive) {
+        r->csg_primitive = calloc((size_t)r->object_count + 1, 1);
+        if (!r->csg_primitive)
+            return 0;
+    }
+    for (int p = 0; p < count; p++)
+        for (int i = 0; i < products[p].primitive_count; i++) {
+            int o = products[p].objects[i];
+            if (o < 0 || o >= r->object_count)
+                return 0;
+            r->csg_primitive[o] = 1;
+        }
+    return 1;
+}
+
+static int eval(const stin_csg_node *nodes, int i, const unsigned char *inside)
+{
+    const stin_csg_node *n = &nodes[i];
+    switch (n->op) {
+    case STIN_CSG_PRIMITIVE: return inside[n->primitive];
+    case STIN_CSG_UNION: return eval(nodes, (int)n->a, inside) || eval(nodes, (int)n->b, inside);
+    case STIN_CSG_INTERSECTION:
+        return eval(nodes, (int)n->a, inside) && eval(nodes, (int)n->b, inside);
+    case STIN_CSG_SUBTRACTION:
+        return eval(nodes, (int)n->a, inside) && !eval(nodes, (int)n->b, inside);
+    }
+    return 0;
+}
+
+static int by_t(const void *a, const void *b)
+{
+    const crossing *x = a, *y = b;
+    if (x->t != y->t)
+        return x->t < y->t ? -1 : 1;
+    if (x->object != y->object)
+        return x->object < y->object ? -1 : 1;
+    return x->prim < y->prim ? -1 : x->prim > y->prim;
+}
+
+static int primitive_of(const ref_csg_product *p, unsigned object)
+{
+    for (int i = 0; i < p->primitive_count; i++)
+        if ((unsigned)p->objects[i] == object)
+            return i;
+    return -1;
+}
+
+#define SAME_T(a, b) (fabsf((a) - (b)) <= 1e-6f * fmaxf(fabsf(a), 1.0f))
+
+/* The first crossing (of the sorted list, one product's) where the
+ * expression turns true; -1 for none. inside: primitive_count bytes. */
+static int first_surface(const ref_csg_product *p, const crossing *x, int n, unsigned char *inside)
+{
+    int i, k;
+    memset(inside, 0, (size_t)p->primitive_count);
+    /* in at the start: more exits than entries along the whole ray */
+    {
+        int balance[256] = {0};
+        for (i = 0; i < n; i++)
+            balance[primitive_of(p, x[i].object)] += x[i].exit ? 1 : -1;
+        for (k = 0; k < p->primitive_count; k++)
+            inside[k] = balance[k] > 0;
+    }
+    if (eval(p->nodes, p->node_count - 1, inside))
+        return -1; /* holds the near plane: not capped */
+    for (i = 0; i < n;) {
+        int end = i, pick = -1;
+        while (end < n && SAME_T(x[end].t, x[i].t))
+            end++;
+        for (k = i; k < end && pick < 0; k++) { /* a crossing alone that makes it true */
+            int q = primitive_of(p, x[k].object);
+            unsigned char was = inside[q];
+            inside[q] = (unsigned char)!x[k].exit;
+            if (eval(p->nodes, p->node_count - 1, inside))
+                pick = k;
+            inside[q] = was;
+        }
+        for (k = i; k < end; k++)
+            inside[primitive_of(p, x[k].object)] = (unsigned char)!x[k].exit;
+        if (eval(p->nodes, p->node_count - 1, inside))
+            return pick >= 0 ? pick : i;
+        i = end;
+    }
+    return -1;
+}
+
+/* Drops a crossing that repeats the one before on the same primitive and
+ * side at the same distance (a ray through an edge hits both triangles). */
+static int drop_edge_repeats(crossing *x, int n)
+{
+    int o = 0;
+    for (int i = 0; i < n; i++) {
+        int repeat = 0;
+        for (int j = o - 1; j >= 0 && SAME_T(x[j].t, x[i].t); j--)
+            if (x[j].object == x[i].object && x[j].exit == x[i].exit)
+                repeat = 1;
+        if (!repeat)
+            x[o++] = x[i];
+    }
+    return o;
+}
+
+int reference_csg_primary(const reference *r, const ref_csg_product *products, int count,
+                          int width, int height, ref_hit *hits, int *product_of)
+{
+    ref_camera_frame cf;
+    collector c;
+    crossing *mine;
+    unsigned char inside[256];
+    int ok = 1;
+    if (!r || !hits || count < 0 || (count && !products) ||
+        !r->csg_primitive)
+        return 0;
+    for (int p = 0; p < count; p++) {
+        if (products[p].primitive_count > 256 || products[p].node_count < 1)
+            return 0;
+        for (int i = 0; i < products[p].primitive_count; i++)
+            if (products[p].objects[i] < 0 || products[p].objects[i] >= r->object_count ||
+                !r->csg_primitive[products[p].objects[i]])
+                return 0; /* reference_csg_mark first */
+    }
+    if (!ref_frame_of(&r->s->camera, width, height, &cf))
+        return 0;
+    memset(&c, 0, sizeof c);
+    c.r = r;
+    c.capacity = 4096;
+    c.list = malloc(sizeof *c.list * (size_t)c.capacity);
+    mine = malloc(sizeof *mine * (size_t)c.capacity);
+    if (!c.list || !mine) {
+        free(c.list);
+        free(mine);
+        return 0;
+    }
+    const float *eye = r->s->camera.eye;
+    for (int y = 0; y < height && ok; y++)
+        for (int x = 0; x < width; x++) {
+            size_t at = (size_t)y * (size_t)width + (size_t)x;
+            ref_hit *h = &hits[at];
+            double dir[3];
+            struct RTCRayHit rh;
+            if (product_of)
+                product_of[at] = -1;
+            /* the nearest ordinary object, through the primitives */
+            ref_window_dir(&cf, width, height, x + 0.5, y + 0.5, dir);
+            memset(&rh, 0, sizeof rh);
+            rh.ray.org_x = eye[0];
+            rh.ray.org_y = eye[1];
+            rh.ray.org_z = eye[2];
+            rh.ray.dir_x = (float)dir[0];
+            rh.ray.dir_y = (float)dir[1];
+            rh.ray.dir_z = (float)dir[2];
+            rh.ray.tnear = r->s->camera.near_plane;
+            rh.ray.tfar = r->s->camera.far_plane;
+            rh.ray.mask = 0xffffffffu;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            {
+                ref_csg_context plain;
+                ref_csg_context_init(r, &plain);
+                rtcIntersect1(r->rtc, &plain.rtc, &rh);
+            }
+            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
+                memset(h, 0, sizeof *h);
+            else
+                ref_fill_hit(r, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, eye, h);
+            float t_best = h->hit ? rh.ray.tfar : INFINITY;
+            /* every crossing with a primitive, to infinity (the start's in/out) */
+            rtcInitIntersectContext(&c.rtc);
+            c.rtc.filter = collect;
+            c.count = 0;
+            rh.ray.tfar = INFINITY;
+            rh.ray.tnear = r->s->camera.near_plane;
+            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+            rtcIntersect1(r->rtc, &c.rtc, &rh);
+            if (c.overflow) {
+                ok = 0;
+                break;
+            }
+            qsort(c.list, (size_t)c.count, sizeof *c.list, by_t);
+            for (int p = 0; p < count; p++) {
+                int n = 0, k;
+                for (int i = 0; i < c.count; i++)
+                    if (primitive_of(&products[p], c.list[i].object) >= 0)
+                        mine[n++] = c.list[i];
+                n = drop_edge_repeats(mine, n);
+                k = first_surface(&products[p], mine, n, inside);
+                if (k < 0 || !(mine[k].t < t_best) || mine[k].t > r->s->camera.far_plane)
+                    continue;
+                t_best = mine[k].t;
+                ref_fill_hit(r, mine[k].object, mine[k].prim, mine[k].u, mine[k].v, eye, h);
+                if (mine[k].exit)
+                    for (int q = 0; q < 3; q++) {
+                        h->N[q] = -h->N[q];
+                        h->Ng[q] = -h->Ng[q];
+                    }
+                if (product_of)
+                    product_of[at] = p;
+            }
+        }
+    free(c.list);
+    free(mine);
+    return ok && rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
+}

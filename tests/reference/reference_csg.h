@@ -1,0 +1,53 @@
+/* SPDX-License-Identifier: MIT */
+/* The exact reference of CSG products (stin_draw_csg): per pixel every hit
+ * of the camera ray with each primitive (Embree, all hits along the ray),
+ * classified into entries (front faces) and exits (back faces) per
+ * primitive, and the product's expression evaluated from one crossing to
+ * the next: the first point where it turns true is the product's surface. */
+#ifndef STIN_TESTS_REFERENCE_CSG_H
+#define STIN_TESTS_REFERENCE_CSG_H
+
+#include "reference.h"
+#include "stin/stin.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* A product as stin_draw_csg takes it, its primitives named by scene
+ * object (each a closed mesh whose front faces face out; one product's
+ * primitives are distinct objects). */
+typedef struct ref_csg_product {
+    const int *objects;          /* scene object of primitive i */
+    int primitive_count;
+    const stin_csg_node *nodes;  /* the last is the root; operands before their node */
+    int node_count;
+} ref_csg_product;
+
+/* Marks the products' objects as CSG primitives in r: they no longer show
+ * on their own in reference_csg_primary and no longer cast in any
+ * visibility query (stin's products receive shadows and cast none). 0 on a
+ * bad object index or out of memory. */
+int reference_csg_mark(reference *r, const ref_csg_product *products, int count);
+
+/* Primary hits as reference_primary, with the products: the nearest of the
+ * first unmarked object hit and each product's surface. A product's hit is
+ * the hit of the primitive whose crossing makes the expression true (its
+ * object and triangle; of crossings at the same distance, within 1e-6 of
+ * it, the first primitive whose crossing alone would do it), with N and Ng
+ * turned toward the eye where that crossing is an exit (a complemented
+ * primitive's inside wall). Whether the ray starts inside a primitive is
+ * its exits less its entries along the whole ray; where the product holds
+ * the near plane (the camera inside the solid) it is not a hit there: stin
+ * does not cap it. product_of (width * height entries, or NULL) gets the
+ * product each pixel shows, -1 for an ordinary object or the background.
+ * The products' objects must be marked (reference_csg_mark). Returns 1, or
+ * 0 on bad arguments, unmarked primitives, out of memory or an Embree
+ * error. */
+int reference_csg_primary(const reference *r, const ref_csg_product *products, int count,
+                          int width, int height, ref_hit *hits, int *product_of);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
