@@ -1,15 +1,19 @@
 /* SPDX-License-Identifier: MIT */
 /*
  * VDSM ("vdsm", GL4) against the Embree visibility reference, light 0:
- *   vis        no pixel away from a reference shadow edge differs from the
- *              ray-cast visibility of each pixel's surface point, and at
- *              most 0.05% on one (area lights from their centre, as
- *              vdsm shadows them). Not counted, and reported: pixels where
- *              the reference is ambiguous - its answer changes when the ray
- *              origin moves along the surface by 1e-5 of the light's and
- *              the eye's distance (a ray grazing an edge, or the GPU's
- *              interpolated surface point on the other side of it), or the surface is within 1e-4 of edge-on to the light.
- *              Compared: covered pixels whose P matches the reference's.
+ *   vis        no pixel differs from the ray-cast visibility of its
+ *              surface point (area lights from their centre, as vdsm
+ *              shadows them). Not counted, and reported: pixels where the
+ *              reference is ambiguous (vdsm_case.c) - its answer changes
+ *              when the ray origin moves along the surface by 1e-5 of the
+ *              light's and the eye's distance (a shadow ray grazing an
+ *              edge), the surface is within 1e-4 of edge-on to the light,
+ *              the ray cast from the point stin shaded (its P output) gives
+ *              stin's answer, or the pixel's centre lies within 1/256
+ *              pixel (the rasterizer's vertex snap) of an edge of the
+ *              triangle the camera ray hit, so the GPU may have drawn the
+ *              triangle across it. Compared: covered pixels whose P
+ *              matches the reference's.
  *   no-grow    the same count without conservative growth (the seed's
  *              isolated lit pixels): it may not come out lower than with it.
  *   steps      SP alone (EP, SM and DC off) gives the identical mask to
@@ -61,13 +65,10 @@ static long test_vis(const vdsm_case *c, const capture *cap)
                                                               &edge);
     char name[256];
     vdsm_name(c, "vis", name, sizeof name);
-    report(c->r,
-           compared > 0 && differ == edge && edge <= VIS_EDGE_BUDGET * compared ? "PASS" : "FAIL",
-           name,
-           "visibility differs from the ray cast on %ld of %ld pixels, %ld of them next to a "
-           "reference shadow edge (at most %.2f%%; none elsewhere), %ld isolated; not counted: "
-           "%ld where the reference is ambiguous",
-           differ, compared, edge, 100.0 * VIS_EDGE_BUDGET, isolated, ambig);
+    report(c->r, compared > 0 && differ == 0 ? "PASS" : "FAIL", name,
+           "visibility differs from the ray cast on %ld of %ld pixels (need 0), %ld of them next "
+           "to a reference shadow edge, %ld isolated; not counted: %ld where the reference is "
+           "ambiguous", differ, compared, edge, isolated, ambig);
     return differ;
 }
 
@@ -288,7 +289,7 @@ static void test_two_sided(run *r)
         }
         n = vdsm_mismatches(&c, &cap, &compared, &ambig, &isolated, &edge);
         if (i == 0) {
-            right = n == edge && edge <= VIS_EDGE_BUDGET * compared ? n : -1 - n;
+            right = n == 0 ? n : -1 - n;
             shown = compared;
         }
         else
@@ -299,7 +300,7 @@ static void test_two_sided(run *r)
     vdsm_name(&c, "two-sided", name, sizeof name);
     report(r, right >= 0 && wrong > 0 ? "PASS" : "FAIL", name,
            "eye inside a closed box lit from outside: with its material two-sided %ld of %ld "
-           "pixels differ from the ray cast (none away from a shadow edge allowed), one-sided "
+           "pixels differ from the ray cast (need 0), one-sided "
            "(EP drops the lid) %ld (must be more than 0)",
            right >= 0 ? right : -1 - right, shown, wrong);
 done:
