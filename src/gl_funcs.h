@@ -140,6 +140,12 @@
       "glDeleteQueriesARB")                                                                \
     X(void, BlendEquationSeparate, (GLenum rgb, GLenum alpha), NEED_GL30, "")              \
     X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *v), STIN_CAP_OCCLUSION_QUERY, \
-      "glGetQueryObjectuivARB")
+      "glGetQueryObjectuivARB")                                                            \
+    /* deep shadow maps: layers of array textures */                                      \
+    X(void, TexImage3D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,     \
+                         GLsizei d, GLint border, GLenum fmt, GLenum type, const void *p), \
+      NEED_GL30, "")                                                                       \
+    X(void, FramebufferTextureLayer, (GLenum target, GLenum att, GLuint tex, GLint level,  \
+                                      GLint layer), NEED_GL30, "")
 
 #endif

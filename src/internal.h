@@ -16,6 +16,7 @@
 #include "shadow.h"
 #include "surface.h"
 #include "visibility_export.h"
+#include "translucent.h"
 
 typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
 
@@ -89,6 +90,7 @@ struct stin_context {
     stin__mask_state mask;
     stin__vdsm_state vdsm;
     stin__export_state visibility; /* the visibility map (visibility_export.c) */
+    stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
 
     /* surface detail */
     struct {
