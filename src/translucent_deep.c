@@ -28,9 +28,10 @@ static int chosen(const stin_context *ctx)
     return ctx->sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique == STIN_TECH_TRANSLUCENT_DEEP;
 }
 
+/* (Built before the deep set-up: with shadows off it will fall back.) */
 const char *stin__deep_chunk(const stin_context *ctx)
 {
-    return chosen(ctx) ? "translucent_deep.glsl" : NULL;
+    return chosen(ctx) && ctx->shadow && ctx->shadow->light ? "translucent_deep.glsl" : NULL;
 }
 
 void stin__deep_release(stin_context *ctx)
@@ -167,9 +168,10 @@ void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
     if (p->u_deep_kind < 0)
         return;
     GL(ctx, Uniform1i)(p->u_deep_kind, s->kind);
-    /* every sampler on a unit of its own, used or not */
+    /* every sampler on a unit of its own, used or not (the selection's: a
+     * fallen-back deep keeps its programs' samplers off the other units) */
     for (i = 0; i < 2; i++)
-        GL(ctx, Uniform1i)(p->u_deep_layers[i], s->unit + i);
+        GL(ctx, Uniform1i)(p->u_deep_layers[i], ctx->sel.translucent_unit + i);
     if (!s->kind)
         return;
     GL(ctx, UniformMatrix4fv)(p->u_deep_matrix, s->kind == 2 ? STIN__DEEP_FACES : 1, GL_FALSE,

@@ -19,6 +19,11 @@ typedef struct capture_options {
     stin_technique surface;   /* forced surface technique; NONE = auto */
     stin_technique displacement; /* forced displacement technique; NONE = auto */
     float guard_band;         /* stin_desc.displace_guard_band; 0 = stin's default */
+    /* forced translucent-shadows technique; NONE = translucent-solid: the
+     * shadow tests compare the hard visibility (deep_test.c asks for deep) */
+    stin_technique translucent;
+    uint32_t deep_layers, deep_map_size; /* stin_desc's; 0 = stin's defaults */
+    int deep_mono;
 } capture_options;
 
 typedef struct capture {

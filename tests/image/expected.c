@@ -13,11 +13,11 @@
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 #define DOT3 STIN_TECH_SURFACE_DOT3
 #define POM STIN_TECH_SURFACE_POM
-/* translucent shadows, displacement, CSG: displacement runs where there are
- * vertex textures and the shadows are not volumes (their silhouettes are
- * the undisplaced mesh's) */
+/* translucent shadows, displacement, CSG: deep shadow maps on GL4,
+ * displacement where there are vertex textures and the shadows are not
+ * volumes (their silhouettes are the undisplaced mesh's) */
 #define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_OFF
-#define DISPLACED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_VTF, STIN_TECH_CSG_OFF
+#define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, STIN_TECH_CSG_OFF
 
 static const expected_profile table[] = {
     {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},

@@ -53,6 +53,10 @@ void visibility_tests(run *r, stin_tier tier, const char *path);
  * against the displaced Embree reference (displace_test.c). Such scenes get
  * no other test: the others' references are of the undisplaced meshes. */
 int displace_scene(const char *path);
+/* Deep shadow maps ("deep", GL4) against the reference's transmittance, on
+ * deep-stack, deep-colour and glass-panes; below GL4 a SKIP and the refusal
+ * of a forced deep (deep_test.c). */
+void deep_tests(run *r, stin_tier tier, const char *path);
 void displace_tests(run *r, stin_tier tier, const char *path);
 
 #endif
