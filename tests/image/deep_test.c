@@ -27,6 +27,8 @@
  *                  visibility and beauty;
  *   early-stop     STIN_DEBUG_DEEP_NO_EARLY_STOP gives bit-identical
  *                  visibility and beauty, with more layers peeled;
+ *   with-volume, with-map-pcf  the transmittance test with those shadows
+ *                  techniques for the opaque casters (glass-panes);
  *   gl-clean       no GL error, no call outside the profile.
  * Below GL4 the deep tests SKIP (the tier has no deep), and forcing deep
  * there must be refused, naming what is missing.
@@ -308,6 +310,26 @@ static void test_early_stop(const deep_case *c, const capture *base, const char 
     capture_free(&cap);
 }
 
+/* The transmittance test with another shadows technique for the opaque
+ * casters (the base capture's is the context's choice, vdsm). */
+static void with_shadows(const deep_case *c, stin_technique shadows)
+{
+    capture cap;
+    capture_options o;
+    char name[256];
+    options(c, &o);
+    o.shadows = shadows;
+    snprintf(name, sizeof name, "%s/%s/deep-with-%s", stin_tier_name(c->tier), c->scene_name,
+             stin_technique_name(shadows));
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    if (cap.choice[STIN_FEATURE_SHADOWS].technique != shadows)
+        report(c->r, "FAIL", name, "shadows fell back: %s", cap.choice[STIN_FEATURE_SHADOWS].reason);
+    else
+        test_transmittance(c, &cap, name);
+    capture_free(&cap);
+}
+
 /* Below GL4: deep cannot run; forcing it is refused, naming the tier. */
 static void lower_tier(run *r, stin_tier tier, const char *scene_name, const scene *s)
 {
@@ -395,6 +417,9 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     } else if (!colour) { /* the point light: faces without panes stop after one layer */
         snprintf(name, sizeof name, "%s/%s/deep-early-stop", stin_tier_name(tier), scene_name);
         test_early_stop(&c, &base, name);
+        /* its opaque casters under the other shadows techniques */
+        with_shadows(&c, STIN_TECH_SHADOWS_VOLUME);
+        with_shadows(&c, STIN_TECH_SHADOWS_MAP_PCF);
     }
     capture_free(&base);
 done:
