@@ -217,13 +217,16 @@ static void store_matrix(float out[16], const float view[16], const float proj[1
     stin__mat4_mul(out, bias, vp);
 }
 
-/* The transparent draws through the peel program (albedo on unit 0). */
+/* The transparent draws through the peel program (albedo on unit 0), in
+ * the caller's order: the depth test makes the layers independent of it,
+ * and the order test sees that (the camera's far-to-near order would hide
+ * an order dependence). */
 static void draw_transparent(stin_context *ctx)
 {
     const stin__deep_state *s = &ctx->deep;
     uint32_t i;
     for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        const stin__draw *d = &ctx->draws[i];
         const stin__texture_slot *t;
         if (d->material.color[3] >= 1.0f)
             continue;
