@@ -362,11 +362,13 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     capture base;
     capture_options o;
     char err[512], scene_name[128], name[256];
-    int stack, colour;
+    int stack, colour, omni;
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     stack = !strcmp(scene_name, "deep-stack");
     colour = !strcmp(scene_name, "deep-colour");
-    if ((!stack && !colour && strcmp(scene_name, "glass-panes")) || !scene_load(path, &s, err, sizeof err))
+    omni = !strcmp(scene_name, "deep-omni");
+    if ((!stack && !colour && !omni && strcmp(scene_name, "glass-panes")) ||
+        !scene_load(path, &s, err, sizeof err))
         return;
     if (tier != STIN_TIER_GL4) {
         if (stack) /* once per tier */
@@ -414,9 +416,11 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     if (stack) {
         snprintf(name, sizeof name, "%s/%s/deep-layer-cap", stin_tier_name(tier), scene_name);
         test_layer_cap(&c, name);
-    } else if (!colour) { /* the point light: faces without panes stop after one layer */
+    } else if (!colour) { /* point lights: faces without panes stop after one layer */
         snprintf(name, sizeof name, "%s/%s/deep-early-stop", stin_tier_name(tier), scene_name);
         test_early_stop(&c, &base, name);
+    }
+    if (!stack && !colour && !omni) {
         /* its opaque casters under the other shadows techniques */
         with_shadows(&c, STIN_TECH_SHADOWS_VOLUME);
         with_shadows(&c, STIN_TECH_SHADOWS_MAP_PCF);
