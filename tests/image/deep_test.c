@@ -29,6 +29,8 @@
  *                  visibility and beauty, with more layers peeled;
  *   with-volume, with-map-pcf  the transmittance test with those shadows
  *                  techniques for the opaque casters (glass-panes);
+ *   shadows-off    forced deep with shadows off falls back to
+ *                  translucent-solid at set-up, saying why;
  *   gl-clean       no GL error, no call outside the profile.
  * Below GL4 the deep tests SKIP (the tier has no deep), and forcing deep
  * there must be refused, naming what is missing.
@@ -330,6 +332,31 @@ static void with_shadows(const deep_case *c, stin_technique shadows)
     capture_free(&cap);
 }
 
+/* Forced deep with shadows off: nothing is shadowed, so it falls back to
+ * translucent-solid at set-up and says why. */
+static void test_shadows_off(const deep_case *c, const char *name)
+{
+    capture cap;
+    capture_options o;
+    char err[512];
+    const stin_choice *t;
+    options(c, &o);
+    o.shadows = STIN_TECH_SHADOWS_OFF;
+    if (!capture_render(c->r->plat, c->r->profile, c->s, &o, &cap, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        return;
+    }
+    t = &cap.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS];
+    report(c->r,
+           t->technique == STIN_TECH_TRANSLUCENT_SOLID && t->fell_back &&
+                   strstr(t->reason, "shadows are off") && !cap.log_errors && !cap.stats.deep_layers
+               ? "PASS"
+               : "FAIL",
+           name, "forced deep with shadows off: %s (%s), %u layers peeled, %u errors logged",
+           stin_technique_name(t->technique), t->reason, cap.stats.deep_layers, cap.log_errors);
+    capture_free(&cap);
+}
+
 /* Below GL4: deep cannot run; forcing it is refused, naming the tier. */
 static void lower_tier(run *r, stin_tier tier, const char *scene_name, const scene *s)
 {
@@ -416,6 +443,8 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     if (stack) {
         snprintf(name, sizeof name, "%s/%s/deep-layer-cap", stin_tier_name(tier), scene_name);
         test_layer_cap(&c, name);
+        snprintf(name, sizeof name, "%s/%s/deep-shadows-off", stin_tier_name(tier), scene_name);
+        test_shadows_off(&c, name);
     } else if (!colour) { /* point lights: faces without panes stop after one layer */
         snprintf(name, sizeof name, "%s/%s/deep-early-stop", stin_tier_name(tier), scene_name);
         test_early_stop(&c, &base, name);
