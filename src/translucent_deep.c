@@ -18,9 +18,6 @@
 
 #define EMPTY_DEPTH 2.0f /* beyond every window depth: an unused texel */
 
-static const float face_axis[STIN__DEEP_FACES][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                                     {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-
 uint32_t stin__deep_slices(uint32_t layers) { return (layers + 1u) / 2u; }
 
 static int chosen(const stin_context *ctx)
@@ -206,17 +203,6 @@ int stin__deep_skips(const stin_context *ctx, const stin__draw *d)
     return ctx->deep.ready && d->material.color[3] < 1.0f;
 }
 
-/* world -> [0,1] window coordinates: bias * projection * view */
-static void store_matrix(float out[16], const float view[16], const float proj[16])
-{
-    float vp[16], bias[16];
-    stin__mat4_mul(vp, proj, view);
-    stin__mat4_identity(bias);
-    bias[0] = bias[5] = bias[10] = 0.5f;
-    bias[12] = bias[13] = bias[14] = 0.5f;
-    stin__mat4_mul(out, bias, vp);
-}
-
 /* The transparent draws through the peel program (albedo on unit 0), in
  * the caller's order: the depth test makes the layers independent of it,
  * and the order test sees that (the camera's far-to-near order would hide
@@ -247,7 +233,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
     float view_proj[16];
     uint32_t k;
     stin__mat4_mul(view_proj, proj, view);
-    store_matrix(s->matrix[face], view, proj);
+    stin__light_window_matrix(s->matrix[face], view, proj);
     GL(ctx, UniformMatrix4fv)(s->u_view_proj, 1, GL_FALSE, view_proj);
     for (k = 0; k < s->layer_cap; k++) {
         GLint slice = (GLint)((uint32_t)face * s->slices + k / 2u);
@@ -287,7 +273,7 @@ static float texel_offset(const float proj[16], uint32_t size)
 static int peel_light(stin_context *ctx, const stin_light_desc *l)
 {
     stin__deep_state *s = &ctx->deep;
-    float view[16], proj[16], n, f, half, center[3];
+    float view[16], proj[16], n, f;
     int face;
     if (l->type != STIN_LIGHT_POINT) {
         if (!stin__light_camera(ctx, l, view, proj, &n, &f, s->size))
@@ -297,16 +283,7 @@ static int peel_light(stin_context *ctx, const stin_light_desc *l)
         return 1;
     }
     for (face = 0; face < STIN__DEEP_FACES; face++) {
-        stin__light_look_along(view, l->position, face_axis[face]);
-        stin__light_fit(ctx, view, 0, &n, &f, &half, center);
-        if (f <= 0.0f) { /* nothing in front: an empty face */
-            f = 1.0f;
-            n = 1e-3f;
-        }
-        if (n < f * 1e-3f)
-            n = f * 1e-3f;
-        /* the lookup picks the face by the major axis: 90 degrees exactly */
-        stin__light_perspective(proj, 90.0f, n, f);
+        stin__light_cube_face(ctx, l->position, face, view, proj);
         peel_face(ctx, face, view, proj);
     }
     s->normal_offset = texel_offset(proj, s->size); /* every face is 90 degrees */

@@ -379,16 +379,78 @@ static void lower_tier(run *r, stin_tier tier, const char *scene_name, const sce
         capture_free(&cap);
 }
 
-void deep_tests(run *r, stin_tier tier, const char *path)
+/* The reference's AOVs (transmittance among them) and primary hits of the
+ * case's scene; 0 with a message in err. Free with free_reference. */
+static int make_reference(deep_case *c, reference **ref, char *err, size_t err_size)
 {
-    scene s;
-    reference *ref = NULL;
-    ref_hit *hits = NULL;
-    float *refimg = NULL;
-    deep_case c;
+    size_t n = (size_t)c->r->width * c->r->height;
+    ref_hit *hits = malloc(sizeof *hits * n);
+    float *img = malloc(sizeof(float) * REFERENCE_CHANNELS * n);
+    c->hits = hits;
+    c->ref = img;
+    *ref = reference_create(c->s, err, err_size);
+    if (*ref && hits && img && reference_primary(*ref, c->r->width, c->r->height, hits) &&
+        reference_render(c->s, *ref, c->r->width, c->r->height, 0, img))
+        return 1;
+    if (*ref)
+        snprintf(err, err_size, "render failed");
+    return 0;
+}
+
+static void free_reference(deep_case *c, reference *ref)
+{
+    free((void *)c->hits);
+    free((void *)c->ref);
+    if (ref)
+        reference_destroy(ref);
+}
+
+/* The tests of one GL4 scene; which ones depends on what the scene is for. */
+static void gl4_tests(deep_case *c, int stack, int colour, int omni)
+{
     capture base;
     capture_options o;
-    char err[512], scene_name[128], name[256];
+    char name[256];
+    const char *tier = stin_tier_name(c->tier), *scene_name = c->scene_name;
+    options(c, &o);
+    snprintf(name, sizeof name, "%s/%s/deep", tier, scene_name);
+    if (!render(c, c->s, &o, &base, name))
+        return;
+    snprintf(name, sizeof name, "%s/%s/deep-gl-clean", tier, scene_name);
+    capture_report_clean(c->r, name, &base);
+    snprintf(name, sizeof name, "%s/%s/deep-transmittance", tier, scene_name);
+    test_transmittance(c, &base, name);
+    snprintf(name, sizeof name, "%s/%s/deep-own-layer", tier, scene_name);
+    test_own_layer(c, &base, name);
+    if (stack || colour) {
+        snprintf(name, sizeof name, "%s/%s/deep-values", tier, scene_name);
+        test_values(c, &base, name);
+        snprintf(name, sizeof name, "%s/%s/deep-order", tier, scene_name);
+        test_order(c, &base, name);
+    }
+    if (stack) {
+        snprintf(name, sizeof name, "%s/%s/deep-layer-cap", tier, scene_name);
+        test_layer_cap(c, name);
+        snprintf(name, sizeof name, "%s/%s/deep-shadows-off", tier, scene_name);
+        test_shadows_off(c, name);
+    } else if (!colour) { /* point lights: faces without panes stop after one layer */
+        snprintf(name, sizeof name, "%s/%s/deep-early-stop", tier, scene_name);
+        test_early_stop(c, &base, name);
+    }
+    if (!stack && !colour && !omni) {
+        /* glass-panes' opaque casters under the other shadows techniques */
+        with_shadows(c, STIN_TECH_SHADOWS_VOLUME);
+        with_shadows(c, STIN_TECH_SHADOWS_MAP_PCF);
+    }
+    capture_free(&base);
+}
+
+void deep_tests(run *r, stin_tier tier, const char *path)
+{
+    deep_case c;
+    scene s;
+    reference *ref = NULL;
+    char err[512], scene_name[128];
     int stack, colour, omni;
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     stack = !strcmp(scene_name, "deep-stack");
@@ -413,52 +475,11 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     c.map_size = stack ? 2048u : 512u;
     c.band = stack ? 1 : 3;
     /* glass-panes' panes are boxes: up to six surfaces along a ray */
-    c.layers = stack || colour ? 0 : 6;
-    ref = reference_create(&s, err, sizeof err);
-    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
-    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
-    snprintf(name, sizeof name, "%s/%s/deep", stin_tier_name(tier), scene_name);
-    if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
-        !reference_render(&s, ref, r->width, r->height, 0, refimg)) {
-        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
-        goto done;
-    }
-    c.ref = refimg;
-    c.hits = hits;
-    options(&c, &o);
-    if (!render(&c, &s, &o, &base, name))
-        goto done;
-    snprintf(name, sizeof name, "%s/%s/deep-gl-clean", stin_tier_name(tier), scene_name);
-    capture_report_clean(r, name, &base);
-    snprintf(name, sizeof name, "%s/%s/deep-transmittance", stin_tier_name(tier), scene_name);
-    test_transmittance(&c, &base, name);
-    snprintf(name, sizeof name, "%s/%s/deep-own-layer", stin_tier_name(tier), scene_name);
-    test_own_layer(&c, &base, name);
-    if (stack || colour) {
-        snprintf(name, sizeof name, "%s/%s/deep-values", stin_tier_name(tier), scene_name);
-        test_values(&c, &base, name);
-        snprintf(name, sizeof name, "%s/%s/deep-order", stin_tier_name(tier), scene_name);
-        test_order(&c, &base, name);
-    }
-    if (stack) {
-        snprintf(name, sizeof name, "%s/%s/deep-layer-cap", stin_tier_name(tier), scene_name);
-        test_layer_cap(&c, name);
-        snprintf(name, sizeof name, "%s/%s/deep-shadows-off", stin_tier_name(tier), scene_name);
-        test_shadows_off(&c, name);
-    } else if (!colour) { /* point lights: faces without panes stop after one layer */
-        snprintf(name, sizeof name, "%s/%s/deep-early-stop", stin_tier_name(tier), scene_name);
-        test_early_stop(&c, &base, name);
-    }
-    if (!stack && !colour && !omni) {
-        /* its opaque casters under the other shadows techniques */
-        with_shadows(&c, STIN_TECH_SHADOWS_VOLUME);
-        with_shadows(&c, STIN_TECH_SHADOWS_MAP_PCF);
-    }
-    capture_free(&base);
-done:
-    free(hits);
-    free(refimg);
-    if (ref)
-        reference_destroy(ref);
+    c.layers = stack || colour || omni ? 0 : 6;
+    if (make_reference(&c, &ref, err, sizeof err))
+        gl4_tests(&c, stack, colour, omni);
+    else
+        report(r, "FAIL", "deep-reference", "%s/%s: %s", stin_tier_name(tier), scene_name, err);
+    free_reference(&c, ref);
     scene_free(&s);
 }

@@ -1109,6 +1109,14 @@ static void expect_t(const reference *r, const ref_hit *h, double er, double eg,
     assert_close(t[2], eb, 1e-6);
 }
 
+/* The scene as it is now: transmittance at h. */
+static void expect_scene_t(const scene *s, const ref_hit *h, double er, double eg, double eb)
+{
+    reference *r = create(s);
+    expect_t(r, h, er, eg, eb);
+    reference_destroy(r);
+}
+
 /* The seed's behaviours (seed 001, eq 5.3): one white pane of opacity a lets
  * 1 - a through, stacks multiply, colours tint, a receiver between panes
  * sees only those nearer the light, a pane does not shade itself, an opaque
@@ -1123,62 +1131,41 @@ static void test_transmittance(void **state)
     add_light(&s, SCENE_LIGHT_POINT)->position[2] = 4.0f;
     ref_hit h = floor_hit();
 
-    reference *r = create(&s);
-    expect_t(r, &h, 1, 1, 1);
-    reference_destroy(r);
-
+    expect_scene_t(&s, &h, 1, 1, 1);
     add_pane(&s, quad, 1, 1, 1, 0.5f, 1.0);
-    r = create(&s);
-    expect_t(r, &h, 0.5, 0.5, 0.5);
+    expect_scene_t(&s, &h, 0.5, 0.5, 0.5);
+    reference *r = create(&s);
     assert_close(reference_visibility(r, &h, 0), 0.0, 0); /* vis: any surface blocks */
     reference_destroy(r);
     add_pane(&s, quad, 1, 1, 1, 0.5f, 2.0);
-    r = create(&s);
-    expect_t(r, &h, 0.25, 0.25, 0.25);
-    reference_destroy(r);
+    expect_scene_t(&s, &h, 0.25, 0.25, 0.25);
     add_pane(&s, quad, 1, 1, 1, 0.5f, 3.0);
-    r = create(&s);
-    expect_t(r, &h, 0.125, 0.125, 0.125);
+    expect_scene_t(&s, &h, 0.125, 0.125, 0.125);
     /* on the lowest pane, below the other two: its own surface does not count */
     ref_hit on = h;
     on.object = 1;
     on.P[2] = 1.0f;
-    expect_t(r, &on, 0.25, 0.25, 0.25);
-    reference_destroy(r);
+    expect_scene_t(&s, &on, 0.25, 0.25, 0.25);
 
     /* colours: red -> (0.5, 0.25, 0.25), two reds, red + green */
     s.object_count = 1;
     add_pane(&s, quad, 1, 0, 0, 0.5f, 1.0);
-    r = create(&s);
-    expect_t(r, &h, 0.5, 0.25, 0.25);
-    reference_destroy(r);
+    expect_scene_t(&s, &h, 0.5, 0.25, 0.25);
     add_pane(&s, quad, 1, 0, 0, 0.5f, 2.0);
-    r = create(&s);
-    expect_t(r, &h, 0.25, 0.0625, 0.0625);
-    reference_destroy(r);
-    s.objects[2].material = s.objects[1].material + 2; /* a green pane above the red one */
-    add_material(&s, 0, 1, 0, 0, 1);
-    add_material(&s, 0, 1, 0, 0, 1);
+    expect_scene_t(&s, &h, 0.25, 0.0625, 0.0625);
+    s.objects[2].material = add_material(&s, 0, 1, 0, 0, 1); /* the upper pane green */
     s.materials[s.objects[2].material].color[3] = 0.5f;
-    r = create(&s);
-    expect_t(r, &h, 0.125, 0.125, 0.0625);
-    reference_destroy(r);
+    expect_scene_t(&s, &h, 0.125, 0.125, 0.0625);
 
     /* black pane: (1 - a)^2; almost clear red pane: no tint; opaque: blocked */
     s.object_count = 1;
     add_pane(&s, quad, 0, 0, 0, 0.5f, 1.0);
-    r = create(&s);
-    expect_t(r, &h, 0.25, 0.25, 0.25);
-    reference_destroy(r);
+    expect_scene_t(&s, &h, 0.25, 0.25, 0.25);
     s.materials[s.objects[1].material].color[0] = 1.0f;
     s.materials[s.objects[1].material].color[3] = 1e-6f;
-    r = create(&s);
-    expect_t(r, &h, 1.0 - 1e-6, (1.0 - 1e-6) * (1.0 - 1e-6), (1.0 - 1e-6) * (1.0 - 1e-6));
-    reference_destroy(r);
+    expect_scene_t(&s, &h, 1.0 - 1e-6, (1.0 - 1e-6) * (1.0 - 1e-6), (1.0 - 1e-6) * (1.0 - 1e-6));
     s.materials[s.objects[1].material].color[3] = 1.0f;
-    r = create(&s);
-    expect_t(r, &h, 0, 0, 0);
-    reference_destroy(r);
+    expect_scene_t(&s, &h, 0, 0, 0);
 
     /* the render's T channels are light 0's transmittance, vis the hard one */
     s.materials[s.objects[1].material].color[3] = 0.5f;
