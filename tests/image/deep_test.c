@@ -29,6 +29,7 @@
  *                  visibility and beauty, with more layers peeled;
  *   with-volume, with-map-pcf  the transmittance test with those shadows
  *                  techniques for the opaque casters (glass-panes);
+ *   mono           deep_mono: the colour cases come out grey, 1 - a per pane;
  *   shadows-off    forced deep with shadows off falls back to
  *                  translucent-solid at set-up, saying why;
  *   gl-clean       no GL error, no call outside the profile.
@@ -332,6 +333,42 @@ static void with_shadows(const deep_case *c, stin_technique shadows)
     capture_free(&cap);
 }
 
+/* deep_mono: the colour cases give grey 1 - a per pane: (0.5,0.25,0.25) ->
+ * 0.5, (0.25,0.0625,0.0625) and (0.125,0.125,0.0625) -> 0.25. */
+static void test_mono(const deep_case *c, const char *name)
+{
+    static const float coloured[3][3] = {
+        {0.5f, 0.25f, 0.25f}, {0.25f, 0.0625f, 0.0625f}, {0.125f, 0.125f, 0.0625f}};
+    static const float grey[3][3] = {{0.5f, 0.5f, 0.5f}, {0.25f, 0.25f, 0.25f}, {0.25f, 0.25f, 0.25f}};
+    capture cap;
+    capture_options o;
+    long n[3] = {0}, good[3] = {0};
+    int x, y, k, ok = 1;
+    options(c, &o);
+    o.deep_mono = 1;
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    for (y = 0; y < c->r->height; y++)
+        for (x = 0; x < c->r->width; x++) {
+            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
+            if (!comparable(c, &cap, x, y))
+                continue;
+            for (k = 0; k < 3; k++)
+                if (fabsf(t[0] - coloured[k][0]) < 1e-5f && fabsf(t[1] - coloured[k][1]) < 1e-5f &&
+                    fabsf(t[2] - coloured[k][2]) < 1e-5f) {
+                    n[k]++;
+                    good[k] += within(gl_px(c, &cap, x, y), grey[k], T_TOLERANCE);
+                }
+        }
+    for (k = 0; k < 3; k++)
+        ok &= n[k] >= MIN_CLASS && good[k] >= T_MIN_MATCH * n[k];
+    report(c->r, ok ? "PASS" : "FAIL", name,
+           "deep_mono: red %ld of %ld at 0.5, red + red %ld of %ld and red + green %ld of %ld at "
+           "0.25, within 2/255 (need >= %d a value, 99.5%%)", good[0], n[0], good[1], n[1],
+           good[2], n[2], MIN_CLASS);
+    capture_free(&cap);
+}
+
 /* Forced deep with shadows off: nothing is shadowed, so it falls back to
  * translucent-solid at set-up and says why. */
 static void test_shadows_off(const deep_case *c, const char *name)
@@ -433,7 +470,10 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
         test_layer_cap(c, name);
         snprintf(name, sizeof name, "%s/%s/deep-shadows-off", tier, scene_name);
         test_shadows_off(c, name);
-    } else if (!colour) { /* point lights: faces without panes stop after one layer */
+    } else if (colour) {
+        snprintf(name, sizeof name, "%s/%s/deep-mono", tier, scene_name);
+        test_mono(c, name);
+    } else { /* point lights: faces without panes stop after one layer */
         snprintf(name, sizeof name, "%s/%s/deep-early-stop", tier, scene_name);
         test_early_stop(c, &base, name);
     }
