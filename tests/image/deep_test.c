@@ -29,6 +29,8 @@
  *                  visibility and beauty, with more layers peeled;
  *   with-volume, with-map-pcf  the transmittance test with those shadows
  *                  techniques for the opaque casters (glass-panes);
+ *   texture        (deep-window) a textured pane's opaque cells cast their
+ *                  colour, its alpha-0 cells nothing;
  *   mono           deep_mono: the colour cases come out grey, 1 - a per pane;
  *   shadows-off    forced deep with shadows off falls back to
  *                  translucent-solid at set-up, saying why;
@@ -333,6 +335,42 @@ static void with_shadows(const deep_case *c, stin_technique shadows)
     capture_free(&cap);
 }
 
+/* The textured window: its opaque cells' colour (opacity 0.8 x texel alpha
+ * 1, colour (1, 51/255, 26/255): T = (0.2, 0.08, 0.0604)) and, where the
+ * reference's hard visibility says the window is in the way but T is 1,
+ * its alpha-0 cells, which cast nothing. */
+static void test_texture(const deep_case *c, const capture *cap, const char *name)
+{
+    static const float cell[3] = {0.2f, 0.2f * (0.2f + 51.0f / 255.0f), 0.2f * (0.2f + 26.0f / 255.0f)};
+    static const float one[3] = {1, 1, 1};
+    long n[2] = {0}, good[2] = {0};
+    int x, y;
+    for (y = 0; y < c->r->height; y++)
+        for (x = 0; x < c->r->width; x++) {
+            const float *ref = ref_px(c, x, y), *t = ref + REFERENCE_CH_T_R;
+            int k = fabsf(t[0] - cell[0]) < 1e-3f && fabsf(t[1] - cell[1]) < 1e-3f &&
+                            fabsf(t[2] - cell[2]) < 1e-3f
+                        ? 0
+                        : t[0] == 1.0f && t[1] == 1.0f && t[2] == 1.0f &&
+                                  ref[REFERENCE_CH_VIS_R] == 0.0f
+                              ? 1
+                              : -1;
+            if (k < 0 || !comparable(c, cap, x, y))
+                continue;
+            n[k]++;
+            good[k] += within(gl_px(c, cap, x, y), k ? one : cell, T_TOLERANCE);
+        }
+    report(c->r,
+           n[0] >= MIN_CLASS && n[1] >= MIN_CLASS && good[0] >= T_MIN_MATCH * n[0] &&
+                   good[1] >= T_MIN_MATCH * n[1]
+               ? "PASS"
+               : "FAIL",
+           name,
+           "opaque cells' shadow (%.3f,%.3f,%.3f): %ld of %ld within 2/255; behind alpha-0 cells "
+           "(T 1): %ld of %ld (need >= %d each, 99.5%%)", cell[0], cell[1], cell[2], good[0], n[0],
+           good[1], n[1], MIN_CLASS);
+}
+
 /* deep_mono: the colour cases give grey 1 - a per pane: (0.5,0.25,0.25) ->
  * 0.5, (0.25,0.0625,0.0625) and (0.125,0.125,0.0625) -> 0.25. */
 static void test_mono(const deep_case *c, const char *name)
@@ -485,18 +523,36 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
     capture_free(&base);
 }
 
+/* The textured window: transmittance and the cells' pattern. */
+static void window_tests(deep_case *c)
+{
+    capture cap;
+    capture_options o;
+    char name[256];
+    options(c, &o);
+    snprintf(name, sizeof name, "%s/%s/deep", stin_tier_name(c->tier), c->scene_name);
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    snprintf(name, sizeof name, "%s/%s/deep-transmittance", stin_tier_name(c->tier), c->scene_name);
+    test_transmittance(c, &cap, name);
+    snprintf(name, sizeof name, "%s/%s/deep-texture", stin_tier_name(c->tier), c->scene_name);
+    test_texture(c, &cap, name);
+    capture_free(&cap);
+}
+
 void deep_tests(run *r, stin_tier tier, const char *path)
 {
     deep_case c;
     scene s;
     reference *ref = NULL;
     char err[512], scene_name[128];
-    int stack, colour, omni;
+    int stack, colour, omni, window;
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     stack = !strcmp(scene_name, "deep-stack");
     colour = !strcmp(scene_name, "deep-colour");
     omni = !strcmp(scene_name, "deep-omni");
-    if ((!stack && !colour && !omni && strcmp(scene_name, "glass-panes")) ||
+    window = !strcmp(scene_name, "deep-window");
+    if ((!stack && !colour && !omni && !window && strcmp(scene_name, "glass-panes")) ||
         !scene_load(path, &s, err, sizeof err))
         return;
     if (tier != STIN_TIER_GL4) {
@@ -515,11 +571,13 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     c.map_size = stack ? 2048u : 512u;
     c.band = stack ? 1 : 3;
     /* glass-panes' panes are boxes: up to six surfaces along a ray */
-    c.layers = stack || colour || omni ? 0 : 6;
-    if (make_reference(&c, &ref, err, sizeof err))
-        gl4_tests(&c, stack, colour, omni);
-    else
+    c.layers = stack || colour || omni || window ? 0 : 6;
+    if (!make_reference(&c, &ref, err, sizeof err))
         report(r, "FAIL", "deep-reference", "%s/%s: %s", stin_tier_name(tier), scene_name, err);
+    else if (window)
+        window_tests(&c);
+    else
+        gl4_tests(&c, stack, colour, omni);
     free_reference(&c, ref);
     scene_free(&s);
 }
