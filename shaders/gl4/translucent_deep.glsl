@@ -17,27 +17,26 @@ uniform vec4 u_deep_params;     // x: slices per face, y: texels a side, z: offs
 uniform sampler2DArray u_deep_even;
 uniform sampler2DArray u_deep_odd;
 
+// The face of a point light's cube that direction d from the light falls
+// in: +x, -x, +y, -y, +z, -z by its major axis (ties to the earlier axis).
+int deep_face(vec3 d)
+{
+    vec3 a = abs(d);
+    int axis = (a.x >= a.y && a.x >= a.z) ? 0 : (a.y >= a.z ? 1 : 2);
+    return 2 * axis + (d[axis] > 0.0 ? 0 : 1);
+}
+
 vec3 deep_transmittance(int light)
 {
     if (u_deep_kind == 0)
         return vec3(1.0); // a pass with a deep map lights that one light
-    vec4 l = u_lights[4 * light];
-    int face = 0;
-    if (u_deep_kind == 2) {
-        vec3 d = v_world - l.xyz;
-        vec3 a = abs(d);
-        if (a.x >= a.y && a.x >= a.z) face = d.x > 0.0 ? 0 : 1;
-        else if (a.y >= a.z) face = d.y > 0.0 ? 2 : 3;
-        else face = d.z > 0.0 ? 4 : 5;
-    }
-    vec3 ng = normalize(cross(dFdx(v_world), dFdy(v_world)));
-    if (dot(ng, u_eye - v_world) < 0.0)
-        ng = -ng;
-    vec4 c = u_deep_matrix[face] * vec4(v_world, 1.0);
-    if (c.w <= 0.0)
-        return vec3(1.0);
-    c = u_deep_matrix[face] * vec4(v_world + ng * (u_deep_params.z * c.w), 1.0);
-    if (c.w <= 0.0)
+    int face = u_deep_kind == 2 ? deep_face(v_world - u_lights[4 * light].xyz) : 0;
+    // the side of the facet the eye sees, pushed by the offset at its clip w
+    vec3 side = normalize(cross(dFdx(v_world), dFdy(v_world)));
+    side *= sign(dot(side, u_eye - v_world) + 1e-30);
+    float w = (u_deep_matrix[face] * vec4(v_world, 1.0)).w;
+    vec4 c = u_deep_matrix[face] * vec4(v_world + side * (u_deep_params.z * max(w, 0.0)), 1.0);
+    if (w <= 0.0 || c.w <= 0.0)
         return vec3(1.0);
     vec3 t = c.xyz / c.w;
     if (t.x < 0.0 || t.y < 0.0 || t.x >= 1.0 || t.y >= 1.0)
