@@ -21,6 +21,8 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_csg_primitives = DEFAULT(d.max_csg_primitives, 256u);
     d.max_csg_terms = DEFAULT(d.max_csg_terms, 256u);
     d.max_csg_literals = DEFAULT(d.max_csg_literals, 4096u);
+    d.deep_layers = DEFAULT(d.deep_layers, 4u);
+    d.deep_map_size = DEFAULT(d.deep_map_size, 512u);
     if (d.displace_guard_band == 0.0f)
         d.displace_guard_band = 1.0f;
     if (d.displace_tess_pixels == 0.0f)
@@ -40,7 +42,10 @@ static int desc_valid(const stin_desc *d)
            d->displace_tess_pixels > 0.0f && d->displace_tess_pixels <= 1e30f &&
            d->displace_tess_max <= 64u &&
            d->max_csg_primitives < 0x1000000u && d->max_csg_terms < 0x1000000u &&
-           d->max_csg_literals < 0x1000000u;
+           d->max_csg_literals < 0x1000000u &&
+
+           d->deep_layers <= 16 && d->deep_map_size <= 4096 &&
+           (d->deep_map_size & (d->deep_map_size - 1)) == 0 && (d->deep_mono & ~1) == 0;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)
@@ -151,6 +156,19 @@ size_t stin_memory_size(const stin_desc *desc)
     a.size = (size_t)-1;
     a.used = 0;
     return layout(&d, &a, NULL);
+}
+
+uint64_t stin_deep_memory_bytes(const stin_desc *desc)
+{
+    stin_desc d;
+    uint64_t texels;
+    if (!desc)
+        return 0;
+    d = stin__desc_defaults(desc);
+    if (!desc_valid(&d))
+        return 0;
+    texels = (uint64_t)d.deep_map_size * d.deep_map_size;
+    return 2u * STIN__CUBE_FACES * stin__deep_slices(d.deep_layers) * texels * 16u + texels * 4u;
 }
 
 static void log_early(const stin_desc *d, stin_log_level level, stin_log_item item,
@@ -278,6 +296,7 @@ static void release_gl(stin_context *ctx)
     stin__mask_release(ctx);
     stin__export_release(ctx);
     stin__csg_release(ctx);
+    stin__deep_release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
@@ -304,7 +323,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "stin_create: capacities out of range (max_lights <= 32, "
                   "max_mesh_triangles <= max_triangles, soft_shadow_samples <= 64, "
-                  "shadow_map_size a power of two <= 8192)");
+                  "shadow_map_size a power of two <= 8192, deep_layers <= 16, "
+                  "deep_map_size a power of two <= 4096, deep_mono 0 or 1)");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     if (!memory || memory_bytes < need) {
@@ -361,6 +381,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     if (r == STIN_OK)
         r = init_shadows(ctx);
     if (r == STIN_OK) {
+        stin__deep_init(ctx);
         stin__displace_init(ctx);
         stin__csg_init(ctx);
     }

@@ -149,6 +149,12 @@
     X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *v), STIN_CAP_OCCLUSION_QUERY, \
       "glGetQueryObjectuivARB")                                                            \
     /* GL 4.0 / ARB_tessellation_shader */                                                 \
-    X(void, PatchParameteri, (GLenum pname, GLint value), STIN_CAP_TESSELLATION, "")
+    X(void, PatchParameteri, (GLenum pname, GLint value), STIN_CAP_TESSELLATION, "")                                            \
+    /* deep shadow maps: layers of array textures */                                      \
+    X(void, TexImage3D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,     \
+                         GLsizei d, GLint border, GLenum fmt, GLenum type, const void *p), \
+      NEED_GL30, "")                                                                       \
+    X(void, FramebufferTextureLayer, (GLenum target, GLenum att, GLuint tex, GLint level,  \
+                                      GLint layer), NEED_GL30, "")
 
 #endif

@@ -264,6 +264,10 @@ typedef void GLvoid;
 #define GL_BLEND_EQUATION_RGB 0x8009
 #define GL_BLEND_EQUATION_ALPHA 0x883D
 
+/* deep shadow maps' layers */
+#define GL_TEXTURE_2D_ARRAY 0x8C1A
+#define GL_SAMPLES_PASSED 0x8914
+
 /* caller state a frame establishes (caller_state.c) */
 #define GL_FUNC_ADD 0x8006
 #define GL_FILL 0x1B02

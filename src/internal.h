@@ -17,6 +17,7 @@
 #include "surface.h"
 #include "visibility_export.h"
 #include "csg.h"
+#include "translucent.h"
 
 typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
 
@@ -91,6 +92,7 @@ struct stin_context {
     stin__vdsm_state vdsm;
     stin__export_state visibility; /* the visibility map (visibility_export.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg.c) */
+    stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
 
     /* surface detail */
     struct {

@@ -36,6 +36,7 @@ static void locate(stin_context *ctx, stin__program *p)
     LOC(u_shadow_maps[5], "u_shadow_face5");
     LOC(u_color, "u_color");
 #undef LOC
+    stin__deep_locate(ctx, p);
     stin__surf_locate(ctx, p);
     /* the volume program draws shadow-map depth from lights, the rest the camera's passes */
     stin__displace_locate(ctx, p->name, p != &ctx->programs[STIN__PROG_VOLUME], &p->displace);
@@ -61,14 +62,14 @@ static stin__program *lit_program(stin_context *ctx, int variant)
 static int build_variants(stin_context *ctx, const char *dir, int tess, int top,
                           stin__program *lit, char *msg, size_t size)
 {
-    char vert[32], frag[32], names[3][40];
-    const char *chunks[4];
+    char vert[32], frag[32], names[4][40];
+    const char *chunks[5];
     int v, best = STIN__SURF_PLAIN;
     stin__formatf(vert, sizeof vert, "%slit.vert", dir);
     stin__formatf(frag, sizeof frag, "%slit.frag", dir);
     for (v = STIN__SURF_NORMAL; v <= top; v++) {
         stin__program *p = &lit[v];
-        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), names, chunks);
+        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), stin__deep_chunk(ctx), names, chunks);
         p->name = stin__program_build(ctx, vert, frag, chunks, tess, msg, size);
         if (!p->name)
             return best;
@@ -103,16 +104,16 @@ static void build_surface_variants(stin_context *ctx, const char *dir)
 static int build_programs(stin_context *ctx, const char *dir, int tess, stin__program *progs,
                           char *msg, size_t msg_size)
 {
-    char vert[32], frag[32], names[3][40], shadow_name[40], none_name[40];
-    const char *chunks[4], *shadow_only[2], *no_shadow[2];
+    char vert[32], frag[32], names[4][40], none_name[40];
+    const char *chunks[5], *const *shadow_only, *no_shadow[2];
     int i;
     /* the lit program's surface and shadow functions (plain variant); flat.frag
-     * serves the visibility output (the shadow test) and, with no test, the
-     * depth-only volume and map passes */
-    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), names, chunks);
-    stin__formatf(shadow_name, sizeof shadow_name, "%s%s", dir, lit_shadow_chunk(ctx));
-    shadow_only[0] = shadow_name;
-    shadow_only[1] = NULL;
+     * serves the visibility output (the shadow test: the plain variant's chunks
+     * less the surface's) and, with no test, the depth-only volume and map
+     * passes */
+    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), stin__deep_chunk(ctx), names,
+                      chunks);
+    shadow_only = chunks + 1;
     stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
     no_shadow[0] = none_name;
     no_shadow[1] = NULL;
@@ -275,6 +276,7 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
                         ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
     if (ctx->shadow->uniforms)
         ctx->shadow->uniforms(ctx, p);
+    stin__deep_uniforms(ctx, p);
 }
 
 /* Makes p (a lit program) current with this pass's uniforms. */
@@ -484,7 +486,7 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4],
 {
     const stin__program *p = use(ctx, STIN__PROG_FLAT);
     GL(ctx, Uniform4fv)(p->u_color, 1, color);
-    if (ctx->shadow->uniforms) { /* visibility through the lit pass's shadow test */
+    if (ctx->shadow->uniforms || stin__deep_active(ctx)) { /* the lit pass's shadow test */
         float inv[16];
         stin__mat4_invert(inv, ctx->frame.view);
         GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
@@ -496,8 +498,10 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4],
             pos[3] = dir ? 0.0f : 1.0f;
             GL(ctx, Uniform4fv)(p->u_lights, 1, pos);
         }
-        ctx->shadow->uniforms(ctx, p);
+        if (ctx->shadow->uniforms)
+            ctx->shadow->uniforms(ctx, p);
     }
+    stin__deep_uniforms(ctx, p);
     pass_state(ctx, 1, 0);
     draw_set(ctx, p, which, 0);
     ctx->stats.passes++;
@@ -592,7 +596,8 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++)
-        submit(ctx, p, &ctx->draws[ctx->draw_order[i]]);
+        if (!stin__deep_skips(ctx, &ctx->draws[ctx->draw_order[i]]))
+            submit(ctx, p, &ctx->draws[ctx->draw_order[i]]);
     ctx->bound_mesh = 0xffffffffu;
 }
 

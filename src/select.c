@@ -228,6 +228,9 @@ static void place_units(stin__selection *sel)
         sel->shadow_spare_units = sel->units_used + spare <= sel->unit_limit ? spare : 0;
         sel->units_used += sel->shadow_spare_units;
     }
+    /* translucent shadows' units after the shadows' */
+    sel->translucent_unit = sel->units_used;
+    sel->units_used += frag_units(sel->choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique);
     /* the vertex stage's height map: a unit of its own after the fragment
      * stage's (vertex samplers count against the combined units) */
     sel->displace_unit = sel->units_used;

@@ -254,6 +254,14 @@ void stin__light_look_along(float m[16], const float eye[3], const float dir[3])
 void stin__light_fit(const stin_context *ctx, const float view[16], int receivers_only,
                      float *near_d, float *far_d, float *half_width, float center_out[3]);
 void stin__light_perspective(float m[16], float fovy_deg, float n, float f);
+/* Face `face` (+x, -x, +y, -y, +z, -z) of a point light at `position`: a
+ * 90-degree view along the axis, its depth range fitted to every caster in
+ * it (an empty face gets [1e-3, 1]), near at least 1e-3 of far, so the
+ * lookups' major-axis face pick meets the faces without seams. */
+void stin__light_cube_face(const stin_context *ctx, const float position[3], int face,
+                           float view[16], float proj[16]);
+/* world -> [0,1] window coordinates of a light camera: bias * proj * view. */
+void stin__light_window_matrix(float out[16], const float view[16], const float proj[16]);
 /* The view and projection of a spot or directional light and the depth range
  * [n, f] it spans; 0 for a point light or when nothing is in front. map_size
  * snaps a directional map to whole texels (0: no snapping). */

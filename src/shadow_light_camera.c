@@ -207,3 +207,32 @@ int stin__light_camera(const stin_context *ctx, const stin_light_desc *l, float 
     return 1;
 }
 
+
+static const float cube_axis[STIN__CUBE_FACES][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
+                                                     {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+
+void stin__light_cube_face(const stin_context *ctx, const float position[3], int face,
+                           float view[16], float proj[16])
+{
+    float n, f, half, center[3];
+    stin__light_look_along(view, position, cube_axis[face]);
+    stin__light_fit(ctx, view, 0, &n, &f, &half, center);
+    if (f <= 0.0f) { /* nothing in front: an empty face */
+        f = 1.0f;
+        n = 1e-3f;
+    }
+    if (n < f * 1e-3f)
+        n = f * 1e-3f;
+    /* the lookups pick the face by the major axis, so 90 degrees exactly */
+    stin__light_perspective(proj, 90.0f, n, f);
+}
+
+void stin__light_window_matrix(float out[16], const float view[16], const float proj[16])
+{
+    float vp[16], bias[16];
+    stin__mat4_mul(vp, proj, view);
+    stin__mat4_identity(bias);
+    bias[0] = bias[5] = bias[10] = 0.5f;
+    bias[12] = bias[13] = bias[14] = 0.5f;
+    stin__mat4_mul(out, bias, vp);
+}

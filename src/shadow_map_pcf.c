@@ -69,18 +69,6 @@ static void pcf_release(stin_context *ctx)
     stin__memzero(m, sizeof *m);
 }
 
-/* world -> [0,1] texture space: bias * projection * view */
-static void store_matrix(stin_context *ctx, uint32_t slot, const float view[16],
-                         const float proj[16])
-{
-    float vp[16], bias[16];
-    stin__mat4_mul(vp, proj, view);
-    stin__mat4_identity(bias);
-    bias[0] = bias[5] = bias[10] = 0.5f;
-    bias[12] = bias[13] = bias[14] = 0.5f;
-    stin__mat4_mul(ctx->map_pcf.matrix[slot], bias, vp);
-}
-
 static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
                      const float view[16], const float proj[16])
 {
@@ -101,7 +89,7 @@ static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
-    store_matrix(ctx, slot, view, proj);
+    stin__light_window_matrix(ctx->map_pcf.matrix[slot], view, proj); /* world -> [0,1] */
     ctx->stats.passes++;
 }
 
@@ -136,27 +124,15 @@ static void pcf_prepass(stin_context *ctx)
     stin__gl_check_errors(ctx, "pcf maps");
 }
 
-static const float face_axis[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0},
-                                      {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-
 /* A point light's six faces, just before its pass; 1 if drawn. */
 static int draw_faces(stin_context *ctx, uint32_t li)
 {
     const stin_light_desc *l = &ctx->lights[li];
     int face, any = 0;
     for (face = 0; face < STIN__CUBE_FACES; face++) {
-        float view[16], proj[16], n, f, half, center[3];
+        float view[16], proj[16];
         uint32_t slot = FACE_SLOT + (uint32_t)face;
-        stin__light_look_along(view, l->position, face_axis[face]);
-        stin__light_fit(ctx, view, 0, &n, &f, &half, center);
-        if (f <= 0.0f) { /* nothing in front: an empty face */
-            f = 1.0f;
-            n = 1e-3f;
-        }
-        if (n < f * 1e-3f)
-            n = f * 1e-3f;
-        /* the shader picks the face by the major axis, so 90 degrees exactly */
-        stin__light_perspective(proj, 90.0f, n, f);
+        stin__light_cube_face(ctx, l->position, face, view, proj);
         draw_map(ctx, slot, l, view, proj);
         /* every face is 90 degrees: one offset per unit w serves the six */
         ctx->map_pcf.normal_offset[FACE_SLOT] = texel_offset(proj, ctx->map_pcf.size);

@@ -30,8 +30,8 @@ stin_technique stin__surf_technique_of(int variant)
     return (unsigned)variant < STIN__SURF_COUNT ? variant_tech[variant] : STIN_TECH_SURFACE_PLAIN;
 }
 
-void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk,
-                       char names[3][40], const char *list[4])
+void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk, const char *after,
+                       char names[4][40], const char *list[5])
 {
     int n = 0;
     if (variant != STIN__SURF_PLAIN) {
@@ -45,6 +45,11 @@ void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk,
     stin__formatf(names[n], 40, "%s%s", dir, shadow_chunk);
     list[n] = names[n];
     n++;
+    if (after) { /* a chunk wrapping the shadow chunk's seam (deep) */
+        stin__formatf(names[n], 40, "%s%s", dir, after);
+        list[n] = names[n];
+        n++;
+    }
     list[n] = NULL;
 }
 

@@ -42,7 +42,10 @@ static const stin__technique_row rows[] = {
      BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) | BIT(TEXTURE_CUBE_MAP) |
          BIT(FIXED_FUNCTION), STIN_TECH_LIGHTING_FIXED, 0, 2, 0, NULL, 0}, /* a 4th for albedo if spare */
     {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
-    {STIN_TECH_TRANSLUCENT_SOLID,      0, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* deep shadow maps: two array textures of RGBA32F layers (even, odd) */
+    {STIN_TECH_TRANSLUCENT_DEEP,       0, TIER4 | BIT(FLOAT_TEXTURE), STIN_TECH_LIGHTING_GLSL150,
+     0, 2, 0, NULL, 0},
+    {STIN_TECH_TRANSLUCENT_SOLID,      1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* vertex texture fetch of the height map in every mesh-drawing vertex
      * stage (after tessellation where there is one); volumes' CPU
      * silhouettes would be the undisplaced mesh's */

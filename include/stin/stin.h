@@ -426,9 +426,10 @@ const char *stin_feature_name(stin_feature f);
  * chosen lighting, shadows, surface, so shadows outrank surface detail for
  * units, and a forced technique's units are set aside first):
  *   lighting: glsl150-per-pixel, glsl110-per-pixel, fixed-function
- *   shadows:  volume, map-pcf, map-depth, map-combine, off
+ *   shadows:  vdsm, volume, map-pcf, map-depth, map-combine, off
  *   surface:  pom, parallax, normal, dot3, plain
- *   displacement: displace, displacement-off
+ *   displacement: displace-tess, displace, displacement-off
+ *   translucent shadows: deep, translucent-solid
  *   csg:      goldfeather, csg-off (see "CSG products" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
@@ -541,7 +542,40 @@ const char *stin_feature_name(stin_feature f);
  * (STIN_DEBUG_DISPLACE_NO_GUARD turns the test off). Light passes (maps,
  * vdsm) never skip. VTF needs vertices: stin_mesh_desc.subdivide splits
  * each triangle at creation; a draw whose mesh's edges span more than 4
- * texels of its height map on average is logged once as coarse. */
+ * texels of its height map on average is logged once as coarse.
+ * Translucent shadows: how a caster whose material opacity (color[3]) is
+ * below 1 shadows. "translucent-solid" (every tier): like an opaque one,
+ * fully. "deep" (GL4: GLSL 1.50 lighting, float textures; two texture units
+ * after the shadows technique's) is deep shadow maps (seed 001): per light,
+ * just before its lit pass, the transparent casters are depth-peeled from
+ * the light into up to desc.deep_layers layers per face (one face for spot
+ * and directional lights, fitted as the shadow maps are; six 90-degree faces
+ * for point lights, the face picked by the major axis as map-pcf's, so no
+ * seams), each texel holding its layer's depth and the visibility V behind
+ * it, per RGB channel V = V' (1 - a) clamp(1 - a + c, 0, 1) (a the
+ * opacity, c the colour: material colour times albedo texel at level 0; a
+ * texel with a = 0 casts nothing and takes no layer; desc.deep_mono: V = V'
+ * (1 - a), grey). The lit pass multiplies the shadows technique's
+ * visibility by the V of the last layer nearer the light than the point
+ * (pushed 1.5 texels along its normal toward the side the eye sees, so a
+ * pane is not darkened by its own layer; nearest texel). Opaque casters stay
+ * the shadows technique's (exact under vdsm and volume); transparent ones
+ * are left out of it (no volume, no shadow polygon, no map-pcf depth) and
+ * shadow through the deep map only. A face's peeling stops at the first
+ * layer that drew nothing (an occlusion query; STIN_DEBUG_DEEP_NO_EARLY_STOP
+ * peels every layer: the same image). Surfaces beyond desc.deep_layers
+ * along a ray are not counted (their light passes). Lights are lit one per
+ * pass while it is in use, and a frame without transparent draws draws no
+ * layer. Blended draws are still drawn unshadowed, and the visibility map
+ * (export_visibility) holds the shadows technique's visibility only.
+ * Displaced transparent casters peel their displaced surface. With shadows
+ * "off" it falls back to "translucent-solid" (logged); forcing it on a
+ * context without the GL4 tier is UNSUPPORTED, naming what is missing.
+ * GPU memory: 2 x 6 x ceil(deep_layers / 2) x deep_map_size^2 x 16 bytes
+ * (RGBA32F: depth and V; 6 faces, two ping-pong array textures) plus a
+ * deep_map_size^2 x 4 depth buffer: 97 MiB at the defaults (4 layers, 512),
+ * 1.52 GiB at 2048 with 4 layers (stin_deep_memory_bytes); only the faces
+ * a frame peels are written. */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
@@ -563,7 +597,8 @@ const char *stin_feature_name(stin_feature f);
     X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)           \
     X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
     X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4) \
-    X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1)
+    X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1) \
+    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -629,6 +664,13 @@ typedef struct stin_desc {
                                         * term; default 4096, below 2^24. Normalising takes
                                         * a scratch of 2 (max_csg_terms + max_csg_literals)
                                         * words, and the products a slot per term */
+    uint32_t deep_layers;              /* "deep": layers peeled per face at most,
+                                        * default 4, at most 16 */
+    uint32_t deep_map_size;            /* "deep": texels a side of a face, default 512;
+                                        * a power of two, at most 4096 (and the
+                                        * context's largest texture) */
+    int deep_mono;                     /* "deep": 1 stores grey visibility V' (1 - a)
+                                        * instead of the coloured one; default 0 */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -656,10 +698,18 @@ typedef struct stin_desc {
  * capped) are added over the colour in orange where they lie in front of
  * the surfaces: a picture of the volumes, not of the shadows */
 #define STIN_DEBUG_SHOW_VOLUMES 512u
+/* deep: peel every layer of every face, without stopping at the first layer
+ * that drew nothing (the same image, more passes) */
+#define STIN_DEBUG_DEEP_NO_EARLY_STOP 1024u
 /* displacement: level 0 of the height map at every distance (no mip chain) */
-#define STIN_DEBUG_DISPLACE_NO_MIP 1024u
+#define STIN_DEBUG_DISPLACE_NO_MIP 2048u
 
 typedef struct stin_context stin_context;
+
+/* GPU memory of "deep"'s maps for this desc (defaults applied): 2 x 6 x
+ * ceil(deep_layers / 2) x deep_map_size^2 x 16 bytes of layers plus
+ * deep_map_size^2 x 4 of depth buffer. 0 on a bad desc. */
+uint64_t stin_deep_memory_bytes(const stin_desc *desc);
 
 /* Bytes the configuration needs (the desc with defaults applied). 0 on a bad desc. */
 size_t stin_memory_size(const stin_desc *desc);
@@ -1057,6 +1107,8 @@ typedef struct stin_frame_stats {
     uint32_t vdsm_primitives;
     uint32_t csg_products, csg_terms; /* accepted by stin_draw_csg (terms of their normal forms) */
     uint32_t dropped_csg;      /* products stin_draw_csg refused */
+    /* deep: layers peeled (passes into a deep map), all lights and faces */
+    uint32_t deep_layers;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

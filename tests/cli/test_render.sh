@@ -82,7 +82,7 @@ check "--caps" $([ $rc -eq 0 ] && grep -q "^tier gl1: runs" "$T/caps" && grep -q
 rc=$?
 chans=$(oiiotool --info -v "$T/t.exr" 2>/dev/null | grep -i "channel list")
 ok=1
-[ $rc -eq 0 ] && for c in R G B A P.X P.Y P.Z N.X N.Y N.Z Z vis.R vis.G vis.B; do
+[ $rc -eq 0 ] && for c in R G B A P.X P.Y P.Z N.X N.Y N.Z Z vis.R vis.G vis.B T.R T.G T.B; do
     echo "$chans" | grep -q "[ ,]$c\b" || { ok=2; break; }
 done && [ $ok -eq 1 ] && ok=0
 check "exr channels" $ok "exit $rc, channels: $chans"

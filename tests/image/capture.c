@@ -43,6 +43,11 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.techniques[STIN_FEATURE_CSG] = o->csg_technique;
     d.displace_guard_band = o->guard_band;
     d.displace_tess_pixels = o->tess_pixels;
+    d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] =
+        o->translucent != STIN_TECH_NONE ? o->translucent : STIN_TECH_TRANSLUCENT_SOLID;
+    d.deep_layers = o->deep_layers;
+    d.deep_map_size = o->deep_map_size;
+    d.deep_mono = o->deep_mono;
     d.debug_flags = o->debug_flags;
     d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);

@@ -23,6 +23,11 @@ typedef struct capture_options {
     const struct scene_gpu_csg *csg; /* CSG products of the scene's objects (NULL: none) */
     int csg_count;
     stin_technique csg_technique; /* forced CSG technique; NONE = auto */
+    /* forced translucent-shadows technique; NONE = translucent-solid: the
+     * shadow tests compare the hard visibility (deep_test.c asks for deep) */
+    stin_technique translucent;
+    uint32_t deep_layers, deep_map_size; /* stin_desc's; 0 = stin's defaults */
+    int deep_mono;
 } capture_options;
 
 typedef struct capture {

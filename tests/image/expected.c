@@ -13,14 +13,14 @@
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 #define DOT3 STIN_TECH_SURFACE_DOT3
 #define POM STIN_TECH_SURFACE_POM
-/* translucent shadows, displacement, CSG: displacement runs where there are
- * vertex textures and the shadows are not volumes (their silhouettes are
- * the undisplaced mesh's) */
+/* translucent shadows, displacement, CSG: deep shadow maps on GL4,
+ * displacement where there are vertex textures and the shadows are not
+ * volumes (their silhouettes are the undisplaced mesh's), tessellated first
+ * where there are tessellation shaders (GL 4.0); goldfeather everywhere */
 #define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_GOLDFEATHER
-#define DISPLACED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_VTF, \
+#define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, \
     STIN_TECH_CSG_GOLDFEATHER
-/* and tessellated first where there are tessellation shaders (GL 4.0) */
-#define TESSELLATED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_TESS, \
+#define TESSELLATED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_TESS, \
     STIN_TECH_CSG_GOLDFEATHER
 
 static const expected_profile table[] = {

@@ -342,6 +342,7 @@ int main(int argc, char **argv)
             composite_tests(&r, tiers[t], argv[i]);
             visibility_tests(&r, tiers[t], argv[i]);
             csg_tests(&r, tiers[t], argv[i]);
+            deep_tests(&r, tiers[t], argv[i]);
         }
     }
     free(displaced);

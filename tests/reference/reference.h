@@ -85,6 +85,22 @@ float reference_visibility_offset(const reference *r, const ref_hit *hit, int li
  * the offset P to it). NULL position or a background hit gives 1. */
 float reference_visibility_to(const reference *r, const ref_hit *hit, const float position[3]);
 
+/* Transmittance of light `light` toward hit, per RGB channel: the product,
+ * over every surface the segment from P (offset as reference_visibility) to
+ * the light crosses, of the deep shadow maps' factor
+ * reference_transmittance_factor(), and 0 at an opaque surface (material
+ * opacity 1, whatever its texture) or where the side the eye sees turns away
+ * from the light. A transparent surface's colour is its material colour times
+ * its albedo texel (bilinear, level 0), its opacity a the material's opacity
+ * times the texel's alpha (a = 0 texels cast nothing). An area light
+ * averages its samples. Background hits and bad light indices give 1. */
+void reference_transmittance(const reference *r, const ref_hit *hit, int light, float out[3]);
+
+/* The seed's eq 5.3 (seed 001): inout *= (1 - a) clamp(1 - a + color, 0, 1)
+ * per channel. Equals 1 - a for a white surface, (1 - a)^2 for a black one,
+ * and no tint as a goes to 0. */
+void reference_transmittance_factor(const float color[3], float a, float inout[3]);
+
 /* Point samples an area light (radius > 0, point or spot) is split into, as
  * stin's desc.soft_shadow_samples (whose default this is): sample k of n is
  * stin_light_sample(light, k, n) with intensity / n. */
@@ -179,15 +195,18 @@ enum {
     REFERENCE_CH_NX, REFERENCE_CH_NY, REFERENCE_CH_NZ,
     REFERENCE_CH_Z,
     REFERENCE_CH_VIS_R, REFERENCE_CH_VIS_G, REFERENCE_CH_VIS_B,
+    REFERENCE_CH_T_R, REFERENCE_CH_T_G, REFERENCE_CH_T_B,
     REFERENCE_CHANNELS
 };
 extern const char *const reference_channel_names[REFERENCE_CHANNELS];
 
 /* Fills out (width*height*REFERENCE_CHANNELS floats, pixel-interleaved, rows
  * bottom to top) with R,G,B,A (reference_shade, unshadowed), P, N, Z = |P - eye|
- * and vis.R/G/B = reference_light_visibility() of light 0 (1 with no lights;
- * fractional for an area light). Background pixels:
- * RGBA = scene background, P = N = Z = 0, vis = 1. s must be the scene r was
+ * vis.R/G/B = reference_light_visibility() of light 0 (1 with no lights;
+ * fractional for an area light; any surface blocks it) and T.R/G/B =
+ * reference_transmittance() of light 0 (transparent surfaces let their share
+ * through). Background pixels:
+ * RGBA = scene background, P = N = Z = 0, vis = T = 1. s must be the scene r was
  * created from. Returns 1, or 0 on bad arguments, out of memory or an Embree
  * error. All reference queries are read-only: threads may share r. */
 int reference_render(const scene *s, const reference *r, int width, int height, int per_vertex,

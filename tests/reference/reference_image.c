@@ -1,12 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* Whole-image reference AOVs: beauty, P, N, Z and the visibility of light 0. */
+/* Whole-image reference AOVs: beauty, P, N, Z, the visibility of light 0
+ * and its transmittance. */
 #include <stdlib.h>
 #include <string.h>
 
 #include "reference_internal.h"
 
 const char *const reference_channel_names[REFERENCE_CHANNELS] = {
-    "R", "G", "B", "A", "P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "Z", "vis.R", "vis.G", "vis.B"};
+    "R", "G", "B", "A", "P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "Z", "vis.R", "vis.G", "vis.B",
+    "T.R", "T.G", "T.B"};
 
 /* Scratch of one render: the lights split into samples and their weights. */
 typedef struct scratch {
@@ -35,6 +37,9 @@ static void pixel(const scene *s, const reference *r, const ref_hit *h, int per_
     }
     float vis0 = h->hit && s->light_count > 0 ? reference_light_visibility(r, h, 0) : 1.0f;
     px[REFERENCE_CH_VIS_R] = px[REFERENCE_CH_VIS_G] = px[REFERENCE_CH_VIS_B] = vis0;
+    px[REFERENCE_CH_T_R] = px[REFERENCE_CH_T_G] = px[REFERENCE_CH_T_B] = 1.0f;
+    if (h->hit && s->light_count > 0)
+        reference_transmittance(r, h, 0, px + REFERENCE_CH_T_R);
 }
 
 int reference_render_ex(const scene *s, const reference *r, int width, int height, int per_vertex,

@@ -79,6 +79,8 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_GenQueries ~, 1
 #define FAKE_STATELESS_DeleteQueries ~, 1
 #define FAKE_STATELESS_GetQueryObjectuiv ~, 1
+#define FAKE_STATELESS_TexImage3D ~, 1
+#define FAKE_STATELESS_FramebufferTextureLayer ~, 1
 #define FAKE_STATELESS_BlendEquationSeparate ~, 1
 
 #define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)

@@ -66,7 +66,7 @@
     X(TEXTURE_GEN_R, 0x0C62) X(TEXTURE_GEN_Q, 0x0C63)
 
 /* glBindTexture targets: X(name without GL_TEXTURE_, value) */
-#define FAKE_GL_TARGETS(X) X(1D, 0x0DE0) X(2D, 0x0DE1) X(CUBE_MAP, 0x8513)
+#define FAKE_GL_TARGETS(X) X(1D, 0x0DE0) X(2D, 0x0DE1) X(CUBE_MAP, 0x8513) X(2D_ARRAY, 0x8C1A)
 
 /* glPixelStorei: X(name without GL_, value, initial) */
 #define FAKE_GL_PIXEL_STORE(X)                                                            \

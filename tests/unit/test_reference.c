@@ -1081,6 +1081,117 @@ static void test_area_light_visibility(void **state)
 }
 
 /* 100 spheres of 1740 triangles: the size of the 174k-triangle test scene. */
+/* ---- transmittance through transparent casters ------------------------------ */
+
+/* A hit on the floor quad (object 0, z = 0) at the origin, seen from +z. */
+static ref_hit floor_hit(void)
+{
+    ref_hit h;
+    memset(&h, 0, sizeof h);
+    h.hit = 1;
+    h.Ng[2] = h.N[2] = 1.0f;
+    return h;
+}
+
+/* A pane (a quad, one surface) of colour c and opacity a at height z. */
+static void add_pane(scene *s, int quad, float r, float g, float b, float a, double z)
+{
+    int m = add_material(s, r, g, b, 0, 1);
+    s->materials[m].color[3] = a;
+    add_object(s, quad, m, 2, 0, 0, z);
+}
+
+static void expect_t(const reference *r, const ref_hit *h, double er, double eg, double eb)
+{
+    float t[3];
+    reference_transmittance(r, h, 0, t);
+    assert_close(t[0], er, 1e-6);
+    assert_close(t[1], eg, 1e-6);
+    assert_close(t[2], eb, 1e-6);
+}
+
+/* The scene as it is now: transmittance at h. */
+static void expect_scene_t(const scene *s, const ref_hit *h, double er, double eg, double eb)
+{
+    reference *r = create(s);
+    expect_t(r, h, er, eg, eb);
+    reference_destroy(r);
+}
+
+/* The seed's behaviours (seed 001, eq 5.3): one white pane of opacity a lets
+ * 1 - a through, stacks multiply, colours tint, a receiver between panes
+ * sees only those nearer the light, a pane does not shade itself, an opaque
+ * surface blocks, and vis stays the hard visibility. */
+static void test_transmittance(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    int quad = add_quad(&s);
+    add_object(&s, quad, add_material(&s, 1, 1, 1, 0, 1), 4, 0, 0, 0); /* the floor */
+    add_light(&s, SCENE_LIGHT_POINT)->position[2] = 4.0f;
+    ref_hit h = floor_hit();
+
+    expect_scene_t(&s, &h, 1, 1, 1);
+    add_pane(&s, quad, 1, 1, 1, 0.5f, 1.0);
+    expect_scene_t(&s, &h, 0.5, 0.5, 0.5);
+    reference *r = create(&s);
+    assert_close(reference_visibility(r, &h, 0), 0.0, 0); /* vis: any surface blocks */
+    reference_destroy(r);
+    add_pane(&s, quad, 1, 1, 1, 0.5f, 2.0);
+    expect_scene_t(&s, &h, 0.25, 0.25, 0.25);
+    add_pane(&s, quad, 1, 1, 1, 0.5f, 3.0);
+    expect_scene_t(&s, &h, 0.125, 0.125, 0.125);
+    /* on the lowest pane, below the other two: its own surface does not count */
+    ref_hit on = h;
+    on.object = 1;
+    on.P[2] = 1.0f;
+    expect_scene_t(&s, &on, 0.25, 0.25, 0.25);
+
+    /* colours: red -> (0.5, 0.25, 0.25), two reds, red + green */
+    s.object_count = 1;
+    add_pane(&s, quad, 1, 0, 0, 0.5f, 1.0);
+    expect_scene_t(&s, &h, 0.5, 0.25, 0.25);
+    add_pane(&s, quad, 1, 0, 0, 0.5f, 2.0);
+    expect_scene_t(&s, &h, 0.25, 0.0625, 0.0625);
+    s.objects[2].material = add_material(&s, 0, 1, 0, 0, 1); /* the upper pane green */
+    s.materials[s.objects[2].material].color[3] = 0.5f;
+    expect_scene_t(&s, &h, 0.125, 0.125, 0.0625);
+
+    /* black pane: (1 - a)^2; almost clear red pane: no tint; opaque: blocked */
+    s.object_count = 1;
+    add_pane(&s, quad, 0, 0, 0, 0.5f, 1.0);
+    expect_scene_t(&s, &h, 0.25, 0.25, 0.25);
+    s.materials[s.objects[1].material].color[0] = 1.0f;
+    s.materials[s.objects[1].material].color[3] = 1e-6f;
+    expect_scene_t(&s, &h, 1.0 - 1e-6, (1.0 - 1e-6) * (1.0 - 1e-6), (1.0 - 1e-6) * (1.0 - 1e-6));
+    s.materials[s.objects[1].material].color[3] = 1.0f;
+    expect_scene_t(&s, &h, 0, 0, 0);
+
+    /* the render's T channels are light 0's transmittance, vis the hard one */
+    s.materials[s.objects[1].material].color[3] = 0.5f;
+    s.objects[1].transform[12] = 1.5f; /* a pane over part of the floor, lit from the side */
+    s.lights[0].position[0] = 3.0f;
+    s.width = s.height = 32;
+    r = create(&s);
+    float *img = calloc((size_t)32 * 32 * REFERENCE_CHANNELS, sizeof(float));
+    assert_non_null(img);
+    assert_int_equal(reference_render(&s, r, 32, 32, 0, img), 1);
+    int tinted = 0;
+    for (int i = 0; i < 32 * 32; i++) {
+        const float *p = img + (size_t)i * REFERENCE_CHANNELS;
+        if (p[REFERENCE_CH_T_R] > 0.0f && p[REFERENCE_CH_T_R] < 1.0f && p[REFERENCE_CH_VIS_R] == 0.0f) {
+            assert_close(p[REFERENCE_CH_T_G], 0.25 * p[REFERENCE_CH_T_R] / 0.5, 1e-6);
+            tinted++;
+        }
+    }
+    assert_true(tinted > 0);
+    assert_string_equal(reference_channel_names[REFERENCE_CH_T_B], "T.B");
+    free(img);
+    reference_destroy(r);
+    scene_release(&s);
+}
+
 static void test_primary_timing(void **state)
 {
     (void)state;
@@ -1320,6 +1431,7 @@ int main(void)
         cmocka_unit_test(test_passes_equal_single_pass_below_one),
         cmocka_unit_test(test_passes_saturate),
         cmocka_unit_test(test_area_light_visibility),
+        cmocka_unit_test(test_transmittance),
         cmocka_unit_test(test_primary_timing),
         cmocka_unit_test(test_csg_cavity),
         cmocka_unit_test(test_csg_matches_plain_renders),

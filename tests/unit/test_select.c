@@ -273,6 +273,40 @@ static void test_vdsm_on_gl4_only(void **state)
     assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_GEOMETRY_SHADER)));
 }
 
+/* deep heads the GL4 translucent-shadows chain, with its two units after the
+ * shadows'; without float textures it falls back to translucent-solid, the
+ * only choice below GL4; forcing it on GL2 names the tier and what is
+ * missing. */
+static void test_deep_on_gl4_only(void **state)
+{
+    stin_caps core = caps_with(33, 33, 1, GL33_CORE_BITS);
+    stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_NONE};
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    core.max_texture_image_units = 16;
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
+                     STIN_TECH_TRANSLUCENT_DEEP);
+    assert_int_equal(sel.translucent_unit, sel.shadow_unit + 1); /* after vdsm's mask */
+    assert_int_equal(sel.displace_unit, sel.translucent_unit + 2);
+    core.present &= ~STIN_CAP_BIT(STIN_CAP_FLOAT_TEXTURE);
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
+                     STIN_TECH_TRANSLUCENT_SOLID);
+    assert_true(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].fell_back);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason, "float textures"));
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
+                     STIN_TECH_TRANSLUCENT_SOLID);
+    forced[STIN_FEATURE_TRANSLUCENT_SHADOWS] = STIN_TECH_TRANSLUCENT_DEEP;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "deep needs tier gl4"));
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_FLOAT_TEXTURE)));
+}
+
 /* A forced technique above the tier ceiling names the tier and what is missing,
  * as separate items. */
 static void test_forced_technique_above_the_tier(void **state)
@@ -503,6 +537,7 @@ int main(void)
         cmocka_unit_test(test_forced_technique_the_caps_cannot_run),
         cmocka_unit_test(test_forced_technique_above_the_tier),
         cmocka_unit_test(test_vdsm_on_gl4_only),
+        cmocka_unit_test(test_deep_on_gl4_only),
         cmocka_unit_test(test_surface_follows_the_lighting_technique),
         cmocka_unit_test(test_technique_tables),
         cmocka_unit_test(test_every_technique_has_a_row_and_a_rank),

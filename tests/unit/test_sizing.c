@@ -55,6 +55,36 @@ static void test_texture_staging_bytes(void **state)
     assert_int_equal(stin_texture_staging_bytes(NULL), 0);
 }
 
+/* The deep shadow maps' GPU memory: 2 ping-pong textures x 6 faces x
+ * ceil(layers / 2) slices x size^2 x 16 bytes (RGBA32F) plus a size^2 x 4
+ * depth buffer; the seed's 2048 x 2048 x 4 layers x 6 faces x 16 bytes is
+ * 1,610,612,736 of it. Bad deep values make the desc bad. */
+static void test_deep_memory(void **state)
+{
+    stin_desc d;
+    (void)state;
+    memset(&d, 0, sizeof d);
+    assert_int_equal(stin_deep_memory_bytes(&d), 2ull * 6 * 2 * 512 * 512 * 16 + 512ull * 512 * 4);
+    d.deep_map_size = 2048;
+    assert_int_equal(stin_deep_memory_bytes(&d), 1610612736ull + 2048ull * 2048 * 4);
+    d.deep_layers = 3; /* three layers take two slices of the even texture, one of the odd */
+    assert_int_equal(stin_deep_memory_bytes(&d), 1610612736ull + 2048ull * 2048 * 4);
+    d.deep_layers = 1;
+    assert_int_equal(stin_deep_memory_bytes(&d), 1610612736ull / 2 + 2048ull * 2048 * 4);
+    d.deep_layers = 17;
+    assert_int_equal(stin_deep_memory_bytes(&d), 0);
+    assert_int_equal(stin_memory_size(&d), 0);
+    d.deep_layers = 4;
+    d.deep_map_size = 3000; /* not a power of two */
+    assert_int_equal(stin_deep_memory_bytes(&d), 0);
+    d.deep_map_size = 8192; /* above 4096 */
+    assert_int_equal(stin_deep_memory_bytes(&d), 0);
+    d.deep_map_size = 0;
+    d.deep_mono = 2;
+    assert_int_equal(stin_memory_size(&d), 0);
+    assert_int_equal(stin_deep_memory_bytes(NULL), 0);
+}
+
 static void test_desc_fit_raises_and_limits(void **state)
 {
     stin_desc d;
@@ -171,6 +201,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_texture_staging_bytes),
+        cmocka_unit_test(test_deep_memory),
         cmocka_unit_test(test_desc_fit_raises_and_limits),
         cmocka_unit_test(test_real_asset_sizes_load),
     };

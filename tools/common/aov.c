@@ -9,7 +9,8 @@
 #include <time.h>
 
 const char *const aov_channel_names[AOV_CHANNELS] = {
-    "R", "G", "B", "A", "P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "Z", "vis.R", "vis.G", "vis.B"};
+    "R", "G", "B", "A", "P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z", "Z", "vis.R", "vis.G", "vis.B",
+    "T.R", "T.G", "T.B"};
 
 int aov_inverse_view_proj(const float view[16], const float proj[16], double out[16])
 {
@@ -155,6 +156,7 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
             if (!covered) {
                 /* P, N, Z stay 0 on the background; nothing there is in shadow */
                 o[AOV_VIS_R] = o[AOV_VIS_G] = o[AOV_VIS_B] = 1.0f;
+                o[AOV_T_R] = o[AOV_T_G] = o[AOV_T_B] = 1.0f;
                 continue;
             }
             {
@@ -168,6 +170,7 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
                     len += d[c] * d[c];
                     nl += nv * nv;
                     o[AOV_VIS_R + c] = vis[4 * src + c] / 255.0f;
+                    o[AOV_T_R + c] = o[AOV_VIS_R + c];
                 }
                 nl = nl > 0 ? sqrt(nl) : 1.0;
                 for (c = 0; c < 3; c++)

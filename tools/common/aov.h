@@ -2,9 +2,11 @@
 /*
  * The render tool's image contract (DESIGN.md): one frame of a scene read
  * back into the fixed EXR channels
- *   R G B A, P.X P.Y P.Z, N.X N.Y N.Z, Z, vis.R vis.G vis.B
+ *   R G B A, P.X P.Y P.Z, N.X N.Y N.Z, Z, vis.R vis.G vis.B, T.R T.G T.B
  * Beauty comes from the lit frame, N from STIN_OUTPUT_NORMAL, vis from
- * STIN_OUTPUT_VISIBILITY, P by unprojecting the depth buffer through the
+ * STIN_OUTPUT_VISIBILITY, T the same values (the technique's visibility is
+ * its transmittance: coloured where a translucent-shadows technique lets
+ * light through transparent casters; the reference tells the two apart), P by unprojecting the depth buffer through the
  * camera (exact for every tier, no float targets needed), Z = |P - eye|.
  */
 #ifndef STIN_TOOLS_AOV_H
@@ -20,7 +22,7 @@ extern "C" {
 
 enum {
     AOV_R = 0, AOV_G, AOV_B, AOV_A, AOV_PX, AOV_PY, AOV_PZ, AOV_NX, AOV_NY, AOV_NZ, AOV_Z,
-    AOV_VIS_R, AOV_VIS_G, AOV_VIS_B, AOV_CHANNELS
+    AOV_VIS_R, AOV_VIS_G, AOV_VIS_B, AOV_T_R, AOV_T_G, AOV_T_B, AOV_CHANNELS
 };
 extern const char *const aov_channel_names[AOV_CHANNELS];
 

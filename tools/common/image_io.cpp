@@ -26,7 +26,7 @@ using namespace OIIO;
 
 namespace {
 
-const int kMaxChannels = 16;
+const int kMaxChannels = 24; // image::channel_names
 
 void set_error(char *err, size_t size, const std::string &msg)
 {
@@ -276,7 +276,7 @@ int read_image(const std::string &name, Filesystem::IOProxy *proxy, image *img, 
         }
         const ImageSpec &spec = in->spec();
         if (spec.deep || spec.depth > 1 || spec.nchannels > kMaxChannels) {
-            set_error(err, err_size, name + ": deep, volume or more than 16 channels");
+            set_error(err, err_size, name + ": deep, volume or more than 24 channels");
             return 0;
         }
         for (int c = 0; c < spec.nchannels; c++)

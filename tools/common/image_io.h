@@ -15,7 +15,7 @@ extern "C" {
 typedef struct image {
     int width, height, channels;
     float *pixels;               /* width * height * channels */
-    char channel_names[16][16];  /* e.g. "R", "P.X", "vis.G" */
+    char channel_names[24][16];  /* e.g. "R", "P.X", "vis.G", "T.B" */
 } image;
 
 /* Allocates pixels (zeroed) and leaves channel names empty. 1 on success. */

@@ -1,0 +1,64 @@
+/* SPDX-License-Identifier: MIT */
+/* Translucent shadows: how casters with opacity below 1 shadow. The default
+ * ("translucent-solid") needs nothing: they cast like opaque ones. "deep"
+ * (translucent_deep.c) is deep shadow maps, peeled per light just before
+ * its lit pass and read by the lit programs through the
+ * shadow_transmittance() seam (shaders/gl4/translucent_deep.glsl). */
+#ifndef STIN_TRANSLUCENT_H
+#define STIN_TRANSLUCENT_H
+
+#include "stin/stin.h"
+#include "gl_types.h"
+#include "path.h"
+
+#define STIN__DEEP_FACES 6
+#define STIN__DEEP_MAX_LAYERS 16 /* desc.deep_layers at most */
+
+typedef struct stin__deep_state {
+    /* Layer k of face f lives in layers[k % 2] at slice f * slices + k / 2
+     * (RGBA32F: depth, visibility RGB): the pass drawing layer k reads layer
+     * k - 1 from the other texture (ping-pong, no feedback loop). */
+    GLuint layers[2];
+    GLuint depth;          /* the peel passes' depth test (DEPTH_COMPONENT24) */
+    GLuint fbo, program, query;
+    GLint u_model, u_view_proj, u_albedo, u_albedo_tex, u_has_albedo_tex, u_previous,
+        u_previous_slice, u_mono;
+    stin__displace_locs displace;
+    uint32_t size;         /* texels a side of a face */
+    uint32_t layer_cap;    /* desc.deep_layers */
+    uint32_t slices;       /* per face and texture: ceil(layer_cap / 2) */
+    int unit;              /* two texture units: even, odd layers */
+    int ready;             /* set up: transparent casters leave the shadows technique */
+    int frame_transparent; /* this frame has transparent draws */
+    int kind;              /* the light being shaded: 0 no map, 1 one face, 2 six */
+    float matrix[STIN__DEEP_FACES][16]; /* world -> [0,1] window coordinates per face */
+    float normal_offset;   /* world units per unit clip w: 1.5 texels */
+} stin__deep_state;
+
+/* Slices per face of each ping-pong texture for `layers` layers. */
+uint32_t stin__deep_slices(uint32_t layers);
+/* The lit programs' chunk after the shadow technique's ("translucent_deep.glsl")
+ * when deep is the choice, else NULL. */
+const char *stin__deep_chunk(const struct stin_context *ctx);
+/* Set-up after the shadow module's (textures, framebuffer, program, query):
+ * a failure, or shadows that are off, falls back to translucent-solid
+ * (logged). */
+void stin__deep_init(struct stin_context *ctx);
+void stin__deep_release(struct stin_context *ctx);
+/* A lit or flat program's lookup uniforms: located once, set per pass. */
+void stin__deep_locate(struct stin_context *ctx, stin__program *p);
+void stin__deep_uniforms(struct stin_context *ctx, const stin__program *p);
+/* At the frame's light pre-passes: whether any draw is transparent. */
+void stin__deep_frame(struct stin_context *ctx);
+/* 1 when lights get deep maps this frame (they are then lit one per pass). */
+int stin__deep_active(const struct stin_context *ctx);
+/* 1 when the shadows technique leaves draw d out: a transparent caster
+ * while deep is set up. */
+int stin__deep_skips(const struct stin_context *ctx, const stin__draw *d);
+/* Light li's deep map, peeled now (the frame's target bound back after),
+ * for the lit pass that follows; done: the pass is over. No-ops when
+ * deep is not active. */
+void stin__deep_light(struct stin_context *ctx, uint32_t li);
+void stin__deep_light_done(struct stin_context *ctx);
+
+#endif

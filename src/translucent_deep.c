@@ -1,0 +1,334 @@
+/* SPDX-License-Identifier: MIT */
+/* Deep shadow maps on GL4 ("deep", seed 001).
+ *
+ * Per light, just before its lit pass: the transparent casters are peeled
+ * from the light, layer by layer (Everitt's depth peeling: the depth test
+ * LESS finds the nearest surface, the shader discards what the layer before
+ * held), into RGBA32F texels of (depth, visibility behind it per channel),
+ * eq 5.3 accumulating the visibility from layer to layer. Even layers live in
+ * one array texture, odd ones in the other, so a pass never reads what it
+ * writes. Spot and directional lights peel one face fitted as the shadow
+ * maps are; point lights six 90-degree faces. A face stops at the first
+ * layer an occlusion query finds empty (later layers would be empty too);
+ * the lookup stops at an empty layer, so stale texels beyond it are never
+ * read and the image is the same with every layer peeled. Opaque casters
+ * stay the shadows technique's; the lit programs multiply its visibility by
+ * the deep map's (translucent_deep.glsl). */
+#include "internal.h"
+
+#define EMPTY_DEPTH 2.0f /* beyond every window depth: an unused texel */
+
+uint32_t stin__deep_slices(uint32_t layers) { return (layers + 1u) / 2u; }
+
+static int chosen(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique == STIN_TECH_TRANSLUCENT_DEEP;
+}
+
+/* (Built before the deep set-up: with shadows off it will fall back.) */
+const char *stin__deep_chunk(const stin_context *ctx)
+{
+    return chosen(ctx) && ctx->shadow && ctx->shadow->light ? "translucent_deep.glsl" : NULL;
+}
+
+void stin__deep_release(stin_context *ctx)
+{
+    stin__deep_state *s = &ctx->deep;
+    if (s->layers[0])
+        GL(ctx, DeleteTextures)(2, s->layers);
+    if (s->depth)
+        GL(ctx, DeleteTextures)(1, &s->depth);
+    if (s->fbo)
+        GL(ctx, DeleteFramebuffers)(1, &s->fbo);
+    if (s->program)
+        GL(ctx, DeleteProgram)(s->program);
+    if (s->query)
+        GL(ctx, DeleteQueries)(1, &s->query);
+    stin__memzero(s, sizeof *s);
+}
+
+static void nearest_clamped(stin_context *ctx, GLenum target)
+{
+    GL(ctx, TexParameteri)(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    GL(ctx, TexParameteri)(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    GL(ctx, TexParameteri)(target, GL_TEXTURE_MAX_LEVEL, 0);
+}
+
+/* The textures and the framebuffer; "" or why they cannot be made. */
+static const char *make_targets(stin_context *ctx)
+{
+    stin__deep_state *s = &ctx->deep;
+    GLsizei n = (GLsizei)s->size, slices = (GLsizei)(STIN__DEEP_FACES * s->slices);
+    GLenum status;
+    int i;
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    GL(ctx, GenTextures)(2, s->layers);
+    for (i = 0; i < 2; i++) {
+        GL(ctx, BindTexture)(GL_TEXTURE_2D_ARRAY, s->layers[i]);
+        nearest_clamped(ctx, GL_TEXTURE_2D_ARRAY);
+        GL_ENUM(ctx, TexImage3D, GL_RGBA32F)(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, n, n, slices, 0,
+                                            GL_RGBA, GL_FLOAT, NULL);
+    }
+    GL(ctx, BindTexture)(GL_TEXTURE_2D_ARRAY, 0);
+    GL(ctx, GenTextures)(1, &s->depth);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, s->depth);
+    nearest_clamped(ctx, GL_TEXTURE_2D);
+    GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, n, n, 0,
+                                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL(ctx, GenFramebuffers)(1, &s->fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
+    GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->layers[0], 0, 0);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, s->depth, 0);
+    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
+    return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA32F layer framebuffer is incomplete";
+}
+
+static int make_program(stin_context *ctx, char *msg, size_t size)
+{
+    stin__deep_state *s = &ctx->deep;
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = "gl4/deep_peel.vert";
+    src.frag = "gl4/deep_peel.frag";
+    s->program = stin__program_build_source(ctx, &src, msg, size);
+    if (!s->program)
+        return 0;
+#define LOC(field, name) s->field = GL(ctx, GetUniformLocation)(s->program, name)
+    LOC(u_model, "u_model");
+    LOC(u_view_proj, "u_view_proj");
+    LOC(u_albedo, "u_albedo");
+    LOC(u_albedo_tex, "u_albedo_tex");
+    LOC(u_has_albedo_tex, "u_has_albedo_tex");
+    LOC(u_previous, "u_previous");
+    LOC(u_previous_slice, "u_previous_slice");
+    LOC(u_mono, "u_mono");
+#undef LOC
+    stin__displace_locate(ctx, s->program, 0, &s->displace);
+    return 1;
+}
+
+void stin__deep_init(stin_context *ctx)
+{
+    stin__deep_state *s = &ctx->deep;
+    char msg[160], why[220];
+    const char *fail = "";
+    if (!chosen(ctx))
+        return;
+    stin__memzero(s, sizeof *s);
+    s->size = ctx->desc.deep_map_size;
+    if (ctx->caps.max_texture_size > 0 && s->size > (uint32_t)ctx->caps.max_texture_size)
+        s->size = (uint32_t)ctx->caps.max_texture_size;
+    s->layer_cap = ctx->desc.deep_layers;
+    s->slices = stin__deep_slices(s->layer_cap);
+    s->unit = ctx->sel.translucent_unit;
+    msg[0] = '\0';
+    if (!ctx->shadow->light)
+        fail = "shadows are off, so no light is shadowed";
+    else if (!stin__gl_available(ctx, STIN_GLFN_TexImage3D) ||
+             !stin__gl_available(ctx, STIN_GLFN_FramebufferTextureLayer))
+        fail = "glTexImage3D or glFramebufferTextureLayer did not load";
+    else if (!make_program(ctx, msg, sizeof msg))
+        fail = "its peel program failed to build";
+    else
+        fail = make_targets(ctx);
+    if (fail[0]) {
+        stin__formatf(why, sizeof why, "deep: %s%s%s%s", fail, msg[0] ? " (" : "", msg,
+                      msg[0] ? ")" : "");
+        stin__deep_release(ctx);
+        stin__demote(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_SOLID, why);
+        return;
+    }
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
+        GL(ctx, GenQueries)(1, &s->query);
+    s->ready = 1;
+    stin__gl_check_errors(ctx, "deep set-up");
+}
+
+void stin__deep_locate(stin_context *ctx, stin__program *p)
+{
+    p->u_deep_kind = GL(ctx, GetUniformLocation)(p->name, "u_deep_kind");
+    p->u_deep_matrix = GL(ctx, GetUniformLocation)(p->name, "u_deep_matrix");
+    p->u_deep_params = GL(ctx, GetUniformLocation)(p->name, "u_deep_params");
+    p->u_deep_layers[0] = GL(ctx, GetUniformLocation)(p->name, "u_deep_even");
+    p->u_deep_layers[1] = GL(ctx, GetUniformLocation)(p->name, "u_deep_odd");
+}
+
+void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
+{
+    const stin__deep_state *s = &ctx->deep;
+    float params[4];
+    int i;
+    if (p->u_deep_kind < 0)
+        return;
+    GL(ctx, Uniform1i)(p->u_deep_kind, s->kind);
+    /* every sampler on a unit of its own, used or not (the selection's: a
+     * fallen-back deep keeps its programs' samplers off the other units) */
+    for (i = 0; i < 2; i++)
+        GL(ctx, Uniform1i)(p->u_deep_layers[i], ctx->sel.translucent_unit + i);
+    if (!s->kind)
+        return;
+    GL(ctx, UniformMatrix4fv)(p->u_deep_matrix, s->kind == 2 ? STIN__DEEP_FACES : 1, GL_FALSE,
+                              &s->matrix[0][0]);
+    params[0] = (float)s->slices;
+    params[1] = (float)s->size;
+    params[2] = s->normal_offset;
+    params[3] = (float)s->layer_cap;
+    GL(ctx, Uniform4fv)(p->u_deep_params, 1, params);
+    for (i = 0; i < 2; i++)
+        stin__bind_unit(ctx, s->unit + i, GL_TEXTURE_2D_ARRAY, s->layers[i]);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+}
+
+void stin__deep_frame(stin_context *ctx)
+{
+    uint32_t i;
+    ctx->deep.frame_transparent = 0;
+    ctx->deep.kind = 0;
+    for (i = 0; ctx->deep.ready && i < ctx->draw_count; i++)
+        if (ctx->draws[i].material.color[3] < 1.0f)
+            ctx->deep.frame_transparent = 1;
+}
+
+int stin__deep_active(const stin_context *ctx)
+{
+    return ctx->deep.ready && ctx->deep.frame_transparent;
+}
+
+int stin__deep_skips(const stin_context *ctx, const stin__draw *d)
+{
+    return ctx->deep.ready && d->material.color[3] < 1.0f;
+}
+
+/* The transparent draws through the peel program (albedo on unit 0), in
+ * the caller's order: the depth test makes the layers independent of it,
+ * and the order test sees that (the camera's far-to-near order would hide
+ * an order dependence). */
+static void draw_transparent(stin_context *ctx)
+{
+    const stin__deep_state *s = &ctx->deep;
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[i];
+        const stin__texture_slot *t;
+        if (d->material.color[3] >= 1.0f)
+            continue;
+        t = stin__texture_lookup(ctx, d->material.albedo);
+        GL(ctx, Uniform4fv)(s->u_albedo, 1, d->material.color);
+        GL(ctx, Uniform1i)(s->u_has_albedo_tex, t != NULL);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, t ? t->name : 0);
+        stin__glsl_submit_geometry(ctx, s->u_model, &s->displace, d);
+    }
+}
+
+/* One face's layers, from its view and projection; layer k of the face is
+ * slice face * slices + k / 2 of layers[k % 2]. */
+static void peel_face(stin_context *ctx, int face, const float view[16], const float proj[16])
+{
+    stin__deep_state *s = &ctx->deep;
+    int stop_early = s->query && !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_NO_EARLY_STOP);
+    float view_proj[16];
+    uint32_t k;
+    stin__mat4_mul(view_proj, proj, view);
+    stin__light_window_matrix(s->matrix[face], view, proj);
+    GL(ctx, UniformMatrix4fv)(s->u_view_proj, 1, GL_FALSE, view_proj);
+    for (k = 0; k < s->layer_cap; k++) {
+        GLint slice = (GLint)((uint32_t)face * s->slices + k / 2u);
+        GLuint drawn = 1;
+        GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->layers[k % 2u], 0,
+                                         slice);
+        GL(ctx, ClearColor)(EMPTY_DEPTH, 1.0f, 1.0f, 1.0f);
+        GL(ctx, ClearDepth)(1.0);
+        GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        /* layer k - 1 on the deep unit; the texture drawn into is on none */
+        stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D_ARRAY, k > 0 ? s->layers[(k - 1u) % 2u] : 0);
+        GL(ctx, ActiveTexture)(GL_TEXTURE0);
+        GL(ctx, Uniform1i)(s->u_previous_slice,
+                           k > 0 ? (GLint)((uint32_t)face * s->slices + (k - 1u) / 2u) : -1);
+        if (stop_early)
+            GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, s->query);
+        draw_transparent(ctx);
+        ctx->stats.deep_layers++;
+        ctx->stats.passes++;
+        if (stop_early) {
+            GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
+            GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &drawn);
+        }
+        if (!drawn)
+            break; /* empty, so every deeper layer would be: the lookup stops here */
+    }
+}
+
+/* 1.5 texels' width in world units per unit of the face's clip w, as
+ * map-pcf's normal offset. */
+static float texel_offset(const float proj[16], uint32_t size)
+{
+    return 1.5f * 2.0f / (proj[0] * (float)size);
+}
+
+/* Light l's faces: 1 (spot, directional), 6 (point), 0 (nothing in front). */
+static int peel_light(stin_context *ctx, const stin_light_desc *l)
+{
+    stin__deep_state *s = &ctx->deep;
+    float view[16], proj[16], n, f;
+    int face;
+    if (l->type != STIN_LIGHT_POINT) {
+        if (!stin__light_camera(ctx, l, view, proj, &n, &f, s->size))
+            return 0;
+        peel_face(ctx, 0, view, proj);
+        s->normal_offset = texel_offset(proj, s->size);
+        return 1;
+    }
+    for (face = 0; face < STIN__DEEP_FACES; face++) {
+        stin__light_cube_face(ctx, l->position, face, view, proj);
+        peel_face(ctx, face, view, proj);
+    }
+    s->normal_offset = texel_offset(proj, s->size); /* every face is 90 degrees */
+    return 2;
+}
+
+void stin__deep_light(stin_context *ctx, uint32_t li)
+{
+    stin__deep_state *s = &ctx->deep;
+    stin__pass_state ps = stin__pass_defaults;
+    s->kind = 0;
+    if (!stin__deep_active(ctx) || li >= ctx->light_count)
+        return;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
+    GL(ctx, Viewport)(0, 0, (GLsizei)s->size, (GLsizei)s->size);
+    ps.depth_test = 1; /* LESS with writes: the nearest surface behind the last layer */
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, UseProgram)(s->program);
+    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    ctx->bound_mesh = 0xffffffffu;
+    GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
+    GL(ctx, Uniform1i)(s->u_previous, s->unit);
+    GL(ctx, Uniform1i)(s->u_mono, ctx->desc.deep_mono);
+    /* the other texture is sampled by no one while its slices are drawn */
+    stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D_ARRAY, 0);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    s->kind = peel_light(ctx, &ctx->lights[li]);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D_ARRAY, 0);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
+                      ctx->frame.viewport[3]);
+    ctx->bound_mesh = 0xffffffffu;
+    stin__gl_check_errors(ctx, "deep layers");
+}
+
+void stin__deep_light_done(stin_context *ctx)
+{
+    stin__deep_state *s = &ctx->deep;
+    int i;
+    if (!s->kind)
+        return;
+    s->kind = 0;
+    for (i = 0; i < 2; i++)
+        stin__bind_unit(ctx, s->unit + i, GL_TEXTURE_2D_ARRAY, 0);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+}

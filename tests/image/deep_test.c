@@ -1,0 +1,583 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Deep shadow maps ("deep", GL4) against the exact transmittance of the
+ * Embree reference (T.R T.G T.B: the product of the eq 5.3 factors of every
+ * surface between the point and light 0), on the scenes made for them
+ * (deep-*) and glass-panes:
+ *   transmittance  (deep_layers 6 on glass-panes, whose three panes are
+ *                  boxes: six surfaces) the visibility output (the shadows technique's times the
+ *                  deep map's, 8-bit) within 2/255 of T per channel (the
+ *                  8-bit output rounds by 1/255 and the layer's float depth
+ *                  and colour add less) on >= 99.5% of the pixels the light
+ *                  reaches, away from transmittance edges (a nearest-texel
+ *                  map moves an edge by up to a texel: pixels whose T or
+ *                  object changes within `band` pixels are left out); at
+ *                  least 100 compared pixels must lie in a partial shadow
+ *                  (0 < T < 1), so a map that casts nothing cannot pass;
+ *   values         the seed's numbers: every class of T the scene is made
+ *                  for (0.5, 0.25, 0.125 for white panes of opacity 0.5;
+ *                  (0.5,0.25,0.25), (0.25,0.0625,0.0625), (0.125,0.125,0.0625)
+ *                  for red, red + red, red + green) has >= 50 compared
+ *                  pixels and >= 99.5% of them within 2/255;
+ *   own-layer      pane pixels the reference sees unshadowed (T = 1) are
+ *                  within 2/255 of 1: a pane is not darkened by its layer;
+ *   layer-cap      with deep_layers 2, where three panes overlap (T 0.125)
+ *                  the floor gets 0.25 (the third pane is not captured);
+ *   order          the objects drawn in reverse order give bit-identical
+ *                  visibility and beauty;
+ *   early-stop     STIN_DEBUG_DEEP_NO_EARLY_STOP gives bit-identical
+ *                  visibility and beauty, with more layers peeled;
+ *   with-volume, with-map-pcf  the transmittance test with those shadows
+ *                  techniques for the opaque casters (glass-panes);
+ *   texture        (deep-window) a textured pane's opaque cells cast their
+ *                  colour, its alpha-0 cells nothing;
+ *   mono           deep_mono: the colour cases come out grey, 1 - a per pane;
+ *   shadows-off    forced deep with shadows off falls back to
+ *                  translucent-solid at set-up, saying why;
+ *   gl-clean       no GL error, no call outside the profile.
+ * Below GL4 the deep tests SKIP (the tier has no deep), and forcing deep
+ * there must be refused, naming what is missing.
+ */
+#include "aov.h"
+#include "capture.h"
+#include "image_test.h"
+#include "light_reach.h"
+#include "reference.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define T_TOLERANCE (2.0 / 255.0)
+#define T_MIN_MATCH 0.995
+#define MIN_PARTIAL 100
+#define MIN_CLASS 50
+
+typedef struct deep_case {
+    run *r;
+    const scene *s;
+    const char *scene_name;
+    const float *ref;
+    const ref_hit *hits;
+    stin_tier tier;
+    uint32_t map_size, layers;
+    int band;
+} deep_case;
+
+static const float *ref_px(const deep_case *c, int x, int y)
+{
+    return c->ref + ((size_t)y * c->r->width + x) * REFERENCE_CHANNELS;
+}
+
+/* The capture's pixel (x, y from the bottom, as the reference's rows). */
+static const float *gl_px(const deep_case *c, const capture *cap, int x, int y)
+{
+    return cap->img.pixels + ((size_t)(c->r->height - 1 - y) * c->r->width + x) * AOV_CHANNELS;
+}
+
+/* 1 where T or the object hit changes within band pixels of (x, y). */
+static int near_t_edge(const deep_case *c, int x, int y)
+{
+    int w = c->r->width, h = c->r->height, dx, dy, k;
+    const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
+    for (dy = -c->band; dy <= c->band; dy++)
+        for (dx = -c->band; dx <= c->band; dx++) {
+            int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+                continue;
+            if (c->hits[(size_t)ny * w + nx].object != c->hits[(size_t)y * w + x].object)
+                return 1;
+            for (k = 0; k < 3; k++)
+                if (fabsf(ref_px(c, nx, ny)[REFERENCE_CH_T_R + k] - t[k]) > T_TOLERANCE)
+                    return 1;
+        }
+    return 0;
+}
+
+/* A pixel the comparison counts: covered, the light reaches it, away from
+ * transmittance edges, and the render's surface is the reference's. */
+static int comparable(const deep_case *c, const capture *cap, int x, int y)
+{
+    const ref_hit *hit = &c->hits[(size_t)y * c->r->width + x];
+    const float *g = gl_px(c, cap, x, y), *ref = ref_px(c, x, y);
+    double d2 = 0;
+    int k;
+    if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit) || near_t_edge(c, x, y))
+        return 0;
+    for (k = 0; k < 3; k++)
+        d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) * (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]);
+    return sqrt(d2) <= 1e-3 * ref[REFERENCE_CH_Z] + 1e-3;
+}
+
+static int within(const float *g, const float *expect, double tol)
+{
+    int k;
+    for (k = 0; k < 3; k++)
+        if (fabs(g[AOV_VIS_R + k] - expect[k]) > tol)
+            return 0;
+    return 1;
+}
+
+static int is_transparent(const deep_case *c, const ref_hit *hit)
+{
+    return hit->hit && c->s->materials[c->s->objects[hit->object].material].color[3] < 1.0f;
+}
+
+static void test_transmittance(const deep_case *c, const capture *cap, const char *name)
+{
+    int w = c->r->width, h = c->r->height, x, y;
+    long compared = 0, match = 0, partial = 0;
+    double worst = 0;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
+            const float *g = gl_px(c, cap, x, y);
+            int k;
+            if (!comparable(c, cap, x, y))
+                continue;
+            compared++;
+            match += within(g, t, T_TOLERANCE);
+            partial += t[0] > 0.0f && t[0] < 1.0f;
+            for (k = 0; k < 3; k++)
+                if (fabs(g[AOV_VIS_R + k] - t[k]) > worst)
+                    worst = fabs(g[AOV_VIS_R + k] - t[k]);
+        }
+    report(c->r,
+           compared && match >= T_MIN_MATCH * compared && partial >= MIN_PARTIAL ? "PASS" : "FAIL",
+           name,
+           "%ux%u a face: transmittance within 2/255 of the reference on %.3f%% of %ld pixels the "
+           "light reaches, %d px from T edges (need 99.5%%); %ld in partial shadow (need %d); "
+           "largest difference %.4f", c->map_size, c->map_size,
+           compared ? 100.0 * match / compared : 0.0, compared, c->band, partial, MIN_PARTIAL,
+           worst);
+}
+
+/* The seed's classes of T this scene has: white panes or the colour cases. */
+static void test_values(const deep_case *c, const capture *cap, const char *name)
+{
+    static const float classes[6][3] = {{0.5f, 0.5f, 0.5f},     {0.25f, 0.25f, 0.25f},
+                                        {0.125f, 0.125f, 0.125f}, {0.5f, 0.25f, 0.25f},
+                                        {0.25f, 0.0625f, 0.0625f}, {0.125f, 0.125f, 0.0625f}};
+    int first = strstr(c->scene_name, "colour") ? 3 : 0, k, x, y, ok = 1;
+    long n[6] = {0}, good[6] = {0};
+    char detail[512];
+    size_t used = 0;
+    for (y = 0; y < c->r->height; y++)
+        for (x = 0; x < c->r->width; x++) {
+            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
+            if (!comparable(c, cap, x, y))
+                continue;
+            for (k = first; k < first + 3; k++)
+                if (fabsf(t[0] - classes[k][0]) < 1e-5f && fabsf(t[1] - classes[k][1]) < 1e-5f &&
+                    fabsf(t[2] - classes[k][2]) < 1e-5f) {
+                    n[k]++;
+                    good[k] += within(gl_px(c, cap, x, y), classes[k], T_TOLERANCE);
+                }
+        }
+    detail[0] = '\0';
+    for (k = first; k < first + 3; k++) {
+        ok &= n[k] >= MIN_CLASS && good[k] >= T_MIN_MATCH * n[k];
+        used += (size_t)snprintf(detail + used, sizeof detail - used, "%s(%g,%g,%g): %ld of %ld",
+                                 k > first ? ", " : "", classes[k][0], classes[k][1],
+                                 classes[k][2], good[k], n[k]);
+    }
+    report(c->r, ok ? "PASS" : "FAIL", name,
+           "pixels of each of the seed's values within 2/255 (need >= %d a value, 99.5%%): %s",
+           MIN_CLASS, detail);
+}
+
+static void test_own_layer(const deep_case *c, const capture *cap, const char *name)
+{
+    long n = 0, good = 0;
+    int x, y;
+    static const float one[3] = {1, 1, 1};
+    for (y = 0; y < c->r->height; y++)
+        for (x = 0; x < c->r->width; x++) {
+            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
+            if (!is_transparent(c, &c->hits[(size_t)y * c->r->width + x]) || t[0] < 1.0f ||
+                t[1] < 1.0f || t[2] < 1.0f || !comparable(c, cap, x, y))
+                continue;
+            n++;
+            good += within(gl_px(c, cap, x, y), one, T_TOLERANCE);
+        }
+    report(c->r, n >= MIN_PARTIAL && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
+           "%ld of %ld pane pixels the reference sees unshadowed are within 2/255 of 1 (need "
+           ">= %d pixels, 99.5%%)", good, n, MIN_PARTIAL);
+}
+
+/* Visibility and beauty identical, pixel for pixel; returns the count that differ. */
+static long differing(const capture *a, const capture *b)
+{
+    size_t i, n = (size_t)a->img.width * a->img.height;
+    long d = 0;
+    int k;
+    static const int ch[] = {AOV_R, AOV_G, AOV_B, AOV_VIS_R, AOV_VIS_G, AOV_VIS_B};
+    for (i = 0; i < n; i++)
+        for (k = 0; k < 6; k++)
+            if (a->img.pixels[i * AOV_CHANNELS + ch[k]] != b->img.pixels[i * AOV_CHANNELS + ch[k]]) {
+                d++;
+                break;
+            }
+    return d;
+}
+
+static int render(const deep_case *c, const scene *s, const capture_options *o, capture *cap,
+                  const char *name)
+{
+    char err[512];
+    if (!capture_render(c->r->plat, c->r->profile, s, o, cap, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        return 0;
+    }
+    if (cap->choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique != STIN_TECH_TRANSLUCENT_DEEP) {
+        report(c->r, "FAIL", name, "deep fell back: %s",
+               cap->choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason);
+        capture_free(cap);
+        return 0;
+    }
+    return 1;
+}
+
+static void options(const deep_case *c, capture_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->tier = c->tier;
+    o->translucent = STIN_TECH_TRANSLUCENT_DEEP;
+    o->deep_map_size = c->map_size;
+    o->deep_layers = c->layers;
+}
+
+static void test_layer_cap(const deep_case *c, const char *name)
+{
+    capture cap;
+    capture_options o;
+    static const float quarter[3] = {0.25f, 0.25f, 0.25f};
+    long n = 0, good = 0;
+    int x, y;
+    options(c, &o);
+    o.deep_layers = 2;
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    for (y = 0; y < c->r->height; y++)
+        for (x = 0; x < c->r->width; x++) {
+            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
+            if (fabsf(t[0] - 0.125f) > 1e-5f || !comparable(c, &cap, x, y))
+                continue;
+            n++;
+            good += within(gl_px(c, &cap, x, y), quarter, T_TOLERANCE);
+        }
+    report(c->r, n >= MIN_CLASS && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
+           "deep_layers 2: %ld of %ld pixels under three panes (T 0.125) get 0.25 within 2/255 "
+           "(need >= %d pixels, 99.5%%)", good, n, MIN_CLASS);
+    capture_free(&cap);
+}
+
+static void test_order(const deep_case *c, const capture *base, const char *name)
+{
+    scene reversed = *c->s;
+    scene_object *objects = malloc(sizeof *objects * (size_t)c->s->object_count);
+    capture cap;
+    capture_options o;
+    int i;
+    long d;
+    if (!objects)
+        return;
+    for (i = 0; i < c->s->object_count; i++)
+        objects[i] = c->s->objects[c->s->object_count - 1 - i];
+    reversed.objects = objects;
+    options(c, &o);
+    if (render(c, &reversed, &o, &cap, name)) {
+        d = differing(base, &cap);
+        report(c->r, d == 0 ? "PASS" : "FAIL", name,
+               "objects drawn in reverse order: visibility and beauty differ on %ld pixels "
+               "(must be 0)", d);
+        capture_free(&cap);
+    }
+    free(objects);
+}
+
+static void test_early_stop(const deep_case *c, const capture *base, const char *name)
+{
+    capture cap;
+    capture_options o;
+    long d;
+    options(c, &o);
+    o.debug_flags = STIN_DEBUG_DEEP_NO_EARLY_STOP;
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    d = differing(base, &cap);
+    report(c->r, d == 0 && cap.stats.deep_layers >= base->stats.deep_layers ? "PASS" : "FAIL",
+           name,
+           "every layer peeled: visibility and beauty differ on %ld pixels (must be 0); layers "
+           "peeled in the visibility frame %u with the early stop, %u without", d,
+           base->stats.deep_layers, cap.stats.deep_layers);
+    capture_free(&cap);
+}
+
+/* The transmittance test with another shadows technique for the opaque
+ * casters (the base capture's is the context's choice, vdsm). */
+static void with_shadows(const deep_case *c, stin_technique shadows)
+{
+    capture cap;
+    capture_options o;
+    char name[256];
+    options(c, &o);
+    o.shadows = shadows;
+    snprintf(name, sizeof name, "%s/%s/deep-with-%s", stin_tier_name(c->tier), c->scene_name,
+             stin_technique_name(shadows));
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    if (cap.choice[STIN_FEATURE_SHADOWS].technique != shadows)
+        report(c->r, "FAIL", name, "shadows fell back: %s", cap.choice[STIN_FEATURE_SHADOWS].reason);
+    else
+        test_transmittance(c, &cap, name);
+    capture_free(&cap);
+}
+
+/* The textured window: its opaque cells' colour (opacity 0.8 x texel alpha
+ * 1, colour (1, 51/255, 26/255): T = (0.2, 0.08, 0.0604)) and, where the
+ * reference's hard visibility says the window is in the way but T is 1,
+ * its alpha-0 cells, which cast nothing. */
+static void test_texture(const deep_case *c, const capture *cap, const char *name)
+{
+    static const float cell[3] = {0.2f, 0.2f * (0.2f + 51.0f / 255.0f), 0.2f * (0.2f + 26.0f / 255.0f)};
+    static const float one[3] = {1, 1, 1};
+    long n[2] = {0}, good[2] = {0};
+    int x, y;
+    for (y = 0; y < c->r->height; y++)
+        for (x = 0; x < c->r->width; x++) {
+            const float *ref = ref_px(c, x, y), *t = ref + REFERENCE_CH_T_R;
+            int k = fabsf(t[0] - cell[0]) < 1e-3f && fabsf(t[1] - cell[1]) < 1e-3f &&
+                            fabsf(t[2] - cell[2]) < 1e-3f
+                        ? 0
+                        : t[0] == 1.0f && t[1] == 1.0f && t[2] == 1.0f &&
+                                  ref[REFERENCE_CH_VIS_R] == 0.0f
+                              ? 1
+                              : -1;
+            if (k < 0 || !comparable(c, cap, x, y))
+                continue;
+            n[k]++;
+            good[k] += within(gl_px(c, cap, x, y), k ? one : cell, T_TOLERANCE);
+        }
+    report(c->r,
+           n[0] >= MIN_CLASS && n[1] >= MIN_CLASS && good[0] >= T_MIN_MATCH * n[0] &&
+                   good[1] >= T_MIN_MATCH * n[1]
+               ? "PASS"
+               : "FAIL",
+           name,
+           "opaque cells' shadow (%.3f,%.3f,%.3f): %ld of %ld within 2/255; behind alpha-0 cells "
+           "(T 1): %ld of %ld (need >= %d each, 99.5%%)", cell[0], cell[1], cell[2], good[0], n[0],
+           good[1], n[1], MIN_CLASS);
+}
+
+/* deep_mono: the colour cases give grey 1 - a per pane: (0.5,0.25,0.25) ->
+ * 0.5, (0.25,0.0625,0.0625) and (0.125,0.125,0.0625) -> 0.25. */
+static void test_mono(const deep_case *c, const char *name)
+{
+    static const float coloured[3][3] = {
+        {0.5f, 0.25f, 0.25f}, {0.25f, 0.0625f, 0.0625f}, {0.125f, 0.125f, 0.0625f}};
+    static const float grey[3][3] = {{0.5f, 0.5f, 0.5f}, {0.25f, 0.25f, 0.25f}, {0.25f, 0.25f, 0.25f}};
+    capture cap;
+    capture_options o;
+    long n[3] = {0}, good[3] = {0};
+    int x, y, k, ok = 1;
+    options(c, &o);
+    o.deep_mono = 1;
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    for (y = 0; y < c->r->height; y++)
+        for (x = 0; x < c->r->width; x++) {
+            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
+            if (!comparable(c, &cap, x, y))
+                continue;
+            for (k = 0; k < 3; k++)
+                if (fabsf(t[0] - coloured[k][0]) < 1e-5f && fabsf(t[1] - coloured[k][1]) < 1e-5f &&
+                    fabsf(t[2] - coloured[k][2]) < 1e-5f) {
+                    n[k]++;
+                    good[k] += within(gl_px(c, &cap, x, y), grey[k], T_TOLERANCE);
+                }
+        }
+    for (k = 0; k < 3; k++)
+        ok &= n[k] >= MIN_CLASS && good[k] >= T_MIN_MATCH * n[k];
+    report(c->r, ok ? "PASS" : "FAIL", name,
+           "deep_mono: red %ld of %ld at 0.5, red + red %ld of %ld and red + green %ld of %ld at "
+           "0.25, within 2/255 (need >= %d a value, 99.5%%)", good[0], n[0], good[1], n[1],
+           good[2], n[2], MIN_CLASS);
+    capture_free(&cap);
+}
+
+/* Forced deep with shadows off: nothing is shadowed, so it falls back to
+ * translucent-solid at set-up and says why. */
+static void test_shadows_off(const deep_case *c, const char *name)
+{
+    capture cap;
+    capture_options o;
+    char err[512];
+    const stin_choice *t;
+    options(c, &o);
+    o.shadows = STIN_TECH_SHADOWS_OFF;
+    if (!capture_render(c->r->plat, c->r->profile, c->s, &o, &cap, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        return;
+    }
+    t = &cap.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS];
+    report(c->r,
+           t->technique == STIN_TECH_TRANSLUCENT_SOLID && t->fell_back &&
+                   strstr(t->reason, "shadows are off") && !cap.log_errors && !cap.stats.deep_layers
+               ? "PASS"
+               : "FAIL",
+           name, "forced deep with shadows off: %s (%s), %u layers peeled, %u errors logged",
+           stin_technique_name(t->technique), t->reason, cap.stats.deep_layers, cap.log_errors);
+    capture_free(&cap);
+}
+
+/* Below GL4: deep cannot run; forcing it is refused, naming the tier. */
+static void lower_tier(run *r, stin_tier tier, const char *scene_name, const scene *s)
+{
+    capture cap;
+    capture_options o;
+    char err[512], name[256];
+    int refused;
+    snprintf(name, sizeof name, "%s/%s/deep", stin_tier_name(tier), scene_name);
+    report(r, "SKIP", name, "tier %s has no deep shadow maps (GL4 only): transparent casters "
+                            "cast solid shadows here", stin_tier_name(tier));
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    o.translucent = STIN_TECH_TRANSLUCENT_DEEP;
+    refused = !capture_render(r->plat, r->profile, s, &o, &cap, err, sizeof err);
+    snprintf(name, sizeof name, "%s/%s/deep-forced", stin_tier_name(tier), scene_name);
+    report(r, refused && strstr(err, "deep needs tier gl4") ? "PASS" : "FAIL", name,
+           "forcing deep at tier %s: %s", stin_tier_name(tier),
+           refused ? err : "created (must be refused)");
+    if (!refused)
+        capture_free(&cap);
+}
+
+/* The reference's AOVs (transmittance among them) and primary hits of the
+ * case's scene; 0 with a message in err. Free with free_reference. */
+static int make_reference(deep_case *c, reference **ref, char *err, size_t err_size)
+{
+    size_t n = (size_t)c->r->width * c->r->height;
+    ref_hit *hits = malloc(sizeof *hits * n);
+    float *img = malloc(sizeof(float) * REFERENCE_CHANNELS * n);
+    c->hits = hits;
+    c->ref = img;
+    *ref = reference_create(c->s, err, err_size);
+    if (*ref && hits && img && reference_primary(*ref, c->r->width, c->r->height, hits) &&
+        reference_render(c->s, *ref, c->r->width, c->r->height, 0, img))
+        return 1;
+    if (*ref)
+        snprintf(err, err_size, "render failed");
+    return 0;
+}
+
+static void free_reference(deep_case *c, reference *ref)
+{
+    free((void *)c->hits);
+    free((void *)c->ref);
+    if (ref)
+        reference_destroy(ref);
+}
+
+/* The tests of one GL4 scene; which ones depends on what the scene is for. */
+static void gl4_tests(deep_case *c, int stack, int colour, int omni)
+{
+    capture base;
+    capture_options o;
+    char name[256];
+    const char *tier = stin_tier_name(c->tier), *scene_name = c->scene_name;
+    options(c, &o);
+    snprintf(name, sizeof name, "%s/%s/deep", tier, scene_name);
+    if (!render(c, c->s, &o, &base, name))
+        return;
+    snprintf(name, sizeof name, "%s/%s/deep-gl-clean", tier, scene_name);
+    capture_report_clean(c->r, name, &base);
+    snprintf(name, sizeof name, "%s/%s/deep-transmittance", tier, scene_name);
+    test_transmittance(c, &base, name);
+    snprintf(name, sizeof name, "%s/%s/deep-own-layer", tier, scene_name);
+    test_own_layer(c, &base, name);
+    if (stack || colour) {
+        snprintf(name, sizeof name, "%s/%s/deep-values", tier, scene_name);
+        test_values(c, &base, name);
+        snprintf(name, sizeof name, "%s/%s/deep-order", tier, scene_name);
+        test_order(c, &base, name);
+    }
+    if (stack) {
+        snprintf(name, sizeof name, "%s/%s/deep-layer-cap", tier, scene_name);
+        test_layer_cap(c, name);
+        snprintf(name, sizeof name, "%s/%s/deep-shadows-off", tier, scene_name);
+        test_shadows_off(c, name);
+    } else if (colour) {
+        snprintf(name, sizeof name, "%s/%s/deep-mono", tier, scene_name);
+        test_mono(c, name);
+    } else { /* point lights: faces without panes stop after one layer */
+        snprintf(name, sizeof name, "%s/%s/deep-early-stop", tier, scene_name);
+        test_early_stop(c, &base, name);
+    }
+    if (!stack && !colour && !omni) {
+        /* glass-panes' opaque casters under the other shadows techniques */
+        with_shadows(c, STIN_TECH_SHADOWS_VOLUME);
+        with_shadows(c, STIN_TECH_SHADOWS_MAP_PCF);
+    }
+    capture_free(&base);
+}
+
+/* The textured window: transmittance and the cells' pattern. */
+static void window_tests(deep_case *c)
+{
+    capture cap;
+    capture_options o;
+    char name[256];
+    options(c, &o);
+    snprintf(name, sizeof name, "%s/%s/deep", stin_tier_name(c->tier), c->scene_name);
+    if (!render(c, c->s, &o, &cap, name))
+        return;
+    snprintf(name, sizeof name, "%s/%s/deep-transmittance", stin_tier_name(c->tier), c->scene_name);
+    test_transmittance(c, &cap, name);
+    snprintf(name, sizeof name, "%s/%s/deep-texture", stin_tier_name(c->tier), c->scene_name);
+    test_texture(c, &cap, name);
+    capture_free(&cap);
+}
+
+void deep_tests(run *r, stin_tier tier, const char *path)
+{
+    deep_case c;
+    scene s;
+    reference *ref = NULL;
+    char err[512], scene_name[128];
+    int stack, colour, omni, window;
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    stack = !strcmp(scene_name, "deep-stack");
+    colour = !strcmp(scene_name, "deep-colour");
+    omni = !strcmp(scene_name, "deep-omni");
+    window = !strcmp(scene_name, "deep-window");
+    if ((!stack && !colour && !omni && !window && strcmp(scene_name, "glass-panes")) ||
+        !scene_load(path, &s, err, sizeof err))
+        return;
+    if (tier != STIN_TIER_GL4) {
+        if (stack) /* once per tier */
+            lower_tier(r, tier, scene_name, &s);
+        scene_free(&s);
+        return;
+    }
+    memset(&c, 0, sizeof c);
+    c.r = r;
+    c.s = &s;
+    c.scene_name = scene_name;
+    c.tier = tier;
+    /* 2048 a face once (the spot light's one face); 512 elsewhere, whose
+     * texels span up to about three pixels here */
+    c.map_size = stack ? 2048u : 512u;
+    c.band = stack ? 1 : 3;
+    /* glass-panes' panes are boxes: up to six surfaces along a ray */
+    c.layers = stack || colour || omni || window ? 0 : 6;
+    if (!make_reference(&c, &ref, err, sizeof err))
+        report(r, "FAIL", "deep-reference", "%s/%s: %s", stin_tier_name(tier), scene_name, err);
+    else if (window)
+        window_tests(&c);
+    else
+        gl4_tests(&c, stack, colour, omni);
+    free_reference(&c, ref);
+    scene_free(&s);
+}
