@@ -582,6 +582,8 @@ void displace_tests(run *r, stin_tier tier, const char *path)
     if (render(&c, &s, &o, &cap, "position")) {
         int vtf = (cap.caps_present & STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH)) != 0;
         c.tessellation = (cap.caps_present & STIN_CAP_BIT(STIN_CAP_TESSELLATION)) != 0;
+        if (vtf)
+            displace_seed_tests(r, tier, cap.caps_present);
         capture_free(&cap);
         if (!vtf) {
             report(r, "SKIP", c.prefix, "the context has no vertex texture units");

@@ -63,5 +63,8 @@ void csg_tests(run *r, stin_tier tier, const char *path);
  * of a forced deep (deep_test.c). */
 void deep_tests(run *r, stin_tier tier, const char *path);
 void displace_tests(run *r, stin_tier tier, const char *path);
+/* The seed's displacement behaviour 5 on a built-in plate, once per GLSL
+ * tier (displace_seed_test.c); caps: the context's present capabilities. */
+void displace_seed_tests(run *r, stin_tier tier, uint64_t caps);
 
 #endif
