@@ -16,8 +16,11 @@
 
 /* stin's unshadowed plain-surface program: these chunks, in this order. */
 static const char *const plain_chunks[] = {"surface_plain.glsl", "shadow_none.glsl", NULL};
-/* and its vertex stage's: no displacement */
-static const char *const vertex_chunks[] = {"displace_none.glsl", NULL};
+/* and its vertex stage's: no displacement (gl4's vertex shaders take their
+ * attributes from a chunk too) */
+static const char *const vertex_chunks_gl2[] = {"displace_none.glsl", NULL};
+static const char *const vertex_chunks_gl4[] = {"vertex_attributes.glsl", "displace_none.glsl",
+                                                NULL};
 
 /* The whole file as a string, or NULL with err set. */
 static char *read_file(FILE *f, const char *path, char *err, size_t err_size)
@@ -133,7 +136,9 @@ GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier, char
     const char *dir = tier == STIN_TIER_GL4 ? "gl4" : "gl2";
     char what[64];
     GLuint vs, fs, p;
-    if (!(vs = compile(gl, GL_VERTEX_SHADER, root, dir, "lit.vert", vertex_chunks, err, err_size)))
+    if (!(vs = compile(gl, GL_VERTEX_SHADER, root, dir, "lit.vert",
+                       tier == STIN_TIER_GL4 ? vertex_chunks_gl4 : vertex_chunks_gl2, err,
+                       err_size)))
         return 0;
     if (!(fs = compile(gl, GL_FRAGMENT_SHADER, root, dir, "lit.frag", plain_chunks, err,
                        err_size))) {
