@@ -533,7 +533,10 @@ const char *stin_feature_name(stin_feature f);
  * surface the camera sees. Undisplaced draws keep their triangles. Without
  * tessellation "displace" moves the mesh's own vertices (the choice's
  * reason says so). The frame sets GL_PATCH_VERTICES to 3 and gives the
- * caller's value back.
+ * caller's value back. Frames without a displaced draw use the programs
+ * without tessellation stages (each has a tessellated twin, built at
+ * stin_create). Limit: "deep" peels a displaced transparent caster at its
+ * mesh's vertices (its peel program has no tessellated twin).
  * Vertices whose undisplaced clip position lies outside the view
  * volume grown by desc.displace_guard_band (a fraction of the volume's
  * half-size each side, default 1) are not displaced in the camera's passes
