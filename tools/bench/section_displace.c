@@ -95,7 +95,7 @@ static int displaced_copy(const scene *s, float factor, scene *out)
     return 1;
 }
 
-static void print_table(const char *title, stin_tier tier, const disp_row *defs,
+static void print_table(const char *title, stin_tier tier, const disp_row *const *defs,
                         const tech_row *rows, int n)
 {
     int i;
@@ -105,10 +105,10 @@ static void print_table(const char *title, stin_tier tier, const disp_row *defs,
     for (i = 0; i < n; i++) {
         const tech_row *r = &rows[i];
         if (r->skipped) {
-            printf("| %s | SKIP: %s | | | | |\n", defs[i].name, r->why);
+            printf("| %s | SKIP: %s | | | | |\n", defs[i]->name, r->why);
             continue;
         }
-        printf("| %s | %u | %.2f | %.2f | %.2f | %.2f |\n", defs[i].name, r->passes, r->base_ms,
+        printf("| %s | %u | %.2f | %.2f | %.2f | %.2f |\n", defs[i]->name, r->passes, r->base_ms,
                r->on_ms, tech_ratio(r),
                !rows[0].skipped && rows[0].on_ms > 0 ? r->on_ms / rows[0].on_ms : 0.0);
     }
@@ -137,12 +137,7 @@ static int run_table(bench_env *env, tech_settings *st, stin_tier tier, const ch
     }
     if (!bench_tech_tier(env, st, tier, WHAT, s, rows, m, rc))
         return 0;
-    {
-        disp_row shown[TECH_MAX_ROWS];
-        for (i = 0; i < m; i++)
-            shown[i] = *use[i];
-        print_table(title, tier, shown, rows, m);
-    }
+    print_table(title, tier, use, rows, m);
     return 1;
 }
 
