@@ -28,15 +28,6 @@ static int all_zero(const float *v, int n)
     return 1;
 }
 
-static int finite_n(const float *v, int n)
-{
-    int i;
-    for (i = 0; i < n; i++)
-        if (!stin__isfinite(v[i]))
-            return 0;
-    return 1;
-}
-
 /* Ops known, primitive indices in range, operands before their node. */
 static stin_result check_nodes(stin_context *ctx, const stin_csg_desc *desc)
 {
@@ -73,7 +64,7 @@ static stin_result take_primitives(stin_context *ctx, const stin_csg_desc *desc)
             return refuse(ctx, STIN_ERROR_INVALID_MESH, STIN_LOG_MESH_NOT_MANIFOLD,
                           "the mesh is not a closed 2-manifold (inside and outside are "
                           "undefined), primitive", i);
-        if (!finite_n(p->transform, 16))
+        if (!stin__finite_n(p->transform, 16))
             return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
                           "transform must be finite, primitive", i);
         if (all_zero(p->transform, 16))

@@ -5,15 +5,6 @@
  * tier and technique (run_plan below). */
 #include "internal.h"
 
-static int finite_n(const float *v, int n)
-{
-    int i;
-    for (i = 0; i < n; i++)
-        if (!stin__isfinite(v[i]))
-            return 0;
-    return 1;
-}
-
 static stin_result state_error(stin_context *ctx, const char *call, const char *why)
 {
     stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE, "%s: %s", call, why);
@@ -34,8 +25,8 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         return state_error(ctx, "stin_begin_frame", "a frame is already open");
     if (desc->viewport[2] <= 0 || desc->viewport[3] <= 0)
         return arg_error(ctx, "stin_begin_frame", "viewport width and height must be positive");
-    if (!finite_n(desc->view, 16) || !finite_n(desc->projection, 16) ||
-        !finite_n(desc->ambient, 3) || !finite_n(desc->clear_color, 4))
+    if (!stin__finite_n(desc->view, 16) || !stin__finite_n(desc->projection, 16) ||
+        !stin__finite_n(desc->ambient, 3) || !stin__finite_n(desc->clear_color, 4))
         return arg_error(ctx, "stin_begin_frame", "view, projection, ambient and clear colour "
                                                   "must be finite");
     if (stin__mat4_singular(desc->view) || stin__mat4_singular(desc->projection))
@@ -82,10 +73,10 @@ stin_result stin_add_light(stin_context *ctx, const stin_light_desc *light)
     if (ctx->state != STIN__IN_FRAME)
         return state_error(ctx, "stin_add_light", "no frame is open");
     l = *light;
-    if ((unsigned)l.type > STIN_LIGHT_DIRECTIONAL || !finite_n(l.position, 3) ||
-        !finite_n(l.direction, 3) || !finite_n(l.color, 3) || !finite_n(l.attenuation, 3) ||
+    if ((unsigned)l.type > STIN_LIGHT_DIRECTIONAL || !stin__finite_n(l.position, 3) ||
+        !stin__finite_n(l.direction, 3) || !stin__finite_n(l.color, 3) || !stin__finite_n(l.attenuation, 3) ||
         !stin__isfinite(l.intensity) || !stin__isfinite(l.spot_cutoff_deg) ||
-        !stin__isfinite(l.spot_exponent) || !finite_n(l.shadow_offset, 2))
+        !stin__isfinite(l.spot_exponent) || !stin__finite_n(l.shadow_offset, 2))
         return arg_error(ctx, "stin_add_light", "unknown type or a non-finite value");
     if (l.color[0] == 0.0f && l.color[1] == 0.0f && l.color[2] == 0.0f)
         l.color[0] = l.color[1] = l.color[2] = 1.0f;
@@ -157,7 +148,7 @@ stin_result stin__material_prepare(stin_context *ctx, const char *call, const ch
     if (material)
         mat = *material;
     *r = STIN_ERROR_INVALID_ARGUMENT;
-    if (!finite_n(mat.color, 4) || !finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess) ||
+    if (!stin__finite_n(mat.color, 4) || !stin__finite_n(mat.specular, 3) || !stin__isfinite(mat.shininess) ||
         !stin__isfinite(mat.height_scale) || !stin__isfinite(mat.height_bias)) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "%s: material values must be finite; %s dropped", call, dropped);
@@ -221,7 +212,7 @@ stin_result stin_draw(stin_context *ctx, stin_mesh mesh, const float transform[1
         ctx->stats.dropped_draws++;
         return STIN_ERROR_INVALID_HANDLE;
     }
-    if (transform && !finite_n(transform, 16)) {
+    if (transform && !stin__finite_n(transform, 16)) {
         ctx->stats.dropped_draws++;
         return arg_error(ctx, "stin_draw", "transform must be finite; draw dropped");
     }

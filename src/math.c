@@ -203,3 +203,12 @@ float stin__cos_deg(float degrees)
     }
     return (float)sum;
 }
+
+int stin__finite_n(const float *v, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (!stin__isfinite(v[i]))
+            return 0;
+    return 1;
+}

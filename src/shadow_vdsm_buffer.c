@@ -130,6 +130,17 @@ static void camera_point(stin_context *ctx, float out[4])
         out[k] = inv[k] * e[0] + inv[4 + k] * e[1] + inv[8 + k] * e[2] + inv[12 + k] * e[3];
 }
 
+/* The position program with the frame's camera, meshes to be bound again. */
+static void use_position_program(stin_context *ctx)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    GL(ctx, UseProgram)(v->position_prog);
+    ctx->glsl_surface.current = NULL;
+    GL(ctx, UniformMatrix4fv)(v->pos_view_proj, 1, GL_FALSE, ctx->view_proj);
+    GL(ctx, Uniform4fv)(v->pos_camera, 1, v->camera);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
 /* The stage: the visible surface's positions and normals. For the
  * visibility output blended draws count as surfaces, as in its depth pass. */
 void stin__vdsm_buffer_draw(stin_context *ctx)
@@ -152,11 +163,7 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;
     stin__pass_apply(ctx, &ps);
-    GL(ctx, UseProgram)(v->position_prog);
-    ctx->glsl_surface.current = NULL;
-    GL(ctx, UniformMatrix4fv)(v->pos_view_proj, 1, GL_FALSE, ctx->view_proj);
-    GL(ctx, Uniform4fv)(v->pos_camera, 1, v->camera);
-    ctx->bound_mesh = 0xffffffffu;
+    use_position_program(ctx);
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE))
@@ -183,11 +190,7 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;
     stin__pass_apply(ctx, &ps);
-    GL(ctx, UseProgram)(v->position_prog);
-    ctx->glsl_surface.current = NULL;
-    GL(ctx, UniformMatrix4fv)(v->pos_view_proj, 1, GL_FALSE, ctx->view_proj);
-    GL(ctx, Uniform4fv)(v->pos_camera, 1, v->camera);
-    ctx->bound_mesh = 0xffffffffu;
+    use_position_program(ctx);
     for (i = 0; i < ctx->csg.face_count; i++)
         if (stin__csg_face_begin(ctx, &ctx->csg.faces[i], &saved)) {
             stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &ctx->csg.faces[i]);
