@@ -91,18 +91,22 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     size_t scratch = stin__adjacency_scratch_bytes(mv, d->max_mesh_triangles);
     size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
     size_t frame_scratch = frame_scratch_bytes(d);
-    size_t csg = 3u * sizeof(stin__draw) * d->max_csg_primitives +
+    /* primitives, and their faces: two a primitive and a product's near-plane cap */
+    size_t csg = 4u * sizeof(stin__draw) * d->max_csg_primitives +
                  (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->max_csg_terms +
                  sizeof(uint32_t) * ((size_t)d->max_csg_literals + stin__csg_scratch_words(d));
     void *p[14];
     if (tangent_scratch > scratch)
         scratch = tangent_scratch;
     p[0] = take(a, sizeof(stin_context), &ok);
-    p[1] = take(a, sizeof(stin__mesh_slot) * d->max_meshes, &ok);
+    /* stin's own mesh (mesh.c: stin__mesh_builtin) after the caller's */
+    p[1] = take(a, sizeof(stin__mesh_slot) * ((size_t)d->max_meshes + 1u), &ok);
     p[2] = take(a, sizeof(stin__texture_slot) * d->max_textures, &ok);
-    p[3] = take(a, sizeof(stin__vertex) * d->max_vertices, &ok);
-    p[4] = take(a, sizeof(uint32_t) * 3u * d->max_triangles, &ok);
-    p[5] = take(a, sizeof(uint32_t) * 3u * d->max_triangles, &ok);
+    p[3] = take(a, sizeof(stin__vertex) * ((size_t)d->max_vertices + STIN__BUILTIN_VERTICES), &ok);
+    p[4] = take(a, sizeof(uint32_t) * 3u * ((size_t)d->max_triangles + STIN__BUILTIN_TRIANGLES),
+                &ok);
+    p[5] = take(a, sizeof(uint32_t) * 3u * ((size_t)d->max_triangles + STIN__BUILTIN_TRIANGLES),
+                &ok);
     p[6] = take(a, sizeof(stin__range) * d->max_meshes, &ok);
     p[7] = take(a, sizeof(stin__range) * d->max_meshes, &ok);
     p[8] = take(a, scratch, &ok);
@@ -348,7 +352,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     layout(&d, &a, ctx);
     ctx->desc = d;
     /* The block is the caller's: nothing in it is assumed zero. */
-    stin__memzero(ctx->meshes, sizeof(stin__mesh_slot) * d.max_meshes);
+    stin__memzero(ctx->meshes, sizeof(stin__mesh_slot) * (d.max_meshes + 1u));
     stin__memzero(ctx->textures, sizeof(stin__texture_slot) * d.max_textures);
     stin__range_init(&ctx->vertex_ranges, ctx->vertex_range_store, d.max_meshes, d.max_vertices);
     stin__range_init(&ctx->triangle_ranges, ctx->triangle_range_store, d.max_meshes,

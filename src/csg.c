@@ -198,7 +198,9 @@ uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_
 }
 
 /* Each primitive's faces that a term shows: front where it is plain in a
- * term, back where it is complemented (both when both). */
+ * term, back where it is complemented (both when both); and the product's
+ * near-plane cap where the resolve kept it (3 max_csg_primitives faces at
+ * most: a product has a primitive at least). */
 void stin__csg_faces(stin_context *ctx)
 {
     stin__csg_state *c = &ctx->csg;
@@ -232,13 +234,21 @@ void stin__csg_faces(stin_context *ctx)
                 c->faces[c->face_count++].csg = STIN__CSG_BACK;
             }
         }
+        if (p->capped) {
+            /* the near plane's cut, in the first primitive's material */
+            stin__draw *cap = &c->faces[c->face_count++];
+            *cap = c->primitives[p->first_primitive];
+            cap->mesh_slot = c->cap_slot;
+            stin__memcopy(cap->transform, c->cap_transform, sizeof cap->transform);
+            cap->csg = STIN__CSG_CAP;
+        }
     }
 }
 
 int stin__csg_face_begin(stin_context *ctx, const stin__draw *d, stin__pass_state *saved)
 {
     stin__pass_state ps = *stin__pass_current(ctx);
-    int mirrored = stin__mat4_det(d->transform) < 0.0;
+    int mirrored = stin__mat4_det(d->transform) < 0.0 && d->csg != STIN__CSG_CAP;
     GLenum hidden = ((d->csg == STIN__CSG_BACK) != mirrored) ? GL_FRONT : GL_BACK;
     *saved = ps;
     /* map-depth's side test draws the lit pass once per side the eye sees:

@@ -25,6 +25,7 @@ typedef struct stin__csg_term {
 typedef struct stin__csg_product {
     uint32_t first_primitive, primitive_count; /* in the frame's primitive list */
     uint32_t first_term, term_count;
+    int capped;               /* the resolve kept its near-plane cap somewhere */
 } stin__csg_product;
 
 /* The frame's products, in the caller's block (sizes from the desc). */
@@ -39,7 +40,10 @@ typedef struct stin__csg_state {
     stin__draw *faces;        /* 2 max_csg_primitives: the faces the frame's passes draw */
     uint32_t face_count;
     int resolved;             /* this frame's products are in its depth buffer */
-    int said_unusable, said_layers;
+    int said_unusable, said_layers, said_planes;
+    uint32_t cap_slot;        /* the near-plane cap's mesh (csg_near.c), STIN__NO_SLOT: none */
+    float cap_transform[16];  /* this frame's: the cap onto the near plane */
+    int cap_usable;
     /* core profiles: the resolved depth goes back through an R32F texture and
      * a program writing gl_FragDepth (made at stin_create; the texture at the
      * first frame, grown, never shrunk) */
@@ -88,6 +92,10 @@ void stin__csg_init(struct stin_context *ctx);
 void stin__csg_release(struct stin_context *ctx);
 int stin__csg_resolve(struct stin_context *ctx, const stin__path *path);
 void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
+/* GL4: an R32F texture of the resolved depth at the viewport's corner
+ * (texel (0, 0) is the viewport's first pixel), left bound on unit 0; 0
+ * when this frame resolved nothing. */
+GLuint stin__csg_depth_texture(struct stin_context *ctx);
 /* The faces of the resolved products as draws (csg.c), after the resolve. */
 void stin__csg_faces(struct stin_context *ctx);
 /* Around a face draw of a path's pass: depth LESS becomes EQUAL, the face
@@ -95,6 +103,17 @@ void stin__csg_faces(struct stin_context *ctx);
  * pass for the back sides the eye sees); end restores the pass state. */
 int stin__csg_face_begin(struct stin_context *ctx, const stin__draw *d, stin__pass_state *saved);
 void stin__csg_face_end(struct stin_context *ctx, const stin__pass_state *saved);
+
+/* The near and far planes (csg_near.c). The cap lies at window depth
+ * STIN__CSG_CAP_DEPTH (2^-10: just behind the near plane, far from any
+ * other surface's depth). */
+#define STIN__CSG_CAP_DEPTH (1.0f / 1024.0f)
+void stin__csg_cap_init(struct stin_context *ctx);
+/* 0 when the frame's camera has no usable cap plane (singular). */
+int stin__csg_cap_transform(const struct stin_context *ctx, float out[16]);
+/* Whether the frame's near and far planes cut d's bounding box. */
+void stin__csg_planes_cut(const struct stin_context *ctx, const stin__draw *d, int *near_cut,
+                          int *far_cut);
 
 /* A material checked and its defaults applied (frame.c; stin_draw's rules). */
 stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,

@@ -108,13 +108,11 @@ static void read_stencil(stin_context *ctx, const resolve *r)
 
 #define GL_R32F 0x822E
 
-/* Core profiles: the result into the R32F texture (grown to the viewport)
- * and a screen quad writing it as gl_FragDepth. */
-static void write_depth_core(stin_context *ctx, const resolve *r)
+/* The result into the R32F texture (grown to the viewport), left bound on unit 0. */
+static void upload_result(stin_context *ctx, const resolve *r)
 {
     stin__csg_state *c = &ctx->csg;
     stin__unpack_saved saved;
-    float origin[4];
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, c->depth_tex);
     stin__unpack_begin(ctx, &saved);
     if (r->w > c->tex_width || r->h > c->tex_height) {
@@ -125,6 +123,15 @@ static void write_depth_core(stin_context *ctx, const resolve *r)
     }
     GL(ctx, TexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, r->w, r->h, GL_RED, GL_FLOAT, r->result);
     stin__unpack_end(ctx, &saved);
+}
+
+/* Core profiles: the result into the R32F texture and a screen quad
+ * writing it as gl_FragDepth. */
+static void write_depth_core(stin_context *ctx, const resolve *r)
+{
+    stin__csg_state *c = &ctx->csg;
+    float origin[4];
+    upload_result(ctx, r);
     GL(ctx, UseProgram)(c->depth_prog);
     ctx->glsl_surface.current = NULL;
     GL(ctx, Uniform1i)(c->u_depth, 0);
@@ -191,24 +198,26 @@ static void clear(stin_context *ctx, GLbitfield bits)
     GL(ctx, Clear)(bits);
 }
 
-/* The face a primitive shows: its front faces, or its back faces where it
- * is complemented; a mirroring transform swaps which winding is front. */
+/* The face a primitive does not show (culled): it shows its front faces,
+ * or its back faces where it is complemented; a mirroring transform swaps
+ * which winding is front. */
 static GLenum culled_face(const stin__draw *d, int complemented)
 {
     int mirrored = stin__mat4_det(d->transform) < 0.0;
     return (complemented != mirrored) ? GL_FRONT : GL_BACK;
 }
 
-/* Layer k (from 1) of d's candidate faces into the cleared depth. */
+/* Layer k (from 1) of a candidate surface (d's faces but `culled`) into
+ * the cleared depth. */
 static void draw_layer(stin_context *ctx, const stin__path *path, const stin__draw *d,
-                       int complemented, int k)
+                       GLenum culled, int k)
 {
     stin__pass_state ps = stin__pass_defaults;
     ps.depth_test = 1;
     ps.depth_func = GL_ALWAYS;
     ps.color_write = 0;
     ps.cull = 1;
-    ps.cull_face = culled_face(d, complemented);
+    ps.cull_face = culled;
     ps.stencil_test = 1;
     ps.front.func = GL_EQUAL;
     ps.front.ref = k - 1;
@@ -220,13 +229,22 @@ static void draw_layer(stin_context *ctx, const stin__path *path, const stin__dr
     ctx->stats.passes++;
 }
 
+/* How a term's parity is counted: the faces in front of the candidate, or
+ * (a primitive the near plane cuts) the faces behind it, depth-clamped
+ * where the context can (csg_near.c). */
+typedef struct counting {
+    int behind, clamp;
+} counting;
+
 /* Primitive d whole, toggling stencil bit `bit` where its faces lie in front
- * of the candidate's depth. */
-static void draw_parity(stin_context *ctx, const stin__path *path, const stin__draw *d, int bit)
+ * of the candidate's depth (behind it, counting from behind). */
+static void draw_parity(stin_context *ctx, const stin__path *path, const stin__draw *d, int bit,
+                        const counting *how)
 {
     stin__pass_state ps = stin__pass_defaults;
     ps.depth_test = 1;
-    ps.depth_func = GL_LESS;
+    ps.depth_func = how->behind ? GL_GREATER : GL_LESS;
+    ps.depth_clamp = (unsigned char)how->clamp;
     ps.depth_write = 0;
     ps.color_write = 0;
     ps.stencil_test = 1;
@@ -241,7 +259,8 @@ static void draw_parity(stin_context *ctx, const stin__path *path, const stin__d
      * plane takes it away, an intersected one keeps it, a neighbour's face
      * touching it cancels out (the reference applies crossings at one
      * distance together). Pulled toward the eye by the depth slope and 4
-     * units: faces that near are the same plane. */
+     * units: faces that near are the same plane (and, counted from behind,
+     * not behind it). */
     ps.polygon_offset = 1;
     ps.offset_factor = 0.0f;
     ps.offset_units = -OFFSET_UNITS;
@@ -251,7 +270,8 @@ static void draw_parity(stin_context *ctx, const stin__path *path, const stin__d
 
 /* The candidate's pixels that a batch of the term's other literals keeps. */
 static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
-                         const stin__csg_product *p, const uint32_t *lits, uint32_t n)
+                         const stin__csg_product *p, const uint32_t *lits, uint32_t n,
+                         const counting *how)
 {
     unsigned char want = 0, mask = 0;
     uint32_t j;
@@ -260,7 +280,7 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
     for (j = 0; j < n; j++) {
         const stin__draw *d =
             &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lits[j])];
-        draw_parity(ctx, path, d, (int)j);
+        draw_parity(ctx, path, d, (int)j, how);
         mask |= (unsigned char)(1u << j);
         if (!STIN__CSG_COMPLEMENTED(lits[j]))
             want |= (unsigned char)(1u << j); /* odd: inside */
@@ -272,33 +292,42 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
             r->candidate[i] = 2.0f;
 }
 
-/* Literal `self` of term t as the candidate: every layer, tested against
- * the term's other literals, kept where nearer. */
-static void candidate(stin_context *ctx, const stin__path *path, resolve *r,
-                      const stin__csg_product *p, const stin__csg_term *t, uint32_t self)
+/* The layer count of the surface just drawn as layer 1 (its stencil holds
+ * every pixel's fragment count). */
+static int depth_complexity(stin_context *ctx, resolve *r)
 {
-    uint32_t lit = ctx->csg.literals[t->first + self], others[8], n, j;
-    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
-    int complemented = (int)STIN__CSG_COMPLEMENTED(lit), layers = 1, k;
+    unsigned char most = 0;
+    size_t i;
+    read_stencil(ctx, r);
+    for (i = 0; i < r->pixels; i++)
+        if (r->stencil[i] > most)
+            most = r->stencil[i];
+    if (most == 255u && !ctx->csg.said_layers) {
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                  "goldfeather: a primitive is 255 or more layers deep; layers past "
+                  "255 are not drawn");
+        ctx->csg.said_layers = 1;
+    }
+    return most;
+}
+
+/* A candidate surface of term t (d's faces but `culled`; the term's literal
+ * `self`, or none for the near-plane cap): every layer, tested against the
+ * term's other literals, kept where nearer. Returns whether it kept any
+ * pixel. */
+static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
+                     const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
+                     const stin__draw *d, GLenum culled, const counting *how)
+{
+    uint32_t others[8], n, j;
+    int layers = 1, k, kept = 0;
     size_t i;
     for (k = 1; k <= layers; k++) {
         int any = 0;
         clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        draw_layer(ctx, path, d, complemented, k);
-        if (k == 1) { /* every fragment counted: the depth complexity */
-            unsigned char most = 0;
-            read_stencil(ctx, r);
-            for (i = 0; i < r->pixels; i++)
-                if (r->stencil[i] > most)
-                    most = r->stencil[i];
-            layers = most;
-            if (most == 255u && !ctx->csg.said_layers) {
-                stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                          "goldfeather: a primitive is 255 or more layers deep; layers past "
-                          "255 are not drawn");
-                ctx->csg.said_layers = 1;
-            }
-        }
+        draw_layer(ctx, path, d, culled, k);
+        if (k == 1) /* every fragment counted: the depth complexity */
+            layers = depth_complexity(ctx, r);
         read_depth(ctx, r, r->candidate);
         for (i = 0; i < r->pixels; i++)
             if (r->candidate[i] >= r->result[i]) /* no layer, or no nearer */
@@ -313,15 +342,85 @@ static void candidate(stin_context *ctx, const stin__path *path, resolve *r,
                 continue;
             others[n++] = ctx->csg.literals[t->first + j];
             if (n == (uint32_t)r->bits) {
-                parity_batch(ctx, path, r, p, others, n);
+                parity_batch(ctx, path, r, p, others, n, how);
                 n = 0;
             }
         }
         if (n)
-            parity_batch(ctx, path, r, p, others, n);
+            parity_batch(ctx, path, r, p, others, n, how);
         for (i = 0; i < r->pixels; i++)
-            if (r->candidate[i] < r->result[i])
+            if (r->candidate[i] < r->result[i]) {
                 r->result[i] = r->candidate[i];
+                kept = 1;
+            }
+    }
+    return kept;
+}
+
+/* How term t counts, and whether the near plane may lie inside it (every
+ * plain literal's box cut by the near plane): then it has a cap candidate.
+ * Counting from behind needs the far plane to cut nothing, or depth
+ * clamping; where the near plane and the far plane both cut and there is
+ * none, the term counts from the front (logged once). */
+static int term_counting(stin_context *ctx, const stin__csg_product *p, const stin__csg_term *t,
+                         counting *how)
+{
+    int any_near = 0, any_far = 0, plain_all_near = 1;
+    uint32_t j;
+    how->behind = how->clamp = 0;
+    for (j = 0; j < t->count; j++) {
+        uint32_t lit = ctx->csg.literals[t->first + j];
+        int near_cut, far_cut;
+        stin__csg_planes_cut(ctx, &ctx->csg.primitives[p->first_primitive +
+                                                        STIN__CSG_PRIMITIVE_OF(lit)],
+                             &near_cut, &far_cut);
+        any_near |= near_cut;
+        any_far |= far_cut;
+        if (!STIN__CSG_COMPLEMENTED(lit) && !near_cut)
+            plain_all_near = 0;
+    }
+    if (!any_near)
+        return 0;
+    how->clamp = any_far && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP)) != 0;
+    if (any_far && !how->clamp) {
+        if (!ctx->csg.said_planes) {
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "goldfeather: the near and the far plane both cut a product's primitive "
+                      "and the context has no depth clamp; where the eye is inside it the "
+                      "product is wrong (move the far plane out)");
+            ctx->csg.said_planes = 1;
+        }
+        return 0;
+    }
+    how->behind = 1;
+    return plain_all_near && ctx->csg.cap_usable;
+}
+
+/* Every candidate of product p: each literal's surface of each term, and
+ * the near-plane cap where a term may hold the near plane. */
+static void resolve_product(stin_context *ctx, const stin__path *path, resolve *r,
+                            stin__csg_product *p)
+{
+    uint32_t ti, li;
+    p->capped = 0;
+    for (ti = 0; ti < p->term_count; ti++) {
+        const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
+        counting how;
+        int cap = term_counting(ctx, p, t, &how);
+        for (li = 0; li < t->count; li++) {
+            uint32_t lit = ctx->csg.literals[t->first + li];
+            const stin__draw *d =
+                &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+            (void)candidate(ctx, path, r, p, t, li, d,
+                            culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), &how);
+        }
+        if (cap) {
+            stin__draw d = ctx->csg.primitives[p->first_primitive];
+            d.mesh_slot = ctx->csg.cap_slot;
+            stin__memcopy(d.transform, ctx->csg.cap_transform, sizeof d.transform);
+            /* the cap's quad faces the window whatever the camera mirrors */
+            p->capped |= candidate(ctx, path, r, p, t, t->count, &d, GL_BACK, &how);
+        }
     }
 }
 
@@ -363,27 +462,33 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
 {
     resolve r;
     pack_saved saved;
-    uint32_t pi, ti, li;
+    uint32_t pi;
     ctx->csg.resolved = 0;
     if (!ctx->csg.product_count || !usable(ctx, &r))
         return 0;
     pack_begin(ctx, &saved);
     read_depth(ctx, &r, r.result); /* what the buffer holds stays where nearer */
+    ctx->csg.cap_usable = ctx->csg.cap_slot != STIN__NO_SLOT &&
+                          stin__csg_cap_transform(ctx, ctx->csg.cap_transform);
     path->geometry_begin(ctx);
-    for (pi = 0; pi < ctx->csg.product_count; pi++) {
-        const stin__csg_product *p = &ctx->csg.products[pi];
-        for (ti = 0; ti < p->term_count; ti++) {
-            const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
-            for (li = 0; li < t->count; li++)
-                candidate(ctx, path, &r, p, t, li);
-        }
-    }
+    for (pi = 0; pi < ctx->csg.product_count; pi++)
+        resolve_product(ctx, path, &r, &ctx->csg.products[pi]);
     path->geometry_end(ctx);
     pack_end(ctx, &saved);
     write_depth(ctx, path, &r, GL_ALWAYS);
     clear(ctx, GL_STENCIL_BUFFER_BIT);
     ctx->csg.resolved = 1;
     return 1;
+}
+
+GLuint stin__csg_depth_texture(stin_context *ctx)
+{
+    resolve r;
+    if (!ctx->csg.resolved || !ctx->csg.depth_tex || !usable(ctx, &r))
+        return 0;
+    if (!ctx->csg.depth_prog) /* compatibility profiles wrote it with glDrawPixels */
+        upload_result(ctx, &r);
+    return ctx->csg.depth_tex;
 }
 
 /* The resolved depth again into the bound framebuffer, depth LESS against
@@ -396,38 +501,48 @@ void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
     write_depth(ctx, path, &r, GL_LESS);
 }
 
+/* The R32F texture of the resolved depth (GL4 lighting: core profiles
+ * write the depth through it; vdsm's position buffer reads it). */
+static void make_depth_texture(stin_context *ctx)
+{
+    GLint bound = 0;
+    GL(ctx, GenTextures)(1, &ctx->csg.depth_tex);
+    GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &bound);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->csg.depth_tex);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)bound);
+    ctx->csg.tex_width = ctx->csg.tex_height = 0;
+}
+
 void stin__csg_init(stin_context *ctx)
 {
     stin__csg_state *c = &ctx->csg;
     char msg[160], why[200];
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER ||
-        (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)))
-        return; /* csg-off, or glDrawPixels writes the depth */
-    if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_GLSL150) {
-        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                     "goldfeather writes depth with glDrawPixels (compatibility profile) or a "
-                     "GLSL 1.50 program (GL4 lighting)");
+    int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
+    c->cap_slot = STIN__NO_SLOT;
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER)
         return;
+    if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION))) {
+        if (!gl4) {
+            stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
+                         "goldfeather writes depth with glDrawPixels (compatibility profile) or "
+                         "a GLSL 1.50 program (GL4 lighting)");
+            return;
+        }
+        c->depth_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_depth.frag",
+                                            NULL, 0, msg, sizeof msg);
+        if (!c->depth_prog) {
+            stin__formatf(why, sizeof why, "its depth program failed to build (%s)", msg);
+            stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF, why);
+            return;
+        }
+        c->u_depth = GL(ctx, GetUniformLocation)(c->depth_prog, "u_depth");
+        c->u_origin = GL(ctx, GetUniformLocation)(c->depth_prog, "u_origin");
     }
-    c->depth_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_depth.frag", NULL, 0,
-                                        msg, sizeof msg);
-    if (!c->depth_prog) {
-        stin__formatf(why, sizeof why, "its depth program failed to build (%s)", msg);
-        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF, why);
-        return;
-    }
-    c->u_depth = GL(ctx, GetUniformLocation)(c->depth_prog, "u_depth");
-    c->u_origin = GL(ctx, GetUniformLocation)(c->depth_prog, "u_origin");
-    GL(ctx, GenTextures)(1, &c->depth_tex);
-    {
-        GLint bound = 0;
-        GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &bound);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, c->depth_tex);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)bound);
-    }
-    c->tex_width = c->tex_height = 0;
+    if (gl4)
+        make_depth_texture(ctx);
+    stin__csg_cap_init(ctx);
 }
 
 void stin__csg_release(stin_context *ctx)

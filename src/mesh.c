@@ -363,7 +363,7 @@ stin_result stin_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uint32_t 
     return STIN_OK;
 }
 
-static void release(stin_context *ctx, stin__mesh_slot *m)
+static void delete_arrays(stin_context *ctx, stin__mesh_slot *m)
 {
     if (m->vbo)
         GL(ctx, DeleteBuffers)(1, &m->vbo);
@@ -371,6 +371,12 @@ static void release(stin_context *ctx, stin__mesh_slot *m)
         GL(ctx, DeleteBuffers)(1, &m->ibo);
     if (m->vao)
         GL(ctx, DeleteVertexArrays)(1, &m->vao);
+    m->vbo = m->ibo = m->vao = 0;
+}
+
+static void release(stin_context *ctx, stin__mesh_slot *m)
+{
+    delete_arrays(ctx, m);
     stin__vdsm_mesh_release(ctx, m);
     stin__range_give(&ctx->vertex_ranges, m->first_vertex);
     stin__range_give(&ctx->triangle_ranges, m->first_triangle);
@@ -399,7 +405,31 @@ void stin_destroy_mesh(stin_context *ctx, stin_mesh mesh)
 void stin__mesh_release_all(stin_context *ctx)
 {
     uint32_t i;
+    stin__mesh_slot *own = &ctx->meshes[ctx->desc.max_meshes];
     for (i = 0; i < ctx->desc.max_meshes; i++)
         if (ctx->meshes[i].handle.alive)
             release(ctx, &ctx->meshes[i]);
+    delete_arrays(ctx, own);
+    stin__memzero(own, sizeof *own);
+}
+
+uint32_t stin__mesh_builtin(stin_context *ctx, const stin__vertex *v, uint32_t vertex_count,
+                            const uint32_t *tris, uint32_t tri_count)
+{
+    uint32_t slot = ctx->desc.max_meshes, i;
+    stin__mesh_slot *m = &ctx->meshes[slot];
+    if (vertex_count > STIN__BUILTIN_VERTICES || tri_count > STIN__BUILTIN_TRIANGLES)
+        return STIN__NO_SLOT;
+    stin__memzero(m, sizeof *m);
+    m->first_vertex = ctx->desc.max_vertices;
+    m->first_triangle = ctx->desc.max_triangles;
+    m->vertex_count = m->info.vertex_count = vertex_count;
+    m->triangle_count = m->info.triangle_count = tri_count;
+    for (i = 0; i < vertex_count; i++)
+        ctx->vertices[m->first_vertex + i] = v[i];
+    for (i = 0; i < 3u * tri_count; i++)
+        ctx->indices[3u * m->first_triangle + i] = tris[i];
+    bounds(&m->info, ctx->vertices + m->first_vertex, vertex_count);
+    upload(ctx, m);
+    return slot;
 }

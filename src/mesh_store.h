@@ -63,6 +63,14 @@ typedef struct stin__texture_slot {
 
 stin__mesh_slot *stin__mesh_lookup(const stin_context *ctx, stin_mesh mesh, uint32_t *slot);
 void stin__mesh_release_all(stin_context *ctx);
+/* stin's own mesh: the slot after the caller's (index desc.max_meshes), its
+ * vertices and triangles after theirs in the block, no handle; made at
+ * stin_create by whoever needs it (CSG's near-plane cap), released with the
+ * caller's. Never a shadow caster. */
+#define STIN__BUILTIN_VERTICES 4u
+#define STIN__BUILTIN_TRIANGLES 2u
+uint32_t stin__mesh_builtin(stin_context *ctx, const stin__vertex *v, uint32_t vertex_count,
+                            const uint32_t *tris, uint32_t tri_count);
 void stin__texture_release_all(stin_context *ctx);
 stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex);
 

@@ -14,9 +14,10 @@ typedef struct stin__draw {
     stin_material material;
     float sort_depth;  /* eye-space distance of the bounds centre, for blending order */
     unsigned char csg; /* 0; or a CSG primitive's faces on the resolved depth, drawn
-                        * depth EQUAL: STIN__CSG_FRONT, STIN__CSG_BACK (normals flipped) */
+                        * depth EQUAL: STIN__CSG_FRONT, STIN__CSG_BACK (normals flipped),
+                        * STIN__CSG_CAP (the near plane's cut, csg_near.c) */
 } stin__draw;
-enum { STIN__CSG_FRONT = 1, STIN__CSG_BACK = 2 };
+enum { STIN__CSG_FRONT = 1, STIN__CSG_BACK = 2, STIN__CSG_CAP = 3 };
 
 /* The displacement chunk's uniforms in a program that draws meshes
  * (surface_displace.c); camera: the program draws through the frame's

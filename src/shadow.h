@@ -129,7 +129,7 @@ typedef struct stin__vdsm_state {
     GLuint position_prog, facing_prog, polygon_prog, query;
     GLuint position_tess, polygon_tess; /* "displace-tess": the two, tessellated */
     int tess_active;        /* they are swapped into position_prog and polygon_prog */
-    GLint pos_model, pos_view_proj, pos_camera;
+    GLint pos_model, pos_view_proj, pos_camera, pos_csg, pos_csg_depth;
     GLint face_position, face_normal, face_light;
     GLint poly_model, poly_view_proj, poly_light, poly_camera, poly_viewport, poly_grow,
         poly_cull_lit, poly_caps, poly_position, poly_normal;

@@ -68,6 +68,8 @@ static void locate(stin_context *ctx)
     LOC(pos_model, position_prog, "u_model");
     LOC(pos_view_proj, position_prog, "u_view_proj");
     LOC(pos_camera, position_prog, "u_camera");
+    LOC(pos_csg, position_prog, "u_csg");
+    LOC(pos_csg_depth, position_prog, "u_csg_depth");
     LOC(face_position, facing_prog, "u_position");
     LOC(face_normal, facing_prog, "u_normal");
     LOC(face_light, facing_prog, "u_light");

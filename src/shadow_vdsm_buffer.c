@@ -133,11 +133,13 @@ static void camera_point(stin_context *ctx, float out[4])
 /* The position program with the frame's camera, meshes to be bound again. */
 static void use_position_program(stin_context *ctx)
 {
+    static const float off[4] = {0, 0, 0, 0};
     stin__vdsm_state *v = &ctx->vdsm;
     GL(ctx, UseProgram)(v->position_prog);
     ctx->glsl_surface.current = NULL;
     GL(ctx, UniformMatrix4fv)(v->pos_view_proj, 1, GL_FALSE, ctx->view_proj);
     GL(ctx, Uniform4fv)(v->pos_camera, 1, v->camera);
+    GL(ctx, Uniform4fv)(v->pos_csg, 1, off);
     ctx->bound_mesh = 0xffffffffu;
 }
 
@@ -175,22 +177,34 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
 
 /* After the CSG resolve (frame.c): the products' surfaces into the position
  * buffer too. The buffer was drawn before the frame's target (a light
- * pre-pass), so the resolved depth goes into its depth (LESS against the
- * draws there) and the products' faces are drawn on it, depth EQUAL. */
+ * pre-pass): the products' faces are drawn over it, depth LEQUAL against
+ * the draws there without writing depth, each fragment kept only where it
+ * lies on the resolved surface (the shader's test against the resolve's
+ * depth texture, within 8 steps of a 24-bit depth buffer: 2^-21). */
 void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
 {
     stin__vdsm_state *v = &ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     stin__pass_state ps = stin__pass_defaults, saved;
+    GLuint resolved;
+    float csg[4] = {0.0f, 0.0f, 1.0f, 1.0f / 2097152.0f};
     uint32_t i;
+    (void)path;
     if (!v->ready || !ctx->csg.face_count)
         return;
+    resolved = stin__csg_depth_texture(ctx);
+    if (!resolved)
+        return;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
-    stin__csg_depth_again(ctx, path);
     ps.depth_test = 1;
-    ps.depth_func = GL_LESS;
+    ps.depth_func = GL_LEQUAL;
+    ps.depth_write = 0;
     stin__pass_apply(ctx, &ps);
     use_position_program(ctx);
+    GL(ctx, Uniform1i)(v->pos_csg_depth, 0);
+    csg[0] = (float)vp[0];
+    csg[1] = (float)vp[1];
+    GL(ctx, Uniform4fv)(v->pos_csg, 1, csg);
     for (i = 0; i < ctx->csg.face_count; i++)
         if (stin__csg_face_begin(ctx, &ctx->csg.faces[i], &saved)) {
             stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &ctx->csg.faces[i]);

@@ -1072,10 +1072,11 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * and visibility outputs, the screen mask) with depth EQUAL on the
  * resolved surface, a complemented primitive's back faces with their
  * normals turned to the eye (GL1: two-sided lighting for them). Products
- * receive shadows from every technique (volume, map-pcf, map-depth and
- * map-combine are tested against the exact reference; vdsm gets their
- * surfaces into its position buffer but differs from the reference on about
- * 1% of the pixels there: not done) and cast none. Products are opaque; a primitive's normal and height maps are
+ * receive shadows from every technique (all five are tested against the
+ * exact reference; vdsm's position buffer keeps a face's fragment where its
+ * window depth lies within 2^-21 of the resolved depth rather than depth
+ * EQUAL, as the resolve's float copy may round otherwise into that buffer's
+ * depth format) and cast none. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + other literals / 8) per
  * literal of each term, each layer reading depth back (and the stencil
  * once per batch), so a resolve costs read-backs more than fill. Memory:
@@ -1086,9 +1087,21 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * cleared to 0 after the resolve (its contents are the frame's anyway, see
  * GL STATE); the caller's pixel pack state (alignment, row length, skips,
  * a bound pixel pack buffer) is set aside around the read-backs and given
- * back, unpack state as for textures. Not done: the camera inside a
- * product (the near plane is not capped: a product that holds the near
- * plane shows what lies behind it there), casting shadows, vdsm. */
+ * back, unpack state as for textures.
+ * The near and far planes: where the near plane cuts a primitive of a term
+ * (its bounding box), that primitive has lost the faces in front of the
+ * plane, so the term's parity is counted from behind instead (faces behind
+ * the candidate; the same coincidence rule). That needs the far plane to
+ * cut none of the term's primitives, or depth clamping (GL 3.2 or
+ * ARB_depth_clamp); without either the term counts from the front and a
+ * warning is logged once. Where the near plane lies inside a product (the
+ * camera inside the solid), the product is cut open there: a cap at window
+ * depth 2^-10 (just behind the near plane), facing the eye, in the
+ * material of the product's first primitive, resolved as one more
+ * candidate of each term whose plain primitives the near plane all cuts
+ * and drawn like a face in every pass. The cap's quad is stin's own mesh
+ * (one slot, 4 vertices and 2 triangles more than the desc's capacities,
+ * counted by stin_memory_size). Not done: casting shadows. */
 
 /* The normal form of the frame's product `product` (0 = the first accepted
  * by stin_draw_csg since stin_begin_frame, until the next begin): the

@@ -131,8 +131,11 @@ static int primitive_of(const ref_csg_product *p, unsigned object)
 
 #define SAME_T(a, b) (fabsf((a) - (b)) <= 1e-6f * fmaxf(fabsf(a), 1.0f))
 
+#define CAP (-2)
+
 /* The first crossing (of the sorted list, one product's) where the
- * expression turns true; -1 for none. inside: primitive_count bytes. */
+ * expression turns true; CAP where it holds at the near plane; -1 for
+ * none. inside: primitive_count bytes. */
 static int first_surface(const ref_csg_product *p, const crossing *x, int n, unsigned char *inside)
 {
     int i, k;
@@ -146,7 +149,7 @@ static int first_surface(const ref_csg_product *p, const crossing *x, int n, uns
             inside[k] = balance[k] > 0;
     }
     if (eval(p->nodes, p->node_count - 1, inside))
-        return -1; /* holds the near plane: not capped */
+        return CAP; /* holds the near plane */
     for (i = 0; i < n;) {
         int end = i, pick = -1;
         while (end < n && SAME_T(x[end].t, x[i].t))
@@ -184,6 +187,23 @@ static int drop_edge_repeats(crossing *x, int n)
     return o;
 }
 
+/* The cap's hit at view distance t along dir: facing the eye. */
+static void fill_cap(const reference *r, const ref_csg_product *p, const ref_camera_frame *cf,
+                     const float eye[3], const double dir[3], double t, ref_hit *h)
+{
+    double len = 0.0;
+    memset(h, 0, sizeof *h);
+    h->hit = 1;
+    h->object = p->objects[0];
+    for (int k = 0; k < 3; k++) {
+        h->P[k] = (float)(eye[k] + t * dir[k]);
+        h->N[k] = h->Ng[k] = (float)-cf->f[k];
+        len += t * dir[k] * t * dir[k];
+    }
+    h->t = (float)sqrt(len);
+    (void)r;
+}
+
 int reference_csg_primary(const reference *r, const ref_csg_product *products, int count,
                           int width, int height, ref_hit *hits, int *product_of)
 {
@@ -216,6 +236,9 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
         return 0;
     }
     const float *eye = r->s->camera.eye;
+    /* the view distance of window depth REF_CSG_CAP_DEPTH */
+    const double cn = r->s->camera.near_plane, cfar = r->s->camera.far_plane;
+    const double cap_t = cfar * cn / (cfar - REF_CSG_CAP_DEPTH * (cfar - cn));
     for (int y = 0; y < height && ok; y++)
         for (int x = 0; x < width; x++) {
             size_t at = (size_t)y * (size_t)width + (size_t)x;
@@ -267,6 +290,13 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
                         mine[n++] = c.list[i];
                 n = drop_edge_repeats(mine, n);
                 k = first_surface(&products[p], mine, n, inside);
+                if (k == CAP && cap_t < t_best) {
+                    t_best = cap_t;
+                    fill_cap(r, &products[p], &cf, eye, dir, cap_t, h);
+                    if (product_of)
+                        product_of[at] = p;
+                    continue;
+                }
                 if (k < 0 || !(mine[k].t < t_best) || mine[k].t > r->s->camera.far_plane)
                     continue;
                 t_best = mine[k].t;

@@ -28,6 +28,8 @@ typedef struct ref_csg_product {
  * on their own in reference_csg_primary and no longer cast in any
  * visibility query (stin's products receive shadows and cast none). 0 on a
  * bad object index or out of memory. */
+#define REF_CSG_CAP_DEPTH (1.0 / 1024.0)
+
 int reference_csg_mark(reference *r, const ref_csg_product *products, int count);
 
 /* Primary hits as reference_primary, with the products: the nearest of the
@@ -38,8 +40,10 @@ int reference_csg_mark(reference *r, const ref_csg_product *products, int count)
  * turned toward the eye where that crossing is an exit (a complemented
  * primitive's inside wall). Whether the ray starts inside a primitive is
  * its exits less its entries along the whole ray; where the product holds
- * the near plane (the camera inside the solid) it is not a hit there: stin
- * does not cap it. product_of (width * height entries, or NULL) gets the
+ * the near plane (the camera inside the solid) its surface is the cap: the
+ * point at window depth 2^-10 (stin's cap, REF_CSG_CAP_DEPTH) on the ray,
+ * facing the eye, of the product's first primitive's object (triangle 0,
+ * u = v = 0, no uv). product_of (width * height entries, or NULL) gets the
  * product each pixel shows, -1 for an ordinary object or the background.
  * The products' objects must be marked (reference_csg_mark). Returns 1, or
  * 0 on bad arguments, unmarked primitives, out of memory or an Embree
