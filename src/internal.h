@@ -93,6 +93,7 @@ struct stin_context {
     stin__export_state visibility; /* the visibility map (visibility_export.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg.c) */
     stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
+    stin__coloured_state coloured; /* translucent shadows' colour maps (translucent_coloured.c) */
 
     /* surface detail */
     struct {

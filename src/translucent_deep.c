@@ -198,11 +198,6 @@ int stin__deep_active(const stin_context *ctx)
     return ctx->deep.ready && ctx->deep.frame_transparent;
 }
 
-int stin__deep_skips(const stin_context *ctx, const stin__draw *d)
-{
-    return ctx->deep.ready && d->material.color[3] < 1.0f;
-}
-
 /* The transparent draws through the peel program (albedo on unit 0), in
  * the caller's order: the depth test makes the layers independent of it,
  * and the order test sees that (the camera's far-to-near order would hide
