@@ -498,7 +498,8 @@ static void test_texture_unit_budget(void **state)
     assert_int_equal(sel.surface_unit, 1);
     assert_int_equal(sel.shadow_unit, 3); /* volumes need none ... */
     assert_int_equal(sel.shadow_spare_units, 1); /* ... and take a spare one for the mask */
-    assert_int_equal(sel.units_used, 4);
+    assert_int_equal(sel.translucent_unit, 4);   /* coloured's two after them */
+    assert_int_equal(sel.units_used, 6);
     /* with the surface's units the last, no unit is spare: volumes run without */
     c.max_texture_image_units = 3;
     assert_int_equal(stin__select(&c, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
