@@ -26,6 +26,8 @@ typedef struct stin__deep_state {
     GLuint layers[2];
     GLuint depth;          /* the peel passes' depth test (DEPTH_COMPONENT24) */
     GLuint fbo, program, query;
+    GLuint flag;           /* GL 4.3: the early stop's storage flag (then no query) */
+    int flagged;           /* the program sets the flag (deep_peel_flag.frag) */
     GLint u_model, u_view_proj, u_albedo, u_albedo_tex, u_has_albedo_tex, u_previous,
         u_previous_slice, u_mono;
     stin__displace_locs displace;

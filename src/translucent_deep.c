@@ -9,7 +9,10 @@
  * one array texture, odd ones in the other, so a pass never reads what it
  * writes. Spot and directional lights peel one face fitted as the shadow
  * maps are; point lights six 90-degree faces. A face stops at the first
- * layer an occlusion query finds empty (later layers would be empty too);
+ * layer that drew nothing (later layers would be empty too): on GL 4.3 (the
+ * compute capability, with shader storage buffers) the peel shader sets a
+ * 4-byte flag read back after the pass, on GL 3.2-4.2 an occlusion query
+ * counts the pass's samples;
  * the lookup stops at an empty layer, so stale texels beyond it are never
  * read and the image is the same with every layer peeled. Opaque casters
  * stay the shadows technique's; the lit programs multiply its visibility by
@@ -44,6 +47,8 @@ void stin__deep_release(stin_context *ctx)
         GL(ctx, DeleteProgram)(s->program);
     if (s->query)
         GL(ctx, DeleteQueries)(1, &s->query);
+    if (s->flag)
+        GL(ctx, DeleteBuffers)(1, &s->flag);
     stin__memzero(s, sizeof *s);
 }
 
@@ -87,14 +92,39 @@ static const char *make_targets(stin_context *ctx)
     return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA32F layer framebuffer is incomplete";
 }
 
+/* 1 when the early stop may use the shader storage flag: GL 4.3's compute
+ * capability, and no debug flag asking for the query. */
+static int flag_wanted(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_COMPUTE)) &&
+           !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_QUERY_STOP);
+}
+
+/* The peel program: with the storage flag (deep_peel_flag.frag) where it is
+ * wanted and builds, else with the query's (deep_peel.frag). */
 static int make_program(stin_context *ctx, char *msg, size_t size)
 {
+    static const char *const chunks[] = {"gl4/deep_peel_layer.glsl", NULL};
     stin__deep_state *s = &ctx->deep;
     stin__program_source src;
     stin__memzero(&src, sizeof src);
     src.vert = "gl4/deep_peel.vert";
-    src.frag = "gl4/deep_peel.frag";
-    s->program = stin__program_build_source(ctx, &src, msg, size);
+    src.frag_chunks = chunks;
+    if (flag_wanted(ctx)) {
+        src.frag = "gl4/deep_peel_flag.frag";
+        s->program = stin__program_build_source(ctx, &src, msg, size);
+        if (s->program)
+            s->flagged = 1;
+        else
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "deep: the storage-flag peel program failed to build (%s); the early "
+                      "stop uses an occlusion query", msg);
+        msg[0] = '\0';
+    }
+    if (!s->program) {
+        src.frag = "gl4/deep_peel.frag";
+        s->program = stin__program_build_source(ctx, &src, msg, size);
+    }
     if (!s->program)
         return 0;
 #define LOC(field, name) s->field = GL(ctx, GetUniformLocation)(s->program, name)
@@ -142,8 +172,16 @@ void stin__deep_init(stin_context *ctx)
         stin__demote(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_SOLID, why);
         return;
     }
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
+    if (s->flagged) { /* the early stop's flag: one uint, cleared before each pass */
+        static const GLuint zero = 0;
+        GL(ctx, GenBuffers)(1, &s->flag);
+        GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, s->flag);
+        GL(ctx, BufferData)(GL_SHADER_STORAGE_BUFFER, (GLsizeiptr)sizeof zero, &zero,
+                            GL_DYNAMIC_READ);
+        GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, 0);
+    } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY)) {
         GL(ctx, GenQueries)(1, &s->query);
+    }
     s->ready = 1;
     stin__gl_check_errors(ctx, "deep set-up");
 }
@@ -224,7 +262,8 @@ static void draw_transparent(stin_context *ctx)
 static void peel_face(stin_context *ctx, int face, const float view[16], const float proj[16])
 {
     stin__deep_state *s = &ctx->deep;
-    int stop_early = s->query && !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_NO_EARLY_STOP);
+    int stop_early = (s->query || s->flag) && !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_NO_EARLY_STOP);
+    static const GLuint zero = 0;
     float view_proj[16];
     uint32_t k;
     stin__mat4_mul(view_proj, proj, view);
@@ -243,12 +282,18 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
         GL(ctx, Uniform1i)(s->u_previous_slice,
                            k > 0 ? (GLint)((uint32_t)face * s->slices + (k - 1u) / 2u) : -1);
-        if (stop_early)
+        if (stop_early && s->flag)
+            GL(ctx, BufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof zero, &zero);
+        else if (stop_early)
             GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, s->query);
         draw_transparent(ctx);
         ctx->stats.deep_layers++;
         ctx->stats.passes++;
-        if (stop_early) {
+        if (stop_early && s->flag) { /* the shader's writes, visible to the read-back */
+            GL(ctx, MemoryBarrier)(GL_BUFFER_UPDATE_BARRIER_BIT);
+            GL(ctx, GetBufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof drawn,
+                                      &drawn);
+        } else if (stop_early) {
             GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
             GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &drawn);
         }
@@ -302,10 +347,14 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
     GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
     GL(ctx, Uniform1i)(s->u_previous, s->unit);
     GL(ctx, Uniform1i)(s->u_mono, ctx->desc.deep_mono);
+    if (s->flag) /* binding 0 of the peel shader (and the generic binding) */
+        GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, s->flag);
     /* the other texture is sampled by no one while its slices are drawn */
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     s->kind = peel_light(ctx, &ctx->lights[li]);
+    if (s->flag)
+        GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);

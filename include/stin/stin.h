@@ -565,8 +565,12 @@ const char *stin_feature_name(stin_feature f);
  * the shadows technique's (exact under vdsm and volume); transparent ones
  * are left out of it (no volume, no shadow polygon, no map-pcf depth) and
  * shadow through the deep map only. A face's peeling stops at the first
- * layer that drew nothing (an occlusion query; STIN_DEBUG_DEEP_NO_EARLY_STOP
- * peels every layer: the same image). Surfaces beyond desc.deep_layers
+ * layer that drew nothing: on GL 4.3 (capability "compute shaders") a flag
+ * in a 4-byte shader storage buffer that the peel shader sets and stin
+ * reads back (binding point 0 and the generic GL_SHADER_STORAGE_BUFFER
+ * binding are left at 0), on GL 3.2-4.2 an occlusion query
+ * (STIN_DEBUG_DEEP_QUERY_STOP: the query everywhere;
+ * STIN_DEBUG_DEEP_NO_EARLY_STOP peels every layer: the same image). Surfaces beyond desc.deep_layers
  * along a ray are not counted (their light passes). Lights are lit one per
  * pass while it is in use, and a frame without transparent draws draws no
  * layer. Blended draws are still drawn unshadowed, and the visibility map
@@ -735,6 +739,9 @@ typedef struct stin_desc {
  * transparent caster is tinted, those in front of it too (tests prove the
  * test is needed) */
 #define STIN_DEBUG_COLOURED_NO_DEPTH 16384u
+/* deep: the early stop by an occlusion query even where GL 4.3's storage
+ * flag could run (the same image and layer count) */
+#define STIN_DEBUG_DEEP_QUERY_STOP 32768u
 
 typedef struct stin_context stin_context;
 

@@ -27,6 +27,9 @@
  *                  visibility and beauty;
  *   early-stop     STIN_DEBUG_DEEP_NO_EARLY_STOP gives bit-identical
  *                  visibility and beauty, with more layers peeled;
+ *   flag-stop      (GL 4.3) the storage flag's early stop against the
+ *                  occlusion query's (STIN_DEBUG_DEEP_QUERY_STOP):
+ *                  bit-identical, the same layers, fewer than every layer;
  *   with-volume, with-map-pcf  the transmittance test with those shadows
  *                  techniques for the opaque casters (glass-panes);
  *   texture        (deep-window) a textured pane's opaque cells cast their
@@ -111,6 +114,42 @@ static void test_early_stop(const deep_case *c, const capture *base, const char 
            "peeled in the visibility frame %u with the early stop, %u without", d,
            base->stats.deep_layers, cap.stats.deep_layers);
     capture_free(&cap);
+}
+
+/* GL 4.3's storage flag against the occlusion query: the same images and
+ * the same layers peeled, fewer than with every layer (so a flag that is
+ * never or always set fails); SKIP where the context has no compute
+ * capability (gl33-core: the query is the early stop there). */
+static void test_flag_stop(const deep_case *c, const capture *base, const char *name)
+{
+    capture query, every;
+    capture_options o;
+    long d;
+    if (!(base->caps_present & STIN_CAP_BIT(STIN_CAP_COMPUTE))) {
+        report(c->r, "SKIP", name, "no %s (GL 4.3, shader storage buffers): the early stop is "
+                                   "the occlusion query here", stin_cap_name(STIN_CAP_COMPUTE));
+        return;
+    }
+    deep_options(c, &o);
+    o.debug_flags = STIN_DEBUG_DEEP_QUERY_STOP;
+    if (!deep_render(c, c->s, &o, &query, name))
+        return;
+    o.debug_flags = STIN_DEBUG_DEEP_NO_EARLY_STOP;
+    if (deep_render(c, c->s, &o, &every, name)) {
+        d = deep_differing(base, &query);
+        report(c->r,
+               d == 0 && base->stats.deep_layers == query.stats.deep_layers &&
+                       base->stats.deep_layers < every.stats.deep_layers
+                   ? "PASS"
+                   : "FAIL",
+               name,
+               "storage flag vs occlusion query: visibility and beauty differ on %ld pixels "
+               "(must be 0); layers peeled %u with the flag, %u with the query (must be equal), "
+               "%u with every layer (must be more)", d, base->stats.deep_layers,
+               query.stats.deep_layers, every.stats.deep_layers);
+        capture_free(&every);
+    }
+    capture_free(&query);
 }
 
 /* The transmittance test with another shadows technique for the opaque
@@ -287,6 +326,8 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
     } else { /* point lights: faces without panes stop after one layer */
         snprintf(name, sizeof name, "%s/%s/deep-early-stop", tier, scene_name);
         test_early_stop(c, &base, name);
+        snprintf(name, sizeof name, "%s/%s/deep-flag-stop", tier, scene_name);
+        test_flag_stop(c, &base, name);
     }
     if (!stack && !colour && !omni) {
         /* glass-panes' opaque casters under the other shadows techniques */
