@@ -25,8 +25,13 @@ void stin__translucent_uniforms(stin_context *ctx, const stin__program *p)
 
 void stin__translucent_frame(stin_context *ctx)
 {
-    stin__deep_frame(ctx);
-    stin__coloured_frame(ctx);
+    int has = 0;
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count && !has; i++)
+        has = ctx->draws[i].material.color[3] < 1.0f;
+    ctx->deep.frame_transparent = ctx->deep.ready && has;
+    ctx->coloured.frame_transparent = ctx->coloured.ready && has;
+    ctx->deep.kind = ctx->coloured.kind = 0;
 }
 
 int stin__translucent_active(const stin_context *ctx)
@@ -56,4 +61,56 @@ void stin__translucent_light_done(stin_context *ctx)
 {
     stin__deep_light_done(ctx);
     stin__coloured_light_done(ctx);
+}
+
+void stin__translucent_draw_casters(stin_context *ctx, GLint u_model, GLint u_albedo,
+                                    GLint u_has_albedo_tex, const stin__displace_locs *dl)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[i];
+        const stin__texture_slot *t;
+        if (d->material.color[3] >= 1.0f)
+            continue;
+        t = stin__texture_lookup(ctx, d->material.albedo);
+        GL(ctx, Uniform4fv)(u_albedo, 1, d->material.color);
+        GL(ctx, Uniform1i)(u_has_albedo_tex, t != NULL);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, t ? t->name : 0);
+        stin__glsl_submit_geometry(ctx, u_model, dl, d);
+    }
+}
+
+/* 1.5 texels' width in world units per unit of the face's clip w, as
+ * map-pcf's normal offset. */
+static float texel_offset(const float proj[16], uint32_t size)
+{
+    return 1.5f * 2.0f / (proj[0] * (float)size);
+}
+
+int stin__translucent_faces(stin_context *ctx, const stin_light_desc *l, uint32_t size,
+                            stin__translucent_face_fn face_fn, float *normal_offset)
+{
+    float view[16], proj[16], n, f;
+    int face;
+    if (l->type != STIN_LIGHT_POINT) {
+        if (!stin__light_camera(ctx, l, view, proj, &n, &f, size))
+            return 0;
+        face_fn(ctx, 0, view, proj);
+        *normal_offset = texel_offset(proj, size);
+        return 1;
+    }
+    for (face = 0; face < STIN__DEEP_FACES; face++) {
+        stin__light_cube_face(ctx, l->position, face, view, proj);
+        face_fn(ctx, face, view, proj);
+    }
+    *normal_offset = texel_offset(proj, size); /* every face is 90 degrees */
+    return 2;
+}
+
+void stin__translucent_unbind(stin_context *ctx, int unit, GLenum target)
+{
+    int i;
+    for (i = 0; i < 2; i++)
+        stin__bind_unit(ctx, unit + i, target, 0);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }

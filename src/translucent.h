@@ -55,8 +55,6 @@ void stin__deep_release(struct stin_context *ctx);
 /* A lit or flat program's lookup uniforms: located once, set per pass. */
 void stin__deep_locate(struct stin_context *ctx, stin__program *p);
 void stin__deep_uniforms(struct stin_context *ctx, const stin__program *p);
-/* At the frame's light pre-passes: whether any draw is transparent. */
-void stin__deep_frame(struct stin_context *ctx);
 /* 1 when lights get deep maps this frame (they are then lit one per pass). */
 int stin__deep_active(const struct stin_context *ctx);
 /* Light li's deep map, peeled now (the frame's target bound back after),
@@ -87,7 +85,6 @@ void stin__coloured_init(struct stin_context *ctx);
 void stin__coloured_release(struct stin_context *ctx);
 void stin__coloured_locate(struct stin_context *ctx, stin__program *p);
 void stin__coloured_uniforms(struct stin_context *ctx, const stin__program *p);
-void stin__coloured_frame(struct stin_context *ctx);
 int stin__coloured_active(const struct stin_context *ctx);
 void stin__coloured_light(struct stin_context *ctx, uint32_t li);
 void stin__coloured_light_done(struct stin_context *ctx);
@@ -97,6 +94,8 @@ void stin__coloured_light_done(struct stin_context *ctx);
 const char *stin__translucent_chunk(const struct stin_context *ctx);
 void stin__translucent_locate(struct stin_context *ctx, stin__program *p);
 void stin__translucent_uniforms(struct stin_context *ctx, const stin__program *p);
+/* At the frame's light pre-passes: whether any draw is transparent (a
+ * frame without one makes no map). */
 void stin__translucent_frame(struct stin_context *ctx);
 /* 1 when lights get maps of their own this frame (lit one per pass). */
 int stin__translucent_active(const struct stin_context *ctx);
@@ -105,5 +104,21 @@ int stin__translucent_active(const struct stin_context *ctx);
 int stin__translucent_skips(const struct stin_context *ctx, const stin__draw *d);
 void stin__translucent_light(struct stin_context *ctx, uint32_t li);
 void stin__translucent_light_done(struct stin_context *ctx);
+
+/* What deep and coloured share (translucent.c). */
+/* The transparent draws, in the caller's order, through the bound program:
+ * colour and albedo texture (on unit 0) per draw. */
+void stin__translucent_draw_casters(struct stin_context *ctx, GLint u_model, GLint u_albedo,
+                                    GLint u_has_albedo_tex, const stin__displace_locs *dl);
+/* Light l's faces (fitted as the shadow maps are; six 90-degree ones for a
+ * point light), each handed to face_fn with its view and projection, and
+ * the lookup's normal offset (1.5 texels per unit clip w). Returns the kind:
+ * 1 one face, 2 six, 0 nothing in front of a spot or directional light. */
+typedef void (*stin__translucent_face_fn)(struct stin_context *ctx, int face,
+                                          const float view[16], const float proj[16]);
+int stin__translucent_faces(struct stin_context *ctx, const stin_light_desc *l, uint32_t size,
+                            stin__translucent_face_fn face_fn, float *normal_offset);
+/* Nothing on the two units from `unit` (target's binding); unit 0 active. */
+void stin__translucent_unbind(struct stin_context *ctx, int unit, GLenum target);
 
 #endif

@@ -169,37 +169,15 @@ void stin__coloured_uniforms(stin_context *ctx, const stin__program *p)
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
-void stin__coloured_frame(stin_context *ctx)
-{
-    uint32_t i;
-    ctx->coloured.frame_transparent = 0;
-    ctx->coloured.kind = 0;
-    for (i = 0; ctx->coloured.ready && i < ctx->draw_count; i++)
-        if (ctx->draws[i].material.color[3] < 1.0f)
-            ctx->coloured.frame_transparent = 1;
-}
-
 int stin__coloured_active(const stin_context *ctx)
 {
     return ctx->coloured.ready && ctx->coloured.frame_transparent;
 }
 
-/* The transparent draws through the caster program (albedo on unit 0). */
 static void draw_transparent(stin_context *ctx)
 {
     const stin__coloured_state *s = &ctx->coloured;
-    uint32_t i;
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[i];
-        const stin__texture_slot *t;
-        if (d->material.color[3] >= 1.0f)
-            continue;
-        t = stin__texture_lookup(ctx, d->material.albedo);
-        GL(ctx, Uniform4fv)(s->u_albedo, 1, d->material.color);
-        GL(ctx, Uniform1i)(s->u_has_albedo_tex, t != NULL);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, t ? t->name : 0);
-        stin__glsl_submit_geometry(ctx, s->u_model, &s->displace, d);
-    }
+    stin__translucent_draw_casters(ctx, s->u_model, s->u_albedo, s->u_has_albedo_tex, &s->displace);
 }
 
 /* One face into its cell of the atlas: the nearest depth, then the product. */
@@ -229,46 +207,14 @@ static void draw_face(stin_context *ctx, int face, const float view[16], const f
     ctx->stats.passes += 2;
 }
 
-/* 1.5 texels' width in world units per unit of the face's clip w, as
- * map-pcf's normal offset. */
-static float texel_offset(const float proj[16], uint32_t size)
-{
-    return 1.5f * 2.0f / (proj[0] * (float)size);
-}
-
-/* Light l's faces: 1 (spot, directional), 6 (point), 0 (nothing in front). */
-static int draw_light(stin_context *ctx, const stin_light_desc *l)
-{
-    stin__coloured_state *s = &ctx->coloured;
-    float view[16], proj[16], n, f;
-    int face;
-    if (l->type != STIN_LIGHT_POINT) {
-        if (!stin__light_camera(ctx, l, view, proj, &n, &f, s->size))
-            return 0;
-        draw_face(ctx, 0, view, proj);
-        s->normal_offset = texel_offset(proj, s->size);
-        return 1;
-    }
-    for (face = 0; face < STIN__DEEP_FACES; face++) {
-        stin__light_cube_face(ctx, l->position, face, view, proj);
-        draw_face(ctx, face, view, proj);
-    }
-    s->normal_offset = texel_offset(proj, s->size); /* every face is 90 degrees */
-    return 2;
-}
-
 void stin__coloured_light(stin_context *ctx, uint32_t li)
 {
     stin__coloured_state *s = &ctx->coloured;
     stin__pass_state ps = stin__pass_defaults;
-    int k;
     s->kind = 0;
     if (!stin__coloured_active(ctx) || li >= ctx->light_count)
         return;
-    /* neither atlas may be sampled while it is drawn */
-    for (k = 0; k < 2; k++)
-        stin__bind_unit(ctx, s->unit + k, GL_TEXTURE_2D, 0);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    stin__translucent_unbind(ctx, s->unit, GL_TEXTURE_2D); /* neither atlas sampled while drawn */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     GL(ctx, Viewport)(0, 0, (GLsizei)(ATLAS_COLUMNS * s->size), (GLsizei)(ATLAS_ROWS * s->size));
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the atlas */
@@ -279,7 +225,7 @@ void stin__coloured_light(stin_context *ctx, uint32_t li)
     ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
-    s->kind = draw_light(ctx, &ctx->lights[li]);
+    s->kind = stin__translucent_faces(ctx, &ctx->lights[li], s->size, draw_face, &s->normal_offset);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
@@ -291,11 +237,8 @@ void stin__coloured_light(stin_context *ctx, uint32_t li)
 void stin__coloured_light_done(stin_context *ctx)
 {
     stin__coloured_state *s = &ctx->coloured;
-    int i;
     if (!s->kind)
         return;
     s->kind = 0;
-    for (i = 0; i < 2; i++)
-        stin__bind_unit(ctx, s->unit + i, GL_TEXTURE_2D, 0);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    stin__translucent_unbind(ctx, s->unit, GL_TEXTURE_2D);
 }

@@ -221,40 +221,19 @@ void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
-void stin__deep_frame(stin_context *ctx)
-{
-    uint32_t i;
-    ctx->deep.frame_transparent = 0;
-    ctx->deep.kind = 0;
-    for (i = 0; ctx->deep.ready && i < ctx->draw_count; i++)
-        if (ctx->draws[i].material.color[3] < 1.0f)
-            ctx->deep.frame_transparent = 1;
-}
-
 int stin__deep_active(const stin_context *ctx)
 {
     return ctx->deep.ready && ctx->deep.frame_transparent;
 }
 
-/* The transparent draws through the peel program (albedo on unit 0), in
- * the caller's order: the depth test makes the layers independent of it,
- * and the order test sees that (the camera's far-to-near order would hide
- * an order dependence). */
+/* The transparent draws through the peel program in the caller's order:
+ * the depth test makes the layers independent of it, and the order test
+ * sees that (the camera's far-to-near order would hide an order
+ * dependence). */
 static void draw_transparent(stin_context *ctx)
 {
     const stin__deep_state *s = &ctx->deep;
-    uint32_t i;
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[i];
-        const stin__texture_slot *t;
-        if (d->material.color[3] >= 1.0f)
-            continue;
-        t = stin__texture_lookup(ctx, d->material.albedo);
-        GL(ctx, Uniform4fv)(s->u_albedo, 1, d->material.color);
-        GL(ctx, Uniform1i)(s->u_has_albedo_tex, t != NULL);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, t ? t->name : 0);
-        stin__glsl_submit_geometry(ctx, s->u_model, &s->displace, d);
-    }
+    stin__translucent_draw_casters(ctx, s->u_model, s->u_albedo, s->u_has_albedo_tex, &s->displace);
 }
 
 /* One face's layers, from its view and projection; layer k of the face is
@@ -302,34 +281,6 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
     }
 }
 
-/* 1.5 texels' width in world units per unit of the face's clip w, as
- * map-pcf's normal offset. */
-static float texel_offset(const float proj[16], uint32_t size)
-{
-    return 1.5f * 2.0f / (proj[0] * (float)size);
-}
-
-/* Light l's faces: 1 (spot, directional), 6 (point), 0 (nothing in front). */
-static int peel_light(stin_context *ctx, const stin_light_desc *l)
-{
-    stin__deep_state *s = &ctx->deep;
-    float view[16], proj[16], n, f;
-    int face;
-    if (l->type != STIN_LIGHT_POINT) {
-        if (!stin__light_camera(ctx, l, view, proj, &n, &f, s->size))
-            return 0;
-        peel_face(ctx, 0, view, proj);
-        s->normal_offset = texel_offset(proj, s->size);
-        return 1;
-    }
-    for (face = 0; face < STIN__DEEP_FACES; face++) {
-        stin__light_cube_face(ctx, l->position, face, view, proj);
-        peel_face(ctx, face, view, proj);
-    }
-    s->normal_offset = texel_offset(proj, s->size); /* every face is 90 degrees */
-    return 2;
-}
-
 void stin__deep_light(stin_context *ctx, uint32_t li)
 {
     stin__deep_state *s = &ctx->deep;
@@ -352,7 +303,7 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
     /* the other texture is sampled by no one while its slices are drawn */
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    s->kind = peel_light(ctx, &ctx->lights[li]);
+    s->kind = stin__translucent_faces(ctx, &ctx->lights[li], s->size, peel_face, &s->normal_offset);
     if (s->flag)
         GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
@@ -368,11 +319,8 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
 void stin__deep_light_done(stin_context *ctx)
 {
     stin__deep_state *s = &ctx->deep;
-    int i;
     if (!s->kind)
         return;
     s->kind = 0;
-    for (i = 0; i < 2; i++)
-        stin__bind_unit(ctx, s->unit + i, GL_TEXTURE_2D_ARRAY, 0);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    stin__translucent_unbind(ctx, s->unit, GL_TEXTURE_2D_ARRAY);
 }

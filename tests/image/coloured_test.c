@@ -67,23 +67,6 @@ static void test_between(const deep_case *c, const capture *cap, const char *nam
            "%.2f%%", not_lighter, n, MIN_CLASS, n ? 100.0 * exact / n : 0.0);
 }
 
-/* The lit sides of panes the reference sees unshadowed, within 2/255 of 1. */
-static void own_layer_counts(const deep_case *c, const capture *cap, long *n, long *good)
-{
-    static const float one[3] = {1, 1, 1};
-    int x, y;
-    *n = *good = 0;
-    for (y = 0; y < c->r->height; y++)
-        for (x = 0; x < c->r->width; x++) {
-            const float *t = deep_ref_px(c, x, y) + REFERENCE_CH_T_R;
-            if (!deep_is_transparent(c, &c->hits[(size_t)y * c->r->width + x]) || t[0] < 1.0f ||
-                t[1] < 1.0f || t[2] < 1.0f || !deep_comparable(c, cap, x, y))
-                continue;
-            (*n)++;
-            *good += deep_within(deep_gl_px(c, cap, x, y), one, T_TOLERANCE);
-        }
-}
-
 /* Without the nearest-depth test the panes' lit sides take their own
  * factor: the own-layer check must see it. */
 static void test_depth_needed(const deep_case *c, const char *name)
@@ -95,7 +78,7 @@ static void test_depth_needed(const deep_case *c, const char *name)
     o.debug_flags = STIN_DEBUG_COLOURED_NO_DEPTH;
     if (!deep_render(c, c->s, &o, &cap, name))
         return;
-    own_layer_counts(c, &cap, &n, &good);
+    deep_own_layer_counts(c, &cap, &n, &good);
     report(c->r, n >= MIN_PARTIAL && good < 0.5 * n ? "PASS" : "FAIL", name,
            "STIN_DEBUG_COLOURED_NO_DEPTH: %ld of %ld unshadowed pane pixels stay within 2/255 of "
            "1 (must be under half: the nearest-depth test is what keeps them)", good, n);
@@ -115,7 +98,6 @@ static void separate_tests(deep_case *base, const scene *s)
     char err[512], name[256];
     const char *tier = stin_tier_name(c.tier);
     int i;
-    long n, good;
     if (!objects)
         return;
     for (i = 0; i < s->object_count; i++) /* floor, low, middle, high */
@@ -134,11 +116,8 @@ static void separate_tests(deep_case *base, const scene *s)
         deep_options(&c, &o);
         if (deep_render(&c, &apart, &o, &cap, name)) {
             deep_test_transmittance(&c, &cap, name);
-            own_layer_counts(&c, &cap, &n, &good);
             snprintf(name, sizeof name, "%s/%s/coloured-separate-own-layer", tier, c.scene_name);
-            report(c.r, n >= MIN_PARTIAL && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
-                   "%ld of %ld pane pixels the reference sees unshadowed are within 2/255 of 1 "
-                   "(need >= %d pixels, 99.5%%)", good, n, MIN_PARTIAL);
+            deep_test_own_layer(&c, &cap, name);
             capture_free(&cap);
             snprintf(name, sizeof name, "%s/%s/coloured-depth-needed", tier, c.scene_name);
             test_depth_needed(&c, name);
@@ -175,29 +154,6 @@ static void opaque_case(deep_case *c, float threshold, float expect, const char 
            "within 2/255 (need >= %d, 99.5%%); shadows %s", threshold, good, n, expect,
            MIN_PARTIAL, stin_technique_name(cap.choice[STIN_FEATURE_SHADOWS].technique));
     capture_free(&cap);
-}
-
-/* Below GL2: coloured cannot run; forcing it is refused, naming the tier. */
-static void lower_tier(run *r, stin_tier tier, const char *scene_name, const scene *s)
-{
-    capture cap;
-    capture_options o;
-    char err[512], name[256];
-    int refused;
-    snprintf(name, sizeof name, "%s/%s/coloured", stin_tier_name(tier), scene_name);
-    report(r, "SKIP", name, "tier %s has no colour maps (GL2 and up: GLSL, FBOs, depth "
-                            "textures): transparent casters cast by the opacity threshold here",
-           stin_tier_name(tier));
-    memset(&o, 0, sizeof o);
-    o.tier = tier;
-    o.translucent = STIN_TECH_TRANSLUCENT_COLOURED;
-    refused = !capture_render(r->plat, r->profile, s, &o, &cap, err, sizeof err);
-    snprintf(name, sizeof name, "%s/%s/coloured-forced", stin_tier_name(tier), scene_name);
-    report(r, refused && strstr(err, "coloured needs tier gl2") ? "PASS" : "FAIL", name,
-           "forcing coloured at tier %s: %s", stin_tier_name(tier),
-           refused ? err : "created (must be refused)");
-    if (!refused)
-        capture_free(&cap);
 }
 
 /* The coloured tests of one scene at a GLSL tier. */
@@ -256,7 +212,9 @@ void coloured_tests(run *r, stin_tier tier, const char *path)
     if ((!stack && !colour && !omni && !window && !panes) || !scene_load(path, &s, err, sizeof err))
         return;
     if (tier == STIN_TIER_GL1 && stack)
-        lower_tier(r, tier, scene_name, &s);
+        deep_refusal(r, tier, scene_name, &s, STIN_TECH_TRANSLUCENT_COLOURED,
+                     "has no colour maps (GL2 and up: GLSL, FBOs, depth textures): transparent "
+                     "casters cast by the opacity threshold here", "coloured needs tier gl2");
     if (tier == STIN_TIER_GL1 && !stack) {
         scene_free(&s);
         return;

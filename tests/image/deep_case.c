@@ -134,23 +134,54 @@ void deep_test_values(const deep_case *c, const capture *cap, const char *name)
            MIN_CLASS, detail);
 }
 
-void deep_test_own_layer(const deep_case *c, const capture *cap, const char *name)
+void deep_own_layer_counts(const deep_case *c, const capture *cap, long *n, long *good)
 {
-    long n = 0, good = 0;
     int x, y;
     static const float one[3] = {1, 1, 1};
+    *n = *good = 0;
     for (y = 0; y < c->r->height; y++)
         for (x = 0; x < c->r->width; x++) {
             const float *t = deep_ref_px(c, x, y) + REFERENCE_CH_T_R;
             if (!deep_is_transparent(c, &c->hits[(size_t)y * c->r->width + x]) || t[0] < 1.0f ||
                 t[1] < 1.0f || t[2] < 1.0f || !deep_comparable(c, cap, x, y))
                 continue;
-            n++;
-            good += deep_within(deep_gl_px(c, cap, x, y), one, T_TOLERANCE);
+            (*n)++;
+            *good += deep_within(deep_gl_px(c, cap, x, y), one, T_TOLERANCE);
         }
+}
+
+void deep_test_own_layer(const deep_case *c, const capture *cap, const char *name)
+{
+    long n, good;
+    deep_own_layer_counts(c, cap, &n, &good);
     report(c->r, n >= MIN_PARTIAL && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
            "%ld of %ld pane pixels the reference sees unshadowed are within 2/255 of 1 (need "
            ">= %d pixels, 99.5%%)", good, n, MIN_PARTIAL);
+}
+
+/* Below the technique's tier: a SKIP line saying why (skip_why), then
+ * forcing it must be refused with `expect` in the message. */
+void deep_refusal(run *r, stin_tier tier, const char *scene_name, const scene *s,
+                  stin_technique t, const char *skip_why, const char *expect)
+{
+    capture cap;
+    capture_options o;
+    char err[512], name[256];
+    int refused;
+    snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_name,
+             stin_technique_name(t));
+    report(r, "SKIP", name, "tier %s %s", stin_tier_name(tier), skip_why);
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    o.translucent = t;
+    refused = !capture_render(r->plat, r->profile, s, &o, &cap, err, sizeof err);
+    snprintf(name, sizeof name, "%s/%s/%s-forced", stin_tier_name(tier), scene_name,
+             stin_technique_name(t));
+    report(r, refused && strstr(err, expect) ? "PASS" : "FAIL", name, "forcing %s at tier %s: %s",
+           stin_technique_name(t), stin_tier_name(tier),
+           refused ? err : "created (must be refused)");
+    if (!refused)
+        capture_free(&cap);
 }
 
 /* Visibility and beauty identical, pixel for pixel; returns the count that differ. */

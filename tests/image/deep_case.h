@@ -47,6 +47,13 @@ int deep_within(const float *g, const float *expect, double tol);
 void deep_test_transmittance(const deep_case *c, const capture *cap, const char *name);
 void deep_test_values(const deep_case *c, const capture *cap, const char *name);
 void deep_test_own_layer(const deep_case *c, const capture *cap, const char *name);
+/* Pane pixels the reference sees unshadowed (n), and those within 2/255
+ * of 1 (good). */
+void deep_own_layer_counts(const deep_case *c, const capture *cap, long *n, long *good);
+/* Below the technique's tier: a SKIP line (tier X skip_why), then forcing
+ * it must be refused with `expect` in the message (a PASS/FAIL line). */
+void deep_refusal(run *r, stin_tier tier, const char *scene_name, const scene *s,
+                  stin_technique t, const char *skip_why, const char *expect);
 /* Pixels whose beauty or visibility differ between two captures. */
 long deep_differing(const capture *a, const capture *b);
 /* A render with the case's technique (a FAIL line and 0 when it fell

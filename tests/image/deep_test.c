@@ -269,29 +269,6 @@ static void test_shadows_off(const deep_case *c, const char *name)
     capture_free(&cap);
 }
 
-/* Below GL4: deep cannot run; forcing it is refused, naming the tier. */
-static void lower_tier(run *r, stin_tier tier, const char *scene_name, const scene *s)
-{
-    capture cap;
-    capture_options o;
-    char err[512], name[256];
-    int refused;
-    snprintf(name, sizeof name, "%s/%s/deep", stin_tier_name(tier), scene_name);
-    report(r, "SKIP", name, "tier %s has no deep shadow maps (GL4 only): transparent casters "
-                            "cast solid shadows here", stin_tier_name(tier));
-    memset(&o, 0, sizeof o);
-    o.tier = tier;
-    o.translucent = STIN_TECH_TRANSLUCENT_DEEP;
-    refused = !capture_render(r->plat, r->profile, s, &o, &cap, err, sizeof err);
-    snprintf(name, sizeof name, "%s/%s/deep-forced", stin_tier_name(tier), scene_name);
-    report(r, refused && strstr(err, "deep needs tier gl4") ? "PASS" : "FAIL", name,
-           "forcing deep at tier %s: %s", stin_tier_name(tier),
-           refused ? err : "created (must be refused)");
-    if (!refused)
-        capture_free(&cap);
-}
-
-
 /* The tests of one GL4 scene; which ones depends on what the scene is for. */
 static void gl4_tests(deep_case *c, int stack, int colour, int omni)
 {
@@ -371,7 +348,9 @@ void deep_tests(run *r, stin_tier tier, const char *path)
         return;
     if (tier != STIN_TIER_GL4) {
         if (stack) /* once per tier */
-            lower_tier(r, tier, scene_name, &s);
+            deep_refusal(r, tier, scene_name, &s, STIN_TECH_TRANSLUCENT_DEEP,
+                         "has no deep shadow maps (GL4 only): coloured or opaque shadows "
+                         "transparent casters here", "deep needs tier gl4");
         scene_free(&s);
         return;
     }

@@ -9,8 +9,9 @@
  *              cube face, --deep-all in all six) deep with 4 layers: early
  *              stop by the storage flag where GL 4.3 has it, by the
  *              occlusion query, and none; and coloured - the seed's graph.
- * The goal lines: one-layer deep at most 2x the plain map of the same size;
- * the early stop at least 2x faster when transparency sits in one face. */
+ * The goal lines (each row's time over its shadows-off frames, one row over
+ * another): one-layer deep at most 2x the plain map of the same size; the
+ * early stop at least 2x faster when transparency sits in one face. */
 #include "bench_options.h"
 #include "bench_report.h"
 
@@ -47,40 +48,19 @@ static const deep_row stop_rows[] = {
 };
 enum { STOP_ROWS = sizeof stop_rows / sizeof stop_rows[0], STOP = 0, NO_STOP = 2 };
 
-static void print_table(const char *title, stin_tier tier, const deep_row *const *defs,
-                        const tech_row *rows, int n)
-{
-    int i;
-    printf("\n### %s, %s (%s)\n\n", title, stin_tier_name(tier), tier_label(tier));
-    printf("| row | passes | off median ms | row median ms | row / off | row / first row |\n");
-    printf("|---|---:|---:|---:|---:|---:|\n");
-    for (i = 0; i < n; i++) {
-        const tech_row *r = &rows[i];
-        if (r->skipped) {
-            printf("| %s | SKIP: %s | | | | |\n", defs[i]->name, r->why);
-            continue;
-        }
-        printf("| %s | %u | %.2f | %.2f | %.2f | %.2f |\n", defs[i]->name, r->passes, r->base_ms,
-               r->on_ms, tech_ratio(r),
-               !rows[0].skipped && rows[0].on_ms > 0 ? r->on_ms / rows[0].on_ms : 0.0);
-    }
-    fflush(stdout);
-}
-
-/* One table of defs on s (gl4-only rows left out below gl4); the rows
- * measured into rows, the definitions used into use. Returns the count, 0
- * when the tier was skipped or failed. */
+/* One table of defs on s (gl4-only rows left out below gl4), measured into
+ * rows. Returns the count, 0 when the tier was skipped or failed. */
 static int run_table(bench_env *env, tech_settings *st, stin_tier tier, const char *title,
-                     const scene *s, const deep_row *defs, int n, tech_row *rows,
-                     const deep_row **use, int *rc)
+                     const scene *s, const deep_row *defs, int n, tech_row *rows, int *rc)
 {
+    const char *names[TECH_MAX_ROWS];
     uint32_t size = (uint32_t)env->o->deep_size;
     int i, m = 0;
     memset(rows, 0, sizeof *rows * (size_t)n);
     for (i = 0; i < n; i++) {
         if (defs[i].gl4_only && tier != STIN_TIER_GL4)
             continue;
-        use[m] = &defs[i];
+        names[m] = defs[i].name;
         rows[m].cfg.shadows = MAP;
         rows[m].cfg.surface = STIN_TECH_NONE;
         rows[m].cfg.map_size = size;
@@ -92,20 +72,22 @@ static int run_table(bench_env *env, tech_settings *st, stin_tier tier, const ch
     }
     if (!m || !bench_tech_tier(env, st, tier, WHAT, s, rows, m, rc))
         return 0;
-    print_table(title, tier, use, rows, m);
+    bench_ratio_table(title, tier, "off", names, rows, m);
     return m;
 }
 
+/* Row a over row b, each as its time over its own interleaved shadows-off
+ * frames (rows run minutes apart on a shared machine: their off times
+ * drift, their ratios to off do not). */
 static double ratio(const tech_row *a, const tech_row *b)
 {
-    return !a->skipped && !b->skipped && b->on_ms > 0 ? a->on_ms / b->on_ms : 0.0;
+    return !a->skipped && !b->skipped && tech_ratio(b) > 0 ? tech_ratio(a) / tech_ratio(b) : 0.0;
 }
 
 /* The early-stop table on one point-light scene; its no-stop / stop ratio. */
 static double stop_table(bench_env *env, tech_settings *st, const char *path, int *rc)
 {
     tech_row rows[STOP_ROWS];
-    const deep_row *use[STOP_ROWS];
     scene s;
     char err[512], label[128], title[192];
     double r = 0.0;
@@ -117,7 +99,7 @@ static double stop_table(bench_env *env, tech_settings *st, const char *path, in
     scene_label(path, label, sizeof label);
     snprintf(title, sizeof title, "early stop, %s (point light, 4 layers, %d a face)", label,
              env->o->deep_size);
-    if (run_table(env, st, STIN_TIER_GL4, title, &s, stop_rows, STOP_ROWS, rows, use, rc) ==
+    if (run_table(env, st, STIN_TIER_GL4, title, &s, stop_rows, STOP_ROWS, rows, rc) ==
         STOP_ROWS)
         r = ratio(&rows[NO_STOP], &rows[STOP]);
     scene_free(&s);
@@ -127,7 +109,6 @@ static double stop_table(bench_env *env, tech_settings *st, const char *path, in
 int section_deep(bench_env *env, const scene *s, int *ran)
 {
     tech_row rows[LAYER_ROWS];
-    const deep_row *use[LAYER_ROWS];
     stin_tier tiers[2];
     tech_settings st;
     char timing[160];
@@ -141,7 +122,7 @@ int section_deep(bench_env *env, const scene *s, int *ran)
     tier_n = bench_tiers(env, GLSL_TIERS, WHAT, "gl2 and gl4 only", tiers);
     for (t = 0; t < tier_n && !rc; t++) {
         int n = run_table(env, &st, tiers[t], "map-pcf, deep layers and coloured", s, layer_rows,
-                          LAYER_ROWS, rows, use, &rc);
+                          LAYER_ROWS, rows, &rc);
         if (!n)
             continue;
         *ran = 1;
@@ -154,7 +135,8 @@ int section_deep(bench_env *env, const scene *s, int *ran)
     one_face = stop_table(env, &st, env->o->deep_one, &rc);
     all_faces = rc ? 0.0 : stop_table(env, &st, env->o->deep_all, &rc);
     if (one_layer > 0.0)
-        printf("\ndeep goal: one-layer deep / map-pcf of the same size %.2f (goal <= 2: %s)\n",
+        printf("\ndeep goal: one-layer deep / map-pcf of the same size %.2f, each over shadows off "
+               "(goal <= 2: %s)\n",
                one_layer, one_layer <= 2.0 ? "met" : "missed");
     if (one_face > 0.0)
         printf("deep goal: no early stop / early stop %.2f with transparency in one face "
