@@ -429,13 +429,14 @@ const char *stin_feature_name(stin_feature f);
  *   shadows:  vdsm, volume, map-pcf, map-depth, map-combine, off
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace-tess, displace, displacement-off
- *   translucent shadows: deep, translucent-solid
+ *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
  *   csg:      goldfeather, csg-off (see "CSG products" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
- * faces, each when there is one to spare); map-combine 2. Surface units follow the albedo, shadow units follow
- * the surface's.
+ * faces, each when there is one to spare); map-combine 2; deep and coloured
+ * 2. Surface units follow the albedo, shadow units follow the surface's,
+ * translucent shadows' the shadows'.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
  * with a normalisation cube map; it needs multitexture, texture_env_combine,
  * texture_env_dot3, cube maps and 3 texture units (4 for a material that
