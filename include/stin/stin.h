@@ -598,8 +598,13 @@ const char *stin_feature_name(stin_feature f);
  * receiver between two panes (or a pane behind another) is darkened by
  * every pane on its light ray, those behind it and its own included (a box
  * pane: its back face by its own two faces). Needs no float texture; the
- * map's 8 bits round each factor by up to 1/510. GPU memory: 6 x
- * deep_map_size^2 x (4 + 4) bytes (12 MiB at 512).
+ * map's 8 bits round each factor by up to 1/510. As with deep, lights are
+ * lit one per pass while it is in use, a frame without transparent draws
+ * draws no map, blended draws are drawn unshadowed, the visibility map
+ * (export_visibility) holds the shadows technique's visibility only, and
+ * with shadows "off" it falls back to "opaque" (logged). The face size is
+ * halved until three faces fit the context's largest texture. GPU memory:
+ * 6 x deep_map_size^2 x (4 + 4) bytes (12 MiB at 512).
  * "opaque" (every tier) ends the chain: a caster whose opacity is at least
  * desc.translucent_opaque_threshold (default 0.5) casts a full shadow under
  * every shadows technique, one below it none at all; "translucent-solid"
