@@ -386,8 +386,14 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     if (r == STIN_OK)
         r = init_shadows(ctx);
     if (r == STIN_OK) {
+        GLint fb[2] = {0, 0};
+        int fbo = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
+        if (fbo) /* the caller's binding survives the translucent maps' set-up */
+            stin__framebuffer_save(ctx, fb);
         stin__deep_init(ctx);
         stin__coloured_init(ctx);
+        if (fbo)
+            stin__framebuffer_restore(ctx, fb);
         stin__displace_init(ctx);
         stin__csg_init(ctx);
     }

@@ -30,6 +30,8 @@
  *                  threshold 0.5 - the floor under the panes (T < 1) has
  *                  visibility 0 within 2/255 on >= 99.5%; threshold 0.75 -
  *                  the same pixels have 1 (the panes cast nothing);
+ *   shadows-off    forced coloured with shadows off falls back to opaque,
+ *                  saying why;
  *   coloured-forced  below GL2, forcing coloured is refused naming the tier.
  */
 #include "deep_case.h"
@@ -182,6 +184,10 @@ static void glsl_tests(deep_case *c, int stack, int colour, int panes)
         test_between(c, &base, name);
     }
     capture_free(&base);
+    if (stack) {
+        snprintf(name, sizeof name, "%s/%s/coloured-shadows-off", tier, c->scene_name);
+        deep_test_shadows_off(c, name, STIN_TECH_TRANSLUCENT_OPAQUE);
+    }
     if (panes) { /* the opaque casters under map-pcf too */
         capture cap;
         deep_options(c, &o);

@@ -251,3 +251,27 @@ void deep_free_reference(deep_case *c, reference *ref)
     if (ref)
         reference_destroy(ref);
 }
+
+void deep_test_shadows_off(const deep_case *c, const char *name, stin_technique expect)
+{
+    capture cap;
+    capture_options o;
+    char err[512];
+    const stin_choice *t;
+    deep_options(c, &o);
+    o.shadows = STIN_TECH_SHADOWS_OFF;
+    if (!capture_render(c->r->plat, c->r->profile, c->s, &o, &cap, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        return;
+    }
+    t = &cap.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS];
+    report(c->r,
+           t->technique == expect && t->fell_back && strstr(t->reason, "shadows are off") &&
+                   !cap.log_errors && !cap.stats.deep_layers
+               ? "PASS"
+               : "FAIL",
+           name, "forced %s with shadows off: %s (%s), %u layers peeled, %u errors logged",
+           c->tag, stin_technique_name(t->technique), t->reason, cap.stats.deep_layers,
+           cap.log_errors);
+    capture_free(&cap);
+}

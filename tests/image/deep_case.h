@@ -54,6 +54,9 @@ void deep_own_layer_counts(const deep_case *c, const capture *cap, long *n, long
  * it must be refused with `expect` in the message (a PASS/FAIL line). */
 void deep_refusal(run *r, stin_tier tier, const char *scene_name, const scene *s,
                   stin_technique t, const char *skip_why, const char *expect);
+/* The case's technique forced with shadows off: nothing is shadowed, so it
+ * falls back to `expect` at set-up, saying why (a PASS/FAIL line). */
+void deep_test_shadows_off(const deep_case *c, const char *name, stin_technique expect);
 /* Pixels whose beauty or visibility differ between two captures. */
 long deep_differing(const capture *a, const capture *b);
 /* A render with the case's technique (a FAIL line and 0 when it fell

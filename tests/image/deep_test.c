@@ -244,31 +244,6 @@ static void test_mono(const deep_case *c, const char *name)
     capture_free(&cap);
 }
 
-/* Forced deep with shadows off: nothing is shadowed, so it falls back to
- * translucent-solid at set-up and says why. */
-static void test_shadows_off(const deep_case *c, const char *name)
-{
-    capture cap;
-    capture_options o;
-    char err[512];
-    const stin_choice *t;
-    deep_options(c, &o);
-    o.shadows = STIN_TECH_SHADOWS_OFF;
-    if (!capture_render(c->r->plat, c->r->profile, c->s, &o, &cap, err, sizeof err)) {
-        report(c->r, "FAIL", name, "%s", err);
-        return;
-    }
-    t = &cap.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS];
-    report(c->r,
-           t->technique == STIN_TECH_TRANSLUCENT_SOLID && t->fell_back &&
-                   strstr(t->reason, "shadows are off") && !cap.log_errors && !cap.stats.deep_layers
-               ? "PASS"
-               : "FAIL",
-           name, "forced deep with shadows off: %s (%s), %u layers peeled, %u errors logged",
-           stin_technique_name(t->technique), t->reason, cap.stats.deep_layers, cap.log_errors);
-    capture_free(&cap);
-}
-
 /* The tests of one GL4 scene; which ones depends on what the scene is for. */
 static void gl4_tests(deep_case *c, int stack, int colour, int omni)
 {
@@ -296,7 +271,7 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
         snprintf(name, sizeof name, "%s/%s/deep-layer-cap", tier, scene_name);
         test_layer_cap(c, name);
         snprintf(name, sizeof name, "%s/%s/deep-shadows-off", tier, scene_name);
-        test_shadows_off(c, name);
+        deep_test_shadows_off(c, name, STIN_TECH_TRANSLUCENT_SOLID);
     } else if (colour) {
         snprintf(name, sizeof name, "%s/%s/deep-mono", tier, scene_name);
         test_mono(c, name);
