@@ -27,6 +27,8 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
         d.displace_guard_band = 1.0f;
     if (d.displace_tess_pixels == 0.0f)
         d.displace_tess_pixels = 4.0f;
+    if (d.translucent_opaque_threshold == 0.0f)
+        d.translucent_opaque_threshold = 0.5f;
     d.displace_tess_max = DEFAULT(d.displace_tess_max, 64u);
     return d;
 }
@@ -45,7 +47,8 @@ static int desc_valid(const stin_desc *d)
            d->max_csg_literals < 0x1000000u &&
 
            d->deep_layers <= 16 && d->deep_map_size <= 4096 &&
-           (d->deep_map_size & (d->deep_map_size - 1)) == 0 && (d->deep_mono & ~1) == 0;
+           (d->deep_map_size & (d->deep_map_size - 1)) == 0 && (d->deep_mono & ~1) == 0 &&
+           d->translucent_opaque_threshold > 0.0f && d->translucent_opaque_threshold <= 1.0f;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)
@@ -301,6 +304,7 @@ static void release_gl(stin_context *ctx)
     stin__export_release(ctx);
     stin__csg_release(ctx);
     stin__deep_release(ctx);
+    stin__coloured_release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
@@ -328,7 +332,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
                   "stin_create: capacities out of range (max_lights <= 32, "
                   "max_mesh_triangles <= max_triangles, soft_shadow_samples <= 64, "
                   "shadow_map_size a power of two <= 8192, deep_layers <= 16, "
-                  "deep_map_size a power of two <= 4096, deep_mono 0 or 1)");
+                  "deep_map_size a power of two <= 4096, deep_mono 0 or 1, "
+                  "translucent_opaque_threshold in (0, 1])");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     if (!memory || memory_bytes < need) {
@@ -385,7 +390,14 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     if (r == STIN_OK)
         r = init_shadows(ctx);
     if (r == STIN_OK) {
+        GLint fb[2] = {0, 0};
+        int fbo = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
+        if (fbo) /* the caller's binding survives the translucent maps' set-up */
+            stin__framebuffer_save(ctx, fb);
         stin__deep_init(ctx);
+        stin__coloured_init(ctx);
+        if (fbo)
+            stin__framebuffer_restore(ctx, fb);
         stin__displace_init(ctx);
         stin__csg_init(ctx);
     }

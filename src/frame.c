@@ -284,7 +284,7 @@ static void stage_prepare(stin_context *ctx)
  * because without FBOs they draw in the frame's own buffer. */
 static void stage_light_prepasses(stin_context *ctx)
 {
-    stin__deep_frame(ctx); /* deep maps are peeled per light, before its lit pass */
+    stin__translucent_frame(ctx); /* deep and colour maps are made per light, before its lit pass */
     if (ctx->shadow->light_prepass && ctx->light_count)
         ctx->shadow->light_prepass(ctx);
 }
@@ -329,22 +329,22 @@ static void shade_flat(stin_context *ctx, const stin__path *path, const stin_lig
 /* Lights whose visibility the technique writes into the screen mask, in
  * groups of four: each group's visibility into the mask's channels, then
  * one lit pass (or, for the visibility output, light 0's flat pass) reading
- * them. With deep maps, a group of one: its deep map is peeled first.
+ * them. With deep or colour maps, a group of one: its map is made first.
  * Returns 0 when the mask cannot be drawn; lights the technique
  * declines (area lights' samples) are left unmarked in `masked`. */
 static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lights,
                          int visibility, unsigned char *masked)
 {
     stin_light_desc group[STIN__MASK_CHANNELS];
-    int size = stin__deep_active(ctx) ? 1 : STIN__MASK_CHANNELS;
+    int size = stin__translucent_active(ctx) ? 1 : STIN__MASK_CHANNELS;
     uint32_t li = 0;
     while (li < lights) {
         int n = 0;
         uint32_t first = li;
         if (size == 1)
-            stin__deep_light(ctx, li);
+            stin__translucent_light(ctx, li);
         if (!stin__mask_begin(ctx, path, visibility ? STIN__ALL : STIN__OPAQUE)) {
-            stin__deep_light_done(ctx);
+            stin__translucent_light_done(ctx);
             return 0;
         }
         for (; li < lights && n < size && (size > 1 || li == first); li++)
@@ -360,7 +360,7 @@ static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lig
             path->lit_lights(ctx, group, n);
         }
         stin__mask_read_done(ctx);
-        stin__deep_light_done(ctx);
+        stin__translucent_light_done(ctx);
     }
     return 1;
 }
@@ -375,9 +375,9 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
         (void)masked_lights(ctx, path, lights, visibility, masked);
     for (li = 0; li < lights; li++)
         if (!masked[li]) {
-            stin__deep_light(ctx, li);
+            stin__translucent_light(ctx, li);
             ctx->shadow->light(ctx, path, li, visibility ? shade_flat : shade_lit);
-            stin__deep_light_done(ctx);
+            stin__translucent_light_done(ctx);
         }
     stin__mask_frame_end(ctx);
 }

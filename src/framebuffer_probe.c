@@ -46,8 +46,7 @@ static int has_fbo(const stin_context *ctx)
     return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
 }
 
-/* The caller's draw and read framebuffers, to be bound again after a probe. */
-static void save_binding(stin_context *ctx, GLint saved[2])
+void stin__framebuffer_save(stin_context *ctx, GLint saved[2])
 {
     saved[0] = saved[1] = 0;
     GL(ctx, GetIntegerv)(GL_DRAW_FRAMEBUFFER_BINDING, &saved[0]);
@@ -56,7 +55,7 @@ static void save_binding(stin_context *ctx, GLint saved[2])
         GL(ctx, GetIntegerv)(READ_FRAMEBUFFER_BINDING, &saved[1]);
 }
 
-static void restore_binding(stin_context *ctx, const GLint saved[2])
+void stin__framebuffer_restore(stin_context *ctx, const GLint saved[2])
 {
     if (saved[0] == saved[1]) {
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, (GLuint)saved[0]);
@@ -84,13 +83,13 @@ void stin__target_init(stin_context *ctx)
                                 stin_has_extension(ctx, "GL_ARB_framebuffer_object") ||
                                 stin_has_extension(ctx, "GL_EXT_framebuffer_blit");
     if (has_fbo(ctx)) {
-        save_binding(ctx, saved);
+        stin__framebuffer_save(ctx, saved);
         if (saved[0])
             GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     }
     probe_bits(ctx, 0);
     if (has_fbo(ctx) && (saved[0] || saved[1]))
-        restore_binding(ctx, saved);
+        stin__framebuffer_restore(ctx, saved);
     /* Selection assumes a stencil buffer where the framebuffer bound now or
      * the default one has one: a stencil-less target bound at create (an
      * earlier frame's) must not decide for every later frame. */
@@ -135,7 +134,7 @@ stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call)
                   (unsigned)name);
         return STIN_ERROR_INVALID_ARGUMENT;
     }
-    save_binding(ctx, saved);
+    stin__framebuffer_save(ctx, saved);
     rebind = saved[0] != (GLint)name || saved[1] != (GLint)name;
     if (rebind)
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, name);
@@ -144,7 +143,7 @@ stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call)
     if (status == GL_FRAMEBUFFER_COMPLETE && name != ctx->target.name)
         probe_bits(ctx, name);
     if (rebind)
-        restore_binding(ctx, saved);
+        stin__framebuffer_restore(ctx, saved);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "%s: framebuffer %u is incomplete (status 0x%x)", call, (unsigned)name,

@@ -155,6 +155,13 @@
                          GLsizei d, GLint border, GLenum fmt, GLenum type, const void *p), \
       NEED_GL30, "")                                                                       \
     X(void, FramebufferTextureLayer, (GLenum target, GLenum att, GLuint tex, GLint level,  \
-                                      GLint layer), NEED_GL30, "")
+                                      GLint layer), NEED_GL30, "")                          \
+    /* deep's early stop by a shader storage flag (GL 4.3: SSBOs with compute) */          \
+    X(void, BindBufferBase, (GLenum target, GLuint index, GLuint b), STIN_CAP_COMPUTE, "")  \
+    X(void, BufferSubData, (GLenum target, GLintptr off, GLsizeiptr size, const void *d),  \
+      STIN_CAP_COMPUTE, "")                                                                 \
+    X(void, GetBufferSubData, (GLenum target, GLintptr off, GLsizeiptr size, void *d),     \
+      STIN_CAP_COMPUTE, "")                                                                 \
+    X(void, MemoryBarrier, (GLbitfield barriers), STIN_CAP_COMPUTE, "")
 
 #endif

@@ -264,6 +264,10 @@ typedef void GLvoid;
 #define GL_BLEND_EQUATION_RGB 0x8009
 #define GL_BLEND_EQUATION_ALPHA 0x883D
 
+/* deep's early-stop flag (GL 4.3) */
+#define GL_SHADER_STORAGE_BUFFER 0x90D2
+#define GL_BUFFER_UPDATE_BARRIER_BIT 0x00000200
+#define GL_DYNAMIC_READ 0x88E9
 /* deep shadow maps' layers */
 #define GL_TEXTURE_2D_ARRAY 0x8C1A
 #define GL_SAMPLES_PASSED 0x8914

@@ -93,6 +93,7 @@ struct stin_context {
     stin__export_state visibility; /* the visibility map (visibility_export.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg.c) */
     stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
+    stin__coloured_state coloured; /* translucent shadows' colour maps (translucent_coloured.c) */
 
     /* surface detail */
     struct {
@@ -164,6 +165,10 @@ void stin__caller_state_fixed_end(stin_context *ctx);
 void stin__framebuffer_bits(const stin__gl *gl, int core, GLuint bound, int *stencil, int *depth);
 void stin__target_init(stin_context *ctx);
 stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call);
+/* The caller's draw and read framebuffers (contexts with FBOs), to be bound
+ * again after a probe or a set-up that binds its own. */
+void stin__framebuffer_save(stin_context *ctx, GLint saved[2]);
+void stin__framebuffer_restore(stin_context *ctx, const GLint saved[2]);
 /* The frame's framebuffer has a stencil buffer (and stencil is not masked). */
 int stin__target_has_stencil(const stin_context *ctx);
 

@@ -175,12 +175,18 @@ static void draw_set(stin_context *ctx, int which, int materials)
 static void fixed_depth(stin_context *ctx, const float view[16], const float proj[16])
 {
     float saved_view[16];
+    uint32_t i;
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, LoadMatrixf)(proj);
     stin__memcopy(saved_view, ctx->frame.view, sizeof saved_view);
     stin__memcopy(ctx->frame.view, view, sizeof saved_view);
     ctx->bound_mesh = 0xffffffffu;
-    draw_set(ctx, STIN__ALL, 0);
+    for (i = 0; i < ctx->draw_count; i++) { /* casters the translucent choice keeps */
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (in_set(d, STIN__ALL) && !stin__translucent_skips(ctx, d))
+            draw_mesh(ctx, d);
+    }
+    draw_csg_faces(ctx, STIN__ALL, 0);
     ctx->bound_mesh = 0xffffffffu;
     stin__memcopy(ctx->frame.view, saved_view, sizeof saved_view);
 }

@@ -36,7 +36,7 @@ static void locate(stin_context *ctx, stin__program *p)
     LOC(u_shadow_maps[5], "u_shadow_face5");
     LOC(u_color, "u_color");
 #undef LOC
-    stin__deep_locate(ctx, p);
+    stin__translucent_locate(ctx, p);
     stin__surf_locate(ctx, p);
     /* the volume program draws shadow-map depth from lights, the rest the camera's passes */
     stin__displace_locate(ctx, p->name, p != &ctx->programs[STIN__PROG_VOLUME], &p->displace);
@@ -69,7 +69,7 @@ static int build_variants(stin_context *ctx, const char *dir, int tess, int top,
     stin__formatf(frag, sizeof frag, "%slit.frag", dir);
     for (v = STIN__SURF_NORMAL; v <= top; v++) {
         stin__program *p = &lit[v];
-        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), stin__deep_chunk(ctx), names, chunks);
+        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx), names, chunks);
         p->name = stin__program_build(ctx, vert, frag, chunks, tess, msg, size);
         if (!p->name)
             return best;
@@ -111,7 +111,7 @@ static int build_programs(stin_context *ctx, const char *dir, int tess, stin__pr
      * serves the visibility output (the shadow test: the plain variant's chunks
      * less the surface's) and, with no test, the depth-only volume and map
      * passes */
-    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), stin__deep_chunk(ctx), names,
+    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx), names,
                       chunks);
     shadow_only = chunks + 1;
     stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
@@ -276,7 +276,7 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
                         ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
     if (ctx->shadow->uniforms)
         ctx->shadow->uniforms(ctx, p);
-    stin__deep_uniforms(ctx, p);
+    stin__translucent_uniforms(ctx, p);
 }
 
 /* Makes p (a lit program) current with this pass's uniforms. */
@@ -486,7 +486,7 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4],
 {
     const stin__program *p = use(ctx, STIN__PROG_FLAT);
     GL(ctx, Uniform4fv)(p->u_color, 1, color);
-    if (ctx->shadow->uniforms || stin__deep_active(ctx)) { /* the lit pass's shadow test */
+    if (ctx->shadow->uniforms || stin__translucent_active(ctx)) { /* the lit pass's shadow test */
         float inv[16];
         stin__mat4_invert(inv, ctx->frame.view);
         GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
@@ -501,7 +501,7 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4],
         if (ctx->shadow->uniforms)
             ctx->shadow->uniforms(ctx, p);
     }
-    stin__deep_uniforms(ctx, p);
+    stin__translucent_uniforms(ctx, p);
     pass_state(ctx, 1, 0);
     draw_set(ctx, p, which, 0);
     ctx->stats.passes++;
@@ -596,7 +596,7 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++)
-        if (!stin__deep_skips(ctx, &ctx->draws[ctx->draw_order[i]]))
+        if (!stin__translucent_skips(ctx, &ctx->draws[ctx->draw_order[i]]))
             submit(ctx, p, &ctx->draws[ctx->draw_order[i]]);
     ctx->bound_mesh = 0xffffffffu;
 }

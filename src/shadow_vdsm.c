@@ -234,8 +234,8 @@ static void polygons(stin_context *ctx, const float light[4])
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         int c = stin__vdsm_cull_lit(ctx, d);
-        if (stin__deep_skips(ctx, d))
-            continue; /* it shadows through the deep map */
+        if (stin__translucent_skips(ctx, d))
+            continue; /* a transparent caster: its map or the threshold decides */
         if (c != culled)
             GL(ctx, Uniform1i)(v->poly_cull_lit, c);
         culled = c;

@@ -327,8 +327,8 @@ static void occluders(stin_context *ctx, const float light[4], stin__pass_state 
         float nearest, deepest;
         /* not an occluder here, it still casts: no adjacency, or displaced
          * (its bounds, and so its depth range, are the flat mesh's) */
-        if (!m->adj_vao || stin__displace_active(ctx, &d->material) || stin__deep_skips(ctx, d))
-            continue; /* (a transparent caster under deep casts through its map) */
+        if (!m->adj_vao || stin__displace_active(ctx, &d->material) || stin__translucent_skips(ctx, d))
+            continue; /* (a transparent caster its map or the threshold decides) */
         draw_depths(p, ctx, d, &nearest, &deepest);
         if (!(nearest > p->front))
             continue; /* reaches behind the light: its projection is no triangle */

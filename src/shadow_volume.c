@@ -236,8 +236,8 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         float center[3], radius;
         stin__stencil_face back, front;
         int zfail;
-        if (stin__deep_skips(ctx, d))
-            continue; /* it shadows through the deep map */
+        if (stin__translucent_skips(ctx, d))
+            continue; /* a transparent caster: its map or the threshold decides */
         caster_bounds(ctx, d, center, &radius);
         zfail = (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_ZFAIL)   ? 1
                 : (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_ZPASS) ? 0

@@ -45,7 +45,13 @@ static const stin__technique_row rows[] = {
     /* deep shadow maps: two array textures of RGBA32F layers (even, odd) */
     {STIN_TECH_TRANSLUCENT_DEEP,       0, TIER4 | BIT(FLOAT_TEXTURE), STIN_TECH_LIGHTING_GLSL150,
      0, 2, 0, NULL, 0},
-    {STIN_TECH_TRANSLUCENT_SOLID,      1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* one colour map and the nearest transparent depth per light (atlases) */
+    {STIN_TECH_TRANSLUCENT_COLOURED,   1,
+     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, NULL, 0},
+    /* casters at or above desc.translucent_opaque_threshold cast, the rest not */
+    {STIN_TECH_TRANSLUCENT_OPAQUE,     2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* every caster casts fully: chosen only when forced (opaque needs no more) */
+    {STIN_TECH_TRANSLUCENT_SOLID,      3, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* vertex texture fetch of the height map in every mesh-drawing vertex
      * stage (after tessellation where there is one); volumes' CPU
      * silhouettes would be the undisplaced mesh's */

@@ -1,9 +1,14 @@
 /* SPDX-License-Identifier: MIT */
-/* Translucent shadows: how casters with opacity below 1 shadow. The default
- * ("translucent-solid") needs nothing: they cast like opaque ones. "deep"
+/* Translucent shadows: how casters with opacity below 1 shadow. "deep"
  * (translucent_deep.c) is deep shadow maps, peeled per light just before
  * its lit pass and read by the lit programs through the
- * shadow_transmittance() seam (shaders/gl4/translucent_deep.glsl). */
+ * shadow_transmittance() seam (shaders/gl4/translucent_deep.glsl).
+ * "coloured" (translucent_coloured.c) is one colour map per light, made at
+ * the same point and read through the same seam
+ * (shaders/gl2/translucent_coloured.glsl). "opaque" needs nothing: casters
+ * at or above the threshold cast like opaque ones, the rest not at all;
+ * "translucent-solid" (forced only) casts them all. translucent.c hands the
+ * frame plan and the shadows techniques one set of calls for all four. */
 #ifndef STIN_TRANSLUCENT_H
 #define STIN_TRANSLUCENT_H
 
@@ -21,6 +26,8 @@ typedef struct stin__deep_state {
     GLuint layers[2];
     GLuint depth;          /* the peel passes' depth test (DEPTH_COMPONENT24) */
     GLuint fbo, program, query;
+    GLuint flag;           /* GL 4.3: the early stop's storage flag (then no query) */
+    int flagged;           /* the program sets the flag (deep_peel_flag.frag) */
     GLint u_model, u_view_proj, u_albedo, u_albedo_tex, u_has_albedo_tex, u_previous,
         u_previous_slice, u_mono;
     stin__displace_locs displace;
@@ -48,17 +55,70 @@ void stin__deep_release(struct stin_context *ctx);
 /* A lit or flat program's lookup uniforms: located once, set per pass. */
 void stin__deep_locate(struct stin_context *ctx, stin__program *p);
 void stin__deep_uniforms(struct stin_context *ctx, const stin__program *p);
-/* At the frame's light pre-passes: whether any draw is transparent. */
-void stin__deep_frame(struct stin_context *ctx);
 /* 1 when lights get deep maps this frame (they are then lit one per pass). */
 int stin__deep_active(const struct stin_context *ctx);
-/* 1 when the shadows technique leaves draw d out: a transparent caster
- * while deep is set up. */
-int stin__deep_skips(const struct stin_context *ctx, const stin__draw *d);
 /* Light li's deep map, peeled now (the frame's target bound back after),
  * for the lit pass that follows; done: the pass is over. No-ops when
  * deep is not active. */
 void stin__deep_light(struct stin_context *ctx, uint32_t li);
 void stin__deep_light_done(struct stin_context *ctx);
+
+/* Colour maps ("coloured"): faces of deep_map_size in a 3 x 2 atlas (face
+ * f at column f % 3, row f / 3), RGBA8 transmittance and the nearest
+ * transparent depth. */
+typedef struct stin__coloured_state {
+    GLuint color, depth, fbo, program;
+    GLint u_model, u_view_proj, u_albedo, u_albedo_tex, u_has_albedo_tex;
+    stin__displace_locs displace;
+    uint32_t size;         /* texels a side of a face */
+    int unit;              /* two texture units: transmittance, depth */
+    int ready;             /* set up: transparent casters leave the shadows technique */
+    int frame_transparent; /* this frame has transparent draws */
+    int kind;              /* the light being shaded: 0 no map, 1 one face, 2 six */
+    float matrix[STIN__DEEP_FACES][16]; /* world -> [0,1] window coordinates per face */
+    float normal_offset;   /* world units per unit clip w: 1.5 texels */
+} stin__coloured_state;
+
+/* As deep's calls above, for "coloured". */
+const char *stin__coloured_chunk(const struct stin_context *ctx);
+void stin__coloured_init(struct stin_context *ctx);
+void stin__coloured_release(struct stin_context *ctx);
+void stin__coloured_locate(struct stin_context *ctx, stin__program *p);
+void stin__coloured_uniforms(struct stin_context *ctx, const stin__program *p);
+int stin__coloured_active(const struct stin_context *ctx);
+void stin__coloured_light(struct stin_context *ctx, uint32_t li);
+void stin__coloured_light_done(struct stin_context *ctx);
+
+/* The translucent-shadows technique in use, whichever it is
+ * (translucent.c). The lit programs' chunk after the shadow chunk, or NULL. */
+const char *stin__translucent_chunk(const struct stin_context *ctx);
+void stin__translucent_locate(struct stin_context *ctx, stin__program *p);
+void stin__translucent_uniforms(struct stin_context *ctx, const stin__program *p);
+/* At the frame's light pre-passes: whether any draw is transparent (a
+ * frame without one makes no map). */
+void stin__translucent_frame(struct stin_context *ctx);
+/* 1 when lights get maps of their own this frame (lit one per pass). */
+int stin__translucent_active(const struct stin_context *ctx);
+/* 1 when the shadows technique leaves draw d out: a transparent caster that
+ * a deep or colour map carries, or under "opaque" one below the threshold. */
+int stin__translucent_skips(const struct stin_context *ctx, const stin__draw *d);
+void stin__translucent_light(struct stin_context *ctx, uint32_t li);
+void stin__translucent_light_done(struct stin_context *ctx);
+
+/* What deep and coloured share (translucent.c). */
+/* The transparent draws, in the caller's order, through the bound program:
+ * colour and albedo texture (on unit 0) per draw. */
+void stin__translucent_draw_casters(struct stin_context *ctx, GLint u_model, GLint u_albedo,
+                                    GLint u_has_albedo_tex, const stin__displace_locs *dl);
+/* Light l's faces (fitted as the shadow maps are; six 90-degree ones for a
+ * point light), each handed to face_fn with its view and projection, and
+ * the lookup's normal offset (1.5 texels per unit clip w). Returns the kind:
+ * 1 one face, 2 six, 0 nothing in front of a spot or directional light. */
+typedef void (*stin__translucent_face_fn)(struct stin_context *ctx, int face,
+                                          const float view[16], const float proj[16]);
+int stin__translucent_faces(struct stin_context *ctx, const stin_light_desc *l, uint32_t size,
+                            stin__translucent_face_fn face_fn, float *normal_offset);
+/* Nothing on the two units from `unit` (target's binding); unit 0 active. */
+void stin__translucent_unbind(struct stin_context *ctx, int unit, GLenum target);
 
 #endif

@@ -9,7 +9,10 @@
  * one array texture, odd ones in the other, so a pass never reads what it
  * writes. Spot and directional lights peel one face fitted as the shadow
  * maps are; point lights six 90-degree faces. A face stops at the first
- * layer an occlusion query finds empty (later layers would be empty too);
+ * layer that drew nothing (later layers would be empty too): on GL 4.3 (the
+ * compute capability, with shader storage buffers) the peel shader sets a
+ * 4-byte flag read back after the pass, on GL 3.2-4.2 an occlusion query
+ * counts the pass's samples;
  * the lookup stops at an empty layer, so stale texels beyond it are never
  * read and the image is the same with every layer peeled. Opaque casters
  * stay the shadows technique's; the lit programs multiply its visibility by
@@ -44,6 +47,8 @@ void stin__deep_release(stin_context *ctx)
         GL(ctx, DeleteProgram)(s->program);
     if (s->query)
         GL(ctx, DeleteQueries)(1, &s->query);
+    if (s->flag)
+        GL(ctx, DeleteBuffers)(1, &s->flag);
     stin__memzero(s, sizeof *s);
 }
 
@@ -87,14 +92,39 @@ static const char *make_targets(stin_context *ctx)
     return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA32F layer framebuffer is incomplete";
 }
 
+/* 1 when the early stop may use the shader storage flag: GL 4.3's compute
+ * capability, and no debug flag asking for the query. */
+static int flag_wanted(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_COMPUTE)) &&
+           !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_QUERY_STOP);
+}
+
+/* The peel program: with the storage flag (deep_peel_flag.frag) where it is
+ * wanted and builds, else with the query's (deep_peel.frag). */
 static int make_program(stin_context *ctx, char *msg, size_t size)
 {
+    static const char *const chunks[] = {"gl4/deep_peel_layer.glsl", NULL};
     stin__deep_state *s = &ctx->deep;
     stin__program_source src;
     stin__memzero(&src, sizeof src);
     src.vert = "gl4/deep_peel.vert";
-    src.frag = "gl4/deep_peel.frag";
-    s->program = stin__program_build_source(ctx, &src, msg, size);
+    src.frag_chunks = chunks;
+    if (flag_wanted(ctx)) {
+        src.frag = "gl4/deep_peel_flag.frag";
+        s->program = stin__program_build_source(ctx, &src, msg, size);
+        if (s->program)
+            s->flagged = 1;
+        else
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "deep: the storage-flag peel program failed to build (%s); the early "
+                      "stop uses an occlusion query", msg);
+        msg[0] = '\0';
+    }
+    if (!s->program) {
+        src.frag = "gl4/deep_peel.frag";
+        s->program = stin__program_build_source(ctx, &src, msg, size);
+    }
     if (!s->program)
         return 0;
 #define LOC(field, name) s->field = GL(ctx, GetUniformLocation)(s->program, name)
@@ -142,8 +172,16 @@ void stin__deep_init(stin_context *ctx)
         stin__demote(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_SOLID, why);
         return;
     }
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
+    if (s->flagged) { /* the early stop's flag: one uint, cleared before each pass */
+        static const GLuint zero = 0;
+        GL(ctx, GenBuffers)(1, &s->flag);
+        GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, s->flag);
+        GL(ctx, BufferData)(GL_SHADER_STORAGE_BUFFER, (GLsizeiptr)sizeof zero, &zero,
+                            GL_DYNAMIC_READ);
+        GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, 0);
+    } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY)) {
         GL(ctx, GenQueries)(1, &s->query);
+    }
     s->ready = 1;
     stin__gl_check_errors(ctx, "deep set-up");
 }
@@ -183,45 +221,19 @@ void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
-void stin__deep_frame(stin_context *ctx)
-{
-    uint32_t i;
-    ctx->deep.frame_transparent = 0;
-    ctx->deep.kind = 0;
-    for (i = 0; ctx->deep.ready && i < ctx->draw_count; i++)
-        if (ctx->draws[i].material.color[3] < 1.0f)
-            ctx->deep.frame_transparent = 1;
-}
-
 int stin__deep_active(const stin_context *ctx)
 {
     return ctx->deep.ready && ctx->deep.frame_transparent;
 }
 
-int stin__deep_skips(const stin_context *ctx, const stin__draw *d)
-{
-    return ctx->deep.ready && d->material.color[3] < 1.0f;
-}
-
-/* The transparent draws through the peel program (albedo on unit 0), in
- * the caller's order: the depth test makes the layers independent of it,
- * and the order test sees that (the camera's far-to-near order would hide
- * an order dependence). */
+/* The transparent draws through the peel program in the caller's order:
+ * the depth test makes the layers independent of it, and the order test
+ * sees that (the camera's far-to-near order would hide an order
+ * dependence). */
 static void draw_transparent(stin_context *ctx)
 {
     const stin__deep_state *s = &ctx->deep;
-    uint32_t i;
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[i];
-        const stin__texture_slot *t;
-        if (d->material.color[3] >= 1.0f)
-            continue;
-        t = stin__texture_lookup(ctx, d->material.albedo);
-        GL(ctx, Uniform4fv)(s->u_albedo, 1, d->material.color);
-        GL(ctx, Uniform1i)(s->u_has_albedo_tex, t != NULL);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, t ? t->name : 0);
-        stin__glsl_submit_geometry(ctx, s->u_model, &s->displace, d);
-    }
+    stin__translucent_draw_casters(ctx, s->u_model, s->u_albedo, s->u_has_albedo_tex, &s->displace);
 }
 
 /* One face's layers, from its view and projection; layer k of the face is
@@ -229,7 +241,8 @@ static void draw_transparent(stin_context *ctx)
 static void peel_face(stin_context *ctx, int face, const float view[16], const float proj[16])
 {
     stin__deep_state *s = &ctx->deep;
-    int stop_early = s->query && !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_NO_EARLY_STOP);
+    int stop_early = (s->query || s->flag) && !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_NO_EARLY_STOP);
+    static const GLuint zero = 0;
     float view_proj[16];
     uint32_t k;
     stin__mat4_mul(view_proj, proj, view);
@@ -248,46 +261,24 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
         GL(ctx, Uniform1i)(s->u_previous_slice,
                            k > 0 ? (GLint)((uint32_t)face * s->slices + (k - 1u) / 2u) : -1);
-        if (stop_early)
+        if (stop_early && s->flag)
+            GL(ctx, BufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof zero, &zero);
+        else if (stop_early)
             GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, s->query);
         draw_transparent(ctx);
         ctx->stats.deep_layers++;
         ctx->stats.passes++;
-        if (stop_early) {
+        if (stop_early && s->flag) { /* the shader's writes, visible to the read-back */
+            GL(ctx, MemoryBarrier)(GL_BUFFER_UPDATE_BARRIER_BIT);
+            GL(ctx, GetBufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof drawn,
+                                      &drawn);
+        } else if (stop_early) {
             GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
             GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &drawn);
         }
         if (!drawn)
             break; /* empty, so every deeper layer would be: the lookup stops here */
     }
-}
-
-/* 1.5 texels' width in world units per unit of the face's clip w, as
- * map-pcf's normal offset. */
-static float texel_offset(const float proj[16], uint32_t size)
-{
-    return 1.5f * 2.0f / (proj[0] * (float)size);
-}
-
-/* Light l's faces: 1 (spot, directional), 6 (point), 0 (nothing in front). */
-static int peel_light(stin_context *ctx, const stin_light_desc *l)
-{
-    stin__deep_state *s = &ctx->deep;
-    float view[16], proj[16], n, f;
-    int face;
-    if (l->type != STIN_LIGHT_POINT) {
-        if (!stin__light_camera(ctx, l, view, proj, &n, &f, s->size))
-            return 0;
-        peel_face(ctx, 0, view, proj);
-        s->normal_offset = texel_offset(proj, s->size);
-        return 1;
-    }
-    for (face = 0; face < STIN__DEEP_FACES; face++) {
-        stin__light_cube_face(ctx, l->position, face, view, proj);
-        peel_face(ctx, face, view, proj);
-    }
-    s->normal_offset = texel_offset(proj, s->size); /* every face is 90 degrees */
-    return 2;
 }
 
 void stin__deep_light(stin_context *ctx, uint32_t li)
@@ -307,10 +298,14 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
     GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
     GL(ctx, Uniform1i)(s->u_previous, s->unit);
     GL(ctx, Uniform1i)(s->u_mono, ctx->desc.deep_mono);
+    if (s->flag) /* binding 0 of the peel shader (and the generic binding) */
+        GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, s->flag);
     /* the other texture is sampled by no one while its slices are drawn */
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    s->kind = peel_light(ctx, &ctx->lights[li]);
+    s->kind = stin__translucent_faces(ctx, &ctx->lights[li], s->size, peel_face, &s->normal_offset);
+    if (s->flag)
+        GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
@@ -324,11 +319,8 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
 void stin__deep_light_done(stin_context *ctx)
 {
     stin__deep_state *s = &ctx->deep;
-    int i;
     if (!s->kind)
         return;
     s->kind = 0;
-    for (i = 0; i < 2; i++)
-        stin__bind_unit(ctx, s->unit + i, GL_TEXTURE_2D_ARRAY, 0);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    stin__translucent_unbind(ctx, s->unit, GL_TEXTURE_2D_ARRAY);
 }

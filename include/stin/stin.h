@@ -429,13 +429,14 @@ const char *stin_feature_name(stin_feature f);
  *   shadows:  vdsm, volume, map-pcf, map-depth, map-combine, off
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace-tess, displace, displacement-off
- *   translucent shadows: deep, translucent-solid
+ *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
  *   csg:      goldfeather, csg-off (see "CSG products" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
- * faces, each when there is one to spare); map-combine 2. Surface units follow the albedo, shadow units follow
- * the surface's.
+ * faces, each when there is one to spare); map-combine 2; deep and coloured
+ * 2. Surface units follow the albedo, shadow units follow the surface's,
+ * translucent shadows' the shadows'.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
  * with a normalisation cube map; it needs multitexture, texture_env_combine,
  * texture_env_dot3, cube maps and 3 texture units (4 for a material that
@@ -565,8 +566,12 @@ const char *stin_feature_name(stin_feature f);
  * the shadows technique's (exact under vdsm and volume); transparent ones
  * are left out of it (no volume, no shadow polygon, no map-pcf depth) and
  * shadow through the deep map only. A face's peeling stops at the first
- * layer that drew nothing (an occlusion query; STIN_DEBUG_DEEP_NO_EARLY_STOP
- * peels every layer: the same image). Surfaces beyond desc.deep_layers
+ * layer that drew nothing: on GL 4.3 (capability "compute shaders") a flag
+ * in a 4-byte shader storage buffer that the peel shader sets and stin
+ * reads back (binding point 0 and the generic GL_SHADER_STORAGE_BUFFER
+ * binding are left at 0), on GL 3.2-4.2 an occlusion query
+ * (STIN_DEBUG_DEEP_QUERY_STOP: the query everywhere;
+ * STIN_DEBUG_DEEP_NO_EARLY_STOP peels every layer: the same image). Surfaces beyond desc.deep_layers
  * along a ray are not counted (their light passes). Lights are lit one per
  * pass while it is in use, and a frame without transparent draws draws no
  * layer. Blended draws are still drawn unshadowed, and the visibility map
@@ -578,7 +583,32 @@ const char *stin_feature_name(stin_feature f);
  * (RGBA32F: depth and V; 6 faces, two ping-pong array textures) plus a
  * deep_map_size^2 x 4 depth buffer: 97 MiB at the defaults (4 layers, 512),
  * 1.52 GiB at 2048 with 4 layers (stin_deep_memory_bytes); only the faces
- * a frame peels are written. */
+ * a frame peels are written.
+ * "coloured" (GL2 and up: GLSL lighting, FBOs, depth textures; two texture
+ * units after the shadows technique's) is the next in the chain and runs
+ * under every GLSL shadows technique: per light, just before its lit pass,
+ * the transparent casters are drawn from the light (faces fitted as deep's,
+ * in a 3 x 2 atlas of deep_map_size a face) twice: their nearest depth into
+ * a depth texture, then their eq 5.3 factors multiplied together by
+ * blending into an RGBA8 map cleared to white. The lit pass multiplies the
+ * shadows technique's visibility by the product where the point (pushed as
+ * deep's) lies behind the nearest transparent depth, else by 1. Exact where
+ * a point has no transparent caster between it and the light that also lies
+ * behind it: a floor under non-overlapping or stacked panes is exact, but a
+ * receiver between two panes (or a pane behind another) is darkened by
+ * every pane on its light ray, those behind it and its own included (a box
+ * pane: its back face by its own two faces). Needs no float texture; the
+ * map's 8 bits round each factor by up to 1/510. As with deep, lights are
+ * lit one per pass while it is in use, a frame without transparent draws
+ * draws no map, blended draws are drawn unshadowed, the visibility map
+ * (export_visibility) holds the shadows technique's visibility only, and
+ * with shadows "off" it falls back to "opaque" (logged). The face size is
+ * halved until three faces fit the context's largest texture. GPU memory:
+ * 6 x deep_map_size^2 x (4 + 4) bytes (12 MiB at 512).
+ * "opaque" (every tier) ends the chain: a caster whose opacity is at least
+ * desc.translucent_opaque_threshold (default 0.5) casts a full shadow under
+ * every shadows technique, one below it none at all; "translucent-solid"
+ * (all cast fully) is chosen only when forced. */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
@@ -601,7 +631,9 @@ const char *stin_feature_name(stin_feature f);
     X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
     X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4) \
     X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1) \
-    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4)
+    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4) \
+    X(TRANSLUCENT_COLOURED, "coloured", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL2) \
+    X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -674,6 +706,9 @@ typedef struct stin_desc {
                                         * context's largest texture) */
     int deep_mono;                     /* "deep": 1 stores grey visibility V' (1 - a)
                                         * instead of the coloured one; default 0 */
+    float translucent_opaque_threshold; /* "opaque": casters of opacity >= this cast a
+                                        * full shadow, the rest none; default (0) 0.5,
+                                        * finite, in (0, 1] */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -706,6 +741,13 @@ typedef struct stin_desc {
 #define STIN_DEBUG_DEEP_NO_EARLY_STOP 1024u
 /* displacement: level 0 of the height map at every distance (no mip chain) */
 #define STIN_DEBUG_DISPLACE_NO_MIP 2048u
+/* coloured: no nearest-transparent-depth test: every point under a
+ * transparent caster is tinted, those in front of it too (tests prove the
+ * test is needed) */
+#define STIN_DEBUG_COLOURED_NO_DEPTH 16384u
+/* deep: the early stop by an occlusion query even where GL 4.3's storage
+ * flag could run (the same image and layer count) */
+#define STIN_DEBUG_DEEP_QUERY_STOP 32768u
 
 typedef struct stin_context stin_context;
 

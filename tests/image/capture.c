@@ -48,6 +48,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.deep_layers = o->deep_layers;
     d.deep_map_size = o->deep_map_size;
     d.deep_mono = o->deep_mono;
+    d.translucent_opaque_threshold = o->opaque_threshold;
     d.debug_flags = o->debug_flags;
     d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);

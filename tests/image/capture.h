@@ -28,6 +28,7 @@ typedef struct capture_options {
     stin_technique translucent;
     uint32_t deep_layers, deep_map_size; /* stin_desc's; 0 = stin's defaults */
     int deep_mono;
+    float opaque_threshold; /* stin_desc.translucent_opaque_threshold; 0 = stin's default */
 } capture_options;
 
 typedef struct capture {

@@ -27,6 +27,9 @@
  *                  visibility and beauty;
  *   early-stop     STIN_DEBUG_DEEP_NO_EARLY_STOP gives bit-identical
  *                  visibility and beauty, with more layers peeled;
+ *   flag-stop      (GL 4.3) the storage flag's early stop against the
+ *                  occlusion query's (STIN_DEBUG_DEEP_QUERY_STOP):
+ *                  bit-identical, the same layers, fewer than every layer;
  *   with-volume, with-map-pcf  the transmittance test with those shadows
  *                  techniques for the opaque casters (glass-panes);
  *   texture        (deep-window) a textured pane's opaque cells cast their
@@ -38,215 +41,13 @@
  * Below GL4 the deep tests SKIP (the tier has no deep), and forcing deep
  * there must be refused, naming what is missing.
  */
-#include "aov.h"
-#include "capture.h"
-#include "image_test.h"
-#include "light_reach.h"
-#include "reference.h"
+#include "deep_case.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define T_TOLERANCE (2.0 / 255.0)
-#define T_MIN_MATCH 0.995
-#define MIN_PARTIAL 100
-#define MIN_CLASS 50
-
-typedef struct deep_case {
-    run *r;
-    const scene *s;
-    const char *scene_name;
-    const float *ref;
-    const ref_hit *hits;
-    stin_tier tier;
-    uint32_t map_size, layers;
-    int band;
-} deep_case;
-
-static const float *ref_px(const deep_case *c, int x, int y)
-{
-    return c->ref + ((size_t)y * c->r->width + x) * REFERENCE_CHANNELS;
-}
-
-/* The capture's pixel (x, y from the bottom, as the reference's rows). */
-static const float *gl_px(const deep_case *c, const capture *cap, int x, int y)
-{
-    return cap->img.pixels + ((size_t)(c->r->height - 1 - y) * c->r->width + x) * AOV_CHANNELS;
-}
-
-/* 1 where T or the object hit changes within band pixels of (x, y). */
-static int near_t_edge(const deep_case *c, int x, int y)
-{
-    int w = c->r->width, h = c->r->height, dx, dy, k;
-    const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
-    for (dy = -c->band; dy <= c->band; dy++)
-        for (dx = -c->band; dx <= c->band; dx++) {
-            int nx = x + dx, ny = y + dy;
-            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
-                continue;
-            if (c->hits[(size_t)ny * w + nx].object != c->hits[(size_t)y * w + x].object)
-                return 1;
-            for (k = 0; k < 3; k++)
-                if (fabsf(ref_px(c, nx, ny)[REFERENCE_CH_T_R + k] - t[k]) > T_TOLERANCE)
-                    return 1;
-        }
-    return 0;
-}
-
-/* A pixel the comparison counts: covered, the light reaches it, away from
- * transmittance edges, and the render's surface is the reference's. */
-static int comparable(const deep_case *c, const capture *cap, int x, int y)
-{
-    const ref_hit *hit = &c->hits[(size_t)y * c->r->width + x];
-    const float *g = gl_px(c, cap, x, y), *ref = ref_px(c, x, y);
-    double d2 = 0;
-    int k;
-    if (!hit->hit || !(g[AOV_Z] > 0.0f) || !light_reaches(c->s, hit) || near_t_edge(c, x, y))
-        return 0;
-    for (k = 0; k < 3; k++)
-        d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) * (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]);
-    return sqrt(d2) <= 1e-3 * ref[REFERENCE_CH_Z] + 1e-3;
-}
-
-static int within(const float *g, const float *expect, double tol)
-{
-    int k;
-    for (k = 0; k < 3; k++)
-        if (fabs(g[AOV_VIS_R + k] - expect[k]) > tol)
-            return 0;
-    return 1;
-}
-
-static int is_transparent(const deep_case *c, const ref_hit *hit)
-{
-    return hit->hit && c->s->materials[c->s->objects[hit->object].material].color[3] < 1.0f;
-}
-
-static void test_transmittance(const deep_case *c, const capture *cap, const char *name)
-{
-    int w = c->r->width, h = c->r->height, x, y;
-    long compared = 0, match = 0, partial = 0;
-    double worst = 0;
-    for (y = 0; y < h; y++)
-        for (x = 0; x < w; x++) {
-            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
-            const float *g = gl_px(c, cap, x, y);
-            int k;
-            if (!comparable(c, cap, x, y))
-                continue;
-            compared++;
-            match += within(g, t, T_TOLERANCE);
-            partial += t[0] > 0.0f && t[0] < 1.0f;
-            for (k = 0; k < 3; k++)
-                if (fabs(g[AOV_VIS_R + k] - t[k]) > worst)
-                    worst = fabs(g[AOV_VIS_R + k] - t[k]);
-        }
-    report(c->r,
-           compared && match >= T_MIN_MATCH * compared && partial >= MIN_PARTIAL ? "PASS" : "FAIL",
-           name,
-           "%ux%u a face: transmittance within 2/255 of the reference on %.3f%% of %ld pixels the "
-           "light reaches, %d px from T edges (need 99.5%%); %ld in partial shadow (need %d); "
-           "largest difference %.4f", c->map_size, c->map_size,
-           compared ? 100.0 * match / compared : 0.0, compared, c->band, partial, MIN_PARTIAL,
-           worst);
-}
-
-/* The seed's classes of T this scene has: white panes or the colour cases. */
-static void test_values(const deep_case *c, const capture *cap, const char *name)
-{
-    static const float classes[6][3] = {{0.5f, 0.5f, 0.5f},     {0.25f, 0.25f, 0.25f},
-                                        {0.125f, 0.125f, 0.125f}, {0.5f, 0.25f, 0.25f},
-                                        {0.25f, 0.0625f, 0.0625f}, {0.125f, 0.125f, 0.0625f}};
-    int first = strstr(c->scene_name, "colour") ? 3 : 0, k, x, y, ok = 1;
-    long n[6] = {0}, good[6] = {0};
-    char detail[512];
-    size_t used = 0;
-    for (y = 0; y < c->r->height; y++)
-        for (x = 0; x < c->r->width; x++) {
-            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
-            if (!comparable(c, cap, x, y))
-                continue;
-            for (k = first; k < first + 3; k++)
-                if (fabsf(t[0] - classes[k][0]) < 1e-5f && fabsf(t[1] - classes[k][1]) < 1e-5f &&
-                    fabsf(t[2] - classes[k][2]) < 1e-5f) {
-                    n[k]++;
-                    good[k] += within(gl_px(c, cap, x, y), classes[k], T_TOLERANCE);
-                }
-        }
-    detail[0] = '\0';
-    for (k = first; k < first + 3; k++) {
-        ok &= n[k] >= MIN_CLASS && good[k] >= T_MIN_MATCH * n[k];
-        used += (size_t)snprintf(detail + used, sizeof detail - used, "%s(%g,%g,%g): %ld of %ld",
-                                 k > first ? ", " : "", classes[k][0], classes[k][1],
-                                 classes[k][2], good[k], n[k]);
-    }
-    report(c->r, ok ? "PASS" : "FAIL", name,
-           "pixels of each of the seed's values within 2/255 (need >= %d a value, 99.5%%): %s",
-           MIN_CLASS, detail);
-}
-
-static void test_own_layer(const deep_case *c, const capture *cap, const char *name)
-{
-    long n = 0, good = 0;
-    int x, y;
-    static const float one[3] = {1, 1, 1};
-    for (y = 0; y < c->r->height; y++)
-        for (x = 0; x < c->r->width; x++) {
-            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
-            if (!is_transparent(c, &c->hits[(size_t)y * c->r->width + x]) || t[0] < 1.0f ||
-                t[1] < 1.0f || t[2] < 1.0f || !comparable(c, cap, x, y))
-                continue;
-            n++;
-            good += within(gl_px(c, cap, x, y), one, T_TOLERANCE);
-        }
-    report(c->r, n >= MIN_PARTIAL && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
-           "%ld of %ld pane pixels the reference sees unshadowed are within 2/255 of 1 (need "
-           ">= %d pixels, 99.5%%)", good, n, MIN_PARTIAL);
-}
-
-/* Visibility and beauty identical, pixel for pixel; returns the count that differ. */
-static long differing(const capture *a, const capture *b)
-{
-    size_t i, n = (size_t)a->img.width * a->img.height;
-    long d = 0;
-    int k;
-    static const int ch[] = {AOV_R, AOV_G, AOV_B, AOV_VIS_R, AOV_VIS_G, AOV_VIS_B};
-    for (i = 0; i < n; i++)
-        for (k = 0; k < 6; k++)
-            if (a->img.pixels[i * AOV_CHANNELS + ch[k]] != b->img.pixels[i * AOV_CHANNELS + ch[k]]) {
-                d++;
-                break;
-            }
-    return d;
-}
-
-static int render(const deep_case *c, const scene *s, const capture_options *o, capture *cap,
-                  const char *name)
-{
-    char err[512];
-    if (!capture_render(c->r->plat, c->r->profile, s, o, cap, err, sizeof err)) {
-        report(c->r, "FAIL", name, "%s", err);
-        return 0;
-    }
-    if (cap->choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique != STIN_TECH_TRANSLUCENT_DEEP) {
-        report(c->r, "FAIL", name, "deep fell back: %s",
-               cap->choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason);
-        capture_free(cap);
-        return 0;
-    }
-    return 1;
-}
-
-static void options(const deep_case *c, capture_options *o)
-{
-    memset(o, 0, sizeof *o);
-    o->tier = c->tier;
-    o->translucent = STIN_TECH_TRANSLUCENT_DEEP;
-    o->deep_map_size = c->map_size;
-    o->deep_layers = c->layers;
-}
 
 static void test_layer_cap(const deep_case *c, const char *name)
 {
@@ -255,17 +56,17 @@ static void test_layer_cap(const deep_case *c, const char *name)
     static const float quarter[3] = {0.25f, 0.25f, 0.25f};
     long n = 0, good = 0;
     int x, y;
-    options(c, &o);
+    deep_options(c, &o);
     o.deep_layers = 2;
-    if (!render(c, c->s, &o, &cap, name))
+    if (!deep_render(c, c->s, &o, &cap, name))
         return;
     for (y = 0; y < c->r->height; y++)
         for (x = 0; x < c->r->width; x++) {
-            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
-            if (fabsf(t[0] - 0.125f) > 1e-5f || !comparable(c, &cap, x, y))
+            const float *t = deep_ref_px(c, x, y) + REFERENCE_CH_T_R;
+            if (fabsf(t[0] - 0.125f) > 1e-5f || !deep_comparable(c, &cap, x, y))
                 continue;
             n++;
-            good += within(gl_px(c, &cap, x, y), quarter, T_TOLERANCE);
+            good += deep_within(deep_gl_px(c, &cap, x, y), quarter, T_TOLERANCE);
         }
     report(c->r, n >= MIN_CLASS && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
            "deep_layers 2: %ld of %ld pixels under three panes (T 0.125) get 0.25 within 2/255 "
@@ -286,9 +87,9 @@ static void test_order(const deep_case *c, const capture *base, const char *name
     for (i = 0; i < c->s->object_count; i++)
         objects[i] = c->s->objects[c->s->object_count - 1 - i];
     reversed.objects = objects;
-    options(c, &o);
-    if (render(c, &reversed, &o, &cap, name)) {
-        d = differing(base, &cap);
+    deep_options(c, &o);
+    if (deep_render(c, &reversed, &o, &cap, name)) {
+        d = deep_differing(base, &cap);
         report(c->r, d == 0 ? "PASS" : "FAIL", name,
                "objects drawn in reverse order: visibility and beauty differ on %ld pixels "
                "(must be 0)", d);
@@ -302,17 +103,53 @@ static void test_early_stop(const deep_case *c, const capture *base, const char 
     capture cap;
     capture_options o;
     long d;
-    options(c, &o);
+    deep_options(c, &o);
     o.debug_flags = STIN_DEBUG_DEEP_NO_EARLY_STOP;
-    if (!render(c, c->s, &o, &cap, name))
+    if (!deep_render(c, c->s, &o, &cap, name))
         return;
-    d = differing(base, &cap);
+    d = deep_differing(base, &cap);
     report(c->r, d == 0 && cap.stats.deep_layers >= base->stats.deep_layers ? "PASS" : "FAIL",
            name,
            "every layer peeled: visibility and beauty differ on %ld pixels (must be 0); layers "
            "peeled in the visibility frame %u with the early stop, %u without", d,
            base->stats.deep_layers, cap.stats.deep_layers);
     capture_free(&cap);
+}
+
+/* GL 4.3's storage flag against the occlusion query: the same images and
+ * the same layers peeled, fewer than with every layer (so a flag that is
+ * never or always set fails); SKIP where the context has no compute
+ * capability (gl33-core: the query is the early stop there). */
+static void test_flag_stop(const deep_case *c, const capture *base, const char *name)
+{
+    capture query, every;
+    capture_options o;
+    long d;
+    if (!(base->caps_present & STIN_CAP_BIT(STIN_CAP_COMPUTE))) {
+        report(c->r, "SKIP", name, "no %s (GL 4.3, shader storage buffers): the early stop is "
+                                   "the occlusion query here", stin_cap_name(STIN_CAP_COMPUTE));
+        return;
+    }
+    deep_options(c, &o);
+    o.debug_flags = STIN_DEBUG_DEEP_QUERY_STOP;
+    if (!deep_render(c, c->s, &o, &query, name))
+        return;
+    o.debug_flags = STIN_DEBUG_DEEP_NO_EARLY_STOP;
+    if (deep_render(c, c->s, &o, &every, name)) {
+        d = deep_differing(base, &query);
+        report(c->r,
+               d == 0 && base->stats.deep_layers == query.stats.deep_layers &&
+                       base->stats.deep_layers < every.stats.deep_layers
+                   ? "PASS"
+                   : "FAIL",
+               name,
+               "storage flag vs occlusion query: visibility and beauty differ on %ld pixels "
+               "(must be 0); layers peeled %u with the flag, %u with the query (must be equal), "
+               "%u with every layer (must be more)", d, base->stats.deep_layers,
+               query.stats.deep_layers, every.stats.deep_layers);
+        capture_free(&every);
+    }
+    capture_free(&query);
 }
 
 /* The transmittance test with another shadows technique for the opaque
@@ -322,16 +159,16 @@ static void with_shadows(const deep_case *c, stin_technique shadows)
     capture cap;
     capture_options o;
     char name[256];
-    options(c, &o);
+    deep_options(c, &o);
     o.shadows = shadows;
     snprintf(name, sizeof name, "%s/%s/deep-with-%s", stin_tier_name(c->tier), c->scene_name,
              stin_technique_name(shadows));
-    if (!render(c, c->s, &o, &cap, name))
+    if (!deep_render(c, c->s, &o, &cap, name))
         return;
     if (cap.choice[STIN_FEATURE_SHADOWS].technique != shadows)
         report(c->r, "FAIL", name, "shadows fell back: %s", cap.choice[STIN_FEATURE_SHADOWS].reason);
     else
-        test_transmittance(c, &cap, name);
+        deep_test_transmittance(c, &cap, name);
     capture_free(&cap);
 }
 
@@ -347,7 +184,7 @@ static void test_texture(const deep_case *c, const capture *cap, const char *nam
     int x, y;
     for (y = 0; y < c->r->height; y++)
         for (x = 0; x < c->r->width; x++) {
-            const float *ref = ref_px(c, x, y), *t = ref + REFERENCE_CH_T_R;
+            const float *ref = deep_ref_px(c, x, y), *t = ref + REFERENCE_CH_T_R;
             int k = fabsf(t[0] - cell[0]) < 1e-3f && fabsf(t[1] - cell[1]) < 1e-3f &&
                             fabsf(t[2] - cell[2]) < 1e-3f
                         ? 0
@@ -355,10 +192,10 @@ static void test_texture(const deep_case *c, const capture *cap, const char *nam
                                   ref[REFERENCE_CH_VIS_R] == 0.0f
                               ? 1
                               : -1;
-            if (k < 0 || !comparable(c, cap, x, y))
+            if (k < 0 || !deep_comparable(c, cap, x, y))
                 continue;
             n[k]++;
-            good[k] += within(gl_px(c, cap, x, y), k ? one : cell, T_TOLERANCE);
+            good[k] += deep_within(deep_gl_px(c, cap, x, y), k ? one : cell, T_TOLERANCE);
         }
     report(c->r,
            n[0] >= MIN_CLASS && n[1] >= MIN_CLASS && good[0] >= T_MIN_MATCH * n[0] &&
@@ -382,20 +219,20 @@ static void test_mono(const deep_case *c, const char *name)
     capture_options o;
     long n[3] = {0}, good[3] = {0};
     int x, y, k, ok = 1;
-    options(c, &o);
+    deep_options(c, &o);
     o.deep_mono = 1;
-    if (!render(c, c->s, &o, &cap, name))
+    if (!deep_render(c, c->s, &o, &cap, name))
         return;
     for (y = 0; y < c->r->height; y++)
         for (x = 0; x < c->r->width; x++) {
-            const float *t = ref_px(c, x, y) + REFERENCE_CH_T_R;
-            if (!comparable(c, &cap, x, y))
+            const float *t = deep_ref_px(c, x, y) + REFERENCE_CH_T_R;
+            if (!deep_comparable(c, &cap, x, y))
                 continue;
             for (k = 0; k < 3; k++)
                 if (fabsf(t[0] - coloured[k][0]) < 1e-5f && fabsf(t[1] - coloured[k][1]) < 1e-5f &&
                     fabsf(t[2] - coloured[k][2]) < 1e-5f) {
                     n[k]++;
-                    good[k] += within(gl_px(c, &cap, x, y), grey[k], T_TOLERANCE);
+                    good[k] += deep_within(deep_gl_px(c, &cap, x, y), grey[k], T_TOLERANCE);
                 }
         }
     for (k = 0; k < 3; k++)
@@ -407,79 +244,6 @@ static void test_mono(const deep_case *c, const char *name)
     capture_free(&cap);
 }
 
-/* Forced deep with shadows off: nothing is shadowed, so it falls back to
- * translucent-solid at set-up and says why. */
-static void test_shadows_off(const deep_case *c, const char *name)
-{
-    capture cap;
-    capture_options o;
-    char err[512];
-    const stin_choice *t;
-    options(c, &o);
-    o.shadows = STIN_TECH_SHADOWS_OFF;
-    if (!capture_render(c->r->plat, c->r->profile, c->s, &o, &cap, err, sizeof err)) {
-        report(c->r, "FAIL", name, "%s", err);
-        return;
-    }
-    t = &cap.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS];
-    report(c->r,
-           t->technique == STIN_TECH_TRANSLUCENT_SOLID && t->fell_back &&
-                   strstr(t->reason, "shadows are off") && !cap.log_errors && !cap.stats.deep_layers
-               ? "PASS"
-               : "FAIL",
-           name, "forced deep with shadows off: %s (%s), %u layers peeled, %u errors logged",
-           stin_technique_name(t->technique), t->reason, cap.stats.deep_layers, cap.log_errors);
-    capture_free(&cap);
-}
-
-/* Below GL4: deep cannot run; forcing it is refused, naming the tier. */
-static void lower_tier(run *r, stin_tier tier, const char *scene_name, const scene *s)
-{
-    capture cap;
-    capture_options o;
-    char err[512], name[256];
-    int refused;
-    snprintf(name, sizeof name, "%s/%s/deep", stin_tier_name(tier), scene_name);
-    report(r, "SKIP", name, "tier %s has no deep shadow maps (GL4 only): transparent casters "
-                            "cast solid shadows here", stin_tier_name(tier));
-    memset(&o, 0, sizeof o);
-    o.tier = tier;
-    o.translucent = STIN_TECH_TRANSLUCENT_DEEP;
-    refused = !capture_render(r->plat, r->profile, s, &o, &cap, err, sizeof err);
-    snprintf(name, sizeof name, "%s/%s/deep-forced", stin_tier_name(tier), scene_name);
-    report(r, refused && strstr(err, "deep needs tier gl4") ? "PASS" : "FAIL", name,
-           "forcing deep at tier %s: %s", stin_tier_name(tier),
-           refused ? err : "created (must be refused)");
-    if (!refused)
-        capture_free(&cap);
-}
-
-/* The reference's AOVs (transmittance among them) and primary hits of the
- * case's scene; 0 with a message in err. Free with free_reference. */
-static int make_reference(deep_case *c, reference **ref, char *err, size_t err_size)
-{
-    size_t n = (size_t)c->r->width * c->r->height;
-    ref_hit *hits = malloc(sizeof *hits * n);
-    float *img = malloc(sizeof(float) * REFERENCE_CHANNELS * n);
-    c->hits = hits;
-    c->ref = img;
-    *ref = reference_create(c->s, err, err_size);
-    if (*ref && hits && img && reference_primary(*ref, c->r->width, c->r->height, hits) &&
-        reference_render(c->s, *ref, c->r->width, c->r->height, 0, img))
-        return 1;
-    if (*ref)
-        snprintf(err, err_size, "render failed");
-    return 0;
-}
-
-static void free_reference(deep_case *c, reference *ref)
-{
-    free((void *)c->hits);
-    free((void *)c->ref);
-    if (ref)
-        reference_destroy(ref);
-}
-
 /* The tests of one GL4 scene; which ones depends on what the scene is for. */
 static void gl4_tests(deep_case *c, int stack, int colour, int omni)
 {
@@ -487,19 +251,19 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
     capture_options o;
     char name[256];
     const char *tier = stin_tier_name(c->tier), *scene_name = c->scene_name;
-    options(c, &o);
+    deep_options(c, &o);
     snprintf(name, sizeof name, "%s/%s/deep", tier, scene_name);
-    if (!render(c, c->s, &o, &base, name))
+    if (!deep_render(c, c->s, &o, &base, name))
         return;
     snprintf(name, sizeof name, "%s/%s/deep-gl-clean", tier, scene_name);
     capture_report_clean(c->r, name, &base);
     snprintf(name, sizeof name, "%s/%s/deep-transmittance", tier, scene_name);
-    test_transmittance(c, &base, name);
+    deep_test_transmittance(c, &base, name);
     snprintf(name, sizeof name, "%s/%s/deep-own-layer", tier, scene_name);
-    test_own_layer(c, &base, name);
+    deep_test_own_layer(c, &base, name);
     if (stack || colour) {
         snprintf(name, sizeof name, "%s/%s/deep-values", tier, scene_name);
-        test_values(c, &base, name);
+        deep_test_values(c, &base, name);
         snprintf(name, sizeof name, "%s/%s/deep-order", tier, scene_name);
         test_order(c, &base, name);
     }
@@ -507,13 +271,15 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
         snprintf(name, sizeof name, "%s/%s/deep-layer-cap", tier, scene_name);
         test_layer_cap(c, name);
         snprintf(name, sizeof name, "%s/%s/deep-shadows-off", tier, scene_name);
-        test_shadows_off(c, name);
+        deep_test_shadows_off(c, name, STIN_TECH_TRANSLUCENT_SOLID);
     } else if (colour) {
         snprintf(name, sizeof name, "%s/%s/deep-mono", tier, scene_name);
         test_mono(c, name);
     } else { /* point lights: faces without panes stop after one layer */
         snprintf(name, sizeof name, "%s/%s/deep-early-stop", tier, scene_name);
         test_early_stop(c, &base, name);
+        snprintf(name, sizeof name, "%s/%s/deep-flag-stop", tier, scene_name);
+        test_flag_stop(c, &base, name);
     }
     if (!stack && !colour && !omni) {
         /* glass-panes' opaque casters under the other shadows techniques */
@@ -529,12 +295,12 @@ static void window_tests(deep_case *c)
     capture cap;
     capture_options o;
     char name[256];
-    options(c, &o);
+    deep_options(c, &o);
     snprintf(name, sizeof name, "%s/%s/deep", stin_tier_name(c->tier), c->scene_name);
-    if (!render(c, c->s, &o, &cap, name))
+    if (!deep_render(c, c->s, &o, &cap, name))
         return;
     snprintf(name, sizeof name, "%s/%s/deep-transmittance", stin_tier_name(c->tier), c->scene_name);
-    test_transmittance(c, &cap, name);
+    deep_test_transmittance(c, &cap, name);
     snprintf(name, sizeof name, "%s/%s/deep-texture", stin_tier_name(c->tier), c->scene_name);
     test_texture(c, &cap, name);
     capture_free(&cap);
@@ -557,7 +323,9 @@ void deep_tests(run *r, stin_tier tier, const char *path)
         return;
     if (tier != STIN_TIER_GL4) {
         if (stack) /* once per tier */
-            lower_tier(r, tier, scene_name, &s);
+            deep_refusal(r, tier, scene_name, &s, STIN_TECH_TRANSLUCENT_DEEP,
+                         "has no deep shadow maps (GL4 only): coloured or opaque shadows "
+                         "transparent casters here", "deep needs tier gl4");
         scene_free(&s);
         return;
     }
@@ -566,18 +334,20 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     c.s = &s;
     c.scene_name = scene_name;
     c.tier = tier;
+    c.tech = STIN_TECH_TRANSLUCENT_DEEP;
+    c.tag = "deep";
     /* 2048 a face once (the spot light's one face); 512 elsewhere, whose
      * texels span up to about three pixels here */
     c.map_size = stack ? 2048u : 512u;
     c.band = stack ? 1 : 3;
     /* glass-panes' panes are boxes: up to six surfaces along a ray */
     c.layers = stack || colour || omni || window ? 0 : 6;
-    if (!make_reference(&c, &ref, err, sizeof err))
+    if (!deep_make_reference(&c, &ref, err, sizeof err))
         report(r, "FAIL", "deep-reference", "%s/%s: %s", stin_tier_name(tier), scene_name, err);
     else if (window)
         window_tests(&c);
     else
         gl4_tests(&c, stack, colour, omni);
-    free_reference(&c, ref);
+    deep_free_reference(&c, ref);
     scene_free(&s);
 }

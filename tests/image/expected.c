@@ -13,11 +13,14 @@
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 #define DOT3 STIN_TECH_SURFACE_DOT3
 #define POM STIN_TECH_SURFACE_POM
-/* translucent shadows, displacement, CSG: deep shadow maps on GL4,
+/* translucent shadows, displacement, CSG: deep shadow maps on GL4, colour
+ * maps on GL2, the opacity threshold on GL1,
  * displacement where there are vertex textures and the shadows are not
  * volumes (their silhouettes are the undisplaced mesh's), tessellated first
  * where there are tessellation shaders (GL 4.0); goldfeather everywhere */
-#define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_GOLDFEATHER
+#define RESERVED STIN_TECH_TRANSLUCENT_OPAQUE, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_GOLDFEATHER
+#define COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_OFF, \
+    STIN_TECH_CSG_GOLDFEATHER
 #define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, \
     STIN_TECH_CSG_GOLDFEATHER
 #define TESSELLATED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_TESS, \
@@ -27,7 +30,7 @@ static const expected_profile table[] = {
     {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},
     {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
     {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
-    {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED}, {1, 1, 0}},
+    {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, COLOURED}, {1, 1, 0}},
     {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
     {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {0, 0, 1}},
     {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {1, 1, 1}},

@@ -62,6 +62,10 @@ void csg_tests(run *r, stin_tier tier, const char *path);
  * deep-stack, deep-colour and glass-panes; below GL4 a SKIP and the refusal
  * of a forced deep (deep_test.c). */
 void deep_tests(run *r, stin_tier tier, const char *path);
+/* Coloured shadow maps ("coloured", GL2 and GL4) against the reference's
+ * transmittance, the opacity threshold ("opaque") on every tier, and the
+ * refusal of a forced coloured below GL2 (coloured_test.c). */
+void coloured_tests(run *r, stin_tier tier, const char *path);
 void displace_tests(run *r, stin_tier tier, const char *path);
 /* The seed's displacement behaviour 5 on a built-in plate, once per GLSL
  * tier (displace_seed_test.c); caps: the context's present capabilities. */

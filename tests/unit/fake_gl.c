@@ -60,6 +60,9 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_CopyTexSubImage2D ~, 1
 #define FAKE_STATELESS_TexImage1D ~, 1
 #define FAKE_STATELESS_BufferData ~, 1
+#define FAKE_STATELESS_BufferSubData ~, 1
+#define FAKE_STATELESS_GetBufferSubData ~, 1
+#define FAKE_STATELESS_MemoryBarrier ~, 1
 #define FAKE_STATELESS_CompileShader ~, 1
 #define FAKE_STATELESS_AttachShader ~, 1
 #define FAKE_STATELESS_BindAttribLocation ~, 1

@@ -878,8 +878,22 @@ void STIN_APIENTRY fake_BindBuffer(GLenum target, GLuint b)
         S.array_buffer = b;
     else if (target == GL_ELEMENT_ARRAY_BUFFER)
         bound_vao()->element_buffer = b;
+    else if (target == GL_SHADER_STORAGE_BUFFER)
+        S.shader_storage_buffer = b;
     else
         fake_gl_state_untracked("glBindBuffer", target);
+}
+
+/* Shader storage index 0 (deep's early-stop flag) and the generic binding. */
+void STIN_APIENTRY fake_BindBufferBase(GLenum target, GLuint index, GLuint b)
+{
+    COUNT(BindBufferBase);
+    if (target != GL_SHADER_STORAGE_BUFFER || index != 0) {
+        fake_gl_state_untracked("glBindBufferBase", target);
+        return;
+    }
+    S.shader_storage_buffer = b;
+    S.shader_storage_buffer0 = b;
 }
 
 void STIN_APIENTRY fake_BindFramebuffer(GLenum target, GLuint fb)
@@ -976,6 +990,8 @@ void fake_gl_state_deleted(fake_gl_object kind, GLsizei n, const GLuint *names)
         case FAKE_OBJ_BUFFER:
             unbind(&S.array_buffer, name);
             unbind(&S.pixel_unpack_buffer, name);
+            unbind(&S.shader_storage_buffer, name);
+            unbind(&S.shader_storage_buffer0, name);
             unbind(&bound_vao()->element_buffer, name);
             break;
         case FAKE_OBJ_VERTEX_ARRAY:
@@ -1384,6 +1400,8 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(array_buffer, K_INT);
     WORD(vertex_array_binding, K_INT);
     WORD(pixel_unpack_buffer, K_INT);
+    WORD(shader_storage_buffer, K_INT);
+    WORD(shader_storage_buffer0, K_INT);
     d->prefix = "vao0.";
     diff_vao(d, &a->vao0, &b->vao0);
     d->prefix = "";

@@ -179,6 +179,7 @@ typedef struct fake_gl_glstate {
     GLuint index_array, edge_flag_array, fog_coord_array, secondary_color_array;
     GLuint array_buffer, vertex_array_binding;
     GLuint pixel_unpack_buffer;
+    GLuint shader_storage_buffer, shader_storage_buffer0; /* generic, index 0 */
     fake_gl_vao vao0;
     /* programs, framebuffers, pixel transfer */
     GLuint program;
@@ -255,6 +256,7 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_ActiveStencilFaceEXT ~, 1
 #define FAKE_STATE_StencilOpSeparate ~, 1
 #define FAKE_STATE_BindBuffer ~, 1
+#define FAKE_STATE_BindBufferBase ~, 1
 #define FAKE_STATE_UseProgram ~, 1
 #define FAKE_STATE_EnableVertexAttribArray ~, 1
 #define FAKE_STATE_DisableVertexAttribArray ~, 1

@@ -274,9 +274,9 @@ static void test_vdsm_on_gl4_only(void **state)
 }
 
 /* deep heads the GL4 translucent-shadows chain, with its two units after the
- * shadows'; without float textures it falls back to translucent-solid, the
- * only choice below GL4; forcing it on GL2 names the tier and what is
- * missing. */
+ * shadows'; without float textures it falls back to coloured, GL2's choice
+ * (two units), and without FBOs to opaque; forcing deep on GL2 names the
+ * tier and what is missing. */
 static void test_deep_on_gl4_only(void **state)
 {
     stin_caps core = caps_with(33, 33, 1, GL33_CORE_BITS);
@@ -294,12 +294,22 @@ static void test_deep_on_gl4_only(void **state)
     core.present &= ~STIN_CAP_BIT(STIN_CAP_FLOAT_TEXTURE);
     assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
-                     STIN_TECH_TRANSLUCENT_SOLID);
+                     STIN_TECH_TRANSLUCENT_COLOURED);
     assert_true(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].fell_back);
     assert_non_null(strstr(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason, "float textures"));
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
-                     STIN_TECH_TRANSLUCENT_SOLID);
+                     STIN_TECH_TRANSLUCENT_COLOURED);
+    assert_int_equal(sel.translucent_unit + 2, sel.units_used); /* its two units */
+    /* without FBOs: the opacity threshold, naming what coloured lacks */
+    gl21.present &= ~STIN_CAP_BIT(STIN_CAP_FBO);
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
+                     STIN_TECH_TRANSLUCENT_OPAQUE);
+    assert_true(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].fell_back);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason,
+                           stin_cap_name(STIN_CAP_FBO)));
+    gl21.present |= STIN_CAP_BIT(STIN_CAP_FBO);
     forced[STIN_FEATURE_TRANSLUCENT_SHADOWS] = STIN_TECH_TRANSLUCENT_DEEP;
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
@@ -488,7 +498,8 @@ static void test_texture_unit_budget(void **state)
     assert_int_equal(sel.surface_unit, 1);
     assert_int_equal(sel.shadow_unit, 3); /* volumes need none ... */
     assert_int_equal(sel.shadow_spare_units, 1); /* ... and take a spare one for the mask */
-    assert_int_equal(sel.units_used, 4);
+    assert_int_equal(sel.translucent_unit, 4);   /* coloured's two after them */
+    assert_int_equal(sel.units_used, 6);
     /* with the surface's units the last, no unit is spare: volumes run without */
     c.max_texture_image_units = 3;
     assert_int_equal(stin__select(&c, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);

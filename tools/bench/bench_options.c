@@ -105,6 +105,15 @@ static int set_pow2s(options *o, const bench_option *opt, const char *arg)
     return set_list_of(o, opt, arg, 'p');
 }
 
+/* One power of two in lo..hi. */
+static int set_pow2(options *o, const bench_option *opt, const char *arg)
+{
+    char want[64];
+    int *v = (int *)member(o, opt);
+    snprintf(want, sizeof want, "a power of two in %d..%d", opt->lo, opt->hi);
+    return (to_int(arg, opt->lo, opt->hi, v) && !(*v & (*v - 1))) || bad(opt, arg, want);
+}
+
 static int set_odds(options *o, const bench_option *opt, const char *arg)
 {
     return set_list_of(o, opt, arg, 'o');
@@ -225,6 +234,17 @@ static const bench_option table[] = {
      64, 4, "fixed tessellation levels on the coarse scene (gl4)"},
     FRAMES(SEC_DISPLACE, "--displace-frames", "5", "1", PER_ROW),
     SETUPS(SEC_DISPLACE, "--displace-setups", "2", "fresh plain context per set-up"),
+
+    {SEC_DEEP, "--deep-scene", "FILE", "tests/scenes/deep-stack.json", NULL, set_text,
+     F(sec[SEC_DEEP].scene), 0, 0, 0, "the layers table's scene (a spot light)"},
+    {SEC_DEEP, "--deep-one", "FILE", "tools/bench/scenes/deep-point-one.json", NULL, set_text,
+     F(deep_one), 0, 0, 0, "a point light with transparency in one cube face"},
+    {SEC_DEEP, "--deep-all", "FILE", "tools/bench/scenes/deep-point-all.json", NULL, set_text,
+     F(deep_all), 0, 0, 0, "a point light with transparency in all six faces"},
+    {SEC_DEEP, "--deep-size", "N", "1024", "64", set_pow2, F(deep_size), 16, 4096, 0,
+     "texels a side of the map-pcf map and of each deep or coloured face"},
+    FRAMES(SEC_DEEP, "--deep-frames", "5", "1", PER_ROW),
+    SETUPS(SEC_DEEP, "--deep-setups", "2", "fresh shadows-off context per set-up"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

@@ -41,6 +41,8 @@ typedef struct options {
     int_list pcf_sizes, pcf_kernels;
     const char *displace_wall; /* displace: the coarse scene */
     int_list displace_levels;  /* displace: fixed tessellation levels on it */
+    const char *deep_one, *deep_all; /* deep: point-light scenes, one face / six */
+    int deep_size;             /* deep: texels a side of every map */
 } options;
 
 /* Fills o from the defaults (--quick's where it is given) and argv. Prints

@@ -106,3 +106,24 @@ double tech_ratio(const tech_row *r)
 {
     return r->base_ms > 0 ? r->on_ms / r->base_ms : 0.0;
 }
+
+void bench_ratio_table(const char *title, stin_tier tier, const char *base,
+                       const char *const *names, const tech_row *rows, int n)
+{
+    int i;
+    printf("\n### %s, %s (%s)\n\n", title, stin_tier_name(tier), tier_label(tier));
+    printf("| row | passes | %s median ms | row median ms | row / %s | row / first row |\n", base,
+           base);
+    printf("|---|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < n; i++) {
+        const tech_row *r = &rows[i];
+        if (r->skipped) {
+            printf("| %s | SKIP: %s | | | | |\n", names[i], r->why);
+            continue;
+        }
+        printf("| %s | %u | %.2f | %.2f | %.2f | %.2f |\n", names[i], r->passes, r->base_ms,
+               r->on_ms, tech_ratio(r),
+               !rows[0].skipped && rows[0].on_ms > 0 ? r->on_ms / rows[0].on_ms : 0.0);
+    }
+    fflush(stdout);
+}

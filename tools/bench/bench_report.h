@@ -44,5 +44,9 @@ int bench_tech_tier(const bench_env *env, tech_settings *st, stin_tier tier, con
                     const scene *s, tech_row *rows, int row_n, int *rc);
 /* A row's time over its baseline's (0 without one). */
 double tech_ratio(const tech_row *r);
+/* A table of rows (names[i] each) against the baseline (`base` names it:
+ * "plain", "off") and against the first row. */
+void bench_ratio_table(const char *title, stin_tier tier, const char *base,
+                       const char *const *names, const tech_row *rows, int n);
 
 #endif

@@ -13,4 +13,7 @@ const bench_section bench_sections[SECTION_COUNT] = {
              "SP alone and stencil volumes, per --scenes scene", section_vdsm},
     {"displace", "GL2/GL4 displacement (VTF, tessellation) against the surface chain and the "
                  "plain surface, each speed-up on and off", section_displace},
+    {"deep", "GL2/GL4 translucent shadows: deep with 1, 2, 4 layers and coloured against map-pcf "
+             "and shadows off; deep's early stop on and off, transparency in one cube face and "
+             "in all six", section_deep},
 };

@@ -71,6 +71,7 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
     stin_result r;
     stin_choice ch;
     char name[160];
+    int k;
     config_name(c, name, sizeof name);
     memset(&desc, 0, sizeof desc);
     desc.get_proc_address = stin_platform_get_proc_address;
@@ -86,6 +87,9 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
     desc.displace_guard_band = c->guard_band;
     desc.displace_tess_pixels = c->tess_pixels;
     desc.displace_tess_max = c->tess_max;
+    desc.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] = c->translucent;
+    desc.deep_layers = c->deep_layers;
+    desc.deep_map_size = c->deep_map_size;
     scene_gpu_size_desc(s, &desc);
     bytes = stin_memory_size(&desc);
     if (!bytes) {
@@ -110,26 +114,18 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
         sd->block = NULL;
         return 0;
     }
-    ch = stin_query_choice(sd->ctx, STIN_FEATURE_SHADOWS);
-    if (ch.technique != c->shadows) {
-        snprintf(err, err_size, "%s: shadows are '%s', not the forced '%s' (%s)",
-                 stin_tier_name(tier), stin_technique_name(ch.technique),
-                 stin_technique_name(c->shadows), ch.reason);
-        return 0;
-    }
-    ch = stin_query_choice(sd->ctx, STIN_FEATURE_SURFACE);
-    if (c->surface != STIN_TECH_NONE && ch.technique != c->surface) {
-        snprintf(err, err_size, "%s: surface is '%s', not the forced '%s' (%s)",
-                 stin_tier_name(tier), stin_technique_name(ch.technique),
-                 stin_technique_name(c->surface), ch.reason);
-        return 0;
-    }
-    ch = stin_query_choice(sd->ctx, STIN_FEATURE_DISPLACEMENT);
-    if (c->displacement != STIN_TECH_NONE && ch.technique != c->displacement) {
-        snprintf(err, err_size, "%s: displacement is '%s', not the forced '%s' (%s)",
-                 stin_tier_name(tier), stin_technique_name(ch.technique),
-                 stin_technique_name(c->displacement), ch.reason);
-        return 0;
+    for (k = 0; k < 4; k++) { /* every forced technique kept (shadows always forced) */
+        static const stin_feature features[4] = {STIN_FEATURE_SHADOWS, STIN_FEATURE_SURFACE,
+                                                 STIN_FEATURE_DISPLACEMENT,
+                                                 STIN_FEATURE_TRANSLUCENT_SHADOWS};
+        const stin_technique forced[4] = {c->shadows, c->surface, c->displacement, c->translucent};
+        ch = stin_query_choice(sd->ctx, features[k]);
+        if (forced[k] != STIN_TECH_NONE && ch.technique != forced[k]) {
+            snprintf(err, err_size, "%s: %s is '%s', not the forced '%s' (%s)",
+                     stin_tier_name(tier), stin_feature_name(features[k]),
+                     stin_technique_name(ch.technique), stin_technique_name(forced[k]), ch.reason);
+            return 0;
+        }
     }
     if (!scene_gpu_create(&sd->gpu, s, sd->ctx, err, err_size))
         return 0;

@@ -26,6 +26,8 @@ typedef struct tech_config {
     stin_technique displacement; /* desc.techniques[STIN_FEATURE_DISPLACEMENT]; NONE = auto */
     float guard_band, tess_pixels; /* desc.displace_guard_band, displace_tess_pixels (0: default) */
     uint32_t tess_max;       /* desc.displace_tess_max (0: default) */
+    stin_technique translucent; /* desc.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS]; NONE = auto */
+    uint32_t deep_layers, deep_map_size; /* desc's (0: default) */
 } tech_config;
 
 typedef struct tech_settings {

@@ -95,38 +95,18 @@ static int displaced_copy(const scene *s, float factor, scene *out)
     return 1;
 }
 
-static void print_table(const char *title, stin_tier tier, const disp_row *const *defs,
-                        const tech_row *rows, int n)
-{
-    int i;
-    printf("\n### %s, %s (%s)\n\n", title, stin_tier_name(tier), tier_label(tier));
-    printf("| row | passes | plain median ms | row median ms | row / plain | row / first row |\n");
-    printf("|---|---:|---:|---:|---:|---:|\n");
-    for (i = 0; i < n; i++) {
-        const tech_row *r = &rows[i];
-        if (r->skipped) {
-            printf("| %s | SKIP: %s | | | | |\n", defs[i]->name, r->why);
-            continue;
-        }
-        printf("| %s | %u | %.2f | %.2f | %.2f | %.2f |\n", defs[i]->name, r->passes, r->base_ms,
-               r->on_ms, tech_ratio(r),
-               !rows[0].skipped && rows[0].on_ms > 0 ? r->on_ms / rows[0].on_ms : 0.0);
-    }
-    fflush(stdout);
-}
-
 /* One table: defs on scene s (tier's rows; gl4-only rows skipped on gl2). */
 static int run_table(bench_env *env, tech_settings *st, stin_tier tier, const char *title,
                      const scene *s, const disp_row *defs, int n, int *rc)
 {
     tech_row rows[TECH_MAX_ROWS];
-    const disp_row *use[TECH_MAX_ROWS];
+    const char *names[TECH_MAX_ROWS];
     int i, m = 0;
     memset(rows, 0, sizeof rows);
     for (i = 0; i < n; i++) {
         if (defs[i].gl4_only && tier != STIN_TIER_GL4)
             continue;
-        use[m] = &defs[i];
+        names[m] = defs[i].name;
         rows[m].cfg.shadows = STIN_TECH_SHADOWS_OFF;
         rows[m].cfg.surface = defs[i].surface;
         rows[m].cfg.displacement = defs[i].displacement;
@@ -137,7 +117,7 @@ static int run_table(bench_env *env, tech_settings *st, stin_tier tier, const ch
     }
     if (!bench_tech_tier(env, st, tier, WHAT, s, rows, m, rc))
         return 0;
-    print_table(title, tier, use, rows, m);
+    bench_ratio_table(title, tier, "plain", names, rows, m);
     return 1;
 }
 

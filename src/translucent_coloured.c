@@ -1,0 +1,244 @@
+/* SPDX-License-Identifier: MIT */
+/* Coloured shadow maps ("coloured", GL2 and up): deep's fallback.
+ *
+ * Per light, just before its lit pass, the transparent casters are drawn
+ * from the light twice into one atlas (faces of deep_map_size, three across
+ * and two down; spot and directional lights use face 0, fitted as the
+ * shadow maps are; point lights six 90-degree faces): first their depth
+ * alone (LESS: the nearest transparent surface per texel), then, with no
+ * depth test, their eq 5.3 factors (1 - a) clamp(1 - a + c, 0, 1) into an
+ * RGBA8 map cleared to white, blended as dst * src, so the texel holds the
+ * product of every transparent surface on its ray in any order. The lit
+ * pass (shaders/gl2/translucent_coloured.glsl) takes the product where the
+ * point lies behind the nearest transparent depth and 1 in front of it.
+ * That is exact unless a transparent caster lies behind the point on its
+ * ray (a receiver between two panes takes both). No opaque depth is drawn:
+ * a transparent caster behind an opaque one only tints points the shadows
+ * technique already darkened fully (opaque casters stay its). */
+#include "internal.h"
+
+#define ATLAS_COLUMNS 3
+#define ATLAS_ROWS 2
+
+static int chosen(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique ==
+           STIN_TECH_TRANSLUCENT_COLOURED;
+}
+
+static int gl4(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
+}
+
+/* (Built before the set-up: with shadows off it will fall back.) */
+const char *stin__coloured_chunk(const stin_context *ctx)
+{
+    return chosen(ctx) && ctx->shadow && ctx->shadow->light ? "translucent_coloured.glsl" : NULL;
+}
+
+void stin__coloured_release(stin_context *ctx)
+{
+    stin__coloured_state *s = &ctx->coloured;
+    if (s->color)
+        GL(ctx, DeleteTextures)(1, &s->color);
+    if (s->depth)
+        GL(ctx, DeleteTextures)(1, &s->depth);
+    if (s->fbo)
+        GL(ctx, DeleteFramebuffers)(1, &s->fbo);
+    if (s->program)
+        GL(ctx, DeleteProgram)(s->program);
+    stin__memzero(s, sizeof *s);
+}
+
+/* A nearest, clamped texture of the atlas's size; the caller's image. */
+static GLuint atlas_texture(stin_context *ctx)
+{
+    GLuint t = 0;
+    GL(ctx, GenTextures)(1, &t);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, t);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return t;
+}
+
+/* The atlases and the framebuffer; "" or why they cannot be made. */
+static const char *make_targets(stin_context *ctx)
+{
+    stin__coloured_state *s = &ctx->coloured;
+    GLsizei w = (GLsizei)(ATLAS_COLUMNS * s->size), h = (GLsizei)(ATLAS_ROWS * s->size);
+    GLenum status;
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    s->color = atlas_texture(ctx);
+    GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    s->depth = atlas_texture(ctx);
+    GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, w, h, 0,
+                                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL(ctx, GenFramebuffers)(1, &s->fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, s->color, 0);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, s->depth, 0);
+    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
+    return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA8 + depth framebuffer is incomplete";
+}
+
+static int make_program(stin_context *ctx, char *msg, size_t size)
+{
+    stin__coloured_state *s = &ctx->coloured;
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = gl4(ctx) ? "gl4/deep_peel.vert" : "gl2/coloured_cast.vert";
+    src.frag = gl4(ctx) ? "gl4/coloured_cast.frag" : "gl2/coloured_cast.frag";
+    s->program = stin__program_build_source(ctx, &src, msg, size);
+    if (!s->program)
+        return 0;
+    s->u_model = GL(ctx, GetUniformLocation)(s->program, "u_model");
+    s->u_view_proj = GL(ctx, GetUniformLocation)(s->program, "u_view_proj");
+    s->u_albedo = GL(ctx, GetUniformLocation)(s->program, "u_albedo");
+    s->u_albedo_tex = GL(ctx, GetUniformLocation)(s->program, "u_albedo_tex");
+    s->u_has_albedo_tex = GL(ctx, GetUniformLocation)(s->program, "u_has_albedo_tex");
+    stin__displace_locate(ctx, s->program, 0, &s->displace);
+    return 1;
+}
+
+void stin__coloured_init(stin_context *ctx)
+{
+    stin__coloured_state *s = &ctx->coloured;
+    char msg[160], why[220];
+    const char *fail = "";
+    uint32_t largest = ctx->caps.max_texture_size > 0 ? (uint32_t)ctx->caps.max_texture_size : 0;
+    if (!chosen(ctx))
+        return;
+    stin__memzero(s, sizeof *s);
+    s->size = ctx->desc.deep_map_size;
+    while (largest && s->size > 1 && ATLAS_COLUMNS * s->size > largest)
+        s->size /= 2u; /* three faces across must fit the largest texture */
+    s->unit = ctx->sel.translucent_unit;
+    msg[0] = '\0';
+    if (!ctx->shadow->light)
+        fail = "shadows are off, so no light is shadowed";
+    else if (!make_program(ctx, msg, sizeof msg))
+        fail = "its caster program failed to build";
+    else
+        fail = make_targets(ctx);
+    if (fail[0]) {
+        stin__formatf(why, sizeof why, "coloured: %s%s%s%s", fail, msg[0] ? " (" : "", msg,
+                      msg[0] ? ")" : "");
+        stin__coloured_release(ctx);
+        stin__demote(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_OPAQUE, why);
+        return;
+    }
+    s->ready = 1;
+    stin__gl_check_errors(ctx, "coloured set-up");
+}
+
+void stin__coloured_locate(stin_context *ctx, stin__program *p)
+{
+    p->u_coloured_kind = GL(ctx, GetUniformLocation)(p->name, "u_coloured_kind");
+    p->u_coloured_matrix = GL(ctx, GetUniformLocation)(p->name, "u_coloured_matrix");
+    p->u_coloured_params = GL(ctx, GetUniformLocation)(p->name, "u_coloured_params");
+    p->u_coloured_maps[0] = GL(ctx, GetUniformLocation)(p->name, "u_coloured_map");
+    p->u_coloured_maps[1] = GL(ctx, GetUniformLocation)(p->name, "u_coloured_depth");
+}
+
+void stin__coloured_uniforms(stin_context *ctx, const stin__program *p)
+{
+    const stin__coloured_state *s = &ctx->coloured;
+    float params[4];
+    int i;
+    if (p->u_coloured_kind < 0)
+        return;
+    GL(ctx, Uniform1i)(p->u_coloured_kind, s->kind);
+    for (i = 0; i < 2; i++) /* on units of their own, used or not */
+        GL(ctx, Uniform1i)(p->u_coloured_maps[i], ctx->sel.translucent_unit + i);
+    if (!s->kind)
+        return;
+    GL(ctx, UniformMatrix4fv)(p->u_coloured_matrix, s->kind == 2 ? STIN__DEEP_FACES : 1, GL_FALSE,
+                              &s->matrix[0][0]);
+    params[0] = (float)s->size;
+    params[1] = s->normal_offset;
+    params[2] = (ctx->desc.debug_flags & STIN_DEBUG_COLOURED_NO_DEPTH) ? 0.0f : 1.0f;
+    params[3] = 0.0f;
+    GL(ctx, Uniform4fv)(p->u_coloured_params, 1, params);
+    stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, s->color);
+    stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, s->depth);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+}
+
+int stin__coloured_active(const stin_context *ctx)
+{
+    return ctx->coloured.ready && ctx->coloured.frame_transparent;
+}
+
+static void draw_transparent(stin_context *ctx)
+{
+    const stin__coloured_state *s = &ctx->coloured;
+    stin__translucent_draw_casters(ctx, s->u_model, s->u_albedo, s->u_has_albedo_tex, &s->displace);
+}
+
+/* One face into its cell of the atlas: the nearest depth, then the product. */
+static void draw_face(stin_context *ctx, int face, const float view[16], const float proj[16])
+{
+    stin__coloured_state *s = &ctx->coloured;
+    stin__pass_state ps = stin__pass_defaults;
+    float view_proj[16];
+    stin__mat4_mul(view_proj, proj, view);
+    stin__light_window_matrix(s->matrix[face], view, proj);
+    GL(ctx, UniformMatrix4fv)(s->u_view_proj, 1, GL_FALSE, view_proj);
+    GL(ctx, Viewport)((GLint)((uint32_t)(face % ATLAS_COLUMNS) * s->size),
+                      (GLint)((uint32_t)(face / ATLAS_COLUMNS) * s->size), (GLsizei)s->size,
+                      (GLsizei)s->size);
+    ps.depth_test = 1; /* LESS with writes: the nearest transparent surface */
+    ps.color_write = 0;
+    stin__pass_apply(ctx, &ps);
+    draw_transparent(ctx);
+    ps.depth_test = 0; /* every surface's factor, multiplied in */
+    ps.depth_write = 0;
+    ps.color_write = 1;
+    ps.blend = 1;
+    ps.blend_src = GL_ZERO;
+    ps.blend_dst = GL_SRC_COLOR;
+    stin__pass_apply(ctx, &ps);
+    draw_transparent(ctx);
+    ctx->stats.passes += 2;
+}
+
+void stin__coloured_light(stin_context *ctx, uint32_t li)
+{
+    stin__coloured_state *s = &ctx->coloured;
+    stin__pass_state ps = stin__pass_defaults;
+    s->kind = 0;
+    if (!stin__coloured_active(ctx) || li >= ctx->light_count)
+        return;
+    stin__translucent_unbind(ctx, s->unit, GL_TEXTURE_2D); /* neither atlas sampled while drawn */
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
+    GL(ctx, Viewport)(0, 0, (GLsizei)(ATLAS_COLUMNS * s->size), (GLsizei)(ATLAS_ROWS * s->size));
+    stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the atlas */
+    GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f);
+    GL(ctx, ClearDepth)(1.0);
+    GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    GL(ctx, UseProgram)(s->program);
+    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    ctx->bound_mesh = 0xffffffffu;
+    GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
+    s->kind = stin__translucent_faces(ctx, &ctx->lights[li], s->size, draw_face, &s->normal_offset);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
+                      ctx->frame.viewport[3]);
+    ctx->bound_mesh = 0xffffffffu;
+    stin__gl_check_errors(ctx, "coloured maps");
+}
+
+void stin__coloured_light_done(stin_context *ctx)
+{
+    stin__coloured_state *s = &ctx->coloured;
+    if (!s->kind)
+        return;
+    s->kind = 0;
+    stin__translucent_unbind(ctx, s->unit, GL_TEXTURE_2D);
+}
