@@ -37,15 +37,7 @@
 #define GL_PIXEL_PACK_BUFFER 0x88EB
 #define GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
 
-/* The CPU side of one resolve, carved from the staging. */
-typedef struct resolve {
-    float *result;            /* nearest surviving depth per pixel */
-    float *candidate;         /* this layer's depth; > 1 where it lost */
-    unsigned char *stencil;   /* a stencil read back */
-    int x, y, w, h;
-    size_t pixels;
-    int bits;                 /* stencil bits used (at most 8) */
-} resolve;
+typedef stin__csg_pixels resolve; /* csg.h: shared with csg_scs.c */
 
 static unsigned char *staging_of(stin_context *ctx, size_t *bytes)
 {
@@ -332,7 +324,7 @@ static int usable(stin_context *ctx, resolve *r)
     size_t bytes, need = stin__csg_goldfeather_bytes(vp[2], vp[3]);
     unsigned char *base = staging_of(ctx, &bytes);
     const char *why = NULL;
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER)
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
         why = "the CSG technique is csg-off";
     else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
         why = "the frame's framebuffer has no stencil buffer";
@@ -372,6 +364,8 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
     path->geometry_begin(ctx);
     for (pi = 0; pi < ctx->csg.product_count; pi++) {
         const stin__csg_product *p = &ctx->csg.products[pi];
+        if (stin__csg_scs_product(ctx, path, &r, p))
+            continue;
         for (ti = 0; ti < p->term_count; ti++) {
             const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
             for (li = 0; li < t->count; li++)
@@ -400,12 +394,13 @@ void stin__csg_init(stin_context *ctx)
 {
     stin__csg_state *c = &ctx->csg;
     char msg[160], why[200];
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER ||
+    stin__csg_scs_init(ctx);
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF ||
         (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)))
         return; /* csg-off, or glDrawPixels writes the depth */
     if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_GLSL150) {
         stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                     "goldfeather writes depth with glDrawPixels (compatibility profile) or a "
+                     "goldfeather and scs write depth with glDrawPixels (compatibility profile) or a "
                      "GLSL 1.50 program (GL4 lighting)");
         return;
     }
@@ -433,9 +428,19 @@ void stin__csg_init(stin_context *ctx)
 void stin__csg_release(stin_context *ctx)
 {
     stin__csg_state *c = &ctx->csg;
+    stin__csg_scs_release(ctx);
     if (c->depth_prog)
         GL(ctx, DeleteProgram)(c->depth_prog);
     if (c->depth_tex)
         GL(ctx, DeleteTextures)(1, &c->depth_tex);
     c->depth_prog = c->depth_tex = 0;
+}
+
+/* ---- shared with csg_scs.c ---------------------------------------------- */
+void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out) { read_depth(ctx, r, out); }
+void stin__csg_read_stencil(stin_context *ctx, const resolve *r) { read_stencil(ctx, r); }
+void stin__csg_clear(stin_context *ctx, GLbitfield bits) { clear(ctx, bits); }
+GLenum stin__csg_culled_face(const stin__draw *d, int complemented)
+{
+    return culled_face(d, complemented);
 }

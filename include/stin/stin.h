@@ -601,7 +601,8 @@ const char *stin_feature_name(stin_feature f);
     X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
     X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4) \
     X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1) \
-    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4)
+    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4) \
+    X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -706,6 +707,14 @@ typedef struct stin_desc {
 #define STIN_DEBUG_DEEP_NO_EARLY_STOP 1024u
 /* displacement: level 0 of the height map at every distance (no mip chain) */
 #define STIN_DEBUG_DISPLACE_NO_MIP 2048u
+/* scs: run every pass of each subtraction sequence (as many as the sampled
+ * depth complexity), without stopping at the first pass an occlusion query
+ * finds changed nothing (the same image, more passes) */
+#define STIN_DEBUG_CSG_SCS_NO_EARLY_STOP 65536u
+/* scs: count a term's plain primitives in one 8-bit stencil counter instead
+ * of batches of 255: wrong (nothing drawn) where a term intersects more than
+ * 255; a test that it shows the batching matters */
+#define STIN_DEBUG_CSG_NO_BATCH 131072u
 
 typedef struct stin_context stin_context;
 
@@ -799,6 +808,12 @@ typedef struct stin_mesh_info {
     int closed_manifold;           /* 1 when every edge has exactly two opposite triangles */
     uint32_t welded_vertices;      /* vertices snapped onto another (weld_tolerance) */
     float bounds_min[3], bounds_max[3];
+    /* 1 when the mesh bounds one convex solid: closed_manifold, every edge's
+     * dihedral angle convex (the far vertex of either triangle lies on or
+     * behind the other's plane, within 1e-5 of the longer edge: flat
+     * quads split in two count) and one piece (V - E + F = 2 over welded
+     * positions). CSG technique "scs" needs it of every primitive. */
+    int convex;
 } stin_mesh_info;
 
 /* Validates (indices in range, finite values, degenerate triangles dropped and
@@ -1112,6 +1127,8 @@ typedef struct stin_frame_stats {
     uint32_t dropped_csg;      /* products stin_draw_csg refused */
     /* deep: layers peeled (passes into a deep map), all lights and faces */
     uint32_t deep_layers;
+    /* products resolved by "scs" (the others of a frame went to goldfeather) */
+    uint32_t csg_scs_products;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -12,7 +12,11 @@
 static void keep_errors(void *user, stin_log_level level, stin_log_item item, const char *msg)
 {
     capture *c = (capture *)user;
-    (void)item;
+    if (item == STIN_LOG_FALLBACK) {
+        size_t used = strlen(c->fallbacks);
+        c->log_fallbacks++;
+        snprintf(c->fallbacks + used, sizeof c->fallbacks - used, "%s\n", msg);
+    }
     if (level != STIN_LOG_LEVEL_ERROR)
         return;
     c->log_errors++;

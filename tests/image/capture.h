@@ -35,6 +35,8 @@ typedef struct capture {
     stin_debug_counters counters;
     unsigned log_errors;
     char last_error[512];
+    unsigned log_fallbacks;   /* STIN_LOG_FALLBACK messages at any level */
+    char fallbacks[2048];     /* their text, one a line (cut at the size) */
     uint64_t caps_present;    /* after the masks */
     int separate_specular;
     stin_frame_stats stats;   /* of the last frame (the visibility output) */
