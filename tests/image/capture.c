@@ -55,6 +55,8 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.debug_flags = o->debug_flags;
     d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);
+    if (o->csg_capacity)
+        d.max_csg_primitives = d.max_csg_terms = d.max_csg_literals = o->csg_capacity;
     size = stin_memory_size(&d);
     block = malloc(size);
     if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {

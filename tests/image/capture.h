@@ -23,6 +23,7 @@ typedef struct capture_options {
     const struct scene_gpu_csg *csg; /* CSG products of the scene's objects (NULL: none) */
     int csg_count;
     stin_technique csg_technique; /* forced CSG technique; NONE = auto */
+    uint32_t csg_capacity;    /* desc.max_csg_primitives, _terms, _literals; 0 = stin's */
     /* forced translucent-shadows technique; NONE = translucent-solid: the
      * shadow tests compare the hard visibility (deep_test.c asks for deep) */
     stin_technique translucent;

@@ -374,4 +374,5 @@ void csg_tests(run *r, stin_tier tier, const char *path)
         run_case(r, tier, dir, &cases[i], STIN_TECH_CSG_GOLDFEATHER);
         run_case(r, tier, dir, &cases[i], STIN_TECH_CSG_SCS);
     }
+    csg_many_tests(r, tier);
 }
