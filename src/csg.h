@@ -119,6 +119,12 @@ void stin__csg_read_stencil(struct stin_context *ctx, const stin__csg_pixels *r)
 void stin__csg_clear(struct stin_context *ctx, GLbitfield bits);
 GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
 
+/* The window rectangle (normalised device min x, y, max x, y) d's bounding
+ * box covers, the whole viewport where a corner is behind the eye; whether
+ * two meet, within a pixel (csg_bounds.c). */
+void stin__csg_screen_rect(const struct stin_context *ctx, const stin__draw *d, float rect[4]);
+int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const float b[4]);
+
 /* SCS (csg_scs.c): product p into r->result when the CSG technique is scs
  * and every primitive of p is convex, returning 1; else 0 (logged once per
  * context: goldfeather resolves it). Inside the resolve's geometry_begin. */

@@ -264,6 +264,16 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
             r->candidate[i] = 2.0f;
 }
 
+/* Whether literal `lit` can matter where `own` (the candidate's window
+ * rectangle) lies: 0 when their rectangles do not meet (csg_bounds.c). */
+static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, const float own[4])
+{
+    float rect[4];
+    stin__csg_screen_rect(ctx, &ctx->csg.primitives[p->first_primitive +
+                                                   STIN__CSG_PRIMITIVE_OF(lit)], rect);
+    return stin__csg_rects_meet(ctx, own, rect);
+}
+
 /* Literal `self` of term t as the candidate: every layer, tested against
  * the term's other literals, kept where nearer. */
 static void candidate(stin_context *ctx, const stin__path *path, resolve *r,
@@ -272,7 +282,15 @@ static void candidate(stin_context *ctx, const stin__path *path, resolve *r,
     uint32_t lit = ctx->csg.literals[t->first + self], others[8], n, j;
     const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
     int complemented = (int)STIN__CSG_COMPLEMENTED(lit), layers = 1, k;
+    float own[4];
     size_t i;
+    /* off the candidate's rectangle a plain literal leaves nothing, a
+     * complemented one is outside (no pass): passes follow the overlaps */
+    stin__csg_screen_rect(ctx, d, own);
+    for (j = 0; j < t->count; j++)
+        if (j != self && !STIN__CSG_COMPLEMENTED(ctx->csg.literals[t->first + j]) &&
+            !meets(ctx, p, ctx->csg.literals[t->first + j], own))
+            return;
     for (k = 1; k <= layers; k++) {
         int any = 0;
         clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -301,7 +319,7 @@ static void candidate(stin_context *ctx, const stin__path *path, resolve *r,
             continue;
         /* the other literals, a stencil bit each, in batches of the bits */
         for (j = 0, n = 0; j < t->count; j++) {
-            if (j == self)
+            if (j == self || !meets(ctx, p, ctx->csg.literals[t->first + j], own))
                 continue;
             others[n++] = ctx->csg.literals[t->first + j];
             if (n == (uint32_t)r->bits) {
