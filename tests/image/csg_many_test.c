@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #define MANY 1000
@@ -116,6 +117,13 @@ static void make_product(shape sh, int *objects, stin_csg_node *nodes)
     }
 }
 
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
 static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint32_t debug)
 {
     static int objects[MANY];
@@ -132,6 +140,7 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
     compare_result cr;
     compare_tolerance tol = {MANY_P_RELATIVE, MANY_P_ABSOLUTE, 1.0, MANY_NORMAL_DEGREES};
     int w = r->width, h = r->height, have_cap = 0;
+    double ms;
     size_t i;
     snprintf(name, sizeof name, "%s/csg-%s-%s%s/P", stin_tier_name(tier),
              stin_technique_name(tech), sh == DIMPLES ? "dimples" : "thousand",
@@ -152,11 +161,13 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
     o.csg_technique = tech;
     o.csg_capacity = MANY;
     o.debug_flags = debug;
+    ms = now_ms();
     if (!capture_render(r->plat, r->profile, &s, &o, &cap, err, sizeof err)) {
         report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "render failed: %s", err);
         goto done;
     }
     have_cap = 1;
+    ms = now_ms() - ms;
     if (cap.choice[STIN_FEATURE_CSG].technique != tech) {
         report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(tech),
                cap.choice[STIN_FEATURE_CSG].reason);
@@ -182,6 +193,9 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
         }
         p[REFERENCE_CH_Z] = hits[i].t;
     }
+    /* the whole capture: context, meshes, the AOV frames (each resolves) */
+    printf("INFO %s/%s/%.*s: capture %.0f ms, %u passes a frame\n", r->platform_name,
+           r->profile_name, (int)strlen(name) - 2, name, ms, cap.stats.passes);
     compare_render(&s, &cap.img, refimg, hits, &tol, &cr);
     {
         double match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) /
