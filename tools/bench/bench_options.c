@@ -225,6 +225,7 @@ static const bench_option table[] = {
      64, 4, "fixed tessellation levels on the coarse scene (gl4)"},
     FRAMES(SEC_DISPLACE, "--displace-frames", "5", "1", PER_ROW),
     SETUPS(SEC_DISPLACE, "--displace-setups", "2", "fresh plain context per set-up"),
+    FRAMES(SEC_CSG, "--csg-frames", "10", "2", "timed frames per side and row"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

@@ -13,4 +13,6 @@ const bench_section bench_sections[SECTION_COUNT] = {
              "SP alone and stencil volumes, per --scenes scene", section_vdsm},
     {"displace", "GL2/GL4 displacement (VTF, tessellation) against the surface chain and the "
                  "plain surface, each speed-up on and off", section_displace},
+    {"csg", "CSG products: scs and goldfeather against OpenCSG's SCS and Goldfeather, n = 2 to "
+            "128 primitives and a row along the view", section_csg},
 };
