@@ -19,7 +19,7 @@
 #define STIN__CSG_MAX_VISITS (1u << 22)
 
 /* Occlusion queries in flight in one scs subtraction run (csg_scs.c). */
-#define STIN__CSG_SCS_QUERIES 16u
+#define STIN__CSG_SCS_QUERIES 256u
 
 typedef struct stin__csg_term {
     uint32_t first, count;   /* literals[first .. first + count), sorted, each primitive once */

@@ -175,7 +175,9 @@ static GLuint counted(stin_context *ctx, GLuint q)
 
 /* 2. the subtraction sequence: runs over the complemented primitives; the
  * moves of a run are counted in a ring of queries (a query counts from its
- * begin: the marking passes stay outside), each read before its reuse. */
+ * begin: the marking passes stay outside), each read before its reuse (a
+ * read waits for the GPU: the ring is large enough that a run of up to 256
+ * complemented primitives waits once, and the last run is not counted). */
 static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                      const stin__csg_product *p, const stin__csg_term *t)
 {
@@ -191,9 +193,10 @@ static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels
     }
     for (run = 0; run < runs; run++) {
         GLuint moved = 0;
+        int count = stop_early && run + 1 < runs; /* nothing to stop after the last run */
         for (li = 0, k = 0; li < t->count; li++) {
             uint32_t lit = ctx->csg.literals[t->first + li];
-            GLuint q = stop_early ? ctx->csg.scs_queries[k % STIN__CSG_SCS_QUERIES] : 0;
+            GLuint q = count ? ctx->csg.scs_queries[k % STIN__CSG_SCS_QUERIES] : 0;
             if (!STIN__CSG_COMPLEMENTED(lit))
                 continue;
             if (k >= STIN__CSG_SCS_QUERIES)
@@ -201,7 +204,7 @@ static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels
             subtract_one(ctx, path, primitive_of(ctx, p, lit), q);
             k++;
         }
-        if (!stop_early)
+        if (!count)
             continue;
         for (li = 0; li < k && li < STIN__CSG_SCS_QUERIES; li++)
             moved += counted(ctx, ctx->csg.scs_queries[li]);

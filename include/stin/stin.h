@@ -1122,7 +1122,8 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * covering one pixel (a saturating stencil count read back once: every
  * order of those is in the sequence), stopping at the first run an
  * occlusion query finds moved nothing (where there are queries; a ring of
- * 16 made at stin_create; STIN_DEBUG_CSG_SCS_NO_EARLY_STOP runs them all);
+ * 256 made at stin_create, read once a run, the last run not counted;
+ * STIN_DEBUG_CSG_SCS_NO_EARLY_STOP runs them all);
  * then a pixel survives where the depth lies in front of every plain
  * primitive's back face, counted in the stencil 255 primitives a batch
  * (no counter overflows; STIN_DEBUG_CSG_NO_BATCH shows why), and the

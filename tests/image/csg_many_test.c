@@ -229,7 +229,7 @@ done:
 void csg_many_tests(run *r, stin_tier tier)
 {
     run_many(r, tier, DIMPLES, STIN_TECH_CSG_SCS, 0);
-    if (!getenv("SKIPGF")) run_many(r, tier, DIMPLES, STIN_TECH_CSG_GOLDFEATHER, 0);
+    run_many(r, tier, DIMPLES, STIN_TECH_CSG_GOLDFEATHER, 0);
     run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, 0);
     if (getenv("STIN_CSG_BREAK_BATCH")) /* the proof that batching matters: must FAIL */
         run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, STIN_DEBUG_CSG_NO_BATCH);
