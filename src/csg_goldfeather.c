@@ -418,8 +418,8 @@ void stin__csg_init(stin_context *ctx)
         return; /* csg-off, or glDrawPixels writes the depth */
     if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_GLSL150) {
         stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                     "goldfeather and scs write depth with glDrawPixels (compatibility profile) or a "
-                     "GLSL 1.50 program (GL4 lighting)");
+                     "goldfeather and scs write depth with glDrawPixels (compatibility "
+                     "profile) or a GLSL 1.50 program (GL4 lighting)");
         return;
     }
     c->depth_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_depth.frag", NULL, 0,
@@ -455,7 +455,10 @@ void stin__csg_release(stin_context *ctx)
 }
 
 /* ---- shared with csg_scs.c ---------------------------------------------- */
-void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out) { read_depth(ctx, r, out); }
+void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out)
+{
+    read_depth(ctx, r, out);
+}
 void stin__csg_read_stencil(stin_context *ctx, const resolve *r) { read_stencil(ctx, r); }
 void stin__csg_clear(stin_context *ctx, GLbitfield bits) { clear(ctx, bits); }
 GLenum stin__csg_culled_face(const stin__draw *d, int complemented)
