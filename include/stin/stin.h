@@ -1132,8 +1132,10 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * coplanar rule above). Passes a term: plain + complemented + 3 x
  * complemented x runs + plain; read-backs: 2 + one each 255 plain
  * primitives, against goldfeather's per literal and layer, so it is the
- * faster (a slab minus 999 spheres at 256x192 on llvmpipe: 1.3 s against
- * 7.3 s for the whole capture, docs/testing.md). More than 255 complemented
+ * faster from a few primitives up (stin-bench --csg on llvmpipe, a box
+ * minus 7 to 127 spheres: 0.39-0.84 of goldfeather's frame time; at 2
+ * primitives the two are within the noise; docs/benchmarks.md). More than
+ * 255 complemented
  * primitives over one pixel caps the runs at 255 (logged once).
  * Selection per product: under "scs", a product with a non-convex
  * primitive (or a term of complements only) is resolved by goldfeather,
