@@ -120,8 +120,20 @@ $(B)/tests/test_noheap: tests/unit/test_noheap.c $(FAKE_GL_SRC) $(B)/libstin.a
 	$(CC) -std=c99 $(WARN) -g -O1 -fsanitize=undefined -fno-sanitize-recover=all -D_GNU_SOURCE -Iinclude -Isrc -I$(B) -Itests/unit \
 	  -o $@ $< $(FAKE_GL_SRC) $(B)/libstin.a -lcmocka
 
-$(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
-	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
+# stin-bench --csg times OpenCSG too where it is installed (libopencsg-dev,
+# libglew-dev): its C++ shim, compiled only for the bench
+BENCH_OPENCSG := $(shell printf '\043include <opencsg.h>\n\043include <GL/glew.h>\n' | \
+  $(CXX) -E -x c++ - >/dev/null 2>&1 && echo yes)
+ifeq ($(BENCH_OPENCSG),yes)
+BENCH_CXX_OBJ := $(B)/obj/tools/bench/opencsg_shim.o
+BENCH_CXX_LIBS := -lopencsg -lGLEW -lGL
+$(B)/obj/tools/bench/section_csg.o: TOOL_CFLAGS += -DSTIN_BENCH_OPENCSG
+endif
+$(B)/obj/tools/bench/opencsg_shim.o: tools/bench/opencsg_shim.cpp tools/bench/opencsg_shim.h
+	@mkdir -p $(@D)
+	@echo "  CXX     $<"; $(CXX) $(TOOL_CXXFLAGS) -c $< -o $@
+$(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(BENCH_CXX_OBJ) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
+	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(BENCH_CXX_LIBS) $(PLATFORM_LIBS)
 
 tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/libstin.a
 

@@ -7,9 +7,12 @@ set -u
 
 # clang + libclang-rt-dev (libFuzzer's runtime, which clang only recommends):
 # make fuzz. cmake: the install test builds an application with find_package.
+# libopencsg-dev + libglew-dev: stin-bench --csg times OpenCSG beside stin
+# (built without them, the section times stin alone).
 PACKAGES="build-essential pkg-config libegl-dev libgl-dev libosmesa6-dev \
 libegl-mesa0 libgl1-mesa-dri libembree-dev libopenimageio-dev openimageio-tools \
-libassimp-dev libcjson-dev libcmocka-dev clang libclang-rt-dev cmake"
+libassimp-dev libcjson-dev libcmocka-dev clang libclang-rt-dev cmake \
+libopencsg-dev libglew-dev"
 
 if ! command -v dpkg >/dev/null 2>&1; then
     echo "install-deps: dpkg not found; install these (Debian names) by hand: $PACKAGES" >&2

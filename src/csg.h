@@ -18,6 +18,9 @@
  * use; a tree of a - a - a ... would otherwise take 2^depth visits). */
 #define STIN__CSG_MAX_VISITS (1u << 22)
 
+/* Occlusion queries in flight in one scs subtraction run (csg_scs.c). */
+#define STIN__CSG_SCS_QUERIES 256u
+
 typedef struct stin__csg_term {
     uint32_t first, count;   /* literals[first .. first + count), sorted, each primitive once */
 } stin__csg_term;
@@ -50,6 +53,8 @@ typedef struct stin__csg_state {
     GLuint depth_prog, depth_tex;
     GLint u_depth, u_origin;
     int tex_width, tex_height;
+    GLuint scs_queries[STIN__CSG_SCS_QUERIES]; /* scs's early stop (0: no occlusion queries) */
+    int said_scs_fallback, said_scs_capped;
 } stin__csg_state;
 
 /* Words of normalisation scratch for the desc's capacities. */
@@ -114,6 +119,38 @@ int stin__csg_cap_transform(const struct stin_context *ctx, float out[16]);
 /* Whether the frame's near and far planes cut d's bounding box. */
 void stin__csg_planes_cut(const struct stin_context *ctx, const stin__draw *d, int *near_cut,
                           int *far_cut);
+/* The CPU side of one resolve, carved from the staging (csg_goldfeather.c). */
+typedef struct stin__csg_pixels {
+    float *result;            /* nearest surviving depth per pixel */
+    float *candidate;         /* this layer's depth; > 1 where it lost */
+    unsigned char *stencil;   /* a stencil read back */
+    int x, y, w, h;
+    size_t pixels;
+    int bits;                 /* stencil bits used (at most 8) */
+} stin__csg_pixels;
+
+/* Goldfeather's passes that SCS shares: depth and stencil of the viewport
+ * read back into r, the buffers cleared (colour writes off), the face a
+ * primitive shows (front, back where complemented; mirroring swaps). */
+void stin__csg_read_depth(struct stin_context *ctx, const stin__csg_pixels *r, float *out);
+void stin__csg_read_stencil(struct stin_context *ctx, const stin__csg_pixels *r);
+void stin__csg_clear(struct stin_context *ctx, GLbitfield bits);
+GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
+
+/* The window rectangle (normalised device min x, y, max x, y) d's bounding
+ * box covers, the whole viewport where a corner is behind the eye; whether
+ * two meet, within a pixel (csg_bounds.c). */
+void stin__csg_screen_rect(const struct stin_context *ctx, const stin__draw *d, float rect[4]);
+int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const float b[4]);
+
+/* SCS (csg_scs.c): product p into r->result when the CSG technique is scs
+ * and every primitive of p is convex, returning 1; else 0 (logged once per
+ * context: goldfeather resolves it). Inside the resolve's geometry_begin. */
+int stin__csg_scs_product(struct stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
+                          const stin__csg_product *p);
+/* The occlusion query of the early stop, at stin_create where present. */
+void stin__csg_scs_init(struct stin_context *ctx);
+void stin__csg_scs_release(struct stin_context *ctx);
 
 /* A material checked and its defaults applied (frame.c; stin_draw's rules). */
 stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,

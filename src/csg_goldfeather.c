@@ -37,15 +37,7 @@
 #define GL_PIXEL_PACK_BUFFER 0x88EB
 #define GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
 
-/* The CPU side of one resolve, carved from the staging. */
-typedef struct resolve {
-    float *result;            /* nearest surviving depth per pixel */
-    float *candidate;         /* this layer's depth; > 1 where it lost */
-    unsigned char *stencil;   /* a stencil read back */
-    int x, y, w, h;
-    size_t pixels;
-    int bits;                 /* stencil bits used (at most 8) */
-} resolve;
+typedef stin__csg_pixels resolve; /* csg.h: shared with csg_scs.c */
 
 static unsigned char *staging_of(stin_context *ctx, size_t *bytes)
 {
@@ -292,6 +284,16 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
             r->candidate[i] = 2.0f;
 }
 
+/* Whether literal `lit` can matter where `own` (the candidate's window
+ * rectangle) lies: 0 when their rectangles do not meet (csg_bounds.c). */
+static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, const float own[4])
+{
+    float rect[4];
+    stin__csg_screen_rect(ctx, &ctx->csg.primitives[p->first_primitive +
+                                                   STIN__CSG_PRIMITIVE_OF(lit)], rect);
+    return stin__csg_rects_meet(ctx, own, rect);
+}
+
 /* The layer count of the surface just drawn as layer 1 (its stencil holds
  * every pixel's fragment count). */
 static int depth_complexity(stin_context *ctx, resolve *r)
@@ -321,7 +323,15 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
 {
     uint32_t others[8], n, j;
     int layers = 1, k, kept = 0;
+    float own[4];
     size_t i;
+    /* off the candidate's rectangle a plain literal leaves nothing, a
+     * complemented one is outside (no pass): passes follow the overlaps */
+    stin__csg_screen_rect(ctx, d, own);
+    for (j = 0; j < t->count; j++)
+        if (j != self && !STIN__CSG_COMPLEMENTED(ctx->csg.literals[t->first + j]) &&
+            !meets(ctx, p, ctx->csg.literals[t->first + j], own))
+            return 0;
     for (k = 1; k <= layers; k++) {
         int any = 0;
         clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -338,7 +348,7 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
             continue;
         /* the other literals, a stencil bit each, in batches of the bits */
         for (j = 0, n = 0; j < t->count; j++) {
-            if (j == self)
+            if (j == self || !meets(ctx, p, ctx->csg.literals[t->first + j], own))
                 continue;
             others[n++] = ctx->csg.literals[t->first + j];
             if (n == (uint32_t)r->bits) {
@@ -431,7 +441,7 @@ static int usable(stin_context *ctx, resolve *r)
     size_t bytes, need = stin__csg_goldfeather_bytes(vp[2], vp[3]);
     unsigned char *base = staging_of(ctx, &bytes);
     const char *why = NULL;
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER)
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
         why = "the CSG technique is csg-off";
     else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
         why = "the frame's framebuffer has no stencil buffer";
@@ -471,8 +481,12 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
     ctx->csg.cap_usable = ctx->csg.cap_slot != STIN__NO_SLOT &&
                           stin__csg_cap_transform(ctx, ctx->csg.cap_transform);
     path->geometry_begin(ctx);
-    for (pi = 0; pi < ctx->csg.product_count; pi++)
-        resolve_product(ctx, path, &r, &ctx->csg.products[pi]);
+    for (pi = 0; pi < ctx->csg.product_count; pi++) {
+        stin__csg_product *p = &ctx->csg.products[pi];
+        p->capped = 0;
+        if (!stin__csg_scs_product(ctx, path, &r, p))
+            resolve_product(ctx, path, &r, p);
+    }
     path->geometry_end(ctx);
     pack_end(ctx, &saved);
     write_depth(ctx, path, &r, GL_ALWAYS);
@@ -521,13 +535,14 @@ void stin__csg_init(stin_context *ctx)
     char msg[160], why[200];
     int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
     c->cap_slot = STIN__NO_SLOT;
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER)
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
         return;
+    stin__csg_scs_init(ctx);
     if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION))) {
         if (!gl4) {
             stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                         "goldfeather writes depth with glDrawPixels (compatibility profile) or "
-                         "a GLSL 1.50 program (GL4 lighting)");
+                         "goldfeather and scs write depth with glDrawPixels (compatibility "
+                         "profile) or a GLSL 1.50 program (GL4 lighting)");
             return;
         }
         c->depth_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_depth.frag",
@@ -548,9 +563,22 @@ void stin__csg_init(stin_context *ctx)
 void stin__csg_release(stin_context *ctx)
 {
     stin__csg_state *c = &ctx->csg;
+    stin__csg_scs_release(ctx);
     if (c->depth_prog)
         GL(ctx, DeleteProgram)(c->depth_prog);
     if (c->depth_tex)
         GL(ctx, DeleteTextures)(1, &c->depth_tex);
     c->depth_prog = c->depth_tex = 0;
+}
+
+/* ---- shared with csg_scs.c ---------------------------------------------- */
+void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out)
+{
+    read_depth(ctx, r, out);
+}
+void stin__csg_read_stencil(stin_context *ctx, const resolve *r) { read_stencil(ctx, r); }
+void stin__csg_clear(stin_context *ctx, GLbitfield bits) { clear(ctx, bits); }
+GLenum stin__csg_culled_face(const stin__draw *d, int complemented)
+{
+    return culled_face(d, complemented);
 }

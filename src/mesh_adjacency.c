@@ -2,7 +2,8 @@
 /* Edge adjacency over position-welded vertices (mesh_weld.c): which
  * triangle lies across each edge, how many edges are open or shared by more
  * than two triangles, and whether the mesh is a consistently oriented closed
- * 2-manifold. Welding by position means split normals or uv seams do not
+ * 2-manifold, and whether it bounds one convex solid (every edge convex,
+ * one piece). Welding by position means split normals or uv seams do not
  * open the mesh. */
 #include "internal.h"
 
@@ -19,6 +20,37 @@ static uint32_t pow2_at_least(uint64_t n)
     while (p < n && p < 0x80000000u)
         p <<= 1;
     return p;
+}
+
+/* Whether triangle t1 bends away from t0 across their shared edge (t1's
+ * far vertex on or behind t0's plane, within 1e-5 of t0's longest edge:
+ * a flat quad split in two counts as convex). */
+static int convex_edge(const stin__vertex *verts, const uint32_t *tris, uint32_t t0,
+                       uint32_t h1)
+{
+    const float *a = verts[tris[3 * t0]].position, *b = verts[tris[3 * t0 + 1]].position;
+    const float *c = verts[tris[3 * t0 + 2]].position;
+    const float *far = verts[tris[3 * (h1 / 3u) + (h1 % 3u + 2u) % 3u]].position;
+    double u[3], v[3], n[3], d = 0.0, nn = 0.0, longest = 0.0, e;
+    int k;
+    for (k = 0; k < 3; k++) {
+        u[k] = (double)b[k] - a[k];
+        v[k] = (double)c[k] - a[k];
+    }
+    n[0] = u[1] * v[2] - u[2] * v[1];
+    n[1] = u[2] * v[0] - u[0] * v[2];
+    n[2] = u[0] * v[1] - u[1] * v[0];
+    for (k = 0; k < 3; k++) {
+        d += n[k] * ((double)far[k] - a[k]);
+        nn += n[k] * n[k];
+        e = u[k] - v[k];
+        longest += e * e;
+    }
+    e = u[0] * u[0] + u[1] * u[1] + u[2] * u[2];
+    longest = longest > e ? longest : e;
+    e = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
+    longest = longest > e ? longest : e;
+    return d <= 0.0 || d * d <= 1e-10 * longest * nn;
 }
 
 size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count)
@@ -41,7 +73,7 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
     edge_entry *edges = (edge_entry *)(void *)(base + stin__align16(
         (size_t)vertex_count * 4u + (size_t)weld_size * 4u));
     unsigned char *counts = (unsigned char *)(edges + edge_size);
-    uint32_t he, i, inconsistent = 0;
+    uint32_t he, i, inconsistent = 0, concave = 0, welded_count = 0, edge_count = 0;
 
     if (stin__adjacency_scratch_bytes(vertex_count, tri_count) > ctx->scratch_bytes)
         return STIN_ERROR_CAPACITY;
@@ -74,6 +106,7 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
         uint32_t h0, h1, t0, t1, s0, s1;
         if (edges[i].a == NO_TRI)
             continue;
+        edge_count++;
         if (counts[i] == 1) {
             info->open_edges++;
             continue;
@@ -95,8 +128,16 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
         }
         adjacency[h0] = t1;
         adjacency[h1] = t0;
+        concave += !convex_edge(verts, tris, t0, h1);
     }
     info->nonmanifold_edges += inconsistent;
     info->closed_manifold = info->open_edges == 0 && info->nonmanifold_edges == 0;
+    /* Locally convex closed pieces are spheres (Euler characteristic 2
+     * each): one piece when V - E + F = 2 (an unused vertex also breaks it:
+     * not convex, the safe side) */
+    for (i = 0; i < vertex_count; i++)
+        welded_count += weld[i] == i;
+    info->convex = info->closed_manifold && concave == 0 &&
+                   (int64_t)welded_count - (int64_t)edge_count + (int64_t)tri_count == 2;
     return STIN_OK;
 }

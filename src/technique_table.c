@@ -62,8 +62,12 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_DISPLACEMENT_OFF,       2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* stencil parity; depth written back by glDrawPixels (compatibility) or
      * a GLSL 1.50 program (core: csg_goldfeather.c demotes without it) */
-    {STIN_TECH_CSG_GOLDFEATHER,        0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
-    {STIN_TECH_CSG_OFF,                1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_GOLDFEATHER,        1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_OFF,                2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* sequenced convex subtraction (csg_scs.c) for products of convex
+     * primitives, goldfeather's depth write-back; other products go to
+     * goldfeather (logged) */
+    {STIN_TECH_CSG_SCS,                0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
 };
 
 static const stin_feature tech_feature[] = {

@@ -430,7 +430,7 @@ const char *stin_feature_name(stin_feature f);
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace-tess, displace, displacement-off
  *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
- *   csg:      goldfeather, csg-off (see "CSG products" below)
+ *   csg:      scs, goldfeather, csg-off (see "CSG products" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
@@ -633,7 +633,8 @@ const char *stin_feature_name(stin_feature f);
     X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1) \
     X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4) \
     X(TRANSLUCENT_COLOURED, "coloured", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL2) \
-    X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1)
+    X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
+    X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -748,6 +749,14 @@ typedef struct stin_desc {
 /* deep: the early stop by an occlusion query even where GL 4.3's storage
  * flag could run (the same image and layer count) */
 #define STIN_DEBUG_DEEP_QUERY_STOP 32768u
+/* scs: run every pass of each subtraction sequence (as many as the sampled
+ * depth complexity), without stopping at the first pass an occlusion query
+ * finds changed nothing (the same image, more passes) */
+#define STIN_DEBUG_CSG_SCS_NO_EARLY_STOP 65536u
+/* scs: count a term's plain primitives in one 8-bit stencil counter instead
+ * of batches of 255: wrong (nothing drawn) where a term intersects more than
+ * 255; a test that it shows the batching matters */
+#define STIN_DEBUG_CSG_NO_BATCH 131072u
 
 typedef struct stin_context stin_context;
 
@@ -841,6 +850,12 @@ typedef struct stin_mesh_info {
     int closed_manifold;           /* 1 when every edge has exactly two opposite triangles */
     uint32_t welded_vertices;      /* vertices snapped onto another (weld_tolerance) */
     float bounds_min[3], bounds_max[3];
+    /* 1 when the mesh bounds one convex solid: closed_manifold, every edge's
+     * dihedral angle convex (the far vertex of either triangle lies on or
+     * behind the other's plane, within 1e-5 of the longer edge: flat
+     * quads split in two count) and one piece (V - E + F = 2 over welded
+     * positions). CSG technique "scs" needs it of every primitive. */
+    int convex;
 } stin_mesh_info;
 
 /* Validates (indices in range, finite values, degenerate triangles dropped and
@@ -1119,9 +1134,14 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * window depth lies within 2^-21 of the resolved depth rather than depth
  * EQUAL, as the resolve's float copy may round otherwise into that buffer's
  * depth format) and cast none. Products are opaque; a primitive's normal and height maps are
- * ignored. Passes: about (1 + layers) x (1 + other literals / 8) per
- * literal of each term, each layer reading depth back (and the stencil
- * once per batch), so a resolve costs read-backs more than fill. Memory:
+ * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
+ * per literal of each term, each layer reading depth back (and the stencil
+ * once per batch), so a resolve costs read-backs more than fill. Only the
+ * term's literals whose window rectangles (mesh bounds through transform,
+ * view and projection; the whole viewport where a corner lies behind the
+ * eye) meet the candidate's get a parity pass: one off it is outside (what
+ * a complemented literal asks) or rules the candidate out (a plain one), so
+ * a term of 1000 primitives costs passes by its overlaps, not 1000^2. Memory:
  * the CPU copies use the block's texture staging or mesh-creation scratch,
  * whichever is larger (both idle during a frame): 9 bytes a pixel of the
  * viewport; a viewport that needs more is logged once and its products are
@@ -1145,6 +1165,40 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * (one slot, 4 vertices and 2 triangles more than the desc's capacities,
  * counted by stin_memory_size). Not done: casting shadows. */
 
+/* CSG technique "scs" (the default; every tier with a stencil buffer, the
+ * same depth write-back, face passes, GL state and staging as goldfeather):
+ * sequenced convex subtraction for a product whose every primitive is
+ * convex (stin_mesh_info.convex) and whose every term has a plain
+ * primitive. Per term: depth cleared to 0 and the plain primitives' front
+ * faces drawn with depth GREATER (the farthest front face, where a convex
+ * intersection begins); the complemented primitives in a subtraction
+ * sequence, each pushing the depth to its back face where the depth lies
+ * inside it, the list run as many times as the most complemented primitives
+ * covering one pixel (a saturating stencil count read back once: every
+ * order of those is in the sequence), stopping at the first run an
+ * occlusion query finds moved nothing (where there are queries; a ring of
+ * 256 made at stin_create, read once a run, the last run not counted;
+ * STIN_DEBUG_CSG_SCS_NO_EARLY_STOP runs them all);
+ * then a pixel survives where the depth lies in front of every plain
+ * primitive's back face, counted in the stencil 255 primitives a batch
+ * (no counter overflows; STIN_DEBUG_CSG_NO_BATCH shows why), and the
+ * nearest survivor per pixel is kept on the CPU as goldfeather keeps it.
+ * Faces within 4 depth units of the depth count as in front of it (the
+ * coplanar rule above). Passes a term: plain + complemented + 3 x
+ * complemented x runs + plain; read-backs: 2 + one each 255 plain
+ * primitives, against goldfeather's per literal and layer, so it is the
+ * faster from a few primitives up (stin-bench --csg on llvmpipe, a box
+ * minus 7 to 127 spheres: 0.39-0.84 of goldfeather's frame time; at 2
+ * primitives the two are within the noise; docs/benchmarks.md). More than
+ * 255 complemented
+ * primitives over one pixel caps the runs at 255 (logged once).
+ * Selection per product: under "scs", a product with a non-convex
+ * primitive (or a term of complements only) is resolved by goldfeather,
+ * logged once per context (INFO; WARNING where the caller forced scs with
+ * desc.techniques[STIN_FEATURE_CSG]); force "goldfeather" for every
+ * product. stin_frame_stats.csg_scs_products counts the products scs
+ * resolved. */
+
 /* The normal form of the frame's product `product` (0 = the first accepted
  * by stin_draw_csg since stin_begin_frame, until the next begin): the
  * number of terms; when `literals` is not NULL, the literals of term
@@ -1167,6 +1221,8 @@ typedef struct stin_frame_stats {
     uint32_t dropped_csg;      /* products stin_draw_csg refused */
     /* deep: layers peeled (passes into a deep map), all lights and faces */
     uint32_t deep_layers;
+    /* products resolved by "scs" (the others of a frame went to goldfeather) */
+    uint32_t csg_scs_products;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -12,7 +12,11 @@
 static void keep_errors(void *user, stin_log_level level, stin_log_item item, const char *msg)
 {
     capture *c = (capture *)user;
-    (void)item;
+    if (item == STIN_LOG_FALLBACK) {
+        size_t used = strlen(c->fallbacks);
+        c->log_fallbacks++;
+        snprintf(c->fallbacks + used, sizeof c->fallbacks - used, "%s\n", msg);
+    }
     if (level != STIN_LOG_LEVEL_ERROR)
         return;
     c->log_errors++;
@@ -52,6 +56,8 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.debug_flags = o->debug_flags;
     d.shadow_map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);
+    if (o->csg_capacity)
+        d.max_csg_primitives = d.max_csg_terms = d.max_csg_literals = o->csg_capacity;
     size = stin_memory_size(&d);
     block = malloc(size);
     if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {

@@ -23,6 +23,7 @@ typedef struct capture_options {
     const struct scene_gpu_csg *csg; /* CSG products of the scene's objects (NULL: none) */
     int csg_count;
     stin_technique csg_technique; /* forced CSG technique; NONE = auto */
+    uint32_t csg_capacity;    /* desc.max_csg_primitives, _terms, _literals; 0 = stin's */
     /* forced translucent-shadows technique; NONE = translucent-solid: the
      * shadow tests compare the hard visibility (deep_test.c asks for deep) */
     stin_technique translucent;
@@ -36,6 +37,8 @@ typedef struct capture {
     stin_debug_counters counters;
     unsigned log_errors;
     char last_error[512];
+    unsigned log_fallbacks;   /* STIN_LOG_FALLBACK messages at any level */
+    char fallbacks[2048];     /* their text, one a line (cut at the size) */
     uint64_t caps_present;    /* after the masks */
     int separate_specular;
     stin_frame_stats stats;   /* of the last frame (the visibility output) */

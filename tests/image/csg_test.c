@@ -66,26 +66,31 @@ typedef struct csg_case {
     const stin_csg_node *nodes;
     int shadows;   /* test light 0's visibility too */
     int union_equals; /* compare with the ordinary depth-tested render */
+    int convex;       /* scs resolves it (else it falls back: a primitive is not convex,
+                       * or the near plane cuts one) */
 } csg_case;
 
 static const csg_case cases[] = {
-    {"carved", "csg.json", {0, 1}, minus, 0, 0},
-    {"both", "csg.json", {0, 1}, both, 0, 0},
-    {"common", "csg.json", {0, 1}, common, 0, 0},
-    {"inside", "csg/inside.json", {0, 1}, minus, 0, 0},
-    {"union", "csg/spheres.json", {0, 1}, both, 0, 1},
-    {"lens", "csg/spheres.json", {0, 1}, common, 0, 0},
-    {"torus-groove", "csg/torus.json", {0, 1}, minus, 0, 0},
-    {"torus-cut", "csg/torus.json", {1, 0}, common, 0, 0},
-    {"coplanar", "csg/coplanar.json", {0, 1}, minus, 0, 0},
-    {"shadowed", "csg/shadowed.json", {0, 1}, minus, 1, 0},
-    {"eye-cavity", "csg/eye-cavity.json", {0, 1}, minus, 0, 0},
-    {"eye-cut", "csg/eye-cut.json", {0, 1}, minus, 0, 0},
+    {"carved", "csg.json", {0, 1}, minus, 0, 0, 1},
+    {"both", "csg.json", {0, 1}, both, 0, 0, 1},
+    {"common", "csg.json", {0, 1}, common, 0, 0, 1},
+    {"inside", "csg/inside.json", {0, 1}, minus, 0, 0, 1},
+    {"union", "csg/spheres.json", {0, 1}, both, 0, 1, 1},
+    {"lens", "csg/spheres.json", {0, 1}, common, 0, 0, 1},
+    {"torus-groove", "csg/torus.json", {0, 1}, minus, 0, 0, 0},
+    {"torus-cut", "csg/torus.json", {1, 0}, common, 0, 0, 0},
+    {"coplanar", "csg/coplanar.json", {0, 1}, minus, 0, 0, 1},
+    {"shadowed", "csg/shadowed.json", {0, 1}, minus, 1, 0, 1},
+    {"eye-cavity", "csg/eye-cavity.json", {0, 1}, minus, 0, 0, 0},
+    {"eye-cut", "csg/eye-cut.json", {0, 1}, minus, 0, 0, 0},
 };
 
-static void case_name(const csg_case *c, stin_tier tier, const char *test, char *out, size_t n)
+/* goldfeather's names as they were; scs's with "scs-" in front */
+static void case_name(const csg_case *c, stin_technique t, stin_tier tier, const char *test,
+                      char *out, size_t n)
 {
-    snprintf(out, n, "%s/csg-%s/%s", stin_tier_name(tier), c->name, test);
+    snprintf(out, n, "%s/csg-%s%s/%s", stin_tier_name(tier),
+             t == STIN_TECH_CSG_SCS ? "scs-" : "", c->name, test);
 }
 
 /* The reference image of the case: P, N, Z and light 0's visibility. */
@@ -125,23 +130,16 @@ static int render(run *r, const scene *s, const capture_options *o, capture *cap
     return 0;
 }
 
-/* The ordinary render's P against the union's, pixel by pixel. */
-static void test_union_equals(run *r, const csg_case *c, stin_tier tier, const scene *s,
-                              const capture *csg)
+/* Two renders' P pixel by pixel: covered in both and within the tolerance
+ * on >= 99.9% of the pixels either covers. */
+static void p_agree(run *r, const char *name, const capture *a_cap, const capture *b_cap,
+                    const char *what)
 {
-    capture_options o;
-    capture plain;
-    char name[256];
     long covered = 0, differ = 0;
-    int w = r->width, h = r->height, i;
-    case_name(c, tier, "union-equals", name, sizeof name);
-    memset(&o, 0, sizeof o);
-    o.tier = tier;
-    if (!render(r, s, &o, &plain, name))
-        return;
-    for (i = 0; i < w * h; i++) {
-        const float *a = csg->img.pixels + (size_t)i * AOV_CHANNELS;
-        const float *b = plain.img.pixels + (size_t)i * AOV_CHANNELS;
+    int i;
+    for (i = 0; i < r->width * r->height; i++) {
+        const float *a = a_cap->img.pixels + (size_t)i * AOV_CHANNELS;
+        const float *b = b_cap->img.pixels + (size_t)i * AOV_CHANNELS;
         double d2 = 0, limit = CSG_P_RELATIVE * b[AOV_Z] + CSG_P_ABSOLUTE;
         int k, ca = a[AOV_Z] > 0.0f, cb = b[AOV_Z] > 0.0f;
         if (!ca && !cb)
@@ -152,15 +150,67 @@ static void test_union_equals(run *r, const csg_case *c, stin_tier tier, const s
         differ += ca != cb || d2 > limit * limit;
     }
     report(r, covered && differ <= (1.0 - CSG_P_MIN_MATCH) * covered ? "PASS" : "FAIL", name,
-           "P differs from the depth-tested pair on %ld of %ld covered pixels (need <= %.1f%%)",
-           differ, covered, 100.0 * (1.0 - CSG_P_MIN_MATCH));
+           "P differs from %s on %ld of %ld covered pixels (need <= %.1f%%)", what, differ,
+           covered, 100.0 * (1.0 - CSG_P_MIN_MATCH));
+}
+
+/* The ordinary render's P against the union's. */
+static void test_union_equals(run *r, const csg_case *c, stin_technique t, stin_tier tier,
+                              const scene *s, const capture *csg)
+{
+    capture_options o;
+    capture plain;
+    char name[256];
+    case_name(c, t, tier, "union-equals", name, sizeof name);
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    if (!render(r, s, &o, &plain, name))
+        return;
+    p_agree(r, name, csg, &plain, "the depth-tested pair");
     capture_free(&plain);
+}
+
+/* scs against goldfeather on the same product. */
+static void test_agree(run *r, const csg_case *c, stin_tier tier, const scene *s,
+                       const capture_options *base, const capture *scs)
+{
+    capture_options o = *base;
+    capture gold;
+    char name[256];
+    case_name(c, STIN_TECH_CSG_SCS, tier, "agrees", name, sizeof name);
+    o.csg_technique = STIN_TECH_CSG_GOLDFEATHER;
+    if (!render(r, s, &o, &gold, name))
+        return;
+    p_agree(r, name, scs, &gold, "goldfeather's");
+    capture_free(&gold);
+}
+
+/* scs resolved a convex product itself, and handed a non-convex one to
+ * goldfeather with a logged reason. */
+static void test_scs_used(run *r, const csg_case *c, stin_tier tier, const capture *cap)
+{
+    char name[256];
+    case_name(c, STIN_TECH_CSG_SCS, tier, c->convex ? "resolved" : "falls-back", name,
+              sizeof name);
+    if (c->convex)
+        report(r, cap->stats.csg_scs_products == 1 ? "PASS" : "FAIL", name,
+               "%u of 1 products resolved by scs", cap->stats.csg_scs_products);
+    else
+        report(r,
+               cap->stats.csg_scs_products == 0 && cap->log_fallbacks &&
+                       strstr(cap->fallbacks, "scs: ")
+                   ? "PASS"
+                   : "FAIL",
+               name, "%u products resolved by scs (want 0), fallback logged: %s",
+               cap->stats.csg_scs_products,
+               strstr(cap->fallbacks, "scs: ") ? strstr(cap->fallbacks, "scs: ") : "no");
 }
 
 /* Light 0's visibility where P matches, the light reaches the side seen
  * and no reference shadow edge lies within 2 pixels (a map's texels blur
  * edges over that band; image_test.c's other shadow tests do the same). */
-static void test_shadow(run *r, const csg_case *c, stin_tier tier, const scene *s,
+static void test_shadow(run *r, const csg_case *c, stin_technique tech, stin_tier tier,
+                        const scene *s,
                         const capture_options *base, stin_technique t, const ref_hit *hits,
                         const float *ref)
 {
@@ -173,7 +223,7 @@ static void test_shadow(run *r, const csg_case *c, stin_tier tier, const scene *
     capture_options o = *base;
     capture one, *cap = &one;
     snprintf(test, sizeof test, "shadow-%s", stin_technique_name(t));
-    case_name(c, tier, test, name, sizeof name);
+    case_name(c, tech, tier, test, name, sizeof name);
     o.shadows = t;
     {
         char err[512];
@@ -221,7 +271,8 @@ static void test_shadow(run *r, const csg_case *c, stin_tier tier, const scene *
     capture_free(&one);
 }
 
-static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
+static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
+                     stin_technique tech)
 {
     char path[1200], err[512], name[256];
     scene s;
@@ -236,7 +287,7 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
     compare_tolerance tol = {CSG_P_RELATIVE, CSG_P_ABSOLUTE, 1.0, CSG_NORMAL_DEGREES};
     int w = r->width, h = r->height, have_cap = 0;
     snprintf(path, sizeof path, "%s/%s", dir, c->file);
-    case_name(c, tier, "P", name, sizeof name);
+    case_name(c, tech, tier, "P", name, sizeof name);
     if (!scene_load(path, &s, err, sizeof err)) {
         report(r, "FAIL", name, "%s", err);
         return;
@@ -253,11 +304,15 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
     o.tier = tier;
     o.csg = &product;
     o.csg_count = 1;
-    if (!render(r, &s, &o, &cap, name))
+    o.csg_technique = tech;
+    if (!capture_render(r->plat, r->profile, &s, &o, &cap, err, sizeof err)) {
+        /* a forced technique the context cannot run is refused at create */
+        report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "render failed: %s", err);
         goto done;
+    }
     have_cap = 1;
-    if (cap.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_GOLDFEATHER) {
-        report(r, "SKIP", name, "goldfeather does not run here (%s)",
+    if (cap.choice[STIN_FEATURE_CSG].technique != tech) {
+        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(tech),
                cap.choice[STIN_FEATURE_CSG].reason);
         goto done;
     }
@@ -278,7 +333,7 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
                "%ld, P on %ld; need %.1f%%)", 100.0 * match, cr.covered, cr.coverage_mismatch,
                cr.p_mismatch, 100.0 * CSG_P_MIN_MATCH);
     }
-    case_name(c, tier, "N", name, sizeof name);
+    case_name(c, tech, tier, "N", name, sizeof name);
     report(r,
            cr.normal_compared &&
                    cr.normal_over <= (1.0 - CSG_NORMAL_MIN_MATCH) * cr.normal_compared
@@ -293,11 +348,15 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c)
             STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SHADOWS_VDSM};
         size_t k;
         for (k = 0; k < sizeof shadow_techniques / sizeof shadow_techniques[0]; k++)
-            test_shadow(r, c, tier, &s, &o, shadow_techniques[k], hits, refimg);
+            test_shadow(r, c, tech, tier, &s, &o, shadow_techniques[k], hits, refimg);
     }
     if (c->union_equals)
-        test_union_equals(r, c, tier, &s, &cap);
-    case_name(c, tier, "gl-clean", name, sizeof name);
+        test_union_equals(r, c, tech, tier, &s, &cap);
+    if (tech == STIN_TECH_CSG_SCS) {
+        test_scs_used(r, c, tier, &cap);
+        test_agree(r, c, tier, &s, &o, &cap);
+    }
+    case_name(c, tech, tier, "gl-clean", name, sizeof name);
     capture_report_clean(r, name, &cap);
 done:
     if (have_cap)
@@ -317,6 +376,9 @@ void csg_tests(run *r, stin_tier tier, const char *path)
         return;
     slash = strrchr(path, '/');
     snprintf(dir, sizeof dir, "%.*s", slash ? (int)(slash - path) : 1, slash ? path : ".");
-    for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
-        run_case(r, tier, dir, &cases[i]);
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        run_case(r, tier, dir, &cases[i], STIN_TECH_CSG_GOLDFEATHER);
+        run_case(r, tier, dir, &cases[i], STIN_TECH_CSG_SCS);
+    }
+    csg_many_tests(r, tier);
 }

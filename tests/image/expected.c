@@ -17,14 +17,14 @@
  * maps on GL2, the opacity threshold on GL1,
  * displacement where there are vertex textures and the shadows are not
  * volumes (their silhouettes are the undisplaced mesh's), tessellated first
- * where there are tessellation shaders (GL 4.0); goldfeather everywhere */
-#define RESERVED STIN_TECH_TRANSLUCENT_OPAQUE, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_GOLDFEATHER
-#define COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_OFF, \
-    STIN_TECH_CSG_GOLDFEATHER
+ * where there are tessellation shaders (GL 4.0); scs everywhere
+ * (products of non-convex primitives go to goldfeather) */
+#define RESERVED STIN_TECH_TRANSLUCENT_OPAQUE, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS
+#define COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS
 #define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, \
-    STIN_TECH_CSG_GOLDFEATHER
+    STIN_TECH_CSG_SCS
 #define TESSELLATED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_TESS, \
-    STIN_TECH_CSG_GOLDFEATHER
+    STIN_TECH_CSG_SCS
 
 static const expected_profile table[] = {
     {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},

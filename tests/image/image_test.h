@@ -58,6 +58,8 @@ int displace_scene(const char *path);
 /* CSG products against the exact CSG reference, on csg.json and the scenes
  * of tests/scenes/csg/ beside it (csg_test.c). */
 void csg_tests(run *r, stin_tier tier, const char *path);
+/* Products of 1000 primitives, generated (csg_many_test.c; from csg_tests). */
+void csg_many_tests(run *r, stin_tier tier);
 /* Deep shadow maps ("deep", GL4) against the reference's transmittance, on
  * deep-stack, deep-colour and glass-panes; below GL4 a SKIP and the refusal
  * of a forced deep (deep_test.c). */

@@ -121,12 +121,16 @@ static int by_t(const void *a, const void *b)
     return x->prim < y->prim ? -1 : x->prim > y->prim;
 }
 
-static int primitive_of(const ref_csg_product *p, unsigned object)
+/* Primitive of each scene object in one product (-1: none), so a crossing
+ * finds its primitive at once whatever the primitive count. */
+typedef struct product_index {
+    const ref_csg_product *p;
+    int *of_object;
+} product_index;
+
+static int primitive_of(const product_index *pi, unsigned object)
 {
-    for (int i = 0; i < p->primitive_count; i++)
-        if ((unsigned)p->objects[i] == object)
-            return i;
-    return -1;
+    return pi->of_object[object];
 }
 
 #define SAME_T(a, b) (fabsf((a) - (b)) <= 1e-6f * fmaxf(fabsf(a), 1.0f))
@@ -136,18 +140,18 @@ static int primitive_of(const ref_csg_product *p, unsigned object)
 /* The first crossing (of the sorted list, one product's) where the
  * expression turns true; CAP where it holds at the near plane; -1 for
  * none. inside: primitive_count bytes. */
-static int first_surface(const ref_csg_product *p, const crossing *x, int n, unsigned char *inside)
+static int first_surface(const product_index *pi, const crossing *x, int n, unsigned char *inside,
+                         int *balance)
 {
+    const ref_csg_product *p = pi->p;
     int i, k;
     memset(inside, 0, (size_t)p->primitive_count);
     /* in at the start: more exits than entries along the whole ray */
-    {
-        int balance[256] = {0};
-        for (i = 0; i < n; i++)
-            balance[primitive_of(p, x[i].object)] += x[i].exit ? 1 : -1;
-        for (k = 0; k < p->primitive_count; k++)
-            inside[k] = balance[k] > 0;
-    }
+    memset(balance, 0, sizeof *balance * (size_t)p->primitive_count);
+    for (i = 0; i < n; i++)
+        balance[primitive_of(pi, x[i].object)] += x[i].exit ? 1 : -1;
+    for (k = 0; k < p->primitive_count; k++)
+        inside[k] = balance[k] > 0;
     if (eval(p->nodes, p->node_count - 1, inside))
         return CAP; /* holds the near plane */
     for (i = 0; i < n;) {
@@ -155,7 +159,7 @@ static int first_surface(const ref_csg_product *p, const crossing *x, int n, uns
         while (end < n && SAME_T(x[end].t, x[i].t))
             end++;
         for (k = i; k < end && pick < 0; k++) { /* a crossing alone that makes it true */
-            int q = primitive_of(p, x[k].object);
+            int q = primitive_of(pi, x[k].object);
             unsigned char was = inside[q];
             inside[q] = (unsigned char)!x[k].exit;
             if (eval(p->nodes, p->node_count - 1, inside))
@@ -163,7 +167,7 @@ static int first_surface(const ref_csg_product *p, const crossing *x, int n, uns
             inside[q] = was;
         }
         for (k = i; k < end; k++)
-            inside[primitive_of(p, x[k].object)] = (unsigned char)!x[k].exit;
+            inside[primitive_of(pi, x[k].object)] = (unsigned char)!x[k].exit;
         if (eval(p->nodes, p->node_count - 1, inside))
             return pick >= 0 ? pick : i;
         i = end;
@@ -210,14 +214,16 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
     ref_camera_frame cf;
     collector c;
     crossing *mine;
-    unsigned char inside[256];
-    int ok = 1;
+    unsigned char *inside;
+    int *balance, ok = 1, most = 1;
+    product_index *index;
     if (!r || !hits || count < 0 || (count && !products) ||
         !r->csg_primitive)
         return 0;
     for (int p = 0; p < count; p++) {
-        if (products[p].primitive_count > 256 || products[p].node_count < 1)
+        if (products[p].primitive_count < 1 || products[p].node_count < 1)
             return 0;
+        most = products[p].primitive_count > most ? products[p].primitive_count : most;
         for (int i = 0; i < products[p].primitive_count; i++)
             if (products[p].objects[i] < 0 || products[p].objects[i] >= r->object_count ||
                 !r->csg_primitive[products[p].objects[i]])
@@ -227,13 +233,27 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
         return 0;
     memset(&c, 0, sizeof c);
     c.r = r;
-    c.capacity = 4096;
+    c.capacity = 4096 > 4 * most ? 4096 : 4 * most;
     c.list = malloc(sizeof *c.list * (size_t)c.capacity);
     mine = malloc(sizeof *mine * (size_t)c.capacity);
-    if (!c.list || !mine) {
-        free(c.list);
-        free(mine);
-        return 0;
+    inside = malloc((size_t)most);
+    balance = malloc(sizeof *balance * (size_t)most);
+    index = calloc((size_t)count + 1, sizeof *index);
+    for (int p = 0; index && p < count; p++) {
+        index[p].p = &products[p];
+        index[p].of_object = malloc(sizeof(int) * (size_t)r->object_count);
+        if (!index[p].of_object)
+            continue;
+        for (int o = 0; o < r->object_count; o++)
+            index[p].of_object[o] = -1;
+        for (int i = 0; i < products[p].primitive_count; i++)
+            index[p].of_object[products[p].objects[i]] = i;
+    }
+    for (int p = 0; index && p < count; p++)
+        ok &= index[p].of_object != NULL;
+    if (!c.list || !mine || !inside || !balance || !index || !ok) {
+        ok = 0;
+        goto done;
     }
     const float *eye = r->s->camera.eye;
     /* the view distance of window depth REF_CSG_CAP_DEPTH */
@@ -286,10 +306,10 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
             for (int p = 0; p < count; p++) {
                 int n = 0, k;
                 for (int i = 0; i < c.count; i++)
-                    if (primitive_of(&products[p], c.list[i].object) >= 0)
+                    if (primitive_of(&index[p], c.list[i].object) >= 0)
                         mine[n++] = c.list[i];
                 n = drop_edge_repeats(mine, n);
-                k = first_surface(&products[p], mine, n, inside);
+                k = first_surface(&index[p], mine, n, inside, balance);
                 if (k == CAP && cap_t < t_best) {
                     t_best = cap_t;
                     fill_cap(r, &products[p], &cf, eye, dir, cap_t, h);
@@ -310,6 +330,12 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
                     product_of[at] = p;
             }
         }
+done:
+    for (int p = 0; index && p < count; p++)
+        free(index[p].of_object);
+    free(index);
+    free(balance);
+    free(inside);
     free(c.list);
     free(mine);
     return ok && rtcGetDeviceError(r->device) == RTC_ERROR_NONE;

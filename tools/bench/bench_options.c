@@ -245,6 +245,8 @@ static const bench_option table[] = {
      "texels a side of the map-pcf map and of each deep or coloured face"},
     FRAMES(SEC_DEEP, "--deep-frames", "5", "1", PER_ROW),
     SETUPS(SEC_DEEP, "--deep-setups", "2", "fresh shadows-off context per set-up"),
+
+    FRAMES(SEC_CSG, "--csg-frames", "10", "2", "timed frames per side and row"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

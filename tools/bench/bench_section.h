@@ -14,6 +14,7 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 
 /* Indices into bench_sections[], in the order they run. */
 enum { SEC_RAW, SEC_SHADOWS, SEC_MAPS, SEC_PCF, SEC_SURFACE, SEC_VDSM, SEC_DISPLACE, SEC_DEEP,
+       SEC_CSG,
        SECTION_COUNT };
 
 struct options;
@@ -48,5 +49,6 @@ int section_surface(bench_env *env, const scene *s, int *ran);
 int section_vdsm(bench_env *env, const scene *s, int *ran);
 int section_displace(bench_env *env, const scene *s, int *ran);
 int section_deep(bench_env *env, const scene *s, int *ran);
+int section_csg(bench_env *env, const scene *s, int *ran);
 
 #endif

@@ -16,4 +16,6 @@ const bench_section bench_sections[SECTION_COUNT] = {
     {"deep", "GL2/GL4 translucent shadows: deep with 1, 2, 4 layers and coloured against map-pcf "
              "and shadows off; deep's early stop on and off, transparency in one cube face and "
              "in all six", section_deep},
+    {"csg", "CSG products: scs and goldfeather against OpenCSG's SCS and Goldfeather, n = 2 to "
+            "128 primitives and a row along the view", section_csg},
 };

@@ -1,0 +1,46 @@
+/* SPDX-License-Identifier: MIT */
+/* The window rectangle a CSG primitive can cover: its mesh's bounding box
+ * through its transform and the frame's view and projection. Where two
+ * primitives' rectangles do not meet, neither covers a pixel of the other,
+ * so goldfeather skips the parity pass of the one for the other (outside:
+ * what a complemented primitive asks; a plain one rules the candidate out)
+ * and its passes follow the primitives that overlap, not all of them. */
+#include "internal.h"
+
+/* Conservative: a box corner at or behind the eye gives the whole viewport. */
+void stin__csg_screen_rect(const stin_context *ctx, const stin__draw *d, float rect[4])
+{
+    const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
+    float m[16];
+    int i, k;
+    stin__mat4_mul(m, ctx->view_proj, d->transform);
+    rect[0] = rect[1] = 1.0f;
+    rect[2] = rect[3] = -1.0f;
+    for (i = 0; i < 8; i++) {
+        const float c[3] = {(i & 1) ? info->bounds_max[0] : info->bounds_min[0],
+                            (i & 2) ? info->bounds_max[1] : info->bounds_min[1],
+                            (i & 4) ? info->bounds_max[2] : info->bounds_min[2]};
+        float clip[4];
+        for (k = 0; k < 4; k++)
+            clip[k] = m[k] * c[0] + m[4 + k] * c[1] + m[8 + k] * c[2] + m[12 + k];
+        if (!(clip[3] > 1e-6f)) {
+            rect[0] = rect[1] = -1.0f;
+            rect[2] = rect[3] = 1.0f;
+            return;
+        }
+        for (k = 0; k < 2; k++) {
+            float v = clip[k] / clip[3];
+            rect[k] = v < rect[k] ? v : rect[k];
+            rect[2 + k] = v > rect[2 + k] ? v : rect[2 + k];
+        }
+    }
+}
+
+/* Whether two rectangles (normalised device x, y: min then max) meet, with
+ * a pixel's margin for rasterisation at their edges. */
+int stin__csg_rects_meet(const stin_context *ctx, const float a[4], const float b[4])
+{
+    const int *vp = ctx->frame.viewport;
+    float mx = 2.0f / (float)(vp[2] > 0 ? vp[2] : 1), my = 2.0f / (float)(vp[3] > 0 ? vp[3] : 1);
+    return a[0] <= b[2] + mx && b[0] <= a[2] + mx && a[1] <= b[3] + my && b[1] <= a[3] + my;
+}

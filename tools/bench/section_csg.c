@@ -1,0 +1,287 @@
+/* SPDX-License-Identifier: MIT */
+/* The CSG section (issue 12): stin's scs and goldfeather against OpenCSG
+ * 1.5's SCS and Goldfeather (opencsg_shim.cpp) on the same context, size
+ * and product: a 2 x 1 x 2 box minus n - 1 spheres on a grid in its top
+ * face (n = 2, 8, 32, 128), and minus n - 1 spheres in a row along the
+ * view (depth complexity n). One point light; stin draws the product lit
+ * (ambient and light pass), OpenCSG's surface is shaded by drawing the
+ * primitives again depth EQUAL under one GL light, as OpenSCAD does. Where
+ * OpenCSG is not built in or cannot run on the context, stin's rows are
+ * timed alone and the reason printed. */
+#include "bench_options.h"
+#include "bench_report.h"
+#include "bench_time.h"
+#include "scene_primitives.h"
+#include "stin_platform.h"
+#ifdef STIN_BENCH_OPENCSG
+#include "opencsg_shim.h"
+#endif
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define GOAL 0.8
+#define MAX_PRIMS 128
+
+typedef struct csg_case {
+    const char *name;
+    int n;
+    int row; /* spheres in a row along the view */
+} csg_case;
+
+static const csg_case cases[] = {{"grid", 2, 0}, {"grid", 8, 0}, {"grid", 32, 0},
+                                 {"grid", 128, 0}, {"row", 32, 1}};
+
+typedef struct csg_bench {
+    const bench_env *env;
+    scene_mesh box, ball;
+    stin_context *ctx;
+    void *block;
+    stin_mesh meshes[2];
+    stin_csg_primitive prims[MAX_PRIMS];
+    stin_csg_node nodes[2 * MAX_PRIMS];
+    int n, scs;
+    float view[16], proj[16];
+    uint32_t passes;
+    int opencsg; /* OpenCSG runs here */
+} csg_bench;
+
+static const float light_pos[4] = {2.0f, 5.0f, 3.0f, 1.0f};
+
+static void translation(float m[16], float x, float y, float z)
+{
+    memset(m, 0, 16 * sizeof *m);
+    m[0] = m[5] = m[10] = m[15] = 1.0f;
+    m[12] = x;
+    m[13] = y;
+    m[14] = z;
+}
+
+/* Primitive 0 the box, 1.. the spheres; box - (s1 u s2 u ...). */
+static void make_product(csg_bench *c, const csg_case *k)
+{
+    int i, side = (int)ceil(sqrt((double)(k->n - 1)));
+    float step = 1.8f / (float)side;
+    c->n = k->n;
+    memset(c->prims, 0, sizeof c->prims);
+    translation(c->prims[0].transform, 0, 0, 0);
+    for (i = 1; i < k->n; i++) {
+        float *t = c->prims[i].transform;
+        if (k->row) {
+            float f = (float)(i - 1) / (float)(k->n - 2);
+            translation(t, 0, 0.5f - f, 1.0f - 2.0f * f);
+        } else {
+            translation(t, -0.9f + step * (0.5f + (float)((i - 1) % side)), 0.5f,
+                        -0.9f + step * (0.5f + (float)((i - 1) / side)));
+        }
+        c->prims[i].transform[0] = c->prims[i].transform[5] = c->prims[i].transform[10] =
+            k->row ? 0.25f : 0.6f * step; /* the unit sphere scaled */
+    }
+    for (i = 0; i < k->n; i++) {
+        c->prims[i].mesh = c->meshes[i ? 1 : 0];
+        c->nodes[i].op = STIN_CSG_PRIMITIVE;
+        c->nodes[i].primitive = (uint32_t)i;
+    }
+    /* the spheres' union, then the box minus it */
+    for (i = 0; i < k->n - 2; i++) {
+        c->nodes[k->n + i].op = STIN_CSG_UNION;
+        c->nodes[k->n + i].a = i == 0 ? 1u : (uint32_t)(k->n + i - 1);
+        c->nodes[k->n + i].b = (uint32_t)(i + 2);
+    }
+    c->nodes[2 * k->n - 2].op = STIN_CSG_SUBTRACTION;
+    c->nodes[2 * k->n - 2].a = 0;
+    c->nodes[2 * k->n - 2].b = k->n == 2 ? 1u : (uint32_t)(2 * k->n - 3);
+}
+
+static int stin_side(csg_bench *c)
+{
+    const bench_settings *b = &c->env->b;
+    stin_frame_desc fd;
+    stin_light_desc l;
+    stin_csg_desc d;
+    memset(&fd, 0, sizeof fd);
+    memcpy(fd.view, c->view, sizeof fd.view);
+    memcpy(fd.projection, c->proj, sizeof fd.projection);
+    fd.viewport[2] = b->width;
+    fd.viewport[3] = b->height;
+    fd.framebuffer = stin_platform_framebuffer(b->plat);
+    fd.ambient[0] = fd.ambient[1] = fd.ambient[2] = 0.2f;
+    memset(&l, 0, sizeof l);
+    l.type = STIN_LIGHT_POINT;
+    memcpy(l.position, light_pos, sizeof l.position);
+    memset(&d, 0, sizeof d);
+    d.primitives = c->prims;
+    d.primitive_count = (uint32_t)c->n;
+    d.nodes = c->nodes;
+    d.node_count = (uint32_t)(2 * c->n - 1);
+    if (stin_begin_frame(c->ctx, &fd) != STIN_OK || stin_add_light(c->ctx, &l) != STIN_OK ||
+        stin_draw_csg(c->ctx, &d) != STIN_OK || stin_end_frame(c->ctx) != STIN_OK)
+        return 0;
+    c->passes = stin_query_frame_stats(c->ctx).passes;
+    return 1;
+}
+
+#ifdef STIN_BENCH_OPENCSG
+static void opencsg_product(const csg_bench *c)
+{
+    ocsg_primitive p[MAX_PRIMS];
+    int i;
+    for (i = 0; i < c->n; i++) {
+        const scene_mesh *m = i ? &c->ball : &c->box;
+        p[i].positions = m->positions;
+        p[i].normals = m->normals;
+        p[i].indices = m->indices;
+        p[i].index_count = 3u * m->triangle_count;
+        memcpy(p[i].transform, c->prims[i].transform, sizeof p[i].transform);
+        p[i].subtract = i > 0;
+    }
+    ocsg_set_product(p, c->n);
+}
+#endif
+
+/* Side 0 stin, side 1 OpenCSG (or stin again where it does not run). */
+static double frame(void *user, int side)
+{
+    csg_bench *c = (csg_bench *)user;
+    double t0 = bench_now_ms();
+    if (side == 0 || !c->opencsg) {
+        if (!stin_side(c))
+            return -1.0;
+    } else {
+#ifdef STIN_BENCH_OPENCSG
+        ocsg_frame(stin_platform_framebuffer(c->env->b.plat), c->scs, c->view, c->proj,
+                   light_pos);
+#endif
+    }
+    c->env->b.gl->Finish();
+    return bench_now_ms() - t0;
+}
+
+static void log_errors(void *user, stin_log_level level, stin_log_item item, const char *msg)
+{
+    (void)user;
+    (void)item;
+    if (level <= STIN_LOG_LEVEL_WARNING)
+        fprintf(stderr, "stin-bench: csg: %s\n", msg);
+}
+
+static int make_context(csg_bench *c, char *err, size_t err_size)
+{
+    stin_desc d;
+    stin_mesh_desc md;
+    size_t size;
+    int i;
+    memset(&d, 0, sizeof d);
+    d.get_proc_address = stin_platform_get_proc_address;
+    d.get_proc_user = c->env->b.plat;
+    d.log = log_errors;
+    d.techniques[STIN_FEATURE_CSG] = c->scs ? STIN_TECH_CSG_SCS : STIN_TECH_CSG_GOLDFEATHER;
+    size = stin_memory_size(&d);
+    c->block = malloc(size);
+    if (!c->block || stin_create(&d, c->block, size, &c->ctx) != STIN_OK) {
+        snprintf(err, err_size, "stin_create failed for %s", c->scs ? "scs" : "goldfeather");
+        return 0;
+    }
+    for (i = 0; i < 2; i++) {
+        const scene_mesh *m = i ? &c->ball : &c->box;
+        memset(&md, 0, sizeof md);
+        md.positions = m->positions;
+        md.normals = m->normals;
+        md.vertex_count = m->vertex_count;
+        md.indices = m->indices;
+        md.index_count = 3u * m->triangle_count;
+        if (stin_create_mesh(c->ctx, &md, &c->meshes[i]) != STIN_OK) {
+            snprintf(err, err_size, "stin_create_mesh failed");
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static void drop_context(csg_bench *c)
+{
+    if (c->ctx)
+        stin_destroy(c->ctx);
+    free(c->block);
+    c->ctx = NULL;
+    c->block = NULL;
+}
+
+int section_csg(bench_env *env, const scene *s, int *ran)
+{
+    static csg_bench c; /* the primitive and node arrays are large */
+    const bench_settings *b = &env->b;
+    scene_camera cam = {{0, 2, 4}, {0, 0, 0}, {0, 1, 0}, 45.0f, 0.5f, 20.0f};
+    int frames = env->o->sec[SEC_CSG].frames, k, worst_set = 0;
+    double worst = 0.0;
+    char why[256] = "", worst_at[96] = "";
+    (void)s;
+    memset(&c, 0, sizeof c);
+    c.env = env;
+    if (!scene_prim_box(&c.box, 2.0f, 1.0f, 2.0f) || !scene_prim_sphere(&c.ball, 1.0f, 24, 16)) {
+        fprintf(stderr, "stin-bench: csg: out of memory\n");
+        return EXIT_FAILED;
+    }
+    scene_camera_matrices(&cam, b->width, b->height, c.view, c.proj);
+#ifdef STIN_BENCH_OPENCSG
+    c.opencsg = ocsg_init(why, sizeof why);
+#else
+    snprintf(why, sizeof why, "stin-bench was built without OpenCSG (libopencsg-dev, "
+                              "libglew-dev)");
+#endif
+    printf("\n## CSG (issue 12): stin against OpenCSG 1.5, %dx%d, %s, box minus n - 1 spheres "
+           "(24 x 16 facets), median of %d frames a side (ABBA, glFinish per frame)\n",
+           b->width, b->height, env->o->platform, frames);
+    if (!c.opencsg)
+        printf("\nOpenCSG does not run here: %s; stin's rows against themselves\n", why);
+    printf("\n| product | n | stin | passes | stin ms | OpenCSG | OpenCSG ms | stin / OpenCSG "
+           "|\n|---|---:|---|---:|---:|---|---:|---:|\n");
+    for (k = 0; k < (int)(sizeof cases / sizeof cases[0]); k++)
+        for (c.scs = 1; c.scs >= 0; c.scs--) {
+            char err[256], label[64];
+            double a = 0, o = 0, ratio;
+            if (!make_context(&c, err, sizeof err)) { /* the meshes first: their handles */
+                drop_context(&c);
+                fprintf(stderr, "stin-bench: csg: %s\n", err);
+                return EXIT_FAILED;
+            }
+            make_product(&c, &cases[k]);
+#ifdef STIN_BENCH_OPENCSG
+            if (c.opencsg)
+                opencsg_product(&c);
+#endif
+            snprintf(label, sizeof label, "csg %s %d %s", cases[k].name, cases[k].n,
+                     c.scs ? "scs" : "goldfeather");
+            if (!bench_abba(frames, frame, &c, label, b->verbose, &a, &o, err, sizeof err)) {
+                drop_context(&c);
+                fprintf(stderr, "stin-bench: csg: %s\n", err);
+                return EXIT_FAILED;
+            }
+            drop_context(&c);
+            ratio = o > 0 ? a / o : 0.0;
+            printf("| %s | %d | %s | %u | %.2f | %s | %.2f | %.2f |\n", cases[k].name,
+                   cases[k].n, c.scs ? "scs" : "goldfeather", c.passes, a,
+                   c.opencsg ? (c.scs ? "SCS" : "Goldfeather") : "(stin again)", o, ratio);
+            fflush(stdout);
+            if (c.opencsg && (!worst_set || ratio > worst)) {
+                worst = ratio;
+                worst_set = 1;
+                snprintf(worst_at, sizeof worst_at, "%s n = %d, %s", cases[k].name,
+                         cases[k].n, c.scs ? "scs" : "goldfeather");
+            }
+        }
+#ifdef STIN_BENCH_OPENCSG
+    if (c.opencsg)
+        ocsg_release();
+#endif
+    *ran = 1;
+    bench_machine_once(env);
+    if (worst_set)
+        printf("goal stin / OpenCSG <= %.1f on every row: %s (worst %.2f, %s)\n", GOAL,
+               worst <= GOAL ? "met" : "NOT met", worst, worst_at);
+    scene_mesh_release(&c.box);
+    scene_mesh_release(&c.ball);
+    return 0;
+}
