@@ -41,6 +41,8 @@ typedef struct stin__program {
     GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_maps[STIN__SHADOW_SAMPLERS];
     /* deep chunk (translucent_deep.c): kind, face matrices, params, even/odd layers */
     GLint u_deep_kind, u_deep_matrix, u_deep_params, u_deep_layers[2];
+    /* peel chunk (transparency_peel.c): previous layer's depth, opaque depth, params */
+    GLint u_peel_previous, u_peel_opaque, u_peel_params;
     stin__displace_locs displace; /* the vertex stage's displacement chunk */
     uint32_t frame_serial;   /* ctx->glsl.serial its per-frame uniforms have */
 } stin__program;

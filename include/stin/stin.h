@@ -413,6 +413,7 @@ typedef enum stin_feature {
     STIN_FEATURE_TRANSLUCENT_SHADOWS, /* how casters with alpha < 1 shadow */
     STIN_FEATURE_DISPLACEMENT,        /* geometry moved by height maps */
     STIN_FEATURE_CSG,                 /* image-based CSG products */
+    STIN_FEATURE_TRANSPARENCY,        /* how the camera sees blended draws (alpha < 1) */
     STIN_FEATURE_COUNT
 } stin_feature;
 
@@ -431,6 +432,7 @@ const char *stin_feature_name(stin_feature f);
  *   displacement: displace-tess, displace, displacement-off
  *   translucent shadows: deep, translucent-solid
  *   csg:      goldfeather, csg-off (see "CSG products" below)
+ *   transparency: depth-peel, sorted (see "Transparency" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
@@ -601,7 +603,9 @@ const char *stin_feature_name(stin_feature f);
     X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
     X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4) \
     X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1) \
-    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4)
+    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4) \
+    X(TRANSPARENCY_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
+    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -674,6 +678,9 @@ typedef struct stin_desc {
                                         * context's largest texture) */
     int deep_mono;                     /* "deep": 1 stores grey visibility V' (1 - a)
                                         * instead of the coloured one; default 0 */
+    uint32_t transparency_layers;      /* "depth-peel": layers of blended surfaces peeled
+                                        * per pixel at most, default 8, at most 64;
+                                        * surfaces past it along a ray are not drawn */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -706,6 +713,13 @@ typedef struct stin_desc {
 #define STIN_DEBUG_DEEP_NO_EARLY_STOP 1024u
 /* displacement: level 0 of the height map at every distance (no mip chain) */
 #define STIN_DEBUG_DISPLACE_NO_MIP 2048u
+/* depth-peel: peel all desc.transparency_layers layers, without stopping at
+ * the first that drew nothing (the same image, more passes) */
+#define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
+/* depth-peel: no layer is lit through the shadows technique (each gets the
+ * frame's lights unshadowed, as "sorted" draws them): to measure what the
+ * shadows on layers add */
+#define STIN_DEBUG_PEEL_UNSHADOWED 8192u
 
 typedef struct stin_context stin_context;
 
@@ -1112,6 +1126,10 @@ typedef struct stin_frame_stats {
     uint32_t dropped_csg;      /* products stin_draw_csg refused */
     /* deep: layers peeled (passes into a deep map), all lights and faces */
     uint32_t deep_layers;
+    /* depth-peel: geometry passes that peeled a camera layer (the last one,
+     * which found nothing, counted: a scene of n layers under a cap above n
+     * takes n + 1), and the layers that drew something */
+    uint32_t peel_passes, peel_layers;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -13,21 +13,26 @@
 #define PLAIN STIN_TECH_SURFACE_PLAIN
 #define DOT3 STIN_TECH_SURFACE_DOT3
 #define POM STIN_TECH_SURFACE_POM
-/* translucent shadows, displacement, CSG: deep shadow maps on GL4,
- * displacement where there are vertex textures and the shadows are not
+/* translucent shadows, displacement, CSG, transparency: deep shadow maps on
+ * GL4, displacement where there are vertex textures and the shadows are not
  * volumes (their silhouettes are the undisplaced mesh's), tessellated first
- * where there are tessellation shaders (GL 4.0); goldfeather everywhere */
-#define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_GOLDFEATHER
+ * where there are tessellation shaders (GL 4.0); goldfeather everywhere;
+ * depth peeling on the GLSL tiers (FBOs, depth textures, packed
+ * depth-stencil), sorted on GL1 */
+#define RESERVED STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, \
+    STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_TRANSPARENCY_SORTED
+#define RESERVED_GL2 STIN_TECH_TRANSLUCENT_SOLID, STIN_TECH_DISPLACEMENT_OFF, \
+    STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_TRANSPARENCY_PEEL
 #define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, \
-    STIN_TECH_CSG_GOLDFEATHER
+    STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_TRANSPARENCY_PEEL
 #define TESSELLATED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_TESS, \
-    STIN_TECH_CSG_GOLDFEATHER
+    STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_TRANSPARENCY_PEEL
 
 static const expected_profile table[] = {
     {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},
     {"gl13-combine", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
     {"gl14-shadow", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, DOT3, RESERVED}, {1, 0, 0}},
-    {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED}, {1, 1, 0}},
+    {"gl21", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, RESERVED_GL2}, {1, 1, 0}},
     {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
     {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {0, 0, 1}},
     {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {1, 1, 1}},

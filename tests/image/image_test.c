@@ -343,6 +343,7 @@ int main(int argc, char **argv)
             visibility_tests(&r, tiers[t], argv[i]);
             csg_tests(&r, tiers[t], argv[i]);
             deep_tests(&r, tiers[t], argv[i]);
+            peel_tests(&r, tiers[t], argv[i]);
         }
     }
     free(displaced);

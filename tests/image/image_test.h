@@ -62,6 +62,10 @@ void csg_tests(run *r, stin_tier tier, const char *path);
  * deep-stack, deep-colour and glass-panes; below GL4 a SKIP and the refusal
  * of a forced deep (deep_test.c). */
 void deep_tests(run *r, stin_tier tier, const char *path);
+/* Camera transparency (depth-peel, sorted) against the reference's
+ * composite, on glass-panes and the scenes of tests/scenes/peel/ beside it
+ * (peel_test.c). */
+void peel_tests(run *r, stin_tier tier, const char *path);
 void displace_tests(run *r, stin_tier tier, const char *path);
 /* The seed's displacement behaviour 5 on a built-in plate, once per GLSL
  * tier (displace_seed_test.c); caps: the context's present capabilities. */
