@@ -400,6 +400,8 @@ static void unshadowed_lights(stin_context *ctx, const stin__path *path)
  * per object far to near, lit unshadowed. */
 static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
 {
+    if (ctx->peel.ready && (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY))
+        return;
     if (!stin__peel_begin(ctx, path)) {
         stin__sorted_frame(ctx);
         path->batches(ctx, STIN__BLENDED);
@@ -413,8 +415,6 @@ static void stage_blended(stin_context *ctx, const stin__path *path, int shadowe
         ctx->peel.said_vdsm = 1;
         shadowed = 0;
     }
-    if (ctx->desc.debug_flags & STIN_DEBUG_PEEL_UNSHADOWED)
-        shadowed = 0;
     while (stin__peel_layer_begin(ctx)) {
         path->ambient(ctx, STIN__OPAQUE, 0); /* the layer's depth, ambient and opacity */
         if (stin__peel_layer_lights(ctx)) {

@@ -716,10 +716,10 @@ typedef struct stin_desc {
 /* depth-peel: peel all desc.transparency_layers layers, without stopping at
  * the first that drew nothing (the same image, more passes) */
 #define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
-/* depth-peel: no layer is lit through the shadows technique (each gets the
- * frame's lights unshadowed, as "sorted" draws them): to measure what the
- * shadows on layers add */
-#define STIN_DEBUG_PEEL_UNSHADOWED 8192u
+/* depth-peel: no layer is drawn: the frame shows its opaque draws alone
+ * (the blended ones still cast shadows as the techniques say), the image
+ * the layers are composited over */
+#define STIN_DEBUG_PEEL_OPAQUE_ONLY 8192u
 
 typedef struct stin_context stin_context;
 

@@ -29,10 +29,13 @@
  *                   where the profile runs them): the beauty within 3/255 of
  *                   the composite whose layers are shadowed (hard
  *                   visibility) on >= 99.5% of the compared pixels (band 2:
- *                   map-pcf's filtered edges), with >= 50 compared pixels
- *                   whose nearest surface is a transparent one in shadow:
- *                   panes receive shadows. vdsm: SKIP (its position buffer
- *                   holds the opaque surfaces; layers are lit unshadowed);
+ *                   map-pcf's filtered edges), both as a whole and as the
+ *                   reference's layers (C, T) over the frame's own opaque
+ *                   image (STIN_DEBUG_PEEL_OPAQUE_ONLY: the layers' part
+ *                   alone), with >= 50 compared pixels whose nearest surface
+ *                   is a transparent one in shadow: panes receive shadows.
+ *                   vdsm: SKIP (its position buffer holds the opaque
+ *                   surfaces; layers are lit unshadowed);
  *   gl-clean        no GL error, no call outside the profile, no error log.
  * On GL1 the transparency technique is "sorted": the depth-peel tests SKIP.
  */
@@ -152,6 +155,7 @@ done:
  * each pixel's transparent layer count. */
 typedef struct composite_ref {
     float *rgba;
+    float *part;             /* the transparent surfaces' (C, T) */
     int *layers;
     int max_layers;
 } composite_ref;
@@ -161,14 +165,15 @@ static int reference_of(const peel_case *c, unsigned flags, composite_ref *out)
     int w = c->r->width, h = c->r->height, x, y;
     out->rgba = malloc(sizeof(float) * 4 * (size_t)w * h);
     out->layers = malloc(sizeof(int) * (size_t)w * h);
+    out->part = malloc(sizeof(float) * 4 * (size_t)w * h);
     out->max_layers = 0;
-    if (!out->rgba || !out->layers)
+    if (!out->rgba || !out->layers || !out->part)
         return 0;
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
             size_t i = (size_t)y * w + x;
             int n = reference_composite_pixel(c->s, c->ref, w, h, x, y, c->per_vertex, flags,
-                                              out->rgba + 4 * i);
+                                              out->rgba + 4 * i, out->part + 4 * i);
             if (n < 0)
                 return 0;
             out->layers[i] = n;
@@ -181,6 +186,7 @@ static int reference_of(const peel_case *c, unsigned flags, composite_ref *out)
 static void reference_free(composite_ref *c)
 {
     free(c->rgba);
+    free(c->part);
     free(c->layers);
 }
 
@@ -234,8 +240,8 @@ typedef struct match {
 /* The render against ref on the pixels seen through a transparent surface
  * away from edges; shadowed_pane counts those whose nearest surface is a
  * transparent one the light does not reach. */
-static void compare(const peel_case *c, const frame_out *f, const composite_ref *ref, int band,
-                    match *m)
+static void compare(const peel_case *c, const frame_out *f, const composite_ref *ref,
+                    const frame_out *opaque, int band, match *m)
 {
     int w = c->r->width, h = c->r->height, x, y, k;
     unsigned char *e = edge_map(c, ref);
@@ -256,7 +262,10 @@ static void compare(const peel_case *c, const frame_out *f, const composite_ref 
                 continue;
             m->seen_through++;
             for (k = 0; k < 3; k++) {
-                double d = fabs(f->rgba[4 * i + k] / 255.0 - ref->rgba[4 * i + k]);
+                double want = opaque ? ref->part[4 * i + k] +
+                                           ref->part[4 * i + 3] * (opaque->rgba[4 * i + k] / 255.0)
+                                     : ref->rgba[4 * i + k];
+                double d = fabs(f->rgba[4 * i + k] / 255.0 - want);
                 if (d > worst)
                     worst = d;
             }
@@ -305,7 +314,7 @@ static void test_beauty(const peel_case *c, const frame_out *f, const composite_
     match m;
     stin_technique t = f->choice[STIN_FEATURE_TRANSPARENCY].technique;
     int exact_expected = t == STIN_TECH_TRANSPARENCY_PEEL || !strcmp(c->scene_name, "panes");
-    compare(c, f, ref, 1, &m);
+    compare(c, f, ref, NULL, 1, &m);
     report(c->r, !exact_expected ? "INFO" : matches(&m) ? "PASS" : "FAIL", name,
            "%s: composite within 3/255 on %.3f%% of %ld pixels seen through glass (max %.4f, "
            "mean %.5f; %s)", stin_technique_name(t),
@@ -381,7 +390,7 @@ static void test_cap(const peel_case *c, const composite_ref *ref, const char *n
         report(c->r, "FAIL", name, "%s", err);
         return;
     }
-    compare(c, &f, ref, 1, &m);
+    compare(c, &f, ref, NULL, 1, &m);
     report(c->r, f.stats.peel_passes == 1 && ref->max_layers > 1 && !matches(&m) ? "PASS" : "FAIL",
            name, "transparency_layers 1: %u pass, composite matched on only %ld of %ld pixels "
            "(the scene has %d layers: one layer must not be the whole composite)",
@@ -393,12 +402,19 @@ static void test_shadowed(const peel_case *c, stin_technique shadows, const comp
                           const char *name)
 {
     frame_opts fo = {STIN_TECH_NONE, STIN_TECH_TRANSPARENCY_PEEL, 0, 0};
-    frame_out f;
+    frame_out f, behind;
     char err[256];
-    match m;
+    match m, whole;
     fo.shadows = shadows;
-    if (!render(c, c->s, &fo, &f, err, sizeof err)) {
+    fo.debug_flags = STIN_DEBUG_PEEL_OPAQUE_ONLY; /* what the layers go over */
+    if (!render(c, c->s, &fo, &behind, err, sizeof err)) {
         report(c->r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(shadows), err);
+        return;
+    }
+    fo.debug_flags = 0;
+    if (!render(c, c->s, &fo, &f, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        free(behind.rgba);
         return;
     }
     if (f.choice[STIN_FEATURE_TRANSPARENCY].technique != STIN_TECH_TRANSPARENCY_PEEL) {
@@ -407,13 +423,20 @@ static void test_shadowed(const peel_case *c, stin_technique shadows, const comp
         free(f.rgba);
         return;
     }
-    compare(c, &f, ref, 2, &m);
-    report(c->r, matches(&m) && m.shadowed_pane >= MIN_SHADOWED_PANE ? "PASS" : "FAIL", name,
-           "%s: shadowed composite within 3/255 on %.3f%% of %ld pixels (max %.4f, mean %.5f), "
-           "%ld of them a pane in shadow (need 99.5%% and >= %d)", stin_technique_name(shadows),
+    compare(c, &f, ref, &behind, 2, &m);
+    compare(c, &f, ref, NULL, 2, &whole);
+    report(c->r, matches(&m) && matches(&whole) && m.shadowed_pane >= MIN_SHADOWED_PANE ? "PASS"
+                                                                                   : "FAIL",
+           name,
+           "%s: shadowed layers over the technique's own opaque image within 3/255 on %.3f%% "
+           "of %ld pixels (max %.4f, mean %.5f), %ld of them a pane in shadow (need 99.5%% and "
+           ">= %d); the whole frame against the reference %.3f%% (need 99.5%%)",
+           stin_technique_name(shadows),
            m.compared ? 100.0 * (1.0 - (double)m.over / m.compared) : 0.0, m.compared, m.worst,
-           m.mean, m.shadowed_pane, MIN_SHADOWED_PANE);
+           m.mean, m.shadowed_pane, MIN_SHADOWED_PANE,
+           whole.compared ? 100.0 * (1.0 - (double)whole.over / whole.compared) : 0.0);
     free(f.rgba);
+    free(behind.rgba);
 }
 
 static void peel_scene(run *r, stin_tier tier, const char *path, const char *scene_name)

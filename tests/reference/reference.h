@@ -245,12 +245,15 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
  * sides alike (back faces are shaded with their own normal), and blended
  * under the ones in front: C += T a c, T *= 1 - a from C = 0, T = 1; then
  * out = C + T * (the opaque hit shaded the same way, or the background).
- * out[3] = 1 - T (1 - alpha behind). CSG primitives are not handled (scenes
- * with CSG are out of its scope). Returns the number of transparent
- * surfaces crossed (the depth complexity peeling needs), -1 on bad
- * arguments or out of memory. */
+ * out[3] = 1 - T (1 - alpha behind); part (NULL: not wanted) receives
+ * the transparent surfaces' part alone, (C, T), to put over another image
+ * of what lies behind. CSG primitives are not handled (scenes with CSG are
+ * out of its scope). Returns the number of transparent surfaces crossed
+ * (the depth complexity peeling needs), -1 on bad arguments or out of
+ * memory. */
 int reference_composite_pixel(const scene *s, const reference *r, int width, int height, int x,
-                              int y, int per_vertex, unsigned flags, float out_rgba[4]);
+                              int y, int per_vertex, unsigned flags, float out_rgba[4],
+                              float part[4]);
 
 #ifdef __cplusplus
 }

@@ -55,7 +55,8 @@ static void shade_surface(const scene *s, const reference *r, const ref_hit *hit
 }
 
 int reference_composite_pixel(const scene *s, const reference *r, int width, int height, int x,
-                              int y, int per_vertex, unsigned flags, float out_rgba[4])
+                              int y, int per_vertex, unsigned flags, float out_rgba[4],
+                              float part[4])
 {
     ref_camera_frame cf;
     double dir[3], len;
@@ -115,6 +116,10 @@ int reference_composite_pixel(const scene *s, const reference *r, int width, int
     for (int c = 0; c < 3; c++)
         out_rgba[c] = C[c] + T * behind[c];
     out_rgba[3] = 1.0f - T * (1.0f - behind[3]);
+    if (part) {
+        memcpy(part, C, sizeof C);
+        part[3] = T;
+    }
     free(weight);
     free(lights);
     return layers;

@@ -56,7 +56,7 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
         pixel(s, r, &hits[i], per_vertex, flags, &w, px);
         if ((flags & REFERENCE_RENDER_COMPOSITE) &&
             reference_composite_pixel(s, r, width, height, (int)(i % (size_t)width),
-                                      (int)(i / (size_t)width), per_vertex, flags, px) < 0)
+                                      (int)(i / (size_t)width), per_vertex, flags, px, NULL) < 0)
             ok = 0;
     }
     if (ok)

@@ -1199,9 +1199,10 @@ static void expect_composite(const scene *s, unsigned flags, double er, double e
                              int layers)
 {
     reference *r = create(s);
-    float px[4], *img = calloc((size_t)33 * 33 * REFERENCE_CHANNELS, sizeof(float));
+    float px[4], part[4], *img = calloc((size_t)33 * 33 * REFERENCE_CHANNELS, sizeof(float));
     assert_non_null(img);
-    assert_int_equal(reference_composite_pixel(s, r, 33, 33, 16, 16, 0, flags, px), layers);
+    assert_int_equal(reference_composite_pixel(s, r, 33, 33, 16, 16, 0, flags, px, part), layers);
+    assert_true(part[3] >= 0.0f && part[3] <= 1.0f && (layers > 0 || part[3] == 1.0f));
     assert_close(px[0], er, 1e-5);
     assert_close(px[1], eg, 1e-5);
     assert_close(px[2], eb, 1e-5);
