@@ -571,7 +571,8 @@ const char *stin_feature_name(stin_feature f);
  * peels every layer: the same image). Surfaces beyond desc.deep_layers
  * along a ray are not counted (their light passes). Lights are lit one per
  * pass while it is in use, and a frame without transparent draws draws no
- * layer. Blended draws are still drawn unshadowed, and the visibility map
+ * layer. Blended draws receive the deep maps' coloured shadows where
+ * "depth-peel" lights them (below), and the visibility map
  * (export_visibility) holds the shadows technique's visibility only.
  * Displaced transparent casters peel their displaced surface. With shadows
  * "off" it falls back to "translucent-solid" (logged); forcing it on a
@@ -580,7 +581,57 @@ const char *stin_feature_name(stin_feature f);
  * (RGBA32F: depth and V; 6 faces, two ping-pong array textures) plus a
  * deep_map_size^2 x 4 depth buffer: 97 MiB at the defaults (4 layers, 512),
  * 1.52 GiB at 2048 with 4 layers (stin_deep_memory_bytes); only the faces
- * a frame peels are written. */
+ * a frame peels are written.
+ * Transparency: how the camera sees blended draws (material opacity
+ * color[3] below 1; opaque draws are drawn first either way). The chain is
+ * depth-peel -> sorted, each step logged with the capability it lacked.
+ *   "depth-peel" (GLSL lighting with framebuffer objects, depth textures,
+ *   packed depth-stencil, VBOs; two texture units after the translucent
+ *   shadows' units) peels the blended draws front to back (Everitt 2001):
+ *   layer k is, per pixel, the nearest blended surface behind layer k - 1
+ *   and in front of the opaque depth. Each layer is lit exactly as the
+ *   opaque surfaces are: its ambient pass, then the frame's per-light
+ *   stages against the layer's own depth and stencil, so it receives the
+ *   shadows technique's shadows (volume, map-pcf: exact as on opaque
+ *   surfaces; "deep": the coloured transmittance) and is lit unshadowed in
+ *   an unshadowed frame. Exception: under "vdsm" (whose position buffer
+ *   holds the opaque surfaces) the layers are lit unshadowed, logged once.
+ *   The lit layers are composited front to back under one another
+ *   (C += T a c, T *= 1 - a, from C = 0, T = 1; c clamped to 1 as the
+ *   framebuffer clamps a surface's passes) and the result over the opaque
+ *   image: frame = C + T frame. The image does not depend on the order of
+ *   the draws (bit for bit), and intersecting or self-overlapping
+ *   transparent objects (a box's front and back) are exact. Peeling stops
+ *   at desc.transparency_layers (default 8; surfaces beyond it along a ray
+ *   are not drawn) or at the first pass that peeled nothing (an occlusion
+ *   query; without queries every layer up to the cap is peeled;
+ *   STIN_DEBUG_PEEL_NO_EARLY_STOP peels them all: the same image), so a
+ *   scene whose rays cross at most n blended surfaces takes n + 1 peel
+ *   passes (stin_frame_stats.peel_passes, .peel_layers). Each peeled layer
+ *   costs an ambient pass, the frame's light stages (per light: its
+ *   volumes, its deep map again, its lit pass) and one full-viewport
+ *   composite; one more composite ends the frame. The frame's depth buffer
+ *   ends with the nearest surface, blended or opaque, as the sorted draws
+ *   leave it; its alpha where a layer covers the pixel becomes T + T x the
+ *   alpha that was there (the blend that puts C + T frame over it applies
+ *   to alpha too). Displaced blended draws are peeled displaced (the same
+ *   lit programs draw them). The visibility and normal outputs draw
+ *   blended draws as before (nearest surface). GPU memory, at the
+ *   viewport's size W x H (window coordinates from 0: (x + width) x
+ *   (y + height)), made at the first frame with blended draws and grown
+ *   when a frame needs more: 4 depth-stencil textures (three layers' and
+ *   the opaque depth) and 4 RGBA8 colour textures (a layer's ambient and
+ *   lights, the composite's two), W x H x 32 bytes: 2 MiB at 256 x 256,
+ *   63 MiB at 1920 x 1080.
+ *   "sorted" (every tier; GL1's only choice) is the behaviour before
+ *   depth-peel: each blended draw whole, after the opaque ones, far to near
+ *   by the eye depth of its bounds' centre, with depth LESS, writes and
+ *   SRC_ALPHA / ONE_MINUS_SRC_ALPHA blending, lit unshadowed. It is exact
+ *   only for blended objects that neither intersect nor overlap in depth
+ *   nor overlap themselves: crossing panes, interleaved objects and a
+ *   closed mesh's far side come out in the wrong order or hidden (the first
+ *   frame with blended draws logs this warning once). Its blended draws do
+ *   not receive shadows. */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \

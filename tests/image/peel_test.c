@@ -33,7 +33,12 @@
  *                   reference's layers (C, T) over the frame's own opaque
  *                   image (STIN_DEBUG_PEEL_OPAQUE_ONLY: the layers' part
  *                   alone), with >= 50 compared pixels whose nearest surface
- *                   is a transparent one in shadow: panes receive shadows.
+ *                   is a transparent one in shadow: panes receive shadows
+ *                   (>= 100 compared pixels: shadow edges take more away).
+ *                   shadowed-deep (GL4): the same with "deep" for the
+ *                   transparent casters (volumes for the opaque ones)
+ *                   against the composite lit through each light's
+ *                   transmittance (coloured shadows on panes and floor);
  *                   vdsm: SKIP (its position buffer holds the opaque
  *                   surfaces; layers are lit unshadowed);
  *   gl-clean        no GL error, no call outside the profile, no error log.
@@ -55,6 +60,7 @@
 #define EDGE_STEP (8.0 / 255.0)
 #define MIN_SEEN_THROUGH 200
 #define MIN_SHADOWED_PANE 50
+#define MIN_SHADOWED_COMPARED 100 /* shadow edges (band 2) leave fewer pixels */
 #define HIGH_CAP 64 /* desc.transparency_layers at most */
 
 typedef struct peel_case {
@@ -69,6 +75,7 @@ typedef struct peel_case {
 typedef struct frame_opts {
     stin_technique shadows, transparency;
     uint32_t layers, debug_flags;
+    stin_technique translucent; /* NONE: translucent-solid */
 } frame_opts;
 
 typedef struct frame_out {
@@ -112,7 +119,8 @@ static int render(const peel_case *c, const scene *s, const frame_opts *fo, fram
     d.max_gl_version = c->r->profile->max_gl_version;
     d.techniques[STIN_FEATURE_SHADOWS] = fo->shadows;
     d.techniques[STIN_FEATURE_TRANSPARENCY] = fo->transparency;
-    d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] = STIN_TECH_TRANSLUCENT_SOLID;
+    d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] =
+        fo->translucent != STIN_TECH_NONE ? fo->translucent : STIN_TECH_TRANSLUCENT_SOLID;
     d.transparency_layers = fo->layers;
     d.debug_flags = fo->debug_flags;
     scene_gpu_size_desc(s, &d);
@@ -285,10 +293,12 @@ static void compare(const peel_case *c, const frame_out *f, const composite_ref 
     free(hits);
 }
 
-static int matches(const match *m)
+static int matches_at_least(const match *m, long least)
 {
-    return m->compared >= MIN_SEEN_THROUGH && m->over <= (1.0 - MIN_MATCH) * m->compared;
+    return m->compared >= least && m->over <= (1.0 - MIN_MATCH) * m->compared;
 }
+
+static int matches(const match *m) { return matches_at_least(m, MIN_SEEN_THROUGH); }
 
 static long differing(const peel_case *c, const frame_out *a, const frame_out *b)
 {
@@ -326,7 +336,7 @@ static void test_order(const peel_case *c, const frame_out *base, const char *na
 {
     scene reversed = *c->s;
     scene_object *objects = malloc(sizeof *objects * (size_t)c->s->object_count);
-    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 0, 0};
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 0, 0, STIN_TECH_NONE};
     frame_out f;
     char err[256];
     int i;
@@ -349,7 +359,7 @@ static void test_order(const peel_case *c, const frame_out *base, const char *na
 static void test_early_stop(const peel_case *c, const frame_out *base, const composite_ref *ref,
                             const char *name)
 {
-    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, HIGH_CAP, 0};
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, HIGH_CAP, 0, STIN_TECH_NONE};
     frame_out high, all;
     char err[256];
     uint32_t want = (uint32_t)ref->max_layers + 1;
@@ -382,7 +392,7 @@ static void test_early_stop(const peel_case *c, const frame_out *base, const com
 
 static void test_cap(const peel_case *c, const composite_ref *ref, const char *name)
 {
-    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 1, 0};
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 1, 0, STIN_TECH_NONE};
     frame_out f;
     char err[256];
     match m;
@@ -398,14 +408,15 @@ static void test_cap(const peel_case *c, const composite_ref *ref, const char *n
     free(f.rgba);
 }
 
-static void test_shadowed(const peel_case *c, stin_technique shadows, const composite_ref *ref,
-                          const char *name)
+static void test_shadowed(const peel_case *c, stin_technique shadows, stin_technique translucent,
+                          const composite_ref *ref, const char *name)
 {
-    frame_opts fo = {STIN_TECH_NONE, STIN_TECH_TRANSPARENCY_PEEL, 0, 0};
+    frame_opts fo = {STIN_TECH_NONE, STIN_TECH_TRANSPARENCY_PEEL, 0, 0, STIN_TECH_NONE};
     frame_out f, behind;
     char err[256];
     match m, whole;
     fo.shadows = shadows;
+    fo.translucent = translucent;
     fo.debug_flags = STIN_DEBUG_PEEL_OPAQUE_ONLY; /* what the layers go over */
     if (!render(c, c->s, &fo, &behind, err, sizeof err)) {
         report(c->r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(shadows), err);
@@ -417,23 +428,31 @@ static void test_shadowed(const peel_case *c, stin_technique shadows, const comp
         free(behind.rgba);
         return;
     }
-    if (f.choice[STIN_FEATURE_TRANSPARENCY].technique != STIN_TECH_TRANSPARENCY_PEEL) {
-        report(c->r, "FAIL", name, "depth-peel fell back: %s",
-               f.choice[STIN_FEATURE_TRANSPARENCY].reason);
+    if (f.choice[STIN_FEATURE_TRANSPARENCY].technique != STIN_TECH_TRANSPARENCY_PEEL ||
+        (translucent != STIN_TECH_NONE &&
+         f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique != translucent)) {
+        report(c->r, "FAIL", name, "depth-peel or %s fell back: %s %s",
+               stin_technique_name(translucent), f.choice[STIN_FEATURE_TRANSPARENCY].reason,
+               f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason);
+        free(behind.rgba);
         free(f.rgba);
         return;
     }
     compare(c, &f, ref, &behind, 2, &m);
     compare(c, &f, ref, NULL, 2, &whole);
-    report(c->r, matches(&m) && matches(&whole) && m.shadowed_pane >= MIN_SHADOWED_PANE ? "PASS"
-                                                                                   : "FAIL",
+    report(c->r,
+           matches_at_least(&m, MIN_SHADOWED_COMPARED) &&
+                   matches_at_least(&whole, MIN_SHADOWED_COMPARED) &&
+                   m.shadowed_pane >= MIN_SHADOWED_PANE
+               ? "PASS"
+               : "FAIL",
            name,
            "%s: shadowed layers over the technique's own opaque image within 3/255 on %.3f%% "
            "of %ld pixels (max %.4f, mean %.5f), %ld of them a pane in shadow (need 99.5%% and "
-           ">= %d); the whole frame against the reference %.3f%% (need 99.5%%)",
+           ">= %d, of >= %d); the whole frame against the reference %.3f%% (need 99.5%%)",
            stin_technique_name(shadows),
            m.compared ? 100.0 * (1.0 - (double)m.over / m.compared) : 0.0, m.compared, m.worst,
-           m.mean, m.shadowed_pane, MIN_SHADOWED_PANE,
+           m.mean, m.shadowed_pane, MIN_SHADOWED_PANE, MIN_SHADOWED_COMPARED,
            whole.compared ? 100.0 * (1.0 - (double)whole.over / whole.compared) : 0.0);
     free(f.rgba);
     free(behind.rgba);
@@ -444,7 +463,7 @@ static void peel_scene(run *r, stin_tier tier, const char *path, const char *sce
     scene s;
     peel_case c;
     composite_ref unshadowed, shadowed;
-    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 0, 0};
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
     frame_out base;
     char err[512], name[192];
     const char *tn = stin_tier_name(tier);
@@ -509,7 +528,21 @@ static void peel_scene(run *r, stin_tier tier, const char *path, const char *sce
         for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++) {
             snprintf(name, sizeof name, "%s/%s/peel-shadowed-%s", tn, scene_name,
                      stin_technique_name(shadows[i]));
-            test_shadowed(&c, shadows[i], &shadowed, name);
+            test_shadowed(&c, shadows[i], STIN_TECH_NONE, &shadowed, name);
+        }
+        /* deep: the layers get coloured shadows; the composite's layers are
+         * lit through the transmittance */
+        snprintf(name, sizeof name, "%s/%s/peel-shadowed-deep", tn, scene_name);
+        if (tier != STIN_TIER_GL4) {
+            report(r, "SKIP", name, "deep shadow maps are GL4 only");
+        } else {
+            reference_free(&shadowed);
+            memset(&shadowed, 0, sizeof shadowed);
+            if (!reference_of(&c, REFERENCE_RENDER_TRANSMITTANCE, &shadowed))
+                report(r, "FAIL", name, "transmittance reference composite failed");
+            else
+                test_shadowed(&c, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_TRANSLUCENT_DEEP, &shadowed,
+                              name);
         }
         snprintf(name, sizeof name, "%s/%s/peel-shadowed-vdsm", tn, scene_name);
         report(r, "SKIP", name, "vdsm shadows the opaque surfaces only: its position buffer "
