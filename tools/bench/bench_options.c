@@ -225,6 +225,11 @@ static const bench_option table[] = {
      64, 4, "fixed tessellation levels on the coarse scene (gl4)"},
     FRAMES(SEC_DISPLACE, "--displace-frames", "5", "1", PER_ROW),
     SETUPS(SEC_DISPLACE, "--displace-setups", "2", "fresh plain context per set-up"),
+
+    {SEC_PEEL, "--peel-scene", "FILE", "tests/scenes/peel/panes.json", NULL, set_text,
+     F(sec[SEC_PEEL].scene), 0, 0, 0, "the panes (0, 2 and 4 of them over the floor)"},
+    FRAMES(SEC_PEEL, "--peel-frames", "7", "1", PER_ROW),
+    SETUPS(SEC_PEEL, "--peel-setups", "2", "fresh sorted context per set-up"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

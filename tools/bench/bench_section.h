@@ -13,7 +13,7 @@
 enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 
 /* Indices into bench_sections[], in the order they run. */
-enum { SEC_RAW, SEC_SHADOWS, SEC_MAPS, SEC_PCF, SEC_SURFACE, SEC_VDSM, SEC_DISPLACE,
+enum { SEC_RAW, SEC_SHADOWS, SEC_MAPS, SEC_PCF, SEC_SURFACE, SEC_VDSM, SEC_DISPLACE, SEC_PEEL,
        SECTION_COUNT };
 
 struct options;
@@ -47,5 +47,6 @@ int section_pcf(bench_env *env, const scene *s, int *ran);
 int section_surface(bench_env *env, const scene *s, int *ran);
 int section_vdsm(bench_env *env, const scene *s, int *ran);
 int section_displace(bench_env *env, const scene *s, int *ran);
+int section_peel(bench_env *env, const scene *s, int *ran);
 
 #endif

@@ -13,4 +13,6 @@ const bench_section bench_sections[SECTION_COUNT] = {
              "SP alone and stencil volumes, per --scenes scene", section_vdsm},
     {"displace", "GL2/GL4 displacement (VTF, tessellation) against the surface chain and the "
                  "plain surface, each speed-up on and off", section_displace},
+    {"peel", "GL2/GL4 camera transparency: depth-peel against sorted with 0, 2 and 4 "
+             "transparent layers on screen (passes and time)", section_peel},
 };
