@@ -56,6 +56,16 @@ static int ensure_size(stin_context *ctx)
     GLenum status;
     if (w <= s->width && h <= s->height)
         return 1;
+    if (!s->fbo) { /* the first frame with blended draws (a frame without needs none) */
+        GL(ctx, GenFramebuffers)(1, &s->fbo);
+        GL(ctx, GenFramebuffers)(1, &s->composite_fbo);
+        GL(ctx, GenTextures)(2, s->depth);
+        GL(ctx, GenTextures)(2, s->accum);
+        GL(ctx, GenTextures)(1, &s->opaque);
+        GL(ctx, GenTextures)(1, &s->first);
+        GL(ctx, GenTextures)(1, &s->ambient);
+        GL(ctx, GenTextures)(1, &s->lights);
+    }
     w = w > s->width ? w : s->width;
     h = h > s->height ? h : s->height;
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
@@ -88,7 +98,7 @@ static int ensure_size(stin_context *ctx)
 void stin__peel_init(stin_context *ctx)
 {
     stin__peel_state *s = &ctx->peel;
-    int gl4 = ctx->sel.tier == STIN_TIER_GL4;
+    int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
     char frag[40], msg[160], why[220];
     stin__memzero(s, sizeof *s);
     s->layer = -1;
@@ -112,14 +122,6 @@ void stin__peel_init(stin_context *ctx)
     s->u_accum = GL(ctx, GetUniformLocation)(s->program, "u_accum");
     s->u_first = GL(ctx, GetUniformLocation)(s->program, "u_first");
     s->u_params = GL(ctx, GetUniformLocation)(s->program, "u_params");
-    GL(ctx, GenFramebuffers)(1, &s->fbo);
-    GL(ctx, GenFramebuffers)(1, &s->composite_fbo);
-    GL(ctx, GenTextures)(2, s->depth);
-    GL(ctx, GenTextures)(2, s->accum);
-    GL(ctx, GenTextures)(1, &s->opaque);
-    GL(ctx, GenTextures)(1, &s->first);
-    GL(ctx, GenTextures)(1, &s->ambient);
-    GL(ctx, GenTextures)(1, &s->lights);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
         GL(ctx, GenQueries)(1, &s->query);
     s->ready = 1;
