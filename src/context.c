@@ -23,6 +23,7 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_csg_literals = DEFAULT(d.max_csg_literals, 4096u);
     d.deep_layers = DEFAULT(d.deep_layers, 4u);
     d.deep_map_size = DEFAULT(d.deep_map_size, 512u);
+    d.transparency_layers = DEFAULT(d.transparency_layers, 8u);
     if (d.displace_guard_band == 0.0f)
         d.displace_guard_band = 1.0f;
     if (d.displace_tess_pixels == 0.0f)
@@ -48,7 +49,8 @@ static int desc_valid(const stin_desc *d)
 
            d->deep_layers <= 16 && d->deep_map_size <= 4096 &&
            (d->deep_map_size & (d->deep_map_size - 1)) == 0 && (d->deep_mono & ~1) == 0 &&
-           d->translucent_opaque_threshold > 0.0f && d->translucent_opaque_threshold <= 1.0f;
+           d->translucent_opaque_threshold > 0.0f && d->translucent_opaque_threshold <= 1.0f &&
+           d->transparency_layers <= STIN__PEEL_MAX_LAYERS;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)
@@ -305,6 +307,7 @@ static void release_gl(stin_context *ctx)
     stin__csg_release(ctx);
     stin__deep_release(ctx);
     stin__coloured_release(ctx);
+    stin__peel_release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
@@ -333,7 +336,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
                   "max_mesh_triangles <= max_triangles, soft_shadow_samples <= 64, "
                   "shadow_map_size a power of two <= 8192, deep_layers <= 16, "
                   "deep_map_size a power of two <= 4096, deep_mono 0 or 1, "
-                  "translucent_opaque_threshold in (0, 1])");
+                  "translucent_opaque_threshold in (0, 1], transparency_layers <= 64)");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     if (!memory || memory_bytes < need) {
@@ -398,6 +401,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         stin__coloured_init(ctx);
         if (fbo)
             stin__framebuffer_restore(ctx, fb);
+        stin__peel_init(ctx);
         stin__displace_init(ctx);
         stin__csg_init(ctx);
     }

@@ -382,6 +382,52 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
     stin__mask_frame_end(ctx);
 }
 
+/* A peeled layer's lights without shadows, in batches of the path's size. */
+static void unshadowed_lights(stin_context *ctx, const stin__path *path)
+{
+    uint32_t first;
+    for (first = 0; first < ctx->light_count; first += STIN__LIGHTS_PER_PASS) {
+        uint32_t n = ctx->light_count - first;
+        path->lit_lights(ctx, ctx->lights + first,
+                         (int)(n < STIN__LIGHTS_PER_PASS ? n : STIN__LIGHTS_PER_PASS));
+    }
+}
+
+/* Blended draws. depth-peel: layer by layer, front to back, each lit by the
+ * same stages as the opaque draws (shadowed when the frame is; vdsm's
+ * position buffer holds the opaque surfaces only, so under vdsm the layers
+ * are lit unshadowed, said once), then composited over the frame. sorted:
+ * per object far to near, lit unshadowed. */
+static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
+{
+    if (ctx->peel.ready && (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY))
+        return;
+    if (!stin__peel_begin(ctx, path)) {
+        stin__sorted_frame(ctx);
+        path->batches(ctx, STIN__BLENDED);
+        return;
+    }
+    if (shadowed && ctx->shadow == &stin__shadow_vdsm) {
+        if (!ctx->peel.said_vdsm)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "depth-peel: vdsm shadows only the opaque surfaces; peeled layers are "
+                      "lit unshadowed");
+        ctx->peel.said_vdsm = 1;
+        shadowed = 0;
+    }
+    while (stin__peel_layer_begin(ctx)) {
+        path->ambient(ctx, STIN__OPAQUE, 0); /* the layer's depth, ambient and opacity */
+        if (stin__peel_layer_lights(ctx)) {
+            if (shadowed)
+                stage_lights(ctx, path, 0);
+            else
+                unshadowed_lights(ctx, path);
+        }
+        stin__peel_layer_end(ctx);
+    }
+    stin__peel_end(ctx);
+}
+
 /* The frame plan. Stages: light pre-passes -> target -> depth and ambient ->
  * per light visibility and lighting -> blended draws -> the visibility
  * export. Without shadows (no technique, or no lights) the lighting is all
@@ -408,13 +454,14 @@ static void run_plan(stin_context *ctx)
         path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
         stage_lights(ctx, path, visibility);
         if (!visibility)
-            path->batches(ctx, STIN__BLENDED); /* blended draws: unshadowed, far to near */
+            stage_blended(ctx, path, 1);
     } else if (visibility) {
         static const float white[4] = {1, 1, 1, 1};
         path->ambient(ctx, STIN__ALL, 1);
         path->flat(ctx, STIN__ALL, white, NULL);
     } else {
-        path->batches(ctx, STIN__ALL);
+        path->batches(ctx, STIN__OPAQUE);
+        stage_blended(ctx, path, 0);
     }
     if ((ctx->desc.debug_flags & STIN_DEBUG_SHOW_VOLUMES) && ctx->shadow == &stin__shadow_volume &&
         shadowed)

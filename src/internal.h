@@ -18,6 +18,7 @@
 #include "visibility_export.h"
 #include "csg.h"
 #include "translucent.h"
+#include "transparency.h"
 
 typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
 
@@ -94,6 +95,7 @@ struct stin_context {
     stin__csg_state csg;      /* the frame's CSG products (csg.c) */
     stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
     stin__coloured_state coloured; /* translucent shadows' colour maps (translucent_coloured.c) */
+    stin__peel_state peel;    /* transparency's camera layers (transparency_peel.c) */
 
     /* surface detail */
     struct {

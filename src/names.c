@@ -58,6 +58,7 @@ const char *stin_feature_name(stin_feature f)
     case STIN_FEATURE_TRANSLUCENT_SHADOWS: return "translucent-shadows";
     case STIN_FEATURE_DISPLACEMENT: return "displacement";
     case STIN_FEATURE_CSG: return "csg";
+    case STIN_FEATURE_TRANSPARENCY: return "transparency";
     case STIN_FEATURE_COUNT: break;
     }
     return "unknown feature";

@@ -45,6 +45,8 @@ typedef struct stin__program {
     /* coloured chunk (translucent_coloured.c): kind, face matrices, params,
      * transmittance and nearest-depth atlases */
     GLint u_coloured_kind, u_coloured_matrix, u_coloured_params, u_coloured_maps[2];
+    /* peel chunk (transparency_peel.c): previous layer's depth, opaque depth, params */
+    GLint u_peel_previous, u_peel_opaque, u_peel_params;
     stin__displace_locs displace; /* the vertex stage's displacement chunk */
     uint32_t frame_serial;   /* ctx->glsl.serial its per-frame uniforms have */
 } stin__program;

@@ -37,6 +37,7 @@ static void locate(stin_context *ctx, stin__program *p)
     LOC(u_color, "u_color");
 #undef LOC
     stin__translucent_locate(ctx, p);
+    stin__peel_locate(ctx, p);
     stin__surf_locate(ctx, p);
     /* the volume program draws shadow-map depth from lights, the rest the camera's passes */
     stin__displace_locate(ctx, p->name, p != &ctx->programs[STIN__PROG_VOLUME], &p->displace);
@@ -62,14 +63,15 @@ static stin__program *lit_program(stin_context *ctx, int variant)
 static int build_variants(stin_context *ctx, const char *dir, int tess, int top,
                           stin__program *lit, char *msg, size_t size)
 {
-    char vert[32], frag[32], names[4][40];
-    const char *chunks[5];
+    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40];
+    const char *chunks[STIN__SURF_CHUNKS + 1];
     int v, best = STIN__SURF_PLAIN;
     stin__formatf(vert, sizeof vert, "%slit.vert", dir);
     stin__formatf(frag, sizeof frag, "%slit.frag", dir);
     for (v = STIN__SURF_NORMAL; v <= top; v++) {
         stin__program *p = &lit[v];
-        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx), names, chunks);
+        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
+                          stin__peel_chunk(ctx), names, chunks);
         p->name = stin__program_build(ctx, vert, frag, chunks, tess, msg, size);
         if (!p->name)
             return best;
@@ -104,16 +106,20 @@ static void build_surface_variants(stin_context *ctx, const char *dir)
 static int build_programs(stin_context *ctx, const char *dir, int tess, stin__program *progs,
                           char *msg, size_t msg_size)
 {
-    char vert[32], frag[32], names[4][40], none_name[40];
-    const char *chunks[5], *const *shadow_only, *no_shadow[2];
+    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40], none_name[40];
+    const char *chunks[STIN__SURF_CHUNKS + 1], *shadow_only[STIN__SURF_CHUNKS + 1], *no_shadow[2];
     int i;
     /* the lit program's surface and shadow functions (plain variant); flat.frag
      * serves the visibility output (the shadow test: the plain variant's chunks
      * less the surface's) and, with no test, the depth-only volume and map
      * passes */
-    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx), names,
-                      chunks);
-    shadow_only = chunks + 1;
+    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
+                      stin__peel_chunk(ctx), names, chunks);
+    for (i = 0; chunks[i + 1]; i++)
+        shadow_only[i] = chunks[i + 1];
+    if (stin__peel_chunk(ctx)) /* it wraps the surface's normal: lit programs only */
+        i--;
+    shadow_only[i] = NULL;
     stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
     no_shadow[0] = none_name;
     no_shadow[1] = NULL;
@@ -277,6 +283,7 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
     if (ctx->shadow->uniforms)
         ctx->shadow->uniforms(ctx, p);
     stin__translucent_uniforms(ctx, p);
+    stin__peel_uniforms(ctx, p);
 }
 
 /* Makes p (a lit program) current with this pass's uniforms. */
@@ -363,9 +370,9 @@ static void submit(stin_context *ctx, const stin__program *p, const stin__draw *
     stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
 }
 
-static int in_set(const stin__draw *d, int which)
+static int in_set(const stin_context *ctx, const stin__draw *d, int which)
 {
-    return (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE)) != 0;
+    return (which & stin__camera_set(ctx, d)) != 0;
 }
 
 /* The CSG products' faces on their resolved depth (opaque). */
@@ -373,7 +380,7 @@ static void draw_csg_faces(stin_context *ctx, const stin__program *p, int which,
 {
     uint32_t i;
     stin__pass_state saved;
-    if (!(which & STIN__OPAQUE))
+    if (!(which & STIN__OPAQUE) || ctx->peel.peeling) /* not in a peeled layer */
         return;
     for (i = 0; i < ctx->csg.face_count; i++) {
         const stin__draw *d = &ctx->csg.faces[i];
@@ -395,7 +402,7 @@ static void draw_set(stin_context *ctx, const stin__program *p, int which, int m
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         const stin__program *q = p;
-        if (!in_set(d, which))
+        if (!in_set(ctx, d, which))
             continue;
         if (materials && ctx->glsl_surface.current) /* a lit pass: the draw's variant */
             q = lit_for_draw(ctx, d);
@@ -444,7 +451,7 @@ static void glsl_batches(stin_context *ctx, int which)
         for (i = 0; i < ctx->draw_count; i++) {
             const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
             const stin__program *q;
-            if (!in_set(d, STIN__BLENDED))
+            if (!in_set(ctx, d, STIN__BLENDED))
                 continue;
             q = lit_for_draw(ctx, d);
             set_material(ctx, q, &d->material);

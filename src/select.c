@@ -231,6 +231,9 @@ static void place_units(stin__selection *sel)
     /* translucent shadows' units after the shadows' */
     sel->translucent_unit = sel->units_used;
     sel->units_used += frag_units(sel->choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique);
+    /* transparency's after those */
+    sel->transparency_unit = sel->units_used;
+    sel->units_used += frag_units(sel->choice[STIN_FEATURE_TRANSPARENCY].technique);
     /* the vertex stage's height map: a unit of its own after the fragment
      * stage's (vertex samplers count against the combined units) */
     sel->displace_unit = sel->units_used;

@@ -152,7 +152,8 @@ void stin__mask_end(stin_context *ctx)
     stin__pass_state ps = *stin__pass_current(ctx);
     ps.color_only = 0;
     stin__pass_apply(ctx, &ps);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->frame.framebuffer);
+    /* the pass's target: the frame's, or a peeled layer's (depth-peel) */
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__bind_unit(ctx, ctx->mask.unit, GL_TEXTURE_2D, ctx->mask.color);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))

@@ -239,8 +239,12 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         if (stin__translucent_skips(ctx, d))
             continue; /* a transparent caster: its map or the threshold decides */
         caster_bounds(ctx, d, center, &radius);
+        /* z-pass counts a volume entered through its cap only where the
+         * caster hides what lies behind it: a blended caster (not in the
+         * depth buffer) is seen through, so it is counted z-fail, with caps */
         zfail = (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_ZFAIL)   ? 1
                 : (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_ZPASS) ? 0
+                : d->material.color[3] < 1.0f                        ? 1
                                                                     : needs_zfail(ctx, light_world, center, radius);
         if (zfail)
             ctx->stats.zfail_casters++;

@@ -52,11 +52,13 @@ void stin__dot3_cube_face(int face, uint32_t size, unsigned char *rgba);
 /* Variant of a technique (plain for dot3/plain/none). */
 int stin__surf_variant_of(stin_technique t);
 stin_technique stin__surf_technique_of(int variant);
-/* The chunk files of a variant for directory dir ("gl2/"): writes up to 4
- * names into names (each 40 bytes) and a NULL-terminated list into list,
- * shadow_chunk then `after` (NULL: none) last. */
+/* The chunk files of a variant for directory dir ("gl2/"): writes up to
+ * STIN__SURF_CHUNKS names into names (each 40 bytes) and a NULL-terminated
+ * list into list, shadow_chunk then `after` and `last` (NULL: none). */
+#define STIN__SURF_CHUNKS 5
 void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk, const char *after,
-                       char names[4][40], const char *list[5]);
+                       const char *last, char names[STIN__SURF_CHUNKS][40],
+                       const char *list[STIN__SURF_CHUNKS + 1]);
 /* The variant a draw's material gets (logs a step down once per material). */
 int stin__surf_variant_for(stin_context *ctx, const stin_material *m);
 /* Uniform locations of the surface chunks. */

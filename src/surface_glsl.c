@@ -31,7 +31,8 @@ stin_technique stin__surf_technique_of(int variant)
 }
 
 void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk, const char *after,
-                       char names[4][40], const char *list[5])
+                       const char *last, char names[STIN__SURF_CHUNKS][40],
+                       const char *list[STIN__SURF_CHUNKS + 1])
 {
     int n = 0;
     if (variant != STIN__SURF_PLAIN) {
@@ -47,6 +48,11 @@ void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk, c
     n++;
     if (after) { /* a chunk wrapping the shadow chunk's seam (deep) */
         stin__formatf(names[n], 40, "%s%s", dir, after);
+        list[n] = names[n];
+        n++;
+    }
+    if (last) { /* a chunk wrapping main's first call (depth-peel) */
+        stin__formatf(names[n], 40, "%s%s", dir, last);
         list[n] = names[n];
         n++;
     }

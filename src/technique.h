@@ -39,6 +39,7 @@ typedef struct stin__selection {
     int surface_unit, shadow_unit, units_used, unit_limit;
     int shadow_spare_units; /* the shadow technique's spare units it got (from shadow_unit) */
     int translucent_unit;   /* translucent shadows' first unit (deep: two) */
+    int transparency_unit;  /* transparency's first unit (depth-peel: two) */
     int displace_unit;      /* displacement's vertex-stage height map (after units_used) */
 } stin__selection;
 

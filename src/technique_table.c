@@ -68,6 +68,13 @@ static const stin__technique_row rows[] = {
      * primitives, goldfeather's depth write-back; other products go to
      * goldfeather (logged) */
     {STIN_TECH_CSG_SCS,                0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* depth peeling of the camera's layers: two samplers in the lit programs
+     * (the previous layer's depth, the opaque depth); packed depth-stencil
+     * textures hold a layer's depth and the stencil volumes count in */
+    {STIN_TECH_TRANSPARENCY_PEEL,      0,
+     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(MULTITEXTURE) |
+         BIT(VBO), GLSL_ANY, 0, 2, 0, NULL, 0},
+    {STIN_TECH_TRANSPARENCY_SORTED,    1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
 };
 
 static const stin_feature tech_feature[] = {

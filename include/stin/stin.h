@@ -413,6 +413,7 @@ typedef enum stin_feature {
     STIN_FEATURE_TRANSLUCENT_SHADOWS, /* how casters with alpha < 1 shadow */
     STIN_FEATURE_DISPLACEMENT,        /* geometry moved by height maps */
     STIN_FEATURE_CSG,                 /* image-based CSG products */
+    STIN_FEATURE_TRANSPARENCY,        /* how the camera sees blended draws (alpha < 1) */
     STIN_FEATURE_COUNT
 } stin_feature;
 
@@ -431,6 +432,7 @@ const char *stin_feature_name(stin_feature f);
  *   displacement: displace-tess, displace, displacement-off
  *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
  *   csg:      scs, goldfeather, csg-off (see "CSG products" below)
+ *   transparency: depth-peel, sorted (see "Transparency" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
@@ -574,7 +576,8 @@ const char *stin_feature_name(stin_feature f);
  * STIN_DEBUG_DEEP_NO_EARLY_STOP peels every layer: the same image). Surfaces beyond desc.deep_layers
  * along a ray are not counted (their light passes). Lights are lit one per
  * pass while it is in use, and a frame without transparent draws draws no
- * layer. Blended draws are still drawn unshadowed, and the visibility map
+ * layer. Blended draws receive the deep maps' coloured shadows where
+ * "depth-peel" lights them (below), and the visibility map
  * (export_visibility) holds the shadows technique's visibility only.
  * Displaced transparent casters peel their displaced surface. With shadows
  * "off" it falls back to "translucent-solid" (logged); forcing it on a
@@ -608,7 +611,57 @@ const char *stin_feature_name(stin_feature f);
  * "opaque" (every tier) ends the chain: a caster whose opacity is at least
  * desc.translucent_opaque_threshold (default 0.5) casts a full shadow under
  * every shadows technique, one below it none at all; "translucent-solid"
- * (all cast fully) is chosen only when forced. */
+ * (all cast fully) is chosen only when forced.
+ * Transparency: how the camera sees blended draws (material opacity
+ * color[3] below 1; opaque draws are drawn first either way). The chain is
+ * depth-peel -> sorted, each step logged with the capability it lacked.
+ *   "depth-peel" (GLSL lighting with framebuffer objects, depth textures,
+ *   packed depth-stencil, VBOs; two texture units after the translucent
+ *   shadows' units) peels the blended draws front to back (Everitt 2001):
+ *   layer k is, per pixel, the nearest blended surface behind layer k - 1
+ *   and in front of the opaque depth. Each layer is lit exactly as the
+ *   opaque surfaces are: its ambient pass, then the frame's per-light
+ *   stages against the layer's own depth and stencil, so it receives the
+ *   shadows technique's shadows (volume, map-pcf: exact as on opaque
+ *   surfaces; "deep": the coloured transmittance) and is lit unshadowed in
+ *   an unshadowed frame. Exception: under "vdsm" (whose position buffer
+ *   holds the opaque surfaces) the layers are lit unshadowed, logged once.
+ *   The lit layers are composited front to back under one another
+ *   (C += T a c, T *= 1 - a, from C = 0, T = 1; c clamped to 1 as the
+ *   framebuffer clamps a surface's passes) and the result over the opaque
+ *   image: frame = C + T frame. The image does not depend on the order of
+ *   the draws (bit for bit), and intersecting or self-overlapping
+ *   transparent objects (a box's front and back) are exact. Peeling stops
+ *   at desc.transparency_layers (default 8; surfaces beyond it along a ray
+ *   are not drawn) or at the first pass that peeled nothing (an occlusion
+ *   query; without queries every layer up to the cap is peeled;
+ *   STIN_DEBUG_PEEL_NO_EARLY_STOP peels them all: the same image), so a
+ *   scene whose rays cross at most n blended surfaces takes n + 1 peel
+ *   passes (stin_frame_stats.peel_passes, .peel_layers). Each peeled layer
+ *   costs an ambient pass, the frame's light stages (per light: its
+ *   volumes, its deep map again, its lit pass) and one full-viewport
+ *   composite; one more composite ends the frame. The frame's depth buffer
+ *   ends with the nearest surface, blended or opaque, as the sorted draws
+ *   leave it; its alpha where a layer covers the pixel becomes T + T x the
+ *   alpha that was there (the blend that puts C + T frame over it applies
+ *   to alpha too). Displaced blended draws are peeled displaced (the same
+ *   lit programs draw them). The visibility and normal outputs draw
+ *   blended draws as before (nearest surface). GPU memory, at the
+ *   viewport's size W x H (window coordinates from 0: (x + width) x
+ *   (y + height)), made at the first frame with blended draws and grown
+ *   when a frame needs more: 4 depth-stencil textures (three layers' and
+ *   the opaque depth) and 4 RGBA8 colour textures (a layer's ambient and
+ *   lights, the composite's two), W x H x 32 bytes: 2 MiB at 256 x 256,
+ *   63 MiB at 1920 x 1080.
+ *   "sorted" (every tier; GL1's only choice) is the behaviour before
+ *   depth-peel: each blended draw whole, after the opaque ones, far to near
+ *   by the eye depth of its bounds' centre, with depth LESS, writes and
+ *   SRC_ALPHA / ONE_MINUS_SRC_ALPHA blending, lit unshadowed. It is exact
+ *   only for blended objects that neither intersect nor overlap in depth
+ *   nor overlap themselves: crossing panes, interleaved objects and a
+ *   closed mesh's far side come out in the wrong order or hidden (the first
+ *   frame with blended draws logs this warning once). Its blended draws do
+ *   not receive shadows. */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
@@ -634,7 +687,9 @@ const char *stin_feature_name(stin_feature f);
     X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4) \
     X(TRANSLUCENT_COLOURED, "coloured", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL2) \
     X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
-    X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1)
+    X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1) \
+    X(TRANSPARENCY_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
+    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -710,6 +765,9 @@ typedef struct stin_desc {
     float translucent_opaque_threshold; /* "opaque": casters of opacity >= this cast a
                                         * full shadow, the rest none; default (0) 0.5,
                                         * finite, in (0, 1] */
+    uint32_t transparency_layers;      /* "depth-peel": layers of blended surfaces peeled
+                                        * per pixel at most, default 8, at most 64;
+                                        * surfaces past it along a ray are not drawn */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -757,6 +815,13 @@ typedef struct stin_desc {
  * of batches of 255: wrong (nothing drawn) where a term intersects more than
  * 255; a test that it shows the batching matters */
 #define STIN_DEBUG_CSG_NO_BATCH 131072u
+/* depth-peel: peel all desc.transparency_layers layers, without stopping at
+ * the first that drew nothing (the same image, more passes) */
+#define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
+/* depth-peel: no layer is drawn: the frame shows its opaque draws alone
+ * (the blended ones still cast shadows as the techniques say), the image
+ * the layers are composited over */
+#define STIN_DEBUG_PEEL_OPAQUE_ONLY 8192u
 
 typedef struct stin_context stin_context;
 
@@ -1223,6 +1288,10 @@ typedef struct stin_frame_stats {
     uint32_t deep_layers;
     /* products resolved by "scs" (the others of a frame went to goldfeather) */
     uint32_t csg_scs_products;
+    /* depth-peel: geometry passes that peeled a camera layer (the last one,
+     * which found nothing, counted: a scene of n layers under a cap above n
+     * takes n + 1), and the layers that drew something */
+    uint32_t peel_passes, peel_layers;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

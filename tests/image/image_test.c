@@ -344,6 +344,7 @@ int main(int argc, char **argv)
             csg_tests(&r, tiers[t], argv[i]);
             deep_tests(&r, tiers[t], argv[i]);
             coloured_tests(&r, tiers[t], argv[i]);
+            peel_tests(&r, tiers[t], argv[i]);
         }
     }
     free(displaced);

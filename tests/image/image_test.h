@@ -68,6 +68,10 @@ void deep_tests(run *r, stin_tier tier, const char *path);
  * transmittance, the opacity threshold ("opaque") on every tier, and the
  * refusal of a forced coloured below GL2 (coloured_test.c). */
 void coloured_tests(run *r, stin_tier tier, const char *path);
+/* Camera transparency (depth-peel, sorted) against the reference's
+ * composite, on glass-panes and the scenes of tests/scenes/peel/ beside it
+ * (peel_test.c). */
+void peel_tests(run *r, stin_tier tier, const char *path);
 void displace_tests(run *r, stin_tier tier, const char *path);
 /* The seed's displacement behaviour 5 on a built-in plate, once per GLSL
  * tier (displace_seed_test.c); caps: the context's present capabilities. */

@@ -221,8 +221,39 @@ int reference_render(const scene *s, const reference *r, int width, int height, 
  *   stencil-volume frame draws, including the unshadowed blended draws. */
 #define REFERENCE_RENDER_SHADOWED 1u
 #define REFERENCE_RENDER_PER_LIGHT_PASSES 2u
+/* REFERENCE_RENDER_COMPOSITE makes R,G,B,A the camera composite,
+ *   reference_composite_pixel() (with SHADOWED or TRANSMITTANCE lighting for
+ *   every layer, per-pixel or per-vertex as per_vertex, never per-light
+ *   passes); the other channels stay the first hit's. */
+#define REFERENCE_RENDER_COMPOSITE 4u
+/* REFERENCE_RENDER_TRANSMITTANCE (with COMPOSITE) lights every layer through
+ *   reference_transmittance() of each light, per RGB channel (an area
+ *   light's samples share its mean transmittance): what a frame with deep
+ *   shadow maps shows. */
+#define REFERENCE_RENDER_TRANSMITTANCE 8u
 int reference_render_ex(const scene *s, const reference *r, int width, int height, int per_vertex,
                         unsigned flags, float *out);
+
+/* The camera composite of window pixel (x, y) (from the bottom-left) of a
+ * width x height image: the ray through its centre, clipped to [near, far]
+ * as reference_primary, visits every surface up to the first opaque one
+ * (material opacity 1) or the background, at most 256. Each transparent
+ * surface, of opacity a = material opacity times its albedo texel's alpha,
+ * is shaded as reference_shade (unshadowed), as reference_render_ex
+ * SHADOWED (hard visibility of every light sample) or per channel through
+ * the lights' transmittance (flags REFERENCE_RENDER_TRANSMITTANCE), both
+ * sides alike (back faces are shaded with their own normal), and blended
+ * under the ones in front: C += T a c, T *= 1 - a from C = 0, T = 1; then
+ * out = C + T * (the opaque hit shaded the same way, or the background).
+ * out[3] = 1 - T (1 - alpha behind); part (NULL: not wanted) receives
+ * the transparent surfaces' part alone, (C, T), to put over another image
+ * of what lies behind. CSG primitives are not handled (scenes with CSG are
+ * out of its scope). Returns the number of transparent surfaces crossed
+ * (the depth complexity peeling needs), -1 on bad arguments or out of
+ * memory. */
+int reference_composite_pixel(const scene *s, const reference *r, int width, int height, int x,
+                              int y, int per_vertex, unsigned flags, float out_rgba[4],
+                              float part[4]);
 
 #ifdef __cplusplus
 }

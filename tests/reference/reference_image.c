@@ -51,8 +51,14 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
     ref_hit *hits = malloc(n * sizeof *hits);
     scratch w = {malloc(cap * sizeof *w.lights), malloc(cap * sizeof *w.weight)};
     int ok = hits && w.lights && w.weight && reference_primary(r, width, height, hits);
-    for (size_t i = 0; ok && i < n; i++)
-        pixel(s, r, &hits[i], per_vertex, flags, &w, out + i * REFERENCE_CHANNELS);
+    for (size_t i = 0; ok && i < n; i++) {
+        float *px = out + i * REFERENCE_CHANNELS;
+        pixel(s, r, &hits[i], per_vertex, flags, &w, px);
+        if ((flags & REFERENCE_RENDER_COMPOSITE) &&
+            reference_composite_pixel(s, r, width, height, (int)(i % (size_t)width),
+                                      (int)(i / (size_t)width), per_vertex, flags, px, NULL) < 0)
+            ok = 0;
+    }
     if (ok)
         ok = rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
     free(w.weight);

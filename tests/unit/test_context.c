@@ -482,8 +482,9 @@ static void test_glsl150_compile_failure_falls_back_to_glsl110(void **state)
     assert_true(fake_log_has(&f.log, STIN_LOG_FALLBACK, "glsl110-per-pixel"));
     assert_true(fake_log_has(&f.log, STIN_LOG_SHADER_COMPILE, "GLSL version not supported"));
     assert_int_equal(fake_gl.shader_compile_failures, 1);
-    /* the shared programs plus the lit program's normal, parallax and pom variants */
-    assert_int_equal(fake_gl.programs_created, STIN__PROG_COUNT + 3);
+    /* the shared programs plus the lit program's normal, parallax and pom
+     * variants, and depth-peel's composite */
+    assert_int_equal(fake_gl.programs_created, STIN__PROG_COUNT + 3 + 1);
     m = make_quad(f.ctx);
     run_frame(f.ctx, m);
     assert_int_equal(fake_gl.draw_calls, 1);
@@ -589,10 +590,12 @@ static void test_destroy_deletes_every_gl_object(void **state)
 {
     (void)state;
     check_destroy_balances(FAKE_GL11, 0, 0, 0, 0);
-    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3, 0);
+    /* GLSL tiers: depth-peel's composite program too (its textures come with
+     * the first frame with blended draws) */
+    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1, 0);
     /* GL 4.5: each program again, tessellated ("displace-tess"), and on core
      * goldfeather's depth program (compatibility contexts use glDrawPixels) */
-    check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1, 1);
+    check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1 + 1, 1);
 }
 
 /* ---- entry points and extensions ------------------------------------------ */

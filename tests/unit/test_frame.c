@@ -475,15 +475,22 @@ static void test_volume_lights_share_lit_passes_through_masks(void **state)
     create_profile(FAKE_GL21, 16, 8);
 }
 
-/* Blended draws are drawn once per light batch each, after the opaque ones. */
+/* sorted: blended draws are drawn once per light batch each, after the
+ * opaque ones (no packed depth-stencil: no depth-peel). */
 static void test_blended_draws_once_per_batch(void **state)
 {
     stin_frame_stats st;
     (void)state;
+    caps_mask = STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
+    create_profile(FAKE_GL21, 16, 8);
+    assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_TRANSPARENCY).technique,
+                     STIN_TECH_TRANSPARENCY_SORTED);
     st = frame_with(9, 1, 2, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.passes, 2);
     assert_int_equal(st.draws, 3);
     assert_int_equal(fake_gl.draw_calls, 2 * 1 + 2 * 2);
+    caps_mask = 0;
+    create_profile(FAKE_GL21, 16, 8);
 }
 
 /* Fixed function: GL_MAX_LIGHTS lights per pass (at most 8). */

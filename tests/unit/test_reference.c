@@ -1192,6 +1192,67 @@ static void test_transmittance(void **state)
     scene_release(&s);
 }
 
+
+/* ---- the camera composite of transparent surfaces --------------------------- */
+
+static void expect_composite(const scene *s, unsigned flags, double er, double eg, double eb,
+                             int layers)
+{
+    reference *r = create(s);
+    float px[4], part[4], *img = calloc((size_t)33 * 33 * REFERENCE_CHANNELS, sizeof(float));
+    assert_non_null(img);
+    assert_int_equal(reference_composite_pixel(s, r, 33, 33, 16, 16, 0, flags, px, part), layers);
+    assert_true(part[3] >= 0.0f && part[3] <= 1.0f && (layers > 0 || part[3] == 1.0f));
+    assert_close(px[0], er, 1e-5);
+    assert_close(px[1], eg, 1e-5);
+    assert_close(px[2], eb, 1e-5);
+    /* the render's beauty is the same composite */
+    assert_int_equal(reference_render_ex(s, r, 33, 33, 0, flags | REFERENCE_RENDER_COMPOSITE, img), 1);
+    const float *c = img + ((size_t)16 * 33 + 16) * REFERENCE_CHANNELS;
+    for (int k = 0; k < 3; k++)
+        assert_close(c[REFERENCE_CH_R + k], px[k], 0);
+    free(img);
+    reference_destroy(r);
+}
+
+/* Under-blending front to back over the opaque hit: with ambient 1 and no
+ * lights every surface shows its colour, so a red pane of opacity 0.5 over
+ * white gives (1, 0.5, 0.5), red in front of green (0.75, 0.5, 0.25)
+ * whichever is listed first, and with no floor the (black) background
+ * shows through: (0.5, 0.25, 0).
+ * Lit from above, the floor behind the pane gets the pane's transmittance
+ * (0.5, 0.25, 0.25) under TRANSMITTANCE, nothing under the hard SHADOWED. */
+static void test_composite(void **state)
+{
+    (void)state;
+    scene s;
+    scene_init(&s);
+    s.ambient[0] = s.ambient[1] = s.ambient[2] = 1.0f;
+    int quad = add_quad(&s);
+    add_object(&s, quad, add_material(&s, 1, 1, 1, 0, 1), 4, 0, 0, 0); /* the floor */
+    expect_composite(&s, 0, 1, 1, 1, 0);
+    add_pane(&s, quad, 1, 0, 0, 0.5f, 2.0);
+    expect_composite(&s, 0, 1, 0.5, 0.5, 1);
+    add_pane(&s, quad, 0, 1, 0, 0.5f, 1.0);
+    expect_composite(&s, 0, 0.75, 0.5, 0.25, 2);
+    scene_object swap = s.objects[1]; /* submission order is not the answer's */
+    s.objects[1] = s.objects[2];
+    s.objects[2] = swap;
+    expect_composite(&s, 0, 0.75, 0.5, 0.25, 2);
+    s.objects[0].transform[14] = -200.0f; /* the floor beyond the far plane: background */
+    expect_composite(&s, 0, 0.5, 0.25, 0, 2);
+    s.objects[0].transform[14] = 0.0f;
+
+    s.object_count = 1;
+    s.ambient[0] = s.ambient[1] = s.ambient[2] = 0.0f;
+    add_light(&s, SCENE_LIGHT_POINT)->position[2] = 4.0f;
+    add_pane(&s, quad, 1, 0, 0, 0.5f, 1.0);
+    expect_composite(&s, 0, 1, 0.5, 0.5, 1);
+    expect_composite(&s, REFERENCE_RENDER_TRANSMITTANCE, 0.75, 0.125, 0.125, 1);
+    expect_composite(&s, REFERENCE_RENDER_SHADOWED, 0.5, 0, 0, 1);
+    scene_release(&s);
+}
+
 static void test_primary_timing(void **state)
 {
     (void)state;
@@ -1432,6 +1493,7 @@ int main(void)
         cmocka_unit_test(test_passes_saturate),
         cmocka_unit_test(test_area_light_visibility),
         cmocka_unit_test(test_transmittance),
+        cmocka_unit_test(test_composite),
         cmocka_unit_test(test_primary_timing),
         cmocka_unit_test(test_csg_cavity),
         cmocka_unit_test(test_csg_matches_plain_renders),

@@ -290,7 +290,11 @@ static void test_deep_on_gl4_only(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
                      STIN_TECH_TRANSLUCENT_DEEP);
     assert_int_equal(sel.translucent_unit, sel.shadow_unit + 1); /* after vdsm's mask */
-    assert_int_equal(sel.displace_unit, sel.translucent_unit + 2);
+    /* depth-peel's two units follow, then the vertex stage's height map */
+    assert_int_equal(sel.choice[STIN_FEATURE_TRANSPARENCY].technique,
+                     STIN_TECH_TRANSPARENCY_PEEL);
+    assert_int_equal(sel.transparency_unit, sel.translucent_unit + 2);
+    assert_int_equal(sel.displace_unit, sel.transparency_unit + 2);
     core.present &= ~STIN_CAP_BIT(STIN_CAP_FLOAT_TEXTURE);
     assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,

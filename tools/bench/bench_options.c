@@ -247,6 +247,10 @@ static const bench_option table[] = {
     SETUPS(SEC_DEEP, "--deep-setups", "2", "fresh shadows-off context per set-up"),
 
     FRAMES(SEC_CSG, "--csg-frames", "10", "2", "timed frames per side and row"),
+    {SEC_PEEL, "--peel-scene", "FILE", "tests/scenes/peel/panes.json", NULL, set_text,
+     F(sec[SEC_PEEL].scene), 0, 0, 0, "the panes (0, 2 and 4 of them over the floor)"},
+    FRAMES(SEC_PEEL, "--peel-frames", "7", "1", PER_ROW),
+    SETUPS(SEC_PEEL, "--peel-setups", "2", "fresh sorted context per set-up"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

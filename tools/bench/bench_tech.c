@@ -82,6 +82,7 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
     desc.techniques[STIN_FEATURE_SHADOWS] = c->shadows;
     desc.techniques[STIN_FEATURE_SURFACE] = c->surface;
     desc.techniques[STIN_FEATURE_DISPLACEMENT] = c->displacement;
+    desc.techniques[STIN_FEATURE_TRANSPARENCY] = c->transparency;
     desc.shadow_map_size = c->map_size;
     desc.debug_flags = c->debug_flags;
     desc.displace_guard_band = c->guard_band;
@@ -126,6 +127,13 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
                      stin_technique_name(ch.technique), stin_technique_name(forced[k]), ch.reason);
             return 0;
         }
+    }
+    ch = stin_query_choice(sd->ctx, STIN_FEATURE_TRANSPARENCY);
+    if (c->transparency != STIN_TECH_NONE && ch.technique != c->transparency) {
+        snprintf(err, err_size, "%s: transparency is '%s', not the forced '%s' (%s)",
+                 stin_tier_name(tier), stin_technique_name(ch.technique),
+                 stin_technique_name(c->transparency), ch.reason);
+        return 0;
     }
     if (!scene_gpu_create(&sd->gpu, s, sd->ctx, err, err_size))
         return 0;
@@ -217,6 +225,7 @@ static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_siz
     row->rendered = fs.shadow_map_size;
     row->passes = fs.passes;
     row->primitives = fs.vdsm_primitives;
+    row->peel_passes = fs.peel_passes;
     bench_keep_min(&row->on_ms, on_ms, first);
     bench_keep_min(&row->base_ms, base_ms, first);
     ok = 1;

@@ -28,6 +28,7 @@ typedef struct tech_config {
     uint32_t tess_max;       /* desc.displace_tess_max (0: default) */
     stin_technique translucent; /* desc.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS]; NONE = auto */
     uint32_t deep_layers, deep_map_size; /* desc's (0: default) */
+    stin_technique transparency; /* desc.techniques[STIN_FEATURE_TRANSPARENCY]; NONE = auto */
 } tech_config;
 
 typedef struct tech_settings {
@@ -44,6 +45,7 @@ typedef struct tech_row {
     uint32_t rendered;       /* stin_frame_stats.shadow_map_size of the row's frame */
     uint32_t passes;         /* stin_frame_stats.passes of the row's frame */
     uint32_t primitives;     /* stin_frame_stats.vdsm_primitives of the row's frame */
+    uint32_t peel_passes;    /* stin_frame_stats.peel_passes of the row's frame */
     double base_ms, on_ms;   /* per side the lowest set-up median (glFinish included) */
     int skipped;             /* 1: the context cannot run it; why says so */
     char why[160];

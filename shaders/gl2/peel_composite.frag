@@ -1,0 +1,27 @@
+#version 110
+// SPDX-License-Identifier: MIT
+// depth-peel's composite (src/transparency_peel.c). Mode 0 adds a lit layer
+// under the composite so far, (C, T) front to back: C += T a c, T *= 1 - a,
+// with c the layer's ambient plus its lights (clamped, as the framebuffer
+// would) and a its opacity (0 where the layer has no surface). Mode 1 hands
+// the composite to the blend that puts it over the frame, C + T frame, and
+// the first layer's depth to the frame's depth test.
+uniform sampler2D u_ambient; // the layer's ambient colour and opacity
+uniform sampler2D u_lights;  // the layer's lights, added up
+uniform sampler2D u_accum;   // (C, T) of the layers before it
+uniform sampler2D u_first;   // the first layer's depth (mode 1)
+uniform vec4 u_params;       // 1 / texture size (x, y), mode
+
+void main()
+{
+    vec2 at = gl_FragCoord.xy * u_params.xy;
+    vec4 acc = texture2D(u_accum, at);
+    gl_FragDepth = texture2D(u_first, at).r;
+    if (u_params.z > 0.5) {
+        gl_FragColor = acc;
+        return;
+    }
+    vec4 layer = texture2D(u_ambient, at);
+    vec3 c = min(layer.rgb + texture2D(u_lights, at).rgb, vec3(1.0));
+    gl_FragColor = vec4(acc.rgb + acc.a * layer.a * c, acc.a * (1.0 - layer.a));
+}

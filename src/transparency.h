@@ -1,0 +1,76 @@
+/* SPDX-License-Identifier: MIT */
+/* Transparency: how the camera sees blended draws (material opacity < 1).
+ * "depth-peel" (transparency_peel.c) peels them front to back, one layer of
+ * surfaces per pass, and lights each layer as the frame lights its opaque
+ * surfaces (the frame plan runs its lighting stages once per layer, the
+ * layer standing in for the opaque draws); "sorted"
+ * (transparency_sorted.c) draws them whole, per object far to near. */
+#ifndef STIN_TRANSPARENCY_H
+#define STIN_TRANSPARENCY_H
+
+#include "stin/stin.h"
+#include "gl_types.h"
+#include "path.h"
+
+#define STIN__PEEL_MAX_LAYERS 64 /* desc.transparency_layers at most */
+
+typedef struct stin__peel_state {
+    /* Layer k's depth (and stencil, for volumes) is depth[k % 2] (layer 0's:
+     * first, kept for the frame's depth at the end): its pass reads layer
+     * k - 1's from another texture (no feedback loop). */
+    GLuint depth[2], first;
+    GLuint opaque;         /* the opaque draws' depth: layers lie in front of it */
+    GLuint ambient;        /* a layer's ambient colour and opacity (RGBA8) */
+    GLuint lights;         /* a layer's lights added up (RGBA8) */
+    GLuint accum[2];       /* the composite so far, (C, T) front to back, ping-pong */
+    GLuint fbo, composite_fbo, program, query;
+    GLint u_ambient, u_lights, u_accum, u_first, u_params;
+    int width, height;     /* allocated texels (0: not yet) */
+    int unit;              /* two units: the previous layer's depth, the opaque depth */
+    int ready;             /* set up: depth-peel runs */
+    int layer;             /* the layer drawn last (-1: none yet) */
+    int peeling;           /* 1 while a layer is drawn: camera passes draw it */
+    int result;            /* accum[result] holds the composite */
+    GLuint frame_fbo;      /* the frame's target, bound back at the end */
+    int said_vdsm, said_failed, said_sorted;
+} stin__peel_state;
+
+/* The lit programs' chunk after the others ("peel.glsl") when depth-peel is
+ * the choice, else NULL. */
+const char *stin__peel_chunk(const struct stin_context *ctx);
+/* Set-up after the lighting path (textures come with the first frame, the
+ * size of its viewport): a failure falls back to "sorted" (logged). */
+void stin__peel_init(struct stin_context *ctx);
+void stin__peel_release(struct stin_context *ctx);
+/* A lit program's peel uniforms: located once, set per pass. */
+void stin__peel_locate(struct stin_context *ctx, stin__program *p);
+void stin__peel_uniforms(struct stin_context *ctx, const stin__program *p);
+
+/* Which of STIN__OPAQUE / STIN__BLENDED a camera pass counts draw d in:
+ * while a layer is peeled its blended draws are the pass's "opaque" ones
+ * (lit like them) and the opaque draws are in no set. */
+int stin__camera_set(const struct stin_context *ctx, const stin__draw *d);
+
+/* The frame's peeling, in the frame plan's blended stage:
+ *   if (stin__peel_begin(ctx, path))
+ *       while (stin__peel_layer_begin(ctx)) {
+ *           path->ambient(ctx, STIN__OPAQUE, 0);   depth, ambient, opacity
+ *           if (stin__peel_layer_lights(ctx))      something was peeled
+ *               ... the frame's lighting stages ...
+ *           stin__peel_layer_end(ctx);
+ *       }
+ *   stin__peel_end(ctx);
+ * begin returns 0 (draw them sorted) when depth-peel is not set up or the
+ * frame has no blended draw; layer_begin 0 when the layers are done (the
+ * cap, or the last pass drew nothing). */
+int stin__peel_begin(struct stin_context *ctx, const stin__path *path);
+int stin__peel_layer_begin(struct stin_context *ctx);
+int stin__peel_layer_lights(struct stin_context *ctx);
+void stin__peel_layer_end(struct stin_context *ctx);
+void stin__peel_end(struct stin_context *ctx);
+
+/* "sorted": once per context, at the first frame with blended draws, the
+ * warning that it is exact only for separate convex objects. */
+void stin__sorted_frame(struct stin_context *ctx);
+
+#endif

@@ -1,0 +1,576 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Camera transparency against the reference's composite (reference.h,
+ * reference_composite_pixel: every surface up to the first opaque one,
+ * shaded, under-blended front to back), on glass-panes and the scenes of
+ * tests/scenes/peel/ beside it (panes: three overlapping single-surface
+ * panes under an opaque block; cross: two panes through each other):
+ *   beauty          shadows off: the beauty within 3/255 of the unshadowed
+ *                   composite (8-bit layers and composite: a rounding per
+ *                   store, 3/255 as test_scene's beauty) on >= 99.5% of the
+ *                   compared pixels, which are covered, seen through at
+ *                   least one transparent surface (>= 200 of them) and away
+ *                   from edges (no 4-neighbour within `band` pixels whose
+ *                   reference colour differs by more than 8/255: outlines
+ *                   of every layer, which rasterisation may put one pixel
+ *                   either way). depth-peel must pass; "sorted" must pass
+ *                   on panes (separate single surfaces) and its error is
+ *                   measured (INFO) on glass-panes (boxes: self-overlap)
+ *                   and cross (intersecting);
+ *   order           depth-peel: the objects drawn in reverse order give a
+ *                   bit-identical image;
+ *   early-stop      depth-peel with transparency_layers 64 gives the image
+ *                   of the default cap, bit for bit, in (the scene's layer
+ *                   count + 1) passes; STIN_DEBUG_PEEL_NO_EARLY_STOP gives
+ *                   it too, in 64 passes;
+ *   cap             depth-peel with transparency_layers 1 differs from the
+ *                   full composite (the cap is honoured);
+ *   shadowed-T      depth-peel under shadows technique T (volume, map-pcf
+ *                   where the profile runs them): the beauty within 3/255 of
+ *                   the composite whose layers are shadowed (hard
+ *                   visibility) on >= 99.5% of the compared pixels (band 2:
+ *                   map-pcf's filtered edges), both as a whole and as the
+ *                   reference's layers (C, T) over the frame's own opaque
+ *                   image (STIN_DEBUG_PEEL_OPAQUE_ONLY: the layers' part
+ *                   alone), with >= 50 compared pixels whose nearest surface
+ *                   is a transparent one in shadow: panes receive shadows
+ *                   (>= 100 compared pixels: shadow edges take more away).
+ *                   shadowed-deep (GL4): the same with "deep" for the
+ *                   transparent casters (volumes for the opaque ones)
+ *                   against the composite lit through each light's
+ *                   transmittance (coloured shadows on panes and floor);
+ *                   vdsm: SKIP (its position buffer holds the opaque
+ *                   surfaces; layers are lit unshadowed);
+ *   gl-clean        no GL error, no call outside the profile, no error log.
+ * On GL1 the transparency technique is "sorted": the depth-peel tests SKIP.
+ */
+#include "image_test.h"
+#include "reference.h"
+#include "scene.h"
+#include "scene_gpu.h"
+#include "stin/stin_debug.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define TOLERANCE (3.0 / 255.0)
+#define MIN_MATCH 0.995
+#define EDGE_STEP (8.0 / 255.0)
+#define MIN_SEEN_THROUGH 200
+#define MIN_SHADOWED_PANE 50
+#define MIN_SHADOWED_COMPARED 100 /* shadow edges (band 2) leave fewer pixels */
+#define HIGH_CAP 64 /* desc.transparency_layers at most */
+
+typedef struct peel_case {
+    run *r;
+    const scene *s;
+    reference *ref;
+    const char *scene_name;
+    stin_tier tier;
+    int per_vertex;
+} peel_case;
+
+typedef struct frame_opts {
+    stin_technique shadows, transparency;
+    uint32_t layers, debug_flags;
+    stin_technique translucent; /* NONE: translucent-solid */
+} frame_opts;
+
+typedef struct frame_out {
+    uint8_t *rgba;           /* rows bottom to top */
+    stin_frame_stats stats;
+    stin_choice choice[STIN_FEATURE_COUNT];
+    stin_debug_counters counters;
+    uint64_t caps_present;
+    unsigned errors;
+    char last_error[256];
+} frame_out;
+
+static void keep_errors(void *user, stin_log_level level, stin_log_item item, const char *msg)
+{
+    frame_out *o = (frame_out *)user;
+    (void)item;
+    if (level != STIN_LOG_LEVEL_ERROR)
+        return;
+    o->errors++;
+    snprintf(o->last_error, sizeof o->last_error, "%s", msg);
+}
+
+/* One beauty frame of s; 0 with err on failure. */
+static int render(const peel_case *c, const scene *s, const frame_opts *fo, frame_out *out,
+                  char *err, size_t err_size)
+{
+    stin_desc d;
+    stin_context *ctx = NULL;
+    scene_gpu g;
+    void *block = NULL;
+    size_t size;
+    int ok = 0, have_gpu = 0, f;
+    memset(out, 0, sizeof *out);
+    memset(&d, 0, sizeof d);
+    d.get_proc_address = stin_platform_get_proc_address;
+    d.get_proc_user = c->r->plat;
+    d.log = keep_errors;
+    d.log_user = out;
+    d.tier = c->tier;
+    d.caps_mask = c->r->profile->caps_mask;
+    d.max_gl_version = c->r->profile->max_gl_version;
+    d.techniques[STIN_FEATURE_SHADOWS] = fo->shadows;
+    d.techniques[STIN_FEATURE_TRANSPARENCY] = fo->transparency;
+    d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] =
+        fo->translucent != STIN_TECH_NONE ? fo->translucent : STIN_TECH_TRANSLUCENT_SOLID;
+    d.transparency_layers = fo->layers;
+    d.debug_flags = fo->debug_flags;
+    scene_gpu_size_desc(s, &d);
+    size = stin_memory_size(&d);
+    out->rgba = malloc((size_t)4 * c->r->width * c->r->height);
+    block = malloc(size);
+    if (!out->rgba || !block || stin_create(&d, block, size, &ctx) != STIN_OK) {
+        snprintf(err, err_size, "stin_create: %s", out->last_error);
+        goto done;
+    }
+    for (f = 0; f < STIN_FEATURE_COUNT; f++)
+        out->choice[f] = stin_query_choice(ctx, (stin_feature)f);
+    out->caps_present = stin_query_caps(ctx)->present;
+    if (!scene_gpu_create(&g, s, ctx, err, err_size))
+        goto done;
+    have_gpu = 1;
+    if (scene_gpu_frame(&g, ctx, c->r->width, c->r->height, STIN_OUTPUT_BEAUTY,
+                        stin_platform_framebuffer(c->r->plat)) != STIN_OK ||
+        !stin_platform_read_color(c->r->plat, out->rgba)) {
+        snprintf(err, err_size, "frame or readback failed: %s", out->last_error);
+        goto done;
+    }
+    out->stats = stin_query_frame_stats(ctx);
+    out->counters = stin_debug_query_counters(ctx);
+    ok = 1;
+done:
+    if (have_gpu)
+        scene_gpu_destroy(&g, ctx);
+    if (ctx)
+        stin_destroy(ctx);
+    free(block);
+    if (!ok) {
+        free(out->rgba);
+        out->rgba = NULL;
+    }
+    return ok;
+}
+
+/* The reference composite of every pixel (RGBA, rows bottom to top) and
+ * each pixel's transparent layer count. */
+typedef struct composite_ref {
+    float *rgba;
+    float *part;             /* the transparent surfaces' (C, T) */
+    int *layers;
+    int max_layers;
+} composite_ref;
+
+static int reference_of(const peel_case *c, unsigned flags, composite_ref *out)
+{
+    int w = c->r->width, h = c->r->height, x, y;
+    out->rgba = malloc(sizeof(float) * 4 * (size_t)w * h);
+    out->layers = malloc(sizeof(int) * (size_t)w * h);
+    out->part = malloc(sizeof(float) * 4 * (size_t)w * h);
+    out->max_layers = 0;
+    if (!out->rgba || !out->layers || !out->part)
+        return 0;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            int n = reference_composite_pixel(c->s, c->ref, w, h, x, y, c->per_vertex, flags,
+                                              out->rgba + 4 * i, out->part + 4 * i);
+            if (n < 0)
+                return 0;
+            out->layers[i] = n;
+            if (n > out->max_layers)
+                out->max_layers = n;
+        }
+    return 1;
+}
+
+static void reference_free(composite_ref *c)
+{
+    free(c->rgba);
+    free(c->part);
+    free(c->layers);
+}
+
+static double step(const composite_ref *ref, size_t a, size_t b)
+{
+    double worst = 0;
+    int k;
+    for (k = 0; k < 3; k++) {
+        double d = fabs(ref->rgba[4 * a + k] - ref->rgba[4 * b + k]);
+        if (d > worst)
+            worst = d;
+    }
+    return worst;
+}
+
+/* 1 where a 4-neighbour's reference colour steps by more than EDGE_STEP. */
+static unsigned char *edge_map(const peel_case *c, const composite_ref *ref)
+{
+    int w = c->r->width, h = c->r->height, x, y;
+    unsigned char *e = calloc((size_t)w * h, 1);
+    if (!e)
+        return NULL;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            if ((x + 1 < w && step(ref, i, i + 1) > EDGE_STEP) ||
+                (y + 1 < h && step(ref, i, i + (size_t)w) > EDGE_STEP))
+                e[i] = 1;
+        }
+    return e;
+}
+
+static int near_edge(const peel_case *c, const unsigned char *e, int x, int y, int band)
+{
+    int dx, dy;
+    for (dy = -band - 1; dy <= band; dy++) /* an edge flag sits on the lower/left pixel */
+        for (dx = -band - 1; dx <= band; dx++) {
+            int nx = x + dx, ny = y + dy;
+            if (nx >= 0 && ny >= 0 && nx < c->r->width && ny < c->r->height &&
+                e[(size_t)ny * c->r->width + nx])
+                return 1;
+        }
+    return 0;
+}
+
+typedef struct match {
+    long compared, over, seen_through, shadowed_pane;
+    double worst, mean;
+} match;
+
+/* The render against ref on the pixels seen through a transparent surface
+ * away from edges; shadowed_pane counts those whose nearest surface is a
+ * transparent one the light does not reach. */
+static void compare(const peel_case *c, const frame_out *f, const composite_ref *ref,
+                    const frame_out *opaque, int band, match *m)
+{
+    int w = c->r->width, h = c->r->height, x, y, k;
+    unsigned char *e = edge_map(c, ref);
+    ref_hit *hits = malloc(sizeof *hits * (size_t)w * h);
+    double sum = 0;
+    memset(m, 0, sizeof *m);
+    if (!e || !hits || !reference_primary(c->ref, w, h, hits)) {
+        free(e);
+        free(hits);
+        m->over = 1;
+        return;
+    }
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            size_t i = (size_t)y * w + x;
+            double worst = 0;
+            if (ref->layers[i] < 1 || near_edge(c, e, x, y, band))
+                continue;
+            m->seen_through++;
+            for (k = 0; k < 3; k++) {
+                double want = opaque ? ref->part[4 * i + k] +
+                                           ref->part[4 * i + 3] * (opaque->rgba[4 * i + k] / 255.0)
+                                     : ref->rgba[4 * i + k];
+                double d = fabs(f->rgba[4 * i + k] / 255.0 - want);
+                if (d > worst)
+                    worst = d;
+            }
+            m->compared++;
+            sum += worst;
+            if (worst > TOLERANCE)
+                m->over++;
+            if (worst > m->worst)
+                m->worst = worst;
+            if (c->s->light_count > 0 && hits[i].hit &&
+                c->s->materials[c->s->objects[hits[i].object].material].color[3] < 1.0f &&
+                reference_visibility(c->ref, &hits[i], 0) == 0.0f)
+                m->shadowed_pane++;
+        }
+    m->mean = m->compared ? sum / m->compared : 0;
+    free(e);
+    free(hits);
+}
+
+static int matches_at_least(const match *m, long least)
+{
+    return m->compared >= least && m->over <= (1.0 - MIN_MATCH) * m->compared;
+}
+
+static int matches(const match *m) { return matches_at_least(m, MIN_SEEN_THROUGH); }
+
+static long differing(const peel_case *c, const frame_out *a, const frame_out *b)
+{
+    size_t i, n = (size_t)4 * c->r->width * c->r->height;
+    long d = 0;
+    for (i = 0; i < n; i += 4)
+        d += memcmp(a->rgba + i, b->rgba + i, 4) != 0;
+    return d;
+}
+
+static void report_clean(const peel_case *c, const char *name, const frame_out *f)
+{
+    if (f->counters.gl_violations || f->counters.gl_errors || f->errors)
+        report(c->r, "FAIL", name, "%u profile violations, %u GL errors, %u error logs (last: %s)",
+               f->counters.gl_violations, f->counters.gl_errors, f->errors, f->last_error);
+    else
+        report(c->r, "PASS", name, "no GL error, no call outside the profile");
+}
+
+static void test_beauty(const peel_case *c, const frame_out *f, const composite_ref *ref,
+                        const char *name)
+{
+    match m;
+    stin_technique t = f->choice[STIN_FEATURE_TRANSPARENCY].technique;
+    int exact_expected = t == STIN_TECH_TRANSPARENCY_PEEL || !strcmp(c->scene_name, "panes");
+    compare(c, f, ref, NULL, 1, &m);
+    report(c->r, !exact_expected ? "INFO" : matches(&m) ? "PASS" : "FAIL", name,
+           "%s: composite within 3/255 on %.3f%% of %ld pixels seen through glass (max %.4f, "
+           "mean %.5f; %s)", stin_technique_name(t),
+           m.compared ? 100.0 * (1.0 - (double)m.over / m.compared) : 0.0, m.compared, m.worst,
+           m.mean, exact_expected ? "need 99.5% of >= 200" : "measured: sorted is not exact here");
+}
+
+static void test_order(const peel_case *c, const frame_out *base, const char *name)
+{
+    scene reversed = *c->s;
+    scene_object *objects = malloc(sizeof *objects * (size_t)c->s->object_count);
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 0, 0, STIN_TECH_NONE};
+    frame_out f;
+    char err[256];
+    int i;
+    if (!objects)
+        return;
+    for (i = 0; i < c->s->object_count; i++)
+        objects[i] = c->s->objects[c->s->object_count - 1 - i];
+    reversed.objects = objects;
+    if (!render(c, &reversed, &fo, &f, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+    } else {
+        long d = differing(c, base, &f);
+        report(c->r, d == 0 ? "PASS" : "FAIL", name,
+               "objects drawn in reverse order: the image differs on %ld pixels (must be 0)", d);
+        free(f.rgba);
+    }
+    free(objects);
+}
+
+static void test_early_stop(const peel_case *c, const frame_out *base, const composite_ref *ref,
+                            const char *name)
+{
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, HIGH_CAP, 0, STIN_TECH_NONE};
+    frame_out high, all;
+    char err[256];
+    uint32_t want = (uint32_t)ref->max_layers + 1;
+    long d1, d2;
+    if (!render(c, c->s, &fo, &high, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        return;
+    }
+    fo.debug_flags = STIN_DEBUG_PEEL_NO_EARLY_STOP;
+    if (!render(c, c->s, &fo, &all, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        free(high.rgba);
+        return;
+    }
+    d1 = differing(c, base, &high);
+    d2 = differing(c, base, &all);
+    report(c->r,
+           d1 == 0 && d2 == 0 && high.stats.peel_passes == want &&
+                   all.stats.peel_passes == HIGH_CAP
+               ? "PASS"
+               : "FAIL",
+           name,
+           "cap %d: %u passes, %u layers (the scene has %d: want %u passes); without early "
+           "stop %u passes; images differ from the default cap's on %ld and %ld pixels (must "
+           "be 0)", HIGH_CAP, high.stats.peel_passes, high.stats.peel_layers,
+           ref->max_layers, want, all.stats.peel_passes, d1, d2);
+    free(high.rgba);
+    free(all.rgba);
+}
+
+static void test_cap(const peel_case *c, const composite_ref *ref, const char *name)
+{
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 1, 0, STIN_TECH_NONE};
+    frame_out f;
+    char err[256];
+    match m;
+    if (!render(c, c->s, &fo, &f, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        return;
+    }
+    compare(c, &f, ref, NULL, 1, &m);
+    report(c->r, f.stats.peel_passes == 1 && ref->max_layers > 1 && !matches(&m) ? "PASS" : "FAIL",
+           name, "transparency_layers 1: %u pass, composite matched on only %ld of %ld pixels "
+           "(the scene has %d layers: one layer must not be the whole composite)",
+           f.stats.peel_passes, m.compared - m.over, m.compared, ref->max_layers);
+    free(f.rgba);
+}
+
+static void test_shadowed(const peel_case *c, stin_technique shadows, stin_technique translucent,
+                          const composite_ref *ref, const char *name)
+{
+    frame_opts fo = {STIN_TECH_NONE, STIN_TECH_TRANSPARENCY_PEEL, 0, 0, STIN_TECH_NONE};
+    frame_out f, behind;
+    char err[256];
+    match m, whole;
+    fo.shadows = shadows;
+    fo.translucent = translucent;
+    fo.debug_flags = STIN_DEBUG_PEEL_OPAQUE_ONLY; /* what the layers go over */
+    if (!render(c, c->s, &fo, &behind, err, sizeof err)) {
+        report(c->r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(shadows), err);
+        return;
+    }
+    fo.debug_flags = 0;
+    if (!render(c, c->s, &fo, &f, err, sizeof err)) {
+        report(c->r, "FAIL", name, "%s", err);
+        free(behind.rgba);
+        return;
+    }
+    if (f.choice[STIN_FEATURE_TRANSPARENCY].technique != STIN_TECH_TRANSPARENCY_PEEL ||
+        (translucent != STIN_TECH_NONE &&
+         f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique != translucent)) {
+        report(c->r, "FAIL", name, "depth-peel or %s fell back: %s %s",
+               stin_technique_name(translucent), f.choice[STIN_FEATURE_TRANSPARENCY].reason,
+               f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason);
+        free(behind.rgba);
+        free(f.rgba);
+        return;
+    }
+    compare(c, &f, ref, &behind, 2, &m);
+    compare(c, &f, ref, NULL, 2, &whole);
+    report(c->r,
+           matches_at_least(&m, MIN_SHADOWED_COMPARED) &&
+                   matches_at_least(&whole, MIN_SHADOWED_COMPARED) &&
+                   m.shadowed_pane >= MIN_SHADOWED_PANE
+               ? "PASS"
+               : "FAIL",
+           name,
+           "%s: shadowed layers over the technique's own opaque image within 3/255 on %.3f%% "
+           "of %ld pixels (max %.4f, mean %.5f), %ld of them a pane in shadow (need 99.5%% and "
+           ">= %d, of >= %d); the whole frame against the reference %.3f%% (need 99.5%%)",
+           stin_technique_name(shadows),
+           m.compared ? 100.0 * (1.0 - (double)m.over / m.compared) : 0.0, m.compared, m.worst,
+           m.mean, m.shadowed_pane, MIN_SHADOWED_PANE, MIN_SHADOWED_COMPARED,
+           whole.compared ? 100.0 * (1.0 - (double)whole.over / whole.compared) : 0.0);
+    free(f.rgba);
+    free(behind.rgba);
+}
+
+static void peel_scene(run *r, stin_tier tier, const char *path, const char *scene_name)
+{
+    scene s;
+    peel_case c;
+    composite_ref unshadowed, shadowed;
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
+    frame_out base;
+    char err[512], name[192];
+    const char *tn = stin_tier_name(tier);
+    memset(&unshadowed, 0, sizeof unshadowed);
+    memset(&shadowed, 0, sizeof shadowed);
+    snprintf(name, sizeof name, "%s/%s/peel", tn, scene_name);
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        return;
+    }
+    memset(&c, 0, sizeof c);
+    c.r = r;
+    c.s = &s;
+    c.tier = tier;
+    c.scene_name = scene_name;
+    c.ref = reference_create(&s, err, sizeof err);
+    if (!c.ref) {
+        report(r, "FAIL", name, "reference: %s", err);
+        scene_free(&s);
+        return;
+    }
+    if (!render(&c, &s, &fo, &base, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        goto done;
+    }
+    if (tier == STIN_TIER_GL1) /* Gouraud, as test_scene */
+        c.per_vertex = (base.caps_present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
+                           ? 1
+                           : REFERENCE_GOURAUD_SINGLE_COLOR;
+    if (!reference_of(&c, 0, &unshadowed)) {
+        report(r, "FAIL", name, "reference composite failed");
+        free(base.rgba);
+        goto done;
+    }
+    snprintf(name, sizeof name, "%s/%s/peel-gl-clean", tn, scene_name);
+    report_clean(&c, name, &base);
+    snprintf(name, sizeof name, "%s/%s/peel-beauty", tn, scene_name);
+    test_beauty(&c, &base, &unshadowed, name);
+    if (base.choice[STIN_FEATURE_TRANSPARENCY].technique != STIN_TECH_TRANSPARENCY_PEEL) {
+        snprintf(name, sizeof name, "%s/%s/peel-layers", tn, scene_name);
+        report(r, "SKIP", name, "transparency is %s here (%s)",
+               stin_technique_name(base.choice[STIN_FEATURE_TRANSPARENCY].technique),
+               base.choice[STIN_FEATURE_TRANSPARENCY].reason);
+        free(base.rgba);
+        goto done;
+    }
+    snprintf(name, sizeof name, "%s/%s/peel-order", tn, scene_name);
+    test_order(&c, &base, name);
+    snprintf(name, sizeof name, "%s/%s/peel-early-stop", tn, scene_name);
+    test_early_stop(&c, &base, &unshadowed, name);
+    snprintf(name, sizeof name, "%s/%s/peel-cap", tn, scene_name);
+    test_cap(&c, &unshadowed, name);
+    free(base.rgba);
+    if (!strcmp(scene_name, "panes")) { /* the scene with a pane in shadow */
+        static const stin_technique shadows[] = {STIN_TECH_SHADOWS_VOLUME,
+                                                 STIN_TECH_SHADOWS_MAP_PCF};
+        size_t i;
+        if (!reference_of(&c, REFERENCE_RENDER_SHADOWED, &shadowed)) {
+            report(r, "FAIL", name, "shadowed reference composite failed");
+            goto done;
+        }
+        for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++) {
+            snprintf(name, sizeof name, "%s/%s/peel-shadowed-%s", tn, scene_name,
+                     stin_technique_name(shadows[i]));
+            test_shadowed(&c, shadows[i], STIN_TECH_NONE, &shadowed, name);
+        }
+        /* deep: the layers get coloured shadows; the composite's layers are
+         * lit through the transmittance */
+        snprintf(name, sizeof name, "%s/%s/peel-shadowed-deep", tn, scene_name);
+        if (tier != STIN_TIER_GL4) {
+            report(r, "SKIP", name, "deep shadow maps are GL4 only");
+        } else {
+            reference_free(&shadowed);
+            memset(&shadowed, 0, sizeof shadowed);
+            if (!reference_of(&c, REFERENCE_RENDER_TRANSMITTANCE, &shadowed))
+                report(r, "FAIL", name, "transmittance reference composite failed");
+            else
+                test_shadowed(&c, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_TRANSLUCENT_DEEP, &shadowed,
+                              name);
+        }
+        snprintf(name, sizeof name, "%s/%s/peel-shadowed-vdsm", tn, scene_name);
+        report(r, "SKIP", name, "vdsm shadows the opaque surfaces only: its position buffer "
+                                "holds them, so peeled layers are lit unshadowed (stin.h)");
+    }
+done:
+    reference_free(&unshadowed);
+    reference_free(&shadowed);
+    reference_destroy(c.ref);
+    scene_free(&s);
+}
+
+void peel_tests(run *r, stin_tier tier, const char *path)
+{
+    static const char *const beside[] = {"panes", "cross"};
+    char dir[1024], sub[1100];
+    const char *base = scene_base_name(path);
+    size_t i;
+    if (strcmp(base, "glass-panes") != 0)
+        return;
+    peel_scene(r, tier, path, "glass-panes");
+    snprintf(dir, sizeof dir, "%s", path);
+    if (strrchr(dir, '/'))
+        strrchr(dir, '/')[1] = '\0';
+    else
+        dir[0] = '\0';
+    for (i = 0; i < sizeof beside / sizeof beside[0]; i++) {
+        snprintf(sub, sizeof sub, "%speel/%s.json", dir, beside[i]);
+        peel_scene(r, tier, sub, beside[i]);
+    }
+}

@@ -1,0 +1,92 @@
+/* SPDX-License-Identifier: MIT */
+/* The camera transparency section (gl2, gl4; shadows off, so the layers'
+ * cost is the peel's own): on the panes scene with 0, 2 and 4 transparent
+ * layers on screen (its opaque objects and that many copies of its first
+ * pane stacked 0.3 apart), depth-peel's passes and frame time against
+ * sorted's. */
+#include "bench_options.h"
+#include "bench_report.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define WHAT "camera transparency"
+#define LAYER_CASES 3
+
+static int blended(const scene *s, const scene_object *o)
+{
+    return s->materials[o->material].color[3] < 1.0f;
+}
+
+/* A copy of s with its opaque objects and `panes` copies of its first
+ * transparent one, each 0.3 above the one before; objects freed by the
+ * caller. 0 when s has no transparent object or memory ran out. */
+static int with_panes(const scene *s, int panes, scene *out)
+{
+    int i, n = 0, first = -1;
+    *out = *s;
+    out->objects = malloc(sizeof *out->objects * (size_t)(s->object_count + panes));
+    if (!out->objects)
+        return 0;
+    for (i = 0; i < s->object_count; i++) {
+        if (!blended(s, &s->objects[i]))
+            out->objects[n++] = s->objects[i];
+        else if (first < 0)
+            first = i;
+    }
+    for (i = 0; i < panes && first >= 0; i++) {
+        out->objects[n] = s->objects[first];
+        out->objects[n].transform[13] += 0.3f * (float)i; /* column-major: the y translation */
+        n++;
+    }
+    out->object_count = n;
+    return first >= 0;
+}
+
+int section_peel(bench_env *env, const scene *s, int *ran)
+{
+    static const int layers[LAYER_CASES] = {0, 2, 4};
+    stin_tier tiers[2];
+    tech_settings st;
+    char timing[160];
+    int tier_n, t, i, rc = 0;
+    bench_tech_settings(env, SEC_PEEL, &st);
+    st.base.transparency = STIN_TECH_TRANSPARENCY_SORTED;
+    printf("\n## Camera transparency (gl2/gl4, shadows off): depth-peel against sorted, %dx%d; "
+           "%s\n", env->b.width, env->b.height,
+           bench_row_timing(env, st.setups, st.frames, timing, sizeof timing));
+    tier_n = bench_tiers(env, GLSL_TIERS, WHAT, "gl2 and gl4 only", tiers);
+    for (t = 0; t < tier_n && !rc; t++) {
+        tech_row rows[LAYER_CASES];
+        int ok = 1;
+        printf("\n### %s (%s)\n\n", stin_tier_name(tiers[t]), tier_label(tiers[t]));
+        printf("| layers on screen | depth-peel passes | sorted median ms | depth-peel median ms "
+               "| depth-peel / sorted |\n|---:|---:|---:|---:|---:|\n");
+        for (i = 0; i < LAYER_CASES && ok && !rc; i++) {
+            scene copy;
+            memset(&rows[i], 0, sizeof rows[i]);
+            rows[i].cfg = st.base;
+            rows[i].cfg.transparency = STIN_TECH_TRANSPARENCY_PEEL;
+            if (!with_panes(s, layers[i], &copy)) {
+                fprintf(stderr, "stin-bench: the peel scene has too few transparent objects\n");
+                free(copy.objects);
+                rc = EXIT_BAD_INPUT;
+                break;
+            }
+            ok = bench_tech_tier(env, &st, tiers[t], WHAT, &copy, &rows[i], 1, &rc);
+            free(copy.objects);
+            if (!ok)
+                break;
+            if (rows[i].skipped)
+                printf("| %d | SKIP: %s | | | |\n", layers[i], rows[i].why);
+            else
+                printf("| %d | %u | %.2f | %.2f | %.2f |\n", layers[i], rows[i].peel_passes,
+                       rows[i].base_ms, rows[i].on_ms, tech_ratio(&rows[i]));
+            fflush(stdout);
+        }
+        if (ok && !rc)
+            *ran = 1;
+    }
+    return rc;
+}
