@@ -367,15 +367,16 @@ void stin__peel_end(stin_context *ctx)
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
-    /* over the opaque image: frame = C + T frame; the first layer's depth
+    /* over the opaque image as premultiplied colour with coverage 1 - T:
+     * frame = C + T frame, alpha = 1 - T + T alpha; the first layer's depth
      * where it has a surface (its depth, cleared to 1, passes LESS there
-     * only; elsewhere C = 0 and T = 1 leave the colour as it is) */
+     * only; elsewhere C = 0 and T = 1 leave the frame as it is) */
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;
     ps.depth_write = 1;
     ps.blend = 1;
     ps.blend_src = GL_ONE;
-    ps.blend_dst = GL_SRC_ALPHA;
+    ps.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
     stin__pass_apply(ctx, &ps);
     composite_program(ctx, 1);
     screen_quad(ctx);

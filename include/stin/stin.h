@@ -642,9 +642,9 @@ const char *stin_feature_name(stin_feature f);
  *   volumes, its deep map again, its lit pass) and one full-viewport
  *   composite; one more composite ends the frame. The frame's depth buffer
  *   ends with the nearest surface, blended or opaque, as the sorted draws
- *   leave it; its alpha where a layer covers the pixel becomes T + T x the
- *   alpha that was there (the blend that puts C + T frame over it applies
- *   to alpha too). Displaced blended draws are peeled displaced (the same
+ *   leave it; its alpha becomes 1 - T + T x the alpha that was there (the
+ *   composite goes over the frame as premultiplied colour C with coverage
+ *   1 - T). Displaced blended draws are peeled displaced (the same
  *   lit programs draw them). The visibility and normal outputs draw
  *   blended draws as before (nearest surface). GPU memory, at the
  *   viewport's size W x H (window coordinates from 0: (x + width) x

@@ -4,8 +4,10 @@
 // under the composite so far, (C, T) front to back: C += T a c, T *= 1 - a,
 // with c the layer's ambient plus its lights (clamped, as the framebuffer
 // would) and a its opacity (0 where the layer has no surface). Mode 1 hands
-// the composite to the blend that puts it over the frame, C + T frame, and
-// the first layer's depth to the frame's depth test.
+// the composite to the blend that puts it over the frame as premultiplied
+// colour C with coverage 1 - T (ONE, ONE_MINUS_SRC_ALPHA: colour C + T frame,
+// alpha 1 - T + T alpha, the reference's), and the first layer's depth to
+// the frame's depth test.
 uniform sampler2D u_ambient; // the layer's ambient colour and opacity
 uniform sampler2D u_lights;  // the layer's lights, added up
 uniform sampler2D u_accum;   // (C, T) of the layers before it
@@ -18,7 +20,7 @@ void main()
     vec4 acc = texture2D(u_accum, at);
     gl_FragDepth = texture2D(u_first, at).r;
     if (u_params.z > 0.5) {
-        gl_FragColor = acc;
+        gl_FragColor = vec4(acc.rgb, 1.0 - acc.a);
         return;
     }
     vec4 layer = texture2D(u_ambient, at);

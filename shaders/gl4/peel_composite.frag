@@ -15,7 +15,7 @@ void main()
     vec4 acc = texture(u_accum, at);
     gl_FragDepth = texture(u_first, at).r;
     if (u_params.z > 0.5) {
-        frag_color = acc;
+        frag_color = vec4(acc.rgb, 1.0 - acc.a);
         return;
     }
     vec4 layer = texture(u_ambient, at);

@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* stin-reference: the Embree reference of a scene written as an image with
  * the same channels as stin-render (for the README and for outside checks).
- *   stin-reference SCENE.json -o OUT.png|OUT.exr [--size WxH] [--gouraud] [--shadowed] */
+ *   stin-reference SCENE.json -o OUT.png|OUT.exr [--size WxH] [--gouraud] [--shadowed]
+ *                 [--composite] */
 #include "aov.h"
 #include "image_io.h"
 #include "reference.h"
@@ -28,6 +29,10 @@ int main(int argc, char **argv)
             if (sscanf(argv[++x], "%dx%d", &w, &h) != 2 || w < 1 || h < 1) return 2;
         } else if (!strcmp(argv[x], "--gouraud")) per_vertex = 1;
         else if (!strcmp(argv[x], "--shadowed")) flags |= REFERENCE_RENDER_SHADOWED;
+        /* transparent surfaces composited front to back over the opaque hit,
+         * each lit through the lights' transmittance (depth-peel's target) */
+        else if (!strcmp(argv[x], "--composite"))
+            flags |= REFERENCE_RENDER_COMPOSITE | REFERENCE_RENDER_TRANSMITTANCE;
         else if (!strcmp(argv[x], "--surface") && x + 1 < argc) {
             const char *t = argv[++x];
             surface = !strcmp(t, "plain") ? REF_SURFACE_PLAIN
@@ -42,12 +47,13 @@ int main(int argc, char **argv)
         else if (argv[x][0] != '-' && !scene_path) scene_path = argv[x];
         else {
             fprintf(stderr, "usage: stin-reference SCENE.json -o OUT [--size WxH] [--gouraud] "
-                            "[--shadowed] [--surface plain|normal|parallax|pom]\n");
+                            "[--shadowed] [--composite] [--surface plain|normal|parallax|pom]\n");
             return 2;
         }
     }
     if (!scene_path || !out) {
-        fprintf(stderr, "usage: stin-reference SCENE.json -o OUT [--size WxH] [--gouraud] [--shadowed]\n");
+        fprintf(stderr, "usage: stin-reference SCENE.json -o OUT [--size WxH] [--gouraud] [--shadowed] "
+                        "[--composite]\n");
         return 2;
     }
     memset(&img, 0, sizeof img);
