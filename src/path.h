@@ -28,6 +28,13 @@ typedef struct stin__displace_locs {
     int patches;  /* the program is tessellated: its draws are GL_PATCHES of 3 */
 } stin__displace_locs;
 
+/* A translucent-shadows lookup chunk's uniforms (translucent.c): the kind
+ * of map the light has (0 none, 1 one face, 2 six), the faces' matrices,
+ * the technique's params and its two samplers. */
+typedef struct stin__translucent_locs {
+    GLint kind, matrix, params, maps[2];
+} stin__translucent_locs;
+
 /* GLSL programs of one tier. */
 enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_VOLUME, STIN__PROG_COUNT };
 #define STIN__LIGHTS_PER_PASS 8
@@ -40,11 +47,9 @@ typedef struct stin__program {
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
     /* map-pcf chunk (shadow_map_pcf.c) */
     GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_maps[STIN__SHADOW_SAMPLERS];
-    /* deep chunk (translucent_deep.c): kind, face matrices, params, even/odd layers */
-    GLint u_deep_kind, u_deep_matrix, u_deep_params, u_deep_layers[2];
-    /* coloured chunk (translucent_coloured.c): kind, face matrices, params,
-     * transmittance and nearest-depth atlases */
-    GLint u_coloured_kind, u_coloured_matrix, u_coloured_params, u_coloured_maps[2];
+    /* the translucent-shadows lookup chunks (translucent.c): deep's even/odd
+     * layers, coloured's transmittance and nearest-depth atlases */
+    stin__translucent_locs deep, coloured;
     /* peel chunk (transparency_peel.c): previous layer's depth, opaque depth, params */
     GLint u_peel_previous, u_peel_opaque, u_peel_params;
     stin__displace_locs displace; /* the vertex stage's displacement chunk */

@@ -11,10 +11,41 @@ const char *stin__translucent_chunk(const stin_context *ctx)
     return deep ? deep : stin__coloured_chunk(ctx);
 }
 
+static void locate(stin_context *ctx, GLuint prog, stin__translucent_locs *l,
+                   const char *const names[5])
+{
+    l->kind = GL(ctx, GetUniformLocation)(prog, names[0]);
+    l->matrix = GL(ctx, GetUniformLocation)(prog, names[1]);
+    l->params = GL(ctx, GetUniformLocation)(prog, names[2]);
+    l->maps[0] = GL(ctx, GetUniformLocation)(prog, names[3]);
+    l->maps[1] = GL(ctx, GetUniformLocation)(prog, names[4]);
+}
+
 void stin__translucent_locate(stin_context *ctx, stin__program *p)
 {
-    stin__deep_locate(ctx, p);
-    stin__coloured_locate(ctx, p);
+    static const char *const deep[5] = {"u_deep_kind", "u_deep_matrix", "u_deep_params",
+                                        "u_deep_even", "u_deep_odd"};
+    static const char *const coloured[5] = {"u_coloured_kind", "u_coloured_matrix",
+                                            "u_coloured_params", "u_coloured_map",
+                                            "u_coloured_depth"};
+    locate(ctx, p->name, &p->deep, deep);
+    locate(ctx, p->name, &p->coloured, coloured);
+}
+
+int stin__translucent_set(stin_context *ctx, const stin__translucent_locs *l, int kind,
+                          const float *matrices, const float params[4])
+{
+    int i;
+    if (l->kind < 0)
+        return 0;
+    GL(ctx, Uniform1i)(l->kind, kind);
+    for (i = 0; i < 2; i++)
+        GL(ctx, Uniform1i)(l->maps[i], ctx->sel.translucent_unit + i);
+    if (!kind)
+        return 0;
+    GL(ctx, UniformMatrix4fv)(l->matrix, kind == 2 ? STIN__DEEP_FACES : 1, GL_FALSE, matrices);
+    GL(ctx, Uniform4fv)(l->params, 1, params);
+    return 1;
 }
 
 void stin__translucent_uniforms(stin_context *ctx, const stin__program *p)

@@ -42,6 +42,14 @@ typedef struct stin__deep_state {
     float normal_offset;   /* world units per unit clip w: 1.5 texels */
 } stin__deep_state;
 
+/* The uniforms of one lookup chunk (translucent.c): the samplers on the
+ * selection's translucent units (used or not, so a fallen-back technique's
+ * samplers stay off the other units), then, for a light with a map (kind
+ * not 0), its face matrices and params. Returns whether the maps are to be
+ * bound (kind not 0). */
+int stin__translucent_set(struct stin_context *ctx, const stin__translucent_locs *l, int kind,
+                          const float *matrices, const float params[4]);
+
 /* Slices per face of each ping-pong texture for `layers` layers. */
 uint32_t stin__deep_slices(uint32_t layers);
 /* The lit programs' chunk after the shadow technique's ("translucent_deep.glsl")
@@ -52,8 +60,8 @@ const char *stin__deep_chunk(const struct stin_context *ctx);
  * (logged). */
 void stin__deep_init(struct stin_context *ctx);
 void stin__deep_release(struct stin_context *ctx);
-/* A lit or flat program's lookup uniforms: located once, set per pass. */
-void stin__deep_locate(struct stin_context *ctx, stin__program *p);
+/* A lit or flat program's lookup uniforms, set per pass (located by
+ * translucent.c). */
 void stin__deep_uniforms(struct stin_context *ctx, const stin__program *p);
 /* 1 when lights get deep maps this frame (they are then lit one per pass). */
 int stin__deep_active(const struct stin_context *ctx);
@@ -83,7 +91,6 @@ typedef struct stin__coloured_state {
 const char *stin__coloured_chunk(const struct stin_context *ctx);
 void stin__coloured_init(struct stin_context *ctx);
 void stin__coloured_release(struct stin_context *ctx);
-void stin__coloured_locate(struct stin_context *ctx, stin__program *p);
 void stin__coloured_uniforms(struct stin_context *ctx, const stin__program *p);
 int stin__coloured_active(const struct stin_context *ctx);
 void stin__coloured_light(struct stin_context *ctx, uint32_t li);

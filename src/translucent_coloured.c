@@ -136,34 +136,16 @@ void stin__coloured_init(stin_context *ctx)
     stin__gl_check_errors(ctx, "coloured set-up");
 }
 
-void stin__coloured_locate(stin_context *ctx, stin__program *p)
-{
-    p->u_coloured_kind = GL(ctx, GetUniformLocation)(p->name, "u_coloured_kind");
-    p->u_coloured_matrix = GL(ctx, GetUniformLocation)(p->name, "u_coloured_matrix");
-    p->u_coloured_params = GL(ctx, GetUniformLocation)(p->name, "u_coloured_params");
-    p->u_coloured_maps[0] = GL(ctx, GetUniformLocation)(p->name, "u_coloured_map");
-    p->u_coloured_maps[1] = GL(ctx, GetUniformLocation)(p->name, "u_coloured_depth");
-}
-
 void stin__coloured_uniforms(stin_context *ctx, const stin__program *p)
 {
     const stin__coloured_state *s = &ctx->coloured;
     float params[4];
-    int i;
-    if (p->u_coloured_kind < 0)
-        return;
-    GL(ctx, Uniform1i)(p->u_coloured_kind, s->kind);
-    for (i = 0; i < 2; i++) /* on units of their own, used or not */
-        GL(ctx, Uniform1i)(p->u_coloured_maps[i], ctx->sel.translucent_unit + i);
-    if (!s->kind)
-        return;
-    GL(ctx, UniformMatrix4fv)(p->u_coloured_matrix, s->kind == 2 ? STIN__DEEP_FACES : 1, GL_FALSE,
-                              &s->matrix[0][0]);
     params[0] = (float)s->size;
     params[1] = s->normal_offset;
     params[2] = (ctx->desc.debug_flags & STIN_DEBUG_COLOURED_NO_DEPTH) ? 0.0f : 1.0f;
     params[3] = 0.0f;
-    GL(ctx, Uniform4fv)(p->u_coloured_params, 1, params);
+    if (!stin__translucent_set(ctx, &p->coloured, s->kind, &s->matrix[0][0], params))
+        return;
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, s->color);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, s->depth);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);

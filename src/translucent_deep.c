@@ -186,36 +186,17 @@ void stin__deep_init(stin_context *ctx)
     stin__gl_check_errors(ctx, "deep set-up");
 }
 
-void stin__deep_locate(stin_context *ctx, stin__program *p)
-{
-    p->u_deep_kind = GL(ctx, GetUniformLocation)(p->name, "u_deep_kind");
-    p->u_deep_matrix = GL(ctx, GetUniformLocation)(p->name, "u_deep_matrix");
-    p->u_deep_params = GL(ctx, GetUniformLocation)(p->name, "u_deep_params");
-    p->u_deep_layers[0] = GL(ctx, GetUniformLocation)(p->name, "u_deep_even");
-    p->u_deep_layers[1] = GL(ctx, GetUniformLocation)(p->name, "u_deep_odd");
-}
-
 void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
 {
     const stin__deep_state *s = &ctx->deep;
     float params[4];
     int i;
-    if (p->u_deep_kind < 0)
-        return;
-    GL(ctx, Uniform1i)(p->u_deep_kind, s->kind);
-    /* every sampler on a unit of its own, used or not (the selection's: a
-     * fallen-back deep keeps its programs' samplers off the other units) */
-    for (i = 0; i < 2; i++)
-        GL(ctx, Uniform1i)(p->u_deep_layers[i], ctx->sel.translucent_unit + i);
-    if (!s->kind)
-        return;
-    GL(ctx, UniformMatrix4fv)(p->u_deep_matrix, s->kind == 2 ? STIN__DEEP_FACES : 1, GL_FALSE,
-                              &s->matrix[0][0]);
     params[0] = (float)s->slices;
     params[1] = (float)s->size;
     params[2] = s->normal_offset;
     params[3] = (float)s->layer_cap;
-    GL(ctx, Uniform4fv)(p->u_deep_params, 1, params);
+    if (!stin__translucent_set(ctx, &p->deep, s->kind, &s->matrix[0][0], params))
+        return;
     for (i = 0; i < 2; i++)
         stin__bind_unit(ctx, s->unit + i, GL_TEXTURE_2D_ARRAY, s->layers[i]);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
