@@ -31,6 +31,31 @@ typedef struct stin__csg_product {
     int capped;               /* the resolve kept its near-plane cap somewhere */
 } stin__csg_product;
 
+/* The CPU side of one resolve, carved from the staging (csg_goldfeather.c). */
+typedef struct stin__csg_pixels {
+    float *result;            /* nearest surviving depth per pixel */
+    float *candidate;         /* this layer's depth; > 1 where it lost */
+    unsigned char *stencil;   /* a stencil read back */
+    int x, y, w, h;
+    size_t pixels;
+    int bits;                 /* stencil bits used (at most 8) */
+} stin__csg_pixels;
+
+/* A light's map resolve, kept for the passes that draw the products'
+ * surface into the same map again (map-combine's ramp, map-depth's side
+ * test): its pixels (result unbiased, candidate biased) and camera. */
+typedef struct stin__csg_cast_state {
+    GLuint fbo, depth_stencil; /* where a map without stencil resolves (0: none yet) */
+    int size;                 /* the renderbuffer's side */
+    int valid;                /* the last map's cast drew products */
+    int kept;                 /* in one band: pixels below hold its whole resolve */
+    int rect[4];              /* the map's rectangle under the products */
+    stin__csg_pixels pixels;
+    float view[16], projection[16]; /* the light's, the projection cropped to the pixels */
+    float light_projection[16];       /* the light's, uncropped */
+    int said_room, said_no_target, said_technique;
+} stin__csg_cast_state;
+
 /* The frame's products, in the caller's block (sizes from the desc). */
 typedef struct stin__csg_state {
     stin__draw *primitives;   /* max_csg_primitives: mesh, transform, material each */
@@ -55,6 +80,7 @@ typedef struct stin__csg_state {
     int tex_width, tex_height;
     GLuint scs_queries[STIN__CSG_SCS_QUERIES]; /* scs's early stop (0: no occlusion queries) */
     int said_scs_fallback, said_scs_capped;
+    stin__csg_cast_state cast; /* products casting into the lights' maps (csg_cast.c) */
 } stin__csg_state;
 
 /* Words of normalisation scratch for the desc's capacities. */
@@ -119,15 +145,38 @@ int stin__csg_cap_transform(const struct stin_context *ctx, float out[16]);
 /* Whether the frame's near and far planes cut d's bounding box. */
 void stin__csg_planes_cut(const struct stin_context *ctx, const stin__draw *d, int *near_cut,
                           int *far_cut);
-/* The CPU side of one resolve, carved from the staging (csg_goldfeather.c). */
-typedef struct stin__csg_pixels {
-    float *result;            /* nearest surviving depth per pixel */
-    float *candidate;         /* this layer's depth; > 1 where it lost */
-    unsigned char *stencil;   /* a stencil read back */
-    int x, y, w, h;
-    size_t pixels;
-    int bits;                 /* stencil bits used (at most 8) */
-} stin__csg_pixels;
+/* The resolve's pixels for the viewport at `offset` bytes into the staging
+ * (0 when it has not the room); every product resolved into them in the
+ * bound framebuffer, with the current camera (ctx->frame.view, projection,
+ * view_proj, viewport); its depth written back (func: the depth test). */
+int stin__csg_pixels_at(struct stin_context *ctx, size_t offset, stin__csg_pixels *r);
+void stin__csg_resolve_pixels(struct stin_context *ctx, const stin__path *path,
+                              stin__csg_pixels *r);
+void stin__csg_write_depth(struct stin_context *ctx, const stin__path *path,
+                           const stin__csg_pixels *r, GLenum func);
+
+/* Products casting shadows (csg_cast.c). A map technique calls cast after
+ * clearing a light's map (viewport map_vp, in framebuffer map_fbo; in_place:
+ * the map is drawn in the frame's own framebuffer, whose stencil the resolve
+ * may use) and before drawing the casters with depth LESS: the products'
+ * surface seen from the light, pushed back by the light's slope-scaled
+ * offset (factor, units as glPolygonOffset), goes into the map's depth.
+ * Returns 1 when it drew any. The rectangle goes in bands of the rows the
+ * staging holds. cast_again writes the same surface unbiased into the
+ * framebuffer `target` (bound; in_place as for cast; viewport map_vp) and
+ * draws the primitives there depth EQUAL with the fixed path's current
+ * colour state (map-combine's ramp, map-depth's side colours): from the
+ * kept pixels where one band held them, else resolving the bands again. */
+int stin__csg_cast(struct stin_context *ctx, const stin__path *path, const float view[16],
+                   const float proj[16], const int map_vp[4], GLuint map_fbo, int in_place,
+                   float factor, float units);
+void stin__csg_cast_again(struct stin_context *ctx, const int map_vp[4], GLuint target,
+                          int in_place);
+void stin__csg_cast_release(struct stin_context *ctx);
+/* Logs once per context that the frame's products cast no shadow `why`
+ * (a technique or light that does not take them); nothing without
+ * products or lights. */
+void stin__csg_cast_none(struct stin_context *ctx, const char *why);
 
 /* Goldfeather's passes that SCS shares: depth and stencil of the viewport
  * read back into r, the buffers cleared (colour writes off), the face a
@@ -138,8 +187,9 @@ void stin__csg_clear(struct stin_context *ctx, GLbitfield bits);
 GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
 
 /* The window rectangle (normalised device min x, y, max x, y) d's bounding
- * box covers, the whole viewport where a corner is behind the eye; whether
- * two meet, within a pixel (csg_bounds.c). */
+ * box covers: the part of the box in front of the eye, projected (empty,
+ * min > max, where it all lies behind the eye); whether two meet, within a
+ * pixel (csg_bounds.c). */
 void stin__csg_screen_rect(const struct stin_context *ctx, const stin__draw *d, float rect[4]);
 int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const float b[4]);
 

@@ -7,33 +7,50 @@
  * and its passes follow the primitives that overlap, not all of them. */
 #include "internal.h"
 
-/* Conservative: a box corner at or behind the eye gives the whole viewport. */
+#define NEAR_W 1e-6f /* clip w below which a point counts as at or behind the eye */
+
+static void rect_add(float rect[4], const float clip[4])
+{
+    int k;
+    for (k = 0; k < 2; k++) {
+        float v = clip[k] / clip[3];
+        rect[k] = v < rect[k] ? v : rect[k];
+        rect[2 + k] = v > rect[2 + k] ? v : rect[2 + k];
+    }
+}
+
+/* The box's part in front of the eye (w > NEAR_W): its corners there and
+ * the points where its edges cross w = NEAR_W, projected. Empty (min > max)
+ * where the whole box lies at or behind the eye. */
 void stin__csg_screen_rect(const stin_context *ctx, const stin__draw *d, float rect[4])
 {
     const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
-    float m[16];
+    float m[16], clip[8][4];
     int i, k;
     stin__mat4_mul(m, ctx->view_proj, d->transform);
-    rect[0] = rect[1] = 1.0f;
-    rect[2] = rect[3] = -1.0f;
+    rect[0] = rect[1] = 1e30f;
+    rect[2] = rect[3] = -1e30f;
     for (i = 0; i < 8; i++) {
         const float c[3] = {(i & 1) ? info->bounds_max[0] : info->bounds_min[0],
                             (i & 2) ? info->bounds_max[1] : info->bounds_min[1],
                             (i & 4) ? info->bounds_max[2] : info->bounds_min[2]};
-        float clip[4];
         for (k = 0; k < 4; k++)
-            clip[k] = m[k] * c[0] + m[4 + k] * c[1] + m[8 + k] * c[2] + m[12 + k];
-        if (!(clip[3] > 1e-6f)) {
-            rect[0] = rect[1] = -1.0f;
-            rect[2] = rect[3] = 1.0f;
-            return;
-        }
-        for (k = 0; k < 2; k++) {
-            float v = clip[k] / clip[3];
-            rect[k] = v < rect[k] ? v : rect[k];
-            rect[2 + k] = v > rect[2 + k] ? v : rect[2 + k];
-        }
+            clip[i][k] = m[k] * c[0] + m[4 + k] * c[1] + m[8 + k] * c[2] + m[12 + k];
+        if (clip[i][3] > NEAR_W)
+            rect_add(rect, clip[i]);
     }
+    for (i = 0; i < 8; i++) /* the 12 edges: corners one bit apart */
+        for (k = 0; k < 3; k++) {
+            int j = i | (1 << k), c;
+            float t, x[4];
+            if (j == i || (clip[i][3] > NEAR_W) == (clip[j][3] > NEAR_W))
+                continue;
+            t = (NEAR_W - clip[i][3]) / (clip[j][3] - clip[i][3]);
+            for (c = 0; c < 4; c++)
+                x[c] = clip[i][c] + t * (clip[j][c] - clip[i][c]);
+            x[3] = NEAR_W;
+            rect_add(rect, x);
+        }
 }
 
 /* Whether two rectangles (normalised device x, y: min then max) meet, with

@@ -182,11 +182,19 @@ static void write_depth(stin_context *ctx, const stin__path *path, const resolve
 }
 
 /* ---- passes ----------------------------------------------------------------- */
+/* Clears keep to the resolve's rectangle (the viewport: a light's map
+ * resolves a corner of a buffer it shares, csg_cast.c). */
 static void clear(stin_context *ctx, GLbitfield bits)
 {
     stin__pass_state ps = stin__pass_defaults;
+    const int *vp = ctx->frame.viewport;
     ps.color_write = 0;
-    stin__pass_apply(ctx, &ps); /* depth and stencil writes on, no scissor */
+    ps.scissor = 1;
+    ps.scissor_box[0] = vp[0];
+    ps.scissor_box[1] = vp[1];
+    ps.scissor_box[2] = vp[2];
+    ps.scissor_box[3] = vp[3];
+    stin__pass_apply(ctx, &ps); /* depth and stencil writes on */
     GL(ctx, Clear)(bits);
 }
 
@@ -434,28 +442,16 @@ static void resolve_product(stin_context *ctx, const stin__path *path, resolve *
     }
 }
 
-/* Whether this frame can resolve its products; logs once per reason. */
-static int usable(stin_context *ctx, resolve *r)
+/* The resolve's pixels for the viewport at `offset` bytes into the
+ * staging; 0 when it has not the room. */
+int stin__csg_pixels_at(stin_context *ctx, size_t offset, resolve *r)
 {
     const int *vp = ctx->frame.viewport;
     size_t bytes, need = stin__csg_goldfeather_bytes(vp[2], vp[3]);
     unsigned char *base = staging_of(ctx, &bytes);
-    const char *why = NULL;
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
-        why = "the CSG technique is csg-off";
-    else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
-        why = "the frame's framebuffer has no stencil buffer";
-    else if (need > bytes)
-        why = "the viewport needs more than the texture staging (9 bytes a pixel; raise "
-              "desc.max_texture_bytes)";
-    if (why) {
-        if (!ctx->csg.said_unusable) {
-            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                      "CSG products are not drawn: %s", why);
-            ctx->csg.said_unusable = 1;
-        }
+    if (offset > bytes || need > bytes - offset)
         return 0;
-    }
+    base += offset;
     r->x = vp[0];
     r->y = vp[1];
     r->w = vp[2];
@@ -468,27 +464,54 @@ static int usable(stin_context *ctx, resolve *r)
     return 1;
 }
 
-int stin__csg_resolve(stin_context *ctx, const stin__path *path)
+/* Whether this frame can resolve its products; logs once per reason. */
+static int usable(stin_context *ctx, resolve *r)
 {
-    resolve r;
+    const char *why = NULL;
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
+        why = "the CSG technique is csg-off";
+    else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
+        why = "the frame's framebuffer has no stencil buffer";
+    else if (!stin__csg_pixels_at(ctx, 0, r))
+        why = "the viewport needs more than the texture staging (9 bytes a pixel; raise "
+              "desc.max_texture_bytes)";
+    if (why) {
+        if (!ctx->csg.said_unusable) {
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "CSG products are not drawn: %s", why);
+            ctx->csg.said_unusable = 1;
+        }
+        return 0;
+    }
+    return 1;
+}
+
+void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve *r)
+{
     pack_saved saved;
     uint32_t pi;
-    ctx->csg.resolved = 0;
-    if (!ctx->csg.product_count || !usable(ctx, &r))
-        return 0;
     pack_begin(ctx, &saved);
-    read_depth(ctx, &r, r.result); /* what the buffer holds stays where nearer */
+    read_depth(ctx, r, r->result); /* what the buffer holds stays where nearer */
     ctx->csg.cap_usable = ctx->csg.cap_slot != STIN__NO_SLOT &&
                           stin__csg_cap_transform(ctx, ctx->csg.cap_transform);
     path->geometry_begin(ctx);
     for (pi = 0; pi < ctx->csg.product_count; pi++) {
         stin__csg_product *p = &ctx->csg.products[pi];
         p->capped = 0;
-        if (!stin__csg_scs_product(ctx, path, &r, p))
-            resolve_product(ctx, path, &r, p);
+        if (!stin__csg_scs_product(ctx, path, r, p))
+            resolve_product(ctx, path, r, p);
     }
     path->geometry_end(ctx);
     pack_end(ctx, &saved);
+}
+
+int stin__csg_resolve(stin_context *ctx, const stin__path *path)
+{
+    resolve r;
+    ctx->csg.resolved = 0;
+    if (!ctx->csg.product_count || !usable(ctx, &r))
+        return 0;
+    stin__csg_resolve_pixels(ctx, path, &r);
     write_depth(ctx, path, &r, GL_ALWAYS);
     clear(ctx, GL_STENCIL_BUFFER_BIT);
     ctx->csg.resolved = 1;
@@ -564,6 +587,7 @@ void stin__csg_release(stin_context *ctx)
 {
     stin__csg_state *c = &ctx->csg;
     stin__csg_scs_release(ctx);
+    stin__csg_cast_release(ctx);
     if (c->depth_prog)
         GL(ctx, DeleteProgram)(c->depth_prog);
     if (c->depth_tex)
@@ -577,6 +601,11 @@ void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out)
     read_depth(ctx, r, out);
 }
 void stin__csg_read_stencil(stin_context *ctx, const resolve *r) { read_stencil(ctx, r); }
+void stin__csg_write_depth(stin_context *ctx, const stin__path *path, const resolve *r,
+                           GLenum func)
+{
+    write_depth(ctx, path, r, func);
+}
 void stin__csg_clear(stin_context *ctx, GLbitfield bits) { clear(ctx, bits); }
 GLenum stin__csg_culled_face(const stin__draw *d, int complemented)
 {

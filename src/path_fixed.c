@@ -186,8 +186,7 @@ static void fixed_depth(stin_context *ctx, const float view[16], const float pro
         if (in_set(d, STIN__ALL) && !stin__translucent_skips(ctx, d))
             draw_mesh(ctx, d);
     }
-    draw_csg_faces(ctx, STIN__ALL, 0);
-    ctx->bound_mesh = 0xffffffffu;
+    ctx->bound_mesh = 0xffffffffu; /* CSG products: csg_cast.c, before these */
     stin__memcopy(ctx->frame.view, saved_view, sizeof saved_view);
 }
 

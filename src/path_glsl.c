@@ -613,6 +613,11 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
 static void glsl_geometry_begin(stin_context *ctx)
 {
     use(ctx, STIN__PROG_VOLUME);
+    if (!gl4(ctx)) { /* a light's map resolve runs before the frame's passes turn them on */
+        int k;
+        for (k = 0; k < 4; k++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)k);
+    }
     ctx->bound_mesh = 0xffffffffu;
 }
 

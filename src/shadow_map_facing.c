@@ -128,6 +128,16 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     side_colours(ctx, 1);
+    if (ctx->csg.cast.valid) {
+        /* a CSG product's surface the light sees is its outside, whichever
+         * side of a primitive makes it (csg_cast.c): white */
+        static const float white[4] = {1, 1, 1, 1}, black[4] = {0, 0, 0, 1};
+        const int map_vp[4] = {x, y, (int)m->used, (int)m->used};
+        GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, white);
+        stin__csg_cast_again(ctx, map_vp, m->fbo ? m->facing_fbo : ctx->draw_fbo,
+                             !m->fbo && stin__target_has_stencil(ctx));
+        GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, black);
+    }
     stin__fixed_path()->depth(ctx, view, proj);
     side_colours(ctx, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing[slot]);

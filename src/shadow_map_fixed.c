@@ -218,6 +218,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     uint32_t used = ctx->map_fixed.used;
     stin__pass_state ps = stin__pass_defaults;
     int fbo = ctx->map_fixed.fbo != 0, facing = !combine(ctx) && ctx->map_fixed.facing_test;
+    int map_vp[4], cast;
     ps.depth_test = 1;
     if (fbo) {
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
@@ -242,12 +243,27 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     GL(ctx, ClearDepth)(slot >= STIN__FACE_SLOT ? 1.0 - 1.0 / 65536.0 : 1.0);
     GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (combine(ctx) ? GL_COLOR_BUFFER_BIT : 0u));
+    /* CSG products first (csg_cast.c), in the frame's buffer where the map
+     * is drawn there (its stencil), the casters after them, depth LESS */
+    map_vp[0] = fbo ? 0 : vp[0];
+    map_vp[1] = fbo ? 0 : vp[1];
+    map_vp[2] = map_vp[3] = (int)used;
+    cast = stin__csg_cast(ctx, stin__fixed_path(), view, proj, map_vp,
+                          fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
+                          !fbo && stin__target_has_stencil(ctx),
+                          ps.polygon_offset ? ps.offset_factor : 0.0f,
+                          ps.polygon_offset ? ps.offset_units : 0.0f);
+    if (cast)
+        stin__pass_apply(ctx, &ps);
     if (combine(ctx)) {
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
         stin__bind_unit(ctx, 0, GL_TEXTURE_1D, ctx->map_fixed.ramp);
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
         ramp_texgen_light_eye(ctx, n, f);
+        if (cast) /* the products' surface in the ramp's colours */
+            stin__csg_cast_again(ctx, map_vp, fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
+                                 !fbo && stin__target_has_stencil(ctx));
     }
     stin__fixed_path()->depth(ctx, view, proj);
     if (combine(ctx)) {
@@ -597,6 +613,8 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
     }
     if (!mapped && l->type == STIN_LIGHT_POINT && stin__target_has_stencil(ctx)) {
         float world[4];
+        stin__csg_cast_none(ctx, "from a point light without map faces (its shadow volumes "
+                                 "stand in, and volumes cast no product)");
         world[0] = l->position[0];
         world[1] = l->position[1];
         world[2] = l->position[2];

@@ -174,7 +174,13 @@ static stin_result vdsm_init(stin_context *ctx)
     return STIN_OK;
 }
 
-static void vdsm_prepass(stin_context *ctx) { stin__vdsm_buffer_draw(ctx); }
+static void vdsm_prepass(stin_context *ctx)
+{
+    stin__vdsm_buffer_draw(ctx);
+    stin__csg_cast_none(ctx, "under vdsm (its shadow polygons come from triangles, and a "
+                             "product's surface is not its primitives' triangles; the map "
+                             "techniques cast them)");
+}
 
 /* The light as a homogeneous world point: position (w 1) or the direction
  * toward it (w 0). Area lights are shadowed from their centre. */

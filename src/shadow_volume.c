@@ -215,6 +215,8 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     stin__pass_state ps = stin__pass_defaults;
     uint32_t i;
     int k;
+    stin__csg_cast_none(ctx, "into shadow volumes (a product's volume needs its resolved "
+                             "silhouette, not its primitives'; the map techniques cast them)");
     /* The frame's viewport at most: the stencil of the rest of the
      * framebuffer (other viewports of a no_clear frame) is not ours. */
     if (NO_SCISSOR(scissor))

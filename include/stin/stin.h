@@ -815,6 +815,9 @@ typedef struct stin_desc {
  * of batches of 255: wrong (nothing drawn) where a term intersects more than
  * 255; a test that it shows the batching matters */
 #define STIN_DEBUG_CSG_NO_BATCH 131072u
+/* CSG products cast no shadow into the lights' maps (as before they did):
+ * a test that casting matters */
+#define STIN_DEBUG_CSG_NO_CAST 8388608u
 /* depth-peel: peel all desc.transparency_layers layers, without stopping at
  * the first that drew nothing (the same image, more passes) */
 #define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
@@ -1198,7 +1201,24 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * exact reference; vdsm's position buffer keeps a face's fragment where its
  * window depth lies within 2^-21 of the resolved depth rather than depth
  * EQUAL, as the resolve's float copy may round otherwise into that buffer's
- * depth format) and cast none. Products are opaque; a primitive's normal and height maps are
+ * depth format). Products cast shadows under the map techniques (map-pcf,
+ * map-depth with its side test, map-combine; spot and directional maps and
+ * point lights' faces): the same resolve runs from the light over the
+ * rectangle of the map the products' bounding boxes cover (the projection
+ * cropped to it), in the map's own framebuffer where that has a stencil
+ * buffer (GL1 maps drawn in the frame's), else in a depth-stencil texture
+ * framebuffer of stin's (made at the first such frame, as large as the
+ * largest map, never shrunk; packed depth-stencil needed, else logged and
+ * nothing cast), and goes into the map before the ordinary casters, its
+ * depth pushed back by the light's shadow_offset as glPolygonOffset would
+ * (slope from the resolved depth's one-sided differences). Its CPU copies
+ * follow the camera's resolve in the staging (9 bytes a texel of the
+ * rectangle); a rectangle that does not fit goes in bands of rows, each a
+ * resolve (stin_frame_stats.csg_cast_maps, csg_cast_bands).
+ * STIN_DEBUG_CSG_NO_CAST turns casting off. Volumes (and the point lights
+ * GL1 maps hand to volumes) and vdsm cast no product, logged once: a
+ * product's volume would need its resolved silhouette, vdsm's shadow
+ * polygons its resolved triangles. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term, each layer reading depth back (and the stencil
  * once per batch), so a resolve costs read-backs more than fill. Only the
@@ -1228,7 +1248,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * candidate of each term whose plain primitives the near plane all cuts
  * and drawn like a face in every pass. The cap's quad is stin's own mesh
  * (one slot, 4 vertices and 2 triangles more than the desc's capacities,
- * counted by stin_memory_size). Not done: casting shadows. */
+ * counted by stin_memory_size). */
 
 /* CSG technique "scs" (the default; every tier with a stencil buffer, the
  * same depth write-back, face passes, GL state and staging as goldfeather):
@@ -1292,6 +1312,12 @@ typedef struct stin_frame_stats {
      * which found nothing, counted: a scene of n layers under a cap above n
      * takes n + 1), and the layers that drew something */
     uint32_t peel_passes, peel_layers;
+    /* maps (a spot or directional light's, a point light's face) that CSG
+     * products were resolved into from the light: they cast into it */
+    uint32_t csg_cast_maps;
+    /* the resolves those took: one a map, more where the products' rectangle
+     * of it outgrew the staging beside the camera's resolve (bands of rows) */
+    uint32_t csg_cast_bands;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

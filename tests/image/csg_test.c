@@ -21,9 +21,10 @@
  *               that face the light, 2 pixels or more from a reference
  *               shadow edge, within the shadow technique's bound (1% for
  *               the maps, 0.5% for volumes, none for vdsm) against the
- *               reference's rays, which pass through CSG primitives
- *               (products cast no shadows), with at least 100 shadowed pixels of the product
- *               compared;
+ *               reference's rays: for the maps with the product casting
+ *               (its walls shadow the cavity; csg_cast.c), for volumes and
+ *               vdsm, which cast no product, through it; with at least 100
+ *               shadowed pixels of the product compared;
  *   gl-clean    no GL error, no call outside the profile, no logged error.
  * Contexts without the technique's needs (a stencil buffer; glDrawPixels
  * or GL4 lighting to write the depth back) report SKIP with the reason.
@@ -212,8 +213,10 @@ static void test_scs_used(run *r, const csg_case *c, stin_tier tier, const captu
 static void test_shadow(run *r, const csg_case *c, stin_technique tech, stin_tier tier,
                         const scene *s,
                         const capture_options *base, stin_technique t, const ref_hit *hits,
-                        const float *ref)
+                        const float *ref_none, const float *ref_cast)
 {
+    const float *ref = t == STIN_TECH_SHADOWS_VOLUME || t == STIN_TECH_SHADOWS_VDSM ? ref_none
+                                                                                   : ref_cast;
     double bound = t == STIN_TECH_SHADOWS_VDSM     ? CSG_VIS_VDSM_MAX
                    : t == STIN_TECH_SHADOWS_VOLUME ? CSG_VIS_VOLUME_MAX
                                                    : CSG_VIS_MAP_MAX;
@@ -278,7 +281,7 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     scene s;
     reference *ref = NULL;
     ref_hit *hits = NULL;
-    float *refimg = NULL;
+    float *refimg = NULL, *refcast = NULL;
     capture cap;
     capture_options o;
     scene_gpu_csg product;
@@ -347,8 +350,13 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
             STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_MAP_DEPTH,
             STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SHADOWS_VDSM};
         size_t k;
+        if (!reference_csg_cast(ref, &rp, 1) ||
+            !(refcast = reference_image(&s, ref, hits, w, h))) {
+            report(r, "FAIL", name, "the casting reference failed (out of memory or embree)");
+            goto done;
+        }
         for (k = 0; k < sizeof shadow_techniques / sizeof shadow_techniques[0]; k++)
-            test_shadow(r, c, tech, tier, &s, &o, shadow_techniques[k], hits, refimg);
+            test_shadow(r, c, tech, tier, &s, &o, shadow_techniques[k], hits, refimg, refcast);
     }
     if (c->union_equals)
         test_union_equals(r, c, tech, tier, &s, &cap);
@@ -362,6 +370,7 @@ done:
     if (have_cap)
         capture_free(&cap);
     free(refimg);
+    free(refcast);
     free(hits);
     reference_destroy(ref);
     scene_free(&s);
@@ -381,4 +390,5 @@ void csg_tests(run *r, stin_tier tier, const char *path)
         run_case(r, tier, dir, &cases[i], STIN_TECH_CSG_SCS);
     }
     csg_many_tests(r, tier);
+    csg_cast_tests(r, tier, dir);
 }

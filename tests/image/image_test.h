@@ -60,6 +60,8 @@ int displace_scene(const char *path);
 void csg_tests(run *r, stin_tier tier, const char *path);
 /* Products of 1000 primitives, generated (csg_many_test.c; from csg_tests). */
 void csg_many_tests(run *r, stin_tier tier);
+/* Products casting shadows (csg_cast_test.c; from csg_tests, dir: csg.json's folder). */
+void csg_cast_tests(run *r, stin_tier tier, const char *dir);
 /* Deep shadow maps ("deep", GL4) against the reference's transmittance, on
  * deep-stack, deep-colour and glass-panes; below GL4 a SKIP and the refusal
  * of a forced deep (deep_test.c). */

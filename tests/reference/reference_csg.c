@@ -137,6 +137,22 @@ static int primitive_of(const product_index *pi, unsigned object)
 
 #define CAP (-2)
 
+/* Each primitive's state at the ray's start into inside (primitive_count
+ * bytes: in where its exits outnumber its entries along the whole ray),
+ * and whether the product holds the start. */
+static int starts_inside(const product_index *pi, const crossing *x, int n, unsigned char *inside,
+                         int *balance)
+{
+    const ref_csg_product *p = pi->p;
+    int i, k;
+    memset(balance, 0, sizeof *balance * (size_t)p->primitive_count);
+    for (i = 0; i < n; i++)
+        balance[primitive_of(pi, x[i].object)] += x[i].exit ? 1 : -1;
+    for (k = 0; k < p->primitive_count; k++)
+        inside[k] = balance[k] > 0;
+    return eval(p->nodes, p->node_count - 1, inside);
+}
+
 /* The first crossing (of the sorted list, one product's) where the
  * expression turns true; CAP where it holds at the near plane; -1 for
  * none. inside: primitive_count bytes. */
@@ -145,14 +161,7 @@ static int first_surface(const product_index *pi, const crossing *x, int n, unsi
 {
     const ref_csg_product *p = pi->p;
     int i, k;
-    memset(inside, 0, (size_t)p->primitive_count);
-    /* in at the start: more exits than entries along the whole ray */
-    memset(balance, 0, sizeof *balance * (size_t)p->primitive_count);
-    for (i = 0; i < n; i++)
-        balance[primitive_of(pi, x[i].object)] += x[i].exit ? 1 : -1;
-    for (k = 0; k < p->primitive_count; k++)
-        inside[k] = balance[k] > 0;
-    if (eval(p->nodes, p->node_count - 1, inside))
+    if (starts_inside(pi, x, n, inside, balance))
         return CAP; /* holds the near plane */
     for (i = 0; i < n;) {
         int end = i, pick = -1;
@@ -339,4 +348,140 @@ done:
     free(c.list);
     free(mine);
     return ok && rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
+}
+
+/* ---- products casting ------------------------------------------------------ */
+struct ref_csg_cast {
+    product_index *index;
+    int count, most;
+};
+
+void ref_csg_cast_free(struct ref_csg_cast *c)
+{
+    if (!c)
+        return;
+    for (int p = 0; p < c->count; p++)
+        free(c->index[p].of_object);
+    free(c->index);
+    free(c);
+}
+
+int reference_csg_cast(reference *r, const ref_csg_product *products, int count)
+{
+    struct ref_csg_cast *c;
+    if (!r || count < 0 || (count && !products) || (count && !r->csg_primitive))
+        return 0;
+    ref_csg_cast_free(r->csg_cast);
+    r->csg_cast = NULL;
+    if (!count)
+        return 1;
+    for (int p = 0; p < count; p++) {
+        if (products[p].primitive_count < 1 || products[p].node_count < 1)
+            return 0;
+        for (int i = 0; i < products[p].primitive_count; i++)
+            if (products[p].objects[i] < 0 || products[p].objects[i] >= r->object_count ||
+                !r->csg_primitive[products[p].objects[i]])
+                return 0; /* reference_csg_mark first */
+    }
+    c = calloc(1, sizeof *c);
+    if (!c || !(c->index = calloc((size_t)count, sizeof *c->index))) {
+        free(c);
+        return 0;
+    }
+    c->count = count;
+    c->most = 1;
+    for (int p = 0; p < count; p++) {
+        c->index[p].p = &products[p];
+        c->index[p].of_object = malloc(sizeof(int) * (size_t)r->object_count);
+        if (!c->index[p].of_object) {
+            ref_csg_cast_free(c);
+            return 0;
+        }
+        for (int o = 0; o < r->object_count; o++)
+            c->index[p].of_object[o] = -1;
+        for (int i = 0; i < products[p].primitive_count; i++)
+            c->index[p].of_object[products[p].objects[i]] = i;
+        c->most = products[p].primitive_count > c->most ? products[p].primitive_count : c->most;
+    }
+    r->csg_cast = c;
+    return 1;
+}
+
+/* Whether the product indexed by pi holds a point of the sorted crossings'
+ * ray between its origin and `dist`: in at the origin (exits less entries
+ * along the whole ray), or after a crossing nearer than dist. */
+static int holds_before(const product_index *pi, const crossing *x, int n, double dist,
+                        unsigned char *inside, int *balance)
+{
+    const ref_csg_product *p = pi->p;
+    int i, k;
+    if (starts_inside(pi, x, n, inside, balance))
+        return 1;
+    for (i = 0; i < n && x[i].t < dist;) {
+        int end = i;
+        while (end < n && SAME_T(x[end].t, x[i].t))
+            end++;
+        for (k = i; k < end; k++)
+            inside[primitive_of(pi, x[k].object)] = (unsigned char)!x[k].exit;
+        if (eval(p->nodes, p->node_count - 1, inside))
+            return 1;
+        i = end;
+    }
+    return 0;
+}
+
+int ref_csg_blocks(const reference *r, const float org[3], const float dir[3], double dist)
+{
+    const struct ref_csg_cast *cc = r->csg_cast;
+    struct RTCRayHit rh;
+    collector c;
+    crossing *mine = NULL;
+    unsigned char *inside = NULL;
+    int *balance = NULL, blocked = 0;
+    if (!cc)
+        return 0;
+    memset(&c, 0, sizeof c);
+    c.r = r;
+    c.capacity = 4096 > 4 * cc->most ? 4096 : 4 * cc->most;
+    c.list = malloc(sizeof *c.list * (size_t)c.capacity);
+    mine = malloc(sizeof *mine * (size_t)c.capacity);
+    inside = malloc((size_t)cc->most);
+    balance = malloc(sizeof *balance * (size_t)cc->most);
+    if (!c.list || !mine || !inside || !balance) {
+        blocked = -1;
+        goto done;
+    }
+    memset(&rh, 0, sizeof rh);
+    rh.ray.org_x = org[0];
+    rh.ray.org_y = org[1];
+    rh.ray.org_z = org[2];
+    rh.ray.dir_x = dir[0];
+    rh.ray.dir_y = dir[1];
+    rh.ray.dir_z = dir[2];
+    rh.ray.tnear = 0.0f;
+    rh.ray.tfar = INFINITY;
+    rh.ray.mask = 0xffffffffu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcInitIntersectContext(&c.rtc);
+    c.rtc.filter = collect;
+    rtcIntersect1(r->rtc, &c.rtc, &rh);
+    if (c.overflow) {
+        blocked = -1;
+        goto done;
+    }
+    qsort(c.list, (size_t)c.count, sizeof *c.list, by_t);
+    for (int p = 0; p < cc->count && !blocked; p++) {
+        int n = 0;
+        for (int i = 0; i < c.count; i++)
+            if (primitive_of(&cc->index[p], c.list[i].object) >= 0)
+                mine[n++] = c.list[i];
+        n = drop_edge_repeats(mine, n);
+        blocked = holds_before(&cc->index[p], mine, n, dist, inside, balance);
+    }
+done:
+    free(c.list);
+    free(mine);
+    free(inside);
+    free(balance);
+    return blocked;
 }

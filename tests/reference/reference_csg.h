@@ -25,12 +25,21 @@ typedef struct ref_csg_product {
 } ref_csg_product;
 
 /* Marks the products' objects as CSG primitives in r: they no longer show
- * on their own in reference_csg_primary and no longer cast in any
- * visibility query (stin's products receive shadows and cast none). 0 on a
- * bad object index or out of memory. */
+ * on their own in reference_csg_primary and no longer cast on their own in
+ * any visibility query (the products cast where reference_csg_cast says).
+ * 0 on a bad object index or out of memory. */
 #define REF_CSG_CAP_DEPTH (1.0 / 1024.0)
 
 int reference_csg_mark(reference *r, const ref_csg_product *products, int count);
+
+/* The products cast shadows from now on: a visibility ray is blocked where
+ * it passes through a product's solid (every crossing of the ray with its
+ * primitives, in/out per primitive from the whole ray, the expression true
+ * between the ray's origin and the light), as stin's map techniques cast
+ * them; stin's volumes cast none (keep this off for them: count 0). The
+ * products must be marked (reference_csg_mark) and outlive r's use. 0 on
+ * bad arguments or out of memory. */
+int reference_csg_cast(reference *r, const ref_csg_product *products, int count);
 
 /* Primary hits as reference_primary, with the products: the nearest of the
  * first unmarked object hit and each product's surface. A product's hit is

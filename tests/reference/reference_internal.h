@@ -26,6 +26,7 @@ struct reference {
     unsigned soft_samples; /* point samples of an area light, REFERENCE_SOFT_SHADOW_SAMPLES */
     unsigned char *csg_primitive; /* per object, or NULL: 1 for a CSG primitive, which
                                    * neither shows on its own nor casts (reference_csg.h) */
+    struct ref_csg_cast *csg_cast; /* products that cast (reference_csg_cast), or NULL */
 };
 
 /* The inverse transpose of a column-major transform's 3x3, up to scale
@@ -83,5 +84,10 @@ typedef struct ref_csg_context {
     const reference *r;
 } ref_csg_context;
 void ref_csg_context_init(const reference *r, ref_csg_context *ctx);
+/* Whether the ray from org along unit dir passes through a casting product
+ * before distance dist (INFINITY: to infinity): 1, 0, or -1 when the
+ * crossings outgrew the list or memory ran out. */
+int ref_csg_blocks(const reference *r, const float org[3], const float dir[3], double dist);
+void ref_csg_cast_free(struct ref_csg_cast *c);
 
 #endif

@@ -245,7 +245,14 @@ static float visible_off(const reference *r, const ref_hit *hit, const double to
     ref_csg_context ctx;
     ref_csg_context_init(r, &ctx);
     rtcOccluded1(r->rtc, &ctx.rtc, &ray);
-    return ray.tfar < 0.0f ? 0.0f : 1.0f; /* Embree sets tfar to -inf on a hit */
+    if (ray.tfar < 0.0f) /* Embree sets tfar to -inf on a hit */
+        return 0.0f;
+    if (r->csg_cast) {
+        const float o[3] = {ray.org_x, ray.org_y, ray.org_z};
+        const float d[3] = {ray.dir_x, ray.dir_y, ray.dir_z};
+        return ref_csg_blocks(r, o, d, dist) != 0 ? 0.0f : 1.0f; /* an overflow: shadowed */
+    }
+    return 1.0f;
 }
 
 static float visible(const reference *r, const ref_hit *hit, const double to[3], int directional)

@@ -222,6 +222,7 @@ void reference_destroy(reference *r)
     }
     free(r->objects);
     free(r->csg_primitive);
+    ref_csg_cast_free(r->csg_cast);
     free(r);
 }
 
