@@ -394,12 +394,16 @@ static void unshadowed_lights(stin_context *ctx, const stin__path *path)
 }
 
 /* Blended draws. depth-peel: layer by layer, front to back, each lit by the
- * same stages as the opaque draws (shadowed when the frame is; vdsm's
- * position buffer holds the opaque surfaces only, so under vdsm the layers
- * are lit unshadowed, said once), then composited over the frame. sorted:
- * per object far to near, lit unshadowed. */
+ * same stages as the opaque draws (shadowed when the frame is), then
+ * composited over the frame. vdsm's position buffer is made again from each
+ * layer (the layer's points, depth EQUAL against its depth) before the
+ * layer's lights, so its per-light masks are the layer's; afterwards the
+ * opaque surfaces go back into it where the visibility export still reads
+ * it (STIN_DEBUG_PEEL_VDSM_UNSHADOWED: layers lit unshadowed instead).
+ * sorted: per object far to near, lit unshadowed. */
 static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
 {
+    int vdsm_layers;
     if (ctx->peel.ready && (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY))
         return;
     if (!stin__peel_begin(ctx, path)) {
@@ -407,17 +411,21 @@ static void stage_blended(stin_context *ctx, const stin__path *path, int shadowe
         path->batches(ctx, STIN__BLENDED);
         return;
     }
-    if (shadowed && ctx->shadow == &stin__shadow_vdsm) {
+    if (shadowed && ctx->shadow == &stin__shadow_vdsm &&
+        (ctx->desc.debug_flags & STIN_DEBUG_PEEL_VDSM_UNSHADOWED)) {
         if (!ctx->peel.said_vdsm)
-            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                      "depth-peel: vdsm shadows only the opaque surfaces; peeled layers are "
-                      "lit unshadowed");
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "depth-peel: STIN_DEBUG_PEEL_VDSM_UNSHADOWED: peeled layers are lit "
+                      "unshadowed under vdsm");
         ctx->peel.said_vdsm = 1;
         shadowed = 0;
     }
+    vdsm_layers = shadowed && ctx->shadow == &stin__shadow_vdsm;
     while (stin__peel_layer_begin(ctx)) {
         path->ambient(ctx, STIN__OPAQUE, 0); /* the layer's depth, ambient and opacity */
         if (stin__peel_layer_lights(ctx)) {
+            if (vdsm_layers)
+                stin__vdsm_buffer_layer(ctx); /* the layer is the receiver now */
             if (shadowed)
                 stage_lights(ctx, path, 0);
             else
@@ -426,6 +434,8 @@ static void stage_blended(stin_context *ctx, const stin__path *path, int shadowe
         stin__peel_layer_end(ctx);
     }
     stin__peel_end(ctx);
+    if (vdsm_layers && ctx->frame.export_visibility)
+        stin__vdsm_buffer_opaque(ctx, path);
 }
 
 /* The frame plan. Stages: light pre-passes -> target -> depth and ambient ->

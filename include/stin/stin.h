@@ -822,6 +822,10 @@ typedef struct stin_desc {
  * (the blended ones still cast shadows as the techniques say), the image
  * the layers are composited over */
 #define STIN_DEBUG_PEEL_OPAQUE_ONLY 8192u
+/* depth-peel under vdsm: the peeled layers lit unshadowed, as before vdsm
+ * shadowed them (its position buffer made from each layer); a test that
+ * the per-layer masks matter */
+#define STIN_DEBUG_PEEL_VDSM_UNSHADOWED 2097152u
 
 typedef struct stin_context stin_context;
 

@@ -411,54 +411,107 @@ static void test_cap(const peel_case *c, const composite_ref *ref, const char *n
     free(f.rgba);
 }
 
-static void test_shadowed(const peel_case *c, stin_technique shadows, stin_technique translucent,
-                          const composite_ref *ref, const char *name)
+/* The shadowed frame of transparency technique `transparency` against ref:
+ * its transparent part over the technique's own opaque image
+ * (STIN_DEBUG_PEEL_OPAQUE_ONLY) and as a whole; 1 when both match with
+ * enough pixels of a pane in shadow. */
+typedef struct shadowed_run {
+    match part, whole;
+    int ran, ok;
+    char err[512];
+} shadowed_run;
+
+static void shadowed_frame(const peel_case *c, const frame_opts *base, const composite_ref *ref,
+                           shadowed_run *out)
 {
-    frame_opts fo = {STIN_TECH_NONE, STIN_TECH_TRANSPARENCY_PEEL, 0, 0, STIN_TECH_NONE};
+    frame_opts fo = *base;
     frame_out f, behind;
-    char err[256];
-    match m, whole;
-    fo.shadows = shadows;
-    fo.translucent = translucent;
-    fo.debug_flags = STIN_DEBUG_PEEL_OPAQUE_ONLY; /* what the layers go over */
-    if (!render(c, c->s, &fo, &behind, err, sizeof err)) {
-        report(c->r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(shadows), err);
+    memset(out, 0, sizeof *out);
+    fo.debug_flags = base->debug_flags | STIN_DEBUG_PEEL_OPAQUE_ONLY; /* what the layers go over */
+    if (!render(c, c->s, &fo, &behind, out->err, sizeof out->err))
         return;
-    }
-    fo.debug_flags = 0;
-    if (!render(c, c->s, &fo, &f, err, sizeof err)) {
-        report(c->r, "FAIL", name, "%s", err);
+    fo.debug_flags = base->debug_flags;
+    if (!render(c, c->s, &fo, &f, out->err, sizeof out->err)) {
         free(behind.rgba);
+        out->ran = -1;
         return;
     }
-    if (f.choice[STIN_FEATURE_TRANSPARENCY].technique != STIN_TECH_TRANSPARENCY_PEEL ||
-        (translucent != STIN_TECH_NONE &&
-         f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique != translucent)) {
-        report(c->r, "FAIL", name, "depth-peel or %s fell back: %s %s",
-               stin_technique_name(translucent), f.choice[STIN_FEATURE_TRANSPARENCY].reason,
-               f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason);
-        free(behind.rgba);
-        free(f.rgba);
-        return;
+    out->ran = 1;
+    if (f.choice[STIN_FEATURE_SHADOWS].technique != base->shadows) {
+        snprintf(out->err, sizeof out->err, "%s fell back to %s: %s",
+                 stin_technique_name(base->shadows),
+                 stin_technique_name(f.choice[STIN_FEATURE_SHADOWS].technique),
+                 f.choice[STIN_FEATURE_SHADOWS].reason);
+        out->ran = 0; /* the profile lacks it: a SKIP */
+    } else if (f.choice[STIN_FEATURE_TRANSPARENCY].technique != base->transparency ||
+        (base->translucent != STIN_TECH_NONE &&
+         f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique != base->translucent)) {
+        snprintf(out->err, sizeof out->err, "%s or %s fell back: %s %s",
+                 stin_technique_name(base->transparency),
+                 stin_technique_name(base->translucent),
+                 f.choice[STIN_FEATURE_TRANSPARENCY].reason,
+                 f.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].reason);
+        out->ran = -1;
+    } else {
+        compare(c, &f, ref, &behind, 2, 0, &out->part);
+        compare(c, &f, ref, NULL, 2, 0, &out->whole);
+        out->ok = matches_at_least(&out->part, MIN_SHADOWED_COMPARED) &&
+                  matches_at_least(&out->whole, MIN_SHADOWED_COMPARED) &&
+                  out->part.shadowed_pane >= MIN_SHADOWED_PANE;
     }
-    compare(c, &f, ref, &behind, 2, 0, &m);
-    compare(c, &f, ref, NULL, 2, 0, &whole);
-    report(c->r,
-           matches_at_least(&m, MIN_SHADOWED_COMPARED) &&
-                   matches_at_least(&whole, MIN_SHADOWED_COMPARED) &&
-                   m.shadowed_pane >= MIN_SHADOWED_PANE
-               ? "PASS"
-               : "FAIL",
-           name,
-           "%s: shadowed layers over the technique's own opaque image within 3/255 on %.3f%% "
-           "of %ld pixels (max %.4f, mean %.5f), %ld of them a pane in shadow (need 99.5%% and "
-           ">= %d, of >= %d); the whole frame against the reference %.3f%% (need 99.5%%)",
-           stin_technique_name(shadows),
-           m.compared ? 100.0 * (1.0 - (double)m.over / m.compared) : 0.0, m.compared, m.worst,
-           m.mean, m.shadowed_pane, MIN_SHADOWED_PANE, MIN_SHADOWED_COMPARED,
-           whole.compared ? 100.0 * (1.0 - (double)whole.over / whole.compared) : 0.0);
     free(f.rgba);
     free(behind.rgba);
+}
+
+static double percent(const match *m)
+{
+    return m->compared ? 100.0 * (1.0 - (double)m->over / m->compared) : 0.0;
+}
+
+/* Shadows technique `shadows` (and `translucent`) under `transparency`;
+ * with `broken` (a debug flag that leaves the transparent surfaces
+ * unshadowed) the same comparison must fail, reported as name-broken. */
+static void test_shadowed(const peel_case *c, stin_technique shadows, stin_technique translucent,
+                          stin_technique transparency, uint32_t broken, const composite_ref *ref,
+                          const char *name)
+{
+    frame_opts fo = {STIN_TECH_NONE, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
+    shadowed_run r;
+    char broken_name[224];
+    fo.shadows = shadows;
+    fo.translucent = translucent;
+    fo.transparency = transparency;
+    shadowed_frame(c, &fo, ref, &r);
+    if (r.ran == 0) {
+        report(c->r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(shadows),
+               r.err);
+        return;
+    }
+    if (r.ran < 0) {
+        report(c->r, "FAIL", name, "%s", r.err);
+        return;
+    }
+    report(c->r, r.ok ? "PASS" : "FAIL", name,
+           "%s, %s: shadowed transparent surfaces over the technique's own opaque image within "
+           "3/255 on %.3f%% of %ld pixels (max %.4f, mean %.5f), %ld of them a pane in shadow "
+           "(need 99.5%% and >= %d, of >= %d); the whole frame against the reference %.3f%% "
+           "(need 99.5%%)", stin_technique_name(transparency), stin_technique_name(shadows),
+           percent(&r.part), r.part.compared, r.part.worst, r.part.mean, r.part.shadowed_pane,
+           MIN_SHADOWED_PANE, MIN_SHADOWED_COMPARED, percent(&r.whole));
+    if (!broken)
+        return;
+    snprintf(broken_name, sizeof broken_name, "%s-broken", name);
+    fo.debug_flags = broken;
+    shadowed_frame(c, &fo, ref, &r);
+    if (r.ran <= 0) {
+        report(c->r, "FAIL", broken_name, "%s", r.err);
+        return;
+    }
+    report(c->r, !r.ok ? "PASS" : "FAIL", broken_name,
+           "transparent surfaces left unshadowed (debug flag %u): within 3/255 on only %.3f%% "
+           "of %ld pixels (max %.4f), the whole frame %.3f%%: the test must fail here",
+           (unsigned)broken, percent(&r.part), r.part.compared, r.part.worst,
+           percent(&r.whole));
 }
 
 static void peel_scene(run *r, stin_tier tier, const char *path, const char *scene_name)
@@ -531,7 +584,8 @@ static void peel_scene(run *r, stin_tier tier, const char *path, const char *sce
         for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++) {
             snprintf(name, sizeof name, "%s/%s/peel-shadowed-%s", tn, scene_name,
                      stin_technique_name(shadows[i]));
-            test_shadowed(&c, shadows[i], STIN_TECH_NONE, &shadowed, name);
+            test_shadowed(&c, shadows[i], STIN_TECH_NONE, STIN_TECH_TRANSPARENCY_PEEL, 0,
+                          &shadowed, name);
         }
         /* deep: the layers get coloured shadows; the composite's layers are
          * lit through the transmittance */
@@ -544,12 +598,24 @@ static void peel_scene(run *r, stin_tier tier, const char *path, const char *sce
             if (!reference_of(&c, REFERENCE_RENDER_TRANSMITTANCE, &shadowed))
                 report(r, "FAIL", name, "transmittance reference composite failed");
             else
-                test_shadowed(&c, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_TRANSLUCENT_DEEP, &shadowed,
-                              name);
+                test_shadowed(&c, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_TRANSLUCENT_DEEP,
+                              STIN_TECH_TRANSPARENCY_PEEL, 0, &shadowed, name);
         }
+        /* vdsm: the position buffer made from each layer; without it
+         * (STIN_DEBUG_PEEL_VDSM_UNSHADOWED) the panes in shadow are lit */
         snprintf(name, sizeof name, "%s/%s/peel-shadowed-vdsm", tn, scene_name);
-        report(r, "SKIP", name, "vdsm shadows the opaque surfaces only: its position buffer "
-                                "holds them, so peeled layers are lit unshadowed (stin.h)");
+        if (tier != STIN_TIER_GL4) {
+            report(r, "SKIP", name, "vdsm is GL4 only");
+        } else {
+            reference_free(&shadowed);
+            memset(&shadowed, 0, sizeof shadowed);
+            if (!reference_of(&c, REFERENCE_RENDER_SHADOWED, &shadowed))
+                report(r, "FAIL", name, "shadowed reference composite failed");
+            else
+                test_shadowed(&c, STIN_TECH_SHADOWS_VDSM, STIN_TECH_NONE,
+                              STIN_TECH_TRANSPARENCY_PEEL, STIN_DEBUG_PEEL_VDSM_UNSHADOWED,
+                              &shadowed, name);
+        }
     }
 done:
     reference_free(&unshadowed);
