@@ -393,6 +393,40 @@ static void unshadowed_lights(stin_context *ctx, const stin__path *path)
     }
 }
 
+/* sorted, shadowed: one light's pass on the blended draw being lit. */
+static void shade_sorted(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                         float weight)
+{
+    (void)weight;
+    path->blended_one(ctx, ctx->peel.sorted_draw, l);
+}
+
+/* sorted in a shadowed frame, where the technique tests a map per fragment:
+ * each blended draw far to near, whole: its ambient pass over the frame
+ * (dst (1 - a) + a ambient), then per light the technique's test around an
+ * added pass at its opacity (+ a light_i). A point light's faces (map-pcf,
+ * map-depth) and deep or colour maps are drawn again per draw. */
+static void sorted_shadowed(stin_context *ctx, const stin__path *path)
+{
+    uint32_t i, li;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (d->material.color[3] >= 1.0f)
+            continue;
+        ctx->peel.sorted_draw = d;
+        path->blended_one(ctx, d, NULL);
+        for (li = 0; li < ctx->light_count; li++) {
+            stin__translucent_light(ctx, li);
+            if (stin__sorted_light_shadowed(ctx, li))
+                ctx->shadow->light(ctx, path, li, shade_sorted);
+            else
+                shade_sorted(ctx, path, &ctx->lights[li], 1.0f);
+            stin__translucent_light_done(ctx);
+        }
+    }
+    ctx->peel.sorted_draw = NULL;
+}
+
 /* Blended draws. depth-peel: layer by layer, front to back, each lit by the
  * same stages as the opaque draws (shadowed when the frame is), then
  * composited over the frame. vdsm's position buffer is made again from each
@@ -400,15 +434,20 @@ static void unshadowed_lights(stin_context *ctx, const stin__path *path)
  * layer's lights, so its per-light masks are the layer's; afterwards the
  * opaque surfaces go back into it where the visibility export still reads
  * it (STIN_DEBUG_PEEL_VDSM_UNSHADOWED: layers lit unshadowed instead).
- * sorted: per object far to near, lit unshadowed. */
+ * sorted: per object far to near, lit and shadowed light by light where
+ * the technique tests a map per fragment (sorted_shadowed), else in the
+ * path's light batches unshadowed (logged by stin__sorted_shadowed). */
 static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
 {
     int vdsm_layers;
-    if (ctx->peel.ready && (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY))
+    if (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY)
         return;
     if (!stin__peel_begin(ctx, path)) {
         stin__sorted_frame(ctx);
-        path->batches(ctx, STIN__BLENDED);
+        if (shadowed && stin__sorted_shadowed(ctx))
+            sorted_shadowed(ctx, path);
+        else
+            path->batches(ctx, STIN__BLENDED);
         return;
     }
     if (shadowed && ctx->shadow == &stin__shadow_vdsm &&

@@ -253,6 +253,10 @@ void stin__map_texgen(stin_context *ctx, const float *rows, int with_r);
 /* A projected 2D unit back off: texgen S, T, Q and the texture disabled,
  * nothing bound, environment MODULATE; unit 0 active after. */
 void stin__map_unit_off(stin_context *ctx, int unit);
+/* map-depth / map-combine: 1 if light li is shadowed by a map test on the
+ * lit pass this frame (its map, or a point light's faces), 0 where its
+ * shadows are stencil volumes or none. */
+int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li);
 
 /* Light cameras for shadow maps (shadow_light_camera.c). */
 void stin__light_look_along(float m[16], const float eye[3], const float dir[3]);
