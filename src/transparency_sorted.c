@@ -12,14 +12,18 @@
  * drawn whole has no depth of its own to count or mask against. */
 #include "internal.h"
 
+static int frame_blended(const stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++)
+        if (ctx->draws[i].material.color[3] < 1.0f)
+            return 1;
+    return 0;
+}
+
 void stin__sorted_frame(stin_context *ctx)
 {
-    uint32_t i, blended = 0;
-    if (ctx->peel.said_sorted)
-        return;
-    for (i = 0; i < ctx->draw_count; i++)
-        blended += ctx->draws[i].material.color[3] < 1.0f;
-    if (!blended)
+    if (ctx->peel.said_sorted || !frame_blended(ctx))
         return;
     ctx->peel.said_sorted = 1;
     stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
@@ -30,8 +34,8 @@ void stin__sorted_frame(stin_context *ctx)
 int stin__sorted_shadowed(stin_context *ctx)
 {
     const stin__shadow_technique *t = ctx->shadow;
-    if (ctx->desc.debug_flags & STIN_DEBUG_SORTED_UNSHADOWED)
-        return 0;
+    if ((ctx->desc.debug_flags & STIN_DEBUG_SORTED_UNSHADOWED) || !frame_blended(ctx))
+        return 0; /* (nothing to say in a frame without blended draws) */
     if (t == &stin__shadow_map_pcf || t == &stin__shadow_map_fixed)
         return 1;
     if (!ctx->peel.said_sorted_unshadowed)
