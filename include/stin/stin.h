@@ -87,6 +87,9 @@
  * bytes a triangle of GL memory). STIN_DEBUG_VDSM_NO_SM and _NO_DC turn the
  * steps off. Blended casters
  * also draw their own face (what is behind them is in the position buffer).
+ * Under depth-peel each peeled layer gets the buffer drawn from its own
+ * surface first (see Transparency), so the layers' masks, and their
+ * pyramids' receivers, are the layer's.
  * Area lights are shadowed from their centre (logged once). Cost: every
  * triangle of every draw once per light through the geometry shader (twice
  * more through the pyramid's light pass), plus the screen area of its grown

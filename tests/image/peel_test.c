@@ -5,7 +5,7 @@
  * shaded, under-blended front to back), on glass-panes and the scenes of
  * tests/scenes/peel/ beside it (panes: three overlapping single-surface
  * panes under an opaque block; cross: two panes through each other;
- * sorted: panes under a directional light, for the sorted tests alone):
+ * sorted: panes under two directional lights, for the sorted tests alone):
  *   beauty          shadows off: the beauty (and depth-peel's alpha: 1 - T
  *                   (1 - alpha behind)) within 3/255 of the unshadowed
  *                   composite (8-bit layers and composite: a rounding per
@@ -45,7 +45,7 @@
  *                   position buffer is drawn from each layer; -broken:
  *                   STIN_DEBUG_PEEL_VDSM_UNSHADOWED (layers lit
  *                   unshadowed) must fail;
- *   sorted-shadowed-T  peel/sorted (the panes under a directional light):
+ *   sorted-shadowed-T  peel/sorted (the panes under two directional lights):
  *                   "sorted" forced under map technique T (map-pcf on
  *                   GL2/GL4; map-depth, map-combine on GL1) against the
  *                   shadowed composite as shadowed-T, at T's usual bound
