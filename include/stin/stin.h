@@ -634,7 +634,8 @@ const char *stin_feature_name(stin_feature f);
  *   on opaque surfaces; the opaque surfaces go back into it afterwards when
  *   the frame exports its visibility. Cost per peeled layer and light: one
  *   position pass over the blended draws plus vdsm's mask passes (pyramid,
- *   facing, shadow polygons of every draw); STIN_DEBUG_PEEL_VDSM_UNSHADOWED
+ *   facing, shadow polygons of every draw): about 3x what volumes cost for
+ *   the same layers on llvmpipe (docs/benchmarks.md); STIN_DEBUG_PEEL_VDSM_UNSHADOWED
  *   lights the layers unshadowed instead (the behaviour before).
  *   The lit layers are composited front to back under one another
  *   (C += T a c, T *= 1 - a, from C = 0, T = 1; c clamped to 1 as the
