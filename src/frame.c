@@ -393,31 +393,78 @@ static void unshadowed_lights(stin_context *ctx, const stin__path *path)
     }
 }
 
+/* sorted, shadowed: one light's pass on the blended draw being lit. */
+static void shade_sorted(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                         float weight)
+{
+    (void)weight;
+    path->blended_one(ctx, ctx->peel.sorted_draw, l);
+}
+
+/* sorted in a shadowed frame, where the technique tests a map per fragment:
+ * each blended draw far to near, whole: its ambient pass over the frame
+ * (dst (1 - a) + a ambient), then per light the technique's test around an
+ * added pass at its opacity (+ a light_i). A point light's faces (map-pcf,
+ * map-depth) and deep or colour maps are drawn again per draw. */
+static void sorted_shadowed(stin_context *ctx, const stin__path *path)
+{
+    uint32_t i, li;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (d->material.color[3] >= 1.0f)
+            continue;
+        ctx->peel.sorted_draw = d;
+        path->blended_one(ctx, d, NULL);
+        for (li = 0; li < ctx->light_count; li++) {
+            stin__translucent_light(ctx, li);
+            if (stin__sorted_light_shadowed(ctx, li))
+                ctx->shadow->light(ctx, path, li, shade_sorted);
+            else
+                shade_sorted(ctx, path, &ctx->lights[li], 1.0f);
+            stin__translucent_light_done(ctx);
+        }
+    }
+    ctx->peel.sorted_draw = NULL;
+}
+
 /* Blended draws. depth-peel: layer by layer, front to back, each lit by the
- * same stages as the opaque draws (shadowed when the frame is; vdsm's
- * position buffer holds the opaque surfaces only, so under vdsm the layers
- * are lit unshadowed, said once), then composited over the frame. sorted:
- * per object far to near, lit unshadowed. */
+ * same stages as the opaque draws (shadowed when the frame is), then
+ * composited over the frame. vdsm's position buffer is made again from each
+ * layer (the layer's points, depth EQUAL against its depth) before the
+ * layer's lights, so its per-light masks are the layer's; afterwards the
+ * opaque surfaces go back into it where the visibility export still reads
+ * it (STIN_DEBUG_PEEL_VDSM_UNSHADOWED: layers lit unshadowed instead).
+ * sorted: per object far to near, lit and shadowed light by light where
+ * the technique tests a map per fragment (sorted_shadowed), else in the
+ * path's light batches unshadowed (logged by stin__sorted_shadowed). */
 static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
 {
-    if (ctx->peel.ready && (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY))
+    int vdsm_layers;
+    if (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY)
         return;
     if (!stin__peel_begin(ctx, path)) {
         stin__sorted_frame(ctx);
-        path->batches(ctx, STIN__BLENDED);
+        if (shadowed && stin__sorted_shadowed(ctx))
+            sorted_shadowed(ctx, path);
+        else
+            path->batches(ctx, STIN__BLENDED);
         return;
     }
-    if (shadowed && ctx->shadow == &stin__shadow_vdsm) {
+    if (shadowed && ctx->shadow == &stin__shadow_vdsm &&
+        (ctx->desc.debug_flags & STIN_DEBUG_PEEL_VDSM_UNSHADOWED)) {
         if (!ctx->peel.said_vdsm)
-            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                      "depth-peel: vdsm shadows only the opaque surfaces; peeled layers are "
-                      "lit unshadowed");
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "depth-peel: STIN_DEBUG_PEEL_VDSM_UNSHADOWED: peeled layers are lit "
+                      "unshadowed under vdsm");
         ctx->peel.said_vdsm = 1;
         shadowed = 0;
     }
+    vdsm_layers = shadowed && ctx->shadow == &stin__shadow_vdsm;
     while (stin__peel_layer_begin(ctx)) {
         path->ambient(ctx, STIN__OPAQUE, 0); /* the layer's depth, ambient and opacity */
         if (stin__peel_layer_lights(ctx)) {
+            if (vdsm_layers)
+                stin__vdsm_buffer_layer(ctx); /* the layer is the receiver now */
             if (shadowed)
                 stage_lights(ctx, path, 0);
             else
@@ -426,6 +473,8 @@ static void stage_blended(stin_context *ctx, const stin__path *path, int shadowe
         stin__peel_layer_end(ctx);
     }
     stin__peel_end(ctx);
+    if (vdsm_layers && ctx->frame.export_visibility)
+        stin__vdsm_buffer_opaque(ctx, path);
 }
 
 /* The frame plan. Stages: light pre-passes -> target -> depth and ambient ->

@@ -93,6 +93,12 @@ typedef struct stin__path {
     void (*geometry_begin)(stin_context *ctx);
     void (*geometry)(stin_context *ctx, const stin__draw *d);
     void (*geometry_end)(stin_context *ctx);
+    /* One blended draw of "sorted" lit pass by pass, so the shadow technique
+     * can test each light (transparency_sorted.c): light NULL is its ambient
+     * pass over the frame (SRC_ALPHA / ONE_MINUS_SRC_ALPHA, depth LESS with
+     * writes), else that light added at the draw's opacity with depth EQUAL,
+     * the technique's test applying as in path->lit. */
+    void (*blended_one)(stin_context *ctx, const stin__draw *d, const stin_light_desc *light);
 } stin__path;
 
 stin_result stin__fixed_init(stin_context *ctx);

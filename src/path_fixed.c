@@ -257,6 +257,33 @@ static void fixed_lit(stin_context *ctx, const stin_light_desc *light)
     ctx->stats.passes++;
 }
 
+/* A light's pass adds ONE / ONE with the light's colour times the draw's
+ * opacity: the fragment's alpha is not the opacity any more once
+ * map-combine's test has replaced it with its comparison (the albedo
+ * texture's alpha is not applied to these passes). */
+static void fixed_blended_one(stin_context *ctx, const stin__draw *d,
+                              const stin_light_desc *light)
+{
+    GL_ENABLE(ctx, GL_LIGHTING);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view);
+    if (light) {
+        stin_light_desc l = *light;
+        l.intensity *= d->material.color[3];
+        set_light(ctx, 0, &l);
+        disable_lights(ctx, 1);
+        scene_ambient(ctx, 0);
+        pass_state(ctx, 1, 0);
+    } else {
+        disable_lights(ctx, 0);
+        scene_ambient(ctx, 1);
+        pass_state(ctx, 0, 1);
+    }
+    set_material(ctx, &d->material);
+    draw_mesh(ctx, d);
+    ctx->stats.passes++;
+}
+
 static void fixed_flat(stin_context *ctx, int which, const float color[4],
                        const stin_light_desc *light)
 {
@@ -385,6 +412,7 @@ const stin__path *stin__fixed_path(void)
                                     fixed_lit,          fixed_flat,        fixed_volume_begin,
                                     fixed_volume_draw,  fixed_volume_end,  fixed_batches,
                                     fixed_normals,      fixed_depth,       NULL,
-                                    fixed_geometry_begin, draw_mesh,       fixed_geometry_end};
+                                    fixed_geometry_begin, draw_mesh,       fixed_geometry_end,
+                                    fixed_blended_one};
     return &path;
 }

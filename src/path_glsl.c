@@ -628,13 +628,27 @@ static void glsl_geometry(stin_context *ctx, const stin__draw *d)
 
 static void glsl_geometry_end(stin_context *ctx) { ctx->bound_mesh = 0xffffffffu; }
 
+/* The light's passes add SRC_ALPHA / ONE: the lit program's alpha is the
+ * draw's opacity (times its albedo texture's). */
+static void glsl_blended_one(stin_context *ctx, const stin__draw *d, const stin_light_desc *light)
+{
+    const stin__program *p = use(ctx, STIN__PROG_LIT), *q;
+    upload_lights(ctx, p, light, light ? 1 : 0, light == NULL);
+    pass_state(ctx, light != NULL, 1);
+    q = lit_for_draw(ctx, d);
+    set_material(ctx, q, &d->material);
+    submit(ctx, q, d);
+    ctx->stats.passes++;
+}
+
 const stin__path *stin__glsl_path(void)
 {
     static const stin__path path = {glsl_begin,       glsl_end,        glsl_ambient,
                                     glsl_lit,         glsl_flat,       glsl_volume_begin,
                                     glsl_volume_draw, glsl_volume_end, glsl_batches,
                                     glsl_normals,     glsl_depth,      glsl_lit_lights,
-                                    glsl_geometry_begin, glsl_geometry, glsl_geometry_end};
+                                    glsl_geometry_begin, glsl_geometry, glsl_geometry_end,
+                                    glsl_blended_one};
     return &path;
 }
 

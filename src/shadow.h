@@ -136,7 +136,7 @@ typedef struct stin__vdsm_state {
     stin__displace_locs pos_displace, poly_displace; /* their displacement chunks */
     float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
     int ready;              /* this frame's position buffer is drawn */
-    int said_area, said_failed;
+    int said_area, said_failed, said_layer;
     stin__vdsm_pyramid pyramid;
 } stin__vdsm_state;
 
@@ -144,6 +144,11 @@ typedef struct stin__vdsm_state {
  * buffer_csg adds the CSG products' surfaces after their resolve. */
 void stin__vdsm_buffer_draw(stin_context *ctx);
 void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path);
+/* A peeled layer's surface as the buffer (during the layer's lights, its
+ * depth texture on ctx->draw_fbo), and the opaque surfaces again after the
+ * layers (shadow_vdsm_buffer.c). */
+void stin__vdsm_buffer_layer(stin_context *ctx);
+void stin__vdsm_buffer_opaque(stin_context *ctx, const stin__path *path);
 void stin__vdsm_buffer_release(stin_context *ctx);
 /* The pyramid (shadow_vdsm_pyramid.c): programs and textures at set-up
  * (a failure leaves SM and DC off, logged); per light, with the screen mask
@@ -248,6 +253,10 @@ void stin__map_texgen(stin_context *ctx, const float *rows, int with_r);
 /* A projected 2D unit back off: texgen S, T, Q and the texture disabled,
  * nothing bound, environment MODULATE; unit 0 active after. */
 void stin__map_unit_off(stin_context *ctx, int unit);
+/* map-depth / map-combine: 1 if light li is shadowed by a map test on the
+ * lit pass this frame (its map, or a point light's faces), 0 where its
+ * shadows are stencil volumes or none. */
+int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li);
 
 /* Light cameras for shadow maps (shadow_light_camera.c). */
 void stin__light_look_along(float m[16], const float eye[3], const float dir[3]);

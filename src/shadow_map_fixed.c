@@ -630,6 +630,13 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
     stin__volume_light_end(ctx);
 }
 
+int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li)
+{
+    return li < STIN__MAX_LIGHTS &&
+           (ctx->map_fixed.valid[li] ||
+            (ctx->lights[li].type == STIN_LIGHT_POINT && ctx->map_fixed.faces));
+}
+
 const stin__shadow_technique stin__shadow_map_fixed = {
     STIN_TECH_SHADOWS_MAP_DEPTH, NULL, fixed_init, fixed_release, fixed_prepare, fixed_prepass,
     fixed_light, NULL, NULL,

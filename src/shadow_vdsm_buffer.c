@@ -215,3 +215,84 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     ctx->stats.passes++;
 }
+
+/* The depth texture a peeled layer is lit against: the depth attachment of
+ * the layer's framebuffer (ctx->draw_fbo, bound during its lights), asked
+ * of GL so any layer source (depth-peel, or another peeler behind the same
+ * layer interface) serves; 0 when it is no texture. */
+static GLuint layer_depth(stin_context *ctx)
+{
+    GLint type = GL_NONE, name = 0;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    GL(ctx, GetFramebufferAttachmentParameteriv)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                                 GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    if (type == GL_TEXTURE)
+        GL(ctx, GetFramebufferAttachmentParameteriv)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT,
+                                                     GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME,
+                                                     &name);
+    return type == GL_TEXTURE && name > 0 ? (GLuint)name : 0;
+}
+
+/* A peeled layer's surface as the buffer (frame.c, before the layer's
+ * lights): the blended draws depth EQUAL against the layer's own depth
+ * texture, attached here in place of the buffer's depth, without writing
+ * it. The position program transforms exactly as the lit programs that
+ * drew the layer (invariant gl_Position), so each pixel gets the layer's
+ * point and no other, with no copy of the depth through gl_FragDepth (whose
+ * rounding into a depth format differs from the rasteriser's). Pixels the
+ * layer leaves empty hold w 0: vdsm tests nothing there. The light's
+ * pyramid follows (its receivers are read from this buffer per light). */
+void stin__vdsm_buffer_layer(stin_context *ctx)
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    const int *vp = ctx->frame.viewport;
+    stin__pass_state ps = stin__pass_defaults;
+    GLuint depth;
+    uint32_t i;
+    if (!v->fbo)
+        return;
+    v->ready = 0;
+    depth = layer_depth(ctx);
+    if (!depth) {
+        if (!v->said_layer)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "vdsm: a peeled layer's depth is no texture: its lights are drawn "
+                      "unshadowed");
+        v->said_layer = 1;
+        return;
+    }
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
+    ps.depth_write = 0; /* the layer's depth stays as it is */
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
+    GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
+    ps.depth_test = 1;
+    ps.depth_func = GL_EQUAL;
+    stin__pass_apply(ctx, &ps);
+    use_position_program(ctx);
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (d->material.color[3] < 1.0f)
+            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, d);
+    }
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, v->depth,
+                                  0);
+    ctx->bound_mesh = 0xffffffffu;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
+    ctx->stats.passes++;
+    v->ready = 1;
+}
+
+/* After the layers: the opaque surfaces into the buffer again, for the
+ * stages that still read it (the visibility export's masks). */
+void stin__vdsm_buffer_opaque(stin_context *ctx, const stin__path *path)
+{
+    const int *vp = ctx->frame.viewport;
+    stin__vdsm_buffer_draw(ctx);
+    stin__vdsm_buffer_csg(ctx, path);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
+}

@@ -3,8 +3,9 @@
  * "depth-peel" (transparency_peel.c) peels them front to back, one layer of
  * surfaces per pass, and lights each layer as the frame lights its opaque
  * surfaces (the frame plan runs its lighting stages once per layer, the
- * layer standing in for the opaque draws); "sorted"
- * (transparency_sorted.c) draws them whole, per object far to near. */
+ * layer standing in for the opaque draws; under vdsm its position buffer
+ * is made from each layer first); "sorted" (transparency_sorted.c) draws
+ * them whole, per object far to near, shadowed under the map techniques. */
 #ifndef STIN_TRANSPARENCY_H
 #define STIN_TRANSPARENCY_H
 
@@ -33,6 +34,9 @@ typedef struct stin__peel_state {
     int result;            /* accum[result] holds the composite */
     GLuint frame_fbo;      /* the frame's target, bound back at the end */
     int said_vdsm, said_failed, said_sorted;
+    /* "sorted", shadowed: the blended draw being lit and what was said */
+    const stin__draw *sorted_draw;
+    int said_sorted_unshadowed, said_sorted_light;
 } stin__peel_state;
 
 /* The lit programs' chunk after the others ("peel.glsl") when depth-peel is
@@ -72,5 +76,14 @@ void stin__peel_end(struct stin_context *ctx);
 /* "sorted": once per context, at the first frame with blended draws, the
  * warning that it is exact only for separate convex objects. */
 void stin__sorted_frame(struct stin_context *ctx);
+/* "sorted" in a shadowed frame: 1 where the shadows technique tests a map
+ * per fragment in the lit pass (map-pcf; GL1's map-depth and map-combine),
+ * so each blended draw can be lit light by light with its shadows; 0 (said
+ * once, with the reason) where it cannot: volumes and screen masks (vdsm)
+ * hold the nearest opaque surface's visibility, not each object's. */
+int stin__sorted_shadowed(struct stin_context *ctx);
+/* Whether light li's pass on a sorted draw gets the technique's test (GL1
+ * map techniques: a point light without faces has volumes; said once). */
+int stin__sorted_light_shadowed(struct stin_context *ctx, uint32_t li);
 
 #endif

@@ -87,6 +87,9 @@
  * bytes a triangle of GL memory). STIN_DEBUG_VDSM_NO_SM and _NO_DC turn the
  * steps off. Blended casters
  * also draw their own face (what is behind them is in the position buffer).
+ * Under depth-peel each peeled layer gets the buffer drawn from its own
+ * surface first (see Transparency), so the layers' masks, and their
+ * pyramids' receivers, are the layer's.
  * Area lights are shadowed from their centre (logged once). Cost: every
  * triangle of every draw once per light through the geometry shader (twice
  * more through the pyramid's light pass), plus the screen area of its grown
@@ -624,8 +627,16 @@ const char *stin_feature_name(stin_feature f);
  *   stages against the layer's own depth and stencil, so it receives the
  *   shadows technique's shadows (volume, map-pcf: exact as on opaque
  *   surfaces; "deep": the coloured transmittance) and is lit unshadowed in
- *   an unshadowed frame. Exception: under "vdsm" (whose position buffer
- *   holds the opaque surfaces) the layers are lit unshadowed, logged once.
+ *   an unshadowed frame. Under "vdsm" the position buffer is drawn again
+ *   from each layer before its lights (the blended draws depth EQUAL
+ *   against the layer's own depth texture: the layer's points exactly), so
+ *   its per-light masks and light-view pyramids are the layer's, exact as
+ *   on opaque surfaces; the opaque surfaces go back into it afterwards when
+ *   the frame exports its visibility. Cost per peeled layer and light: one
+ *   position pass over the blended draws plus vdsm's mask passes (pyramid,
+ *   facing, shadow polygons of every draw): about 3x what volumes cost for
+ *   the same layers on llvmpipe (docs/benchmarks.md); STIN_DEBUG_PEEL_VDSM_UNSHADOWED
+ *   lights the layers unshadowed instead (the behaviour before).
  *   The lit layers are composited front to back under one another
  *   (C += T a c, T *= 1 - a, from C = 0, T = 1; c clamped to 1 as the
  *   framebuffer clamps a surface's passes) and the result over the opaque
@@ -656,12 +667,34 @@ const char *stin_feature_name(stin_feature f);
  *   "sorted" (every tier; GL1's only choice) is the behaviour before
  *   depth-peel: each blended draw whole, after the opaque ones, far to near
  *   by the eye depth of its bounds' centre, with depth LESS, writes and
- *   SRC_ALPHA / ONE_MINUS_SRC_ALPHA blending, lit unshadowed. It is exact
+ *   SRC_ALPHA / ONE_MINUS_SRC_ALPHA blending. It is exact
  *   only for blended objects that neither intersect nor overlap in depth
  *   nor overlap themselves: crossing panes, interleaved objects and a
  *   closed mesh's far side come out in the wrong order or hidden (the first
- *   frame with blended draws logs this warning once). Its blended draws do
- *   not receive shadows. */
+ *   frame with blended draws logs this warning once). Shadows on its draws,
+ *   per shadows technique:
+ *     map-pcf (GL2/GL4), map-depth and map-combine (GL1): shadowed as the
+ *     opaque surfaces are. Each blended draw is lit on its own, far to
+ *     near: its ambient pass over the frame (dst (1 - a) + a ambient), then
+ *     per light the technique's map test on a pass added at the draw's
+ *     opacity (+ a light, depth EQUAL: a self-overlapping draw's lights
+ *     reach its nearest surface only). GLSL adds SRC_ALPHA / ONE; GL1 adds
+ *     ONE / ONE with the light's colour times a, because map-combine's
+ *     alpha test replaces the fragment's alpha with its depth comparison
+ *     (so on GL1 an albedo texture's alpha scales the ambient pass only).
+ *     Each light's pass is clamped on its own, so a surface lit brighter
+ *     than 1 in sum comes out brighter than one pass would give (a x the
+ *     excess). A point light's six faces (map-pcf, map-depth) and deep or
+ *     colour maps are drawn again for every blended draw; a GL1 point light
+ *     without faces (no FBOs, or map-combine) has volumes and lights the
+ *     blended draws unshadowed (logged once). Cost: 1 + lights passes per
+ *     blended draw instead of one per light batch.
+ *     volume, vdsm: lit unshadowed (logged once): a volume's stencil count
+ *     and vdsm's mask are the visibility of the nearest opaque surface, and
+ *     a draw drawn whole has no depth of its own to count or mask against.
+ *     off: unshadowed, as everything.
+ *   STIN_DEBUG_SORTED_UNSHADOWED lights them unshadowed under every
+ *   technique (the behaviour before). */
 #define STIN_TECHNIQUE_LIST(X)                                             \
     X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
     X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
@@ -821,10 +854,17 @@ typedef struct stin_desc {
 /* depth-peel: peel all desc.transparency_layers layers, without stopping at
  * the first that drew nothing (the same image, more passes) */
 #define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
-/* depth-peel: no layer is drawn: the frame shows its opaque draws alone
- * (the blended ones still cast shadows as the techniques say), the image
- * the layers are composited over */
+/* depth-peel: no layer is drawn (sorted: no blended draw): the frame shows
+ * its opaque draws alone (the blended ones still cast shadows as the
+ * techniques say), the image the layers are composited over */
 #define STIN_DEBUG_PEEL_OPAQUE_ONLY 8192u
+/* depth-peel under vdsm: the peeled layers lit unshadowed, as before vdsm
+ * shadowed them (its position buffer made from each layer); a test that
+ * the per-layer masks matter */
+#define STIN_DEBUG_PEEL_VDSM_UNSHADOWED 2097152u
+/* sorted: the blended draws lit unshadowed in the light batches, as before
+ * the map techniques shadowed them; a test that the shadows matter */
+#define STIN_DEBUG_SORTED_UNSHADOWED 4194304u
 
 typedef struct stin_context stin_context;
 

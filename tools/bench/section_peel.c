@@ -3,7 +3,7 @@
  * cost is the peel's own): on the panes scene with 0, 2 and 4 transparent
  * layers on screen (its opaque objects and that many copies of its first
  * pane stacked 0.3 apart), depth-peel's passes and frame time against
- * sorted's. */
+ * sorted's; on gl4 then the same layers shadowed, vdsm against volume. */
 #include "bench_options.h"
 #include "bench_report.h"
 
@@ -42,6 +42,49 @@ static int with_panes(const scene *s, int panes, scene *out)
     }
     out->object_count = n;
     return first >= 0;
+}
+
+/* gl4: the layers shadowed, vdsm (its position buffer made again per
+ * layer) against volumes, and vdsm with the layers unshadowed
+ * (STIN_DEBUG_PEEL_VDSM_UNSHADOWED): the last two differ by what the
+ * per-layer masks cost. */
+static int shadowed_layers(bench_env *env, const scene *s, const tech_settings *section, int *rc)
+{
+    static const int layers[LAYER_CASES] = {0, 2, 4};
+    tech_settings st = *section;
+    int i, ok = 1;
+    st.base.shadows = STIN_TECH_SHADOWS_VOLUME;
+    st.base.transparency = STIN_TECH_TRANSPARENCY_PEEL;
+    printf("\n### gl4, depth-peel with shadows: vdsm against volume\n\n"
+           "| layers on screen | volume median ms | vdsm median ms | vdsm / volume "
+           "| vdsm, layers unshadowed, median ms | vdsm layer masks ms |\n"
+           "|---:|---:|---:|---:|---:|---:|\n");
+    for (i = 0; i < LAYER_CASES && ok && !*rc; i++) {
+        tech_row rows[2];
+        scene copy;
+        memset(rows, 0, sizeof rows);
+        rows[0].cfg = st.base;
+        rows[0].cfg.shadows = STIN_TECH_SHADOWS_VDSM;
+        rows[1].cfg = rows[0].cfg;
+        rows[1].cfg.debug_flags |= STIN_DEBUG_PEEL_VDSM_UNSHADOWED;
+        if (!with_panes(s, layers[i], &copy)) {
+            free(copy.objects);
+            return 0; /* said by the first table */
+        }
+        ok = bench_tech_tier(env, &st, STIN_TIER_GL4, WHAT, &copy, rows, 2, rc);
+        free(copy.objects);
+        if (!ok)
+            break;
+        if (rows[0].skipped || rows[1].skipped)
+            printf("| %d | SKIP: %s | | | | |\n", layers[i],
+                   rows[0].skipped ? rows[0].why : rows[1].why);
+        else
+            printf("| %d | %.2f | %.2f | %.2f | %.2f | %.2f |\n", layers[i], rows[0].base_ms,
+                   rows[0].on_ms, tech_ratio(&rows[0]), rows[1].on_ms,
+                   rows[0].on_ms - rows[1].on_ms);
+        fflush(stdout);
+    }
+    return ok;
 }
 
 int section_peel(bench_env *env, const scene *s, int *ran)
@@ -87,6 +130,8 @@ int section_peel(bench_env *env, const scene *s, int *ran)
         }
         if (ok && !rc)
             *ran = 1;
+        if (ok && !rc && tiers[t] == STIN_TIER_GL4)
+            (void)shadowed_layers(env, s, &st, &rc);
     }
     return rc;
 }
