@@ -231,6 +231,8 @@ int reference_render(const scene *s, const reference *r, int width, int height, 
  *   light's samples share its mean transmittance): what a frame with deep
  *   shadow maps shows. */
 #define REFERENCE_RENDER_TRANSMITTANCE 8u
+/* Where reference_csg_cast has set products, the primary hits show them
+ *   (reference_csg_primary) and they cast (reference_csg.h). */
 int reference_render_ex(const scene *s, const reference *r, int width, int height, int per_vertex,
                         unsigned flags, float *out);
 

@@ -485,3 +485,9 @@ done:
     free(balance);
     return blocked;
 }
+
+int ref_csg_primary_cast(const reference *r, int width, int height, ref_hit *hits)
+{
+    const struct ref_csg_cast *cc = r->csg_cast;
+    return cc && reference_csg_primary(r, cc->index[0].p, cc->count, width, height, hits, NULL);
+}

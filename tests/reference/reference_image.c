@@ -50,7 +50,9 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
     size_t n = (size_t)width * (size_t)height, cap = (size_t)ref_sample_capacity(r) + 1;
     ref_hit *hits = malloc(n * sizeof *hits);
     scratch w = {malloc(cap * sizeof *w.lights), malloc(cap * sizeof *w.weight)};
-    int ok = hits && w.lights && w.weight && reference_primary(r, width, height, hits);
+    int ok = hits && w.lights && w.weight &&
+             (r->csg_cast ? ref_csg_primary_cast(r, width, height, hits)
+                          : reference_primary(r, width, height, hits));
     for (size_t i = 0; ok && i < n; i++) {
         float *px = out + i * REFERENCE_CHANNELS;
         pixel(s, r, &hits[i], per_vertex, flags, &w, px);

@@ -89,5 +89,8 @@ void ref_csg_context_init(const reference *r, ref_csg_context *ctx);
  * crossings outgrew the list or memory ran out. */
 int ref_csg_blocks(const reference *r, const float org[3], const float dir[3], double dist);
 void ref_csg_cast_free(struct ref_csg_cast *c);
+/* Primary hits with the casting products shown (reference_csg_primary of
+ * them); 0 where none are set or on failure. */
+int ref_csg_primary_cast(const reference *r, int width, int height, ref_hit *hits);
 
 #endif

@@ -1,20 +1,48 @@
 /* SPDX-License-Identifier: MIT */
 /* stin-reference: the Embree reference of a scene written as an image with
  * the same channels as stin-render (for the README and for outside checks).
+ * The file's csg list is drawn as stin-render draws it: its products shown
+ * (the exact CSG reference) and casting, their primitives not on their own.
  *   stin-reference SCENE.json -o OUT.png|OUT.exr [--size WxH] [--gouraud] [--shadowed]
  *                 [--composite] */
 #include "aov.h"
 #include "image_io.h"
 #include "reference.h"
+#include "reference_csg.h"
 #include "reference_surface.h"
 #include "scene.h"
+#include "scene_csg.h"
 
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+/* The scene's csg list as the reference's products (the file's, kept for
+ * the reference's lifetime). */
+typedef struct csg_list {
+    scene_csg_products file;
+    ref_csg_product *ref;
+} csg_list;
+
+static int csg_products(reference *r, const scene *s, csg_list *out)
+{
+    int i;
+    if (!scene_csg_products_build(s, &out->file) ||
+        !(out->ref = calloc((size_t)out->file.count + 1, sizeof *out->ref)))
+        return 0;
+    for (i = 0; i < out->file.count; i++) {
+        out->ref[i].objects = out->file.products[i].objects;
+        out->ref[i].primitive_count = out->file.products[i].primitive_count;
+        out->ref[i].nodes = out->file.products[i].nodes;
+        out->ref[i].node_count = out->file.products[i].node_count;
+    }
+    return reference_csg_mark(r, out->ref, out->file.count) &&
+           reference_csg_cast(r, out->ref, out->file.count);
+}
+
 int main(int argc, char **argv)
 {
+    csg_list products = {{0}, NULL};
     const char *scene_path = NULL, *out = NULL;
     int w = 0, h = 0, per_vertex = 0, x, y, c, rc = 1, surface = -1;
     unsigned flags = 0;
@@ -66,6 +94,10 @@ int main(int argc, char **argv)
         h = s.height;
     }
     r = reference_create(&s, err, sizeof err);
+    if (r && s.csg_count && !csg_products(r, &s, &products)) {
+        fprintf(stderr, "stin-reference: the csg list: out of memory or a bad product\n");
+        goto done;
+    }
     px = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)w * h);
     if (!r || !px || !image_alloc(&img, w, h, REFERENCE_CHANNELS) ||
         !reference_render_ex(&s, r, w, h, per_vertex, flags, px)) {
@@ -105,5 +137,7 @@ done:
     if (r)
         reference_destroy(r);
     scene_free(&s);
+    scene_csg_products_free(&products.file);
+    free(products.ref);
     return rc;
 }
