@@ -689,7 +689,8 @@ const char *stin_feature_name(stin_feature f);
     X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
     X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1) \
     X(TRANSPARENCY_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
-    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1)
+    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1) \
+    X(TRANSPARENCY_DUAL_PEEL, "dual-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL4)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -822,6 +823,10 @@ typedef struct stin_desc {
  * (the blended ones still cast shadows as the techniques say), the image
  * the layers are composited over */
 #define STIN_DEBUG_PEEL_OPAQUE_ONLY 8192u
+/* dual-peel: run a geometry pass per two layers up to
+ * desc.transparency_layers, without stopping at a pass that finds nothing
+ * or after a back layer that drew nothing (the same image) */
+#define STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP 262144u
 
 typedef struct stin_context stin_context;
 
