@@ -44,6 +44,19 @@
  *                   surfaces; layers are lit unshadowed);
  *   gl-clean        no GL error, no call outside the profile, no error log.
  * On GL1 the transparency technique is "sorted": the depth-peel tests SKIP.
+ * peel-beauty checks the default technique (dual-peel on GL4); order,
+ * early-stop, cap and shadowed-T run for depth-peel ("peel-*", its beauty
+ * as peel-forced-beauty where it is not the default) and for dual-peel
+ * ("dual-peel-*", GL4; early-stop wants n / 2 + 1 passes and, without it,
+ * 64 / 2), and:
+ *   dual-peel-agrees     dual-peel's image against depth-peel's within
+ *                        1/255 on every pixel (the same layers lit the same
+ *                        way; only the composite's order of operations
+ *                        differs, both in half floats, one 8-bit rounding);
+ *   dual-peel-passes-n   (panes, n = 1..4 copies of a pane stacked 0.3
+ *                        apart) n layers (depth-peel's peel_layers) lit by
+ *                        dual-peel in n / 2 + 1 passes, and -agrees-n.
+ * On GL2 and GL1 the dual-peel tests SKIP (GL4 only).
  */
 #include "image_test.h"
 #include "reference.h"
