@@ -138,7 +138,8 @@ void stin__peel_init(stin_context *ctx)
     s->program = stin__program_build(ctx, gl4 ? "gl4/vdsm_screen.vert" : "gl2/peel_composite.vert",
                                      frag, NULL, 0, msg, sizeof msg);
     if (!s->program || (s->dual && !stin__dual_init(ctx, msg, sizeof msg))) {
-        /* dual-peel a step down to depth-peel, depth-peel to sorted */
+        /* dual-peel a step down to depth-peel (the lit programs built again
+         * with depth-peel's chunk), depth-peel to sorted */
         int was_dual = s->dual;
         stin__formatf(why, sizeof why, "%s: its %s program failed to build (%s)",
                       was_dual ? "dual-peel" : "depth-peel", s->program ? "min-max" : "composite",
@@ -146,8 +147,11 @@ void stin__peel_init(stin_context *ctx)
         stin__peel_release(ctx);
         stin__demote(ctx, STIN_FEATURE_TRANSPARENCY,
                      was_dual ? STIN_TECH_TRANSPARENCY_PEEL : STIN_TECH_TRANSPARENCY_SORTED, why);
-        if (was_dual)
+        if (was_dual && stin__glsl_init(ctx, STIN_TIER_GL4, msg, sizeof msg) == STIN_OK)
             stin__peel_init(ctx);
+        else if (was_dual) /* cannot happen where they built a moment ago */
+            stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_SHADER_COMPILE,
+                      "depth-peel: the lit programs failed to build again (%s)", msg);
         return;
     }
     s->u_ambient = GL(ctx, GetUniformLocation)(s->program, "u_ambient");
