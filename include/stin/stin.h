@@ -686,8 +686,11 @@ const char *stin_feature_name(stin_feature f);
  *   (min-max, ping-pong) and 4 RGBA16F (front and back composites,
  *   ping-pong): W x H x 68 bytes, 4.25 MiB at 256 x 256, 134 MiB at
  *   1920 x 1080. A displaced draw's min-max pass is tessellated as its lit
- *   passes are. On GL4 depth-peel's composites are RGBA16F too (one
- *   rounding at the end; W x H x 40 bytes there).
+ *   passes are. STIN_DEBUG_PEEL_OPAQUE_ONLY applies to it too. A min-max
+ *   program that does not build moves it to depth-peel (logged; the lit
+ *   programs are built again with depth-peel's chunk). On GL4
+ *   depth-peel's composites are RGBA16F too (one rounding at the end;
+ *   W x H x 40 bytes there).
  *   "sorted" (every tier; GL1's only choice) is the behaviour before
  *   depth-peel: each blended draw whole, after the opaque ones, far to near
  *   by the eye depth of its bounds' centre, with depth LESS, writes and
