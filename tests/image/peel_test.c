@@ -734,7 +734,7 @@ static void peel_scene(run *r, stin_tier tier, const char *path, const char *sce
     if (layered[0].rgba && layered[1].rgba)
         test_agrees(&c, &layered[1], &layered[0], name);
     else
-        report(r, "SKIP", name, "dual-peel or depth-peel does not run here (%s)",
+        report(r, "SKIP", name, "%s does not run here: nothing to compare",
                layered[1].rgba ? "depth-peel" : "dual-peel");
     free(base.rgba);
     free(layered[0].rgba);
