@@ -71,10 +71,17 @@ static const stin__technique_row rows[] = {
     /* depth peeling of the camera's layers: two samplers in the lit programs
      * (the previous layer's depth, the opaque depth); packed depth-stencil
      * textures hold a layer's depth and the stencil volumes count in */
-    {STIN_TECH_TRANSPARENCY_PEEL,      0,
+    {STIN_TECH_TRANSPARENCY_PEEL,      1,
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(MULTITEXTURE) |
          BIT(VBO), GLSL_ANY, 0, 2, 0, NULL, 0},
-    {STIN_TECH_TRANSPARENCY_SORTED,    1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_TRANSPARENCY_SORTED,    2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* dual depth peeling: depth-peel's needs on GLSL 1.50 (3.2+: the MAX
+     * blend equation) with float colour targets (RG32F min-max, RGBA16F
+     * composites) and occlusion queries (its early stop); the same two
+     * samplers (this pass's min-max, the opaque depth) */
+    {STIN_TECH_TRANSPARENCY_DUAL_PEEL, 0,
+     TIER4 | BIT(FLOAT_TEXTURE) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
+         BIT(MULTITEXTURE) | BIT(OCCLUSION_QUERY), STIN_TECH_LIGHTING_GLSL150, 0, 2, 0, NULL, 0},
 };
 
 static const stin_feature tech_feature[] = {

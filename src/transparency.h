@@ -4,8 +4,11 @@
  * surfaces per pass, and lights each layer as the frame lights its opaque
  * surfaces (the frame plan runs its lighting stages once per layer, the
  * layer standing in for the opaque draws; under vdsm its position buffer
- * is made from each layer first); "sorted" (transparency_sorted.c) draws
- * them whole, per object far to near, shadowed under the map techniques. */
+ * is made from each layer first); "dual-peel" (transparency_dual_peel.c,
+ * GL4) finds two layers per geometry pass, the nearest and the farthest
+ * left, and lights each through the same stages; "sorted"
+ * (transparency_sorted.c) draws them whole, per object far to near,
+ * shadowed under the map techniques. */
 #ifndef STIN_TRANSPARENCY_H
 #define STIN_TRANSPARENCY_H
 
@@ -14,6 +17,22 @@
 #include "path.h"
 
 #define STIN__PEEL_MAX_LAYERS 64 /* desc.transparency_layers at most */
+
+/* dual-peel's own objects; the layer's depth, ambient and lights, the
+ * opaque depth, the framebuffers and the query are depth-peel's. */
+typedef struct stin__dual_state {
+    GLuint minmax[2];      /* pass k's (-near, far) per pixel (RG32F) is minmax[k % 2] */
+    GLuint front[2];       /* front layers' composite (C, T), under, ping-pong (RGBA16F) */
+    GLuint back[2];        /* back layers' composite (C, T), over, ping-pong (RGBA16F) */
+    GLuint minmax_fbo;
+    GLuint program[2];     /* the min-max pass: plain, tessellated (0: not built) */
+    stin__displace_locs displace[2];
+    GLint u_model[2], u_view_proj[2], u_previous[2], u_opaque[2], u_params[2];
+    GLint u_back;          /* the composite program's back composite */
+    int front_result, back_result; /* front[front_result], back[back_result] hold them */
+    int drawn;             /* the layer begun last drew something */
+    int back_empty;        /* the last back layer drew nothing: no pass would find more */
+} stin__dual_state;
 
 typedef struct stin__peel_state {
     /* Layer k's depth (and stencil, for volumes) is depth[k % 2] (layer 0's:
@@ -24,6 +43,7 @@ typedef struct stin__peel_state {
     GLuint ambient;        /* a layer's ambient colour and opacity (RGBA8) */
     GLuint lights;         /* a layer's lights added up (RGBA8) */
     GLuint accum[2];       /* the composite so far, (C, T) front to back, ping-pong */
+    GLenum accum_format;   /* accum's: RGBA16F on GL4 (with float textures), else RGBA8 */
     GLuint fbo, composite_fbo, program, query;
     GLint u_ambient, u_lights, u_accum, u_first, u_params;
     int width, height;     /* allocated texels (0: not yet) */
@@ -37,6 +57,8 @@ typedef struct stin__peel_state {
     /* "sorted", shadowed: the blended draw being lit and what was said */
     const stin__draw *sorted_draw;
     int said_sorted_unshadowed, said_sorted_light;
+    int dual;              /* the technique is dual-peel (its state below) */
+    stin__dual_state d;
 } stin__peel_state;
 
 /* The lit programs' chunk after the others ("peel.glsl") when depth-peel is
@@ -72,6 +94,31 @@ int stin__peel_layer_begin(struct stin_context *ctx);
 int stin__peel_layer_lights(struct stin_context *ctx);
 void stin__peel_layer_end(struct stin_context *ctx);
 void stin__peel_end(struct stin_context *ctx);
+
+/* depth-peel's pieces that dual-peel shares (transparency_peel.c). */
+void stin__peel_screen_texture(struct stin_context *ctx, GLuint tex, GLenum format, int w, int h);
+void stin__peel_attach(struct stin_context *ctx, GLuint color, GLuint depth);
+void stin__peel_clear(struct stin_context *ctx, float r, float g, float b, float a, int depth);
+void stin__peel_screen_quad(struct stin_context *ctx);
+void stin__peel_composite_done(struct stin_context *ctx);
+/* The layer's lights texture as the peel framebuffer's colour, cleared. */
+void stin__peel_lights_target(struct stin_context *ctx);
+/* The samples the query counted since stin__peel_count_begin (1 without a query). */
+void stin__peel_count_begin(struct stin_context *ctx);
+GLuint stin__peel_count_end(struct stin_context *ctx);
+
+/* "dual-peel" (transparency_dual_peel.c): what the stin__peel_* calls above
+ * turn to when it is the choice (set-up: after depth-peel's, with its
+ * composite program; size: its textures at w x h). */
+int stin__dual_init(struct stin_context *ctx, char *msg, size_t size);
+void stin__dual_release(struct stin_context *ctx);
+GLenum stin__dual_size(struct stin_context *ctx, int w, int h); /* its framebuffer's status */
+void stin__dual_uniforms(struct stin_context *ctx, const stin__program *p);
+void stin__dual_begin(struct stin_context *ctx);
+int stin__dual_layer_begin(struct stin_context *ctx);
+int stin__dual_layer_lights(struct stin_context *ctx);
+void stin__dual_layer_end(struct stin_context *ctx);
+void stin__dual_end(struct stin_context *ctx);
 
 /* "sorted": once per context, at the first frame with blended draws, the
  * warning that it is exact only for separate convex objects. */

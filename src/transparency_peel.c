@@ -12,34 +12,50 @@
  * and the first layer's depth into the frame's depth where there is one (as
  * the sorted draws leave it: the nearest surface's).
  * Peeling stops at desc.transparency_layers or at the first pass that drew
- * nothing (an occlusion query). */
+ * nothing (an occlusion query).
+ * "dual-peel" (transparency_dual_peel.c) shares this file's objects and
+ * entry points: each stin__peel_* call below turns to it when it is chosen. */
 #include "internal.h"
 
 static int chosen(const stin_context *ctx)
 {
-    return ctx->sel.choice[STIN_FEATURE_TRANSPARENCY].technique == STIN_TECH_TRANSPARENCY_PEEL;
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_TRANSPARENCY].technique;
+    return t == STIN_TECH_TRANSPARENCY_PEEL || t == STIN_TECH_TRANSPARENCY_DUAL_PEEL;
 }
 
-const char *stin__peel_chunk(const stin_context *ctx) { return chosen(ctx) ? "peel.glsl" : NULL; }
+static int dual(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_TRANSPARENCY].technique ==
+           STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+}
 
-/* A window-sized texture of one of the peel's formats, nearest texels. */
-static void screen_texture(stin_context *ctx, GLuint tex, int depth, int w, int h)
+const char *stin__peel_chunk(const stin_context *ctx)
+{
+    return !chosen(ctx) ? NULL : dual(ctx) ? "dual_peel.glsl" : "peel.glsl";
+}
+
+/* A window-sized texture of one of the peel's formats (DEPTH24_STENCIL8,
+ * RGBA8, RG32F, RGBA16F), nearest texels. */
+void stin__peel_screen_texture(stin_context *ctx, GLuint tex, GLenum format, int w, int h)
 {
     GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    if (depth)
+    if (format == GL_DEPTH24_STENCIL8)
         GL_ENUM(ctx, TexImage2D, GL_DEPTH24_STENCIL8)(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, w, h,
                                                       0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
                                                       NULL);
-    else
+    else if (format == GL_RGBA8)
         GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+    else
+        GL_ENUM(ctx, TexImage2D, format)(GL_TEXTURE_2D, 0, (GLint)format, w, h, 0,
+                                         format == GL_RG32F ? GL_RG : GL_RGBA, GL_FLOAT, NULL);
 }
 
 /* The peel's framebuffer with `color` and the depth-stencil `depth`. */
-static void attach(stin_context *ctx, GLuint color, GLuint depth)
+void stin__peel_attach(stin_context *ctx, GLuint color, GLuint depth)
 {
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color, 0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
@@ -69,18 +85,22 @@ static int ensure_size(stin_context *ctx)
     w = w > s->width ? w : s->width;
     h = h > s->height ? h : s->height;
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
-    for (i = 0; i < 2; i++) {
-        screen_texture(ctx, s->depth[i], 1, w, h);
-        screen_texture(ctx, s->accum[i], 0, w, h);
+    for (i = 0; i < 2; i++) { /* dual-peel: one layer depth, its own composites */
+        if (i == 0 || !s->dual)
+            stin__peel_screen_texture(ctx, s->depth[i], GL_DEPTH24_STENCIL8, w, h);
+        if (!s->dual)
+            stin__peel_screen_texture(ctx, s->accum[i], s->accum_format, w, h);
     }
-    screen_texture(ctx, s->opaque, 1, w, h);
-    screen_texture(ctx, s->first, 1, w, h);
-    screen_texture(ctx, s->ambient, 0, w, h);
-    screen_texture(ctx, s->lights, 0, w, h);
+    stin__peel_screen_texture(ctx, s->opaque, GL_DEPTH24_STENCIL8, w, h);
+    stin__peel_screen_texture(ctx, s->first, GL_DEPTH24_STENCIL8, w, h);
+    stin__peel_screen_texture(ctx, s->ambient, GL_RGBA8, w, h);
+    stin__peel_screen_texture(ctx, s->lights, GL_RGBA8, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
-    attach(ctx, s->ambient, s->depth[0]);
+    stin__peel_attach(ctx, s->ambient, s->depth[0]);
     status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    if (s->dual && status == GL_FRAMEBUFFER_COMPLETE)
+        status = stin__dual_size(ctx, w, h);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     s->width = w;
     s->height = h;
@@ -88,8 +108,8 @@ static int ensure_size(stin_context *ctx)
         return 1;
     if (!s->said_failed)
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                  "depth-peel: its framebuffer is incomplete (0x%x); blended draws are drawn "
-                  "sorted", (unsigned)status);
+                  "%s: its framebuffer is incomplete (0x%x); blended draws are drawn "
+                  "sorted", s->dual ? "dual-peel" : "depth-peel", (unsigned)status);
     s->said_failed = 1;
     s->width = s->height = 0;
     return 0;
@@ -105,16 +125,33 @@ void stin__peel_init(stin_context *ctx)
     if (!chosen(ctx))
         return;
     s->unit = ctx->sel.transparency_unit;
-    stin__formatf(frag, sizeof frag, "%s/peel_composite.frag", gl4 ? "gl4" : "gl2");
+    s->dual = dual(ctx);
+    /* GL4: the composite in half floats, one rounding at the end instead of
+     * one per layer (8 bits: up to 2/255 off after four layers) */
+    s->accum_format = gl4 && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FLOAT_TEXTURE))
+                          ? GL_RGBA16F
+                          : GL_RGBA8;
+    stin__formatf(frag, sizeof frag, "%s/%speel_composite.frag", gl4 ? "gl4" : "gl2",
+                  s->dual ? "dual_" : "");
     msg[0] = '\0';
     /* GL4 shares vdsm's full-viewport quad shader */
     s->program = stin__program_build(ctx, gl4 ? "gl4/vdsm_screen.vert" : "gl2/peel_composite.vert",
                                      frag, NULL, 0, msg, sizeof msg);
-    if (!s->program) {
-        stin__formatf(why, sizeof why, "depth-peel: its composite program failed to build (%s)",
+    if (!s->program || (s->dual && !stin__dual_init(ctx, msg, sizeof msg))) {
+        /* dual-peel a step down to depth-peel (the lit programs built again
+         * with depth-peel's chunk), depth-peel to sorted */
+        int was_dual = s->dual;
+        stin__formatf(why, sizeof why, "%s: its %s program failed to build (%s)",
+                      was_dual ? "dual-peel" : "depth-peel", s->program ? "min-max" : "composite",
                       msg);
         stin__peel_release(ctx);
-        stin__demote(ctx, STIN_FEATURE_TRANSPARENCY, STIN_TECH_TRANSPARENCY_SORTED, why);
+        stin__demote(ctx, STIN_FEATURE_TRANSPARENCY,
+                     was_dual ? STIN_TECH_TRANSPARENCY_PEEL : STIN_TECH_TRANSPARENCY_SORTED, why);
+        if (was_dual && stin__glsl_init(ctx, STIN_TIER_GL4, msg, sizeof msg) == STIN_OK)
+            stin__peel_init(ctx);
+        else if (was_dual) /* cannot happen where they built a moment ago */
+            stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_SHADER_COMPILE,
+                      "depth-peel: the lit programs failed to build again (%s)", msg);
         return;
     }
     s->u_ambient = GL(ctx, GetUniformLocation)(s->program, "u_ambient");
@@ -122,6 +159,7 @@ void stin__peel_init(stin_context *ctx)
     s->u_accum = GL(ctx, GetUniformLocation)(s->program, "u_accum");
     s->u_first = GL(ctx, GetUniformLocation)(s->program, "u_first");
     s->u_params = GL(ctx, GetUniformLocation)(s->program, "u_params");
+    s->d.u_back = GL(ctx, GetUniformLocation)(s->program, "u_back");
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
         GL(ctx, GenQueries)(1, &s->query);
     s->ready = 1;
@@ -133,6 +171,7 @@ void stin__peel_release(stin_context *ctx)
     stin__peel_state *s = &ctx->peel;
     GLuint tex[8];
     int i, n = 0;
+    stin__dual_release(ctx);
     if (s->program)
         GL(ctx, DeleteProgram)(s->program);
     if (s->fbo)
@@ -169,6 +208,10 @@ void stin__peel_uniforms(stin_context *ctx, const stin__program *p)
     float params[4] = {0, 0, 0, 0};
     if (p->u_peel_params < 0)
         return;
+    if (s->dual) {
+        stin__dual_uniforms(ctx, p);
+        return;
+    }
     if (s->peeling) {
         params[0] = 1.0f / (float)s->width;
         params[1] = 1.0f / (float)s->height;
@@ -198,7 +241,7 @@ static int frame_blended(const stin_context *ctx)
 }
 
 /* Clears the bound framebuffer's colour to c, and depth and stencil too. */
-static void clear(stin_context *ctx, float r, float g, float b, float a, int depth)
+void stin__peel_clear(stin_context *ctx, float r, float g, float b, float a, int depth)
 {
     stin__pass_state ps = stin__pass_defaults; /* writes on, no scissor */
     stin__pass_apply(ctx, &ps);
@@ -217,15 +260,21 @@ int stin__peel_begin(stin_context *ctx, const stin__path *path)
     s->frame_fbo = ctx->draw_fbo;
     /* the opaque depth, drawn again as the target's (the mask's way) */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
-    attach(ctx, s->ambient, s->opaque);
-    clear(ctx, 0, 0, 0, 0, 1);
+    stin__peel_attach(ctx, s->ambient, s->opaque);
+    stin__peel_clear(ctx, 0, 0, 0, 0, 1);
     path->ambient(ctx, STIN__OPAQUE, 1);
     stin__csg_depth_again(ctx, path);
+    if (s->dual) {
+        s->layer = -1;
+        ctx->draw_fbo = s->fbo;
+        stin__dual_begin(ctx);
+        return 1;
+    }
     /* nothing in front yet: C = 0, T = 1 */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->composite_fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                                   s->accum[0], 0);
-    clear(ctx, 0, 0, 0, 1, 0);
+    stin__peel_clear(ctx, 0, 0, 0, 1, 0);
     s->result = 0;
     s->layer = -1;
     ctx->draw_fbo = s->fbo; /* the lighting stages come back to the layer */
@@ -241,52 +290,71 @@ int stin__peel_layer_begin(stin_context *ctx)
 {
     stin__peel_state *s = &ctx->peel;
     int k = s->layer + 1;
+    if (s->dual)
+        return stin__dual_layer_begin(ctx);
     if ((uint32_t)k >= ctx->desc.transparency_layers)
         return 0;
     s->layer = k;
     s->peeling = 1;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
-    attach(ctx, s->ambient, layer_depth(s, k));
-    clear(ctx, 0, 0, 0, 0, 1);
+    stin__peel_attach(ctx, s->ambient, layer_depth(s, k));
+    stin__peel_clear(ctx, 0, 0, 0, 0, 1);
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, k > 0 ? layer_depth(s, k - 1) : 0);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, s->opaque);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     ctx->glsl_surface.serial++; /* every lit program's peel uniforms are stale */
     ctx->stats.peel_passes++;
-    if (s->query)
-        GL(ctx, BeginQuery)(GL_SAMPLES_PASSED, s->query);
+    stin__peel_count_begin(ctx);
     return 1;
+}
+
+void stin__peel_count_begin(stin_context *ctx)
+{
+    if (ctx->peel.query)
+        GL(ctx, BeginQuery)(GL_SAMPLES_PASSED, ctx->peel.query);
+}
+
+GLuint stin__peel_count_end(stin_context *ctx)
+{
+    GLuint samples = 1;
+    if (ctx->peel.query) {
+        GL(ctx, EndQuery)(GL_SAMPLES_PASSED);
+        GL(ctx, GetQueryObjectuiv)(ctx->peel.query, GL_QUERY_RESULT, &samples);
+    }
+    return samples;
 }
 
 int stin__peel_layer_lights(stin_context *ctx)
 {
     stin__peel_state *s = &ctx->peel;
-    GLuint samples = 1;
-    if (s->query) {
-        GL(ctx, EndQuery)(GL_SAMPLES_PASSED);
-        GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &samples);
-    }
+    GLuint samples;
+    if (s->dual)
+        return stin__dual_layer_lights(ctx);
+    samples = stin__peel_count_end(ctx);
     if (!samples && !(ctx->desc.debug_flags & STIN_DEBUG_PEEL_NO_EARLY_STOP)) {
         s->layer = (int)ctx->desc.transparency_layers; /* the last: nothing is left */
         return 0;
     }
     if (samples)
         ctx->stats.peel_layers++;
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                  s->lights, 0);
-    {
-        stin__pass_state ps = stin__pass_defaults;
-        ps.depth_test = 1; /* keep the layer's depth: only the colour is cleared */
-        ps.depth_write = 0;
-        stin__pass_apply(ctx, &ps);
-        GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
-        GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
-    }
+    stin__peel_lights_target(ctx);
     return 1;
 }
 
+void stin__peel_lights_target(stin_context *ctx)
+{
+    stin__pass_state ps = stin__pass_defaults;
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                  ctx->peel.lights, 0);
+    ps.depth_test = 1; /* keep the layer's depth: only the colour is cleared */
+    ps.depth_write = 0;
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
+    GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
+}
+
 /* A full-viewport quad through the composite program (bound). */
-static void screen_quad(stin_context *ctx)
+void stin__peel_screen_quad(stin_context *ctx)
 {
     static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
                                       -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
@@ -329,7 +397,7 @@ static void composite_program(stin_context *ctx, int mode)
     stin__bind_unit(ctx, 3, GL_TEXTURE_2D, mode ? s->first : 0);
 }
 
-static void composite_done(stin_context *ctx)
+void stin__peel_composite_done(stin_context *ctx)
 {
     int i;
     for (i = 3; i >= 0; i--)
@@ -340,6 +408,10 @@ void stin__peel_layer_end(stin_context *ctx)
 {
     stin__peel_state *s = &ctx->peel;
     stin__pass_state ps = stin__pass_defaults;
+    if (s->dual) {
+        stin__dual_layer_end(ctx);
+        return;
+    }
     s->peeling = 0; /* the composite and whatever follows are no layer's */
     ctx->glsl_surface.serial++;
     if (s->layer >= (int)ctx->desc.transparency_layers)
@@ -351,8 +423,8 @@ void stin__peel_layer_end(stin_context *ctx)
     ps.depth_test = 0;
     stin__pass_apply(ctx, &ps);
     composite_program(ctx, 0);
-    screen_quad(ctx);
-    composite_done(ctx);
+    stin__peel_screen_quad(ctx);
+    stin__peel_composite_done(ctx);
     s->result = 1 - s->result;
     ctx->stats.passes++;
 }
@@ -364,6 +436,10 @@ void stin__peel_end(stin_context *ctx)
     s->peeling = 0;
     ctx->glsl_surface.serial++;
     ctx->draw_fbo = s->frame_fbo;
+    if (s->dual) {
+        stin__dual_end(ctx);
+        return;
+    }
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
@@ -379,8 +455,8 @@ void stin__peel_end(stin_context *ctx)
     ps.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
     stin__pass_apply(ctx, &ps);
     composite_program(ctx, 1);
-    screen_quad(ctx);
-    composite_done(ctx);
+    stin__peel_screen_quad(ctx);
+    stin__peel_composite_done(ctx);
     ctx->stats.passes++;
     stin__gl_check_errors(ctx, "depth-peel");
 }

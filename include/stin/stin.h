@@ -435,7 +435,7 @@ const char *stin_feature_name(stin_feature f);
  *   displacement: displace-tess, displace, displacement-off
  *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
  *   csg:      scs, goldfeather, csg-off (see "CSG products" below)
- *   transparency: depth-peel, sorted (see "Transparency" below)
+ *   transparency: dual-peel, depth-peel, sorted (see "Transparency" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
@@ -617,7 +617,8 @@ const char *stin_feature_name(stin_feature f);
  * (all cast fully) is chosen only when forced.
  * Transparency: how the camera sees blended draws (material opacity
  * color[3] below 1; opaque draws are drawn first either way). The chain is
- * depth-peel -> sorted, each step logged with the capability it lacked.
+ * dual-peel -> depth-peel -> sorted, each step logged with the capability
+ * it lacked.
  *   "depth-peel" (GLSL lighting with framebuffer objects, depth textures,
  *   packed depth-stencil, VBOs; two texture units after the translucent
  *   shadows' units) peels the blended draws front to back (Everitt 2001):
@@ -664,6 +665,43 @@ const char *stin_feature_name(stin_feature f);
  *   the opaque depth) and 4 RGBA8 colour textures (a layer's ambient and
  *   lights, the composite's two), W x H x 32 bytes: 2 MiB at 256 x 256,
  *   63 MiB at 1920 x 1080.
+ *   "dual-peel" (GL4's default: GLSL 1.50 lighting, float textures
+ *   (RG32F, RGBA16F targets), occlusion queries and depth-peel's needs; the
+ *   same two texture units) peels two layers per geometry pass (Bavoil &
+ *   Myers 2008): pass k draws the blended draws once with MAX blending of
+ *   (-z, z) into RG32F, keeping what lies in front of the opaque depth and
+ *   strictly between pass k - 1's nearest and farthest, so it finds per
+ *   pixel the nearest and the farthest surface no pass has taken: layer 2k
+ *   (front) and layer 2k + 1 (back; where one surface is left it is the
+ *   front layer's, drawn once). Each layer is lit exactly as depth-peel
+ *   lights one (its depth written by the lit programs keeping the
+ *   fragments at the recorded gl_FragCoord.z, compared float for float,
+ *   then the frame's stages: the same shadows, the same vdsm exception).
+ *   Front layers are composited under one another, back layers over one
+ *   another (RGBA16F), and at the end the back under the front, the whole
+ *   over the opaque image by depth-peel's rule (frame = C + T frame,
+ *   alpha 1 - T + T alpha, depth of the nearest). desc.transparency_layers
+ *   caps the layers (front and back counted alike: with a cap below the
+ *   depth complexity the layers dropped are the middle ones, depth-peel's
+ *   the farthest). Peeling stops at a pass that found nothing (occlusion
+ *   query) or after a back layer that drew nothing (no pixel had a third
+ *   surface left), so a scene of n layers takes n / 2 + 1 passes
+ *   (stin_frame_stats.peel_passes, integer division; .peel_layers = n);
+ *   STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP runs cap / 2 (rounded up) passes:
+ *   the same image. Cost per pass: one geometry pass without depth test;
+ *   per layer depth-peel's (ambient pass, light stages, one composite).
+ *   The image does not depend on the order of the draws (bit for bit) and
+ *   agrees with depth-peel's within 1/255. GPU memory at W x H (as
+ *   depth-peel's): 3 depth-stencil textures (the first layer's, a layer's,
+ *   the opaque depth), 2 RGBA8 (a layer's ambient and lights), 2 RG32F
+ *   (min-max, ping-pong) and 4 RGBA16F (front and back composites,
+ *   ping-pong): W x H x 68 bytes, 4.25 MiB at 256 x 256, 134 MiB at
+ *   1920 x 1080. A displaced draw's min-max pass is tessellated as its lit
+ *   passes are. STIN_DEBUG_PEEL_OPAQUE_ONLY applies to it too. A min-max
+ *   program that does not build moves it to depth-peel (logged; the lit
+ *   programs are built again with depth-peel's chunk). On GL4
+ *   depth-peel's composites are RGBA16F too (one rounding at the end;
+ *   W x H x 40 bytes there).
  *   "sorted" (every tier; GL1's only choice) is the behaviour before
  *   depth-peel: each blended draw whole, after the opaque ones, far to near
  *   by the eye depth of its bounds' centre, with depth LESS, writes and
@@ -722,7 +760,8 @@ const char *stin_feature_name(stin_feature f);
     X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
     X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1) \
     X(TRANSPARENCY_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
-    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1)
+    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1) \
+    X(TRANSPARENCY_DUAL_PEEL, "dual-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL4)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -798,9 +837,10 @@ typedef struct stin_desc {
     float translucent_opaque_threshold; /* "opaque": casters of opacity >= this cast a
                                         * full shadow, the rest none; default (0) 0.5,
                                         * finite, in (0, 1] */
-    uint32_t transparency_layers;      /* "depth-peel": layers of blended surfaces peeled
-                                        * per pixel at most, default 8, at most 64;
-                                        * surfaces past it along a ray are not drawn */
+    uint32_t transparency_layers;      /* "depth-peel", "dual-peel": layers of blended
+                                        * surfaces peeled per pixel at most, default 8,
+                                        * at most 64; surfaces past it along a ray are
+                                        * not drawn (dual-peel: the middle ones) */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -865,6 +905,10 @@ typedef struct stin_desc {
 /* sorted: the blended draws lit unshadowed in the light batches, as before
  * the map techniques shadowed them; a test that the shadows matter */
 #define STIN_DEBUG_SORTED_UNSHADOWED 4194304u
+/* dual-peel: run a geometry pass per two layers up to
+ * desc.transparency_layers, without stopping at a pass that finds nothing
+ * or after a back layer that drew nothing (the same image) */
+#define STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP 262144u
 
 typedef struct stin_context stin_context;
 
@@ -1350,7 +1394,8 @@ typedef struct stin_frame_stats {
     uint32_t csg_scs_products;
     /* depth-peel: geometry passes that peeled a camera layer (the last one,
      * which found nothing, counted: a scene of n layers under a cap above n
-     * takes n + 1), and the layers that drew something */
+     * takes n + 1), and the layers that drew something; dual-peel: its
+     * min-max passes (n layers: n / 2 + 1) and the layers lit */
     uint32_t peel_passes, peel_layers;
     /* maps (a spot or directional light's, a point light's face) that CSG
      * products were resolved into from the light: they cast into it */

@@ -54,6 +54,19 @@
  *                   fail;
  *   gl-clean        no GL error, no call outside the profile, no error log.
  * On GL1 the transparency technique is "sorted": the depth-peel tests SKIP.
+ * peel-beauty checks the default technique (dual-peel on GL4); order,
+ * early-stop, cap and shadowed-T run for depth-peel ("peel-*", its beauty
+ * as peel-forced-beauty where it is not the default) and for dual-peel
+ * ("dual-peel-*", GL4; early-stop wants n / 2 + 1 passes and, without it,
+ * 64 / 2), and:
+ *   dual-peel-agrees     dual-peel's image against depth-peel's within
+ *                        1/255 on every pixel (the same layers lit the same
+ *                        way; only the composite's order of operations
+ *                        differs, both in half floats, one 8-bit rounding);
+ *   dual-peel-passes-n   (panes, n = 1..4 copies of a pane stacked 0.3
+ *                        apart) n layers (depth-peel's peel_layers) lit by
+ *                        dual-peel in n / 2 + 1 passes, and -agrees-n.
+ * On GL2 and GL1 the dual-peel tests SKIP (GL4 only).
  */
 #include "image_test.h"
 #include "reference.h"
@@ -341,9 +354,10 @@ static void test_beauty(const peel_case *c, const frame_out *f, const composite_
 {
     match m;
     stin_technique t = f->choice[STIN_FEATURE_TRANSPARENCY].technique;
-    int exact_expected = t == STIN_TECH_TRANSPARENCY_PEEL || !strcmp(c->scene_name, "panes");
-    /* depth-peel's alpha too; sorted's is GL 1.1 blending's (a a + (1 - a) alpha) */
-    compare(c, f, ref, NULL, 1, t == STIN_TECH_TRANSPARENCY_PEEL, &m);
+    int peeled = t == STIN_TECH_TRANSPARENCY_PEEL || t == STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+    int exact_expected = peeled || !strcmp(c->scene_name, "panes");
+    /* the peels' alpha too; sorted's is GL 1.1 blending's (a a + (1 - a) alpha) */
+    compare(c, f, ref, NULL, 1, peeled, &m);
     report(c->r, !exact_expected ? "INFO" : matches(&m) ? "PASS" : "FAIL", name,
            "%s: composite within 3/255 on %.3f%% of %ld pixels seen through glass (max %.4f, "
            "mean %.5f; %s)", stin_technique_name(t),
@@ -351,43 +365,62 @@ static void test_beauty(const peel_case *c, const frame_out *f, const composite_
            m.mean, exact_expected ? "need 99.5% of >= 200" : "measured: sorted is not exact here");
 }
 
-static void test_order(const peel_case *c, const frame_out *base, const char *name)
+/* The objects drawn in reverse order and rotated by one (each a different
+ * submission order of the blended draws) give base's image bit for bit. */
+static void test_order(const peel_case *c, stin_technique t, const frame_out *base,
+                       const char *name)
 {
-    scene reversed = *c->s;
+    scene permuted = *c->s;
     scene_object *objects = malloc(sizeof *objects * (size_t)c->s->object_count);
-    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 0, 0, STIN_TECH_NONE};
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
     frame_out f;
     char err[256];
-    int i;
+    long d[2] = {0, 0};
+    int i, n = c->s->object_count, order;
+    fo.transparency = t;
     if (!objects)
         return;
-    for (i = 0; i < c->s->object_count; i++)
-        objects[i] = c->s->objects[c->s->object_count - 1 - i];
-    reversed.objects = objects;
-    if (!render(c, &reversed, &fo, &f, err, sizeof err)) {
-        report(c->r, "FAIL", name, "%s", err);
-    } else {
-        long d = differing(c, base, &f);
-        report(c->r, d == 0 ? "PASS" : "FAIL", name,
-               "objects drawn in reverse order: the image differs on %ld pixels (must be 0)", d);
+    permuted.objects = objects;
+    for (order = 0; order < 2; order++) {
+        for (i = 0; i < n; i++)
+            objects[i] = c->s->objects[order == 0 ? n - 1 - i : (i + 1) % n];
+        if (!render(c, &permuted, &fo, &f, err, sizeof err)) {
+            report(c->r, "FAIL", name, "%s", err);
+            free(objects);
+            return;
+        }
+        d[order] = differing(c, base, &f);
         free(f.rgba);
     }
+    report(c->r, d[0] == 0 && d[1] == 0 ? "PASS" : "FAIL", name,
+           "%s: objects drawn in reverse order and rotated by one: the image differs on %ld and "
+           "%ld pixels (must be 0)", stin_technique_name(t), d[0], d[1]);
     free(objects);
 }
 
-static void test_early_stop(const peel_case *c, const frame_out *base, const composite_ref *ref,
-                            const char *name)
+/* The passes a scene of n layers takes with the early stop: depth-peel one
+ * per layer and one that finds nothing; dual-peel n / 2 + 1 (two layers a
+ * pass; after an odd count's middle layer its back layer drew nothing). */
+static uint32_t passes_for(stin_technique t, int n)
 {
-    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, HIGH_CAP, 0, STIN_TECH_NONE};
+    return t == STIN_TECH_TRANSPARENCY_DUAL_PEEL ? (uint32_t)n / 2u + 1u : (uint32_t)n + 1u;
+}
+
+static void test_early_stop(const peel_case *c, stin_technique t, const frame_out *base,
+                            const composite_ref *ref, const char *name)
+{
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, HIGH_CAP, 0, STIN_TECH_NONE};
     frame_out high, all;
     char err[256];
-    uint32_t want = (uint32_t)ref->max_layers + 1;
+    int dual = t == STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+    uint32_t want = passes_for(t, ref->max_layers), want_all = dual ? HIGH_CAP / 2 : HIGH_CAP;
     long d1, d2;
+    fo.transparency = t;
     if (!render(c, c->s, &fo, &high, err, sizeof err)) {
         report(c->r, "FAIL", name, "%s", err);
         return;
     }
-    fo.debug_flags = STIN_DEBUG_PEEL_NO_EARLY_STOP;
+    fo.debug_flags = dual ? STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP : STIN_DEBUG_PEEL_NO_EARLY_STOP;
     if (!render(c, c->s, &fo, &all, err, sizeof err)) {
         report(c->r, "FAIL", name, "%s", err);
         free(high.rgba);
@@ -397,33 +430,37 @@ static void test_early_stop(const peel_case *c, const frame_out *base, const com
     d2 = differing(c, base, &all);
     report(c->r,
            d1 == 0 && d2 == 0 && high.stats.peel_passes == want &&
-                   all.stats.peel_passes == HIGH_CAP
+                   high.stats.peel_layers == (uint32_t)ref->max_layers &&
+                   all.stats.peel_passes == want_all
                ? "PASS"
                : "FAIL",
            name,
-           "cap %d: %u passes, %u layers (the scene has %d: want %u passes); without early "
-           "stop %u passes; images differ from the default cap's on %ld and %ld pixels (must "
-           "be 0)", HIGH_CAP, high.stats.peel_passes, high.stats.peel_layers,
-           ref->max_layers, want, all.stats.peel_passes, d1, d2);
+           "%s, cap %d: %u passes, %u layers lit (the scene has %d: want %u passes and as many "
+           "layers); without early stop %u passes (want %u); images differ from the default "
+           "cap's on %ld and %ld pixels (must be 0)", stin_technique_name(t), HIGH_CAP,
+           high.stats.peel_passes, high.stats.peel_layers, ref->max_layers, want,
+           all.stats.peel_passes, want_all, d1, d2);
     free(high.rgba);
     free(all.rgba);
 }
 
-static void test_cap(const peel_case *c, const composite_ref *ref, const char *name)
+static void test_cap(const peel_case *c, stin_technique t, const composite_ref *ref,
+                     const char *name)
 {
-    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 1, 0, STIN_TECH_NONE};
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 1, 0, STIN_TECH_NONE};
     frame_out f;
     char err[256];
     match m;
+    fo.transparency = t;
     if (!render(c, c->s, &fo, &f, err, sizeof err)) {
         report(c->r, "FAIL", name, "%s", err);
         return;
     }
     compare(c, &f, ref, NULL, 1, 0, &m);
     report(c->r, f.stats.peel_passes == 1 && ref->max_layers > 1 && !matches(&m) ? "PASS" : "FAIL",
-           name, "transparency_layers 1: %u pass, composite matched on only %ld of %ld pixels "
-           "(the scene has %d layers: one layer must not be the whole composite)",
-           f.stats.peel_passes, m.compared - m.over, m.compared, ref->max_layers);
+           name, "%s, transparency_layers 1: %u pass, composite matched on only %ld of %ld "
+           "pixels (the scene has %d layers: one layer must not be the whole composite)",
+           stin_technique_name(t), f.stats.peel_passes, m.compared - m.over, m.compared, ref->max_layers);
     free(f.rgba);
 }
 
@@ -566,15 +603,201 @@ static void sorted_tests(const peel_case *c, const composite_ref *shadowed)
     }
 }
 
+/* Technique t's tests under names prefix-*: its beauty (where it is not
+ * the default, whose beauty peel-beauty checks), order, early-stop and cap;
+ * its image (shadows off, default cap) into out. 0 (SKIP) where t does not
+ * run here. */
+static int battery(const peel_case *c, stin_technique t, stin_technique chosen,
+                   const composite_ref *ref, const char *prefix, frame_out *out)
+{
+    frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
+    char err[256], name[224];
+    fo.transparency = t;
+    if (!render(c, c->s, &fo, out, err, sizeof err)) {
+        snprintf(name, sizeof name, "%s-layers", prefix);
+        report(c->r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(t), err);
+        return 0;
+    }
+    if (t != chosen) {
+        snprintf(name, sizeof name, "%s-forced-beauty", prefix);
+        test_beauty(c, out, ref, name);
+    }
+    snprintf(name, sizeof name, "%s-order", prefix);
+    test_order(c, t, out, name);
+    snprintf(name, sizeof name, "%s-early-stop", prefix);
+    test_early_stop(c, t, out, ref, name);
+    snprintf(name, sizeof name, "%s-cap", prefix);
+    test_cap(c, t, ref, name);
+    return 1;
+}
+
+/* dual-peel against depth-peel, pixel by pixel: within 1/255 on every one
+ * (the same layers, lit by the same passes into the same RGBA8 textures;
+ * only the composite's arithmetic differs: depth-peel rounds its 8-bit
+ * composite per layer, dual-peel's is half floats, rounded once). */
+static void test_agrees(const peel_case *c, const frame_out *dual, const frame_out *depth,
+                        const char *name)
+{
+    size_t i, n = (size_t)c->r->width * c->r->height;
+    long differ = 0, over = 0;
+    int worst = 0, k;
+    for (i = 0; i < n; i++) {
+        int d = 0;
+        for (k = 0; k < 4; k++) {
+            int e = abs((int)dual->rgba[4 * i + k] - (int)depth->rgba[4 * i + k]);
+            d = e > d ? e : d;
+        }
+        differ += d > 0;
+        over += d > 1;
+        worst = d > worst ? d : worst;
+    }
+    report(c->r, over == 0 ? "PASS" : "FAIL", name,
+           "dual-peel against depth-peel: %ld of %ld pixels differ, %ld by more than 1/255 "
+           "(must be 0; worst %d/255)", differ, (long)n, over, worst);
+}
+
+/* A copy of the panes scene with its opaque objects and `n` copies of its
+ * first pane, each 0.3 above the one before: n layers where they overlap. */
+static int stacked(const scene *s, int n, scene *out)
+{
+    int i, k = 0, first = -1;
+    *out = *s;
+    out->objects = malloc(sizeof *out->objects * (size_t)(s->object_count + n));
+    if (!out->objects)
+        return 0;
+    for (i = 0; i < s->object_count; i++) {
+        if (s->materials[s->objects[i].material].color[3] >= 1.0f)
+            out->objects[k++] = s->objects[i];
+        else if (first < 0)
+            first = i;
+    }
+    for (i = 0; i < n && first >= 0; i++) {
+        out->objects[k] = s->objects[first];
+        out->objects[k].transform[13] += 0.3f * (float)i; /* column-major: y */
+        k++;
+    }
+    out->object_count = k;
+    return first >= 0;
+}
+
+/* dual-peel's passes on 1 to 4 stacked panes: N layers (depth-peel's
+ * peel_layers) in N / 2 + 1 passes, with depth-peel's image within 1/255. */
+static void test_stacks(const peel_case *c, const char *prefix)
+{
+    int n;
+    for (n = 1; n <= 4; n++) {
+        frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 0, 0,
+                         STIN_TECH_NONE};
+        frame_out depth, dual;
+        peel_case sc = *c;
+        scene s;
+        char err[256], name[224];
+        snprintf(name, sizeof name, "%s-passes-%d", prefix, n);
+        if (!stacked(c->s, n, &s)) {
+            report(c->r, "FAIL", name, "the scene has no pane to stack");
+            free(s.objects);
+            continue;
+        }
+        sc.s = &s;
+        if (!render(&sc, &s, &fo, &depth, err, sizeof err)) {
+            report(c->r, "FAIL", name, "depth-peel: %s", err);
+        } else {
+            fo.transparency = STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+            if (!render(&sc, &s, &fo, &dual, err, sizeof err)) {
+                report(c->r, "FAIL", name, "dual-peel: %s", err);
+            } else {
+                uint32_t layers = depth.stats.peel_layers;
+                report(c->r,
+                       layers == (uint32_t)n && dual.stats.peel_layers == layers &&
+                               dual.stats.peel_passes == layers / 2 + 1
+                           ? "PASS"
+                           : "FAIL",
+                       name,
+                       "%d stacked panes: %u layers (depth-peel), dual-peel %u layers in %u "
+                       "passes (want %d and %u), depth-peel %u passes",
+                       n, layers, dual.stats.peel_layers, dual.stats.peel_passes, n,
+                       layers / 2 + 1, depth.stats.peel_passes);
+                snprintf(name, sizeof name, "%s-agrees-%d", prefix, n);
+                test_agrees(&sc, &dual, &depth, name);
+                free(dual.rgba);
+            }
+            free(depth.rgba);
+        }
+        free(s.objects);
+    }
+}
+
+/* The panes scene's own tests: the stacks, and both peels under each
+ * shadows technique that runs here (its layers receive shadows): volume,
+ * map-pcf, vdsm's masks made from each layer (without them,
+ * STIN_DEBUG_PEEL_VDSM_UNSHADOWED, the panes in shadow are lit and the
+ * -broken run must fail) and deep's coloured shadows. */
+static void panes_tests(peel_case *c, stin_tier tier, composite_ref *shadowed)
+{
+    static const stin_technique shadows[] = {STIN_TECH_SHADOWS_VOLUME,
+                                             STIN_TECH_SHADOWS_MAP_PCF};
+    static const stin_technique peels[2] = {STIN_TECH_TRANSPARENCY_PEEL,
+                                            STIN_TECH_TRANSPARENCY_DUAL_PEEL};
+    static const char *const prefix[2] = {"peel", "dual-peel"};
+    const char *tn = stin_tier_name(tier);
+    int peel_count = tier == STIN_TIER_GL4 ? 2 : 1; /* dual-peel is GL4 only */
+    char name[192];
+    size_t i;
+    int t;
+    snprintf(name, sizeof name, "%s/%s/dual-peel", tn, c->scene_name);
+    if (tier == STIN_TIER_GL4)
+        test_stacks(c, name);
+    else
+        report(c->r, "SKIP", name, "dual-peel is GL4 only: no pass counts here");
+    if (!reference_of(c, REFERENCE_RENDER_SHADOWED, shadowed)) {
+        report(c->r, "FAIL", name, "shadowed reference composite failed");
+        return;
+    }
+    for (t = 0; t < peel_count; t++)
+        for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++) {
+            snprintf(name, sizeof name, "%s/%s/%s-shadowed-%s", tn, c->scene_name, prefix[t],
+                     stin_technique_name(shadows[i]));
+            test_shadowed(c, shadows[i], STIN_TECH_NONE, peels[t], 0, shadowed, name);
+        }
+    if (tier != STIN_TIER_GL4) {
+        snprintf(name, sizeof name, "%s/%s/peel-shadowed-deep", tn, c->scene_name);
+        report(c->r, "SKIP", name, "deep shadow maps are GL4 only");
+        snprintf(name, sizeof name, "%s/%s/peel-shadowed-vdsm", tn, c->scene_name);
+        report(c->r, "SKIP", name, "vdsm is GL4 only");
+        return;
+    }
+    for (t = 0; t < peel_count; t++) {
+        snprintf(name, sizeof name, "%s/%s/%s-shadowed-vdsm", tn, c->scene_name, prefix[t]);
+        test_shadowed(c, STIN_TECH_SHADOWS_VDSM, STIN_TECH_NONE, peels[t],
+                      STIN_DEBUG_PEEL_VDSM_UNSHADOWED, shadowed, name);
+    }
+    /* deep: the layers get coloured shadows; the composite's layers are lit
+     * through the transmittance */
+    reference_free(shadowed);
+    memset(shadowed, 0, sizeof *shadowed);
+    if (!reference_of(c, REFERENCE_RENDER_TRANSMITTANCE, shadowed)) {
+        report(c->r, "FAIL", name, "transmittance reference composite failed");
+        return;
+    }
+    for (t = 0; t < peel_count; t++) {
+        snprintf(name, sizeof name, "%s/%s/%s-shadowed-deep", tn, c->scene_name, prefix[t]);
+        test_shadowed(c, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_TRANSLUCENT_DEEP, peels[t], 0,
+                      shadowed, name);
+    }
+}
+
 static void peel_scene(run *r, stin_tier tier, const char *path, const char *scene_name)
 {
     scene s;
     peel_case c;
     composite_ref unshadowed, shadowed;
     frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
-    frame_out base;
+    static const stin_technique peels[2] = {STIN_TECH_TRANSPARENCY_PEEL,
+                                            STIN_TECH_TRANSPARENCY_DUAL_PEEL};
+    frame_out base, layered[2];
     char err[512], name[192];
     const char *tn = stin_tier_name(tier);
+    int t;
     memset(&unshadowed, 0, sizeof unshadowed);
     memset(&shadowed, 0, sizeof shadowed);
     snprintf(name, sizeof name, "%s/%s/peel", tn, scene_name);
@@ -618,65 +841,23 @@ static void peel_scene(run *r, stin_tier tier, const char *path, const char *sce
     report_clean(&c, name, &base);
     snprintf(name, sizeof name, "%s/%s/peel-beauty", tn, scene_name);
     test_beauty(&c, &base, &unshadowed, name);
-    if (base.choice[STIN_FEATURE_TRANSPARENCY].technique != STIN_TECH_TRANSPARENCY_PEEL) {
-        snprintf(name, sizeof name, "%s/%s/peel-layers", tn, scene_name);
-        report(r, "SKIP", name, "transparency is %s here (%s)",
-               stin_technique_name(base.choice[STIN_FEATURE_TRANSPARENCY].technique),
-               base.choice[STIN_FEATURE_TRANSPARENCY].reason);
-        free(base.rgba);
-        goto done;
+    for (t = 0; t < 2; t++) {
+        snprintf(name, sizeof name, "%s/%s/%s", tn, scene_name, t ? "dual-peel" : "peel");
+        if (!battery(&c, peels[t], base.choice[STIN_FEATURE_TRANSPARENCY].technique,
+                     &unshadowed, name, &layered[t]))
+            layered[t].rgba = NULL;
     }
-    snprintf(name, sizeof name, "%s/%s/peel-order", tn, scene_name);
-    test_order(&c, &base, name);
-    snprintf(name, sizeof name, "%s/%s/peel-early-stop", tn, scene_name);
-    test_early_stop(&c, &base, &unshadowed, name);
-    snprintf(name, sizeof name, "%s/%s/peel-cap", tn, scene_name);
-    test_cap(&c, &unshadowed, name);
+    snprintf(name, sizeof name, "%s/%s/dual-peel-agrees", tn, scene_name);
+    if (layered[0].rgba && layered[1].rgba)
+        test_agrees(&c, &layered[1], &layered[0], name);
+    else
+        report(r, "SKIP", name, "%s does not run here: nothing to compare",
+               layered[1].rgba ? "depth-peel" : "dual-peel");
     free(base.rgba);
-    if (!strcmp(scene_name, "panes")) { /* the scene with a pane in shadow */
-        static const stin_technique shadows[] = {STIN_TECH_SHADOWS_VOLUME,
-                                                 STIN_TECH_SHADOWS_MAP_PCF};
-        size_t i;
-        if (!reference_of(&c, REFERENCE_RENDER_SHADOWED, &shadowed)) {
-            report(r, "FAIL", name, "shadowed reference composite failed");
-            goto done;
-        }
-        for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++) {
-            snprintf(name, sizeof name, "%s/%s/peel-shadowed-%s", tn, scene_name,
-                     stin_technique_name(shadows[i]));
-            test_shadowed(&c, shadows[i], STIN_TECH_NONE, STIN_TECH_TRANSPARENCY_PEEL, 0,
-                          &shadowed, name);
-        }
-        /* deep: the layers get coloured shadows; the composite's layers are
-         * lit through the transmittance */
-        snprintf(name, sizeof name, "%s/%s/peel-shadowed-deep", tn, scene_name);
-        if (tier != STIN_TIER_GL4) {
-            report(r, "SKIP", name, "deep shadow maps are GL4 only");
-        } else {
-            reference_free(&shadowed);
-            memset(&shadowed, 0, sizeof shadowed);
-            if (!reference_of(&c, REFERENCE_RENDER_TRANSMITTANCE, &shadowed))
-                report(r, "FAIL", name, "transmittance reference composite failed");
-            else
-                test_shadowed(&c, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_TRANSLUCENT_DEEP,
-                              STIN_TECH_TRANSPARENCY_PEEL, 0, &shadowed, name);
-        }
-        /* vdsm: the position buffer made from each layer; without it
-         * (STIN_DEBUG_PEEL_VDSM_UNSHADOWED) the panes in shadow are lit */
-        snprintf(name, sizeof name, "%s/%s/peel-shadowed-vdsm", tn, scene_name);
-        if (tier != STIN_TIER_GL4) {
-            report(r, "SKIP", name, "vdsm is GL4 only");
-        } else {
-            reference_free(&shadowed);
-            memset(&shadowed, 0, sizeof shadowed);
-            if (!reference_of(&c, REFERENCE_RENDER_SHADOWED, &shadowed))
-                report(r, "FAIL", name, "shadowed reference composite failed");
-            else
-                test_shadowed(&c, STIN_TECH_SHADOWS_VDSM, STIN_TECH_NONE,
-                              STIN_TECH_TRANSPARENCY_PEEL, STIN_DEBUG_PEEL_VDSM_UNSHADOWED,
-                              &shadowed, name);
-        }
-    }
+    free(layered[0].rgba);
+    free(layered[1].rgba);
+    if (!strcmp(scene_name, "panes")) /* the scene with a pane in shadow */
+        panes_tests(&c, tier, &shadowed);
 done:
     reference_free(&unshadowed);
     reference_free(&shadowed);

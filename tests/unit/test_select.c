@@ -290,9 +290,9 @@ static void test_deep_on_gl4_only(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique,
                      STIN_TECH_TRANSLUCENT_DEEP);
     assert_int_equal(sel.translucent_unit, sel.shadow_unit + 1); /* after vdsm's mask */
-    /* depth-peel's two units follow, then the vertex stage's height map */
+    /* dual-peel's two units follow, then the vertex stage's height map */
     assert_int_equal(sel.choice[STIN_FEATURE_TRANSPARENCY].technique,
-                     STIN_TECH_TRANSPARENCY_PEEL);
+                     STIN_TECH_TRANSPARENCY_DUAL_PEEL);
     assert_int_equal(sel.transparency_unit, sel.translucent_unit + 2);
     assert_int_equal(sel.displace_unit, sel.transparency_unit + 2);
     core.present &= ~STIN_CAP_BIT(STIN_CAP_FLOAT_TEXTURE);
@@ -319,6 +319,42 @@ static void test_deep_on_gl4_only(void **state)
                      STIN_ERROR_UNSUPPORTED);
     assert_non_null(strstr(msg, "deep needs tier gl4"));
     assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_FLOAT_TEXTURE)));
+}
+
+/* Camera transparency's chain: dual-peel (GL4) -> depth-peel -> sorted,
+ * each step naming the capability it lacked; forcing dual-peel on GL2 names
+ * the tier. */
+static void test_transparency_chain(void **state)
+{
+    stin_caps core = caps_with(33, 33, 1, GL33_CORE_BITS);
+    stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS | BIT(PACKED_DEPTH_STENCIL));
+    stin_technique forced[STIN_FEATURE_COUNT] = {STIN_TECH_NONE};
+    stin__selection sel;
+    const stin_choice *c = &sel.choice[STIN_FEATURE_TRANSPARENCY];
+    char msg[256];
+    (void)state;
+    core.max_texture_image_units = 16;
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_DUAL_PEEL);
+    assert_false(c->fell_back);
+    core.present &= ~BIT(OCCLUSION_QUERY); /* its early stop */
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_PEEL);
+    assert_true(c->fell_back);
+    assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_OCCLUSION_QUERY)));
+    core.present |= BIT(OCCLUSION_QUERY);
+    core.present &= ~(BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL));
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_SORTED);
+    assert_true(c->fell_back);
+    /* the reason names the step just above: what depth-peel lacked */
+    assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_PACKED_DEPTH_STENCIL)));
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_PEEL);
+    forced[STIN_FEATURE_TRANSPARENCY] = STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, "dual-peel needs tier gl4"));
 }
 
 /* A forced technique above the tier ceiling names the tier and what is missing,
@@ -553,6 +589,7 @@ int main(void)
         cmocka_unit_test(test_forced_technique_above_the_tier),
         cmocka_unit_test(test_vdsm_on_gl4_only),
         cmocka_unit_test(test_deep_on_gl4_only),
+        cmocka_unit_test(test_transparency_chain),
         cmocka_unit_test(test_surface_follows_the_lighting_technique),
         cmocka_unit_test(test_technique_tables),
         cmocka_unit_test(test_every_technique_has_a_row_and_a_rank),

@@ -18,6 +18,6 @@ const bench_section bench_sections[SECTION_COUNT] = {
              "in all six", section_deep},
     {"csg", "CSG products: scs and goldfeather against OpenCSG's SCS and Goldfeather, n = 2 to "
             "128 primitives and a row along the view", section_csg},
-    {"peel", "GL2/GL4 camera transparency: depth-peel against sorted with 0, 2 and 4 "
-             "transparent layers on screen (passes and time)", section_peel},
+    {"peel", "GL2/GL4 camera transparency: depth-peel and dual-peel (GL4) against sorted "
+             "with 0, 2 and 4 transparent layers on screen (passes and time)", section_peel},
 };

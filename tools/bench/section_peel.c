@@ -2,8 +2,9 @@
 /* The camera transparency section (gl2, gl4; shadows off, so the layers'
  * cost is the peel's own): on the panes scene with 0, 2 and 4 transparent
  * layers on screen (its opaque objects and that many copies of its first
- * pane stacked 0.3 apart), depth-peel's passes and frame time against
- * sorted's; on gl4 then the same layers shadowed, vdsm against volume. */
+ * pane stacked 0.3 apart), depth-peel's and dual-peel's (gl4) passes and
+ * frame times against sorted's; on gl4 then the same layers shadowed, vdsm
+ * against volume. */
 #include "bench_options.h"
 #include "bench_report.h"
 
@@ -13,6 +14,7 @@
 
 #define WHAT "camera transparency"
 #define LAYER_CASES 3
+#define PEELS 2 /* depth-peel, dual-peel */
 
 static int blended(const scene *s, const scene_object *o)
 {
@@ -96,36 +98,45 @@ int section_peel(bench_env *env, const scene *s, int *ran)
     int tier_n, t, i, rc = 0;
     bench_tech_settings(env, SEC_PEEL, &st);
     st.base.transparency = STIN_TECH_TRANSPARENCY_SORTED;
-    printf("\n## Camera transparency (gl2/gl4, shadows off): depth-peel against sorted, %dx%d; "
+    printf("\n## Camera transparency (gl2/gl4, shadows off): depth-peel and dual-peel against "
+           "sorted, %dx%d; "
            "%s\n", env->b.width, env->b.height,
            bench_row_timing(env, st.setups, st.frames, timing, sizeof timing));
     tier_n = bench_tiers(env, GLSL_TIERS, WHAT, "gl2 and gl4 only", tiers);
     for (t = 0; t < tier_n && !rc; t++) {
-        tech_row rows[LAYER_CASES];
+        tech_row rows[PEELS];
         int ok = 1;
         printf("\n### %s (%s)\n\n", stin_tier_name(tiers[t]), tier_label(tiers[t]));
-        printf("| layers on screen | depth-peel passes | sorted median ms | depth-peel median ms "
-               "| depth-peel / sorted |\n|---:|---:|---:|---:|---:|\n");
+        printf("| layers on screen | depth-peel passes | dual-peel passes | sorted median ms "
+               "| depth-peel median ms | dual-peel median ms | depth-peel / sorted "
+               "| dual-peel / depth-peel |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n");
         for (i = 0; i < LAYER_CASES && ok && !rc; i++) {
             scene copy;
-            memset(&rows[i], 0, sizeof rows[i]);
-            rows[i].cfg = st.base;
-            rows[i].cfg.transparency = STIN_TECH_TRANSPARENCY_PEEL;
+            memset(rows, 0, sizeof rows);
+            rows[0].cfg = rows[1].cfg = st.base;
+            rows[0].cfg.transparency = STIN_TECH_TRANSPARENCY_PEEL;
+            rows[1].cfg.transparency = STIN_TECH_TRANSPARENCY_DUAL_PEEL;
             if (!with_panes(s, layers[i], &copy)) {
                 fprintf(stderr, "stin-bench: the peel scene has too few transparent objects\n");
                 free(copy.objects);
                 rc = EXIT_BAD_INPUT;
                 break;
             }
-            ok = bench_tech_tier(env, &st, tiers[t], WHAT, &copy, &rows[i], 1, &rc);
+            ok = bench_tech_tier(env, &st, tiers[t], WHAT, &copy, rows, PEELS, &rc);
             free(copy.objects);
             if (!ok)
                 break;
-            if (rows[i].skipped)
-                printf("| %d | SKIP: %s | | | |\n", layers[i], rows[i].why);
+            if (rows[0].skipped)
+                printf("| %d | SKIP: %s | | | | | | |\n", layers[i], rows[0].why);
+            else if (rows[1].skipped) /* gl2: dual-peel is GL4 only */
+                printf("| %d | %u | SKIP: %s | %.2f | %.2f | | %.2f | |\n", layers[i],
+                       rows[0].peel_passes, rows[1].why, rows[0].base_ms, rows[0].on_ms,
+                       tech_ratio(&rows[0]));
             else
-                printf("| %d | %u | %.2f | %.2f | %.2f |\n", layers[i], rows[i].peel_passes,
-                       rows[i].base_ms, rows[i].on_ms, tech_ratio(&rows[i]));
+                printf("| %d | %u | %u | %.2f | %.2f | %.2f | %.2f | %.2f |\n", layers[i],
+                       rows[0].peel_passes, rows[1].peel_passes, rows[0].base_ms,
+                       rows[0].on_ms, rows[1].on_ms, tech_ratio(&rows[0]),
+                       rows[0].on_ms > 0 ? rows[1].on_ms / rows[0].on_ms : 0.0);
             fflush(stdout);
         }
         if (ok && !rc)
