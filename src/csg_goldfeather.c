@@ -484,7 +484,8 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
     for (pi = 0; pi < ctx->csg.product_count; pi++) {
         stin__csg_product *p = &ctx->csg.products[pi];
         p->capped = 0;
-        if (!stin__csg_scs_product(ctx, path, &r, p))
+        if (!stin__csg_interval_product(ctx, path, &r, p) &&
+            !stin__csg_scs_product(ctx, path, &r, p))
             resolve_product(ctx, path, &r, p);
     }
     path->geometry_end(ctx);

@@ -62,12 +62,12 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_DISPLACEMENT_OFF,       2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* stencil parity; depth written back by glDrawPixels (compatibility) or
      * a GLSL 1.50 program (core: csg_goldfeather.c demotes without it) */
-    {STIN_TECH_CSG_GOLDFEATHER,        1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
-    {STIN_TECH_CSG_OFF,                2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_GOLDFEATHER,        2, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_OFF,                3, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* sequenced convex subtraction (csg_scs.c) for products of convex
      * primitives, goldfeather's depth write-back; other products go to
      * goldfeather (logged) */
-    {STIN_TECH_CSG_SCS,                0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_SCS,                1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* depth peeling of the camera's layers: two samplers in the lit programs
      * (the previous layer's depth, the opaque depth); packed depth-stencil
      * textures hold a layer's depth and the stencil volumes count in */
@@ -75,6 +75,16 @@ static const stin__technique_row rows[] = {
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(MULTITEXTURE) |
          BIT(VBO), GLSL_ANY, 0, 2, 0, NULL, 0},
     {STIN_TECH_TRANSPARENCY_SORTED,    1, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    /* the ray-interval walk over peeled layers (csg_interval.c): GLSL 1.50,
+     * FBOs, texture arrays (GL 3.0: DEPTH_COMPONENT32F and R8 layers) and a
+     * float colour target (R32F) the walk writes and the CPU reads back, an
+     * occlusion query for the overflow;
+     * goldfeather's depth write-back (its GLSL 1.50 program) and stencil
+     * for the products it hands on; products past its limits go to
+     * scs/goldfeather (logged) */
+    {STIN_TECH_CSG_INTERVAL,           0, TIER4 | BIT(FLOAT_TEXTURE) | BIT(STENCIL) |
+         BIT(OCCLUSION_QUERY),
+     STIN_TECH_LIGHTING_GLSL150, 0, 0, 0, NULL, 0},
 };
 
 static const stin_feature tech_feature[] = {

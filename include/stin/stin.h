@@ -431,7 +431,7 @@ const char *stin_feature_name(stin_feature f);
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace-tess, displace, displacement-off
  *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
- *   csg:      scs, goldfeather, csg-off (see "CSG products" below)
+ *   csg:      interval (GL4), scs, goldfeather, csg-off (see "CSG products" below)
  *   transparency: depth-peel, sorted (see "Transparency" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
@@ -689,7 +689,8 @@ const char *stin_feature_name(stin_feature f);
     X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
     X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1) \
     X(TRANSPARENCY_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
-    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1)
+    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1) \
+    X(CSG_INTERVAL, "interval", STIN_FEATURE_CSG, STIN_TIER_GL4)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -768,6 +769,9 @@ typedef struct stin_desc {
     uint32_t transparency_layers;      /* "depth-peel": layers of blended surfaces peeled
                                         * per pixel at most, default 8, at most 64;
                                         * surfaces past it along a ray are not drawn */
+    uint32_t csg_interval_layers;      /* "interval": crossings of one primitive peeled per
+                                        * pixel (k), default 4, at most 16; a product with
+                                        * more on a pixel goes to scs/goldfeather that frame */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -815,6 +819,14 @@ typedef struct stin_desc {
  * of batches of 255: wrong (nothing drawn) where a term intersects more than
  * 255; a test that it shows the batching matters */
 #define STIN_DEBUG_CSG_NO_BATCH 131072u
+/* interval: the seed's one-interval method (one layer per primitive: its
+ * nearest front and nearest back face, no overflow check): wrong where an
+ * operand is non-convex along a ray or bodies lie behind each other; a
+ * test that the k layers matter */
+#define STIN_DEBUG_CSG_INTERVAL_ONE_LAYER 524288u
+/* interval: peel 2 layers per primitive whatever desc.csg_interval_layers
+ * says (a product deeper than that overflows and goes to goldfeather) */
+#define STIN_DEBUG_CSG_INTERVAL_TWO_LAYERS 1048576u
 /* depth-peel: peel all desc.transparency_layers layers, without stopping at
  * the first that drew nothing (the same image, more passes) */
 #define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
@@ -1264,6 +1276,39 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * product. stin_frame_stats.csg_scs_products counts the products scs
  * resolved. */
 
+/* CSG technique "interval" (GL4: GLSL 1.50 lighting, FBOs, float and array
+ * textures; the default where the context has them): the seed's G-buffer
+ * ray-interval method generalised to k layers per primitive
+ * (desc.csg_interval_layers, default 4). Per product: each primitive alone
+ * depth-peeled into k layers along the camera rays (depth LESS into a
+ * DEPTH_COMPONENT32F layer, fragments at or in front of the layer before
+ * discarded; an R8 layer says whether it is a front or a back face), then
+ * one full-screen pass walks every primitive's crossings per pixel in depth
+ * order: a front face enters, a back face leaves, a primitive starts inside
+ * where its first crossing is a back face (the near plane cuts it),
+ * crossings within 4 units of 2^-24 of each other count together (the
+ * coplanar rule above), and the first crossing where the normal form turns
+ * true is the surface (the near-plane cap where it is true from the start).
+ * Its depth is the peeled layer's own, so the face draws (depth EQUAL) hit
+ * it exactly; it is kept per pixel where nearer, as goldfeather keeps its
+ * result (same write-back, face passes, GL state and staging). The walk
+ * reads the R32F target back once a product. Passes a product: n x (k + 1)
+ * peels (the last an occlusion query: any fragment past layer k is an
+ * overflow) + the cap + 1 walk, against goldfeather's per literal and
+ * layer. GL memory: 2 arrays of ceil((n k + 1) / 2) slices of 5 bytes a
+ * pixel (depth 4, facing 1) for the largest product n so far, plus 4 bytes
+ * a pixel of target, all at the viewport's window size (x + w by y + h):
+ * (n k + 2) x 5 + 4 bytes a pixel, about 33 MiB for n = 8, k = 4 at
+ * 640 x 480; stin_frame_stats.csg_interval_bytes reports it. Made at the
+ * first frame with a product, grown, freed at stin_destroy.
+ * Selection per product: under "interval", a product goes to scs's rule
+ * (then goldfeather) when it has more than 32 primitives or 64 terms,
+ * needs more than GL_MAX_ARRAY_TEXTURE_LAYERS layers, or a primitive shows
+ * more than k crossings on a pixel (found that frame: the product is
+ * resolved again by the others), logged once per context (INFO; WARNING
+ * where the caller forced interval). stin_frame_stats.csg_interval_products
+ * counts the products interval resolved. */
+
 /* The normal form of the frame's product `product` (0 = the first accepted
  * by stin_draw_csg since stin_begin_frame, until the next begin): the
  * number of terms; when `literals` is not NULL, the literals of term
@@ -1292,6 +1337,10 @@ typedef struct stin_frame_stats {
      * which found nothing, counted: a scene of n layers under a cap above n
      * takes n + 1), and the layers that drew something */
     uint32_t peel_passes, peel_layers;
+    /* products resolved by "interval", and the GL memory its layers and
+     * target hold (grown to the largest viewport and product so far) */
+    uint32_t csg_interval_products;
+    uint64_t csg_interval_bytes;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);
