@@ -39,17 +39,19 @@ typedef struct stin__csg_product {
 #define STIN__CSG_INTERVAL_MAX_LAYERS 16u  /* desc.csg_interval_layers at most */
 #define STIN__CSG_INTERVAL_MAX_PRIMITIVES 32u /* a product's primitives (a bit each) */
 #define STIN__CSG_INTERVAL_MAX_TERMS 64u   /* a product's terms (uniform masks) */
+#define STIN__CSG_INTERVAL_MAX_LAYER_INDEX 255u /* layers + cap: the walk's 8-bit answer */
 typedef struct stin__csg_interval_state {
     GLuint peel_prog, walk_prog;
-    GLint peel_model, peel_view_proj, peel_previous, peel_previous_slice, peel_mirrored;
+    GLint peel_model, peel_view_proj, peel_previous, peel_previous_slice, peel_mirrored,
+        peel_tolerance;
     stin__displace_locs peel_displace;
-    GLint walk_depth[2], walk_crossing[2], walk_counts, walk_terms;
+    GLint walk_crossing[2], walk_counts, walk_terms;
     /* even and odd layers: depth in the frame's depth format (what the face
      * draws' depth EQUAL compares with), and RG32F crossings (the
      * rasteriser's float depth, for exact peeling and ordering; the side) */
     GLuint depth[2], crossing[2];
     GLenum depth_format;
-    GLuint result, fbo, query;  /* the walk's R32F target; the overflow's query */
+    GLuint result, fbo, query;  /* the walk's R8 target; the overflow's query */
     int width, height, slices;  /* grown to the largest frame and product so far */
     size_t bytes;               /* GL memory of the textures above */
     int max_slices;             /* GL_MAX_ARRAY_TEXTURE_LAYERS */

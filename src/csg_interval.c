@@ -25,15 +25,12 @@
  * (no feedback loop). */
 #include "internal.h"
 
-#define DBG(ctx, w) do { GLenum e_ = ctx->gl.GetError(); if (e_) stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR, "DBG 0x%x at %s", e_, w); } while (0)
 #define GL_DEPTH_COMPONENT32F 0x8CAC
 #define GL_DEPTH_COMPONENT16 0x81A5
 #ifndef GL_UNSIGNED_SHORT
 #define GL_UNSIGNED_SHORT 0x1403
 #endif
-#ifndef GL_R32F
-#define GL_R32F 0x822E
-#endif
+#define GL_R8 0x8229
 #define GL_MAX_ARRAY_TEXTURE_LAYERS 0x88FF
 
 static int chosen(const stin_context *ctx)
@@ -96,8 +93,7 @@ static int make_programs(stin_context *ctx, char *msg, size_t size)
     LOC(peel_previous, peel_prog, "u_previous");
     LOC(peel_previous_slice, peel_prog, "u_previous_slice");
     LOC(peel_mirrored, peel_prog, "u_mirrored");
-    LOC(walk_depth[0], walk_prog, "u_depth_even");
-    LOC(walk_depth[1], walk_prog, "u_depth_odd");
+    LOC(peel_tolerance, peel_prog, "u_tolerance");
     LOC(walk_crossing[0], walk_prog, "u_crossing_even");
     LOC(walk_crossing[1], walk_prog, "u_crossing_odd");
     LOC(walk_counts, walk_prog, "u_counts");
@@ -143,10 +139,10 @@ static void depth_format(const stin_context *ctx, GLenum *format, GLenum *layout
 {
     int bits = ctx->target.depth_bits;
     *format = bits > 24 ? GL_DEPTH_COMPONENT32F
-              : bits > 16 ? GL_DEPTH24_STENCIL8
+              : bits > 16 ? GL_DEPTH_COMPONENT24
                           : GL_DEPTH_COMPONENT16;
-    *layout = bits > 16 && bits <= 24 ? GL_DEPTH_STENCIL : GL_DEPTH_COMPONENT;
-    *type = bits > 24 ? GL_FLOAT : bits > 16 ? GL_UNSIGNED_INT_24_8 : GL_UNSIGNED_SHORT;
+    *layout = GL_DEPTH_COMPONENT;
+    *type = bits > 24 ? GL_FLOAT : bits > 16 ? GL_UNSIGNED_INT : GL_UNSIGNED_SHORT;
 }
 
 /* Layers for `slices` slices an array at the viewport's window size (x + w
@@ -179,7 +175,7 @@ static int ensure_targets(stin_context *ctx, int slices)
     GL(ctx, BindTexture)(GL_TEXTURE_2D, s->result);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R32F, w, h, 0, GL_RED, GL_FLOAT, NULL);
+    GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, NULL);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->crossing[0], 0, 0);
@@ -189,7 +185,7 @@ static int ensure_targets(stin_context *ctx, int slices)
     s->height = h;
     s->slices = slices;
     s->depth_format = format;
-    s->bytes = (size_t)w * (size_t)h * ((size_t)slices * 2u * 12u + 4u);
+    s->bytes = (size_t)w * (size_t)h * ((size_t)slices * 2u * 12u + 1u);
     if (status == GL_FRAMEBUFFER_COMPLETE)
         return 1;
     if (!s->said_failed)
@@ -208,6 +204,8 @@ static const char *unfit(const stin_context *ctx, const stin__csg_product *p, in
         return "the product has more than 32 primitives (the walk's in/out bits)";
     if (p->term_count > STIN__CSG_INTERVAL_MAX_TERMS)
         return "the product has more than 64 terms (the walk's uniforms)";
+    if (p->primitive_count * (uint32_t)k + 1u > STIN__CSG_INTERVAL_MAX_LAYER_INDEX)
+        return "its primitives x layers pass 254 (the walk's 8-bit layer index)";
     if ((p->primitive_count * (uint32_t)k + 2u) / 2u > (uint32_t)s->max_slices)
         return "its primitives x layers pass GL_MAX_ARRAY_TEXTURE_LAYERS";
     if (s->said_failed)
@@ -322,7 +320,6 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
         for (j = 0; j < k; j++)
             peel(ctx, d, g + j, j ? g + j - 1 : -1, 0);
     }
-    DBG(ctx, "DBG peeled");
     if (!one_interval(ctx) && overflows(ctx, p, k)) {
         if (!s->said_overflow) {
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
@@ -344,7 +341,8 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
     return 1;
 }
 
-/* The walk into the R32F target, read back into r->candidate. */
+/* The walk into the R8 target: per pixel the surface's layer + 1 (0:
+ * none), read back into r->stencil. */
 static void walk(stin_context *ctx, stin__csg_pixels *r, const stin__csg_product *p, int k,
                  int cap)
 {
@@ -373,20 +371,76 @@ static void walk(stin_context *ctx, stin__csg_pixels *r, const stin__csg_product
     stin__pass_apply(ctx, &ps);
     GL(ctx, UseProgram)(s->walk_prog);
     for (i = 0; i < 2; i++) {
-        stin__bind_unit(ctx, i, GL_TEXTURE_2D_ARRAY, s->depth[i]);
-        stin__bind_unit(ctx, 2 + i, GL_TEXTURE_2D_ARRAY, s->crossing[i]);
-        GL(ctx, Uniform1i)(s->walk_depth[i], i);
-        GL(ctx, Uniform1i)(s->walk_crossing[i], 2 + i);
+        stin__bind_unit(ctx, i, GL_TEXTURE_2D_ARRAY, s->crossing[i]);
+        GL(ctx, Uniform1i)(s->walk_crossing[i], i);
     }
     GL(ctx, Uniform4iv)(s->walk_counts, 1, counts);
     GL(ctx, Uniform2uiv)(s->walk_terms, (GLsizei)p->term_count, terms);
     stin__vdsm_screen_quad(ctx);
     ctx->stats.passes++;
-    GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_RED, GL_FLOAT, r->candidate);
-    for (i = 0; i < 4; i++)
+    GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_RED, GL_UNSIGNED_BYTE, r->stencil);
+    for (i = 0; i < 2; i++)
         stin__bind_unit(ctx, i, GL_TEXTURE_2D_ARRAY, 0);
     stin__bind_unit(ctx, previous_unit(ctx), GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
+}
+
+/* Each layer some pixel's surface lies on, peeled once more in the
+ * frame's depth buffer - its depth there is what the face draws' depth
+ * EQUAL meets; a texture's may differ in the last bit (Mesa rasterises
+ * into textures flipped) - against the layer before within TOLERANCE (the
+ * two rasterisations differ far less; crossings of one primitive closer
+ * than that are one), read back and kept where nearer (goldfeather's
+ * read of the frame's depth). */
+#define TOLERANCE (16.0f / 16777216.0f)
+static void keep_layers(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
+                        stin__csg_product *p, int k, int cap)
+{
+    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__pass_state clear = stin__pass_defaults, ps = stin__pass_defaults;
+    int cap_layer = (int)p->primitive_count * k, g, any;
+    size_t i;
+    p->capped = 0;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    GL(ctx, UseProgram)(s->peel_prog);
+    GL(ctx, Uniform1f)(s->peel_tolerance, TOLERANCE);
+    ctx->bound_mesh = 0xffffffffu;
+    clear.depth_write = 1;
+    clear.color_write = 0;
+    ps.depth_test = 1;
+    ps.color_write = 0;
+    for (g = 0; g <= cap_layer; g++) {
+        const stin__draw *d = &ctx->csg.primitives[p->first_primitive + g / k];
+        stin__draw cap_draw;
+        for (i = 0, any = 0; i < r->pixels && !any; i++)
+            any = r->stencil[i] == g + 1;
+        if (!any)
+            continue;
+        if (g == cap_layer) {
+            if (!cap)
+                break;
+            cap_draw = ctx->csg.primitives[p->first_primitive];
+            cap_draw.mesh_slot = ctx->csg.cap_slot;
+            cap_draw.csg = STIN__CSG_CAP;
+            stin__memcopy(cap_draw.transform, ctx->csg.cap_transform,
+                          sizeof cap_draw.transform);
+            d = &cap_draw;
+        }
+        stin__pass_apply(ctx, &clear);
+        GL(ctx, ClearDepth)(1.0);
+        GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
+        peel_draw(ctx, d, g % k && g != cap_layer ? g - 1 : -1, &ps);
+        stin__csg_read_depth(ctx, r, r->candidate);
+        for (i = 0; i < r->pixels; i++)
+            if (r->stencil[i] == g + 1 && r->candidate[i] < r->result[i]) {
+                r->result[i] = r->candidate[i];
+                p->capped |= g == cap_layer;
+            }
+    }
+    GL(ctx, Uniform1f)(s->peel_tolerance, 0.0f);
+    stin__bind_unit(ctx, previous_unit(ctx), GL_TEXTURE_2D_ARRAY, 0);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    (void)path;
 }
 
 int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
@@ -395,7 +449,6 @@ int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__
     stin__csg_interval_state *s = &ctx->csg.interval;
     int k = layers_of(ctx), cap = 0, done;
     const char *why;
-    size_t i;
     if (!chosen(ctx))
         return 0;
     why = unfit(ctx, p, k);
@@ -409,24 +462,15 @@ int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__
     }
     ctx->stats.csg_interval_bytes = s->bytes;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
-    DBG(ctx, "DBG before peel");
     done = peel_product(ctx, p, k, &cap);
-    DBG(ctx, "DBG after peel");
-    if (done)
+    if (done) {
         walk(ctx, r, p, k, cap);
-    DBG(ctx, "DBG after walk");
+        keep_layers(ctx, path, r, p, k, cap);
+    }
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     path->geometry_begin(ctx); /* the resolve's program again, for the products after */
     if (!done)
         return 0;
-    p->capped = 0;
-    for (i = 0; i < r->pixels; i++) {
-        float v = r->candidate[i], depth = v < 0.0f ? -v : v;
-        if (depth < r->result[i]) {
-            r->result[i] = depth;
-            p->capped |= v < 0.0f;
-        }
-    }
     ctx->stats.csg_interval_products++;
     return 1;
 }

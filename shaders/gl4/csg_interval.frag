@@ -2,25 +2,25 @@
 // SPDX-License-Identifier: MIT
 // CSG "interval" (src/csg_interval.c): one product's surface per pixel from
 // its primitives' peeled crossings. Crossing j of primitive i is layer
-// g = i k + j, slice g / 2 of the even or odd arrays: u_crossing (r: the
-// fragment's float depth, g: its side, 1 front, 0.5 back, 0 none) and
-// u_depth (the same fragment's depth in the frame's depth format). The
+// g = i k + j, slice g / 2 of the even or odd array u_crossing (r: the
+// fragment's float depth, g: its side, 1 front, 0.5 back, 0 none). The
 // crossings are walked nearest first keeping each primitive's in/out state;
 // the product is the union of terms, term t inside every primitive of
 // u_terms[t].x and outside every one of u_terms[t].y. The first crossing
-// where it turns true is the surface: its u_depth is written (2.0: none).
-// True before any crossing (the near plane inside the product) gives the
-// cap's (layer n k), negated to tell it.
+// where it turns true is the surface: its layer g is written as
+// (g + 1) / 255 (0: none), and the CPU takes that layer's depth as its
+// depth attachment holds it. True before any crossing (the near plane
+// inside the product) gives the cap's layer, n k.
 #define MAX_PRIMITIVES 32
 #define MAX_TERMS 64
 #define NONE 2.0
 // crossings this close count as one distance (the coplanar rule): 4 units
 // of a 24-bit depth, goldfeather's polygon offset
 #define TOGETHER (4.0 / 16777216.0)
-uniform sampler2DArray u_depth_even, u_depth_odd, u_crossing_even, u_crossing_odd;
+uniform sampler2DArray u_crossing_even, u_crossing_odd;
 uniform ivec4 u_counts; // primitives n, layers k, terms, cap layer present
 uniform uvec2 u_terms[MAX_TERMS];
-out vec4 o_depth;
+out vec4 o_layer;
 
 float head_depth[MAX_PRIMITIVES];
 float head_side[MAX_PRIMITIVES];
@@ -39,11 +39,9 @@ vec2 crossing(int g)
     return c.y < 0.25 ? vec2(NONE, 0.0) : c;
 }
 
-// layer g's depth in the frame's format (what the face draws meet)
-float frame_depth(int g)
+vec4 layer(int g)
 {
-    return (g & 1) == 0 ? texelFetch(u_depth_even, texel(g), 0).r
-                        : texelFetch(u_depth_odd, texel(g), 0).r;
+    return vec4(float(g + 1) / 255.0, 0.0, 0.0, 1.0);
 }
 
 // the next crossing of primitive i (peeled layers have no gaps; the
@@ -80,7 +78,7 @@ void main()
     }
     bool was = holds(inside);
     if (was && u_counts.w != 0 && crossing(n * k).x < NONE) {
-        o_depth = vec4(-frame_depth(n * k), 0.0, 0.0, 1.0);
+        o_layer = layer(n * k);
         return;
     }
     for (int step = 0; step < MAX_PRIMITIVES * 16; step++) {
@@ -103,10 +101,10 @@ void main()
             }
         bool now = holds(inside);
         if (now && !was) {
-            o_depth = vec4(frame_depth(nearest), 0.0, 0.0, 1.0);
+            o_layer = layer(nearest);
             return;
         }
         was = now;
     }
-    o_depth = vec4(NONE, 0.0, 0.0, 1.0);
+    o_layer = vec4(0.0);
 }

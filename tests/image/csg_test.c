@@ -84,13 +84,17 @@ static const csg_case cases[] = {
     {"eye-cavity", "csg/eye-cavity.json", {0, 1}, minus, 0, 0, 0},
     {"eye-cut", "csg/eye-cut.json", {0, 1}, minus, 0, 0, 0},
     {"row", "csg/row.json", {0, 1}, minus, 0, 0, 0},
+    {"torus-far", "csg/torus-far.json", {0, 1}, common, 0, 0, 0},
 };
 
 /* Cases where one interval per operand (the seed's method) is wrong: a
- * non-convex operand (the torus) or bodies behind each other (row). */
+ * non-convex operand seen through itself (torus-far) or bodies behind each
+ * other (row). torus-groove and torus-cut are non-convex too, but their
+ * rays seldom need a second interval (one interval matches there on
+ * 99.99% of the pixels). */
 static int non_convex_along_rays(const csg_case *c)
 {
-    return strncmp(c->name, "torus", 5) == 0 || strcmp(c->name, "row") == 0;
+    return strcmp(c->name, "torus-far") == 0 || strcmp(c->name, "row") == 0;
 }
 
 /* goldfeather's names as they were; scs's with "scs-" in front */
