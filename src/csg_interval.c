@@ -119,7 +119,7 @@ void stin__csg_interval_init(stin_context *ctx)
         return;
     }
     GL(ctx, GetIntegerv)(GL_MAX_ARRAY_TEXTURE_LAYERS, &most);
-    s->max_slices = most;
+    s->max_slices = most > 256 ? most : 256; /* GL 3.0's least */
     GL(ctx, GenQueries)(1, &s->query);
 }
 

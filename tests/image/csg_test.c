@@ -1,11 +1,14 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * CSG products ("goldfeather", src/csg_goldfeather.c) against the exact CSG
+ * CSG products ("goldfeather", src/csg_goldfeather.c; "scs", csg_scs.c;
+ * "interval", csg_interval.c) against the exact CSG
  * reference (tests/reference/reference_csg.h: every crossing of the camera
  * ray with the primitives, the expression evaluated along it). Run on
  * csg.json (carved, both, common) and the scenes of tests/scenes/csg/
  * beside it (eye-cavity: the eye inside a subtracted sphere, parity counted
- * from behind; eye-cut: the near plane inside the solid, capped), at every
+ * from behind; eye-cut: the near plane inside the solid, capped; row: one
+ * mesh of two spheres in a row minus a slab around the front one;
+ * torus-far: a torus intersected with a box around its far half), at every
  * tier the profile runs:
  *   P           within 1e-3 Z + 1e-3 (image_test.c's tolerance: 24-bit
  *               depth) on >= 99.9% of the pixels covered in the render or
@@ -25,6 +28,21 @@
  *               (products cast no shadows), with at least 100 shadowed pixels of the product
  *               compared;
  *   gl-clean    no GL error, no call outside the profile, no logged error.
+ * Every case runs under goldfeather, scs ("csg-scs-") and interval
+ * ("csg-interval-"; GL4 only, SKIP elsewhere). Under interval also:
+ *   resolved    stin_frame_stats.csg_interval_products = 1;
+ *   agrees      P against goldfeather's, pixel by pixel, on >= 99.9% of the
+ *               covered pixels (the same P bound: both take the surface's
+ *               depth from the frame's own depth buffer, so they differ
+ *               only where the two choose different crossings, at
+ *               silhouettes);
+ *   one-interval-fails  (row: two spheres in a row; torus-far: a torus seen
+ *               through its near half) the seed's one interval per operand
+ *               (STIN_DEBUG_CSG_INTERVAL_ONE_LAYER) must match the
+ *               reference on < 99% of the covered pixels;
+ *   overflow    (the same two) k = 2 (STIN_DEBUG_CSG_INTERVAL_TWO_LAYERS)
+ *               finds a primitive with more crossings, resolves nothing,
+ *               logs it, and goldfeather's image still meets P.
  * Contexts without the technique's needs (a stencil buffer; glDrawPixels
  * or GL4 lighting to write the depth back) report SKIP with the reason.
  */

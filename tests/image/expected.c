@@ -17,17 +17,18 @@
  * GL4, colour maps on GL2, the opacity threshold on GL1, displacement where
  * there are vertex textures and the shadows are not volumes (their
  * silhouettes are the undisplaced mesh's), tessellated first where there
- * are tessellation shaders (GL 4.0); scs everywhere (products of non-convex
- * primitives go to goldfeather); depth peeling on the GLSL tiers (FBOs,
+ * are tessellation shaders (GL 4.0); interval on GL4 (float and array
+ * textures), scs below it (products either cannot take go to scs, then
+ * goldfeather); depth peeling on the GLSL tiers (FBOs,
  * depth textures, packed depth-stencil), sorted on GL1 */
 #define RESERVED STIN_TECH_TRANSLUCENT_OPAQUE, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS, \
     STIN_TECH_TRANSPARENCY_SORTED
 #define COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS, \
     STIN_TECH_TRANSPARENCY_PEEL
 #define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, \
-    STIN_TECH_CSG_SCS, STIN_TECH_TRANSPARENCY_PEEL
+    STIN_TECH_CSG_INTERVAL, STIN_TECH_TRANSPARENCY_PEEL
 #define TESSELLATED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_TESS, \
-    STIN_TECH_CSG_SCS, STIN_TECH_TRANSPARENCY_PEEL
+    STIN_TECH_CSG_INTERVAL, STIN_TECH_TRANSPARENCY_PEEL
 
 static const expected_profile table[] = {
     {"gl11", STIN_TIER_GL1, {LIGHT_FIXED, VOLUME, PLAIN, RESERVED}, {1, 0, 0}},

@@ -186,6 +186,7 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     switch (pname) {
     case GL_MAX_LIGHTS: *data = c->max_lights; break;
     case GL_MAX_CLIP_PLANES: *data = 8; break; /* Mesa's */
+    case 0x88FF: *data = 2048; break; /* GL_MAX_ARRAY_TEXTURE_LAYERS: Mesa's */
     case GL_STENCIL_BITS: *data = bound_bits(1); break;
     case GL_DEPTH_BITS: *data = bound_bits(0); break;
     case GL_MAX_TEXTURE_SIZE: *data = c->max_texture_size; break;

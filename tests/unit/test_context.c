@@ -593,9 +593,11 @@ static void test_destroy_deletes_every_gl_object(void **state)
     /* GLSL tiers: depth-peel's composite program too (its textures come with
      * the first frame with blended draws) */
     check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1, 0);
-    /* GL 4.5: each program again, tessellated ("displace-tess"), and on core
-     * goldfeather's depth program (compatibility contexts use glDrawPixels) */
-    check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1 + 1, 1);
+    /* GL 4.5: each program again, tessellated ("displace-tess"), on core
+     * goldfeather's depth program (compatibility contexts use glDrawPixels)
+     * and interval's peel and walk programs (its textures, framebuffer and
+     * query: at stin_create the query, the rest with the first product) */
+    check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1 + 1 + 2, 1);
 }
 
 /* ---- entry points and extensions ------------------------------------------ */

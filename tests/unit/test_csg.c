@@ -504,7 +504,9 @@ static void one_frame(void)
 /* A frame with a product on the fake GL: GL 1.1 resolves it (depth read,
  * written once by glDrawPixels, faces drawn with the passes) by scs (two
  * convex tetrahedra; GL 1.1 has no occlusion queries); a core profile
- * writes it through its texture instead; without a stencil buffer the
+ * resolves it by interval (its layers and walk made at the first frame
+ * with a product) and writes it through its texture instead; without a
+ * stencil buffer the
  * choice is csg-off and the frames say once that products are not drawn. */
 static void test_frames_with_a_product(void **state)
 {
@@ -520,9 +522,12 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(log_.items[STIN_LOG_FALLBACK], 0);
 
     recreate(FAKE_GL33_CORE, 0);
-    assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_SCS);
+    assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique,
+                     STIN_TECH_CSG_INTERVAL);
     one_frame();
-    assert_int_equal(ctx->stats.csg_scs_products, 1);
+    assert_int_equal(ctx->stats.csg_interval_products, 1);
+    assert_true(ctx->stats.csg_interval_bytes > 0);
+    assert_int_equal(ctx->stats.csg_scs_products, 0);
     assert_true(ctx->csg.resolved);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 1);
