@@ -4,22 +4,27 @@
  * primitive by depth peeling, so that non-convex primitives and bodies
  * behind each other along a ray resolve. Per product:
  *   1. peel: each primitive alone, k times, with depth LESS into a fresh
- *      DEPTH_COMPONENT32F layer, the peel shader discarding what lies at or
- *      in front of the layer before: layer j holds the j-th crossing of the
- *      camera ray with the primitive, an R8 layer beside it its side (front:
- *      the ray enters, back: it leaves). One more pass per primitive, in an
- *      occlusion query, finds whether a crossing lies past layer k (an
- *      overflow: the product goes to scs/goldfeather this frame). Where the
- *      near plane cuts a primitive, the near-plane cap is rasterised into
- *      one more layer (csg_near.c's quad);
+ *      depth layer (the frame's depth format), the peel shader discarding
+ *      what lies at or in front of the layer before: layer j holds the j-th
+ *      crossing of the camera ray with the primitive, an RG32F layer beside
+ *      it the fragment's float depth (for exact peeling and ordering) and
+ *      its side (front: the ray enters, back: it leaves). One more pass per
+ *      primitive, in an occlusion query, finds whether a crossing lies past
+ *      layer k (an overflow: the product goes to scs/goldfeather this
+ *      frame). Where the near plane cuts a primitive, the near-plane cap is
+ *      rasterised into one more layer (csg_near.c's quad);
  *   2. walk: one full-screen pass reads every primitive's crossings per
  *      pixel nearest first, keeps each primitive's in/out state (starting
  *      inside where its first crossing is a back face) and evaluates the
  *      normal form at each; the first crossing where it turns true is the
  *      surface (the cap where it holds from the start). It writes that
- *      crossing's depth - the peeled layer's, the rasteriser's own, so the
- *      faces drawn depth EQUAL afterwards meet it exactly - into an R32F
- *      target, read back and kept where nearer in goldfeather's result.
+ *      crossing's layer into an R8 target, read back;
+ *   3. keep: each layer some pixel's surface lies on is peeled once more in
+ *      the frame's own depth buffer and read back, and kept where nearer in
+ *      goldfeather's result, which writes it into the frame's depth: its
+ *      values are then those the faces drawn depth EQUAL afterwards meet
+ *      (a texture's depth can differ from the frame buffer's in the last
+ *      bit: Mesa rasterises into textures upside down).
  * Layer g (primitive * k + j; the cap at n k) is slice g >> 1 of array
  * g & 1: a peel reads layer g - 1 from the other array than it draws into
  * (no feedback loop). */
@@ -393,14 +398,18 @@ static void walk(stin_context *ctx, stin__csg_pixels *r, const stin__csg_product
  * than that are one), read back and kept where nearer (goldfeather's
  * read of the frame's depth). */
 #define TOLERANCE (16.0f / 16777216.0f)
-static void keep_layers(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
-                        stin__csg_product *p, int k, int cap)
+static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_product *p, int k,
+                        int cap)
 {
     stin__csg_interval_state *s = &ctx->csg.interval;
     stin__pass_state clear = stin__pass_defaults, ps = stin__pass_defaults;
-    int cap_layer = (int)p->primitive_count * k, g, any;
+    int cap_layer = (int)p->primitive_count * k, g;
+    unsigned char used[STIN__CSG_INTERVAL_MAX_LAYER_INDEX + 1];
     size_t i;
     p->capped = 0;
+    stin__memzero(used, sizeof used);
+    for (i = 0; i < r->pixels; i++)
+        used[r->stencil[i]] = 1;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, UseProgram)(s->peel_prog);
     GL(ctx, Uniform1f)(s->peel_tolerance, TOLERANCE);
@@ -412,9 +421,7 @@ static void keep_layers(stin_context *ctx, const stin__path *path, stin__csg_pix
     for (g = 0; g <= cap_layer; g++) {
         const stin__draw *d = &ctx->csg.primitives[p->first_primitive + g / k];
         stin__draw cap_draw;
-        for (i = 0, any = 0; i < r->pixels && !any; i++)
-            any = r->stencil[i] == g + 1;
-        if (!any)
+        if (!used[g + 1])
             continue;
         if (g == cap_layer) {
             if (!cap)
@@ -440,7 +447,6 @@ static void keep_layers(stin_context *ctx, const stin__path *path, stin__csg_pix
     GL(ctx, Uniform1f)(s->peel_tolerance, 0.0f);
     stin__bind_unit(ctx, previous_unit(ctx), GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    (void)path;
 }
 
 int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
@@ -465,7 +471,7 @@ int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__
     done = peel_product(ctx, p, k, &cap);
     if (done) {
         walk(ctx, r, p, k, cap);
-        keep_layers(ctx, path, r, p, k, cap);
+        keep_layers(ctx, r, p, k, cap);
     }
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     path->geometry_begin(ctx); /* the resolve's program again, for the products after */

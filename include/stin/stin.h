@@ -1277,37 +1277,42 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * resolved. */
 
 /* CSG technique "interval" (GL4: GLSL 1.50 lighting, FBOs, float and array
- * textures; the default where the context has them): the seed's G-buffer
- * ray-interval method generalised to k layers per primitive
- * (desc.csg_interval_layers, default 4). Per product: each primitive alone
- * depth-peeled into k layers along the camera rays (depth LESS into a
- * DEPTH_COMPONENT32F layer, fragments at or in front of the layer before
- * discarded; an R8 layer says whether it is a front or a back face), then
+ * textures, occlusion queries; the default where the context has them):
+ * the seed's G-buffer ray-interval method generalised to k layers per
+ * primitive (desc.csg_interval_layers, default 4). Per product: each
+ * primitive alone depth-peeled into k layers along the camera rays (depth
+ * LESS into a layer of the frame's depth format, fragments at or in front
+ * of the layer before discarded; an RG32F layer beside it keeps each
+ * fragment's float depth and whether it is a front or a back face), then
  * one full-screen pass walks every primitive's crossings per pixel in depth
  * order: a front face enters, a back face leaves, a primitive starts inside
  * where its first crossing is a back face (the near plane cuts it),
  * crossings within 4 units of 2^-24 of each other count together (the
  * coplanar rule above), and the first crossing where the normal form turns
- * true is the surface (the near-plane cap where it is true from the start).
- * Its depth is the peeled layer's own, so the face draws (depth EQUAL) hit
- * it exactly; it is kept per pixel where nearer, as goldfeather keeps its
- * result (same write-back, face passes, GL state and staging). The walk
- * reads the R32F target back once a product. Passes a product: n x (k + 1)
- * peels (the last an occlusion query: any fragment past layer k is an
- * overflow) + the cap + 1 walk, against goldfeather's per literal and
- * layer. GL memory: 2 arrays of ceil((n k + 1) / 2) slices of 5 bytes a
- * pixel (depth 4, facing 1) for the largest product n so far, plus 4 bytes
- * a pixel of target, all at the viewport's window size (x + w by y + h):
- * (n k + 2) x 5 + 4 bytes a pixel, about 33 MiB for n = 8, k = 4 at
- * 640 x 480; stin_frame_stats.csg_interval_bytes reports it. Made at the
- * first frame with a product, grown, freed at stin_destroy.
- * Selection per product: under "interval", a product goes to scs's rule
- * (then goldfeather) when it has more than 32 primitives or 64 terms,
- * needs more than GL_MAX_ARRAY_TEXTURE_LAYERS layers, or a primitive shows
- * more than k crossings on a pixel (found that frame: the product is
- * resolved again by the others), logged once per context (INFO; WARNING
- * where the caller forced interval). stin_frame_stats.csg_interval_products
- * counts the products interval resolved. */
+ * true is the surface (the near-plane cap, as goldfeather's, where it is
+ * true from the start). The walk writes each pixel's surface layer; each
+ * layer some pixel chose is peeled once more in the frame's own depth
+ * buffer and read back, so the depth kept (per pixel where nearer, in
+ * goldfeather's result: the same write-back, face passes, GL state and
+ * staging) is the one the face draws' depth EQUAL meets. Passes a product:
+ * n x (k + 1) peels (the last of each primitive in an occlusion query: a
+ * fragment past layer k is an overflow) + the cap + 1 walk + 1 peel and
+ * read-back per layer chosen, against goldfeather's per literal and layer.
+ * GL memory (made at the first frame with a product, grown with the
+ * viewport's window size (x + w by y + h) and the largest n so far, freed
+ * at stin_destroy): 2 x ceil((n k + 2) / 2) layers of 12 bytes a pixel
+ * (depth 4, RG32F 8) and 1 byte a pixel of walk target, so about
+ * (n k + 2) x 12 + 1 bytes a pixel: 409 bytes a pixel, 120 MiB at 640 x 480
+ * for n = 8, k = 4 (31 MiB for n = 2); stin_frame_stats.csg_interval_bytes
+ * reports it. Selection per product: under "interval", a product goes to
+ * scs's rule (then goldfeather) when it has more than 32 primitives or 64
+ * terms, n k + 1 > 255 layers (the walk's 8-bit answer) or more than
+ * GL_MAX_ARRAY_TEXTURE_LAYERS, or a primitive shows more than k crossings
+ * on a pixel (found that frame: the product is resolved again by the
+ * others), logged once per context (INFO; WARNING where the caller forced
+ * interval). stin_frame_stats.csg_interval_products counts the products
+ * interval resolved. Not done: the resolve from a light's camera (products
+ * casting shadows). */
 
 /* The normal form of the frame's product `product` (0 = the first accepted
  * by stin_draw_csg since stin_begin_frame, until the next begin): the
