@@ -46,9 +46,9 @@ typedef struct stin__csg_interval_state {
         peel_tolerance;
     stin__displace_locs peel_displace;
     GLint walk_crossing[2], walk_counts, walk_terms;
-    /* even and odd layers: depth in the frame's depth format (what the face
-     * draws' depth EQUAL compares with), and RG32F crossings (the
-     * rasteriser's float depth, for exact peeling and ordering; the side) */
+    /* even and odd layers: depth (the peel's depth test; the frame's depth
+     * format) and RG32F crossings (the rasteriser's float depth, for exact
+     * peeling and ordering; the side) */
     GLuint depth[2], crossing[2];
     GLenum depth_format;
     GLuint result, fbo, query;  /* the walk's R8 target; the overflow's query */

@@ -138,8 +138,8 @@ static void array_texture(stin_context *ctx, GLuint tex, GLint format, GLenum la
     GL(ctx, TexImage3D)(GL_TEXTURE_2D_ARRAY, 0, format, w, h, slices, 0, layout, type, NULL);
 }
 
-/* The frame's depth format: a peeled layer's depth is then what the face
- * draws' depth EQUAL meets (the same quantisation of the same fragment). */
+/* The peel's depth test in the frame's depth format (the nearest fragment
+ * it keeps is the one the frame's buffer would keep). */
 static void depth_format(const stin_context *ctx, GLenum *format, GLenum *layout, GLenum *type)
 {
     int bits = ctx->target.depth_bits;

@@ -6,8 +6,8 @@
 // other array: never the texture drawn into), so the nearest crossing left
 // is this layer. The colour keeps the fragment's float depth - the
 // rasteriser's own for one mesh drawn the same way each pass, so the
-// comparison is exact (the depth layer holds it in the frame's depth format
-// for the write-back) - and its side: 1 front (the ray enters), 0.5 back
+// comparison is exact (the depth layer only serves the depth test) - and
+// its side: 1 front (the ray enters), 0.5 back
 // (it leaves), 0 (the clear) no crossing. A layer the walk chose is peeled
 // once more in the frame's own depth buffer (which may rasterise a hair
 // differently: a window's buffer is not flipped as a texture is), against
