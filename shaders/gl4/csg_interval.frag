@@ -81,7 +81,8 @@ void main()
         o_layer = layer(n * k);
         return;
     }
-    for (int step = 0; step < MAX_PRIMITIVES * 16; step++) {
+    // every step takes one crossing at least: n k steps at most
+    for (int step = 0; step < n * k; step++) {
         float d = NONE;
         int nearest = 0;
         for (int i = 0; i < n; i++)
