@@ -24,6 +24,7 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.deep_layers = DEFAULT(d.deep_layers, 4u);
     d.deep_map_size = DEFAULT(d.deep_map_size, 512u);
     d.transparency_layers = DEFAULT(d.transparency_layers, 8u);
+    d.csg_interval_layers = DEFAULT(d.csg_interval_layers, 4u);
     if (d.displace_guard_band == 0.0f)
         d.displace_guard_band = 1.0f;
     if (d.displace_tess_pixels == 0.0f)
@@ -50,7 +51,8 @@ static int desc_valid(const stin_desc *d)
            d->deep_layers <= 16 && d->deep_map_size <= 4096 &&
            (d->deep_map_size & (d->deep_map_size - 1)) == 0 && (d->deep_mono & ~1) == 0 &&
            d->translucent_opaque_threshold > 0.0f && d->translucent_opaque_threshold <= 1.0f &&
-           d->transparency_layers <= STIN__PEEL_MAX_LAYERS;
+           d->transparency_layers <= STIN__PEEL_MAX_LAYERS &&
+           d->csg_interval_layers <= STIN__CSG_INTERVAL_MAX_LAYERS;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)
@@ -304,6 +306,7 @@ static void release_gl(stin_context *ctx)
         ctx->shadow->release(ctx);
     stin__mask_release(ctx);
     stin__export_release(ctx);
+    stin__csg_interval_release(ctx);
     stin__csg_release(ctx);
     stin__deep_release(ctx);
     stin__coloured_release(ctx);
@@ -404,6 +407,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         stin__peel_init(ctx);
         stin__displace_init(ctx);
         stin__csg_init(ctx);
+        stin__csg_interval_init(ctx);
     }
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */

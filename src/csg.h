@@ -55,6 +55,32 @@ typedef struct stin__csg_cast_state {
     float light_projection[16];       /* the light's, uncropped */
     int said_room, said_no_target, said_technique;
 } stin__csg_cast_state;
+/* "interval" (csg_interval.c): each primitive's crossings of the camera
+ * rays peeled into k depth layers, walked per pixel by one full-screen
+ * pass. Layer g (primitive * k + layer; the near-plane cap after the
+ * last) lives in array g & 1 at slice g >> 1: the layer a peel reads is
+ * never the texture it draws into. */
+#define STIN__CSG_INTERVAL_MAX_LAYERS 16u  /* desc.csg_interval_layers at most */
+#define STIN__CSG_INTERVAL_MAX_PRIMITIVES 32u /* a product's primitives (a bit each) */
+#define STIN__CSG_INTERVAL_MAX_TERMS 64u   /* a product's terms (uniform masks) */
+#define STIN__CSG_INTERVAL_MAX_LAYER_INDEX 255u /* layers + cap: the walk's 8-bit answer */
+typedef struct stin__csg_interval_state {
+    GLuint peel_prog, walk_prog;
+    GLint peel_model, peel_view_proj, peel_previous, peel_previous_slice, peel_mirrored,
+        peel_tolerance;
+    stin__displace_locs peel_displace;
+    GLint walk_crossing[2], walk_counts, walk_terms;
+    /* even and odd layers: depth (the peel's depth test; the frame's depth
+     * format) and RG32F crossings (the rasteriser's float depth, for exact
+     * peeling and ordering; the side) */
+    GLuint depth[2], crossing[2];
+    GLenum depth_format;
+    GLuint result, fbo, query;  /* the walk's R8 target; the overflow's query */
+    int width, height, slices;  /* grown to the largest frame and product so far */
+    size_t bytes;               /* GL memory of the textures above */
+    int max_slices;             /* GL_MAX_ARRAY_TEXTURE_LAYERS */
+    int said_fallback, said_overflow, said_failed;
+} stin__csg_interval_state;
 
 /* The frame's products, in the caller's block (sizes from the desc). */
 typedef struct stin__csg_state {
@@ -81,6 +107,9 @@ typedef struct stin__csg_state {
     GLuint scs_queries[STIN__CSG_SCS_QUERIES]; /* scs's early stop (0: no occlusion queries) */
     int said_scs_fallback, said_scs_capped;
     stin__csg_cast_state cast; /* products casting into the lights' maps (csg_cast.c) */
+    GLuint resolve_fbo;       /* the framebuffer a resolve runs in (the frame's, or a
+                               * light map's: csg_cast.c), bound again by interval */
+    stin__csg_interval_state interval; /* csg_interval.c */
 } stin__csg_state;
 
 /* Words of normalisation scratch for the desc's capacities. */
@@ -201,6 +230,17 @@ int stin__csg_scs_product(struct stin_context *ctx, const stin__path *path, stin
 /* The occlusion query of the early stop, at stin_create where present. */
 void stin__csg_scs_init(struct stin_context *ctx);
 void stin__csg_scs_release(struct stin_context *ctx);
+
+/* Interval (csg_interval.c): product p into r->result when the CSG
+ * technique is interval and p fits its limits, returning 1; else 0 (logged
+ * once per context: scs or goldfeather resolves it). Inside the resolve's
+ * geometry_begin, which it leaves as it found it. */
+int stin__csg_interval_product(struct stin_context *ctx, const stin__path *path,
+                               stin__csg_pixels *r, stin__csg_product *p);
+/* Its programs at stin_create (after stin__csg_init; demotes to scs when
+ * they do not build), its GL objects freed at release. */
+void stin__csg_interval_init(struct stin_context *ctx);
+void stin__csg_interval_release(struct stin_context *ctx);
 
 /* A material checked and its defaults applied (frame.c; stin_draw's rules). */
 stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,

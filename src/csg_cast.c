@@ -258,6 +258,7 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
                              rect[1] + rect[3] - y < rows ? rect[1] + rect[3] - y : rows};
         camera_light(ctx, job->view, job->proj, job->map_vp, band);
         (void)stin__csg_pixels_at(ctx, offset, r); /* rows were sized to fit */
+        ctx->csg.resolve_fbo = job->in_place ? job->target : c->fbo;
         if (!job->in_place) {
             GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, c->fbo);
             r->bits = 8;

@@ -498,7 +498,8 @@ void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve
     for (pi = 0; pi < ctx->csg.product_count; pi++) {
         stin__csg_product *p = &ctx->csg.products[pi];
         p->capped = 0;
-        if (!stin__csg_scs_product(ctx, path, r, p))
+        if (!stin__csg_interval_product(ctx, path, r, p) &&
+            !stin__csg_scs_product(ctx, path, r, p))
             resolve_product(ctx, path, r, p);
     }
     path->geometry_end(ctx);
@@ -511,6 +512,7 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
     ctx->csg.resolved = 0;
     if (!ctx->csg.product_count || !usable(ctx, &r))
         return 0;
+    ctx->csg.resolve_fbo = ctx->draw_fbo;
     stin__csg_resolve_pixels(ctx, path, &r);
     write_depth(ctx, path, &r, GL_ALWAYS);
     clear(ctx, GL_STENCIL_BUFFER_BIT);

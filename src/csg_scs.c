@@ -274,7 +274,8 @@ int stin__csg_scs_product(stin_context *ctx, const stin__path *path, stin__csg_p
 {
     const char *why;
     uint32_t ti;
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_SCS)
+    stin_technique chosen = ctx->sel.choice[STIN_FEATURE_CSG].technique;
+    if (chosen != STIN_TECH_CSG_SCS && chosen != STIN_TECH_CSG_INTERVAL) /* interval's spill */
         return 0;
     why = unfit(ctx, p);
     if (why) {

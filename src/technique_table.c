@@ -62,8 +62,8 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_DISPLACEMENT_OFF,       2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* stencil parity; depth written back by glDrawPixels (compatibility) or
      * a GLSL 1.50 program (core: csg_goldfeather.c demotes without it) */
-    {STIN_TECH_CSG_GOLDFEATHER,        1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
-    {STIN_TECH_CSG_OFF,                2, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_GOLDFEATHER,        2, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, NULL, 0},
+    {STIN_TECH_CSG_OFF,                3, 0, STIN_TECH_NONE, 0, 0, 0, NULL, 0},
     /* sequenced convex subtraction (csg_scs.c) for products of convex
      * primitives, goldfeather's depth write-back; other products go to
      * goldfeather (logged) */
@@ -82,6 +82,16 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_TRANSPARENCY_DUAL_PEEL, 0,
      TIER4 | BIT(FLOAT_TEXTURE) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
          BIT(MULTITEXTURE) | BIT(OCCLUSION_QUERY), STIN_TECH_LIGHTING_GLSL150, 0, 2, 0, NULL, 0},
+    /* the ray-interval walk over peeled layers (csg_interval.c): GLSL 1.50,
+     * FBOs, texture arrays (GL 3.0: DEPTH_COMPONENT32F and R8 layers) and a
+     * float colour target (R32F) the walk writes and the CPU reads back, an
+     * occlusion query for the overflow;
+     * goldfeather's depth write-back (its GLSL 1.50 program) and stencil
+     * for the products it hands on; products past its limits go to
+     * scs/goldfeather (logged) */
+    {STIN_TECH_CSG_INTERVAL,           1, TIER4 | BIT(FLOAT_TEXTURE) | BIT(STENCIL) |
+         BIT(OCCLUSION_QUERY),
+     STIN_TECH_LIGHTING_GLSL150, 0, 0, 0, NULL, 0},
 };
 
 static const stin_feature tech_feature[] = {

@@ -434,7 +434,7 @@ const char *stin_feature_name(stin_feature f);
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace-tess, displace, displacement-off
  *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
- *   csg:      scs, goldfeather, csg-off (see "CSG products" below)
+ *   csg:      scs, interval (GL4), goldfeather, csg-off (see "CSG products" below)
  *   transparency: dual-peel, depth-peel, sorted (see "Transparency" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
@@ -761,7 +761,8 @@ const char *stin_feature_name(stin_feature f);
     X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1) \
     X(TRANSPARENCY_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
     X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1) \
-    X(TRANSPARENCY_DUAL_PEEL, "dual-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL4)
+    X(TRANSPARENCY_DUAL_PEEL, "dual-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL4) \
+    X(CSG_INTERVAL, "interval", STIN_FEATURE_CSG, STIN_TIER_GL4)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -837,10 +838,12 @@ typedef struct stin_desc {
     float translucent_opaque_threshold; /* "opaque": casters of opacity >= this cast a
                                         * full shadow, the rest none; default (0) 0.5,
                                         * finite, in (0, 1] */
-    uint32_t transparency_layers;      /* "depth-peel", "dual-peel": layers of blended
-                                        * surfaces peeled per pixel at most, default 8,
-                                        * at most 64; surfaces past it along a ray are
-                                        * not drawn (dual-peel: the middle ones) */
+    uint32_t transparency_layers;      /* "depth-peel": layers of blended surfaces peeled
+                                        * per pixel at most, default 8, at most 64;
+                                        * surfaces past it along a ray are not drawn */
+    uint32_t csg_interval_layers;      /* "interval": crossings of one primitive peeled per
+                                        * pixel (k), default 4, at most 16; a product with
+                                        * more on a pixel goes to scs/goldfeather that frame */
 } stin_desc;
 
 /* Diagnostics for tests and bug reports; none changes what a correct frame
@@ -891,6 +894,14 @@ typedef struct stin_desc {
 /* CSG products cast no shadow into the lights' maps (as before they did):
  * a test that casting matters */
 #define STIN_DEBUG_CSG_NO_CAST 8388608u
+/* interval: the seed's one-interval method (one layer per primitive: its
+ * nearest front and nearest back face, no overflow check): wrong where an
+ * operand is non-convex along a ray or bodies lie behind each other; a
+ * test that the k layers matter */
+#define STIN_DEBUG_CSG_INTERVAL_ONE_LAYER 524288u
+/* interval: peel 2 layers per primitive whatever desc.csg_interval_layers
+ * says (a product deeper than that overflows and goes to goldfeather) */
+#define STIN_DEBUG_CSG_INTERVAL_TWO_LAYERS 1048576u
 /* depth-peel: peel all desc.transparency_layers layers, without stopping at
  * the first that drew nothing (the same image, more passes) */
 #define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
@@ -1368,6 +1379,46 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * product. stin_frame_stats.csg_scs_products counts the products scs
  * resolved. */
 
+/* CSG technique "interval" (GL4: GLSL 1.50 lighting, FBOs, float and array
+ * textures, occlusion queries; forced, not the default: on llvmpipe its
+ * walk makes it 1.4-3x goldfeather's frame time on the bench's products,
+ * docs/benchmarks.md):
+ * the seed's G-buffer ray-interval method generalised to k layers per
+ * primitive (desc.csg_interval_layers, default 4). Per product: each
+ * primitive alone depth-peeled into k layers along the camera rays (depth
+ * LESS into a layer of the frame's depth format, fragments at or in front
+ * of the layer before discarded; an RG32F layer beside it keeps each
+ * fragment's float depth and whether it is a front or a back face), then
+ * one full-screen pass walks every primitive's crossings per pixel in depth
+ * order: a front face enters, a back face leaves, a primitive starts inside
+ * where its first crossing is a back face (the near plane cuts it),
+ * crossings within 4 units of 2^-24 of each other count together (the
+ * coplanar rule above), and the first crossing where the normal form turns
+ * true is the surface (the near-plane cap, as goldfeather's, where it is
+ * true from the start). The walk writes each pixel's surface layer; each
+ * layer some pixel chose is peeled once more in the frame's own depth
+ * buffer and read back, so the depth kept (per pixel where nearer, in
+ * goldfeather's result: the same write-back, face passes, GL state and
+ * staging) is the one the face draws' depth EQUAL meets. Passes a product:
+ * n x (k + 1) peels (the last of each primitive in an occlusion query: a
+ * fragment past layer k is an overflow) + the cap + 1 walk + 1 peel and
+ * read-back per layer chosen, against goldfeather's per literal and layer.
+ * GL memory (made at the first frame with a product, grown with the
+ * viewport's window size (x + w by y + h) and the largest n so far, freed
+ * at stin_destroy): 2 x ceil((n k + 2) / 2) layers of 12 bytes a pixel
+ * (depth 4, RG32F 8) and 1 byte a pixel of walk target, so about
+ * (n k + 2) x 12 + 1 bytes a pixel: 409 bytes a pixel, 120 MiB at 640 x 480
+ * for n = 8, k = 4 (31 MiB for n = 2); stin_frame_stats.csg_interval_bytes
+ * reports it. Selection per product: under "interval", a product goes to
+ * scs's rule (then goldfeather) when it has more than 32 primitives or 64
+ * terms, n k + 1 > 255 layers (the walk's 8-bit answer) or more than
+ * GL_MAX_ARRAY_TEXTURE_LAYERS, or a primitive shows more than k crossings
+ * on a pixel (found that frame: the product is resolved again by the
+ * others), logged once per context (INFO; WARNING where the caller forced
+ * interval). stin_frame_stats.csg_interval_products counts the products
+ * interval resolved. A light's map resolve (products casting) runs it too,
+ * in the map's resolve framebuffer. */
+
 /* The normal form of the frame's product `product` (0 = the first accepted
  * by stin_draw_csg since stin_begin_frame, until the next begin): the
  * number of terms; when `literals` is not NULL, the literals of term
@@ -1403,6 +1454,10 @@ typedef struct stin_frame_stats {
     /* the resolves those took: one a map, more where the products' rectangle
      * of it outgrew the staging beside the camera's resolve (bands of rows) */
     uint32_t csg_cast_bands;
+    /* products resolved by "interval", and the GL memory its layers and
+     * target hold (grown to the largest viewport and product so far) */
+    uint32_t csg_interval_products;
+    uint64_t csg_interval_bytes;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

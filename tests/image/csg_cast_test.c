@@ -27,6 +27,8 @@
  *               map-depth on gl21's GL1 tier), whose rectangle under the
  *               product outgrows the staging: it must take more bands
  *               than maps.
+ *   cast-map-pcf-interval  the same under the interval technique (its
+ *               peels and walk from the light), gl45-core.
  * Contexts without a technique report SKIP with the reason.
  */
 #include "aov.h"
@@ -114,7 +116,7 @@ done:
 }
 
 static void test_cast(run *r, stin_tier tier, const char *label, const scene *s, const truth *tr,
-                      stin_technique t, uint32_t map_size)
+                      stin_technique t, uint32_t map_size, stin_technique csg)
 {
     int w = r->width, h = r->height, x, y, map = t != STIN_TECH_SHADOWS_VOLUME &&
                                                   t != STIN_TECH_SHADOWS_VDSM;
@@ -126,11 +128,13 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
     scene_gpu_csg product = {primitives, 2, minus, 3};
     capture_options o;
     capture one;
-    snprintf(name, sizeof name, "%s/csg-%s/cast-%s%s", stin_tier_name(tier), label,
-             stin_technique_name(t), map_size ? "-bands" : "");
+    snprintf(name, sizeof name, "%s/csg-%s/cast-%s%s%s%s", stin_tier_name(tier), label,
+             stin_technique_name(t), map_size ? "-bands" : "", csg ? "-" : "",
+             csg ? stin_technique_name(csg) : "");
     memset(&o, 0, sizeof o);
     o.tier = tier;
     o.shadow_map_size = map_size;
+    o.csg_technique = csg;
     o.shadows = t;
     o.csg = &product;
     o.csg_count = 1;
@@ -144,7 +148,8 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
         capture_free(&one);
         return;
     }
-    if (one.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF) {
+    if (one.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF ||
+        (csg && one.choice[STIN_FEATURE_CSG].technique != csg)) {
         report(r, "SKIP", name, "no CSG technique runs here (%s)",
                one.choice[STIN_FEATURE_CSG].reason);
         capture_free(&one);
@@ -216,15 +221,22 @@ void csg_cast_tests(run *r, stin_tier tier, const char *dir)
             continue;
         }
         for (k = 0; k < sizeof techniques / sizeof techniques[0]; k++)
-            test_cast(r, tier, files[f], &s, &tr, techniques[k], 0);
+            test_cast(r, tier, files[f], &s, &tr, techniques[k], 0, STIN_TECH_NONE);
         /* a 4096 map: the products' rectangle outgrows the staging beside
          * the camera's resolve and goes in bands (once per technique: GLSL
          * maps on gl45-core, map-depth's framebuffer objects and side test,
          * resolved again band by band, on gl21) */
         if (f == 0 && strcmp(r->profile->name, "gl45-core") == 0 && tier == STIN_TIER_GL4)
-            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_PCF, BANDS_MAP_SIZE);
+            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_PCF, BANDS_MAP_SIZE,
+                      STIN_TECH_NONE);
         if (f == 0 && strcmp(r->profile->name, "gl21") == 0 && tier == STIN_TIER_GL1)
-            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_DEPTH, BANDS_MAP_SIZE);
+            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_DEPTH, BANDS_MAP_SIZE,
+                      STIN_TECH_NONE);
+        /* interval resolves from the light too (in the map's resolve
+         * framebuffer), both scenes, once: gl45-core */
+        if (strcmp(r->profile->name, "gl45-core") == 0 && tier == STIN_TIER_GL4)
+            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_PCF, 0,
+                      STIN_TECH_CSG_INTERVAL);
         truth_free(&tr);
         scene_free(&s);
     }

@@ -71,6 +71,8 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Uniform1f ~, 1
 #define FAKE_STATELESS_Uniform3fv ~, 1
 #define FAKE_STATELESS_Uniform4fv ~, 1
+#define FAKE_STATELESS_Uniform4iv ~, 1
+#define FAKE_STATELESS_Uniform2uiv ~, 1
 #define FAKE_STATELESS_UniformMatrix3fv ~, 1
 #define FAKE_STATELESS_UniformMatrix4fv ~, 1
 #define FAKE_STATELESS_FramebufferTexture2D ~, 1
@@ -184,6 +186,7 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     switch (pname) {
     case GL_MAX_LIGHTS: *data = c->max_lights; break;
     case GL_MAX_CLIP_PLANES: *data = 8; break; /* Mesa's */
+    case 0x88FF: *data = 2048; break; /* GL_MAX_ARRAY_TEXTURE_LAYERS: Mesa's */
     case GL_STENCIL_BITS: *data = bound_bits(1); break;
     case GL_DEPTH_BITS: *data = bound_bits(0); break;
     case GL_MAX_TEXTURE_SIZE: *data = c->max_texture_size; break;

@@ -596,7 +596,7 @@ static void test_destroy_deletes_every_gl_object(void **state)
     /* GL 4.5: each program again, tessellated ("displace-tess"), dual-peel's
      * composite and its min-max programs (plain and tessellated), and on
      * core goldfeather's depth program (compatibility contexts use
-     * glDrawPixels) */
+     * glDrawPixels; interval, not the default, builds its two where chosen) */
     check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1 + 2 + 1, 1);
 }
 

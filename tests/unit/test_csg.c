@@ -262,6 +262,8 @@ static void add_mesh(const float *pos, uint32_t nv, const uint32_t *idx, uint32_
 
 /* A context on the fake profile with the tetrahedron and the quad; small
  * CSG capacities (8 primitives, 4 terms, 8 literals) unless `defaults`. */
+static stin_technique forced_csg = STIN_TECH_NONE; /* make_context's desc.techniques */
+
 static void make_context(fake_gl_profile_id id, uint64_t caps_mask, int defaults)
 {
     fake_gl_config cfg = fake_gl_profile(id);
@@ -274,6 +276,7 @@ static void make_context(fake_gl_profile_id id, uint64_t caps_mask, int defaults
     d.max_vertices = 64;
     d.max_triangles = 64;
     d.caps_mask = caps_mask;
+    d.techniques[STIN_FEATURE_CSG] = forced_csg;
     if (!defaults) {
         d.max_csg_primitives = 8;
         d.max_csg_terms = 4;
@@ -504,7 +507,10 @@ static void one_frame(void)
 /* A frame with a product on the fake GL: GL 1.1 resolves it (depth read,
  * written once by glDrawPixels, faces drawn with the passes) by scs (two
  * convex tetrahedra; GL 1.1 has no occlusion queries); a core profile
- * writes it through its texture instead; without a stencil buffer the
+ * resolves it by scs too, or by interval where forced (its layers and walk
+ * made at the first frame with a product), and writes it through its
+ * texture instead; without a
+ * stencil buffer the
  * choice is csg-off and the frames say once that products are not drawn. */
 static void test_frames_with_a_product(void **state)
 {
@@ -523,6 +529,17 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_SCS);
     one_frame();
     assert_int_equal(ctx->stats.csg_scs_products, 1);
+    assert_true(ctx->csg.resolved);
+
+    forced_csg = STIN_TECH_CSG_INTERVAL; /* not the default: slower than scs on llvmpipe */
+    recreate(FAKE_GL33_CORE, 0);
+    forced_csg = STIN_TECH_NONE;
+    assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique,
+                     STIN_TECH_CSG_INTERVAL);
+    one_frame();
+    assert_int_equal(ctx->stats.csg_interval_products, 1);
+    assert_true(ctx->stats.csg_interval_bytes > 0);
+    assert_int_equal(ctx->stats.csg_scs_products, 0);
     assert_true(ctx->csg.resolved);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 1);
