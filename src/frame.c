@@ -427,9 +427,9 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
     ctx->peel.sorted_draw = NULL;
 }
 
-/* Blended draws. depth-peel: layer by layer, front to back, each lit by the
- * same stages as the opaque draws (shadowed when the frame is), then
- * composited over the frame. vdsm's position buffer is made again from each
+/* Blended draws. depth-peel and dual-peel (behind the same stin__peel_*
+ * calls): layer by layer, each lit by the same stages as the opaque draws
+ * (shadowed when the frame is), then composited over the frame. vdsm's position buffer is made again from each
  * layer (the layer's points, depth EQUAL against its depth) before the
  * layer's lights, so its per-light masks are the layer's; afterwards the
  * opaque surfaces go back into it where the visibility export still reads
@@ -454,7 +454,7 @@ static void stage_blended(stin_context *ctx, const stin__path *path, int shadowe
         (ctx->desc.debug_flags & STIN_DEBUG_PEEL_VDSM_UNSHADOWED)) {
         if (!ctx->peel.said_vdsm)
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                      "depth-peel: STIN_DEBUG_PEEL_VDSM_UNSHADOWED: peeled layers are lit "
+                      "peeling: STIN_DEBUG_PEEL_VDSM_UNSHADOWED: peeled layers are lit "
                       "unshadowed under vdsm");
         ctx->peel.said_vdsm = 1;
         shadowed = 0;
