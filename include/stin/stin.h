@@ -1452,7 +1452,9 @@ typedef struct stin_frame_stats {
      * products were resolved into from the light: they cast into it */
     uint32_t csg_cast_maps;
     /* the resolves those took: one a map, more where the products' rectangle
-     * of it outgrew the staging beside the camera's resolve (bands of rows) */
+     * of it outgrew the staging beside the camera's resolve (bands of rows),
+     * and map-depth's side test and map-combine's ramp resolving such a map
+     * again band by band */
     uint32_t csg_cast_bands;
     /* products resolved by "interval", and the GL memory its layers and
      * target hold (grown to the largest viewport and product so far) */
