@@ -1,19 +1,21 @@
 /* SPDX-License-Identifier: MIT */
 /* CSG products casting shadows into the map techniques' maps. A product's
  * surface seen from a light is what the camera's resolve finds, with the
- * light's camera: the same goldfeather or scs passes (csg_goldfeather.c),
- * run over the rectangle of the map the products' bounding boxes cover
- * (the projection cropped to it, so the CPU copies are as small as the
- * products' shadow and not the whole map). It runs where the map is drawn
- * when that framebuffer has a stencil buffer (the GL1 maps drawn in the
- * frame's own), else in a depth-stencil framebuffer of its own (packed
+ * light's camera: the same scs, interval or goldfeather passes
+ * (csg_goldfeather.c), run over the rectangle of the map the products'
+ * bounding boxes cover (the projection cropped to it, so the CPU copies
+ * are as small as the products' shadow and not the whole map), in bands of
+ * rows where the staging holds less. It runs where the map is drawn when
+ * that framebuffer has a stencil buffer (the GL1 maps drawn in the frame's
+ * own), else in a depth-stencil framebuffer of its own (packed
  * depth-stencil), and goes into the map's depth with depth LESS before the
  * ordinary casters, so the nearest of both stays. The light's slope-scaled
  * offset, which the ordinary casters get from glPolygonOffset, is added on
- * the CPU: the steeper of the two one-sided depth differences per axis
- * (the flatter side at a product's edge), times factor, plus units times
- * 2^-24. The CPU copies follow the camera's in the staging, so a point
- * light's faces, drawn mid-frame, leave the camera's resolve intact. */
+ * the CPU: per axis the flatter of the two one-sided depth differences (so
+ * a product's silhouette does not count as slope), the steeper axis,
+ * times factor, plus units times 2^-24. The CPU copies follow the camera's
+ * in the staging, so a point light's faces, drawn mid-frame, leave the
+ * camera's resolve intact. */
 #include "internal.h"
 
 #define DEPTH_UNIT (1.0f / 16777216.0f) /* 24-bit depth's step: glPolygonOffset's r */
