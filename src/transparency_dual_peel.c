@@ -302,19 +302,7 @@ void stin__dual_end(stin_context *ctx)
 {
     stin__peel_state *s = &ctx->peel;
     stin__dual_state *d = &s->d;
-    stin__pass_state ps = stin__pass_defaults;
-    stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
-    stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, 0);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
-    /* depth-peel's rule: premultiplied C with coverage 1 - T, and the first
-     * layer's depth where it has a surface */
-    ps.depth_test = 1;
-    ps.depth_func = GL_LESS;
-    ps.depth_write = 1;
-    ps.blend = 1;
-    ps.blend_src = GL_ONE;
-    ps.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
-    stin__pass_apply(ctx, &ps);
+    stin__peel_over_frame(ctx); /* depth-peel's rule */
     composite_program(ctx, 2, d->front[d->front_result], s->first, d->back[d->back_result]);
     stin__peel_screen_quad(ctx);
     composite_done(ctx);

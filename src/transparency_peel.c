@@ -429,24 +429,18 @@ void stin__peel_layer_end(stin_context *ctx)
     ctx->stats.passes++;
 }
 
-void stin__peel_end(stin_context *ctx)
+/* The frame's framebuffer bound for the last quad, the peel's units
+ * freed: over the opaque image as premultiplied colour with coverage 1 - T
+ * (frame = C + T frame, alpha = 1 - T + T alpha) and the first layer's
+ * depth where it has a surface (its depth, cleared to 1, passes LESS there
+ * only; elsewhere C = 0 and T = 1 leave the frame as it is). Both peels. */
+void stin__peel_over_frame(stin_context *ctx)
 {
     stin__peel_state *s = &ctx->peel;
     stin__pass_state ps = stin__pass_defaults;
-    s->peeling = 0;
-    ctx->glsl_surface.serial++;
-    ctx->draw_fbo = s->frame_fbo;
-    if (s->dual) {
-        stin__dual_end(ctx);
-        return;
-    }
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
-    /* over the opaque image as premultiplied colour with coverage 1 - T:
-     * frame = C + T frame, alpha = 1 - T + T alpha; the first layer's depth
-     * where it has a surface (its depth, cleared to 1, passes LESS there
-     * only; elsewhere C = 0 and T = 1 leave the frame as it is) */
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;
     ps.depth_write = 1;
@@ -454,6 +448,19 @@ void stin__peel_end(stin_context *ctx)
     ps.blend_src = GL_ONE;
     ps.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
     stin__pass_apply(ctx, &ps);
+}
+
+void stin__peel_end(stin_context *ctx)
+{
+    stin__peel_state *s = &ctx->peel;
+    s->peeling = 0;
+    ctx->glsl_surface.serial++;
+    ctx->draw_fbo = s->frame_fbo;
+    if (s->dual) {
+        stin__dual_end(ctx);
+        return;
+    }
+    stin__peel_over_frame(ctx);
     composite_program(ctx, 1);
     stin__peel_screen_quad(ctx);
     stin__peel_composite_done(ctx);
