@@ -10,6 +10,10 @@
 #   make install    PREFIX=/usr/local DESTDIR=  headers, archives, pkg-config and CMake files
 #   make uninstall  the same PREFIX and DESTDIR: removes what install wrote
 #   make clean
+# Options: OSMESA=no builds the platform without the OSMesa backend and
+# OIIO=no the tools without OpenImageIO (file reads and writes then fail with
+# a message): a bench-only build for a GPU machine that has neither, e.g.
+#   make B=build/gpu OSMESA=no OIIO=no build/gpu/stin-bench
 
 PREFIX ?= /usr/local
 DESTDIR ?=
@@ -26,15 +30,18 @@ TOOL_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L -Iinclude -Ipla
 TOOL_CXXFLAGS := -std=c++17 $(WARN) $(OPT) -Iinclude -Itools/common
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
 
-PLATFORM_LIBS := -lEGL -lOSMesa -ldl
-TOOL_LIBS := -lOpenImageIO -lOpenImageIO_Util -lassimp -lcjson -lstdc++ -lm
+OSMESA ?= yes
+OIIO ?= yes
+PLATFORM_LIBS := -lEGL $(if $(filter no,$(OSMESA)),,-lOSMesa) -ldl
+TOOL_LIBS := $(if $(filter no,$(OIIO)),,-lOpenImageIO -lOpenImageIO_Util) -lassimp -lcjson -lstdc++ -lm
 REF_LIBS := -lembree3
 
 LIB_SRC := $(sort $(wildcard src/*.c))
 SHADERS := $(sort $(wildcard shaders/gl2/*.vert shaders/gl2/*.frag shaders/gl2/*.glsl shaders/gl4/*.vert shaders/gl4/*.frag shaders/gl4/*.geom shaders/gl4/*.tesc shaders/gl4/*.glsl))
-PLATFORM_SRC := $(sort $(wildcard platform/*.c))
-COMMON_SRC := $(sort $(wildcard tools/common/*.c))
-COMMON_CXX := $(sort $(wildcard tools/common/*.cpp))
+PLATFORM_SRC := $(if $(filter no,$(OSMESA)),$(filter-out platform/platform_osmesa.c,$(sort $(wildcard platform/*.c))) \
+  platform/absent/osmesa_absent.c,$(sort $(wildcard platform/*.c)))
+COMMON_SRC := $(sort $(wildcard tools/common/*.c)) $(if $(filter no,$(OIIO)),tools/common/absent/image_io_absent.c)
+COMMON_CXX := $(if $(filter no,$(OIIO)),,$(sort $(wildcard tools/common/*.cpp)))
 REF_SRC := $(sort $(wildcard tests/reference/*.c))
 
 LIB_OBJ := $(LIB_SRC:%.c=$(B)/lib/%.o) $(B)/lib/shaders_embedded.o
@@ -197,7 +204,7 @@ clean:
 
 # ---- fuzzing (docs/fuzzing.md) ----------------------------------------------
 # The loader's sources without GL: the targets link no stin, no platform.
-FUZZ_SRC := $(addprefix tools/common/,isolate.c one_line.c scene_camera.c scene_entries.c scene_json.c \
+FUZZ_SRC := $(addprefix tools/common/,image_buffer.c isolate.c one_line.c scene_camera.c scene_entries.c scene_json.c \
   scene_json_util.c scene_mesh_file.c scene_model_check.c scene_model_import.c \
   scene_model_materials.c scene_model_wire.c scene_primitives.c scene_texture.c)
 FUZZ_LIBS := -lOpenImageIO -lOpenImageIO_Util -lassimp -lcjson -lstdc++ -lm

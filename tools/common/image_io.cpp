@@ -187,35 +187,6 @@ bool split_names(const char *list, std::vector<std::string> &names)
 
 } // namespace
 
-extern "C" int image_alloc(image *img, int width, int height, int channels)
-{
-    std::memset(img, 0, sizeof *img);
-    if (width <= 0 || height <= 0 || channels <= 0 || channels > kMaxChannels ||
-        (size_t)width > SIZE_MAX / sizeof(float) / (size_t)height / (size_t)channels)
-        return 0;
-    img->pixels = (float *)std::calloc((size_t)width * (size_t)height * (size_t)channels, sizeof(float));
-    if (!img->pixels)
-        return 0;
-    img->width = width;
-    img->height = height;
-    img->channels = channels;
-    return 1;
-}
-
-extern "C" void image_free(image *img)
-{
-    std::free(img->pixels);
-    std::memset(img, 0, sizeof *img);
-}
-
-extern "C" int image_channel(const image *img, const char *name)
-{
-    for (int c = 0; c < img->channels && c < kMaxChannels; c++)
-        if (std::strcmp(img->channel_names[c], name) == 0)
-            return c;
-    return -1;
-}
-
 extern "C" int image_write(const char *path, const image *img, int srgb, char *err, size_t err_size)
 {
     std::string tmp;

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Image files through OpenImageIO, behind a C interface (image_io.cpp).
+ * Image files through OpenImageIO, behind a C interface (image_io.cpp; the
+ * in-memory half in image_buffer.c, a build without OpenImageIO in absent/).
  * Pixels are float, rows TOP to bottom (file order), channels interleaved.
  */
 #ifndef STIN_TOOLS_IMAGE_IO_H
