@@ -59,6 +59,11 @@ const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
 typedef struct stin__volume_state {
     int depth_clamp;      /* volumes drawn with GL_DEPTH_CLAMP (orthographic) */
     int infinite;         /* the frame's projection has its far plane at infinity */
+    /* GL4: extrusion by geometry shader (shadow_volume_extrude.c); 0: none */
+    GLuint extrude_prog, count_query;
+    GLint u_model, u_view_proj, u_light, u_closed, u_caps, u_mode;
+    int path_unbound; /* an extruded caster left its program bound, not the path's */
+    int set_closed, set_caps, set_mode; /* the program's uniforms as last set (-1: unknown) */
 } stin__volume_state;
 
 typedef struct stin__map_fixed_state {
@@ -219,6 +224,15 @@ void stin__mask_uniforms(stin_context *ctx, const stin__program *p);
  * pass where the light is visible (shadow_volume.c; map-fixed's point lights). */
 void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
                         const int scissor[4]);
+/* GL4's extrusion by geometry shader (shadow_volume_extrude.c): init builds
+ * its program where the context has the GL4 path and geometry shaders and
+ * STIN_DEBUG_VOLUME_CPU is clear; draw draws one caster's volume for a light
+ * in object space and returns 1, or 0 where the mesh has no adjacency
+ * indices (the CPU builds it then). */
+void stin__volume_extrude_init(stin_context *ctx);
+void stin__volume_extrude_release(stin_context *ctx);
+int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const float light_object[4],
+                              int zfail);
 /* STIN_DEBUG_SHOW_VOLUMES: each light's volumes added over the frame's colour. */
 void stin__volume_debug_overlay(stin_context *ctx, const stin__path *path);
 /* After a light's last sample: stencil test and scissor off. */

@@ -1,43 +1,73 @@
 /* SPDX-License-Identifier: MIT */
 /* VDSM's light pass (shadow_vdsm_pyramid.c) must know, for every edge, on
  * which side of it the neighbouring triangle lies in the light's view: an
- * edge with no neighbour beyond it bounds the union of the triangles. So
- * each mesh gets a GL_TRIANGLES_ADJACENCY index buffer (triangle vertices
- * interleaved with the far vertex of the neighbour across each edge, from
- * the mesh's adjacency) and a vertex array that draws it. An open or
- * non-manifold edge gets the triangle's own third vertex: the same side, so
- * the edge counts as an outline. Only where vdsm is the shadow technique:
- * 24 bytes of GL memory per triangle. */
+ * edge with no neighbour beyond it bounds the union of the triangles; GL4's
+ * volume extrusion (shadow_volume_extrude.c) must know whether the
+ * neighbour faces the light. So each mesh gets a GL_TRIANGLES_ADJACENCY
+ * index buffer (triangle vertices interleaved with the far vertex of the
+ * neighbour across each edge, from the mesh's adjacency) and a vertex array
+ * that draws it. An open or non-manifold edge, or one whose neighbour runs
+ * it the same way (the two disagree on which side is out), gets the
+ * triangle's own third vertex: the edge then counts as an outline, and
+ * carries a side quad from both triangles (quads that cancel). Only where
+ * vdsm or the extruding volume technique runs: 24 bytes of GL memory per
+ * triangle. */
 #include "internal.h"
 
 #define NO_TRI 0xffffffffu
 
-/* The vertex of triangle n not on its edge back to triangle t, or own. */
-static uint32_t far_vertex(const uint32_t *tris, const uint32_t *adj, uint32_t t, uint32_t n,
-                           uint32_t own)
+static int same_point(const stin__vertex *verts, uint32_t a, uint32_t b)
 {
+    const float *p = verts[a].position, *q = verts[b].position;
+    return p[0] == q[0] && p[1] == q[1] && p[2] == q[2]; /* welded: snapped bit-equal */
+}
+
+/* The vertex of triangle n beyond t's edge e, or own. n may border t on
+ * two edges (slivers at a sphere's pole): the edge is the one with e's
+ * endpoints, so both triangles pick the same pair. One that runs e the same
+ * way round (orientation flips there) gives own as well. */
+static uint32_t far_vertex(const stin__vertex *verts, const uint32_t *tris, const uint32_t *adj,
+                           uint32_t t, uint32_t e, uint32_t n, uint32_t own)
+{
+    uint32_t a = tris[3u * t + e], b = tris[3u * t + (e + 1u) % 3u];
     int j;
     if (n == NO_TRI || n == t)
         return own;
-    for (j = 0; j < 3; j++)
-        if (adj[3u * n + (uint32_t)j] == t)
+    for (j = 0; j < 3; j++) {
+        uint32_t p = tris[3u * n + (uint32_t)j], q = tris[3u * n + (uint32_t)(j + 1) % 3u];
+        if (adj[3u * n + (uint32_t)j] != t)
+            continue;
+        if (same_point(verts, p, b) && same_point(verts, q, a))
             return tris[3u * n + (uint32_t)(j + 2) % 3u];
+        if (same_point(verts, p, a) && same_point(verts, q, b))
+            return own; /* oriented the other way */
+    }
     return own;
+}
+
+static int adjacency_wanted(const stin_context *ctx)
+{
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
+    return t == STIN_TECH_SHADOWS_VDSM || (t == STIN_TECH_SHADOWS_VOLUME && ctx->volume.extrude_prog);
 }
 
 void stin__vdsm_mesh_upload(stin_context *ctx, stin__mesh_slot *m)
 {
     const uint32_t *tris = ctx->indices + 3u * m->first_triangle;
     const uint32_t *adj = ctx->adjacency + 3u * m->first_triangle;
+    const stin__vertex *verts = ctx->vertices + m->first_vertex;
     uint32_t *out = (uint32_t *)(void *)ctx->scratch, t;
     size_t bytes = sizeof(uint32_t) * 6u * m->triangle_count;
     GLuint caller_vao;
-    if (!m->vao || ctx->sel.choice[STIN_FEATURE_SHADOWS].technique != STIN_TECH_SHADOWS_VDSM)
+    if (!m->vao || !adjacency_wanted(ctx))
         return;
     if (bytes > ctx->scratch_bytes || !m->triangle_count) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "vdsm: no scratch for a mesh's adjacency indices: it casts, but does not "
-                  "count as an occluder for step SM");
+                  "%s: no scratch for a mesh's adjacency indices: %s",
+                  stin_technique_name(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique),
+                  ctx->volume.extrude_prog ? "its volumes are built on the CPU"
+                                           : "it casts, but does not count as an occluder for "
+                                             "step SM");
         return;
     }
     for (t = 0; t < m->triangle_count; t++) {
@@ -46,7 +76,7 @@ void stin__vdsm_mesh_upload(stin_context *ctx, stin__mesh_slot *m)
             uint32_t own = tris[3u * t + (uint32_t)(e + 2) % 3u];
             out[6u * t + 2u * (uint32_t)e] = tris[3u * t + (uint32_t)e];
             out[6u * t + 2u * (uint32_t)e + 1u] =
-                far_vertex(tris, adj, t, adj[3u * t + (uint32_t)e], own);
+                far_vertex(verts, tris, adj, t, (uint32_t)e, adj[3u * t + (uint32_t)e], own);
         }
     }
     caller_vao = stin__vao_begin(ctx);

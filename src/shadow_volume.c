@@ -136,8 +136,10 @@ static int needs_zfail(const stin_context *ctx, const float light[4], const floa
     return 1;
 }
 
+/* One caster's volume: extruded on the GPU where it can be (not for the
+ * debug overlay, which draws with the path's program), else built here. */
 static void draw_caster(stin_context *ctx, const stin__path *path, const stin__draw *d,
-                        const float light_world[4], int zfail)
+                        const float light_world[4], int zfail, int extrude)
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     stin__volume_request r;
@@ -150,6 +152,14 @@ static void draw_caster(stin_context *ctx, const stin__path *path, const stin__d
     for (k = 0; k < 4; k++)
         r.light[k] = inv[k] * light_world[0] + inv[4 + k] * light_world[1] +
                      inv[8 + k] * light_world[2] + inv[12 + k] * light_world[3];
+    if (extrude && stin__volume_extrude_draw(ctx, d, r.light, zfail)) {
+        ctx->volume.path_unbound = 1;
+        return;
+    }
+    if (ctx->volume.path_unbound) {
+        path->volume_begin(ctx);
+        ctx->volume.path_unbound = 0;
+    }
     r.verts = ctx->vertices + m->first_vertex;
     r.tris = ctx->indices + 3u * m->first_triangle;
     r.adjacency = ctx->adjacency + 3u * m->first_triangle;
@@ -233,6 +243,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);
     path->volume_begin(ctx);
+    ctx->volume.path_unbound = 0;
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         float center[3], radius;
@@ -260,7 +271,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
             ps.front = front;
             ps.back = back;
             stin__pass_apply(ctx, &ps);
-            draw_caster(ctx, path, d, light_world, zfail);
+            draw_caster(ctx, path, d, light_world, zfail, 1);
         } else {
             /* Increments first (z-pass: front faces, z-fail: back faces), so a
              * clamped count never has to go below zero. */
@@ -268,11 +279,11 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
             ps.cull_face = zfail ? GL_FRONT : GL_BACK;
             ps.front = zfail ? back : front;
             stin__pass_apply(ctx, &ps);
-            draw_caster(ctx, path, d, light_world, zfail);
+            draw_caster(ctx, path, d, light_world, zfail, 1);
             ps.cull_face = zfail ? GL_BACK : GL_FRONT;
             ps.front = zfail ? front : back;
             stin__pass_apply(ctx, &ps);
-            draw_caster(ctx, path, d, light_world, zfail);
+            draw_caster(ctx, path, d, light_world, zfail, 1);
         }
     }
     path->volume_end(ctx);
@@ -373,6 +384,12 @@ static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_
     world[3] = 1.0f;
 }
 
+static stin_result volume_init(stin_context *ctx)
+{
+    stin__volume_extrude_init(ctx);
+    return STIN_OK;
+}
+
 static void volume_prepare(stin_context *ctx) { stin__volume_projection(ctx); }
 
 /* Per light sample: its volumes counted into the stencil, then the sample
@@ -416,7 +433,7 @@ void stin__volume_debug_overlay(stin_context *ctx, const stin__path *path)
         float world[4];
         sample_light(&ctx->lights[li], 0, 1, &one, world);
         for (i = 0; i < ctx->draw_count; i++)
-            draw_caster(ctx, path, &ctx->draws[ctx->draw_order[i]], world, 1);
+            draw_caster(ctx, path, &ctx->draws[ctx->draw_order[i]], world, 1, 0);
     }
     path->volume_end(ctx);
     ctx->stats.shadow_volume_triangles = counted; /* a picture, not the frame's work */
@@ -443,7 +460,7 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
 }
 
 const stin__shadow_technique stin__shadow_volume = {
-    STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", NULL,              NULL,
+    STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", volume_init, stin__volume_extrude_release,
     volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
     volume_mask,
 };

@@ -153,7 +153,10 @@
  * point-light faces), and with FBOs one RGBA8 colour and one 24-bit depth
  * texture of the map's size that its side passes share.
  * Volumes: silhouettes from the adjacency built at
- * mesh creation, extracted on the CPU each frame into the block; z-pass per
+ * mesh creation, extracted on the CPU each frame into the block (GL1, GL2),
+ * or on GL4 by a geometry shader from each mesh's GL_TRIANGLES_ADJACENCY
+ * index buffer (24 bytes of GL memory a triangle, made at mesh creation;
+ * no CPU work per caster triangle; STIN_DEBUG_VOLUME_CPU turns it off); z-pass per
  * caster where the near-clip region cannot reach its volume, else z-fail with
  * caps; two-sided stencil with wrap in one pass where present, else two culled
  * passes; casters that are not closed 2-manifolds get generalised volumes (each
@@ -850,6 +853,12 @@ typedef struct stin_desc {
  * looks like where the technique is exact. */
 #define STIN_DEBUG_VOLUME_ZFAIL 1u  /* z-fail for every caster (needs caps) */
 #define STIN_DEBUG_VOLUME_ZPASS 2u  /* z-pass for every caster: wrong with the eye in a volume */
+/* GL4 extrudes volumes in a geometry shader (no CPU work per caster
+ * triangle); these build them on the CPU as GL1/GL2 do, or count the
+ * extruded triangles into stin_frame_stats.shadow_volume_triangles (a
+ * GL_PRIMITIVES_GENERATED query per caster: waits for the GPU) */
+#define STIN_DEBUG_VOLUME_CPU 16777216u
+#define STIN_DEBUG_VOLUME_COUNT 33554432u
 /* VDSM steps, each on by default, off for measurement and tests; the mask is
  * the same without them (NO_GROW: pixels a shadow polygon covers only in
  * part, not at their centre, may be lost - the artifact the growth fixes).
@@ -1460,6 +1469,10 @@ typedef struct stin_frame_stats {
      * target hold (grown to the largest viewport and product so far) */
     uint32_t csg_interval_products;
     uint64_t csg_interval_bytes;
+    /* volume on GL4: casters (per light sample) whose volumes the geometry
+     * shader extruded from the mesh's own buffers; their triangles count in
+     * shadow_volume_triangles only with STIN_DEBUG_VOLUME_COUNT */
+    uint32_t shadow_volume_gpu_casters;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

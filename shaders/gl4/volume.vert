@@ -7,6 +7,7 @@
 invariant gl_Position;
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
+out vec3 g_object; // for volume_extrude.geom (the GPU's own extrusion)
 
 // the attributes (vertex_attributes.glsl, or tess_eval.glsl for a
 // tessellation evaluation stage) and the displacement chunk (gl2's
@@ -18,4 +19,5 @@ void main()
 {
     vec4 world = displace_world(u_model * a_position, a_normal, a_uv);
     gl_Position = u_view_proj * world;
+    g_object = a_position.xyz;
 }

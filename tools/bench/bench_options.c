@@ -198,6 +198,8 @@ static const bench_option table[] = {
     SETUPS(SEC_SHADOWS, "--shadow-setups", "2", "fresh context pairs per scene"),
     {SEC_SHADOWS, "--shadow-small-frames", "N", "7", "1", set_int, F(small_frames), 1,
      FRAMES_MAX, 0, "timed stin_end_frame calls per side at 64x36"},
+    {SEC_SHADOWS, "--shadow-cpu-volumes", NULL, NULL, NULL, set_flag, F(cpu_volumes), 0, 0, 0,
+     "build gl4's volumes on the CPU, as gl1/gl2 do, not in a geometry shader"},
 
     {SEC_MAPS, "--maps-scene", "FILE", SPOT_SCENE, NULL, set_text, F(sec[SEC_MAPS].scene), 0, 0,
      0, "scene with a spot or directional light"},

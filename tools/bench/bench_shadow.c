@@ -168,6 +168,8 @@ static int side_create(setup *u, side *sd, stin_tier tier, stin_technique shadow
     desc.log_user = &u->log;
     desc.tier = tier;
     desc.techniques[STIN_FEATURE_SHADOWS] = shadows;
+    if (shadows == STIN_TECH_SHADOWS_VOLUME && u->st->cpu_volumes)
+        desc.debug_flags |= STIN_DEBUG_VOLUME_CPU;
     desc.max_lights = SHADOW_MAX_LIGHTS;
     scene_gpu_size_desc(s, &desc);
     bytes = stin_memory_size(&desc);
@@ -349,7 +351,8 @@ static int one_setup(const shadow_settings *st, stin_tier tier, const scene *s, 
             }
         /* The last warm-up frame's statistics: the same every frame. */
         fs = stin_query_frame_stats(u->vol.ctx);
-        if (fs.lights != (uint32_t)st->light_counts[i] || fs.shadow_volume_triangles == 0) {
+        if (fs.lights != (uint32_t)st->light_counts[i] ||
+            (fs.shadow_volume_triangles == 0 && fs.shadow_volume_gpu_casters == 0)) {
             snprintf(err, err_size, "the shadowed frame drew %u lights and %u volume triangles "
                      "(expected %d lights and some volumes)", fs.lights,
                      fs.shadow_volume_triangles, st->light_counts[i]);
@@ -368,6 +371,7 @@ static int one_setup(const shadow_settings *st, stin_tier tier, const scene *s, 
                     small.vol_ms, small.vol_cpu_ms, small.off_ms, small.off_cpu_ms);
         row->lights = st->light_counts[i];
         row->volume_triangles = fs.shadow_volume_triangles;
+        row->gpu_casters = fs.shadow_volume_gpu_casters;
         row->passes = fs.passes;
         row->zpass_casters = fs.zpass_casters;
         row->zfail_casters = fs.zfail_casters;

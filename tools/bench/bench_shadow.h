@@ -21,6 +21,7 @@ typedef struct shadow_settings {
     int setups;              /* fresh pair of stin contexts each, >= 1 */
     int small_w, small_h;    /* viewport of the extraction estimate (64x36) */
     int small_frames;        /* timed frames per side there */
+    int cpu_volumes;         /* STIN_DEBUG_VOLUME_CPU on the volume side */
     int light_counts[SHADOW_MAX_COUNTS];
     int count_n;
 } shadow_settings;
@@ -32,6 +33,7 @@ typedef struct shadow_row {
     double off_ms, vol_ms;
     /* from the shadowed context's last frame */
     uint32_t volume_triangles, passes, zpass_casters, zfail_casters;
+    uint32_t gpu_casters; /* casters a geometry shader extruded (triangles not counted) */
     /* small viewport: per side the lowest set-up median of stin_end_frame's wall
      * time (no glFinish), and of the part of it spent outside the GL draw and
      * upload calls (glDrawArrays, glDrawElements, glBufferData, glClear) */

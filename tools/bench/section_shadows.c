@@ -21,6 +21,16 @@ typedef struct shadow_table {
 } shadow_table;
 
 /* The best and worst ratio so far, with where. */
+/* A row's volume triangles, or that a geometry shader extruded them (not counted). */
+static const char *volume_count(const shadow_row *r, char *out, size_t size)
+{
+    if (r->gpu_casters)
+        snprintf(out, size, "GS-extruded");
+    else
+        snprintf(out, size, "%u", r->volume_triangles);
+    return out;
+}
+
 static void keep_extremes(shadow_table *t, double ratio, const char *at)
 {
     if (ratio > t->worst || !t->worst_at[0]) {
@@ -59,9 +69,10 @@ static int shadow_tier(const bench_env *env, const shadow_settings *st, int ti, 
             snprintf(at, sizeof at, "%s %s, %d light(s)", stin_tier_name(tier), label,
                      r->lights);
             keep_extremes(t, ratio, at);
-            printf("| %s | %d | %u | %u / %u | %.2f | %.2f | %.2f |\n", label, r->lights,
-                   r->volume_triangles, r->zpass_casters, r->zfail_casters, r->off_ms, r->vol_ms,
-                   ratio);
+            char count[24];
+            printf("| %s | %d | %s | %u / %u | %.2f | %.2f | %.2f |\n", label, r->lights,
+                   volume_count(r, count, sizeof count), r->zpass_casters, r->zfail_casters,
+                   r->off_ms, r->vol_ms, ratio);
         }
         fflush(stdout);
     }
@@ -91,11 +102,13 @@ static void shadow_cpu_table(const bench_env *env, const shadow_settings *st,
                 double cpu = r->vol_cpu_ms - r->off_cpu_ms;
                 double per_tri = t->triangles[i] ? 1e6 * cpu / ((double)t->triangles[i] *
                                                                 (double)r->lights) : 0.0;
-                double per_vol = r->volume_triangles ? 1e6 * cpu / (double)r->volume_triangles
-                                                     : 0.0;
-                printf("| %s | %s | %d | %u | %.3f / %.3f | %.3f | %.3f / %.3f | %.3f | %.2f | "
-                       "%.1f |\n", stin_tier_name(t->tiers[ti]), label, r->lights,
-                       r->volume_triangles, r->off_end_ms, r->vol_end_ms,
+                char per_vol[24] = "-", count[24];
+                if (r->volume_triangles)
+                    snprintf(per_vol, sizeof per_vol, "%.1f",
+                             1e6 * cpu / (double)r->volume_triangles);
+                printf("| %s | %s | %d | %s | %.3f / %.3f | %.3f | %.3f / %.3f | %.3f | %.2f | "
+                       "%s |\n", stin_tier_name(t->tiers[ti]), label, r->lights,
+                       volume_count(r, count, sizeof count), r->off_end_ms, r->vol_end_ms,
                        r->vol_end_ms - r->off_end_ms, r->off_cpu_ms, r->vol_cpu_ms, cpu, per_tri,
                        per_vol);
             }
@@ -115,6 +128,7 @@ static void settings(const bench_env *env, shadow_settings *st, char *counts, si
     st->small_w = 64;
     st->small_h = 36;
     st->small_frames = o->small_frames;
+    st->cpu_volumes = o->cpu_volumes;
     st->count_n = o->light_counts.n;
     counts[0] = '\0';
     for (i = 0; i < st->count_n; i++) {

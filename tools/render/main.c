@@ -138,8 +138,10 @@ static void print_frame(const stin_context *ctx, const scene *s, double ms, int 
     if (st.shadow_map_size)
         printf("shadow maps: %u texels a side\n", st.shadow_map_size);
     if (st.zpass_casters + st.zfail_casters)
-        printf("shadow volumes: %u triangles, %u casters z-pass, %u z-fail (last output)\n",
-               st.shadow_volume_triangles, st.zpass_casters, st.zfail_casters);
+        printf("shadow volumes: %u triangles, %u casters z-pass, %u z-fail, %u extruded by "
+               "the GPU (last output)\n",
+               st.shadow_volume_triangles, st.zpass_casters, st.zfail_casters,
+               st.shadow_volume_gpu_casters);
 }
 
 int main(int argc, char **argv)
