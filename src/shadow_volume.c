@@ -103,16 +103,16 @@ static int near_corners(const stin_context *ctx, float out[4][3])
 }
 
 /* Everitt & Kilgard's near-clip volume: the region between the near-plane
- * rectangle and the light. A caster whose bounding sphere lies outside one of
- * its planes cannot put its volume across the near plane: z-pass is exact. */
-static int needs_zfail(const stin_context *ctx, const float light[4], const float center[3],
-                       float radius)
+ * rectangle and the light, as its five planes (once per light sample). A
+ * caster whose bounding sphere lies outside one of them cannot put its
+ * volume across the near plane: z-pass is exact. 0 planes: unknown, z-fail
+ * for every caster. */
+static int near_clip_planes(const stin_context *ctx, const float light[4], plane out[5])
 {
     float c[4][3], mid[3] = {0, 0, 0}, inside[3], apex_dir[3];
-    plane pl;
     int i, k;
     if (!near_corners(ctx, c))
-        return 1;
+        return 0;
     for (i = 0; i < 4; i++)
         for (k = 0; k < 3; k++)
             mid[k] += 0.25f * c[i][k];
@@ -121,18 +121,23 @@ static int needs_zfail(const stin_context *ctx, const float light[4], const floa
     for (k = 0; k < 3; k++) /* halfway to the light: inside every plane */
         inside[k] = mid[k] + 0.5f * apex_dir[k];
     /* near plane itself, inside toward the light */
-    plane_from(&pl, c[0], c[1], c[2], inside);
-    if (dot3(pl.n, center) + pl.d < -radius)
-        return 0;
+    plane_from(&out[0], c[0], c[1], c[2], inside);
     for (i = 0; i < 4; i++) {
         const float *a = c[i], *b = c[(i + 1) % 4];
         float apex[3];
         for (k = 0; k < 3; k++)
             apex[k] = light[3] != 0.0f ? light[k] / light[3] : a[k] + apex_dir[k];
-        plane_from(&pl, a, b, apex, inside);
-        if (dot3(pl.n, center) + pl.d < -radius)
-            return 0;
+        plane_from(&out[1 + i], a, b, apex, inside);
     }
+    return 5;
+}
+
+static int needs_zfail(const plane *planes, int n, const float center[3], float radius)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (dot3(planes[i].n, center) + planes[i].d < -radius)
+            return 0;
     return 1;
 }
 
@@ -224,7 +229,8 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
     stin__pass_state ps = stin__pass_defaults;
     uint32_t i;
-    int k;
+    int k, n_planes;
+    plane planes[5];
     stin__csg_cast_none(ctx, "into shadow volumes (a product's volume needs its resolved "
                              "silhouette, not its primitives'; the map techniques cast them)");
     /* The frame's viewport at most: the stencil of the rest of the
@@ -242,6 +248,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     stin__pass_apply(ctx, &ps);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);
+    n_planes = near_clip_planes(ctx, light_world, planes);
     path->volume_begin(ctx);
     ctx->volume.path_unbound = 0;
     for (i = 0; i < ctx->draw_count; i++) {
@@ -258,7 +265,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         zfail = (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_ZFAIL)   ? 1
                 : (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_ZPASS) ? 0
                 : d->material.color[3] < 1.0f                        ? 1
-                                                                    : needs_zfail(ctx, light_world, center, radius);
+                                                                    : needs_zfail(planes, n_planes, center, radius);
         if (zfail)
             ctx->stats.zfail_casters++;
         else
