@@ -8,10 +8,11 @@
  * neighbour across each edge, from the mesh's adjacency) and a vertex array
  * that draws it. An open or non-manifold edge, or one whose neighbour runs
  * it the same way (the two disagree on which side is out), gets the
- * triangle's own third vertex: the edge then counts as an outline, and
- * carries a side quad from both triangles (quads that cancel). Only where
- * vdsm or the extruding volume technique runs: 24 bytes of GL memory per
- * triangle. */
+ * triangle's own third vertex: the edge then counts as an outline for vdsm,
+ * and the extrusion draws a side quad on it from each triangle (a facing
+ * test of a neighbour read in the wrong order would be inverted). Only
+ * where vdsm or the extruding volume technique runs: 24 bytes of GL memory
+ * per triangle. */
 #include "internal.h"
 
 #define NO_TRI 0xffffffffu
@@ -23,9 +24,9 @@ static int same_point(const stin__vertex *verts, uint32_t a, uint32_t b)
 }
 
 /* The vertex of triangle n beyond t's edge e, or own. n may border t on
- * two edges (slivers at a sphere's pole): the edge is the one with e's
- * endpoints, so both triangles pick the same pair. One that runs e the same
- * way round (orientation flips there) gives own as well. */
+ * more than one edge (a sliver folded onto its neighbour): the edge is the
+ * one with e's endpoints, so both triangles pick the same pair. One that
+ * runs e the same way round (orientation flips there) gives own as well. */
 static uint32_t far_vertex(const stin__vertex *verts, const uint32_t *tris, const uint32_t *adj,
                            uint32_t t, uint32_t e, uint32_t n, uint32_t own)
 {
