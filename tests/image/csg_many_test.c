@@ -21,6 +21,7 @@
 #include "reference.h"
 #include "reference_csg.h"
 #include "scene_gpu.h"
+#include "test_context.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -162,17 +163,10 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
     o.csg_capacity = MANY;
     o.debug_flags = debug;
     ms = now_ms();
-    if (!capture_render(r->plat, r->profile, &s, &o, &cap, err, sizeof err)) {
-        report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "render failed: %s", err);
+    if (!capture_forced(r, &s, &o, STIN_FEATURE_CSG, tech, &cap, name))
         goto done;
-    }
     have_cap = 1;
     ms = now_ms() - ms;
-    if (cap.choice[STIN_FEATURE_CSG].technique != tech) {
-        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(tech),
-               cap.choice[STIN_FEATURE_CSG].reason);
-        goto done;
-    }
     ref = reference_create(&s, err, sizeof err);
     hits = calloc((size_t)w * h, sizeof *hits);
     refimg = calloc((size_t)w * h * REFERENCE_CHANNELS, sizeof *refimg);

@@ -55,6 +55,7 @@
 #include "reference.h"
 #include "reference_csg.h"
 #include "scene_gpu.h"
+#include "test_context.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -261,20 +262,8 @@ static void test_shadow(run *r, const csg_case *c, stin_technique tech, stin_tie
     snprintf(test, sizeof test, "shadow-%s", stin_technique_name(t));
     case_name(c, tech, tier, test, name, sizeof name);
     o.shadows = t;
-    {
-        char err[512];
-        if (!capture_render(r->plat, r->profile, s, &o, &one, err, sizeof err)) {
-            /* a forced technique the context cannot run is refused at create */
-            report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "%s", err);
-            return;
-        }
-    }
-    if (one.choice[STIN_FEATURE_SHADOWS].technique != t) {
-        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(t),
-               one.choice[STIN_FEATURE_SHADOWS].reason);
-        capture_free(&one);
+    if (!capture_forced(r, s, &o, STIN_FEATURE_SHADOWS, t, &one, name))
         return;
-    }
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
             const ref_hit *hit = &hits[(size_t)y * w + x];
@@ -403,17 +392,9 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     o.csg = &product;
     o.csg_count = 1;
     o.csg_technique = tech;
-    if (!capture_render(r->plat, r->profile, &s, &o, &cap, err, sizeof err)) {
-        /* a forced technique the context cannot run is refused at create */
-        report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "render failed: %s", err);
+    if (!capture_forced(r, &s, &o, STIN_FEATURE_CSG, tech, &cap, name))
         goto done;
-    }
     have_cap = 1;
-    if (cap.choice[STIN_FEATURE_CSG].technique != tech) {
-        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(tech),
-               cap.choice[STIN_FEATURE_CSG].reason);
-        goto done;
-    }
     ref = reference_create(&s, err, sizeof err);
     hits = calloc((size_t)w * h, sizeof *hits);
     if (!ref || !hits || !reference_csg_mark(ref, &rp, 1) ||

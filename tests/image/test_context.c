@@ -90,3 +90,20 @@ stin_result test_context_frame(test_context *t, const scene *s, const stin_frame
     }
     return stin_end_frame(t->ctx);
 }
+
+int capture_forced(run *r, const scene *s, const capture_options *o, stin_feature feature,
+                   stin_technique want, capture *out, const char *name)
+{
+    char err[512];
+    if (!capture_render(r->plat, r->profile, s, o, out, err, sizeof err)) {
+        report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "render failed: %s", err);
+        return 0;
+    }
+    if (want && out->choice[feature].technique != want) {
+        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(want),
+               out->choice[feature].reason);
+        capture_free(out);
+        return 0;
+    }
+    return 1;
+}

@@ -5,6 +5,7 @@
 #ifndef STIN_TESTS_TEST_CONTEXT_H
 #define STIN_TESTS_TEST_CONTEXT_H
 
+#include "capture.h"
 #include "image_test.h"
 #include "scene.h"
 #include "scene_gpu.h"
@@ -31,5 +32,12 @@ void test_frame_desc(const run *r, const scene *s, stin_frame_desc *fd);
  * >= 0 - and draws, end. STIN_OK or the first error. */
 stin_result test_context_frame(test_context *t, const scene *s, const stin_frame_desc *fd,
                                int first);
+
+/* One capture with a forced technique: 1 when it rendered and `feature`
+ * runs `want` (want 0: any). A refused forced technique (stin_create's
+ * "needs") and a demotion report SKIP with the reason, any other failure
+ * FAIL; nothing is left to free then. */
+int capture_forced(run *r, const scene *s, const capture_options *o, stin_feature feature,
+                   stin_technique want, capture *out, const char *name);
 
 #endif
