@@ -245,11 +245,16 @@ void stin__csg_faces(stin_context *ctx)
     }
 }
 
+GLenum stin__csg_face_hidden(const stin__draw *d)
+{
+    int mirrored = stin__mat4_det(d->transform) < 0.0 && d->csg != STIN__CSG_CAP;
+    return ((d->csg == STIN__CSG_BACK) != mirrored) ? GL_FRONT : GL_BACK;
+}
+
 int stin__csg_face_begin(stin_context *ctx, const stin__draw *d, stin__pass_state *saved)
 {
     stin__pass_state ps = *stin__pass_current(ctx);
-    int mirrored = stin__mat4_det(d->transform) < 0.0 && d->csg != STIN__CSG_CAP;
-    GLenum hidden = ((d->csg == STIN__CSG_BACK) != mirrored) ? GL_FRONT : GL_BACK;
+    GLenum hidden = stin__csg_face_hidden(d);
     *saved = ps;
     /* map-depth's side test draws the lit pass once per side the eye sees:
      * a product's surface always shows its outside to the eye (a cavity's

@@ -31,15 +31,37 @@ typedef struct stin__csg_product {
     int capped;               /* the resolve kept its near-plane cap somewhere */
 } stin__csg_product;
 
-/* The CPU side of one resolve, carved from the staging (csg_goldfeather.c). */
+/* One resolve's candidates and result (csg_goldfeather.c carves them;
+ * csg_merge.c keeps them): on the CPU, arrays in the staging filled by
+ * read-backs; on the GPU (gpu set: the frame's resolve on GLSL tiers with
+ * FBOs and depth textures), depth textures, result and candidate NULL. */
 typedef struct stin__csg_pixels {
     float *result;            /* nearest surviving depth per pixel */
     float *candidate;         /* this layer's depth; > 1 where it lost */
-    unsigned char *stencil;   /* a stencil read back */
+    unsigned char *stencil;   /* a stencil read back (interval's walk too) */
     int x, y, w, h;
     size_t pixels;
     int bits;                 /* stencil bits used (at most 8) */
+    int gpu;                  /* kept on the GPU (csg_merge.c) */
 } stin__csg_pixels;
+
+/* Stencil thresholds the GPU resolve counts in occlusion queries to learn
+ * a stencil's largest value without reading it (csg_merge.c): 1..16, 32,
+ * 64, 128, 255; one query more tells whether a candidate kept a pixel. */
+#define STIN__CSG_MERGE_THRESHOLDS 20
+enum { STIN__CSG_MERGE_WORK, STIN__CSG_MERGE_RESULT };
+typedef struct stin__csg_merge_state {
+    GLuint merge_prog, kill_prog, snap_prog;
+    GLint u_depth, u_select, u_params;
+    GLint snap_model, snap_view_proj, snap_result, snap_params;
+    stin__displace_locs snap_displace;
+    GLuint fbo[2], texture[2]; /* work (depth-stencil), result (depth) */
+    GLenum format;
+    int width, height;        /* grown to the largest viewport window so far */
+    size_t bytes;
+    GLuint queries[STIN__CSG_MERGE_THRESHOLDS + 1]; /* 0: no occlusion queries */
+    int said_failed;
+} stin__csg_merge_state;
 
 /* A light's map resolve, kept for the passes that draw the products'
  * surface into the same map again (map-combine's ramp, map-depth's side
@@ -110,6 +132,8 @@ typedef struct stin__csg_state {
     GLuint resolve_fbo;       /* the framebuffer a resolve runs in (the frame's, or a
                                * light map's: csg_cast.c), bound again by interval */
     stin__csg_interval_state interval; /* csg_interval.c */
+    stin__csg_merge_state merge;       /* csg_merge.c */
+    int merged;               /* this frame's resolve kept its depth on the GPU */
 } stin__csg_state;
 
 /* Words of normalisation scratch for the desc's capacities. */
@@ -152,10 +176,11 @@ void stin__csg_init(struct stin_context *ctx);
 void stin__csg_release(struct stin_context *ctx);
 int stin__csg_resolve(struct stin_context *ctx, const stin__path *path);
 void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
-/* GL4: an R32F texture of the resolved depth at the viewport's corner
- * (texel (0, 0) is the viewport's first pixel), left bound on unit 0; 0
- * when this frame resolved nothing. */
-GLuint stin__csg_depth_texture(struct stin_context *ctx);
+/* GL4: a texture of the resolved depth (its r), left bound on unit 0; 0
+ * when this frame resolved nothing. origin: the window pixel of its texel
+ * (0, 0) (the viewport's corner for the CPU resolve's R32F copy, (0, 0)
+ * for the GPU resolve's depth texture). */
+GLuint stin__csg_depth_texture(struct stin_context *ctx, int origin[2]);
 /* The faces of the resolved products as draws (csg.c), after the resolve. */
 void stin__csg_faces(struct stin_context *ctx);
 /* Around a face draw of a path's pass: depth LESS becomes EQUAL, the face
@@ -221,6 +246,46 @@ GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
  * pixel (csg_bounds.c). */
 void stin__csg_screen_rect(const struct stin_context *ctx, const stin__draw *d, float rect[4]);
 int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const float b[4]);
+
+/* The resolve's steps on its candidates (csg_merge.c), alike on the CPU
+ * and the GPU. A candidate is the depth the bound framebuffer holds.
+ * open: the candidate taken up; 0 when no pixel of it can be nearer than
+ * the result (known on the CPU only). keep_where: its pixels whose stencil
+ * & mask differs from want lose. take: its pixels kept where nearer than
+ * the result (where select is not NULL, only the pixels whose interval
+ * walk chose layer select->id); returns whether any was kept (on the GPU
+ * counted by a query where want_kept asks and there are queries, else 1).
+ * stencil_max: the largest stencil value over the viewport, or a bound
+ * above it no larger than limit (on the GPU from threshold queries). The
+ * GPU steps switch programs: path's geometry_begin runs again after them
+ * (path NULL: the caller rebinds its own). */
+typedef struct stin__csg_select {
+    GLuint texture;           /* interval's walk target (R8: layer + 1) */
+    int id;
+} stin__csg_select;
+int stin__csg_candidate_open(struct stin_context *ctx, stin__csg_pixels *r);
+void stin__csg_candidate_keep_where(struct stin_context *ctx, const stin__path *path,
+                                    stin__csg_pixels *r, unsigned mask, unsigned want);
+int stin__csg_candidate_take(struct stin_context *ctx, const stin__path *path,
+                             stin__csg_pixels *r, const stin__csg_select *select,
+                             int want_kept);
+unsigned stin__csg_stencil_max(struct stin_context *ctx, const stin__path *path,
+                               stin__csg_pixels *r, unsigned limit);
+/* The GPU resolve (csg_merge.c): programs at stin_create (nothing where
+ * the tier or context lacks what it needs); begin: its framebuffers grown
+ * to the viewport's window size, the result cleared and the work
+ * framebuffer bound as the resolve's (0: cannot, logged once: the resolve
+ * runs on the CPU); snap: the products' faces (csg.c's list) into the
+ * bound framebuffer, depth LESS, where they lie on the result; result: the
+ * result's depth texture (texel = window pixel). */
+void stin__csg_merge_init(struct stin_context *ctx);
+void stin__csg_merge_release(struct stin_context *ctx);
+int stin__csg_merge_ready(const struct stin_context *ctx);
+int stin__csg_merge_begin(struct stin_context *ctx);
+void stin__csg_merge_snap(struct stin_context *ctx);
+GLuint stin__csg_merge_result(struct stin_context *ctx);
+/* The side of face draw d its pass culls (csg.c). */
+GLenum stin__csg_face_hidden(const stin__draw *d);
 
 /* SCS (csg_scs.c): product p into r->result when the CSG technique is scs
  * and every primitive of p is convex, returning 1; else 0 (logged once per

@@ -15,15 +15,21 @@
  *      whatever the primitive count); read back, a pixel survives where
  *      every bit says inside for a plain primitive and outside for a
  *      complemented one;
- *   3. the surviving depths are kept, the nearest per pixel, on the CPU.
- * The result goes into the frame's depth buffer with glDrawPixels (depth
- * ALWAYS over what the buffer held before, itself read first and kept in
- * the minimum, so earlier products and a caller's no_clear depth stay).
- * The depth buffer is copied by glReadPixels / glDrawPixels through the
+ *   3. the surviving depths are kept, the nearest per pixel.
+ * A convex primitive's candidate surface has one layer: its depth
+ * complexity is not sampled. Where the candidates and the result are kept
+ * is csg_merge.c's: on GLSL tiers with FBOs and depth textures in depth
+ * textures on the GPU, else on the CPU. The result goes into the frame's
+ * depth buffer (depth ALWAYS over what the buffer held before, itself
+ * copied first and kept in the minimum, so earlier products and a caller's
+ * no_clear depth stay): from the GPU's texture by a quad writing
+ * gl_FragDepth, from the CPU by glDrawPixels or, on core profiles, an R32F
+ * texture and the same kind of quad. The CPU's copies go through the
  * block's texture staging (the larger of it and the mesh scratch, both idle
- * during a frame): 9 bytes a pixel of the viewport. The primitives' faces
- * on the resolved depth are then drawn like any draw, depth EQUAL (csg.c's
- * face draws). */
+ * during a frame): 9 bytes a pixel of the viewport (the GPU resolve: 1, for
+ * interval's walk and a stencil read where there are no queries). The
+ * primitives' faces on the resolved depth are then drawn like any draw,
+ * depth EQUAL (csg.c's face draws). */
 #include "internal.h"
 
 #define GL_STENCIL_INDEX 0x1901
@@ -275,7 +281,6 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
 {
     unsigned char want = 0, mask = 0;
     uint32_t j;
-    size_t i;
     clear(ctx, GL_STENCIL_BUFFER_BIT);
     for (j = 0; j < n; j++) {
         const stin__draw *d =
@@ -286,10 +291,7 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
             want |= (unsigned char)(1u << j); /* odd: inside */
     }
     ctx->stats.passes++;
-    read_stencil(ctx, r);
-    for (i = 0; i < r->pixels; i++)
-        if ((r->stencil[i] & mask) != want)
-            r->candidate[i] = 2.0f;
+    stin__csg_candidate_keep_where(ctx, path, r, mask, want);
 }
 
 /* Whether literal `lit` can matter where `own` (the candidate's window
@@ -303,36 +305,32 @@ static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, co
 }
 
 /* The layer count of the surface just drawn as layer 1 (its stencil holds
- * every pixel's fragment count). */
-static int depth_complexity(stin_context *ctx, resolve *r)
+ * every pixel's fragment count), or a bound above it. */
+static int depth_complexity(stin_context *ctx, const stin__path *path, resolve *r)
 {
-    unsigned char most = 0;
-    size_t i;
-    read_stencil(ctx, r);
-    for (i = 0; i < r->pixels; i++)
-        if (r->stencil[i] > most)
-            most = r->stencil[i];
+    unsigned most = stin__csg_stencil_max(ctx, path, r, 255u);
     if (most == 255u && !ctx->csg.said_layers) {
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "goldfeather: a primitive is 255 or more layers deep; layers past "
                   "255 are not drawn");
         ctx->csg.said_layers = 1;
     }
-    return most;
+    return (int)most;
 }
 
 /* A candidate surface of term t (d's faces but `culled`; the term's literal
  * `self`, or none for the near-plane cap): every layer, tested against the
  * term's other literals, kept where nearer. Returns whether it kept any
- * pixel. */
+ * pixel (where want_kept asks: csg_merge.c's take). */
 static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
                      const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
-                     const stin__draw *d, GLenum culled, const counting *how)
+                     const stin__draw *d, GLenum culled, const counting *how, int want_kept)
 {
     uint32_t others[8], n, j;
     int layers = 1, k, kept = 0;
+    /* a convex surface (the cap's quad too) shows one layer a pixel */
+    int one_layer = d->mesh_slot == ctx->csg.cap_slot || ctx->meshes[d->mesh_slot].info.convex;
     float own[4];
-    size_t i;
     /* off the candidate's rectangle a plain literal leaves nothing, a
      * complemented one is outside (no pass): passes follow the overlaps */
     stin__csg_screen_rect(ctx, d, own);
@@ -341,18 +339,11 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
             !meets(ctx, p, ctx->csg.literals[t->first + j], own))
             return 0;
     for (k = 1; k <= layers; k++) {
-        int any = 0;
         clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         draw_layer(ctx, path, d, culled, k);
-        if (k == 1) /* every fragment counted: the depth complexity */
-            layers = depth_complexity(ctx, r);
-        read_depth(ctx, r, r->candidate);
-        for (i = 0; i < r->pixels; i++)
-            if (r->candidate[i] >= r->result[i]) /* no layer, or no nearer */
-                r->candidate[i] = 2.0f;
-            else
-                any = 1;
-        if (!any)
+        if (k == 1 && !one_layer) /* every fragment counted: the depth complexity */
+            layers = depth_complexity(ctx, path, r);
+        if (!stin__csg_candidate_open(ctx, r)) /* no layer, or none nearer */
             continue;
         /* the other literals, a stencil bit each, in batches of the bits */
         for (j = 0, n = 0; j < t->count; j++) {
@@ -366,11 +357,7 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
         }
         if (n)
             parity_batch(ctx, path, r, p, others, n, how);
-        for (i = 0; i < r->pixels; i++)
-            if (r->candidate[i] < r->result[i]) {
-                r->result[i] = r->candidate[i];
-                kept = 1;
-            }
+        kept |= stin__csg_candidate_take(ctx, path, r, NULL, want_kept);
     }
     return kept;
 }
@@ -430,14 +417,14 @@ static void resolve_product(stin_context *ctx, const stin__path *path, resolve *
             const stin__draw *d =
                 &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
             (void)candidate(ctx, path, r, p, t, li, d,
-                            culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), &how);
+                            culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), &how, 0);
         }
         if (cap) {
             stin__draw d = ctx->csg.primitives[p->first_primitive];
             d.mesh_slot = ctx->csg.cap_slot;
             stin__memcopy(d.transform, ctx->csg.cap_transform, sizeof d.transform);
             /* the cap's quad faces the window whatever the camera mirrors */
-            p->capped |= candidate(ctx, path, r, p, t, t->count, &d, GL_BACK, &how);
+            p->capped |= candidate(ctx, path, r, p, t, t->count, &d, GL_BACK, &how, 1);
         }
     }
 }
@@ -461,20 +448,44 @@ int stin__csg_pixels_at(stin_context *ctx, size_t offset, resolve *r)
     r->candidate = r->result + r->pixels;
     r->stencil = (unsigned char *)(r->candidate + r->pixels);
     r->bits = ctx->target.stencil_bits < 8 ? ctx->target.stencil_bits : 8;
+    r->gpu = 0;
     return 1;
 }
 
-/* Whether this frame can resolve its products; logs once per reason. */
-static int usable(stin_context *ctx, resolve *r)
+/* The GPU resolve's pixels: the stencil read alone (1 byte a pixel). */
+static int pixels_gpu(stin_context *ctx, resolve *r)
+{
+    const int *vp = ctx->frame.viewport;
+    size_t bytes;
+    unsigned char *base = staging_of(ctx, &bytes);
+    if ((size_t)vp[2] * (size_t)vp[3] > bytes)
+        return 0;
+    r->x = vp[0];
+    r->y = vp[1];
+    r->w = vp[2];
+    r->h = vp[3];
+    r->pixels = (size_t)r->w * (size_t)r->h;
+    r->result = r->candidate = NULL;
+    r->stencil = base;
+    r->bits = ctx->target.stencil_bits < 8 ? ctx->target.stencil_bits : 8;
+    r->gpu = 1;
+    return 1;
+}
+
+/* Whether this frame can resolve its products (on the GPU where gpu asks);
+ * logs once per reason. */
+static int usable(stin_context *ctx, resolve *r, int gpu)
 {
     const char *why = NULL;
     if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
         why = "the CSG technique is csg-off";
     else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
         why = "the frame's framebuffer has no stencil buffer";
-    else if (!stin__csg_pixels_at(ctx, 0, r))
-        why = "the viewport needs more than the texture staging (9 bytes a pixel; raise "
-              "desc.max_texture_bytes)";
+    else if (gpu ? !pixels_gpu(ctx, r) : !stin__csg_pixels_at(ctx, 0, r))
+        why = gpu ? "the viewport needs more than the texture staging (1 byte a pixel; raise "
+                    "desc.max_texture_bytes)"
+                  : "the viewport needs more than the texture staging (9 bytes a pixel; raise "
+                    "desc.max_texture_bytes)";
     if (why) {
         if (!ctx->csg.said_unusable) {
             stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
@@ -491,7 +502,8 @@ void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve
     pack_saved saved;
     uint32_t pi;
     pack_begin(ctx, &saved);
-    read_depth(ctx, r, r->result); /* what the buffer holds stays where nearer */
+    if (!r->gpu) /* what the buffer holds stays where nearer (the GPU's: merge_begin) */
+        read_depth(ctx, r, r->result);
     ctx->csg.cap_usable = ctx->csg.cap_slot != STIN__NO_SLOT &&
                           stin__csg_cap_transform(ctx, ctx->csg.cap_transform);
     path->geometry_begin(ctx);
@@ -509,24 +521,47 @@ void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve
 int stin__csg_resolve(stin_context *ctx, const stin__path *path)
 {
     resolve r;
-    ctx->csg.resolved = 0;
-    if (!ctx->csg.product_count || !usable(ctx, &r))
+    int gpu = stin__csg_merge_ready(ctx);
+    ctx->csg.resolved = ctx->csg.merged = 0;
+    if (!ctx->csg.product_count || !usable(ctx, &r, gpu))
         return 0;
     ctx->csg.resolve_fbo = ctx->draw_fbo;
+    if (gpu && !stin__csg_merge_begin(ctx) && !usable(ctx, &r, 0))
+        return 0; /* its framebuffers failed (logged): the CPU's, if the staging holds it */
     stin__csg_resolve_pixels(ctx, path, &r);
+    ctx->csg.resolved = 1;
+    ctx->csg.merged = r.gpu;
+    if (r.gpu) { /* the frame's buffers untouched so far: the faces on the result */
+        ctx->csg.resolve_fbo = ctx->draw_fbo;
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+        stin__csg_faces(ctx);
+        stin__csg_merge_snap(ctx);
+        return 1;
+    }
     write_depth(ctx, path, &r, GL_ALWAYS);
     clear(ctx, GL_STENCIL_BUFFER_BIT);
-    ctx->csg.resolved = 1;
     return 1;
 }
 
-GLuint stin__csg_depth_texture(stin_context *ctx)
+GLuint stin__csg_depth_texture(stin_context *ctx, int origin[2])
 {
     resolve r;
-    if (!ctx->csg.resolved || !ctx->csg.depth_tex || !usable(ctx, &r))
+    if (!ctx->csg.resolved)
+        return 0;
+    origin[0] = origin[1] = 0;
+    if (ctx->csg.merged) {
+        GLuint result = stin__csg_merge_result(ctx);
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, result);
+        return result;
+    }
+    if (!ctx->csg.depth_tex || !usable(ctx, &r, 0))
         return 0;
     if (!ctx->csg.depth_prog) /* compatibility profiles wrote it with glDrawPixels */
         upload_result(ctx, &r);
+    else
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->csg.depth_tex);
+    origin[0] = r.x;
+    origin[1] = r.y;
     return ctx->csg.depth_tex;
 }
 
@@ -535,9 +570,12 @@ GLuint stin__csg_depth_texture(stin_context *ctx)
 void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
 {
     resolve r;
-    if (!ctx->csg.resolved || !usable(ctx, &r))
+    if (!ctx->csg.resolved)
         return;
-    write_depth(ctx, path, &r, GL_LESS);
+    if (ctx->csg.merged)
+        stin__csg_merge_snap(ctx);
+    else if (usable(ctx, &r, 0))
+        write_depth(ctx, path, &r, GL_LESS);
 }
 
 /* The R32F texture of the resolved depth (GL4 lighting: core profiles
@@ -570,7 +608,7 @@ void stin__csg_init(stin_context *ctx)
                          "profile) or a GLSL 1.50 program (GL4 lighting)");
             return;
         }
-        c->depth_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_depth.frag",
+        c->depth_prog = stin__program_build(ctx, "gl4/screen.vert", "gl4/csg_depth.frag",
                                             NULL, 0, msg, sizeof msg);
         if (!c->depth_prog) {
             stin__formatf(why, sizeof why, "its depth program failed to build (%s)", msg);
@@ -583,6 +621,7 @@ void stin__csg_init(stin_context *ctx)
     if (gl4)
         make_depth_texture(ctx);
     stin__csg_cap_init(ctx);
+    stin__csg_merge_init(ctx);
 }
 
 void stin__csg_release(stin_context *ctx)
@@ -590,6 +629,7 @@ void stin__csg_release(stin_context *ctx)
     stin__csg_state *c = &ctx->csg;
     stin__csg_scs_release(ctx);
     stin__csg_cast_release(ctx);
+    stin__csg_merge_release(ctx);
     if (c->depth_prog)
         GL(ctx, DeleteProgram)(c->depth_prog);
     if (c->depth_tex)

@@ -20,8 +20,10 @@
  *      surface (the cap where it holds from the start). It writes that
  *      crossing's layer into an R8 target, read back;
  *   3. keep: each layer some pixel's surface lies on is peeled once more in
- *      the frame's own depth buffer and read back, and kept where nearer in
- *      goldfeather's result, which writes it into the frame's depth: its
+ *      the frame's own depth buffer and kept where the walk chose it and it
+ *      is nearer in goldfeather's result (csg_merge.c: merged on the GPU by
+ *      the walk's target, or read back), which writes it into the frame's
+ *      depth: its
  *      values are then those the faces drawn depth EQUAL afterwards meet
  *      (a texture's depth can differ from the frame buffer's in the last
  *      bit: Mesa rasterises into textures upside down).
@@ -88,7 +90,7 @@ static int make_programs(stin_context *ctx, char *msg, size_t size)
                                        0, msg, size);
     if (!s->peel_prog)
         return 0;
-    s->walk_prog = stin__program_build(ctx, "gl4/vdsm_screen.vert", "gl4/csg_interval.frag",
+    s->walk_prog = stin__program_build(ctx, "gl4/screen.vert", "gl4/csg_interval.frag",
                                        NULL, 0, msg, size);
     if (!s->walk_prog)
         return 0;
@@ -405,7 +407,9 @@ static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_produc
     stin__pass_state clear = stin__pass_defaults, ps = stin__pass_defaults;
     int cap_layer = (int)p->primitive_count * k, g;
     unsigned char used[STIN__CSG_INTERVAL_MAX_LAYER_INDEX + 1];
+    stin__csg_select select;
     size_t i;
+    select.texture = s->result;
     p->capped = 0;
     stin__memzero(used, sizeof used);
     for (i = 0; i < r->pixels; i++)
@@ -437,12 +441,11 @@ static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_produc
         GL(ctx, ClearDepth)(1.0);
         GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
         peel_draw(ctx, d, g % k && g != cap_layer ? g - 1 : -1, &ps);
-        stin__csg_read_depth(ctx, r, r->candidate);
-        for (i = 0; i < r->pixels; i++)
-            if (r->stencil[i] == g + 1 && r->candidate[i] < r->result[i]) {
-                r->result[i] = r->candidate[i];
-                p->capped |= g == cap_layer;
-            }
+        select.id = g + 1;
+        if (stin__csg_candidate_open(ctx, r) &&
+            stin__csg_candidate_take(ctx, NULL, r, &select, g == cap_layer))
+            p->capped |= g == cap_layer;
+        GL(ctx, UseProgram)(s->peel_prog); /* the GPU's merge took the program */
     }
     GL(ctx, Uniform1f)(s->peel_tolerance, 0.0f);
     stin__bind_unit(ctx, previous_unit(ctx), GL_TEXTURE_2D_ARRAY, 0);

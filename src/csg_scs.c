@@ -16,15 +16,18 @@
  *   3. clip: a pixel survives where the depth lies in front of every plain
  *      primitive's back face, counted in the stencil 255 primitives a batch
  *      (no counter overflows), each batch read back.
- * The surviving depth (read back once a term) is kept per pixel where
- * nearer, in goldfeather's result, which writes it into the frame's depth.
+ * The surviving depth is kept per pixel where nearer, in goldfeather's
+ * result (csg_merge.c: on the GPU, or read back once a term), which writes
+ * it into the frame's depth.
  * Faces that coincide with the depth (within 4 depth units) count as in
  * front of it: a subtracted box sharing a face's plane takes it away, one
  * touching it from outside does not, an intersected one ending there
  * leaves nothing (the exact reference's rule for crossings at one
  * distance). Passes a term: plain + complemented (the sample) + 3 x
- * complemented x runs + plain (the clip); read-backs: the sample, the
- * depth, one stencil each 255 plain primitives. */
+ * complemented x runs + plain (the clip); read-backs on the CPU: the
+ * sample, the depth, one stencil each 255 plain primitives; on the GPU a
+ * wait for the sample's threshold queries and none else (the early stop's
+ * queries aside). */
 #include "internal.h"
 
 #ifndef OFFSET_UNITS
@@ -127,9 +130,8 @@ static void intersect(stin_context *ctx, const stin__path *path, const stin__csg
 static unsigned sample_complexity(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                                   const stin__csg_product *p, const stin__csg_term *t)
 {
-    unsigned most = 0, any = 0;
+    unsigned any = 0, most;
     uint32_t li;
-    size_t i;
     for (li = 0; li < t->count; li++) {
         uint32_t lit = ctx->csg.literals[t->first + li];
         const stin__draw *d = primitive_of(ctx, p, lit);
@@ -138,13 +140,11 @@ static unsigned sample_complexity(stin_context *ctx, const stin__path *path, sti
             continue;
         stencil(&ps, GL_ALWAYS, 0, GL_KEEP, GL_KEEP, GL_INCR);
         draw(ctx, path, d, &ps);
-        any = 1;
+        any++; /* convex: each adds one at most */
     }
     if (!any)
         return 0;
-    stin__csg_read_stencil(ctx, r);
-    for (i = 0; i < r->pixels; i++)
-        most = r->stencil[i] > most ? r->stencil[i] : most;
+    most = stin__csg_stencil_max(ctx, path, r, any < 255u ? any : 255u);
     stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
     return most;
 }
@@ -227,7 +227,6 @@ static void clip(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
 {
     uint32_t batch = ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_BATCH ? 0xffffffffu : BATCH;
     uint32_t li = 0, n, lit;
-    size_t i;
     while (li < t->count) {
         stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
         for (n = 0; li < t->count && n < batch; li++) {
@@ -246,27 +245,21 @@ static void clip(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
         }
         if (!n)
             break;
-        stin__csg_read_stencil(ctx, r);
-        for (i = 0; i < r->pixels; i++)
-            if (r->stencil[i] != (unsigned char)(n > 255u ? 255u : n))
-                r->candidate[i] = 2.0f;
+        stin__csg_candidate_keep_where(ctx, path, r, 0xffu, n > 255u ? 255u : n);
     }
 }
 
+/* The term's surface kept where nearer (csg_merge.c: a depth of 0, where
+ * no plain primitive drew, is none). */
 static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                  const stin__csg_product *p, const stin__csg_term *t)
 {
-    size_t i;
     intersect(ctx, path, p, t);
     subtract(ctx, path, r, p, t);
-    stin__csg_read_depth(ctx, r, r->candidate);
-    for (i = 0; i < r->pixels; i++)
-        if (r->candidate[i] <= 0.0f) /* no plain primitive drew here */
-            r->candidate[i] = 2.0f;
+    if (!stin__csg_candidate_open(ctx, r))
+        return;
     clip(ctx, path, r, p, t);
-    for (i = 0; i < r->pixels; i++)
-        if (r->candidate[i] < r->result[i])
-            r->result[i] = r->candidate[i];
+    (void)stin__csg_candidate_take(ctx, path, r, NULL, 0);
 }
 
 int stin__csg_scs_product(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,

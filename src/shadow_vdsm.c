@@ -154,7 +154,7 @@ static stin_result vdsm_init(stin_context *ctx)
     v->position_prog = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL, "gl4/vdsm_position.frag",
                              "o_normal", 1, msg, sizeof msg);
     if (v->position_prog)
-        v->facing_prog = stin__vdsm_program(ctx, "gl4/vdsm_screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
+        v->facing_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
                                0, msg, sizeof msg);
     if (v->facing_prog)
         v->polygon_prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag", NULL,

@@ -188,11 +188,12 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     stin__pass_state ps = stin__pass_defaults, saved;
     GLuint resolved;
     float csg[4] = {0.0f, 0.0f, 1.0f, 1.0f / 2097152.0f};
+    int origin[2];
     uint32_t i;
     (void)path;
     if (!v->ready || !ctx->csg.face_count)
         return;
-    resolved = stin__csg_depth_texture(ctx);
+    resolved = stin__csg_depth_texture(ctx, origin);
     if (!resolved)
         return;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
@@ -202,8 +203,8 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     stin__pass_apply(ctx, &ps);
     use_position_program(ctx);
     GL(ctx, Uniform1i)(v->pos_csg_depth, 0);
-    csg[0] = (float)vp[0];
-    csg[1] = (float)vp[1];
+    csg[0] = (float)origin[0];
+    csg[1] = (float)origin[1];
     GL(ctx, Uniform4fv)(v->pos_csg, 1, csg);
     for (i = 0; i < ctx->csg.face_count; i++)
         if (stin__csg_face_begin(ctx, &ctx->csg.faces[i], &saved)) {

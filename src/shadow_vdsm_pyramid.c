@@ -134,7 +134,7 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
         p->receiver_prog = stin__vdsm_program(ctx, "gl4/vdsm_receiver.vert", NULL,
                                               "gl4/vdsm_receiver.frag", NULL, 0, msg, sizeof msg);
     if (p->receiver_prog)
-        p->reduce_prog = stin__vdsm_program(ctx, "gl4/vdsm_screen.vert", NULL,
+        p->reduce_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL,
                                             "gl4/vdsm_reduce.frag", NULL, 0, msg, sizeof msg);
     if (!p->reduce_prog) {
         stin__vdsm_pyramid_release(ctx);

@@ -135,7 +135,7 @@ void stin__peel_init(stin_context *ctx)
                   s->dual ? "dual_" : "");
     msg[0] = '\0';
     /* GL4 shares vdsm's full-viewport quad shader */
-    s->program = stin__program_build(ctx, gl4 ? "gl4/vdsm_screen.vert" : "gl2/peel_composite.vert",
+    s->program = stin__program_build(ctx, gl4 ? "gl4/screen.vert" : "gl2/screen.vert",
                                      frag, NULL, 0, msg, sizeof msg);
     if (!s->program || (s->dual && !stin__dual_init(ctx, msg, sizeof msg))) {
         /* dual-peel a step down to depth-peel (the lit programs built again

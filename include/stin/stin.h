@@ -900,6 +900,10 @@ typedef struct stin_desc {
  * of batches of 255: wrong (nothing drawn) where a term intersects more than
  * 255; a test that it shows the batching matters */
 #define STIN_DEBUG_CSG_NO_BATCH 131072u
+/* CSG: resolve the frame's products on the CPU (read-backs into the
+ * staging, as GL1 contexts do) where the GPU resolve would run (the same
+ * depth, bit for bit; a test and bench baseline) */
+#define STIN_DEBUG_CSG_READBACK 67108864u
 /* CSG products cast no shadow into the lights' maps (as before they did):
  * a test that casting matters */
 #define STIN_DEBUG_CSG_NO_CAST 8388608u
@@ -1473,6 +1477,11 @@ typedef struct stin_frame_stats {
      * shader extruded from the mesh's own buffers; their triangles count in
      * shadow_volume_triangles only with STIN_DEBUG_VOLUME_COUNT */
     uint32_t shadow_volume_gpu_casters;
+    /* CSG: 1 when the frame's resolve kept its candidates and result on the
+     * GPU (no read-backs), 0 when it read them back; and that resolve's GL
+     * memory (two depth textures at the viewport's window size) */
+    uint32_t csg_gpu_resolves;
+    uint64_t csg_gpu_bytes;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -263,6 +263,7 @@ static void add_mesh(const float *pos, uint32_t nv, const uint32_t *idx, uint32_
 /* A context on the fake profile with the tetrahedron and the quad; small
  * CSG capacities (8 primitives, 4 terms, 8 literals) unless `defaults`. */
 static stin_technique forced_csg = STIN_TECH_NONE; /* make_context's desc.techniques */
+static uint32_t debug_flags_;                       /* and desc.debug_flags */
 
 static void make_context(fake_gl_profile_id id, uint64_t caps_mask, int defaults)
 {
@@ -277,6 +278,7 @@ static void make_context(fake_gl_profile_id id, uint64_t caps_mask, int defaults
     d.max_triangles = 64;
     d.caps_mask = caps_mask;
     d.techniques[STIN_FEATURE_CSG] = forced_csg;
+    d.debug_flags = debug_flags_;
     if (!defaults) {
         d.max_csg_primitives = 8;
         d.max_csg_terms = 4;
@@ -507,11 +509,12 @@ static void one_frame(void)
 /* A frame with a product on the fake GL: GL 1.1 resolves it (depth read,
  * written once by glDrawPixels, faces drawn with the passes) by scs (two
  * convex tetrahedra; GL 1.1 has no occlusion queries); a core profile
- * resolves it by scs too, or by interval where forced (its layers and walk
- * made at the first frame with a product), and writes it through its
- * texture instead; without a
- * stencil buffer the
- * choice is csg-off and the frames say once that products are not drawn. */
+ * resolves it by scs too on the GPU (no read-back: the faces snapped onto
+ * the result), with STIN_DEBUG_CSG_READBACK by read-backs written through
+ * the R32F texture, or by interval where forced (its layers and walk made at
+ * the first frame with a product; its walk read back); without a stencil
+ * buffer the choice is csg-off and the frames say once that products are
+ * not drawn. */
 static void test_frames_with_a_product(void **state)
 {
     (void)state;
@@ -530,6 +533,21 @@ static void test_frames_with_a_product(void **state)
     one_frame();
     assert_int_equal(ctx->stats.csg_scs_products, 1);
     assert_true(ctx->csg.resolved);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_true(ctx->stats.csg_gpu_bytes > 0);
+    /* one: the subtraction's stencil sample (the fake names no queries, so
+     * its thresholds are read back); no depth, no clip count */
+    assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 1);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 0);
+
+    debug_flags_ = STIN_DEBUG_CSG_READBACK;
+    recreate(FAKE_GL33_CORE, 0);
+    debug_flags_ = 0;
+    one_frame();
+    assert_int_equal(ctx->stats.csg_scs_products, 1);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 0);
+    assert_true(fake_gl.calls[STIN_GLFN_ReadPixels] >= 3); /* sample, depth, clip count */
+    assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 1);
 
     forced_csg = STIN_TECH_CSG_INTERVAL; /* not the default: slower than scs on llvmpipe */
     recreate(FAKE_GL33_CORE, 0);
@@ -542,7 +560,8 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(ctx->stats.csg_scs_products, 0);
     assert_true(ctx->csg.resolved);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 0);
-    assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 1);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 1); /* the walk */
+    assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 0);
 
     recreate(FAKE_GL11, STIN_CAP_BIT(STIN_CAP_STENCIL));
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_OFF);

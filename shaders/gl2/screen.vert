@@ -1,6 +1,7 @@
 #version 110
 // SPDX-License-Identifier: MIT
-// depth-peel's composite: a full-viewport quad in clip space.
+// A full-viewport quad in clip space: depth-peel's composite and the GPU
+// CSG resolve's merges.
 attribute vec4 a_position;
 
 void main()

@@ -1,0 +1,397 @@
+/* SPDX-License-Identifier: MIT */
+/* Where a CSG resolve keeps its candidates and its result. On the CPU (GL1
+ * tiers, light maps' resolves, STIN_DEBUG_CSG_READBACK) the resolve runs in
+ * the frame's own buffers, and every candidate layer's depth and each
+ * parity count are read back into the staging and merged there. Each
+ * read-back drains the GPU's pipeline, which made the resolve many times
+ * slower than OpenCSG on a GPU (docs/benchmarks.md). On the GPU (the
+ * frame's resolve on GLSL tiers with FBOs and packed depth-stencil
+ * textures) nothing is read back:
+ *   - the resolve runs in a work FBO (a depth-stencil texture) beside the
+ *     frame, whose buffers it leaves alone;
+ *   - a candidate's losing pixels (stencil & mask != want) are pushed to
+ *     the far plane by a stencil-tested quad;
+ *   - the candidate is min-merged into the result (a depth texture of a
+ *     second FBO) by a quad writing the work texture's texel as
+ *     gl_FragDepth, depth LESS, dropping 0 (scs's term where no plain
+ *     primitive drew) and the far plane;
+ *   - a stencil's largest value comes from occlusion queries of quads at
+ *     thresholds (one wait, not a transfer);
+ *   - at the end the products' faces are drawn into the frame, depth LESS,
+ *     each fragment kept only within SNAP_BAND of the result: the frame's
+ *     depth gets the faces' own rasterised depth, which the faces' depth
+ *     EQUAL meets later bit for bit. The result itself can be a step or two
+ *     off that: the work texture is rasterised in another buffer, and a
+ *     24-bit depth read through a sampler and written back through
+ *     gl_FragDepth can move by a step (Mesa's llvmpipe does; measured
+ *     +1 and +2 on csg.json). */
+#include "internal.h"
+
+#define GL_DEPTH32F_STENCIL8 0x8CAD
+#define GL_FLOAT_32_UNSIGNED_INT_24_8_REV 0x8DAD
+/* 8 steps of a 24-bit depth buffer (the vdsm position buffer's tolerance
+ * for the same result): far above the result's error, far below what
+ * separates two faces that are not one plane. */
+#define SNAP_BAND (1.0f / 2097152.0f)
+
+static const unsigned thresholds[STIN__CSG_MERGE_THRESHOLDS] = {
+    1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 32, 64, 128, 255};
+
+/* ---- set-up ------------------------------------------------------------- */
+static int glsl_tier(const stin_context *ctx, int *gl4)
+{
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique;
+    *gl4 = t == STIN_TECH_LIGHTING_GLSL150;
+    return t == STIN_TECH_LIGHTING_GLSL150 || t == STIN_TECH_LIGHTING_GLSL110;
+}
+
+static GLuint build(stin_context *ctx, int gl4, const char *vert, const char *frag, char *msg,
+                    size_t size)
+{
+    char v[40], f[40];
+    stin__formatf(v, sizeof v, "%s/%s", gl4 ? "gl4" : "gl2", vert);
+    stin__formatf(f, sizeof f, "%s/%s", gl4 ? "gl4" : "gl2", frag);
+    return stin__program_build(ctx, v, f, NULL, 0, msg, size);
+}
+
+void stin__csg_merge_init(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    const uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
+                          STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
+    char msg[160];
+    int gl4;
+    stin__memzero(m, sizeof *m);
+    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF ||
+        !glsl_tier(ctx, &gl4) || (ctx->caps.present & need) != need)
+        return; /* the CPU resolve */
+    m->merge_prog = build(ctx, gl4, "screen.vert", "csg_merge.frag", msg, sizeof msg);
+    if (m->merge_prog)
+        m->kill_prog = build(ctx, gl4, "screen.vert", "csg_kill.frag", msg, sizeof msg);
+    if (m->kill_prog) /* the volume program's vertices: the lit passes' depth */
+        m->snap_prog = build(ctx, gl4, "volume.vert", "csg_snap.frag", msg, sizeof msg);
+    if (!m->snap_prog) {
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                  "CSG: the GPU resolve's programs failed to build (%s); products resolve "
+                  "with read-backs", msg);
+        stin__csg_merge_release(ctx);
+        return;
+    }
+    m->u_depth = GL(ctx, GetUniformLocation)(m->merge_prog, "u_depth");
+    m->u_select = GL(ctx, GetUniformLocation)(m->merge_prog, "u_select");
+    m->u_params = GL(ctx, GetUniformLocation)(m->merge_prog, "u_params");
+    m->snap_model = GL(ctx, GetUniformLocation)(m->snap_prog, "u_model");
+    m->snap_view_proj = GL(ctx, GetUniformLocation)(m->snap_prog, "u_view_proj");
+    m->snap_result = GL(ctx, GetUniformLocation)(m->snap_prog, "u_result");
+    m->snap_params = GL(ctx, GetUniformLocation)(m->snap_prog, "u_params");
+    stin__displace_locate(ctx, m->snap_prog, 0, &m->snap_displace);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
+        GL(ctx, GenQueries)(STIN__CSG_MERGE_THRESHOLDS + 1, m->queries);
+}
+
+void stin__csg_merge_release(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    GLuint programs[3];
+    int i;
+    programs[0] = m->merge_prog;
+    programs[1] = m->kill_prog;
+    programs[2] = m->snap_prog;
+    for (i = 0; i < 3; i++)
+        if (programs[i])
+            GL(ctx, DeleteProgram)(programs[i]);
+    if (m->fbo[0])
+        GL(ctx, DeleteFramebuffers)(2, m->fbo);
+    if (m->texture[0])
+        GL(ctx, DeleteTextures)(2, m->texture);
+    if (m->queries[0])
+        GL(ctx, DeleteQueries)(STIN__CSG_MERGE_THRESHOLDS + 1, m->queries);
+    stin__memzero(m, sizeof *m);
+}
+
+int stin__csg_merge_ready(const stin_context *ctx)
+{
+    return ctx->csg.merge.snap_prog && !(ctx->desc.debug_flags & STIN_DEBUG_CSG_READBACK);
+}
+
+/* The frame's depth precision with a stencil beside it. */
+static GLenum depth_format(const stin_context *ctx, GLenum *type)
+{
+    int wide = ctx->target.depth_bits > 24;
+    *type = wide ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV : GL_UNSIGNED_INT_24_8;
+    return wide ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+}
+
+/* Work and result at the viewport's window size (x + w by y + h: texel =
+ * window pixel), grown, never shrunk; 0 when a framebuffer is incomplete
+ * (logged once). */
+static int ensure_targets(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    const int *vp = ctx->frame.viewport;
+    int w = vp[0] + vp[2], h = vp[1] + vp[3], i;
+    GLenum type, format = depth_format(ctx, &type), status = GL_FRAMEBUFFER_COMPLETE;
+    if (w <= m->width && h <= m->height && format == m->format)
+        return 1;
+    if (!m->fbo[0]) {
+        GL(ctx, GenFramebuffers)(2, m->fbo);
+        GL(ctx, GenTextures)(2, m->texture);
+    }
+    w = w > m->width ? w : m->width;
+    h = h > m->height ? h : m->height;
+    for (i = 0; i < 2; i++) {
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[i]);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, (GLint)format, w, h, 0, GL_DEPTH_STENCIL, type,
+                            NULL);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[i]);
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                      m->texture[i], 0);
+        if (i == STIN__CSG_MERGE_WORK) /* its stencil counts (GL 2.x names both halves) */
+            GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                                          m->texture[i], 0);
+        GL(ctx, DrawBuffer)(GL_NONE); /* depth only: GL 2.x FBOs are incomplete otherwise */
+        GL(ctx, ReadBuffer)(GL_NONE);
+        if (status == GL_FRAMEBUFFER_COMPLETE)
+            status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    }
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    m->width = w;
+    m->height = h;
+    m->format = format;
+    m->bytes = (size_t)w * (size_t)h * (format == GL_DEPTH24_STENCIL8 ? 4u : 8u) * 2u;
+    if (status == GL_FRAMEBUFFER_COMPLETE)
+        return 1;
+    if (!m->said_failed)
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                  "CSG: the GPU resolve's framebuffers are incomplete (0x%x); products "
+                  "resolve with read-backs", (unsigned)status);
+    m->said_failed = 1;
+    m->width = m->height = 0; /* tried again next frame */
+    return 0;
+}
+
+/* ---- quads -------------------------------------------------------------- */
+/* The work texture's depth into the bound (result) framebuffer, depth
+ * LESS, through the merge program; select: interval's layer. */
+static void merge_quad(stin_context *ctx, const stin__csg_select *select)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__pass_state ps = stin__pass_defaults;
+    float params[4];
+    ps.depth_test = 1;
+    ps.depth_func = GL_LESS;
+    ps.color_write = 0;
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, UseProgram)(m->merge_prog);
+    ctx->glsl_surface.current = NULL;
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[STIN__CSG_MERGE_WORK]);
+    GL(ctx, Uniform1i)(m->u_depth, 0);
+    params[0] = select ? (float)select->id : -1.0f;
+    params[1] = 0.0f;
+    params[2] = 1.0f / (float)m->width;
+    params[3] = 1.0f / (float)m->height;
+    GL(ctx, Uniform4fv)(m->u_params, 1, params);
+    if (select) {
+        stin__bind_unit(ctx, 1, GL_TEXTURE_2D, select->texture);
+        GL(ctx, Uniform1i)(m->u_select, 1);
+    }
+    stin__peel_screen_quad(ctx);
+    if (select)
+        stin__bind_unit(ctx, 1, GL_TEXTURE_2D, 0);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    ctx->stats.passes++;
+}
+
+/* A quad through the kill program with pass state ps. */
+static void kill_quad(stin_context *ctx, const stin__pass_state *ps)
+{
+    stin__pass_apply(ctx, ps);
+    GL(ctx, UseProgram)(ctx->csg.merge.kill_prog);
+    ctx->glsl_surface.current = NULL;
+    stin__peel_screen_quad(ctx);
+}
+
+static void resume(stin_context *ctx, const stin__path *path)
+{
+    if (path)
+        path->geometry_begin(ctx);
+}
+
+int stin__csg_merge_begin(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
+        return 0;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[STIN__CSG_MERGE_RESULT]);
+    GL(ctx, ClearDepth)(1.0);
+    stin__csg_clear(ctx, GL_DEPTH_BUFFER_BIT);
+    ctx->csg.resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+    ctx->stats.csg_gpu_resolves = 1;
+    ctx->stats.csg_gpu_bytes = m->bytes;
+    return 1;
+}
+
+GLuint stin__csg_merge_result(stin_context *ctx)
+{
+    return ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT];
+}
+
+void stin__csg_merge_snap(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    float params[4];
+    uint32_t i;
+    GL(ctx, UseProgram)(m->snap_prog);
+    ctx->glsl_surface.current = NULL;
+    GL(ctx, UniformMatrix4fv)(m->snap_view_proj, 1, GL_FALSE, ctx->view_proj);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[STIN__CSG_MERGE_RESULT]);
+    GL(ctx, Uniform1i)(m->snap_result, 0);
+    params[0] = SNAP_BAND;
+    params[1] = 0.0f;
+    params[2] = 1.0f / (float)m->width;
+    params[3] = 1.0f / (float)m->height;
+    GL(ctx, Uniform4fv)(m->snap_params, 1, params);
+    ctx->bound_mesh = 0xffffffffu;
+    for (i = 0; i < ctx->csg.face_count; i++) {
+        const stin__draw *d = &ctx->csg.faces[i];
+        stin__pass_state ps = stin__pass_defaults;
+        ps.depth_test = 1;
+        ps.depth_func = GL_LESS; /* under what the buffer holds nearer */
+        ps.color_write = 0;
+        ps.cull = 1;
+        ps.cull_face = stin__csg_face_hidden(d);
+        stin__pass_apply(ctx, &ps);
+        stin__glsl_submit_geometry(ctx, m->snap_model, &m->snap_displace, d);
+        ctx->stats.passes++;
+    }
+    ctx->bound_mesh = 0xffffffffu;
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+}
+
+/* ---- the steps ---------------------------------------------------------- */
+int stin__csg_candidate_open(stin_context *ctx, stin__csg_pixels *r)
+{
+    size_t i;
+    int any = 0;
+    if (r->gpu)
+        return 1;
+    stin__csg_read_depth(ctx, r, r->candidate);
+    for (i = 0; i < r->pixels; i++)
+        if (r->candidate[i] <= 0.0f || r->candidate[i] >= r->result[i])
+            r->candidate[i] = 2.0f; /* none here (scs's 0), or not nearer */
+        else
+            any = 1;
+    return any;
+}
+
+void stin__csg_candidate_keep_where(stin_context *ctx, const stin__path *path,
+                                    stin__csg_pixels *r, unsigned mask, unsigned want)
+{
+    size_t i;
+    if (r->gpu) {
+        stin__pass_state ps = stin__pass_defaults;
+        ps.depth_test = 1;
+        ps.depth_func = GL_ALWAYS; /* the kill program writes the far plane */
+        ps.color_write = 0;
+        ps.stencil_test = 1;
+        ps.front.func = GL_NOTEQUAL;
+        ps.front.ref = (GLint)want;
+        ps.front.mask = mask;
+        ps.front.fail = ps.front.zfail = ps.front.zpass = GL_KEEP;
+        ps.back = ps.front;
+        kill_quad(ctx, &ps);
+        ctx->stats.passes++;
+        resume(ctx, path);
+        return;
+    }
+    stin__csg_read_stencil(ctx, r);
+    for (i = 0; i < r->pixels; i++)
+        if ((r->stencil[i] & mask) != want)
+            r->candidate[i] = 2.0f;
+}
+
+int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
+                             const stin__csg_select *select, int want_kept)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    GLuint kept = 1, q = m->queries[STIN__CSG_MERGE_THRESHOLDS];
+    int counted = want_kept && m->queries[0];
+    size_t i;
+    if (!r->gpu) {
+        kept = 0;
+        for (i = 0; i < r->pixels; i++)
+            if ((!select || r->stencil[i] == (unsigned char)select->id) &&
+                r->candidate[i] < r->result[i]) {
+                r->result[i] = r->candidate[i];
+                kept = 1;
+            }
+        return (int)kept;
+    }
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[STIN__CSG_MERGE_RESULT]);
+    if (counted)
+        GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, q);
+    merge_quad(ctx, select);
+    if (counted) {
+        GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
+        GL(ctx, GetQueryObjectuiv)(q, GL_QUERY_RESULT, &kept);
+    }
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+    resume(ctx, path);
+    return kept != 0;
+}
+
+/* The bound on a stencil's largest value from which thresholds' quads
+ * passed (drawn: how many were). */
+static unsigned bound_of(const GLuint *passed, int drawn, unsigned limit)
+{
+    int i = drawn - 1;
+    unsigned most;
+    while (i >= 0 && !passed[i])
+        i--;
+    if (i < 0)
+        return 0;
+    most = i + 1 < STIN__CSG_MERGE_THRESHOLDS ? thresholds[i + 1] - 1u : 255u;
+    return most < limit ? most : limit;
+}
+
+unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
+                               unsigned limit)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    unsigned most = 0;
+    size_t i;
+    if (r->gpu && m->queries[0]) {
+        GLuint passed[STIN__CSG_MERGE_THRESHOLDS];
+        stin__pass_state ps = stin__pass_defaults;
+        int n = 0;
+        ps.depth_write = 0;
+        ps.color_write = 0;
+        ps.stencil_test = 1;
+        ps.front.func = GL_LEQUAL; /* passes where the threshold <= the stencil */
+        ps.front.mask = 0xffu;
+        ps.front.fail = ps.front.zfail = ps.front.zpass = GL_KEEP;
+        while (n < STIN__CSG_MERGE_THRESHOLDS && thresholds[n] <= limit) {
+            ps.front.ref = (GLint)thresholds[n];
+            ps.back = ps.front;
+            GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, m->queries[n]);
+            kill_quad(ctx, &ps);
+            GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
+            n++;
+        }
+        for (i = 0; i < (size_t)n; i++) /* in order: the first read waits, the rest follow */
+            GL(ctx, GetQueryObjectuiv)(m->queries[i], GL_QUERY_RESULT, &passed[i]);
+        ctx->stats.passes++;
+        resume(ctx, path);
+        return bound_of(passed, n, limit);
+    }
+    stin__csg_read_stencil(ctx, r);
+    for (i = 0; i < r->pixels; i++)
+        most = r->stencil[i] > most ? r->stencil[i] : most;
+    return most < limit ? most : limit;
+}
