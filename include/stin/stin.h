@@ -1288,13 +1288,15 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * before the ambient pass, in the frame's own depth and stencil buffers:
  * per term, per literal, per layer of that primitive's front faces (back
  * faces where complemented), the layer is picked by a stencil counter (the
- * k-th fragment of a pixel, in any order; the first layer's count, read
- * back, says how many layers there are: at most 255, more is logged once),
+ * k-th fragment of a pixel, in any order; the first layer's count says
+ * how many layers there are: at most 255, more is logged once; a convex
+ * mesh's faces are one layer, not counted),
  * then the term's other primitives invert a stencil bit each where their
  * faces lie in front of it, eight (the stencil's bits) a batch, so no
  * counter overflows whatever the primitive count; a pixel survives where
  * every bit says inside a plain and outside a complemented primitive, and
- * the nearest survivor per pixel is kept on the CPU. Faces that coincide
+ * the nearest survivor per pixel is kept (on the GPU or the CPU: see "The
+ * GPU resolve" below). Faces that coincide
  * with the candidate (within 4 depth units) count as crossed before it: a
  * subtracted box sharing a face's plane takes it away, an intersected one
  * keeps it, two touching faces cancel (the exact reference's rule for
@@ -1328,8 +1330,9 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * product's volume would need its resolved silhouette, vdsm's shadow
  * polygons its resolved triangles. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
- * per literal of each term, each layer reading depth back (and the stencil
- * once per batch), so a resolve costs read-backs more than fill. Only the
+ * per literal of each term; on the CPU each layer reads depth back (and
+ * the stencil once per batch), so that resolve costs read-backs more than
+ * fill. Only the
  * term's literals whose window rectangles (mesh bounds through transform,
  * view and projection; the whole viewport where a corner lies behind the
  * eye) meet the candidate's get a parity pass: one off it is outside (what
@@ -1337,12 +1340,34 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * a term of 1000 primitives costs passes by its overlaps, not 1000^2. Memory:
  * the CPU copies use the block's texture staging or mesh-creation scratch,
  * whichever is larger (both idle during a frame): 9 bytes a pixel of the
- * viewport; a viewport that needs more is logged once and its products are
- * not drawn (raise desc.max_texture_bytes). GL state: the stencil buffer is
- * cleared to 0 after the resolve (its contents are the frame's anyway, see
- * GL STATE); the caller's pixel pack state (alignment, row length, skips,
- * a bound pixel pack buffer) is set aside around the read-backs and given
- * back, unpack state as for textures.
+ * viewport (the GPU resolve: 1); a viewport that needs more is logged once
+ * and its products are not drawn (raise desc.max_texture_bytes). GL state:
+ * the CPU resolve clears the stencil buffer to 0 after it (its contents are
+ * the frame's anyway, see GL STATE); the caller's pixel pack state
+ * (alignment, row length, skips, a bound pixel pack buffer) is set aside
+ * around the read-backs and given back, unpack state as for textures.
+ * The GPU resolve: on the GLSL tiers where the context has FBOs and packed
+ * depth-stencil textures, the frame's resolve reads nothing back (under
+ * every CSG technique; GL1 tiers, the lights' map resolves and
+ * STIN_DEBUG_CSG_READBACK read back as above). It runs in a work FBO of
+ * stin's (a depth-stencil texture at the viewport's window size, x + w by
+ * y + h, in the frame's depth precision) and leaves the frame's depth and
+ * stencil alone until its end: a candidate's losing pixels go to the far
+ * plane by a stencil-tested quad; the candidate is min-merged into a result
+ * texture (a second FBO) by a quad writing its depth as gl_FragDepth; a
+ * stencil's largest value (the layer count of a non-convex primitive, scs's
+ * sample) comes from occlusion queries of quads at thresholds 1-16, 32, 64,
+ * 128, 255 (one wait, exact up to 16, a bound above; where there are no
+ * queries it is read back); the products' faces are then drawn into the
+ * frame, depth LESS, each fragment kept where it lies within 2^-21 of the
+ * result, so the frame's depth holds the faces' own depth (the result,
+ * rasterised in another buffer and carried through a sampler, can be a
+ * step off). Its image equals the CPU resolve's but on pixels an edge
+ * passes exactly through (tests/image/csg_test.c: at most 2 a case).
+ * Programs: three, made at stin_create; GL memory: two textures, 8 bytes a
+ * pixel for 24-bit depth (16 for 32-bit float), made at the first frame
+ * with a product, grown, never shrunk, freed at stin_destroy
+ * (stin_frame_stats.csg_gpu_resolves, csg_gpu_bytes).
  * The near and far planes: where the near plane cuts a primitive of a term
  * (its bounding box), that primitive has lost the faces in front of the
  * plane, so the term's parity is counted from behind instead (faces behind

@@ -249,6 +249,8 @@ static const bench_option table[] = {
     SETUPS(SEC_DEEP, "--deep-setups", "2", "fresh shadows-off context per set-up"),
 
     FRAMES(SEC_CSG, "--csg-frames", "10", "2", "timed frames per side and row"),
+    {SEC_CSG, "--csg-readback", NULL, NULL, NULL, set_flag, F(csg_readback), 0, 0, 0,
+     "stin resolves with read-backs (STIN_DEBUG_CSG_READBACK), as before the GPU resolve"},
     {SEC_PEEL, "--peel-scene", "FILE", "tests/scenes/peel/panes.json", NULL, set_text,
      F(sec[SEC_PEEL].scene), 0, 0, 0, "the panes (0, 2 and 4 of them over the floor)"},
     FRAMES(SEC_PEEL, "--peel-frames", "7", "1", PER_ROW),

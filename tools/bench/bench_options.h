@@ -36,6 +36,7 @@ typedef struct options {
     /* options of one section */
     int small_frames;       /* shadows: stin_end_frame alone at 64x36 */
     int cpu_volumes;        /* shadows: GL4's volumes built on the CPU */
+    int csg_readback;       /* csg: stin resolves with read-backs (STIN_DEBUG_CSG_READBACK) */
     int_list light_counts;  /* shadows */
     int_list map_sizes;     /* maps */
     int maps_no_fbo;        /* maps */

@@ -185,6 +185,8 @@ static int make_context(csg_bench *c, char *err, size_t err_size)
     d.get_proc_user = c->env->b.plat;
     d.log = log_errors;
     d.techniques[STIN_FEATURE_CSG] = method_technique[c->method];
+    if (c->env->o->csg_readback)
+        d.debug_flags |= STIN_DEBUG_CSG_READBACK;
     size = stin_memory_size(&d);
     c->block = malloc(size);
     if (!c->block || stin_create(&d, c->block, size, &c->ctx) != STIN_OK) {
@@ -239,8 +241,10 @@ int section_csg(bench_env *env, const scene *s, int *ran)
                               "libglew-dev)");
 #endif
     printf("\n## CSG (issue 12): stin against OpenCSG 1.5, %dx%d, %s, box minus n - 1 spheres "
-           "(24 x 16 facets), median of %d frames a side (ABBA, glFinish per frame)\n",
-           b->width, b->height, env->o->platform, frames);
+           "(24 x 16 facets), median of %d frames a side (ABBA, glFinish per frame), stin's "
+           "resolve %s\n",
+           b->width, b->height, env->o->platform, frames,
+           env->o->csg_readback ? "with read-backs" : "on the GPU where the tier allows");
     if (!c.opencsg)
         printf("\nOpenCSG does not run here: %s; stin's rows against themselves\n", why);
     printf("\n| product | n | stin | passes | stin ms | OpenCSG | OpenCSG ms | stin / OpenCSG "
