@@ -287,7 +287,7 @@ GLuint stin__csg_merge_result(struct stin_context *ctx);
 /* The side of face draw d its pass culls (csg.c). */
 GLenum stin__csg_face_hidden(const stin__draw *d);
 
-/* SCS (csg_scs.c): product p into r->result when the CSG technique is scs
+/* SCS (csg_scs.c): product p into r's result (csg_merge.c) when the CSG technique is scs
  * and every primitive of p is convex, returning 1; else 0 (logged once per
  * context: goldfeather resolves it). Inside the resolve's geometry_begin. */
 int stin__csg_scs_product(struct stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
@@ -296,7 +296,7 @@ int stin__csg_scs_product(struct stin_context *ctx, const stin__path *path, stin
 void stin__csg_scs_init(struct stin_context *ctx);
 void stin__csg_scs_release(struct stin_context *ctx);
 
-/* Interval (csg_interval.c): product p into r->result when the CSG
+/* Interval (csg_interval.c): product p into r's result (csg_merge.c) when the CSG
  * technique is interval and p fits its limits, returning 1; else 0 (logged
  * once per context: scs or goldfeather resolves it). Inside the resolve's
  * geometry_begin, which it leaves as it found it. */

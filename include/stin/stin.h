@@ -1400,12 +1400,14 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * then a pixel survives where the depth lies in front of every plain
  * primitive's back face, counted in the stencil 255 primitives a batch
  * (no counter overflows; STIN_DEBUG_CSG_NO_BATCH shows why), and the
- * nearest survivor per pixel is kept on the CPU as goldfeather keeps it.
+ * nearest survivor per pixel is kept as goldfeather keeps it (on the GPU
+ * or the CPU).
  * Faces within 4 depth units of the depth count as in front of it (the
  * coplanar rule above). Passes a term: plain + complemented + 3 x
- * complemented x runs + plain; read-backs: 2 + one each 255 plain
- * primitives, against goldfeather's per literal and layer, so it is the
- * faster from a few primitives up (stin-bench --csg on llvmpipe, a box
+ * complemented x runs + plain; read-backs on the CPU: 2 + one each 255
+ * plain primitives, against goldfeather's per literal and layer (the GPU
+ * resolve: one wait for the sample's queries), so it is the faster from a
+ * few primitives up (stin-bench --csg on llvmpipe with read-backs, a box
  * minus 7 to 127 spheres: 0.39-0.84 of goldfeather's frame time; at 2
  * primitives the two are within the noise; docs/benchmarks.md). More than
  * 255 complemented
@@ -1434,13 +1436,16 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * coplanar rule above), and the first crossing where the normal form turns
  * true is the surface (the near-plane cap, as goldfeather's, where it is
  * true from the start). The walk writes each pixel's surface layer; each
- * layer some pixel chose is peeled once more in the frame's own depth
- * buffer and read back, so the depth kept (per pixel where nearer, in
- * goldfeather's result: the same write-back, face passes, GL state and
- * staging) is the one the face draws' depth EQUAL meets. Passes a product:
- * n x (k + 1) peels (the last of each primitive in an occlusion query: a
- * fragment past layer k is an overflow) + the cap + 1 walk + 1 peel and
- * read-back per layer chosen, against goldfeather's per literal and layer.
+ * layer some pixel chose is peeled once more in the resolve's depth
+ * buffer (the frame's own on the CPU, read back, so the depth kept is the
+ * one the face draws' depth EQUAL meets; the GPU resolve's work buffer,
+ * merged where the walk chose it, its faces snapped as goldfeather's) and
+ * kept per pixel where nearer in goldfeather's result (the same
+ * write-back, face passes, GL state and staging). The walk is read back
+ * in both. Passes a product: n x (k + 1) peels (the last of each
+ * primitive in an occlusion query: a fragment past layer k is an
+ * overflow) + the cap + 1 walk + 1 peel (and on the CPU a read-back) per
+ * layer chosen, against goldfeather's per literal and layer.
  * GL memory (made at the first frame with a product, grown with the
  * viewport's window size (x + w by y + h) and the largest n so far, freed
  * at stin_destroy): 2 x ceil((n k + 2) / 2) layers of 12 bytes a pixel
