@@ -231,6 +231,9 @@ void stin__csg_cast_release(struct stin_context *ctx);
  * (a technique or light that does not take them); nothing without
  * products or lights. */
 void stin__csg_cast_none(struct stin_context *ctx, const char *why);
+/* Whether the frame's products cast at all (there are some, CSG is on and
+ * STIN_DEBUG_CSG_NO_CAST is not set). */
+int stin__csg_cast_wanted(const struct stin_context *ctx);
 
 /* Goldfeather's passes that SCS shares: depth and stencil of the viewport
  * read back into r, the buffers cleared (colour writes off), the face a

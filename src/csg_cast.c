@@ -179,7 +179,7 @@ static size_t camera_bytes(const stin_context *ctx)
     return (n + 15u) & ~(size_t)15u;
 }
 
-static int wanted(stin_context *ctx)
+int stin__csg_cast_wanted(const stin_context *ctx)
 {
     return ctx->csg.product_count > 0 &&
            ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_OFF &&
@@ -327,7 +327,7 @@ int stin__csg_cast(stin_context *ctx, const stin__path *path, const float view[1
     camera_saved saved;
     int rect[4], bands = 0;
     c->valid = 0;
-    if (!wanted(ctx))
+    if (!stin__csg_cast_wanted(ctx))
         return 0;
     job.path = path;
     job.view = view;
@@ -394,7 +394,7 @@ void stin__csg_cast_again(stin_context *ctx, const int map_vp[4], GLuint target,
 
 void stin__csg_cast_none(stin_context *ctx, const char *why)
 {
-    if (!wanted(ctx) || !ctx->light_count || ctx->csg.cast.said_technique)
+    if (!stin__csg_cast_wanted(ctx) || !ctx->light_count || ctx->csg.cast.said_technique)
         return;
     stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "CSG products cast no shadow %s",
               why);

@@ -119,6 +119,7 @@
     X(void, Uniform4fv, (GLint loc, GLsizei n, const GLfloat *v), STIN_CAP_GLSL, "")      \
     X(void, Uniform4iv, (GLint loc, GLsizei n, const GLint *v), STIN_CAP_GLSL, "")        \
     X(void, Uniform2uiv, (GLint loc, GLsizei n, const GLuint *v), NEED_GL30, "")          \
+    X(void, Uniform4uiv, (GLint loc, GLsizei n, const GLuint *v), NEED_GL30, "")          \
     X(void, UniformMatrix3fv, (GLint loc, GLsizei n, GLboolean t, const GLfloat *v), STIN_CAP_GLSL, "") \
     X(void, UniformMatrix4fv, (GLint loc, GLsizei n, GLboolean t, const GLfloat *v), STIN_CAP_GLSL, "") \
     X(void, VertexAttribPointer, (GLuint i, GLint size, GLenum type, GLboolean norm,      \

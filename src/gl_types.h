@@ -270,6 +270,9 @@ typedef void GLvoid;
 #define GL_SHADER_STORAGE_BUFFER 0x90D2
 #define GL_BUFFER_UPDATE_BARRIER_BIT 0x00000200
 #define GL_DYNAMIC_READ 0x88E9
+/* vdsm's lists of CSG crossings (GL 4.3) */
+#define GL_SHADER_STORAGE_BARRIER_BIT 0x00002000
+#define GL_DYNAMIC_COPY 0x88EA
 /* deep shadow maps' layers */
 #define GL_TEXTURE_2D_ARRAY 0x8C1A
 #define GL_SAMPLES_PASSED 0x8914

@@ -125,6 +125,32 @@ typedef struct stin__vdsm_pyramid {
     int said_no_view, said_failed;
 } stin__vdsm_pyramid;
 
+/* vdsm's shadows of CSG products (shadow_vdsm_csg.c): per light and
+ * product, per-pixel lists of the crossings of each pixel's segment to the
+ * light in shader storage buffers (heads, node pool, the normal form's
+ * term masks), walked by a screen pass. */
+#define STIN__VDSM_CSG_MAX_PRIMITIVES 128u /* a bit each in the walk's state */
+#define STIN__VDSM_CSG_MAX_TERMS 64u
+typedef struct stin__vdsm_csg {
+    GLuint append_prog, walk_prog;
+    GLuint buffers[3];          /* heads, nodes, terms (0: not built) */
+    GLint a_model, a_view_proj, a_light, a_camera, a_viewport, a_grow, a_caps, a_position,
+        a_normal, a_primitive, a_mirrored, a_frame;
+    GLint w_terms, w_light_inside, w_frame, w_clear;
+    stin__displace_locs displace;
+    uint32_t pixels, capacity;  /* heads and pool nodes allocated */
+    uint64_t bytes;             /* GL memory of the three buffers */
+    int cleared;                /* the heads are all 0 */
+    int terms_made;
+    int said_limits;
+} stin__vdsm_csg;
+void stin__vdsm_csg_init(stin_context *ctx);
+void stin__vdsm_csg_release(stin_context *ctx);
+int stin__vdsm_csg_ready(const stin_context *ctx);
+/* Light (homogeneous world point) shadowed by every product that fits,
+ * into channel `channel` of the bound mask, after the light's polygons. */
+void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel);
+
 /* VDSM (shadow_vdsm.c): the position buffer - per pixel the visible
  * surface's world position and its facet normal - and the programs that
  * turn each triangle into shadow polygons over it. */
@@ -143,6 +169,7 @@ typedef struct stin__vdsm_state {
     int ready;              /* this frame's position buffer is drawn */
     int said_area, said_failed, said_layer;
     stin__vdsm_pyramid pyramid;
+    stin__vdsm_csg csg;
 } stin__vdsm_state;
 
 /* The position buffer stage and its release (shadow_vdsm_buffer.c);
@@ -176,6 +203,10 @@ void stin__vdsm_tessellate(stin_context *ctx, int on);
 GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
                           const char *frag, const char *out1, int tessellate, char *msg,
                           size_t size);
+/* A shadow-polygon program: vdsm.vert and vdsm.geom with fragment stage
+ * frag, which has the segment test's chunk (vdsm_segment.glsl). */
+GLuint stin__vdsm_polygon_program(stin_context *ctx, const char *frag, int tessellate, char *msg,
+                                  size_t size);
 void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint *c);
 /* A full-viewport quad through the bound program (shadow_vdsm.c). */
 void stin__vdsm_screen_quad(stin_context *ctx);

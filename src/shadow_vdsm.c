@@ -33,6 +33,20 @@ GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
     return stin__program_build_source(ctx, &src, msg, size);
 }
 
+GLuint stin__vdsm_polygon_program(stin_context *ctx, const char *frag, int tessellate, char *msg,
+                                  size_t size)
+{
+    static const char *const segment[] = {"gl4/vdsm_segment.glsl", NULL};
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.tessellate = tessellate;
+    src.vert = "gl4/vdsm.vert";
+    src.geom = "gl4/vdsm.geom";
+    src.frag = frag;
+    src.frag_chunks = segment;
+    return stin__program_build_source(ctx, &src, msg, size);
+}
+
 void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint *c)
 {
     GLuint *progs[3];
@@ -58,6 +72,7 @@ static void release(stin_context *ctx)
         GL(ctx, DeleteQueries)(1, &v->query);
     v->query = 0;
     stin__vdsm_pyramid_release(ctx);
+    stin__vdsm_csg_release(ctx);
     stin__vdsm_buffer_release(ctx);
 }
 
@@ -113,8 +128,7 @@ static void build_tessellated(stin_context *ctx)
     v->position_tess = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL,
                                           "gl4/vdsm_position.frag", "o_normal", 1, msg, sizeof msg);
     if (v->position_tess)
-        v->polygon_tess = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag",
-                                             NULL, 1, msg, sizeof msg);
+        v->polygon_tess = stin__vdsm_polygon_program(ctx, "gl4/vdsm.frag", 1, msg, sizeof msg);
     if (v->polygon_tess)
         return;
     stin__vdsm_delete_programs(ctx, &v->position_tess, &v->polygon_tess, &none);
@@ -157,8 +171,7 @@ static stin_result vdsm_init(stin_context *ctx)
         v->facing_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
                                0, msg, sizeof msg);
     if (v->facing_prog)
-        v->polygon_prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm.geom", "gl4/vdsm.frag", NULL,
-                                1, msg, sizeof msg);
+        v->polygon_prog = stin__vdsm_polygon_program(ctx, "gl4/vdsm.frag", 1, msg, sizeof msg);
     if (!v->polygon_prog) {
         release(ctx);
         stin__formatf(why, sizeof why, "its shaders failed to build (%s)", msg);
@@ -169,6 +182,7 @@ static stin_result vdsm_init(stin_context *ctx)
     if (stin__displace_tessellated(ctx))
         build_tessellated(ctx);
     stin__vdsm_pyramid_init(ctx);
+    stin__vdsm_csg_init(ctx);
     if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
         GL(ctx, GenQueries)(1, &v->query);
     return STIN_OK;
@@ -177,9 +191,10 @@ static stin_result vdsm_init(stin_context *ctx)
 static void vdsm_prepass(stin_context *ctx)
 {
     stin__vdsm_buffer_draw(ctx);
-    stin__csg_cast_none(ctx, "under vdsm (its shadow polygons come from triangles, and a "
-                             "product's surface is not its primitives' triangles; the map "
-                             "techniques cast them)");
+    if (!stin__vdsm_csg_ready(ctx))
+        stin__csg_cast_none(ctx, "under vdsm without GL 4.3's shader storage buffers (the "
+                                 "\"compute shaders\" capability), which its per-pixel lists "
+                                 "of crossings need; the map techniques cast them");
 }
 
 /* The light as a homogeneous world point: position (w 1) or the direction
@@ -290,6 +305,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     stin__vdsm_screen_quad(ctx);
     polygons(ctx, light);
     ctx->stats.passes += 2;
+    stin__vdsm_csg_cast(ctx, light, channel);
     return 1;
 }
 

@@ -1325,10 +1325,26 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * follow the camera's resolve in the staging (9 bytes a texel of the
  * rectangle); a rectangle that does not fit goes in bands of rows, each a
  * resolve (stin_frame_stats.csg_cast_maps, csg_cast_bands).
- * STIN_DEBUG_CSG_NO_CAST turns casting off. Volumes (and the point lights
- * GL1 maps hand to volumes) and vdsm cast no product, logged once: a
- * product's volume would need its resolved silhouette, vdsm's shadow
- * polygons its resolved triangles. Products are opaque; a primitive's normal and height maps are
+ * STIN_DEBUG_CSG_NO_CAST turns casting off. vdsm casts products exactly,
+ * as it casts triangles, where the context has GL 4.3's shader storage
+ * buffers (the "compute shaders" capability): per light and product, each
+ * primitive's shadow polygons list in per-pixel linked lists every
+ * crossing of the pixel's segment to the light with that primitive (which
+ * primitive, where, and whether the segment enters it there), then a
+ * screen pass walks each list from the light back to the surface - where
+ * the light itself lies inside a primitive found by a ray's parity on the
+ * CPU - and the pixel is shadowed where the product's normal form holds
+ * anywhere on the way (crossings within 2^-16 of their distance count
+ * together: an edge two triangles share once, a grazed silhouette not at
+ * all, shared face planes as in the resolve). Two passes a light and
+ * product; the lists take 4 bytes a pixel of the viewport plus a pool of
+ * 16-byte nodes, one a pixel at first and grown (that product listed
+ * again) when a product's crossings outrun it (stin_frame_stats.
+ * vdsm_csg_casts, vdsm_csg_bytes); a product of more than 128 primitives
+ * or 64 terms casts nothing under vdsm (logged once). Without the storage
+ * buffers (gl33-core) vdsm casts no product, logged once. Volumes (and the
+ * point lights GL1 maps hand to volumes) cast no product, logged once: a
+ * product's volume would need its resolved silhouette. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term; on the CPU each layer reads depth back (and
  * the stencil once per batch), so that resolve costs read-backs more than
@@ -1512,6 +1528,11 @@ typedef struct stin_frame_stats {
      * memory (two depth textures at the viewport's window size) */
     uint32_t csg_gpu_resolves;
     uint64_t csg_gpu_bytes;
+    /* vdsm: products whose shadow it drew (per light and peeled layer), and
+     * the GL memory of its crossing lists (heads at the viewport's size and
+     * the node pool, grown to the most crossings a product took so far) */
+    uint32_t vdsm_csg_casts;
+    uint64_t vdsm_csg_bytes;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -73,6 +73,7 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Uniform4fv ~, 1
 #define FAKE_STATELESS_Uniform4iv ~, 1
 #define FAKE_STATELESS_Uniform2uiv ~, 1
+#define FAKE_STATELESS_Uniform4uiv ~, 1
 #define FAKE_STATELESS_UniformMatrix3fv ~, 1
 #define FAKE_STATELESS_UniformMatrix4fv ~, 1
 #define FAKE_STATELESS_FramebufferTexture2D ~, 1
