@@ -306,6 +306,7 @@ static void release_gl(stin_context *ctx)
         ctx->shadow->release(ctx);
     stin__mask_release(ctx);
     stin__export_release(ctx);
+    stin__outline_release(ctx);
     stin__csg_interval_release(ctx);
     stin__csg_release(ctx);
     stin__deep_release(ctx);
@@ -408,6 +409,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         stin__displace_init(ctx);
         stin__csg_init(ctx);
         stin__csg_interval_init(ctx);
+        stin__outline_init(ctx);
     }
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */

@@ -42,6 +42,20 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
                   "depth-stencil textures");
         return STIN_ERROR_UNSUPPORTED;
     }
+    if (!stin__finite_n(desc->outline_color, 4) || !stin__finite_n(&desc->outline_step, 1) ||
+        !stin__finite_n(&desc->outline_normal_edge, 1) ||
+        !stin__finite_n(&desc->outline_depth_edge, 1) || desc->outline_step < 0.0f ||
+        desc->outline_step > 64.0f || desc->outline_normal_edge < 0.0f ||
+        desc->outline_depth_edge < 0.0f)
+        return arg_error(ctx, "stin_begin_frame", "outline_step must lie in 0..64, the outline's "
+                                                  "colour and edges must be finite, the edges "
+                                                  "not negative");
+    if (desc->outline_step > 0.0f && !stin__outline_supported(ctx)) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK,
+                  "stin_begin_frame: the outline needs GLSL lighting, framebuffer objects and "
+                  "packed depth-stencil textures");
+        return STIN_ERROR_UNSUPPORTED;
+    }
     if (desc->framebuffer && !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)))
         return arg_error(ctx, "stin_begin_frame", "a framebuffer name needs framebuffer objects");
     if (stin__target_check(ctx, desc->framebuffer, "stin_begin_frame") != STIN_OK)
@@ -516,6 +530,7 @@ static void run_plan(stin_context *ctx)
         shadowed)
         stin__volume_debug_overlay(ctx, path);
     stin__export_stage(ctx, path, shadowed);
+    stin__outline_stage(ctx, path);
     path->end(ctx);
 }
 

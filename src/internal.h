@@ -16,6 +16,7 @@
 #include "shadow.h"
 #include "surface.h"
 #include "visibility_export.h"
+#include "outline.h"
 #include "csg.h"
 #include "translucent.h"
 #include "transparency.h"
@@ -92,6 +93,7 @@ struct stin_context {
     stin__mask_state mask;
     stin__vdsm_state vdsm;
     stin__export_state visibility; /* the visibility map (visibility_export.c) */
+    stin__outline_state outline;   /* the deferred outline (outline.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg.c) */
     stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
     stin__coloured_state coloured; /* translucent shadows' colour maps (translucent_coloured.c) */

@@ -1201,6 +1201,14 @@ typedef struct stin_frame_desc {
     float ambient[3];        /* scene ambient, multiplies albedo */
     stin_output output;
     stin_export export_visibility; /* default STIN_EXPORT_NONE */
+    /* The deferred outline (see OUTLINE below; GLSL tiers with framebuffer
+     * objects and packed depth-stencil, else the frame is refused with
+     * STIN_ERROR_UNSUPPORTED): */
+    float outline_step;        /* pixels between the filter's taps, 0..64; 0 (default): none */
+    float outline_color[4];    /* RGBA blended over the frame by its alpha; all 0: opaque black */
+    float outline_normal_edge; /* normals' Sobel magnitude that makes a crease; 0: 1.0 */
+    float outline_depth_edge;  /* depth step, a share of the eye distance, that makes an
+                                * edge; 0: 0.02 */
 } stin_frame_desc;
 
 stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc);
@@ -1545,6 +1553,33 @@ stin_frame_stats stin_query_frame_stats(const stin_context *ctx);
  * stin with desc.no_clear, or after) must draw it with this projection, and
  * one that unprojects depth must use it rather than its own. */
 void stin_query_frame_projection(const stin_context *ctx, float out[16]);
+
+/* ---- outline ----------------------------------------------------------------
+ * A frame with desc.outline_step > 0 (a beauty frame; normal and visibility
+ * outputs and STIN_EXPORT_VISIBILITY_ONLY frames draw none) ends with a
+ * deferred outline, seed 004's Sobel filter with its pixel step a
+ * parameter: every draw's shading normal (CSG products' faces included,
+ * blended draws too) goes into stin's screen mask over a depth of its own,
+ * then one screen pass blends outline_color over the frame's viewport
+ * where nine taps outline_step pixels apart around a pixel (clamped into
+ * the viewport) show
+ *   - a silhouette: some taps cover a surface and some do not (the line
+ *     lies on both sides of it);
+ *   - a crease: the Sobel magnitude of the normals, |Gx| + |Gy| summed
+ *     over x, y and z, reaches outline_normal_edge (default 1: the seed's;
+ *     a 90-degree edge measures about 4 at step 1);
+ *   - a step in depth: in one of four directions across the pixel, the
+ *     depth halfway between the two opposite taps (exact on any plane,
+ *     so floors seen edge-on draw no lines) lies farther from the pixel's
+ *     own than outline_depth_edge (default 0.02) of its eye distance.
+ * The decision is on or off per pixel (no antialiasing; a partly
+ * transparent outline_color fades it). Needs GLSL lighting, framebuffer
+ * objects and packed depth-stencil textures: elsewhere (the GL1 tier)
+ * stin_begin_frame refuses such a frame with STIN_ERROR_UNSUPPORTED
+ * (logged); outline_step must lie in 0..64. Costs two passes (a geometry
+ * pass of every draw and a screen pass) and no memory beyond the screen
+ * mask's (8 bytes a pixel, see SHADOWS). stin-render --outline N draws it
+ * in black. */
 
 /* ---- visibility for the application's own shaders ------------------------
  * A frame with desc.export_visibility writes, after its drawing, every

@@ -47,6 +47,9 @@ void hostile_tests(run *r, stin_tier tier, const char *path);
 /* The application's own geometry in stin's depth buffer, before and after
  * stin's draws, on four-lights only (composite_test.c). */
 void composite_tests(run *r, stin_tier tier, const char *path);
+/* The deferred outline against its filter on the reference, on
+ * four-lights only (outline_test.c). */
+void outline_tests(run *r, stin_tier tier, const char *path);
 /* The visibility map for the application's own shaders, on four-lights
  * (six lights) and shadow-soft (visibility_test.c). */
 void visibility_tests(run *r, stin_tier tier, const char *path);

@@ -483,8 +483,9 @@ static void test_glsl150_compile_failure_falls_back_to_glsl110(void **state)
     assert_true(fake_log_has(&f.log, STIN_LOG_SHADER_COMPILE, "GLSL version not supported"));
     assert_int_equal(fake_gl.shader_compile_failures, 1);
     /* the shared programs plus the lit program's normal, parallax and pom
-     * variants, depth-peel's composite and the GPU CSG resolve's three */
-    assert_int_equal(fake_gl.programs_created, STIN__PROG_COUNT + 3 + 1 + 3);
+     * variants, depth-peel's composite, the GPU CSG resolve's three and
+     * the outline's */
+    assert_int_equal(fake_gl.programs_created, STIN__PROG_COUNT + 3 + 1 + 3 + 1);
     m = make_quad(f.ctx);
     run_frame(f.ctx, m);
     assert_int_equal(fake_gl.draw_calls, 1);
@@ -592,14 +593,16 @@ static void test_destroy_deletes_every_gl_object(void **state)
     check_destroy_balances(FAKE_GL11, 0, 0, 0, 0);
     /* GLSL tiers: depth-peel's composite program too (its textures come with
      * the first frame with blended draws), and the GPU CSG resolve's merge,
-     * kill and snap programs (its textures come with the first product) */
-    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1 + 3, 0);
+     * kill and snap programs (its textures come with the first product),
+     * and the outline's */
+    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1 + 3 + 1, 0);
     /* GL 4.5: each program again, tessellated ("displace-tess"), dual-peel's
      * composite and its min-max programs (plain and tessellated), on core
      * goldfeather's depth program (compatibility contexts use glDrawPixels;
      * interval, not the default, builds its two where chosen), and the GPU
-     * resolve's three */
-    check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1 + 2 + 1 + 3, 1);
+     * resolve's three, and the outline's */
+    check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1 + 2 + 1 + 3 + 1,
+                           1);
 }
 
 /* ---- entry points and extensions ------------------------------------------ */

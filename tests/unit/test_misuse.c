@@ -271,6 +271,41 @@ static void test_non_finite_shadow_offset_is_rejected(void **state)
 }
 
 /* ---- embedding item 6: the frame's matrices ---------------------------------------- */
+/* The outline's fields: a step outside 0..64, a non-finite colour or a
+ * negative edge is an argument error; a context without GLSL lighting
+ * refuses an outline as unsupported, saying why. */
+static void test_outline_fields_are_checked(void **state)
+{
+    context c = {0};
+    stin_frame_desc fd = {.viewport = {0, 0, 64, 48}};
+    (void)state;
+    use_profile(FAKE_GL21);
+    create_in(&c, 2);
+    stin__mat4_identity(fd.view);
+    stin__mat4_identity(fd.projection);
+    fd.outline_step = 65.0f;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    assert_true(fake_log_has(&log_, STIN_LOG_BAD_ARGUMENT, "outline_step"));
+    fd.outline_step = -1.0f;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    fd.outline_step = 1.0f;
+    fd.outline_color[1] = NAN;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    fd.outline_color[1] = 0.0f;
+    fd.outline_depth_edge = -0.5f;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+    release(&c);
+    use_profile(FAKE_GL11);
+    create_in(&c, 2);
+    fd.outline_depth_edge = 0.0f;
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_ERROR_UNSUPPORTED);
+    assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "outline needs GLSL"));
+    fd.outline_step = 0.0f; /* no outline: the same frame is fine */
+    assert_int_equal(stin_begin_frame(c.ctx, &fd), STIN_OK);
+    assert_int_equal(stin_end_frame(c.ctx), STIN_OK);
+    release(&c);
+}
+
 /* All-zero (a forgotten matrix) or singular view and projection are refused
  * with a message; far translations, tiny and huge scales and orthographic
  * projections are fine. */
@@ -542,6 +577,7 @@ int main(void)
         cmocka_unit_test(test_texture_size_overflow_is_an_error),
         cmocka_unit_test(test_non_finite_shadow_offset_is_rejected),
         cmocka_unit_test(test_singular_frame_matrices_are_rejected),
+        cmocka_unit_test(test_outline_fields_are_checked),
         cmocka_unit_test(test_handles_of_another_context_are_foreign),
         cmocka_unit_test(test_generations_never_revive_a_stale_id),
         cmocka_unit_test(test_slot_at_top_generation_is_retired),

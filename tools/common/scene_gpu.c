@@ -238,6 +238,8 @@ stin_result scene_gpu_frame_export(const scene_gpu *g, stin_context *ctx, int wi
     memcpy(fd.clear_color, s->background, sizeof fd.clear_color);
     memcpy(fd.ambient, s->ambient, sizeof fd.ambient);
     fd.output = output;
+    fd.outline_step = g->outline_step;
+    memcpy(fd.outline_color, g->outline_color, sizeof fd.outline_color);
     fd.export_visibility = ex;
     if (output != STIN_OUTPUT_BEAUTY)
         memset(fd.clear_color, 0, sizeof fd.clear_color);

@@ -32,6 +32,10 @@ typedef struct scene_gpu {
      * scene_gpu_create); their objects are not drawn on their own */
     const scene_gpu_csg *csg;
     int csg_count;
+    /* the frames' outline (stin_frame_desc.outline_step and outline_color;
+     * 0: none; the caller's, set after scene_gpu_create) */
+    float outline_step;
+    float outline_color[4];
 } scene_gpu;
 
 /* The stin_desc capacities this scene needs (meshes, draws, lights, vertices,

@@ -284,6 +284,7 @@ int main(int argc, char **argv)
     }
     g.csg = products.products; /* the file's csg list: its objects drawn as products */
     g.csg_count = products.count;
+    g.outline_step = o.outline; /* black: stin's default colour */
     progress_done(&pr, "created meshes and textures");
     progress_start(&pr, "rendering %dx%d (beauty, normal and visibility frames)", pd.width,
                    pd.height);

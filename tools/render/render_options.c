@@ -40,6 +40,8 @@ void render_usage(FILE *f)
                "                            OUT-masks.png with every light's visibility\n"
                "  --frame                   fit the camera to the scene's bounds (its direction kept;\n"
                "                            automatic when the scene has no camera)\n"
+               "  --outline N               a black outline (GLSL tiers): silhouettes, creases and\n"
+               "                            depth steps, the filter's taps N pixels apart (0..64)\n"
                "  --caps                    print capabilities and choices, render nothing\n"
                "  --verbose                 print stin's info log lines\n"
                "  --version                 print the versions of stin-render and libstin\n"
@@ -99,7 +101,7 @@ static int takes_value(const char *a)
 {
     static const char *const names[] = {"-o", "--tier", "--profile", "--platform", "--shadows",
                                         "--volume-mode", "--shadow-map-size", "--max-triangles",
-                                        "--surface", "--size", "--debug"};
+                                        "--surface", "--size", "--debug", "--outline"};
     size_t i;
     for (i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcmp(a, names[i]))
@@ -185,6 +187,13 @@ int render_parse_args(int argc, char **argv, options *o)
         } else if (!strcmp(a, "--shadow-map-size") || !strcmp(a, "--max-triangles")) {
             if (!parse_number_option(a, argv[++i], o))
                 return 0;
+        } else if (!strcmp(a, "--outline")) {
+            char extra;
+            if (sscanf(argv[++i], "%f%c", &o->outline, &extra) != 1 || !(o->outline >= 0.0f) ||
+                o->outline > 64.0f) {
+                fprintf(stderr, "stin-render: --outline wants pixels in 0..64, got '%s'\n", v);
+                return 0;
+            }
         } else if (!strcmp(a, "--surface")) {
             o->surface = argv[++i];
         } else if (!strcmp(a, "--size")) {
