@@ -6,7 +6,10 @@
  * paths, else its light hook with the flat pass written into that channel
  * alone - and every three lights are copied into their tile of the map. The
  * same tests as the lit passes, so the application's pixels agree with
- * stin's. */
+ * stin's. Where the frame's lights have deep or colour maps (transparent
+ * casters), each light's map is made again and its transmittance alone
+ * (the flat pass with no shadow test, the map's lookup per channel) goes
+ * into a tile of its own after the visibility tiles. */
 #include "internal.h"
 
 #define TILES_PER_ROW 2
@@ -72,6 +75,16 @@ static uint32_t ensure_map(stin_context *ctx, int tile_w, int tile_h, uint32_t g
     return fit;
 }
 
+/* Light li's transmittance through its deep or colour map, RGB, in the
+ * mask (no shadow test: the mask's fresh state has none). */
+static void export_transmittance(stin_context *ctx, const stin__path *path, uint32_t li)
+{
+    static const float white[4] = {1, 1, 1, 1};
+    stin__translucent_light(ctx, li);
+    path->flat(ctx, STIN__OPAQUE, white, &ctx->lights[li]);
+    stin__translucent_light_done(ctx);
+}
+
 /* A light's visibility through the flat pass, into the pass's channel. */
 static void shade_channel(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
                           float weight)
@@ -101,12 +114,26 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
     const int *vp = ctx->frame.viewport;
     int tile_w = vp[0] + vp[2], tile_h = vp[1] + vp[3];
     uint32_t groups = (ctx->light_count + LIGHTS_PER_TILE - 1) / LIGHTS_PER_TILE, fit, g;
+    int coloured = stin__translucent_active(ctx) && ctx->light_count > 0;
     e->valid = 0;
     e->lights = 0;
+    e->transmittance_tile = 0;
     if (!ctx->frame.export_visibility)
         return;
-    /* a frame without lights still hands out a map (of no lights) */
-    fit = ensure_map(ctx, tile_w, tile_h, groups > 0 ? groups : 1);
+    /* a frame without lights still hands out a map (of no lights); with
+     * transmittance, a tile a light more, all or nothing */
+    fit = ensure_map(ctx, tile_w, tile_h,
+                     (groups > 0 ? groups : 1) + (coloured ? ctx->light_count : 0u));
+    if (coloured && fit < groups + ctx->light_count) {
+        if (!e->said_size)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "visibility map: the lights' transmittance tiles do not fit "
+                      "GL_MAX_TEXTURE_SIZE; the map holds visibility only");
+        e->said_size = 1;
+        coloured = 0;
+    } else if (coloured) {
+        fit = groups;
+    }
     stin__mask_frame_end(ctx); /* the mask's depth again: opaque draws only */
     e->valid = fit > 0;
     for (g = 0; g < fit && LIGHTS_PER_TILE * g < ctx->light_count; g++) {
@@ -124,6 +151,19 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
                                    (GLint)(g / TILES_PER_ROW) * tile_h, 0, 0, tile_w, tile_h);
         e->lights = LIGHTS_PER_TILE * (g + 1) < ctx->light_count ? LIGHTS_PER_TILE * (g + 1)
                                                                  : ctx->light_count;
+    }
+    for (g = 0; coloured && e->valid && g < ctx->light_count; g++) {
+        uint32_t tile = groups + g;
+        if (!stin__mask_begin(ctx, path, STIN__OPAQUE)) {
+            e->valid = 0;
+            break;
+        }
+        ctx->draw_fbo = ctx->mask.fbo;
+        export_transmittance(ctx, path, g);
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, e->texture);
+        GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, (GLint)(tile % TILES_PER_ROW) * tile_w,
+                                   (GLint)(tile / TILES_PER_ROW) * tile_h, 0, 0, tile_w, tile_h);
+        e->transmittance_tile = groups;
     }
     stin__mask_frame_end(ctx);
     ctx->draw_fbo = ctx->frame.framebuffer;
@@ -149,6 +189,7 @@ stin_result stin_query_visibility_map(const stin_context *ctx, stin_visibility_m
     out->tile_width = (uint32_t)e->tile_width;
     out->tile_height = (uint32_t)e->tile_height;
     out->lights = e->lights;
+    out->transmittance_tile = (uint32_t)e->transmittance_tile;
     return STIN_OK;
 }
 
@@ -207,5 +248,8 @@ stin_result stin_bind_visibility(stin_context *ctx, int unit)
     }
     if ((loc = GL(ctx, GetUniformLocation)((GLuint)program, "stin_visibility_lights")) >= 0)
         GL(ctx, Uniform1f)(loc, (float)e->lights);
+    if ((loc = GL(ctx, GetUniformLocation)((GLuint)program, "stin_visibility_transmittance")) >=
+        0)
+        GL(ctx, Uniform1f)(loc, (float)e->transmittance_tile);
     return STIN_OK;
 }

@@ -16,6 +16,7 @@ typedef struct stin__export_state {
     int width, height;           /* allocated texels (0: not yet) */
     int tile_width, tile_height; /* of the last export */
     uint32_t lights;             /* lights in the map */
+    uint32_t transmittance_tile; /* the first light's transmittance tile (0: none) */
     int valid;                   /* the last frame exported */
     int said_size;               /* lights left out for the map's size were logged */
 } stin__export_state;

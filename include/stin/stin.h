@@ -584,7 +584,9 @@ const char *stin_feature_name(stin_feature f);
  * pass while it is in use, and a frame without transparent draws draws no
  * layer. Blended draws receive the deep maps' coloured shadows where
  * "depth-peel" lights them (below), and the visibility map
- * (export_visibility) holds the shadows technique's visibility only.
+ * (export_visibility) holds the shadows technique's visibility and each
+ * light's transmittance in a tile of its own (VISIBILITY FOR THE
+ * APPLICATION'S SHADERS).
  * Displaced transparent casters peel their displaced surface. With shadows
  * "off" it falls back to "translucent-solid" (logged); forcing it on a
  * context without the GL4 tier is UNSUPPORTED, naming what is missing.
@@ -610,7 +612,7 @@ const char *stin_feature_name(stin_feature f);
  * map's 8 bits round each factor by up to 1/510. As with deep, lights are
  * lit one per pass while it is in use, a frame without transparent draws
  * draws no map, blended draws are drawn unshadowed, the visibility map
- * (export_visibility) holds the shadows technique's visibility only, and
+ * (export_visibility) holds the transmittance as with deep, and
  * with shadows "off" it falls back to "opaque" (logged). The face size is
  * halved until three faces fit the context's largest texture. GPU memory:
  * 6 x deep_map_size^2 x (4 + 4) bytes (12 MiB at 512).
@@ -1594,6 +1596,16 @@ void stin_query_frame_projection(const stin_context *ctx, float out[16]);
  * measures at most 0.05% of the covered pixels, 0.2% with the filtered
  * map-pcf and map-depth lookups). Blended draws are not in it (they
  * neither hide what is behind them nor have one depth per pixel).
+ * Transmittance: where the frame's lights had deep or colour maps (the
+ * translucent-shadows techniques "deep" and "coloured" with transparent
+ * casters in the frame), each light's map is made again after the lights
+ * and its transmittance alone - per colour channel, 1 where no transparent
+ * caster lies toward the light, 0 behind an opaque one it carries - goes
+ * into a tile of its own (RGB) after the visibility tiles, light i in tile
+ * transmittance_tile + i: the product of a light's visibility and its
+ * transmittance is the coloured shadow stin's lit passes use (within 2/255:
+ * two 8-bit values multiplied; tests/image visibility_test.c). The maps are
+ * made twice in such a frame (once for the lit pass, once here).
  * Layout: light i is channel i % 3 (R, G, B) of tile i / 3; tiles lie two to a row,
  * bottom row first, each tile_width x tile_height texels, and window pixel
  * (x, y) of the frame is texel (x, y) of its tile (a tile covers the
@@ -1615,6 +1627,8 @@ typedef struct stin_visibility_map {
     uint32_t width, height;           /* texels of the texture */
     uint32_t tile_width, tile_height; /* texels of one tile */
     uint32_t lights;                  /* lights in it: 0 .. the frame's light count */
+    uint32_t transmittance_tile;      /* light 0's transmittance tile (light i's: this + i);
+                                       * 0: the map holds none */
 } stin_visibility_map;
 
 /* The visibility map of the last frame that exported one, ended with
@@ -1632,8 +1646,12 @@ stin_result stin_query_visibility_map(const stin_context *ctx, stin_visibility_m
  * and defines
  *   float stin_visibility(int light);      at gl_FragCoord: 1 lit .. 0 shadowed
  *                                          (1 for lights not in the map)
- *   vec3 stin_shadow_transmittance(int light);  the same for each colour
- *                                          channel, as stin's lit shaders use it
+ *   vec3 stin_shadow_transmittance(int light);  per colour channel: the
+ *                                          visibility times the light's
+ *                                          transmittance where the map has
+ *                                          it, as stin's lit shaders use it
+ *   uniform float stin_visibility_transmittance;  the first transmittance
+ *                                          tile (0: none)
  * Its names all start with stin_ (STIN_ for macros). */
 const char *stin_visibility_glsl(void);
 

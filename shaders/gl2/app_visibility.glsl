@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // stin's visibility map for the application's own fragment shaders
 // (stin_visibility_glsl, stin.h): light i is channel i % 3 of tile i / 3,
-// tiles two to a row, window pixel (x, y) at texel (x, y) of its tile.
+// tiles two to a row, window pixel (x, y) at texel (x, y) of its tile; where
+// the frame had deep or colour maps, light i's transmittance (RGB) is tile
+// stin_visibility_transmittance + i.
 #if __VERSION__ >= 130
 #define STIN_VISIBILITY_FETCH(s, uv) texture(s, uv)
 #else
@@ -10,6 +12,14 @@
 uniform sampler2D stin_visibility_map;
 uniform vec4 stin_visibility_layout; // tile width, tile height, 1 / map width, 1 / map height
 uniform float stin_visibility_lights;
+uniform float stin_visibility_transmittance; // the first transmittance tile (0: none)
+
+vec4 stin_visibility_tile(float tile)
+{
+    vec2 origin = vec2(mod(tile, 2.0), floor(tile / 2.0)) * stin_visibility_layout.xy;
+    return STIN_VISIBILITY_FETCH(stin_visibility_map,
+                                 (origin + gl_FragCoord.xy) * stin_visibility_layout.zw);
+}
 
 float stin_visibility(int light)
 {
@@ -18,13 +28,15 @@ float stin_visibility(int light)
         return 1.0;
     float tile = floor(l / 3.0);
     float channel = l - 3.0 * tile;
-    vec2 origin = vec2(mod(tile, 2.0), floor(tile / 2.0)) * stin_visibility_layout.xy;
-    vec4 v = STIN_VISIBILITY_FETCH(stin_visibility_map,
-                                   (origin + gl_FragCoord.xy) * stin_visibility_layout.zw);
+    vec4 v = stin_visibility_tile(tile);
     return channel < 0.5 ? v.r : channel < 1.5 ? v.g : v.b;
 }
 
 vec3 stin_shadow_transmittance(int light)
 {
-    return vec3(stin_visibility(light));
+    float l = float(light);
+    vec3 t = vec3(1.0);
+    if (stin_visibility_transmittance > 0.5 && l >= 0.0 && l < stin_visibility_lights)
+        t = stin_visibility_tile(stin_visibility_transmittance + l).rgb;
+    return stin_visibility(light) * t;
 }

@@ -14,7 +14,19 @@
  *     the covered pixels (a loose bound: the exact agreement is the first
  *     check; this one catches a map that is right about nothing, e.g. all
  *     lit), and "off" exports 1 everywhere;
- * and without framebuffer objects the export is refused as documented. */
+ * and without framebuffer objects the export is refused as documented.
+ * On glass-panes (coloured transparent panes over a floor; the tier's
+ * translucent-shadows technique: deep on GL4, coloured on GL2), per light:
+ *   - the map has transmittance tiles (stin_visibility_map.transmittance_tile)
+ *     and on at least 500 covered pixels a light's transmittance is coloured
+ *     (its channels differ by more than 8/255);
+ *   - visibility times transmittance equals, per channel, the visibility
+ *     output of a frame with that light first (which multiplies the two in
+ *     one pass) within 2/255 - two 8-bit values multiplied - on all but
+ *     0.05% of the pixels where an opaque draw is the first hit (the
+ *     output draws the panes over them; the map does not);
+ *   - the application's stin_shadow_transmittance reads that product
+ *     (within 1/255). */
 #include "caller_gl.h"
 #include "image_test.h"
 #include "reference.h"
@@ -269,6 +281,107 @@ static void check_technique(vis_run *v, const char *name, int off, int filtered)
            100.0 * REFERENCE_BUDGET);
 }
 
+/* Channel `channel` of light `light`'s transmittance tile. */
+static uint8_t transmittance_value(const vis_run *v, const uint8_t *map, int light, int channel,
+                                   int x, int y)
+{
+    uint32_t tile = v->info.transmittance_tile + (uint32_t)light;
+    size_t tx = (size_t)(tile % 2) * v->info.tile_width + (size_t)x;
+    size_t ty = (size_t)(tile / 2) * v->info.tile_height + (size_t)y;
+    return map[4 * (ty * v->info.width + tx) + (size_t)channel];
+}
+
+#define TRANSMITTANCE_ROUNDING 2
+#define MIN_COLOURED 500
+
+/* Visibility times transmittance of light li at (x, y), channel c (8-bit). */
+static int exported_product(const vis_run *v, int li, int c, int x, int y)
+{
+    return (map_value(v, v->map_only, li, x, y) *
+                transmittance_value(v, v->map_only, li, c, x, y) +
+            127) /
+           255;
+}
+
+static void check_transmittance(vis_run *v, stin_tier tier, const char *scene_name)
+{
+    int w = v->r->width, h = v->r->height, li, x, y, c;
+    long covered = 0, coloured = 0, most = 0, app_off = 0;
+    stin_technique t;
+    char name[160];
+    if (!test_context_create(&v->t, v->r, v->s, tier, STIN_TECH_NONE, 0))
+        return;
+    t = stin_query_choice(v->t.ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS).technique;
+    snprintf(name, sizeof name, "%s/%s/visibility-map-transmittance-%s", stin_tier_name(tier),
+             scene_name, stin_technique_name(t));
+    v->failures[0] = '\0';
+    v->failed = 0;
+    if (t != STIN_TECH_TRANSLUCENT_DEEP && t != STIN_TECH_TRANSLUCENT_COLOURED) {
+        report(v->r, "SKIP", name, "no deep or colour maps here (translucent shadows: %s)",
+               stin_technique_name(t));
+        test_context_destroy(&v->t);
+        return;
+    }
+    if (!export_frame(v, STIN_EXPORT_VISIBILITY_ONLY, v->map_only) ||
+        v->info.transmittance_tile == 0) {
+        report(v->r, "FAIL", name, "the export failed or holds no transmittance tile (%u)",
+               v->info.transmittance_tile);
+        test_context_destroy(&v->t);
+        return;
+    }
+    for (li = 0; li < v->s->light_count; li++) {
+        long differ = 0;
+        if (!read_frame(v, STIN_OUTPUT_VISIBILITY, STIN_EXPORT_NONE, li, v->color)) {
+            note(v, "light %d's visibility frame failed; ", li);
+            continue;
+        }
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++) {
+                const uint8_t *px = v->color + 4 * ((size_t)y * w + x);
+                const ref_hit *hit = &v->hits[(size_t)y * w + x];
+                int off = 0, tint;
+                /* the map is the opaque draws' (the visibility output
+                 * draws the panes over them) */
+                if (!hit->hit ||
+                    v->s->materials[v->s->objects[hit->object].material].color[3] < 1.0f)
+                    continue;
+                covered += li == 0;
+                for (c = 0; c < 3; c++)
+                    off |= abs(exported_product(v, li, c, x, y) - px[c]) > TRANSMITTANCE_ROUNDING;
+                differ += off;
+                tint = abs(transmittance_value(v, v->map_only, li, 0, x, y) -
+                           transmittance_value(v, v->map_only, li, 2, x, y));
+                coloured += tint > 8;
+            }
+        most = differ > most ? differ : most;
+        if (!v->program)
+            continue;
+        if (!export_frame(v, STIN_EXPORT_VISIBILITY, v->map_only) || !app_pass(v, li)) {
+            note(v, "light %d: the application's pass failed; ", li);
+            continue;
+        }
+        for (y = 0; y < h; y++)
+            for (x = 0; x < w; x++)
+                for (c = 0; c < 3; c++)
+                    app_off += abs(exported_product(v, li, c, x, y) -
+                                   v->color[4 * ((size_t)y * w + x) + (size_t)c]) > 1;
+    }
+    if (most > (long)(EXACT_BUDGET * (double)covered))
+        note(v, "up to %ld covered pixels of a light differ from its visibility output; ", most);
+    if (coloured < MIN_COLOURED)
+        note(v, "only %ld pixels have a coloured transmittance; ", coloured);
+    if (app_off)
+        note(v, "the application's shader reads %ld channels otherwise; ", app_off);
+    report(v->r, v->failed ? "FAIL" : "PASS", name,
+           "%stransmittance tiles from tile %u; visibility x transmittance differs from the "
+           "visibility output (within %d/255) on at most %ld of %ld covered pixels of a light; "
+           "%ld coloured pixels (need %d)%s",
+           v->failures, v->info.transmittance_tile, TRANSMITTANCE_ROUNDING, most, covered,
+           coloured, MIN_COLOURED,
+           v->program ? "; the application's shader reads the same product" : "");
+    test_context_destroy(&v->t);
+}
+
 /* Without framebuffer objects: refused, and nothing to query. */
 static void check_refusal(vis_run *v, const char *name)
 {
@@ -325,7 +438,7 @@ void visibility_tests(run *r, stin_tier tier, const char *path)
     char err[256], name[160];
     size_t pixels = (size_t)r->width * r->height;
     const char *chunk = stin_visibility_glsl();
-    if (strcmp(base, "four-lights") && strcmp(base, "shadow-soft"))
+    if (strcmp(base, "four-lights") && strcmp(base, "shadow-soft") && strcmp(base, "glass-panes"))
         return;
     memset(&v, 0, sizeof v);
     snprintf(name, sizeof name, "%s/%s/visibility-map", stin_tier_name(tier), base);
@@ -364,7 +477,10 @@ void visibility_tests(run *r, stin_tier tier, const char *path)
             caller_gl_buffers(&gl, r->profile->core, &v.vbo, &v.vao);
         }
         free(frag);
-        run_techniques(&v, tier, base);
+        if (!strcmp(base, "glass-panes"))
+            check_transmittance(&v, tier, base);
+        else
+            run_techniques(&v, tier, base);
         caller_gl_delete(&gl, &v.program, &v.vbo, &v.vao);
     }
     if (ref)
