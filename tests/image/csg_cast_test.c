@@ -6,7 +6,10 @@
  * a product's solid). Scenes: csg/cast.json (a slab with a spherical hole
  * through it, slab minus ball, over a floor, under a spot light: one map)
  * and csg/cast-point.json (the same under a point light: six faces drawn
- * mid-frame, after the camera's resolve). Per shadow technique:
+ * mid-frame, after the camera's resolve), and csg/cast-lamp.json (a lamp
+ * shade, a box minus a ball opening through its bottom face, the point
+ * light inside both: vdsm's walk starts inside them, the maps resolve
+ * from within). Per shadow technique:
  *   cast-<technique>  light 0's visibility on the pixels whose P matches
  *               the reference (csg_test.c's tolerance), that face the light
  *               and lie 2 pixels or more from a reference shadow edge,
@@ -196,7 +199,7 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
 
 void csg_cast_tests(run *r, stin_tier tier, const char *dir)
 {
-    static const char *const files[] = {"cast", "cast-point"};
+    static const char *const files[] = {"cast", "cast-point", "cast-lamp"};
     static const stin_technique techniques[] = {
         STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE,
         STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_VDSM};
