@@ -142,7 +142,7 @@ typedef struct stin__vdsm_csg {
     uint64_t bytes;             /* GL memory of the three buffers */
     int cleared;                /* the heads are all 0 */
     int terms_made;
-    int said_limits;
+    int said_limits, said_pool;
 } stin__vdsm_csg;
 void stin__vdsm_csg_init(stin_context *ctx);
 void stin__vdsm_csg_release(stin_context *ctx);

@@ -365,7 +365,13 @@ void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel)
             count_bytes(ctx);
             used = list_crossings(ctx, p, light);
         }
-        if (used > c->capacity) { /* still short (the GPU's rounding): the lists dropped */
+        if (used > c->capacity) { /* still short: a second listing found more */
+            if (!c->said_pool)
+                stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                          "vdsm: a CSG product's second listing took %u crossings, more than "
+                          "the %u its first grew the pool to; it casts no shadow this frame",
+                          used, c->capacity);
+            c->said_pool = 1;
             clear_lists(ctx);
             continue;
         }

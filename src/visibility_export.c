@@ -29,13 +29,13 @@ void stin__export_release(stin_context *ctx)
     stin__memzero(&ctx->visibility, sizeof ctx->visibility);
 }
 
-/* The tiles that fit the context's largest texture, the map grown to hold
- * them; 0 when not even one does. */
-static uint32_t ensure_map(stin_context *ctx, int tile_w, int tile_h, uint32_t groups)
+/* How many of `tiles` fit the context's largest texture, the map grown to
+ * hold them; 0 when not even one does. */
+static uint32_t ensure_map(stin_context *ctx, int tile_w, int tile_h, uint32_t tiles)
 {
     stin__export_state *e = &ctx->visibility;
     int max = ctx->caps.max_texture_size > 0 ? ctx->caps.max_texture_size : 1 << 30;
-    uint32_t fit = groups;
+    uint32_t fit = tiles;
     int cols, rows, w, h;
     while (fit > 0) {
         cols = fit < TILES_PER_ROW ? (int)fit : TILES_PER_ROW;
@@ -43,13 +43,6 @@ static uint32_t ensure_map(stin_context *ctx, int tile_w, int tile_h, uint32_t g
         if (tile_w <= max / cols && tile_h <= max / rows)
             break;
         fit--;
-    }
-    if (fit < groups && !e->said_size) {
-        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                  "visibility map: %u of %u lights fit GL_MAX_TEXTURE_SIZE %d at %dx%d a tile",
-                  (unsigned)(LIGHTS_PER_TILE * fit), (unsigned)ctx->light_count, max, tile_w,
-                  tile_h);
-        e->said_size = 1;
     }
     if (fit == 0)
         return 0;
@@ -113,7 +106,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
     stin__export_state *e = &ctx->visibility;
     const int *vp = ctx->frame.viewport;
     int tile_w = vp[0] + vp[2], tile_h = vp[1] + vp[3];
-    uint32_t groups = (ctx->light_count + LIGHTS_PER_TILE - 1) / LIGHTS_PER_TILE, fit, g;
+    uint32_t groups = (ctx->light_count + LIGHTS_PER_TILE - 1) / LIGHTS_PER_TILE, fit, g, want;
     int coloured = stin__translucent_active(ctx) && ctx->light_count > 0;
     e->valid = 0;
     e->lights = 0;
@@ -122,18 +115,28 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
         return;
     /* a frame without lights still hands out a map (of no lights); with
      * transmittance, a tile a light more, all or nothing */
-    fit = ensure_map(ctx, tile_w, tile_h,
-                     (groups > 0 ? groups : 1) + (coloured ? ctx->light_count : 0u));
-    if (coloured && fit < groups + ctx->light_count) {
-        if (!e->said_size)
+    want = (groups > 0 ? groups : 1) + (coloured ? ctx->light_count : 0u);
+    fit = ensure_map(ctx, tile_w, tile_h, want);
+    if (fit < want && !e->said_size) {
+        if (coloured && fit >= groups)
             stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                       "visibility map: the lights' transmittance tiles do not fit "
-                      "GL_MAX_TEXTURE_SIZE; the map holds visibility only");
+                      "GL_MAX_TEXTURE_SIZE %d at %dx%d a tile; the map holds visibility only",
+                      ctx->caps.max_texture_size, tile_w, tile_h);
+        else
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "visibility map: %u of %u lights fit GL_MAX_TEXTURE_SIZE %d at %dx%d a "
+                      "tile%s",
+                      (unsigned)(LIGHTS_PER_TILE * fit < ctx->light_count ? LIGHTS_PER_TILE * fit
+                                                                          : ctx->light_count),
+                      (unsigned)ctx->light_count, ctx->caps.max_texture_size, tile_w, tile_h,
+                      coloured ? ", and no transmittance" : "");
         e->said_size = 1;
-        coloured = 0;
-    } else if (coloured) {
-        fit = groups;
     }
+    if (coloured && fit < want)
+        coloured = 0;
+    else if (coloured)
+        fit = groups; /* the visibility tiles; the transmittance ones follow */
     stin__mask_frame_end(ctx); /* the mask's depth again: opaque draws only */
     e->valid = fit > 0;
     for (g = 0; g < fit && LIGHTS_PER_TILE * g < ctx->light_count; g++) {

@@ -229,7 +229,10 @@
  * GL_FRAGMENT_PROGRAM_ARB) must be off when a GL1 frame runs.
  * With a GLSL technique, the texture units a frame used (the surface
  * technique's units 1 and 2, the shadow maps' units) are left with no 2D,
- * 1D or cube-map texture bound.
+ * 1D or cube-map texture bound. On GL 4.3 a frame that used shader storage
+ * buffers (deep's early-stop flag: binding point 0; vdsm's CSG product
+ * shadows: points 0-2) leaves those binding points and the generic
+ * GL_SHADER_STORAGE_BUFFER binding at 0.
  * Every other piece of GL state is left as the caller had it (framebuffer
  * sRGB encoding and multisampling too: the frame honours them as the target's).
  * stin_create_mesh leaves the array buffer and vertex array 0's element
