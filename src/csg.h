@@ -18,9 +18,6 @@
  * use; a tree of a - a - a ... would otherwise take 2^depth visits). */
 #define STIN__CSG_MAX_VISITS (1u << 22)
 
-/* Occlusion queries in flight in one scs subtraction run (csg_scs.c). */
-#define STIN__CSG_SCS_QUERIES 256u
-
 typedef struct stin__csg_term {
     uint32_t first, count;   /* literals[first .. first + count), sorted, each primitive once */
 } stin__csg_term;
@@ -126,7 +123,6 @@ typedef struct stin__csg_state {
     GLuint depth_prog, depth_tex;
     GLint u_depth, u_origin;
     int tex_width, tex_height;
-    GLuint scs_queries[STIN__CSG_SCS_QUERIES]; /* scs's early stop (0: no occlusion queries) */
     int said_scs_fallback, said_scs_capped;
     stin__csg_cast_state cast; /* products casting into the lights' maps (csg_cast.c) */
     GLuint resolve_fbo;       /* the framebuffer a resolve runs in (the frame's, or a
@@ -134,6 +130,9 @@ typedef struct stin__csg_state {
     stin__csg_interval_state interval; /* csg_interval.c */
     stin__csg_merge_state merge;       /* csg_merge.c */
     int merged;               /* this frame's resolve kept its depth on the GPU */
+    int region[4];            /* window x, y, w, h the resolve's passes keep to: the
+                               * viewport, or on the GPU the term's or candidate's
+                               * rectangle (csg_bounds.c) */
 } stin__csg_state;
 
 /* Words of normalisation scratch for the desc's capacities. */
@@ -249,6 +248,25 @@ GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
  * pixel (csg_bounds.c). */
 void stin__csg_screen_rect(const struct stin_context *ctx, const stin__draw *d, float rect[4]);
 int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const float b[4]);
+/* The resolve's region (csg_bounds.c). A candidate's surface lies inside
+ * its own rectangle and every plain literal's of its term, so on the GPU
+ * (where nothing outside is read back) a term's or candidate's passes,
+ * clears and quads keep to that rectangle: fill follows the primitives,
+ * not the viewport. reset: the whole viewport. narrow: the viewport cut
+ * to normalised device rectangle ndc with a pixel's margin; 0 when nothing
+ * is left (the candidate covers no pixel). keep_to: a pass state
+ * scissored to the region. */
+void stin__csg_region_reset(struct stin_context *ctx);
+int stin__csg_region_narrow(struct stin_context *ctx, const float ndc[4]);
+void stin__csg_region_keep_to(const struct stin_context *ctx, stin__pass_state *ps);
+/* The window box (x, y, w, h) within the viewport that holds normalised
+ * device rectangle ndc with a pixel's margin; 0 where it is empty. */
+int stin__csg_window_box(const struct stin_context *ctx, const float ndc[4], int box[4]);
+/* The clip w (the distance along the view) of d's bounding box's nearest
+ * corner: a front-to-back key. */
+float stin__csg_nearest_w(const struct stin_context *ctx, const stin__draw *d);
+/* a = a cut to b (both normalised device min x, y, max x, y; empty: min > max). */
+void stin__csg_rect_cut(float a[4], const float b[4]);
 
 /* The resolve's steps on its candidates (csg_merge.c), alike on the CPU
  * and the GPU. A candidate is the depth the bound framebuffer holds.
@@ -295,9 +313,6 @@ GLenum stin__csg_face_hidden(const stin__draw *d);
  * context: goldfeather resolves it). Inside the resolve's geometry_begin. */
 int stin__csg_scs_product(struct stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                           const stin__csg_product *p);
-/* The occlusion query of the early stop, at stin_create where present. */
-void stin__csg_scs_init(struct stin_context *ctx);
-void stin__csg_scs_release(struct stin_context *ctx);
 
 /* Interval (csg_interval.c): product p into r's result (csg_merge.c) when the CSG
  * technique is interval and p fits its limits, returning 1; else 0 (logged

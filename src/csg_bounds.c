@@ -61,3 +61,75 @@ int stin__csg_rects_meet(const stin_context *ctx, const float a[4], const float 
     float mx = 2.0f / (float)(vp[2] > 0 ? vp[2] : 1), my = 2.0f / (float)(vp[3] > 0 ? vp[3] : 1);
     return a[0] <= b[2] + mx && b[0] <= a[2] + mx && a[1] <= b[3] + my && b[1] <= a[3] + my;
 }
+
+void stin__csg_rect_cut(float a[4], const float b[4])
+{
+    int k;
+    for (k = 0; k < 2; k++) {
+        a[k] = b[k] > a[k] ? b[k] : a[k];
+        a[2 + k] = b[2 + k] < a[2 + k] ? b[2 + k] : a[2 + k];
+    }
+}
+
+void stin__csg_region_reset(stin_context *ctx)
+{
+    stin__memcopy(ctx->csg.region, ctx->frame.viewport, sizeof ctx->csg.region);
+}
+
+/* A normalised device coordinate to a window one along axis k, within the
+ * viewport's span [lo, hi]: far-off values (a box reaching behind the eye)
+ * clamp before the conversion to int. */
+static int window_of(const int *vp, int k, float v, int round_up)
+{
+    float w = (float)vp[k] + (v + 1.0f) * 0.5f * (float)vp[2 + k];
+    float lo = (float)vp[k], hi = (float)(vp[k] + vp[2 + k]);
+    w = w < lo ? lo : (w > hi ? hi : w);
+    return round_up ? (int)w + ((float)(int)w < w) : (int)w;
+}
+
+int stin__csg_window_box(const stin_context *ctx, const float ndc[4], int box[4])
+{
+    const int *vp = ctx->frame.viewport;
+    int lo[2], hi[2], k;
+    for (k = 0; k < 2; k++) {
+        if (!(ndc[k] <= ndc[2 + k]))
+            return 0; /* empty, or behind the eye */
+        lo[k] = window_of(vp, k, ndc[k], 0) - 1; /* a pixel's margin: rasterisation */
+        hi[k] = window_of(vp, k, ndc[2 + k], 1) + 1;
+        lo[k] = lo[k] < vp[k] ? vp[k] : lo[k];
+        hi[k] = hi[k] > vp[k] + vp[2 + k] ? vp[k] + vp[2 + k] : hi[k];
+        if (hi[k] <= lo[k])
+            return 0;
+    }
+    box[0] = lo[0];
+    box[1] = lo[1];
+    box[2] = hi[0] - lo[0];
+    box[3] = hi[1] - lo[1];
+    return 1;
+}
+
+int stin__csg_region_narrow(stin_context *ctx, const float ndc[4])
+{
+    return stin__csg_window_box(ctx, ndc, ctx->csg.region);
+}
+
+void stin__csg_region_keep_to(const stin_context *ctx, stin__pass_state *ps)
+{
+    ps->scissor = 1;
+    stin__memcopy(ps->scissor_box, ctx->csg.region, sizeof ps->scissor_box);
+}
+
+float stin__csg_nearest_w(const stin_context *ctx, const stin__draw *d)
+{
+    const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
+    float m[16], nearest = 1e30f;
+    int i;
+    stin__mat4_mul(m, ctx->view_proj, d->transform);
+    for (i = 0; i < 8; i++) {
+        float w = m[3] * ((i & 1) ? info->bounds_max[0] : info->bounds_min[0]) +
+                  m[7] * ((i & 2) ? info->bounds_max[1] : info->bounds_min[1]) +
+                  m[11] * ((i & 4) ? info->bounds_max[2] : info->bounds_min[2]) + m[15];
+        nearest = w < nearest ? w : nearest;
+    }
+    return nearest;
+}

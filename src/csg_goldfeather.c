@@ -188,18 +188,13 @@ static void write_depth(stin_context *ctx, const stin__path *path, const resolve
 }
 
 /* ---- passes ----------------------------------------------------------------- */
-/* Clears keep to the resolve's rectangle (the viewport: a light's map
+/* Clears keep to the resolve's region (at most the viewport: a light's map
  * resolves a corner of a buffer it shares, csg_cast.c). */
 static void clear(stin_context *ctx, GLbitfield bits)
 {
     stin__pass_state ps = stin__pass_defaults;
-    const int *vp = ctx->frame.viewport;
     ps.color_write = 0;
-    ps.scissor = 1;
-    ps.scissor_box[0] = vp[0];
-    ps.scissor_box[1] = vp[1];
-    ps.scissor_box[2] = vp[2];
-    ps.scissor_box[3] = vp[3];
+    stin__csg_region_keep_to(ctx, &ps);
     stin__pass_apply(ctx, &ps); /* depth and stencil writes on */
     GL(ctx, Clear)(bits);
 }
@@ -230,6 +225,7 @@ static void draw_layer(stin_context *ctx, const stin__path *path, const stin__dr
     ps.front.mask = 0xffu;
     ps.front.fail = ps.front.zfail = ps.front.zpass = GL_INCR;
     ps.back = ps.front;
+    stin__csg_region_keep_to(ctx, &ps);
     stin__pass_apply(ctx, &ps);
     path->geometry(ctx, d);
     ctx->stats.passes++;
@@ -270,6 +266,7 @@ static void draw_parity(stin_context *ctx, const stin__path *path, const stin__d
     ps.polygon_offset = 1;
     ps.offset_factor = 0.0f;
     ps.offset_units = -OFFSET_UNITS;
+    stin__csg_region_keep_to(ctx, &ps);
     stin__pass_apply(ctx, &ps);
     path->geometry(ctx, d);
 }
@@ -330,14 +327,26 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
     int layers = 1, k, kept = 0;
     /* a convex surface (the cap's quad too) shows one layer a pixel */
     int one_layer = d->mesh_slot == ctx->csg.cap_slot || ctx->meshes[d->mesh_slot].info.convex;
-    float own[4];
+    float own[4], region[4];
     /* off the candidate's rectangle a plain literal leaves nothing, a
      * complemented one is outside (no pass): passes follow the overlaps */
     stin__csg_screen_rect(ctx, d, own);
-    for (j = 0; j < t->count; j++)
-        if (j != self && !STIN__CSG_COMPLEMENTED(ctx->csg.literals[t->first + j]) &&
-            !meets(ctx, p, ctx->csg.literals[t->first + j], own))
+    stin__memcopy(region, own, sizeof region);
+    for (j = 0; j < t->count; j++) {
+        uint32_t lit = ctx->csg.literals[t->first + j];
+        float rect[4];
+        if (j == self || STIN__CSG_COMPLEMENTED(lit))
+            continue;
+        stin__csg_screen_rect(ctx, &ctx->csg.primitives[p->first_primitive +
+                                                       STIN__CSG_PRIMITIVE_OF(lit)], rect);
+        if (!stin__csg_rects_meet(ctx, own, rect))
             return 0;
+        stin__csg_rect_cut(region, rect); /* the surface lies inside each */
+    }
+    /* on the GPU nothing outside the region is read: the passes keep to it */
+    stin__csg_region_reset(ctx);
+    if (r->gpu && !stin__csg_region_narrow(ctx, region))
+        return 0;
     for (k = 1; k <= layers; k++) {
         clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         draw_layer(ctx, path, d, culled, k);
@@ -510,10 +519,12 @@ void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve
     for (pi = 0; pi < ctx->csg.product_count; pi++) {
         stin__csg_product *p = &ctx->csg.products[pi];
         p->capped = 0;
+        stin__csg_region_reset(ctx); /* scs and goldfeather narrow it on the GPU */
         if (!stin__csg_interval_product(ctx, path, r, p) &&
             !stin__csg_scs_product(ctx, path, r, p))
             resolve_product(ctx, path, r, p);
     }
+    stin__csg_region_reset(ctx);
     path->geometry_end(ctx);
     pack_end(ctx, &saved);
 }
@@ -526,6 +537,7 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
     if (!ctx->csg.product_count || !usable(ctx, &r, gpu))
         return 0;
     ctx->csg.resolve_fbo = ctx->draw_fbo;
+    stin__csg_region_reset(ctx);
     if (gpu && !stin__csg_merge_begin(ctx) && !usable(ctx, &r, 0))
         return 0; /* its framebuffers failed (logged): the CPU's, if the staging holds it */
     stin__csg_resolve_pixels(ctx, path, &r);
@@ -600,7 +612,6 @@ void stin__csg_init(stin_context *ctx)
     c->cap_slot = STIN__NO_SLOT;
     if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
         return;
-    stin__csg_scs_init(ctx);
     if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION))) {
         if (!gl4) {
             stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
@@ -627,7 +638,6 @@ void stin__csg_init(stin_context *ctx)
 void stin__csg_release(stin_context *ctx)
 {
     stin__csg_state *c = &ctx->csg;
-    stin__csg_scs_release(ctx);
     stin__csg_cast_release(ctx);
     stin__csg_merge_release(ctx);
     if (c->depth_prog)

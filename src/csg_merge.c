@@ -186,6 +186,7 @@ static void merge_quad(stin_context *ctx, const stin__csg_select *select)
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;
     ps.color_write = 0;
+    stin__csg_region_keep_to(ctx, &ps);
     stin__pass_apply(ctx, &ps);
     GL(ctx, UseProgram)(m->merge_prog);
     ctx->glsl_surface.current = NULL;
@@ -207,9 +208,11 @@ static void merge_quad(stin_context *ctx, const stin__csg_select *select)
     ctx->stats.passes++;
 }
 
-/* A quad through the kill program with pass state ps. */
-static void kill_quad(stin_context *ctx, const stin__pass_state *ps)
+/* A quad through the kill program with pass state ps, within the
+ * resolve's region. */
+static void kill_quad(stin_context *ctx, stin__pass_state *ps)
 {
+    stin__csg_region_keep_to(ctx, ps);
     stin__pass_apply(ctx, ps);
     GL(ctx, UseProgram)(ctx->csg.merge.kill_prog);
     ctx->glsl_surface.current = NULL;

@@ -6,13 +6,13 @@
  *   1. intersect: depth cleared to 0, the plain primitives' front faces
  *      drawn with depth GREATER: the farthest front face, where a convex
  *      intersection begins;
- *   2. subtract: the complemented primitives in sequence, each pushing the
- *      depth to its back face where the depth lies inside it (its front in
- *      front of the depth, its back behind); the list is run as many times
- *      as the most complemented primitives covering one pixel (sampled with
- *      a saturating stencil count), so every order of those is in the
- *      sequence, and stops early at a run an occlusion query finds changed
- *      nothing;
+ *   2. subtract: the complemented primitives in sequence, front to back,
+ *      each pushing the depth to its back face where the depth lies
+ *      inside it (its front in front of the depth, its back not); the list
+ *      is run at most as many times as complemented primitives can cover
+ *      one pixel (from their window boxes), so every order of those is in
+ *      the sequence, and a run after the first only where a check (a
+ *      stencil count of the primitives the depth lies in) finds one;
  *   3. clip: a pixel survives where the depth lies in front of every plain
  *      primitive's back face, counted in the stencil 255 primitives a batch
  *      (no counter overflows), each batch read back.
@@ -23,11 +23,11 @@
  * front of it: a subtracted box sharing a face's plane takes it away, one
  * touching it from outside does not, an intersected one ending there
  * leaves nothing (the exact reference's rule for crossings at one
- * distance). Passes a term: plain + complemented (the sample) + 3 x
- * complemented x runs + plain (the clip); read-backs on the CPU: the
- * sample, the depth, one stencil each 255 plain primitives; on the GPU a
- * wait for the sample's threshold queries and none else (the early stop's
- * queries aside). */
+ * distance). Passes a term: plain + 3 x complemented x runs + complemented
+ * x (runs - 1) checks + plain; read-backs on the CPU: the depth, one
+ * stencil a check, one each 255 plain primitives; on the GPU one wait a
+ * check. On the GPU the term's passes keep to the rectangle of its plain
+ * primitives' overlap (csg_bounds.c's region). */
 #include "internal.h"
 
 #ifndef OFFSET_UNITS
@@ -68,7 +68,8 @@ static const stin__draw *primitive_of(const stin_context *ctx, const stin__csg_p
 }
 
 /* A pass over the depth with colour writes off; `shown` is the face kept. */
-static stin__pass_state faces(const stin__draw *d, int back, GLenum depth_func, int depth_write)
+static stin__pass_state faces(const stin_context *ctx, const stin__draw *d, int back,
+                              GLenum depth_func, int depth_write)
 {
     stin__pass_state ps = stin__pass_defaults;
     ps.color_write = 0;
@@ -77,6 +78,7 @@ static stin__pass_state faces(const stin__draw *d, int back, GLenum depth_func, 
     ps.depth_write = (unsigned char)depth_write;
     ps.cull = 1;
     ps.cull_face = stin__csg_culled_face(d, back);
+    stin__csg_region_keep_to(ctx, &ps);
     return ps;
 }
 
@@ -120,103 +122,211 @@ static void intersect(stin_context *ctx, const stin__path *path, const stin__csg
     for (li = 0; li < t->count; li++) {
         uint32_t lit = ctx->csg.literals[t->first + li];
         const stin__draw *d = primitive_of(ctx, p, lit);
-        stin__pass_state ps = faces(d, 0, GL_GREATER, 1);
+        stin__pass_state ps = faces(ctx, d, 0, GL_GREATER, 1);
         if (!STIN__CSG_COMPLEMENTED(lit))
             draw(ctx, path, d, &ps);
     }
 }
 
-/* The most complemented primitives of t over one pixel (saturating at 255). */
-static unsigned sample_complexity(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
-                                  const stin__csg_product *p, const stin__csg_term *t)
+/* Which complemented literals of t can move the depth: those whose window
+ * box meets the region. Their boxes go into the csg scratch (idle during
+ * the resolve), 2 words a literal: x and y spans as 16-bit offsets from the
+ * region's corner, an empty span where the literal is plain or off the
+ * region. Returns how many, and in *bound how many can cover one pixel at
+ * most: 1 + the most others one's box meets (255 at most). */
+#define OFF_REGION 0x0000ffffu /* first 0xffff, last 0: empty */
+#define WHOLE_REGION 0xffff0000u
+
+static int listed(const uint32_t *box, uint32_t li) { return box[2u * li] != OFF_REGION; }
+
+static int boxes_meet(const uint32_t *a, const uint32_t *b)
 {
-    unsigned any = 0, most;
-    uint32_t li;
+    int k;
+    for (k = 0; k < 2; k++)
+        if ((a[k] & 0xffffu) > (b[k] >> 16) || (b[k] & 0xffffu) > (a[k] >> 16))
+            return 0;
+    return 1;
+}
+
+/* Literal li's box into box[2 li], box[2 li + 1]; 0 where it is off the
+ * region. Spans past 65536 pixels (no GL has such viewports) are whole. */
+static int box_of(const stin_context *ctx, const stin__draw *d, uint32_t *box)
+{
+    const int *region = ctx->csg.region;
+    float rect[4];
+    int b[4], k;
+    if (region[2] > 0x10000 || region[3] > 0x10000) {
+        box[0] = box[1] = WHOLE_REGION;
+        return 1;
+    }
+    stin__csg_screen_rect(ctx, d, rect);
+    if (!stin__csg_window_box(ctx, rect, b))
+        return 0;
+    for (k = 0; k < 2; k++) {
+        int lo = b[k] - region[k], hi = b[k] + b[2 + k] - region[k];
+        lo = lo < 0 ? 0 : lo;
+        hi = hi > region[2 + k] ? region[2 + k] : hi;
+        if (hi <= lo)
+            return 0;
+        box[k] = (uint32_t)lo | (uint32_t)(hi - 1) << 16;
+    }
+    return 1;
+}
+
+static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
+                                  const stin__csg_term *t, unsigned *bound)
+{
+    uint32_t *box = ctx->csg.scratch, li, lj, n = 0, most = 0;
     for (li = 0; li < t->count; li++) {
         uint32_t lit = ctx->csg.literals[t->first + li];
-        const stin__draw *d = primitive_of(ctx, p, lit);
-        stin__pass_state ps = faces(d, 0, GL_ALWAYS, 0);
-        if (!STIN__CSG_COMPLEMENTED(lit))
-            continue;
-        stencil(&ps, GL_ALWAYS, 0, GL_KEEP, GL_KEEP, GL_INCR);
-        draw(ctx, path, d, &ps);
-        any++; /* convex: each adds one at most */
+        if (!STIN__CSG_COMPLEMENTED(lit) || !box_of(ctx, primitive_of(ctx, p, lit), &box[2u * li]))
+            box[2u * li] = box[2u * li + 1u] = OFF_REGION;
+        else
+            n++;
     }
-    if (!any)
-        return 0;
-    most = stin__csg_stencil_max(ctx, path, r, any < 255u ? any : 255u);
-    stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
-    return most;
+    for (li = 0; li < t->count && most < 255u; li++) {
+        uint32_t meets = 1;
+        if (!listed(box, li))
+            continue;
+        for (lj = 0; lj < t->count; lj++)
+            meets += lj != li && listed(box, lj) && boxes_meet(&box[2u * li], &box[2u * lj]);
+        most = meets > most ? meets : most;
+    }
+    *bound = most < 255u ? most : 255u;
+    return n;
+}
+
+/* The listed literals front to back (nearest corner of the bounding box
+ * first), over the boxes in the scratch: pairs of the key's bits and the
+ * literal, returned as the start of the scratch. A sequence in that order
+ * pushes most pixels through every primitive in its first run (the row
+ * along the view: all of them), so the check below ends it early. Any
+ * order is exact: the runs' count is what makes it so. */
+static uint32_t *order_front_to_back(stin_context *ctx, const stin__csg_product *p,
+                                     const stin__csg_term *t, uint32_t n)
+{
+    uint32_t *pair = ctx->csg.scratch, li, k = 0, gap, i, j;
+    for (li = 0; li < t->count; li++) {
+        float key;
+        if (!listed(pair, li))
+            continue;
+        /* entry k <= li overwrites boxes already read */
+        key = stin__csg_nearest_w(ctx, primitive_of(ctx, p, ctx->csg.literals[t->first + li]));
+        stin__memcopy(&pair[2u * k], &key, sizeof key);
+        pair[2u * k + 1u] = li;
+        k++;
+    }
+    for (gap = n / 2u; gap > 0; gap /= 2u) /* Shell's sort: no heap, n up to the literals */
+        for (i = gap; i < n; i++) {
+            uint32_t moving[2];
+            float key, other;
+            moving[0] = pair[2u * i];
+            moving[1] = pair[2u * i + 1u];
+            stin__memcopy(&key, &moving[0], sizeof key);
+            for (j = i; j >= gap; j -= gap) {
+                stin__memcopy(&other, &pair[2u * (j - gap)], sizeof other);
+                if (!(other > key))
+                    break;
+                pair[2u * j] = pair[2u * (j - gap)];
+                pair[2u * j + 1u] = pair[2u * (j - gap) + 1u];
+            }
+            pair[2u * j] = moving[0];
+            pair[2u * j + 1u] = moving[1];
+        }
+    return pair;
 }
 
 /* Complemented d once: its front in front of the depth marks the pixel (1),
- * its back behind it too promotes the mark (2), the pixels marked 2 take
- * the back face's depth. q, where not 0, counts the pixels that moved. */
-static void subtract_one(stin_context *ctx, const stin__path *path, const stin__draw *d, GLuint q)
+ * its back no nearer than the depth too promotes the mark (2): the depth
+ * lies inside d (goldfeather's parity rule: crossed faces are those in
+ * front, coincident ones included), and those pixels take the back face's
+ * depth. */
+static void subtract_one(stin_context *ctx, const stin__path *path, const stin__draw *d)
 {
-    stin__pass_state ps = faces(d, 0, GL_LESS, 0);
+    stin__pass_state ps = faces(ctx, d, 0, GL_LESS, 0);
     toward_eye(&ps);
     stencil(&ps, GL_ALWAYS, 1, GL_KEEP, GL_KEEP, GL_REPLACE);
     draw(ctx, path, d, &ps);
-    if (q)
-        GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, q);
-    ps = faces(d, 1, GL_GREATER, 0);
+    ps = faces(ctx, d, 1, GL_GEQUAL, 0);
     toward_eye(&ps); /* a back face that near the depth ends the solid there */
     stencil(&ps, GL_EQUAL, 1, GL_ZERO, GL_ZERO, GL_INCR);
     draw(ctx, path, d, &ps);
-    if (q)
-        GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
-    ps = faces(d, 1, GL_ALWAYS, 1); /* the back face's own depth: EQUAL finds it later */
+    ps = faces(ctx, d, 1, GL_ALWAYS, 1); /* the back face's own depth: EQUAL finds it later */
     stencil(&ps, GL_EQUAL, 2, GL_ZERO, GL_ZERO, GL_ZERO);
     draw(ctx, path, d, &ps);
 }
 
-/* The pixels query q counted (0 for no query). */
-static GLuint counted(stin_context *ctx, GLuint q)
+/* Whether the depth still lies inside a listed primitive anywhere: each
+ * counts +1 where its front lies in front of the depth and -1 where its
+ * back does (subtract_one's rule, so a pixel counted is one another run
+ * moves), in one pass per primitive with two-sided stencil and wrapping
+ * counts, else front faces then back faces (increments first: a clamped
+ * count never goes below 0); batches of 255 (no count overflows); the
+ * stencil's largest value read as csg_merge.c reads it (a query on the
+ * GPU). */
+static int still_inside(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
+                        const stin__csg_product *p, const stin__csg_term *t,
+                        const uint32_t *order, uint32_t n)
 {
-    GLuint n = 0;
-    if (q)
-        GL(ctx, GetQueryObjectuiv)(q, GL_QUERY_RESULT, &n);
-    return n;
+    uint64_t caps = ctx->caps.present;
+    int two_sided = (caps & STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP)) &&
+                    (caps & (STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
+                             STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)));
+    GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
+    uint32_t i = 0, batch;
+    while (i < n) {
+        stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
+        for (batch = 0; i < n && batch < 255u; i++, batch++) {
+            uint32_t lit = ctx->csg.literals[t->first + order[2u * i + 1u]];
+            const stin__draw *d = primitive_of(ctx, p, lit);
+            stin__pass_state ps = faces(ctx, d, 0, GL_LESS, 0);
+            int front_is_gl_front = stin__csg_culled_face(d, 0) == GL_BACK; /* not mirrored */
+            toward_eye(&ps);
+            stencil(&ps, GL_ALWAYS, 0, GL_KEEP, GL_KEEP, incr); /* ps.cull_face: the back */
+            if (two_sided) {
+                ps.cull = 0;
+                ps.two_sided = 1;
+                ps.back = ps.front;
+                (front_is_gl_front ? &ps.back : &ps.front)->zpass = decr;
+                draw(ctx, path, d, &ps);
+                continue;
+            }
+            draw(ctx, path, d, &ps);
+            ps.cull_face = ps.cull_face == GL_BACK ? GL_FRONT : GL_BACK;
+            ps.front.zpass = ps.back.zpass = decr;
+            draw(ctx, path, d, &ps);
+        }
+        if (stin__csg_stencil_max(ctx, path, r, 1u))
+            return 1;
+    }
+    return 0;
 }
 
-/* 2. the subtraction sequence: runs over the complemented primitives; the
- * moves of a run are counted in a ring of queries (a query counts from its
- * begin: the marking passes stay outside), each read before its reuse (a
- * read waits for the GPU: the ring is large enough that a run of up to 256
- * complemented primitives waits once, and the last run is not counted). */
+/* 2. the subtraction sequence: runs over the listed complemented
+ * primitives front to back, as many as one pixel's most covering ones (the
+ * boxes' bound), each after the first only where the check finds the
+ * depth still inside one (STIN_DEBUG_CSG_SCS_NO_EARLY_STOP: every run). */
 static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                      const stin__csg_product *p, const stin__csg_term *t)
 {
-    int stop_early = ctx->csg.scs_queries[0] &&
-                     !(ctx->desc.debug_flags & STIN_DEBUG_CSG_SCS_NO_EARLY_STOP);
-    unsigned runs = sample_complexity(ctx, path, r, p, t), run;
-    uint32_t li, k;
-    if (runs == 255u && !ctx->csg.said_scs_capped) {
+    int check = !(ctx->desc.debug_flags & STIN_DEBUG_CSG_SCS_NO_EARLY_STOP);
+    unsigned runs, run;
+    uint32_t n = list_complemented(ctx, p, t, &runs), i;
+    const uint32_t *order = order_front_to_back(ctx, p, t, n);
+    for (run = 0; run < runs; run++) {
+        if (run > 0 && check && !still_inside(ctx, path, r, p, t, order, n))
+            return;
+        ctx->stats.csg_scs_runs++;
+        for (i = 0; i < n; i++)
+            subtract_one(ctx, path,
+                         primitive_of(ctx, p, ctx->csg.literals[t->first + order[2u * i + 1u]]));
+    }
+    if (runs == 255u && check && still_inside(ctx, path, r, p, t, order, n) &&
+        !ctx->csg.said_scs_capped) {
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "scs: 255 or more subtracted primitives cover one pixel; the subtraction "
                   "sequence stops after 255 runs");
         ctx->csg.said_scs_capped = 1;
-    }
-    for (run = 0; run < runs; run++) {
-        GLuint moved = 0;
-        int count = stop_early && run + 1 < runs; /* nothing to stop after the last run */
-        for (li = 0, k = 0; li < t->count; li++) {
-            uint32_t lit = ctx->csg.literals[t->first + li];
-            GLuint q = count ? ctx->csg.scs_queries[k % STIN__CSG_SCS_QUERIES] : 0;
-            if (!STIN__CSG_COMPLEMENTED(lit))
-                continue;
-            if (k >= STIN__CSG_SCS_QUERIES)
-                moved += counted(ctx, q);
-            subtract_one(ctx, path, primitive_of(ctx, p, lit), q);
-            k++;
-        }
-        if (!count)
-            continue;
-        for (li = 0; li < k && li < STIN__CSG_SCS_QUERIES; li++)
-            moved += counted(ctx, ctx->csg.scs_queries[li]);
-        if (!moved) /* every later run would repeat this one */
-            break;
     }
 }
 
@@ -236,7 +346,7 @@ static void clip(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
             if (STIN__CSG_COMPLEMENTED(lit))
                 continue;
             d = primitive_of(ctx, p, lit);
-            ps = faces(d, 1, GL_GREATER, 0);
+            ps = faces(ctx, d, 1, GL_GREATER, 0);
             toward_eye(&ps);
             /* counts only where every earlier one of the batch counted */
             stencil(&ps, GL_EQUAL, (GLint)(n & 0xffu), GL_KEEP, GL_KEEP, GL_INCR);
@@ -254,6 +364,20 @@ static void clip(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
 static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                  const stin__csg_product *p, const stin__csg_term *t)
 {
+    float region[4] = {-1e30f, -1e30f, 1e30f, 1e30f}, rect[4];
+    uint32_t li;
+    /* the term's surface lies inside every plain primitive's rectangle: on
+     * the GPU (nothing outside read back) its passes keep to their overlap */
+    for (li = 0; li < t->count; li++) {
+        uint32_t lit = ctx->csg.literals[t->first + li];
+        if (STIN__CSG_COMPLEMENTED(lit))
+            continue;
+        stin__csg_screen_rect(ctx, primitive_of(ctx, p, lit), rect);
+        stin__csg_rect_cut(region, rect);
+    }
+    stin__csg_region_reset(ctx);
+    if (r->gpu && !stin__csg_region_narrow(ctx, region))
+        return;
     intersect(ctx, path, p, t);
     subtract(ctx, path, r, p, t);
     if (!stin__csg_candidate_open(ctx, r))
@@ -284,26 +408,4 @@ int stin__csg_scs_product(stin_context *ctx, const stin__path *path, stin__csg_p
         term(ctx, path, r, p, &ctx->csg.terms[p->first_term + ti]);
     ctx->stats.csg_scs_products++;
     return 1;
-}
-
-static void forget_queries(stin_context *ctx)
-{
-    uint32_t i;
-    for (i = 0; i < STIN__CSG_SCS_QUERIES; i++)
-        ctx->csg.scs_queries[i] = 0;
-}
-
-void stin__csg_scs_init(stin_context *ctx)
-{
-    forget_queries(ctx);
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_SCS &&
-        (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY)))
-        GL(ctx, GenQueries)(STIN__CSG_SCS_QUERIES, ctx->csg.scs_queries);
-}
-
-void stin__csg_scs_release(stin_context *ctx)
-{
-    if (ctx->csg.scs_queries[0])
-        GL(ctx, DeleteQueries)(STIN__CSG_SCS_QUERIES, ctx->csg.scs_queries);
-    forget_queries(ctx);
 }

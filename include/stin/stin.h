@@ -1393,6 +1393,11 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * rasterised in another buffer and carried through a sampler, can be a
  * step off). Its image equals the CPU resolve's but on pixels an edge
  * passes exactly through (tests/image/csg_test.c: at most 2 a case).
+ * Its passes keep to a rectangle: a term's surface (scs) or a candidate's
+ * (goldfeather) lies inside its own and every plain literal's window
+ * rectangle, and nothing outside is read, so the clears, draws and quads
+ * of that term or candidate are scissored to it (the CPU resolve reads the
+ * viewport and keeps to it).
  * Programs: three, made at stin_create; GL memory: two textures, 8 bytes a
  * pixel for 24-bit depth (16 for 32-bit float), made at the first frame
  * with a product, grown, never shrunk, freed at stin_destroy
@@ -1420,27 +1425,30 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * faces drawn with depth GREATER (the farthest front face, where a convex
  * intersection begins); the complemented primitives in a subtraction
  * sequence, each pushing the depth to its back face where the depth lies
- * inside it, the list run as many times as the most complemented primitives
- * covering one pixel (a saturating stencil count read back once: every
- * order of those is in the sequence), stopping at the first run an
- * occlusion query finds moved nothing (where there are queries; a ring of
- * 256 made at stin_create, read once a run, the last run not counted;
- * STIN_DEBUG_CSG_SCS_NO_EARLY_STOP runs them all);
+ * inside it (its front in front of the depth, its back not), front to back
+ * (the nearest corner of each bounding box first: a row along the view
+ * takes one run), the list run at most as many times as complemented
+ * primitives can cover one pixel (1 + the most others one's window box
+ * meets: every order of those is in the sequence), each run after the
+ * first only where a check finds the depth still inside one of them
+ * somewhere (one pass a primitive counting +1 at its front and -1 at its
+ * back in the stencil, its largest value taken as stencil sample counts
+ * are: one wait; STIN_DEBUG_CSG_SCS_NO_EARLY_STOP runs every run of the
+ * bound; stin_frame_stats.csg_scs_runs counts the runs); complemented
+ * primitives whose boxes miss the term's rectangle are left out;
  * then a pixel survives where the depth lies in front of every plain
  * primitive's back face, counted in the stencil 255 primitives a batch
  * (no counter overflows; STIN_DEBUG_CSG_NO_BATCH shows why), and the
  * nearest survivor per pixel is kept as goldfeather keeps it (on the GPU
  * or the CPU).
  * Faces within 4 depth units of the depth count as in front of it (the
- * coplanar rule above). Passes a term: plain + complemented + 3 x
- * complemented x runs + plain; read-backs on the CPU: 2 + one each 255
- * plain primitives, against goldfeather's per literal and layer (the GPU
- * resolve: one wait for the sample's queries), so it is the faster from a
- * few primitives up (stin-bench --csg on llvmpipe with read-backs, a box
- * minus 7 to 127 spheres: 0.39-0.84 of goldfeather's frame time; at 2
- * primitives the two are within the noise; docs/benchmarks.md). More than
- * 255 complemented
- * primitives over one pixel caps the runs at 255 (logged once).
+ * coplanar rule above). Passes a term: plain + 3 x complemented x runs +
+ * complemented x (runs - 1) checks + plain; read-backs on the CPU: the
+ * depth, one stencil a check and one each 255 plain primitives, against
+ * goldfeather's per literal and layer (the GPU resolve: one wait a check),
+ * so it is the faster from a few primitives up (stin-bench --csg on
+ * llvmpipe, docs/benchmarks.md). More than 255 complemented primitives
+ * over one pixel caps the runs at 255 (logged once).
  * Selection per product: under "scs", a product with a non-convex
  * primitive (or a term of complements only) is resolved by goldfeather,
  * logged once per context (INFO; WARNING where the caller forced scs with
@@ -1515,6 +1523,7 @@ typedef struct stin_frame_stats {
     uint32_t deep_layers;
     /* products resolved by "scs" (the others of a frame went to goldfeather) */
     uint32_t csg_scs_products;
+    uint32_t csg_scs_runs;    /* runs of scs's subtraction sequences (every term) */
     /* depth-peel: geometry passes that peeled a camera layer (the last one,
      * which found nothing, counted: a scene of n layers under a cap above n
      * takes n + 1), and the layers that drew something; dual-peel: its

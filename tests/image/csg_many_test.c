@@ -1,14 +1,24 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * CSG products of 1000 primitives (issue 12: more than 255, no 8-bit
- * stencil counter overflow), scenes generated here:
+ * CSG products of many primitives (issue 12: more than 255, no 8-bit
+ * stencil counter overflow; scs's subtraction sequence), scenes generated
+ * here:
  *   dimples     a slab minus 999 small spheres centred on its top face in
  *               a 37 x 27 grid (one term of 1000 literals), under
  *               goldfeather and scs;
  *   thousand    the intersection of 1000 unit spheres with centres spread
  *               over +-0.3 (one term of 1000 plain literals: scs counts
  *               them 255 a batch; STIN_DEBUG_CSG_NO_BATCH counts them in
- *               one 8-bit counter and must fail here), under scs.
+ *               one 8-bit counter and must fail here), under scs;
+ *   pockets     a box minus 31 spheres on a 6 x 6 grid in its top face,
+ *               each cutting into its neighbours (stin-bench's grid n = 32),
+ *               under scs and goldfeather. No order of the spheres takes a
+ *               pixel through every neighbour it lies in, so scs needs a
+ *               second run; its check must ask for it and then stop:
+ *               "sequence" holds the runs (stin_frame_stats.csg_scs_runs)
+ *               between 2 and fewer than with the check off
+ *               (STIN_DEBUG_CSG_SCS_NO_EARLY_STOP: every run the boxes'
+ *               bound allows), with P and N the same, pixel for pixel.
  * Against the exact CSG reference with csg_test.c's bounds (P on >= 99.9%
  * of the covered pixels, N within 2 degrees on >= 99.5% away from edges),
  * desc.max_csg_primitives and max_csg_literals raised to 1000. Contexts
@@ -30,13 +40,18 @@
 #include <unistd.h>
 
 #define MANY 1000
+#define POCKETS 32 /* primitives: the box and 31 spheres */
+#define POCKET_SIDE 6
 #define MANY_P_RELATIVE 1e-3
 #define MANY_P_ABSOLUTE 1e-3
 #define MANY_P_MIN_MATCH 0.999
 #define MANY_NORMAL_DEGREES 2.0
 #define MANY_NORMAL_MIN_MATCH 0.995
 
-typedef enum shape { DIMPLES, THOUSAND } shape;
+typedef enum shape { DIMPLES, THOUSAND, POCKETS_SHAPE } shape;
+static const char *const shape_names[] = {"dimples", "thousand", "pockets"};
+
+static int primitives_of(shape sh) { return sh == POCKETS_SHAPE ? POCKETS : MANY; }
 
 /* A deterministic spread in [-1, 1). */
 static double spread(unsigned *state)
@@ -58,7 +73,15 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
         snprintf(err, err_size, "cannot write a temporary scene");
         return 0;
     }
-    if (sh == DIMPLES)
+    if (sh == POCKETS_SHAPE)
+        fprintf(f, "{\"camera\": {\"eye\": [0, 2, 4], \"target\": [0, 0, 0], \"fovy\": 45},\n"
+                   "\"meshes\": {\"box\": {\"primitive\": \"box\", \"size\": [2, 1, 2]},\n"
+                   "  \"ball\": {\"primitive\": \"sphere\", \"radius\": %.6f, \"slices\": 24, "
+                   "\"stacks\": 16}},\n"
+                   "\"materials\": {\"m\": {\"color\": [0.7, 0.7, 0.8]}},\n"
+                   "\"objects\": [{\"name\": \"box\", \"mesh\": \"box\", \"material\": \"m\"}",
+                0.6 * 1.8 / POCKET_SIDE); /* past half the step: neighbours intersect */
+    else if (sh == DIMPLES)
         fprintf(f, "{\"camera\": {\"eye\": [0, 4.2, 2.6], \"target\": [0, 0, 0.1], \"fovy\": 45},\n"
                    "\"meshes\": {\"slab\": {\"primitive\": \"box\", \"size\": [4, 0.4, 3]},\n"
                    "  \"ball\": {\"primitive\": \"sphere\", \"radius\": 0.045, \"slices\": 10, "
@@ -71,9 +94,14 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
                    "\"slices\": 16, \"stacks\": 12}},\n"
                    "\"materials\": {\"m\": {\"color\": [0.7, 0.7, 0.8]}},\n"
                    "\"objects\": [");
-    for (i = sh == DIMPLES ? 1 : 0; i < MANY; i++) {
+    for (i = sh == THOUSAND ? 0 : 1; i < primitives_of(sh); i++) {
         double x, y, z;
-        if (sh == DIMPLES) {
+        if (sh == POCKETS_SHAPE) {
+            double step = 1.8 / POCKET_SIDE;
+            x = -0.9 + step * (0.5 + (i - 1) % POCKET_SIDE);
+            y = 0.5;
+            z = -0.9 + step * (0.5 + (i - 1) / POCKET_SIDE);
+        } else if (sh == DIMPLES) {
             x = -1.85 + 3.7 * ((i - 1) % 37) / 36.0;
             y = 0.2;
             z = -1.3 + 2.6 * ((i - 1) / 37) / 26.0;
@@ -94,27 +122,28 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
 }
 
 /* Primitive i is object i, nested to the right so the reference's
- * evaluation stops early: dimples slab - (b1 u (b2 u ... b999)), thousand
- * b0 n (b1 n ... b999); stin's normal form is one term either way. */
+ * evaluation stops early: dimples slab - (b1 u (b2 u ... b999)) (pockets
+ * alike), thousand b0 n (b1 n ... b999); stin's normal form is one term
+ * either way. */
 static void make_product(shape sh, int *objects, stin_csg_node *nodes)
 {
-    int i;
-    for (i = 0; i < MANY; i++) {
+    int i, n = primitives_of(sh);
+    for (i = 0; i < n; i++) {
         objects[i] = i;
         nodes[i].op = STIN_CSG_PRIMITIVE;
         nodes[i].primitive = (uint32_t)i;
         nodes[i].a = nodes[i].b = 0;
     }
-    /* node MANY + j joins primitive MANY - 2 - j with the node before it
-     * (the last primitive at first) */
-    for (i = 0; i < MANY - 1; i++) {
-        stin_csg_node *n = &nodes[MANY + i];
-        int last = i == MANY - 2;
-        n->op = !last ? (sh == DIMPLES ? STIN_CSG_UNION : STIN_CSG_INTERSECTION)
-                      : (sh == DIMPLES ? STIN_CSG_SUBTRACTION : STIN_CSG_INTERSECTION);
-        n->primitive = 0;
-        n->a = (uint32_t)(MANY - 2 - i);
-        n->b = i == 0 ? (uint32_t)(MANY - 1) : (uint32_t)(MANY + i - 1);
+    /* node n + j joins primitive n - 2 - j with the node before it (the
+     * last primitive at first) */
+    for (i = 0; i < n - 1; i++) {
+        stin_csg_node *node = &nodes[n + i];
+        int last = i == n - 2, carve = sh != THOUSAND;
+        node->op = !last ? (carve ? STIN_CSG_UNION : STIN_CSG_INTERSECTION)
+                         : (carve ? STIN_CSG_SUBTRACTION : STIN_CSG_INTERSECTION);
+        node->primitive = 0;
+        node->a = (uint32_t)(n - 2 - i);
+        node->b = i == 0 ? (uint32_t)(n - 1) : (uint32_t)(n + i - 1);
     }
 }
 
@@ -123,6 +152,49 @@ static double now_ms(void)
     struct timespec t;
     clock_gettime(CLOCK_MONOTONIC, &t);
     return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+/* The P and N channels of two captures differ nowhere. */
+static int same_surface(const image *a, const image *b, long *differ)
+{
+    static const char *const names[] = {"P.X", "P.Y", "P.Z", "N.X", "N.Y", "N.Z"};
+    long i;
+    int k;
+    *differ = 0;
+    if (a->width != b->width || a->height != b->height)
+        return 0;
+    for (i = 0; i < (long)a->width * a->height; i++)
+        for (k = 0; k < 6; k++) {
+            int ca = image_channel(a, names[k]), cb = image_channel(b, names[k]);
+            if (ca < 0 || cb < 0)
+                return 0;
+            if (a->pixels[i * a->channels + ca] != b->pixels[i * b->channels + cb]) {
+                (*differ)++;
+                break;
+            }
+        }
+    return 1;
+}
+
+/* scs's check (pockets): a second run asked for, the bound's runs not
+ * needed, the same surface as with every run. */
+static void sequence_check(run *r, const scene *s, capture_options *o, const capture *checked,
+                           const char *name)
+{
+    capture all;
+    long differ = 0;
+    unsigned runs = checked->stats.csg_scs_runs, every;
+    int same;
+    o->debug_flags = STIN_DEBUG_CSG_SCS_NO_EARLY_STOP;
+    if (!capture_forced(r, s, o, STIN_FEATURE_CSG, STIN_TECH_CSG_SCS, &all, name))
+        return;
+    every = all.stats.csg_scs_runs;
+    same = same_surface(&checked->img, &all.img, &differ);
+    report(r, runs >= 2 && runs < every && same && differ == 0 ? "PASS" : "FAIL", name,
+           "%u runs with the check, %u without (need 2 <= runs < %u); P and N differ on %ld "
+           "pixels (need 0)",
+           runs, every, every, same ? differ : -1L);
+    capture_free(&all);
 }
 
 static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint32_t debug)
@@ -144,7 +216,7 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
     double ms;
     size_t i;
     snprintf(name, sizeof name, "%s/csg-%s-%s%s/P", stin_tier_name(tier),
-             stin_technique_name(tech), sh == DIMPLES ? "dimples" : "thousand",
+             stin_technique_name(tech), shape_names[sh],
              debug ? "-no-batch" : "");
     if (!make_scene(sh, &s, err, sizeof err)) {
         report(r, "FAIL", name, "%s", err);
@@ -152,9 +224,9 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
     }
     make_product(sh, objects, nodes);
     product.objects = rp.objects = objects;
-    product.primitive_count = rp.primitive_count = MANY;
+    product.primitive_count = rp.primitive_count = (uint32_t)primitives_of(sh);
     product.nodes = rp.nodes = nodes;
-    product.node_count = rp.node_count = 2 * MANY - 1;
+    product.node_count = rp.node_count = (uint32_t)(2 * primitives_of(sh) - 1);
     memset(&o, 0, sizeof o);
     o.tier = tier;
     o.csg = &product;
@@ -196,7 +268,7 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
                                               cr.covered : 0;
         report(r, cr.covered && match >= MANY_P_MIN_MATCH ? "PASS" : "FAIL", name,
                "%d primitives: P matches the CSG reference on %.3f%% of %ld covered pixels "
-               "(coverage differs on %ld, P on %ld; need %.1f%%; %u passes)", MANY,
+               "(coverage differs on %ld, P on %ld; need %.1f%%; %u passes)", primitives_of(sh),
                100.0 * match, cr.covered, cr.coverage_mismatch, cr.p_mismatch,
                100.0 * MANY_P_MIN_MATCH, cap.stats.passes);
     }
@@ -211,6 +283,10 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
            cr.normal_compared, cr.normal_max_deg, 100.0 * MANY_NORMAL_MIN_MATCH);
     strcpy(name + strlen(name) - 1, "gl-clean");
     capture_report_clean(r, name, &cap);
+    if (sh == POCKETS_SHAPE && tech == STIN_TECH_CSG_SCS) {
+        strcpy(name + strlen(name) - 8, "sequence");
+        sequence_check(r, &s, &o, &cap, name);
+    }
 done:
     if (have_cap)
         capture_free(&cap);
@@ -225,6 +301,8 @@ void csg_many_tests(run *r, stin_tier tier)
     run_many(r, tier, DIMPLES, STIN_TECH_CSG_SCS, 0);
     run_many(r, tier, DIMPLES, STIN_TECH_CSG_GOLDFEATHER, 0);
     run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, 0);
+    run_many(r, tier, POCKETS_SHAPE, STIN_TECH_CSG_SCS, 0);
+    run_many(r, tier, POCKETS_SHAPE, STIN_TECH_CSG_GOLDFEATHER, 0);
     if (getenv("STIN_CSG_BREAK_BATCH")) /* the proof that batching matters: must FAIL */
         run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, STIN_DEBUG_CSG_NO_BATCH);
 }
