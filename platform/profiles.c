@@ -31,7 +31,7 @@
 /* GL 2.1 class: no VAO or float textures (GL 3.0), nothing of GL 3.2+. */
 #define GL21_HIDE                                                                 \
     (BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) |   \
-     BIT(COMPUTE))
+     BIT(COMPUTE) | BIT(TIMER_QUERY))
 /* GL 3.3 class: the 4.x stages Mesa still lists as extensions. */
 #define GL33_HIDE (BIT(TESSELLATION) | BIT(COMPUTE))
 

@@ -312,6 +312,7 @@ static void release_gl(stin_context *ctx)
     stin__deep_release(ctx);
     stin__coloured_release(ctx);
     stin__peel_release(ctx);
+    stin__times_release(ctx);
 }
 
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
@@ -410,6 +411,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         stin__csg_init(ctx);
         stin__csg_interval_init(ctx);
         stin__outline_init(ctx);
+        stin__times_init(ctx);
     }
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */

@@ -285,6 +285,13 @@ static void order_draws(stin_context *ctx)
 }
 
 /* ---- stages ---------------------------------------------------------------- */
+/* A light's deep or colour map, timed as the translucent stage. */
+static void translucent_light(stin_context *ctx, uint32_t li)
+{
+    stin_stage was = stin__times_enter(ctx, STIN_STAGE_TRANSLUCENT);
+    stin__translucent_light(ctx, li);
+    (void)stin__times_enter(ctx, was);
+}
 
 /* GL is the caller's until now (the projection was set at begin). */
 static void stage_prepare(stin_context *ctx)
@@ -327,17 +334,21 @@ static void stage_target(stin_context *ctx)
 static void shade_lit(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
                       float weight)
 {
+    stin_stage was = stin__times_enter(ctx, STIN_STAGE_LIGHTING);
     (void)weight;
     path->lit(ctx, l);
+    (void)stin__times_enter(ctx, was);
 }
 
 static void shade_flat(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
                        float weight)
 {
     float white[4];
+    stin_stage was = stin__times_enter(ctx, STIN_STAGE_LIGHTING);
     white[0] = white[1] = white[2] = weight;
     white[3] = 1.0f;
     path->flat(ctx, STIN__ALL, white, l);
+    (void)stin__times_enter(ctx, was);
 }
 
 /* Lights whose visibility the technique writes into the screen mask, in
@@ -356,7 +367,7 @@ static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lig
         int n = 0;
         uint32_t first = li;
         if (size == 1)
-            stin__translucent_light(ctx, li);
+            translucent_light(ctx, li);
         if (!stin__mask_begin(ctx, path, visibility ? STIN__ALL : STIN__OPAQUE)) {
             stin__translucent_light_done(ctx);
             return 0;
@@ -367,12 +378,14 @@ static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lig
                 group[n++] = ctx->lights[li];
             }
         stin__mask_end(ctx);
+        (void)stin__times_enter(ctx, STIN_STAGE_LIGHTING);
         if (n > 0 && visibility) {
             static const float white[4] = {1, 1, 1, 1};
             path->flat(ctx, STIN__ALL, white, &group[0]);
         } else if (n > 0) {
             path->lit_lights(ctx, group, n);
         }
+        (void)stin__times_enter(ctx, STIN_STAGE_SHADOW);
         stin__mask_read_done(ctx);
         stin__translucent_light_done(ctx);
     }
@@ -385,15 +398,17 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
 {
     uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
     unsigned char masked[STIN__MAX_LIGHTS] = {0};
+    stin_stage was = stin__times_enter(ctx, STIN_STAGE_SHADOW);
     if (ctx->shadow->mask && ctx->mask.usable && path->lit_lights)
         (void)masked_lights(ctx, path, lights, visibility, masked);
     for (li = 0; li < lights; li++)
         if (!masked[li]) {
-            stin__translucent_light(ctx, li);
+            translucent_light(ctx, li);
             ctx->shadow->light(ctx, path, li, visibility ? shade_flat : shade_lit);
             stin__translucent_light_done(ctx);
         }
     stin__mask_frame_end(ctx);
+    (void)stin__times_enter(ctx, was);
 }
 
 /* A peeled layer's lights without shadows, in batches of the path's size. */
@@ -411,8 +426,10 @@ static void unshadowed_lights(stin_context *ctx, const stin__path *path)
 static void shade_sorted(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
                          float weight)
 {
+    stin_stage was = stin__times_enter(ctx, STIN_STAGE_LIGHTING);
     (void)weight;
     path->blended_one(ctx, ctx->peel.sorted_draw, l);
+    (void)stin__times_enter(ctx, was);
 }
 
 /* sorted in a shadowed frame, where the technique tests a map per fragment:
@@ -430,11 +447,14 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
         ctx->peel.sorted_draw = d;
         path->blended_one(ctx, d, NULL);
         for (li = 0; li < ctx->light_count; li++) {
-            stin__translucent_light(ctx, li);
-            if (stin__sorted_light_shadowed(ctx, li))
+            translucent_light(ctx, li);
+            if (stin__sorted_light_shadowed(ctx, li)) {
+                stin_stage was = stin__times_enter(ctx, STIN_STAGE_SHADOW);
                 ctx->shadow->light(ctx, path, li, shade_sorted);
-            else
+                (void)stin__times_enter(ctx, was);
+            } else {
                 shade_sorted(ctx, path, &ctx->lights[li], 1.0f);
+            }
             stin__translucent_light_done(ctx);
         }
     }
@@ -451,7 +471,7 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
  * sorted: per object far to near, lit and shadowed light by light where
  * the technique tests a map per fragment (sorted_shadowed), else in the
  * path's light batches unshadowed (logged by stin__sorted_shadowed). */
-static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
+static void blended_draws(stin_context *ctx, const stin__path *path, int shadowed)
 {
     int vdsm_layers;
     if (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY)
@@ -491,6 +511,13 @@ static void stage_blended(stin_context *ctx, const stin__path *path, int shadowe
         stin__vdsm_buffer_opaque(ctx, path);
 }
 
+static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
+{
+    stin_stage was = stin__times_enter(ctx, STIN_STAGE_BLENDED);
+    blended_draws(ctx, path, shadowed);
+    (void)stin__times_enter(ctx, was);
+}
+
 /* The frame plan. Stages: light pre-passes -> target -> depth and ambient ->
  * per light visibility and lighting -> blended draws -> the visibility
  * export. Without shadows (no technique, or no lights) the lighting is all
@@ -501,14 +528,18 @@ static void run_plan(stin_context *ctx)
     int visibility = ctx->frame.output == STIN_OUTPUT_VISIBILITY;
     int shadowed = ctx->shadow->light && ctx->light_count > 0 && !ctx->target.shadows_off;
     stage_prepare(ctx);
+    stin__times_begin(ctx, STIN_STAGE_PREPASS);
     stage_light_prepasses(ctx);
+    (void)stin__times_enter(ctx, STIN_STAGE_BASE);
     stage_target(ctx);
     path->begin(ctx);
+    (void)stin__times_enter(ctx, STIN_STAGE_CSG);
     if (stin__csg_resolve(ctx, path)) { /* the products' depth, under every later pass */
         stin__csg_faces(ctx);
         if (ctx->shadow == &stin__shadow_vdsm)
             stin__vdsm_buffer_csg(ctx, path);
     }
+    (void)stin__times_enter(ctx, STIN_STAGE_BASE);
     if (ctx->frame.export_visibility == STIN_EXPORT_VISIBILITY_ONLY) {
         path->ambient(ctx, STIN__OPAQUE, 1); /* the depth the application shades against */
     } else if (ctx->frame.output == STIN_OUTPUT_NORMAL) {
@@ -529,9 +560,11 @@ static void run_plan(stin_context *ctx)
     if ((ctx->desc.debug_flags & STIN_DEBUG_SHOW_VOLUMES) && ctx->shadow == &stin__shadow_volume &&
         shadowed)
         stin__volume_debug_overlay(ctx, path);
+    (void)stin__times_enter(ctx, STIN_STAGE_EXPORT);
     stin__export_stage(ctx, path, shadowed);
     stin__outline_stage(ctx, path);
     path->end(ctx);
+    stin__times_end(ctx);
 }
 
 stin_result stin_end_frame(stin_context *ctx)

@@ -118,6 +118,7 @@
     X(void, Uniform3fv, (GLint loc, GLsizei n, const GLfloat *v), STIN_CAP_GLSL, "")      \
     X(void, Uniform4fv, (GLint loc, GLsizei n, const GLfloat *v), STIN_CAP_GLSL, "")      \
     X(void, Uniform4iv, (GLint loc, GLsizei n, const GLint *v), STIN_CAP_GLSL, "")        \
+    X(void, Uniform1iv, (GLint loc, GLsizei n, const GLint *v), STIN_CAP_GLSL, "")        \
     X(void, Uniform2uiv, (GLint loc, GLsizei n, const GLuint *v), NEED_GL30, "")          \
     X(void, Uniform4uiv, (GLint loc, GLsizei n, const GLuint *v), NEED_GL30, "")          \
     X(void, UniformMatrix3fv, (GLint loc, GLsizei n, GLboolean t, const GLfloat *v), STIN_CAP_GLSL, "") \
@@ -151,6 +152,10 @@
     X(void, BlendEquationSeparate, (GLenum rgb, GLenum alpha), NEED_GL30, "")              \
     X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *v), STIN_CAP_OCCLUSION_QUERY, \
       "glGetQueryObjectuivARB")                                                            \
+    /* GL 3.3 / ARB_timer_query (STIN_DEBUG_STAGE_TIMES) */                                \
+    X(void, QueryCounter, (GLuint id, GLenum target), STIN_CAP_TIMER_QUERY, "")            \
+    X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, GLuint64 *v), STIN_CAP_TIMER_QUERY, \
+      "")                                                                                  \
     /* GL 4.0 / ARB_tessellation_shader */                                                 \
     X(void, PatchParameteri, (GLenum pname, GLint value), STIN_CAP_TESSELLATION, "")                                            \
     /* deep shadow maps: layers of array textures */                                      \

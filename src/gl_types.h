@@ -20,6 +20,7 @@ typedef unsigned int GLbitfield;
 typedef int GLint;
 typedef int GLsizei;
 typedef unsigned int GLuint;
+typedef uint64_t GLuint64;
 typedef float GLfloat;
 typedef double GLdouble;
 typedef char GLchar;
@@ -236,6 +237,7 @@ typedef void GLvoid;
 #define GL_RGBA16F 0x881A
 #define GL_PRIMITIVES_GENERATED 0x8C87
 #define GL_QUERY_RESULT 0x8866
+#define GL_TIMESTAMP 0x8E28
 #define GL_STENCIL_ATTACHMENT 0x8D20
 #define GL_DEPTH_STENCIL 0x84F9
 #define GL_UNSIGNED_INT_24_8 0x84FA

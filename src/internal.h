@@ -20,6 +20,7 @@
 #include "csg.h"
 #include "translucent.h"
 #include "transparency.h"
+#include "stage_times.h"
 
 typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
 
@@ -98,6 +99,7 @@ struct stin_context {
     stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
     stin__coloured_state coloured; /* translucent shadows' colour maps (translucent_coloured.c) */
     stin__peel_state peel;    /* transparency's camera layers (transparency_peel.c) */
+    stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (stage_times.c) */
 
     /* surface detail */
     struct {

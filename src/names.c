@@ -94,3 +94,19 @@ stin_technique stin_technique_from_name(const char *name)
             return (stin_technique)t;
     return STIN_TECH_NONE;
 }
+
+const char *stin_stage_name(stin_stage s)
+{
+    switch (s) {
+    case STIN_STAGE_PREPASS: return "prepass";
+    case STIN_STAGE_CSG: return "csg";
+    case STIN_STAGE_BASE: return "base";
+    case STIN_STAGE_TRANSLUCENT: return "translucent";
+    case STIN_STAGE_SHADOW: return "shadow";
+    case STIN_STAGE_LIGHTING: return "lighting";
+    case STIN_STAGE_BLENDED: return "blended";
+    case STIN_STAGE_EXPORT: return "export";
+    case STIN_STAGE_COUNT: break;
+    }
+    return "unknown stage";
+}

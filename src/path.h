@@ -30,9 +30,10 @@ typedef struct stin__displace_locs {
 
 /* A translucent-shadows lookup chunk's uniforms (translucent.c): the kind
  * of map the light has (0 none, 1 one face, 2 six), the faces' matrices,
- * the technique's params and its two samplers. */
+ * the technique's params, its two samplers and (deep) the layers each face
+ * holds. */
 typedef struct stin__translucent_locs {
-    GLint kind, matrix, params, maps[2];
+    GLint kind, matrix, params, maps[2], face_layers;
 } stin__translucent_locs;
 
 /* GLSL programs of one tier. */

@@ -12,22 +12,23 @@ const char *stin__translucent_chunk(const stin_context *ctx)
 }
 
 static void locate(stin_context *ctx, GLuint prog, stin__translucent_locs *l,
-                   const char *const names[5])
+                   const char *const names[6])
 {
     l->kind = GL(ctx, GetUniformLocation)(prog, names[0]);
     l->matrix = GL(ctx, GetUniformLocation)(prog, names[1]);
     l->params = GL(ctx, GetUniformLocation)(prog, names[2]);
     l->maps[0] = GL(ctx, GetUniformLocation)(prog, names[3]);
     l->maps[1] = GL(ctx, GetUniformLocation)(prog, names[4]);
+    l->face_layers = names[5] ? GL(ctx, GetUniformLocation)(prog, names[5]) : -1;
 }
 
 void stin__translucent_locate(stin_context *ctx, stin__program *p)
 {
-    static const char *const deep[5] = {"u_deep_kind", "u_deep_matrix", "u_deep_params",
-                                        "u_deep_even", "u_deep_odd"};
-    static const char *const coloured[5] = {"u_coloured_kind", "u_coloured_matrix",
+    static const char *const deep[6] = {"u_deep_kind", "u_deep_matrix", "u_deep_params",
+                                        "u_deep_even", "u_deep_odd", "u_deep_face_layers"};
+    static const char *const coloured[6] = {"u_coloured_kind", "u_coloured_matrix",
                                             "u_coloured_params", "u_coloured_map",
-                                            "u_coloured_depth"};
+                                            "u_coloured_depth", NULL};
     locate(ctx, p->name, &p->deep, deep);
     locate(ctx, p->name, &p->coloured, coloured);
 }

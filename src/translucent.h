@@ -39,6 +39,9 @@ typedef struct stin__deep_state {
     int frame_transparent; /* this frame has transparent draws */
     int kind;              /* the light being shaded: 0 no map, 1 one face, 2 six */
     float matrix[STIN__DEEP_FACES][16]; /* world -> [0,1] window coordinates per face */
+    GLint face_layers[STIN__DEEP_FACES]; /* layers the lookup reads per face: those
+                                          * peeled before an empty one, 0 for a face
+                                          * no transparent caster reaches */
     float normal_offset;   /* world units per unit clip w: 1.5 texels */
 } stin__deep_state;
 

@@ -12,9 +12,11 @@
  * layer that drew nothing (later layers would be empty too): on GL 4.3 (the
  * compute capability, with shader storage buffers) the peel shader sets a
  * 4-byte flag read back after the pass, on GL 3.2-4.2 an occlusion query
- * counts the pass's samples;
- * the lookup stops at an empty layer, so stale texels beyond it are never
- * read and the image is the same with every layer peeled. Opaque casters
+ * counts the pass's samples; a face no transparent caster's bounding box
+ * reaches stops before its first layer (no clear, no draw, no wait). The
+ * lookup reads a face's layers up to its first empty one (a uniform per
+ * face), so stale texels beyond it are never read and the image is the
+ * same with every layer peeled. Opaque casters
  * stay the shadows technique's; the lit programs multiply its visibility by
  * the deep map's (translucent_deep.glsl). */
 #include "internal.h"
@@ -197,6 +199,7 @@ void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
     params[3] = (float)s->layer_cap;
     if (!stin__translucent_set(ctx, &p->deep, s->kind, &s->matrix[0][0], params))
         return;
+    GL(ctx, Uniform1iv)(p->deep.face_layers, STIN__DEEP_FACES, s->face_layers);
     for (i = 0; i < 2; i++)
         stin__bind_unit(ctx, s->unit + i, GL_TEXTURE_2D_ARRAY, s->layers[i]);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
@@ -217,8 +220,45 @@ static void draw_transparent(stin_context *ctx)
     stin__translucent_draw_casters(ctx, s->u_model, s->u_albedo, s->u_has_albedo_tex, &s->displace);
 }
 
+/* Whether a transparent caster's bounding box reaches into the face's
+ * frustum (view_proj): one whose corners all lie beyond one of its planes
+ * draws nothing there. A displaced caster leaves its mesh's box: it counts. */
+static int face_reached(const stin_context *ctx, const float view_proj[16])
+{
+    uint32_t i;
+    int c, k;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[i];
+        const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
+        unsigned beyond = 0x3fu; /* per plane: every corner so far beyond it */
+        float m[16];
+        if (d->material.color[3] >= 1.0f)
+            continue;
+        if (d->material.displace)
+            return 1;
+        stin__mat4_mul(m, view_proj, d->transform);
+        for (c = 0; c < 8 && beyond; c++) {
+            const float p[3] = {(c & 1) ? info->bounds_max[0] : info->bounds_min[0],
+                                (c & 2) ? info->bounds_max[1] : info->bounds_min[1],
+                                (c & 4) ? info->bounds_max[2] : info->bounds_min[2]};
+            float x[4];
+            unsigned out = 0;
+            for (k = 0; k < 4; k++)
+                x[k] = m[k] * p[0] + m[4 + k] * p[1] + m[8 + k] * p[2] + m[12 + k];
+            for (k = 0; k < 3; k++)
+                out |= (x[k] < -x[3] ? 1u : 0u) << (2 * k) | (x[k] > x[3] ? 2u : 0u) << (2 * k);
+            beyond &= out;
+        }
+        if (!beyond)
+            return 1;
+    }
+    return 0;
+}
+
 /* One face's layers, from its view and projection; layer k of the face is
- * slice face * slices + k / 2 of layers[k % 2]. */
+ * slice face * slices + k / 2 of layers[k % 2]. With the early stop a face
+ * no transparent caster reaches peels nothing (its lookup reads no layer),
+ * and one that does stops at its first empty layer. */
 static void peel_face(stin_context *ctx, int face, const float view[16], const float proj[16])
 {
     stin__deep_state *s = &ctx->deep;
@@ -228,7 +268,13 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
     uint32_t k;
     stin__mat4_mul(view_proj, proj, view);
     stin__light_window_matrix(s->matrix[face], view, proj);
+    s->face_layers[face] = (GLint)s->layer_cap;
+    if (stop_early && !face_reached(ctx, view_proj)) {
+        s->face_layers[face] = 0;
+        return;
+    }
     GL(ctx, UniformMatrix4fv)(s->u_view_proj, 1, GL_FALSE, view_proj);
+    ctx->stats.deep_faces++;
     for (k = 0; k < s->layer_cap; k++) {
         GLint slice = (GLint)((uint32_t)face * s->slices + k / 2u);
         GLuint drawn = 1;
@@ -257,8 +303,10 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
             GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
             GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &drawn);
         }
-        if (!drawn)
-            break; /* empty, so every deeper layer would be: the lookup stops here */
+        if (!drawn) { /* empty, so every deeper layer would be: the lookup stops here */
+            s->face_layers[face] = (GLint)k;
+            break;
+        }
     }
 }
 

@@ -365,7 +365,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(COMPUTE, "compute shaders", 43, "GL_ARB_compute_shader")                        \
     X(FIXED_FUNCTION, "compatibility profile (fixed function)", 11, "")                \
     X(PACKED_DEPTH_STENCIL, "packed depth-stencil textures", 30,                      \
-      "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")
+      "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")                        \
+    X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -582,7 +583,11 @@ const char *stin_feature_name(stin_feature f);
  * reads back (binding point 0 and the generic GL_SHADER_STORAGE_BUFFER
  * binding are left at 0), on GL 3.2-4.2 an occlusion query
  * (STIN_DEBUG_DEEP_QUERY_STOP: the query everywhere;
- * STIN_DEBUG_DEEP_NO_EARLY_STOP peels every layer: the same image). Surfaces beyond desc.deep_layers
+ * STIN_DEBUG_DEEP_NO_EARLY_STOP peels every layer of every face: the same
+ * image); a face whose frustum no transparent caster's bounding box
+ * reaches (a displaced one always counts) peels no layer at all, and the
+ * lookup reads each face's layers up to its first empty one
+ * (stin_frame_stats.deep_faces). Surfaces beyond desc.deep_layers
  * along a ray are not counted (their light passes). Lights are lit one per
  * pass while it is in use, and a frame without transparent draws draws no
  * layer. Blended draws receive the deep maps' coloured shadows where
@@ -897,9 +902,9 @@ typedef struct stin_desc {
 /* deep: the early stop by an occlusion query even where GL 4.3's storage
  * flag could run (the same image and layer count) */
 #define STIN_DEBUG_DEEP_QUERY_STOP 32768u
-/* scs: run every pass of each subtraction sequence (as many as the sampled
- * depth complexity), without stopping at the first pass an occlusion query
- * finds changed nothing (the same image, more passes) */
+/* scs: run every run of each subtraction sequence (as many as its window
+ * boxes' bound allows), without the stencil check that ends it where the
+ * depth lies inside no subtracted primitive (the same image, more passes) */
 #define STIN_DEBUG_CSG_SCS_NO_EARLY_STOP 65536u
 /* scs: count a term's plain primitives in one 8-bit stencil counter instead
  * of batches of 255: wrong (nothing drawn) where a term intersects more than
@@ -934,6 +939,12 @@ typedef struct stin_desc {
 /* sorted: the blended draws lit unshadowed in the light batches, as before
  * the map techniques shadowed them; a test that the shadows matter */
 #define STIN_DEBUG_SORTED_UNSHADOWED 4194304u
+/* GPU time per frame stage into stin_frame_stats.stage_ns, from timestamp
+ * queries (GL 3.3 or ARB_timer_query: the "timer queries" capability) at
+ * each change of stage; stin_end_frame waits for the last of them, so a
+ * timed frame ends with the GPU idle (a measurement aid, as
+ * STIN_DEBUG_VDSM_COUNT is). Without the capability stage_times stays 0. */
+#define STIN_DEBUG_STAGE_TIMES 134217728u
 /* dual-peel: run a geometry pass per two layers up to
  * desc.transparency_layers, without stopping at a pass that finds nothing
  * or after a back layer that drew nothing (the same image) */
@@ -1508,6 +1519,28 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
 uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_t term,
                               uint32_t *literals, uint32_t capacity, uint32_t *count);
 
+/* The frame plan's stages as STIN_DEBUG_STAGE_TIMES times them (GPU time
+ * between the stage's timestamps, summed where a stage comes back, as the
+ * per-light ones do light by light). */
+typedef enum stin_stage {
+    STIN_STAGE_PREPASS = 0, /* light pre-passes: the shadow maps (GL1 maps, map-pcf) */
+    STIN_STAGE_CSG,         /* CSG products resolved into the depth (vdsm's copy too) */
+    STIN_STAGE_BASE,        /* target clear, depth and ambient; unshadowed frames' lit
+                             * batches; the normal output */
+    STIN_STAGE_TRANSLUCENT, /* deep and colour maps, made per light */
+    STIN_STAGE_SHADOW,      /* per light: the technique's visibility (stencil volumes,
+                             * screen masks, vdsm's buffers and polygons, map tests) */
+    STIN_STAGE_LIGHTING,    /* per light: the lit passes reading it */
+    STIN_STAGE_BLENDED,     /* blended draws: peeling, sorting, compositing (their
+                             * layers' lights count in shadow and lighting) */
+    STIN_STAGE_EXPORT,      /* the visibility export and the outline */
+    STIN_STAGE_COUNT
+} stin_stage;
+
+/* "prepass", "csg", "base", "translucent", "shadow", "lighting",
+ * "blended", "export"; "unknown stage" else. */
+const char *stin_stage_name(stin_stage s);
+
 typedef struct stin_frame_stats {
     uint32_t draws, lights, passes, triangles;
     uint32_t shadow_volume_triangles; /* volume sides and caps drawn */
@@ -1519,8 +1552,11 @@ typedef struct stin_frame_stats {
     uint32_t vdsm_primitives;
     uint32_t csg_products, csg_terms; /* accepted by stin_draw_csg (terms of their normal forms) */
     uint32_t dropped_csg;      /* products stin_draw_csg refused */
-    /* deep: layers peeled (passes into a deep map), all lights and faces */
-    uint32_t deep_layers;
+    /* deep: layers peeled (passes into a deep map), all lights and faces;
+     * the faces peeled (a spot or directional light's one, a point light's
+     * six, less those no transparent caster's bounding box reaches, which
+     * the early stop leaves unpeeled) */
+    uint32_t deep_layers, deep_faces;
     /* products resolved by "scs" (the others of a frame went to goldfeather) */
     uint32_t csg_scs_products;
     uint32_t csg_scs_runs;    /* runs of scs's subtraction sequences (every term) */
@@ -1555,6 +1591,10 @@ typedef struct stin_frame_stats {
      * the node pool, grown to the most crossings a product took so far) */
     uint32_t vdsm_csg_casts;
     uint64_t vdsm_csg_bytes;
+    /* STIN_DEBUG_STAGE_TIMES: 1 when stage_ns holds this frame's GPU time
+     * per stage in nanoseconds (0: not asked, or no timer queries) */
+    uint32_t stage_times;
+    uint64_t stage_ns[STIN_STAGE_COUNT];
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -16,6 +16,7 @@ uniform mat4 u_deep_matrix[6];  // world -> [0,1] window coordinates of face f
 uniform vec4 u_deep_params;     // x: slices per face, y: texels a side, z: offset per unit w, w: layers
 uniform sampler2DArray u_deep_even;
 uniform sampler2DArray u_deep_odd;
+uniform int u_deep_face_layers[6]; // layers face f holds (0: no transparent caster reaches it)
 
 // The face of a point light's cube that direction d from the light falls
 // in: +x, -x, +y, -y, +z, -z by its major axis (ties to the earlier axis).
@@ -44,7 +45,7 @@ vec3 deep_transmittance(int light)
     int size = int(u_deep_params.y);
     ivec2 texel = clamp(ivec2(t.xy * u_deep_params.y), ivec2(0), ivec2(size - 1));
     int first = face * int(u_deep_params.x);
-    int layers = int(u_deep_params.w);
+    int layers = min(int(u_deep_params.w), u_deep_face_layers[face]);
     vec3 v = vec3(1.0);
     for (int k = 0; k < layers; k++) {
         vec4 layer = (k - 2 * (k / 2)) == 0

@@ -54,6 +54,25 @@ check "--progress" $([ $rc -eq 0 ] && grep -q "^stin-render: loaded tests/scenes
     grep -q "^stin-render: rendered in [0-9.]* s$" "$T/stderr" && [ ! -s "$T/quiet" ] && echo 0 || echo 1) \
     "exit $rc, stderr: $(head -c 300 "$T/stderr"); without --progress: $(head -c 100 "$T/quiet")"
 
+# --stage-times: the beauty frame's GPU time per stage, every stage named,
+# a positive total no larger than the frame's own time (begin to glFinish,
+# with 10% and 1 ms for the clocks' rounding); "not timed" without timer
+# queries (gl21 hides them).
+"$R" tests/scenes/torus.json --size 64x64 --no-output --profile gl45-core --stage-times \
+    > "$T/stdout" 2> "$T/stderr"
+rc=$?
+line=$(grep "^stages (GPU ms):" "$T/stdout")
+frame=$(sed -n 's/^frame: \([0-9.]*\) ms.*/\1/p' "$T/stdout")
+total=$(echo "$line" | sed -n 's/.*; total \([0-9.]*\)$/\1/p')
+ok=1
+[ $rc -eq 0 ] && [ -n "$total" ] && [ -n "$frame" ] &&
+    echo "$line" | grep -q "prepass [0-9.]* csg [0-9.]* base [0-9.]* translucent [0-9.]* shadow [0-9.]* lighting [0-9.]* blended [0-9.]* export [0-9.]*;" &&
+    awk -v t="$total" -v f="$frame" 'BEGIN { exit !(t > 0 && t <= f * 1.1 + 1) }' && ok=0
+check "--stage-times" $ok "exit $rc, stages: $line, frame: $frame ms"
+"$R" tests/scenes/torus.json --size 64x64 --no-output --profile gl21 --stage-times > "$T/stdout" 2>&1
+check "--stage-times without timer queries" $([ $? -eq 0 ] && grep -q "^stages: not timed" "$T/stdout" &&
+    echo 0 || echo 1) "stdout: $(head -c 300 "$T/stdout")"
+
 "$R" tests/scenes/torus.json --size 0x10 > /dev/null 2>&1
 check "bad --size" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --size 0x10"
 

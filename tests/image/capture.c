@@ -76,7 +76,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     have_gpu = 1;
     g.csg = o->csg;
     g.csg_count = o->csg_count;
-    if (!aov_capture(&g, ctx, plat, &out->img, NULL, err, err_size))
+    if (!aov_capture(&g, ctx, plat, &out->img, NULL, NULL, err, err_size))
         goto done;
     out->counters = stin_debug_query_counters(ctx);
     out->stats = stin_query_frame_stats(ctx);

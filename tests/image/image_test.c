@@ -210,7 +210,7 @@ static void test_scene(run *r, stin_tier tier, const char *path)
         per_vertex = (stin_query_caps(ctx)->present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR))
                          ? 1
                          : REFERENCE_GOURAUD_SINGLE_COLOR;
-    if (!aov_capture(&g, ctx, r->plat, &img, NULL, err, sizeof err)) {
+    if (!aov_capture(&g, ctx, r->plat, &img, NULL, NULL, err, sizeof err)) {
         report(r, "FAIL", name, "%s", err);
         goto done;
     }

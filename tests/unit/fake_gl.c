@@ -72,6 +72,7 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Uniform3fv ~, 1
 #define FAKE_STATELESS_Uniform4fv ~, 1
 #define FAKE_STATELESS_Uniform4iv ~, 1
+#define FAKE_STATELESS_Uniform1iv ~, 1
 #define FAKE_STATELESS_Uniform2uiv ~, 1
 #define FAKE_STATELESS_Uniform4uiv ~, 1
 #define FAKE_STATELESS_UniformMatrix3fv ~, 1
@@ -85,6 +86,8 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_GenQueries ~, 1
 #define FAKE_STATELESS_DeleteQueries ~, 1
 #define FAKE_STATELESS_GetQueryObjectuiv ~, 1
+#define FAKE_STATELESS_QueryCounter ~, 1
+#define FAKE_STATELESS_GetQueryObjectui64v ~, 1
 #define FAKE_STATELESS_TexImage3D ~, 1
 #define FAKE_STATELESS_FramebufferTextureLayer ~, 1
 #define FAKE_STATELESS_BlendEquationSeparate ~, 1

@@ -21,6 +21,7 @@ static stin_context *ctx;
 static stin_mesh quad;
 static stin_technique shadows = STIN_TECH_SHADOWS_OFF; /* of the next context */
 static uint64_t caps_mask;
+static uint32_t debug_flags; /* of the next context */
 
 static const float quad_pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 static const uint32_t quad_idx[] = {0, 1, 2, 0, 2, 3};
@@ -60,6 +61,7 @@ static void create_context(const fake_gl_config *cfg, uint32_t max_lights, uint3
     d.max_texture_bytes = max_texture_bytes;
     d.techniques[STIN_FEATURE_SHADOWS] = shadows; /* pass counts are unshadowed by default */
     d.caps_mask = caps_mask;
+    d.debug_flags = debug_flags;
     bytes = stin_memory_size(&d);
     assert_true(bytes > 0);
     block = malloc(bytes);
@@ -694,6 +696,60 @@ static void test_texture_bad_arguments(void **state)
     assert_int_equal(fake_gl.textures_created, 0);
 }
 
+/* STIN_DEBUG_STAGE_TIMES: a timestamp at each change of the frame plan's
+ * stage (volumes through the screen mask, 8 lights: two groups of four,
+ * each its stencil counts and one lit pass), one more at the end, each read
+ * back once; none without the flag, none where the context has no timer
+ * queries (logged once); a frame changing stage more often than the pool
+ * holds goes on, its rest untimed (logged once). */
+static void test_stage_times_follow_the_plan(void **state)
+{
+    static const stin_stage plan[] = {
+        STIN_STAGE_PREPASS, STIN_STAGE_BASE,  STIN_STAGE_CSG,      STIN_STAGE_BASE,
+        STIN_STAGE_SHADOW,  STIN_STAGE_LIGHTING, STIN_STAGE_SHADOW, STIN_STAGE_LIGHTING,
+        STIN_STAGE_SHADOW,  STIN_STAGE_BASE,  STIN_STAGE_BLENDED,  STIN_STAGE_BASE,
+        STIN_STAGE_EXPORT};
+    const uint32_t marks = sizeof plan / sizeof plan[0];
+    stin_frame_stats st;
+    uint32_t i;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VOLUME;
+    debug_flags = STIN_DEBUG_STAGE_TIMES;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    st = frame_with(8, 1, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.stage_times, 1);
+    assert_int_equal(ctx->times.marks, marks);
+    for (i = 0; i < marks; i++)
+        assert_int_equal(ctx->times.stage[i], plan[i]);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], marks + 1);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_GetQueryObjectui64v], marks + 1);
+
+    create_profile(FAKE_GL21, 16, 8); /* no timer queries */
+    st = frame_with(8, 1, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.stage_times, 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], 0);
+    assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "no timer queries"));
+
+    /* sorted blended draws under map-pcf: per draw and light a shadow and
+     * a lighting stage, 8 x 16 x 2 changes and more */
+    shadows = STIN_TECH_SHADOWS_MAP_PCF;
+    caps_mask = STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL); /* no peeling: sorted */
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    st = frame_with(16, 1, 7, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.stage_times, 1);
+    assert_int_equal(ctx->times.marks, STIN__STAGE_MARKS - 1u);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], STIN__STAGE_MARKS);
+    assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "changed stage more than"));
+
+    debug_flags = 0;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    st = frame_with(8, 1, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.stage_times, 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], 0);
+    caps_mask = 0;
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 #define TEST(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
 
 int main(void)
@@ -715,6 +771,7 @@ int main(void)
         TEST(test_frame_projection_is_known_at_begin),
         TEST(test_fixed_function_passes_per_max_lights),
         TEST(test_output_pass_counts),
+        TEST(test_stage_times_follow_the_plan),
         TEST(test_frame_leaves_documented_state),
         TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
         TEST(test_texture_without_mips),

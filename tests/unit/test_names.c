@@ -89,6 +89,19 @@ static void test_tiers_and_features_have_names(void **state)
     assert_string_equal(stin_feature_name(STIN_FEATURE_COUNT), "unknown feature");
 }
 
+static void test_stages_have_names(void **state)
+{
+    const char *names[STIN_STAGE_COUNT];
+    int i;
+    (void)state;
+    for (i = 0; i < STIN_STAGE_COUNT; i++) {
+        names[i] = stin_stage_name((stin_stage)i);
+        assert_named(names[i], "unknown stage");
+    }
+    assert_distinct(names, STIN_STAGE_COUNT);
+    assert_string_equal(stin_stage_name(STIN_STAGE_COUNT), "unknown stage");
+}
+
 static void test_techniques_round_trip(void **state)
 {
     const char *names[STIN_TECH_COUNT];
@@ -181,6 +194,7 @@ int main(void)
         cmocka_unit_test(test_log_items_have_text),
         cmocka_unit_test(test_caps_have_names),
         cmocka_unit_test(test_tiers_and_features_have_names),
+        cmocka_unit_test(test_stages_have_names),
         cmocka_unit_test(test_techniques_round_trip),
         cmocka_unit_test(test_format_conversions),
         cmocka_unit_test(test_format_nan),

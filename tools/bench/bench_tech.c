@@ -180,6 +180,54 @@ static int is_map(stin_technique t)
            t == STIN_TECH_SHADOWS_MAP_COMBINE;
 }
 
+static int by_value(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+#define STAGED_FRAMES 64
+
+/* The row's GPU time per stage: a context of its configuration with
+ * STIN_DEBUG_STAGE_TIMES, one warm-up frame, then the settings' frames (at
+ * most STAGED_FRAMES), the median per stage. Leaves row->staged 0 where
+ * the context has no timer queries. */
+static int staged_row(setup *u, tech_row *row, char *err, size_t err_size)
+{
+    static double ms[STIN_STAGE_COUNT][STAGED_FRAMES];
+    tech_config cfg = row->cfg;
+    side timed;
+    char why[160];
+    int k, i, n = u->st->frames < STAGED_FRAMES ? u->st->frames : STAGED_FRAMES, ok = 0;
+    memset(&timed, 0, sizeof timed);
+    cfg.debug_flags |= STIN_DEBUG_STAGE_TIMES;
+    if (side_create(u, &timed, &cfg, &u->sc, why, sizeof why, err, err_size) <= 0)
+        goto done;
+    for (k = -1; k < n; k++) {
+        stin_frame_stats fs;
+        if (full_frame(u, &timed) < 0) {
+            snprintf(err, err_size, "stin frame failed (stage times)");
+            goto done;
+        }
+        fs = stin_query_frame_stats(timed.ctx);
+        if (!fs.stage_times) {
+            ok = 1; /* no timer queries: no stage column */
+            goto done;
+        }
+        for (i = 0; k >= 0 && i < STIN_STAGE_COUNT; i++)
+            ms[i][k] = fs.stage_ns[i] / 1e6;
+    }
+    for (i = 0; i < STIN_STAGE_COUNT; i++) {
+        qsort(ms[i], (size_t)n, sizeof ms[i][0], by_value);
+        row->stage_ms[i] = ms[i][n / 2];
+    }
+    row->staged = 1;
+    ok = 1;
+done:
+    side_destroy(&timed);
+    return ok;
+}
+
 static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_size)
 {
     const bench_settings *b = u->st->b;
@@ -228,6 +276,8 @@ static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_siz
     row->peel_passes = fs.peel_passes;
     bench_keep_min(&row->on_ms, on_ms, first);
     bench_keep_min(&row->base_ms, base_ms, first);
+    if (first && u->st->stages && !staged_row(u, row, err, err_size))
+        goto done;
     ok = 1;
 done:
     side_destroy(&on);
@@ -297,7 +347,7 @@ int bench_tech_run(const tech_settings *st, const scene *s, tech_row *rows, int 
     for (i = 0; i < row_n; i++) {
         rows[i].rendered = rows[i].passes = rows[i].primitives = 0;
         rows[i].base_ms = rows[i].on_ms = 0.0;
-        rows[i].skipped = 0;
+        rows[i].skipped = rows[i].staged = 0;
         rows[i].why[0] = 0;
         if (rows[i].cfg.pcf_kernel != 0 && rows[i].cfg.pcf_kernel != 1 &&
             rows[i].cfg.pcf_kernel != 3 && rows[i].cfg.pcf_kernel != 5) {

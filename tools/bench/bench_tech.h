@@ -37,6 +37,9 @@ typedef struct tech_settings {
     int frames;              /* timed frames per side, set-up and row */
     int setups;              /* fresh baseline context per set-up, fresh row context per row */
     tech_config base;        /* the baseline every row is timed against */
+    int stages;              /* also each row's GPU time per stage: after its ABBA frames,
+                              * a second context with STIN_DEBUG_STAGE_TIMES, `frames`
+                              * frames, the median per stage (1 set-up: the first) */
 } tech_settings;
 
 /* One row: its configuration (set by the caller) and what was measured. */
@@ -47,6 +50,8 @@ typedef struct tech_row {
     uint32_t primitives;     /* stin_frame_stats.vdsm_primitives of the row's frame */
     uint32_t peel_passes;    /* stin_frame_stats.peel_passes of the row's frame */
     double base_ms, on_ms;   /* per side the lowest set-up median (glFinish included) */
+    int staged;              /* stage_ms holds the row's stage medians (timer queries) */
+    double stage_ms[STIN_STAGE_COUNT];
     int skipped;             /* 1: the context cannot run it; why says so */
     char why[160];
 } tech_row;

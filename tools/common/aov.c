@@ -114,7 +114,7 @@ static int render_read(const scene_gpu *g, stin_context *ctx, stin_platform *p,
 }
 
 int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *img,
-                double *frame_ms, char *err, size_t err_size)
+                double *frame_ms, stin_frame_stats *frame_stats, char *err, size_t err_size)
 {
     int w = stin_platform_width(p), h = stin_platform_height(p), x, y, c, ok = 0;
     size_t n = (size_t)w * h;
@@ -131,6 +131,8 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
         snprintf(img->channel_names[c], sizeof img->channel_names[c], "%s", aov_channel_names[c]);
     if (!render_read(g, ctx, p, STIN_OUTPUT_BEAUTY, beauty, frame_ms, err, err_size))
         goto done;
+    if (frame_stats)
+        *frame_stats = stin_query_frame_stats(ctx);
     if (!stin_platform_read_depth(p, depth)) {
         snprintf(err, err_size, "depth readback failed");
         goto done;

@@ -28,9 +28,11 @@ extern const char *const aov_channel_names[AOV_CHANNELS];
 
 /* Renders the three outputs and fills img (allocated here, rows top to
  * bottom as in files). frame_ms gets the beauty frame's time (begin to
- * glFinish). 1 on success; err says what failed. */
+ * glFinish), frame_stats its statistics (either may be NULL; the
+ * context's own are the last frame's, the visibility output's). 1 on
+ * success; err says what failed. */
 int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *img,
-                double *frame_ms, char *err, size_t err_size);
+                double *frame_ms, stin_frame_stats *frame_stats, char *err, size_t err_size);
 
 /* Depth-buffer unprojection for one pixel centre (x, y from the bottom). */
 void aov_unproject(const double inv_view_proj[16], int width, int height, int x, int y,

@@ -130,11 +130,25 @@ static void frame_camera(scene *s, int width, int height)
            c->near_plane, c->far_plane);
 }
 
-static void print_frame(const stin_context *ctx, const scene *s, double ms, int w, int h)
+/* The beauty frame's figures; stage times where timed asks for them. */
+static void print_frame(const stin_frame_stats *stats, const scene *s, double ms, int w, int h,
+                        int timed)
 {
-    stin_frame_stats st = stin_query_frame_stats(ctx);
+    stin_frame_stats st = *stats;
     printf("frame: %.2f ms (%dx%d, %llu triangles, %u passes)\n", ms, w, h,
            (unsigned long long)scene_triangle_count(s), st.passes);
+    if (st.stage_times) {
+        uint64_t total = 0;
+        int i;
+        printf("stages (GPU ms):");
+        for (i = 0; i < STIN_STAGE_COUNT; i++) {
+            total += st.stage_ns[i];
+            printf(" %s %.3f", stin_stage_name((stin_stage)i), st.stage_ns[i] / 1e6);
+        }
+        printf("; total %.3f\n", total / 1e6);
+    } else if (timed) {
+        printf("stages: not timed (the context has no timer queries)\n");
+    }
     if (st.shadow_map_size)
         printf("shadow maps: %u texels a side\n", st.shadow_map_size);
     if (st.zpass_casters + st.zfail_casters)
@@ -161,6 +175,7 @@ int main(int argc, char **argv)
     int rc = EXIT_FAILED, have_scene = 0, have_gpu = 0, displace_all, i;
     image img;
     double ms = 0;
+    stin_frame_stats stats;
     progress pr;
 
     memset(&s, 0, sizeof s);
@@ -288,14 +303,15 @@ int main(int argc, char **argv)
     progress_done(&pr, "created meshes and textures");
     progress_start(&pr, "rendering %dx%d (beauty, normal and visibility frames)", pd.width,
                    pd.height);
-    if (!aov_capture(&g, ctx, plat, &img, &ms, err, sizeof err)) {
+    if (!aov_capture(&g, ctx, plat, &img, &ms, &stats, err, sizeof err)) {
         print_choices(ctx, &log);
         fail_line(&log, "%s: %s", file, err);
         goto done;
     }
     progress_done(&pr, "rendered");
     print_choices(ctx, &log);
-    print_frame(ctx, &s, ms, pd.width, pd.height);
+    print_frame(&stats, &s, ms, pd.width, pd.height,
+                (o.debug_flags & STIN_DEBUG_STAGE_TIMES) != 0);
     if (o.output) {
         const char *dot = strrchr(o.output, '.');
         if (!image_write(o.output, &img, strcmp(dot, ".png") == 0, err, sizeof err)) {

@@ -42,6 +42,8 @@ void render_usage(FILE *f)
                "                            automatic when the scene has no camera)\n"
                "  --outline N               a black outline (GLSL tiers): silhouettes, creases and\n"
                "                            depth steps, the filter's taps N pixels apart (0..64)\n"
+               "  --stage-times             print the frame's GPU time per stage (timer queries;\n"
+               "                            the frame waits for the GPU at its end)\n"
                "  --caps                    print capabilities and choices, render nothing\n"
                "  --verbose                 print stin's info log lines\n"
                "  --version                 print the versions of stin-render and libstin\n"
@@ -140,6 +142,8 @@ int render_parse_args(int argc, char **argv, options *o)
             o->caps = 1;
         } else if (!strcmp(a, "--verbose")) {
             o->verbose = 1;
+        } else if (!strcmp(a, "--stage-times")) {
+            o->debug_flags |= STIN_DEBUG_STAGE_TIMES;
         } else if (!strcmp(a, "--version")) {
             printf("stin-render %d.%d.%d (libstin %d)\n", STIN_VERSION_MAJOR, STIN_VERSION_MINOR,
                    STIN_VERSION_PATCH, stin_version());
