@@ -60,6 +60,8 @@
     X(void, DeleteBuffers, (GLsizei n, const GLuint *b))                                  \
     X(void, BindBuffer, (GLenum target, GLuint b))                                        \
     X(void, BufferData, (GLenum target, GLsizeiptr size, const void *data, GLenum usage)) \
+    X(void, BindBufferBase, (GLenum target, GLuint index, GLuint b))                      \
+    X(void, GetIntegeri_v, (GLenum pname, GLuint index, GLint *v))                        \
     X(void, GenVertexArrays, (GLsizei n, GLuint *a))                                      \
     X(void, DeleteVertexArrays, (GLsizei n, const GLuint *a))                             \
     X(void, BindVertexArray, (GLuint a))                                                  \

@@ -354,6 +354,38 @@ static int after_transfer(hostile_env *e, char *got, size_t size)
     return float_is(e, GL_DEPTH_SCALE, &half, 1, got, size);
 }
 
+/* the caller's storage buffer on binding points 0-2 and the generic binding;
+ * after the frame the ones a technique used read 0 (stin.h GL STATE: deep's
+ * flag point 0, vdsm's CSG lists 0-2), the others the caller's */
+static void storage_to(hostile_env *e, GLuint b)
+{
+    GLuint i;
+    for (i = 0; i < 3; i++)
+        e->gl->BindBufferBase(GL_SHADER_STORAGE_BUFFER, i, b);
+    e->gl->BindBuffer(GL_SHADER_STORAGE_BUFFER, b);
+}
+
+static void set_storage(hostile_env *e) { storage_to(e, e->storage); }
+static void reset_storage(hostile_env *e) { storage_to(e, 0); }
+static int after_storage(hostile_env *e, char *got, size_t size)
+{
+    GLint v = -1;
+    unsigned i;
+    for (i = 0; i < 4; i++) {
+        GLint want = (e->storage_used >> i) & 1u ? 0 : (GLint)e->storage;
+        if (i < 3)
+            e->gl->GetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &v);
+        else
+            e->gl->GetIntegerv(GL_SHADER_STORAGE_BUFFER_BINDING, &v);
+        if (v != want) {
+            snprintf(got, size, "storage binding %s%u reading %d, not %d",
+                     i < 3 ? "point " : "generic ", i < 3 ? i : 0u, v, want);
+            return 0;
+        }
+    }
+    return 1;
+}
+
 #define ENABLE(name, cap, version, compat, set, reset) \
     {name, cap, version, compat, set, reset, NULL}
 #define STATE(name, version, compat, set, reset, after) \
@@ -390,7 +422,8 @@ const hostile_case hostile_cases[] = {
     STATE("textures-enabled", 11, 1, set_textures, reset_textures, after_textures),
     STATE("texture-matrix", 11, 1, set_matrix, reset_matrix, after_matrix),
     STATE("colour-array", 11, 1, set_colors, reset_colors, after_colors),
-    STATE("pixel-transfer", 11, 1, set_transfer, reset_transfer, after_transfer)};
+    STATE("pixel-transfer", 11, 1, set_transfer, reset_transfer, after_transfer),
+    STATE("storage-buffers", 43, 0, set_storage, reset_storage, after_storage)};
 
 const size_t hostile_case_count = sizeof hostile_cases / sizeof hostile_cases[0];
 

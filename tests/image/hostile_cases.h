@@ -18,6 +18,11 @@ typedef struct hostile_env {
     GLuint texture;  /* 1x1 red */
     GLuint program;  /* a linked program writing red */
     GLuint sampler;  /* nearest filtering, clamped */
+    GLuint storage;  /* a shader storage buffer (GL 4.3) */
+    /* after the frame: the storage-buffer bindings a technique of stin's
+     * used (bits 0-2 the indexed points, bit 3 the generic binding): those
+     * read 0, the others the caller's */
+    unsigned storage_used;
     const float *colors; /* a colour array longer than any test mesh */
 } hostile_env;
 

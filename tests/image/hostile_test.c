@@ -8,11 +8,14 @@
  * Per tier, on four-lights: with the tier's own shadow technique each case
  * alone (so a failure names the state); with every other shadow technique
  * the profile runs, all cases at once. On glass-panes and stone-wall
- * (blended draws, surface detail): all cases at once. */
+ * (blended draws, surface detail) and on csg/cast.json's product (beside
+ * csg.json: under vdsm on GL 4.3 its crossing lists use storage buffers):
+ * all cases at once. */
 #include "hostile_cases.h"
 #include "image_test.h"
 #include "test_context.h"
 #include "scene.h"
+#include "scene_csg.h"
 #include "scene_gpu.h"
 #include "stin/stin_debug.h"
 
@@ -40,6 +43,7 @@ typedef struct hostile_run {
     void *block;
     stin_technique chosen_default; /* the tier's own shadow technique */
     scene_gpu g;
+    const scene_csg_products *products; /* drawn as products (NULL: none) */
     hostile_env env;
     frame_pixels clean, got;
     size_t pixels;
@@ -58,6 +62,12 @@ static void make_objects(hostile_env *e, const caller_gl *gl, int core)
     gl->BindTexture(GL_TEXTURE_2D, 0);
     if (e->version >= 20)
         e->program = caller_gl_flat_program(gl, core, 1.0f, 0.0f, 0.0f);
+    if (e->version >= 43 && gl->GenBuffers && gl->BindBufferBase && gl->GetIntegeri_v) {
+        gl->GenBuffers(1, &e->storage);
+        gl->BindBuffer(GL_SHADER_STORAGE_BUFFER, e->storage);
+        gl->BufferData(GL_SHADER_STORAGE_BUFFER, 64, NULL, GL_DYNAMIC_DRAW);
+        gl->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    }
     if (e->version >= 33 && gl->GenSamplers) {
         gl->GenSamplers(1, &e->sampler);
         gl->SamplerParameteri(e->sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -76,6 +86,8 @@ static void free_objects(hostile_env *e, const caller_gl *gl)
         gl->DeleteProgram(e->program);
     if (e->sampler)
         gl->DeleteSamplers(1, &e->sampler);
+    if (e->storage)
+        gl->DeleteBuffers(1, &e->storage);
 }
 
 static int draw(hostile_run *h)
@@ -86,6 +98,21 @@ static int draw(hostile_run *h)
 
 /* Read back with the caller's state undone: pixel transfer and the like
  * apply to the test's own glReadPixels. */
+/* The storage-buffer bindings the frame's techniques used (stin.h GL
+ * STATE): deep's early-stop flag on GL 4.3 (point 0), vdsm's CSG lists
+ * (points 0-2), each through the generic binding too. */
+static unsigned storage_used(const hostile_run *h)
+{
+    stin_frame_stats st = stin_query_frame_stats(h->ctx);
+    const stin_caps *caps = stin_query_caps(h->ctx);
+    unsigned used = 0;
+    if (st.deep_faces && (caps->present & STIN_CAP_BIT(STIN_CAP_COMPUTE)))
+        used |= 1u | 8u;
+    if (st.vdsm_csg_casts)
+        used |= 7u | 8u;
+    return used;
+}
+
 static int read_back(hostile_run *h, frame_pixels *out)
 {
     return stin_platform_read_color(h->r->plat, out->rgba) &&
@@ -133,6 +160,7 @@ static void frame_under(hostile_run *h, const hostile_case *only)
     }
     if (!draw(h))
         note_failure(h, "%s: the frame failed; ", only ? only->name : "all");
+    h->env.storage_used = storage_used(h);
     for (i = 0; i < hostile_case_count; i++) {
         const hostile_case *c = &hostile_cases[i];
         if ((only && only != c) || !hostile_applies(c, &h->env))
@@ -206,6 +234,10 @@ static void run_technique(hostile_run *h, stin_technique shadows, int one_by_one
         destroy(h);
         return;
     }
+    if (h->products) {
+        h->g.csg = h->products->products;
+        h->g.csg_count = h->products->count;
+    }
     caps = stin_query_caps(h->ctx);
     h->env.version = caps->gl_major * 10 + caps->gl_minor;
     h->env.compat = (caps->present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)) != 0;
@@ -250,24 +282,33 @@ void hostile_tests(run *r, stin_tier tier, const char *path)
     static const stin_technique others[] = {
         STIN_TECH_SHADOWS_OFF,       STIN_TECH_SHADOWS_VOLUME,    STIN_TECH_SHADOWS_MAP_DEPTH,
         STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_VDSM};
-    const char *base = scene_base_name(path);
-    int all = !strcmp(base, "four-lights");
+    const char *base = scene_base_name(path), *slash = strrchr(path, '/');
+    int all = !strcmp(base, "four-lights"), csg = !strcmp(base, "csg");
     hostile_run h;
     scene s;
+    scene_csg_products products;
     caller_gl gl;
-    char err[256];
+    char err[256], cast[512];
     size_t i, n = (size_t)r->width * r->height;
     float *colors;
-    if (!all && strcmp(base, "glass-panes") && strcmp(base, "stone-wall"))
+    if (!all && !csg && strcmp(base, "glass-panes") && strcmp(base, "stone-wall"))
         return;
     memset(&h, 0, sizeof h);
+    memset(&products, 0, sizeof products);
     h.r = r;
     h.tier = tier;
-    h.scene_name = base;
-    if (!scene_load(path, &s, err, sizeof err)) {
+    h.scene_name = csg ? "csg-cast" : base;
+    snprintf(cast, sizeof cast, "%.*scsg/cast.json", slash ? (int)(slash - path + 1) : 0, path);
+    if (!scene_load(csg ? cast : path, &s, err, sizeof err)) {
         report(r, "FAIL", "hostile", "%s", err);
         return;
     }
+    if (csg && !scene_csg_products_build(&s, &products)) {
+        report(r, "FAIL", "hostile", "csg/cast.json: out of memory");
+        scene_free(&s);
+        return;
+    }
+    h.products = csg ? &products : NULL;
     h.s = &s;
     caller_gl_load(&gl, r->plat);
     h.env.gl = &gl;
@@ -300,5 +341,6 @@ void hostile_tests(run *r, stin_tier tier, const char *path)
     free(h.got.rgba);
     free(h.clean.depth);
     free(h.got.depth);
+    scene_csg_products_free(&products);
     scene_free(&s);
 }
