@@ -3,7 +3,11 @@
  * one step set a row - SP alone, + EP, + SM, + DC (the full chain) - and
  * stencil volumes, each timed against shadows off. The vdsm rows count the
  * primitives their geometry shader emits (STIN_DEBUG_VDSM_COUNT, the seed's
- * P_c: one wait for the GPU per light, in the timed frames too). */
+ * P_c: one wait for the GPU per light, in the timed frames too). Where the
+ * context has timer queries each row's shadow work is timed on the GPU too
+ * (STIN_DEBUG_STAGE_TIMES, a context of its own: the prepass and shadow
+ * stages - vdsm's position buffer, facing pass, pyramid and polygons; the
+ * volumes' stencil counts - without the lit passes and the rest). */
 #include "bench_options.h"
 #include "bench_report.h"
 
@@ -27,18 +31,24 @@ static const struct step_set {
 };
 enum { N = sizeof sets / sizeof sets[0], SP = 0, VOLUME = N - 1 };
 
+/* The row's shadow work on the GPU (ms): its prepass and shadow stages. */
+static double shadow_work(const tech_row *r)
+{
+    return r->staged ? r->stage_ms[STIN_STAGE_PREPASS] + r->stage_ms[STIN_STAGE_SHADOW] : 0.0;
+}
+
 static void print_scene(const char *label, const tech_row *rows)
 {
     const tech_row *sp = &rows[SP], *vol = &rows[VOLUME];
     int i;
     printf("\n### " WHAT ", %s\n\n", label);
     printf("| step set | P_c | P_c / SP | off median ms | median ms | / off | / SP | "
-           "/ volume |\n");
-    printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+           "/ volume | shadow GPU ms | / volume's |\n");
+    printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (i = 0; i < N; i++) {
         const tech_row *r = &rows[i];
         if (r->skipped) {
-            printf("| %s | SKIP: %s | | | | | | |\n", sets[i].name, r->why);
+            printf("| %s | SKIP: %s | | | | | | | | |\n", sets[i].name, r->why);
             continue;
         }
         if (i == VOLUME)
@@ -46,9 +56,14 @@ static void print_scene(const char *label, const tech_row *rows)
         else
             printf("| %s | %u | %.3f |", sets[i].name, r->primitives,
                    sp->primitives ? (double)r->primitives / sp->primitives : 0.0);
-        printf(" %.2f | %.2f | %.2f | %.2f | %.2f |\n", r->base_ms, r->on_ms, tech_ratio(r),
+        printf(" %.2f | %.2f | %.2f | %.2f | %.2f |", r->base_ms, r->on_ms, tech_ratio(r),
                !sp->skipped && sp->on_ms > 0 ? r->on_ms / sp->on_ms : 0.0,
                !vol->skipped && vol->on_ms > 0 ? r->on_ms / vol->on_ms : 0.0);
+        if (r->staged)
+            printf(" %.3f | %.2f |\n", shadow_work(r),
+                   shadow_work(vol) > 0 ? shadow_work(r) / shadow_work(vol) : 0.0);
+        else
+            printf(" not timed | |\n");
     }
     fflush(stdout);
 }
@@ -62,6 +77,7 @@ int section_vdsm(bench_env *env, const scene *s, int *ran)
     int i, k, rc = 0;
     (void)s;
     bench_tech_settings(env, SEC_VDSM, &st);
+    st.stages = 1;
     printf("\n## VDSM step sets (gl4) against shadows off, SP alone and stencil volumes, "
            "%dx%d, the scenes' lights; %s\n", env->b.width, env->b.height,
            bench_row_timing(env, st.setups, st.frames, timing, sizeof timing));
