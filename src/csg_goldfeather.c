@@ -94,14 +94,35 @@ static void pack_end(stin_context *ctx, const pack_saved *s)
         GL(ctx, BindBuffer)(GL_PIXEL_PACK_BUFFER, (GLuint)s->buffer);
 }
 
+/* The resolve's region of the bound framebuffer into its place in the
+ * viewport-sized array out (rows r->w long); the rest of out is left as it
+ * was (the loops over it keep to the region too). */
+static void read_region(stin_context *ctx, const resolve *r, GLenum format, GLenum type,
+                        void *out)
+{
+    const int *g = ctx->csg.region;
+    int whole = g[0] == r->x && g[1] == r->y && g[2] == r->w && g[3] == r->h;
+    if (!whole) {
+        GL(ctx, PixelStorei)(GL_PACK_ROW_LENGTH, r->w);
+        GL(ctx, PixelStorei)(GL_PACK_SKIP_PIXELS, g[0] - r->x);
+        GL(ctx, PixelStorei)(GL_PACK_SKIP_ROWS, g[1] - r->y);
+    }
+    GL(ctx, ReadPixels)(g[0], g[1], g[2], g[3], format, type, out);
+    if (!whole) { /* tightly packed again, as pack_begin left it */
+        GL(ctx, PixelStorei)(GL_PACK_ROW_LENGTH, 0);
+        GL(ctx, PixelStorei)(GL_PACK_SKIP_PIXELS, 0);
+        GL(ctx, PixelStorei)(GL_PACK_SKIP_ROWS, 0);
+    }
+}
+
 static void read_depth(stin_context *ctx, const resolve *r, float *out)
 {
-    GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+    read_region(ctx, r, GL_DEPTH_COMPONENT, GL_FLOAT, out);
 }
 
 static void read_stencil(stin_context *ctx, const resolve *r)
 {
-    GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
+    read_region(ctx, r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
 }
 
 #define GL_R32F 0x822E
@@ -343,9 +364,10 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
             return 0;
         stin__csg_rect_cut(region, rect); /* the surface lies inside each */
     }
-    /* on the GPU nothing outside the region is read: the passes keep to it */
+    /* nothing outside the region is read (on the GPU) or read back: the
+     * passes keep to it */
     stin__csg_region_reset(ctx);
-    if (r->gpu && !stin__csg_region_narrow(ctx, region))
+    if (!stin__csg_region_narrow(ctx, region))
         return 0;
     for (k = 1; k <= layers; k++) {
         clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
@@ -511,6 +533,7 @@ void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve
     pack_saved saved;
     uint32_t pi;
     pack_begin(ctx, &saved);
+    stin__csg_region_reset(ctx); /* this resolve's viewport (a light's band, csg_cast.c) */
     if (!r->gpu) /* what the buffer holds stays where nearer (the GPU's: merge_begin) */
         read_depth(ctx, r, r->result);
     ctx->csg.cap_usable = ctx->csg.cap_slot != STIN__NO_SLOT &&

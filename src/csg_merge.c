@@ -278,25 +278,49 @@ void stin__csg_merge_snap(stin_context *ctx)
 }
 
 /* ---- the steps ---------------------------------------------------------- */
+/* The CPU resolve's region (the term's or candidate's rectangle, where its
+ * reads keep to) in r's viewport-sized arrays: rows of `width` pixels from
+ * `first`, `stride` apart. Pixels outside it hold what an earlier read left
+ * and are never looked at. */
+typedef struct region_rows {
+    size_t first, width, rows, stride;
+} region_rows;
+
+static region_rows rows_of(const stin_context *ctx, const stin__csg_pixels *r)
+{
+    const int *g = ctx->csg.region;
+    region_rows o;
+    o.stride = (size_t)r->w;
+    o.first = (size_t)(g[1] - r->y) * o.stride + (size_t)(g[0] - r->x);
+    o.width = (size_t)g[2];
+    o.rows = (size_t)g[3];
+    return o;
+}
+
 int stin__csg_candidate_open(stin_context *ctx, stin__csg_pixels *r)
 {
-    size_t i;
+    region_rows g = rows_of(ctx, r);
+    size_t x, y;
     int any = 0;
     if (r->gpu)
         return 1;
     stin__csg_read_depth(ctx, r, r->candidate);
-    for (i = 0; i < r->pixels; i++)
-        if (r->candidate[i] <= 0.0f || r->candidate[i] >= r->result[i])
-            r->candidate[i] = 2.0f; /* none here (scs's 0), or not nearer */
-        else
-            any = 1;
+    for (y = 0; y < g.rows; y++)
+        for (x = 0; x < g.width; x++) {
+            size_t i = g.first + y * g.stride + x;
+            if (r->candidate[i] <= 0.0f || r->candidate[i] >= r->result[i])
+                r->candidate[i] = 2.0f; /* none here (scs's 0), or not nearer */
+            else
+                any = 1;
+        }
     return any;
 }
 
 void stin__csg_candidate_keep_where(stin_context *ctx, const stin__path *path,
                                     stin__csg_pixels *r, unsigned mask, unsigned want)
 {
-    size_t i;
+    region_rows g = rows_of(ctx, r);
+    size_t x, y;
     if (r->gpu) {
         stin__pass_state ps = stin__pass_defaults;
         ps.depth_test = 1;
@@ -314,9 +338,12 @@ void stin__csg_candidate_keep_where(stin_context *ctx, const stin__path *path,
         return;
     }
     stin__csg_read_stencil(ctx, r);
-    for (i = 0; i < r->pixels; i++)
-        if ((r->stencil[i] & mask) != want)
-            r->candidate[i] = 2.0f;
+    for (y = 0; y < g.rows; y++)
+        for (x = 0; x < g.width; x++) {
+            size_t i = g.first + y * g.stride + x;
+            if ((r->stencil[i] & mask) != want)
+                r->candidate[i] = 2.0f;
+        }
 }
 
 int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
@@ -325,14 +352,18 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
     stin__csg_merge_state *m = &ctx->csg.merge;
     GLuint kept = 1, q = m->queries[STIN__CSG_MERGE_THRESHOLDS];
     int counted = want_kept && m->queries[0];
-    size_t i;
+    region_rows g = rows_of(ctx, r);
+    size_t x, y;
     if (!r->gpu) {
         kept = 0;
-        for (i = 0; i < r->pixels; i++)
-            if ((!select || r->stencil[i] == (unsigned char)select->id) &&
-                r->candidate[i] < r->result[i]) {
-                r->result[i] = r->candidate[i];
-                kept = 1;
+        for (y = 0; y < g.rows; y++)
+            for (x = 0; x < g.width; x++) {
+                size_t i = g.first + y * g.stride + x;
+                if ((!select || r->stencil[i] == (unsigned char)select->id) &&
+                    r->candidate[i] < r->result[i]) {
+                    r->result[i] = r->candidate[i];
+                    kept = 1;
+                }
             }
         return (int)kept;
     }
@@ -368,7 +399,8 @@ unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__
 {
     stin__csg_merge_state *m = &ctx->csg.merge;
     unsigned most = 0;
-    size_t i;
+    region_rows g = rows_of(ctx, r);
+    size_t i, x, y;
     if (r->gpu && m->queries[0]) {
         GLuint passed[STIN__CSG_MERGE_THRESHOLDS];
         stin__pass_state ps = stin__pass_defaults;
@@ -394,7 +426,10 @@ unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__
         return bound_of(passed, n, limit);
     }
     stin__csg_read_stencil(ctx, r);
-    for (i = 0; i < r->pixels; i++)
-        most = r->stencil[i] > most ? r->stencil[i] : most;
+    for (y = 0; y < g.rows; y++)
+        for (x = 0; x < g.width; x++) {
+            i = g.first + y * g.stride + x;
+            most = r->stencil[i] > most ? r->stencil[i] : most;
+        }
     return most < limit ? most : limit;
 }

@@ -376,7 +376,7 @@ static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
         stin__csg_rect_cut(region, rect);
     }
     stin__csg_region_reset(ctx);
-    if (r->gpu && !stin__csg_region_narrow(ctx, region))
+    if (!stin__csg_region_narrow(ctx, region))
         return;
     intersect(ctx, path, p, t);
     subtract(ctx, path, r, p, t);

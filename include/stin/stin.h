@@ -1404,11 +1404,11 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * rasterised in another buffer and carried through a sampler, can be a
  * step off). Its image equals the CPU resolve's but on pixels an edge
  * passes exactly through (tests/image/csg_test.c: at most 2 a case).
- * Its passes keep to a rectangle: a term's surface (scs) or a candidate's
- * (goldfeather) lies inside its own and every plain literal's window
- * rectangle, and nothing outside is read, so the clears, draws and quads
- * of that term or candidate are scissored to it (the CPU resolve reads the
- * viewport and keeps to it).
+ * Both resolves keep to a rectangle: a term's surface (scs) or a
+ * candidate's (goldfeather) lies inside its own and every plain literal's
+ * window rectangle, so the clears, draws and quads of that term or
+ * candidate are scissored to it, and the CPU resolve reads back only that
+ * rectangle (into its place in the viewport-sized staging).
  * Programs: three, made at stin_create; GL memory: two textures, 8 bytes a
  * pixel for 24-bit depth (16 for 32-bit float), made at the first frame
  * with a product, grown, never shrunk, freed at stin_destroy
