@@ -133,9 +133,12 @@ static void intersect(stin_context *ctx, const stin__path *path, const stin__csg
  * the resolve), 2 words a literal: x and y spans as 16-bit offsets from the
  * region's corner, an empty span where the literal is plain or off the
  * region. Returns how many, and in *bound how many can cover one pixel at
- * most: 1 + the most others one's box meets (255 at most). */
+ * most: 1 + the most others one's box meets (255 at most; past PAIRWISE
+ * listed literals, whose pairs would cost more than they save, their
+ * count: the check ends the sequence where it is done either way). */
 #define OFF_REGION 0x0000ffffu /* first 0xffff, last 0: empty */
 #define WHOLE_REGION 0xffff0000u
+#define PAIRWISE 1024u
 
 static int listed(const uint32_t *box, uint32_t li) { return box[2u * li] != OFF_REGION; }
 
@@ -184,11 +187,13 @@ static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
         else
             n++;
     }
+    if (n > PAIRWISE)
+        most = n;
     for (li = 0; li < t->count && most < 255u; li++) {
         uint32_t meets = 1;
         if (!listed(box, li))
             continue;
-        for (lj = 0; lj < t->count; lj++)
+        for (lj = 0; lj < t->count && meets < 255u; lj++)
             meets += lj != li && listed(box, lj) && boxes_meet(&box[2u * li], &box[2u * lj]);
         most = meets > most ? meets : most;
     }

@@ -1440,7 +1440,8 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * (the nearest corner of each bounding box first: a row along the view
  * takes one run), the list run at most as many times as complemented
  * primitives can cover one pixel (1 + the most others one's window box
- * meets: every order of those is in the sequence), each run after the
+ * meets, or their count past 1024 of them: every order of those is in
+ * the sequence), each run after the
  * first only where a check finds the depth still inside one of them
  * somewhere (one pass a primitive counting +1 at its front and -1 at its
  * back in the stencil, its largest value taken as stencil sample counts
