@@ -533,7 +533,8 @@ static void run_plan(stin_context *ctx)
     (void)stin__times_enter(ctx, STIN_STAGE_BASE);
     stage_target(ctx);
     path->begin(ctx);
-    (void)stin__times_enter(ctx, STIN_STAGE_CSG);
+    if (ctx->csg.product_count)
+        (void)stin__times_enter(ctx, STIN_STAGE_CSG);
     if (stin__csg_resolve(ctx, path)) { /* the products' depth, under every later pass */
         stin__csg_faces(ctx);
         if (ctx->shadow == &stin__shadow_vdsm)

@@ -541,6 +541,15 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(ctx->stats.csg_scs_runs, 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 0);
 
+    debug_flags_ = STIN_DEBUG_STAGE_TIMES; /* the resolve timed as its own stage */
+    recreate(FAKE_GL33_CORE, 0);
+    debug_flags_ = 0;
+    one_frame();
+    assert_int_equal(ctx->stats.stage_times, 1);
+    assert_true(ctx->times.marks >= 4);
+    assert_int_equal(ctx->times.stage[2], STIN_STAGE_CSG); /* after prepass and base */
+    assert_int_equal(ctx->times.stage[3], STIN_STAGE_BASE);
+
     debug_flags_ = STIN_DEBUG_CSG_READBACK;
     recreate(FAKE_GL33_CORE, 0);
     debug_flags_ = 0;

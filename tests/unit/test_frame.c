@@ -698,17 +698,17 @@ static void test_texture_bad_arguments(void **state)
 
 /* STIN_DEBUG_STAGE_TIMES: a timestamp at each change of the frame plan's
  * stage (volumes through the screen mask, 8 lights: two groups of four,
- * each its stencil counts and one lit pass), one more at the end, each read
+ * each its stencil counts and one lit pass; no CSG product, so no csg
+ * stage), one more at the end, each read
  * back once; none without the flag, none where the context has no timer
  * queries (logged once); a frame changing stage more often than the pool
  * holds goes on, its rest untimed (logged once). */
 static void test_stage_times_follow_the_plan(void **state)
 {
     static const stin_stage plan[] = {
-        STIN_STAGE_PREPASS, STIN_STAGE_BASE,  STIN_STAGE_CSG,      STIN_STAGE_BASE,
-        STIN_STAGE_SHADOW,  STIN_STAGE_LIGHTING, STIN_STAGE_SHADOW, STIN_STAGE_LIGHTING,
-        STIN_STAGE_SHADOW,  STIN_STAGE_BASE,  STIN_STAGE_BLENDED,  STIN_STAGE_BASE,
-        STIN_STAGE_EXPORT};
+        STIN_STAGE_PREPASS, STIN_STAGE_BASE,     STIN_STAGE_SHADOW,  STIN_STAGE_LIGHTING,
+        STIN_STAGE_SHADOW,  STIN_STAGE_LIGHTING, STIN_STAGE_SHADOW,  STIN_STAGE_BASE,
+        STIN_STAGE_BLENDED, STIN_STAGE_BASE,     STIN_STAGE_EXPORT};
     const uint32_t marks = sizeof plan / sizeof plan[0];
     stin_frame_stats st;
     uint32_t i;
