@@ -750,6 +750,41 @@ static void test_stage_times_follow_the_plan(void **state)
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
+/* The visibility export with deep maps: two lights want one visibility
+ * tile and two transmittance tiles (64 x 48 each, two a row); a largest
+ * texture of 100 holds one, so the map keeps both lights' visibility and no
+ * transmittance, saying so once; 200 holds all three. */
+static void test_export_without_room_for_transmittance(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
+    stin_frame_desc fd = frame_desc();
+    stin_visibility_map map;
+    stin_material glass;
+    int round;
+    (void)state;
+    memset(&glass, 0, sizeof glass);
+    glass.color[0] = glass.color[3] = 0.5f;
+    fd.export_visibility = STIN_EXPORT_VISIBILITY;
+    shadows = STIN_TECH_SHADOWS_VOLUME;
+    for (round = 0; round < 2; round++) {
+        cfg.max_texture_size = round == 0 ? 100 : 200;
+        create_context(&cfg, 16, 8, 4096);
+        assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS).technique,
+                         STIN_TECH_TRANSLUCENT_DEEP);
+        assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+        add_lights(2);
+        assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+        assert_int_equal(stin_draw(ctx, quad, NULL, &glass), STIN_OK);
+        assert_int_equal(stin_end_frame(ctx), STIN_OK);
+        assert_int_equal(stin_query_visibility_map(ctx, &map), STIN_OK);
+        assert_int_equal(map.lights, 2);
+        assert_int_equal(map.transmittance_tile, round == 0 ? 0u : 1u);
+        assert_int_equal(fake_log_has(&log_, STIN_LOG_FALLBACK, "transmittance tiles do not fit"),
+                         round == 0);
+    }
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 #define TEST(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
 
 int main(void)
@@ -772,6 +807,7 @@ int main(void)
         TEST(test_fixed_function_passes_per_max_lights),
         TEST(test_output_pass_counts),
         TEST(test_stage_times_follow_the_plan),
+        TEST(test_export_without_room_for_transmittance),
         TEST(test_frame_leaves_documented_state),
         TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
         TEST(test_texture_without_mips),
