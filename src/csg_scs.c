@@ -273,10 +273,7 @@ static int still_inside(stin_context *ctx, const stin__path *path, stin__csg_pix
                         const stin__csg_product *p, const stin__csg_term *t,
                         const uint32_t *order, uint32_t n)
 {
-    uint64_t caps = ctx->caps.present;
-    int two_sided = (caps & STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP)) &&
-                    (caps & (STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
-                             STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)));
+    int two_sided = stin__pass_two_sided_wrap(ctx);
     GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
     uint32_t i = 0, batch;
     while (i < n) {

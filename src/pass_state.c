@@ -64,6 +64,14 @@ static void apply_stencil(stin_context *ctx, const stin__pass_state *s, const st
     }
 }
 
+int stin__pass_two_sided_wrap(const stin_context *ctx)
+{
+    uint64_t caps = ctx->caps.present;
+    return (caps & STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP)) &&
+           (caps & (STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
+                    STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)));
+}
+
 void stin__pass_apply(stin_context *ctx, const stin__pass_state *s)
 {
     stin__pass_state *c = &ctx->pass;

@@ -34,6 +34,10 @@ extern const stin__pass_state stin__pass_defaults;
 
 /* Makes GL hold s, issuing only the calls whose state differs from the cache. */
 void stin__pass_apply(struct stin_context *ctx, const stin__pass_state *s);
+/* Whether one pass can count both faces with wrapping increments and
+ * decrements (stencil wrap and two-sided or separate stencil): else front
+ * faces then back faces, increments first, clamped. */
+int stin__pass_two_sided_wrap(const struct stin_context *ctx);
 /* What GL holds now (the last applied state). */
 const stin__pass_state *stin__pass_current(const struct stin_context *ctx);
 /* Forget the cache: the next apply sets everything (the caller's state is unknown). */

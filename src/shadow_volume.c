@@ -222,10 +222,7 @@ static void face_ops(stin__stencil_face *f, int zfail, int back, GLenum incr, GL
 void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
                         const int scissor[4])
 {
-    uint64_t caps = ctx->caps.present;
-    int two_sided = (caps & STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP)) &&
-                    (caps & (STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
-                             STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)));
+    int two_sided = stin__pass_two_sided_wrap(ctx);
     GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
     stin__pass_state ps = stin__pass_defaults;
     uint32_t i;
