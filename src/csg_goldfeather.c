@@ -14,7 +14,9 @@
  *      eight primitives a batch (the stencil's bits: no counter overflows,
  *      whatever the primitive count); read back, a pixel survives where
  *      every bit says inside for a plain primitive and outside for a
- *      complemented one;
+ *      complemented one. Past eight, where the stencil wraps both ways in
+ *      one pass, convex primitives count by winding numbers instead, 255 a
+ *      batch (count_others);
  *   3. the surviving depths are kept, the nearest per pixel.
  * A convex primitive's candidate surface has one layer: its depth
  * complexity is not sampled. Where the candidates and the result are kept
@@ -259,10 +261,16 @@ typedef struct counting {
     int behind, clamp;
 } counting;
 
-/* Primitive d whole, toggling stencil bit `bit` where its faces lie in front
- * of the candidate's depth (behind it, counting from behind). */
-static void draw_parity(stin_context *ctx, const stin__path *path, const stin__draw *d, int bit,
-                        const counting *how)
+/* A pass over primitive d whole (both faces), counting where its faces lie
+ * in front of the candidate's depth (behind it, counting from behind):
+ * the stencil ops are the caller's. Faces that coincide with the candidate
+ * count as crossed before it, whatever their rounding: a subtracted box
+ * sharing the candidate's plane takes it away, an intersected one keeps it,
+ * a neighbour's face touching it cancels out (the reference applies
+ * crossings at one distance together). Pulled toward the eye by 4 units:
+ * faces that near are the same plane (and, counted from behind, not behind
+ * it). */
+static stin__pass_state counting_pass(const stin_context *ctx, const counting *how)
 {
     stin__pass_state ps = stin__pass_defaults;
     ps.depth_test = 1;
@@ -271,23 +279,45 @@ static void draw_parity(stin_context *ctx, const stin__path *path, const stin__d
     ps.depth_write = 0;
     ps.color_write = 0;
     ps.stencil_test = 1;
-    ps.stencil_write_mask = 1u << bit;
     ps.front.func = GL_ALWAYS;
     ps.front.mask = 0xffu;
     ps.front.fail = ps.front.zfail = GL_KEEP;
-    ps.front.zpass = GL_INVERT;
-    ps.back = ps.front;
-    /* Faces that coincide with the candidate count as crossed before it,
-     * whatever their rounding: a subtracted box sharing the candidate's
-     * plane takes it away, an intersected one keeps it, a neighbour's face
-     * touching it cancels out (the reference applies crossings at one
-     * distance together). Pulled toward the eye by the depth slope and 4
-     * units: faces that near are the same plane (and, counted from behind,
-     * not behind it). */
     ps.polygon_offset = 1;
     ps.offset_factor = 0.0f;
     ps.offset_units = -OFFSET_UNITS;
     stin__csg_region_keep_to(ctx, &ps);
+    return ps;
+}
+
+/* Primitive d whole, toggling stencil bit `bit` where its faces lie in front
+ * of the candidate's depth (behind it, counting from behind). */
+static void draw_parity(stin_context *ctx, const stin__path *path, const stin__draw *d, int bit,
+                        const counting *how)
+{
+    stin__pass_state ps = counting_pass(ctx, how);
+    ps.stencil_write_mask = 1u << bit;
+    ps.front.zpass = GL_INVERT;
+    ps.back = ps.front;
+    stin__pass_apply(ctx, &ps);
+    path->geometry(ctx, d);
+}
+
+/* Convex primitive d whole, adding its winding number about the
+ * candidate's depth to the stencil, wrapping: +1 where its front face lies
+ * in front of the depth, -1 where its back face does (from behind: the
+ * other way round), 1 inside d and 0 outside; negated for a plain literal.
+ * Both faces in one pass (two-sided stencil). */
+static void draw_winding(stin_context *ctx, const stin__path *path, const stin__draw *d,
+                         int plain, const counting *how)
+{
+    stin__pass_state ps = counting_pass(ctx, how);
+    int front_is_gl_front = culled_face(d, 0) == GL_BACK; /* not mirrored */
+    GLenum at_front = plain == how->behind ? GL_INCR_WRAP : GL_DECR_WRAP;
+    GLenum at_back = at_front == GL_INCR_WRAP ? GL_DECR_WRAP : GL_INCR_WRAP;
+    ps.two_sided = 1;
+    ps.back = ps.front;
+    ps.front.zpass = front_is_gl_front ? at_front : at_back;
+    ps.back.zpass = front_is_gl_front ? at_back : at_front;
     stin__pass_apply(ctx, &ps);
     path->geometry(ctx, d);
 }
@@ -322,6 +352,80 @@ static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, co
     return stin__csg_rects_meet(ctx, own, rect);
 }
 
+static int winds(const stin_context *ctx, const stin__csg_product *p, uint32_t lit)
+{
+    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    return ctx->meshes[d->mesh_slot].info.convex;
+}
+
+/* The candidate's pixels that the next batch of the term's convex literals
+ * from index `from` on (meeting `own`, not `self`) keeps: their winding
+ * numbers summed, at most 2^bits - 1 of them so that the sums' values
+ * differ modulo the stencil's range; a pixel lies inside every plain one
+ * and no complemented one exactly where the sum is minus the plain count.
+ * Returns the index after the batch's last literal; *drawn: how many. */
+static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve *r,
+                              const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
+                              const float own[4], const counting *how, uint32_t from,
+                              uint32_t *drawn)
+{
+    unsigned most = (1u << r->bits) - 1u;
+    uint32_t j, n = 0, plain = 0;
+    clear(ctx, GL_STENCIL_BUFFER_BIT);
+    for (j = from; j < t->count && n < most; j++) {
+        uint32_t lit = ctx->csg.literals[t->first + j];
+        if (j == self || !winds(ctx, p, lit) || !meets(ctx, p, lit, own))
+            continue;
+        draw_winding(ctx, path,
+                     &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)],
+                     !STIN__CSG_COMPLEMENTED(lit), how);
+        plain += !STIN__CSG_COMPLEMENTED(lit);
+        n++;
+    }
+    ctx->stats.passes++;
+    stin__csg_candidate_keep_where(ctx, path, r, most, (0u - plain) & most);
+    *drawn = n;
+    return j;
+}
+
+/* The candidate's pixels that the term's other literals (those meeting
+ * `own`) keep: by parity bits, a stencil bit each, or where that takes
+ * fewer batches (and the stencil wraps both ways in one pass), the convex
+ * ones by winding numbers, 255 a batch, and the rest by parity. */
+static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
+                         const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
+                         const float own[4], const counting *how)
+{
+    uint32_t others[8], n = 0, j, meeting = 0, wound = 0, drawn, bits = (uint32_t)r->bits;
+    int winding = stin__pass_two_sided_wrap(ctx) && bits >= 2;
+    if (winding) {
+        uint32_t most = (1u << bits) - 1u;
+        for (j = 0; j < t->count; j++) {
+            uint32_t lit = ctx->csg.literals[t->first + j];
+            if (j != self && meets(ctx, p, lit, own)) {
+                meeting++;
+                wound += (uint32_t)winds(ctx, p, lit);
+            }
+        }
+        winding = (wound + most - 1u) / most + (meeting - wound + bits - 1u) / bits <
+                  (meeting + bits - 1u) / bits;
+    }
+    for (j = 0; winding && wound; wound -= drawn)
+        j = winding_batch(ctx, path, r, p, t, self, own, how, j, &drawn);
+    for (j = 0; j < t->count; j++) {
+        uint32_t lit = ctx->csg.literals[t->first + j];
+        if (j == self || (winding && winds(ctx, p, lit)) || !meets(ctx, p, lit, own))
+            continue;
+        others[n++] = lit;
+        if (n == bits) {
+            parity_batch(ctx, path, r, p, others, n, how);
+            n = 0;
+        }
+    }
+    if (n)
+        parity_batch(ctx, path, r, p, others, n, how);
+}
+
 /* The layer count of the surface just drawn as layer 1 (its stencil holds
  * every pixel's fragment count), or a bound above it. */
 static int depth_complexity(stin_context *ctx, const stin__path *path, resolve *r)
@@ -344,7 +448,7 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
                      const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
                      const stin__draw *d, GLenum culled, const counting *how, int want_kept)
 {
-    uint32_t others[8], n, j;
+    uint32_t j;
     int layers = 1, k, kept = 0;
     /* a convex surface (the cap's quad too) shows one layer a pixel */
     int one_layer = d->mesh_slot == ctx->csg.cap_slot || ctx->meshes[d->mesh_slot].info.convex;
@@ -376,18 +480,7 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
             layers = depth_complexity(ctx, path, r);
         if (!stin__csg_candidate_open(ctx, r)) /* no layer, or none nearer */
             continue;
-        /* the other literals, a stencil bit each, in batches of the bits */
-        for (j = 0, n = 0; j < t->count; j++) {
-            if (j == self || !meets(ctx, p, ctx->csg.literals[t->first + j], own))
-                continue;
-            others[n++] = ctx->csg.literals[t->first + j];
-            if (n == (uint32_t)r->bits) {
-                parity_batch(ctx, path, r, p, others, n, how);
-                n = 0;
-            }
-        }
-        if (n)
-            parity_batch(ctx, path, r, p, others, n, how);
+        count_others(ctx, path, r, p, t, self, own, how);
         kept |= stin__csg_candidate_take(ctx, path, r, NULL, want_kept);
     }
     return kept;

@@ -1318,7 +1318,13 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * then the term's other primitives invert a stencil bit each where their
  * faces lie in front of it, eight (the stencil's bits) a batch, so no
  * counter overflows whatever the primitive count; a pixel survives where
- * every bit says inside a plain and outside a complemented primitive, and
+ * every bit says inside a plain and outside a complemented primitive.
+ * Where more than eight other primitives overlap the candidate and the
+ * stencil wraps both ways in one pass (GL 2.0, or stencil wrap with
+ * EXT_stencil_two_side), the convex ones count by winding numbers
+ * instead, 255 a batch: +1 where a front face lies in front of the
+ * candidate, -1 where a back face does (negated for a plain primitive), so
+ * a pixel survives where the batch's sum is minus its plain count, and
  * the nearest survivor per pixel is kept (on the GPU or the CPU: see "The
  * GPU resolve" below). Faces that coincide
  * with the candidate (within 4 depth units) count as crossed before it: a

@@ -18,7 +18,14 @@
  *               "sequence" holds the runs (stin_frame_stats.csg_scs_runs)
  *               between 2 and fewer than with the check off
  *               (STIN_DEBUG_CSG_SCS_NO_EARLY_STOP: every run the boxes'
- *               bound allows), with P and N the same, pixel for pixel.
+ *               bound allows), with P and N the same, pixel for pixel;
+ *   cluster     the intersection of 12 unit spheres with centres spread
+ *               over +-0.3 minus 12 spheres of radius 0.25 around it (one
+ *               term of 12 plain and 12 complemented literals), under
+ *               goldfeather and scs: every goldfeather candidate meets 23
+ *               others, which it counts by winding numbers in one batch
+ *               where the stencil wraps both ways (plain ones negated),
+ *               else by parity bits in three.
  * Against the exact CSG reference with csg_test.c's bounds (P on >= 99.9%
  * of the covered pixels, N within 2 degrees on >= 99.5% away from edges),
  * desc.max_csg_primitives and max_csg_literals raised to 1000. Contexts
@@ -33,6 +40,7 @@
 #include "scene_gpu.h"
 #include "test_context.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,16 +50,20 @@
 #define MANY 1000
 #define POCKETS 32 /* primitives: the box and 31 spheres */
 #define POCKET_SIDE 6
+#define CLUSTER 24 /* 12 plain spheres, then 12 complemented */
 #define MANY_P_RELATIVE 1e-3
 #define MANY_P_ABSOLUTE 1e-3
 #define MANY_P_MIN_MATCH 0.999
 #define MANY_NORMAL_DEGREES 2.0
 #define MANY_NORMAL_MIN_MATCH 0.995
 
-typedef enum shape { DIMPLES, THOUSAND, POCKETS_SHAPE } shape;
-static const char *const shape_names[] = {"dimples", "thousand", "pockets"};
+typedef enum shape { DIMPLES, THOUSAND, POCKETS_SHAPE, CLUSTER_SHAPE } shape;
+static const char *const shape_names[] = {"dimples", "thousand", "pockets", "cluster"};
 
-static int primitives_of(shape sh) { return sh == POCKETS_SHAPE ? POCKETS : MANY; }
+static int primitives_of(shape sh)
+{
+    return sh == POCKETS_SHAPE ? POCKETS : sh == CLUSTER_SHAPE ? CLUSTER : MANY;
+}
 
 /* A deterministic spread in [-1, 1). */
 static double spread(unsigned *state)
@@ -91,12 +103,24 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
     else
         fprintf(f, "{\"camera\": {\"eye\": [0, 1.5, 5.5], \"target\": [0, 0, 0], \"fovy\": 40},\n"
                    "\"meshes\": {\"ball\": {\"primitive\": \"sphere\", \"radius\": 1.0, "
+                   "\"slices\": 16, \"stacks\": 12},\n"
+                   "  \"bead\": {\"primitive\": \"sphere\", \"radius\": 0.25, "
                    "\"slices\": 16, \"stacks\": 12}},\n"
                    "\"materials\": {\"m\": {\"color\": [0.7, 0.7, 0.8]}},\n"
                    "\"objects\": [");
-    for (i = sh == THOUSAND ? 0 : 1; i < primitives_of(sh); i++) {
+    for (i = sh == THOUSAND || sh == CLUSTER_SHAPE ? 0 : 1; i < primitives_of(sh); i++) {
         double x, y, z;
-        if (sh == POCKETS_SHAPE) {
+        int bead = sh == CLUSTER_SHAPE && i >= CLUSTER / 2;
+        if (bead) { /* on the blob's surface, which reaches about 0.7 out */
+            double len;
+            x = spread(&state);
+            y = spread(&state);
+            z = spread(&state);
+            len = sqrt(x * x + y * y + z * z) + 1e-9;
+            x *= 0.75 / len;
+            y *= 0.75 / len;
+            z *= 0.75 / len;
+        } else if (sh == POCKETS_SHAPE) {
             double step = 1.8 / POCKET_SIDE;
             x = -0.9 + step * (0.5 + (i - 1) % POCKET_SIDE);
             y = 0.5;
@@ -110,9 +134,9 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
             y = 0.3 * spread(&state);
             z = 0.3 * spread(&state);
         }
-        fprintf(f, "%s{\"name\": \"b%d\", \"mesh\": \"ball\", \"material\": \"m\", "
+        fprintf(f, "%s{\"name\": \"b%d\", \"mesh\": \"%s\", \"material\": \"m\", "
                    "\"translate\": [%.6f, %.6f, %.6f]}\n",
-                i ? ", " : "", i, x, y, z);
+                i ? ", " : "", i, bead ? "bead" : "ball", x, y, z);
     }
     fprintf(f, "],\n\"lights\": [{\"type\": \"point\", \"position\": [2, 6, 3]}]}\n");
     fclose(f);
@@ -125,6 +149,14 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
  * evaluation stops early: dimples slab - (b1 u (b2 u ... b999)) (pockets
  * alike), thousand b0 n (b1 n ... b999); stin's normal form is one term
  * either way. */
+static void set_node(stin_csg_node *node, stin_csg_op op, int a, int b)
+{
+    node->op = op;
+    node->primitive = 0;
+    node->a = (uint32_t)a;
+    node->b = (uint32_t)b;
+}
+
 static void make_product(shape sh, int *objects, stin_csg_node *nodes)
 {
     int i, n = primitives_of(sh);
@@ -133,6 +165,19 @@ static void make_product(shape sh, int *objects, stin_csg_node *nodes)
         nodes[i].op = STIN_CSG_PRIMITIVE;
         nodes[i].primitive = (uint32_t)i;
         nodes[i].a = nodes[i].b = 0;
+    }
+    if (sh == CLUSTER_SHAPE) { /* (b0 n ... b11) - (b12 u ... b23), the root last */
+        int half = n / 2, k = n, beads = n - 1, blob = half - 1;
+        for (i = n - 2; i >= half; i--, k++) {
+            set_node(&nodes[k], STIN_CSG_UNION, i, beads);
+            beads = k;
+        }
+        for (i = half - 2; i >= 0; i--, k++) {
+            set_node(&nodes[k], STIN_CSG_INTERSECTION, i, blob);
+            blob = k;
+        }
+        set_node(&nodes[k], STIN_CSG_SUBTRACTION, blob, beads);
+        return;
     }
     /* node n + j joins primitive n - 2 - j with the node before it (the
      * last primitive at first) */
@@ -303,6 +348,8 @@ void csg_many_tests(run *r, stin_tier tier)
     run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, 0);
     run_many(r, tier, POCKETS_SHAPE, STIN_TECH_CSG_SCS, 0);
     run_many(r, tier, POCKETS_SHAPE, STIN_TECH_CSG_GOLDFEATHER, 0);
+    run_many(r, tier, CLUSTER_SHAPE, STIN_TECH_CSG_GOLDFEATHER, 0);
+    run_many(r, tier, CLUSTER_SHAPE, STIN_TECH_CSG_SCS, 0);
     if (getenv("STIN_CSG_BREAK_BATCH")) /* the proof that batching matters: must FAIL */
         run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, STIN_DEBUG_CSG_NO_BATCH);
 }
