@@ -248,6 +248,10 @@ GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
  * pixel (csg_bounds.c). */
 void stin__csg_screen_rect(const struct stin_context *ctx, const stin__draw *d, float rect[4]);
 int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const float b[4]);
+/* A primitive's world-space box (its mesh's bounds through its transform:
+ * min x y z, max x y z), and whether two such boxes meet. */
+void stin__csg_world_box(const struct stin_context *ctx, const stin__draw *d, float box[6]);
+int stin__csg_world_boxes_meet(const float a[6], const float b[6]);
 /* The resolve's region (csg_bounds.c). A candidate's surface lies inside
  * its own rectangle and every plain literal's of its term, so on the GPU
  * (where nothing outside is read back) a term's or candidate's passes,

@@ -4,7 +4,9 @@
  * primitives' rectangles do not meet, neither covers a pixel of the other,
  * so goldfeather skips the parity pass of the one for the other (outside:
  * what a complemented primitive asks; a plain one rules the candidate out)
- * and its passes follow the primitives that overlap, not all of them. */
+ * and its passes follow the primitives that overlap, not all of them. The
+ * same holds where their world boxes do not meet: no point of the one lies
+ * inside the other. */
 #include "internal.h"
 
 #define NEAR_W 1e-6f /* clip w below which a point counts as at or behind the eye */
@@ -60,6 +62,45 @@ int stin__csg_rects_meet(const stin_context *ctx, const float a[4], const float 
     const int *vp = ctx->frame.viewport;
     float mx = 2.0f / (float)(vp[2] > 0 ? vp[2] : 1), my = 2.0f / (float)(vp[3] > 0 ? vp[3] : 1);
     return a[0] <= b[2] + mx && b[0] <= a[2] + mx && a[1] <= b[3] + my && b[1] <= a[3] + my;
+}
+
+void stin__csg_world_box(const stin_context *ctx, const stin__draw *d, float box[6])
+{
+    const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
+    const float *m = d->transform;
+    int i, k;
+    for (k = 0; k < 3; k++) {
+        box[k] = 1e30f;
+        box[3 + k] = -1e30f;
+    }
+    for (i = 0; i < 8; i++) {
+        const float c[3] = {(i & 1) ? info->bounds_max[0] : info->bounds_min[0],
+                            (i & 2) ? info->bounds_max[1] : info->bounds_min[1],
+                            (i & 4) ? info->bounds_max[2] : info->bounds_min[2]};
+        for (k = 0; k < 3; k++) {
+            float v = m[k] * c[0] + m[4 + k] * c[1] + m[8 + k] * c[2] + m[12 + k];
+            box[k] = v < box[k] ? v : box[k];
+            box[3 + k] = v > box[3 + k] ? v : box[3 + k];
+        }
+    }
+}
+
+/* With a margin of 1e-3 of the larger extent: boxes that near may hold
+ * faces the coplanar rule counts as one plane. */
+int stin__csg_world_boxes_meet(const float a[6], const float b[6])
+{
+    float extent = 0.0f, margin;
+    int k;
+    for (k = 0; k < 3; k++) {
+        float ea = a[3 + k] - a[k], eb = b[3 + k] - b[k];
+        extent = ea > extent ? ea : extent;
+        extent = eb > extent ? eb : extent;
+    }
+    margin = 1e-3f * extent;
+    for (k = 0; k < 3; k++)
+        if (a[k] > b[3 + k] + margin || b[k] > a[3 + k] + margin)
+            return 0;
+    return 1;
 }
 
 void stin__csg_rect_cut(float a[4], const float b[4])

@@ -342,14 +342,26 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
     stin__csg_candidate_keep_where(ctx, path, r, mask, want);
 }
 
-/* Whether literal `lit` can matter where `own` (the candidate's window
- * rectangle) lies: 0 when their rectangles do not meet (csg_bounds.c). */
-static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, const float own[4])
+/* Where a candidate surface can lie: its window rectangle and, for a
+ * literal's surface (not the near-plane cap), its world box. */
+typedef struct extent {
+    float rect[4], box[6];
+    int has_box;
+} extent;
+
+/* Whether literal `lit` can matter for the candidate within `own`: 0 when
+ * their rectangles or their world boxes do not meet (csg_bounds.c). */
+static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, const extent *own)
 {
-    float rect[4];
-    stin__csg_screen_rect(ctx, &ctx->csg.primitives[p->first_primitive +
-                                                   STIN__CSG_PRIMITIVE_OF(lit)], rect);
-    return stin__csg_rects_meet(ctx, own, rect);
+    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    float rect[4], box[6];
+    stin__csg_screen_rect(ctx, d, rect);
+    if (!stin__csg_rects_meet(ctx, own->rect, rect))
+        return 0;
+    if (!own->has_box)
+        return 1;
+    stin__csg_world_box(ctx, d, box);
+    return stin__csg_world_boxes_meet(own->box, box);
 }
 
 static int winds(const stin_context *ctx, const stin__csg_product *p, uint32_t lit)
@@ -366,7 +378,7 @@ static int winds(const stin_context *ctx, const stin__csg_product *p, uint32_t l
  * Returns the index after the batch's last literal; *drawn: how many. */
 static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve *r,
                               const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
-                              const float own[4], const counting *how, uint32_t from,
+                              const extent *own, const counting *how, uint32_t from,
                               uint32_t *drawn)
 {
     unsigned most = (1u << r->bits) - 1u;
@@ -394,7 +406,7 @@ static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve
  * ones by winding numbers, 255 a batch, and the rest by parity. */
 static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
                          const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
-                         const float own[4], const counting *how)
+                         const extent *own, const counting *how)
 {
     uint32_t others[8], n = 0, j, meeting = 0, wound = 0, drawn, bits = (uint32_t)r->bits;
     int winding = stin__pass_two_sided_wrap(ctx) && bits >= 2;
@@ -452,20 +464,24 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
     int layers = 1, k, kept = 0;
     /* a convex surface (the cap's quad too) shows one layer a pixel */
     int one_layer = d->mesh_slot == ctx->csg.cap_slot || ctx->meshes[d->mesh_slot].info.convex;
-    float own[4], region[4];
-    /* off the candidate's rectangle a plain literal leaves nothing, a
-     * complemented one is outside (no pass): passes follow the overlaps */
-    stin__csg_screen_rect(ctx, d, own);
-    stin__memcopy(region, own, sizeof region);
+    float region[4];
+    extent own;
+    /* off the candidate's rectangle or box a plain literal leaves nothing,
+     * a complemented one is outside (no pass): passes follow the overlaps */
+    stin__csg_screen_rect(ctx, d, own.rect);
+    own.has_box = self < t->count;
+    if (own.has_box)
+        stin__csg_world_box(ctx, d, own.box);
+    stin__memcopy(region, own.rect, sizeof region);
     for (j = 0; j < t->count; j++) {
         uint32_t lit = ctx->csg.literals[t->first + j];
         float rect[4];
         if (j == self || STIN__CSG_COMPLEMENTED(lit))
             continue;
+        if (!meets(ctx, p, lit, &own))
+            return 0;
         stin__csg_screen_rect(ctx, &ctx->csg.primitives[p->first_primitive +
                                                        STIN__CSG_PRIMITIVE_OF(lit)], rect);
-        if (!stin__csg_rects_meet(ctx, own, rect))
-            return 0;
         stin__csg_rect_cut(region, rect); /* the surface lies inside each */
     }
     /* nothing outside the region is read (on the GPU) or read back: the
@@ -480,7 +496,7 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
             layers = depth_complexity(ctx, path, r);
         if (!stin__csg_candidate_open(ctx, r)) /* no layer, or none nearer */
             continue;
-        count_others(ctx, path, r, p, t, self, own, how);
+        count_others(ctx, path, r, p, t, self, &own, how);
         kept |= stin__csg_candidate_take(ctx, path, r, NULL, want_kept);
     }
     return kept;
