@@ -23,10 +23,10 @@
  * front of it: a subtracted box sharing a face's plane takes it away, one
  * touching it from outside does not, an intersected one ending there
  * leaves nothing (the exact reference's rule for crossings at one
- * distance). Passes a term: plain + 3 x complemented x runs + complemented
- * x (runs - 1) checks + plain; read-backs on the CPU: the depth, one
- * stencil a check, one each 255 plain primitives; on the GPU one wait a
- * check. On the GPU the term's passes keep to the rectangle of its plain
+ * distance). Passes a term: plain + 2 x complemented x runs (3 without
+ * two-sided stencil) + complemented x (runs - 1) checks + plain;
+ * read-backs on the CPU: the depth, one stencil a check, one each 255
+ * plain primitives; on the GPU one wait a check. On the GPU the term's passes keep to the rectangle of its plain
  * primitives' overlap (csg_bounds.c's region). */
 #include "internal.h"
 
@@ -241,21 +241,41 @@ static uint32_t *order_front_to_back(stin_context *ctx, const stin__csg_product 
     return pair;
 }
 
-/* Complemented d once: its front in front of the depth marks the pixel (1),
- * its back no nearer than the depth too promotes the mark (2): the depth
- * lies inside d (goldfeather's parity rule: crossed faces are those in
- * front, coincident ones included), and those pixels take the back face's
- * depth. */
+/* Complemented d once: the pixels where the depth lies inside d (its front
+ * in front of the depth and its back not: goldfeather's parity rule,
+ * crossed faces are those in front, coincident ones included) take its
+ * back face's depth. Marking them takes one pass over both faces with
+ * two-sided stencil (depth LESS: a front face passing counts 1, a back face
+ * failing 1 more), else two (the front faces mark 1, the back faces
+ * promote it to 2); the depth is written in a pass of its own, since the
+ * marks test with the coplanar rule's offset and an offset moves what a
+ * pass writes too. */
 static void subtract_one(stin_context *ctx, const stin__path *path, const stin__draw *d)
 {
     stin__pass_state ps = faces(ctx, d, 0, GL_LESS, 0);
     toward_eye(&ps);
-    stencil(&ps, GL_ALWAYS, 1, GL_KEEP, GL_KEEP, GL_REPLACE);
-    draw(ctx, path, d, &ps);
-    ps = faces(ctx, d, 1, GL_GEQUAL, 0);
-    toward_eye(&ps); /* a back face that near the depth ends the solid there */
-    stencil(&ps, GL_EQUAL, 1, GL_ZERO, GL_ZERO, GL_INCR);
-    draw(ctx, path, d, &ps);
+    if (stin__pass_two_sided(ctx)) {
+        int front_is_gl_front = stin__csg_culled_face(d, 0) == GL_BACK; /* not mirrored */
+        stencil(&ps, GL_ALWAYS, 0, GL_KEEP, GL_KEEP, GL_INCR); /* front faces: zpass */
+        ps.cull = 0;
+        ps.two_sided = 1;
+        ps.back = ps.front;
+        ps.back.zfail = GL_INCR; /* back faces: zfail */
+        ps.back.zpass = GL_KEEP;
+        if (!front_is_gl_front) {
+            stin__stencil_face swap = ps.front;
+            ps.front = ps.back;
+            ps.back = swap;
+        }
+        draw(ctx, path, d, &ps);
+    } else {
+        stencil(&ps, GL_ALWAYS, 1, GL_KEEP, GL_KEEP, GL_REPLACE);
+        draw(ctx, path, d, &ps);
+        ps = faces(ctx, d, 1, GL_GEQUAL, 0);
+        toward_eye(&ps); /* a back face that near the depth ends the solid there */
+        stencil(&ps, GL_EQUAL, 1, GL_ZERO, GL_ZERO, GL_INCR);
+        draw(ctx, path, d, &ps);
+    }
     ps = faces(ctx, d, 1, GL_ALWAYS, 1); /* the back face's own depth: EQUAL finds it later */
     stencil(&ps, GL_EQUAL, 2, GL_ZERO, GL_ZERO, GL_ZERO);
     draw(ctx, path, d, &ps);
@@ -316,8 +336,11 @@ static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels
     uint32_t n = list_complemented(ctx, p, t, &runs), i;
     const uint32_t *order = order_front_to_back(ctx, p, t, n);
     for (run = 0; run < runs; run++) {
-        if (run > 0 && check && !still_inside(ctx, path, r, p, t, order, n))
-            return;
+        if (run > 0 && check) {
+            if (!still_inside(ctx, path, r, p, t, order, n))
+                return;
+            stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT); /* its counts: subtract_one's start at 0 */
+        }
         ctx->stats.csg_scs_runs++;
         for (i = 0; i < n; i++)
             subtract_one(ctx, path,

@@ -64,12 +64,15 @@ static void apply_stencil(stin_context *ctx, const stin__pass_state *s, const st
     }
 }
 
+int stin__pass_two_sided(const stin_context *ctx)
+{
+    return (ctx->caps.present & (STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
+                                 STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL))) != 0;
+}
+
 int stin__pass_two_sided_wrap(const stin_context *ctx)
 {
-    uint64_t caps = ctx->caps.present;
-    return (caps & STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP)) &&
-           (caps & (STIN_CAP_BIT(STIN_CAP_STENCIL_TWO_SIDE) |
-                    STIN_CAP_BIT(STIN_CAP_SEPARATE_STENCIL)));
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL_WRAP)) && stin__pass_two_sided(ctx);
 }
 
 void stin__pass_apply(stin_context *ctx, const stin__pass_state *s)

@@ -34,6 +34,9 @@ extern const stin__pass_state stin__pass_defaults;
 
 /* Makes GL hold s, issuing only the calls whose state differs from the cache. */
 void stin__pass_apply(struct stin_context *ctx, const stin__pass_state *s);
+/* Whether one pass can give front and back faces their own stencil ops
+ * (two-sided or separate stencil). */
+int stin__pass_two_sided(const struct stin_context *ctx);
 /* Whether one pass can count both faces with wrapping increments and
  * decrements (stencil wrap and two-sided or separate stencil): else front
  * faces then back faces, increments first, clamped. */

@@ -1460,7 +1460,9 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * nearest survivor per pixel is kept as goldfeather keeps it (on the GPU
  * or the CPU).
  * Faces within 4 depth units of the depth count as in front of it (the
- * coplanar rule above). Passes a term: plain + 3 x complemented x runs +
+ * coplanar rule above). Passes a term: plain + 2 x complemented x runs (3
+ * without two-sided stencil: the mark of the depth inside a primitive
+ * takes a pass for its front and one for its back faces) +
  * complemented x (runs - 1) checks + plain; read-backs on the CPU: the
  * depth, one stencil a check and one each 255 plain primitives, against
  * goldfeather's per literal and layer (the GPU resolve: one wait a check),
