@@ -326,8 +326,14 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
 
 void stin__demote(stin_context *ctx, stin_feature f, stin_technique to, const char *why)
 {
+    stin__demote_at(ctx, STIN_LOG_LEVEL_WARNING, f, to, why);
+}
+
+void stin__demote_at(stin_context *ctx, stin_log_level level, stin_feature f, stin_technique to,
+                     const char *why)
+{
     stin_choice *c = &ctx->sel.choice[f];
-    stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "%s: %s falls back to %s: %s",
+    stin__log(ctx, level, STIN_LOG_FALLBACK, "%s: %s falls back to %s: %s",
               stin_feature_name(f), stin_technique_name(c->technique), stin_technique_name(to),
               why);
     c->technique = to;

@@ -55,6 +55,10 @@ stin_result stin__select_after_lighting(const stin_caps *caps, const stin_techni
 /* Moves feature f's choice to `to` after set-up found the chosen one
  * cannot run; logs a warning and marks the choice as fallen back. */
 void stin__demote(struct stin_context *ctx, stin_feature f, stin_technique to, const char *why);
+/* The same at log level `level` (INFO where the caller's own choice, not
+ * the context, rules the technique out and it was not forced). */
+void stin__demote_at(struct stin_context *ctx, stin_log_level level, stin_feature f,
+                     stin_technique to, const char *why);
 
 /* Row accessors kept for callers that ask one thing. */
 uint64_t stin__technique_needs(stin_technique t);

@@ -5,6 +5,12 @@
  * (the others are no-ops). */
 #include "internal.h"
 
+stin_log_level stin__translucent_fallback_level(const stin_context *ctx, int shadows_off)
+{
+    int forced = ctx->desc.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] != STIN_TECH_NONE;
+    return shadows_off && !forced ? STIN_LOG_LEVEL_INFO : STIN_LOG_LEVEL_WARNING;
+}
+
 const char *stin__translucent_chunk(const stin_context *ctx)
 {
     const char *deep = stin__deep_chunk(ctx);

@@ -99,6 +99,11 @@ int stin__coloured_active(const struct stin_context *ctx);
 void stin__coloured_light(struct stin_context *ctx, uint32_t li);
 void stin__coloured_light_done(struct stin_context *ctx);
 
+/* The log level of a map technique's fall-back: INFO where shadows are off
+ * (the caller's choice rules every map out) and the technique was only the
+ * tier's default, else WARNING. */
+stin_log_level stin__translucent_fallback_level(const struct stin_context *ctx, int shadows_off);
+
 /* The translucent-shadows technique in use, whichever it is
  * (translucent.c). The lit programs' chunk after the shadow chunk, or NULL. */
 const char *stin__translucent_chunk(const struct stin_context *ctx);

@@ -129,7 +129,8 @@ void stin__coloured_init(stin_context *ctx)
         stin__formatf(why, sizeof why, "coloured: %s%s%s%s", fail, msg[0] ? " (" : "", msg,
                       msg[0] ? ")" : "");
         stin__coloured_release(ctx);
-        stin__demote(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_OPAQUE, why);
+        stin__demote_at(ctx, stin__translucent_fallback_level(ctx, !ctx->shadow->light),
+                        STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_OPAQUE, why);
         return;
     }
     s->ready = 1;

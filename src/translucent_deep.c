@@ -171,7 +171,8 @@ void stin__deep_init(stin_context *ctx)
         stin__formatf(why, sizeof why, "deep: %s%s%s%s", fail, msg[0] ? " (" : "", msg,
                       msg[0] ? ")" : "");
         stin__deep_release(ctx);
-        stin__demote(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_SOLID, why);
+        stin__demote_at(ctx, stin__translucent_fallback_level(ctx, !ctx->shadow->light),
+                        STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TECH_TRANSLUCENT_SOLID, why);
         return;
     }
     if (s->flagged) { /* the early stop's flag: one uint, cleared before each pass */

@@ -596,7 +596,8 @@ const char *stin_feature_name(stin_feature f);
  * light's transmittance in a tile of its own (VISIBILITY FOR THE
  * APPLICATION'S SHADERS).
  * Displaced transparent casters peel their displaced surface. With shadows
- * "off" it falls back to "translucent-solid" (logged); forcing it on a
+ * "off" it falls back to "translucent-solid" (logged as INFO where deep was
+ * the tier's default, as a WARNING where the caller forced it); forcing it on a
  * context without the GL4 tier is UNSUPPORTED, naming what is missing.
  * GPU memory: 2 x 6 x ceil(deep_layers / 2) x deep_map_size^2 x 16 bytes
  * (RGBA32F: depth and V; 6 faces, two ping-pong array textures) plus a
@@ -621,7 +622,7 @@ const char *stin_feature_name(stin_feature f);
  * lit one per pass while it is in use, a frame without transparent draws
  * draws no map, blended draws are drawn unshadowed, the visibility map
  * (export_visibility) holds the transmittance as with deep, and
- * with shadows "off" it falls back to "opaque" (logged). The face size is
+ * with shadows "off" it falls back to "opaque" (logged, at deep's levels). The face size is
  * halved until three faces fit the context's largest texture. GPU memory:
  * 6 x deep_map_size^2 x (4 + 4) bytes (12 MiB at 512).
  * "opaque" (every tier) ends the chain: a caster whose opacity is at least

@@ -22,6 +22,7 @@ static stin_mesh quad;
 static stin_technique shadows = STIN_TECH_SHADOWS_OFF; /* of the next context */
 static uint64_t caps_mask;
 static uint32_t debug_flags; /* of the next context */
+static stin_technique translucent = STIN_TECH_NONE; /* forced translucent-shadows, if any */
 
 static const float quad_pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
 static const uint32_t quad_idx[] = {0, 1, 2, 0, 2, 3};
@@ -60,6 +61,7 @@ static void create_context(const fake_gl_config *cfg, uint32_t max_lights, uint3
     d.max_draws = max_draws;
     d.max_texture_bytes = max_texture_bytes;
     d.techniques[STIN_FEATURE_SHADOWS] = shadows; /* pass counts are unshadowed by default */
+    d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] = translucent;
     d.caps_mask = caps_mask;
     d.debug_flags = debug_flags;
     bytes = stin_memory_size(&d);
@@ -785,12 +787,31 @@ static void test_export_without_room_for_transmittance(void **state)
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
+/* With shadows off no light has a map, so deep (the GL4 default) falls
+ * back: said as INFO when it was only the default (the caller's own
+ * choice rules it out), as a WARNING when the caller forced it. */
+static void test_translucent_fallback_without_shadows(void **state)
+{
+    int forced;
+    (void)state;
+    for (forced = 0; forced < 2; forced++) {
+        translucent = forced ? STIN_TECH_TRANSLUCENT_DEEP : STIN_TECH_NONE;
+        create_profile(FAKE_GL45_CORE, 4, 8);
+        assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS).technique,
+                         STIN_TECH_TRANSLUCENT_SOLID);
+        assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "shadows are off"));
+        assert_int_equal(log_.warnings, (unsigned)forced);
+    }
+    translucent = STIN_TECH_NONE;
+}
+
 #define TEST(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         TEST(test_call_order_errors),
+        TEST(test_translucent_fallback_without_shadows),
         TEST(test_bad_frame_descs),
         TEST(test_bad_lights_are_rejected),
         TEST(test_light_defaults_and_direction_normalised),
