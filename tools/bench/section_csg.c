@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* The CSG section (issue 12): stin's scs and goldfeather against OpenCSG
  * 1.5's SCS and Goldfeather (opencsg_shim.cpp), and stin's interval (GL4;
- * n <= 32, the rows it resolves itself) against OpenCSG's Goldfeather,
- * the general method it replaces, on the same context, size
- * and product: a 2 x 1 x 2 box minus n - 1 spheres on a grid in its top
+ * n <= 32, the rows it resolves itself; forced only, so outside the goal)
+ * against OpenCSG's Goldfeather, the general method it replaces, on the
+ * same context, size and product: a 2 x 1 x 2 box minus n - 1 spheres on a grid in its top
  * face (n = 2, 8, 32, 128), and minus n - 1 spheres in a row along the
  * view (depth complexity n). One point light, no shadows on either side;
  * stin draws the product lit (ambient and light pass), OpenCSG's surface is
@@ -291,7 +291,9 @@ int section_csg(bench_env *env, const scene *s, int *ran)
                    cases[k].n, method_name[c.method], c.passes, a,
                    c.opencsg ? (c.scs ? "SCS" : "Goldfeather") : "(stin again)", o, ratio);
             fflush(stdout);
-            if (c.opencsg && (!worst_set || ratio > worst)) {
+            /* the goal's rows: stin's goldfeather and scs against OpenCSG's
+             * (the issue's); interval is forced only and timed beside them */
+            if (c.opencsg && c.method != 2 && (!worst_set || ratio > worst)) {
                 worst = ratio;
                 worst_set = 1;
                 snprintf(worst_at, sizeof worst_at, "%s n = %d, %s", cases[k].name,
@@ -305,7 +307,8 @@ int section_csg(bench_env *env, const scene *s, int *ran)
     *ran = 1;
     bench_machine_once(env);
     if (worst_set)
-        printf("goal stin / OpenCSG <= %.1f on every row: %s (worst %.2f, %s)\n", GOAL,
+        printf("goal stin / OpenCSG <= %.1f on every goldfeather and scs row: %s (worst %.2f, "
+               "%s)\n", GOAL,
                worst <= GOAL ? "met" : "NOT met", worst, worst_at);
     scene_mesh_release(&c.box);
     scene_mesh_release(&c.ball);
