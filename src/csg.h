@@ -269,6 +269,17 @@ int stin__csg_window_box(const struct stin_context *ctx, const float ndc[4], int
 /* The clip w (the distance along the view) of d's bounding box's nearest
  * corner: a front-to-back key. */
 float stin__csg_nearest_w(const struct stin_context *ctx, const stin__draw *d);
+/* The eye of the frame's camera in world space; 0 where the projection is
+ * orthographic (or singular). */
+int stin__csg_eye(const struct stin_context *ctx, float eye[3]);
+/* The eye's power with respect to the sphere at d's world box's centre
+ * whose squared radius is the mean of the box's squared half-extents (for a
+ * sphere mesh, the sphere): its squared distance minus its squared radius.
+ * A front-to-back key for scs: where the depth leaves subtracted sphere A
+ * inside sphere B, A's power from the eye is below B's, or the depth began
+ * inside both (the radical plane between two lies where their powers are
+ * equal, and the depth only moves away from the eye). */
+float stin__csg_power(const struct stin_context *ctx, const stin__draw *d, const float eye[3]);
 /* a = a cut to b (both normalised device min x, y, max x, y; empty: min > max). */
 void stin__csg_rect_cut(float a[4], const float b[4]);
 

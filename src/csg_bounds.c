@@ -174,3 +174,32 @@ float stin__csg_nearest_w(const stin_context *ctx, const stin__draw *d)
     }
     return nearest;
 }
+
+int stin__csg_eye(const stin_context *ctx, float eye[3])
+{
+    float inv[16];
+    int k;
+    /* the eye is the point the projection sends to w = 0 with x = y = 0:
+     * the inverse's image of the clip direction (0, 0, 1, 0) */
+    if (!stin__mat4_invert(inv, ctx->view_proj))
+        return 0;
+    if (!(inv[11] > 1e-20f || inv[11] < -1e-20f))
+        return 0; /* orthographic: the eye lies at infinity */
+    for (k = 0; k < 3; k++)
+        eye[k] = inv[8 + k] / inv[11];
+    return stin__finite_n(eye, 3);
+}
+
+float stin__csg_power(const stin_context *ctx, const stin__draw *d, const float eye[3])
+{
+    float box[6], centre, half, distance2 = 0.0f, radius2 = 0.0f;
+    int k;
+    stin__csg_world_box(ctx, d, box);
+    for (k = 0; k < 3; k++) {
+        centre = 0.5f * (box[k] + box[3 + k]);
+        half = 0.5f * (box[3 + k] - box[k]);
+        distance2 += (centre - eye[k]) * (centre - eye[k]);
+        radius2 += half * half / 3.0f; /* a sphere's box is a cube: the sphere's own */
+    }
+    return distance2 - radius2;
+}

@@ -201,22 +201,28 @@ static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
     return n;
 }
 
-/* The listed literals front to back (nearest corner of the bounding box
- * first), over the boxes in the scratch: pairs of the key's bits and the
- * literal, returned as the start of the scratch. A sequence in that order
- * pushes most pixels through every primitive in its first run (the row
- * along the view: all of them), so the check below ends it early. Any
- * order is exact: the runs' count is what makes it so. */
+/* The listed literals front to back, over the boxes in the scratch: pairs
+ * of the key's bits and the literal, returned as the start of the scratch.
+ * The key is the eye's power with respect to the sphere around each world
+ * box (orthographic cameras: the nearest corner's w). For spheres that is
+ * the order the rays meet them in, intersecting ones too, so a sequence in
+ * that order pushes every pixel through every sphere in its first run (the
+ * bench's grids and row), and the check below ends it. Any order is exact:
+ * the runs' count is what makes it so. */
 static uint32_t *order_front_to_back(stin_context *ctx, const stin__csg_product *p,
                                      const stin__csg_term *t, uint32_t n)
 {
     uint32_t *pair = ctx->csg.scratch, li, k = 0, gap, i, j;
+    float eye[3];
+    int perspective = stin__csg_eye(ctx, eye);
     for (li = 0; li < t->count; li++) {
+        const stin__draw *d;
         float key;
         if (!listed(pair, li))
             continue;
         /* entry k <= li overwrites boxes already read */
-        key = stin__csg_nearest_w(ctx, primitive_of(ctx, p, ctx->csg.literals[t->first + li]));
+        d = primitive_of(ctx, p, ctx->csg.literals[t->first + li]);
+        key = perspective ? stin__csg_power(ctx, d, eye) : stin__csg_nearest_w(ctx, d);
         stin__memcopy(&pair[2u * k], &key, sizeof key);
         pair[2u * k + 1u] = li;
         k++;

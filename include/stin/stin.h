@@ -1444,8 +1444,9 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * intersection begins); the complemented primitives in a subtraction
  * sequence, each pushing the depth to its back face where the depth lies
  * inside it (its front in front of the depth, its back not), front to back
- * (the nearest corner of each bounding box first: a row along the view
- * takes one run), the list run at most as many times as complemented
+ * (by the eye's power with respect to each bounding box's sphere: spheres,
+ * intersecting ones too, then take one run; orthographic cameras: the
+ * nearest corner's w), the list run at most as many times as complemented
  * primitives can cover one pixel (1 + the most others one's window box
  * meets, or their count past 1024 of them: every order of those is in
  * the sequence), each run after the

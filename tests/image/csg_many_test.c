@@ -12,13 +12,19 @@
  *               one 8-bit counter and must fail here), under scs;
  *   pockets     a box minus 31 spheres on a 6 x 6 grid in its top face,
  *               each cutting into its neighbours (stin-bench's grid n = 32),
- *               under scs and goldfeather. No order of the spheres takes a
- *               pixel through every neighbour it lies in, so scs needs a
- *               second run; its check must ask for it and then stop:
- *               "sequence" holds the runs (stin_frame_stats.csg_scs_runs)
- *               between 2 and fewer than with the check off
- *               (STIN_DEBUG_CSG_SCS_NO_EARLY_STOP: every run the boxes'
- *               bound allows), with P and N the same, pixel for pixel;
+ *               under scs and goldfeather. scs orders spheres by the eye's
+ *               power, which takes every pixel through every sphere it
+ *               lies in at once: "sequence" holds its runs
+ *               (stin_frame_stats.csg_scs_runs) at 1, fewer than with the
+ *               check off (STIN_DEBUG_CSG_SCS_NO_EARLY_STOP: every run the
+ *               boxes' bound allows), with P and N the same, pixel for pixel;
+ *   cycle       the box minus 3 tilted bars in a triangle, seen from above:
+ *               at each corner one bar's deep end runs through the next
+ *               one's high end, so each bar must come before another and
+ *               no order takes every pixel through in one run. Under scs
+ *               and goldfeather; "sequence" holds scs's runs at 2 or more
+ *               (the check asks for a second run) and fewer than every
+ *               run, with the same P and N;
  *   cluster     the intersection of 12 unit spheres with centres spread
  *               over +-0.3 minus 12 spheres of radius 0.25 around it (one
  *               term of 12 plain and 12 complemented literals), under
@@ -51,18 +57,57 @@
 #define POCKETS 32 /* primitives: the box and 31 spheres */
 #define POCKET_SIDE 6
 #define CLUSTER 24 /* 12 plain spheres, then 12 complemented */
+#define CYCLE 4    /* the box and 3 bars */
 #define MANY_P_RELATIVE 1e-3
 #define MANY_P_ABSOLUTE 1e-3
 #define MANY_P_MIN_MATCH 0.999
 #define MANY_NORMAL_DEGREES 2.0
 #define MANY_NORMAL_MIN_MATCH 0.995
 
-typedef enum shape { DIMPLES, THOUSAND, POCKETS_SHAPE, CLUSTER_SHAPE } shape;
-static const char *const shape_names[] = {"dimples", "thousand", "pockets", "cluster"};
+typedef enum shape { DIMPLES, THOUSAND, POCKETS_SHAPE, CLUSTER_SHAPE, CYCLE_SHAPE } shape;
+static const char *const shape_names[] = {"dimples", "thousand", "pockets", "cluster", "cycle"};
 
 static int primitives_of(shape sh)
 {
-    return sh == POCKETS_SHAPE ? POCKETS : sh == CLUSTER_SHAPE ? CLUSTER : MANY;
+    return sh == POCKETS_SHAPE   ? POCKETS
+           : sh == CLUSTER_SHAPE ? CLUSTER
+           : sh == CYCLE_SHAPE   ? CYCLE
+                                 : MANY;
+}
+
+/* Bar k of the cycle: from triangle corner k, high (its top out of the
+ * box's top face), down to corner k + 1, deep (below the face), 0.15 past
+ * both: at each corner the deep end of one bar runs through the high end
+ * of the next. Its matrix (column-major: the bar's x along it) as JSON. */
+static void cycle_bar(FILE *f, int k)
+{
+    const double radius = 0.55, high = 0.47, deep = 0.37, pi = 3.14159265358979;
+    double a = pi / 2 + 2 * pi * k / 3, b = a + 2 * pi / 3;
+    double p[3] = {radius * cos(a), high, radius * sin(a)};
+    double q[3] = {radius * cos(b), deep, radius * sin(b)};
+    double u[3], v[3], w[3], len = 0, up;
+    int i;
+    for (i = 0; i < 3; i++) {
+        u[i] = q[i] - p[i];
+        len += u[i] * u[i];
+    }
+    len = sqrt(len);
+    for (i = 0; i < 3; i++)
+        u[i] /= len;
+    up = u[1]; /* the world's up less its part along the bar */
+    v[0] = -up * u[0];
+    v[1] = 1.0 - up * u[1];
+    v[2] = -up * u[2];
+    len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (i = 0; i < 3; i++)
+        v[i] /= len;
+    w[0] = u[1] * v[2] - u[2] * v[1];
+    w[1] = u[2] * v[0] - u[0] * v[2];
+    w[2] = u[0] * v[1] - u[1] * v[0];
+    fprintf(f, "\"matrix\": [%.6f, %.6f, %.6f, 0, %.6f, %.6f, %.6f, 0, %.6f, %.6f, %.6f, 0, "
+               "%.6f, %.6f, %.6f, 1]",
+            u[0], u[1], u[2], v[0], v[1], v[2], w[0], w[1], w[2], 0.5 * (p[0] + q[0]),
+            0.5 * (p[1] + q[1]), 0.5 * (p[2] + q[2]));
 }
 
 /* A deterministic spread in [-1, 1). */
@@ -85,7 +130,22 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
         snprintf(err, err_size, "cannot write a temporary scene");
         return 0;
     }
-    if (sh == POCKETS_SHAPE)
+    if (sh == CYCLE_SHAPE) {
+        /* 0.953 between corners, 0.1 down: each bar 0.15 longer each way */
+        double along = sqrt(3.0 * 0.55 * 0.55 + 0.1 * 0.1) + 0.3;
+        /* from above, so the rays leave a bar through its bottom */
+        fprintf(f, "{\"camera\": {\"eye\": [0, 4, 1], \"target\": [0, 0, 0], \"fovy\": 40},\n"
+                   "\"meshes\": {\"box\": {\"primitive\": \"box\", \"size\": [2, 1, 2]},\n"
+                   "  \"bar\": {\"primitive\": \"box\", \"size\": [%.6f, 0.16, 0.16]}},\n"
+                   "\"materials\": {\"m\": {\"color\": [0.7, 0.7, 0.8]}},\n"
+                   "\"objects\": [{\"name\": \"box\", \"mesh\": \"box\", \"material\": \"m\"}",
+                along);
+        for (i = 0; i < 3; i++) {
+            fprintf(f, ", {\"name\": \"bar%d\", \"mesh\": \"bar\", \"material\": \"m\", ", i);
+            cycle_bar(f, i);
+            fprintf(f, "}\n");
+        }
+    } else if (sh == POCKETS_SHAPE)
         fprintf(f, "{\"camera\": {\"eye\": [0, 2, 4], \"target\": [0, 0, 0], \"fovy\": 45},\n"
                    "\"meshes\": {\"box\": {\"primitive\": \"box\", \"size\": [2, 1, 2]},\n"
                    "  \"ball\": {\"primitive\": \"sphere\", \"radius\": %.6f, \"slices\": 24, "
@@ -108,7 +168,8 @@ static int make_scene(shape sh, scene *s, char *err, size_t err_size)
                    "\"slices\": 16, \"stacks\": 12}},\n"
                    "\"materials\": {\"m\": {\"color\": [0.7, 0.7, 0.8]}},\n"
                    "\"objects\": [");
-    for (i = sh == THOUSAND || sh == CLUSTER_SHAPE ? 0 : 1; i < primitives_of(sh); i++) {
+    for (i = sh == THOUSAND || sh == CLUSTER_SHAPE ? 0 : 1;
+         sh != CYCLE_SHAPE && i < primitives_of(sh); i++) {
         double x, y, z;
         int bead = sh == CLUSTER_SHAPE && i >= CLUSTER / 2;
         if (bead) { /* on the blob's surface, which reaches about 0.7 out */
@@ -221,24 +282,29 @@ static int same_surface(const image *a, const image *b, long *differ)
     return 1;
 }
 
-/* scs's check (pockets): a second run asked for, the bound's runs not
- * needed, the same surface as with every run. */
+/* scs's sequence against every run the boxes' bound allows (the same
+ * surface, pixel for pixel): pockets, spheres in their power order from the
+ * eye, in one run (every pixel through every sphere it lies in); cycle,
+ * whose bars must each come before another, in a second run the check
+ * asks for, and no more. */
 static void sequence_check(run *r, const scene *s, capture_options *o, const capture *checked,
-                           const char *name)
+                           const char *name, shape sh)
 {
     capture all;
     long differ = 0;
-    unsigned runs = checked->stats.csg_scs_runs, every;
+    unsigned runs = checked->stats.csg_scs_runs, every, least = sh == CYCLE_SHAPE ? 2u : 1u;
+    unsigned most = sh == CYCLE_SHAPE ? 0xffffffffu : 1u;
     int same;
     o->debug_flags = STIN_DEBUG_CSG_SCS_NO_EARLY_STOP;
     if (!capture_forced(r, s, o, STIN_FEATURE_CSG, STIN_TECH_CSG_SCS, &all, name))
         return;
     every = all.stats.csg_scs_runs;
     same = same_surface(&checked->img, &all.img, &differ);
-    report(r, runs >= 2 && runs < every && same && differ == 0 ? "PASS" : "FAIL", name,
-           "%u runs with the check, %u without (need 2 <= runs < %u); P and N differ on %ld "
-           "pixels (need 0)",
-           runs, every, every, same ? differ : -1L);
+    report(r, runs >= least && runs <= most && runs < every && same && differ == 0 ? "PASS"
+                                                                                   : "FAIL",
+           name, "%u runs with the check, %u without (need %u <= runs%s < %u); P and N differ "
+           "on %ld pixels (need 0)",
+           runs, every, least, most == 1u ? " <= 1," : "", every, same ? differ : -1L);
     capture_free(&all);
 }
 
@@ -328,9 +394,9 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
            cr.normal_compared, cr.normal_max_deg, 100.0 * MANY_NORMAL_MIN_MATCH);
     strcpy(name + strlen(name) - 1, "gl-clean");
     capture_report_clean(r, name, &cap);
-    if (sh == POCKETS_SHAPE && tech == STIN_TECH_CSG_SCS) {
+    if ((sh == POCKETS_SHAPE || sh == CYCLE_SHAPE) && tech == STIN_TECH_CSG_SCS) {
         strcpy(name + strlen(name) - 8, "sequence");
-        sequence_check(r, &s, &o, &cap, name);
+        sequence_check(r, &s, &o, &cap, name, sh);
     }
 done:
     if (have_cap)
@@ -350,6 +416,8 @@ void csg_many_tests(run *r, stin_tier tier)
     run_many(r, tier, POCKETS_SHAPE, STIN_TECH_CSG_GOLDFEATHER, 0);
     run_many(r, tier, CLUSTER_SHAPE, STIN_TECH_CSG_GOLDFEATHER, 0);
     run_many(r, tier, CLUSTER_SHAPE, STIN_TECH_CSG_SCS, 0);
+    run_many(r, tier, CYCLE_SHAPE, STIN_TECH_CSG_SCS, 0);
+    run_many(r, tier, CYCLE_SHAPE, STIN_TECH_CSG_GOLDFEATHER, 0);
     if (getenv("STIN_CSG_BREAK_BATCH")) /* the proof that batching matters: must FAIL */
         run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, STIN_DEBUG_CSG_NO_BATCH);
 }
