@@ -134,7 +134,10 @@ static int in_set(const stin__draw *d, int which)
 }
 
 /* The CSG products' faces on their resolved depth (opaque): a back face
- * lit from its side by two-sided lighting (GL flips its normal). */
+ * lit from its side by two-sided lighting (GL flips its normal). GL flips
+ * the normals of the faces it finds back-facing in the window: under a
+ * mirroring transform the mesh's back faces wind the other way, so GL is
+ * told clockwise is front for them (and culls accordingly). */
 static void draw_csg_faces(stin_context *ctx, int which, int materials)
 {
     uint32_t i;
@@ -145,6 +148,12 @@ static void draw_csg_faces(stin_context *ctx, int which, int materials)
         const stin__draw *d = &ctx->csg.faces[i];
         if (!stin__csg_face_begin(ctx, d, &saved))
             continue;
+        if (d->csg == STIN__CSG_BACK && stin__mat4_det(d->transform) < 0.0) {
+            stin__pass_state ps = *stin__pass_current(ctx);
+            ps.front_face = GL_CW;
+            ps.cull_face = ps.cull_face == GL_BACK ? GL_FRONT : GL_BACK;
+            stin__pass_apply(ctx, &ps);
+        }
         if (d->csg == STIN__CSG_BACK)
             GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 1);
         if (materials)

@@ -477,14 +477,7 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
                cr.p_mismatch, 100.0 * CSG_P_MIN_MATCH);
     }
     case_name(c, tech, tier, "N", name, sizeof name);
-    report(r,
-           cr.normal_compared &&
-                   cr.normal_over <= (1.0 - CSG_NORMAL_MIN_MATCH) * cr.normal_compared
-               ? "PASS"
-               : "FAIL",
-           name, "N within %.0f degrees on %ld of %ld pixels away from edges (max %.1f; need "
-           "%.1f%%)", CSG_NORMAL_DEGREES, cr.normal_compared - cr.normal_over,
-           cr.normal_compared, cr.normal_max_deg, 100.0 * CSG_NORMAL_MIN_MATCH);
+    csg_report_normals(r, name, &cr, CSG_NORMAL_DEGREES, CSG_NORMAL_MIN_MATCH);
     if (c->shadows) {
         static const stin_technique shadow_techniques[] = {
             STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_MAP_DEPTH,
@@ -528,6 +521,18 @@ done:
     free(hits);
     reference_destroy(ref);
     scene_free(&s);
+}
+
+void csg_report_normals(run *r, const char *name, const compare_result *cr, double degrees,
+                        double min_match)
+{
+    report(r,
+           cr->normal_compared && cr->normal_over <= (1.0 - min_match) * cr->normal_compared
+               ? "PASS"
+               : "FAIL",
+           name, "N within %.0f degrees on %ld of %ld pixels away from edges (max %.1f; need "
+           "%.1f%%)", degrees, cr->normal_compared - cr->normal_over, cr->normal_compared,
+           cr->normal_max_deg, 100.0 * min_match);
 }
 
 void csg_tests(run *r, stin_tier tier, const char *path)

@@ -63,6 +63,11 @@ int displace_scene(const char *path);
 void csg_tests(run *r, stin_tier tier, const char *path);
 /* Products of 1000 primitives, generated (csg_many_test.c; from csg_tests). */
 void csg_many_tests(run *r, stin_tier tier);
+/* N against the CSG reference: within `degrees` on min_match of the pixels
+ * away from edges (csg_test.c; compare.h's result). */
+struct compare_result;
+void csg_report_normals(run *r, const char *name, const struct compare_result *cr,
+                        double degrees, double min_match);
 /* Products casting shadows (csg_cast_test.c; from csg_tests, dir: csg.json's folder). */
 void csg_cast_tests(run *r, stin_tier tier, const char *dir);
 /* Deep shadow maps ("deep", GL4) against the reference's transmittance, on
