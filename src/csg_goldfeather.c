@@ -422,8 +422,11 @@ static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
         winding = (wound + most - 1u) / most + (meeting - wound + bits - 1u) / bits <
                   (meeting + bits - 1u) / bits;
     }
-    for (j = 0; winding && wound; wound -= drawn)
+    for (j = 0; winding && wound; wound -= drawn) {
         j = winding_batch(ctx, path, r, p, t, self, own, how, j, &drawn);
+        if (!drawn) /* the count above saw the same literals: not reached */
+            break;
+    }
     for (j = 0; j < t->count; j++) {
         uint32_t lit = ctx->csg.literals[t->first + j];
         if (j == self || (winding && winds(ctx, p, lit)) || !meets(ctx, p, lit, own))

@@ -26,8 +26,9 @@
  * distance). Passes a term: plain + 2 x complemented x runs (3 without
  * two-sided stencil) + complemented x (runs - 1) checks + plain;
  * read-backs on the CPU: the depth, one stencil a check, one each 255
- * plain primitives; on the GPU one wait a check. On the GPU the term's passes keep to the rectangle of its plain
- * primitives' overlap (csg_bounds.c's region). */
+ * plain primitives; on the GPU one wait a check. On the GPU the term's
+ * passes keep to the rectangle of its plain primitives' overlap
+ * (csg_bounds.c's region). */
 #include "internal.h"
 
 #ifndef OFFSET_UNITS
@@ -203,8 +204,8 @@ static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
 
 /* The listed literals front to back, over the boxes in the scratch: pairs
  * of the key's bits and the literal, returned as the start of the scratch.
- * The key is the eye's power with respect to the sphere around each world
- * box (orthographic cameras: the nearest corner's w). For spheres that is
+ * The key is the eye's power with respect to each world box's sphere
+ * (csg_bounds.c; orthographic cameras: the nearest corner's w). For spheres that is
  * the order the rays meet them in, intersecting ones too, so a sequence in
  * that order pushes every pixel through every sphere in its first run (the
  * bench's grids and row), and the check below ends it. Any order is exact:
