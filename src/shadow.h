@@ -163,7 +163,7 @@ typedef struct stin__vdsm_state {
     GLint pos_model, pos_view_proj, pos_camera, pos_csg, pos_csg_depth;
     GLint face_position, face_normal, face_light;
     GLint poly_model, poly_view_proj, poly_light, poly_camera, poly_viewport, poly_grow,
-        poly_cull_lit, poly_caps, poly_position, poly_normal;
+        poly_cull_lit, poly_caps, poly_position, poly_normal, poly_depth_test;
     stin__displace_locs pos_displace, poly_displace; /* their displacement chunks */
     float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
     int ready;              /* this frame's position buffer is drawn */

@@ -94,6 +94,7 @@ static void locate(stin_context *ctx)
     LOC(poly_camera, polygon_prog, "u_camera");
     LOC(poly_viewport, polygon_prog, "u_viewport");
     LOC(poly_grow, polygon_prog, "u_grow");
+    LOC(poly_depth_test, polygon_prog, "u_depth_test");
     LOC(poly_cull_lit, polygon_prog, "u_cull_lit");
     LOC(poly_caps, polygon_prog, "u_caps");
     LOC(poly_position, polygon_prog, "u_position");
@@ -230,13 +231,36 @@ int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d)
            ctx->meshes[d->mesh_slot].info.closed_manifold;
 }
 
+/* Whether the shadow polygons test their depth against the visible
+ * surface's: the position buffer's own depth (its draws' nearest), so a
+ * face behind it is not shaded. Where the buffer's depth is not the
+ * surface tested (a peeled layer's points, products' faces) it lies behind
+ * it: the test then passes more, never less. */
+static int depth_tested(const stin_context *ctx)
+{
+    return !(ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_DEPTH_TEST) &&
+           (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP));
+}
+
+/* The mask's framebuffer with the position buffer's depth in place of its
+ * own depth-stencil (on), or back (off). */
+static void surface_depth(stin_context *ctx, int on)
+{
+    GLuint depth = on ? ctx->vdsm.depth : ctx->mask.depth_stencil;
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                                  on ? 0u : depth, 0);
+}
+
 static void polygons(stin_context *ctx, const float light[4])
 {
     stin__vdsm_state *v = &ctx->vdsm;
     const int *vp = ctx->frame.viewport;
+    const stin__pass_state before = *stin__pass_current(ctx);
+    stin__pass_state ps = before;
     float viewport[4];
     uint32_t i;
-    int culled = -1;
+    int culled = -1, tested = depth_tested(ctx);
     viewport[0] = (float)vp[0];
     viewport[1] = (float)vp[1];
     viewport[2] = (float)vp[2];
@@ -247,6 +271,18 @@ static void polygons(stin_context *ctx, const float light[4])
     GL(ctx, Uniform4fv)(v->poly_camera, 1, v->camera);
     GL(ctx, Uniform4fv)(v->poly_viewport, 1, viewport);
     GL(ctx, Uniform1f)(v->poly_grow, ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_GROW ? 0.0f : 0.5f);
+    GL(ctx, Uniform1i)(v->poly_depth_test, tested);
+    if (tested) {
+        /* depth LESS, not written, unclipped by the near and far planes;
+         * pulled toward the eye by a pixel's slope and 4 steps against the
+         * rounding of both depths where the surface point lies just inside */
+        ps.depth_test = ps.depth_clamp = ps.polygon_offset = 1;
+        ps.depth_func = GL_LESS;
+        ps.offset_factor = -1.0f;
+        ps.offset_units = -4.0f;
+        surface_depth(ctx, 1);
+        stin__pass_apply(ctx, &ps);
+    }
     GL(ctx, Uniform1i)(v->poly_position, 0);
     GL(ctx, Uniform1i)(v->poly_normal, 1);
     stin__vdsm_pyramid_uniforms(ctx);
@@ -269,6 +305,10 @@ static void polygons(stin_context *ctx, const float light[4])
         GL(ctx, EndQuery)(GL_PRIMITIVES_GENERATED);
         GL(ctx, GetQueryObjectuiv)(v->query, GL_QUERY_RESULT, &n);
         ctx->stats.vdsm_primitives += n;
+    }
+    if (tested) {
+        surface_depth(ctx, 0);
+        stin__pass_apply(ctx, &before);
     }
 }
 

@@ -93,7 +93,13 @@
  * Area lights are shadowed from their centre (logged once). Cost: every
  * triangle of every draw once per light through the geometry shader (twice
  * more through the pyramid's light pass), plus the screen area of its grown
- * shadow faces; STIN_DEBUG_VDSM_COUNT counts the emitted primitives. Without
+ * shadow faces, less those behind the visible surface: each face carries its
+ * own depth and is tested LESS against the position buffer's (depth clamped,
+ * pulled toward the eye by a pixel's slope and 4 steps; the eye ray enters a
+ * volume through a face it sees before it reaches a point inside, so the
+ * mask is the same; STIN_DEBUG_VDSM_NO_DEPTH_TEST shades them all, for
+ * measurement; needs depth clamping, core since GL 3.2);
+ * STIN_DEBUG_VDSM_COUNT counts the emitted primitives. Without
  * its shaders or the mask it falls back (logged) to "volume" where there is
  * a stencil buffer, else "map-pcf"; without the pyramid's shaders or
  * framebuffer it runs without SM and DC (logged).
@@ -882,6 +888,9 @@ typedef struct stin_desc {
 #define STIN_DEBUG_VDSM_NO_SM 32u   /* no light-view pyramid culling of triangles in shadow */
 #define STIN_DEBUG_VDSM_NO_DC 64u   /* extrude to infinity; no culling of triangles with no
                                      * receiver behind them */
+#define STIN_DEBUG_VDSM_NO_DEPTH_TEST 268435456u /* shade every fragment of the shadow
+                                                  * polygons, those behind the visible
+                                                  * surface too */
 /* Displacement speed-ups (see TIERS, displacement): */
 #define STIN_DEBUG_DISPLACE_NO_GUARD 128u /* fetch the height of every vertex, on screen
                                            * or not */

@@ -11,6 +11,11 @@
 // bounding box cut by every edge moved out by the square's reach. A pixel a
 // face covers only in part is then tested too, so no pixel centre is lost to
 // rasterisation rules or vertex snapping.
+// With u_depth_test each face carries its own depth (the pass tests it,
+// LESS, against the visible surface's): a pixel's surface point inside the
+// volume lies behind a face the eye sees, where the eye ray enters, so the
+// faces behind the surface test nothing. A face with a corner before the
+// near plane, or seen edge-on, passes everywhere.
 // Steps SM and DC read the light-view pyramid (src/shadow_vdsm_pyramid.c)
 // over the triangle's footprint in the light's view: SM drops a triangle
 // lying wholly deeper than the occluders there (every ray it meets already
@@ -24,6 +29,7 @@ uniform vec4 u_light;    // world: position (w 1), or the direction toward the l
 uniform vec4 u_camera;   // world: the eye (w 1), or the direction toward it (w 0)
 uniform vec4 u_viewport; // x, y, width, height in pixels
 uniform float u_grow;    // pixels every face grows by (0.5: conservative; 0: centres only)
+uniform int u_depth_test; // emit each face's window depth (else every face at the near plane)
 uniform int u_cull_lit;  // EP: drop triangles facing the light (closed meshes)
 uniform int u_caps;      // also draw the triangle itself where the eye sees its volume through it
 uniform int u_sm;        // SM: cull triangles behind the pyramid's occluders
@@ -52,31 +58,71 @@ vec4 light_plane(vec3 a, vec3 b)
 // Away from the light, at infinity.
 vec4 extruded(vec3 a) { return vec4(a * u_light.w - u_light.xyz, 0.0); }
 
-void put(vec2 px)
+// depth: the face's normalised depth over the pixel position,
+// dot(depth.xy, px) + depth.z
+void put(vec2 px, vec3 depth)
 {
     f_v0 = g_world[0];
     f_v1 = g_world[1];
     f_v2 = g_world[2];
-    gl_Position = vec4(px / u_viewport.zw * 2.0 - 1.0, 0.0, 1.0);
+    gl_Position = vec4(px / u_viewport.zw * 2.0 - 1.0, dot(depth.xy, px) + depth.z, 1.0);
     EmitVertex();
 }
 
 // A convex polygon as one strip, alternating from both ends.
-void put_polygon(vec2 p[GROWN_MAX], int n)
+void put_polygon(vec2 p[GROWN_MAX], int n, vec3 depth)
 {
     if (n < 3)
         return;
     int i = 1, j = n - 1;
-    put(p[0]);
+    put(p[0], depth);
     while (true) {
-        put(p[i++]);
+        put(p[i++], depth);
         if (i > j)
             break;
-        put(p[j--]);
+        put(p[j--], depth);
         if (i > j)
             break;
     }
     EndPrimitive();
+}
+
+// Where a face passes everywhere: the near plane under the depth test,
+// else mid-range (nothing tests it).
+vec3 everywhere() { return u_depth_test != 0 ? vec3(0.0, 0.0, -1.0) : vec3(0.0); }
+
+// The face's depth as a function of the pixel position, fitted to its
+// clipped corners c (homogeneous) at pixels q: exact, the face being planar;
+// the near plane where a corner lies before it (or at the eye) or the face
+// is seen edge-on (under a thousandth of a pixel).
+vec3 depth_plane(vec4 c[CLIP_MAX], vec2 q[GROWN_MAX], int n)
+{
+    float z[CLIP_MAX];
+    if (u_depth_test == 0)
+        return everywhere();
+    for (int i = 0; i < n; i++) {
+        if (!(c[i].w > 0.0) || c[i].z < -c[i].w)
+            return everywhere();
+        z[i] = c[i].z / c[i].w;
+    }
+    int bi = 1, bj = 2;
+    float best = 0.0;
+    for (int i = 1; i + 1 < n; i++)
+        for (int j = i + 1; j < n; j++) {
+            vec2 a = q[i] - q[0], b = q[j] - q[0];
+            float area = abs(a.x * b.y - a.y * b.x);
+            if (area > best) {
+                best = area;
+                bi = i;
+                bj = j;
+            }
+        }
+    if (best < 1e-3)
+        return everywhere();
+    vec2 a = q[bi] - q[0], b = q[bj] - q[0];
+    float det = a.x * b.y - a.y * b.x, za = z[bi] - z[0], zb = z[bj] - z[0];
+    vec2 g = vec2(za * b.y - zb * a.y, zb * a.x - za * b.x) / det;
+    return vec3(g, z[0] - dot(g, q[0]));
 }
 
 // Keeps the part of polygon c with dot(plane, c) >= 0.
@@ -137,8 +183,9 @@ void put_face(vec4 w[4], int n)
         lo = min(lo, q[i]);
         hi = max(hi, q[i]);
     }
+    vec3 depth = depth_plane(c, q, n);
     if (u_grow <= 0.0) {
-        put_polygon(q, n);
+        put_polygon(q, n, depth);
         return;
     }
     for (int i = 0; i < n; i++) {
@@ -160,7 +207,7 @@ void put_face(vec4 w[4], int n)
         float reach = u_grow * (abs(out_n.x) + abs(out_n.y));
         m = clip2(r, m, vec3(-out_n, dot(out_n, a) + reach));
     }
-    put_polygon(r, m);
+    put_polygon(r, m, depth);
 }
 
 // Texels of the footprint are read this far out of it, against rounding
@@ -270,7 +317,7 @@ void main()
         screen[1] = vec2(u_viewport.z, 0.0);
         screen[2] = u_viewport.zw;
         screen[3] = vec2(0.0, u_viewport.w);
-        put_polygon(screen, 4);
+        put_polygon(screen, 4, everywhere());
         return;
     }
     vec4 w[4];

@@ -28,6 +28,11 @@
  *              same segment), DC only what no pixel's test can hit, so no
  *              test on any pixel changes. Reports each set's primitive count
  *              (the seed's P_c).
+ *   depth-test the full chain with and without the shadow faces' depth test
+ *              against the visible surface give pixel-identical masks
+ *              (tolerance 0): a face it drops lies behind the surface, where
+ *              the eye ray has not yet entered the volume, so no test it
+ *              skips could hit.
  *   culls      (spheres scenes) SM and DC each emit fewer primitives than
  *              the step set before them: a cull that drops nothing fails.
  *   map-size   the light pyramid at 64 texels a side gives the mask of the
@@ -186,6 +191,21 @@ static void test_map_size(const vdsm_case *c, const capture *all)
     capture_free(&b);
 }
 
+static void test_depth_test(const vdsm_case *c, const capture *all)
+{
+    capture b;
+    char name[256];
+    long edge, n;
+    vdsm_name(c, "depth-test", name, sizeof name);
+    if (!vdsm_render(c, SET_ALL | STIN_DEBUG_VDSM_NO_DEPTH_TEST, &b, "depth-test"))
+        return;
+    n = differ(c, all, &b, &edge);
+    report(c->r, n + edge == 0 ? "PASS" : "FAIL", name,
+           "the shadow faces with and without their depth test give masks differing on %ld "
+           "pixels (must be 0)", n + edge);
+    capture_free(&b);
+}
+
 /* The chain's renders of one case and the tests on them. */
 static void chain_tests(const vdsm_case *c, const capture *all)
 {
@@ -205,6 +225,7 @@ static void chain_tests(const vdsm_case *c, const capture *all)
     }
     capture_free(&sp);
     test_map_size(c, all);
+    test_depth_test(c, all);
 }
 
 /* The eye inside a closed 6 x 4 x 6 box (two-sided or not) with a ball on

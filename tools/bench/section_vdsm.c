@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* The VDSM section (gl4): per --scenes scene the seed's optimisation chain
- * one step set a row - SP alone, + EP, + SM, + DC (the full chain) - and
+ * one step set a row - SP alone, + EP, + SM, + DC, + DT (the shadow faces
+ * depth-tested against the visible surface: the full chain) - and
  * stencil volumes, each timed against shadows off. The vdsm rows count the
  * primitives their geometry shader emits (STIN_DEBUG_VDSM_COUNT, the seed's
  * P_c: one wait for the GPU per light, in the timed frames too). Where the
@@ -16,6 +17,7 @@
 
 #define WHAT "VDSM"
 #define COUNT STIN_DEBUG_VDSM_COUNT
+#define NO_DT STIN_DEBUG_VDSM_NO_DEPTH_TEST
 
 static const struct step_set {
     const char *name;
@@ -23,10 +25,12 @@ static const struct step_set {
     uint32_t flags;
 } sets[] = {
     {"SP", STIN_TECH_SHADOWS_VDSM,
-     COUNT | STIN_DEBUG_VDSM_NO_EP | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC},
-    {"SP+EP", STIN_TECH_SHADOWS_VDSM, COUNT | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC},
-    {"SP+EP+SM", STIN_TECH_SHADOWS_VDSM, COUNT | STIN_DEBUG_VDSM_NO_DC},
-    {"SP+EP+SM+DC", STIN_TECH_SHADOWS_VDSM, COUNT},
+     COUNT | NO_DT | STIN_DEBUG_VDSM_NO_EP | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC},
+    {"SP+EP", STIN_TECH_SHADOWS_VDSM,
+     COUNT | NO_DT | STIN_DEBUG_VDSM_NO_SM | STIN_DEBUG_VDSM_NO_DC},
+    {"SP+EP+SM", STIN_TECH_SHADOWS_VDSM, COUNT | NO_DT | STIN_DEBUG_VDSM_NO_DC},
+    {"SP+EP+SM+DC", STIN_TECH_SHADOWS_VDSM, COUNT | NO_DT},
+    {"SP+EP+SM+DC+DT", STIN_TECH_SHADOWS_VDSM, COUNT},
     {"volume", STIN_TECH_SHADOWS_VOLUME, 0},
 };
 enum { N = sizeof sets / sizeof sets[0], SP = 0, VOLUME = N - 1 };
