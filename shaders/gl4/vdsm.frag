@@ -1,8 +1,8 @@
 #version 150
+// SPDX-License-Identifier: MIT
 #ifdef GL_ARB_shader_image_load_store
 #extension GL_ARB_shader_image_load_store : enable
 #endif
-// SPDX-License-Identifier: MIT
 // VDSM, per covered pixel: the exact segment-triangle test
 // (vdsm_segment.glsl) from the pixel's visible surface point to the light
 // against the triangle whose shadow polygon covers it. A hit writes 0 into
