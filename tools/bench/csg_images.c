@@ -31,20 +31,34 @@ int csg_images_read(csg_images *im, stin_platform *plat, int side)
 
 static int covers(const uint8_t *p) { return p[0] | p[1] | p[2]; }
 
+static int differs(const csg_images *im, size_t i)
+{
+    const uint8_t *p = im->a + 4u * i, *q = im->b + 4u * i;
+    int k;
+    for (k = 0; k < 3; k++)
+        if (abs((int)p[k] - (int)q[k]) > CSG_IMAGE_STEP)
+            return 1;
+    return 0;
+}
+
 double csg_images_differ(const csg_images *im, uint32_t *covered)
 {
-    size_t i, n = (size_t)im->width * (size_t)im->height;
+    int w = im->width, h = im->height, x, y;
     uint32_t any = 0, off = 0;
-    for (i = 0; i < n; i++) {
-        const uint8_t *p = im->a + 4u * i, *q = im->b + 4u * i;
-        int k, far = 0;
-        if (!covers(p) && !covers(q))
-            continue;
-        any++;
-        for (k = 0; k < 3; k++)
-            far |= abs((int)p[k] - (int)q[k]) > CSG_IMAGE_STEP;
-        off += (uint32_t)far;
-    }
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            size_t i = (size_t)y * (size_t)w + (size_t)x;
+            if (!covers(im->a + 4u * i) && !covers(im->b + 4u * i))
+                continue;
+            any++;
+            /* off with its four neighbours: a wrong area, not an edge the
+             * two rasterise a pixel apart (an edge pixel off at the border
+             * counts, its outside neighbours taken as off) */
+            off += (uint32_t)(differs(im, i) && (x == 0 || differs(im, i - 1u)) &&
+                              (x == w - 1 || differs(im, i + 1u)) &&
+                              (y == 0 || differs(im, i - (size_t)w)) &&
+                              (y == h - 1 || differs(im, i + (size_t)w)));
+        }
     *covered = any;
     return any ? 1000.0 * (double)off / (double)any : 0.0;
 }

@@ -26,8 +26,9 @@ void csg_images_release(csg_images *im);
 /* Reads the framebuffer into a (side 0) or b (side 1); 0 on failure. */
 int csg_images_read(csg_images *im, stin_platform *plat, int side);
 /* Of the pixels either image covers (not the black clear colour), the
- * share in per mille where a channel differs by more than CSG_IMAGE_STEP;
- * *covered gets their count. */
+ * share in per mille where a channel differs by more than CSG_IMAGE_STEP
+ * there and at the four neighbours (a wrong area; an edge rasterised a
+ * pixel apart is not counted); *covered gets their count. */
 double csg_images_differ(const csg_images *im, uint32_t *covered);
 
 #endif
