@@ -346,6 +346,7 @@ int main(int argc, char **argv)
             deep_tests(&r, tiers[t], argv[i]);
             coloured_tests(&r, tiers[t], argv[i]);
             peel_tests(&r, tiers[t], argv[i]);
+            viewport_tests(&r, tiers[t], argv[i]);
         }
     }
     free(displaced);

@@ -18,6 +18,10 @@ typedef struct run {
 void report(run *r, const char *verdict, const char *name, const char *fmt, ...);
 const char *scene_base_name(const char *path);
 
+/* A frame at a viewport origin inside the framebuffer against the same at
+ * (0, 0) (viewport_test.c; csg.json, every tier). */
+void viewport_tests(run *r, stin_tier tier, const char *path);
+
 /* GLSL PCF shadow-map tests of one scene (pcf_test.c; GL2/GL4). */
 void pcf_tests(run *r, stin_tier tier, const char *path);
 

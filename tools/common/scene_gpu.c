@@ -226,14 +226,21 @@ static void draw_csg(const scene_gpu *g, stin_context *ctx, const scene_gpu_csg 
 stin_result scene_gpu_frame_export(const scene_gpu *g, stin_context *ctx, int width, int height,
                                    stin_output output, stin_export ex, uint32_t framebuffer)
 {
+    const int viewport[4] = {0, 0, width, height};
+    return scene_gpu_frame_viewport(g, ctx, viewport, output, ex, framebuffer);
+}
+
+stin_result scene_gpu_frame_viewport(const scene_gpu *g, stin_context *ctx,
+                                     const int viewport[4], stin_output output, stin_export ex,
+                                     uint32_t framebuffer)
+{
     const scene *s = g->src;
     stin_frame_desc fd;
     stin_result r;
     int i;
     memset(&fd, 0, sizeof fd);
-    scene_camera_matrices(&s->camera, width, height, fd.view, fd.projection);
-    fd.viewport[2] = width;
-    fd.viewport[3] = height;
+    scene_camera_matrices(&s->camera, viewport[2], viewport[3], fd.view, fd.projection);
+    memcpy(fd.viewport, viewport, sizeof fd.viewport);
     fd.framebuffer = framebuffer;
     memcpy(fd.clear_color, s->background, sizeof fd.clear_color);
     memcpy(fd.ambient, s->ambient, sizeof fd.ambient);

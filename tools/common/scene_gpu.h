@@ -55,6 +55,11 @@ stin_result scene_gpu_frame(const scene_gpu *g, stin_context *ctx, int width, in
 /* The same with the lights' visibility exported (stin_frame_desc.export_visibility). */
 stin_result scene_gpu_frame_export(const scene_gpu *g, stin_context *ctx, int width, int height,
                                    stin_output output, stin_export ex, uint32_t framebuffer);
+/* The same into viewport (x, y, width, height) of the framebuffer, the
+ * camera's aspect the viewport's. */
+stin_result scene_gpu_frame_viewport(const scene_gpu *g, stin_context *ctx,
+                                     const int viewport[4], stin_output output, stin_export ex,
+                                     uint32_t framebuffer);
 /* Converts a scene light to stin's. */
 void scene_gpu_light(const scene_light *in, stin_light_desc *out);
 
