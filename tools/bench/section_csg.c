@@ -265,7 +265,7 @@ static void drop_context(csg_bench *c)
 }
 
 /* OpenCSG's picture is stin's where at most this share (per mille) of the
- * pixels either covers differ: edges rasterised apart, nothing more. */
+ * pixels either covers is off (csg_images.c: wrong areas, not edges). */
 #define MATCH_PERMILLE 10.0
 
 #ifdef STIN_BENCH_OPENCSG
@@ -284,7 +284,7 @@ typedef struct verdict {
     double worst;
     int judged;
     char worst_at[96];
-    char wrong[256]; /* rows where no OpenCSG strategy drew stin's picture */
+    char wrong[512]; /* rows where no OpenCSG strategy drew stin's picture */
 } verdict;
 
 /* c's product timed against the other side (OpenCSG with c->strategy, or
@@ -341,7 +341,7 @@ static int run_row(csg_bench *c, const csg_case *k, int frames, verdict *v, char
                method_name[c->method], c->passes, r[i].stin_ms, other, strategy, r[i].other_ms,
                r[i].differ, r[i].other_ms > 0 ? r[i].stin_ms / r[i].other_ms : 0.0);
         fflush(stdout);
-        if (r[i].matches && (best < 0 || r[i].other_ms < r[best].other_ms))
+        if (r[i].matches && r[i].other_ms > 0 && (best < 0 || r[i].other_ms < r[best].other_ms))
             best = i;
     }
     if (!c->opencsg || c->method == 2)
