@@ -167,12 +167,12 @@ static stin_result vdsm_init(stin_context *ctx)
     }
     msg[0] = '\0';
     v->position_prog = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL, "gl4/vdsm_position.frag",
-                             "o_normal", 1, msg, sizeof msg);
+                             "o_normal", 0, msg, sizeof msg);
     if (v->position_prog)
         v->facing_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
                                0, msg, sizeof msg);
     if (v->facing_prog)
-        v->polygon_prog = stin__vdsm_polygon_program(ctx, "gl4/vdsm.frag", 1, msg, sizeof msg);
+        v->polygon_prog = stin__vdsm_polygon_program(ctx, "gl4/vdsm.frag", 0, msg, sizeof msg);
     if (!v->polygon_prog) {
         release(ctx);
         stin__formatf(why, sizeof why, "its shaders failed to build (%s)", msg);
