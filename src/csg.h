@@ -252,6 +252,13 @@ int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const
  * min x y z, max x y z), and whether two such boxes meet. */
 void stin__csg_world_box(const struct stin_context *ctx, const stin__draw *d, float box[6]);
 int stin__csg_world_boxes_meet(const float a[6], const float b[6]);
+/* Whether the boxes lie apart by more than `units` steps of the target's
+ * depth (at least those of a 24-bit buffer) on every ray of the viewport
+ * through both: a face of the one never comes within that of a face of the
+ * other at a pixel, so the coplanar rules' offsets cannot join them. 0
+ * where unsure (a corner at or behind the eye, an oblique projection). */
+int stin__csg_world_boxes_apart(const struct stin_context *ctx, const float a[6], const float b[6],
+                                float units);
 /* The resolve's region (csg_bounds.c). A candidate's surface lies inside
  * its own rectangle and every plain literal's of its term, so on the GPU
  * (where nothing outside is read back) a term's or candidate's passes,

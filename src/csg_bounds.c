@@ -103,6 +103,71 @@ int stin__csg_world_boxes_meet(const float a[6], const float b[6])
     return 1;
 }
 
+static float absf(float x) { return x < 0.0f ? -x : x; }
+
+/* The window depth per unit of eye distance at clip w = z (perspective) or
+ * anywhere (orthographic), and the least cosine between a viewport ray and
+ * the view axis; 0 for a projection of neither plain form (oblique). */
+static float depth_slope(const float *p, float z, float *cos_min)
+{
+    float tx, ty;
+    if (p[3] != 0.0f || p[7] != 0.0f)
+        return 0.0f;
+    if (p[11] == 0.0f) { /* orthographic: rays along the axis */
+        *cos_min = 1.0f;
+        return p[15] != 0.0f ? 0.5f * absf(p[10] / p[15]) : 0.0f;
+    }
+    if (p[12] != 0.0f || p[13] != 0.0f || p[15] != 0.0f || !(z > 0.0f))
+        return 0.0f;
+    /* x_e / z_e = (x_ndc p11 - p8) / p0, at most this over the viewport */
+    tx = (absf(p[11]) + absf(p[8])) / absf(p[0]);
+    ty = (absf(p[11]) + absf(p[9])) / absf(p[5]);
+    *cos_min = 1.0f / stin__sqrtf(1.0f + tx * tx + ty * ty);
+    /* ndc z = p10 / p11 + p14 / w with w = p11 z_e */
+    return 0.5f * absf(p[14] * p[11]) / (z * z);
+}
+
+/* The boxes' farthest eye distance (clip w), 0 where a corner is at or
+ * behind the eye. */
+static float farthest_w(const stin_context *ctx, const float a[6], const float b[6])
+{
+    const float *m = ctx->view_proj;
+    float far = 0.0f;
+    int i, j;
+    for (j = 0; j < 2; j++) {
+        const float *box = j ? b : a;
+        for (i = 0; i < 8; i++) {
+            float w = m[3] * box[(i & 1) ? 3 : 0] + m[7] * box[(i & 2) ? 4 : 1] +
+                      m[11] * box[(i & 4) ? 5 : 2] + m[15];
+            if (!(w > NEAR_W))
+                return 0.0f;
+            far = w > far ? w : far;
+        }
+    }
+    return far;
+}
+
+int stin__csg_world_boxes_apart(const stin_context *ctx, const float a[6], const float b[6],
+                                float units)
+{
+    const float *p = ctx->projection;
+    float gap = 0.0f, step, slope, cos_min = 0.0f, z = 1.0f;
+    int k;
+    if (stin__csg_world_boxes_meet(a, b))
+        return 0;
+    for (k = 0; k < 3; k++) { /* the widest slab between them */
+        float g = a[k] > b[3 + k] ? a[k] - b[3 + k] : b[k] - a[3 + k];
+        gap = g > gap ? g : gap;
+    }
+    if (p[11] != 0.0f && !((z = farthest_w(ctx, a, b)) > 0.0f))
+        return 0;
+    slope = depth_slope(p, z, &cos_min);
+    step = ctx->target.depth_bits > 16 ? 1.0f / 16777216.0f : 1.0f / 65536.0f;
+    /* two points of one ray on either side of the slab lie at least gap
+     * apart along it, gap * cos_min in eye distance */
+    return slope > 0.0f && gap * cos_min * slope > units * step;
+}
+
 void stin__csg_rect_cut(float a[4], const float b[4])
 {
     int k;

@@ -133,10 +133,12 @@ static void intersect(stin_context *ctx, const stin__path *path, const stin__csg
  * box meets the region. Their boxes go into the csg scratch (idle during
  * the resolve), 2 words a literal: x and y spans as 16-bit offsets from the
  * region's corner, an empty span where the literal is plain or off the
- * region. Returns how many, and in *bound how many can cover one pixel at
- * most: 1 + the most others one's box meets (255 at most; past PAIRWISE
- * listed literals, whose pairs would cost more than they save, their
- * count: the check ends the sequence where it is done either way). */
+ * region. Returns how many, and in *bound how many runs the sequence
+ * takes at most: 1 where every two whose boxes meet lie apart in the world,
+ * else how many can cover one pixel, 1 + the most others one's box meets
+ * (255 at most; past PAIRWISE listed literals, whose pairs would cost more
+ * than they save, their count: the check ends the sequence where it is
+ * done either way). */
 #define OFF_REGION 0x0000ffffu /* first 0xffff, last 0: empty */
 #define WHOLE_REGION 0xffff0000u
 #define PAIRWISE 1024u
@@ -177,6 +179,37 @@ static int box_of(const stin_context *ctx, const stin__draw *d, uint32_t *box)
     return 1;
 }
 
+/* Whether two listed literals lie apart in the world (csg_bounds.c), by
+ * more than the offset that lets a face count as in front of the depth:
+ * their solids share no point, nor does a face of the one come within
+ * reach of a face of the other. */
+static int apart(stin_context *ctx, const stin__csg_product *p, const stin__csg_term *t,
+                 uint32_t li, uint32_t lj)
+{
+    float a[6], b[6];
+    stin__csg_world_box(ctx, primitive_of(ctx, p, ctx->csg.literals[t->first + li]), a);
+    stin__csg_world_box(ctx, primitive_of(ctx, p, ctx->csg.literals[t->first + lj]), b);
+    return stin__csg_world_boxes_apart(ctx, a, b, 2.0f * OFFSET_UNITS);
+}
+
+/* Whether every two listed literals whose boxes meet lie apart: then a
+ * pixel's depth, pushed out of one, lies inside no other, and one run in
+ * any order takes it out of all (a drilled plate's holes). */
+static int untangled(stin_context *ctx, const stin__csg_product *p, const stin__csg_term *t,
+                     const uint32_t *box)
+{
+    uint32_t li, lj;
+    for (li = 0; li < t->count; li++) {
+        if (!listed(box, li))
+            continue;
+        for (lj = li + 1u; lj < t->count; lj++)
+            if (listed(box, lj) && boxes_meet(&box[2u * li], &box[2u * lj]) &&
+                !apart(ctx, p, t, li, lj))
+                return 0;
+    }
+    return 1;
+}
+
 static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
                                   const stin__csg_term *t, unsigned *bound)
 {
@@ -188,8 +221,12 @@ static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
         else
             n++;
     }
-    if (n > PAIRWISE)
+    if (n > PAIRWISE) {
         most = n;
+    } else if (n > 1u && untangled(ctx, p, t, box)) {
+        *bound = 1u;
+        return n;
+    }
     for (li = 0; li < t->count && most < 255u; li++) {
         uint32_t meets = 1;
         if (!listed(box, li))
@@ -303,6 +340,7 @@ static int still_inside(stin_context *ctx, const stin__path *path, stin__csg_pix
     int two_sided = stin__pass_two_sided_wrap(ctx);
     GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
     uint32_t i = 0, batch;
+    ctx->stats.csg_scs_checks++;
     while (i < n) {
         stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
         for (batch = 0; i < n && batch < 255u; i++, batch++) {

@@ -1458,12 +1458,15 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * nearest corner's w), the list run at most as many times as complemented
  * primitives can cover one pixel (1 + the most others one's window box
  * meets, or their count past 1024 of them: every order of those is in
- * the sequence), each run after the
+ * the sequence; once where every two whose window boxes meet have world
+ * boxes apart by more than 8 depth units along every ray through both, as
+ * a drilled plate's holes: no point lies in two), each run after the
  * first only where a check finds the depth still inside one of them
  * somewhere (one pass a primitive counting +1 at its front and -1 at its
  * back in the stencil, its largest value taken as stencil sample counts
  * are: one wait; STIN_DEBUG_CSG_SCS_NO_EARLY_STOP runs every run of the
- * bound; stin_frame_stats.csg_scs_runs counts the runs); complemented
+ * bound; stin_frame_stats.csg_scs_runs counts the runs, csg_scs_checks the
+ * checks); complemented
  * primitives whose boxes miss the term's rectangle are left out;
  * then a pixel survives where the depth lies in front of every plain
  * primitive's back face, counted in the stencil 255 primitives a batch
@@ -1580,6 +1583,7 @@ typedef struct stin_frame_stats {
     /* products resolved by "scs" (the others of a frame went to goldfeather) */
     uint32_t csg_scs_products;
     uint32_t csg_scs_runs;    /* runs of scs's subtraction sequences (every term) */
+    uint32_t csg_scs_checks;  /* their checks for a depth still inside a subtracted one */
     /* depth-peel: geometry passes that peeled a camera layer (the last one,
      * which found nothing, counted: a scene of n layers under a cap above n
      * takes n + 1), and the layers that drew something; dual-peel: its

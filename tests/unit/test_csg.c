@@ -583,6 +583,56 @@ static void test_frames_with_a_product(void **state)
     assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "CSG products are not drawn"));
 }
 
+/* A projection of fovy 90 (square) from near n to far f into ctx (view
+ * identity: the eye at the origin looking down -z). */
+static void perspective(float n, float f)
+{
+    float *p = ctx->projection;
+    memset(p, 0, 16 * sizeof *p);
+    p[0] = p[5] = 1.0f;
+    p[10] = -(f + n) / (f - n);
+    p[11] = -1.0f;
+    p[14] = -2.0f * f * n / (f - n);
+    memcpy(ctx->view_proj, p, sizeof ctx->view_proj);
+}
+
+static int apart(float ax0, float ax1, float bx0, float bx1, float z0, float z1)
+{
+    const float a[6] = {ax0, -0.5f, z0, ax1, 0.5f, z1}, b[6] = {bx0, -0.5f, z0, bx1, 0.5f, z1};
+    return stin__csg_world_boxes_apart(ctx, a, b, 8.0f);
+}
+
+/* scs's world rule (csg_bounds.c): boxes apart by more than 8 depth steps
+ * along every ray through both, at the far side's distance, with the
+ * target's depth precision; unsure (0) for oblique projections and boxes
+ * reaching behind the eye. */
+static void test_world_boxes_apart(void **state)
+{
+    (void)state;
+    ctx->target.depth_bits = 24;
+    perspective(1.0f, 100.0f);
+    assert_true(apart(-1.0f, -0.1f, 0.1f, 1.0f, -6.0f, -5.0f));   /* 0.2 apart */
+    assert_false(apart(-1.0f, 0.1f, -0.1f, 1.0f, -6.0f, -5.0f));  /* overlapping */
+    assert_false(apart(-1.0f, 0.0f, 1e-5f, 1.0f, -6.0f, -5.0f));  /* within the 1e-3 margin */
+    assert_false(apart(-1.0f, -0.1f, 0.1f, 1.0f, -1.0f, 1.0f));   /* behind the eye */
+    /* 0.1 apart at w 10 with near 0.1: 5.8e-5 of depth, 8 steps of 24 bits
+     * are 4.8e-7 and of 16 bits 1.2e-4 */
+    perspective(0.1f, 100.0f);
+    assert_true(apart(-1.0f, -0.05f, 0.05f, 1.0f, -10.0f, -9.0f));
+    ctx->target.depth_bits = 16;
+    assert_false(apart(-1.0f, -0.05f, 0.05f, 1.0f, -10.0f, -9.0f));
+    ctx->target.depth_bits = 24;
+    ctx->projection[3] = 0.1f; /* oblique: no plain form */
+    memcpy(ctx->view_proj, ctx->projection, sizeof ctx->view_proj);
+    assert_false(apart(-1.0f, -0.1f, 0.1f, 1.0f, -6.0f, -5.0f));
+    memset(ctx->projection, 0, sizeof ctx->projection); /* orthographic, depth 0..99 */
+    ctx->projection[0] = ctx->projection[5] = ctx->projection[15] = 1.0f;
+    ctx->projection[10] = -2.0f / 99.0f;
+    ctx->projection[14] = -101.0f / 99.0f;
+    memcpy(ctx->view_proj, ctx->projection, sizeof ctx->view_proj);
+    assert_true(apart(-1.0f, -0.1f, 0.1f, 1.0f, -6.0f, -5.0f));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -595,6 +645,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_draw_csg_capacities, setup, teardown),
         cmocka_unit_test_setup_teardown(test_memory_counts_the_capacities, setup, teardown),
         cmocka_unit_test_setup_teardown(test_frames_with_a_product, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_world_boxes_apart, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
