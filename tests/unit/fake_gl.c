@@ -36,6 +36,7 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GetShaderInfoLog ~, 1
 #define FAKE_CUSTOM_DeleteShader ~, 1
 #define FAKE_CUSTOM_CreateProgram ~, 1
+#define FAKE_CUSTOM_AttachShader ~, 1
 #define FAKE_CUSTOM_GetProgramiv ~, 1
 #define FAKE_CUSTOM_GetProgramInfoLog ~, 1
 #define FAKE_CUSTOM_DeleteProgram ~, 1
@@ -64,7 +65,6 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_GetBufferSubData ~, 1
 #define FAKE_STATELESS_MemoryBarrier ~, 1
 #define FAKE_STATELESS_CompileShader ~, 1
-#define FAKE_STATELESS_AttachShader ~, 1
 #define FAKE_STATELESS_BindAttribLocation ~, 1
 #define FAKE_STATELESS_LinkProgram ~, 1
 #define FAKE_STATELESS_Uniform1i ~, 1
@@ -238,21 +238,21 @@ static GLenum STIN_APIENTRY fake_GetError(void)
 static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum type,
                                             const void *idx)
 {
-    (void)mode;
     (void)type;
     (void)idx;
     COUNT(DrawElements);
     fake_gl.draw_calls++;
+    fake_gl.patch_draws += mode == GL_PATCHES;
     fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
     fake_gl.drawn_indices += (unsigned)count;
 }
 
 static void STIN_APIENTRY fake_DrawArrays(GLenum mode, GLint first, GLsizei count)
 {
-    (void)mode;
     (void)first;
     (void)count;
     COUNT(DrawArrays);
+    fake_gl.patch_draws += mode == GL_PATCHES;
     fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
 }
 
@@ -336,9 +336,10 @@ static int shader_compiles(GLuint s)
  * per-shader "#version" table can be indexed by name. */
 static GLuint STIN_APIENTRY fake_CreateShader(GLenum type)
 {
-    (void)type;
     COUNT(CreateShader);
     fake_gl.shaders_created++;
+    if (fake_gl.shaders_created <= FAKE_GL_MAX_PROGRAMS)
+        fake_gl.shader_is_tesc[fake_gl.shaders_created - 1] = type == GL_TESS_CONTROL_SHADER;
     return (GLuint)fake_gl.shaders_created; /* 1, 2, ...; > FAKE_GL_MAX_SHADERS: no version kept */
 }
 
@@ -413,6 +414,14 @@ static GLuint STIN_APIENTRY fake_CreateProgram(void)
     return 1000u + fake_gl.programs_created;
 }
 
+static void STIN_APIENTRY fake_AttachShader(GLuint p, GLuint s)
+{
+    COUNT(AttachShader);
+    if (p > 1000u && p - 1001u < FAKE_GL_MAX_PROGRAMS && s >= 1u && s <= FAKE_GL_MAX_PROGRAMS &&
+        fake_gl.shader_is_tesc[s - 1u])
+        fake_gl.program_has_tesc[p - 1001u] = 1;
+}
+
 static void STIN_APIENTRY fake_GetProgramiv(GLuint p, GLenum pname, GLint *v)
 {
     COUNT(GetProgramiv);
@@ -464,10 +473,9 @@ static GLboolean STIN_APIENTRY fake_IsFramebuffer(GLuint fb)
 
 static GLint STIN_APIENTRY fake_GetUniformLocation(GLuint p, const GLchar *name)
 {
-    (void)p;
-    (void)name;
+    int tesc = p > 1000u && p - 1001u < FAKE_GL_MAX_PROGRAMS && fake_gl.program_has_tesc[p - 1001u];
     COUNT(GetUniformLocation);
-    return 1;
+    return strncmp(name, "u_tess", 6) == 0 && !tesc ? -1 : 1;
 }
 
 /* ---- resolution --------------------------------------------------------- */

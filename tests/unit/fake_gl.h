@@ -67,11 +67,13 @@ fake_gl_config fake_gl_profile(fake_gl_profile_id id);
 /* What the stubs saw since the last fake_gl_reset. */
 #define FAKE_GL_MAX_LEVELS 16
 #define FAKE_GL_MAX_SHADERS 64
+#define FAKE_GL_MAX_PROGRAMS 2048
 #define FAKE_GL_MAX_VAOS 64
 typedef struct fake_gl_state {
     fake_gl_config config;
     unsigned calls[STIN_GLFN_COUNT];     /* per entry point, index STIN_GLFN_<Name> */
     unsigned draw_calls, drawn_indices;
+    unsigned patch_draws;                /* draw calls of GL_PATCHES (tessellated) */
     unsigned draws_into_default;         /* draw calls while framebuffer 0 was bound */
     unsigned textures_created, textures_deleted;
     unsigned buffers_created, buffers_deleted;
@@ -88,6 +90,10 @@ typedef struct fake_gl_state {
     unsigned framebuffers_created, framebuffers_deleted;
     /* shader objects: "#version" of each, by name - 1 */
     int shader_version[FAKE_GL_MAX_SHADERS];
+    /* whether shader name - 1 is a tessellation control stage, and program
+     * name - 1001 has one attached: only such a program has tess.tesc's
+     * uniforms (u_tess*), as a linked GL program has only its stages' */
+    unsigned char shader_is_tesc[FAKE_GL_MAX_PROGRAMS], program_has_tesc[FAKE_GL_MAX_PROGRAMS];
     unsigned next_name;
     /* GL state (fake_gl_state.h) */
     fake_gl_glstate gl;

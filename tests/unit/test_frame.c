@@ -752,6 +752,29 @@ static void test_stage_times_follow_the_plan(void **state)
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
+/* vdsm on a context with tessellation shaders draws triangles, as the lit
+ * programs do, in frames with nothing displaced: its tessellated programs
+ * are for frames with displaced draws (test_state draws one). Built
+ * tessellated for every frame, a peeled layer's points missed pixels of
+ * the layer the lit programs drew (docs/testing.md, "Viewport origins"). */
+static void test_vdsm_tessellates_only_displaced_frames(void **state)
+{
+    stin_frame_stats st;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VDSM;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_SHADOWS).technique,
+                     STIN_TECH_SHADOWS_VDSM);
+    assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_DISPLACEMENT).technique,
+                     STIN_TECH_DISPLACEMENT_TESS);
+    fake_gl.patch_draws = 0;
+    st = frame_with(2, 2, 1, STIN_OUTPUT_BEAUTY); /* a blended draw: peeled layers */
+    assert_true(st.passes > 0);
+    assert_true(fake_gl.draw_calls > 10);
+    shadows = STIN_TECH_SHADOWS_OFF;
+    assert_int_equal(fake_gl.patch_draws, 0);
+}
+
 /* The visibility export with deep maps: two lights want one visibility
  * tile and two transmittance tiles (64 x 48 each, two a row); a largest
  * texture of 100 holds one, so the map keeps both lights' visibility and no
@@ -829,6 +852,7 @@ int main(void)
         TEST(test_output_pass_counts),
         TEST(test_stage_times_follow_the_plan),
         TEST(test_export_without_room_for_transmittance),
+        TEST(test_vdsm_tessellates_only_displaced_frames),
         TEST(test_frame_leaves_documented_state),
         TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
         TEST(test_texture_without_mips),

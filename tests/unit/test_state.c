@@ -344,7 +344,14 @@ static int run_frame(stin_output output, stin_export ex)
     xf[14] = -1.2f;
     assert_int_equal(stin_draw(ctx, cube, xf, &tex), STIN_OK);
     tex.displace = 0;
+    fake_gl.patch_draws = 0;
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    /* tessellated: that draw's passes, where it has its height map (and
+     * only frames with one: test_frame) */
+    if (stin_query_choice(ctx, STIN_FEATURE_DISPLACEMENT).technique ==
+            STIN_TECH_DISPLACEMENT_TESS &&
+        height_map.id)
+        assert_true(fake_gl.patch_draws > 0);
     return 1;
 }
 
