@@ -170,6 +170,8 @@
       STIN_CAP_COMPUTE, "")                                                                 \
     X(void, GetBufferSubData, (GLenum target, GLintptr off, GLsizeiptr size, void *d),     \
       STIN_CAP_COMPUTE, "")                                                                 \
-    X(void, MemoryBarrier, (GLbitfield barriers), STIN_CAP_COMPUTE, "")
+    X(void, MemoryBarrier, (GLbitfield barriers), STIN_CAP_COMPUTE, "")                   \
+    X(void, ClearBufferData, (GLenum target, GLenum ifmt, GLenum fmt, GLenum type,         \
+                              const void *d), STIN_CAP_COMPUTE, "")
 
 #endif

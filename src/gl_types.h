@@ -274,6 +274,8 @@ typedef void GLvoid;
 #define GL_DYNAMIC_READ 0x88E9
 /* vdsm's lists of CSG crossings (GL 4.3) */
 #define GL_SHADER_STORAGE_BARRIER_BIT 0x00002000
+#define GL_R32UI 0x8236
+#define GL_RED_INTEGER 0x8D94
 #define GL_DYNAMIC_COPY 0x88EA
 /* deep shadow maps' layers */
 #define GL_TEXTURE_2D_ARRAY 0x8C1A

@@ -122,6 +122,10 @@ typedef struct stin__vdsm_pyramid {
     GLint r_position, r_normal, r_light, r_vp, r_depth, r_rect;
     GLint d_source, d_first;
     GLint p_sm, p_dc, p_vp, p_depth, p_pyramid, p_size, p_top;
+    /* GL 4.3 (shadow_vdsm_receivers.c): the receivers by atomics, per texel
+     * the deepest one's ordered bits in a storage buffer (0: none) */
+    GLuint deepest, atomic_prog, first_prog;
+    GLint a_position, a_normal, a_light, a_vp, a_depth, a_size, f_source, f_size;
     int said_no_view, said_failed;
 } stin__vdsm_pyramid;
 
@@ -192,6 +196,14 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4]);
 void stin__vdsm_pyramid_uniforms(stin_context *ctx);
 /* The polygon program's pyramid uniforms again (it was swapped). */
 void stin__vdsm_pyramid_relocate(stin_context *ctx);
+/* The receivers by storage-buffer atomics (shadow_vdsm_receivers.c), where
+ * the context has them: set up after the pyramid (0 where not), one light's
+ * pass (from the pyramid's framebuffer, back to it), and level 0 of the
+ * pyramid from them and the occluders' accumulation. */
+int stin__vdsm_receivers_init(stin_context *ctx);
+void stin__vdsm_receivers_release(stin_context *ctx);
+void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4]);
+void stin__vdsm_receivers_first_level(stin_context *ctx);
 /* "displace-tess": swaps the tessellated position-buffer and shadow-polygon
  * programs in (on) or out, their uniforms located again; nothing without
  * them (shadow_vdsm.c). */

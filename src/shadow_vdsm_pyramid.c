@@ -20,7 +20,8 @@
  * it covers the whole texel). Such a texel lies wholly inside the draw's
  * union, so the bound holds for every ray through it. Ids cycle through 255
  * values without clearing: an old mark with the same id only drops texels.
- * Receivers are the position buffer's points, so y is exact too. The map's
+ * Receivers are the position buffer's points, so y is exact too: drawn as
+ * points, or on GL 4.3 kept by atomics (shadow_vdsm_receivers.c). The map's
  * resolution changes what is culled, never the mask.
  *
  * The light's view looks at the centre of the frame's draws: from a point or
@@ -38,7 +39,7 @@
  * rasteriser's snapping and the passes' rounding. */
 #define GROW_TEXELS 0.05f
 /* Texels a side at most (desc.shadow_map_size beyond it: this): 2048 is
- * 96 MB of GL memory. */
+ * 96 MB of GL memory (and 16 MB for the receivers' words on GL 4.3). */
 #define MAX_SIZE 2048u
 /* Widest half angle of a perspective light view, as its tangent (83
  * degrees). */
@@ -119,6 +120,7 @@ void stin__vdsm_pyramid_release(stin_context *ctx)
         GL(ctx, DeleteTextures)(1, &p->stencil);
     p->fbo = p->accum = p->levels = p->stencil = p->points = 0;
     p->usable = p->ready = 0;
+    stin__vdsm_receivers_release(ctx);
 }
 
 void stin__vdsm_pyramid_init(stin_context *ctx)
@@ -179,6 +181,7 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
         return;
     }
     p->usable = 1;
+    (void)stin__vdsm_receivers_init(ctx); /* where it is not: the points */
 }
 
 /* ---- the light's view ----------------------------------------------------- */
@@ -396,6 +399,11 @@ static void reduce(stin_context *ctx)
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                                       p->levels, k);
         GL(ctx, Viewport)(0, 0, s, s);
+        if (k == 0 && p->deepest) { /* the receivers came by atomics */
+            stin__vdsm_receivers_first_level(ctx);
+            GL(ctx, UseProgram)(p->reduce_prog);
+            continue;
+        }
         GL(ctx, Uniform1i)(p->d_first, k == 0);
         if (k == 0) {
             stin__bind_unit(ctx, 0, GL_TEXTURE_2D, p->accum);
@@ -452,11 +460,13 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
     ctx->glsl_surface.current = NULL;
     if (sm)
         occluders(ctx, light, ps);
-    if (dc)
+    if (dc && !p->deepest)
         receivers(ctx, light);
     GL(ctx, BlendEquationSeparate)(GL_FUNC_ADD, GL_FUNC_ADD);
     ps.blend = 0;
     stin__pass_apply(ctx, &ps);
+    if (dc && p->deepest)
+        stin__vdsm_receivers_draw(ctx, light);
     reduce(ctx);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);

@@ -64,6 +64,7 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_BufferSubData ~, 1
 #define FAKE_STATELESS_GetBufferSubData ~, 1
 #define FAKE_STATELESS_MemoryBarrier ~, 1
+#define FAKE_STATELESS_ClearBufferData ~, 1
 #define FAKE_STATELESS_CompileShader ~, 1
 #define FAKE_STATELESS_BindAttribLocation ~, 1
 #define FAKE_STATELESS_LinkProgram ~, 1

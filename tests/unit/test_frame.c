@@ -775,6 +775,26 @@ static void test_vdsm_tessellates_only_displaced_frames(void **state)
     assert_int_equal(fake_gl.patch_draws, 0);
 }
 
+/* vdsm's deepest receivers per light texel: by storage-buffer atomics
+ * where the context has GL 4.3's (one quad, shadow_vdsm_receivers.c), else
+ * as one point per pixel; a frame with SM and DC either way. */
+static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
+{
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VDSM;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    assert_true(ctx->vdsm.pyramid.usable);
+    assert_true(ctx->vdsm.pyramid.deepest != 0 && ctx->vdsm.pyramid.first_prog != 0);
+    (void)frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
+    assert_true(fake_gl.calls[STIN_GLFN_BindBufferBase] >= 4); /* bound, unbound, twice */
+    create_profile(FAKE_GL33_CORE, 16, 8);
+    assert_true(ctx->vdsm.pyramid.usable);
+    assert_int_equal(ctx->vdsm.pyramid.deepest, 0);
+    (void)frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 0);
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 /* The visibility export with deep maps: two lights want one visibility
  * tile and two transmittance tiles (64 x 48 each, two a row); a largest
  * texture of 100 holds one, so the map keeps both lights' visibility and no
@@ -853,6 +873,7 @@ int main(void)
         TEST(test_stage_times_follow_the_plan),
         TEST(test_export_without_room_for_transmittance),
         TEST(test_vdsm_tessellates_only_displaced_frames),
+        TEST(test_vdsm_receivers_by_atomics_on_gl43),
         TEST(test_frame_leaves_documented_state),
         TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
         TEST(test_texture_without_mips),
