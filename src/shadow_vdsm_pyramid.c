@@ -460,12 +460,12 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
     ctx->glsl_surface.current = NULL;
     if (sm)
         occluders(ctx, light, ps);
-    if (dc && !p->deepest)
+    if (dc && !p->atomic_prog)
         receivers(ctx, light);
     GL(ctx, BlendEquationSeparate)(GL_FUNC_ADD, GL_FUNC_ADD);
     ps.blend = 0;
     stin__pass_apply(ctx, &ps);
-    if (dc && p->deepest)
+    if (dc && p->atomic_prog)
         stin__vdsm_receivers_draw(ctx, light);
     reduce(ctx);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);

@@ -41,7 +41,6 @@ static void locate(stin_context *ctx)
 int stin__vdsm_receivers_init(stin_context *ctx)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
-    static const GLuint none = 0;
     char msg[160];
     if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_COMPUTE)) || !p->usable)
         return 0;
@@ -59,6 +58,15 @@ int stin__vdsm_receivers_init(stin_context *ctx)
         return 0;
     }
     locate(ctx);
+    return 1;
+}
+
+/* The words, all 0, at the first pass: made inside a frame, whose contract
+ * lets storage bindings end at 0 (stin_create leaves the caller's). */
+static void make_words(stin_context *ctx)
+{
+    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    static const GLuint none = 0;
     GL(ctx, GenBuffers)(1, &p->deepest);
     GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, p->deepest);
     GL(ctx, BufferData)(GL_SHADER_STORAGE_BUFFER,
@@ -67,7 +75,6 @@ int stin__vdsm_receivers_init(stin_context *ctx)
     GL(ctx, ClearBufferData)(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT,
                              &none);
     GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, 0);
-    return 1;
 }
 
 /* With the pyramid's framebuffer bound and its blending off: the pass
@@ -78,6 +85,8 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4])
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
     const int *vp = ctx->frame.viewport;
     stin__pass_state before = *stin__pass_current(ctx), ps = before;
+    if (!p->deepest)
+        make_words(ctx);
     ps.color_write = 0;
     stin__pass_apply(ctx, &ps);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
@@ -101,10 +110,12 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4])
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, p->fbo);
     GL(ctx, Viewport)(0, 0, p->size, p->size);
     stin__pass_apply(ctx, &before);
+    ctx->stats.vdsm_atomic_receivers++;
 }
 
 /* Level 0 (attached, its viewport set) from the accumulation and the
- * receivers' words; the program is the caller's to set again. */
+ * receivers' words (once made: the first pass makes them); the program is
+ * the caller's to set again. */
 void stin__vdsm_receivers_first_level(stin_context *ctx)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;

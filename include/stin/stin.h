@@ -237,8 +237,9 @@
  * technique's units 1 and 2, the shadow maps' units) are left with no 2D,
  * 1D or cube-map texture bound. On GL 4.3 a frame that used shader storage
  * buffers (deep's early-stop flag: binding point 0; vdsm's CSG product
- * shadows: points 0-2) leaves those binding points and the generic
- * GL_SHADER_STORAGE_BUFFER binding at 0.
+ * shadows: points 0-2; vdsm's receivers, stin_frame_stats.
+ * vdsm_atomic_receivers: point 0) leaves those binding points and the
+ * generic GL_SHADER_STORAGE_BUFFER binding at 0.
  * Every other piece of GL state is left as the caller had it (framebuffer
  * sRGB encoding and multisampling too: the frame honours them as the target's).
  * stin_create_mesh leaves the array buffer and vertex array 0's element
@@ -1615,6 +1616,9 @@ typedef struct stin_frame_stats {
      * the node pool, grown to the most crossings a product took so far) */
     uint32_t vdsm_csg_casts;
     uint64_t vdsm_csg_bytes;
+    /* vdsm: lights (per peeled layer too) whose deepest receivers came by
+     * storage-buffer atomics (GL 4.3; shader storage binding point 0) */
+    uint32_t vdsm_atomic_receivers;
     /* STIN_DEBUG_STAGE_TIMES: 1 when stage_ns holds this frame's GPU time
      * per stage in nanoseconds (0: not asked, or no timer queries) */
     uint32_t stage_times;

@@ -356,7 +356,8 @@ static int after_transfer(hostile_env *e, char *got, size_t size)
 
 /* the caller's storage buffer on binding points 0-2 and the generic binding;
  * after the frame the ones a technique used read 0 (stin.h GL STATE: deep's
- * flag point 0, vdsm's CSG lists 0-2), the others the caller's */
+ * flag point 0, vdsm's CSG lists 0-2, vdsm's receivers 0), the others the
+ * caller's */
 static void storage_to(hostile_env *e, GLuint b)
 {
     GLuint i;

@@ -100,7 +100,8 @@ static int draw(hostile_run *h)
  * apply to the test's own glReadPixels. */
 /* The storage-buffer bindings the frame's techniques used (stin.h GL
  * STATE): deep's early-stop flag on GL 4.3 (point 0), vdsm's CSG lists
- * (points 0-2), each through the generic binding too. */
+ * (points 0-2) and receivers (point 0), each through the generic binding
+ * too. */
 static unsigned storage_used(const hostile_run *h)
 {
     stin_frame_stats st = stin_query_frame_stats(h->ctx);
@@ -110,6 +111,8 @@ static unsigned storage_used(const hostile_run *h)
         used |= 1u | 8u;
     if (st.vdsm_csg_casts)
         used |= 7u | 8u;
+    if (st.vdsm_atomic_receivers)
+        used |= 1u | 8u;
     return used;
 }
 

@@ -784,13 +784,16 @@ static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
     shadows = STIN_TECH_SHADOWS_VDSM;
     create_profile(FAKE_GL45_CORE, 16, 8);
     assert_true(ctx->vdsm.pyramid.usable);
-    assert_true(ctx->vdsm.pyramid.deepest != 0 && ctx->vdsm.pyramid.first_prog != 0);
-    (void)frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
+    assert_true(ctx->vdsm.pyramid.atomic_prog != 0 && ctx->vdsm.pyramid.first_prog != 0);
+    assert_int_equal(ctx->vdsm.pyramid.deepest, 0); /* made in the first frame */
+    assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 0);
+    assert_int_equal(frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY).vdsm_atomic_receivers, 1);
+    assert_true(ctx->vdsm.pyramid.deepest != 0);
     assert_true(fake_gl.calls[STIN_GLFN_BindBufferBase] >= 4); /* bound, unbound, twice */
     create_profile(FAKE_GL33_CORE, 16, 8);
     assert_true(ctx->vdsm.pyramid.usable);
-    assert_int_equal(ctx->vdsm.pyramid.deepest, 0);
-    (void)frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(ctx->vdsm.pyramid.atomic_prog, 0);
+    assert_int_equal(frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY).vdsm_atomic_receivers, 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 0);
     shadows = STIN_TECH_SHADOWS_OFF;
 }
