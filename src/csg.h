@@ -130,6 +130,10 @@ typedef struct stin__csg_state {
     stin__csg_interval_state interval; /* csg_interval.c */
     stin__csg_merge_state merge;       /* csg_merge.c */
     int merged;               /* this frame's resolve kept its depth on the GPU */
+    int in_place;             /* ... and runs in the frame's own buffers (csg_merge.c) */
+    int result_pending;       /* in place: the result texture has yet to take the depth
+                               * of pending_fbo (when a pass first asks for it) */
+    GLuint pending_fbo;
     int region[4];            /* window x, y, w, h the resolve's passes keep to: the
                                * viewport, or on the GPU the term's or candidate's
                                * rectangle (csg_bounds.c) */
@@ -327,6 +331,22 @@ int stin__csg_merge_ready(const struct stin_context *ctx);
 int stin__csg_merge_begin(struct stin_context *ctx);
 void stin__csg_merge_snap(struct stin_context *ctx);
 GLuint stin__csg_merge_result(struct stin_context *ctx);
+/* The GPU resolve in place: a frame whose one candidate (one product of one
+ * scs term) is resolved in the frame's own depth and stencil, just cleared,
+ * needs no work buffer, merge or snap: the faces' depth the lit passes meet
+ * is what its passes rasterised there. begin: the result texture grown (0:
+ * cannot, logged once) and the frame's framebuffer bound as the resolve's;
+ * end: its stencil cleared. The passes that draw the products again
+ * elsewhere (stin__csg_depth_again, vdsm's position buffer) read the
+ * result texture: result_ready copies the frame's depth into it the first
+ * time one asks (at end where draw and read bindings are one). Later
+ * passes only bring the frame's depth nearer, and where a nearer surface
+ * hides a product the snap keeps none of its faces, as the depth test
+ * against that surface would not. */
+int stin__csg_in_place_fits(const struct stin_context *ctx);
+int stin__csg_in_place_begin(struct stin_context *ctx);
+void stin__csg_in_place_end(struct stin_context *ctx);
+void stin__csg_merge_result_ready(struct stin_context *ctx);
 /* The side of face draw d its pass culls (csg.c). */
 GLenum stin__csg_face_hidden(const stin__draw *d);
 
@@ -335,6 +355,8 @@ GLenum stin__csg_face_hidden(const stin__draw *d);
  * context: goldfeather resolves it). Inside the resolve's geometry_begin. */
 int stin__csg_scs_product(struct stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                           const stin__csg_product *p);
+/* Whether scs resolves p (the technique scs, p fit for it). */
+int stin__csg_scs_takes(const struct stin_context *ctx, const stin__csg_product *p);
 
 /* Interval (csg_interval.c): product p into r's result (csg_merge.c) when the CSG
  * technique is interval and p fits its limits, returning 1; else 0 (logged

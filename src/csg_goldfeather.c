@@ -668,11 +668,17 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
 {
     resolve r;
     int gpu = stin__csg_merge_ready(ctx);
-    ctx->csg.resolved = ctx->csg.merged = 0;
+    ctx->csg.resolved = ctx->csg.merged = ctx->csg.result_pending = 0;
     if (!ctx->csg.product_count || !usable(ctx, &r, gpu))
         return 0;
     ctx->csg.resolve_fbo = ctx->draw_fbo;
     stin__csg_region_reset(ctx);
+    if (gpu && stin__csg_in_place_fits(ctx) && stin__csg_in_place_begin(ctx)) {
+        stin__csg_resolve_pixels(ctx, path, &r);
+        stin__csg_in_place_end(ctx);
+        ctx->csg.resolved = ctx->csg.merged = 1;
+        return 1;
+    }
     if (gpu && !stin__csg_merge_begin(ctx) && !usable(ctx, &r, 0))
         return 0; /* its framebuffers failed (logged): the CPU's, if the staging holds it */
     stin__csg_resolve_pixels(ctx, path, &r);
@@ -697,7 +703,9 @@ GLuint stin__csg_depth_texture(stin_context *ctx, int origin[2])
         return 0;
     origin[0] = origin[1] = 0;
     if (ctx->csg.merged) {
-        GLuint result = stin__csg_merge_result(ctx);
+        GLuint result;
+        stin__csg_merge_result_ready(ctx);
+        result = stin__csg_merge_result(ctx);
         stin__bind_unit(ctx, 0, GL_TEXTURE_2D, result);
         return result;
     }
@@ -719,8 +727,10 @@ void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
     resolve r;
     if (!ctx->csg.resolved)
         return;
-    if (ctx->csg.merged)
+    if (ctx->csg.merged) {
+        stin__csg_merge_result_ready(ctx);
         stin__csg_merge_snap(ctx);
+    }
     else if (usable(ctx, &r, 0))
         write_depth(ctx, path, &r, GL_LESS);
 }

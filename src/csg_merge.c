@@ -28,6 +28,7 @@
 #include "internal.h"
 
 #define GL_DEPTH32F_STENCIL8 0x8CAD
+#define READ_FRAMEBUFFER 0x8CA8
 #define GL_FLOAT_32_UNSIGNED_INT_24_8_REV 0x8DAD
 /* 8 steps of a 24-bit depth buffer (the vdsm position buffer's tolerance
  * for the same result): far above the result's error, far below what
@@ -240,6 +241,56 @@ int stin__csg_merge_begin(stin_context *ctx)
     return 1;
 }
 
+int stin__csg_in_place_fits(const stin_context *ctx)
+{
+    const stin__csg_state *c = &ctx->csg;
+    return !(ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_IN_PLACE) && !ctx->frame.no_clear &&
+           c->product_count == 1 && c->products[0].term_count == 1 &&
+           stin__csg_scs_takes(ctx, &c->products[0]);
+}
+
+int stin__csg_in_place_begin(stin_context *ctx)
+{
+    if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
+        return 0;
+    ctx->csg.resolve_fbo = ctx->draw_fbo; /* ensure_targets left it bound */
+    ctx->csg.in_place = 1;
+    ctx->stats.csg_gpu_resolves = 1;
+    ctx->stats.csg_gpu_bytes = ctx->csg.merge.bytes;
+    ctx->stats.csg_in_place = 1;
+    return 1;
+}
+
+void stin__csg_in_place_end(stin_context *ctx)
+{
+    stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
+    ctx->csg.in_place = 0;
+    ctx->csg.pending_fbo = ctx->draw_fbo;
+    ctx->csg.result_pending = 1;
+    if (!ctx->target.separate_read) /* the copy could not leave a pass's binding alone */
+        stin__csg_merge_result_ready(ctx);
+}
+
+void stin__csg_merge_result_ready(stin_context *ctx)
+{
+    const int *vp = ctx->frame.viewport;
+    GLint bound = 0;
+    if (!ctx->csg.result_pending)
+        return;
+    /* within the GL (no read-back); only where asked: llvmpipe's copy cost
+     * a fifth of the bench's n = 2 frame */
+    if (ctx->target.separate_read) {
+        GL(ctx, GetIntegerv)(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+        GL(ctx, BindFramebuffer)(READ_FRAMEBUFFER, ctx->csg.pending_fbo);
+    }
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT]);
+    GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, vp[0], vp[1], vp[0], vp[1], vp[2], vp[3]);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    if (ctx->target.separate_read) /* stin binds both as one */
+        GL(ctx, BindFramebuffer)(READ_FRAMEBUFFER, (GLuint)bound);
+    ctx->csg.result_pending = 0;
+}
+
 GLuint stin__csg_merge_result(stin_context *ctx)
 {
     return ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT];
@@ -367,6 +418,8 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
             }
         return (int)kept;
     }
+    if (ctx->csg.in_place) /* the candidate is the result */
+        return 1;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[STIN__CSG_MERGE_RESULT]);
     if (counted)
         GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, q);

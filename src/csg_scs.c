@@ -461,6 +461,11 @@ static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
     (void)stin__csg_candidate_take(ctx, path, r, NULL, 0);
 }
 
+int stin__csg_scs_takes(const stin_context *ctx, const stin__csg_product *p)
+{
+    return ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_SCS && !unfit(ctx, p);
+}
+
 int stin__csg_scs_product(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                           const stin__csg_product *p)
 {

@@ -925,6 +925,10 @@ typedef struct stin_desc {
  * staging, as GL1 contexts do) where the GPU resolve would run (the same
  * depth, bit for bit; a test and bench baseline) */
 #define STIN_DEBUG_CSG_READBACK 67108864u
+/* CSG: resolve through the work buffer, merge and snap (below) where the
+ * frame's one scs candidate would resolve in place (the same image; a test
+ * and bench baseline) */
+#define STIN_DEBUG_CSG_NO_IN_PLACE 536870912u
 /* CSG products cast no shadow into the lights' maps (as before they did):
  * a test that casting matters */
 #define STIN_DEBUG_CSG_NO_CAST 8388608u
@@ -1421,6 +1425,16 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * rasterised in another buffer and carried through a sampler, can be a
  * step off). Its image equals the CPU resolve's but on pixels an edge
  * passes exactly through (tests/image/csg_test.c: at most 2 a case).
+ * In place: where the frame's only candidate is one scs term (one product
+ * whose normal form has one term; the frame clears its buffers, no
+ * desc.no_clear), it runs in the frame's own depth and stencil, whose
+ * depth then holds the faces' own rasterised depth: no work buffer, merge
+ * or snap (on llvmpipe 0.6-0.8x the frame of a box minus one sphere). Its
+ * stencil is cleared after it. The result texture takes a copy of the
+ * frame's depth (glCopyTexSubImage2D, no read-back) only when a later pass
+ * draws the products elsewhere (screen masks, outlines, depth-peel, vdsm's
+ * position buffer), once a frame (stin_frame_stats.csg_in_place;
+ * STIN_DEBUG_CSG_NO_IN_PLACE keeps the work buffer).
  * Both resolves keep to a rectangle: a term's surface (scs) or a
  * candidate's (goldfeather) lies inside its own and every plain literal's
  * window rectangle, so the clears, draws and quads of that term or
@@ -1623,6 +1637,9 @@ typedef struct stin_frame_stats {
      * per stage in nanoseconds (0: not asked, or no timer queries) */
     uint32_t stage_times;
     uint64_t stage_ns[STIN_STAGE_COUNT];
+    /* CSG: 1 when the frame's GPU resolve ran in place (one scs term in the
+     * frame's own buffers: no work buffer, merge or snap) */
+    uint32_t csg_in_place;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -38,6 +38,11 @@
  *               of a pixel an edge passes through exactly can differ from
  *               the frame's (Mesa draws window-system buffers upside down);
  *               measured 0-2 pixels a case;
+ *   in-place    (scs, GLSL tiers) a product of one term resolved in the
+ *               frame's own buffers (stin_frame_stats.csg_in_place), one
+ *               of two terms not, and the image equal to the work
+ *               buffer's merge and snap (STIN_DEBUG_CSG_NO_IN_PLACE) on
+ *               all but 0.05% of the covered pixels (gpu-resolve's bound);
  *   gl-clean    no GL error, no call outside the profile, no logged error.
  * Every case runs under goldfeather, scs ("csg-scs-") and interval
  * ("csg-interval-"; GL4 only, SKIP elsewhere). Under interval also:
@@ -204,14 +209,34 @@ static void p_agree(run *r, const char *name, const capture *a_cap, const captur
  * the two images are the same, depth and colour, but on edge pixels (both
  * end with the faces' own rasterised depth in the frame). */
 #define CSG_GPU_MAX_DIFFER 0.0005
+typedef struct image_differ {
+    long differ, depth_differ, covered;
+} image_differ;
+
+static image_differ differ_of(const run *r, const capture *a_cap, const capture *b_cap)
+{
+    image_differ d = {0, 0, 0};
+    int i, k;
+    for (i = 0; i < r->width * r->height; i++) {
+        const float *a = a_cap->img.pixels + (size_t)i * AOV_CHANNELS;
+        const float *b = b_cap->img.pixels + (size_t)i * AOV_CHANNELS;
+        int same = 1;
+        for (k = 0; k < AOV_CHANNELS; k++)
+            same &= a[k] == b[k] || (a[k] != a[k] && b[k] != b[k]);
+        d.differ += !same;
+        d.depth_differ += a[AOV_Z] != b[AOV_Z];
+        d.covered += a[AOV_Z] > 0.0f || b[AOV_Z] > 0.0f;
+    }
+    return d;
+}
+
 static void test_gpu_resolve(run *r, const csg_case *c, stin_technique t, stin_tier tier,
                              const scene *s, const capture_options *base, const capture *cap)
 {
     capture_options o = *base;
     capture cpu;
     char name[256];
-    long differ = 0, depth_differ = 0, covered = 0;
-    int i, k;
+    image_differ d;
     case_name(c, t, tier, "gpu-resolve", name, sizeof name);
     if (tier == STIN_TIER_GL1) {
         report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
@@ -220,28 +245,53 @@ static void test_gpu_resolve(run *r, const csg_case *c, stin_technique t, stin_t
     o.debug_flags |= STIN_DEBUG_CSG_READBACK;
     if (!render(r, s, &o, &cpu, name))
         return;
-    for (i = 0; i < r->width * r->height; i++) {
-        const float *a = cap->img.pixels + (size_t)i * AOV_CHANNELS;
-        const float *b = cpu.img.pixels + (size_t)i * AOV_CHANNELS;
-        int same = 1;
-        for (k = 0; k < AOV_CHANNELS; k++)
-            same &= a[k] == b[k] || (a[k] != a[k] && b[k] != b[k]);
-        differ += !same;
-        depth_differ += a[AOV_Z] != b[AOV_Z];
-        covered += a[AOV_Z] > 0.0f || b[AOV_Z] > 0.0f;
-    }
+    d = differ_of(r, cap, &cpu);
     report(r,
-           cap->stats.csg_gpu_resolves == 1 && cpu.stats.csg_gpu_resolves == 0 && covered &&
-                   differ <= CSG_GPU_MAX_DIFFER * covered
+           cap->stats.csg_gpu_resolves == 1 && cpu.stats.csg_gpu_resolves == 0 && d.covered &&
+                   d.differ <= CSG_GPU_MAX_DIFFER * d.covered
                ? "PASS"
                : "FAIL",
            name, "GPU resolve ran: %s (%llu bytes of GL memory), the read-back one ran: %s; the "
            "images differ on %ld of %ld covered pixels (depth on %ld; need <= %.2f%%)",
            cap->stats.csg_gpu_resolves ? "yes" : "no",
            (unsigned long long)cap->stats.csg_gpu_bytes,
-           cpu.stats.csg_gpu_resolves ? "no" : "yes", differ, covered, depth_differ,
+           cpu.stats.csg_gpu_resolves ? "no" : "yes", d.differ, d.covered, d.depth_differ,
            100.0 * CSG_GPU_MAX_DIFFER);
     capture_free(&cpu);
+}
+
+/* scs's GPU resolve in place (one term in the frame's own buffers) where
+ * the product has one term, against the work buffer's merge and snap
+ * (STIN_DEBUG_CSG_NO_IN_PLACE): the same image but on edge pixels, as
+ * gpu-resolve; and not in place where the product has two terms. */
+static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene *s,
+                          const capture_options *base, const capture *cap)
+{
+    capture_options o = *base;
+    capture merged;
+    char name[256];
+    image_differ d;
+    unsigned want = c->convex && cap->stats.csg_terms == 1;
+    case_name(c, STIN_TECH_CSG_SCS, tier, "in-place", name, sizeof name);
+    if (tier == STIN_TIER_GL1) {
+        report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
+        return;
+    }
+    o.debug_flags |= STIN_DEBUG_CSG_NO_IN_PLACE;
+    if (!render(r, s, &o, &merged, name))
+        return;
+    d = differ_of(r, cap, &merged);
+    report(r,
+           cap->stats.csg_in_place == want && merged.stats.csg_in_place == 0 &&
+                   merged.stats.csg_gpu_resolves == 1 && d.covered &&
+                   d.differ <= CSG_GPU_MAX_DIFFER * d.covered
+               ? "PASS"
+               : "FAIL",
+           name, "in place: %u (want %u: %u terms), with the flag: %u; the images differ on %ld "
+           "of %ld covered pixels (depth on %ld; need <= %.2f%%)", cap->stats.csg_in_place,
+           want, cap->stats.csg_terms, merged.stats.csg_in_place, d.differ, d.covered,
+           d.depth_differ, 100.0 * CSG_GPU_MAX_DIFFER);
+    capture_free(&merged);
 }
 
 /* The ordinary render's P against the union's. */
@@ -496,6 +546,7 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     if (tech == STIN_TECH_CSG_SCS) {
         test_scs_used(r, c, tier, &cap);
         test_agree(r, c, STIN_TECH_CSG_SCS, tier, &s, &o, &cap);
+        test_in_place(r, c, tier, &s, &o, &cap);
     }
     if (tech == STIN_TECH_CSG_INTERVAL) {
         case_name(c, tech, tier, "resolved", name, sizeof name);

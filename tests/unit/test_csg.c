@@ -306,10 +306,13 @@ static int teardown(void **state)
     return 0;
 }
 
+static int no_clear_; /* the next frames keep the framebuffer's contents */
+
 static void begin(void)
 {
     stin_frame_desc fd;
     memset(&fd, 0, sizeof fd);
+    fd.no_clear = no_clear_;
     stin__mat4_identity(fd.view);
     stin__mat4_identity(fd.projection);
     fd.viewport[2] = 16;
@@ -506,6 +509,15 @@ static void one_frame(void)
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
 }
 
+/* one_frame on a fresh 3.3 core context made with debug flags `flags` */
+static void flagged_frame(unsigned flags)
+{
+    debug_flags_ = flags;
+    recreate(FAKE_GL33_CORE, 0);
+    debug_flags_ = 0;
+    one_frame();
+}
+
 /* A frame with a product on the fake GL: GL 1.1 resolves it (depth read,
  * written once by glDrawPixels, faces drawn with the passes) by scs (two
  * convex tetrahedra; GL 1.1 has no occlusion queries); a core profile
@@ -541,19 +553,13 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(ctx->stats.csg_scs_runs, 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 0);
 
-    debug_flags_ = STIN_DEBUG_STAGE_TIMES; /* the resolve timed as its own stage */
-    recreate(FAKE_GL33_CORE, 0);
-    debug_flags_ = 0;
-    one_frame();
+    flagged_frame(STIN_DEBUG_STAGE_TIMES); /* the resolve timed as its own stage */
     assert_int_equal(ctx->stats.stage_times, 1);
     assert_true(ctx->times.marks >= 4);
     assert_int_equal(ctx->times.stage[2], STIN_STAGE_CSG); /* after prepass and base */
     assert_int_equal(ctx->times.stage[3], STIN_STAGE_BASE);
 
-    debug_flags_ = STIN_DEBUG_CSG_READBACK;
-    recreate(FAKE_GL33_CORE, 0);
-    debug_flags_ = 0;
-    one_frame();
+    flagged_frame(STIN_DEBUG_CSG_READBACK);
     assert_int_equal(ctx->stats.csg_scs_products, 1);
     assert_int_equal(ctx->stats.csg_gpu_resolves, 0);
     assert_true(fake_gl.calls[STIN_GLFN_ReadPixels] >= 2); /* depth, clip count */
@@ -581,6 +587,52 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 0);
     assert_int_equal(log_.items[STIN_LOG_FALLBACK], 1);
     assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "CSG products are not drawn"));
+}
+
+/* scs's GPU resolve in place: a frame whose one product has one term
+ * resolves it in the frame's own buffers (no work framebuffer bound, no
+ * merge, no snap), and copies its depth into the result texture only when
+ * a pass asks for it, once; not with STIN_DEBUG_CSG_NO_IN_PLACE, not in a
+ * frame that keeps the framebuffer's contents, not with two products. */
+static void test_scs_in_place(void **state)
+{
+    stin_csg_desc d;
+    int origin[2];
+    (void)state;
+    recreate(FAKE_GL33_CORE, 0);
+    one_frame();
+    assert_int_equal(ctx->stats.csg_in_place, 1);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg_scs_products, 1);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 0);
+    assert_int_equal(fake_gl.draws_into_default, /* every draw into the frame */
+                     fake_gl.calls[STIN_GLFN_DrawElements] + fake_gl.calls[STIN_GLFN_DrawArrays]);
+    assert_true(stin__csg_depth_texture(ctx, origin) != 0); /* a pass asks: copied once */
+    assert_true(stin__csg_depth_texture(ctx, origin) != 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 1);
+
+    flagged_frame(STIN_DEBUG_CSG_NO_IN_PLACE);
+    assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_true(fake_gl.draws_into_default <
+                fake_gl.calls[STIN_GLFN_DrawElements] + fake_gl.calls[STIN_GLFN_DrawArrays]);
+
+    recreate(FAKE_GL33_CORE, 0);
+    no_clear_ = 1;
+    one_frame();
+    no_clear_ = 0;
+    assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+
+    recreate(FAKE_GL33_CORE, 0);
+    d = subtraction(); /* the new context's mesh */
+    begin();
+    assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
+    assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    assert_int_equal(ctx->stats.csg_scs_products, 2);
+    assert_int_equal(ctx->stats.csg_in_place, 0);
 }
 
 /* A projection of fovy 90 (square) from near n to far f into ctx (view
@@ -645,6 +697,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_draw_csg_capacities, setup, teardown),
         cmocka_unit_test_setup_teardown(test_memory_counts_the_capacities, setup, teardown),
         cmocka_unit_test_setup_teardown(test_frames_with_a_product, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_scs_in_place, setup, teardown),
         cmocka_unit_test_setup_teardown(test_world_boxes_apart, setup, teardown),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
