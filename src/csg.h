@@ -334,7 +334,8 @@ GLuint stin__csg_merge_result(struct stin_context *ctx);
 /* The GPU resolve in place: a frame whose one candidate (one product of one
  * scs term) is resolved in the frame's own depth and stencil, just cleared,
  * needs no work buffer, merge or snap: the faces' depth the lit passes meet
- * is what its passes rasterised there. begin: the result texture grown (0:
+ * is what its passes rasterised there (not into a multisampled
+ * framebuffer, whose depth the copy below cannot read). begin: the result texture grown (0:
  * cannot, logged once) and the frame's framebuffer bound as the resolve's;
  * end: its stencil cleared. The passes that draw the products again
  * elsewhere (stin__csg_depth_again, vdsm's position buffer) read the
@@ -343,7 +344,7 @@ GLuint stin__csg_merge_result(struct stin_context *ctx);
  * passes only bring the frame's depth nearer, and where a nearer surface
  * hides a product the snap keeps none of its faces, as the depth test
  * against that surface would not. */
-int stin__csg_in_place_fits(const struct stin_context *ctx);
+int stin__csg_in_place_fits(struct stin_context *ctx);
 int stin__csg_in_place_begin(struct stin_context *ctx);
 void stin__csg_in_place_end(struct stin_context *ctx);
 void stin__csg_merge_result_ready(struct stin_context *ctx);

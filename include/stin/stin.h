@@ -1427,10 +1427,10 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * passes exactly through (tests/image/csg_test.c: at most 2 a case).
  * In place: where the frame's only candidate is one scs term (one product
  * whose normal form has one term; the frame clears its buffers, no
- * desc.no_clear), it runs in the frame's own depth and stencil, whose
- * depth then holds the faces' own rasterised depth: no work buffer, merge
- * or snap (on llvmpipe 0.5-0.7x the frame of a box minus one sphere). Its
- * stencil is cleared after it. The result texture takes a copy of the
+ * desc.no_clear; a framebuffer that is not multisampled), it runs in the
+ * frame's own depth and stencil, whose depth then holds the faces' own
+ * rasterised depth: no work buffer, merge or snap (on llvmpipe 0.5-0.7x
+ * the frame of a box minus one sphere). Its stencil is cleared after it. The result texture takes a copy of the
  * frame's depth (glCopyTexSubImage2D, no read-back) only when a later pass
  * draws the products elsewhere (screen masks, outlines, depth-peel, vdsm's
  * position buffer), once a frame (stin_frame_stats.csg_in_place;

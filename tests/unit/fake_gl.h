@@ -50,6 +50,7 @@ typedef struct fake_gl_config {
     fake_gl_fbo *framebuffers;
     int framebuffer_count;
     GLenum generated_framebuffer_status; /* of the ones stin makes: 0 complete */
+    int sample_buffers;                  /* GL_SAMPLE_BUFFERS of every framebuffer */
 } fake_gl_config;
 
 /* Configs shaped like the emulation profiles of DESIGN.md. */

@@ -593,7 +593,8 @@ static void test_frames_with_a_product(void **state)
  * resolves it in the frame's own buffers (no work framebuffer bound, no
  * merge, no snap), and copies its depth into the result texture only when
  * a pass asks for it, once; not with STIN_DEBUG_CSG_NO_IN_PLACE, not in a
- * frame that keeps the framebuffer's contents, not with two products. */
+ * frame that keeps the framebuffer's contents, not into a multisampled
+ * framebuffer, not with two products. */
 static void test_scs_in_place(void **state)
 {
     stin_csg_desc d;
@@ -622,6 +623,13 @@ static void test_scs_in_place(void **state)
     no_clear_ = 1;
     one_frame();
     no_clear_ = 0;
+    assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+
+    recreate(FAKE_GL33_CORE, 0);
+    fake_gl.config.sample_buffers = 1;
+    one_frame();
+    fake_gl.config.sample_buffers = 0;
     assert_int_equal(ctx->stats.csg_in_place, 0);
     assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
 
