@@ -334,10 +334,10 @@ GLuint stin__csg_merge_result(struct stin_context *ctx);
 /* The GPU resolve in place: a frame whose one candidate (one product of one
  * scs term) is resolved in the frame's own depth and stencil, just cleared,
  * needs no work buffer, merge or snap: the faces' depth the lit passes meet
- * is what its passes rasterised there (not into a multisampled
- * framebuffer, whose depth the copy below cannot read). begin: the result texture grown (0:
- * cannot, logged once) and the frame's framebuffer bound as the resolve's;
- * end: its stencil cleared. The passes that draw the products again
+ * is what its passes rasterised there (fits: not into a multisampled
+ * framebuffer, whose depth the copy below cannot read). begin: the result
+ * texture grown (0: cannot, logged once) and the frame's framebuffer bound
+ * as the resolve's; end: its stencil cleared. The passes that draw the products again
  * elsewhere (stin__csg_depth_again, vdsm's position buffer) read the
  * result texture: result_ready copies the frame's depth into it the first
  * time one asks (at end where draw and read bindings are one). Later

@@ -730,9 +730,9 @@ void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
     if (ctx->csg.merged) {
         stin__csg_merge_result_ready(ctx);
         stin__csg_merge_snap(ctx);
-    }
-    else if (usable(ctx, &r, 0))
+    } else if (usable(ctx, &r, 0)) {
         write_depth(ctx, path, &r, GL_LESS);
+    }
 }
 
 /* The R32F texture of the resolved depth (GL4 lighting: core profiles
