@@ -283,4 +283,19 @@ for tier in gl1 gl2 gl4; do
         awk -v z="$z" -v p="$zp" 'BEGIN { exit !(p > 3.8 && p < 4.0 && z > p + 0.3) }' && echo 0 || echo 1) \
         "exit $rc, Z $z at the centre, $zp without the csg list"
 done
+# --csg forces the CSG technique (the info line says so) and each cuts the pocket;
+# an unknown name is bad input (exit 2).
+for t in goldfeather scs; do
+    "$R" tests/scenes/csg/coplanar.json --csg $t --verbose --size 160x120 -o "$T/csg-$t.exr" \
+        > "$T/stdout" 2>&1
+    rc=$?
+    z=$(centre_z "$T/csg-$t.exr")
+    check "--csg $t" $([ $rc -eq 0 ] && grep -q "csg: $t (forced by the caller)" "$T/stdout" &&
+        awk -v z="$z" -v p="$zp" 'BEGIN { exit !(z > p + 0.3) }' && echo 0 || echo 1) \
+        "exit $rc, Z $z at the centre: $(grep -m1 'csg:' "$T/stdout")"
+done
+"$R" tests/scenes/csg/coplanar.json --csg bogus --no-output > "$T/stdout" 2>&1
+rc=$?
+check "--csg bogus: bad input" $([ $rc -eq 2 ] && grep -q "unknown csg technique 'bogus'" "$T/stdout" &&
+    echo 0 || echo 1) "exit $rc: $(head -c 200 "$T/stdout")"
 exit 0

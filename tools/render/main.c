@@ -195,7 +195,8 @@ int main(int argc, char **argv)
         desc.techniques[STIN_FEATURE_DISPLACEMENT] = stin_technique_from_name(o.surface);
     if (!render_parse_technique(o.shadows, STIN_FEATURE_SHADOWS, &desc.techniques[STIN_FEATURE_SHADOWS]) ||
         (!displace_all &&
-         !render_parse_technique(o.surface, STIN_FEATURE_SURFACE, &desc.techniques[STIN_FEATURE_SURFACE])))
+         !render_parse_technique(o.surface, STIN_FEATURE_SURFACE, &desc.techniques[STIN_FEATURE_SURFACE])) ||
+        !render_parse_technique(o.csg, STIN_FEATURE_CSG, &desc.techniques[STIN_FEATURE_CSG]))
         return EXIT_BAD_INPUT;
     if (o.scene_path) {
         progress_start(&pr, "loading %s", o.scene_path);

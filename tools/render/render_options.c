@@ -29,6 +29,8 @@ void render_usage(FILE *f)
                "                            map-combine, off (default auto)\n"
                "  --surface NAME            surface technique, or displace: materials with a\n"
                "                            height map displaced by it (default auto)\n"
+               "  --csg NAME                CSG technique for the scene's csg list: scs, goldfeather,\n"
+               "                            interval (GL4), csg-off (default auto)\n"
                "  --shadow-map-size N       texels a side of each shadow map: a power of two, 16..8192\n"
                "                            (default: the scene's shadow_map_size, else 1024)\n"
                "  --max-triangles N         work limit: triangles one frame may draw, instances x\n"
@@ -103,7 +105,7 @@ static int takes_value(const char *a)
 {
     static const char *const names[] = {"-o", "--tier", "--profile", "--platform", "--shadows",
                                         "--volume-mode", "--shadow-map-size", "--max-triangles",
-                                        "--surface", "--size", "--debug", "--outline"};
+                                        "--surface", "--csg", "--size", "--debug", "--outline"};
     size_t i;
     for (i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcmp(a, names[i]))
@@ -200,6 +202,8 @@ int render_parse_args(int argc, char **argv, options *o)
             }
         } else if (!strcmp(a, "--surface")) {
             o->surface = argv[++i];
+        } else if (!strcmp(a, "--csg")) {
+            o->csg = argv[++i];
         } else if (!strcmp(a, "--size")) {
             char extra;
             if (sscanf(argv[++i], "%dx%d%c", &o->width, &o->height, &extra) != 2 ||
@@ -243,7 +247,7 @@ int render_parse_args(int argc, char **argv, options *o)
     return 1;
 }
 
-/* --shadows/--surface: a technique name of that feature, or "auto". */
+/* --shadows/--surface/--csg: a technique name of that feature, or "auto". */
 int render_parse_technique(const char *name, stin_feature f, stin_technique *out)
 {
     int t;

@@ -16,7 +16,7 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 #define RENDER_MAX_TRIANGLES_DEFAULT (16u << 20)
 
 typedef struct options {
-    const char *scene_path, *output, *profile, *platform, *shadows, *surface;
+    const char *scene_path, *output, *profile, *platform, *shadows, *surface, *csg;
     uint32_t debug_flags;
     unsigned debug_outputs;     /* RENDER_DEBUG_* (render_debug.h) */
     uint32_t shadow_map_size;   /* 0: the scene's, else stin's default */
@@ -32,7 +32,7 @@ typedef struct options {
 void render_usage(FILE *f);
 /* Parses argv into *o; on a bad option prints one line to stderr and returns 0. */
 int render_parse_args(int argc, char **argv, options *o);
-/* --shadows/--surface: a technique name of that feature, or "auto". */
+/* --shadows/--surface/--csg: a technique name of that feature, or "auto". */
 int render_parse_technique(const char *name, stin_feature f, stin_technique *out);
 
 #endif
