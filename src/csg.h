@@ -344,7 +344,7 @@ GLuint stin__csg_merge_result(struct stin_context *ctx);
  * passes only bring the frame's depth nearer, and where a nearer surface
  * hides a product the snap keeps none of its faces, as the depth test
  * against that surface would not. */
-int stin__csg_in_place_fits(struct stin_context *ctx);
+int stin__csg_in_place_fits(const struct stin_context *ctx);
 int stin__csg_in_place_begin(struct stin_context *ctx);
 void stin__csg_in_place_end(struct stin_context *ctx);
 void stin__csg_merge_result_ready(struct stin_context *ctx);

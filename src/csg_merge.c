@@ -241,17 +241,13 @@ int stin__csg_merge_begin(stin_context *ctx)
     return 1;
 }
 
-int stin__csg_in_place_fits(stin_context *ctx)
+int stin__csg_in_place_fits(const stin_context *ctx)
 {
     const stin__csg_state *c = &ctx->csg;
-    GLint multisampled = 0;
-    if ((ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_IN_PLACE) || ctx->frame.no_clear ||
-        c->product_count != 1 || c->products[0].term_count != 1 ||
-        !stin__csg_scs_takes(ctx, &c->products[0]))
-        return 0;
     /* the copy into the result texture cannot read a multisampled framebuffer */
-    GL(ctx, GetIntegerv)(GL_SAMPLE_BUFFERS, &multisampled);
-    return multisampled == 0;
+    return !(ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_IN_PLACE) && !ctx->frame.no_clear &&
+           !ctx->target.multisampled && c->product_count == 1 &&
+           c->products[0].term_count == 1 && stin__csg_scs_takes(ctx, &c->products[0]);
 }
 
 int stin__csg_in_place_begin(stin_context *ctx)

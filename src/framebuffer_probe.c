@@ -68,10 +68,15 @@ void stin__framebuffer_restore(stin_context *ctx, const GLint saved[2])
 /* Reads the bits of `name`, bound now, into the cache. */
 static void probe_bits(stin_context *ctx, GLuint name)
 {
+    GLint sample_buffers = 0;
     ctx->target.name = name;
     ctx->target.stencil_bits = ctx->target.depth_bits = 0;
     stin__framebuffer_bits(&ctx->gl, ctx->caps.profile == STIN_GL_PROFILE_CORE, name,
                            &ctx->target.stencil_bits, &ctx->target.depth_bits);
+    /* GL 1.3's query; here, not per frame: a query can wait for a threaded driver */
+    if (10 * ctx->caps.gl_major + ctx->caps.gl_minor >= 13)
+        GL(ctx, GetIntegerv)(GL_SAMPLE_BUFFERS, &sample_buffers);
+    ctx->target.multisampled = sample_buffers > 0;
 }
 
 void stin__target_init(stin_context *ctx)

@@ -79,6 +79,7 @@ struct stin_context {
         int stencil_bits, depth_bits;
         int shadows_off;      /* the shadows choice cannot run into it (no stencil) */
         int separate_read;    /* draw and read bindings are separate (GL 3.0, ARB_fbo) */
+        int multisampled;     /* it has sample buffers (GL_SAMPLE_BUFFERS, GL 1.3) */
     } target;
 
     /* lighting paths */

@@ -265,11 +265,14 @@ static void add_mesh(const float *pos, uint32_t nv, const uint32_t *idx, uint32_
 static stin_technique forced_csg = STIN_TECH_NONE; /* make_context's desc.techniques */
 static uint32_t debug_flags_;                       /* and desc.debug_flags */
 
+static int sample_buffers_; /* the next contexts' framebuffers are multisampled */
+
 static void make_context(fake_gl_profile_id id, uint64_t caps_mask, int defaults)
 {
     fake_gl_config cfg = fake_gl_profile(id);
     stin_desc d;
     size_t bytes;
+    cfg.sample_buffers = sample_buffers_;
     fake_gl_reset(&cfg);
     d = fake_gl_desc(&log_);
     d.max_meshes = 4;
@@ -626,10 +629,10 @@ static void test_scs_in_place(void **state)
     assert_int_equal(ctx->stats.csg_in_place, 0);
     assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
 
+    sample_buffers_ = 1; /* probed with the framebuffer's bits, not every frame */
     recreate(FAKE_GL33_CORE, 0);
-    fake_gl.config.sample_buffers = 1;
+    sample_buffers_ = 0;
     one_frame();
-    fake_gl.config.sample_buffers = 0;
     assert_int_equal(ctx->stats.csg_in_place, 0);
     assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
 
