@@ -131,6 +131,7 @@ typedef struct stin__csg_state {
     stin__csg_merge_state merge;       /* csg_merge.c */
     int merged;               /* this frame's resolve kept its depth on the GPU */
     int in_place;             /* ... and runs in the frame's own buffers (csg_merge.c) */
+    int direct;               /* ... or snaps each candidate into the frame's depth */
     int result_pending;       /* in place: the result texture has yet to take the depth
                                * of pending_fbo (when a pass first asks for it) */
     GLuint pending_fbo;
@@ -300,8 +301,10 @@ void stin__csg_rect_cut(float a[4], const float b[4]);
  * the result (known on the CPU only). keep_where: its pixels whose stencil
  * & mask differs from want lose. take: its pixels kept where nearer than
  * the result (where select is not NULL, only the pixels whose interval
- * walk chose layer select->id); returns whether any was kept (on the GPU
- * counted by a query where want_kept asks and there are queries, else 1).
+ * walk chose layer select->id; in a direct resolve, surface's faces
+ * snapped into the frame instead); returns whether any was kept (on the
+ * GPU counted by a query where want_kept asks and there are queries, else
+ * 1).
  * stencil_max: the largest stencil value over the viewport, or a bound
  * above it no larger than limit (on the GPU from threshold queries). The
  * GPU steps switch programs: path's geometry_begin runs again after them
@@ -310,12 +313,24 @@ typedef struct stin__csg_select {
     GLuint texture;           /* interval's walk target (R8: layer + 1) */
     int id;
 } stin__csg_select;
+/* The faces a candidate's depth was drawn from, for the direct resolve
+ * (take snaps them into the frame): term t's literals [first, first +
+ * count), each its shown side (the front of a plain one, the back of a
+ * complemented one); or, where cap is not NULL, that draw alone with the
+ * side `cap_culled` culled (goldfeather's near-plane cap). */
+typedef struct stin__csg_surface {
+    const stin__csg_product *p;
+    const stin__csg_term *t;
+    uint32_t first, count;
+    const stin__draw *cap;
+    GLenum cap_culled;
+} stin__csg_surface;
 int stin__csg_candidate_open(struct stin_context *ctx, stin__csg_pixels *r);
 void stin__csg_candidate_keep_where(struct stin_context *ctx, const stin__path *path,
                                     stin__csg_pixels *r, unsigned mask, unsigned want);
 int stin__csg_candidate_take(struct stin_context *ctx, const stin__path *path,
                              stin__csg_pixels *r, const stin__csg_select *select,
-                             int want_kept);
+                             const stin__csg_surface *surface, int want_kept);
 unsigned stin__csg_stencil_max(struct stin_context *ctx, const stin__path *path,
                                stin__csg_pixels *r, unsigned limit);
 /* The GPU resolve (csg_merge.c): programs at stin_create (nothing where
@@ -347,6 +362,19 @@ GLuint stin__csg_merge_result(struct stin_context *ctx);
 int stin__csg_in_place_fits(const struct stin_context *ctx);
 int stin__csg_in_place_begin(struct stin_context *ctx);
 void stin__csg_in_place_end(struct stin_context *ctx);
+/* The direct GPU resolve: candidates (goldfeather's layers, scs's terms)
+ * are found in the work buffer as before, but each is taken by drawing
+ * its own faces into the frame, depth LESS, kept within the snap's band of
+ * the work buffer's depth: the frame's depth is then the result, holding
+ * the faces' own rasterised depth, with no result buffer, merge quads or
+ * final snap. The result texture is copied on demand as in place. fits:
+ * any frame but interval's (its walk's layers are no one face set) and a
+ * multisampled framebuffer (the copy); begin: the work buffer bound (0:
+ * cannot, logged once); end: the frame's framebuffer bound again, the
+ * scissor off. */
+int stin__csg_direct_fits(const struct stin_context *ctx);
+int stin__csg_direct_begin(struct stin_context *ctx);
+void stin__csg_direct_end(struct stin_context *ctx);
 void stin__csg_merge_result_ready(struct stin_context *ctx);
 /* The side of face draw d its pass culls (csg.c). */
 GLenum stin__csg_face_hidden(const stin__draw *d);

@@ -469,6 +469,13 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
     int one_layer = d->mesh_slot == ctx->csg.cap_slot || ctx->meshes[d->mesh_slot].info.convex;
     float region[4];
     extent own;
+    stin__csg_surface surface;
+    surface.p = p;
+    surface.t = t;
+    surface.first = self;
+    surface.count = 1;
+    surface.cap = self < t->count ? NULL : d;
+    surface.cap_culled = culled;
     /* off the candidate's rectangle or box a plain literal leaves nothing,
      * a complemented one is outside (no pass): passes follow the overlaps */
     stin__csg_screen_rect(ctx, d, own.rect);
@@ -500,7 +507,7 @@ static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
         if (!stin__csg_candidate_open(ctx, r)) /* no layer, or none nearer */
             continue;
         count_others(ctx, path, r, p, t, self, &own, how);
-        kept |= stin__csg_candidate_take(ctx, path, r, NULL, want_kept);
+        kept |= stin__csg_candidate_take(ctx, path, r, NULL, &surface, want_kept);
     }
     return kept;
 }
@@ -676,6 +683,12 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
     if (gpu && stin__csg_in_place_fits(ctx) && stin__csg_in_place_begin(ctx)) {
         stin__csg_resolve_pixels(ctx, path, &r);
         stin__csg_in_place_end(ctx);
+        ctx->csg.resolved = ctx->csg.merged = 1;
+        return 1;
+    }
+    if (gpu && stin__csg_direct_fits(ctx) && stin__csg_direct_begin(ctx)) {
+        stin__csg_resolve_pixels(ctx, path, &r);
+        stin__csg_direct_end(ctx);
         ctx->csg.resolved = ctx->csg.merged = 1;
         return 1;
     }

@@ -443,7 +443,7 @@ static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_produc
         peel_draw(ctx, d, g % k && g != cap_layer ? g - 1 : -1, &ps);
         select.id = g + 1;
         if (stin__csg_candidate_open(ctx, r) &&
-            stin__csg_candidate_take(ctx, NULL, r, &select, g == cap_layer))
+            stin__csg_candidate_take(ctx, NULL, r, &select, NULL, g == cap_layer))
             p->capped |= g == cap_layer;
         GL(ctx, UseProgram)(s->peel_prog); /* the GPU's merge took the program */
     }

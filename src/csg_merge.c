@@ -24,7 +24,15 @@
  *     off that: the work texture is rasterised in another buffer, and a
  *     24-bit depth read through a sampler and written back through
  *     gl_FragDepth can move by a step (Mesa's llvmpipe does; measured
- *     +1 and +2 on csg.json). */
+ *     +1 and +2 on csg.json).
+ * Two frames skip parts of that. In place (one scs term, the frame's only
+ * candidate) the resolve runs in the frame's own buffers. Direct (any
+ * other frame but interval's) each candidate is taken by snapping its own
+ * faces into the frame on the work texture's depth instead of merging it:
+ * the frame's depth is the result, with no result clear, merge quads or
+ * final snap (on llvmpipe the merge quads and the final snap cost the
+ * small products most of their frame; docs/benchmarks.md). Both copy the
+ * frame's depth into the result texture only when a pass asks for it. */
 #include "internal.h"
 
 #define GL_DEPTH32F_STENCIL8 0x8CAD
@@ -297,15 +305,15 @@ GLuint stin__csg_merge_result(stin_context *ctx)
     return ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT];
 }
 
-void stin__csg_merge_snap(stin_context *ctx)
+/* The snap program bound, reading depth texture `against` on unit 0. */
+static void snap_begin(stin_context *ctx, GLuint against)
 {
     stin__csg_merge_state *m = &ctx->csg.merge;
     float params[4];
-    uint32_t i;
     GL(ctx, UseProgram)(m->snap_prog);
     ctx->glsl_surface.current = NULL;
     GL(ctx, UniformMatrix4fv)(m->snap_view_proj, 1, GL_FALSE, ctx->view_proj);
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[STIN__CSG_MERGE_RESULT]);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, against);
     GL(ctx, Uniform1i)(m->snap_result, 0);
     params[0] = SNAP_BAND;
     params[1] = 0.0f;
@@ -313,20 +321,89 @@ void stin__csg_merge_snap(stin_context *ctx)
     params[3] = 1.0f / (float)m->height;
     GL(ctx, Uniform4fv)(m->snap_params, 1, params);
     ctx->bound_mesh = 0xffffffffu;
-    for (i = 0; i < ctx->csg.face_count; i++) {
-        const stin__draw *d = &ctx->csg.faces[i];
-        stin__pass_state ps = stin__pass_defaults;
-        ps.depth_test = 1;
-        ps.depth_func = GL_LESS; /* under what the buffer holds nearer */
-        ps.color_write = 0;
-        ps.cull = 1;
-        ps.cull_face = stin__csg_face_hidden(d);
-        stin__pass_apply(ctx, &ps);
-        stin__glsl_submit_geometry(ctx, m->snap_model, &m->snap_displace, d);
-        ctx->stats.passes++;
-    }
+}
+
+static void snap_end(stin_context *ctx)
+{
     ctx->bound_mesh = 0xffffffffu;
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+}
+
+/* d's faces but `culled` into the bound framebuffer, depth LESS, where
+ * they lie on the bound texture's depth; within the resolve's region where
+ * `region` asks (the work texture outside it holds older candidates). */
+static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, int region)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__pass_state ps = stin__pass_defaults;
+    ps.depth_test = 1;
+    ps.depth_func = GL_LESS; /* under what the buffer holds nearer */
+    ps.color_write = 0;
+    ps.cull = 1;
+    ps.cull_face = culled;
+    if (region)
+        stin__csg_region_keep_to(ctx, &ps);
+    stin__pass_apply(ctx, &ps);
+    stin__glsl_submit_geometry(ctx, m->snap_model, &m->snap_displace, d);
+    ctx->stats.passes++;
+}
+
+void stin__csg_merge_snap(stin_context *ctx)
+{
+    uint32_t i;
+    snap_begin(ctx, ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT]);
+    for (i = 0; i < ctx->csg.face_count; i++)
+        snap_faces(ctx, &ctx->csg.faces[i], stin__csg_face_hidden(&ctx->csg.faces[i]), 0);
+    snap_end(ctx);
+}
+
+/* The direct resolve's take: the surface's faces on the work texture's
+ * depth (what keep_where left of the candidate) into the frame. */
+static void snap_surface(stin_context *ctx, const stin__csg_surface *s)
+{
+    uint32_t i;
+    snap_begin(ctx, ctx->csg.merge.texture[STIN__CSG_MERGE_WORK]);
+    if (s->cap)
+        snap_faces(ctx, s->cap, s->cap_culled, 1);
+    for (i = 0; !s->cap && i < s->count; i++) {
+        uint32_t lit = ctx->csg.literals[s->t->first + s->first + i];
+        const stin__draw *d =
+            &ctx->csg.primitives[s->p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+        snap_faces(ctx, d, stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), 1);
+    }
+    snap_end(ctx);
+}
+
+int stin__csg_direct_fits(const stin_context *ctx)
+{
+    return !(ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_IN_PLACE) && !ctx->target.multisampled &&
+           ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_INTERVAL;
+}
+
+int stin__csg_direct_begin(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg.merge;
+    if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
+        return 0;
+    ctx->csg.resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+    ctx->csg.direct = 1;
+    ctx->stats.csg_gpu_resolves = 1;
+    ctx->stats.csg_gpu_bytes = m->bytes;
+    ctx->stats.csg_direct = 1;
+    return 1;
+}
+
+void stin__csg_direct_end(stin_context *ctx)
+{
+    ctx->csg.direct = 0;
+    ctx->csg.resolve_fbo = ctx->draw_fbo;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    stin__pass_apply(ctx, &stin__pass_defaults); /* the last candidate's scissor off */
+    ctx->csg.pending_fbo = ctx->draw_fbo;
+    ctx->csg.result_pending = 1;
+    if (!ctx->target.separate_read) /* as in place */
+        stin__csg_merge_result_ready(ctx);
 }
 
 /* ---- the steps ---------------------------------------------------------- */
@@ -399,7 +476,8 @@ void stin__csg_candidate_keep_where(stin_context *ctx, const stin__path *path,
 }
 
 int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
-                             const stin__csg_select *select, int want_kept)
+                             const stin__csg_select *select, const stin__csg_surface *surface,
+                             int want_kept)
 {
     stin__csg_merge_state *m = &ctx->csg.merge;
     GLuint kept = 1, q = m->queries[STIN__CSG_MERGE_THRESHOLDS];
@@ -421,10 +499,14 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
     }
     if (ctx->csg.in_place) /* the candidate is the result */
         return 1;
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[STIN__CSG_MERGE_RESULT]);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER,
+                             ctx->csg.direct ? ctx->draw_fbo : m->fbo[STIN__CSG_MERGE_RESULT]);
     if (counted)
         GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, q);
-    merge_quad(ctx, select);
+    if (ctx->csg.direct && surface)
+        snap_surface(ctx, surface);
+    else
+        merge_quad(ctx, select);
     if (counted) {
         GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
         GL(ctx, GetQueryObjectuiv)(q, GL_QUERY_RESULT, &kept);

@@ -441,6 +441,7 @@ static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
 {
     float region[4] = {-1e30f, -1e30f, 1e30f, 1e30f}, rect[4];
     uint32_t li;
+    stin__csg_surface surface; /* every literal's shown side */
     /* the term's surface lies inside every plain primitive's rectangle: on
      * the GPU (nothing outside read back) its passes keep to their overlap */
     for (li = 0; li < t->count; li++) {
@@ -458,7 +459,13 @@ static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
     if (!stin__csg_candidate_open(ctx, r))
         return;
     clip(ctx, path, r, p, t);
-    (void)stin__csg_candidate_take(ctx, path, r, NULL, 0);
+    surface.p = p;
+    surface.t = t;
+    surface.first = 0;
+    surface.count = t->count;
+    surface.cap = NULL;
+    surface.cap_culled = GL_BACK;
+    (void)stin__csg_candidate_take(ctx, path, r, NULL, &surface, 0);
 }
 
 int stin__csg_scs_takes(const stin_context *ctx, const stin__csg_product *p)

@@ -926,8 +926,9 @@ typedef struct stin_desc {
  * depth, bit for bit; a test and bench baseline) */
 #define STIN_DEBUG_CSG_READBACK 67108864u
 /* CSG: resolve through the work buffer, merge and snap (below) where the
- * frame's one scs candidate would resolve in place (the same image; a test
- * and bench baseline) */
+ * frame's one scs candidate would resolve in place or its candidates be
+ * snapped straight into the frame (direct): the same image; a test and
+ * bench baseline */
 #define STIN_DEBUG_CSG_NO_IN_PLACE 536870912u
 /* CSG products cast no shadow into the lights' maps (as before they did):
  * a test that casting matters */
@@ -1435,6 +1436,15 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * draws the products elsewhere (screen masks, outlines, depth-peel, vdsm's
  * position buffer), once a frame (stin_frame_stats.csg_in_place;
  * STIN_DEBUG_CSG_NO_IN_PLACE keeps the work buffer).
+ * Direct: every other frame's GPU resolve but interval's (its walk's layers
+ * are no one face set) and a multisampled framebuffer's keeps the work
+ * buffer but no result: each candidate (a goldfeather layer, an scs term)
+ * is taken by drawing its own faces into the frame, depth LESS, each
+ * fragment kept within 2^-21 of the candidate's depth in the work buffer.
+ * The frame's depth is then the result, with the faces' own rasterised
+ * depth: no result clear, merge quads or final snap, and the result
+ * texture copied on demand as in place (stin_frame_stats.csg_direct;
+ * STIN_DEBUG_CSG_NO_IN_PLACE merges instead).
  * Both resolves keep to a rectangle: a term's surface (scs) or a
  * candidate's (goldfeather) lies inside its own and every plain literal's
  * window rectangle, so the clears, draws and quads of that term or
@@ -1640,6 +1650,9 @@ typedef struct stin_frame_stats {
     /* CSG: 1 when the frame's GPU resolve ran in place (one scs term in the
      * frame's own buffers: no work buffer, merge or snap) */
     uint32_t csg_in_place;
+    /* CSG: 1 when the frame's GPU resolve took each candidate by snapping its
+     * faces straight into the frame's depth (no result buffer or merge) */
+    uint32_t csg_direct;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

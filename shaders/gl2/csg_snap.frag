@@ -1,14 +1,17 @@
 #version 120
 // SPDX-License-Identifier: MIT
-// The GPU CSG resolve's last step (src/csg_merge.c): a product's face
+// The GPU CSG resolve's snap (src/csg_merge.c): a product's face
 // fragment is kept only where it lies on the resolved surface (within a
-// band of the result), so the frame's depth gets the face's own depth.
-uniform sampler2D u_result; // the result's depth (texel = window pixel)
+// band of the result, or in a direct resolve of the candidate taken), so
+// the frame's depth gets the face's own depth.
+uniform sampler2D u_result; // that depth (texel = window pixel)
 uniform vec4 u_params;      // x: the band; zw: 1 / texture size
 
 void main()
 {
     float r = texture2D(u_result, gl_FragCoord.xy * u_params.zw).r;
-    if (abs(gl_FragCoord.z - r) > u_params.x)
+    // 0 (scs's term where no plain primitive drew) and the far plane (a
+    // candidate's lost pixels) hold no surface
+    if (r <= 0.0 || r >= 1.0 || abs(gl_FragCoord.z - r) > u_params.x)
         discard;
 }

@@ -1,13 +1,17 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// The GPU CSG resolve's last step (src/csg_merge.c): a product's face
+// The GPU CSG resolve's snap (src/csg_merge.c): a product's face
 // fragment is kept only where it lies on the resolved surface (within a
-// band of the result), so the frame's depth gets the face's own depth.
-uniform sampler2D u_result; // the result's depth (texel = window pixel)
+// band of the result, or in a direct resolve of the candidate taken), so
+// the frame's depth gets the face's own depth.
+uniform sampler2D u_result; // that depth (texel = window pixel)
 uniform vec4 u_params;      // x: the band; zw: unused here
 
 void main()
 {
-    if (abs(gl_FragCoord.z - texelFetch(u_result, ivec2(gl_FragCoord.xy), 0).r) > u_params.x)
+    float r = texelFetch(u_result, ivec2(gl_FragCoord.xy), 0).r;
+    // 0 (scs's term where no plain primitive drew) and the far plane (a
+    // candidate's lost pixels) hold no surface
+    if (r <= 0.0 || r >= 1.0 || abs(gl_FragCoord.z - r) > u_params.x)
         discard;
 }

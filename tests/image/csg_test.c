@@ -40,9 +40,12 @@
  *               measured 0-2 pixels a case;
  *   in-place    (scs, GLSL tiers) a product of one term resolved in the
  *               frame's own buffers (stin_frame_stats.csg_in_place), one
- *               of two terms not, and the image equal to the work
- *               buffer's merge and snap (STIN_DEBUG_CSG_NO_IN_PLACE) on
- *               all but 0.05% of the covered pixels (gpu-resolve's bound);
+ *               of two terms not but direct (csg_direct: each candidate
+ *               snapped into the frame's depth), and the image equal to
+ *               the work buffer's merge and snap (STIN_DEBUG_CSG_NO_IN_PLACE)
+ *               on all but 0.05% of the covered pixels (gpu-resolve's
+ *               bound);
+ *   direct      (goldfeather, GLSL tiers) the same with csg_direct = 1;
  *   gl-clean    no GL error, no call outside the profile, no logged error.
  * Every case runs under goldfeather, scs ("csg-scs-") and interval
  * ("csg-interval-"; GL4 only, SKIP elsewhere). Under interval also:
@@ -260,19 +263,20 @@ static void test_gpu_resolve(run *r, const csg_case *c, stin_technique t, stin_t
     capture_free(&cpu);
 }
 
-/* scs's GPU resolve in place (one term in the frame's own buffers) where
- * the product has one term, against the work buffer's merge and snap
- * (STIN_DEBUG_CSG_NO_IN_PLACE): the same image but on edge pixels, as
- * gpu-resolve; and not in place where the product has two terms. */
-static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene *s,
-                          const capture_options *base, const capture *cap)
+/* The GPU resolve in the frame's buffers against the work buffer's merge
+ * and snap (STIN_DEBUG_CSG_NO_IN_PLACE): the same image but on edge pixels,
+ * as gpu-resolve. scs in place where the product has one term; otherwise,
+ * and under goldfeather always, direct (each candidate snapped into the
+ * frame's depth). */
+static void test_in_place(run *r, const csg_case *c, stin_technique t, stin_tier tier,
+                          const scene *s, const capture_options *base, const capture *cap)
 {
     capture_options o = *base;
     capture merged;
     char name[256];
     image_differ d;
-    unsigned want = c->convex && cap->stats.csg_terms == 1;
-    case_name(c, STIN_TECH_CSG_SCS, tier, "in-place", name, sizeof name);
+    unsigned in_place = t == STIN_TECH_CSG_SCS && c->convex && cap->stats.csg_terms == 1;
+    case_name(c, t, tier, t == STIN_TECH_CSG_SCS ? "in-place" : "direct", name, sizeof name);
     if (tier == STIN_TIER_GL1) {
         report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
         return;
@@ -282,14 +286,16 @@ static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene
         return;
     d = differ_of(r, cap, &merged);
     report(r,
-           cap->stats.csg_in_place == want && merged.stats.csg_in_place == 0 &&
+           cap->stats.csg_in_place == in_place && cap->stats.csg_direct == !in_place &&
+                   merged.stats.csg_in_place == 0 && merged.stats.csg_direct == 0 &&
                    merged.stats.csg_gpu_resolves == 1 && d.covered &&
                    d.differ <= CSG_GPU_MAX_DIFFER * d.covered
                ? "PASS"
                : "FAIL",
-           name, "in place: %u (want %u: %u terms), with the flag: %u; the images differ on %ld "
-           "of %ld covered pixels (depth on %ld; need <= %.2f%%)", cap->stats.csg_in_place,
-           want, cap->stats.csg_terms, merged.stats.csg_in_place, d.differ, d.covered,
+           name, "in place: %u (want %u: %u terms), direct: %u, with the flag: %u and %u; the "
+           "images differ on %ld of %ld covered pixels (depth on %ld; need <= %.2f%%)",
+           cap->stats.csg_in_place, in_place, cap->stats.csg_terms, cap->stats.csg_direct,
+           merged.stats.csg_in_place, merged.stats.csg_direct, d.differ, d.covered,
            d.depth_differ, 100.0 * CSG_GPU_MAX_DIFFER);
     capture_free(&merged);
 }
@@ -546,8 +552,9 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     if (tech == STIN_TECH_CSG_SCS) {
         test_scs_used(r, c, tier, &cap);
         test_agree(r, c, STIN_TECH_CSG_SCS, tier, &s, &o, &cap);
-        test_in_place(r, c, tier, &s, &o, &cap);
     }
+    if (tech != STIN_TECH_CSG_INTERVAL)
+        test_in_place(r, c, tech, tier, &s, &o, &cap);
     if (tech == STIN_TECH_CSG_INTERVAL) {
         case_name(c, tech, tier, "resolved", name, sizeof name);
         report(r, cap.stats.csg_interval_products == 1 ? "PASS" : "FAIL", name,

@@ -246,6 +246,7 @@ static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum t
     fake_gl.draw_calls++;
     fake_gl.patch_draws += mode == GL_PATCHES;
     fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
+    fake_gl.draws_into_watched += fake_gl.gl.draw_framebuffer == fake_gl.watched_framebuffer;
     fake_gl.drawn_indices += (unsigned)count;
 }
 
@@ -256,6 +257,7 @@ static void STIN_APIENTRY fake_DrawArrays(GLenum mode, GLint first, GLsizei coun
     COUNT(DrawArrays);
     fake_gl.patch_draws += mode == GL_PATCHES;
     fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
+    fake_gl.draws_into_watched += fake_gl.gl.draw_framebuffer == fake_gl.watched_framebuffer;
 }
 
 /* ---- object names ------------------------------------------------------- */

@@ -76,6 +76,8 @@ typedef struct fake_gl_state {
     unsigned draw_calls, drawn_indices;
     unsigned patch_draws;                /* draw calls of GL_PATCHES (tessellated) */
     unsigned draws_into_default;         /* draw calls while framebuffer 0 was bound */
+    GLuint watched_framebuffer;          /* a test's choice (0 until it sets one) */
+    unsigned draws_into_watched;         /* draw calls while that one was bound */
     unsigned textures_created, textures_deleted;
     unsigned buffers_created, buffers_deleted;
     unsigned vertex_arrays_created, vertex_arrays_deleted;

@@ -606,6 +606,7 @@ static void test_scs_in_place(void **state)
     recreate(FAKE_GL33_CORE, 0);
     one_frame();
     assert_int_equal(ctx->stats.csg_in_place, 1);
+    assert_int_equal(ctx->stats.csg_direct, 0);
     assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
     assert_int_equal(ctx->stats.csg_scs_products, 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 0);
@@ -618,6 +619,7 @@ static void test_scs_in_place(void **state)
 
     flagged_frame(STIN_DEBUG_CSG_NO_IN_PLACE);
     assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_direct, 0);
     assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
     assert_true(fake_gl.draws_into_default <
                 fake_gl.calls[STIN_GLFN_DrawElements] + fake_gl.calls[STIN_GLFN_DrawArrays]);
@@ -627,6 +629,7 @@ static void test_scs_in_place(void **state)
     one_frame();
     no_clear_ = 0;
     assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_direct, 1); /* it draws into the frame's depth only */
     assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
 
     sample_buffers_ = 1; /* probed with the framebuffer's bits, not every frame */
@@ -634,6 +637,7 @@ static void test_scs_in_place(void **state)
     sample_buffers_ = 0;
     one_frame();
     assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_direct, 0);
     assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
 
     recreate(FAKE_GL33_CORE, 0);
@@ -644,6 +648,59 @@ static void test_scs_in_place(void **state)
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
     assert_int_equal(ctx->stats.csg_scs_products, 2);
     assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_direct, 1);
+}
+
+/* A second frame on a context made with forced_csg and `flags`, counting
+ * the draws into the GPU resolve's result framebuffer (made in the first). */
+static void watched_frame(unsigned flags)
+{
+    flagged_frame(flags);
+    fake_gl.watched_framebuffer = ctx->csg.merge.fbo[STIN__CSG_MERGE_RESULT];
+    fake_gl.draws_into_watched = 0;
+    fake_gl.calls[STIN_GLFN_CopyTexSubImage2D] = 0;
+    one_frame();
+}
+
+/* The direct GPU resolve: goldfeather's candidates are each snapped into
+ * the frame's depth, so the result framebuffer is never drawn into (no
+ * clear, merge quad or final snap) and the result texture is copied from
+ * the frame only when a pass asks, once; with STIN_DEBUG_CSG_NO_IN_PLACE
+ * the merge runs; under interval (its walk's layers are no one face set)
+ * and into a multisampled framebuffer it does not run. */
+static void test_direct(void **state)
+{
+    int origin[2];
+    (void)state;
+    forced_csg = STIN_TECH_CSG_GOLDFEATHER;
+    watched_frame(0);
+    assert_int_equal(ctx->stats.csg_direct, 1);
+    assert_int_equal(ctx->stats.csg_in_place, 0);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg_scs_products, 0);
+    assert_int_equal(fake_gl.draws_into_watched, 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 0);
+    assert_true(stin__csg_depth_texture(ctx, origin) != 0);
+    assert_true(stin__csg_depth_texture(ctx, origin) != 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 1);
+
+    watched_frame(STIN_DEBUG_CSG_NO_IN_PLACE);
+    assert_int_equal(ctx->stats.csg_direct, 0);
+    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_true(fake_gl.draws_into_watched > 0); /* the merge quads */
+
+    sample_buffers_ = 1;
+    watched_frame(0);
+    sample_buffers_ = 0;
+    assert_int_equal(ctx->stats.csg_direct, 0);
+    assert_true(fake_gl.draws_into_watched > 0);
+
+    forced_csg = STIN_TECH_CSG_INTERVAL;
+    flagged_frame(0);
+    forced_csg = STIN_TECH_NONE;
+    assert_int_equal(ctx->stats.csg_interval_products, 1);
+    assert_int_equal(ctx->stats.csg_direct, 0);
 }
 
 /* A projection of fovy 90 (square) from near n to far f into ctx (view
@@ -708,6 +765,7 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_draw_csg_capacities, setup, teardown),
         cmocka_unit_test_setup_teardown(test_memory_counts_the_capacities, setup, teardown),
         cmocka_unit_test_setup_teardown(test_frames_with_a_product, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_direct, setup, teardown),
         cmocka_unit_test_setup_teardown(test_scs_in_place, setup, teardown),
         cmocka_unit_test_setup_teardown(test_world_boxes_apart, setup, teardown),
     };
