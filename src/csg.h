@@ -315,12 +315,14 @@ typedef struct stin__csg_select {
 } stin__csg_select;
 /* The faces a candidate's depth was drawn from, for the direct resolve
  * (take snaps them into the frame): term t's literals [first, first +
- * count), each its shown side (the front of a plain one, the back of a
- * complemented one); or, where cap is not NULL, that draw alone with the
- * side `cap_culled` culled (goldfeather's near-plane cap). */
+ * count), or where list is not NULL list[0..count), each its shown side
+ * (the front of a plain one, the back of a complemented one); or, where
+ * cap is not NULL, that draw alone with the side `cap_culled` culled
+ * (goldfeather's near-plane cap). */
 typedef struct stin__csg_surface {
     const stin__csg_product *p;
     const stin__csg_term *t;
+    const uint32_t *list;
     uint32_t first, count;
     const stin__draw *cap;
     GLenum cap_culled;

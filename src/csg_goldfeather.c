@@ -364,6 +364,48 @@ static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, co
     return stin__csg_world_boxes_meet(own->box, box);
 }
 
+/* Candidates taken together: surfaces whose window rectangles lie apart (a
+ * pixel's margin) share one set of passes, since no pixel holds a layer of
+ * two of them; each set of passes costs llvmpipe a wait where it switches
+ * framebuffers (OpenCSG batches its primitives alike). At most GROUP_MAX
+ * members, picked from the next LOOKAHEAD literals of the term. */
+#define GROUP_MAX 32u
+#define LOOKAHEAD 64u
+
+/* A group's members: their literal indices in the term (t->count: the
+ * near-plane cap, alone), their extents, and the union of their regions
+ * (each its rectangle cut to every plain literal's; normalised device). */
+typedef struct group {
+    uint32_t count;
+    uint32_t self[GROUP_MAX];
+    extent own[GROUP_MAX];
+    float bound[4];
+} group;
+
+static int is_member(const group *g, uint32_t j)
+{
+    uint32_t i;
+    for (i = 0; i < g->count; i++)
+        if (g->self[i] == j)
+            return 1;
+    return 0;
+}
+
+/* Whether literal `lit` can matter for a member of g (meets). */
+static int meets_group(stin_context *ctx, const stin__csg_product *p, uint32_t lit, const group *g)
+{
+    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    float rect[4], box[6];
+    uint32_t i;
+    stin__csg_screen_rect(ctx, d, rect);
+    stin__csg_world_box(ctx, d, box);
+    for (i = 0; i < g->count; i++)
+        if (stin__csg_rects_meet(ctx, g->own[i].rect, rect) &&
+            (!g->own[i].has_box || stin__csg_world_boxes_meet(g->own[i].box, box)))
+            return 1;
+    return 0;
+}
+
 static int winds(const stin_context *ctx, const stin__csg_product *p, uint32_t lit)
 {
     const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
@@ -377,8 +419,8 @@ static int winds(const stin_context *ctx, const stin__csg_product *p, uint32_t l
  * and no complemented one exactly where the sum is minus the plain count.
  * Returns the index after the batch's last literal; *drawn: how many. */
 static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve *r,
-                              const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
-                              const extent *own, const counting *how, uint32_t from,
+                              const stin__csg_product *p, const stin__csg_term *t,
+                              const group *g, const counting *how, uint32_t from,
                               uint32_t *drawn)
 {
     unsigned most = (1u << r->bits) - 1u;
@@ -386,7 +428,7 @@ static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve
     clear(ctx, GL_STENCIL_BUFFER_BIT);
     for (j = from; j < t->count && n < most; j++) {
         uint32_t lit = ctx->csg.literals[t->first + j];
-        if (j == self || !winds(ctx, p, lit) || !meets(ctx, p, lit, own))
+        if (is_member(g, j) || !winds(ctx, p, lit) || !meets_group(ctx, p, lit, g))
             continue;
         draw_winding(ctx, path,
                      &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)],
@@ -400,13 +442,15 @@ static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve
     return j;
 }
 
-/* The candidate's pixels that the term's other literals (those meeting
- * `own`) keep: by parity bits, a stencil bit each, or where that takes
- * fewer batches (and the stencil wraps both ways in one pass), the convex
- * ones by winding numbers, 255 a batch, and the rest by parity. */
+/* The candidate's pixels that the term's other literals (those meeting a
+ * member of g) keep: by parity bits, a stencil bit each, or where that
+ * takes fewer batches (and the stencil wraps both ways in one pass), the
+ * convex ones by winding numbers, 255 a batch, and the rest by parity. A
+ * literal drawn over a member it cannot matter for counts what it is
+ * there (outside), so a group's members share the passes. */
 static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
-                         const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
-                         const extent *own, const counting *how)
+                         const stin__csg_product *p, const stin__csg_term *t, const group *g,
+                         const counting *how)
 {
     uint32_t others[8], n = 0, j, meeting = 0, wound = 0, drawn, bits = (uint32_t)r->bits;
     int winding = stin__pass_two_sided_wrap(ctx) && bits >= 2;
@@ -414,7 +458,7 @@ static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
         uint32_t most = (1u << bits) - 1u;
         for (j = 0; j < t->count; j++) {
             uint32_t lit = ctx->csg.literals[t->first + j];
-            if (j != self && meets(ctx, p, lit, own)) {
+            if (!is_member(g, j) && meets_group(ctx, p, lit, g)) {
                 meeting++;
                 wound += (uint32_t)winds(ctx, p, lit);
             }
@@ -423,13 +467,13 @@ static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
                   (meeting + bits - 1u) / bits;
     }
     for (j = 0; winding && wound; wound -= drawn) {
-        j = winding_batch(ctx, path, r, p, t, self, own, how, j, &drawn);
+        j = winding_batch(ctx, path, r, p, t, g, how, j, &drawn);
         if (!drawn) /* the count above saw the same literals: not reached */
             break;
     }
     for (j = 0; j < t->count; j++) {
         uint32_t lit = ctx->csg.literals[t->first + j];
-        if (j == self || (winding && winds(ctx, p, lit)) || !meets(ctx, p, lit, own))
+        if (is_member(g, j) || (winding && winds(ctx, p, lit)) || !meets_group(ctx, p, lit, g))
             continue;
         others[n++] = lit;
         if (n == bits) {
@@ -455,61 +499,150 @@ static int depth_complexity(stin_context *ctx, const stin__path *path, resolve *
     return (int)most;
 }
 
-/* A candidate surface of term t (d's faces but `culled`; the term's literal
- * `self`, or none for the near-plane cap): every layer, tested against the
- * term's other literals, kept where nearer. Returns whether it kept any
- * pixel (where want_kept asks: csg_merge.c's take). */
-static int candidate(stin_context *ctx, const stin__path *path, resolve *r,
-                     const stin__csg_product *p, const stin__csg_term *t, uint32_t self,
-                     const stin__draw *d, GLenum culled, const counting *how, int want_kept)
+/* Whether the surface of the term's literal `self` (t->count: the cap's,
+ * d) can hold a pixel of the term: off its rectangle or box a plain
+ * literal leaves nothing there (a complemented one is outside: no pass).
+ * Its extent into *own, its region (its rectangle cut to every plain
+ * literal's: the surface lies inside each) into region. */
+static int admit(stin_context *ctx, const stin__csg_product *p, const stin__csg_term *t,
+                 uint32_t self, const stin__draw *d, extent *own, float region[4])
 {
     uint32_t j;
-    int layers = 1, k, kept = 0;
-    /* a convex surface (the cap's quad too) shows one layer a pixel */
-    int one_layer = d->mesh_slot == ctx->csg.cap_slot || ctx->meshes[d->mesh_slot].info.convex;
-    float region[4];
-    extent own;
-    stin__csg_surface surface;
-    surface.p = p;
-    surface.t = t;
-    surface.first = self;
-    surface.count = 1;
-    surface.cap = self < t->count ? NULL : d;
-    surface.cap_culled = culled;
-    /* off the candidate's rectangle or box a plain literal leaves nothing,
-     * a complemented one is outside (no pass): passes follow the overlaps */
-    stin__csg_screen_rect(ctx, d, own.rect);
-    own.has_box = self < t->count;
-    if (own.has_box)
-        stin__csg_world_box(ctx, d, own.box);
-    stin__memcopy(region, own.rect, sizeof region);
+    int box[4];
+    stin__csg_screen_rect(ctx, d, own->rect);
+    own->has_box = self < t->count;
+    if (own->has_box)
+        stin__csg_world_box(ctx, d, own->box);
+    stin__memcopy(region, own->rect, 4 * sizeof *region);
     for (j = 0; j < t->count; j++) {
         uint32_t lit = ctx->csg.literals[t->first + j];
         float rect[4];
         if (j == self || STIN__CSG_COMPLEMENTED(lit))
             continue;
-        if (!meets(ctx, p, lit, &own))
+        if (!meets(ctx, p, lit, own))
             return 0;
         stin__csg_screen_rect(ctx, &ctx->csg.primitives[p->first_primitive +
                                                        STIN__CSG_PRIMITIVE_OF(lit)], rect);
-        stin__csg_rect_cut(region, rect); /* the surface lies inside each */
+        stin__csg_rect_cut(region, rect);
     }
-    /* nothing outside the region is read (on the GPU) or read back: the
-     * passes keep to it */
+    return stin__csg_window_box(ctx, region, box);
+}
+
+static const stin__draw *member_draw(const stin_context *ctx, const stin__csg_product *p,
+                                     const stin__csg_term *t, uint32_t self, GLenum *culled)
+{
+    uint32_t lit = ctx->csg.literals[t->first + self];
+    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    *culled = culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit));
+    return d;
+}
+
+/* The candidate surfaces of group g of term t (or, where cap is not NULL,
+ * the cap's, g's one member): every layer, tested against the term's
+ * other literals, kept where nearer. Returns whether it kept any pixel
+ * (where want_kept asks: csg_merge.c's take). Nothing outside the union
+ * of the members' regions is read (on the GPU) or read back: the passes
+ * keep to it. */
+static int take_group(stin_context *ctx, const stin__path *path, resolve *r,
+                      const stin__csg_product *p, const stin__csg_term *t, const group *g,
+                      const stin__draw *cap, const counting *how, int want_kept)
+{
+    uint32_t i;
+    int layers = 1, k, kept = 0, one_layer = 1;
+    stin__csg_surface surface;
+    GLenum culled = GL_BACK; /* the cap's quad faces the window whatever the camera mirrors */
+    const stin__draw *d = cap;
+    if (!cap) { /* a convex surface shows one layer a pixel; a group's members are convex */
+        d = member_draw(ctx, p, t, g->self[0], &culled);
+        one_layer = g->count > 1 || ctx->meshes[d->mesh_slot].info.convex;
+    }
+    surface.p = p;
+    surface.t = t;
+    surface.list = cap ? NULL : g->self;
+    surface.first = 0;
+    surface.count = cap ? 0 : g->count;
+    surface.cap = cap;
+    surface.cap_culled = culled;
     stin__csg_region_reset(ctx);
-    if (!stin__csg_region_narrow(ctx, region))
+    if (!stin__csg_region_narrow(ctx, g->bound))
         return 0;
     for (k = 1; k <= layers; k++) {
         clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-        draw_layer(ctx, path, d, culled, k);
+        for (i = 0; i < g->count; i++) {
+            if (!cap)
+                d = member_draw(ctx, p, t, g->self[i], &culled);
+            draw_layer(ctx, path, d, culled, k);
+        }
         if (k == 1 && !one_layer) /* every fragment counted: the depth complexity */
             layers = depth_complexity(ctx, path, r);
         if (!stin__csg_candidate_open(ctx, r)) /* no layer, or none nearer */
             continue;
-        count_others(ctx, path, r, p, t, self, &own, how);
+        count_others(ctx, path, r, p, t, g, how);
         kept |= stin__csg_candidate_take(ctx, path, r, NULL, &surface, want_kept);
     }
     return kept;
+}
+
+/* Whether literal `li` of the term may share a group: a complemented
+ * convex one (one layer). Two admitted members lie apart, and a plain one
+ * apart from another member would leave that one nothing (admit), so
+ * only complemented literals gain from sharing. */
+static int groups(const stin_context *ctx, const stin__csg_product *p, const stin__csg_term *t,
+                  uint32_t li)
+{
+    uint32_t lit = ctx->csg.literals[t->first + li];
+    return STIN__CSG_COMPLEMENTED(lit) && winds(ctx, p, lit);
+}
+
+/* Whether rectangle rect lies apart from every member of g. */
+static int apart(const stin_context *ctx, const group *g, const float rect[4])
+{
+    uint32_t i;
+    for (i = 0; i < g->count; i++)
+        if (stin__csg_rects_meet(ctx, g->own[i].rect, rect))
+            return 0;
+    return 1;
+}
+
+/* The next group of term t from the pending literals (in[0..*n)): the
+ * first admitted one, and where it groups, every later admitted one that
+ * groups and lies apart from those taken, up to GROUP_MAX; literals not
+ * admitted are dropped, the rest stay pending (compacted in place). */
+static void next_group(stin_context *ctx, const stin__csg_product *p, const stin__csg_term *t,
+                       uint32_t *pending, uint32_t *n, group *g)
+{
+    uint32_t i, kept = 0;
+    int open = 1;
+    g->count = 0;
+    g->bound[0] = g->bound[1] = 1e30f;
+    g->bound[2] = g->bound[3] = -1e30f;
+    for (i = 0; i < *n; i++) {
+        uint32_t li = pending[i];
+        GLenum culled;
+        const stin__draw *d = member_draw(ctx, p, t, li, &culled);
+        extent own;
+        float region[4];
+        int k;
+        if (!open || (g->count && !groups(ctx, p, t, li))) {
+            pending[kept++] = li;
+            continue;
+        }
+        stin__csg_screen_rect(ctx, d, own.rect);
+        if (g->count && !apart(ctx, g, own.rect)) {
+            pending[kept++] = li;
+            continue;
+        }
+        if (!admit(ctx, p, t, li, d, &own, region))
+            continue; /* its surface holds no pixel of the term */
+        g->self[g->count] = li;
+        g->own[g->count++] = own;
+        for (k = 0; k < 2; k++) {
+            g->bound[k] = region[k] < g->bound[k] ? region[k] : g->bound[k];
+            g->bound[2 + k] = region[2 + k] > g->bound[2 + k] ? region[2 + k] : g->bound[2 + k];
+        }
+        open = g->count < GROUP_MAX && groups(ctx, p, t, li);
+    }
+    *n = kept;
 }
 
 /* How term t counts, and whether the near plane may lie inside it (every
@@ -562,19 +695,27 @@ static void resolve_product(stin_context *ctx, const stin__path *path, resolve *
         const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
         counting how;
         int cap = term_counting(ctx, p, t, &how);
-        for (li = 0; li < t->count; li++) {
-            uint32_t lit = ctx->csg.literals[t->first + li];
-            const stin__draw *d =
-                &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
-            (void)candidate(ctx, path, r, p, t, li, d,
-                            culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), &how, 0);
+        uint32_t pending[LOOKAHEAD], n = 0;
+        group g;
+        li = 0;
+        while (li < t->count || n) {
+            while (n < LOOKAHEAD && li < t->count)
+                pending[n++] = li++;
+            next_group(ctx, p, t, pending, &n, &g);
+            if (g.count)
+                (void)take_group(ctx, path, r, p, t, &g, NULL, &how, 0);
         }
         if (cap) {
             stin__draw d = ctx->csg.primitives[p->first_primitive];
+            float region[4];
             d.mesh_slot = ctx->csg.cap_slot;
             stin__memcopy(d.transform, ctx->csg.cap_transform, sizeof d.transform);
-            /* the cap's quad faces the window whatever the camera mirrors */
-            p->capped |= candidate(ctx, path, r, p, t, t->count, &d, GL_BACK, &how, 1);
+            g.count = 1;
+            g.self[0] = t->count;
+            if (admit(ctx, p, t, t->count, &d, &g.own[0], region)) {
+                stin__memcopy(g.bound, region, sizeof g.bound);
+                p->capped |= take_group(ctx, path, r, p, t, &g, &d, &how, 1);
+            }
         }
     }
 }

@@ -366,7 +366,7 @@ static void snap_surface(stin_context *ctx, const stin__csg_surface *s)
     if (s->cap)
         snap_faces(ctx, s->cap, s->cap_culled, 1);
     for (i = 0; !s->cap && i < s->count; i++) {
-        uint32_t lit = ctx->csg.literals[s->t->first + s->first + i];
+        uint32_t lit = ctx->csg.literals[s->t->first + (s->list ? s->list[i] : s->first + i)];
         const stin__draw *d =
             &ctx->csg.primitives[s->p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
         snap_faces(ctx, d, stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), 1);

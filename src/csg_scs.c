@@ -461,6 +461,7 @@ static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
     clip(ctx, path, r, p, t);
     surface.p = p;
     surface.t = t;
+    surface.list = NULL;
     surface.first = 0;
     surface.count = t->count;
     surface.cap = NULL;

@@ -651,6 +651,62 @@ static void test_scs_in_place(void **state)
     assert_int_equal(ctx->stats.csg_direct, 1);
 }
 
+/* A big tetrahedron minus three small ones, each of those moved by `step`
+ * in x from the last (apart in the window where step is large). */
+static stin_csg_desc minus_three(float step)
+{
+    stin_csg_desc d;
+    int i, k;
+    memset(prims, 0, sizeof prims);
+    for (i = 0; i < 4; i++) {
+        prims[i].mesh = tetra;
+        stin__mat4_identity(prims[i].transform);
+        for (k = 0; k < 2; k++)
+            prims[i].transform[5 * k] = i ? 0.2f : 2.0f;
+        prims[i].transform[12] = i ? -0.8f + step * (float)(i - 1) : -1.0f;
+        prims[i].transform[13] = i ? -0.8f : -1.0f;
+        prims[i].transform[14] = i ? -0.2f : -0.5f;
+        nodes[i] = (stin_csg_node)P(i);
+    }
+    nodes[4] = (stin_csg_node)U(1, 2);
+    nodes[5] = (stin_csg_node)U(4, 3);
+    nodes[6] = (stin_csg_node)S(0, 5);
+    memset(&d, 0, sizeof d);
+    d.primitives = prims;
+    d.primitive_count = 4;
+    d.nodes = nodes;
+    d.node_count = 7;
+    return d;
+}
+
+/* glClear calls of a goldfeather frame of minus_three(step). */
+static unsigned clears_of(float step)
+{
+    stin_csg_desc d;
+    forced_csg = STIN_TECH_CSG_GOLDFEATHER;
+    recreate(FAKE_GL33_CORE, 0);
+    forced_csg = STIN_TECH_NONE;
+    d = minus_three(step);
+    begin();
+    assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    assert_int_equal(ctx->stats.csg_terms, 1);
+    return fake_gl.calls[STIN_GLFN_Clear];
+}
+
+/* goldfeather takes complemented convex candidates whose window rectangles
+ * lie apart in one set of passes: three small tetrahedra 0.5 apart (4
+ * pixels of 16 a side each way) share one layer clear and one count clear,
+ * where the same three on top of each other take three of each. */
+static void test_goldfeather_groups_apart_candidates(void **state)
+{
+    unsigned apart, stacked;
+    (void)state;
+    apart = clears_of(0.5f);
+    stacked = clears_of(0.0f);
+    assert_int_equal(apart + 4u, stacked);
+}
+
 /* A second frame on a context made with forced_csg and `flags`, counting
  * the draws into the GPU resolve's result framebuffer (made in the first). */
 static void watched_frame(unsigned flags)
@@ -766,6 +822,8 @@ int main(void)
         cmocka_unit_test_setup_teardown(test_memory_counts_the_capacities, setup, teardown),
         cmocka_unit_test_setup_teardown(test_frames_with_a_product, setup, teardown),
         cmocka_unit_test_setup_teardown(test_direct, setup, teardown),
+        cmocka_unit_test_setup_teardown(test_goldfeather_groups_apart_candidates, setup,
+                                        teardown),
         cmocka_unit_test_setup_teardown(test_scs_in_place, setup, teardown),
         cmocka_unit_test_setup_teardown(test_world_boxes_apart, setup, teardown),
     };
