@@ -19,7 +19,9 @@
  *      batch (count_others);
  *   3. the surviving depths are kept, the nearest per pixel.
  * A convex primitive's candidate surface has one layer: its depth
- * complexity is not sampled. Where the candidates and the result are kept
+ * complexity is not sampled. Complemented convex candidates whose window
+ * rectangles lie apart are taken together (a group): steps 1-3 run once
+ * for all of them, with every literal but the members counted. Where the candidates and the result are kept
  * is csg_merge.c's: on GLSL tiers with FBOs and depth textures in depth
  * textures on the GPU, else on the CPU. The result goes into the frame's
  * depth buffer (depth ALWAYS over what the buffer held before, itself

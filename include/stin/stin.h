@@ -1399,7 +1399,12 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * view and projection; the whole viewport where a corner lies behind the
  * eye) meet the candidate's get a parity pass: one off it is outside (what
  * a complemented literal asks) or rules the candidate out (a plain one), so
- * a term of 1000 primitives costs passes by its overlaps, not 1000^2. Memory:
+ * a term of 1000 primitives costs passes by its overlaps, not 1000^2.
+ * Complemented convex literals whose window rectangles lie apart (a pixel's
+ * margin) are taken together, up to 32 from the next 64 of the term: no
+ * pixel holds a layer of two of them, so they share the layer's clear, the
+ * count of the other literals, the stencil-tested kill and the take, as
+ * OpenCSG batches its primitives. Memory:
  * the CPU copies use the block's texture staging or mesh-creation scratch,
  * whichever is larger (both idle during a frame): 9 bytes a pixel of the
  * viewport (the GPU resolve: 1); a viewport that needs more is logged once
