@@ -45,7 +45,8 @@
  *               the work buffer's merge and snap (STIN_DEBUG_CSG_NO_IN_PLACE)
  *               on all but 0.05% of the covered pixels (gpu-resolve's
  *               bound);
- *   direct      (goldfeather, GLSL tiers) the same with csg_direct = 1;
+ *   direct      (goldfeather, GLSL tiers) its GPU resolve direct
+ *               (csg_direct = 1), whose image gpu-resolve checks;
  *   gl-clean    no GL error, no call outside the profile, no logged error.
  * Every case runs under goldfeather, scs ("csg-scs-") and interval
  * ("csg-interval-"; GL4 only, SKIP elsewhere). Under interval also:
@@ -263,20 +264,20 @@ static void test_gpu_resolve(run *r, const csg_case *c, stin_technique t, stin_t
     capture_free(&cpu);
 }
 
-/* The GPU resolve in the frame's buffers against the work buffer's merge
- * and snap (STIN_DEBUG_CSG_NO_IN_PLACE): the same image but on edge pixels,
- * as gpu-resolve. scs in place where the product has one term; otherwise,
- * and under goldfeather always, direct (each candidate snapped into the
- * frame's depth). */
-static void test_in_place(run *r, const csg_case *c, stin_technique t, stin_tier tier,
-                          const scene *s, const capture_options *base, const capture *cap)
+/* scs's GPU resolve in place (one term in the frame's own buffers) where
+ * the product has one term, direct otherwise (each candidate snapped into
+ * the frame's depth), against the work buffer's merge and snap
+ * (STIN_DEBUG_CSG_NO_IN_PLACE): the same image but on edge pixels, as
+ * gpu-resolve. */
+static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene *s,
+                          const capture_options *base, const capture *cap)
 {
     capture_options o = *base;
     capture merged;
     char name[256];
     image_differ d;
-    unsigned in_place = t == STIN_TECH_CSG_SCS && c->convex && cap->stats.csg_terms == 1;
-    case_name(c, t, tier, t == STIN_TECH_CSG_SCS ? "in-place" : "direct", name, sizeof name);
+    unsigned in_place = c->convex && cap->stats.csg_terms == 1;
+    case_name(c, STIN_TECH_CSG_SCS, tier, "in-place", name, sizeof name);
     if (tier == STIN_TIER_GL1) {
         report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
         return;
@@ -298,6 +299,26 @@ static void test_in_place(run *r, const csg_case *c, stin_technique t, stin_tier
            merged.stats.csg_in_place, merged.stats.csg_direct, d.differ, d.covered,
            d.depth_differ, 100.0 * CSG_GPU_MAX_DIFFER);
     capture_free(&merged);
+}
+
+/* goldfeather's GPU resolve is direct on every case (its image against the
+ * read-back resolve's is gpu-resolve's test; the merge and snap it replaces
+ * are in-place's baseline under scs). */
+static void test_direct(run *r, const csg_case *c, stin_tier tier, const capture *cap)
+{
+    char name[256];
+    case_name(c, STIN_TECH_CSG_GOLDFEATHER, tier, "direct", name, sizeof name);
+    if (tier == STIN_TIER_GL1) {
+        report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
+        return;
+    }
+    report(r,
+           cap->stats.csg_direct == 1 && cap->stats.csg_in_place == 0 &&
+                   cap->stats.csg_gpu_resolves == 1
+               ? "PASS"
+               : "FAIL",
+           name, "direct: %u (want 1), in place: %u (want 0), GPU resolve: %u (want 1)",
+           cap->stats.csg_direct, cap->stats.csg_in_place, cap->stats.csg_gpu_resolves);
 }
 
 /* The ordinary render's P against the union's. */
@@ -552,9 +573,10 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     if (tech == STIN_TECH_CSG_SCS) {
         test_scs_used(r, c, tier, &cap);
         test_agree(r, c, STIN_TECH_CSG_SCS, tier, &s, &o, &cap);
+        test_in_place(r, c, tier, &s, &o, &cap);
     }
-    if (tech != STIN_TECH_CSG_INTERVAL)
-        test_in_place(r, c, tech, tier, &s, &o, &cap);
+    if (tech == STIN_TECH_CSG_GOLDFEATHER)
+        test_direct(r, c, tier, &cap);
     if (tech == STIN_TECH_CSG_INTERVAL) {
         case_name(c, tech, tier, "resolved", name, sizeof name);
         report(r, cap.stats.csg_interval_products == 1 ? "PASS" : "FAIL", name,

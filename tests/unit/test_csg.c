@@ -326,10 +326,21 @@ static void begin(void)
 static stin_csg_primitive prims[8];
 static stin_csg_node nodes[8];
 
+/* The product of prims[0..primitives) and nodes[0..node_count). */
+static stin_csg_desc product_of(uint32_t primitives, uint32_t node_count)
+{
+    stin_csg_desc d;
+    memset(&d, 0, sizeof d);
+    d.primitives = prims;
+    d.primitive_count = primitives;
+    d.nodes = nodes;
+    d.node_count = node_count;
+    return d;
+}
+
 /* a - b of two tetrahedra (the second moved by x) */
 static stin_csg_desc subtraction(void)
 {
-    stin_csg_desc d;
     memset(prims, 0, sizeof prims);
     prims[0].mesh = tetra;
     prims[1].mesh = tetra;
@@ -338,12 +349,7 @@ static stin_csg_desc subtraction(void)
     nodes[0] = (stin_csg_node)P(0);
     nodes[1] = (stin_csg_node)P(1);
     nodes[2] = (stin_csg_node)S(0, 1);
-    memset(&d, 0, sizeof d);
-    d.primitives = prims;
-    d.primitive_count = 2;
-    d.nodes = nodes;
-    d.node_count = 3;
-    return d;
+    return product_of(2, 3);
 }
 
 static void refused(stin_csg_desc *d, stin_result r, stin_log_item item, const char *text)
@@ -655,7 +661,6 @@ static void test_scs_in_place(void **state)
  * in x from the last (apart in the window where step is large). */
 static stin_csg_desc minus_three(float step)
 {
-    stin_csg_desc d;
     int i, k;
     memset(prims, 0, sizeof prims);
     for (i = 0; i < 4; i++) {
@@ -671,12 +676,7 @@ static stin_csg_desc minus_three(float step)
     nodes[4] = (stin_csg_node)U(1, 2);
     nodes[5] = (stin_csg_node)U(4, 3);
     nodes[6] = (stin_csg_node)S(0, 5);
-    memset(&d, 0, sizeof d);
-    d.primitives = prims;
-    d.primitive_count = 4;
-    d.nodes = nodes;
-    d.node_count = 7;
-    return d;
+    return product_of(4, 7);
 }
 
 /* glClear calls of a goldfeather frame of minus_three(step). */
