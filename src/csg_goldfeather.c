@@ -21,9 +21,9 @@
  * A convex primitive's candidate surface has one layer: its depth
  * complexity is not sampled. Complemented convex candidates whose window
  * rectangles lie apart are taken together (a group): steps 1-3 run once
- * for all of them, with every literal but the members counted. Where the candidates and the result are kept
- * is csg_merge.c's: on GLSL tiers with FBOs and depth textures in depth
- * textures on the GPU, else on the CPU. The result goes into the frame's
+ * for all of them, with every literal but the members counted. Where the
+ * candidates and the result are kept is csg_merge.c's: on GLSL tiers with
+ * FBOs and depth textures in depth textures on the GPU, else on the CPU. The result goes into the frame's
  * depth buffer (depth ALWAYS over what the buffer held before, itself
  * copied first and kept in the minimum, so earlier products and a caller's
  * no_clear depth stay): from the GPU's texture by a quad writing
@@ -606,7 +606,7 @@ static int apart(const stin_context *ctx, const group *g, const float rect[4])
     return 1;
 }
 
-/* The next group of term t from the pending literals (in[0..*n)): the
+/* The next group of term t from the pending literals (pending[0..*n)): the
  * first admitted one, and where it groups, every later admitted one that
  * groups and lies apart from those taken, up to GROUP_MAX; literals not
  * admitted are dropped, the rest stay pending (compacted in place). */
