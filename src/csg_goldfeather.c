@@ -23,17 +23,19 @@
  * rectangles lie apart are taken together (a group): steps 1-3 run once
  * for all of them, with every literal but the members counted. Where the
  * candidates and the result are kept is csg_merge.c's: on GLSL tiers with
- * FBOs and depth textures in depth textures on the GPU, else on the CPU. The result goes into the frame's
- * depth buffer (depth ALWAYS over what the buffer held before, itself
- * copied first and kept in the minimum, so earlier products and a caller's
- * no_clear depth stay): from the GPU's texture by a quad writing
- * gl_FragDepth, from the CPU by glDrawPixels or, on core profiles, an R32F
- * texture and the same kind of quad. The CPU's copies go through the
- * block's texture staging (the larger of it and the mesh scratch, both idle
- * during a frame): 9 bytes a pixel of the viewport (the GPU resolve: 1, for
- * interval's walk and a stencil read where there are no queries). The
- * primitives' faces on the resolved depth are then drawn like any draw,
- * depth EQUAL (csg.c's face draws). */
+ * FBOs and depth textures in depth textures on the GPU, else on the CPU.
+ * The result goes into the frame's depth buffer (depth ALWAYS over what
+ * the buffer held before, itself copied first and kept in the minimum, so
+ * earlier products and a caller's no_clear depth stay): from the GPU by
+ * the faces snapped onto it (csg_merge.c: onto the result, or in a direct
+ * resolve each candidate's onto its own depth), from the CPU by
+ * glDrawPixels or, on core profiles, an R32F texture and the same kind of
+ * quad. The CPU's copies go through the block's texture staging (the
+ * larger of it and the mesh scratch, both idle during a frame): 9 bytes a
+ * pixel of the viewport (the GPU resolve: 1, for interval's walk and a
+ * stencil read where there are no queries). The primitives' faces on the
+ * resolved depth are then drawn like any draw, depth EQUAL (csg.c's face
+ * draws). */
 #include "internal.h"
 
 #define GL_STENCIL_INDEX 0x1901
