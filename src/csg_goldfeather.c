@@ -451,7 +451,9 @@ static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve
  * takes fewer batches (and the stencil wraps both ways in one pass), the
  * convex ones by winding numbers, 255 a batch, and the rest by parity. A
  * literal drawn over a member it cannot matter for counts what it is
- * there (outside), so a group's members share the passes. */
+ * there (outside), so a group's members share the passes; its faces
+ * within the offset of a member's depth count as crossed, as every
+ * literal's do (counting_pass). */
 static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
                          const stin__csg_product *p, const stin__csg_term *t, const group *g,
                          const counting *how)
@@ -584,6 +586,8 @@ static int take_group(stin_context *ctx, const stin__path *path, resolve *r,
         count_others(ctx, path, r, p, t, g, how);
         kept |= stin__csg_candidate_take(ctx, path, r, NULL, &surface, want_kept);
     }
+    if (g->count > 1)
+        ctx->stats.csg_grouped += g->count;
     return kept;
 }
 

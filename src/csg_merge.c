@@ -484,6 +484,7 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
     int counted = want_kept && m->queries[0];
     region_rows g = rows_of(ctx, r);
     size_t x, y;
+    int direct;
     if (!r->gpu) {
         kept = 0;
         for (y = 0; y < g.rows; y++)
@@ -499,11 +500,14 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
     }
     if (ctx->csg.in_place) /* the candidate is the result */
         return 1;
+    /* a direct resolve has no result: every candidate it takes names its
+     * faces (interval's, which do not, never runs direct) */
+    direct = ctx->csg.direct && surface;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER,
-                             ctx->csg.direct ? ctx->draw_fbo : m->fbo[STIN__CSG_MERGE_RESULT]);
+                             direct ? ctx->draw_fbo : m->fbo[STIN__CSG_MERGE_RESULT]);
     if (counted)
         GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, q);
-    if (ctx->csg.direct && surface)
+    if (direct)
         snap_surface(ctx, surface);
     else
         merge_quad(ctx, select);

@@ -1404,7 +1404,10 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * margin) are taken together, up to 32 from the next 64 of the term: no
  * pixel holds a layer of two of them, so they share the layer's clear, the
  * count of the other literals, the stencil-tested kill and the take, as
- * OpenCSG batches its primitives. Memory:
+ * OpenCSG batches its primitives (stin_frame_stats.csg_grouped). A literal
+ * counted over a member whose world box it does not meet follows the same
+ * coincidence rule as any other (faces within 4 depth units of the
+ * candidate count as crossed). Memory:
  * the CPU copies use the block's texture staging or mesh-creation scratch,
  * whichever is larger (both idle during a frame): 9 bytes a pixel of the
  * viewport (the GPU resolve: 1); a viewport that needs more is logged once
@@ -1658,6 +1661,9 @@ typedef struct stin_frame_stats {
     /* CSG: 1 when the frame's GPU resolve took each candidate by snapping its
      * faces straight into the frame's depth (no result buffer or merge) */
     uint32_t csg_direct;
+    /* goldfeather: candidates that shared their passes with others (a group
+     * of complemented convex literals whose window rectangles lie apart) */
+    uint32_t csg_grouped;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

@@ -7,7 +7,9 @@
  *               a 37 x 27 grid (one term of 1000 literals), under
  *               goldfeather and scs; "apart": the spheres share no point
  *               though their window boxes meet, so scs runs its sequence
- *               once without a check;
+ *               once without a check; "grouped": under goldfeather at
+ *               least 900 of the spheres take their passes in groups
+ *               (stin_frame_stats.csg_grouped), so P above proves them;
  *   thousand    the intersection of 1000 unit spheres with centres spread
  *               over +-0.3 (one term of 1000 plain literals: scs counts
  *               them 255 a batch; STIN_DEBUG_CSG_NO_BATCH counts them in
@@ -342,6 +344,17 @@ static void apart_check(run *r, const capture *cap, const char *name)
            runs == 1u ? "" : "s", checks, checks == 1u ? "" : "s");
 }
 
+/* dimples under goldfeather: spheres two grid steps apart lie apart in the
+ * window, so their candidates share passes in groups; P above is then the
+ * proof that the groups resolve the product exactly. */
+static void grouped_check(run *r, const capture *cap, const char *name)
+{
+    unsigned grouped = cap->stats.csg_grouped;
+    report(r, grouped >= 9 * MANY / 10 ? "PASS" : "FAIL", name,
+           "%u of %d subtracted spheres took their passes in groups (need >= %d)", grouped,
+           MANY - 1, 9 * MANY / 10);
+}
+
 /* The cluster again with every sphere mirrored in x about its centre (the
  * same UV sphere, its winding reversed): the mirrored faces' front is GL's
  * back, which goldfeather's winding numbers, scs's one-pass marks and its
@@ -431,6 +444,10 @@ static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint
     if (sh == DIMPLES && tech == STIN_TECH_CSG_SCS) {
         strcpy(name + strlen(name) - 8, "apart");
         apart_check(r, &cap, name);
+    }
+    if (sh == DIMPLES && tech == STIN_TECH_CSG_GOLDFEATHER) {
+        strcpy(name + strlen(name) - 8, "grouped");
+        grouped_check(r, &cap, name);
     }
     if ((sh == POCKETS_SHAPE || sh == CYCLE_SHAPE) && tech == STIN_TECH_CSG_SCS) {
         strcpy(name + strlen(name) - 8, "sequence");

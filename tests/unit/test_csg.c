@@ -703,7 +703,9 @@ static void test_goldfeather_groups_apart_candidates(void **state)
     unsigned apart, stacked;
     (void)state;
     apart = clears_of(0.5f);
+    assert_int_equal(ctx->stats.csg_grouped, 3);
     stacked = clears_of(0.0f);
+    assert_int_equal(ctx->stats.csg_grouped, 0);
     assert_int_equal(apart + 4u, stacked);
 }
 
