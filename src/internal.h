@@ -112,10 +112,12 @@ struct stin_context {
         uint32_t serial;      /* bumped when the per-frame lit uniforms change */
         float packed[4 * 4 * STIN__LIGHTS_PER_PASS]; /* the lights last uploaded */
         int light_n, with_ambient;
+        uint32_t light_key;   /* their stin__lit_lights_key */
         int units_bound;      /* the surface units hold textures this frame */
         uint32_t logged[STIN__SURF_LOG_KEYS]; /* per-material step-downs already logged */
         uint32_t logged_count;
     } glsl_surface;
+    stin__lit_cache lit_cache; /* lit programs per light batch and material */
     struct {                  /* "displace-tess": the programs above, tessellated
                                * (path_glsl.c), swapped in for frames with
                                * displaced draws */

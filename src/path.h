@@ -57,6 +57,18 @@ typedef struct stin__program {
     uint32_t frame_serial;   /* ctx->glsl.serial its per-frame uniforms have */
 } stin__program;
 
+/* Lit programs specialised to a light batch and a material (lit_specialise.c):
+ * lit.frag with the batch's light count as its loop bound and only the parts
+ * of the equation the batch and material use, built when a pass first needs
+ * one and kept across frames, a fixed number of them (no heap). */
+#define STIN__LIT_CACHE 32
+typedef struct stin__lit_cache {
+    stin__program programs[STIN__LIT_CACHE]; /* name 0: its build failed (the general one) */
+    uint32_t keys[STIN__LIT_CACHE];
+    uint32_t used[STIN__LIT_CACHE]; /* the frame it last served */
+    uint32_t count, frame;
+} stin__lit_cache;
+
 /* Which draws a pass covers. */
 enum { STIN__OPAQUE = 1, STIN__BLENDED = 2, STIN__ALL = 3 };
 
@@ -121,6 +133,26 @@ const stin__path *stin__path_of(const stin_context *ctx);
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
                            const char *const *frag_chunks, int tessellate, char *msg,
                            size_t size);
+/* The lit program of a surface variant with frag_defines (NULL: the general
+ * one) into p, located; 0 on failure (msg). tess: the tessellated twin;
+ * peel: with the transparency's peel chunk (the general programs have it). */
+int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int peel,
+                         const char *frag_defines, stin__program *p, char *msg, size_t size);
+/* The key of a light batch: its count and which parts of the equation its
+ * lights need (directional, positional, spot cone, attenuation). */
+uint32_t stin__lit_lights_key(const stin_light_desc *lights, int n);
+/* The program to shade a draw of surface variant `variant` (its general
+ * program `general`) under the batch lights_key, with an albedo texture or
+ * not, in a peeled layer or not: the specialised one, built on first use
+ * (outside a peeled layer without the peel chunk, whose discard costs the
+ * early depth test and whose fetch runs on masked lanes); general where
+ * STIN_DEBUG_LIT_GENERAL is set, where every slot served this frame, or
+ * where its build failed. */
+const stin__program *stin__lit_specialised(stin_context *ctx, const stin__program *general,
+                                           int variant, uint32_t lights_key, int albedo_tex);
+/* A new frame: slots that served none of it may be replaced. */
+void stin__lit_cache_frame(stin_context *ctx);
+void stin__lit_cache_release(stin_context *ctx);
 /* Swaps the tessellated programs in (on) or out; nothing without them. */
 void stin__glsl_tessellate(stin_context *ctx, int on);
 /* A program's stages by embedded file name: geom NULL for none; frag_outputs
@@ -130,6 +162,7 @@ void stin__glsl_tessellate(stin_context *ctx, int on);
 typedef struct stin__program_source {
     const char *vert, *geom, *frag;
     const char *const *frag_chunks;
+    const char *frag_defines; /* NULL or "#define ..." lines after frag's #version */
     const char *frag_outputs[STIN__MAX_FRAG_OUTPUTS];
     /* 1: a program that draws displaced meshes through vert (which has the
      * chunk line): with "displace-tess", vert becomes the tessellation

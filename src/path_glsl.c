@@ -57,25 +57,49 @@ static stin__program *lit_program(stin_context *ctx, int variant)
                                        : &ctx->glsl_surface.lit[variant];
 }
 
+/* peel: with the transparency's peel chunk (when one is chosen) */
+static int build_lit(stin_context *ctx, const char *dir, int variant, int tess, int peel,
+                     const char *frag_defines, stin__program *p, char *msg, size_t size)
+{
+    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40];
+    const char *chunks[STIN__SURF_CHUNKS + 1];
+    stin__program_source src;
+    stin__formatf(vert, sizeof vert, "%slit.vert", dir);
+    stin__formatf(frag, sizeof frag, "%slit.frag", dir);
+    stin__surf_chunks(variant, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
+                      peel ? stin__peel_chunk(ctx) : NULL, names, chunks);
+    stin__memzero(&src, sizeof src);
+    src.vert = vert;
+    src.frag = frag;
+    src.frag_chunks = chunks;
+    src.frag_defines = frag_defines;
+    src.tessellate = tess;
+    stin__memzero(p, sizeof *p);
+    p->name = stin__program_build_source(ctx, &src, msg, size);
+    if (p->name)
+        locate(ctx, p);
+    return p->name != 0;
+}
+
+static int gl4(const stin_context *ctx) { return ctx->volume_vao != 0; }
+
+int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int peel,
+                         const char *frag_defines, stin__program *p, char *msg, size_t size)
+{
+    return build_lit(ctx, gl4(ctx) ? "gl4/" : "gl2/", variant, tess, peel, frag_defines, p, msg,
+                     size);
+}
+
 /* Lit programs per surface variant from normal up to `top` into lit[];
  * returns the best one built (the one below the first that failed, whose
  * message is in msg). */
 static int build_variants(stin_context *ctx, const char *dir, int tess, int top,
                           stin__program *lit, char *msg, size_t size)
 {
-    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40];
-    const char *chunks[STIN__SURF_CHUNKS + 1];
     int v, best = STIN__SURF_PLAIN;
-    stin__formatf(vert, sizeof vert, "%slit.vert", dir);
-    stin__formatf(frag, sizeof frag, "%slit.frag", dir);
     for (v = STIN__SURF_NORMAL; v <= top; v++) {
-        stin__program *p = &lit[v];
-        stin__surf_chunks(v, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
-                          stin__peel_chunk(ctx), names, chunks);
-        p->name = stin__program_build(ctx, vert, frag, chunks, tess, msg, size);
-        if (!p->name)
+        if (!build_lit(ctx, dir, v, tess, 1, NULL, &lit[v], msg, size))
             return best;
-        locate(ctx, p);
         best = v;
     }
     return best;
@@ -219,6 +243,7 @@ void stin__glsl_release(stin_context *ctx)
     delete_programs(ctx, ctx->glsl_surface.lit, STIN__SURF_COUNT);
     delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
     delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    stin__lit_cache_release(ctx);
     ctx->glsl_surface.current = NULL;
     if (ctx->volume_vbo)
         GL(ctx, DeleteBuffers)(1, &ctx->volume_vbo);
@@ -226,8 +251,6 @@ void stin__glsl_release(stin_context *ctx)
         GL(ctx, DeleteVertexArrays)(1, &ctx->volume_vao);
     ctx->volume_vbo = ctx->volume_vao = 0;
 }
-
-static int gl4(const stin_context *ctx) { return ctx->volume_vao != 0; }
 
 /* Packs up to 8 lights: position, direction + cos(cutoff), colour + exponent,
  * attenuation (the layout lit.frag reads). */
@@ -254,6 +277,7 @@ static void upload_lights(stin_context *ctx, const stin__program *p, const stin_
         o[15] = 0.0f;
     }
     ctx->glsl_surface.light_n = n;
+    ctx->glsl_surface.light_key = stin__lit_lights_key(lights, n);
     ctx->glsl_surface.with_ambient = with_ambient;
     ctx->glsl_surface.serial++; /* every lit program's copy is stale now */
     lit_bind(ctx, p);
@@ -300,7 +324,9 @@ static void lit_bind(stin_context *ctx, const stin__program *p)
 static const stin__program *lit_for_draw(stin_context *ctx, const stin__draw *d)
 {
     int v = stin__surf_variant_for(ctx, &d->material);
-    const stin__program *q = lit_program(ctx, v);
+    const stin__program *q = stin__lit_specialised(
+        ctx, lit_program(ctx, v), v, ctx->glsl_surface.light_key,
+        stin__texture_lookup(ctx, d->material.albedo) != NULL);
     lit_bind(ctx, q);
     stin__surf_material(ctx, q, &d->material, v);
     return q;
@@ -569,6 +595,7 @@ static void glsl_begin(stin_context *ctx)
     int i;
     ctx->bound_mesh = 0xffffffffu;
     ctx->glsl_surface.current = NULL;
+    stin__lit_cache_frame(ctx);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     if (!gl4(ctx))

@@ -49,13 +49,14 @@ static const char *tess_version(const stin_context *ctx)
 
 /* The main file's text up to its "// @chunks" line, then each chunk, then
  * the rest: one shader from several embedded files, without copying (GL
- * takes the pieces with their lengths). */
+ * takes the pieces with their lengths); defines (or NULL) go in after the
+ * #version line. */
 static GLuint compile(stin_context *ctx, GLenum type, const char *name,
-                      const char *const *chunks, char *msg, size_t size)
+                      const char *const *chunks, const char *defines, char *msg, size_t size)
 {
     const char *src = stin__shader_source(name), *marker;
-    const GLchar *parts[MAX_CHUNKS + 3];
-    GLint lengths[MAX_CHUNKS + 3];
+    const GLchar *parts[MAX_CHUNKS + 4];
+    GLint lengths[MAX_CHUNKS + 4];
     GLsizei count = 0;
     GLuint s;
     GLint ok = 0;
@@ -76,6 +77,17 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
         lengths[count++] = -1;
         while (*src && *src != '\n')
             src++;
+    }
+    if (defines) { /* after the file's #version line, which must come first */
+        const char *line = src;
+        while (*src && *src != '\n')
+            src++;
+        if (*src)
+            src++;
+        parts[count] = line;
+        lengths[count++] = (GLint)(src - line);
+        parts[count] = defines;
+        lengths[count++] = -1;
     }
     parts[count] = src;
     lengths[count++] = marker ? (GLint)(marker - src) : -1;
@@ -160,22 +172,23 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     const char *vlist[3];
     int i, tess = src->tessellate && stin__displace_tessellated(ctx), ok_so_far;
     if (tess) { /* the program's vertex shader displaces the tessellated points */
-        stages[0] = compile(ctx, GL_VERTEX_SHADER, "gl4/tess.vert", NULL, msg, size);
+        stages[0] = compile(ctx, GL_VERTEX_SHADER, "gl4/tess.vert", NULL, NULL, msg, size);
         if (stages[0])
-            stages[1] = compile(ctx, GL_TESS_CONTROL_SHADER, "gl4/tess.tesc", NULL, msg, size);
+            stages[1] = compile(ctx, GL_TESS_CONTROL_SHADER, "gl4/tess.tesc", NULL, NULL, msg, size);
         if (stages[1])
             stages[2] = compile(ctx, GL_TESS_EVALUATION_SHADER, src->vert,
-                                vertex_chunks(ctx, src->vert, 1, vname, vlist), msg, size);
+                                vertex_chunks(ctx, src->vert, 1, vname, vlist), NULL, msg, size);
         ok_so_far = stages[2] != 0;
     } else {
         stages[0] = compile(ctx, GL_VERTEX_SHADER, src->vert,
-                            vertex_chunks(ctx, src->vert, 0, vname, vlist), msg, size);
+                            vertex_chunks(ctx, src->vert, 0, vname, vlist), NULL, msg, size);
         ok_so_far = stages[0] != 0;
     }
     if (ok_so_far && src->geom)
-        ok_so_far = (stages[3] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, msg, size)) != 0;
+        ok_so_far = (stages[3] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, NULL, msg, size)) != 0;
     if (ok_so_far)
-        stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks, msg, size);
+        stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks, src->frag_defines,
+                            msg, size);
     if (!stages[4]) {
         delete_stages(ctx, stages, 5);
         return 0;

@@ -52,6 +52,20 @@
  *   light_i = colour * intensity;  H = normalize(L + V)
  * Colour is linear; alpha is the material's opacity. Per-vertex results are
  * clamped to [0,1] before interpolation (as GL does); per-pixel at the end.
+ * Per-pixel programs: a pass lights up to 8 lights (more take further
+ * additive passes). Each draw is shaded by a program specialised to its
+ * pass's lights (their count, and whether any is directional, positional,
+ * a spot or attenuated), to its material (albedo texture or not) and to
+ * whether the pass draws a peeled transparency layer: the same equation
+ * without the parts that pass and material leave out, so the same picture
+ * (bit for bit on Mesa's llvmpipe), faster where a driver runs uniform
+ * branches on masked lanes, and outside peeled layers without a discard,
+ * so the depth test can run before shading. Each such program is compiled
+ * the first time a frame needs it (a compile in that frame), then kept:
+ * up to 32 per context, the one that served the oldest frame replaced
+ * when a new one is needed. A program that does not build logs a warning
+ * and the general program serves. stin_frame_stats.lit_specialised and
+ * lit_programs_built count them; STIN_DEBUG_LIT_GENERAL turns them off.
  *
  * SHADOWS
  * The shadow feature's chain: "vdsm" (GL4 only), "volume" (stencil shadow
@@ -930,6 +944,12 @@ typedef struct stin_desc {
  * snapped straight into the frame (direct): the same image; a test and
  * bench baseline */
 #define STIN_DEBUG_CSG_NO_IN_PLACE 536870912u
+/* GLSL lighting: every lit pass through the general program (a loop over
+ * up to 8 lights bounded by a uniform, every part of the equation behind a
+ * uniform branch) instead of programs specialised to the pass's lights and
+ * the draw's material: the same picture within rounding; a test and bench
+ * baseline */
+#define STIN_DEBUG_LIT_GENERAL 1073741824u
 /* CSG products cast no shadow into the lights' maps (as before they did):
  * a test that casting matters */
 #define STIN_DEBUG_CSG_NO_CAST 8388608u
@@ -1664,6 +1684,11 @@ typedef struct stin_frame_stats {
     /* goldfeather: candidates that shared their passes with others (a group
      * of complemented convex literals whose window rectangles lie apart) */
     uint32_t csg_grouped;
+    /* GLSL lighting: lit draws (per pass) shaded by a program specialised to
+     * the pass's lights and the draw's material, and such programs built
+     * this frame (each is built once, when a frame first needs it, and kept:
+     * up to 32 a context) */
+    uint32_t lit_specialised, lit_programs_built;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

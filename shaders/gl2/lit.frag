@@ -4,6 +4,17 @@
 // attenuation, spot cone), for one batch of up to 8 lights.
 // Light i is four vec4s: position (w 0 = directional), direction + cos(cutoff)
 // (cos = -2 for no cone), colour * intensity + spot exponent, attenuation.
+// The general program takes the batch and material from uniforms; programs
+// specialised to one (src/lit_specialise.c) define STIN_SPECIALISED and
+// keep only the parts of the equation that batch and material use.
+#ifndef STIN_SPECIALISED
+#define STIN_LIGHT_COUNT 8 // bounded by u_light_count
+#define STIN_DIRECTIONAL 1
+#define STIN_POSITIONAL 1
+#define STIN_SPOT 1
+#define STIN_ATTENUATION 1
+#define STIN_ALBEDO_TEX 1
+#endif
 uniform vec3 u_eye;
 uniform vec3 u_ambient;
 uniform vec4 u_albedo;
@@ -50,21 +61,38 @@ void main()
                       (s_normal_length + u_shininess * (1.0 - s_normal_length));
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
-    for (int i = 0; i < 8; i++) {
+    for (int i = 0; i < STIN_LIGHT_COUNT; i++) {
+#ifndef STIN_SPECIALISED
         if (i >= u_light_count)
             break;
+#endif
         vec4 pos = u_lights[4 * i];
-        vec4 dir = u_lights[4 * i + 1];
         vec4 col = u_lights[4 * i + 2];
-        vec3 att = u_lights[4 * i + 3].xyz;
+#if STIN_DIRECTIONAL && STIN_POSITIONAL
         vec3 l = pos.w == 0.0 ? pos.xyz : pos.xyz - v_world;
+#elif STIN_POSITIONAL
+        vec3 l = pos.xyz - v_world;
+#else
+        vec3 l = pos.xyz;
+#endif
         float d = length(l);
         l /= d;
-        float k = pos.w == 0.0 ? 1.0 : 1.0 / (att.x + att.y * d + att.z * d * d);
+        float k = 1.0;
+#if STIN_ATTENUATION
+        vec3 att = u_lights[4 * i + 3].xyz;
+#if STIN_DIRECTIONAL
+        k = pos.w == 0.0 ? 1.0 : 1.0 / (att.x + att.y * d + att.z * d * d);
+#else
+        k = 1.0 / (att.x + att.y * d + att.z * d * d);
+#endif
+#endif
+#if STIN_SPOT
+        vec4 dir = u_lights[4 * i + 1];
         if (dir.w > -1.5) {
             float s = dot(-l, dir.xyz);
             k *= s < dir.w ? 0.0 : safe_pow(s, col.w);
         }
+#endif
         float ndotl = dot(n, l);
         if (ndotl > 0.0) {
             // per channel: a coloured transmittance tints the light it lets through
@@ -74,7 +102,13 @@ void main()
             specular += safe_pow(dot(n, h), shininess) * c;
         }
     }
+#if !STIN_ALBEDO_TEX
+    vec4 tex = vec4(1.0);
+#elif defined(STIN_SPECIALISED)
+    vec4 tex = surface_sample(u_albedo_tex, uv);
+#else
     vec4 tex = u_has_albedo_tex != 0 ? surface_sample(u_albedo_tex, uv) : vec4(1.0);
+#endif
     vec3 color = (u_ambient + diffuse) * u_albedo.rgb * tex.rgb + specular * u_specular;
     gl_FragColor = vec4(clamp(color, 0.0, 1.0), u_albedo.a * tex.a);
 }

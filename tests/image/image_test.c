@@ -337,6 +337,7 @@ int main(int argc, char **argv)
             pcf_tests(&r, tiers[t], argv[i]);
             model_tests(&r, tiers[t], argv[i]);
             surface_tests(&r, tiers[t], argv[i]);
+            lit_tests(&r, tiers[t], argv[i]);
             dot3_tests(&r, tiers[t], argv[i]);
             hostile_tests(&r, tiers[t], argv[i]);
             composite_tests(&r, tiers[t], argv[i]);

@@ -58,6 +58,11 @@ void outline_tests(run *r, stin_tier tier, const char *path);
  * (six lights) and shadow-soft (visibility_test.c). */
 void visibility_tests(run *r, stin_tier tier, const char *path);
 
+/* Lit programs specialised to a pass's lights and a draw's material against
+ * the general one, on four-lights, stone-wall, deep-window and glass-panes
+ * (lit_test.c). */
+void lit_tests(run *r, stin_tier tier, const char *path);
+
 /* Displacement ("displace", GL2/GL4) on scenes with displaced materials,
  * against the displaced Embree reference (displace_test.c). Such scenes get
  * no other test: the others' references are of the undisplaced meshes. */

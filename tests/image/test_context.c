@@ -17,12 +17,19 @@ void test_desc(const run *r, stin_tier tier, stin_desc *d)
 int test_context_create(test_context *t, const run *r, const scene *s, stin_tier tier,
                         stin_technique shadows, int exact)
 {
+    return test_context_create_debug(t, r, s, tier, shadows, exact, 0);
+}
+
+int test_context_create_debug(test_context *t, const run *r, const scene *s, stin_tier tier,
+                              stin_technique shadows, int exact, uint32_t debug_flags)
+{
     stin_desc d;
     size_t size;
     char err[256];
     memset(t, 0, sizeof *t);
     test_desc(r, tier, &d);
     d.techniques[STIN_FEATURE_SHADOWS] = shadows;
+    d.debug_flags = debug_flags;
     scene_gpu_size_desc(s, &d);
     size = stin_memory_size(&d);
     t->block = malloc(size);

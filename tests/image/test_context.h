@@ -23,6 +23,9 @@ void test_desc(const run *r, stin_tier tier, stin_desc *d);
  * (that one's own run covers it), or when the scene could not be made. */
 int test_context_create(test_context *t, const run *r, const scene *s, stin_tier tier,
                         stin_technique shadows, int exact);
+/* The same with desc.debug_flags (STIN_DEBUG_*). */
+int test_context_create_debug(test_context *t, const run *r, const scene *s, stin_tier tier,
+                              stin_technique shadows, int exact, uint32_t debug_flags);
 void test_context_destroy(test_context *t);
 
 /* The scene camera's frame into the platform's framebuffer at the run's

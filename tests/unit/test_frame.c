@@ -391,6 +391,118 @@ static void test_glsl_passes_per_eight_lights(void **state)
     }
 }
 
+/* ---- lit programs specialised per light batch and material -------------- */
+
+/* A frame of two opaque quads under n lights of one type (attenuated: a
+ * linear term); its stats. */
+static stin_frame_stats lit_frame(int n, stin_light_type type, int attenuated)
+{
+    stin_frame_desc fd = frame_desc();
+    int i;
+    fake_gl.draw_calls = 0;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    for (i = 0; i < n; i++) {
+        stin_light_desc l = point_light((float)i);
+        l.type = type;
+        l.direction[2] = -1.0f;
+        l.spot_cutoff_deg = 30.0f;
+        l.attenuation[1] = attenuated ? 0.1f : 0.0f;
+        assert_int_equal(stin_add_light(ctx, &l), STIN_OK);
+    }
+    for (i = 0; i < 2; i++)
+        assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    return stin_query_frame_stats(ctx);
+}
+
+/* A batch's program is built in the first frame that needs it and kept. */
+static void test_lit_programs_specialised_once_and_kept(void **state)
+{
+    static const fake_gl_profile_id profiles[] = {FAKE_GL21, FAKE_GL45_CORE};
+    int p;
+    (void)state;
+    for (p = 0; p < 2; p++) {
+        unsigned made;
+        stin_frame_stats st;
+        create_profile(profiles[p], 16, 8);
+        made = fake_gl.programs_created;
+        st = lit_frame(1, STIN_LIGHT_POINT, 0);
+        assert_int_equal(st.lit_programs_built, 1);
+        assert_int_equal(st.lit_specialised, 2);
+        assert_int_equal(fake_gl.programs_created, made + 1);
+        st = lit_frame(1, STIN_LIGHT_POINT, 0); /* the same batch: kept */
+        assert_int_equal(st.lit_programs_built, 0);
+        assert_int_equal(st.lit_specialised, 2);
+        st = lit_frame(9, STIN_LIGHT_POINT, 0); /* batches of 8 (new) and 1 (kept) */
+        assert_int_equal(st.lit_programs_built, 1);
+        assert_int_equal(st.lit_specialised, 4);
+        st = lit_frame(1, STIN_LIGHT_POINT, 1); /* attenuated: another program */
+        assert_int_equal(st.lit_programs_built, 1);
+        assert_int_equal(fake_gl.programs_created, made + 3);
+        assert_int_equal(fake_gl.draw_calls, 2);
+    }
+}
+
+/* More batches over the frames than slots: the ones that served the oldest
+ * frames give way, so the GL programs stay bounded. */
+static void test_lit_programs_bounded(void **state)
+{
+    /* directional lights have no attenuation: five kinds of batch */
+    static const stin_light_type types[] = {STIN_LIGHT_POINT, STIN_LIGHT_SPOT,
+                                            STIN_LIGHT_DIRECTIONAL, STIN_LIGHT_POINT,
+                                            STIN_LIGHT_SPOT};
+    unsigned made;
+    int f;
+    (void)state;
+    create_profile(FAKE_GL21, 16, 8);
+    made = fake_gl.programs_created - fake_gl.programs_deleted;
+    for (f = 0; f < 40; f++) { /* 40 batches: counts 1-8 of each kind */
+        stin_frame_stats st = lit_frame(1 + f % 8, types[f / 8], f >= 24);
+        assert_int_equal(st.lit_programs_built, 1);
+        assert_int_equal(st.lit_specialised, 2);
+    }
+    assert_int_equal(fake_gl.programs_created - fake_gl.programs_deleted, made + STIN__LIT_CACHE);
+    destroy_context(); /* and stin_destroy deletes them all */
+    assert_int_equal(fake_gl.programs_created, fake_gl.programs_deleted);
+}
+
+/* STIN_DEBUG_LIT_GENERAL: the general programs only. */
+static void test_lit_general_flag(void **state)
+{
+    unsigned made;
+    stin_frame_stats st;
+    (void)state;
+    debug_flags = STIN_DEBUG_LIT_GENERAL;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    debug_flags = 0;
+    made = fake_gl.programs_created;
+    st = lit_frame(3, STIN_LIGHT_SPOT, 1);
+    assert_int_equal(st.lit_programs_built, 0);
+    assert_int_equal(st.lit_specialised, 0);
+    assert_int_equal(fake_gl.programs_created, made);
+    assert_int_equal(fake_gl.draw_calls, 2);
+}
+
+/* A specialised program that does not build: the general one draws, with
+ * one warning, and the build is not tried again. */
+static void test_lit_failed_build_falls_back(void **state)
+{
+    unsigned made;
+    stin_frame_stats st;
+    (void)state;
+    create_profile(FAKE_GL21, 16, 8);
+    made = fake_gl.programs_created;
+    fake_gl.config.fail_link_from = made + 1;
+    st = lit_frame(1, STIN_LIGHT_POINT, 0);
+    assert_int_equal(st.lit_programs_built, 0);
+    assert_int_equal(st.lit_specialised, 0);
+    assert_int_equal(fake_gl.draw_calls, 2);
+    assert_true(fake_log_has(&log_, STIN_LOG_SHADER_COMPILE, "the general one serves"));
+    st = lit_frame(1, STIN_LIGHT_POINT, 0);
+    assert_int_equal(fake_gl.programs_created, made + 1);
+    assert_int_equal(fake_gl.draw_calls, 2);
+}
+
 /* The frame's projection is known at stin_begin_frame, before any light,
  * and does not depend on the lights (the application draws its own geometry
  * with it): volumes move a perspective far plane to infinity in every
@@ -868,6 +980,10 @@ int main(void)
         TEST(test_bad_draw_arguments),
         TEST(test_glsl_passes_per_eight_lights),
         TEST(test_blended_draws_once_per_batch),
+        TEST(test_lit_programs_specialised_once_and_kept),
+        TEST(test_lit_programs_bounded),
+        TEST(test_lit_general_flag),
+        TEST(test_lit_failed_build_falls_back),
         TEST(test_volume_lights_share_lit_passes_through_masks),
         TEST(test_incomplete_mask_falls_back_into_the_target),
         TEST(test_frame_projection_is_known_at_begin),
