@@ -594,15 +594,16 @@ static void test_destroy_deletes_every_gl_object(void **state)
     /* GLSL tiers: depth-peel's composite program too (its textures come with
      * the first frame with blended draws), and the GPU CSG resolve's merge,
      * kill and snap programs (its textures come with the first product),
-     * and the outline's */
-    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1 + 3 + 1, 0);
+     * and the outline's; the frame's one lit program specialised to its
+     * light batch (lit_specialise.c) */
+    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1 + 3 + 1 + 1, 0);
     /* GL 4.5: each program again, tessellated ("displace-tess"), dual-peel's
      * composite and its min-max programs (plain and tessellated), on core
      * goldfeather's depth program (compatibility contexts use glDrawPixels;
      * interval, not the default, builds its two where chosen), and the GPU
-     * resolve's three, and the outline's */
-    check_destroy_balances(FAKE_GL45_CORE, 2, 1, 2 * (STIN__PROG_COUNT + 3) + 1 + 2 + 1 + 3 + 1,
-                           1);
+     * resolve's three, the outline's, and the specialised lit program */
+    check_destroy_balances(FAKE_GL45_CORE, 2, 1,
+                           2 * (STIN__PROG_COUNT + 3) + 1 + 2 + 1 + 3 + 1 + 1, 1);
 }
 
 /* ---- entry points and extensions ------------------------------------------ */
