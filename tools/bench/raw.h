@@ -60,9 +60,10 @@ int raw_glsl_create(raw_renderer *r, char *err, size_t err_size);
 void raw_glsl_frame(const raw_renderer *r, int width, int height);
 void raw_glsl_destroy(raw_renderer *r);
 /* The tier's lit program as stin builds its unshadowed plain one, from the
- * GLSL files under root (raw_program.c). 0 with a message on failure. */
-GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier, char *err,
-                        size_t err_size);
+ * GLSL files under root (raw_program.c), with frag_defines (NULL: none)
+ * after lit.frag's #version line. 0 with a message on failure. */
+GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier,
+                        const char *frag_defines, char *err, size_t err_size);
 
 /* Interleaved vertex: position, normal, uv, tangent — stin's layout, so that
  * both fetch the same bytes. */

@@ -7,14 +7,43 @@
 #include "raw_math.h"
 
 #include <math.h>
+#include <stdio.h>
 
 #define RAW_LIGHTS_PER_PASS 8
+
+/* lit.frag specialised to the scene's lights (the first 8, the one pass
+ * this loop draws) and untextured materials, as stin specialises its lit
+ * programs (src/lit_specialise.c): the loop's program is the one stin
+ * draws the same scene with, written here from lit.frag's own defines. */
+static void specialise(const scene *s, char *out, size_t size)
+{
+    int i, n = s->light_count < RAW_LIGHTS_PER_PASS ? s->light_count : RAW_LIGHTS_PER_PASS;
+    int directional = 0, positional = 0, spot = 0, attenuation = 0;
+    for (i = 0; i < n; i++) {
+        const scene_light *l = &s->lights[i];
+        if (l->type == SCENE_LIGHT_DIRECTIONAL) {
+            directional = 1;
+            continue;
+        }
+        positional = 1;
+        spot |= l->type == SCENE_LIGHT_SPOT;
+        attenuation |= l->attenuation[0] != 1.0f || l->attenuation[1] != 0.0f ||
+                       l->attenuation[2] != 0.0f;
+    }
+    snprintf(out, size,
+             "#define STIN_SPECIALISED 1\n#define STIN_LIGHT_COUNT %d\n"
+             "#define STIN_DIRECTIONAL %d\n#define STIN_POSITIONAL %d\n#define STIN_SPOT %d\n"
+             "#define STIN_ATTENUATION %d\n#define STIN_ALBEDO_TEX 0\n",
+             n, directional, positional, spot, attenuation);
+}
 
 int raw_glsl_create(raw_renderer *r, char *err, size_t err_size)
 {
     const raw_gl *gl = r->gl;
     raw_program *p = &r->prog;
-    if (!(p->name = raw_program_link(gl, r->cfg.shader_dir, r->cfg.tier, err, err_size)))
+    char defines[256];
+    specialise(r->s, defines, sizeof defines);
+    if (!(p->name = raw_program_link(gl, r->cfg.shader_dir, r->cfg.tier, defines, err, err_size)))
         return 0;
 #define LOC(field) p->field = gl->GetUniformLocation(p->name, #field)
     LOC(u_model);

@@ -87,15 +87,17 @@ static int built(const raw_gl *gl, GLuint obj, int program, const char *what, ch
 }
 
 /* The file up to its marker, each chunk, the rest: as stin composes its lit
- * shaders. chunks is NULL-terminated, or NULL for a plain file. */
+ * shaders. chunks is NULL-terminated, or NULL for a plain file; defines (or
+ * NULL) go in after the file's #version line. */
 static GLuint compile(const raw_gl *gl, GLenum type, const char *root, const char *dir,
-                      const char *name, const char *const *chunks, char *err, size_t err_size)
+                      const char *name, const char *const *chunks, const char *defines,
+                      char *err, size_t err_size)
 {
     char *src = read_shader(root, dir, name, 0, err, err_size), *texts[MAX_CHUNKS] = {NULL};
     char what[PATH_SIZE];
-    const GLchar *parts[MAX_CHUNKS + 2];
-    GLint lengths[MAX_CHUNKS + 2];
-    const char *marker = NULL;
+    const GLchar *parts[MAX_CHUNKS + 4];
+    GLint lengths[MAX_CHUNKS + 4];
+    const char *marker = NULL, *rest;
     GLsizei count = 0;
     GLuint sh = 0;
     int n = 0, i;
@@ -105,8 +107,17 @@ static GLuint compile(const raw_gl *gl, GLenum type, const char *root, const cha
         snprintf(err, err_size, "%s/%s has no '%s' line for its chunks", dir, name, CHUNK_MARKER);
         goto done;
     }
-    parts[count] = src;
-    lengths[count++] = marker ? (GLint)(marker - src) : -1;
+    rest = src;
+    if (defines) {
+        const char *eol = strchr(src, '\n');
+        rest = eol ? eol + 1 : src + strlen(src);
+        parts[count] = src;
+        lengths[count++] = (GLint)(rest - src);
+        parts[count] = defines;
+        lengths[count++] = -1;
+    }
+    parts[count] = rest;
+    lengths[count++] = marker ? (GLint)(marker - rest) : -1;
     for (; marker && chunks[n]; n++) {
         if (n == MAX_CHUNKS || !(texts[n] = read_shader(root, dir, chunks[n], 1, err, err_size)))
             goto done;
@@ -130,18 +141,18 @@ done:
     return sh;
 }
 
-GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier, char *err,
-                        size_t err_size)
+GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier,
+                        const char *frag_defines, char *err, size_t err_size)
 {
     const char *dir = tier == STIN_TIER_GL4 ? "gl4" : "gl2";
     char what[64];
     GLuint vs, fs, p;
     if (!(vs = compile(gl, GL_VERTEX_SHADER, root, dir, "lit.vert",
-                       tier == STIN_TIER_GL4 ? vertex_chunks_gl4 : vertex_chunks_gl2, err,
-                       err_size)))
+                       tier == STIN_TIER_GL4 ? vertex_chunks_gl4 : vertex_chunks_gl2, NULL,
+                       err, err_size)))
         return 0;
-    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, root, dir, "lit.frag", plain_chunks, err,
-                       err_size))) {
+    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, root, dir, "lit.frag", plain_chunks, frag_defines,
+                       err, err_size))) {
         gl->DeleteShader(vs);
         return 0;
     }
