@@ -174,7 +174,8 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     if (tess) { /* the program's vertex shader displaces the tessellated points */
         stages[0] = compile(ctx, GL_VERTEX_SHADER, "gl4/tess.vert", NULL, NULL, msg, size);
         if (stages[0])
-            stages[1] = compile(ctx, GL_TESS_CONTROL_SHADER, "gl4/tess.tesc", NULL, NULL, msg, size);
+            stages[1] =
+                compile(ctx, GL_TESS_CONTROL_SHADER, "gl4/tess.tesc", NULL, NULL, msg, size);
         if (stages[1])
             stages[2] = compile(ctx, GL_TESS_EVALUATION_SHADER, src->vert,
                                 vertex_chunks(ctx, src->vert, 1, vname, vlist), NULL, msg, size);
@@ -185,7 +186,8 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
         ok_so_far = stages[0] != 0;
     }
     if (ok_so_far && src->geom)
-        ok_so_far = (stages[3] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, NULL, msg, size)) != 0;
+        ok_so_far = (stages[3] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, NULL, msg,
+                                         size)) != 0;
     if (ok_so_far)
         stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks, src->frag_defines,
                             msg, size);
