@@ -97,8 +97,16 @@ const stin__program *stin__lit_specialised(stin_context *ctx, const stin__progra
             return &c->programs[i];
         }
     slot = free_slot(ctx);
-    if (slot < 0)
+    if (slot < 0) {
+        if (!c->said_full) {
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "a frame needs more than %d specialised lit programs; the general ones "
+                      "draw the rest",
+                      STIN__LIT_CACHE);
+            c->said_full = 1;
+        }
         return general;
+    }
     write_defines(defines, sizeof defines, key);
     c->keys[slot] = key;
     c->used[slot] = c->frame;

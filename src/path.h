@@ -67,6 +67,7 @@ typedef struct stin__lit_cache {
     uint32_t keys[STIN__LIT_CACHE];
     uint32_t used[STIN__LIT_CACHE]; /* the frame it last served */
     uint32_t count, frame;
+    int said_full;            /* a frame found every slot in use (logged once) */
 } stin__lit_cache;
 
 /* Which draws a pass covers. */

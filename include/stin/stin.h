@@ -63,9 +63,11 @@
  * so the depth test can run before shading. Each such program is compiled
  * the first time a frame needs it (a compile in that frame), then kept:
  * up to 32 per context, the one that served the oldest frame replaced
- * when a new one is needed. A program that does not build logs a warning
- * and the general program serves. stin_frame_stats.lit_specialised and
- * lit_programs_built count them; STIN_DEBUG_LIT_GENERAL turns them off.
+ * when a new one is needed (a frame that needs more than 32 draws the rest
+ * with the general programs, logged once). A program that does not build
+ * logs a warning and the general program serves.
+ * stin_frame_stats.lit_specialised and lit_programs_built count them;
+ * STIN_DEBUG_LIT_GENERAL turns them off.
  *
  * SHADOWS
  * The shadow feature's chain: "vdsm" (GL4 only), "volume" (stencil shadow

@@ -466,6 +466,28 @@ static void test_lit_programs_bounded(void **state)
     assert_int_equal(fake_gl.programs_created, fake_gl.programs_deleted);
 }
 
+/* A frame that needs more programs than there are slots: the general one
+ * draws the rest (no slot this frame used is replaced), said once. */
+static void test_lit_programs_full_frame(void **state)
+{
+    const stin__program *general;
+    uint32_t key;
+    unsigned said;
+    (void)state;
+    create_profile(FAKE_GL21, 16, 8);
+    begin();
+    said = log_.items[STIN_LOG_FALLBACK]; /* the context's own choices */
+    general = &ctx->programs[STIN__PROG_LIT];
+    for (key = 1; key <= STIN__LIT_CACHE; key++) /* 32 keys, no albedo map */
+        assert_ptr_not_equal(stin__lit_specialised(ctx, general, 0, key, 0), general);
+    assert_ptr_equal(stin__lit_specialised(ctx, general, 0, 0x10u | 1u, 1), general);
+    assert_ptr_equal(stin__lit_specialised(ctx, general, 0, 0x10u | 2u, 1), general);
+    assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "more than 32 specialised"));
+    assert_int_equal(log_.items[STIN_LOG_FALLBACK], said + 1);
+    assert_ptr_not_equal(stin__lit_specialised(ctx, general, 0, 1u, 0), general); /* kept */
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+}
+
 /* STIN_DEBUG_LIT_GENERAL: the general programs only. */
 static void test_lit_general_flag(void **state)
 {
@@ -982,6 +1004,7 @@ int main(void)
         TEST(test_blended_draws_once_per_batch),
         TEST(test_lit_programs_specialised_once_and_kept),
         TEST(test_lit_programs_bounded),
+        TEST(test_lit_programs_full_frame),
         TEST(test_lit_general_flag),
         TEST(test_lit_failed_build_falls_back),
         TEST(test_volume_lights_share_lit_passes_through_masks),
