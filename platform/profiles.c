@@ -31,9 +31,9 @@
 /* GL 2.1 class: no VAO or float textures (GL 3.0), nothing of GL 3.2+. */
 #define GL21_HIDE                                                                 \
     (BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) |   \
-     BIT(COMPUTE) | BIT(TIMER_QUERY))
-/* GL 3.3 class: the 4.x stages Mesa still lists as extensions. */
-#define GL33_HIDE (BIT(TESSELLATION) | BIT(COMPUTE))
+     BIT(COMPUTE) | BIT(TIMER_QUERY) | BIT(TRANSFORM_FEEDBACK))
+/* GL 3.3 class: the 4.x features Mesa still lists as extensions. */
+#define GL33_HIDE (BIT(TESSELLATION) | BIT(COMPUTE) | BIT(TRANSFORM_FEEDBACK))
 
 /* Disable-able extensions shared by every GL 1.x profile: shaders of any
  * kind, FBO, float textures, PBOs, NPOT textures (GL1 hardware had none; stin

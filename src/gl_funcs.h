@@ -164,8 +164,21 @@
       NEED_GL30, "")                                                                       \
     X(void, FramebufferTextureLayer, (GLenum target, GLenum att, GLuint tex, GLint level,  \
                                       GLint layer), NEED_GL30, "")                          \
+    /* vdsm's culling pass: transform feedback (GL 3.0), drawn from its object (4.0) */   \
+    X(void, TransformFeedbackVaryings, (GLuint p, GLsizei n, const GLchar *const *names,   \
+                                        GLenum mode), NEED_GL30, "")                       \
+    X(void, BeginTransformFeedback, (GLenum mode), NEED_GL30, "")                          \
+    X(void, EndTransformFeedback, (void), NEED_GL30, "")                                   \
+    X(void, BindBufferBase, (GLenum target, GLuint index, GLuint b), NEED_GL30, "")         \
+    X(void, GenTransformFeedbacks, (GLsizei n, GLuint *ids), STIN_CAP_TRANSFORM_FEEDBACK,  \
+      "")                                                                                  \
+    X(void, DeleteTransformFeedbacks, (GLsizei n, const GLuint *ids),                      \
+      STIN_CAP_TRANSFORM_FEEDBACK, "")                                                     \
+    X(void, BindTransformFeedback, (GLenum target, GLuint id), STIN_CAP_TRANSFORM_FEEDBACK, \
+      "")                                                                                  \
+    X(void, DrawTransformFeedback, (GLenum mode, GLuint id), STIN_CAP_TRANSFORM_FEEDBACK,  \
+      "")                                                                                  \
     /* deep's early stop by a shader storage flag (GL 4.3: SSBOs with compute) */          \
-    X(void, BindBufferBase, (GLenum target, GLuint index, GLuint b), STIN_CAP_COMPUTE, "")  \
     X(void, BufferSubData, (GLenum target, GLintptr off, GLsizeiptr size, const void *d),  \
       STIN_CAP_COMPUTE, "")                                                                 \
     X(void, GetBufferSubData, (GLenum target, GLintptr off, GLsizeiptr size, void *d),     \

@@ -161,8 +161,14 @@ void stin__glsl_tessellate(stin_context *ctx, int on);
  * entries end the list, all NULL: the single output). */
 #define STIN__MAX_FRAG_OUTPUTS 2
 typedef struct stin__program_source {
-    const char *vert, *geom, *frag;
+    const char *vert, *geom, *frag; /* frag NULL: none (a feedback-only program) */
     const char *const *frag_chunks;
+    const char *const *geom_chunks; /* as frag_chunks, for geom */
+    /* NULL, or the vertex inputs bound to locations 0, 1, ... in place of
+     * the mesh layout's (a_position, a_normal, a_uv, a_tangent) */
+    const char *const *attributes;
+    /* NULL, or the outputs transform feedback captures, interleaved */
+    const char *const *feedback;
     const char *frag_defines; /* NULL or "#define ..." lines after frag's #version */
     const char *frag_outputs[STIN__MAX_FRAG_OUTPUTS];
     /* 1: a program that draws displaced meshes through vert (which has the

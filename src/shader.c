@@ -139,8 +139,6 @@ static const char *const *vertex_chunks(const stin_context *ctx, const char *ver
     return list;
 }
 
-/* Attribute locations are fixed so that one vertex layout (and one VAO per
- * mesh) serves every program. */
 GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag,
                            const char *const *frag_chunks, int tessellate, char *msg,
                            size_t size)
@@ -152,6 +150,18 @@ GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag
     src.frag_chunks = frag_chunks;
     src.tessellate = tessellate;
     return stin__program_build_source(ctx, &src, msg, size);
+}
+
+/* Attribute locations are fixed so that one vertex layout (and one VAO per
+ * mesh) serves every program; a program fed from elsewhere names its own. */
+static void bind_attributes(stin_context *ctx, GLuint p, const char *const *names)
+{
+    static const char *const mesh[] = {"a_position", "a_normal", "a_uv", "a_tangent", NULL};
+    GLuint i;
+    if (!names)
+        names = mesh;
+    for (i = 0; names[i]; i++)
+        GL(ctx, BindAttribLocation)(p, i, names[i]);
 }
 
 static void delete_stages(stin_context *ctx, const GLuint *stages, int n)
@@ -169,7 +179,7 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     GLuint stages[5] = {0, 0, 0, 0, 0}, p;
     GLint ok = 0;
     char log[1024], vname[40];
-    const char *vlist[3];
+    const char *vlist[3], *last;
     int i, tess = src->tessellate && stin__displace_tessellated(ctx), ok_so_far;
     if (tess) { /* the program's vertex shader displaces the tessellated points */
         stages[0] = compile(ctx, GL_VERTEX_SHADER, "gl4/tess.vert", NULL, NULL, msg, size);
@@ -186,12 +196,12 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
         ok_so_far = stages[0] != 0;
     }
     if (ok_so_far && src->geom)
-        ok_so_far = (stages[3] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, NULL, NULL, msg,
-                                         size)) != 0;
-    if (ok_so_far)
-        stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks, src->frag_defines,
-                            msg, size);
-    if (!stages[4]) {
+        ok_so_far = (stages[3] = compile(ctx, GL_GEOMETRY_SHADER, src->geom, src->geom_chunks,
+                                         NULL, msg, size)) != 0;
+    if (ok_so_far && src->frag)
+        ok_so_far = (stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks,
+                                         src->frag_defines, msg, size)) != 0;
+    if (!ok_so_far) {
         delete_stages(ctx, stages, 5);
         return 0;
     }
@@ -199,21 +209,25 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     for (i = 0; i < 5; i++)
         if (stages[i])
             GL(ctx, AttachShader)(p, stages[i]);
-    GL(ctx, BindAttribLocation)(p, 0, "a_position");
-    GL(ctx, BindAttribLocation)(p, 1, "a_normal");
-    GL(ctx, BindAttribLocation)(p, 2, "a_uv");
-    GL(ctx, BindAttribLocation)(p, 3, "a_tangent");
+    bind_attributes(ctx, p, src->attributes);
     for (i = 0; i < STIN__MAX_FRAG_OUTPUTS && src->frag_outputs[i]; i++)
         GL(ctx, BindFragDataLocation)(p, (GLuint)i, src->frag_outputs[i]);
+    if (src->feedback) {
+        GLsizei n = 0;
+        while (src->feedback[n])
+            n++;
+        GL(ctx, TransformFeedbackVaryings)(p, n, src->feedback, GL_INTERLEAVED_ATTRIBS);
+    }
     GL(ctx, LinkProgram)(p);
     delete_stages(ctx, stages, 5);
     GL(ctx, GetProgramiv)(p, GL_LINK_STATUS, &ok);
     if (!ok) {
         log[0] = '\0';
         GL(ctx, GetProgramInfoLog)(p, (GLsizei)sizeof log, NULL, log);
+        last = src->frag ? src->frag : src->geom ? src->geom : "no fragment stage";
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_SHADER_LINK, "%s + %s: %s", src->vert,
-                  src->frag, log);
-        stin__formatf(msg, size, "%s + %s did not link", src->vert, src->frag);
+                  last, log);
+        stin__formatf(msg, size, "%s + %s did not link", src->vert, last);
         GL(ctx, DeleteProgram)(p);
         return 0;
     }

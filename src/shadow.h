@@ -101,6 +101,12 @@ typedef struct stin__map_pcf_state {
     uint32_t light;
 } stin__map_pcf_state;
 
+/* Where a program reads the pyramid (vdsm_cull.glsl, u_depth_row of
+ * vdsm_side.glsl); -1 where it does not. */
+typedef struct stin__vdsm_pyramid_locs {
+    GLint sm, dc, vp, depth, pyramid, size, top;
+} stin__vdsm_pyramid_locs;
+
 /* VDSM steps SM and DC (shadow_vdsm_pyramid.c): per light, a pyramid over
  * the light's view of the scene - the occluders' depth bound and the deepest
  * receiver per texel, maxima up the levels - that the shadow polygons read
@@ -121,7 +127,6 @@ typedef struct stin__vdsm_pyramid {
         l_marks;
     GLint r_position, r_normal, r_light, r_vp, r_depth, r_rect;
     GLint d_source, d_first;
-    GLint p_sm, p_dc, p_vp, p_depth, p_pyramid, p_size, p_top;
     /* GL 4.3 (shadow_vdsm_receivers.c): the receivers by atomics, per texel
      * the deepest one's ordered bits in a storage buffer (0: none) */
     GLuint deepest, atomic_prog, first_prog;
@@ -158,6 +163,30 @@ void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel);
 /* VDSM (shadow_vdsm.c): the position buffer - per pixel the visible
  * surface's world position and its facet normal - and the programs that
  * turn each triangle into shadow polygons over it. */
+/* The uniforms of a program that draws shadow polygons or culls for them
+ * (vdsm.geom, vdsm_cull.geom, vdsm_fed.geom); -1 where it has none. */
+typedef struct stin__vdsm_polygon_locs {
+    GLint model, view_proj, light, camera, viewport, grow, depth_test, cull_lit, caps, position,
+        normal;
+    stin__displace_locs displace;
+    stin__vdsm_pyramid_locs pyramid;
+} stin__vdsm_polygon_locs;
+
+/* vdsm's culling pass (shadow_vdsm_cull.c): per light, EP, SM and DC in a
+ * small geometry shader whose kept triangles transform feedback writes to
+ * a buffer, one point each; the shadow-polygon program then draws those
+ * alone, in one draw (from the feedback object where the context has
+ * them, else by the count a query read back). */
+typedef struct stin__vdsm_cull {
+    GLuint cull_prog, fed_prog;
+    GLuint buffer, vao;         /* the kept triangles, 48 bytes each; the fed pass's arrays */
+    GLuint feedback, query;     /* feedback object (or 0); primitives-written query (or 0) */
+    uint32_t capacity;          /* triangles the buffer holds */
+    stin__vdsm_polygon_locs cull, fed;
+    int usable;
+    uint32_t kept;              /* triangles kept by the last light's pass, where counted */
+} stin__vdsm_cull;
+
 typedef struct stin__vdsm_state {
     GLuint fbo, position, normal, depth;
     int width, height;      /* allocated texels (0: not yet) */
@@ -166,9 +195,9 @@ typedef struct stin__vdsm_state {
     int tess_active;        /* they are swapped into position_prog and polygon_prog */
     GLint pos_model, pos_view_proj, pos_camera, pos_csg, pos_csg_depth;
     GLint face_position, face_normal, face_light;
-    GLint poly_model, poly_view_proj, poly_light, poly_camera, poly_viewport, poly_grow,
-        poly_cull_lit, poly_caps, poly_position, poly_normal, poly_depth_test;
-    stin__displace_locs pos_displace, poly_displace; /* their displacement chunks */
+    stin__vdsm_polygon_locs poly; /* polygon_prog's (the one-pass program) */
+    stin__displace_locs pos_displace; /* position_prog's displacement chunk */
+    stin__vdsm_cull culling;
     float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
     int ready;              /* this frame's position buffer is drawn */
     int said_area, said_failed, said_layer;
@@ -193,9 +222,10 @@ void stin__vdsm_buffer_release(stin_context *ctx);
 void stin__vdsm_pyramid_init(stin_context *ctx);
 void stin__vdsm_pyramid_release(stin_context *ctx);
 void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4]);
-void stin__vdsm_pyramid_uniforms(stin_context *ctx);
-/* The polygon program's pyramid uniforms again (it was swapped). */
-void stin__vdsm_pyramid_relocate(stin_context *ctx);
+/* A program's pyramid uniforms: located, and set (bound program) for the
+ * light drawn last. */
+void stin__vdsm_pyramid_locate(stin_context *ctx, GLuint prog, stin__vdsm_pyramid_locs *l);
+void stin__vdsm_pyramid_uniforms(stin_context *ctx, const stin__vdsm_pyramid_locs *l);
 /* The receivers by storage-buffer atomics (shadow_vdsm_receivers.c), where
  * the context has them: set up after the pyramid (0 where not), one light's
  * pass (from the pyramid's framebuffer, back to it), and level 0 of the
@@ -220,6 +250,24 @@ GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
 GLuint stin__vdsm_polygon_program(stin_context *ctx, const char *frag, int tessellate, char *msg,
                                   size_t size);
 void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint *c);
+/* A polygon or culling program's uniforms located (shadow_vdsm.c); the
+ * light's uniforms set on the bound one; the frame's casting draws through
+ * it, each with its EP and caps uniforms and triangles. */
+void stin__vdsm_polygon_locate(stin_context *ctx, GLuint prog, stin__vdsm_polygon_locs *l);
+void stin__vdsm_polygon_uniforms(stin_context *ctx, const stin__vdsm_polygon_locs *l,
+                                 const float light[4]);
+void stin__vdsm_draw_casters(stin_context *ctx, const stin__vdsm_polygon_locs *l);
+/* The culling pass (shadow_vdsm_cull.c): programs and buffer at set-up (a
+ * failure logs and leaves the one-pass program); whether this frame culls
+ * first (not with tessellated draws or STIN_DEBUG_VDSM_ONE_PASS; its buffer
+ * grown to the frame's casting triangles); one
+ * light's pass, which leaves the fed program bound and returns 0 where
+ * nothing was kept; the kept triangles' draw through it. */
+void stin__vdsm_cull_init(stin_context *ctx);
+void stin__vdsm_cull_release(stin_context *ctx);
+int stin__vdsm_cull_on(stin_context *ctx);
+int stin__vdsm_cull_pass(stin_context *ctx, const float light[4]);
+void stin__vdsm_cull_draw(stin_context *ctx);
 /* A full-viewport quad through the bound program (shadow_vdsm.c). */
 void stin__vdsm_screen_quad(stin_context *ctx);
 /* 1 when EP may drop a draw's light-facing triangles (shadow_vdsm.c). */

@@ -11,9 +11,11 @@
  * SM and DC read a light-view pyramid (shadow_vdsm_pyramid.c) to drop
  * triangles already in shadow or with nothing behind them, and to end the
  * extrusion at the deepest receiver; the growth is conservative
- * rasterisation. The shadow polygons need triangles alone: no adjacency, so
- * open and non-manifold meshes cast exactly (SM's occluders use it where
- * the mesh has it). */
+ * rasterisation. The steps decide each triangle in a culling pass first
+ * where they can (shadow_vdsm_cull.c), so the polygons' large geometry
+ * shader runs on the kept ones alone. The shadow polygons need triangles
+ * alone: no adjacency, so open and non-manifold meshes cast exactly (SM's
+ * occluders use it where the mesh has it). */
 #include "internal.h"
 
 GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
@@ -37,11 +39,14 @@ GLuint stin__vdsm_polygon_program(stin_context *ctx, const char *frag, int tesse
                                   size_t size)
 {
     static const char *const segment[] = {"gl4/vdsm_segment.glsl", NULL};
+    static const char *const steps[] = {"gl4/vdsm_side.glsl", "gl4/vdsm_cull.glsl",
+                                        "gl4/vdsm_volume.glsl", NULL};
     stin__program_source src;
     stin__memzero(&src, sizeof src);
     src.tessellate = tessellate;
     src.vert = "gl4/vdsm.vert";
     src.geom = "gl4/vdsm.geom";
+    src.geom_chunks = steps;
     src.frag = frag;
     src.frag_chunks = segment;
     return stin__program_build_source(ctx, &src, msg, size);
@@ -72,8 +77,29 @@ static void release(stin_context *ctx)
         GL(ctx, DeleteQueries)(1, &v->query);
     v->query = 0;
     stin__vdsm_pyramid_release(ctx);
+    stin__vdsm_cull_release(ctx);
     stin__vdsm_csg_release(ctx);
     stin__vdsm_buffer_release(ctx);
+}
+
+void stin__vdsm_polygon_locate(stin_context *ctx, GLuint prog, stin__vdsm_polygon_locs *l)
+{
+#define LOC(field, name) l->field = GL(ctx, GetUniformLocation)(prog, name)
+    LOC(model, "u_model");
+    LOC(view_proj, "u_view_proj");
+    LOC(light, "u_light");
+    LOC(camera, "u_camera");
+    LOC(viewport, "u_viewport");
+    LOC(grow, "u_grow");
+    LOC(depth_test, "u_depth_test");
+    LOC(cull_lit, "u_cull_lit");
+    LOC(caps, "u_caps");
+    LOC(position, "u_position");
+    LOC(normal, "u_normal");
+#undef LOC
+    /* shadow polygons cast from anywhere, not only the camera's view */
+    stin__displace_locate(ctx, prog, 0, &l->displace);
+    stin__vdsm_pyramid_locate(ctx, prog, &l->pyramid);
 }
 
 static void locate(stin_context *ctx)
@@ -88,21 +114,10 @@ static void locate(stin_context *ctx)
     LOC(face_position, facing_prog, "u_position");
     LOC(face_normal, facing_prog, "u_normal");
     LOC(face_light, facing_prog, "u_light");
-    LOC(poly_model, polygon_prog, "u_model");
-    LOC(poly_view_proj, polygon_prog, "u_view_proj");
-    LOC(poly_light, polygon_prog, "u_light");
-    LOC(poly_camera, polygon_prog, "u_camera");
-    LOC(poly_viewport, polygon_prog, "u_viewport");
-    LOC(poly_grow, polygon_prog, "u_grow");
-    LOC(poly_depth_test, polygon_prog, "u_depth_test");
-    LOC(poly_cull_lit, polygon_prog, "u_cull_lit");
-    LOC(poly_caps, polygon_prog, "u_caps");
-    LOC(poly_position, polygon_prog, "u_position");
-    LOC(poly_normal, polygon_prog, "u_normal");
 #undef LOC
-    /* the position buffer is the camera's view; shadow polygons cast from anywhere */
+    /* the position buffer is the camera's view */
     stin__displace_locate(ctx, v->position_prog, 1, &v->pos_displace);
-    stin__displace_locate(ctx, v->polygon_prog, 0, &v->poly_displace);
+    stin__vdsm_polygon_locate(ctx, v->polygon_prog, &v->poly);
 }
 
 /* The technique below vdsm that runs here: volumes where the frame has a
@@ -151,7 +166,6 @@ void stin__vdsm_tessellate(stin_context *ctx, int on)
     v->polygon_tess = t;
     v->tess_active = on;
     locate(ctx);
-    stin__vdsm_pyramid_relocate(ctx);
 }
 
 static stin_result vdsm_init(stin_context *ctx)
@@ -166,11 +180,12 @@ static stin_result vdsm_init(stin_context *ctx)
         return STIN_OK;
     }
     msg[0] = '\0';
-    v->position_prog = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL, "gl4/vdsm_position.frag",
-                             "o_normal", 0, msg, sizeof msg);
+    v->position_prog = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL,
+                                          "gl4/vdsm_position.frag", "o_normal", 0, msg,
+                                          sizeof msg);
     if (v->position_prog)
-        v->facing_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL, "gl4/vdsm_facing.frag", NULL,
-                               0, msg, sizeof msg);
+        v->facing_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL,
+                                            "gl4/vdsm_facing.frag", NULL, 0, msg, sizeof msg);
     if (v->facing_prog)
         v->polygon_prog = stin__vdsm_polygon_program(ctx, "gl4/vdsm.frag", 0, msg, sizeof msg);
     if (!v->polygon_prog) {
@@ -183,6 +198,7 @@ static stin_result vdsm_init(stin_context *ctx)
     if (stin__displace_tessellated(ctx))
         build_tessellated(ctx);
     stin__vdsm_pyramid_init(ctx);
+    stin__vdsm_cull_init(ctx);
     stin__vdsm_csg_init(ctx);
     if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
         GL(ctx, GenQueries)(1, &v->query);
@@ -252,26 +268,58 @@ static void surface_depth(stin_context *ctx, int on)
                                   on ? 0u : depth, 0);
 }
 
-static void polygons(stin_context *ctx, const float light[4])
+void stin__vdsm_polygon_uniforms(stin_context *ctx, const stin__vdsm_polygon_locs *l,
+                                 const float light[4])
 {
-    stin__vdsm_state *v = &ctx->vdsm;
     const int *vp = ctx->frame.viewport;
-    const stin__pass_state before = *stin__pass_current(ctx);
-    stin__pass_state ps = before;
     float viewport[4];
-    uint32_t i;
-    int culled = -1, tested = depth_tested(ctx);
     viewport[0] = (float)vp[0];
     viewport[1] = (float)vp[1];
     viewport[2] = (float)vp[2];
     viewport[3] = (float)vp[3];
-    GL(ctx, UseProgram)(v->polygon_prog);
-    GL(ctx, UniformMatrix4fv)(v->poly_view_proj, 1, GL_FALSE, ctx->view_proj);
-    GL(ctx, Uniform4fv)(v->poly_light, 1, light);
-    GL(ctx, Uniform4fv)(v->poly_camera, 1, v->camera);
-    GL(ctx, Uniform4fv)(v->poly_viewport, 1, viewport);
-    GL(ctx, Uniform1f)(v->poly_grow, ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_GROW ? 0.0f : 0.5f);
-    GL(ctx, Uniform1i)(v->poly_depth_test, tested);
+    GL(ctx, UniformMatrix4fv)(l->view_proj, 1, GL_FALSE, ctx->view_proj);
+    GL(ctx, Uniform4fv)(l->light, 1, light);
+    GL(ctx, Uniform4fv)(l->camera, 1, ctx->vdsm.camera);
+    GL(ctx, Uniform4fv)(l->viewport, 1, viewport);
+    GL(ctx, Uniform1f)(l->grow, ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_GROW ? 0.0f : 0.5f);
+    GL(ctx, Uniform1i)(l->depth_test, depth_tested(ctx));
+    GL(ctx, Uniform1i)(l->position, 0);
+    GL(ctx, Uniform1i)(l->normal, 1);
+    stin__vdsm_pyramid_uniforms(ctx, &l->pyramid);
+}
+
+void stin__vdsm_draw_casters(stin_context *ctx, const stin__vdsm_polygon_locs *l)
+{
+    uint32_t i;
+    int culled = -1;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        int c = stin__vdsm_cull_lit(ctx, d);
+        if (stin__translucent_skips(ctx, d))
+            continue; /* a transparent caster: its map or the threshold decides */
+        if (c != culled)
+            GL(ctx, Uniform1i)(l->cull_lit, c);
+        culled = c;
+        /* a blended caster is not in the depth buffer: what lies behind it shows */
+        GL(ctx, Uniform1i)(l->caps, d->material.color[3] < 1.0f);
+        stin__glsl_submit_geometry(ctx, l->model, &l->displace, d);
+    }
+}
+
+/* The light's shadow polygons: culled first into a buffer and drawn from
+ * it, or culled and drawn in one geometry shader. */
+static void polygons(stin_context *ctx, const float light[4])
+{
+    stin__vdsm_state *v = &ctx->vdsm;
+    const stin__pass_state before = *stin__pass_current(ctx);
+    stin__pass_state ps = before;
+    int tested = depth_tested(ctx), fed = stin__vdsm_cull_on(ctx);
+    if (fed && !stin__vdsm_cull_pass(ctx, light))
+        return; /* no triangle casts */
+    if (!fed) {
+        GL(ctx, UseProgram)(v->polygon_prog);
+        stin__vdsm_polygon_uniforms(ctx, &v->poly, light);
+    }
     if (tested) {
         /* depth LESS, not written, unclipped by the near and far planes;
          * pulled toward the eye by a pixel's slope and 4 steps against the
@@ -283,23 +331,12 @@ static void polygons(stin_context *ctx, const float light[4])
         surface_depth(ctx, 1);
         stin__pass_apply(ctx, &ps);
     }
-    GL(ctx, Uniform1i)(v->poly_position, 0);
-    GL(ctx, Uniform1i)(v->poly_normal, 1);
-    stin__vdsm_pyramid_uniforms(ctx);
     if (v->query)
         GL(ctx, BeginQuery)(GL_PRIMITIVES_GENERATED, v->query);
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        int c = stin__vdsm_cull_lit(ctx, d);
-        if (stin__translucent_skips(ctx, d))
-            continue; /* a transparent caster: its map or the threshold decides */
-        if (c != culled)
-            GL(ctx, Uniform1i)(v->poly_cull_lit, c);
-        culled = c;
-        /* a blended caster is not in the depth buffer: what lies behind it shows */
-        GL(ctx, Uniform1i)(v->poly_caps, d->material.color[3] < 1.0f);
-        stin__glsl_submit_geometry(ctx, v->poly_model, &v->poly_displace, d);
-    }
+    if (fed)
+        stin__vdsm_cull_draw(ctx);
+    else
+        stin__vdsm_draw_casters(ctx, &v->poly);
     if (v->query) {
         GLuint n = 0;
         GL(ctx, EndQuery)(GL_PRIMITIVES_GENERATED);

@@ -48,7 +48,7 @@
  * than this fraction of the deepest corner. */
 #define FRONT 1e-3f
 
-static void locate(stin_context *ctx, GLuint polygon_prog)
+static void locate(stin_context *ctx)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
 #define LOC(field, prog, name) p->field = GL(ctx, GetUniformLocation)(prog, name)
@@ -70,20 +70,20 @@ static void locate(stin_context *ctx, GLuint polygon_prog)
     LOC(r_rect, p->receiver_prog, "u_rect");
     LOC(d_source, p->reduce_prog, "u_source");
     LOC(d_first, p->reduce_prog, "u_first");
-    LOC(p_sm, polygon_prog, "u_sm");
-    LOC(p_dc, polygon_prog, "u_dc");
-    LOC(p_vp, polygon_prog, "u_light_vp");
-    LOC(p_depth, polygon_prog, "u_depth_row");
-    LOC(p_pyramid, polygon_prog, "u_pyramid");
-    LOC(p_size, polygon_prog, "u_pyramid_size");
-    LOC(p_top, polygon_prog, "u_pyramid_top");
 #undef LOC
 }
 
-void stin__vdsm_pyramid_relocate(stin_context *ctx)
+void stin__vdsm_pyramid_locate(stin_context *ctx, GLuint prog, stin__vdsm_pyramid_locs *l)
 {
-    if (ctx->vdsm.pyramid.light_prog && ctx->vdsm.pyramid.reduce_prog)
-        locate(ctx, ctx->vdsm.polygon_prog);
+#define LOC(field, name) l->field = GL(ctx, GetUniformLocation)(prog, name)
+    LOC(sm, "u_sm");
+    LOC(dc, "u_dc");
+    LOC(vp, "u_light_vp");
+    LOC(depth, "u_depth_row");
+    LOC(pyramid, "u_pyramid");
+    LOC(size, "u_pyramid_size");
+    LOC(top, "u_pyramid_top");
+#undef LOC
 }
 
 static void float_texture(stin_context *ctx, GLuint tex, int levels, int size)
@@ -145,7 +145,7 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
                   "DC are off", msg);
         return;
     }
-    locate(ctx, ctx->vdsm.polygon_prog);
+    locate(ctx);
     p->size = size;
     for (p->top = 0; (1 << p->top) < size; p->top++)
         ;
@@ -475,19 +475,21 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
     p->ready = 1;
 }
 
-void stin__vdsm_pyramid_uniforms(stin_context *ctx)
+void stin__vdsm_pyramid_uniforms(stin_context *ctx, const stin__vdsm_pyramid_locs *l)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
     uint32_t flags = ctx->desc.debug_flags;
     int on = p->ready;
-    GL(ctx, Uniform1i)(p->p_sm, on && !(flags & STIN_DEBUG_VDSM_NO_SM));
-    GL(ctx, Uniform1i)(p->p_dc, on && !(flags & STIN_DEBUG_VDSM_NO_DC));
+    GL(ctx, Uniform1i)(l->sm, on && !(flags & STIN_DEBUG_VDSM_NO_SM));
+    GL(ctx, Uniform1i)(l->dc, on && !(flags & STIN_DEBUG_VDSM_NO_DC));
     if (!on)
         return;
-    stin__bind_unit(ctx, 2, GL_TEXTURE_2D, p->levels);
-    GL(ctx, Uniform1i)(p->p_pyramid, 2);
-    GL(ctx, UniformMatrix4fv)(p->p_vp, 1, GL_FALSE, p->view_proj);
-    GL(ctx, Uniform4fv)(p->p_depth, 1, p->depth_row);
-    GL(ctx, Uniform1f)(p->p_size, (float)p->size);
-    GL(ctx, Uniform1i)(p->p_top, p->top);
+    if (l->pyramid >= 0) {
+        stin__bind_unit(ctx, 2, GL_TEXTURE_2D, p->levels);
+        GL(ctx, Uniform1i)(l->pyramid, 2);
+    }
+    GL(ctx, UniformMatrix4fv)(l->vp, 1, GL_FALSE, p->view_proj);
+    GL(ctx, Uniform4fv)(l->depth, 1, p->depth_row);
+    GL(ctx, Uniform1f)(l->size, (float)p->size);
+    GL(ctx, Uniform1i)(l->top, p->top);
 }

@@ -106,16 +106,27 @@
  * Under depth-peel each peeled layer gets the buffer drawn from its own
  * surface first (see Transparency), so the layers' masks, and their
  * pyramids' receivers, are the layer's.
- * Area lights are shadowed from their centre (logged once). Cost: every
- * triangle of every draw once per light through the geometry shader (twice
- * more through the pyramid's light pass), plus the screen area of its grown
- * shadow faces, less those behind the visible surface: each face carries its
- * own depth and is tested LESS against the position buffer's (depth clamped,
+ * Area lights are shadowed from their centre (logged once). The steps run
+ * in a culling pass of their own: per light a small geometry shader decides
+ * each triangle and transform feedback keeps the ones that cast (48 bytes
+ * each, in a GL buffer grown to the frame's casting triangles), and the
+ * shadow polygons' geometry shader runs on those alone, in one draw - from
+ * the feedback object where the context has them (GL 4.0, the "transform
+ * feedback objects" capability), else by a query's count read back (one
+ * wait per light). Frames with tessellated draws, and
+ * STIN_DEBUG_VDSM_ONE_PASS, cull and draw in one geometry shader; the mask
+ * is the same. Cost: every triangle of every draw once per light through
+ * the culling shader (twice more through the pyramid's light pass), the
+ * kept ones through the shadow polygons' shader, plus the screen area of
+ * their grown shadow faces, less those behind the visible surface: each
+ * face carries its own depth and is tested LESS against the position
+ * buffer's (depth clamped,
  * pulled toward the eye by a pixel's slope and 4 steps; the eye ray enters a
  * volume through a face it sees before it reaches a point inside, so the
  * mask is the same; STIN_DEBUG_VDSM_NO_DEPTH_TEST shades them all, for
  * measurement; needs depth clamping, core since GL 3.2);
- * STIN_DEBUG_VDSM_COUNT counts the emitted primitives. Without
+ * STIN_DEBUG_VDSM_COUNT counts the emitted primitives (and the culling
+ * passes' kept triangles, one more wait per light). Without
  * its shaders or the mask it falls back (logged) to "volume" where there is
  * a stencil buffer, else "map-pcf"; without the pyramid's shaders or
  * framebuffer it runs without SM and DC (logged).
@@ -231,7 +242,9 @@
  * hostile_test.c renders under each such state and compares bit for bit).
  * Where there are vertex array objects the frame draws with
  * vertex array 0 or its own, never through the caller's, and binds the
- * caller's again at the end.
+ * caller's again at the end. Under vdsm (GL 3.2+) the frame leaves
+ * transform feedback object 0 bound, with no buffer on its binding 0 and
+ * none on the generic transform feedback buffer binding.
  * The viewport and the framebuffer binding stay as the frame set them; the
  * caller's matrices (GL1 matrix stacks) are restored. Clear colour, clear
  * depth and polygon offset are overwritten, and so are the scissor box and
@@ -389,7 +402,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(FIXED_FUNCTION, "compatibility profile (fixed function)", 11, "")                \
     X(PACKED_DEPTH_STENCIL, "packed depth-stencil textures", 30,                      \
       "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")                        \
-    X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")
+    X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")                         \
+    X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -908,6 +922,8 @@ typedef struct stin_desc {
 #define STIN_DEBUG_VDSM_NO_DEPTH_TEST 268435456u /* shade every fragment of the shadow
                                                   * polygons, those behind the visible
                                                   * surface too */
+#define STIN_DEBUG_VDSM_ONE_PASS 2147483648u /* cull and draw in one geometry shader, no
+                                              * culling pass */
 /* Displacement speed-ups (see TIERS, displacement): */
 #define STIN_DEBUG_DISPLACE_NO_GUARD 128u /* fetch the height of every vertex, on screen
                                            * or not */
@@ -1691,6 +1707,10 @@ typedef struct stin_frame_stats {
      * this frame (each is built once, when a frame first needs it, and kept:
      * up to 32 a context) */
     uint32_t lit_specialised, lit_programs_built;
+    /* vdsm: lights (per peeled layer too) whose shadow polygons came from a
+     * culling pass's kept triangles, and with STIN_DEBUG_VDSM_COUNT the
+     * triangles those passes kept (the rest of the casters' were culled) */
+    uint32_t vdsm_cull_passes, vdsm_kept_triangles;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

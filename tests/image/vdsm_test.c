@@ -33,6 +33,14 @@
  *              (tolerance 0): a face it drops lies behind the surface, where
  *              the eye ray has not yet entered the volume, so no test it
  *              skips could hit.
+ *   cull-pass  the full chain culled first into a buffer by transform
+ *              feedback and drawn from it (the default on GL 3.2+ without
+ *              tessellated draws), and in one geometry shader
+ *              (STIN_DEBUG_VDSM_ONE_PASS), give pixel-identical masks
+ *              (tolerance 0) and emit the same primitives: both run the same
+ *              tests on the same world points. The default render must have
+ *              drawn every light from a culling pass that kept no more than
+ *              the casters' triangles, the one-pass render from none.
  *   culls      (spheres scenes) SM and DC each emit fewer primitives than
  *              the step set before them: a cull that drops nothing fails.
  *   map-size   the light pyramid at 64 texels a side gives the mask of the
@@ -206,6 +214,29 @@ static void test_depth_test(const vdsm_case *c, const capture *all)
     capture_free(&b);
 }
 
+static void test_cull_pass(const vdsm_case *c, const capture *all)
+{
+    capture b;
+    char name[256];
+    long edge, n;
+    const stin_frame_stats *f = &all->stats, *o;
+    int ok;
+    vdsm_name(c, "cull-pass", name, sizeof name);
+    if (!vdsm_render(c, SET_ALL | STIN_DEBUG_VDSM_ONE_PASS, &b, "cull-pass"))
+        return;
+    o = &b.stats;
+    n = differ(c, all, &b, &edge);
+    ok = n + edge == 0 && f->vdsm_cull_passes > 0 && o->vdsm_cull_passes == 0 &&
+         f->vdsm_primitives == o->vdsm_primitives && f->vdsm_kept_triangles > 0 &&
+         f->vdsm_kept_triangles <= f->triangles * f->vdsm_cull_passes;
+    report(c->r, ok ? "PASS" : "FAIL", name,
+           "culled first and in one pass the masks differ on %ld pixels (must be 0); "
+           "primitives emitted %u and %u (must be equal); %u culling passes kept %u "
+           "triangles (the frame draws %u)", n + edge, f->vdsm_primitives, o->vdsm_primitives,
+           f->vdsm_cull_passes, f->vdsm_kept_triangles, f->triangles);
+    capture_free(&b);
+}
+
 /* The chain's renders of one case and the tests on them. */
 static void chain_tests(const vdsm_case *c, const capture *all)
 {
@@ -226,6 +257,7 @@ static void chain_tests(const vdsm_case *c, const capture *all)
     capture_free(&sp);
     test_map_size(c, all);
     test_depth_test(c, all);
+    test_cull_pass(c, all);
 }
 
 /* The eye inside a closed 6 x 4 x 6 box (two-sided or not) with a ball on

@@ -29,6 +29,8 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GenVertexArrays ~, 1
 #define FAKE_CUSTOM_DeleteVertexArrays ~, 1
 #define FAKE_CUSTOM_GenFramebuffers ~, 1
+#define FAKE_CUSTOM_GenTransformFeedbacks ~, 1
+#define FAKE_CUSTOM_DeleteTransformFeedbacks ~, 1
 #define FAKE_CUSTOM_DeleteFramebuffers ~, 1
 #define FAKE_CUSTOM_CreateShader ~, 1
 #define FAKE_CUSTOM_ShaderSource ~, 1
@@ -92,6 +94,10 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_TexImage3D ~, 1
 #define FAKE_STATELESS_FramebufferTextureLayer ~, 1
 #define FAKE_STATELESS_BlendEquationSeparate ~, 1
+#define FAKE_STATELESS_TransformFeedbackVaryings ~, 1
+#define FAKE_STATELESS_BeginTransformFeedback ~, 1
+#define FAKE_STATELESS_EndTransformFeedback ~, 1
+#define FAKE_STATELESS_DrawTransformFeedback ~, 1
 
 #define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)
 #define FAKE_IS_STATELESS(name) FAKE_PROBE(FAKE_STATELESS_##name)
@@ -298,6 +304,7 @@ FAKE_OBJECTS(Textures, textures, FAKE_OBJ_TEXTURE)
 FAKE_OBJECTS(Buffers, buffers, FAKE_OBJ_BUFFER)
 FAKE_OBJECTS(VertexArrays, vertex_arrays, FAKE_OBJ_VERTEX_ARRAY)
 FAKE_OBJECTS(Framebuffers, framebuffers, FAKE_OBJ_FRAMEBUFFER)
+FAKE_OBJECTS(TransformFeedbacks, transform_feedbacks, FAKE_OBJ_TRANSFORM_FEEDBACK)
 
 static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt, GLsizei w,
                                           GLsizei h, GLint border, GLenum fmt, GLenum type,

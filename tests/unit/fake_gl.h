@@ -91,6 +91,7 @@ typedef struct fake_gl_state {
     int tex_level_width[FAKE_GL_MAX_LEVELS], tex_level_height[FAKE_GL_MAX_LEVELS];
     unsigned char tex_level_first_texel[FAKE_GL_MAX_LEVELS][4]; /* RGBA of texel (0, 0) */
     unsigned framebuffers_created, framebuffers_deleted;
+    unsigned transform_feedbacks_created, transform_feedbacks_deleted;
     /* shader objects: "#version" of each, by name - 1 */
     int shader_version[FAKE_GL_MAX_SHADERS];
     /* whether shader name - 1 is a tessellation control stage, and program

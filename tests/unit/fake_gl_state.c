@@ -880,20 +880,35 @@ void STIN_APIENTRY fake_BindBuffer(GLenum target, GLuint b)
         bound_vao()->element_buffer = b;
     else if (target == GL_SHADER_STORAGE_BUFFER)
         S.shader_storage_buffer = b;
+    else if (target == GL_TRANSFORM_FEEDBACK_BUFFER)
+        S.transform_feedback_buffer = b;
     else
         fake_gl_state_untracked("glBindBuffer", target);
 }
 
-/* Shader storage index 0 (deep's early-stop flag) and the generic binding. */
+/* Shader storage index 0 (deep's early-stop flag) and transform feedback
+ * index 0 (vdsm's culling pass), with their generic bindings. */
 void STIN_APIENTRY fake_BindBufferBase(GLenum target, GLuint index, GLuint b)
 {
     COUNT(BindBufferBase);
-    if (target != GL_SHADER_STORAGE_BUFFER || index != 0) {
+    if (index == 0 && target == GL_SHADER_STORAGE_BUFFER) {
+        S.shader_storage_buffer = b;
+        S.shader_storage_buffer0 = b;
+    } else if (index == 0 && target == GL_TRANSFORM_FEEDBACK_BUFFER) {
+        S.transform_feedback_buffer = b;
+        if (!S.transform_feedback)
+            S.transform_feedback_buffer0 = b;
+    } else
         fake_gl_state_untracked("glBindBufferBase", target);
-        return;
-    }
-    S.shader_storage_buffer = b;
-    S.shader_storage_buffer0 = b;
+}
+
+void STIN_APIENTRY fake_BindTransformFeedback(GLenum target, GLuint id)
+{
+    COUNT(BindTransformFeedback);
+    if (target != GL_TRANSFORM_FEEDBACK)
+        fake_gl_state_untracked("glBindTransformFeedback", target);
+    else
+        S.transform_feedback = id;
 }
 
 void STIN_APIENTRY fake_BindFramebuffer(GLenum target, GLuint fb)
@@ -992,6 +1007,8 @@ void fake_gl_state_deleted(fake_gl_object kind, GLsizei n, const GLuint *names)
             unbind(&S.pixel_unpack_buffer, name);
             unbind(&S.shader_storage_buffer, name);
             unbind(&S.shader_storage_buffer0, name);
+            unbind(&S.transform_feedback_buffer, name);
+            unbind(&S.transform_feedback_buffer0, name);
             unbind(&bound_vao()->element_buffer, name);
             break;
         case FAKE_OBJ_VERTEX_ARRAY:
@@ -1003,6 +1020,9 @@ void fake_gl_state_deleted(fake_gl_object kind, GLsizei n, const GLuint *names)
         case FAKE_OBJ_FRAMEBUFFER:
             unbind(&S.draw_framebuffer, name);
             unbind(&S.read_framebuffer, name);
+            break;
+        case FAKE_OBJ_TRANSFORM_FEEDBACK:
+            unbind(&S.transform_feedback, name);
             break;
         }
     }
@@ -1402,6 +1422,9 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(pixel_unpack_buffer, K_INT);
     WORD(shader_storage_buffer, K_INT);
     WORD(shader_storage_buffer0, K_INT);
+    WORD(transform_feedback, K_INT);
+    WORD(transform_feedback_buffer, K_INT);
+    WORD(transform_feedback_buffer0, K_INT);
     d->prefix = "vao0.";
     diff_vao(d, &a->vao0, &b->vao0);
     d->prefix = "";

@@ -180,6 +180,9 @@ typedef struct fake_gl_glstate {
     GLuint array_buffer, vertex_array_binding;
     GLuint pixel_unpack_buffer;
     GLuint shader_storage_buffer, shader_storage_buffer0; /* generic, index 0 */
+    /* the transform feedback object bound; its buffer's generic binding and
+     * index 0 of the default object (a caller's feedback would land there) */
+    GLuint transform_feedback, transform_feedback_buffer, transform_feedback_buffer0;
     fake_gl_vao vao0;
     /* programs, framebuffers, pixel transfer */
     GLuint program;
@@ -257,6 +260,7 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_StencilOpSeparate ~, 1
 #define FAKE_STATE_BindBuffer ~, 1
 #define FAKE_STATE_BindBufferBase ~, 1
+#define FAKE_STATE_BindTransformFeedback ~, 1
 #define FAKE_STATE_UseProgram ~, 1
 #define FAKE_STATE_EnableVertexAttribArray ~, 1
 #define FAKE_STATE_DisableVertexAttribArray ~, 1
@@ -295,7 +299,8 @@ typedef enum fake_gl_object {
     FAKE_OBJ_TEXTURE,
     FAKE_OBJ_BUFFER,
     FAKE_OBJ_VERTEX_ARRAY,
-    FAKE_OBJ_FRAMEBUFFER
+    FAKE_OBJ_FRAMEBUFFER,
+    FAKE_OBJ_TRANSFORM_FEEDBACK
 } fake_gl_object;
 void fake_gl_state_deleted(fake_gl_object kind, GLsizei n, const GLuint *names);
 int fake_gl_state_get(GLenum pname, GLint *data); /* 0: not a state the fake keeps */

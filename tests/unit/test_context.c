@@ -97,6 +97,7 @@ static void assert_gl_objects_balanced(void)
     assert_int_equal(fake_gl.textures_created, fake_gl.textures_deleted);
     assert_int_equal(fake_gl.shaders_created, fake_gl.shaders_deleted);
     assert_int_equal(fake_gl.programs_created, fake_gl.programs_deleted);
+    assert_int_equal(fake_gl.transform_feedbacks_created, fake_gl.transform_feedbacks_deleted);
     assert_int_equal(fake_gl.deletes_of_zero, 0);
 }
 

@@ -914,6 +914,7 @@ static void test_vdsm_tessellates_only_displaced_frames(void **state)
  * as one point per pixel; a frame with SM and DC either way. */
 static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
 {
+    stin_frame_stats st;
     (void)state;
     shadows = STIN_TECH_SHADOWS_VDSM;
     create_profile(FAKE_GL45_CORE, 16, 8);
@@ -927,8 +928,44 @@ static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
     create_profile(FAKE_GL33_CORE, 16, 8);
     assert_true(ctx->vdsm.pyramid.usable);
     assert_int_equal(ctx->vdsm.pyramid.atomic_prog, 0);
-    assert_int_equal(frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY).vdsm_atomic_receivers, 0);
-    assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 0);
+    st = frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.vdsm_atomic_receivers, 0);
+    /* only the culling pass's feedback buffer: bound and unbound */
+    assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 2 * st.vdsm_cull_passes);
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
+/* vdsm culls first: per light one transform-feedback pass, its kept
+ * triangles drawn in one draw - from the feedback object on GL 4.0+, by a
+ * query's count before it - and the one-pass program under
+ * STIN_DEBUG_VDSM_ONE_PASS. */
+static void test_vdsm_culls_into_feedback_then_draws_once(void **state)
+{
+    stin_frame_stats st;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VDSM;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    assert_true(ctx->vdsm.culling.usable && ctx->vdsm.culling.feedback != 0);
+    assert_int_equal(ctx->vdsm.culling.query, 0); /* no wait without STIN_DEBUG_VDSM_COUNT */
+    st = frame_with(2, 3, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.vdsm_cull_passes, 2);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 2);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_EndTransformFeedback], 2);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_DrawTransformFeedback], 2);
+    assert_true(ctx->vdsm.culling.capacity >= 3 * 2); /* three quads' triangles */
+    create_profile(FAKE_GL33_CORE, 16, 8);
+    assert_true(ctx->vdsm.culling.usable);
+    assert_int_equal(ctx->vdsm.culling.feedback, 0); /* counted by a query instead */
+    st = frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.vdsm_cull_passes, 1);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 1);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_DrawTransformFeedback], 0);
+    debug_flags = STIN_DEBUG_VDSM_ONE_PASS;
+    create_profile(FAKE_GL45_CORE, 16, 8);
+    st = frame_with(2, 3, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(st.vdsm_cull_passes, 0);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 0);
+    debug_flags = 0;
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
@@ -1016,6 +1053,7 @@ int main(void)
         TEST(test_export_without_room_for_transmittance),
         TEST(test_vdsm_tessellates_only_displaced_frames),
         TEST(test_vdsm_receivers_by_atomics_on_gl43),
+        TEST(test_vdsm_culls_into_feedback_then_draws_once),
         TEST(test_frame_leaves_documented_state),
         TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
         TEST(test_texture_without_mips),

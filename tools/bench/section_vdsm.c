@@ -1,7 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* The VDSM section (gl4): per --scenes scene the seed's optimisation chain
  * one step set a row - SP alone, + EP, + SM, + DC, + DT (the shadow faces
- * depth-tested against the visible surface: the full chain) - and
+ * depth-tested against the visible surface: the full chain, its steps in
+ * a culling pass of their own), the full chain in one geometry shader
+ * (STIN_DEBUG_VDSM_ONE_PASS) - and
  * stencil volumes, each timed against shadows off. The vdsm rows count the
  * primitives their geometry shader emits (STIN_DEBUG_VDSM_COUNT, the seed's
  * P_c: one wait for the GPU per light, in the timed frames too). Where the
@@ -31,6 +33,7 @@ static const struct step_set {
     {"SP+EP+SM", STIN_TECH_SHADOWS_VDSM, COUNT | NO_DT | STIN_DEBUG_VDSM_NO_DC},
     {"SP+EP+SM+DC", STIN_TECH_SHADOWS_VDSM, COUNT | NO_DT},
     {"SP+EP+SM+DC+DT", STIN_TECH_SHADOWS_VDSM, COUNT},
+    {"the same in one pass", STIN_TECH_SHADOWS_VDSM, COUNT | STIN_DEBUG_VDSM_ONE_PASS},
     {"volume", STIN_TECH_SHADOWS_VOLUME, 0},
 };
 enum { N = sizeof sets / sizeof sets[0], SP = 0, VOLUME = N - 1 };

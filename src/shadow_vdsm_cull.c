@@ -1,0 +1,200 @@
+/* SPDX-License-Identifier: MIT */
+/* VDSM's culling pass. The chain's steps (EP, SM, DC) drop most triangles
+ * (the full chain keeps 0.07-0.34 of SP's primitives on the seed's scenes),
+ * but in one geometry shader every triangle still runs the shadow
+ * polygons' large body: a driver that runs shaders on masked lanes
+ * (llvmpipe) pays for all of it, and a GPU sizes the stage's output for
+ * its 48 vertices. So, per light, a small geometry shader
+ * (shaders/gl4/vdsm_cull.geom) decides each triangle and transform feedback
+ * writes one point per kept one - its world corners, DC's clip depth and
+ * whether it draws its own face, 48 bytes - into a buffer sized to the
+ * frame's casting triangles; the shadow-polygon program (vdsm_fed.geom)
+ * then draws those points in one draw. Where the context has transform
+ * feedback objects (GL 4.0) the draw takes its count from the object on
+ * the GPU; else a query reads it back (one wait per light). The two
+ * programs see the same world points (displaced by the culling pass's
+ * vertex stage), so the mask is the one the single pass draws
+ * (tests/image/vdsm_test.c "vdsm-cull-pass"). Tessellated frames keep
+ * the single pass: their triangle count is not known before the draw. */
+#include "internal.h"
+
+#define BYTES_PER_TRIANGLE 48u /* three vec4: a corner and one value each */
+
+void stin__vdsm_cull_release(stin_context *ctx)
+{
+    stin__vdsm_cull *c = &ctx->vdsm.culling;
+    GLuint none = 0;
+    stin__vdsm_delete_programs(ctx, &c->cull_prog, &c->fed_prog, &none);
+    if (c->buffer)
+        GL(ctx, DeleteBuffers)(1, &c->buffer);
+    if (c->vao)
+        GL(ctx, DeleteVertexArrays)(1, &c->vao);
+    if (c->feedback)
+        GL(ctx, DeleteTransformFeedbacks)(1, &c->feedback);
+    if (c->query)
+        GL(ctx, DeleteQueries)(1, &c->query);
+    stin__memzero(c, sizeof *c);
+}
+
+static GLuint cull_program(stin_context *ctx, char *msg, size_t size)
+{
+    static const char *const steps[] = {"gl4/vdsm_side.glsl", "gl4/vdsm_cull.glsl", NULL};
+    static const char *const kept[] = {"t_v0", "t_v1", "t_v2", NULL};
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = "gl4/vdsm.vert";
+    src.geom = "gl4/vdsm_cull.geom";
+    src.geom_chunks = steps;
+    src.feedback = kept;
+    return stin__program_build_source(ctx, &src, msg, size);
+}
+
+static GLuint fed_program(stin_context *ctx, char *msg, size_t size)
+{
+    static const char *const volume[] = {"gl4/vdsm_side.glsl", "gl4/vdsm_volume.glsl", NULL};
+    static const char *const segment[] = {"gl4/vdsm_segment.glsl", NULL};
+    static const char *const inputs[] = {"a_v0", "a_v1", "a_v2", NULL};
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = "gl4/vdsm_fed.vert";
+    src.attributes = inputs;
+    src.geom = "gl4/vdsm_fed.geom";
+    src.geom_chunks = volume;
+    src.frag = "gl4/vdsm.frag";
+    src.frag_chunks = segment;
+    return stin__program_build_source(ctx, &src, msg, size);
+}
+
+/* The fed pass's arrays: each kept triangle one vertex of three vec4s. */
+static void arrays(stin_context *ctx, stin__vdsm_cull *c)
+{
+    GLuint i;
+    GL(ctx, GenBuffers)(1, &c->buffer);
+    GL(ctx, GenVertexArrays)(1, &c->vao);
+    GL(ctx, BindVertexArray)(c->vao);
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, c->buffer);
+    for (i = 0; i < 3; i++) {
+        GL(ctx, EnableVertexAttribArray)(i);
+        GL(ctx, VertexAttribPointer)(i, 4, GL_FLOAT, GL_FALSE, (GLsizei)BYTES_PER_TRIANGLE,
+                                     (const void *)(size_t)(16u * i));
+    }
+    GL(ctx, BindVertexArray)(0);
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+void stin__vdsm_cull_init(stin_context *ctx)
+{
+    stin__vdsm_cull *c = &ctx->vdsm.culling;
+    char msg[160];
+    stin__memzero(c, sizeof *c);
+    msg[0] = '\0';
+    c->cull_prog = cull_program(ctx, msg, sizeof msg);
+    if (c->cull_prog)
+        c->fed_prog = fed_program(ctx, msg, sizeof msg);
+    if (!c->fed_prog) {
+        stin__vdsm_cull_release(ctx);
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                  "vdsm: the culling pass's shaders failed to build (%s): one geometry "
+                  "shader culls and draws the shadow polygons", msg);
+        return;
+    }
+    stin__vdsm_polygon_locate(ctx, c->cull_prog, &c->cull);
+    stin__vdsm_polygon_locate(ctx, c->fed_prog, &c->fed);
+    arrays(ctx, c);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_TRANSFORM_FEEDBACK))
+        GL(ctx, GenTransformFeedbacks)(1, &c->feedback);
+    if (!c->feedback || (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT))
+        GL(ctx, GenQueries)(1, &c->query);
+    c->usable = 1;
+}
+
+/* Room for every triangle the frame's casters have (each keeps at most
+ * itself); grown, never shrunk. 0 where it does not fit. */
+static int reserve(stin_context *ctx, stin__vdsm_cull *c)
+{
+    uint64_t n = 0;
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (!stin__translucent_skips(ctx, d))
+            n += ctx->meshes[d->mesh_slot].triangle_count;
+    }
+    if (n <= c->capacity)
+        return 1;
+    n += n / 4; /* room to grow without a reallocation per frame */
+    if (n * BYTES_PER_TRIANGLE > 0x7fffffffu)
+        return 0;
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, c->buffer);
+    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(n * BYTES_PER_TRIANGLE), NULL,
+                        GL_DYNAMIC_COPY);
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    c->capacity = (uint32_t)n;
+    return 1;
+}
+
+/* The buffer on feedback binding 0, of the feedback object where there is
+ * one, else of the default one (bind 0 to give it back). */
+static void feedback_target(stin_context *ctx, const stin__vdsm_cull *c, GLuint buffer)
+{
+    if (c->feedback)
+        GL(ctx, BindTransformFeedback)(GL_TRANSFORM_FEEDBACK, buffer ? c->feedback : 0u);
+    if (buffer || !c->feedback)
+        GL(ctx, BindBufferBase)(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffer);
+    if (!buffer)
+        GL(ctx, BindBuffer)(GL_TRANSFORM_FEEDBACK_BUFFER, 0);
+}
+
+int stin__vdsm_cull_on(stin_context *ctx)
+{
+    stin__vdsm_cull *c = &ctx->vdsm.culling;
+    if (!c->usable || ctx->vdsm.tess_active || (ctx->desc.debug_flags & STIN_DEBUG_VDSM_ONE_PASS))
+        return 0;
+    if (reserve(ctx, c))
+        return 1;
+    c->usable = 0; /* past 44 million casting triangles */
+    stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+              "vdsm: the culling pass's buffer would pass 2 GB: one geometry shader culls "
+              "and draws the shadow polygons from now on");
+    return 0;
+}
+
+int stin__vdsm_cull_pass(stin_context *ctx, const float light[4])
+{
+    stin__vdsm_cull *c = &ctx->vdsm.culling;
+    GLuint kept = 1;
+    GL(ctx, UseProgram)(c->cull_prog);
+    stin__vdsm_polygon_uniforms(ctx, &c->cull, light);
+    feedback_target(ctx, c, c->buffer);
+    GL_ENABLE(ctx, GL_RASTERIZER_DISCARD);
+    if (c->query)
+        GL(ctx, BeginQuery)(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, c->query);
+    GL(ctx, BeginTransformFeedback)(GL_POINTS);
+    stin__vdsm_draw_casters(ctx, &c->cull);
+    GL(ctx, EndTransformFeedback)();
+    if (c->query) {
+        GL(ctx, EndQuery)(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+        GL(ctx, GetQueryObjectuiv)(c->query, GL_QUERY_RESULT, &kept);
+        c->kept = kept;
+        ctx->stats.vdsm_kept_triangles += kept;
+    }
+    GL_DISABLE(ctx, GL_RASTERIZER_DISCARD);
+    feedback_target(ctx, c, 0);
+    ctx->stats.vdsm_cull_passes++;
+    ctx->stats.passes++;
+    GL(ctx, UseProgram)(c->fed_prog);
+    stin__vdsm_polygon_uniforms(ctx, &c->fed, light);
+    return kept != 0;
+}
+
+void stin__vdsm_cull_draw(stin_context *ctx)
+{
+    const stin__vdsm_cull *c = &ctx->vdsm.culling;
+    GL(ctx, BindVertexArray)(c->vao);
+    if (c->feedback)
+        GL(ctx, DrawTransformFeedback)(GL_POINTS, c->feedback);
+    else
+        GL(ctx, DrawArrays)(GL_POINTS, 0, (GLsizei)c->kept);
+    GL(ctx, BindVertexArray)(0);
+    ctx->bound_mesh = 0xffffffffu;
+}
