@@ -116,7 +116,8 @@ typedef struct stin__vdsm_pyramid {
     GLuint stencil;             /* the light pass's per-draw outline marks */
     GLuint points;              /* a vertex array without arrays: one point per pixel */
     GLuint light_prog, receiver_prog, reduce_prog;
-    int size, top;              /* texels a side of level 0; the coarsest level (1 x 1) */
+    int alloc;                  /* texels a side allocated (desc.shadow_map_size, <= 2048) */
+    int size, top;              /* this frame's level 0 side (<= alloc); its 1 x 1 level */
     int usable;                 /* programs and framebuffer are there */
     int ready;                  /* this light's pyramid is drawn (else SM and DC are off) */
     int perspective;            /* the light's view is a perspective one */
@@ -173,18 +174,18 @@ typedef struct stin__vdsm_polygon_locs {
 } stin__vdsm_polygon_locs;
 
 /* vdsm's culling pass (shadow_vdsm_cull.c): per light, EP, SM and DC in a
- * small geometry shader whose kept triangles transform feedback writes to
- * a buffer, one point each; the shadow-polygon program then draws those
- * alone, in one draw (from the feedback object where the context has
+ * small geometry shader whose kept faces (a triangle's side faces and own
+ * face the eye sees) transform feedback writes to a buffer, one point each;
+ * the shadow-polygon program then draws those alone, in one draw (from the feedback object where the context has
  * them, else by the count a query read back). */
 typedef struct stin__vdsm_cull {
     GLuint cull_prog, fed_prog;
-    GLuint buffer, vao;         /* the kept triangles, 48 bytes each; the fed pass's arrays */
+    GLuint buffer, vao;         /* the kept faces, 48 bytes each; the fed pass's arrays */
     GLuint feedback, query;     /* feedback object (or 0); primitives-written query (or 0) */
-    uint32_t capacity;          /* triangles the buffer holds */
+    uint32_t capacity;          /* faces the buffer holds */
     stin__vdsm_polygon_locs cull, fed;
     int usable;
-    uint32_t kept;              /* triangles kept by the last light's pass, where counted */
+    uint32_t kept;              /* faces kept by the last light's pass, where counted */
 } stin__vdsm_cull;
 
 typedef struct stin__vdsm_state {

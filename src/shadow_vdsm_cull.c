@@ -2,23 +2,26 @@
 /* VDSM's culling pass. The chain's steps (EP, SM, DC) drop most triangles
  * (the full chain keeps 0.07-0.34 of SP's primitives on the seed's scenes),
  * but in one geometry shader every triangle still runs the shadow
- * polygons' large body: a driver that runs shaders on masked lanes
- * (llvmpipe) pays for all of it, and a GPU sizes the stage's output for
- * its 48 vertices. So, per light, a small geometry shader
- * (shaders/gl4/vdsm_cull.geom) decides each triangle and transform feedback
- * writes one point per kept one - its world corners, DC's clip depth and
- * whether it draws its own face, 48 bytes - into a buffer sized to the
- * frame's casting triangles; the shadow-polygon program (vdsm_fed.geom)
- * then draws those points in one draw. Where the context has transform
- * feedback objects (GL 4.0) the draw takes its count from the object on
- * the GPU; else a query reads it back (one wait per light). The two
- * programs see the same world points (displaced by the culling pass's
- * vertex stage), so the mask is the one the single pass draws
- * (tests/image/vdsm_test.c "vdsm-cull-pass"). Tessellated frames keep
- * the single pass: their triangle count is not known before the draw. */
+ * polygons' large body, all three side faces and its own: a driver that
+ * runs shaders on masked lanes (llvmpipe) pays for all of it, and a GPU
+ * sizes the stage's output for 48 vertices. So, per light, a small
+ * geometry shader (shaders/gl4/vdsm_cull.geom) decides each triangle, and
+ * for each that casts transform feedback writes one point per part of its
+ * volume the eye sees - a side face, its own face or the whole viewport:
+ * its world corners, DC's clip depth and the part, 48 bytes - into a
+ * buffer sized to the frame's casting triangles (at most 4 parts each).
+ * The shadow-polygon program (vdsm_fed.geom, 12 vertices out) then draws
+ * each point's face in one draw. Where the context has transform feedback
+ * objects (GL 4.0) the draw takes its count from the object on the GPU;
+ * else a query reads it back (one wait per light). Both passes see the same
+ * world points (displaced by the culling pass's vertex stage) and build the
+ * same faces, so the mask and the primitives are the one-pass program's
+ * (tests/image/vdsm_test.c "vdsm-cull-pass"). Tessellated frames keep the
+ * one pass: their triangle count is not known before the draw. */
 #include "internal.h"
 
-#define BYTES_PER_TRIANGLE 48u /* three vec4: a corner and one value each */
+#define BYTES_PER_PART 48u /* three vec4: a corner and one value each */
+#define PARTS_PER_TRIANGLE 4u /* three side faces and its own, or the viewport */
 
 void stin__vdsm_cull_release(stin_context *ctx)
 {
@@ -38,7 +41,8 @@ void stin__vdsm_cull_release(stin_context *ctx)
 
 static GLuint cull_program(stin_context *ctx, char *msg, size_t size)
 {
-    static const char *const steps[] = {"gl4/vdsm_side.glsl", "gl4/vdsm_cull.glsl", NULL};
+    static const char *const steps[] = {"gl4/vdsm_side.glsl", "gl4/vdsm_cull.glsl",
+                                        "gl4/vdsm_volume.glsl", NULL};
     static const char *const kept[] = {"t_v0", "t_v1", "t_v2", NULL};
     stin__program_source src;
     stin__memzero(&src, sizeof src);
@@ -65,7 +69,7 @@ static GLuint fed_program(stin_context *ctx, char *msg, size_t size)
     return stin__program_build_source(ctx, &src, msg, size);
 }
 
-/* The fed pass's arrays: each kept triangle one vertex of three vec4s. */
+/* The fed pass's arrays: each kept part one vertex of three vec4s. */
 static void arrays(stin_context *ctx, stin__vdsm_cull *c)
 {
     GLuint i;
@@ -75,7 +79,7 @@ static void arrays(stin_context *ctx, stin__vdsm_cull *c)
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, c->buffer);
     for (i = 0; i < 3; i++) {
         GL(ctx, EnableVertexAttribArray)(i);
-        GL(ctx, VertexAttribPointer)(i, 4, GL_FLOAT, GL_FALSE, (GLsizei)BYTES_PER_TRIANGLE,
+        GL(ctx, VertexAttribPointer)(i, 4, GL_FLOAT, GL_FALSE, (GLsizei)BYTES_PER_PART,
                                      (const void *)(size_t)(16u * i));
     }
     GL(ctx, BindVertexArray)(0);
@@ -109,8 +113,8 @@ void stin__vdsm_cull_init(stin_context *ctx)
     c->usable = 1;
 }
 
-/* Room for every triangle the frame's casters have (each keeps at most
- * itself); grown, never shrunk. 0 where it does not fit. */
+/* Room for every part of every triangle the frame's casters have; grown,
+ * never shrunk. 0 where it does not fit. */
 static int reserve(stin_context *ctx, stin__vdsm_cull *c)
 {
     uint64_t n = 0;
@@ -118,15 +122,15 @@ static int reserve(stin_context *ctx, stin__vdsm_cull *c)
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (!stin__translucent_skips(ctx, d))
-            n += ctx->meshes[d->mesh_slot].triangle_count;
+            n += PARTS_PER_TRIANGLE * ctx->meshes[d->mesh_slot].triangle_count;
     }
     if (n <= c->capacity)
         return 1;
     n += n / 4; /* room to grow without a reallocation per frame */
-    if (n * BYTES_PER_TRIANGLE > 0x7fffffffu)
+    if (n * BYTES_PER_PART > 0x7fffffffu)
         return 0;
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, c->buffer);
-    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(n * BYTES_PER_TRIANGLE), NULL,
+    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(n * BYTES_PER_PART), NULL,
                         GL_DYNAMIC_COPY);
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     c->capacity = (uint32_t)n;
@@ -152,7 +156,7 @@ int stin__vdsm_cull_on(stin_context *ctx)
         return 0;
     if (reserve(ctx, c))
         return 1;
-    c->usable = 0; /* past 44 million casting triangles */
+    c->usable = 0; /* past 11 million casting triangles */
     stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
               "vdsm: the culling pass's buffer would pass 2 GB: one geometry shader culls "
               "and draws the shadow polygons from now on");
@@ -176,7 +180,7 @@ int stin__vdsm_cull_pass(stin_context *ctx, const float light[4])
         GL(ctx, EndQuery)(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
         GL(ctx, GetQueryObjectuiv)(c->query, GL_QUERY_RESULT, &kept);
         c->kept = kept;
-        ctx->stats.vdsm_kept_triangles += kept;
+        ctx->stats.vdsm_kept_faces += kept;
     }
     GL_DISABLE(ctx, GL_RASTERIZER_DISCARD);
     feedback_target(ctx, c, 0);

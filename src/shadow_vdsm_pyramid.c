@@ -41,6 +41,8 @@
 /* Texels a side at most (desc.shadow_map_size beyond it: this): 2048 is
  * 96 MB of GL memory (and 16 MB for the receivers' words on GL 4.3). */
 #define MAX_SIZE 2048u
+/* Texels a side of the finest level drawn at least (size_to_viewport). */
+#define MIN_DRAWN 256
 /* Widest half angle of a perspective light view, as its tangent (83
  * degrees). */
 #define MAX_TAN 8.0f
@@ -146,7 +148,7 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
         return;
     }
     locate(ctx);
-    p->size = size;
+    p->alloc = p->size = size;
     for (p->top = 0; (1 << p->top) < size; p->top++)
         ;
     GL(ctx, GenFramebuffers)(1, &p->fbo);
@@ -420,6 +422,22 @@ static void reduce(stin_context *ctx)
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
 }
 
+/* Level 0's side for viewport vp: the power of two nearest half its larger
+ * side, at least 256 and at most the allocation. A finer level costs its
+ * clear and reduction in fill and culls few more triangles; a coarser one
+ * than 256 culls markedly fewer (docs/benchmarks.md, "The pyramid sized to
+ * the viewport"). The mask is the same at any size. */
+static void size_to_viewport(stin__vdsm_pyramid *p, const int vp[4])
+{
+    int want = (vp[2] > vp[3] ? vp[2] : vp[3]) / 2;
+    int s = p->alloc < MIN_DRAWN ? p->alloc : MIN_DRAWN;
+    while (s < p->alloc && s * 3 < want * 2) /* 2s is nearer want than s is */
+        s *= 2;
+    p->size = s;
+    for (p->top = 0; (1 << p->top) < s; p->top++)
+        ;
+}
+
 void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
@@ -438,12 +456,17 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
         p->said_no_view = 1;
         return;
     }
+    size_to_viewport(p, vp);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, p->fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p->accum,
                                   0);
     GL(ctx, Viewport)(0, 0, p->size, p->size);
     ps.depth_test = ps.depth_write = ps.stencil_test = ps.blend = ps.cull = 0;
-    ps.scissor = ps.depth_clamp = ps.polygon_offset = 0;
+    ps.depth_clamp = ps.polygon_offset = 0;
+    /* the clear (and everything after it) within this frame's level 0 */
+    ps.scissor = p->size < p->alloc;
+    ps.scissor_box[0] = ps.scissor_box[1] = 0;
+    ps.scissor_box[2] = ps.scissor_box[3] = p->size;
     ps.color_write = 1;
     ps.color_only = 0;
     ps.stencil_write_mask = 0xffffffffu;

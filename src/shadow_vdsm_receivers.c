@@ -88,6 +88,7 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4])
     if (!p->deepest)
         make_words(ctx);
     ps.color_write = 0;
+    ps.scissor = 0; /* the pyramid's scissor box is not the frame's viewport */
     stin__pass_apply(ctx, &ps);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);

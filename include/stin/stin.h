@@ -108,9 +108,10 @@
  * pyramids' receivers, are the layer's.
  * Area lights are shadowed from their centre (logged once). The steps run
  * in a culling pass of their own: per light a small geometry shader decides
- * each triangle and transform feedback keeps the ones that cast (48 bytes
- * each, in a GL buffer grown to the frame's casting triangles), and the
- * shadow polygons' geometry shader runs on those alone, in one draw - from
+ * each triangle and transform feedback keeps the faces of its volume the
+ * eye sees (48 bytes each, in a GL buffer grown to 4 a casting triangle of
+ * the frame: 192 bytes), and the shadow polygons' geometry shader draws
+ * those alone, one face an invocation, in one draw - from
  * the feedback object where the context has them (GL 4.0, the "transform
  * feedback objects" capability), else by a query's count read back (one
  * wait per light). Frames with tessellated draws, and
@@ -126,7 +127,7 @@
  * mask is the same; STIN_DEBUG_VDSM_NO_DEPTH_TEST shades them all, for
  * measurement; needs depth clamping, core since GL 3.2);
  * STIN_DEBUG_VDSM_COUNT counts the emitted primitives (and the culling
- * passes' kept triangles, one more wait per light). Without
+ * passes' kept faces, one more wait per light). Without
  * its shaders or the mask it falls back (logged) to "volume" where there is
  * a stencil buffer, else "map-pcf"; without the pyramid's shaders or
  * framebuffer it runs without SM and DC (logged).
@@ -1708,9 +1709,10 @@ typedef struct stin_frame_stats {
      * up to 32 a context) */
     uint32_t lit_specialised, lit_programs_built;
     /* vdsm: lights (per peeled layer too) whose shadow polygons came from a
-     * culling pass's kept triangles, and with STIN_DEBUG_VDSM_COUNT the
-     * triangles those passes kept (the rest of the casters' were culled) */
-    uint32_t vdsm_cull_passes, vdsm_kept_triangles;
+     * culling pass, and with STIN_DEBUG_VDSM_COUNT the faces those passes
+     * kept (the side faces and own faces of casting triangles the eye sees,
+     * or the viewport where the eye is inside a triangle's volume) */
+    uint32_t vdsm_cull_passes, vdsm_kept_faces;
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);

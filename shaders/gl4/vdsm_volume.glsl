@@ -191,35 +191,44 @@ void put_face(vec4 w[4], int n)
     put_polygon(r, m, depth);
 }
 
-// Draws the faces of triangle v's volume the eye sees; caps: also the
-// triangle itself where the eye sees its volume through it.
-void vdsm_volume(vec3 v[3], float clip, bool caps)
+// The far ends of triangle v's edges: at infinity, or with DC where the
+// light depth reaches the clip. The eye beyond that plane would see the far
+// cap, which is not drawn: such a volume stays infinite.
+void far_ends(vec3 v[3], float clip, out vec4 far[3])
 {
-    tri = v;
+    for (int i = 0; i < 3; i++)
+        far[i] = extruded(v[i]);
+    if (clip >= UNCLIPPED)
+        return;
+    for (int i = 0; i < 3; i++) {
+        vec3 dir = far[i].xyz;
+        float rate = dot(u_depth_row.xyz, dir);
+        float t = rate > 0.0 ? max(clip - dot(u_depth_row, vec4(v[i], 1.0)), 0.0) / rate : -1.0;
+        far[i] = vec4(v[i] + dir * t, 1.0);
+        if (t < 0.0)
+            clip = UNCLIPPED;
+    }
+    vec3 fn = cross(far[1].xyz - far[0].xyz, far[2].xyz - far[0].xyz);
+    vec4 fp = vec4(fn, -dot(fn, far[0].xyz));
+    if (clip >= UNCLIPPED || !(side(fp, u_camera) * side(fp, u_light) > 0.0))
+        for (int i = 0; i < 3; i++)
+            far[i] = extruded(v[i]);
+}
+
+// The parts of triangle v's volume the eye sees, as bits: PART_SIDE << e
+// for the face extruded from edge e (v[e], v[e + 1]), PART_OWN for the
+// triangle itself, PART_SCREEN for the whole viewport (the eye inside the
+// volume: every pixel may be in it). caps: the triangle is not in the depth
+// buffer (blended), so its own face counts wherever the eye looks into the
+// volume through it.
+const int PART_SIDE = 1;
+const int PART_OWN = 8;
+const int PART_SCREEN = 16;
+int vdsm_parts(vec3 v[3], bool caps)
+{
     vec3 nc = cross(v[1] - v[0], v[2] - v[0]);
     vec4 cap = vec4(nc, -dot(nc, v[0]));
     float lit = side(cap, u_light);
-    // Each edge's far end: at infinity, or with DC where the light depth
-    // reaches the clip. The eye beyond that plane would see the far cap,
-    // which is not drawn: such a volume stays infinite.
-    vec4 far[3];
-    for (int i = 0; i < 3; i++)
-        far[i] = extruded(v[i]);
-    if (clip < UNCLIPPED) {
-        for (int i = 0; i < 3; i++) {
-            vec3 dir = far[i].xyz;
-            float rate = dot(u_depth_row.xyz, dir);
-            float t = rate > 0.0 ? max(clip - dot(u_depth_row, vec4(v[i], 1.0)), 0.0) / rate : -1.0;
-            far[i] = vec4(v[i] + dir * t, 1.0);
-            if (t < 0.0)
-                clip = UNCLIPPED;
-        }
-        vec3 fn = cross(far[1].xyz - far[0].xyz, far[2].xyz - far[0].xyz);
-        vec4 fp = vec4(fn, -dot(fn, far[0].xyz));
-        if (clip >= UNCLIPPED || !(side(fp, u_camera) * side(fp, u_light) > 0.0))
-            for (int i = 0; i < 3; i++)
-                far[i] = extruded(v[i]);
-    }
     // The volume's faces, oriented so the triangle is inside each.
     vec4 faces[3];
     bool eye_inside = side(cap, u_camera) * lit < 0.0;
@@ -231,26 +240,12 @@ void vdsm_volume(vec3 v[3], float clip, bool caps)
         if (side(f, u_camera) < 0.0)
             eye_inside = false;
     }
-    vec2 screen[GROWN_MAX];
-    if (eye_inside) { // every pixel may be in it: the whole viewport
-        screen[0] = vec2(0.0);
-        screen[1] = vec2(u_viewport.z, 0.0);
-        screen[2] = u_viewport.zw;
-        screen[3] = vec2(0.0, u_viewport.w);
-        put_polygon(screen, 4, everywhere());
-        return;
-    }
-    vec4 w[4];
-    for (int e = 0; e < 3; e++) {
-        if (side(faces[e], u_camera) > 0.0)
-            continue; // the eye is on the inner side: a face it sees from within
-        int f = e < 2 ? e + 1 : 0;
-        w[0] = vec4(v[e], 1.0);
-        w[1] = vec4(v[f], 1.0);
-        w[2] = far[f];
-        w[3] = far[e];
-        put_face(w, 4);
-    }
+    if (eye_inside)
+        return PART_SCREEN;
+    int parts = 0;
+    for (int e = 0; e < 3; e++) // where the eye is on the inner side, it sees the face from within
+        if (!(side(faces[e], u_camera) > 0.0))
+            parts |= PART_SIDE << e;
     // The triangle itself: where the eye looks into the volume through it,
     // what it sees there lies behind the triangle and is hidden by it, unless
     // the triangle is not in the depth buffer (blended) or lies before the
@@ -261,11 +256,48 @@ void vdsm_volume(vec3 v[3], float clip, bool caps)
             vec4 c = u_view_proj * vec4(v[i], 1.0);
             near_cut = near_cut || c.z < -c.w;
         }
-        if (caps || near_cut) {
-            w[0] = vec4(v[0], 1.0);
-            w[1] = vec4(v[1], 1.0);
-            w[2] = vec4(v[2], 1.0);
-            put_face(w, 3);
-        }
+        if (caps || near_cut)
+            parts |= PART_OWN;
     }
+    return parts;
+}
+
+// Draws part `part` (one bit of vdsm_parts) of triangle v's volume, whose
+// edges end at far.
+void vdsm_part(vec3 v[3], vec4 far[3], int part)
+{
+    tri = v;
+    vec4 w[4];
+    if (part == PART_SCREEN) {
+        vec2 screen[GROWN_MAX];
+        screen[0] = vec2(0.0);
+        screen[1] = vec2(u_viewport.z, 0.0);
+        screen[2] = u_viewport.zw;
+        screen[3] = vec2(0.0, u_viewport.w);
+        put_polygon(screen, 4, everywhere());
+    } else if (part == PART_OWN) {
+        w[0] = vec4(v[0], 1.0);
+        w[1] = vec4(v[1], 1.0);
+        w[2] = vec4(v[2], 1.0);
+        put_face(w, 3);
+    } else {
+        int e = part == PART_SIDE ? 0 : part == PART_SIDE << 1 ? 1 : 2;
+        int f = e < 2 ? e + 1 : 0;
+        w[0] = vec4(v[e], 1.0);
+        w[1] = vec4(v[f], 1.0);
+        w[2] = far[f];
+        w[3] = far[e];
+        put_face(w, 4);
+    }
+}
+
+// Draws every part of triangle v's volume the eye sees.
+void vdsm_volume(vec3 v[3], float clip, bool caps)
+{
+    int parts = vdsm_parts(v, caps);
+    vec4 far[3];
+    far_ends(v, clip, far);
+    for (int k = 0; k < 5; k++)
+        if ((parts & (1 << k)) != 0)
+            vdsm_part(v, far, 1 << k);
 }

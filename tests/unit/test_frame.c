@@ -952,7 +952,12 @@ static void test_vdsm_culls_into_feedback_then_draws_once(void **state)
     assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_EndTransformFeedback], 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawTransformFeedback], 2);
-    assert_true(ctx->vdsm.culling.capacity >= 3 * 2); /* three quads' triangles */
+    assert_true(ctx->vdsm.culling.capacity >= 4 * 3 * 2); /* three quads' triangles' parts */
+    /* the pyramid allocated at the map size, drawn at the 64 x 48 viewport's
+     * (the power of two nearest 32, at least 256) */
+    assert_int_equal(ctx->vdsm.pyramid.alloc, 1024);
+    assert_int_equal(ctx->vdsm.pyramid.size, 256);
+    assert_int_equal(ctx->vdsm.pyramid.top, 8);
     create_profile(FAKE_GL33_CORE, 16, 8);
     assert_true(ctx->vdsm.culling.usable);
     assert_int_equal(ctx->vdsm.culling.feedback, 0); /* counted by a query instead */

@@ -189,9 +189,10 @@ static int by_value(const void *a, const void *b)
 #define STAGED_FRAMES 64
 
 /* The row's GPU time per stage: a context of its configuration with
- * STIN_DEBUG_STAGE_TIMES, one warm-up frame, then the settings' frames (at
- * most STAGED_FRAMES), the median per stage. Leaves row->staged 0 where
- * the context has no timer queries. */
+ * STIN_DEBUG_STAGE_TIMES (and its counted_flags), one warm-up frame, then
+ * the settings' frames (at most STAGED_FRAMES), the median per stage.
+ * Leaves row->staged 0 where the context has no timer queries; with
+ * counted_flags the warm-up frame's primitives are the row's. */
 static int staged_row(setup *u, tech_row *row, char *err, size_t err_size)
 {
     static double ms[STIN_STAGE_COUNT][STAGED_FRAMES];
@@ -200,7 +201,7 @@ static int staged_row(setup *u, tech_row *row, char *err, size_t err_size)
     char why[160];
     int k, i, n = u->st->frames < STAGED_FRAMES ? u->st->frames : STAGED_FRAMES, ok = 0;
     memset(&timed, 0, sizeof timed);
-    cfg.debug_flags |= STIN_DEBUG_STAGE_TIMES;
+    cfg.debug_flags |= STIN_DEBUG_STAGE_TIMES | cfg.counted_flags;
     if (side_create(u, &timed, &cfg, &u->sc, why, sizeof why, err, err_size) <= 0)
         goto done;
     for (k = -1; k < n; k++) {
@@ -210,6 +211,8 @@ static int staged_row(setup *u, tech_row *row, char *err, size_t err_size)
             goto done;
         }
         fs = stin_query_frame_stats(timed.ctx);
+        if (k < 0 && cfg.counted_flags)
+            row->primitives = fs.vdsm_primitives;
         if (!fs.stage_times) {
             ok = 1; /* no timer queries: no stage column */
             goto done;
@@ -272,7 +275,8 @@ static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_siz
                 row->cfg.pcf_kernel, stin_technique_name(row->cfg.surface), on_ms, base_ms);
     row->rendered = fs.shadow_map_size;
     row->passes = fs.passes;
-    row->primitives = fs.vdsm_primitives;
+    if (!row->cfg.counted_flags)
+        row->primitives = fs.vdsm_primitives;
     row->peel_passes = fs.peel_passes;
     bench_keep_min(&row->on_ms, on_ms, first);
     bench_keep_min(&row->base_ms, base_ms, first);

@@ -22,7 +22,10 @@ typedef struct tech_config {
     stin_technique surface;  /* desc.techniques[STIN_FEATURE_SURFACE]; NONE = the tier's */
     uint32_t map_size;       /* desc.shadow_map_size; 0 = stin's default */
     int pcf_kernel;          /* every scene light's pcf_kernel; 0 = as the scene has it */
-    uint32_t debug_flags;    /* desc.debug_flags (vdsm's steps and counter) */
+    uint32_t debug_flags;    /* desc.debug_flags (vdsm's steps) */
+    /* flags the row's stage-times context adds (vdsm's counter, whose waits
+     * stay out of the timed frames); its first frame gives `primitives` */
+    uint32_t counted_flags;
     stin_technique displacement; /* desc.techniques[STIN_FEATURE_DISPLACEMENT]; NONE = auto */
     float guard_band, tess_pixels; /* desc.displace_guard_band, displace_tess_pixels (0: default) */
     uint32_t tess_max;       /* desc.displace_tess_max (0: default) */
