@@ -89,10 +89,13 @@
  * 1e-4 of the scene). Closed meshes drop the triangles facing the light
  * (EP; STIN_DEBUG_VDSM_NO_EP keeps them); open ones, and materials marked
  * two_sided, keep them. Per light a pyramid over the light's view (desc.
- * shadow_map_size texels a side, at most 2048: two RG32F textures, the second with its
- * mip levels, and a depth-stencil texture, about 23 bytes a texel of GL
- * memory, made at stin_create) drops triangles that lie wholly behind drawn
- * triangles nearer the light (SM) and triangles with no visible surface
+ * shadow_map_size texels a side, at most 2048: two RG32F textures, the
+ * second with its mip levels, and a depth-stencil texture, about 23 bytes a
+ * texel of GL memory, made at stin_create; each frame draws it at the
+ * power of two nearest half the viewport's larger side, at least 256 and
+ * at most that: a finer one costs more fill than it culls) drops triangles
+ * that lie wholly behind drawn triangles nearer the light (SM) and
+ * triangles with no visible surface
  * behind them (DC), and ends each shadow face at the deepest visible
  * surface behind its triangle instead of infinity (DC): the same mask at any
  * map size. Its view looks from the light (along a directional one) at the
@@ -243,9 +246,10 @@
  * hostile_test.c renders under each such state and compares bit for bit).
  * Where there are vertex array objects the frame draws with
  * vertex array 0 or its own, never through the caller's, and binds the
- * caller's again at the end. Under vdsm (GL 3.2+) the frame leaves
- * transform feedback object 0 bound, with no buffer on its binding 0 and
- * none on the generic transform feedback buffer binding.
+ * caller's again at the end. Under vdsm (GL 3.2+) the frame leaves no
+ * buffer on the generic transform feedback buffer binding, and none on
+ * binding 0 of the bound feedback object, which is object 0 where the
+ * context has feedback objects (GL 4.0).
  * The viewport and the framebuffer binding stay as the frame set them; the
  * caller's matrices (GL1 matrix stacks) are restored. Clear colour, clear
  * depth and polygon offset are overwritten, and so are the scissor box and

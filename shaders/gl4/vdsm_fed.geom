@@ -18,7 +18,7 @@ void main()
 {
     vec3 v[3] = vec3[3](g_v0[0].xyz, g_v1[0].xyz, g_v2[0].xyz);
     int part = int(g_v1[0].w);
-    vec4 far[3];
+    vec4 far[3] = vec4[3](vec4(0.0), vec4(0.0), vec4(0.0));
     if (part < PART_OWN)
         far_ends(v, g_v0[0].w, far);
     vdsm_part(v, far, part);
