@@ -107,6 +107,11 @@ typedef struct stin__vdsm_pyramid_locs {
     GLint sm, dc, vp, depth, pyramid, size, top;
 } stin__vdsm_pyramid_locs;
 
+/* The light pass's uniforms (vdsm_light.glsl), in each of its two programs. */
+typedef struct stin__vdsm_light_locs {
+    GLint model, vp, depth, light, cull_lit, size, grow, bound, persp;
+} stin__vdsm_light_locs;
+
 /* VDSM steps SM and DC (shadow_vdsm_pyramid.c): per light, a pyramid over
  * the light's view of the scene - the occluders' depth bound and the deepest
  * receiver per texel, maxima up the levels - that the shadow polygons read
@@ -116,6 +121,7 @@ typedef struct stin__vdsm_pyramid {
     GLuint stencil;             /* the light pass's per-draw outline marks */
     GLuint points;              /* a vertex array without arrays: one point per pixel */
     GLuint light_prog, receiver_prog, reduce_prog;
+    GLuint tris_prog;           /* the light pass's triangles (light_prog: its marks) */
     int alloc;                  /* texels a side allocated (desc.shadow_map_size, <= 2048) */
     int size, top;              /* this frame's level 0 side (<= alloc); its 1 x 1 level */
     int usable;                 /* programs and framebuffer are there */
@@ -124,8 +130,8 @@ typedef struct stin__vdsm_pyramid {
     float front;                /* occluders lie deeper than this (behind: no triangle) */
     float view_proj[16];        /* world -> the light's clip space */
     float depth_row[4];         /* world -> light depth */
-    GLint l_model, l_vp, l_depth, l_light, l_cull_lit, l_size, l_grow, l_bound, l_persp,
-        l_marks;
+    stin__vdsm_light_locs marks, tris; /* light_prog's and tris_prog's */
+    stin__displace_locs tris_displace;
     GLint r_position, r_normal, r_light, r_vp, r_depth, r_rect;
     GLint d_source, d_first;
     /* GL 4.3 (shadow_vdsm_receivers.c): the receivers by atomics, per texel
@@ -218,22 +224,25 @@ void stin__vdsm_buffer_opaque(stin_context *ctx, const stin__path *path);
 void stin__vdsm_buffer_release(stin_context *ctx);
 /* The pyramid (shadow_vdsm_pyramid.c): programs and textures at set-up
  * (a failure leaves SM and DC off, logged); per light, with the screen mask
- * bound, draws it and binds the mask again; then the shadow-polygon
- * program's uniforms (bound program) for that light. */
+ * bound, draws it and binds the mask again, returning 1 where its
+ * receivers' pass also wrote the light's facing pass into mask channel
+ * `channel`; then the shadow-polygon program's uniforms (bound program) for
+ * that light. */
 void stin__vdsm_pyramid_init(stin_context *ctx);
 void stin__vdsm_pyramid_release(stin_context *ctx);
-void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4]);
+int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel);
 /* A program's pyramid uniforms: located, and set (bound program) for the
  * light drawn last. */
 void stin__vdsm_pyramid_locate(stin_context *ctx, GLuint prog, stin__vdsm_pyramid_locs *l);
 void stin__vdsm_pyramid_uniforms(stin_context *ctx, const stin__vdsm_pyramid_locs *l);
 /* The receivers by storage-buffer atomics (shadow_vdsm_receivers.c), where
  * the context has them: set up after the pyramid (0 where not), one light's
- * pass (from the pyramid's framebuffer, back to it), and level 0 of the
- * pyramid from them and the occluders' accumulation. */
+ * pass (from the pyramid's framebuffer, back to it; the light's facing pass
+ * into mask channel `channel` too), and level 0 of the pyramid from them
+ * and the occluders' accumulation. */
 int stin__vdsm_receivers_init(stin_context *ctx);
 void stin__vdsm_receivers_release(stin_context *ctx);
-void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4]);
+void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int channel);
 void stin__vdsm_receivers_first_level(stin_context *ctx);
 /* "displace-tess": swaps the tessellated position-buffer and shadow-polygon
  * programs in (on) or out, their uniforms located again; nothing without

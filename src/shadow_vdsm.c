@@ -356,6 +356,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     const stin_light_desc *l = &ctx->lights[li];
     stin__pass_state ps = *stin__pass_current(ctx);
     float light[4];
+    int faced;
     (void)path;
     if (!v->ready)
         return 0;
@@ -365,7 +366,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         v->said_area = 1;
     }
     light_point(l, light);
-    stin__vdsm_pyramid_draw(ctx, light);
+    faced = stin__vdsm_pyramid_draw(ctx, light, channel);
     ps.depth_test = ps.depth_write = ps.stencil_test = ps.blend = ps.cull = 0;
     ps.scissor = ps.depth_clamp = ps.polygon_offset = 0;
     ps.color_write = 1;
@@ -374,14 +375,17 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, v->position);
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, v->normal);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    GL(ctx, UseProgram)(v->facing_prog);
     ctx->glsl_surface.current = NULL;
-    GL(ctx, Uniform1i)(v->face_position, 0);
-    GL(ctx, Uniform1i)(v->face_normal, 1);
-    GL(ctx, Uniform4fv)(v->face_light, 1, light);
-    stin__vdsm_screen_quad(ctx);
+    if (!faced) { /* else the pyramid's receivers wrote it */
+        GL(ctx, UseProgram)(v->facing_prog);
+        GL(ctx, Uniform1i)(v->face_position, 0);
+        GL(ctx, Uniform1i)(v->face_normal, 1);
+        GL(ctx, Uniform4fv)(v->face_light, 1, light);
+        stin__vdsm_screen_quad(ctx);
+        ctx->stats.passes++;
+    }
     polygons(ctx, light);
-    ctx->stats.passes += 2;
+    ctx->stats.passes++;
     stin__vdsm_csg_cast(ctx, light, channel);
     return 1;
 }

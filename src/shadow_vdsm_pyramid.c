@@ -12,9 +12,10 @@
  *
  * x is exact rather than sampled (the seed rasterised the nearest depth at
  * texel centres, so a ray between centres could miss the occluder; it also
- * let empty texels through the maximum): per draw, the light pass
- * (shaders/gl4/vdsm_light.*) marks in the stencil, with the draw's id, every
- * texel an edge of its triangles' outline touches, then writes, MIN (as a
+ * let empty texels through the maximum): per draw, the light pass marks in
+ * the stencil, with the draw's id, every texel an edge of its triangles'
+ * outline touches (shaders/gl4/vdsm_light.geom, from the adjacency), then
+ * (vdsm_light_tris.geom, from the plain triangles) writes, MIN (as a
  * MAX of negatives), each triangle at the unmarked texel centres it covers
  * with the draw's deepest point (or the triangle's own over the texel where
  * it covers the whole texel). Such a texel lies wholly inside the draw's
@@ -50,20 +51,28 @@
  * than this fraction of the deepest corner. */
 #define FRONT 1e-3f
 
+static void locate_light(stin_context *ctx, GLuint prog, stin__vdsm_light_locs *l)
+{
+#define LOC(field, name) l->field = GL(ctx, GetUniformLocation)(prog, name)
+    LOC(model, "u_model");
+    LOC(vp, "u_light_vp");
+    LOC(depth, "u_depth_row");
+    LOC(light, "u_light");
+    LOC(cull_lit, "u_cull_lit");
+    LOC(size, "u_size");
+    LOC(grow, "u_grow");
+    LOC(bound, "u_bound");
+    LOC(persp, "u_perspective");
+#undef LOC
+}
+
 static void locate(stin_context *ctx)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    locate_light(ctx, p->light_prog, &p->marks);
+    locate_light(ctx, p->tris_prog, &p->tris);
+    stin__displace_locate(ctx, p->tris_prog, 0, &p->tris_displace);
 #define LOC(field, prog, name) p->field = GL(ctx, GetUniformLocation)(prog, name)
-    LOC(l_model, p->light_prog, "u_model");
-    LOC(l_vp, p->light_prog, "u_light_vp");
-    LOC(l_depth, p->light_prog, "u_depth_row");
-    LOC(l_light, p->light_prog, "u_light");
-    LOC(l_cull_lit, p->light_prog, "u_cull_lit");
-    LOC(l_size, p->light_prog, "u_size");
-    LOC(l_grow, p->light_prog, "u_grow");
-    LOC(l_bound, p->light_prog, "u_bound");
-    LOC(l_persp, p->light_prog, "u_perspective");
-    LOC(l_marks, p->light_prog, "u_marks");
     LOC(r_position, p->receiver_prog, "u_position");
     LOC(r_normal, p->receiver_prog, "u_normal");
     LOC(r_light, p->receiver_prog, "u_light");
@@ -109,7 +118,9 @@ static void float_texture(stin_context *ctx, GLuint tex, int levels, int size)
 void stin__vdsm_pyramid_release(stin_context *ctx)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    GLuint none = 0;
     stin__vdsm_delete_programs(ctx, &p->light_prog, &p->receiver_prog, &p->reduce_prog);
+    stin__vdsm_delete_programs(ctx, &p->tris_prog, &none, &none);
     if (p->fbo)
         GL(ctx, DeleteFramebuffers)(1, &p->fbo);
     if (p->points)
@@ -125,6 +136,20 @@ void stin__vdsm_pyramid_release(stin_context *ctx)
     stin__vdsm_receivers_release(ctx);
 }
 
+/* A program of the light pass: geometry shader geom (its marks or its
+ * triangles) with the chunk both share. */
+static GLuint light_program(stin_context *ctx, const char *geom, char *msg, size_t size)
+{
+    static const char *const view[] = {"gl4/vdsm_light.glsl", NULL};
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = "gl4/vdsm.vert";
+    src.geom = geom;
+    src.geom_chunks = view;
+    src.frag = "gl4/vdsm_light.frag";
+    return stin__program_build_source(ctx, &src, msg, size);
+}
+
 void stin__vdsm_pyramid_init(stin_context *ctx)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
@@ -132,9 +157,10 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
     GLenum status;
     int size = (int)(ctx->desc.shadow_map_size < MAX_SIZE ? ctx->desc.shadow_map_size : MAX_SIZE);
     msg[0] = '\0';
-    p->light_prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm_light.geom",
-                                       "gl4/vdsm_light.frag", NULL, 0, msg, sizeof msg);
+    p->light_prog = light_program(ctx, "gl4/vdsm_light.geom", msg, sizeof msg);
     if (p->light_prog)
+        p->tris_prog = light_program(ctx, "gl4/vdsm_light_tris.geom", msg, sizeof msg);
+    if (p->tris_prog)
         p->receiver_prog = stin__vdsm_program(ctx, "gl4/vdsm_receiver.vert", NULL,
                                               "gl4/vdsm_receiver.frag", NULL, 0, msg, sizeof msg);
     if (p->receiver_prog)
@@ -308,18 +334,37 @@ static void draw_depths(const stin__vdsm_pyramid *p, const stin_context *ctx,
 
 /* Per draw: its outline into the stencil with its id, then its triangles
  * where the stencil does not hold that id (ps: the MAX-blended state). */
+/* The light pass's uniforms for this light on program prog (bound). */
+static void light_uniforms(stin_context *ctx, GLuint prog, const stin__vdsm_light_locs *l,
+                           const float light[4])
+{
+    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    GL(ctx, UseProgram)(prog);
+    GL(ctx, UniformMatrix4fv)(l->vp, 1, GL_FALSE, p->view_proj);
+    GL(ctx, Uniform4fv)(l->depth, 1, p->depth_row);
+    GL(ctx, Uniform4fv)(l->light, 1, light);
+    GL(ctx, Uniform1f)(l->size, (float)p->size);
+    GL(ctx, Uniform1f)(l->grow, GROW_TEXELS);
+    GL(ctx, Uniform1i)(l->persp, p->perspective);
+}
+
+/* A draw's uniforms on the light pass's program prog, made current. */
+static void light_draw(stin_context *ctx, GLuint prog, const stin__vdsm_light_locs *l,
+                       const stin__draw *d, float deepest)
+{
+    GL(ctx, UseProgram)(prog);
+    GL(ctx, UniformMatrix4fv)(l->model, 1, GL_FALSE, d->transform);
+    GL(ctx, Uniform1i)(l->cull_lit, stin__vdsm_cull_lit(ctx, d));
+    GL(ctx, Uniform1f)(l->bound, deepest);
+}
+
 static void occluders(stin_context *ctx, const float light[4], stin__pass_state ps)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
     uint32_t i;
     int id = 0;
-    GL(ctx, UseProgram)(p->light_prog);
-    GL(ctx, UniformMatrix4fv)(p->l_vp, 1, GL_FALSE, p->view_proj);
-    GL(ctx, Uniform4fv)(p->l_depth, 1, p->depth_row);
-    GL(ctx, Uniform4fv)(p->l_light, 1, light);
-    GL(ctx, Uniform1f)(p->l_size, (float)p->size);
-    GL(ctx, Uniform1f)(p->l_grow, GROW_TEXELS);
-    GL(ctx, Uniform1i)(p->l_persp, p->perspective);
+    light_uniforms(ctx, p->tris_prog, &p->tris, light);
+    light_uniforms(ctx, p->light_prog, &p->marks, light);
     ps.stencil_test = 1;
     ps.two_sided = 0;
     ps.stencil_write_mask = 0xffu;
@@ -332,29 +377,29 @@ static void occluders(stin_context *ctx, const float light[4], stin__pass_state 
         float nearest, deepest;
         /* not an occluder here, it still casts: no adjacency, or displaced
          * (its bounds, and so its depth range, are the flat mesh's) */
-        if (!m->adj_vao || stin__displace_active(ctx, &d->material) || stin__translucent_skips(ctx, d))
+        if (!m->adj_vao || stin__displace_active(ctx, &d->material) ||
+            stin__translucent_skips(ctx, d))
             continue; /* (a transparent caster its map or the threshold decides) */
         draw_depths(p, ctx, d, &nearest, &deepest);
         if (!(nearest > p->front))
             continue; /* reaches behind the light: its projection is no triangle */
         id = id % 255 + 1;
-        GL(ctx, UniformMatrix4fv)(p->l_model, 1, GL_FALSE, d->transform);
-        GL(ctx, Uniform1i)(p->l_cull_lit, stin__vdsm_cull_lit(ctx, d));
-        GL(ctx, Uniform1f)(p->l_bound, deepest);
+        /* the outline's marks (adjacency), then the triangles off them */
+        light_draw(ctx, p->light_prog, &p->marks, d, deepest);
         GL(ctx, BindVertexArray)(m->adj_vao);
+        ctx->bound_mesh = 0xffffffffu;
         ps.color_write = 0;
         ps.front.func = GL_ALWAYS;
         ps.front.ref = id;
         ps.front.zpass = GL_REPLACE;
         stin__pass_apply(ctx, &ps);
-        GL(ctx, Uniform1i)(p->l_marks, 1);
         GL(ctx, DrawElements)(GL_TRIANGLES_ADJACENCY, count, GL_UNSIGNED_INT, NULL);
+        light_draw(ctx, p->tris_prog, &p->tris, d, deepest);
         ps.color_write = 1;
         ps.front.func = GL_NOTEQUAL;
         ps.front.zpass = GL_KEEP;
         stin__pass_apply(ctx, &ps);
-        GL(ctx, Uniform1i)(p->l_marks, 0);
-        GL(ctx, DrawElements)(GL_TRIANGLES_ADJACENCY, count, GL_UNSIGNED_INT, NULL);
+        stin__glsl_submit_geometry(ctx, p->tris.model, &p->tris_displace, d);
     }
     GL(ctx, BindVertexArray)(0);
     ctx->bound_mesh = 0xffffffffu;
@@ -438,7 +483,7 @@ static void size_to_viewport(stin__vdsm_pyramid *p, const int vp[4])
         ;
 }
 
-void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
+int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
     uint32_t flags = ctx->desc.debug_flags;
@@ -447,14 +492,14 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
     const int *vp = ctx->frame.viewport;
     p->ready = 0;
     if (!p->usable || !(sm || dc))
-        return;
+        return 0;
     if (!fit(p, ctx, light)) {
         if (!p->said_no_view)
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                       "vdsm: a point light at the centre of the draws' bounds has no light "
                       "view: steps SM and DC are off for it");
         p->said_no_view = 1;
-        return;
+        return 0;
     }
     size_to_viewport(p, vp);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, p->fbo);
@@ -489,13 +534,14 @@ void stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4])
     ps.blend = 0;
     stin__pass_apply(ctx, &ps);
     if (dc && p->atomic_prog)
-        stin__vdsm_receivers_draw(ctx, light);
+        stin__vdsm_receivers_draw(ctx, light, channel);
     reduce(ctx);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__pass_apply(ctx, &saved);
     ctx->stats.passes += 2u + (uint32_t)sm + (uint32_t)dc;
     p->ready = 1;
+    return dc && p->atomic_prog; /* the receivers' pass wrote the facing channel */
 }
 
 void stin__vdsm_pyramid_uniforms(stin_context *ctx, const stin__vdsm_pyramid_locs *l)

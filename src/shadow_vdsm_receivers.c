@@ -10,7 +10,9 @@
  * texel its point would cover, its depth kept by an atomic maximum of bits
  * ordered as the floats are, in a buffer of one word a texel (0: none).
  * Level 0 of the pyramid then reads them (vdsm_reduce_first.frag) and sets
- * each word back to 0, so the next light starts from none without a clear. */
+ * each word back to 0, so the next light starts from none without a clear.
+ * The quad reads the position buffer where the light's facing pass would:
+ * it writes that pass's mask channel too, and vdsm draws no facing pass. */
 #include "internal.h"
 
 void stin__vdsm_receivers_release(stin_context *ctx)
@@ -78,16 +80,18 @@ static void make_words(stin_context *ctx)
 }
 
 /* With the pyramid's framebuffer bound and its blending off: the pass
- * over the frame's viewport in the screen mask's framebuffer (colour
- * writes off), then the pyramid's framebuffer and viewport again. */
-void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4])
+ * over the frame's viewport in the screen mask's framebuffer, which is
+ * also the light's facing pass into mask channel `channel`, then the
+ * pyramid's framebuffer and viewport again. */
+void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int channel)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
     const int *vp = ctx->frame.viewport;
     stin__pass_state before = *stin__pass_current(ctx), ps = before;
     if (!p->deepest)
         make_words(ctx);
-    ps.color_write = 0;
+    ps.color_write = 1;
+    ps.color_only = (unsigned char)(channel + 1);
     ps.scissor = 0; /* the pyramid's scissor box is not the frame's viewport */
     stin__pass_apply(ctx, &ps);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);

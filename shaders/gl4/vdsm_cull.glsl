@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // VDSM's culling steps (seed 000): which triangles cast at all, and where
 // DC ends their extrusion. EP drops triangles facing the light (closed
 // meshes: the ones behind them cast the same shadow). SM and DC read the

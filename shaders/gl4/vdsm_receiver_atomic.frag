@@ -5,7 +5,10 @@
 // there taken into the light's view as vdsm_receiver.vert takes it (the same
 // facing test, the same push along the normal), its light depth kept by an
 // atomic maximum of ordered bits in the texel it falls in: the texel a point
-// drawn there would cover. Nothing is drawn (colour writes are off).
+// drawn there would cover. The same pass is the light's facing pass
+// (vdsm_facing.frag): it writes the light's mask channel, 1 where the side
+// of the surface the eye sees faces the light, so the position buffer is
+// read once for both.
 layout(std430, binding = 0) buffer vdsm_deepest
 {
     uint deepest[]; // per texel of level 0, row by row: ordered bits, 0 for none
@@ -16,6 +19,7 @@ uniform vec4 u_light;     // world: position (w 1), or the direction toward the 
 uniform mat4 u_light_vp;  // world -> the light's clip space
 uniform vec4 u_depth_row; // world -> light depth
 uniform int u_size;       // texels a side of level 0
+out vec4 frag_color;
 
 // Bits whose unsigned order is the floats' order (all above 0).
 uint ordered(float f)
@@ -30,6 +34,7 @@ void main()
     vec4 p = texelFetch(u_position, px, 0);
     vec3 n = texelFetch(u_normal, px, 0).xyz;
     vec3 to_light = u_light.xyz - p.xyz * u_light.w;
+    frag_color = vec4(p.w > 0.0 && dot(n, to_light) > 0.0 ? 1.0 : 0.0);
     if (p.w == 0.0 || dot(n, to_light) < -1e-4 * length(to_light))
         return;
     vec3 a = abs(p.xyz);

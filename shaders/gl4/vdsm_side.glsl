@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // VDSM: what every geometry shader of the shadow polygons reads - the
 // light, the light depth DC clips at - and which side of a plane a
 // homogeneous point lies on.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: MIT
 // VDSM shadow polygons (seed 000, step SP): triangle v's volume - the
 // region its shadow fills, bounded by the triangle and its three edges
 // extruded away from the light to infinity (w = 0), or with DC to the light

@@ -905,6 +905,8 @@ static void test_vdsm_tessellates_only_displaced_frames(void **state)
     st = frame_with(2, 2, 1, STIN_OUTPUT_BEAUTY); /* a blended draw: peeled layers */
     assert_true(st.passes > 0);
     assert_true(fake_gl.draw_calls > 10);
+    /* and culls first: its triangle count is known without tessellation */
+    assert_true(st.vdsm_cull_passes >= 2);
     shadows = STIN_TECH_SHADOWS_OFF;
     assert_int_equal(fake_gl.patch_draws, 0);
 }
