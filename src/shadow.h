@@ -182,8 +182,9 @@ typedef struct stin__vdsm_polygon_locs {
 /* vdsm's culling pass (shadow_vdsm_cull.c): per light, EP, SM and DC in a
  * small geometry shader whose kept faces (a triangle's side faces and own
  * face the eye sees) transform feedback writes to a buffer, one point each;
- * the shadow-polygon program then draws those alone, in one draw (from the feedback object where the context has
- * them, else by the count a query read back). */
+ * the shadow-polygon program then draws those alone, in one draw (from
+ * the feedback object where the context has them, else by the count a
+ * query read back). */
 typedef struct stin__vdsm_cull {
     GLuint cull_prog, fed_prog;
     GLuint buffer, vao;         /* the kept faces, 48 bytes each; the fed pass's arrays */

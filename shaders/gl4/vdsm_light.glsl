@@ -33,7 +33,10 @@ void put(vec2 t)
     EmitVertex();
 }
 
-float orient(vec2 a, vec2 b, vec2 c) { return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x); }
+float orient(vec2 a, vec2 b, vec2 c)
+{
+    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
 
 
 // Triangle v0 v1 v2 in the light's view (tri, depth); false where it casts
