@@ -368,7 +368,8 @@ static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lig
         uint32_t first = li;
         if (size == 1)
             translucent_light(ctx, li);
-        if (!stin__mask_begin(ctx, path, visibility ? STIN__ALL : STIN__OPAQUE)) {
+        if (!stin__mask_begin(ctx, path, visibility ? STIN__ALL : STIN__OPAQUE,
+                              ctx->shadow->mask_depth)) {
             stin__translucent_light_done(ctx);
             return 0;
         }

@@ -67,8 +67,8 @@ void stin__outline_release(stin_context *ctx)
 static int draw_normals(stin_context *ctx, const stin__path *path)
 {
     stin__pass_state ps = stin__pass_defaults;
-    ctx->mask.depth_done = 1; /* the mask clears its colour only: the depth is cleared here */
-    if (!stin__mask_begin(ctx, path, STIN__OPAQUE)) {
+    /* the mask clears its colour only: the depth is cleared here */
+    if (!stin__mask_begin(ctx, path, STIN__OPAQUE, 0)) {
         stin__mask_frame_end(ctx);
         return 0;
     }

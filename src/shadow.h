@@ -48,6 +48,10 @@ typedef struct stin__shadow_technique {
      * visibility into channel `channel` of the bound screen mask and returns
      * 1, or returns 0 and leaves the light to light(). NULL: never. */
     int (*mask)(stin_context *ctx, const stin__path *path, uint32_t li, int channel);
+    /* 1: mask() tests against the frame's depth in the mask's own buffer,
+     * which stin__mask_begin draws there once a frame (a geometry pass);
+     * 0: it brings its own depth (vdsm: the position buffer's). */
+    int mask_depth;
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
@@ -304,11 +308,12 @@ typedef struct stin__mask_state {
  * (GLSL lighting and a texture unit: the frame's lights). */
 void stin__mask_init(stin_context *ctx);
 void stin__mask_release(stin_context *ctx);
-/* Binds the mask as the target (clearing its colour; the first time in a
- * frame also its depth and stencil, then the frame's depth is drawn). 0:
+/* Binds the mask as the target, clearing its colour. With `depth`, the
+ * first time in a frame also its depth and stencil, and the frame's depth
+ * (draws `which`) is drawn into it; without, the passes bring their own. 0:
  * the mask cannot be made (logged once), draw the lights the old way. The
  * viewport stays the frame's (the mask has the same window coordinates). */
-int stin__mask_begin(stin_context *ctx, const stin__path *path, int which);
+int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int depth);
 /* After a technique left the stencil passing where light is visible: 1
  * into `channel` there. */
 void stin__mask_write(stin_context *ctx, const stin__path *path, int channel);

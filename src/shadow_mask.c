@@ -99,7 +99,7 @@ static int ensure_size(stin_context *ctx)
     return 1;
 }
 
-int stin__mask_begin(stin_context *ctx, const stin__path *path, int which)
+int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int depth)
 {
     stin__pass_state ps = stin__pass_defaults;
     if (!ctx->mask.drawable || !ensure_size(ctx))
@@ -107,7 +107,7 @@ int stin__mask_begin(stin_context *ctx, const stin__path *path, int which)
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the mask */
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
-    if (!ctx->mask.depth_done) {
+    if (depth && !ctx->mask.depth_done) {
         GL(ctx, ClearDepth)(1.0);
         GL(ctx, ClearStencil)(0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);

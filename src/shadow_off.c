@@ -3,7 +3,7 @@
 #include "internal.h"
 
 const stin__shadow_technique stin__shadow_off = {
-    STIN_TECH_SHADOWS_OFF, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL,
+    STIN_TECH_SHADOWS_OFF, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 0,
 };
 
 const stin__shadow_technique *stin__shadow_technique_of(stin_technique t)

@@ -467,4 +467,5 @@ const stin__shadow_technique stin__shadow_volume = {
     STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", volume_init, stin__volume_extrude_release,
     volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
     volume_mask,
+    1, /* the volumes' stencil counts against the frame's depth */
 };

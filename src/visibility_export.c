@@ -141,7 +141,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
     e->valid = fit > 0;
     for (g = 0; g < fit && LIGHTS_PER_TILE * g < ctx->light_count; g++) {
         uint32_t li;
-        if (!stin__mask_begin(ctx, path, STIN__OPAQUE)) {
+        if (!stin__mask_begin(ctx, path, STIN__OPAQUE, 1)) {
             e->valid = 0; /* logged by the mask */
             break;
         }
@@ -157,7 +157,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
     }
     for (g = 0; coloured && e->valid && g < ctx->light_count; g++) {
         uint32_t tile = groups + g;
-        if (!stin__mask_begin(ctx, path, STIN__OPAQUE)) {
+        if (!stin__mask_begin(ctx, path, STIN__OPAQUE, 1)) {
             e->valid = 0;
             break;
         }

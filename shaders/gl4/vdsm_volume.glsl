@@ -143,8 +143,13 @@ int clip2(inout vec2 p[GROWN_MAX], int n, vec3 line)
     return m;
 }
 
-// A face given by n homogeneous world points (3 or 4): clipped, grown, drawn.
-void put_face(vec4 w[4], int n)
+// A face given by n homogeneous world points (3 or 4) as the polygon to
+// draw, r (returns its corner count, 0: nothing) in pixels, and its depth
+// plane: clipped, projected and grown; with `screen`, the whole viewport
+// passing everywhere. One function for every part, called once per face:
+// where a shader's branches run under a mask (llvmpipe; diverging lanes on
+// a GPU) each call site costs every invocation.
+int face_polygon(vec4 w[4], int n, bool screen, out vec2 r[GROWN_MAX], out vec3 depth)
 {
     vec4 c[CLIP_MAX];
     for (int i = 0; i < n; i++)
@@ -155,8 +160,6 @@ void put_face(vec4 w[4], int n)
     n = clip4(c, n, vec4(1.0, 0.0, 0.0, g.x));
     n = clip4(c, n, vec4(0.0, -1.0, 0.0, g.y));
     n = clip4(c, n, vec4(0.0, 1.0, 0.0, g.y));
-    if (n < 3)
-        return;
     vec2 q[GROWN_MAX];
     vec2 lo = vec2(3.4e38), hi = vec2(-3.4e38);
     float area = 0.0;
@@ -165,31 +168,40 @@ void put_face(vec4 w[4], int n)
         lo = min(lo, q[i]);
         hi = max(hi, q[i]);
     }
-    vec3 depth = depth_plane(c, q, n);
+    depth = n < 3 ? everywhere() : depth_plane(c, q, n);
+    int m = n;
     if (u_grow <= 0.0) {
-        put_polygon(q, n, depth);
-        return;
+        for (int i = 0; i < n; i++)
+            r[i] = q[i];
+    } else {
+        for (int i = 0; i < n; i++) {
+            vec2 a = q[i], b = q[i + 1 < n ? i + 1 : 0];
+            area += a.x * b.y - b.x * a.y;
+        }
+        float turn = area >= 0.0 ? 1.0 : -1.0;
+        r[0] = lo - u_grow;
+        r[1] = vec2(hi.x + u_grow, lo.y - u_grow);
+        r[2] = hi + u_grow;
+        r[3] = vec2(lo.x - u_grow, hi.y + u_grow);
+        m = n < 3 ? 0 : 4;
+        for (int i = 0; i < n && m >= 3; i++) {
+            vec2 a = q[i], b = q[i + 1 < n ? i + 1 : 0];
+            vec2 out_n = turn * vec2(b.y - a.y, a.x - b.x); // outward for this winding
+            if (out_n == vec2(0.0))
+                continue;
+            float reach = u_grow * (abs(out_n.x) + abs(out_n.y));
+            m = clip2(r, m, vec3(-out_n, dot(out_n, a) + reach));
+        }
     }
-    for (int i = 0; i < n; i++) {
-        vec2 a = q[i], b = q[i + 1 < n ? i + 1 : 0];
-        area += a.x * b.y - b.x * a.y;
+    if (screen) {
+        r[0] = vec2(0.0);
+        r[1] = vec2(u_viewport.z, 0.0);
+        r[2] = u_viewport.zw;
+        r[3] = vec2(0.0, u_viewport.w);
+        m = 4;
+        depth = everywhere();
     }
-    float turn = area >= 0.0 ? 1.0 : -1.0;
-    vec2 r[GROWN_MAX];
-    r[0] = lo - u_grow;
-    r[1] = vec2(hi.x + u_grow, lo.y - u_grow);
-    r[2] = hi + u_grow;
-    r[3] = vec2(lo.x - u_grow, hi.y + u_grow);
-    int m = 4;
-    for (int i = 0; i < n && m >= 3; i++) {
-        vec2 a = q[i], b = q[i + 1 < n ? i + 1 : 0];
-        vec2 out_n = turn * vec2(b.y - a.y, a.x - b.x); // outward for this winding
-        if (out_n == vec2(0.0))
-            continue;
-        float reach = u_grow * (abs(out_n.x) + abs(out_n.y));
-        m = clip2(r, m, vec3(-out_n, dot(out_n, a) + reach));
-    }
-    put_polygon(r, m, depth);
+    return m;
 }
 
 // The far ends of triangle v's edges: at infinity, or with DC where the
@@ -268,28 +280,18 @@ int vdsm_parts(vec3 v[3], bool caps)
 void vdsm_part(vec3 v[3], vec4 far[3], int part)
 {
     tri = v;
+    bool own = part == PART_OWN;
+    int e = part == PART_SIDE << 1 ? 1 : part == PART_SIDE << 2 ? 2 : 0;
+    int f = e < 2 ? e + 1 : 0;
     vec4 w[4];
-    if (part == PART_SCREEN) {
-        vec2 screen[GROWN_MAX];
-        screen[0] = vec2(0.0);
-        screen[1] = vec2(u_viewport.z, 0.0);
-        screen[2] = u_viewport.zw;
-        screen[3] = vec2(0.0, u_viewport.w);
-        put_polygon(screen, 4, everywhere());
-    } else if (part == PART_OWN) {
-        w[0] = vec4(v[0], 1.0);
-        w[1] = vec4(v[1], 1.0);
-        w[2] = vec4(v[2], 1.0);
-        put_face(w, 3);
-    } else {
-        int e = part == PART_SIDE ? 0 : part == PART_SIDE << 1 ? 1 : 2;
-        int f = e < 2 ? e + 1 : 0;
-        w[0] = vec4(v[e], 1.0);
-        w[1] = vec4(v[f], 1.0);
-        w[2] = far[f];
-        w[3] = far[e];
-        put_face(w, 4);
-    }
+    w[0] = vec4(own ? v[0] : v[e], 1.0);
+    w[1] = vec4(own ? v[1] : v[f], 1.0);
+    w[2] = own ? vec4(v[2], 1.0) : far[f];
+    w[3] = far[e];
+    vec2 r[GROWN_MAX];
+    vec3 depth;
+    int m = face_polygon(w, own ? 3 : 4, part == PART_SCREEN, r, depth);
+    put_polygon(r, m, depth);
 }
 
 // Draws every part of triangle v's volume the eye sees.

@@ -243,6 +243,16 @@ static GLenum STIN_APIENTRY fake_GetError(void)
 }
 
 /* ---- drawing ------------------------------------------------------------ */
+/* A draw into the test's watched framebuffer, and whether it wrote depth. */
+static void watched_draw(void)
+{
+    const fake_gl_glstate *g = &fake_gl.gl;
+    if (g->draw_framebuffer != fake_gl.watched_framebuffer)
+        return;
+    fake_gl.draws_into_watched++;
+    fake_gl.depth_draws_into_watched += g->enabled[FAKE_GL_DEPTH_TEST] && g->depth_mask;
+}
+
 static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum type,
                                             const void *idx)
 {
@@ -252,7 +262,7 @@ static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum t
     fake_gl.draw_calls++;
     fake_gl.patch_draws += mode == GL_PATCHES;
     fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
-    fake_gl.draws_into_watched += fake_gl.gl.draw_framebuffer == fake_gl.watched_framebuffer;
+    watched_draw();
     fake_gl.drawn_indices += (unsigned)count;
 }
 
@@ -263,7 +273,7 @@ static void STIN_APIENTRY fake_DrawArrays(GLenum mode, GLint first, GLsizei coun
     COUNT(DrawArrays);
     fake_gl.patch_draws += mode == GL_PATCHES;
     fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
-    fake_gl.draws_into_watched += fake_gl.gl.draw_framebuffer == fake_gl.watched_framebuffer;
+    watched_draw();
 }
 
 /* ---- object names ------------------------------------------------------- */

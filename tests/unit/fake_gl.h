@@ -78,6 +78,7 @@ typedef struct fake_gl_state {
     unsigned draws_into_default;         /* draw calls while framebuffer 0 was bound */
     GLuint watched_framebuffer;          /* a test's choice (0 until it sets one) */
     unsigned draws_into_watched;         /* draw calls while that one was bound */
+    unsigned depth_draws_into_watched;   /* of those, with depth tested and written */
     unsigned textures_created, textures_deleted;
     unsigned buffers_created, buffers_deleted;
     unsigned vertex_arrays_created, vertex_arrays_deleted;

@@ -976,6 +976,34 @@ static void test_vdsm_culls_into_feedback_then_draws_once(void **state)
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
+/* The screen mask's depth: volumes count against the frame's depth, so
+ * the mask's first light group draws it there (a geometry pass with depth
+ * written); vdsm's polygons test the position buffer's depth, so its mask
+ * gets no such pass, with one light or five (two groups). */
+static void test_mask_depth_pass_only_where_read(void **state)
+{
+    static const stin_technique techs[] = {STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_VDSM};
+    int t, lights;
+    (void)state;
+    for (t = 0; t < 2; t++)
+        for (lights = 1; lights <= 5; lights += 4) {
+            shadows = techs[t];
+            create_profile(FAKE_GL45_CORE, 16, 8);
+            (void)frame_with(lights, 3, 0, STIN_OUTPUT_BEAUTY); /* makes the mask */
+            assert_true(ctx->mask.fbo != 0);
+            fake_gl.watched_framebuffer = ctx->mask.fbo;
+            fake_gl.draws_into_watched = fake_gl.depth_draws_into_watched = 0;
+            (void)frame_with(lights, 3, 0, STIN_OUTPUT_BEAUTY);
+            assert_true(fake_gl.draws_into_watched > 0); /* the masks were drawn */
+            if (techs[t] == STIN_TECH_SHADOWS_VOLUME)
+                assert_int_equal(fake_gl.depth_draws_into_watched, 3); /* once, not per group */
+            else
+                assert_int_equal(fake_gl.depth_draws_into_watched, 0);
+            fake_gl.watched_framebuffer = 0;
+        }
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 /* The visibility export with deep maps: two lights want one visibility
  * tile and two transmittance tiles (64 x 48 each, two a row); a largest
  * texture of 100 holds one, so the map keeps both lights' visibility and no
@@ -1061,6 +1089,7 @@ int main(void)
         TEST(test_vdsm_tessellates_only_displaced_frames),
         TEST(test_vdsm_receivers_by_atomics_on_gl43),
         TEST(test_vdsm_culls_into_feedback_then_draws_once),
+        TEST(test_mask_depth_pass_only_where_read),
         TEST(test_frame_leaves_documented_state),
         TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
         TEST(test_texture_without_mips),
