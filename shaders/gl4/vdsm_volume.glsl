@@ -6,11 +6,12 @@
 // visible surface could lie inside it is covered once and the fragment
 // stage decides exactly. The faces are clipped in clip space to the
 // viewport (plus a guard pixel: clipping also removes what lies behind the
-// eye) and then, for conservative rasterisation, grown by u_grow pixels:
-// the Minkowski sum with the pixel square, as the grown bounding box cut by
-// every edge moved out by the square's reach. A pixel a face covers only in
-// part is then tested too, so no pixel centre is lost to rasterisation
-// rules or vertex snapping.
+// eye) and then, for conservative rasterisation, grown to hold the
+// Minkowski sum with the pixel square (half side u_grow): every edge moved
+// out by the radius of the disc around that square, the corners mitred, or
+// bevelled by the disc's tangent where they are sharp. A pixel a face
+// covers only in part is then tested too, so no pixel centre is lost to
+// rasterisation rules or vertex snapping.
 // With u_depth_test each face carries its own depth (the pass tests it,
 // LESS, against the visible surface's): a pixel's surface point inside the
 // volume lies behind a face the eye sees, where the eye ray enters, so the
@@ -28,7 +29,7 @@ flat out vec3 f_v2;
 vec3 tri[3]; // the triangle being drawn
 
 const int CLIP_MAX = 8;  // a quad cut by four planes
-const int GROWN_MAX = 12; // a box cut by eight edges
+const int GROWN_MAX = 12; // its corners, two more where bevelled (at most two are)
 
 // The plane through a, b and the homogeneous light.
 vec4 light_plane(vec3 a, vec3 b)
@@ -125,21 +126,56 @@ int clip4(inout vec4 c[CLIP_MAX], int n, vec4 plane)
     return m;
 }
 
-// Keeps the part of polygon p with dot(line.xy, p) + line.z >= 0.
-int clip2(inout vec2 p[GROWN_MAX], int n, vec3 line)
+// Where two lines at distance R from corner b meet, with unit outward
+// normals a and c at most a right angle apart (1 + dot(a, c) >= 1).
+vec2 mitre(vec2 b, vec2 a, vec2 c, float R) { return b + R * (a + c) / (1.0 + dot(a, c)); }
+
+// Convex polygon q (n corners, either winding; repeated or collinear
+// corners allowed) grown into r to hold its Minkowski sum with the square of
+// half side u_grow, which the disc of radius R = u_grow sqrt 2 holds: each
+// edge's line moved out by R, meeting its neighbour's at a mitre (at most
+// 2R from the corner), or where the corner turns by over 120 degrees, cut
+// by the disc's tangent across it. Every line is a tangent of the polygon
+// grown by the disc, so r holds it. Exterior angles sum to 360 degrees, so
+// at most two corners are cut: r has at most n + 2 corners. Returns r's
+// corner count.
+int grow_polygon(vec2 q[GROWN_MAX], int n, out vec2 r[GROWN_MAX])
 {
-    vec2 o[GROWN_MAX];
-    int m = 0;
-    for (int i = 0; i < n; i++) {
-        vec2 a = p[i], b = p[i + 1 < n ? i + 1 : 0];
-        float da = dot(line.xy, a) + line.z, db = dot(line.xy, b) + line.z;
-        if (da >= 0.0 && m < GROWN_MAX)
-            o[m++] = a;
-        if ((da >= 0.0) != (db >= 0.0) && m < GROWN_MAX)
-            o[m++] = mix(a, b, da / (da - db));
+    vec2 p[GROWN_MAX];
+    int k = 0;
+    for (int i = 0; i < n; i++) // an edge needs a direction
+        if (distance(q[i], q[i > 0 ? i - 1 : n - 1]) > 1e-4)
+            p[k++] = q[i];
+    float R = u_grow * 1.41421356, area = 0.0;
+    if (k < 2) { // a point (or nothing): the pixel square around it
+        vec2 c = q[0];
+        r[0] = c - u_grow;
+        r[1] = c + vec2(u_grow, -u_grow);
+        r[2] = c + u_grow;
+        r[3] = c + vec2(-u_grow, u_grow);
+        return n > 0 ? 4 : 0;
     }
-    for (int i = 0; i < m; i++)
-        p[i] = o[i];
+    for (int i = 0; i < k; i++) {
+        vec2 a = p[i], b = p[i + 1 < k ? i + 1 : 0];
+        area += a.x * b.y - b.x * a.y;
+    }
+    float turn = area >= 0.0 ? 1.0 : -1.0; // outward normals for this winding
+    int m = 0;
+    for (int i = 0; i < k; i++) {
+        vec2 a = p[i > 0 ? i - 1 : k - 1], b = p[i], c = p[i + 1 < k ? i + 1 : 0];
+        vec2 n1 = turn * normalize(vec2(b.y - a.y, a.x - b.x));
+        vec2 n2 = turn * normalize(vec2(c.y - b.y, b.x - c.x));
+        if (dot(n1, n2) >= -0.5) {
+            if (m < GROWN_MAX)
+                r[m++] = mitre(b, n1, n2, R);
+        } else if (m + 2 <= GROWN_MAX) {
+            // the bisector; near a hairpin (the polygon doubling back) straight on
+            vec2 h = n1 + n2;
+            vec2 t = dot(h, h) > 1e-4 ? normalize(h) : normalize(b - a);
+            r[m++] = mitre(b, n1, t, R);
+            r[m++] = mitre(b, t, n2, R);
+        }
+    }
     return m;
 }
 
@@ -161,37 +197,16 @@ int face_polygon(vec4 w[4], int n, bool screen, out vec2 r[GROWN_MAX], out vec3 
     n = clip4(c, n, vec4(0.0, -1.0, 0.0, g.y));
     n = clip4(c, n, vec4(0.0, 1.0, 0.0, g.y));
     vec2 q[GROWN_MAX];
-    vec2 lo = vec2(3.4e38), hi = vec2(-3.4e38);
-    float area = 0.0;
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n; i++)
         q[i] = (c[i].xy / max(c[i].w, 1e-30) * 0.5 + 0.5) * u_viewport.zw;
-        lo = min(lo, q[i]);
-        hi = max(hi, q[i]);
-    }
+    n = n < 3 ? 0 : n;
     depth = n < 3 ? everywhere() : depth_plane(c, q, n);
     int m = n;
     if (u_grow <= 0.0) {
         for (int i = 0; i < n; i++)
             r[i] = q[i];
     } else {
-        for (int i = 0; i < n; i++) {
-            vec2 a = q[i], b = q[i + 1 < n ? i + 1 : 0];
-            area += a.x * b.y - b.x * a.y;
-        }
-        float turn = area >= 0.0 ? 1.0 : -1.0;
-        r[0] = lo - u_grow;
-        r[1] = vec2(hi.x + u_grow, lo.y - u_grow);
-        r[2] = hi + u_grow;
-        r[3] = vec2(lo.x - u_grow, hi.y + u_grow);
-        m = n < 3 ? 0 : 4;
-        for (int i = 0; i < n && m >= 3; i++) {
-            vec2 a = q[i], b = q[i + 1 < n ? i + 1 : 0];
-            vec2 out_n = turn * vec2(b.y - a.y, a.x - b.x); // outward for this winding
-            if (out_n == vec2(0.0))
-                continue;
-            float reach = u_grow * (abs(out_n.x) + abs(out_n.y));
-            m = clip2(r, m, vec3(-out_n, dot(out_n, a) + reach));
-        }
+        m = grow_polygon(q, n, r);
     }
     if (screen) {
         r[0] = vec2(0.0);
