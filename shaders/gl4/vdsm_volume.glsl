@@ -8,8 +8,8 @@
 // viewport (plus a guard pixel: clipping also removes what lies behind the
 // eye) and then, for conservative rasterisation, grown to hold the
 // Minkowski sum with the pixel square (half side u_grow): every edge moved
-// out by the radius of the disc around that square, the corners mitred, or
-// bevelled by the disc's tangent where they are sharp. A pixel a face
+// out by the square's reach along its normal, the corners mitred, or
+// bevelled by the square's supporting line where they turn by over a right angle. A pixel a face
 // covers only in part is then tested too, so no pixel centre is lost to
 // rasterisation rules or vertex snapping.
 // With u_depth_test each face carries its own depth (the pass tests it,
@@ -29,7 +29,7 @@ flat out vec3 f_v2;
 vec3 tri[3]; // the triangle being drawn
 
 const int CLIP_MAX = 8;  // a quad cut by four planes
-const int GROWN_MAX = 12; // its corners, two more where bevelled (at most two are)
+const int GROWN_MAX = 12; // its corners, two where bevelled (at most three are)
 
 // The plane through a, b and the homogeneous light.
 vec4 light_plane(vec3 a, vec3 b)
@@ -126,19 +126,30 @@ int clip4(inout vec4 c[CLIP_MAX], int n, vec4 plane)
     return m;
 }
 
-// Where two lines at distance R from corner b meet, with unit outward
-// normals a and c at most a right angle apart (1 + dot(a, c) >= 1).
-vec2 mitre(vec2 b, vec2 a, vec2 c, float R) { return b + R * (a + c) / (1.0 + dot(a, c)); }
+// How far the pixel square (half side u_grow) reaches along unit normal n.
+float reach(vec2 n) { return u_grow * (abs(n.x) + abs(n.y)); }
+
+// Where the lines a.(x - b) = reach(a) and c.(x - b) = reach(c) meet, for
+// unit normals a and c at most a right angle apart. Nearly parallel, the
+// lines nearly coincide: the corner goes out along their mean by the larger
+// reach and 1e-3 pixels, more than where they meet lies off either line.
+vec2 corner(vec2 b, vec2 a, vec2 c)
+{
+    float ra = reach(a), rc = reach(c), det = a.x * c.y - a.y * c.x;
+    if (abs(det) < 1e-3)
+        return b + (max(ra, rc) + 1e-3) * normalize(a + c);
+    return b + (ra * vec2(c.y, -c.x) - rc * vec2(a.y, -a.x)) / det;
+}
 
 // Convex polygon q (n corners, either winding; repeated or collinear
-// corners allowed) grown into r to hold its Minkowski sum with the square of
-// half side u_grow, which the disc of radius R = u_grow sqrt 2 holds: each
-// edge's line moved out by R, meeting its neighbour's at a mitre (at most
-// 2R from the corner), or where the corner turns by over 120 degrees, cut
-// by the disc's tangent across it. Every line is a tangent of the polygon
-// grown by the disc, so r holds it. Exterior angles sum to 360 degrees, so
-// at most two corners are cut: r has at most n + 2 corners. Returns r's
-// corner count.
+// corners allowed) grown into r to hold its Minkowski sum with the pixel
+// square: each edge's line moved out by the square's reach along its
+// normal, meeting its neighbour's line; where the corner turns by over a
+// right angle, both meet the line the square supports across the corner
+// (normal on the bisector) instead of running far out. Every line supports
+// the sum, so r holds it. Exterior angles sum to 360 degrees,
+// so at most three corners are cut: r has at most n + 3 corners. Returns
+// r's corner count.
 int grow_polygon(vec2 q[GROWN_MAX], int n, out vec2 r[GROWN_MAX])
 {
     vec2 p[GROWN_MAX];
@@ -146,7 +157,6 @@ int grow_polygon(vec2 q[GROWN_MAX], int n, out vec2 r[GROWN_MAX])
     for (int i = 0; i < n; i++) // an edge needs a direction
         if (distance(q[i], q[i > 0 ? i - 1 : n - 1]) > 1e-4)
             p[k++] = q[i];
-    float R = u_grow * 1.41421356, area = 0.0;
     if (k < 2) { // a point (or nothing): the pixel square around it
         vec2 c = q[0];
         r[0] = c - u_grow;
@@ -155,6 +165,7 @@ int grow_polygon(vec2 q[GROWN_MAX], int n, out vec2 r[GROWN_MAX])
         r[3] = c + vec2(-u_grow, u_grow);
         return n > 0 ? 4 : 0;
     }
+    float area = 0.0;
     for (int i = 0; i < k; i++) {
         vec2 a = p[i], b = p[i + 1 < k ? i + 1 : 0];
         area += a.x * b.y - b.x * a.y;
@@ -165,15 +176,15 @@ int grow_polygon(vec2 q[GROWN_MAX], int n, out vec2 r[GROWN_MAX])
         vec2 a = p[i > 0 ? i - 1 : k - 1], b = p[i], c = p[i + 1 < k ? i + 1 : 0];
         vec2 n1 = turn * normalize(vec2(b.y - a.y, a.x - b.x));
         vec2 n2 = turn * normalize(vec2(c.y - b.y, b.x - c.x));
-        if (dot(n1, n2) >= -0.5) {
+        if (dot(n1, n2) >= 0.0) {
             if (m < GROWN_MAX)
-                r[m++] = mitre(b, n1, n2, R);
+                r[m++] = corner(b, n1, n2);
         } else if (m + 2 <= GROWN_MAX) {
             // the bisector; near a hairpin (the polygon doubling back) straight on
             vec2 h = n1 + n2;
             vec2 t = dot(h, h) > 1e-4 ? normalize(h) : normalize(b - a);
-            r[m++] = mitre(b, n1, t, R);
-            r[m++] = mitre(b, t, n2, R);
+            r[m++] = corner(b, n1, t);
+            r[m++] = corner(b, t, n2);
         }
     }
     return m;
