@@ -56,6 +56,12 @@
     X(void, BindAttribLocation, (GLuint p, GLuint index, const GLchar *name))             \
     X(GLint, GetUniformLocation, (GLuint p, const GLchar *name))                          \
     X(void, Uniform1i, (GLint loc, GLint v))                                              \
+    X(void, Uniform1f, (GLint loc, GLfloat v))                                            \
+    X(void, Uniform4f, (GLint loc, GLfloat x, GLfloat y, GLfloat z, GLfloat w))           \
+    X(void, UniformMatrix4fv, (GLint loc, GLsizei n, GLboolean t, const GLfloat *m))      \
+    X(void, GetShaderiv, (GLuint s, GLenum pname, GLint *v))                              \
+    X(void, GetShaderInfoLog, (GLuint s, GLsizei size, GLsizei *len, GLchar *log))        \
+    X(void, GetProgramInfoLog, (GLuint p, GLsizei size, GLsizei *len, GLchar *log))       \
     X(void, GenBuffers, (GLsizei n, GLuint *b))                                           \
     X(void, DeleteBuffers, (GLsizei n, const GLuint *b))                                  \
     X(void, BindBuffer, (GLenum target, GLuint b))                                        \

@@ -39,6 +39,8 @@ void shadow_tests(run *r, stin_tier tier, const char *path);
 void vdsm_tests(run *r, stin_tier tier, const char *path);
 /* The seed's VDSM behaviours on built-in scenes, once per run (GL4). */
 void vdsm_seed_tests(run *r, stin_tier tier);
+/* VDSM's conservative growth on random faces, from vdsm_seed_tests (vdsm_growth_test.c). */
+void vdsm_growth_tests(run *r);
 /* DOT3 bump mapping of one scene at one tier, plus a built-in analytic scene
  * on the first call per tier (dot3_test.c). */
 void dot3_tests(run *r, stin_tier tier, const char *path);

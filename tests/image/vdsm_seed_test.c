@@ -220,4 +220,5 @@ void vdsm_seed_tests(run *r, stin_tier tier)
     done = 1;
     test_ring(r);
     test_eye_at_light(r);
+    vdsm_growth_tests(r);
 }

@@ -226,6 +226,8 @@ static const bench_option table[] = {
 
     FRAMES(SEC_VDSM, "--vdsm-frames", "3", "1", PER_ROW),
     SETUPS(SEC_VDSM, "--vdsm-setups", "1", "fresh shadows-off context per set-up"),
+    {SEC_VDSM, "--vdsm-goal", NULL, NULL, NULL, set_flag, F(vdsm_goal), 0, 0, 0,
+     "only the rows the 1.5x goal compares: the full chain and stencil volumes"},
 
     {SEC_DISPLACE, "--displace-scene", "FILE", "tools/bench/scenes/displace-grid.json", NULL,
      set_text, F(sec[SEC_DISPLACE].scene), 0, 0, 0, "the dense grid (height-mapped materials "

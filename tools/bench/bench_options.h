@@ -41,6 +41,7 @@ typedef struct options {
     int_list map_sizes;     /* maps */
     int maps_no_fbo;        /* maps */
     int_list pcf_sizes, pcf_kernels;
+    int vdsm_goal;          /* vdsm: only the full chain and volumes (the goal's rows) */
     const char *displace_wall; /* displace: the coarse scene */
     int_list displace_levels;  /* displace: fixed tessellation levels on it */
     const char *deep_one, *deep_all; /* deep: point-light scenes, one face / six */

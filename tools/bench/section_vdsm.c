@@ -7,7 +7,8 @@
  * stencil volumes, each timed against shadows off. The vdsm rows count the
  * primitives their geometry shader emits (STIN_DEBUG_VDSM_COUNT, the seed's
  * P_c) in their stage-times context, so its waits for the GPU stay out of
- * the timed frames. Where the
+ * the timed frames. --vdsm-goal runs only the full chain and the volumes
+ * (a scene in a minute, not in several). Where the
  * context has timer queries each row's shadow work is timed on the GPU too
  * (STIN_DEBUG_STAGE_TIMES, a context of its own: the prepass and shadow
  * stages - vdsm's position buffer, facing pass, pyramid and polygons; the
@@ -37,12 +38,21 @@ static const struct step_set {
     {"the same in one pass", STIN_TECH_SHADOWS_VDSM, STIN_DEBUG_VDSM_ONE_PASS},
     {"volume", STIN_TECH_SHADOWS_VOLUME, 0},
 };
-enum { N = sizeof sets / sizeof sets[0], SP = 0, VOLUME = N - 1 };
+enum { N = sizeof sets / sizeof sets[0], SP = 0, FULL = 4, VOLUME = N - 1 };
 
 /* The row's shadow work on the GPU (ms): its prepass and shadow stages. */
 static double shadow_work(const tech_row *r)
 {
     return r->staged ? r->stage_ms[STIN_STAGE_PREPASS] + r->stage_ms[STIN_STAGE_SHADOW] : 0.0;
+}
+
+/* A ratio's cell: empty where the row it divides by did not run. */
+static void ratio_cell(double of, const tech_row *by, double by_value, const char *fmt)
+{
+    if (by->skipped || by_value <= 0)
+        printf(" |");
+    else
+        printf(fmt, of / by_value);
 }
 
 static void print_scene(const char *label, const tech_row *rows)
@@ -55,30 +65,36 @@ static void print_scene(const char *label, const tech_row *rows)
     printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (i = 0; i < N; i++) {
         const tech_row *r = &rows[i];
+        if (r->skipped && !r->why[0])
+            continue; /* not asked (--vdsm-goal) */
         if (r->skipped) {
             printf("| %s | SKIP: %s | | | | | | | | |\n", sets[i].name, r->why);
             continue;
         }
-        if (i == VOLUME)
+        if (i == VOLUME) {
             printf("| %s | | |", sets[i].name);
-        else
-            printf("| %s | %u | %.3f |", sets[i].name, r->primitives,
-                   sp->primitives ? (double)r->primitives / sp->primitives : 0.0);
-        printf(" %.2f | %.2f | %.2f | %.2f | %.2f |", r->base_ms, r->on_ms, tech_ratio(r),
-               !sp->skipped && sp->on_ms > 0 ? r->on_ms / sp->on_ms : 0.0,
-               !vol->skipped && vol->on_ms > 0 ? r->on_ms / vol->on_ms : 0.0);
-        if (r->staged)
-            printf(" %.3f | %.2f |\n", shadow_work(r),
-                   shadow_work(vol) > 0 ? shadow_work(r) / shadow_work(vol) : 0.0);
-        else
+        } else {
+            printf("| %s | %u |", sets[i].name, r->primitives);
+            ratio_cell(r->primitives, sp, sp->primitives, " %.3f |");
+        }
+        printf(" %.2f | %.2f | %.2f |", r->base_ms, r->on_ms, tech_ratio(r));
+        ratio_cell(r->on_ms, sp, sp->on_ms, " %.2f |");
+        ratio_cell(r->on_ms, vol, vol->on_ms, " %.2f |");
+        if (r->staged) {
+            printf(" %.3f |", shadow_work(r));
+            ratio_cell(shadow_work(r), vol, shadow_work(vol), " %.2f |");
+            printf("\n");
+        } else {
             printf(" not timed | |\n");
+        }
     }
     fflush(stdout);
 }
 
 int section_vdsm(bench_env *env, const scene *s, int *ran)
 {
-    tech_row rows[N];
+    tech_row rows[N], asked[N];
+    int pick[N], n = 0;
     stin_tier tier;
     tech_settings st;
     char label[128], timing[160];
@@ -91,18 +107,28 @@ int section_vdsm(bench_env *env, const scene *s, int *ran)
            bench_row_timing(env, st.setups, st.frames, timing, sizeof timing));
     if (!bench_tiers(env, TIER_BIT(STIN_TIER_GL4), WHAT, "gl4 only", &tier))
         return 0;
+    for (k = 0; k < N; k++)
+        if (!env->o->vdsm_goal || k == FULL || k == VOLUME)
+            pick[n++] = k;
     for (i = 0; i < env->o->scene_count; i++) {
-        memset(rows, 0, sizeof rows);
-        for (k = 0; k < N; k++) {
-            rows[k].cfg.shadows = sets[k].shadows;
-            rows[k].cfg.surface = STIN_TECH_NONE;
-            rows[k].cfg.debug_flags = sets[k].flags;
-            rows[k].cfg.counted_flags = sets[k].shadows == STIN_TECH_SHADOWS_VDSM ? COUNT : 0;
+        memset(asked, 0, sizeof asked);
+        for (k = 0; k < n; k++) {
+            const struct step_set *set = &sets[pick[k]];
+            asked[k].cfg.shadows = set->shadows;
+            asked[k].cfg.surface = STIN_TECH_NONE;
+            asked[k].cfg.debug_flags = set->flags;
+            asked[k].cfg.counted_flags = set->shadows == STIN_TECH_SHADOWS_VDSM ? COUNT : 0;
         }
         scene_label(env->o->scenes[i], label, sizeof label);
-        if (!bench_tech_tier(env, &st, tier, WHAT, &env->scenes[i], rows, N, &rc))
+        if (!bench_tech_tier(env, &st, tier, WHAT, &env->scenes[i], asked, n, &rc))
             return rc;
         *ran = 1;
+        for (k = 0; k < N; k++) { /* a row not asked: skipped, no reason */
+            memset(&rows[k], 0, sizeof rows[k]);
+            rows[k].skipped = 1;
+        }
+        for (k = 0; k < n; k++)
+            rows[pick[k]] = asked[k];
         print_scene(label, rows);
     }
     return 0;
