@@ -194,6 +194,7 @@ typedef struct stin__vdsm_cull {
     GLuint buffer, vao;         /* the kept faces, 48 bytes each; the fed pass's arrays */
     GLuint feedback, query;     /* feedback object (or 0); primitives-written query (or 0) */
     uint32_t capacity;          /* faces the buffer holds */
+    uint32_t oversized;         /* light passes in a row it held over 4x their need */
     stin__vdsm_polygon_locs cull, fed;
     int usable;
     uint32_t kept;              /* faces kept by the last light's pass, where counted */

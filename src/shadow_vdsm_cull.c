@@ -22,6 +22,8 @@
 
 #define BYTES_PER_PART 48u /* three vec4: a corner and one value each */
 #define PARTS_PER_TRIANGLE 4u /* three side faces and its own, or the viewport */
+#define TRIM_PASSES 60u /* passes over 4x the need before the buffer is given back */
+#define TRIM_FLOOR 1024u /* parts the buffer always holds (48 KB) */
 
 void stin__vdsm_cull_release(stin_context *ctx)
 {
@@ -113,9 +115,8 @@ void stin__vdsm_cull_init(stin_context *ctx)
     c->usable = 1;
 }
 
-/* Room for every part of every triangle the frame's casters have; grown,
- * never shrunk. 0 where it does not fit. */
-static int reserve(stin_context *ctx, stin__vdsm_cull *c)
+/* The parts every triangle of the frame's casters may keep. */
+static uint64_t parts_needed(const stin_context *ctx)
 {
     uint64_t n = 0;
     uint32_t i;
@@ -124,9 +125,16 @@ static int reserve(stin_context *ctx, stin__vdsm_cull *c)
         if (!stin__translucent_skips(ctx, d))
             n += PARTS_PER_TRIANGLE * ctx->meshes[d->mesh_slot].triangle_count;
     }
-    if (n <= c->capacity)
-        return 1;
-    n += n / 4; /* room to grow without a reallocation per frame */
+    return n;
+}
+
+/* The buffer's store, for n parts and a quarter more (room to grow without
+ * a reallocation per frame); 0 where it would pass 2 GB. */
+static int allocate(stin_context *ctx, stin__vdsm_cull *c, uint64_t n)
+{
+    n += n / 4;
+    if (n < TRIM_FLOOR)
+        n = TRIM_FLOOR;
     if (n * BYTES_PER_PART > 0x7fffffffu)
         return 0;
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, c->buffer);
@@ -134,6 +142,24 @@ static int reserve(stin_context *ctx, stin__vdsm_cull *c)
                         GL_DYNAMIC_COPY);
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     c->capacity = (uint32_t)n;
+    c->oversized = 0;
+    return 1;
+}
+
+/* Room for every part of every triangle the frame's casters have: grown
+ * when a light's pass needs more, given back when TRIM_PASSES passes in a
+ * row needed under a quarter of it (a scene that once had many casters
+ * does not keep their memory; one that swings between two sizes is not
+ * reallocated every frame). 0 where it does not fit. */
+static int reserve(stin_context *ctx, stin__vdsm_cull *c)
+{
+    uint64_t n = parts_needed(ctx);
+    if (n > c->capacity)
+        return allocate(ctx, c, n);
+    if (c->capacity <= TRIM_FLOOR || n * 4 >= c->capacity)
+        c->oversized = 0;
+    else if (++c->oversized >= TRIM_PASSES)
+        allocate(ctx, c, n); /* smaller: it cannot fail */
     return 1;
 }
 

@@ -937,6 +937,34 @@ static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
+/* vdsm's culling buffer: grown to a frame's casters (4 parts a triangle
+ * and a quarter more), kept while a light's pass needs over a quarter of
+ * it, given back at the 60th pass in a row that needs less, grown again at
+ * once. */
+static void test_vdsm_cull_buffer_given_back(void **state)
+{
+    const stin__vdsm_cull *c;
+    int i;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VDSM;
+    create_profile(FAKE_GL45_CORE, 16, 640);
+    c = &ctx->vdsm.culling;
+    frame_with(1, 600, 0, STIN_OUTPUT_BEAUTY); /* 600 quads: 4800 parts */
+    assert_int_equal(c->capacity, 6000);
+    for (i = 0; i < 70; i++) /* 2000 parts: over a quarter */
+        frame_with(1, 250, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(c->capacity, 6000);
+    for (i = 0; i < 29; i++) /* 16 parts, two lights a frame: 58 passes */
+        frame_with(2, 2, 0, STIN_OUTPUT_BEAUTY);
+    frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(c->capacity, 6000);
+    frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY); /* the 60th */
+    assert_int_equal(c->capacity, 1024);     /* the floor: 48 KB */
+    frame_with(1, 600, 0, STIN_OUTPUT_BEAUTY);
+    assert_int_equal(c->capacity, 6000);
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 /* vdsm culls first: per light one transform-feedback pass, its kept
  * triangles drawn in one draw - from the feedback object on GL 4.0+, by a
  * query's count before it - and the one-pass program under
@@ -1089,6 +1117,7 @@ int main(void)
         TEST(test_vdsm_tessellates_only_displaced_frames),
         TEST(test_vdsm_receivers_by_atomics_on_gl43),
         TEST(test_vdsm_culls_into_feedback_then_draws_once),
+        TEST(test_vdsm_cull_buffer_given_back),
         TEST(test_mask_depth_pass_only_where_read),
         TEST(test_frame_leaves_documented_state),
         TEST(test_npot_texture_on_gl11_is_resampled_with_mips),
