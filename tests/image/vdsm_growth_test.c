@@ -357,6 +357,8 @@ void vdsm_growth_tests(run *r)
     char log[512];
     memset(&g, 0, sizeof g);
     caller_gl_load(&g.gl, r->plat);
+    for (k = 0; k < 16 && g.gl.GetError() != GL_NO_ERROR; k++)
+        ; /* an error an earlier test left must not count as this one's */
     if (!faces || !rgba || count < 16) {
         report(r, "FAIL", name, "out of memory, or a framebuffer under 16 cells");
         goto done;
