@@ -29,6 +29,8 @@ TOOL_CFLAGS := -std=c99 $(WARN) $(OPT) -D_POSIX_C_SOURCE=200809L -Iinclude -Ipla
   -Itests/reference $(shell pkg-config --cflags libcjson 2>/dev/null)
 TOOL_CXXFLAGS := -std=c++17 $(WARN) $(OPT) -Iinclude -Itools/common
 SAN := -fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=all
+# Every object depends on exactly the headers it includes (.d files beside it).
+DEPFLAGS = -MMD -MP
 
 OSMESA ?= yes
 OIIO ?= yes
@@ -36,7 +38,7 @@ PLATFORM_LIBS := -lEGL $(if $(filter no,$(OSMESA)),,-lOSMesa) -ldl
 TOOL_LIBS := $(if $(filter no,$(OIIO)),,-lOpenImageIO -lOpenImageIO_Util) -lassimp -lcjson -lstdc++ -lm
 REF_LIBS := -lembree3
 
-LIB_SRC := $(sort $(wildcard src/*.c))
+LIB_SRC := $(sort $(wildcard src/*/*.c))
 SHADERS := $(sort $(wildcard shaders/gl2/*.vert shaders/gl2/*.frag shaders/gl2/*.glsl shaders/gl4/*.vert shaders/gl4/*.frag shaders/gl4/*.geom shaders/gl4/*.tesc shaders/gl4/*.glsl))
 PLATFORM_SRC := $(if $(filter no,$(OSMESA)),$(filter-out platform/platform_osmesa.c,$(sort $(wildcard platform/*.c))) \
   platform/absent/osmesa_absent.c,$(sort $(wildcard platform/*.c)))
@@ -50,7 +52,7 @@ PLATFORM_OBJ := $(PLATFORM_SRC:%.c=$(B)/obj/%.o)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(B)/obj/%.o) $(COMMON_CXX:%.cpp=$(B)/obj/%.o)
 REF_OBJ := $(REF_SRC:%.c=$(B)/obj/%.o)
 
-.PHONY: all check demo bench install uninstall clean deps tests fuzz examples
+.PHONY: all check check-quick demo bench install uninstall clean deps tests fuzz examples
 all: $(B)/libstin.a $(B)/libstin_platform.a $(B)/stin-render $(B)/stin-bench examples
 
 deps:
@@ -61,9 +63,9 @@ $(B)/shaders_embedded.c: $(SHADERS) tools/embed-shaders.sh
 	@mkdir -p $(@D)
 	sh tools/embed-shaders.sh $(SHADERS) > $@.tmp && mv $@.tmp $@
 
-$(B)/lib/%.o: %.c $(wildcard include/stin/*.h src/*.h)
+$(B)/lib/%.o: %.c
 	@mkdir -p $(@D)
-	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -c $< -o $@
+	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) $(DEPFLAGS) -c $< -o $@
 $(B)/lib/shaders_embedded.o: $(B)/shaders_embedded.c
 	@mkdir -p $(@D)
 	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -c $< -o $@
@@ -71,9 +73,9 @@ $(B)/libstin.a: $(LIB_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # Test build: every GL call is checked against the capability profile.
-$(B)/checked/%.o: %.c $(wildcard include/stin/*.h src/*.h)
+$(B)/checked/%.o: %.c
 	@mkdir -p $(@D)
-	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -DSTIN_GL_CHECK=1 -c $< -o $@
+	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) $(DEPFLAGS) -DSTIN_GL_CHECK=1 -c $< -o $@
 $(B)/checked/shaders_embedded.o: $(B)/shaders_embedded.c
 	@mkdir -p $(@D)
 	@echo "  CC      $<"; $(CC) $(LIB_CFLAGS) -c $< -o $@
@@ -81,12 +83,12 @@ $(B)/libstin_checked.a: $(CHECKED_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 
 # ---- platform, tool support, reference -------------------------------------
-$(B)/obj/%.o: %.c $(wildcard include/stin/*.h platform/*.h tools/common/*.h tools/bench/*.h tools/render/*.h tests/reference/*.h tests/image/*.h)
+$(B)/obj/%.o: %.c
 	@mkdir -p $(@D)
-	@echo "  CC      $<"; $(CC) $(TOOL_CFLAGS) -c $< -o $@
-$(B)/obj/%.o: %.cpp $(wildcard tools/common/*.h)
+	@echo "  CC      $<"; $(CC) $(TOOL_CFLAGS) $(DEPFLAGS) -c $< -o $@
+$(B)/obj/%.o: %.cpp
 	@mkdir -p $(@D)
-	@echo "  CXX     $<"; $(CXX) $(TOOL_CXXFLAGS) -c $< -o $@
+	@echo "  CXX     $<"; $(CXX) $(TOOL_CXXFLAGS) $(DEPFLAGS) -c $< -o $@
 $(B)/libstin_platform.a: $(PLATFORM_OBJ)
 	rm -f $@ && $(AR) rcs $@ $^
 $(B)/libstin_tools.a: $(COMMON_OBJ)
@@ -99,9 +101,11 @@ $(B)/libstin_reference.a: $(REF_OBJ)
 # ---- tools -----------------------------------------------------------------
 $(B)/stin-render: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/render/*.c))) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
+# tests/image/readback_log.c: every read-back hashed into STIN_READBACK_LOG
+READBACK_WRAP := -Wl,--wrap=stin_platform_read_color,--wrap=stin_platform_read_depth
 IMAGETEST_OBJ := $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tests/image/*.c)))
 $(B)/stin-imagetest: $(IMAGETEST_OBJ) $(B)/libstin_reference.a $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin_checked.a
-	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
+	$(CC) $(OPT) -o $@ $^ $(READBACK_WRAP) $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
 
 # ---- unit tests (cmocka, AddressSanitizer + UndefinedBehaviorSanitizer) ----
 SAN_CFLAGS := -std=c99 $(WARN) -g -O1 $(SAN) -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -I$(B) \
@@ -110,22 +114,35 @@ LIB_UNIT := $(filter-out test_noheap test_scene test_reference,$(patsubst tests/
 UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_reference $(B)/tests/test_noheap \
   $(B)/tests/test_fuzz_scene $(B)/tests/test_fuzz_files
 
+# Everything a unit test links is compiled once under the sanitisers into
+# $(B)/san/ (the library as libstin_san.a), not once per test binary.
+$(B)/san/%.o: %.c
+	@mkdir -p $(@D)
+	@echo "  CC san  $<"; $(CC) $(SAN_CFLAGS) $(DEPFLAGS) -c $< -o $@
+$(B)/san/%.o: %.cpp
+	@mkdir -p $(@D)
+	@echo "  CXX san $<"; $(CXX) -std=c++17 $(WARN) -g -O1 $(SAN) -Iinclude -Itools/common $(DEPFLAGS) -c $< -o $@
+$(B)/san/shaders_embedded.o: $(B)/shaders_embedded.c
+	@mkdir -p $(@D)
+	@echo "  CC san  $<"; $(CC) $(SAN_CFLAGS) -c $< -o $@
+$(B)/libstin_san.a: $(LIB_SRC:%.c=$(B)/san/%.o) $(B)/san/shaders_embedded.o
+	rm -f $@ && $(AR) rcs $@ $^
+san_obj = $(patsubst %.cpp,$(B)/san/%.o,$(patsubst %.c,$(B)/san/%.o,$(1)))
 FAKE_GL_SRC := tests/unit/fake_gl.c tests/unit/fake_gl_state.c tests/unit/fake_gl_attrib.c
-$(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: tests/unit/%.c $(FAKE_GL_SRC) $(LIB_SRC) $(B)/shaders_embedded.c $(wildcard src/*.h include/stin/*.h tests/unit/*.h)
+$(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: $(B)/san/tests/unit/%.o $(call san_obj,$(FAKE_GL_SRC)) $(B)/libstin_san.a
 	@mkdir -p $(@D)
-	$(CC) $(SAN_CFLAGS) -o $@ $< $(FAKE_GL_SRC) $(LIB_SRC) $(B)/shaders_embedded.c -lcmocka
-$(B)/tests/test_scene: tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(PLATFORM_SRC) $(B)/libstin.a $(wildcard tools/common/*.h)
-	@mkdir -p $(@D)/san
-	$(CXX) -std=c++17 $(WARN) -g -O1 $(SAN) -Iinclude -Itools/common -c tools/common/image_io.cpp -o $(@D)/san/image_io.o
-	$(CC) $(SAN_CFLAGS) -o $@ $< $(filter %.c,$(COMMON_SRC)) $(PLATFORM_SRC) $(B)/libstin.a $(@D)/san/image_io.o -lcmocka $(TOOL_LIBS) $(PLATFORM_LIBS)
-$(B)/tests/test_reference: tests/unit/test_reference.c $(REF_SRC) $(B)/libstin.a $(wildcard tests/reference/*.h)
+	$(CC) $(SAN) -o $@ $^ -lcmocka
+$(B)/tests/test_scene: $(call san_obj,tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(PLATFORM_SRC)) $(B)/libstin.a
 	@mkdir -p $(@D)
-	$(CC) $(SAN_CFLAGS) -o $@ $< $(REF_SRC) $(B)/libstin.a -lcmocka $(REF_LIBS) -lm
+	$(CXX) $(SAN) -o $@ $^ -lcmocka $(TOOL_LIBS) $(PLATFORM_LIBS)
+$(B)/tests/test_reference: $(call san_obj,tests/unit/test_reference.c $(REF_SRC)) $(B)/libstin.a
+	@mkdir -p $(@D)
+	$(CC) $(SAN) -o $@ $^ -lcmocka $(REF_LIBS) -lm
 # The allocator is interposed here, so no AddressSanitizer (it owns malloc).
 $(B)/tests/test_noheap: tests/unit/test_noheap.c $(FAKE_GL_SRC) $(B)/libstin.a
 	@mkdir -p $(@D)
 	$(CC) -std=c99 $(WARN) -g -O1 -fsanitize=undefined -fno-sanitize-recover=all -D_GNU_SOURCE -Iinclude -Isrc -I$(B) -Itests/unit \
-	  -o $@ $< $(FAKE_GL_SRC) $(B)/libstin.a -lcmocka
+	  -o $@ $(filter %.c %.a,$^) -lcmocka
 
 # stin-bench --csg times OpenCSG too where it is installed (libopencsg-dev,
 # libglew-dev): its C++ shim, compiled only for the bench
@@ -147,6 +164,12 @@ tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/li
 check: deps
 	@$(MAKE) --no-print-directory tests
 	@sh tests/run.sh $(B)
+
+# The edit loop: every unit test, the image tests of three profiles (one a
+# tier: gl11, gl21, gl45-core) on EGL, the render CLI and the layer check.
+check-quick: deps
+	@$(MAKE) --no-print-directory tests
+	@STIN_TEST_QUICK=1 STIN_TEST_PLATFORMS=egl STIN_TEST_PROFILES="gl11 gl21 gl45-core" sh tests/run.sh $(B)
 
 bench: deps
 	@$(MAKE) --no-print-directory $(B)/stin-bench
@@ -221,11 +244,14 @@ $(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_SRC) $(B)/fuzz/image_io.o $(wildcar
 	  -Itools/common $(shell pkg-config --cflags libcjson 2>/dev/null) -o $@ $< $(FUZZ_SRC) -x none \
 	  $(B)/fuzz/image_io.o $(FUZZ_LIBS)
 # make check replays the committed corpus and every crash found, without libFuzzer.
-$(B)/tests/test_fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(FUZZ_SRC) $(B)/tests/test_scene $(wildcard tools/common/*.h)
+$(B)/tests/test_fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(call san_obj,$(FUZZ_SRC) tools/common/image_io.cpp)
+	@mkdir -p $(@D)
 	$(CC) $(SAN_CFLAGS) -DREPLAY_NAME='"fuzz_$*"' -DREPLAY_DIRS='"$(FUZZ_DIRS_$*)"' \
-	  -o $@ $< tests/fuzz/replay_main.c $(FUZZ_SRC) $(B)/tests/san/image_io.o $(FUZZ_LIBS)
+	  -o $@ $< tests/fuzz/replay_main.c $(call san_obj,$(FUZZ_SRC) tools/common/image_io.cpp) $(FUZZ_LIBS)
 fuzz: deps $(B)/fuzz/fuzz_scene $(B)/fuzz/fuzz_files
 	@sh tests/fuzz/run.sh $(B) $(FUZZ_SECONDS)
 
 $(B)/stin-reference: $(B)/obj/tests/tools/reference_render.o $(B)/libstin_reference.a $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
+
+-include $(shell find $(B) -name '*.d' 2>/dev/null)

@@ -6,21 +6,21 @@
 #define STIN_INTERNAL_H
 
 #include "stin/stin.h"
-#include "gl_calls.h"
-#include "base.h"
-#include "caps_parse.h"
-#include "technique.h"
-#include "mesh_store.h"
-#include "path.h"
-#include "pass_state.h"
-#include "shadow.h"
-#include "surface.h"
-#include "visibility_export.h"
-#include "outline.h"
-#include "csg.h"
-#include "translucent.h"
-#include "transparency.h"
-#include "stage_times.h"
+#include "gl/gl_calls.h"
+#include "base/base.h"
+#include "gl/caps_parse.h"
+#include "select/technique.h"
+#include "assets/mesh_store.h"
+#include "render/path.h"
+#include "gl/pass_state.h"
+#include "shadow/shadow.h"
+#include "surface/surface.h"
+#include "post/visibility_export.h"
+#include "post/outline.h"
+#include "csg/csg.h"
+#include "translucent/translucent.h"
+#include "transparency/transparency.h"
+#include "gl/stage_times.h"
 
 typedef enum stin__frame_state { STIN__IDLE = 0, STIN__IN_FRAME } stin__frame_state;
 
@@ -34,9 +34,9 @@ struct stin_context {
     uint32_t gl_violations;   /* checked build: calls the profile does not allow */
     uint32_t gl_errors;       /* checked build: glGetError results */
 
-    /* meshes and textures (mesh.c, texture.c) */
+    /* meshes and textures (assets/mesh.c, assets/texture.c) */
     uint32_t creation_serial; /* contexts made in this block so far (kept across them) */
-    uint32_t handle_tag;      /* top 8 bits of this context's handles (handle_pool.c) */
+    uint32_t handle_tag;      /* top 8 bits of this context's handles (base/handle_pool.c) */
     stin__mesh_slot *meshes;
     stin__texture_slot *textures;
     stin__vertex *vertices;   /* max_vertices */
@@ -49,7 +49,7 @@ struct stin_context {
     unsigned char *staging;   /* texture creation */
     size_t staging_bytes;
 
-    /* the frame (frame.c) */
+    /* the frame (frame/frame.c) */
     stin__draw *draws;
     uint32_t *draw_order;
     stin_light_desc *lights;
@@ -74,7 +74,7 @@ struct stin_context {
     unsigned char pass_channel; /* 0, or 1-4: the draws' passes write only R, G, B or A
                                  * (a light's channel of the visibility export) */
     GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
-    struct {                  /* the frame's framebuffer (framebuffer_probe.c) */
+    struct {                  /* the frame's framebuffer (gl/framebuffer_probe.c) */
         GLuint name;          /* the one probed last (0 = default) */
         int stencil_bits, depth_bits;
         int shadows_off;      /* the shadows choice cannot run into it (no stencil) */
@@ -94,13 +94,13 @@ struct stin_context {
     stin__map_pcf_state map_pcf;
     stin__mask_state mask;
     stin__vdsm_state vdsm;
-    stin__export_state visibility; /* the visibility map (visibility_export.c) */
-    stin__outline_state outline;   /* the deferred outline (outline.c) */
-    stin__csg_state csg;      /* the frame's CSG products (csg.c) */
-    stin__deep_state deep;    /* translucent shadows' deep maps (translucent_deep.c) */
-    stin__coloured_state coloured; /* translucent shadows' colour maps (translucent_coloured.c) */
-    stin__peel_state peel;    /* transparency's camera layers (transparency_peel.c) */
-    stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (stage_times.c) */
+    stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
+    stin__outline_state outline;   /* the deferred outline (post/outline.c) */
+    stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
+    stin__deep_state deep;    /* translucent shadows' deep maps (translucent/deep.c) */
+    stin__coloured_state coloured; /* translucent shadows' colour maps (translucent/coloured.c) */
+    stin__peel_state peel;    /* transparency's camera layers (transparency/peel.c) */
+    stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
 
     /* surface detail */
     struct {
@@ -119,13 +119,13 @@ struct stin_context {
     } glsl_surface;
     stin__lit_cache lit_cache; /* lit programs per light batch and material */
     struct {                  /* "displace-tess": the programs above, tessellated
-                               * (path_glsl.c), swapped in for frames with
+                               * (render/path_glsl.c), swapped in for frames with
                                * displaced draws */
         stin__program programs[STIN__PROG_COUNT];
         stin__program lit[STIN__SURF_COUNT];
         int active;           /* they are in ctx->programs and glsl_surface.lit now */
     } glsl_tess;
-    struct {                  /* displacement (surface_displace.c) */
+    struct {                  /* displacement (surface/displace.c) */
         uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
         uint32_t logged_count;
         float tess[4];        /* the frame's u_tess (gl4/tess.tesc); [0] and [3] serve
@@ -144,7 +144,7 @@ struct stin_context {
 
 stin_desc stin__desc_defaults(const stin_desc *desc);
 
-/* Texture staging (texture.c): the regions a texture's levels are built in. */
+/* Texture staging (assets/texture.c): the regions a texture's levels are built in. */
 #define STIN__MAX_TEXELS (1ull << 30) /* 32-bit byte offsets, 4 a texel */
 typedef struct stin__staging_plan {
     uint64_t region_a, region_b, derived, total;
@@ -152,11 +152,11 @@ typedef struct stin__staging_plan {
 stin__staging_plan stin__plan_staging(uint32_t w, uint32_t h, int mips, int staged0,
                                       uint64_t derived_bytes);
 uint32_t stin__pot_at_least(uint32_t n);
-/* Around a frame (state.c): save what the header promises to give back,
+/* Around a frame (frame/state.c): save what the header promises to give back,
  * then restore it and reset the rest to the documented defaults. */
 void stin__state_save(stin_context *ctx);
 void stin__state_restore(stin_context *ctx);
-/* Caller state no pass sets (caller_state.c): defaults sets GL's defaults
+/* Caller state no pass sets (gl/caller_state.c): defaults sets GL's defaults
  * for every tier; fixed_begin, after the attribute push, does the same for
  * what the fixed pipeline mixes in (texture matrices get a stack level) and
  * fixed_end, before the pop, gives the texture matrices back. */
@@ -164,7 +164,7 @@ void stin__caller_state_defaults(stin_context *ctx);
 void stin__caller_state_fixed_begin(stin_context *ctx);
 void stin__caller_state_fixed_end(stin_context *ctx);
 
-/* The frame's framebuffer (framebuffer_probe.c). target_init, at
+/* The frame's framebuffer (gl/framebuffer_probe.c). target_init, at
  * stin_create after detection: the default framebuffer's bits, and the
  * stencil capability if it or the bound one has a stencil buffer.
  * target_check, at begin and end of a frame: `name` must be a complete

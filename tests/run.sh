@@ -1,62 +1,95 @@
 #!/bin/sh
 # SPDX-License-Identifier: MIT
 # The test runner of `make check`. Runs every test binary, each capability
-# profile in its own process on both platforms, and ends with the line
+# profile in its own process on both platforms, STIN_TEST_JOBS suites at a
+# time (default: the number of cores), prints each suite's lines in a fixed
+# order once all are done, the ten slowest suites, and ends with the line
 #   N passed, N failed, N skipped
 # Usage: tests/run.sh BUILD_DIR
 # Environment: STIN_TEST_PLATFORMS (default "egl osmesa"),
-#              STIN_TEST_PROFILES (default: every profile of docs/profiles.md).
+#              STIN_TEST_PROFILES (default: every profile of docs/profiles.md),
+#              STIN_TEST_QUICK=1 leaves out the install, licence, readme and
+#              bench suites (make check-quick), STIN_TEST_JOBS.
 set -u
 B=${1:-build}
 LOG=$B/test-log.txt
 OUT=$B/test-out
-mkdir -p "$OUT"
+SUITES=$OUT/suites
+rm -rf "$SUITES"
+mkdir -p "$OUT" "$SUITES"
 : > "$LOG"
 PLATFORMS=${STIN_TEST_PLATFORMS:-egl osmesa}
 PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45-core}
+JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 SCENES=$(ls tests/scenes/*.json)
-
-# Runs one command; its PASS/FAIL/SKIP lines (or TAP lines) count. A command
-# that exits non-zero without reporting a failure counts as one failure.
-run() {
-    name=$1
-    shift
-    tmp=$OUT/run.$$
-    "$@" > "$tmp" 2>&1
-    rc=$?
-    # cmocka TAP -> PASS/FAIL lines
-    sed -e "s/^ok [0-9]* - \(.*\)/PASS $name: \1/" \
-        -e "s/^not ok [0-9]* - \(.*\)/FAIL $name: \1/" \
-        -e "s/^ok [0-9]* # SKIP \(.*\)/SKIP $name: \1/" "$tmp" | tee -a "$LOG" | grep -E '^(PASS|FAIL|SKIP) '
-    if [ $rc -ne 0 ] && ! grep -q '^\(not ok\|FAIL\) ' "$tmp"; then
-        echo "FAIL $name: exited with status $rc" | tee -a "$LOG"
-        tail -n 20 "$tmp" | sed 's/^/    /'
-    fi
-    grep -E '^(#|    )' "$tmp" | grep -iE 'error|fail|assert' | head -n 20 | sed 's/^/    /'
-    rm -f "$tmp"
-}
 
 export CMOCKA_MESSAGE_OUTPUT=TAP
 # Driver-internal leaks (OSMesa, EGL) are not ours; see docs/testing.md.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
-for t in "$B"/tests/test_*; do
-    [ -x "$t" ] || continue
-    case $t in
-        *test_noheap*) run "$(basename "$t")" "$t" "$B/libstin.a" ;;
-        *) run "$(basename "$t")" "$t" ;;
-    esac
-done
 
-for plat in $PLATFORMS; do
-    for prof in $PROFILES; do
-        run "image" "$B/stin-imagetest" --profile "$prof" --platform "$plat" --out "$OUT" $SCENES
+# The suites, one a line: "NAME COMMAND...", the longest first so that the
+# parallel run ends together. Arguments hold no spaces.
+{
+    for plat in $PLATFORMS; do
+        for prof in $PROFILES; do
+            echo "image:$plat:$prof $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $SCENES
+        done
     done
-done
+    for t in "$B"/tests/test_*; do
+        [ -x "$t" ] || continue
+        case $t in
+            *test_noheap*) echo "$(basename "$t") $t $B/libstin.a" ;;
+            *) echo "$(basename "$t") $t" ;;
+        esac
+    done
+    echo "cli sh tests/cli/test_render.sh $B/stin-render"
+    echo "layers sh tests/cli/test_layers.sh $B"
+    if [ "${STIN_TEST_QUICK:-0}" != 1 ]; then
+        echo "install sh tests/cli/test_install.sh"
+        echo "licence sh tests/cli/test_licence.sh"
+        echo "readme sh tests/cli/test_readme.sh"
+        echo "bench sh tests/cli/test_bench.sh $B/stin-bench $OUT/bench-quick.txt"
+    fi
+} | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
 
-run "cli" sh tests/cli/test_render.sh "$B/stin-render"
-run "install" sh tests/cli/test_install.sh
-run "licence" sh tests/cli/test_licence.sh
-run "readme" sh tests/cli/test_readme.sh
-run "bench" sh tests/cli/test_bench.sh "$B/stin-bench" "$OUT/bench-quick.txt"
+# One suite: its output, exit status and wall seconds into SUITES/NNN.*.
+run_suite() {
+    dir=$1 num=$2
+    shift 2
+    shift # the name
+    start=$(date +%s.%N)
+    "$@" > "$dir/$num.out" 2>&1
+    echo $? > "$dir/$num.rc"
+    end=$(date +%s.%N)
+    echo "$start $end" | awk '{ printf "%.1f\n", $2 - $1 }' > "$dir/$num.seconds"
+}
+if [ "${1:-}" = --suite ]; then
+    shift
+    run_suite "$@"
+    exit 0
+fi
+
+xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/list"
+
+# In list order: cmocka TAP -> PASS/FAIL lines; a suite that exits non-zero
+# without reporting a failure counts as one failure.
+while read -r num name _; do
+    tmp=$SUITES/$num.out
+    rc=$(cat "$SUITES/$num.rc" 2>/dev/null || echo 127)
+    label=${name%%:*}
+    sed -e "s/^ok [0-9]* - \(.*\)/PASS $label: \1/" \
+        -e "s/^not ok [0-9]* - \(.*\)/FAIL $label: \1/" \
+        -e "s/^ok [0-9]* # SKIP \(.*\)/SKIP $label: \1/" "$tmp" | tee -a "$LOG" | grep -E '^(PASS|FAIL|SKIP) '
+    if [ "$rc" -ne 0 ] && ! grep -q '^\(not ok\|FAIL\) ' "$tmp"; then
+        echo "FAIL $name: exited with status $rc" | tee -a "$LOG"
+        tail -n 20 "$tmp" | sed 's/^/    /'
+    fi
+    grep -E '^(#|    )' "$tmp" | grep -iE 'error|fail|assert' | head -n 20 | sed 's/^/    /'
+done < "$SUITES/list"
+
+echo "slowest suites (wall seconds, $JOBS at a time):"
+while read -r num name _; do
+    echo "$(cat "$SUITES/$num.seconds" 2>/dev/null || echo 0) $name"
+done < "$SUITES/list" | sort -rn | head -n 10 | sed 's/^/  /'
 
 awk '/^PASS /{p++} /^FAIL /{f++} /^SKIP /{s++} END {printf "%d passed, %d failed, %d skipped\n", p, f, s; exit f > 0}' "$LOG"

@@ -1,6 +1,6 @@
 #version 120
 // SPDX-License-Identifier: MIT
-// Coloured shadow maps (technique "coloured", src/translucent_coloured.c):
+// Coloured shadow maps (technique "coloured", src/translucent/coloured.c):
 // a transparent caster's vertices in the light's clip space, its uv for the
 // albedo texture. Both passes of a face draw through it, so the depth pass
 // and the colour pass cover the same texels.

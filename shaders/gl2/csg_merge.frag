@@ -1,6 +1,6 @@
 #version 110
 // SPDX-License-Identifier: MIT
-// The GPU CSG resolve's merge (src/csg_merge.c): the work buffer's depth
+// The GPU CSG resolve's merge (src/csg/merge.c): the work buffer's depth
 // under the fragment (texel = window pixel) written as the fragment's
 // depth, where a candidate is (not 0, not the far plane); the depth test
 // keeps the nearer. (interval, which selects by its walk, is GL4's.)

@@ -1,6 +1,6 @@
 #version 120
 // SPDX-License-Identifier: MIT
-// The GPU CSG resolve's snap (src/csg_merge.c): a product's face
+// The GPU CSG resolve's snap (src/csg/merge.c): a product's face
 // fragment is kept only where it lies on the resolved surface (within a
 // band of the result, or in a direct resolve of the candidate taken), so
 // the frame's depth gets the face's own depth.

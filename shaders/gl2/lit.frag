@@ -5,7 +5,7 @@
 // Light i is four vec4s: position (w 0 = directional), direction + cos(cutoff)
 // (cos = -2 for no cone), colour * intensity + spot exponent, attenuation.
 // The general program takes the batch and material from uniforms; programs
-// specialised to one (src/lit_specialise.c) define STIN_SPECIALISED and
+// specialised to one (src/render/lit_specialise.c) define STIN_SPECIALISED and
 // keep only the parts of the equation that batch and material use.
 #ifndef STIN_SPECIALISED
 #define STIN_LIGHT_COUNT 8 // bounded by u_light_count
@@ -38,7 +38,7 @@ float s_normal_length = 1.0;
 #define SAMPLE_LEVEL0(t, uv) texture2D(t, uv)
 
 // @chunks
-// The chunks spliced in here define (see src/path_glsl.c and src/surface_glsl.c):
+// The chunks spliced in here define (see src/render/path_glsl.c and src/surface/glsl.c):
 //   vec3 surface_normal(inout vec2 uv, vec3 v)  the unit shading normal; may move uv (parallax)
 //   float surface_shadow(vec2 uv, vec3 l)       the height field's shadow toward l (1 lit)
 //   vec4 surface_sample(sampler2D t, vec2 uv)   a colour map at the (moved) uv

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// The deferred outline's filter (src/outline.c; seed 004's Sobel on the
+// The deferred outline's filter (src/post/outline.c; seed 004's Sobel on the
 // normal buffer, its pixel step a uniform), for GLSL 1.10 and 1.50 (gl4's
 // outline.frag maps texture2D to texture). Nine taps u_params.z pixels
 // apart around the pixel, clamped into the viewport:

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// depth-peel (src/transparency_peel.c), spliced in after the other chunks of
+// depth-peel (src/transparency/peel.c), spliced in after the other chunks of
 // the lit programs: while a camera layer is peeled (u_peel_params.w = 1) a
 // fragment survives only behind the layer before it (after the first) and in
 // front of the opaque depth, so the depth test keeps the nearest surface

@@ -1,6 +1,6 @@
 #version 110
 // SPDX-License-Identifier: MIT
-// depth-peel's composite (src/transparency_peel.c). Mode 0 adds a lit layer
+// depth-peel's composite (src/transparency/peel.c). Mode 0 adds a lit layer
 // under the composite so far, (C, T) front to back: C += T a c, T *= 1 - a,
 // with c the layer's ambient plus its lights (clamped, as the framebuffer
 // would) and a its opacity (0 where the layer has no surface). Mode 1 hands

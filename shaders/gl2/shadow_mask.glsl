@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Per-light visibility from the screen mask (technique "volume" on GLSL
-// tiers with FBOs, src/shadow_mask.c): channel i of u_shadow_map holds light
+// tiers with FBOs, src/render/screen_mask.c): channel i of u_shadow_map holds light
 // i of this pass, 1 lit. u_shadow_kind 0: no mask in this pass (the stencil
 // test, if any, already decided).
 uniform int u_shadow_kind;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Coloured shadow maps' lookup (technique "coloured",
-// src/translucent_coloured.c), spliced after the shadow technique's chunk:
+// src/translucent/coloured.c), spliced after the shadow technique's chunk:
 // the product of the eq 5.3 factors of the transparent casters on the
 // light's ray, where the point lies behind the nearest of them, times the
 // shadow technique's own visibility, through the same seam. Shared by the

@@ -1,6 +1,6 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// CSG "interval" (src/csg_interval.c): one product's surface per pixel from
+// CSG "interval" (src/csg/interval.c): one product's surface per pixel from
 // its primitives' peeled crossings. Crossing j of primitive i is layer
 // g = i k + j, slice g / 2 of the even or odd array u_crossing (r: the
 // fragment's float depth, g: its side, 1 front, 0.5 back, 0 none). The

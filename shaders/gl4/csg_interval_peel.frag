@@ -1,6 +1,6 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// CSG "interval" (src/csg_interval.c): one layer of one primitive's crossings
+// CSG "interval" (src/csg/interval.c): one layer of one primitive's crossings
 // of the camera rays. Drawn with depth LESS into a fresh depth layer, after
 // discarding what lies at or in front of the layer before (read from the
 // other array: never the texture drawn into), so the nearest crossing left

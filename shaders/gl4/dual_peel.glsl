@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// dual-peel (src/transparency_dual_peel.c), spliced in after the other
+// dual-peel (src/transparency/dual_peel.c), spliced in after the other
 // chunks of the lit programs: while a layer is drawn (u_peel_params.w = 1) a
 // fragment survives only at the depth this pass recorded for the layer,
 // compared float for float with the gl_FragCoord.z the min-max pass stored

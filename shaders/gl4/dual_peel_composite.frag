@@ -1,6 +1,6 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// dual-peel's composite (src/transparency_dual_peel.c), composites as
+// dual-peel's composite (src/transparency/dual_peel.c), composites as
 // (C, T) from (0, 1), the layer's colour c (ambient + lights, clamped as the
 // framebuffer clamps a surface's passes) and opacity a:
 //   mode 0, a front layer under the front composite: C += T a c, T *= 1 - a

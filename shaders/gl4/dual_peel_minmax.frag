@@ -1,6 +1,6 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// dual-peel's geometry pass (src/transparency_dual_peel.c), MAX-blended
+// dual-peel's geometry pass (src/transparency/dual_peel.c), MAX-blended
 // into RG32F: a blended fragment in front of the opaque depth and, after
 // the first pass, strictly between the last pass's nearest and farthest
 // writes (-z, z), so each texel ends as (-near, far) of the surfaces no pass

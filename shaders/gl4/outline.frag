@@ -1,6 +1,6 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// The deferred outline (src/outline.c): the outline colour where the
+// The deferred outline (src/post/outline.c): the outline colour where the
 // filter (gl2's outline.glsl) finds an edge, blended over the frame by its
 // alpha.
 #define texture2D texture

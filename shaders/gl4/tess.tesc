@@ -6,7 +6,7 @@
 // share an edge split it alike and no crack opens. The camera's eye and scale
 // serve every pass (light passes too), so maps and vdsm see the surface the
 // camera sees. Draws that are not displaced keep level 1: their one triangle.
-// (shader.c replaces the #version line where the context has
+// (gl/shader.c replaces the #version line where the context has
 // ARB_tessellation_shader on GLSL 1.50.)
 layout(vertices = 3) out;
 uniform mat4 u_model;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Displacement by tessellation, evaluation stage: spliced into a vertex
-// shader that draws meshes when shader.c builds it as the program's
+// shader that draws meshes when gl/shader.c builds it as the program's
 // evaluation stage. The attributes become globals holding the point's
 // barycentric blend of the patch's corners, and the vertex shader's own main
 // runs on them (renamed below), so every pass keeps its one vertex program

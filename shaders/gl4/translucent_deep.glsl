@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Deep shadow maps' lookup (technique "deep", src/translucent_deep.c),
+// Deep shadow maps' lookup (technique "deep", src/translucent/deep.c),
 // spliced after the shadow technique's chunk: the transmittance through the
 // transparent casters of the light being shaded, times the shadow
 // technique's own visibility (its opaque casters), through the same seam.

@@ -1,6 +1,6 @@
 #version 430
 // SPDX-License-Identifier: MIT
-// vdsm's shadows of CSG products (src/shadow_vdsm_csg.c), first pass: each
+// vdsm's shadows of CSG products (src/shadow/vdsm_csg.c), first pass: each
 // primitive's shadow polygons, and per covered pixel every crossing of its
 // segment to the light with the primitive's triangles (vdsm_segment.glsl),
 // appended to the pixel's list: the parameter, the primitive, and whether

@@ -1,6 +1,6 @@
 #version 430
 // SPDX-License-Identifier: MIT
-// vdsm's shadows of CSG products (src/shadow_vdsm_csg.c), second pass: per
+// vdsm's shadows of CSG products (src/shadow/vdsm_csg.c), second pass: per
 // pixel, the crossings vdsm_csg_append.frag listed, walked in order from
 // the light back to the surface. The light's own place (inside a primitive
 // or not: found on the CPU) is where the walk starts; a crossing where the

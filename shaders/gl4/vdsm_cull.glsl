@@ -2,7 +2,7 @@
 // VDSM's culling steps (seed 000): which triangles cast at all, and where
 // DC ends their extrusion. EP drops triangles facing the light (closed
 // meshes: the ones behind them cast the same shadow). SM and DC read the
-// light-view pyramid (src/shadow_vdsm_pyramid.c) over the triangle's
+// light-view pyramid (src/shadow/vdsm_pyramid.c) over the triangle's
 // footprint in the light's view: SM drops a triangle lying wholly deeper
 // than the occluders there (every ray it meets already meets a drawn
 // triangle first), DC one with no receiver behind it, and stops the

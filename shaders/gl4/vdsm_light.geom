@@ -1,7 +1,7 @@
 #version 150
 // SPDX-License-Identifier: MIT
 // VDSM step SM, the light pass: the occluder half of the light-view pyramid
-// (src/shadow_vdsm_pyramid.c). Each draw twice:
+// (src/shadow/vdsm_pyramid.c). Each draw twice:
 // - here, drawn as GL_TRIANGLES_ADJACENCY so each triangle knows the far
 //   vertex of its neighbour across every edge: every edge of the draw's
 //   outline, grown past the texels it touches, into the stencil (the draw's

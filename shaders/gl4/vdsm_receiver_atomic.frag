@@ -1,6 +1,6 @@
 #version 430
 // SPDX-License-Identifier: MIT
-// VDSM's deepest receiver per light texel (src/shadow_vdsm_receivers.c), GL
+// VDSM's deepest receiver per light texel (src/shadow/vdsm_receivers.c), GL
 // 4.3: one fragment per pixel of the viewport, the position buffer's point
 // there taken into the light's view as vdsm_receiver.vert takes it (the same
 // facing test, the same push along the normal), its light depth kept by an

@@ -1,6 +1,6 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// VDSM light-view pyramid (src/shadow_vdsm_pyramid.c), one level per pass.
+// VDSM light-view pyramid (src/shadow/vdsm_pyramid.c), one level per pass.
 // Level 0 from the accumulation texture: x = the occluders' depth bound, BIG
 // where no draw covers the texel wholly (nothing is known there); y = the
 // deepest receiver, -BIG where none. Each coarser

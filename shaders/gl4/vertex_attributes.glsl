@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The mesh attributes of the vertex shaders that draw meshes (spliced in by
-// shader.c; tess_eval.glsl declares them instead when the shader is a
+// gl/shader.c; tess_eval.glsl declares them instead when the shader is a
 // tessellation evaluation stage). Unused ones are inactive.
 in vec4 a_position;
 in vec3 a_normal;

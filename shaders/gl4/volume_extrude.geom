@@ -1,7 +1,7 @@
 #version 150
 // SPDX-License-Identifier: MIT
-// Shadow volumes extruded on the GPU (src/shadow_volume_extrude.c): the same
-// volume src/shadow_volume_geometry.c builds on the CPU, from the mesh's
+// Shadow volumes extruded on the GPU (src/shadow/volume_extrude.c): the same
+// volume src/shadow/volume_geometry.c builds on the CPU, from the mesh's
 // static buffers and its GL_TRIANGLES_ADJACENCY indices, so a frame spends no
 // CPU time per caster triangle. Closed casters: light caps, far caps and side
 // quads on silhouette edges of the light-facing triangles. Other casters:

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * CSG products casting shadows (src/csg_cast.c: the resolve run from the
+ * CSG products casting shadows (src/csg/cast.c: the resolve run from the
  * light into its map) against the exact reference with casting products
  * (reference_csg_cast: a visibility ray is blocked where it passes through
  * a product's solid). Scenes: csg/cast.json (a slab with a spherical hole

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * CSG products ("goldfeather", src/csg_goldfeather.c; "scs", csg_scs.c;
- * "interval", csg_interval.c) against the exact CSG
+ * CSG products ("goldfeather", src/csg/goldfeather.c; "scs", csg/scs.c;
+ * "interval", csg/interval.c) against the exact CSG
  * reference (tests/reference/reference_csg.h: every crossing of the camera
  * ray with the primitives, the expression evaluated along it). Run on
  * csg.json (carved, both, common) and the scenes of tests/scenes/csg/
@@ -25,8 +25,8 @@
  *               shadow edge, within the shadow technique's bound (1% for
  *               the maps, 0.5% for volumes, none for vdsm) against the
  *               reference's rays: for the maps and vdsm with the product
- *               casting (its walls shadow the cavity; csg_cast.c,
- *               shadow_vdsm_csg.c), for volumes, and vdsm without GL 4.3's
+ *               casting (its walls shadow the cavity; csg/cast.c,
+ *               shadow/vdsm_csg.c), for volumes, and vdsm without GL 4.3's
  *               storage buffers, which cast no product, through it; with
  *               at least 100
  *               shadowed pixels of the product compared;

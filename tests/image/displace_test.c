@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * Displacement ("displace", GL2/GL4; src/surface_displace.c,
+ * Displacement ("displace", GL2/GL4; src/surface/displace.c,
  * shaders/gl2/displace.glsl) on the scenes with displaced materials, against
  * the displaced Embree reference (reference_displace.h: the same meshes moved
  * on the CPU, the height map filtered as GL_LINEAR does at level 0):

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * DOT3 bump mapping (GL1, src/surface_dot3.c), rendered:
+ * DOT3 bump mapping (GL1, src/surface/dot3.c), rendered:
  *   dot3-tilt   (built-in scene, once per tier) a quad under a directional
  *               light with constant normal maps — flat, tilted 30 degrees
  *               toward +T, -T and +B — equals the analytic

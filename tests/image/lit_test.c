@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /* Lit programs specialised to a pass's lights and a draw's material
- * (src/lit_specialise.c) against the general program
+ * (src/render/lit_specialise.c) against the general program
  * (STIN_DEBUG_LIT_GENERAL), on the scenes whose lights and materials take
  * every part of the equation: four-lights (point lights with and without
  * attenuation, a spot and a directional light in one batch), stone-wall

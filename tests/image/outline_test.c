@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* The deferred outline (src/outline.c, stin_frame_desc.outline_*) on
+/* The deferred outline (src/post/outline.c, stin_frame_desc.outline_*) on
  * four-lights and on a CSG product (csg/cast.json, beside csg.json: a slab
  * minus a ball, whose bore's walls are the ball's back faces, resolved and
  * drawn into the outline's normals by the product's own passes), against

@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 /*
- * GLSL surface detail (src/surface_glsl.c, shaders/gl2|gl4/surface_*.glsl):
+ * GLSL surface detail (src/surface/glsl.c, shaders/gl2|gl4/surface_*.glsl):
  *   gl2-shaders      (once) every file in shaders/gl2 declares #version 110
  *                    or 120 and uses no GL3+ built-in or storage qualifier;
  *   flat-normal      (scenes with normal maps) the normal maps replaced by a

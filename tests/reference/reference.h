@@ -160,7 +160,7 @@ void reference_shade_passes(const scene *s, const reference *r, const ref_hit *h
  * out in [0,1]. */
 void reference_sample_texture(const scene_texture *t, float u, float v, float out_rgba[4]);
 
-/* A texture's mip chain as stin builds it at texture creation (src/texture.c;
+/* A texture's mip chain as stin builds it at texture creation (src/assets/texture.c;
  * the GLSL tiers keep the size): level 0 the texels, each next level the 2x2
  * box average of the one before, (a + b + c + d + 2) / 4 per channel, a side
  * of 1 staying 1, down to 1x1. normal_map: level 0's alpha is 255 and each

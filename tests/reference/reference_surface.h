@@ -5,7 +5,7 @@
  *            normal decoded from the material's normal map, n = (rgb * 255 -
  *            128) / 127, sampled at the hit uv (see below), in the
  *            tangent frame interpolated at the hit: per-vertex tangents by
- *            mesh_tangents.c's rule (uv gradients summed per vertex,
+ *            assets/mesh_tangents.c's rule (uv gradients summed per vertex,
  *            Gram-Schmidt against the normal, handedness in w), moved to
  *            world space by the object's 3x3, Gram-Schmidt against the hit
  *            normal, B = w cross(N, T);
@@ -34,7 +34,7 @@ typedef struct ref_surface ref_surface;
 ref_surface *ref_surface_create(const scene *s);
 void ref_surface_destroy(ref_surface *rs);
 
-/* Tangents of one mesh by mesh_tangents.c's rule: out has 4 floats a vertex. */
+/* Tangents of one mesh by assets/mesh_tangents.c's rule: out has 4 floats a vertex. */
 void ref_mesh_tangents(const scene_mesh *m, float *out);
 
 /* Shading of a hit (unshadowed, one clamped sum as reference_shade) with the

@@ -21,8 +21,8 @@
 #ifndef FAKE_GL_STATE_H
 #define FAKE_GL_STATE_H
 
-#include "gl_types.h"
-#include "gl_funcs.h"
+#include "gl/gl_types.h"
+#include "gl/gl_funcs.h"
 
 #define FAKE_GL_UNITS 32           /* texture units tracked (image units up to GL4) */
 #define FAKE_GL_LIGHTS 8

@@ -596,7 +596,7 @@ static void test_destroy_deletes_every_gl_object(void **state)
      * the first frame with blended draws), and the GPU CSG resolve's merge,
      * kill and snap programs (its textures come with the first product),
      * and the outline's; the frame's one lit program specialised to its
-     * light batch (lit_specialise.c) */
+     * light batch (render/lit_specialise.c) */
     check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1 + 3 + 1 + 1, 0);
     /* GL 4.5: each program again, tessellated ("displace-tess"), dual-peel's
      * composite and its min-max programs (plain and tessellated), on core

@@ -780,7 +780,7 @@ static int apart(float ax0, float ax1, float bx0, float bx1, float z0, float z1)
     return stin__csg_world_boxes_apart(ctx, a, b, 8.0f);
 }
 
-/* scs's world rule (csg_bounds.c): boxes apart by more than 8 depth steps
+/* scs's world rule (csg/bounds.c): boxes apart by more than 8 depth steps
  * along every ray through both, at the far side's distance, with the
  * target's depth precision; unsure (0) for oblique projections and boxes
  * reaching behind the eye. */

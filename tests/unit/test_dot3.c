@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT */
-/* DOT3 bump mapping on the fixed-function tier (src/surface_dot3.c):
+/* DOT3 bump mapping on the fixed-function tier (src/surface/dot3.c):
  * tangent-space light vectors against hand-computed values, the
  * normalisation cube map against GL's face selection, the selection rule
  * (fixed-function lighting only), and the passes and GL objects on the fake

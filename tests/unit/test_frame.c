@@ -912,7 +912,7 @@ static void test_vdsm_tessellates_only_displaced_frames(void **state)
 }
 
 /* vdsm's deepest receivers per light texel: by storage-buffer atomics
- * where the context has GL 4.3's (one quad, shadow_vdsm_receivers.c), else
+ * where the context has GL 4.3's (one quad, shadow/vdsm_receivers.c), else
  * as one point per pixel; a frame with SM and DC either way. */
 static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
 {

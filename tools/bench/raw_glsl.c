@@ -13,7 +13,7 @@
 
 /* lit.frag specialised to the scene's lights (the first 8, the one pass
  * this loop draws) and untextured materials, as stin specialises its lit
- * programs (src/lit_specialise.c): the loop's program is the one stin
+ * programs (src/render/lit_specialise.c): the loop's program is the one stin
  * draws the same scene with, written here from lit.frag's own defines. */
 static void specialise(const scene *s, char *out, size_t size)
 {

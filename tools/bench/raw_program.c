@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The raw loop's GLSL program, built from the same files stin embeds: the
  * tier's lit.vert and lit.frag, with the chunks of stin's unshadowed plain
- * program spliced in at lit.frag's "// @chunks" line (src/shader.c,
- * src/path_glsl.c, src/surface_glsl.c). Read from disk, not from stin's
+ * program spliced in at lit.frag's "// @chunks" line (src/gl/shader.c,
+ * src/render/path_glsl.c, src/surface/glsl.c). Read from disk, not from stin's
  * embedded copy, so the raw side shares no code path with the library. */
 #include "raw.h"
 

@@ -1,0 +1,164 @@
+/* SPDX-License-Identifier: MIT */
+/* Meshes and textures in the caller's block (mesh*.c, assets/texture.c) and the
+ * shadow-volume geometry built from them (shadow/volume_geometry.c). */
+#ifndef STIN_MESH_STORE_H
+#define STIN_MESH_STORE_H
+
+#include "stin/stin.h"
+#include "gl/gl_types.h"
+
+
+/* ---- meshes and textures ------------------------------------------------ */
+/* The head of every pooled slot (base/handle_pool.c). */
+typedef struct stin__handle {
+    uint32_t generation;
+    int alive;
+    int retired;          /* its generation reached the top: never issued again */
+} stin__handle;
+#define STIN__NO_SLOT 0xffffffffu
+/* The context's 8-bit handle tag from its creation serial in the block and
+ * the block's address. */
+uint32_t stin__handle_tag(uint32_t serial, const void *block);
+/* The first free slot of a pool of `count` slots `stride` bytes apart. */
+uint32_t stin__handle_free_slot(const stin__handle *first, size_t stride, uint32_t count);
+/* Marks slot h (index `slot` of `count`) alive with a new generation; returns its id. */
+uint32_t stin__handle_issue(stin__handle *h, uint32_t slot, uint32_t count, uint32_t tag);
+/* Marks h free, or retired when its generation cannot grow. */
+void stin__handle_release(stin__handle *h, uint32_t count);
+/* The slot a handle id names while it is alive, else STIN__NO_SLOT. */
+uint32_t stin__handle_resolve(const stin__handle *first, size_t stride, uint32_t count,
+                              uint32_t tag, uint32_t id);
+
+typedef struct stin__vertex {
+    float position[3];
+    float normal[3];
+    float uv[2];
+    float tangent[4];
+} stin__vertex;
+
+typedef struct stin__mesh_slot {
+    stin__handle handle;
+    uint32_t first_vertex, vertex_count;
+    uint32_t first_triangle, triangle_count;
+    stin_mesh_info info;
+    GLuint vbo, ibo, vao;
+    GLuint adj_ibo, adj_vao;  /* vdsm: GL_TRIANGLES_ADJACENCY indices (0: none) */
+    float uv_edge;            /* mean uv length of its edges (displacement's coarse log) */
+    float edge;               /* mean object-space length of its edges (uv_edge / edge:
+                               * displacement's uv per unit, its mip level) */
+} stin__mesh_slot;
+
+typedef struct stin__texture_slot {
+    stin__handle handle;
+    stin_texture_kind kind;
+    uint32_t width, height;
+    GLuint name;
+    /* height maps where displacement is built: a second texture with the
+     * mip chain (name keeps level 0 only, which the parallax march needs),
+     * and its highest level; 0 when there is none */
+    GLuint lod_name;
+    uint32_t lod_top;
+} stin__texture_slot;
+
+
+stin__mesh_slot *stin__mesh_lookup(const stin_context *ctx, stin_mesh mesh, uint32_t *slot);
+void stin__mesh_release_all(stin_context *ctx);
+/* stin's own mesh: the slot after the caller's (index desc.max_meshes), its
+ * vertices and triangles after theirs in the block, no handle; made at
+ * stin_create by whoever needs it (CSG's near-plane cap), released with the
+ * caller's. Never a shadow caster. */
+#define STIN__BUILTIN_VERTICES 4u
+#define STIN__BUILTIN_TRIANGLES 2u
+uint32_t stin__mesh_builtin(stin_context *ctx, const stin__vertex *v, uint32_t vertex_count,
+                            const uint32_t *tris, uint32_t tri_count);
+void stin__texture_release_all(stin_context *ctx);
+stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture tex);
+
+/* Points attributes 0..3 (position, normal, uv, tangent) at base (NULL with a VBO bound). */
+void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base);
+/* Adjacency over position-welded vertices (weld_tolerance as in
+ * stin_mesh_desc; welded positions are snapped); fills info's edge counts
+ * and welded_vertices. */
+stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
+                                       uint32_t vertex_count, float weld_tolerance,
+                                       const uint32_t *tris, uint32_t tri_count,
+                                       uint32_t *adjacency, stin_mesh_info *info);
+/* weld[i] = the first vertex within `tolerance` of vertex i (see
+ * stin_mesh_desc.weld_tolerance), using `table` (size a power of two at least
+ * 2 n) as scratch; moves welded positions onto it and returns how many moved. */
+uint32_t stin__weld_positions(stin__vertex *verts, uint32_t n, float tolerance, uint32_t *weld,
+                              uint32_t *table, uint32_t size);
+/* The integer hash welding and adjacency use. */
+uint32_t stin__weld_mix(uint32_t h);
+/* Bytes of scratch the adjacency build needs for these sizes. */
+size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count);
+/* Per-vertex tangents (Gram-Schmidt, handedness in w); uses scratch. */
+void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint32_t *tris,
+                         uint32_t tri_count, float *scratch_bitangents, int have_uvs);
+/* Subdivision (assets/mesh_subdivide.c): the vertex and triangle counts after
+ * `levels` levels (CAPACITY when the edge table exceeds the scratch or a
+ * count overflows), and the subdivision itself in place: verts and tris
+ * have room for those counts. */
+stin_result stin__subdivide_counts(struct stin_context *ctx, const uint32_t *tris,
+                                   uint32_t tri_count, uint32_t vertex_count, uint32_t levels,
+                                   size_t scratch_limit, uint32_t *out_vertices,
+                                   uint32_t *out_triangles);
+void stin__subdivide(struct stin_context *ctx, stin__vertex *verts, uint32_t vertex_count,
+                     uint32_t *tris, uint32_t tri_count, uint32_t levels);
+/* Mean uv length and mean object-space length of the triangles' edges. */
+void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
+                           float *uv_edge, float *edge);
+void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
+                                const uint32_t *tris, uint32_t tri_count);
+
+/* A mesh's triangles with their neighbours' far vertices, for vdsm's light
+ * pass (shadow/vdsm_adjacency.c): made at mesh creation where vdsm is the
+ * shadow technique, deleted with the mesh. */
+void stin__vdsm_mesh_upload(struct stin_context *ctx, stin__mesh_slot *m);
+void stin__vdsm_mesh_release(struct stin_context *ctx, stin__mesh_slot *m);
+
+/* ---- shadow volumes ----------------------------------------------------- */
+/* clockwise: the triangles are wound clockwise toward their outside (front
+ * face CW for this batch). */
+typedef void (*stin__volume_sink)(void *user, const float *xyzw, uint32_t vertex_count,
+                                  int clockwise);
+typedef struct stin__volume_request {
+    const stin__vertex *verts;
+    const uint32_t *tris, *adjacency;
+    uint32_t tri_count;
+    int closed;            /* classic volume of a closed 2-manifold caster */
+    int caps;              /* light and dark caps (z-fail) */
+    float light[4];        /* object space; w = 1 point, w = 0 directional (toward the light) */
+    float *buffer;         /* chunk of 4-float vertices */
+    uint32_t buffer_vertices;
+    unsigned char *facing; /* tri_count bytes of scratch */
+    stin__volume_sink sink;
+    void *user;
+} stin__volume_request;
+/* Emits the volume through r->sink; returns the triangles emitted. */
+uint32_t stin__volume_build(const stin__volume_request *r);
+int stin__triangle_faces_light(const float *a, const float *b, const float *c, const float l[4]);
+
+/* The caller's bindings around stin's uploads and draws (gl/caller_bindings.c).
+ * vao_begin binds vertex array 0 where there are VAOs, so buffer and
+ * pointer calls do not land in the caller's; it returns the caller's,
+ * which vao_end binds again. unpack_begin makes rows tight (alignment 1,
+ * no row length or skips, no pixel unpack buffer); unpack_end restores. */
+GLuint stin__vao_begin(struct stin_context *ctx);
+void stin__vao_end(struct stin_context *ctx, GLuint saved);
+#define STIN__UNPACK_STORE 4
+typedef struct stin__unpack_saved {
+    GLint store[STIN__UNPACK_STORE]; /* alignment, row length, skip rows, skip pixels */
+    GLint buffer;                    /* the bound pixel unpack buffer */
+} stin__unpack_saved;
+void stin__unpack_begin(struct stin_context *ctx, stin__unpack_saved *s);
+void stin__unpack_end(struct stin_context *ctx, const stin__unpack_saved *s);
+
+/* Uploads one level of 8-bit texels, tightly packed (stin__unpack_begin
+ * for the call, the caller's state restored); a 1D target ignores h. */
+void stin__upload_level(stin_context *ctx, GLenum target, GLint level, GLenum internal_format,
+                        uint32_t w, uint32_t h, GLenum format, const void *pixels);
+void stin__upload_bytes(stin_context *ctx, GLenum target, GLenum internal_format, uint32_t w,
+                        uint32_t h, GLenum format, const void *pixels);
+
+#endif

@@ -1,0 +1,275 @@
+/* SPDX-License-Identifier: MIT */
+/* stin_draw_csg: a product's primitives and expression checked, its
+ * primitives kept like draws and its expression normalised into the
+ * frame's term and literal stores (csg/normal_form.c). Nothing of a refused
+ * product stays. */
+#include "internal.h"
+
+uint32_t stin__csg_scratch_words(const stin_desc *d)
+{
+    return 2u * (d->max_csg_terms + d->max_csg_literals);
+}
+
+static stin_result refuse(stin_context *ctx, stin_result r, stin_log_item item, const char *why,
+                          uint32_t index)
+{
+    stin__log(ctx, STIN_LOG_LEVEL_ERROR, item, "stin_draw_csg: %s (%u); product dropped", why,
+              index);
+    ctx->stats.dropped_csg++;
+    return r;
+}
+
+static int all_zero(const float *v, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (v[i] != 0.0f)
+            return 0;
+    return 1;
+}
+
+/* Ops known, primitive indices in range, operands before their node. */
+static stin_result check_nodes(stin_context *ctx, const stin_csg_desc *desc)
+{
+    uint32_t i;
+    for (i = 0; i < desc->node_count; i++) {
+        const stin_csg_node *n = &desc->nodes[i];
+        if ((unsigned)n->op > STIN_CSG_SUBTRACTION)
+            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                          "unknown op in node", i);
+        if (n->op == STIN_CSG_PRIMITIVE && n->primitive >= desc->primitive_count)
+            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                          "primitive index out of range in node", i);
+        if (n->op != STIN_CSG_PRIMITIVE && (n->a >= i || n->b >= i))
+            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                          "an operand must be a node before the one using it, in node", i);
+    }
+    return STIN_OK;
+}
+
+/* Each primitive into the store (from ctx->csg.primitive_count on; the
+ * count moves only when the whole product is accepted). */
+static stin_result take_primitives(stin_context *ctx, const stin_csg_desc *desc)
+{
+    uint32_t i, slot;
+    for (i = 0; i < desc->primitive_count; i++) {
+        const stin_csg_primitive *p = &desc->primitives[i];
+        stin__draw *d = &ctx->csg.primitives[ctx->csg.primitive_count + i];
+        stin__mesh_slot *m = stin__mesh_lookup(ctx, p->mesh, &slot);
+        stin_result r;
+        if (!m)
+            return refuse(ctx, STIN_ERROR_INVALID_HANDLE, STIN_LOG_BAD_HANDLE,
+                          "stale or unknown mesh handle of primitive", i);
+        if (!m->info.closed_manifold)
+            return refuse(ctx, STIN_ERROR_INVALID_MESH, STIN_LOG_MESH_NOT_MANIFOLD,
+                          "the mesh is not a closed 2-manifold (inside and outside are "
+                          "undefined), primitive", i);
+        if (!stin__finite_n(p->transform, 16))
+            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                          "transform must be finite, primitive", i);
+        if (all_zero(p->transform, 16))
+            stin__mat4_identity(d->transform);
+        else if (stin__mat4_singular(p->transform))
+            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                          "transform must be invertible (a flat solid has no inside), primitive",
+                          i);
+        else
+            stin__memcopy(d->transform, p->transform, sizeof d->transform);
+        if (stin__material_prepare(ctx, "stin_draw_csg", "product", &p->material, &d->material,
+                                   &r) != STIN_OK) {
+            ctx->stats.dropped_csg++;
+            return r;
+        }
+        if (d->material.color[3] < 1.0f || d->material.displace)
+            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                          "CSG primitives are opaque and not displaced (colour alpha 1, "
+                          "displace 0), primitive", i);
+        d->material.normal_map.id = d->material.height_map.id = 0; /* see stin.h */
+        d->mesh_slot = slot;
+        d->sort_depth = 0.0f;
+        d->csg = 0;
+    }
+    return STIN_OK;
+}
+
+static const char *nf_failure(stin__csg_nf_result r)
+{
+    switch (r) {
+    case STIN__CSG_NF_TERMS:
+        return "its normal form has more terms than desc.max_csg_terms leaves this frame";
+    case STIN__CSG_NF_LITERALS:
+        return "its normal form has more literals than desc.max_csg_literals leaves this frame";
+    case STIN__CSG_NF_SCRATCH:
+        return "its partial normal forms outgrow the scratch of 2 (max_csg_terms + "
+               "max_csg_literals) words";
+    case STIN__CSG_NF_DEPTH:
+        return "the expression nests deeper than 1024";
+    case STIN__CSG_NF_WORK:
+        return "the expression expands to more than 2^22 node visits";
+    case STIN__CSG_NF_OK:
+        break;
+    }
+    return "";
+}
+
+stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
+{
+    stin__csg_state *c;
+    stin__csg_product *p;
+    stin__csg_out out;
+    stin__csg_nf_result nf;
+    stin_result r;
+    if (!ctx)
+        return STIN_ERROR_INVALID_ARGUMENT;
+    if (ctx->state != STIN__IN_FRAME) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE,
+                  "stin_draw_csg: no frame is open");
+        return STIN_ERROR_INVALID_STATE;
+    }
+    if (!desc)
+        return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT, "desc is NULL", 0);
+    if (!desc->nodes || !desc->node_count || !desc->primitives || !desc->primitive_count)
+        return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                      "empty expression: nodes and primitives are required, node count",
+                      desc->node_count);
+    if (desc->node_count > STIN__CSG_MAX_NODES)
+        return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
+                      "more than 65536 nodes", desc->node_count);
+    r = check_nodes(ctx, desc);
+    if (r != STIN_OK)
+        return r;
+    c = &ctx->csg;
+    if (desc->primitive_count > ctx->desc.max_csg_primitives - c->primitive_count)
+        return refuse(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
+                      "more primitives than desc.max_csg_primitives leaves this frame, primitives",
+                      desc->primitive_count);
+    r = take_primitives(ctx, desc);
+    if (r != STIN_OK)
+        return r;
+    out.terms = c->terms + c->term_count;
+    out.max_terms = ctx->desc.max_csg_terms - c->term_count;
+    out.literals = c->literals + c->literal_count;
+    out.max_literals = ctx->desc.max_csg_literals - c->literal_count;
+    out.literal_base = c->literal_count;
+    nf = stin__csg_normal_form(desc->nodes, desc->node_count, c->scratch, c->scratch_words, &out);
+    if (nf != STIN__CSG_NF_OK)
+        return refuse(ctx, nf == STIN__CSG_NF_DEPTH ? STIN_ERROR_INVALID_ARGUMENT
+                                                    : STIN_ERROR_CAPACITY,
+                      nf == STIN__CSG_NF_DEPTH ? STIN_LOG_BAD_ARGUMENT : STIN_LOG_POOL_FULL,
+                      nf_failure(nf), desc->node_count);
+    if (out.term_count == 0) {
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_BAD_ARGUMENT,
+                  "stin_draw_csg: every term of the expression is empty (a primitive and its "
+                  "complement); nothing to draw");
+        return STIN_OK;
+    }
+    p = &c->products[c->product_count++];
+    p->first_primitive = c->primitive_count;
+    p->primitive_count = desc->primitive_count;
+    p->first_term = c->term_count;
+    p->term_count = out.term_count;
+    c->primitive_count += desc->primitive_count;
+    c->term_count += out.term_count;
+    c->literal_count += out.literal_count;
+    ctx->stats.csg_products++;
+    ctx->stats.csg_terms += out.term_count;
+    return STIN_OK;
+}
+
+uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_t term,
+                              uint32_t *literals, uint32_t capacity, uint32_t *count)
+{
+    const stin__csg_product *p;
+    const stin__csg_term *t;
+    uint32_t i;
+    if (count)
+        *count = 0;
+    if (!ctx || product >= ctx->csg.product_count)
+        return 0;
+    p = &ctx->csg.products[product];
+    if (literals && term < p->term_count) {
+        t = &ctx->csg.terms[p->first_term + term];
+        for (i = 0; i < t->count && i < capacity; i++)
+            literals[i] = ctx->csg.literals[t->first + i];
+        if (count)
+            *count = i;
+    }
+    return p->term_count;
+}
+
+/* Each primitive's faces that a term shows: front where it is plain in a
+ * term, back where it is complemented (both when both); and the product's
+ * near-plane cap where the resolve kept it (3 max_csg_primitives faces at
+ * most: a product has a primitive at least). */
+void stin__csg_faces(stin_context *ctx)
+{
+    stin__csg_state *c = &ctx->csg;
+    uint32_t pi, ti, li;
+    c->face_count = 0;
+    if (!c->resolved)
+        return;
+    for (pi = 0; pi < c->product_count; pi++) {
+        const stin__csg_product *p = &c->products[pi];
+        uint32_t q;
+        for (q = 0; q < p->primitive_count; q++) {
+            int front = 0, back = 0;
+            for (ti = 0; ti < p->term_count; ti++) {
+                const stin__csg_term *t = &c->terms[p->first_term + ti];
+                for (li = 0; li < t->count; li++) {
+                    uint32_t l = c->literals[t->first + li];
+                    if (STIN__CSG_PRIMITIVE_OF(l) != q)
+                        continue;
+                    if (STIN__CSG_COMPLEMENTED(l))
+                        back = 1;
+                    else
+                        front = 1;
+                }
+            }
+            if (front) {
+                c->faces[c->face_count] = c->primitives[p->first_primitive + q];
+                c->faces[c->face_count++].csg = STIN__CSG_FRONT;
+            }
+            if (back) {
+                c->faces[c->face_count] = c->primitives[p->first_primitive + q];
+                c->faces[c->face_count++].csg = STIN__CSG_BACK;
+            }
+        }
+        if (p->capped) {
+            /* the near plane's cut, in the first primitive's material */
+            stin__draw *cap = &c->faces[c->face_count++];
+            *cap = c->primitives[p->first_primitive];
+            cap->mesh_slot = c->cap_slot;
+            stin__memcopy(cap->transform, c->cap_transform, sizeof cap->transform);
+            cap->csg = STIN__CSG_CAP;
+        }
+    }
+}
+
+GLenum stin__csg_face_hidden(const stin__draw *d)
+{
+    int mirrored = stin__mat4_det(d->transform) < 0.0 && d->csg != STIN__CSG_CAP;
+    return ((d->csg == STIN__CSG_BACK) != mirrored) ? GL_FRONT : GL_BACK;
+}
+
+int stin__csg_face_begin(stin_context *ctx, const stin__draw *d, stin__pass_state *saved)
+{
+    stin__pass_state ps = *stin__pass_current(ctx);
+    GLenum hidden = stin__csg_face_hidden(d);
+    *saved = ps;
+    /* map-depth's side test draws the lit pass once per side the eye sees:
+     * a product's surface always shows its outside to the eye (a cavity's
+     * wall too), so it goes with the front sides' pass */
+    if (ps.cull && ps.cull_face != GL_BACK)
+        return 0;
+    if (ps.depth_func == GL_LESS)
+        ps.depth_func = GL_EQUAL; /* on the resolved depth only */
+    ps.cull = 1;
+    ps.cull_face = hidden;
+    stin__pass_apply(ctx, &ps);
+    return 1;
+}
+
+void stin__csg_face_end(stin_context *ctx, const stin__pass_state *saved)
+{
+    stin__pass_apply(ctx, saved);
+}

@@ -1,0 +1,408 @@
+/* SPDX-License-Identifier: MIT */
+/* CSG products of a frame (csg/csg.c: stin_draw_csg and its checks;
+ * csg/normal_form.c: the expression as Goldfeather's sum of products). */
+#ifndef STIN_CSG_H
+#define STIN_CSG_H
+
+#include "stin/stin.h"
+#include "render/path.h"
+#include "gl/pass_state.h"
+
+/* A literal names a primitive of its product: index * 2, + 1 complemented. */
+#define STIN__CSG_LITERAL(primitive, complemented) ((primitive) * 2u + ((complemented) ? 1u : 0u))
+#define STIN__CSG_PRIMITIVE_OF(literal) ((literal) >> 1)
+#define STIN__CSG_COMPLEMENTED(literal) ((literal) & 1u)
+#define STIN__CSG_MAX_NODES 65536u
+#define STIN__CSG_MAX_DEPTH 1024u
+/* Node visits of one normalisation (shared subtrees are expanded at every
+ * use; a tree of a - a - a ... would otherwise take 2^depth visits). */
+#define STIN__CSG_MAX_VISITS (1u << 22)
+
+typedef struct stin__csg_term {
+    uint32_t first, count;   /* literals[first .. first + count), sorted, each primitive once */
+} stin__csg_term;
+
+typedef struct stin__csg_product {
+    uint32_t first_primitive, primitive_count; /* in the frame's primitive list */
+    uint32_t first_term, term_count;
+    int capped;               /* the resolve kept its near-plane cap somewhere */
+} stin__csg_product;
+
+/* One resolve's candidates and result (csg/goldfeather.c carves them;
+ * csg/merge.c keeps them): on the CPU, arrays in the staging filled by
+ * read-backs; on the GPU (gpu set: the frame's resolve on GLSL tiers with
+ * FBOs and depth textures), depth textures, result and candidate NULL. */
+typedef struct stin__csg_pixels {
+    float *result;            /* nearest surviving depth per pixel */
+    float *candidate;         /* this layer's depth; > 1 where it lost */
+    unsigned char *stencil;   /* a stencil read back (interval's walk too) */
+    int x, y, w, h;
+    size_t pixels;
+    int bits;                 /* stencil bits used (at most 8) */
+    int gpu;                  /* kept on the GPU (csg/merge.c) */
+} stin__csg_pixels;
+
+/* Stencil thresholds the GPU resolve counts in occlusion queries to learn
+ * a stencil's largest value without reading it (csg/merge.c): 1..16, 32,
+ * 64, 128, 255; one query more tells whether a candidate kept a pixel. */
+#define STIN__CSG_MERGE_THRESHOLDS 20
+enum { STIN__CSG_MERGE_WORK, STIN__CSG_MERGE_RESULT };
+typedef struct stin__csg_merge_state {
+    GLuint merge_prog, kill_prog, snap_prog;
+    GLint u_depth, u_select, u_params;
+    GLint snap_model, snap_view_proj, snap_result, snap_params;
+    stin__displace_locs snap_displace;
+    GLuint fbo[2], texture[2]; /* work (depth-stencil), result (depth) */
+    GLenum format;
+    int width, height;        /* grown to the largest viewport window so far */
+    size_t bytes;
+    GLuint queries[STIN__CSG_MERGE_THRESHOLDS + 1]; /* 0: no occlusion queries */
+    int said_failed;
+} stin__csg_merge_state;
+
+/* A light's map resolve, kept for the passes that draw the products'
+ * surface into the same map again (map-combine's ramp, map-depth's side
+ * test): its pixels (result unbiased, candidate biased) and camera. */
+typedef struct stin__csg_cast_state {
+    GLuint fbo, depth_stencil; /* where a map without stencil resolves (0: none yet) */
+    int size;                 /* the renderbuffer's side */
+    int valid;                /* the last map's cast drew products */
+    int kept;                 /* in one band: pixels below hold its whole resolve */
+    int rect[4];              /* the map's rectangle under the products */
+    stin__csg_pixels pixels;
+    float view[16], projection[16]; /* the light's, the projection cropped to the pixels */
+    float light_projection[16];       /* the light's, uncropped */
+    int said_room, said_no_target, said_technique;
+} stin__csg_cast_state;
+/* "interval" (csg/interval.c): each primitive's crossings of the camera
+ * rays peeled into k depth layers, walked per pixel by one full-screen
+ * pass. Layer g (primitive * k + layer; the near-plane cap after the
+ * last) lives in array g & 1 at slice g >> 1: the layer a peel reads is
+ * never the texture it draws into. */
+#define STIN__CSG_INTERVAL_MAX_LAYERS 16u  /* desc.csg_interval_layers at most */
+#define STIN__CSG_INTERVAL_MAX_PRIMITIVES 32u /* a product's primitives (a bit each) */
+#define STIN__CSG_INTERVAL_MAX_TERMS 64u   /* a product's terms (uniform masks) */
+#define STIN__CSG_INTERVAL_MAX_LAYER_INDEX 255u /* layers + cap: the walk's 8-bit answer */
+typedef struct stin__csg_interval_state {
+    GLuint peel_prog, walk_prog;
+    GLint peel_model, peel_view_proj, peel_previous, peel_previous_slice, peel_mirrored,
+        peel_tolerance;
+    stin__displace_locs peel_displace;
+    GLint walk_crossing[2], walk_counts, walk_terms;
+    /* even and odd layers: depth (the peel's depth test; the frame's depth
+     * format) and RG32F crossings (the rasteriser's float depth, for exact
+     * peeling and ordering; the side) */
+    GLuint depth[2], crossing[2];
+    GLenum depth_format;
+    GLuint result, fbo, query;  /* the walk's R8 target; the overflow's query */
+    int width, height, slices;  /* grown to the largest frame and product so far */
+    size_t bytes;               /* GL memory of the textures above */
+    int max_slices;             /* GL_MAX_ARRAY_TEXTURE_LAYERS */
+    int said_fallback, said_overflow, said_failed;
+} stin__csg_interval_state;
+
+/* The frame's products, in the caller's block (sizes from the desc). */
+typedef struct stin__csg_state {
+    stin__draw *primitives;   /* max_csg_primitives: mesh, transform, material each */
+    stin__csg_product *products; /* max_csg_terms (a product has at least one term) */
+    stin__csg_term *terms;    /* max_csg_terms */
+    uint32_t *literals;       /* max_csg_literals */
+    uint32_t *scratch;        /* normalisation, scratch_words */
+    uint32_t scratch_words;
+    uint32_t primitive_count, product_count, term_count, literal_count;
+    stin__draw *faces;        /* 2 max_csg_primitives: the faces the frame's passes draw */
+    uint32_t face_count;
+    int resolved;             /* this frame's products are in its depth buffer */
+    int said_unusable, said_layers, said_planes;
+    uint32_t cap_slot;        /* the near-plane cap's mesh (csg/near.c), STIN__NO_SLOT: none */
+    float cap_transform[16];  /* this frame's: the cap onto the near plane */
+    int cap_usable;
+    /* core profiles: the resolved depth goes back through an R32F texture and
+     * a program writing gl_FragDepth (made at stin_create; the texture at the
+     * first frame, grown, never shrunk) */
+    GLuint depth_prog, depth_tex;
+    GLint u_depth, u_origin;
+    int tex_width, tex_height;
+    int said_scs_fallback, said_scs_capped;
+    stin__csg_cast_state cast; /* products casting into the lights' maps (csg/cast.c) */
+    GLuint resolve_fbo;       /* the framebuffer a resolve runs in (the frame's, or a
+                               * light map's: csg/cast.c), bound again by interval */
+    stin__csg_interval_state interval; /* csg/interval.c */
+    stin__csg_merge_state merge;       /* csg/merge.c */
+    int merged;               /* this frame's resolve kept its depth on the GPU */
+    int in_place;             /* ... and runs in the frame's own buffers (csg/merge.c) */
+    int direct;               /* ... or snaps each candidate into the frame's depth */
+    int result_pending;       /* in place: the result texture has yet to take the depth
+                               * of pending_fbo (when a pass first asks for it) */
+    GLuint pending_fbo;
+    int region[4];            /* window x, y, w, h the resolve's passes keep to: the
+                               * viewport, or on the GPU the term's or candidate's
+                               * rectangle (csg/bounds.c) */
+} stin__csg_state;
+
+/* Words of normalisation scratch for the desc's capacities. */
+uint32_t stin__csg_scratch_words(const stin_desc *d);
+
+/* Where the normal form goes and how much room is left. */
+typedef struct stin__csg_out {
+    stin__csg_term *terms;
+    uint32_t max_terms, term_count;
+    uint32_t *literals;
+    uint32_t max_literals, literal_count;
+    uint32_t literal_base;    /* added to each term's `first` (the store's offset) */
+} stin__csg_out;
+
+typedef enum stin__csg_nf_result {
+    STIN__CSG_NF_OK = 0,
+    STIN__CSG_NF_TERMS,       /* more terms than out->max_terms */
+    STIN__CSG_NF_LITERALS,    /* more literals than out->max_literals */
+    STIN__CSG_NF_SCRATCH,     /* intermediate forms outgrew the scratch */
+    STIN__CSG_NF_DEPTH,       /* nested deeper than STIN__CSG_MAX_DEPTH */
+    STIN__CSG_NF_WORK         /* more than STIN__CSG_MAX_VISITS node visits */
+} stin__csg_nf_result;
+
+/* The normal form of nodes[node_count - 1] (nodes already checked: ops
+ * known, operands before their node, primitive indices in range) into out.
+ * Pure: no context, no GL. On failure out's counts are left at 0. */
+stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t node_count,
+                                          uint32_t *scratch, uint32_t scratch_words,
+                                          stin__csg_out *out);
+
+/* Goldfeather (csg/goldfeather.c): the frame's products into its depth
+ * buffer (after the target's clear, before the ambient pass); 0 when it
+ * cannot (logged once): the products are not drawn. depth_again puts the
+ * resolved depth into the bound framebuffer too, depth LESS (the screen
+ * mask's copy of the frame's depth). */
+size_t stin__csg_goldfeather_bytes(int w, int h);
+/* At stin_create after the lighting and shadows: on a core profile the
+ * depth program (GL4 lighting), else csg-off (demoted, logged). */
+void stin__csg_init(struct stin_context *ctx);
+void stin__csg_release(struct stin_context *ctx);
+int stin__csg_resolve(struct stin_context *ctx, const stin__path *path);
+void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
+/* GL4: a texture of the resolved depth (its r), left bound on unit 0; 0
+ * when this frame resolved nothing. origin: the window pixel of its texel
+ * (0, 0) (the viewport's corner for the CPU resolve's R32F copy, (0, 0)
+ * for the GPU resolve's depth texture). */
+GLuint stin__csg_depth_texture(struct stin_context *ctx, int origin[2]);
+/* The faces of the resolved products as draws (csg/csg.c), after the resolve. */
+void stin__csg_faces(struct stin_context *ctx);
+/* Around a face draw of a path's pass: depth LESS becomes EQUAL, the face
+ * culled that the draw does not show (skipped, returning 0, in map-depth's
+ * pass for the back sides the eye sees); end restores the pass state. */
+int stin__csg_face_begin(struct stin_context *ctx, const stin__draw *d, stin__pass_state *saved);
+void stin__csg_face_end(struct stin_context *ctx, const stin__pass_state *saved);
+
+/* The near and far planes (csg/near.c). The cap lies at window depth
+ * STIN__CSG_CAP_DEPTH (2^-10: just behind the near plane, far from any
+ * other surface's depth). */
+#define STIN__CSG_CAP_DEPTH (1.0f / 1024.0f)
+void stin__csg_cap_init(struct stin_context *ctx);
+/* 0 when the frame's camera has no usable cap plane (singular). */
+int stin__csg_cap_transform(const struct stin_context *ctx, float out[16]);
+/* Whether the frame's near and far planes cut d's bounding box. */
+void stin__csg_planes_cut(const struct stin_context *ctx, const stin__draw *d, int *near_cut,
+                          int *far_cut);
+/* The resolve's pixels for the viewport at `offset` bytes into the staging
+ * (0 when it has not the room); every product resolved into them in the
+ * bound framebuffer, with the current camera (ctx->frame.view, projection,
+ * view_proj, viewport); its depth written back (func: the depth test). */
+int stin__csg_pixels_at(struct stin_context *ctx, size_t offset, stin__csg_pixels *r);
+void stin__csg_resolve_pixels(struct stin_context *ctx, const stin__path *path,
+                              stin__csg_pixels *r);
+void stin__csg_write_depth(struct stin_context *ctx, const stin__path *path,
+                           const stin__csg_pixels *r, GLenum func);
+
+/* Products casting shadows (csg/cast.c). A map technique calls cast after
+ * clearing a light's map (viewport map_vp, in framebuffer map_fbo; in_place:
+ * the map is drawn in the frame's own framebuffer, whose stencil the resolve
+ * may use) and before drawing the casters with depth LESS: the products'
+ * surface seen from the light, pushed back by the light's slope-scaled
+ * offset (factor, units as glPolygonOffset), goes into the map's depth.
+ * Returns 1 when it drew any. The rectangle goes in bands of the rows the
+ * staging holds. cast_again writes the same surface unbiased into the
+ * framebuffer `target` (bound; in_place as for cast; viewport map_vp) and
+ * draws the primitives there depth EQUAL with the fixed path's current
+ * colour state (map-combine's ramp, map-depth's side colours): from the
+ * kept pixels where one band held them, else resolving the bands again. */
+int stin__csg_cast(struct stin_context *ctx, const stin__path *path, const float view[16],
+                   const float proj[16], const int map_vp[4], GLuint map_fbo, int in_place,
+                   float factor, float units);
+void stin__csg_cast_again(struct stin_context *ctx, const int map_vp[4], GLuint target,
+                          int in_place);
+void stin__csg_cast_release(struct stin_context *ctx);
+/* Logs once per context that the frame's products cast no shadow `why`
+ * (a technique or light that does not take them); nothing without
+ * products or lights. */
+void stin__csg_cast_none(struct stin_context *ctx, const char *why);
+/* Whether the frame's products cast at all (there are some, CSG is on and
+ * STIN_DEBUG_CSG_NO_CAST is not set). */
+int stin__csg_cast_wanted(const struct stin_context *ctx);
+
+/* Goldfeather's passes that SCS shares: depth and stencil of the viewport
+ * read back into r, the buffers cleared (colour writes off), the face a
+ * primitive shows (front, back where complemented; mirroring swaps). */
+void stin__csg_read_depth(struct stin_context *ctx, const stin__csg_pixels *r, float *out);
+void stin__csg_read_stencil(struct stin_context *ctx, const stin__csg_pixels *r);
+void stin__csg_clear(struct stin_context *ctx, GLbitfield bits);
+GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
+
+/* The window rectangle (normalised device min x, y, max x, y) d's bounding
+ * box covers: the part of the box in front of the eye, projected (empty,
+ * min > max, where it all lies behind the eye); whether two meet, within a
+ * pixel (csg/bounds.c). */
+void stin__csg_screen_rect(const struct stin_context *ctx, const stin__draw *d, float rect[4]);
+int stin__csg_rects_meet(const struct stin_context *ctx, const float a[4], const float b[4]);
+/* A primitive's world-space box (its mesh's bounds through its transform:
+ * min x y z, max x y z), and whether two such boxes meet. */
+void stin__csg_world_box(const struct stin_context *ctx, const stin__draw *d, float box[6]);
+int stin__csg_world_boxes_meet(const float a[6], const float b[6]);
+/* Whether the boxes lie apart by more than `units` steps of the target's
+ * depth (at least those of a 24-bit buffer) on every ray of the viewport
+ * through both: a face of the one never comes within that of a face of the
+ * other at a pixel, so the coplanar rules' offsets cannot join them. 0
+ * where unsure (a corner at or behind the eye, an oblique projection). */
+int stin__csg_world_boxes_apart(const struct stin_context *ctx, const float a[6], const float b[6],
+                                float units);
+/* The resolve's region (csg/bounds.c). A candidate's surface lies inside
+ * its own rectangle and every plain literal's of its term, so on the GPU
+ * (where nothing outside is read back) a term's or candidate's passes,
+ * clears and quads keep to that rectangle: fill follows the primitives,
+ * not the viewport. reset: the whole viewport. narrow: the viewport cut
+ * to normalised device rectangle ndc with a pixel's margin; 0 when nothing
+ * is left (the candidate covers no pixel). keep_to: a pass state
+ * scissored to the region. */
+void stin__csg_region_reset(struct stin_context *ctx);
+int stin__csg_region_narrow(struct stin_context *ctx, const float ndc[4]);
+void stin__csg_region_keep_to(const struct stin_context *ctx, stin__pass_state *ps);
+/* The window box (x, y, w, h) within the viewport that holds normalised
+ * device rectangle ndc with a pixel's margin; 0 where it is empty. */
+int stin__csg_window_box(const struct stin_context *ctx, const float ndc[4], int box[4]);
+/* The clip w (the distance along the view) of d's bounding box's nearest
+ * corner: a front-to-back key. */
+float stin__csg_nearest_w(const struct stin_context *ctx, const stin__draw *d);
+/* The eye of the frame's camera in world space; 0 where the projection is
+ * orthographic (or singular). */
+int stin__csg_eye(const struct stin_context *ctx, float eye[3]);
+/* The eye's power with respect to the sphere at d's world box's centre
+ * whose squared radius is the mean of the box's squared half-extents (for a
+ * sphere mesh, the sphere): its squared distance minus its squared radius.
+ * A front-to-back key for scs: where the depth leaves subtracted sphere A
+ * inside sphere B, A's power from the eye is below B's, or the depth began
+ * inside both (the radical plane between two lies where their powers are
+ * equal, and the depth only moves away from the eye). */
+float stin__csg_power(const struct stin_context *ctx, const stin__draw *d, const float eye[3]);
+/* a = a cut to b (both normalised device min x, y, max x, y; empty: min > max). */
+void stin__csg_rect_cut(float a[4], const float b[4]);
+
+/* The resolve's steps on its candidates (csg/merge.c), alike on the CPU
+ * and the GPU. A candidate is the depth the bound framebuffer holds.
+ * open: the candidate taken up; 0 when no pixel of it can be nearer than
+ * the result (known on the CPU only). keep_where: its pixels whose stencil
+ * & mask differs from want lose. take: its pixels kept where nearer than
+ * the result (where select is not NULL, only the pixels whose interval
+ * walk chose layer select->id; in a direct resolve, surface's faces
+ * snapped into the frame instead); returns whether any was kept (on the
+ * GPU counted by a query where want_kept asks and there are queries, else
+ * 1).
+ * stencil_max: the largest stencil value over the viewport, or a bound
+ * above it no larger than limit (on the GPU from threshold queries). The
+ * GPU steps switch programs: path's geometry_begin runs again after them
+ * (path NULL: the caller rebinds its own). */
+typedef struct stin__csg_select {
+    GLuint texture;           /* interval's walk target (R8: layer + 1) */
+    int id;
+} stin__csg_select;
+/* The faces a candidate's depth was drawn from, for the direct resolve
+ * (take snaps them into the frame): term t's literals [first, first +
+ * count), or where list is not NULL list[0..count), each its shown side
+ * (the front of a plain one, the back of a complemented one); or, where
+ * cap is not NULL, that draw alone with the side `cap_culled` culled
+ * (goldfeather's near-plane cap). */
+typedef struct stin__csg_surface {
+    const stin__csg_product *p;
+    const stin__csg_term *t;
+    const uint32_t *list;
+    uint32_t first, count;
+    const stin__draw *cap;
+    GLenum cap_culled;
+} stin__csg_surface;
+int stin__csg_candidate_open(struct stin_context *ctx, stin__csg_pixels *r);
+void stin__csg_candidate_keep_where(struct stin_context *ctx, const stin__path *path,
+                                    stin__csg_pixels *r, unsigned mask, unsigned want);
+int stin__csg_candidate_take(struct stin_context *ctx, const stin__path *path,
+                             stin__csg_pixels *r, const stin__csg_select *select,
+                             const stin__csg_surface *surface, int want_kept);
+unsigned stin__csg_stencil_max(struct stin_context *ctx, const stin__path *path,
+                               stin__csg_pixels *r, unsigned limit);
+/* The GPU resolve (csg/merge.c): programs at stin_create (nothing where
+ * the tier or context lacks what it needs); begin: its framebuffers grown
+ * to the viewport's window size, the result cleared and the work
+ * framebuffer bound as the resolve's (0: cannot, logged once: the resolve
+ * runs on the CPU); snap: the products' faces (csg/csg.c's list) into the
+ * bound framebuffer, depth LESS, where they lie on the result; result: the
+ * result's depth texture (texel = window pixel). */
+void stin__csg_merge_init(struct stin_context *ctx);
+void stin__csg_merge_release(struct stin_context *ctx);
+int stin__csg_merge_ready(const struct stin_context *ctx);
+int stin__csg_merge_begin(struct stin_context *ctx);
+void stin__csg_merge_snap(struct stin_context *ctx);
+GLuint stin__csg_merge_result(struct stin_context *ctx);
+/* The GPU resolve in place: a frame whose one candidate (one product of one
+ * scs term) is resolved in the frame's own depth and stencil, just cleared,
+ * needs no work buffer, merge or snap: the faces' depth the lit passes meet
+ * is what its passes rasterised there (fits: not into a multisampled
+ * framebuffer, whose depth the copy below cannot read). begin: the result
+ * texture grown (0: cannot, logged once) and the frame's framebuffer bound
+ * as the resolve's; end: its stencil cleared. The passes that draw the products again
+ * elsewhere (stin__csg_depth_again, vdsm's position buffer) read the
+ * result texture: result_ready copies the frame's depth into it the first
+ * time one asks (at end where draw and read bindings are one). Later
+ * passes only bring the frame's depth nearer, and where a nearer surface
+ * hides a product the snap keeps none of its faces, as the depth test
+ * against that surface would not. */
+int stin__csg_in_place_fits(const struct stin_context *ctx);
+int stin__csg_in_place_begin(struct stin_context *ctx);
+void stin__csg_in_place_end(struct stin_context *ctx);
+/* The direct GPU resolve: candidates (goldfeather's layers, scs's terms)
+ * are found in the work buffer as before, but each is taken by drawing
+ * its own faces into the frame, depth LESS, kept within the snap's band of
+ * the work buffer's depth: the frame's depth is then the result, holding
+ * the faces' own rasterised depth, with no result buffer, merge quads or
+ * final snap. The result texture is copied on demand as in place. fits:
+ * any frame but interval's (its walk's layers are no one face set) and a
+ * multisampled framebuffer (the copy); begin: the work buffer bound (0:
+ * cannot, logged once); end: the frame's framebuffer bound again, the
+ * scissor off. */
+int stin__csg_direct_fits(const struct stin_context *ctx);
+int stin__csg_direct_begin(struct stin_context *ctx);
+void stin__csg_direct_end(struct stin_context *ctx);
+void stin__csg_merge_result_ready(struct stin_context *ctx);
+/* The side of face draw d its pass culls (csg/csg.c). */
+GLenum stin__csg_face_hidden(const stin__draw *d);
+
+/* SCS (csg/scs.c): product p into r's result (csg/merge.c) when the CSG technique is scs
+ * and every primitive of p is convex, returning 1; else 0 (logged once per
+ * context: goldfeather resolves it). Inside the resolve's geometry_begin. */
+int stin__csg_scs_product(struct stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
+                          const stin__csg_product *p);
+/* Whether scs resolves p (the technique scs, p fit for it). */
+int stin__csg_scs_takes(const struct stin_context *ctx, const stin__csg_product *p);
+
+/* Interval (csg/interval.c): product p into r's result (csg/merge.c) when the CSG
+ * technique is interval and p fits its limits, returning 1; else 0 (logged
+ * once per context: scs or goldfeather resolves it). Inside the resolve's
+ * geometry_begin, which it leaves as it found it. */
+int stin__csg_interval_product(struct stin_context *ctx, const stin__path *path,
+                               stin__csg_pixels *r, stin__csg_product *p);
+/* Its programs at stin_create (after stin__csg_init; demotes to scs when
+ * they do not build), its GL objects freed at release. */
+void stin__csg_interval_init(struct stin_context *ctx);
+void stin__csg_interval_release(struct stin_context *ctx);
+
+/* A material checked and its defaults applied (frame/frame.c; stin_draw's rules). */
+stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,
+                                   const stin_material *material, stin_material *out,
+                                   stin_result *r);
+
+#endif

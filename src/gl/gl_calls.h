@@ -1,0 +1,62 @@
+/* SPDX-License-Identifier: MIT */
+/* GL entry points: one table from gl_funcs.h, called through GL(ctx, Name). */
+#ifndef STIN_GL_CALLS_H
+#define STIN_GL_CALLS_H
+
+#include "stin/stin.h"
+#include "gl/gl_types.h"
+#include "gl/gl_funcs.h"
+
+
+/* ---- GL entry points ---------------------------------------------------- */
+/* What an entry point or enum needs: a capability (STIN_CAP_*), GL 1.1
+ * (NEED_CORE) or a core GL version (NEED_GLxy). */
+enum { NEED_CORE = STIN_CAP_COUNT, NEED_GL12, NEED_GL13, NEED_GL14, NEED_GL30, NEED_GL31, NEED_GL32,
+       NEED_GL33, NEED_GL43, NEED_COUNT };
+
+typedef enum stin__glfn {
+#define STIN_X_(ret, name, params, need, alt) STIN_GLFN_##name,
+    STIN_GL_FUNCS(STIN_X_)
+#undef STIN_X_
+    STIN_GLFN_COUNT
+} stin__glfn;
+
+typedef struct stin__gl {
+#define STIN_X_(ret, name, params, need, alt) ret(STIN_APIENTRY *name) params;
+    STIN_GL_FUNCS(STIN_X_)
+#undef STIN_X_
+} stin__gl;
+
+/* Resolves every entry point; returns the number that did not resolve.
+ * loaded[i] is 1 for each entry point i that did. */
+int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
+                  unsigned char loaded[STIN_GLFN_COUNT]);
+const char *stin__glfn_name(stin__glfn fn);
+int stin__glfn_need(stin__glfn fn);
+/* The GL version (major * 10 + minor) a NEED_GLxy names, else 0. */
+int stin__need_version(int need);
+/* "GL 3.3" or the capability's name, for messages. */
+const char *stin__need_name(int need);
+struct stin_context;
+/* 1 when entry point fn loaded and what it needs is present (after the caps
+ * mask and the version cap): the test for optional calls. */
+int stin__gl_available(const struct stin_context *ctx, stin__glfn fn);
+
+/* Calls go through GL(ctx, Name)(args). The checked build first verifies that
+ * the capability profile allows the entry point. */
+#if defined(STIN_GL_CHECK) && STIN_GL_CHECK
+void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn);
+void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e);
+#define GL(ctx, name) (stin__gl_check_call((ctx), STIN_GLFN_##name), (ctx)->gl.name)
+#define GL_ENUM(ctx, name, e) (stin__gl_check_enum((ctx), STIN_GLFN_##name, (e)), (ctx)->gl.name)
+#else
+#define GL(ctx, name) ((ctx)->gl.name)
+#define GL_ENUM(ctx, name, e) ((void)(e), (ctx)->gl.name)
+#endif
+/* glEnable/glDisable and friends take an enum whose capability is audited. */
+#define GL_ENABLE(ctx, e) GL_ENUM(ctx, Enable, e)(e)
+#define GL_DISABLE(ctx, e) GL_ENUM(ctx, Disable, e)(e)
+/* In checked builds, GL errors after a pass are logged and counted. */
+void stin__gl_check_errors(struct stin_context *ctx, const char *where);
+
+#endif

@@ -1,0 +1,687 @@
+/* SPDX-License-Identifier: MIT */
+/* GL2 and GL4 tiers: per-pixel lighting in GLSL (shaders/gl2 with #version
+ * 110 on compatibility contexts, shaders/gl4 with #version 150 and VAOs),
+ * lights in batches of 8 with additive passes, the passes the shadow
+ * schedule needs, and the AOV outputs. */
+#include "internal.h"
+
+static const char *const vert_names[STIN__PROG_COUNT] = {"lit.vert", "lit.vert", "lit.vert",
+                                                         "volume.vert"};
+static const char *const frag_names[STIN__PROG_COUNT] = {"lit.frag", "normal.frag", "flat.frag",
+                                                         "flat.frag"};
+
+static void locate(stin_context *ctx, stin__program *p)
+{
+#define LOC(field, uniform) p->field = GL(ctx, GetUniformLocation)(p->name, uniform)
+    LOC(u_model, "u_model");
+    LOC(u_view_proj, "u_view_proj");
+    LOC(u_normal_matrix, "u_normal_matrix");
+    LOC(u_eye, "u_eye");
+    LOC(u_ambient, "u_ambient");
+    LOC(u_albedo, "u_albedo");
+    LOC(u_specular, "u_specular");
+    LOC(u_shininess, "u_shininess");
+    LOC(u_light_count, "u_light_count");
+    LOC(u_lights, "u_lights");
+    LOC(u_albedo_tex, "u_albedo_tex");
+    LOC(u_has_albedo_tex, "u_has_albedo_tex");
+    LOC(u_shadow_kind, "u_shadow_kind");
+    LOC(u_shadow_matrix, "u_shadow_matrix");
+    LOC(u_shadow_params, "u_shadow_params");
+    LOC(u_shadow_maps[0], "u_shadow_map");
+    LOC(u_shadow_maps[1], "u_shadow_face1");
+    LOC(u_shadow_maps[2], "u_shadow_face2");
+    LOC(u_shadow_maps[3], "u_shadow_face3");
+    LOC(u_shadow_maps[4], "u_shadow_face4");
+    LOC(u_shadow_maps[5], "u_shadow_face5");
+    LOC(u_color, "u_color");
+#undef LOC
+    stin__translucent_locate(ctx, p);
+    stin__peel_locate(ctx, p);
+    stin__surf_locate(ctx, p);
+    /* the volume program draws shadow-map depth from lights, the rest the camera's passes */
+    stin__displace_locate(ctx, p->name, p != &ctx->programs[STIN__PROG_VOLUME], &p->displace);
+    p->frame_serial = 0;
+}
+
+/* The shadow chunk of the lit programs. */
+static const char *lit_shadow_chunk(const stin_context *ctx)
+{
+    return ctx->shadow->glsl_chunk ? ctx->shadow->glsl_chunk : "shadow_none.glsl";
+}
+
+/* The lit program of a surface variant. */
+static stin__program *lit_program(stin_context *ctx, int variant)
+{
+    return variant == STIN__SURF_PLAIN ? &ctx->programs[STIN__PROG_LIT]
+                                       : &ctx->glsl_surface.lit[variant];
+}
+
+/* peel: with the transparency's peel chunk (when one is chosen) */
+static int build_lit(stin_context *ctx, const char *dir, int variant, int tess, int peel,
+                     const char *frag_defines, stin__program *p, char *msg, size_t size)
+{
+    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40];
+    const char *chunks[STIN__SURF_CHUNKS + 1];
+    stin__program_source src;
+    stin__formatf(vert, sizeof vert, "%slit.vert", dir);
+    stin__formatf(frag, sizeof frag, "%slit.frag", dir);
+    stin__surf_chunks(variant, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
+                      peel ? stin__peel_chunk(ctx) : NULL, names, chunks);
+    stin__memzero(&src, sizeof src);
+    src.vert = vert;
+    src.frag = frag;
+    src.frag_chunks = chunks;
+    src.frag_defines = frag_defines;
+    src.tessellate = tess;
+    stin__memzero(p, sizeof *p);
+    p->name = stin__program_build_source(ctx, &src, msg, size);
+    if (p->name)
+        locate(ctx, p);
+    return p->name != 0;
+}
+
+static int gl4(const stin_context *ctx) { return ctx->volume_vao != 0; }
+
+int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int peel,
+                         const char *frag_defines, stin__program *p, char *msg, size_t size)
+{
+    return build_lit(ctx, gl4(ctx) ? "gl4/" : "gl2/", variant, tess, peel, frag_defines, p, msg,
+                     size);
+}
+
+/* Lit programs per surface variant from normal up to `top` into lit[];
+ * returns the best one built (the one below the first that failed, whose
+ * message is in msg). */
+static int build_variants(stin_context *ctx, const char *dir, int tess, int top,
+                          stin__program *lit, char *msg, size_t size)
+{
+    int v, best = STIN__SURF_PLAIN;
+    for (v = STIN__SURF_NORMAL; v <= top; v++) {
+        if (!build_lit(ctx, dir, v, tess, 1, NULL, &lit[v], msg, size))
+            return best;
+        best = v;
+    }
+    return best;
+}
+
+/* One lit program per surface variant from normal up to the surface choice;
+ * a variant that does not build leaves the best at the one below it. */
+static void build_surface_variants(stin_context *ctx, const char *dir)
+{
+    stin_choice *c = &ctx->sel.choice[STIN_FEATURE_SURFACE];
+    int top = stin__surf_variant_of(c->technique);
+    char msg[160];
+    if (c->technique == STIN_TECH_SURFACE_DOT3) /* not chosen with GLSL lighting */
+        top = STIN__SURF_PLAIN;
+    ctx->glsl_surface.best = build_variants(ctx, dir, 0, top, ctx->glsl_surface.lit, msg,
+                                            sizeof msg);
+    if (ctx->glsl_surface.best < top) {
+        char why[200];
+        stin__formatf(why, sizeof why, "%s failed to build (%s)",
+                      stin_technique_name(stin__surf_technique_of(ctx->glsl_surface.best + 1)),
+                      msg);
+        stin__demote(ctx, STIN_FEATURE_SURFACE, stin__surf_technique_of(ctx->glsl_surface.best),
+                     why);
+    }
+}
+
+/* The lit, normal, flat and volume programs into progs; 0 on failure (msg). */
+static int build_programs(stin_context *ctx, const char *dir, int tess, stin__program *progs,
+                          char *msg, size_t msg_size)
+{
+    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40], none_name[40];
+    const char *chunks[STIN__SURF_CHUNKS + 1], *shadow_only[STIN__SURF_CHUNKS + 1], *no_shadow[2];
+    int i;
+    /* the lit program's surface and shadow functions (plain variant); flat.frag
+     * serves the visibility output (the shadow test: the plain variant's chunks
+     * less the surface's) and, with no test, the depth-only volume and map
+     * passes */
+    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
+                      stin__peel_chunk(ctx), names, chunks);
+    for (i = 0; chunks[i + 1]; i++)
+        shadow_only[i] = chunks[i + 1];
+    if (stin__peel_chunk(ctx)) /* it wraps the surface's normal: lit programs only */
+        i--;
+    shadow_only[i] = NULL;
+    stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
+    no_shadow[0] = none_name;
+    no_shadow[1] = NULL;
+    for (i = 0; i < STIN__PROG_COUNT; i++) {
+        stin__program *p = &progs[i];
+        stin__formatf(vert, sizeof vert, "%s%s", dir, vert_names[i]);
+        stin__formatf(frag, sizeof frag, "%s%s", dir, frag_names[i]);
+        p->name = stin__program_build(ctx, vert, frag,
+                                      i == STIN__PROG_LIT      ? chunks
+                                      : i == STIN__PROG_FLAT   ? shadow_only
+                                      : i == STIN__PROG_VOLUME ? no_shadow
+                                                               : NULL,
+                                      tess, msg, msg_size);
+        if (!p->name)
+            return 0;
+        locate(ctx, p);
+    }
+    return 1;
+}
+
+static void delete_programs(stin_context *ctx, stin__program *progs, int n)
+{
+    int i;
+    for (i = 0; i < n; i++)
+        if (progs[i].name) {
+            GL(ctx, DeleteProgram)(progs[i].name);
+            progs[i].name = 0;
+        }
+}
+
+/* "displace-tess": the same programs tessellated, swapped in for frames
+ * with displaced draws (stin__glsl_tessellate); a set that does not build
+ * moves displacement to "displace". */
+static void build_tessellated(stin_context *ctx, const char *dir)
+{
+    char msg[160], why[220];
+    int ok = build_programs(ctx, dir, 1, ctx->glsl_tess.programs, msg, sizeof msg) &&
+             build_variants(ctx, dir, 1, ctx->glsl_surface.best, ctx->glsl_tess.lit, msg,
+                            sizeof msg) == ctx->glsl_surface.best;
+    if (ok)
+        return;
+    delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    stin__formatf(why, sizeof why, "its tessellated programs failed to build (%s)", msg);
+    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_VTF, why);
+}
+
+static void swap_programs(stin__program *a, stin__program *b, int n)
+{
+    int i;
+    for (i = 0; i < n; i++) {
+        stin__program t = a[i];
+        a[i] = b[i];
+        b[i] = t;
+    }
+}
+
+void stin__glsl_tessellate(stin_context *ctx, int on)
+{
+    if (!on == !ctx->glsl_tess.active || !ctx->glsl_tess.programs[STIN__PROG_LIT].name)
+        return;
+    swap_programs(ctx->programs, ctx->glsl_tess.programs, STIN__PROG_COUNT);
+    swap_programs(ctx->glsl_surface.lit, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    ctx->glsl_tess.active = on;
+    ctx->glsl_surface.current = NULL;
+}
+
+stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size)
+{
+    const char *dir = tier == STIN_TIER_GL4 ? "gl4/" : "gl2/";
+    stin__glsl_release(ctx);
+    if (!build_programs(ctx, dir, 0, ctx->programs, msg, msg_size)) {
+        stin__glsl_release(ctx);
+        return STIN_ERROR_GL;
+    }
+    build_surface_variants(ctx, dir);
+    if (stin__displace_tessellated(ctx))
+        build_tessellated(ctx, dir);
+    if (tier == STIN_TIER_GL4) { /* core profiles have no client arrays: stream volumes */
+        GL(ctx, GenBuffers)(1, &ctx->volume_vbo);
+        GL(ctx, GenVertexArrays)(1, &ctx->volume_vao);
+        GL(ctx, BindVertexArray)(ctx->volume_vao);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
+        GL(ctx, EnableVertexAttribArray)(0);
+        GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, NULL);
+        GL(ctx, BindVertexArray)(0);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    }
+    stin__gl_check_errors(ctx, "shader set-up");
+    return STIN_OK;
+}
+
+void stin__glsl_release(stin_context *ctx)
+{
+    stin__glsl_tessellate(ctx, 0);
+    delete_programs(ctx, ctx->programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl_surface.lit, STIN__SURF_COUNT);
+    delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    stin__lit_cache_release(ctx);
+    ctx->glsl_surface.current = NULL;
+    if (ctx->volume_vbo)
+        GL(ctx, DeleteBuffers)(1, &ctx->volume_vbo);
+    if (ctx->volume_vao)
+        GL(ctx, DeleteVertexArrays)(1, &ctx->volume_vao);
+    ctx->volume_vbo = ctx->volume_vao = 0;
+}
+
+/* Packs up to 8 lights: position, direction + cos(cutoff), colour + exponent,
+ * attenuation (the layout lit.frag reads). */
+static void lit_bind(stin_context *ctx, const stin__program *p);
+
+static void upload_lights(stin_context *ctx, const stin__program *p, const stin_light_desc *lights,
+                          int n, int with_ambient)
+{
+    float *packed = ctx->glsl_surface.packed;
+    int i, k;
+    for (i = 0; i < n; i++) {
+        const stin_light_desc *l = &lights[i];
+        float *o = packed + 16 * i;
+        int dir = l->type == STIN_LIGHT_DIRECTIONAL;
+        for (k = 0; k < 3; k++) {
+            o[k] = dir ? -l->direction[k] : l->position[k];
+            o[4 + k] = l->direction[k];
+            o[8 + k] = l->color[k] * l->intensity;
+            o[12 + k] = l->attenuation[k];
+        }
+        o[3] = dir ? 0.0f : 1.0f;
+        o[7] = l->type == STIN_LIGHT_SPOT ? stin__cos_deg(l->spot_cutoff_deg) : -2.0f;
+        o[11] = l->type == STIN_LIGHT_SPOT ? l->spot_exponent : 0.0f;
+        o[15] = 0.0f;
+    }
+    ctx->glsl_surface.light_n = n;
+    ctx->glsl_surface.light_key = stin__lit_lights_key(lights, n);
+    ctx->glsl_surface.with_ambient = with_ambient;
+    ctx->glsl_surface.serial++; /* every lit program's copy is stale now */
+    lit_bind(ctx, p);
+}
+
+/* The per-frame uniforms of a lit program (matrices, eye, sampler units,
+ * the current light batch), uploaded when the program is bound after they
+ * changed: switching surface variants per draw costs this only once per
+ * variant and pass. */
+static void lit_refresh(stin_context *ctx, stin__program *p)
+{
+    const float zero[3] = {0, 0, 0};
+    float inv[16];
+    if (p->frame_serial == ctx->glsl_surface.serial)
+        return;
+    p->frame_serial = ctx->glsl_surface.serial;
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
+    stin__mat4_invert(inv, ctx->frame.view);
+    GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
+    GL(ctx, Uniform1i)(p->u_albedo_tex, 0);
+    stin__surf_units(ctx, p);
+    GL(ctx, Uniform1i)(p->u_light_count, ctx->glsl_surface.light_n);
+    if (ctx->glsl_surface.light_n)
+        GL(ctx, Uniform4fv)(p->u_lights, 4 * ctx->glsl_surface.light_n, ctx->glsl_surface.packed);
+    GL(ctx, Uniform3fv)(p->u_ambient, 1,
+                        ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
+    if (ctx->shadow->uniforms)
+        ctx->shadow->uniforms(ctx, p);
+    stin__translucent_uniforms(ctx, p);
+    stin__peel_uniforms(ctx, p);
+}
+
+/* Makes p (a lit program) current with this pass's uniforms. */
+static void lit_bind(stin_context *ctx, const stin__program *p)
+{
+    if (ctx->glsl_surface.current != p) {
+        GL(ctx, UseProgram)(p->name);
+        ctx->glsl_surface.current = p;
+    }
+    lit_refresh(ctx, (stin__program *)p);
+}
+
+/* The lit program of a draw's surface variant, bound, with its material. */
+static const stin__program *lit_for_draw(stin_context *ctx, const stin__draw *d)
+{
+    int v = stin__surf_variant_for(ctx, &d->material);
+    const stin__program *q = stin__lit_specialised(
+        ctx, lit_program(ctx, v), v, ctx->glsl_surface.light_key,
+        stin__texture_lookup(ctx, d->material.albedo) != NULL);
+    lit_bind(ctx, q);
+    stin__surf_material(ctx, q, &d->material, v);
+    return q;
+}
+
+static void set_batch(stin_context *ctx, const stin__program *p, int batch)
+{
+    int first = batch * STIN__LIGHTS_PER_PASS, n = (int)ctx->light_count - first;
+    if (n > STIN__LIGHTS_PER_PASS)
+        n = STIN__LIGHTS_PER_PASS;
+    if (n < 0)
+        n = 0;
+    upload_lights(ctx, p, ctx->lights + first, n, batch == 0);
+}
+
+static void set_material(stin_context *ctx, const stin__program *p, const stin_material *m)
+{
+    const stin__texture_slot *t = stin__texture_lookup(ctx, m->albedo);
+    GL(ctx, Uniform4fv)(p->u_albedo, 1, m->color);
+    GL(ctx, Uniform3fv)(p->u_specular, 1, m->specular);
+    GL(ctx, Uniform1f)(p->u_shininess, m->shininess);
+    GL(ctx, Uniform1i)(p->u_has_albedo_tex, t != NULL);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, t ? t->name : 0);
+}
+
+static void bind_mesh_arrays(stin_context *ctx, const stin__mesh_slot *m, uint32_t slot)
+{
+    if (ctx->bound_mesh == slot)
+        return;
+    if (m->vao) {
+        GL(ctx, BindVertexArray)(m->vao);
+    } else if (m->vbo) {
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
+        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
+        stin__mesh_bind_attributes(ctx, NULL);
+    } else {
+        stin__mesh_bind_attributes(ctx, ctx->vertices + m->first_vertex);
+    }
+    ctx->bound_mesh = slot;
+}
+
+void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__displace_locs *dl,
+                                const stin__draw *d)
+{
+    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+    const void *idx = (m->vao || m->vbo) ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
+    GL(ctx, UniformMatrix4fv)(u_model, 1, GL_FALSE, d->transform);
+    stin__displace_draw(ctx, dl, d);
+    bind_mesh_arrays(ctx, m, d->mesh_slot);
+    GL(ctx, DrawElements)(stin__displace_primitive(dl), (GLsizei)(3u * m->triangle_count),
+                          GL_UNSIGNED_INT, idx);
+}
+
+/* The one geometry submission of the GLSL path: a draw's transform and
+ * mesh through program p (its normal matrix where p has one). */
+static void submit(stin_context *ctx, const stin__program *p, const stin__draw *d)
+{
+    if (p->u_normal_matrix >= 0) {
+        float nm[9];
+        int k;
+        stin__mat3_normal(nm, d->transform);
+        if (d->csg == STIN__CSG_BACK) /* a cavity's wall faces into the cavity */
+            for (k = 0; k < 9; k++)
+                nm[k] = -nm[k];
+        GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
+    }
+    stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
+}
+
+static int in_set(const stin_context *ctx, const stin__draw *d, int which)
+{
+    return (which & stin__camera_set(ctx, d)) != 0;
+}
+
+/* The CSG products' faces on their resolved depth (opaque). */
+static void draw_csg_faces(stin_context *ctx, const stin__program *p, int which, int materials)
+{
+    uint32_t i;
+    stin__pass_state saved;
+    if (!(which & STIN__OPAQUE) || ctx->peel.peeling) /* not in a peeled layer */
+        return;
+    for (i = 0; i < ctx->csg.face_count; i++) {
+        const stin__draw *d = &ctx->csg.faces[i];
+        const stin__program *q = p;
+        if (!stin__csg_face_begin(ctx, d, &saved))
+            continue;
+        if (materials && ctx->glsl_surface.current)
+            q = lit_for_draw(ctx, d);
+        if (materials)
+            set_material(ctx, q, &d->material);
+        submit(ctx, q, d);
+        stin__csg_face_end(ctx, &saved);
+    }
+}
+
+static void draw_set(stin_context *ctx, const stin__program *p, int which, int materials)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        const stin__program *q = p;
+        if (!in_set(ctx, d, which))
+            continue;
+        if (materials && ctx->glsl_surface.current) /* a lit pass: the draw's variant */
+            q = lit_for_draw(ctx, d);
+        if (materials)
+            set_material(ctx, q, &d->material);
+        submit(ctx, q, d);
+    }
+    draw_csg_faces(ctx, p, which, materials);
+}
+
+static void pass_state(stin_context *ctx, int additive, int blend_alpha)
+{
+    stin__pass_state ps = stin__pass_draw(ctx, additive, blend_alpha);
+    stin__pass_apply(ctx, &ps);
+}
+
+static const stin__program *use(stin_context *ctx, int which)
+{
+    const stin__program *p = &ctx->programs[which];
+    if (which == STIN__PROG_LIT) {
+        ctx->glsl_surface.serial++; /* a new pass: the view may have changed */
+        lit_bind(ctx, p);
+        return p;
+    }
+    ctx->glsl_surface.current = NULL;
+    GL(ctx, UseProgram)(p->name);
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
+    return p;
+}
+
+static void glsl_batches(stin_context *ctx, int which)
+{
+    const stin__program *p = use(ctx, STIN__PROG_LIT);
+    int batches = ((int)ctx->light_count + STIN__LIGHTS_PER_PASS - 1) / STIN__LIGHTS_PER_PASS, b;
+    uint32_t i;
+    if (batches < 1)
+        batches = 1;
+    if (which & STIN__OPAQUE)
+        for (b = 0; b < batches; b++) {
+            set_batch(ctx, p, b);
+            pass_state(ctx, b > 0, 0);
+            ctx->stats.passes++;
+            draw_set(ctx, p, STIN__OPAQUE, 1);
+        }
+    if (which & STIN__BLENDED)
+        for (i = 0; i < ctx->draw_count; i++) {
+            const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+            const stin__program *q;
+            if (!in_set(ctx, d, STIN__BLENDED))
+                continue;
+            q = lit_for_draw(ctx, d);
+            set_material(ctx, q, &d->material);
+            for (b = 0; b < batches; b++) {
+                set_batch(ctx, q, b);
+                pass_state(ctx, b > 0, 1);
+                submit(ctx, q, d);
+            }
+        }
+}
+
+static void glsl_ambient(stin_context *ctx, int which, int depth_only)
+{
+    const stin__program *p = use(ctx, STIN__PROG_LIT);
+    stin__pass_state ps = stin__pass_draw(ctx, 0, 0);
+    upload_lights(ctx, p, NULL, 0, 1);
+    ps.color_write = !depth_only;
+    stin__pass_apply(ctx, &ps);
+    draw_set(ctx, p, which, 1);
+    ctx->stats.passes++;
+}
+
+static void glsl_lit_lights(stin_context *ctx, const stin_light_desc *lights, int n)
+{
+    const stin__program *p = use(ctx, STIN__PROG_LIT);
+    upload_lights(ctx, p, lights, n, 0);
+    pass_state(ctx, 1, 0);
+    draw_set(ctx, p, STIN__OPAQUE, 1);
+    ctx->stats.passes++;
+}
+
+static void glsl_lit(stin_context *ctx, const stin_light_desc *light)
+{
+    glsl_lit_lights(ctx, light, 1);
+}
+
+static void glsl_flat(stin_context *ctx, int which, const float color[4],
+                      const stin_light_desc *light)
+{
+    const stin__program *p = use(ctx, STIN__PROG_FLAT);
+    GL(ctx, Uniform4fv)(p->u_color, 1, color);
+    if (ctx->shadow->uniforms || stin__translucent_active(ctx)) { /* the lit pass's shadow test */
+        float inv[16];
+        stin__mat4_invert(inv, ctx->frame.view);
+        GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
+        if (light) { /* where the light is, as lit.frag has it: a point faces' */
+            int dir = light->type == STIN_LIGHT_DIRECTIONAL, k; /* pick, the side test */
+            float pos[4];
+            for (k = 0; k < 3; k++)
+                pos[k] = dir ? -light->direction[k] : light->position[k];
+            pos[3] = dir ? 0.0f : 1.0f;
+            GL(ctx, Uniform4fv)(p->u_lights, 1, pos);
+        }
+        if (ctx->shadow->uniforms)
+            ctx->shadow->uniforms(ctx, p);
+    }
+    stin__translucent_uniforms(ctx, p);
+    pass_state(ctx, 1, 0);
+    draw_set(ctx, p, which, 0);
+    ctx->stats.passes++;
+}
+
+static void glsl_normals(stin_context *ctx)
+{
+    const stin__program *p = use(ctx, STIN__PROG_NORMAL);
+    pass_state(ctx, 0, 0);
+    draw_set(ctx, p, STIN__ALL, 0);
+    ctx->stats.passes++;
+}
+
+static void glsl_volume_begin(stin_context *ctx)
+{
+    use(ctx, STIN__PROG_VOLUME);
+    if (gl4(ctx)) {
+        GL(ctx, BindVertexArray)(ctx->volume_vao);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
+    } else {
+        int i;
+        if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO))
+            GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+        for (i = 1; i < 4; i++)
+            GL(ctx, DisableVertexAttribArray)((GLuint)i);
+    }
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void glsl_volume_draw(stin_context *ctx, const float model[16], const float *xyzw,
+                             uint32_t n)
+{
+    const stin__displace_locs *dl = &ctx->programs[STIN__PROG_VOLUME].displace;
+    GL(ctx, UniformMatrix4fv)(ctx->programs[STIN__PROG_VOLUME].u_model, 1, GL_FALSE, model);
+    stin__displace_draw(ctx, dl, NULL); /* volumes are never displaced */
+    if (gl4(ctx))
+        GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(16u * n), xyzw, GL_STREAM_DRAW);
+    else
+        GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, xyzw);
+    GL(ctx, DrawArrays)(stin__displace_primitive(dl), 0, (GLsizei)n);
+}
+
+static void glsl_volume_end(stin_context *ctx)
+{
+    if (gl4(ctx)) {
+        GL(ctx, BindVertexArray)(0);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    } else {
+        int i;
+        for (i = 1; i < 4; i++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)i);
+    }
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void glsl_begin(stin_context *ctx)
+{
+    int i;
+    ctx->bound_mesh = 0xffffffffu;
+    ctx->glsl_surface.current = NULL;
+    stin__lit_cache_frame(ctx);
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
+        GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    if (!gl4(ctx))
+        for (i = 0; i < 4; i++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)i);
+}
+
+static void glsl_end(stin_context *ctx)
+{
+    int i;
+    stin__surf_unbind(ctx);
+    ctx->glsl_surface.current = NULL;
+    if (!gl4(ctx))
+        for (i = 0; i < 4; i++)
+            GL(ctx, DisableVertexAttribArray)((GLuint)i);
+}
+
+/* Every draw's depth through the volume program (shadow-map casters). */
+static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16])
+{
+    const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
+    float view_proj[16];
+    uint32_t i;
+    stin__mat4_mul(view_proj, proj, view);
+    GL(ctx, UseProgram)(p->name);
+    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    if (!gl4(ctx)) { /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
+        int k; /* all four: displacement reads the normal and uv */
+        for (k = 0; k < 4; k++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)k);
+    }
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
+    ctx->bound_mesh = 0xffffffffu;
+    for (i = 0; i < ctx->draw_count; i++)
+        if (!stin__translucent_skips(ctx, &ctx->draws[ctx->draw_order[i]]))
+            submit(ctx, p, &ctx->draws[ctx->draw_order[i]]);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+/* CSG resolve (csg/goldfeather.c): geometry alone through the volume
+ * program, whose position is invariant with the lit passes'. */
+static void glsl_geometry_begin(stin_context *ctx)
+{
+    use(ctx, STIN__PROG_VOLUME);
+    if (!gl4(ctx)) { /* a light's map resolve runs before the frame's passes turn them on */
+        int k;
+        for (k = 0; k < 4; k++)
+            GL(ctx, EnableVertexAttribArray)((GLuint)k);
+    }
+    ctx->bound_mesh = 0xffffffffu;
+}
+
+static void glsl_geometry(stin_context *ctx, const stin__draw *d)
+{
+    submit(ctx, &ctx->programs[STIN__PROG_VOLUME], d);
+}
+
+static void glsl_geometry_end(stin_context *ctx) { ctx->bound_mesh = 0xffffffffu; }
+
+/* The light's passes add SRC_ALPHA / ONE: the lit program's alpha is the
+ * draw's opacity (times its albedo texture's). */
+static void glsl_blended_one(stin_context *ctx, const stin__draw *d, const stin_light_desc *light)
+{
+    const stin__program *p = use(ctx, STIN__PROG_LIT), *q;
+    upload_lights(ctx, p, light, light ? 1 : 0, light == NULL);
+    pass_state(ctx, light != NULL, 1);
+    q = lit_for_draw(ctx, d);
+    set_material(ctx, q, &d->material);
+    submit(ctx, q, d);
+    ctx->stats.passes++;
+}
+
+const stin__path *stin__glsl_path(void)
+{
+    static const stin__path path = {glsl_begin,       glsl_end,        glsl_ambient,
+                                    glsl_lit,         glsl_flat,       glsl_volume_begin,
+                                    glsl_volume_draw, glsl_volume_end, glsl_batches,
+                                    glsl_normals,     glsl_depth,      glsl_lit_lights,
+                                    glsl_geometry_begin, glsl_geometry, glsl_geometry_end,
+                                    glsl_blended_one};
+    return &path;
+}
+
+const stin__path *stin__path_of(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED
+               ? stin__fixed_path()
+               : stin__glsl_path();
+}

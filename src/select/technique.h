@@ -1,0 +1,74 @@
+/* SPDX-License-Identifier: MIT */
+/* The technique table and the solver that walks it (select/technique_table.c,
+ * select/select.c). One row per technique holds everything selection needs, so a
+ * new technique is a row, and chain order is the row's rank, not the public
+ * enum's value (new public values are appended). */
+#ifndef STIN_TECHNIQUE_H
+#define STIN_TECHNIQUE_H
+
+#include "stin/stin.h"
+
+typedef struct stin__technique_row {
+    stin_technique technique;
+    uint8_t rank;            /* place in its feature's chain, 0 = tried first */
+    uint64_t needs;          /* STIN_CAP_BIT()s */
+    /* The lighting it runs on: STIN_TECH_NONE any, STIN_TECH_LIGHTING_GLSL110
+     * any GLSL lighting, else exactly that one. */
+    stin_technique lighting;
+    uint64_t conflicts;      /* STIN__TECH_BIT()s it cannot be chosen together with */
+    uint8_t fragment_units;  /* texture units its draws add (albedo counts to lighting) */
+    uint8_t vertex_units;    /* vertex texture units it adds */
+    const struct stin__shadow_technique *shadow; /* shadows: its module */
+    /* Texture units it takes only when they are spare and runs without
+     * otherwise (volumes: the screen mask that shares lit passes). */
+    uint8_t spare_units;
+} stin__technique_row;
+
+#define STIN__TECH_BIT(t) ((uint64_t)1 << (t))
+
+/* The row of a technique; NULL for STIN_TECH_NONE and unknown values. */
+const stin__technique_row *stin__technique_row_of(stin_technique t);
+/* The techniques of a feature, best first (rank order); returns the count. */
+int stin__feature_chain(stin_feature f, stin_technique out[STIN_TECH_COUNT]);
+
+typedef struct stin__selection {
+    stin_tier tier;
+    stin_choice choice[STIN_FEATURE_COUNT];
+    /* Texture units of the chosen techniques, in feature order from 0:
+     * lighting's albedo, then the surface's, then the shadows'. */
+    int surface_unit, shadow_unit, units_used, unit_limit;
+    int shadow_spare_units; /* the shadow technique's spare units it got (from shadow_unit) */
+    int translucent_unit;   /* translucent shadows' first unit (deep: two) */
+    int transparency_unit;  /* transparency's first unit (depth-peel: two) */
+    int displace_unit;      /* displacement's vertex-stage height map (after units_used) */
+} stin__selection;
+
+/* Chooses the tier and one technique per feature. Fails (UNSUPPORTED) if a
+ * forced tier or technique cannot run; writes the reason into msg. */
+stin_result stin__select(const stin_caps *caps, stin_tier forced,
+                         const stin_technique forced_tech[STIN_FEATURE_COUNT],
+                         stin__selection *out, char *msg, size_t msg_size);
+/* Chooses every feature after lighting again, for the lighting in sel
+ * (set-up moved it down a tier). */
+stin_result stin__select_after_lighting(const stin_caps *caps, const stin_technique *forced,
+                                        stin__selection *sel, char *msg, size_t msg_size);
+/* Moves feature f's choice to `to` after set-up found the chosen one
+ * cannot run; logs a warning and marks the choice as fallen back. */
+void stin__demote(struct stin_context *ctx, stin_feature f, stin_technique to, const char *why);
+/* The same at log level `level` (INFO where the caller's own choice, not
+ * the context, rules the technique out and it was not forced). */
+void stin__demote_at(struct stin_context *ctx, stin_log_level level, stin_feature f,
+                     stin_technique to, const char *why);
+
+/* Row accessors kept for callers that ask one thing. */
+uint64_t stin__technique_needs(stin_technique t);
+stin_feature stin__technique_feature(stin_technique t);
+stin_tier stin__technique_tier(stin_technique t);
+stin_technique stin__technique_lighting(stin_technique t);
+/* 1 when technique t can run with this lighting technique. */
+int stin__technique_runs_with(stin_technique t, stin_technique lighting);
+uint64_t stin__tier_needs(stin_tier t);
+/* Names of the bits in `bits`, comma separated. */
+void stin__cap_names(uint64_t bits, char *out, size_t size);
+
+#endif

@@ -1,0 +1,102 @@
+/* SPDX-License-Identifier: MIT */
+/* Surface detail: DOT3 bump mapping on the fixed-function path
+ * (surface/dot3.c) and the GLSL normal / parallax / POM chunks
+ * (surface/glsl.c). */
+#ifndef STIN_SURFACE_H
+#define STIN_SURFACE_H
+
+#include "stin/stin.h"
+#include "render/path.h"
+
+/* GLSL surface variants of the lit program: one program each (surface/glsl.c). */
+enum { STIN__SURF_PLAIN = 0, STIN__SURF_NORMAL, STIN__SURF_PARALLAX, STIN__SURF_POM,
+       STIN__SURF_COUNT };
+#define STIN__SURF_LOG_KEYS 32
+
+/* ---- surface: DOT3 bump mapping on the fixed-function path (surface/dot3.c) ----
+ * Draws whose material has a normal map get their diffuse term per pixel from
+ * the normal map; the fixed-function passes keep their ambient and specular
+ * (set_material blacks out their diffuse through stin__dot3_material). */
+/* Creates the cube map when the technique is selected; a context without the
+ * texture units or staging falls back to plain (an error if it was forced). */
+stin_result stin__dot3_init(stin_context *ctx);
+void stin__dot3_release(stin_context *ctx);
+/* 1 when this (opaque) material is drawn with DOT3 in the lit passes. */
+int stin__dot3_bumped(const stin_context *ctx, const stin_material *m);
+/* Called by the fixed path's set_material: diffuse off for bumped materials. */
+void stin__dot3_material(stin_context *ctx, const stin_material *m);
+/* Adds the DOT3 diffuse of the opaque bumped draws for the GL lights
+ * 0..count-1 (set up as lights[0..count-1]), one additive pass per light
+ * (depth EQUAL), under the caller's stencil test and scissor; the stencil
+ * operations are KEEP meanwhile, so a caller that increments where it lights
+ * calls this before its own draws of the same light. */
+void stin__dot3_lights(stin_context *ctx, const stin_light_desc *lights, int count);
+/* As stin__dot3_lights for light batch `batch` of fixed_batches, whose lights
+ * set_batch has just set up; restores the batch's scene ambient. */
+void stin__dot3_batch(stin_context *ctx, int batch);
+/* Per-vertex tangent-space light vectors (xyz, unnormalised) and the normal
+ * that points the fixed-function lighting at the light (xyz), 6 floats a
+ * vertex, for an object with transform `model` and a light at light_world
+ * (w = 1 point, w = 0 direction toward the light). */
+void stin__dot3_light_vectors(const stin__vertex *v, uint32_t n, const float model[16],
+                              const float light_world[4], float *out);
+/* Direction of the cube-map face (0..5 = +X -X +Y -Y +Z -Z) at texture
+ * coordinates (s, t), unnormalised; and a face as RGBA8 0.5 + 0.5 n. */
+void stin__dot3_cube_direction(int face, float s, float t, float out[3]);
+void stin__dot3_cube_face(int face, uint32_t size, unsigned char *rgba);
+
+/* ---- surface: GLSL normal / parallax / POM chunks (surface/glsl.c) --------
+ * The lit program is built once per surface variant, from the context's
+ * surface choice down to plain; a variant that fails to build lowers the
+ * best one (logged). */
+/* Variant of a technique (plain for dot3/plain/none). */
+int stin__surf_variant_of(stin_technique t);
+stin_technique stin__surf_technique_of(int variant);
+/* The chunk files of a variant for directory dir ("gl2/"): writes up to
+ * STIN__SURF_CHUNKS names into names (each 40 bytes) and a NULL-terminated
+ * list into list, shadow_chunk then `after` and `last` (NULL: none). */
+#define STIN__SURF_CHUNKS 5
+void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk, const char *after,
+                       const char *last, char names[STIN__SURF_CHUNKS][40],
+                       const char *list[STIN__SURF_CHUNKS + 1]);
+/* The variant a draw's material gets (logs a step down once per material). */
+int stin__surf_variant_for(stin_context *ctx, const stin_material *m);
+/* Uniform locations of the surface chunks. */
+void stin__surf_locate(stin_context *ctx, stin__program *p);
+/* Sampler units (once per program use). */
+void stin__surf_units(stin_context *ctx, const stin__program *p);
+/* Per-draw: binds the normal and height maps to units 1 and 2, uploads the
+ * material's height scale, bias, steps and self-shadow mode. */
+void stin__surf_material(stin_context *ctx, const stin__program *p, const stin_material *m,
+                         int variant);
+/* Unbinds units 1 and 2 after a frame that bound them; unit 0 active. */
+void stin__surf_unbind(stin_context *ctx);
+
+/* ---- displacement: "displace" by vertex texture fetch (surface/displace.c) ----
+ * Every vertex shader that draws meshes has a "// @chunks" line where
+ * gl/shader.c splices displace.glsl (the context's displacement is displace)
+ * or displace_none.glsl; per draw the chunk's uniforms say whether and how
+ * far this draw's vertices move. */
+/* 1 when programs are built with the displacement chunk. */
+int stin__displace_built(const stin_context *ctx);
+/* 1 when they are also tessellated ("displace-tess"). */
+int stin__displace_tessellated(const stin_context *ctx);
+/* Around a frame (frame/state.c): the camera's tessellation scale, and the
+ * caller's GL_PATCH_VERTICES saved, set to 3, and given back. */
+void stin__displace_frame_begin(stin_context *ctx);
+void stin__displace_frame_end(stin_context *ctx);
+/* What a program's mesh draws are: GL_PATCHES (tessellated) or GL_TRIANGLES. */
+GLenum stin__displace_primitive(const stin__displace_locs *l);
+/* After the shadow module's set-up: volumes cannot shadow displaced
+ * geometry, so displacement steps down beside them (logged). */
+void stin__displace_init(stin_context *ctx);
+/* 1 when this material's draws are displaced. */
+int stin__displace_active(const stin_context *ctx, const stin_material *m);
+void stin__displace_locate(stin_context *ctx, GLuint program, int camera,
+                           stin__displace_locs *out);
+/* Per draw, before its DrawElements through a program with the chunk:
+ * on or off, the height map on its vertex unit, the scale and bias (d
+ * NULL: off, for geometry that is not a draw's). */
+void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const stin__draw *d);
+
+#endif

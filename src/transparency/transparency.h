@@ -1,0 +1,138 @@
+/* SPDX-License-Identifier: MIT */
+/* Transparency: how the camera sees blended draws (material opacity < 1).
+ * "depth-peel" (transparency/peel.c) peels them front to back, one layer of
+ * surfaces per pass, and lights each layer as the frame lights its opaque
+ * surfaces (the frame plan runs its lighting stages once per layer, the
+ * layer standing in for the opaque draws; under vdsm its position buffer
+ * is made from each layer first); "dual-peel" (transparency/dual_peel.c,
+ * GL4) finds two layers per geometry pass, the nearest and the farthest
+ * left, and lights each through the same stages; "sorted"
+ * (transparency/sorted.c) draws them whole, per object far to near,
+ * shadowed under the map techniques. */
+#ifndef STIN_TRANSPARENCY_H
+#define STIN_TRANSPARENCY_H
+
+#include "stin/stin.h"
+#include "gl/gl_types.h"
+#include "render/path.h"
+
+#define STIN__PEEL_MAX_LAYERS 64 /* desc.transparency_layers at most */
+
+/* dual-peel's own objects; the layer's depth, ambient and lights, the
+ * opaque depth, the framebuffers and the query are depth-peel's. */
+typedef struct stin__dual_state {
+    GLuint minmax[2];      /* pass k's (-near, far) per pixel (RG32F) is minmax[k % 2] */
+    GLuint front[2];       /* front layers' composite (C, T), under, ping-pong (RGBA16F) */
+    GLuint back[2];        /* back layers' composite (C, T), over, ping-pong (RGBA16F) */
+    GLuint minmax_fbo;
+    GLuint program[2];     /* the min-max pass: plain, tessellated (0: not built) */
+    stin__displace_locs displace[2];
+    GLint u_model[2], u_view_proj[2], u_previous[2], u_opaque[2], u_params[2];
+    GLint u_back;          /* the composite program's back composite */
+    int front_result, back_result; /* front[front_result], back[back_result] hold them */
+    int drawn;             /* the layer begun last drew something */
+    int back_empty;        /* the last back layer drew nothing: no pass would find more */
+} stin__dual_state;
+
+typedef struct stin__peel_state {
+    /* Layer k's depth (and stencil, for volumes) is depth[k % 2] (layer 0's:
+     * first, kept for the frame's depth at the end): its pass reads layer
+     * k - 1's from another texture (no feedback loop). */
+    GLuint depth[2], first;
+    GLuint opaque;         /* the opaque draws' depth: layers lie in front of it */
+    GLuint ambient;        /* a layer's ambient colour and opacity (RGBA8) */
+    GLuint lights;         /* a layer's lights added up (RGBA8) */
+    GLuint accum[2];       /* the composite so far, (C, T) front to back, ping-pong */
+    GLenum accum_format;   /* accum's: RGBA16F on GL4 (with float textures), else RGBA8 */
+    GLuint fbo, composite_fbo, program, query;
+    GLint u_ambient, u_lights, u_accum, u_first, u_params;
+    int width, height;     /* allocated texels (0: not yet) */
+    int unit;              /* two units: the previous layer's depth, the opaque depth */
+    int ready;             /* set up: depth-peel runs */
+    int layer;             /* the layer drawn last (-1: none yet) */
+    int peeling;           /* 1 while a layer is drawn: camera passes draw it */
+    int result;            /* accum[result] holds the composite */
+    GLuint frame_fbo;      /* the frame's target, bound back at the end */
+    int said_vdsm, said_failed, said_sorted;
+    /* "sorted", shadowed: the blended draw being lit and what was said */
+    const stin__draw *sorted_draw;
+    int said_sorted_unshadowed, said_sorted_light;
+    int dual;              /* the technique is dual-peel (its state below) */
+    stin__dual_state d;
+} stin__peel_state;
+
+/* The lit programs' chunk after the others ("peel.glsl") when depth-peel is
+ * the choice, else NULL. */
+const char *stin__peel_chunk(const struct stin_context *ctx);
+/* Set-up after the lighting path (textures come with the first frame, the
+ * size of its viewport): a failure falls back to "sorted" (logged). */
+void stin__peel_init(struct stin_context *ctx);
+void stin__peel_release(struct stin_context *ctx);
+/* A lit program's peel uniforms: located once, set per pass. */
+void stin__peel_locate(struct stin_context *ctx, stin__program *p);
+void stin__peel_uniforms(struct stin_context *ctx, const stin__program *p);
+
+/* Which of STIN__OPAQUE / STIN__BLENDED a camera pass counts draw d in:
+ * while a layer is peeled its blended draws are the pass's "opaque" ones
+ * (lit like them) and the opaque draws are in no set. */
+int stin__camera_set(const struct stin_context *ctx, const stin__draw *d);
+
+/* The frame's peeling, in the frame plan's blended stage:
+ *   if (stin__peel_begin(ctx, path))
+ *       while (stin__peel_layer_begin(ctx)) {
+ *           path->ambient(ctx, STIN__OPAQUE, 0);   depth, ambient, opacity
+ *           if (stin__peel_layer_lights(ctx))      something was peeled
+ *               ... the frame's lighting stages ...
+ *           stin__peel_layer_end(ctx);
+ *       }
+ *   stin__peel_end(ctx);
+ * begin returns 0 (draw them sorted) when depth-peel is not set up or the
+ * frame has no blended draw; layer_begin 0 when the layers are done (the
+ * cap, or the last pass drew nothing). */
+int stin__peel_begin(struct stin_context *ctx, const stin__path *path);
+int stin__peel_layer_begin(struct stin_context *ctx);
+int stin__peel_layer_lights(struct stin_context *ctx);
+void stin__peel_layer_end(struct stin_context *ctx);
+void stin__peel_end(struct stin_context *ctx);
+
+/* depth-peel's pieces that dual-peel shares (transparency/peel.c). */
+void stin__peel_screen_texture(struct stin_context *ctx, GLuint tex, GLenum format, int w, int h);
+void stin__peel_attach(struct stin_context *ctx, GLuint color, GLuint depth);
+void stin__peel_clear(struct stin_context *ctx, float r, float g, float b, float a, int depth);
+/* The last quad's target and state, shared by both peels (transparency/peel.c). */
+void stin__peel_over_frame(struct stin_context *ctx);
+void stin__peel_screen_quad(struct stin_context *ctx);
+void stin__peel_composite_done(struct stin_context *ctx);
+/* The layer's lights texture as the peel framebuffer's colour, cleared. */
+void stin__peel_lights_target(struct stin_context *ctx);
+/* The samples the query counted since stin__peel_count_begin (1 without a query). */
+void stin__peel_count_begin(struct stin_context *ctx);
+GLuint stin__peel_count_end(struct stin_context *ctx);
+
+/* "dual-peel" (transparency/dual_peel.c): what the stin__peel_* calls above
+ * turn to when it is the choice (set-up: after depth-peel's, with its
+ * composite program; size: its textures at w x h). */
+int stin__dual_init(struct stin_context *ctx, char *msg, size_t size);
+void stin__dual_release(struct stin_context *ctx);
+GLenum stin__dual_size(struct stin_context *ctx, int w, int h); /* its framebuffer's status */
+void stin__dual_uniforms(struct stin_context *ctx, const stin__program *p);
+void stin__dual_begin(struct stin_context *ctx);
+int stin__dual_layer_begin(struct stin_context *ctx);
+int stin__dual_layer_lights(struct stin_context *ctx);
+void stin__dual_layer_end(struct stin_context *ctx);
+void stin__dual_end(struct stin_context *ctx);
+
+/* "sorted": once per context, at the first frame with blended draws, the
+ * warning that it is exact only for separate convex objects. */
+void stin__sorted_frame(struct stin_context *ctx);
+/* "sorted" in a shadowed frame: 1 where the shadows technique tests a map
+ * per fragment in the lit pass (map-pcf; GL1's map-depth and map-combine),
+ * so each blended draw can be lit light by light with its shadows; 0 (said
+ * once, with the reason) where it cannot: volumes and screen masks (vdsm)
+ * hold the nearest opaque surface's visibility, not each object's. */
+int stin__sorted_shadowed(struct stin_context *ctx);
+/* Whether light li's pass on a sorted draw gets the technique's test (GL1
+ * map techniques: a point light without faces has volumes; said once). */
+int stin__sorted_light_shadowed(struct stin_context *ctx, uint32_t li);
+
+#endif

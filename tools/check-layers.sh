@@ -1,0 +1,71 @@
+#!/bin/sh
+# SPDX-License-Identifier: MIT
+# The library's one dependency rule, read from the built objects' symbols
+# (not the includes: a header that declares everything would hide a tangle).
+#
+#   base < gl < select < assets < render < features < frame
+#   features: shadow csg surface translucent transparency post
+#
+# A file may use what its own folder and the folders below it define; feature
+# folders never use each other; only frame names features. Every reference
+# that breaks the rule is printed as
+#   src/FROM.c -> src/TO.c (symbol): FOLDER may not use FOLDER
+# unless tools/layers-allowed.txt lists "src/FROM.c -> src/TO.c": the known
+# wrong-way references still to be taken out. A listed pair that no longer
+# breaks the rule is an error too, so the list only shrinks.
+# Usage: tools/check-layers.sh [OBJ_DIR (default build/lib)] [ALLOWED_FILE]
+# Exits 1 when anything is printed.
+set -u
+OBJ=${1:-build/lib}
+ALLOWED=${2:-tools/layers-allowed.txt}
+[ -d "$OBJ/src" ] || { echo "check-layers: no objects under $OBJ/src (build first)" >&2; exit 2; }
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+
+# symbol file, for what each object defines and what it uses
+find "$OBJ/src" -name '*.o' | sort | while read -r o; do
+    f=${o#"$OBJ"/}
+    f=${f%.o}.c
+    [ -f "$f" ] || continue # an object whose source was moved or removed
+    nm -g --defined-only "$o" | awk -v f="$f" 'NF == 3 { print $3, f }' >> "$tmp/defs"
+    nm -u "$o" | awk -v f="$f" '{ print $2, f }' >> "$tmp/uses"
+done
+sort -o "$tmp/defs" "$tmp/defs"
+sort -o "$tmp/uses" "$tmp/uses"
+grep -v '^[[:space:]]*\(#\|$\)' "$ALLOWED" 2>/dev/null | sort -u > "$tmp/allowed"
+
+# "symbol from to" for every cross-file reference, judged by the rule
+join "$tmp/uses" "$tmp/defs" | awk '$2 != $3' | awk '
+function folder(path,  p) { split(path, p, "/"); return p[2] }
+function rank(d) {
+    if (d == "base") return 0; if (d == "gl") return 1; if (d == "select") return 2
+    if (d == "assets") return 3; if (d == "render") return 4; if (d == "frame") return 6
+    if (d == "shadow" || d == "csg" || d == "surface" || d == "translucent" ||
+        d == "transparency" || d == "post") return 5
+    return -1
+}
+{
+    from = folder($2); to = folder($3)
+    if (from == to) next
+    if (rank(from) < 0 || rank(to) < 0) {
+        printf "%s -> %s (%s): folder outside the rule\n", $2, $3, $1; next
+    }
+    if (rank(to) < rank(from)) next
+    printf "%s -> %s (%s): %s may not use %s\n", $2, $3, $1, from, to
+}' | sort > "$tmp/wrong"
+
+status=0
+# new wrong-way references (pairs not on the list), one line per symbol
+awk -v allowed="$tmp/allowed" '
+BEGIN { while ((getline line < allowed) > 0) ok[line] = 1 }
+{ pair = $1 " -> " $3; if (!(pair in ok)) print }' "$tmp/wrong" > "$tmp/new"
+if [ -s "$tmp/new" ]; then
+    cat "$tmp/new"
+    status=1
+fi
+# listed pairs that are now clean
+awk '{ print $1 " -> " $3 }' "$tmp/wrong" | sort -u > "$tmp/pairs"
+comm -23 "$tmp/allowed" "$tmp/pairs" | sed 's/$/: listed in the allowed file but no longer a wrong-way reference; remove it/'
+[ -z "$(comm -23 "$tmp/allowed" "$tmp/pairs")" ] || status=1
+echo "check-layers: $(wc -l < "$tmp/pairs") wrong-way file pairs, $(wc -l < "$tmp/allowed") listed as known" >&2
+exit $status
