@@ -305,7 +305,10 @@ static void stage_prepare(stin_context *ctx)
  * because without FBOs they draw in the frame's own buffer. */
 static void stage_light_prepasses(stin_context *ctx)
 {
+    uint32_t i;
     stin__translucent_frame(ctx); /* deep and colour maps are made per light, before its lit pass */
+    for (i = 0; i < ctx->draw_count; i++) /* which casters the translucent choice leaves out */
+        ctx->draws[i].shadow_caster = (unsigned char)!stin__translucent_skips(ctx, &ctx->draws[i]);
     if (ctx->shadow->light_prepass && ctx->light_count)
         ctx->shadow->light_prepass(ctx);
 }

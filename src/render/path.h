@@ -16,6 +16,10 @@ typedef struct stin__draw {
     unsigned char csg; /* 0; or a CSG primitive's faces on the resolved depth, drawn
                         * depth EQUAL: STIN__CSG_FRONT, STIN__CSG_BACK (normals flipped),
                         * STIN__CSG_CAP (the near plane's cut, csg/near.c) */
+    unsigned char shadow_caster; /* set by the frame before its first pass: 1 when the
+                                  * shadows technique draws it as a caster; 0 for a
+                                  * transparent one whose shadow the translucent-shadows
+                                  * technique's map or the opacity threshold decides */
 } stin__draw;
 enum { STIN__CSG_FRONT = 1, STIN__CSG_BACK = 2, STIN__CSG_CAP = 3 };
 

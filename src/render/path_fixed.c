@@ -192,7 +192,7 @@ static void fixed_depth(stin_context *ctx, const float view[16], const float pro
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++) { /* casters the translucent choice keeps */
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        if (in_set(d, STIN__ALL) && !stin__translucent_skips(ctx, d))
+        if (in_set(d, STIN__ALL) && d->shadow_caster)
             draw_mesh(ctx, d);
     }
     ctx->bound_mesh = 0xffffffffu; /* CSG products: csg/cast.c, before these */

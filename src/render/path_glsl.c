@@ -630,7 +630,7 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++)
-        if (!stin__translucent_skips(ctx, &ctx->draws[ctx->draw_order[i]]))
+        if (ctx->draws[ctx->draw_order[i]].shadow_caster)
             submit(ctx, p, &ctx->draws[ctx->draw_order[i]]);
     ctx->bound_mesh = 0xffffffffu;
 }

@@ -295,7 +295,7 @@ void stin__vdsm_draw_casters(stin_context *ctx, const stin__vdsm_polygon_locs *l
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         int c = stin__vdsm_cull_lit(ctx, d);
-        if (stin__translucent_skips(ctx, d))
+        if (!d->shadow_caster)
             continue; /* a transparent caster: its map or the threshold decides */
         if (c != culled)
             GL(ctx, Uniform1i)(l->cull_lit, c);

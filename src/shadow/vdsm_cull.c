@@ -122,7 +122,7 @@ static uint64_t parts_needed(const stin_context *ctx)
     uint32_t i;
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        if (!stin__translucent_skips(ctx, d))
+        if (d->shadow_caster)
             n += PARTS_PER_TRIANGLE * ctx->meshes[d->mesh_slot].triangle_count;
     }
     return n;

@@ -378,7 +378,7 @@ static void occluders(stin_context *ctx, const float light[4], stin__pass_state 
         /* not an occluder here, it still casts: no adjacency, or displaced
          * (its bounds, and so its depth range, are the flat mesh's) */
         if (!m->adj_vao || stin__displace_active(ctx, &d->material) ||
-            stin__translucent_skips(ctx, d))
+            !d->shadow_caster)
             continue; /* (a transparent caster its map or the threshold decides) */
         draw_depths(p, ctx, d, &nearest, &deepest);
         if (!(nearest > p->front))

@@ -253,7 +253,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         float center[3], radius;
         stin__stencil_face back, front;
         int zfail;
-        if (stin__translucent_skips(ctx, d))
+        if (!d->shadow_caster)
             continue; /* a transparent caster: its map or the threshold decides */
         caster_bounds(ctx, d, center, &radius);
         /* z-pass counts a volume entered through its cap only where the
