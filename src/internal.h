@@ -12,6 +12,7 @@
 #include "select/technique.h"
 #include "assets/mesh_store.h"
 #include "render/path.h"
+#include "render/screen_quad.h"
 #include "gl/pass_state.h"
 #include "shadow/shadow.h"
 #include "surface/surface.h"

@@ -284,8 +284,6 @@ void stin__vdsm_cull_release(stin_context *ctx);
 int stin__vdsm_cull_on(stin_context *ctx);
 int stin__vdsm_cull_pass(stin_context *ctx, const float light[4]);
 void stin__vdsm_cull_draw(stin_context *ctx);
-/* A full-viewport quad through the bound program (shadow/vdsm.c). */
-void stin__vdsm_screen_quad(stin_context *ctx);
 /* 1 when EP may drop a draw's light-facing triangles (shadow/vdsm.c). */
 int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d);
 

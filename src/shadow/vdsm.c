@@ -224,20 +224,6 @@ static void light_point(const stin_light_desc *l, float out[4])
     out[3] = l->type == STIN_LIGHT_DIRECTIONAL ? 0.0f : 1.0f;
 }
 
-/* A full-viewport quad through the bound program (the GL4 streaming arrays). */
-void stin__vdsm_screen_quad(stin_context *ctx)
-{
-    static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
-                                      -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
-    GL(ctx, BindVertexArray)(ctx->volume_vao);
-    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
-    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)sizeof quad, quad, GL_STREAM_DRAW);
-    GL(ctx, DrawArrays)(GL_TRIANGLES, 0, 6);
-    GL(ctx, BindVertexArray)(0);
-    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
-    ctx->bound_mesh = 0xffffffffu;
-}
-
 /* EP may drop a draw's light-facing triangles where the step is on, the
  * mesh is closed (an open one's back may be missing) and its material is
  * not two-sided (the eye may see a closed mesh from inside). */
@@ -381,7 +367,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         GL(ctx, Uniform1i)(v->face_position, 0);
         GL(ctx, Uniform1i)(v->face_normal, 1);
         GL(ctx, Uniform4fv)(v->face_light, 1, light);
-        stin__vdsm_screen_quad(ctx);
+        stin__screen_quad(ctx);
         ctx->stats.passes++;
     }
     polygons(ctx, light);
