@@ -87,6 +87,13 @@ struct stin_context {
     stin__program programs[STIN__PROG_COUNT];
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
+    struct {                  /* the displacement choice as the layers below render
+                               * read it (stin__displace_hand_down) */
+        int displace;         /* vertex stages splice displace.glsl, not
+                               * displace_none.glsl (gl/shader.c), and height maps
+                               * get a mip chain for it (assets/texture.c) */
+        int tessellate;       /* programs asked to tessellate are (gl/shader.c) */
+    } vertex_chunk;
     int lights_per_pass;
 
     /* shadow technique modules: each owns its part */

@@ -24,6 +24,20 @@ int stin__displace_tessellated(const stin_context *ctx)
     return ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique == STIN_TECH_DISPLACEMENT_TESS;
 }
 
+/* gl/ and assets/ sit below render and may not call up to ask: they read
+ * the copy in ctx->vertex_chunk, kept equal to the choice here. */
+void stin__displace_hand_down(stin_context *ctx)
+{
+    ctx->vertex_chunk.displace = stin__displace_built(ctx);
+    ctx->vertex_chunk.tessellate = stin__displace_tessellated(ctx);
+}
+
+void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why)
+{
+    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, to, why);
+    stin__displace_hand_down(ctx);
+}
+
 /* 1 when a draw of the frame is displaced. */
 static int frame_displaces(const stin_context *ctx)
 {
@@ -86,9 +100,10 @@ void stin__displace_init(stin_context *ctx)
     ctx->displace.logged_count = 0;
     if (stin__displace_built(ctx) &&
         ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME)
-        stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_OFF,
-                     "shadows fell back to volume, whose silhouettes are the undisplaced "
-                     "mesh's: displaced draws would cast the flat mesh's shadow");
+        stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_OFF,
+                              "shadows fell back to volume, whose silhouettes are the "
+                              "undisplaced mesh's: displaced draws would cast the flat "
+                              "mesh's shadow");
 }
 
 int stin__displace_active(const stin_context *ctx, const stin_material *m)

@@ -81,6 +81,14 @@ void stin__surf_unbind(stin_context *ctx);
 int stin__displace_built(const stin_context *ctx);
 /* 1 when they are also tessellated ("displace-tess"). */
 int stin__displace_tessellated(const stin_context *ctx);
+/* Hands the two facts above to the layers below, which may not ask:
+ * gl/shader.c's chunk and tessellation, assets/texture.c's height-map mip
+ * chain (ctx->vertex_chunk). Called once the displacement choice is made
+ * (frame/context.c) and by stin__displace_demote when it changes. */
+void stin__displace_hand_down(stin_context *ctx);
+/* Displacement steps down to `to` (logged, as stin__demote) and the layers
+ * below are told. */
+void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why);
 /* Around a frame (frame/state.c): the camera's tessellation scale, and the
  * caller's GL_PATCH_VERTICES saved, set to 3, and given back. */
 void stin__displace_frame_begin(stin_context *ctx);
