@@ -12,6 +12,7 @@
 #include "select/technique.h"
 #include "assets/mesh_store.h"
 #include "render/path.h"
+#include "render/displace_chunk.h"
 #include "render/screen_quad.h"
 #include "gl/pass_state.h"
 #include "shadow/shadow.h"
@@ -133,7 +134,8 @@ struct stin_context {
         stin__program lit[STIN__SURF_COUNT];
         int active;           /* they are in ctx->programs and glsl_surface.lit now */
     } glsl_tess;
-    struct {                  /* displacement (surface/displace.c) */
+    struct {                  /* displacement (surface/displace.c,
+                               * render/displace_chunk.c) */
         uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
         uint32_t logged_count;
         float tess[4];        /* the frame's u_tess (gl4/tess.tesc); [0] and [3] serve
