@@ -45,8 +45,8 @@ void stin__displace_frame_begin(stin_context *ctx)
         return;
     /* only frames with displaced draws pay for tessellation stages */
     stin__glsl_tessellate(ctx, 1);
-    if (ctx->shadow == &stin__shadow_vdsm)
-        stin__vdsm_tessellate(ctx, 1);
+    if (ctx->shadow->tessellate)
+        ctx->shadow->tessellate(ctx, 1);
     ctx->displace.tessellating = 1;
     GL(ctx, GetIntegerv)(GL_PATCH_VERTICES, &ctx->displace.caller_patch_vertices);
     GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, 3);
@@ -57,7 +57,8 @@ void stin__displace_frame_end(stin_context *ctx)
     if (!ctx->displace.tessellating)
         return;
     stin__glsl_tessellate(ctx, 0);
-    stin__vdsm_tessellate(ctx, 0);
+    if (ctx->shadow->tessellate)
+        ctx->shadow->tessellate(ctx, 0);
     ctx->displace.tessellating = 0;
     if (ctx->displace.caller_patch_vertices > 0)
         GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, ctx->displace.caller_patch_vertices);
