@@ -12,6 +12,8 @@
 #include "select/technique.h"
 #include "assets/mesh_store.h"
 #include "render/path.h"
+#include "render/displace_chunk.h"
+#include "render/screen_quad.h"
 #include "gl/pass_state.h"
 #include "shadow/shadow.h"
 #include "surface/surface.h"
@@ -86,6 +88,13 @@ struct stin_context {
     stin__program programs[STIN__PROG_COUNT];
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
+    struct {                  /* the displacement choice as the layers below render
+                               * read it (stin__displace_hand_down) */
+        int displace;         /* vertex stages splice displace.glsl, not
+                               * displace_none.glsl (gl/shader.c), and height maps
+                               * get a mip chain for it (assets/texture.c) */
+        int tessellate;       /* programs asked to tessellate are (gl/shader.c) */
+    } vertex_chunk;
     int lights_per_pass;
 
     /* shadow technique modules: each owns its part */
@@ -125,7 +134,8 @@ struct stin_context {
         stin__program lit[STIN__SURF_COUNT];
         int active;           /* they are in ctx->programs and glsl_surface.lit now */
     } glsl_tess;
-    struct {                  /* displacement (surface/displace.c) */
+    struct {                  /* displacement (surface/displace.c,
+                               * render/displace_chunk.c) */
         uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
         uint32_t logged_count;
         float tess[4];        /* the frame's u_tess (gl4/tess.tesc); [0] and [3] serve

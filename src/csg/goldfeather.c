@@ -164,7 +164,7 @@ static void write_depth_core(stin_context *ctx, const resolve *r)
     origin[1] = (float)r->y;
     origin[2] = origin[3] = 0.0f;
     GL(ctx, Uniform4fv)(c->u_origin, 1, origin);
-    stin__vdsm_screen_quad(ctx);
+    stin__screen_quad(ctx);
 }
 
 /* The result into the depth buffer at the viewport's corner: with no

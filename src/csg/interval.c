@@ -383,7 +383,7 @@ static void walk(stin_context *ctx, stin__csg_pixels *r, const stin__csg_product
     }
     GL(ctx, Uniform4iv)(s->walk_counts, 1, counts);
     GL(ctx, Uniform2uiv)(s->walk_terms, (GLsizei)p->term_count, terms);
-    stin__vdsm_screen_quad(ctx);
+    stin__screen_quad(ctx);
     ctx->stats.passes++;
     GL(ctx, ReadPixels)(r->x, r->y, r->w, r->h, GL_RED, GL_UNSIGNED_BYTE, r->stencil);
     for (i = 0; i < 2; i++)

@@ -210,7 +210,7 @@ static void merge_quad(stin_context *ctx, const stin__csg_select *select)
         stin__bind_unit(ctx, 1, GL_TEXTURE_2D, select->texture);
         GL(ctx, Uniform1i)(m->u_select, 1);
     }
-    stin__peel_screen_quad(ctx);
+    stin__screen_quad(ctx);
     if (select)
         stin__bind_unit(ctx, 1, GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
@@ -225,7 +225,7 @@ static void kill_quad(stin_context *ctx, stin__pass_state *ps)
     stin__pass_apply(ctx, ps);
     GL(ctx, UseProgram)(ctx->csg.merge.kill_prog);
     ctx->glsl_surface.current = NULL;
-    stin__peel_screen_quad(ctx);
+    stin__screen_quad(ctx);
 }
 
 static void resume(stin_context *ctx, const stin__path *path)

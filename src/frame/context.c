@@ -227,6 +227,7 @@ static stin_result init_lighting(stin_context *ctx)
             return r;
         }
         ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
+        stin__displace_hand_down(ctx); /* the choice may have stepped down too */
     }
 }
 
@@ -394,6 +395,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         return r;
     }
     ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
+    stin__displace_hand_down(ctx); /* before the first program is built */
     r = init_lighting(ctx);
     if (r == STIN_OK)
         r = init_shadows(ctx);

@@ -132,7 +132,7 @@ static const char *const *vertex_chunks(const stin_context *ctx, const char *ver
     if (vert[2] == '4')
         list[n++] = tess ? "gl4/tess_eval.glsl" : "gl4/vertex_attributes.glsl";
     stin__formatf(name, 40, "gl2/%s",
-                  stin__displace_built(ctx) ? "displace.glsl" : "displace_none.glsl");
+                  ctx->vertex_chunk.displace ? "displace.glsl" : "displace_none.glsl");
     name[2] = vert[2]; /* the vertex shader's directory: gl2/ or gl4/ */
     list[n++] = name;
     list[n] = NULL;
@@ -180,7 +180,7 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     GLint ok = 0;
     char log[1024], vname[40];
     const char *vlist[3], *last;
-    int i, tess = src->tessellate && stin__displace_tessellated(ctx), ok_so_far;
+    int i, tess = src->tessellate && ctx->vertex_chunk.tessellate, ok_so_far;
     if (tess) { /* the program's vertex shader displaces the tessellated points */
         stages[0] = compile(ctx, GL_VERTEX_SHADER, "gl4/tess.vert", NULL, NULL, msg, size);
         if (stages[0])

@@ -133,7 +133,7 @@ void stin__outline_stage(stin_context *ctx, const stin__path *path)
     GL(ctx, Uniform4fv)(o->u_texel, 1, texel);
     GL(ctx, Uniform4fv)(o->u_params, 1, params);
     GL(ctx, Uniform4fv)(o->u_color, 1, color);
-    stin__peel_screen_quad(ctx);
+    stin__screen_quad(ctx);
     ctx->stats.passes++;
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);

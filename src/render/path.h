@@ -24,7 +24,7 @@ typedef struct stin__draw {
 enum { STIN__CSG_FRONT = 1, STIN__CSG_BACK = 2, STIN__CSG_CAP = 3 };
 
 /* The displacement chunk's uniforms in a program that draws meshes
- * (surface/displace.c); camera: the program draws through the frame's
+ * (render/displace_chunk.c); camera: the program draws through the frame's
  * camera (the guard band applies), not from a light. */
 typedef struct stin__displace_locs {
     GLint map, params, size, normal, clip, lod, eye, tess, tess_eye;

@@ -188,7 +188,7 @@ static void build_tessellated(stin_context *ctx, const char *dir)
     delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
     delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
     stin__formatf(why, sizeof why, "its tessellated programs failed to build (%s)", msg);
-    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_VTF, why);
+    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
 }
 
 static void swap_programs(stin__program *a, stin__program *b, int n)

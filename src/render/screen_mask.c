@@ -125,12 +125,12 @@ void stin__mask_write(stin_context *ctx, const stin__path *path, int channel)
 {
     /* on the far plane, depth GREATER: only where a surface is (the
      * visibility export hands out 0 elsewhere) */
-    static const float quad[6 * 4] = {-1, -1, 1, 1, 1, -1, 1, 1, 1, 1, 1, 1,
-                                      -1, -1, 1, 1, 1, 1, 1, 1, -1, 1, 1, 1};
     static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     static const float one[4] = {1, 1, 1, 1};
     const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
     stin__pass_state ps = *stin__pass_current(ctx);
+    float quad[6 * 4];
+    stin__screen_quad_vertices(1.0f, quad);
     ps.depth_test = 1;
     ps.depth_func = GL_GREATER;
     ps.depth_write = 0;

@@ -193,4 +193,5 @@ static void pcf_light(stin_context *ctx, const stin__path *path, uint32_t li, st
 const stin__shadow_technique stin__shadow_map_pcf = {
     STIN_TECH_SHADOWS_MAP_PCF, "shadow_pcf.glsl", pcf_init, pcf_release, NULL, pcf_prepass,
     pcf_light, pcf_uniforms, NULL, 0,
+    NULL,
 };

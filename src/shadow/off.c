@@ -4,6 +4,7 @@
 
 const stin__shadow_technique stin__shadow_off = {
     STIN_TECH_SHADOWS_OFF, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 0,
+    NULL,
 };
 
 const stin__shadow_technique *stin__shadow_technique_of(stin_technique t)

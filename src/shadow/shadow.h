@@ -52,6 +52,10 @@ typedef struct stin__shadow_technique {
      * which stin__mask_begin draws there once a frame (a geometry pass);
      * 0: it brings its own depth (vdsm: the position buffer's). */
     int mask_depth;
+    /* "displace-tess" (surface/displace.c): on for a frame with displaced
+     * draws, its own mesh-drawing programs swapped for tessellated ones;
+     * off after it. NULL: it has none. */
+    void (*tessellate)(stin_context *ctx, int on);
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
@@ -252,7 +256,7 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
 void stin__vdsm_receivers_first_level(stin_context *ctx);
 /* "displace-tess": swaps the tessellated position-buffer and shadow-polygon
  * programs in (on) or out, their uniforms located again; nothing without
- * them (shadow/vdsm.c). */
+ * them (shadow/vdsm.c: stin__shadow_vdsm's tessellate). */
 void stin__vdsm_tessellate(stin_context *ctx, int on);
 /* Shared by the vdsm files (shadow/vdsm.c): a program of embedded shaders
  * (geom may be NULL; out1 names a second output after o_position;
@@ -284,8 +288,6 @@ void stin__vdsm_cull_release(stin_context *ctx);
 int stin__vdsm_cull_on(stin_context *ctx);
 int stin__vdsm_cull_pass(stin_context *ctx, const float light[4]);
 void stin__vdsm_cull_draw(stin_context *ctx);
-/* A full-viewport quad through the bound program (shadow/vdsm.c). */
-void stin__vdsm_screen_quad(stin_context *ctx);
 /* 1 when EP may drop a draw's light-facing triangles (shadow/vdsm.c). */
 int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d);
 

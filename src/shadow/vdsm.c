@@ -149,7 +149,7 @@ static void build_tessellated(stin_context *ctx)
         return;
     stin__vdsm_delete_programs(ctx, &v->position_tess, &v->polygon_tess, &none);
     stin__formatf(why, sizeof why, "vdsm's tessellated programs failed to build (%s)", msg);
-    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_VTF, why);
+    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
 }
 
 void stin__vdsm_tessellate(stin_context *ctx, int on)
@@ -222,20 +222,6 @@ static void light_point(const stin_light_desc *l, float out[4])
     for (k = 0; k < 3; k++)
         out[k] = l->type == STIN_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k];
     out[3] = l->type == STIN_LIGHT_DIRECTIONAL ? 0.0f : 1.0f;
-}
-
-/* A full-viewport quad through the bound program (the GL4 streaming arrays). */
-void stin__vdsm_screen_quad(stin_context *ctx)
-{
-    static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
-                                      -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
-    GL(ctx, BindVertexArray)(ctx->volume_vao);
-    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
-    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)sizeof quad, quad, GL_STREAM_DRAW);
-    GL(ctx, DrawArrays)(GL_TRIANGLES, 0, 6);
-    GL(ctx, BindVertexArray)(0);
-    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
-    ctx->bound_mesh = 0xffffffffu;
 }
 
 /* EP may drop a draw's light-facing triangles where the step is on, the
@@ -381,7 +367,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         GL(ctx, Uniform1i)(v->face_position, 0);
         GL(ctx, Uniform1i)(v->face_normal, 1);
         GL(ctx, Uniform4fv)(v->face_light, 1, light);
-        stin__vdsm_screen_quad(ctx);
+        stin__screen_quad(ctx);
         ctx->stats.passes++;
     }
     polygons(ctx, light);
@@ -408,4 +394,5 @@ const stin__shadow_technique stin__shadow_vdsm = {
     NULL,                   vdsm_prepass,       vdsm_light, stin__mask_uniforms,
     vdsm_mask,
     0, /* the polygons test the position buffer's depth: the mask's is never read */
+    stin__vdsm_tessellate,
 };

@@ -215,7 +215,7 @@ static void clear_lists(stin_context *ctx)
     GL(ctx, UseProgram)(c->walk_prog);
     GL(ctx, Uniform4iv)(c->w_frame, 1, ctx->frame.viewport);
     GL(ctx, Uniform1i)(c->w_clear, 1);
-    stin__vdsm_screen_quad(ctx);
+    stin__screen_quad(ctx);
     GL(ctx, MemoryBarrier)(GL_SHADER_STORAGE_BARRIER_BIT);
     ctx->stats.passes++;
 }
@@ -320,7 +320,7 @@ static void walk(stin_context *ctx, const stin__csg_product *p, const float ligh
     GL(ctx, Uniform4iv)(c->w_frame, 1, ctx->frame.viewport);
     GL(ctx, Uniform1i)(c->w_clear, 0);
     colour(ctx, channel);
-    stin__vdsm_screen_quad(ctx);
+    stin__screen_quad(ctx);
     GL(ctx, MemoryBarrier)(GL_SHADER_STORAGE_BARRIER_BIT);
     ctx->stats.passes++;
 }

@@ -459,7 +459,7 @@ static void reduce(stin_context *ctx)
             GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, k - 1);
             GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, k - 1);
         }
-        stin__vdsm_screen_quad(ctx);
+        stin__screen_quad(ctx);
     }
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, p->levels);
     GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);

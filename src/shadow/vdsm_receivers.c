@@ -109,7 +109,7 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
     GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, p->deepest);
     /* the last level 0's resets land before this pass's maxima */
     GL(ctx, MemoryBarrier)(GL_SHADER_STORAGE_BARRIER_BIT);
-    stin__vdsm_screen_quad(ctx);
+    stin__screen_quad(ctx);
     GL(ctx, MemoryBarrier)(GL_SHADER_STORAGE_BARRIER_BIT);
     GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, p->fbo);
@@ -129,6 +129,6 @@ void stin__vdsm_receivers_first_level(stin_context *ctx)
     GL(ctx, Uniform1i)(p->f_size, p->size);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, p->accum);
     GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, p->deepest);
-    stin__vdsm_screen_quad(ctx);
+    stin__screen_quad(ctx);
     GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, 0);
 }

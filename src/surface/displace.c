@@ -5,24 +5,11 @@
  * normal passes, shadow-map depth and vdsm's buffers all see one displaced
  * surface; "displace-tess" (GL4 with tessellation) runs the same vertex
  * shaders as evaluation stages behind gl4/tess.tesc's screen-space edge
- * levels. Here: the per-frame tessellation scale, the per-draw uniforms,
- * the height map's vertex unit, the step down beside stencil volumes and
- * the coarse-mesh log. */
+ * levels. Here: the per-frame tessellation scale, the tessellated programs
+ * swapped in for frames with displaced draws, and the step down beside
+ * stencil volumes; the chunk every program carries is
+ * render/displace_chunk.c's. */
 #include "internal.h"
-
-/* Average edge of a mesh in texels of a map above which VTF shows facets. */
-#define COARSE_TEXELS 4.0f
-
-int stin__displace_built(const stin_context *ctx)
-{
-    stin_technique t = ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique;
-    return t == STIN_TECH_DISPLACEMENT_VTF || t == STIN_TECH_DISPLACEMENT_TESS;
-}
-
-int stin__displace_tessellated(const stin_context *ctx)
-{
-    return ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique == STIN_TECH_DISPLACEMENT_TESS;
-}
 
 /* 1 when a draw of the frame is displaced. */
 static int frame_displaces(const stin_context *ctx)
@@ -58,8 +45,8 @@ void stin__displace_frame_begin(stin_context *ctx)
         return;
     /* only frames with displaced draws pay for tessellation stages */
     stin__glsl_tessellate(ctx, 1);
-    if (ctx->shadow == &stin__shadow_vdsm)
-        stin__vdsm_tessellate(ctx, 1);
+    if (ctx->shadow->tessellate)
+        ctx->shadow->tessellate(ctx, 1);
     ctx->displace.tessellating = 1;
     GL(ctx, GetIntegerv)(GL_PATCH_VERTICES, &ctx->displace.caller_patch_vertices);
     GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, 3);
@@ -70,15 +57,11 @@ void stin__displace_frame_end(stin_context *ctx)
     if (!ctx->displace.tessellating)
         return;
     stin__glsl_tessellate(ctx, 0);
-    stin__vdsm_tessellate(ctx, 0);
+    if (ctx->shadow->tessellate)
+        ctx->shadow->tessellate(ctx, 0);
     ctx->displace.tessellating = 0;
     if (ctx->displace.caller_patch_vertices > 0)
         GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, ctx->displace.caller_patch_vertices);
-}
-
-GLenum stin__displace_primitive(const stin__displace_locs *l)
-{
-    return l && l->patches ? GL_PATCHES : GL_TRIANGLES;
 }
 
 void stin__displace_init(stin_context *ctx)
@@ -86,114 +69,9 @@ void stin__displace_init(stin_context *ctx)
     ctx->displace.logged_count = 0;
     if (stin__displace_built(ctx) &&
         ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME)
-        stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_OFF,
-                     "shadows fell back to volume, whose silhouettes are the undisplaced "
-                     "mesh's: displaced draws would cast the flat mesh's shadow");
+        stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_OFF,
+                              "shadows fell back to volume, whose silhouettes are the "
+                              "undisplaced mesh's: displaced draws would cast the flat "
+                              "mesh's shadow");
 }
 
-int stin__displace_active(const stin_context *ctx, const stin_material *m)
-{
-    return m->displace && stin__displace_built(ctx) && stin__texture_lookup(ctx, m->height_map);
-}
-
-void stin__displace_locate(stin_context *ctx, GLuint program, int camera, stin__displace_locs *out)
-{
-    out->map = GL(ctx, GetUniformLocation)(program, "u_displace_map");
-    out->params = GL(ctx, GetUniformLocation)(program, "u_displace");
-    out->size = GL(ctx, GetUniformLocation)(program, "u_displace_size");
-    out->normal = GL(ctx, GetUniformLocation)(program, "u_displace_normal");
-    out->clip = GL(ctx, GetUniformLocation)(program, "u_displace_clip");
-    out->lod = GL(ctx, GetUniformLocation)(program, "u_displace_lod");
-    out->eye = GL(ctx, GetUniformLocation)(program, "u_displace_eye");
-    /* only gl4/tess.tesc declares these: the program was built tessellated */
-    out->tess = GL(ctx, GetUniformLocation)(program, "u_tess");
-    out->tess_eye = GL(ctx, GetUniformLocation)(program, "u_tess_eye");
-    out->patches = stin__displace_tessellated(ctx) && out->tess >= 0;
-    out->camera = camera;
-}
-
-/* Once per (mesh, height map): a mesh whose edges span many texels of the
- * map shows its facets, not the relief. */
-static void log_coarse(stin_context *ctx, const stin__draw *d, const stin__texture_slot *t)
-{
-    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    float texels = m->uv_edge * (float)(t->width > t->height ? t->width : t->height);
-    uint32_t key = (d->mesh_slot * 2654435761u) ^ t->name, i;
-    if (texels <= COARSE_TEXELS)
-        return;
-    for (i = 0; i < ctx->displace.logged_count; i++)
-        if (ctx->displace.logged[i] == key)
-            return;
-    if (ctx->displace.logged_count == sizeof ctx->displace.logged / sizeof ctx->displace.logged[0])
-        return;
-    ctx->displace.logged[ctx->displace.logged_count++] = key;
-    stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-              "displace: a mesh of %u vertices is coarse for its %ux%u height map (edges span "
-              "%d texels on average): the relief shows only at the vertices (subdivide it: "
-              "stin_mesh_desc.subdivide)", m->vertex_count, t->width, t->height, (int)texels);
-}
-
-/* The draw's mip parameters (displace.glsl's u_displace_lod): texels of the
- * map one pixel spans at eye distance 1 - the mesh's texels per unit (its
- * mean uv edge over its mean edge, times the map's size, over the
- * transform's mean axis scale) over the pixels a unit spans there - and the
- * highest level; level 0 alone without the chain or with NO_MIP. */
-static void lod_params(const stin_context *ctx, const stin__draw *d,
-                       const stin__texture_slot *t, float out[4])
-{
-    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    const float *x = d->transform;
-    float scale = (stin__sqrtf(x[0] * x[0] + x[1] * x[1] + x[2] * x[2]) +
-                   stin__sqrtf(x[4] * x[4] + x[5] * x[5] + x[6] * x[6]) +
-                   stin__sqrtf(x[8] * x[8] + x[9] * x[9] + x[10] * x[10])) / 3.0f;
-    float size = (float)(t->width > t->height ? t->width : t->height);
-    float per_unit = m->edge > 0.0f && scale > 0.0f ? size * m->uv_edge / (m->edge * scale) : 0.0f;
-    int on = t->lod_name && !(ctx->desc.debug_flags & STIN_DEBUG_DISPLACE_NO_MIP) &&
-             ctx->displace.tess[0] > 0.0f && per_unit > 0.0f;
-    out[0] = on ? per_unit / ctx->displace.tess[0] : 0.0f;
-    out[1] = on ? (float)t->lod_top : 0.0f;
-    out[2] = ctx->displace.tess[3];
-    out[3] = 0.0f;
-}
-
-void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const stin__draw *d)
-{
-    const stin__texture_slot *t;
-    float p[4] = {0.0f, 0.0f, 0.0f, -1.0f}, size[4], nm[9], lod[4];
-    if (!l || l->params < 0)
-        return;
-    t = d && stin__displace_active(ctx, &d->material)
-            ? stin__texture_lookup(ctx, d->material.height_map)
-            : NULL;
-    if (!t) {
-        GL(ctx, Uniform4fv)(l->params, 1, p);
-        return;
-    }
-    if (!l->patches) /* tessellation adds the vertices */
-        log_coarse(ctx, d, t);
-    p[0] = d->material.height_scale;
-    p[1] = d->material.height_bias;
-    p[2] = 1.0f;
-    if (l->camera && !(ctx->desc.debug_flags & STIN_DEBUG_DISPLACE_NO_GUARD))
-        p[3] = ctx->desc.displace_guard_band;
-    size[0] = (float)t->width;
-    size[1] = (float)t->height;
-    size[2] = ctx->desc.debug_flags & STIN_DEBUG_DISPLACE_MANUAL_BILINEAR ? 1.0f : 0.0f;
-    size[3] = 0.0f;
-    stin__mat3_normal(nm, d->transform);
-    GL(ctx, Uniform4fv)(l->params, 1, p);
-    GL(ctx, Uniform4fv)(l->size, 1, size);
-    GL(ctx, UniformMatrix3fv)(l->normal, 1, GL_FALSE, nm);
-    if (l->clip >= 0)
-        GL(ctx, UniformMatrix4fv)(l->clip, 1, GL_FALSE, ctx->view_proj);
-    lod_params(ctx, d, t, lod);
-    GL(ctx, Uniform4fv)(l->lod, 1, lod);
-    GL(ctx, Uniform3fv)(l->eye, 1, ctx->displace.tess_eye);
-    if (l->patches) {
-        GL(ctx, Uniform4fv)(l->tess, 1, ctx->displace.tess);
-        GL(ctx, Uniform3fv)(l->tess_eye, 1, ctx->displace.tess_eye);
-    }
-    GL(ctx, Uniform1i)(l->map, ctx->sel.displace_unit);
-    stin__bind_unit(ctx, ctx->sel.displace_unit, GL_TEXTURE_2D, lod[1] > 0.0f ? t->lod_name : t->name);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
-}

@@ -73,30 +73,14 @@ void stin__surf_material(stin_context *ctx, const stin__program *p, const stin_m
 void stin__surf_unbind(stin_context *ctx);
 
 /* ---- displacement: "displace" by vertex texture fetch (surface/displace.c) ----
- * Every vertex shader that draws meshes has a "// @chunks" line where
- * gl/shader.c splices displace.glsl (the context's displacement is displace)
- * or displace_none.glsl; per draw the chunk's uniforms say whether and how
- * far this draw's vertices move. */
-/* 1 when programs are built with the displacement chunk. */
-int stin__displace_built(const stin_context *ctx);
-/* 1 when they are also tessellated ("displace-tess"). */
-int stin__displace_tessellated(const stin_context *ctx);
+ * The chunk every mesh-drawing program carries is render/displace_chunk.h's;
+ * here the feature's frame set-up and its step down. */
 /* Around a frame (frame/state.c): the camera's tessellation scale, and the
  * caller's GL_PATCH_VERTICES saved, set to 3, and given back. */
 void stin__displace_frame_begin(stin_context *ctx);
 void stin__displace_frame_end(stin_context *ctx);
-/* What a program's mesh draws are: GL_PATCHES (tessellated) or GL_TRIANGLES. */
-GLenum stin__displace_primitive(const stin__displace_locs *l);
 /* After the shadow module's set-up: volumes cannot shadow displaced
  * geometry, so displacement steps down beside them (logged). */
 void stin__displace_init(stin_context *ctx);
-/* 1 when this material's draws are displaced. */
-int stin__displace_active(const stin_context *ctx, const stin_material *m);
-void stin__displace_locate(stin_context *ctx, GLuint program, int camera,
-                           stin__displace_locs *out);
-/* Per draw, before its DrawElements through a program with the chunk:
- * on or off, the height map on its vertex unit, the scale and bias (d
- * NULL: off, for geometry that is not a draw's). */
-void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const stin__draw *d);
 
 #endif

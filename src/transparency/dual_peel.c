@@ -292,7 +292,7 @@ void stin__dual_layer_end(stin_context *ctx)
     ps.depth_test = 0;
     stin__pass_apply(ctx, &ps);
     composite_program(ctx, front ? 0 : 1, pair[*result], 0, 0);
-    stin__peel_screen_quad(ctx);
+    stin__screen_quad(ctx);
     composite_done(ctx);
     *result = 1 - *result;
     ctx->stats.passes++;
@@ -304,7 +304,7 @@ void stin__dual_end(stin_context *ctx)
     stin__dual_state *d = &s->d;
     stin__peel_over_frame(ctx); /* depth-peel's rule */
     composite_program(ctx, 2, d->front[d->front_result], s->first, d->back[d->back_result]);
-    stin__peel_screen_quad(ctx);
+    stin__screen_quad(ctx);
     composite_done(ctx);
     ctx->stats.passes++;
     stin__gl_check_errors(ctx, "dual-peel");

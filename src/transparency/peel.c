@@ -353,27 +353,6 @@ void stin__peel_lights_target(stin_context *ctx)
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
 }
 
-/* A full-viewport quad through the composite program (bound). */
-void stin__peel_screen_quad(stin_context *ctx)
-{
-    static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
-                                      -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
-    int i;
-    if (ctx->volume_vao) { /* GL4: the streamed buffer vdsm's quad uses */
-        stin__vdsm_screen_quad(ctx);
-        return;
-    }
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO))
-        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
-    for (i = 1; i < 4; i++) /* the mesh arrays the GLSL path keeps on */
-        GL(ctx, DisableVertexAttribArray)((GLuint)i);
-    GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, quad);
-    GL(ctx, DrawArrays)(GL_TRIANGLES, 0, 6);
-    for (i = 1; i < 4; i++)
-        GL(ctx, EnableVertexAttribArray)((GLuint)i);
-    ctx->bound_mesh = 0xffffffffu;
-}
-
 /* The composite program with its textures on units 0-3 and mode 0 (a layer
  * under the composite) or 1 (the composite over the frame). */
 static void composite_program(stin_context *ctx, int mode)
@@ -423,7 +402,7 @@ void stin__peel_layer_end(stin_context *ctx)
     ps.depth_test = 0;
     stin__pass_apply(ctx, &ps);
     composite_program(ctx, 0);
-    stin__peel_screen_quad(ctx);
+    stin__screen_quad(ctx);
     stin__peel_composite_done(ctx);
     s->result = 1 - s->result;
     ctx->stats.passes++;
@@ -462,7 +441,7 @@ void stin__peel_end(stin_context *ctx)
     }
     stin__peel_over_frame(ctx);
     composite_program(ctx, 1);
-    stin__peel_screen_quad(ctx);
+    stin__screen_quad(ctx);
     stin__peel_composite_done(ctx);
     ctx->stats.passes++;
     stin__gl_check_errors(ctx, "depth-peel");

@@ -101,7 +101,6 @@ void stin__peel_attach(struct stin_context *ctx, GLuint color, GLuint depth);
 void stin__peel_clear(struct stin_context *ctx, float r, float g, float b, float a, int depth);
 /* The last quad's target and state, shared by both peels (transparency/peel.c). */
 void stin__peel_over_frame(struct stin_context *ctx);
-void stin__peel_screen_quad(struct stin_context *ctx);
 void stin__peel_composite_done(struct stin_context *ctx);
 /* The layer's lights texture as the peel framebuffer's colour, cleared. */
 void stin__peel_lights_target(struct stin_context *ctx);

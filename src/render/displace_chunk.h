@@ -1,0 +1,37 @@
+/* SPDX-License-Identifier: MIT */
+/* The displacement chunk every mesh-drawing program carries
+ * (render/displace_chunk.c). */
+#ifndef STIN_DISPLACE_CHUNK_H
+#define STIN_DISPLACE_CHUNK_H
+
+#include "stin/stin.h"
+#include "render/path.h"
+
+/* Every vertex shader that draws meshes has a "// @chunks" line where
+ * gl/shader.c splices displace.glsl (the context's displacement is displace
+ * or displace-tess) or displace_none.glsl; per draw the chunk's uniforms say
+ * whether and how far this draw's vertices move. */
+/* 1 when programs are built with the displacement chunk. */
+int stin__displace_built(const stin_context *ctx);
+/* 1 when they are also tessellated ("displace-tess"). */
+int stin__displace_tessellated(const stin_context *ctx);
+/* Hands the two facts above to the layers below render, which may not ask:
+ * gl/shader.c's chunk and tessellation, assets/texture.c's height-map mip
+ * chain (ctx->vertex_chunk). Called once the displacement choice is made
+ * (frame/context.c) and by stin__displace_demote when it changes. */
+void stin__displace_hand_down(stin_context *ctx);
+/* Displacement steps down to `to` (logged, as stin__demote) and the layers
+ * below are told. */
+void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why);
+/* What a program's mesh draws are: GL_PATCHES (tessellated) or GL_TRIANGLES. */
+GLenum stin__displace_primitive(const stin__displace_locs *l);
+/* 1 when this material's draws are displaced. */
+int stin__displace_active(const stin_context *ctx, const stin_material *m);
+void stin__displace_locate(stin_context *ctx, GLuint program, int camera,
+                           stin__displace_locs *out);
+/* Per draw, before its DrawElements through a program with the chunk:
+ * on or off, the height map on its vertex unit, the scale and bias (d
+ * NULL: off, for geometry that is not a draw's). */
+void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const stin__draw *d);
+
+#endif
