@@ -143,6 +143,8 @@ struct stin_context {
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);
+/* The module of a shadows technique, off for anything else (frame/modules.c). */
+const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
 
 /* Texture staging (assets/texture.c): the regions a texture's levels are built in. */
 #define STIN__MAX_TEXELS (1ull << 30) /* 32-bit byte offsets, 4 a texel */

@@ -3,7 +3,8 @@
  * shadow/map_fixed.c, shadow/map_pcf.c, shadow/off.c), each owning its
  * state, and the light cameras the map techniques share
  * (render/light_camera.c). The frame plan (frame/frame.c) calls the hooks; a new
- * technique is a module plus a row in select/technique_table.c. */
+ * technique is a module, a row in select/technique_table.c and its entry in
+ * frame/modules.c. */
 #ifndef STIN_SHADOW_H
 #define STIN_SHADOW_H
 
@@ -56,8 +57,6 @@ typedef struct stin__shadow_technique {
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
     stin__shadow_map_pcf, stin__shadow_off, stin__shadow_vdsm;
-/* The module of a shadows technique (off for anything else). */
-const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
 
 /* ---- module state --------------------------------------------------------- */
 typedef struct stin__volume_state {
