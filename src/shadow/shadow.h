@@ -53,6 +53,12 @@ typedef struct stin__shadow_technique {
      * which stin__mask_begin draws there once a frame (a geometry pass);
      * 0: it brings its own depth (vdsm: the position buffer's). */
     int mask_depth;
+    /* 1 where light() tests light li per fragment of the lit pass itself
+     * (a map), so a draw lit on its own without the frame's depth (sorted
+     * blended draws) is shadowed too; 0 where li's shadows are not such a
+     * test. NULL: no light's are (volumes and masks count or mask against
+     * the nearest opaque surface). */
+    int (*fragment_test)(const stin_context *ctx, uint32_t li);
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,

@@ -408,4 +408,5 @@ const stin__shadow_technique stin__shadow_vdsm = {
     NULL,                   vdsm_prepass,       vdsm_light, stin__mask_uniforms,
     vdsm_mask,
     0, /* the polygons test the position buffer's depth: the mask's is never read */
+    NULL,
 };

@@ -468,4 +468,5 @@ const stin__shadow_technique stin__shadow_volume = {
     volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
     volume_mask,
     1, /* the volumes' stencil counts against the frame's depth */
+    NULL,
 };
