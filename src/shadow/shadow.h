@@ -314,6 +314,9 @@ typedef struct stin__mask_state {
  * (GLSL lighting and a texture unit: the frame's lights). */
 void stin__mask_init(stin_context *ctx);
 void stin__mask_release(stin_context *ctx);
+/* The context can draw masks: framebuffer objects and packed depth-stencil
+ * textures (the visibility export's needs too). */
+int stin__mask_drawable(const stin_context *ctx);
 /* Binds the mask as the target, clearing its colour. With `depth`, the
  * first time in a frame also its depth and stencil, and the frame's depth
  * (draws `which`) is drawn into it; without, the passes bring their own. 0:
