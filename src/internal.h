@@ -79,7 +79,7 @@ struct stin_context {
     struct {                  /* the frame's framebuffer (gl/framebuffer_probe.c) */
         GLuint name;          /* the one probed last (0 = default) */
         int stencil_bits, depth_bits;
-        int shadows_off;      /* the shadows choice cannot run into it (no stencil) */
+        int shadows_off;      /* the shadows choice cannot run into it (frame/target.c) */
         int separate_read;    /* draw and read bindings are separate (GL 3.0, ARB_fbo) */
         int multisampled;     /* it has sample buffers (GL_SAMPLE_BUFFERS, GL 1.3) */
     } target;
@@ -153,6 +153,8 @@ struct stin_context {
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);
+/* The module of a shadows technique, off for anything else (frame/modules.c). */
+const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
 
 /* Texture staging (assets/texture.c): the regions a texture's levels are built in. */
 #define STIN__MAX_TEXELS (1ull << 30) /* 32-bit byte offsets, 4 a texel */
@@ -177,12 +179,14 @@ void stin__caller_state_fixed_end(stin_context *ctx);
 /* The frame's framebuffer (gl/framebuffer_probe.c). target_init, at
  * stin_create after detection: the default framebuffer's bits, and the
  * stencil capability if it or the bound one has a stencil buffer.
- * target_check, at begin and end of a frame: `name` must be a complete
+ * target_probe, at begin and end of a frame: `name` must be a complete
  * framebuffer object (else a logged INVALID_ARGUMENT); reads its bits when
- * it is not the one probed last and decides whether this frame's shadows
- * run (logged when that changes). The caller's binding is kept. */
+ * it is not the one probed last. The caller's binding is kept.
+ * target_check (frame/target.c): the probe, then whether this frame's
+ * shadows run into it (logged when that changes). */
 void stin__framebuffer_bits(const stin__gl *gl, int core, GLuint bound, int *stencil, int *depth);
 void stin__target_init(stin_context *ctx);
+stin_result stin__target_probe(stin_context *ctx, GLuint name, const char *call);
 stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call);
 /* The caller's draw and read framebuffers (contexts with FBOs), to be bound
  * again after a probe or a set-up that binds its own. */

@@ -309,7 +309,7 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->vbo = m->ibo = m->vao = m->adj_ibo = m->adj_vao = 0;
     out->id = stin__handle_issue(&m->handle, slot, ctx->desc.max_meshes, ctx->handle_tag);
     upload(ctx, m);
-    stin__vdsm_mesh_upload(ctx, m);
+    stin__mesh_adjacency_buffer_upload(ctx, m);
     if (m->info.degenerate_dropped)
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_MESH_DEGENERATE,
                   "stin_create_mesh: dropped %u degenerate triangles of %u",
@@ -377,7 +377,7 @@ static void delete_arrays(stin_context *ctx, stin__mesh_slot *m)
 static void release(stin_context *ctx, stin__mesh_slot *m)
 {
     delete_arrays(ctx, m);
-    stin__vdsm_mesh_release(ctx, m);
+    stin__mesh_adjacency_buffer_release(ctx, m);
     stin__range_give(&ctx->vertex_ranges, m->first_vertex);
     stin__range_give(&ctx->triangle_ranges, m->first_triangle);
     stin__handle_release(&m->handle, ctx->desc.max_meshes);

@@ -42,7 +42,7 @@ typedef struct stin__mesh_slot {
     uint32_t first_triangle, triangle_count;
     stin_mesh_info info;
     GLuint vbo, ibo, vao;
-    GLuint adj_ibo, adj_vao;  /* vdsm: GL_TRIANGLES_ADJACENCY indices (0: none) */
+    GLuint adj_ibo, adj_vao;  /* GL_TRIANGLES_ADJACENCY indices (0: none; vdsm, GL4 volumes) */
     float uv_edge;            /* mean uv length of its edges (displacement's coarse log) */
     float edge;               /* mean object-space length of its edges (uv_edge / edge:
                                * displacement's uv per unit, its mip level) */
@@ -111,11 +111,12 @@ void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint
 void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count);
 
-/* A mesh's triangles with their neighbours' far vertices, for vdsm's light
- * pass (shadow/vdsm_adjacency.c): made at mesh creation where vdsm is the
- * shadow technique, deleted with the mesh. */
-void stin__vdsm_mesh_upload(struct stin_context *ctx, stin__mesh_slot *m);
-void stin__vdsm_mesh_release(struct stin_context *ctx, stin__mesh_slot *m);
+/* A mesh's triangles with their neighbours' far vertices (adj_ibo, drawn
+ * through adj_vao), for vdsm's light pass and GL4's volume extrusion
+ * (assets/mesh_adjacency_buffer.c): made at mesh creation where either is
+ * the shadow technique, deleted with the mesh. */
+void stin__mesh_adjacency_buffer_upload(struct stin_context *ctx, stin__mesh_slot *m);
+void stin__mesh_adjacency_buffer_release(struct stin_context *ctx, stin__mesh_slot *m);
 
 /* ---- shadow volumes ----------------------------------------------------- */
 /* clockwise: the triangles are wound clockwise toward their outside (front

@@ -400,9 +400,4 @@ int stin__csg_interval_product(struct stin_context *ctx, const stin__path *path,
 void stin__csg_interval_init(struct stin_context *ctx);
 void stin__csg_interval_release(struct stin_context *ctx);
 
-/* A material checked and its defaults applied (frame/frame.c; stin_draw's rules). */
-stin_result stin__material_prepare(struct stin_context *ctx, const char *call, const char *dropped,
-                                   const stin_material *material, stin_material *out,
-                                   stin_result *r);
-
 #endif

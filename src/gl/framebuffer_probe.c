@@ -1,9 +1,9 @@
 /* SPDX-License-Identifier: MIT */
 /* The framebuffer a frame draws into (desc.framebuffer, 0 = default): that
- * it is a complete framebuffer object, its stencil and depth bits, and
- * whether the context's shadows choice can run into it. Stencil and depth
- * depend on the framebuffer, not the context, so they are read per target:
- * once per name, again when a frame names another one. */
+ * it is a complete framebuffer object, and its stencil and depth bits (the
+ * frame decides from them whether its shadows run, frame/target.c).
+ * Stencil and depth depend on the framebuffer, not the context, so they are
+ * read per target: once per name, again when a frame names another one. */
 #include "internal.h"
 
 #define READ_FRAMEBUFFER 0x8CA8
@@ -106,33 +106,13 @@ void stin__target_init(stin_context *ctx)
         ctx->caps.present |= stencil;
 }
 
-/* Whether the chosen shadows technique runs into the target; says so when
- * the answer changes (a target without a stencil buffer turns volumes off
- * for its frames, and the context's choice stays). */
-static void decide_shadows(stin_context *ctx)
-{
-    stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
-    int off = (stin__technique_needs(t) & STIN_CAP_BIT(STIN_CAP_STENCIL)) &&
-              ctx->target.stencil_bits <= 0;
-    if (off != ctx->target.shadows_off)
-        stin__log(ctx, off ? STIN_LOG_LEVEL_WARNING : STIN_LOG_LEVEL_INFO,
-                  off ? STIN_LOG_FALLBACK : STIN_LOG_TECHNIQUE_SELECTED,
-                  off ? "shadows: %s falls back to off in frames into framebuffer %u: it has "
-                        "no stencil buffer"
-                      : "shadows: %s again in frames into framebuffer %u (%d stencil bits)",
-                  stin_technique_name(t), (unsigned)ctx->target.name, ctx->target.stencil_bits);
-    ctx->target.shadows_off = off;
-}
-
-stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call)
+stin_result stin__target_probe(stin_context *ctx, GLuint name, const char *call)
 {
     GLint saved[2];
     GLenum status = GL_FRAMEBUFFER_COMPLETE;
     int rebind;
-    if (!has_fbo(ctx) || (name == 0 && ctx->target.name == 0)) {
-        decide_shadows(ctx); /* the default framebuffer, probed before */
-        return STIN_OK;
-    }
+    if (!has_fbo(ctx) || (name == 0 && ctx->target.name == 0))
+        return STIN_OK; /* the default framebuffer, probed before */
     if (name && !GL(ctx, IsFramebuffer)(name)) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "%s: framebuffer %u is not a framebuffer object of this context", call,
@@ -155,7 +135,6 @@ stin_result stin__target_check(stin_context *ctx, GLuint name, const char *call)
                   (unsigned)status);
         return STIN_ERROR_INVALID_ARGUMENT;
     }
-    decide_shadows(ctx);
     return STIN_OK;
 }
 

@@ -16,10 +16,10 @@
 /* R, G and B: a fixed-function pass's alpha is its shadow test's (map-combine) */
 #define LIGHTS_PER_TILE 3
 
+/* The map is drawn through the screen mask, so it needs what the mask does. */
 int stin__export_supported(const stin_context *ctx)
 {
-    uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
-    return (ctx->caps.present & need) == need;
+    return stin__mask_drawable(ctx);
 }
 
 void stin__export_release(stin_context *ctx)

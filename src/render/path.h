@@ -130,6 +130,12 @@ void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__di
                                 const stin__draw *d);
 /* The chosen lighting technique's path. */
 const stin__path *stin__path_of(const stin_context *ctx);
+/* A material checked and its defaults applied, into *out (render/material.c;
+ * stin_draw's rules, stin_draw_csg's too); errors are logged as `call`'s,
+ * the item `dropped`, and *r holds the result returned. */
+stin_result stin__material_prepare(stin_context *ctx, const char *call, const char *dropped,
+                                   const stin_material *material, stin_material *out,
+                                   stin_result *r);
 
 /* frag_chunks: NULL or a NULL-terminated list of embedded files spliced in
  * at the fragment shader's "// @chunks" line (its functions). The program

@@ -8,6 +8,12 @@
  * and one texture unit beyond the surface's. */
 #include "internal.h"
 
+int stin__mask_drawable(const stin_context *ctx)
+{
+    uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
+    return (ctx->caps.present & need) == need;
+}
+
 void stin__mask_init(stin_context *ctx)
 {
     uint64_t need = STIN_CAP_BIT(STIN_CAP_GLSL) | STIN_CAP_BIT(STIN_CAP_FBO) |
@@ -16,7 +22,7 @@ void stin__mask_init(stin_context *ctx)
         stin__technique_row_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     stin__memzero(&ctx->mask, sizeof ctx->mask);
     ctx->mask.unit = ctx->sel.shadow_unit;
-    ctx->mask.drawable = stin__export_supported(ctx);
+    ctx->mask.drawable = stin__mask_drawable(ctx);
     if ((ctx->caps.present & need) != need ||
         ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED)
         return;

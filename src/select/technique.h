@@ -18,7 +18,6 @@ typedef struct stin__technique_row {
     uint64_t conflicts;      /* STIN__TECH_BIT()s it cannot be chosen together with */
     uint8_t fragment_units;  /* texture units its draws add (albedo counts to lighting) */
     uint8_t vertex_units;    /* vertex texture units it adds */
-    const struct stin__shadow_technique *shadow; /* shadows: its module */
     /* Texture units it takes only when they are spare and runs without
      * otherwise (volumes: the screen mask that shares lit passes). */
     uint8_t spare_units;

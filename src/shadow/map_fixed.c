@@ -640,5 +640,5 @@ int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li)
 const stin__shadow_technique stin__shadow_map_fixed = {
     STIN_TECH_SHADOWS_MAP_DEPTH, NULL, fixed_init, fixed_release, fixed_prepare, fixed_prepass,
     fixed_light, NULL, NULL, 0,
-    NULL,
+    NULL, stin__map_fixed_maps_light,
 };

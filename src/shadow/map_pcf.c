@@ -190,8 +190,17 @@ static void pcf_light(stin_context *ctx, const stin__path *path, uint32_t li, st
     m->kind = 0;
 }
 
+/* Every light: the lit programs test its map (a point light's faces are
+ * drawn just before its pass). */
+static int pcf_fragment_test(const stin_context *ctx, uint32_t li)
+{
+    (void)ctx;
+    (void)li;
+    return 1;
+}
+
 const stin__shadow_technique stin__shadow_map_pcf = {
     STIN_TECH_SHADOWS_MAP_PCF, "shadow_pcf.glsl", pcf_init, pcf_release, NULL, pcf_prepass,
     pcf_light, pcf_uniforms, NULL, 0,
-    NULL,
+    NULL, pcf_fragment_test,
 };

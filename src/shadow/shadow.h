@@ -3,7 +3,8 @@
  * shadow/map_fixed.c, shadow/map_pcf.c, shadow/off.c), each owning its
  * state, and the light cameras the map techniques share
  * (render/light_camera.c). The frame plan (frame/frame.c) calls the hooks; a new
- * technique is a module plus a row in select/technique_table.c. */
+ * technique is a module, a row in select/technique_table.c and its entry in
+ * frame/modules.c. */
 #ifndef STIN_SHADOW_H
 #define STIN_SHADOW_H
 
@@ -56,12 +57,16 @@ typedef struct stin__shadow_technique {
      * draws, its own mesh-drawing programs swapped for tessellated ones;
      * off after it. NULL: it has none. */
     void (*tessellate)(stin_context *ctx, int on);
+    /* 1 where light() tests light li per fragment of the lit pass itself
+     * (a map), so a draw lit on its own without the frame's depth (sorted
+     * blended draws) is shadowed too; 0 where li's shadows are not such a
+     * test. NULL: no light's are (volumes and masks count or mask against
+     * the nearest opaque surface). */
+    int (*fragment_test)(const stin_context *ctx, uint32_t li);
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
     stin__shadow_map_pcf, stin__shadow_off, stin__shadow_vdsm;
-/* The module of a shadows technique (off for anything else). */
-const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
 
 /* ---- module state --------------------------------------------------------- */
 typedef struct stin__volume_state {
@@ -311,6 +316,9 @@ typedef struct stin__mask_state {
  * (GLSL lighting and a texture unit: the frame's lights). */
 void stin__mask_init(stin_context *ctx);
 void stin__mask_release(stin_context *ctx);
+/* The context can draw masks: framebuffer objects and packed depth-stencil
+ * textures (the visibility export's needs too). */
+int stin__mask_drawable(const stin_context *ctx);
 /* Binds the mask as the target, clearing its colour. With `depth`, the
  * first time in a frame also its depth and stencil, and the frame's depth
  * (draws `which`) is drawn into it; without, the passes bring their own. 0:

@@ -395,4 +395,5 @@ const stin__shadow_technique stin__shadow_vdsm = {
     vdsm_mask,
     0, /* the polygons test the position buffer's depth: the mask's is never read */
     stin__vdsm_tessellate,
+    NULL,
 };

@@ -2,7 +2,7 @@
 /* Shadow volumes extruded by a geometry shader (GL4; shaders/gl4/
  * volume_extrude.geom): the volume shadow/volume_geometry.c builds on the
  * CPU, made on the GPU from the mesh's static vertex buffer and its
- * GL_TRIANGLES_ADJACENCY indices (shadow/vdsm_adjacency.c). On a GPU the CPU
+ * GL_TRIANGLES_ADJACENCY indices (assets/mesh_adjacency_buffer.c). On a GPU the CPU
  * build is the cost of the technique: tens of nanoseconds per caster
  * triangle and light, besides streaming the result, which with several
  * lights costs more than the stencil fill. Counting, culling and the z-pass /

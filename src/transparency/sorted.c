@@ -36,7 +36,7 @@ int stin__sorted_shadowed(stin_context *ctx)
     const stin__shadow_technique *t = ctx->shadow;
     if ((ctx->desc.debug_flags & STIN_DEBUG_SORTED_UNSHADOWED) || !frame_blended(ctx))
         return 0; /* (nothing to say in a frame without blended draws) */
-    if (t == &stin__shadow_map_pcf || t == &stin__shadow_map_fixed)
+    if (t->fragment_test)
         return 1;
     if (!ctx->peel.said_sorted_unshadowed)
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
@@ -50,7 +50,9 @@ int stin__sorted_shadowed(stin_context *ctx)
 
 int stin__sorted_light_shadowed(stin_context *ctx, uint32_t li)
 {
-    if (ctx->shadow != &stin__shadow_map_fixed || stin__map_fixed_maps_light(ctx, li))
+    const stin__shadow_technique *t = ctx->shadow;
+    /* (no test at all: stin__sorted_shadowed said so for the whole frame) */
+    if (!t->fragment_test || t->fragment_test(ctx, li))
         return 1;
     if (!ctx->peel.said_sorted_light)
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,

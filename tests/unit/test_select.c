@@ -462,10 +462,12 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
     assert_int_equal(n, 6);
     for (i = 0; i < n; i++)
         assert_int_equal(chain[i], shadows[i]);
-    /* every shadows technique names its module, and only those */
+    /* every shadows technique has its module (frame/modules.c), anything
+     * else gets off's */
     for (t = 1; t < STIN_TECH_COUNT; t++)
-        assert_int_equal(stin__technique_row_of((stin_technique)t)->shadow != NULL,
-                         stin__technique_feature((stin_technique)t) == STIN_FEATURE_SHADOWS);
+        assert_int_equal(stin__shadow_technique_of((stin_technique)t) != &stin__shadow_off,
+                         stin__technique_feature((stin_technique)t) == STIN_FEATURE_SHADOWS &&
+                             t != STIN_TECH_SHADOWS_OFF);
 }
 
 /* A GL2 part with 8 fragment samplers: map-pcf (6 maps) and albedo leave

@@ -1,5 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* VDSM's light pass (shadow/vdsm_pyramid.c) must know, for every edge, on
+/* A mesh's adjacency buffer: its triangles in GL_TRIANGLES_ADJACENCY order
+ * and a vertex array that draws them, for the shadow passes that look
+ * across each edge.
+ *
+ * VDSM's light pass (shadow/vdsm_pyramid.c) must know, for every edge, on
  * which side of it the neighbouring triangle lies in the light's view: an
  * edge with no neighbour beyond it bounds the union of the triangles; GL4's
  * volume extrusion (shadow/volume_extrude.c) must know whether the
@@ -52,7 +56,7 @@ static int adjacency_wanted(const stin_context *ctx)
     return t == STIN_TECH_SHADOWS_VDSM || (t == STIN_TECH_SHADOWS_VOLUME && ctx->volume.extrude_prog);
 }
 
-void stin__vdsm_mesh_upload(stin_context *ctx, stin__mesh_slot *m)
+void stin__mesh_adjacency_buffer_upload(stin_context *ctx, stin__mesh_slot *m)
 {
     const uint32_t *tris = ctx->indices + 3u * m->first_triangle;
     const uint32_t *adj = ctx->adjacency + 3u * m->first_triangle;
@@ -95,7 +99,7 @@ void stin__vdsm_mesh_upload(stin_context *ctx, stin__mesh_slot *m)
     stin__vao_end(ctx, caller_vao);
 }
 
-void stin__vdsm_mesh_release(stin_context *ctx, stin__mesh_slot *m)
+void stin__mesh_adjacency_buffer_release(stin_context *ctx, stin__mesh_slot *m)
 {
     if (m->adj_ibo)
         GL(ctx, DeleteBuffers)(1, &m->adj_ibo);

@@ -1,0 +1,28 @@
+/* SPDX-License-Identifier: MIT */
+/* Which module runs each shadows technique. The technique table
+ * (select/technique_table.c) is pure data below the feature modules, so
+ * the frame, which alone may name them, owns this map. */
+#include "internal.h"
+
+static const struct {
+    stin_technique technique;
+    const stin__shadow_technique *module;
+} shadow_modules[] = {
+    {STIN_TECH_SHADOWS_VDSM, &stin__shadow_vdsm},
+    {STIN_TECH_SHADOWS_VOLUME, &stin__shadow_volume},
+    {STIN_TECH_SHADOWS_MAP_PCF, &stin__shadow_map_pcf},
+    /* one module for both GL1 map techniques (a depth texture's compare or
+     * a depth ramp's) */
+    {STIN_TECH_SHADOWS_MAP_DEPTH, &stin__shadow_map_fixed},
+    {STIN_TECH_SHADOWS_MAP_COMBINE, &stin__shadow_map_fixed},
+    {STIN_TECH_SHADOWS_OFF, &stin__shadow_off},
+};
+
+const stin__shadow_technique *stin__shadow_technique_of(stin_technique t)
+{
+    size_t i;
+    for (i = 0; i < sizeof shadow_modules / sizeof shadow_modules[0]; i++)
+        if (shadow_modules[i].technique == t)
+            return shadow_modules[i].module;
+    return &stin__shadow_off;
+}
