@@ -14,6 +14,8 @@
 #include "render/path.h"
 #include "render/displace_chunk.h"
 #include "render/screen_quad.h"
+#include "render/casters.h"
+#include "render/resolved.h"
 #include "gl/pass_state.h"
 #include "shadow/shadow.h"
 #include "surface/surface.h"
@@ -83,6 +85,10 @@ struct stin_context {
         int separate_read;    /* draw and read bindings are separate (GL 3.0, ARB_fbo) */
         int multisampled;     /* it has sample buffers (GL_SAMPLE_BUFFERS, GL 1.3) */
     } target;
+    /* what the frame lends the layers below it (frame/hooks.c): extra
+     * shadow casters and a resolved depth, NULL where no feature gives them */
+    stin__casters_state casters;    /* render/casters.h */
+    const stin__resolved *resolved; /* render/resolved.h */
 
     /* lighting paths */
     stin__program programs[STIN__PROG_COUNT];
@@ -168,6 +174,9 @@ uint32_t stin__pot_at_least(uint32_t n);
  * then restore it and reset the rest to the documented defaults. */
 void stin__state_save(stin_context *ctx);
 void stin__state_restore(stin_context *ctx);
+/* At stin_create, once the features have chosen (frame/hooks.c): the
+ * services the frame lends the layers below it (ctx->casters, ->resolved). */
+void stin__hooks_install(stin_context *ctx);
 /* Caller state no pass sets (gl/caller_state.c): defaults sets GL's defaults
  * for every tier; fixed_begin, after the attribute push, does the same for
  * what the fixed pipeline mixes in (texture matrices get a stack level) and

@@ -412,6 +412,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         stin__displace_init(ctx);
         stin__csg_init(ctx);
         stin__csg_interval_init(ctx);
+        stin__hooks_install(ctx); /* after csg's init, which may turn it off */
         stin__outline_init(ctx);
         stin__times_init(ctx);
     }

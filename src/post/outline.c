@@ -77,7 +77,7 @@ static int draw_normals(stin_context *ctx, const stin__path *path)
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     ctx->draw_fbo = ctx->mask.fbo;
-    stin__csg_depth_again(ctx, path);
+    stin__resolved_depth_again(ctx, path);
     path->normals(ctx);
     stin__mask_frame_end(ctx); /* the mask's depth is no longer the frame's opaque one */
     ctx->draw_fbo = ctx->frame.framebuffer;

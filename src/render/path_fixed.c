@@ -146,7 +146,7 @@ static void draw_csg_faces(stin_context *ctx, int which, int materials)
         return;
     for (i = 0; i < ctx->csg.face_count; i++) {
         const stin__draw *d = &ctx->csg.faces[i];
-        if (!stin__csg_face_begin(ctx, d, &saved))
+        if (!stin__resolved_face_begin(ctx, d, &saved))
             continue;
         if (d->csg == STIN__CSG_BACK && stin__mat4_det(d->transform) < 0.0) {
             stin__pass_state ps = *stin__pass_current(ctx);
@@ -161,7 +161,7 @@ static void draw_csg_faces(stin_context *ctx, int which, int materials)
         draw_mesh(ctx, d);
         if (d->csg == STIN__CSG_BACK)
             GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 0);
-        stin__csg_face_end(ctx, &saved);
+        stin__resolved_face_end(ctx, &saved);
     }
 }
 

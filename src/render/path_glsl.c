@@ -411,14 +411,14 @@ static void draw_csg_faces(stin_context *ctx, const stin__program *p, int which,
     for (i = 0; i < ctx->csg.face_count; i++) {
         const stin__draw *d = &ctx->csg.faces[i];
         const stin__program *q = p;
-        if (!stin__csg_face_begin(ctx, d, &saved))
+        if (!stin__resolved_face_begin(ctx, d, &saved))
             continue;
         if (materials && ctx->glsl_surface.current)
             q = lit_for_draw(ctx, d);
         if (materials)
             set_material(ctx, q, &d->material);
         submit(ctx, q, d);
-        stin__csg_face_end(ctx, &saved);
+        stin__resolved_face_end(ctx, &saved);
     }
 }
 

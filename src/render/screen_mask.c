@@ -119,7 +119,7 @@ int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int d
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         /* the same program and draws as the target's ambient pass: equal depths */
         path->ambient(ctx, which, 1);
-        stin__csg_depth_again(ctx, path); /* the CSG products' surfaces too */
+        stin__resolved_depth_again(ctx, path); /* the CSG products' surfaces too */
         ctx->mask.depth_done = 1;
     } else {
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);

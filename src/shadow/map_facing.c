@@ -128,14 +128,14 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     side_colours(ctx, 1);
-    if (ctx->csg.cast.valid) {
+    if (stin__casters_drew(ctx)) {
         /* a CSG product's surface the light sees is its outside, whichever
          * side of a primitive makes it (csg/cast.c): white */
         static const float white[4] = {1, 1, 1, 1}, black[4] = {0, 0, 0, 1};
         const int map_vp[4] = {x, y, (int)m->used, (int)m->used};
         GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, white);
-        stin__csg_cast_again(ctx, map_vp, m->fbo ? m->facing_fbo : ctx->draw_fbo,
-                             !m->fbo && stin__target_has_stencil(ctx));
+        stin__casters_again(ctx, map_vp, m->fbo ? m->facing_fbo : ctx->draw_fbo,
+                            !m->fbo && stin__target_has_stencil(ctx));
         GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, black);
     }
     stin__fixed_path()->depth(ctx, view, proj);

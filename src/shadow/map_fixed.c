@@ -248,11 +248,11 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     map_vp[0] = fbo ? 0 : vp[0];
     map_vp[1] = fbo ? 0 : vp[1];
     map_vp[2] = map_vp[3] = (int)used;
-    cast = stin__csg_cast(ctx, stin__fixed_path(), view, proj, map_vp,
-                          fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
-                          !fbo && stin__target_has_stencil(ctx),
-                          ps.polygon_offset ? ps.offset_factor : 0.0f,
-                          ps.polygon_offset ? ps.offset_units : 0.0f);
+    cast = stin__casters_cast(ctx, stin__fixed_path(), view, proj, map_vp,
+                              fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
+                              !fbo && stin__target_has_stencil(ctx),
+                              ps.polygon_offset ? ps.offset_factor : 0.0f,
+                              ps.polygon_offset ? ps.offset_units : 0.0f);
     if (cast)
         stin__pass_apply(ctx, &ps);
     if (combine(ctx)) {
@@ -262,8 +262,8 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
         ramp_texgen_light_eye(ctx, n, f);
         if (cast) /* the products' surface in the ramp's colours */
-            stin__csg_cast_again(ctx, map_vp, fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
-                                 !fbo && stin__target_has_stencil(ctx));
+            stin__casters_again(ctx, map_vp, fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
+                                !fbo && stin__target_has_stencil(ctx));
     }
     stin__fixed_path()->depth(ctx, view, proj);
     if (combine(ctx)) {
@@ -613,8 +613,8 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
     }
     if (!mapped && l->type == STIN_LIGHT_POINT && stin__target_has_stencil(ctx)) {
         float world[4];
-        stin__csg_cast_none(ctx, "from a point light without map faces (its shadow volumes "
-                                 "stand in, and volumes cast no product)");
+        stin__casters_none(ctx, "from a point light without map faces (its shadow volumes "
+                                "stand in, and volumes cast no product)");
         world[0] = l->position[0];
         world[1] = l->position[1];
         world[2] = l->position[2];

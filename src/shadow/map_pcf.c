@@ -86,9 +86,9 @@ static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
     {
         const int map_vp[4] = {0, 0, (int)m->size, (int)m->size};
-        if (stin__csg_cast(ctx, stin__path_of(ctx), view, proj, map_vp, m->fbo, 0,
-                           ps.polygon_offset ? ps.offset_factor : 0.0f,
-                           ps.polygon_offset ? ps.offset_units : 0.0f))
+        if (stin__casters_cast(ctx, stin__path_of(ctx), view, proj, map_vp, m->fbo, 0,
+                               ps.polygon_offset ? ps.offset_factor : 0.0f,
+                               ps.polygon_offset ? ps.offset_units : 0.0f))
             stin__pass_apply(ctx, &ps); /* the casters' state again */
     }
     stin__path_of(ctx)->depth(ctx, view, proj);

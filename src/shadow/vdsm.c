@@ -209,9 +209,9 @@ static void vdsm_prepass(stin_context *ctx)
 {
     stin__vdsm_buffer_draw(ctx);
     if (!stin__vdsm_csg_ready(ctx))
-        stin__csg_cast_none(ctx, "under vdsm without GL 4.3's shader storage buffers (the "
-                                 "\"compute shaders\" capability), which its per-pixel lists "
-                                 "of crossings need; the map techniques cast them");
+        stin__casters_none(ctx, "under vdsm without GL 4.3's shader storage buffers (the "
+                                "\"compute shaders\" capability), which its per-pixel lists "
+                                "of crossings need; the map techniques cast them");
 }
 
 /* The light as a homogeneous world point: position (w 1) or the direction

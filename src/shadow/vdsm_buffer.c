@@ -193,7 +193,7 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     (void)path;
     if (!v->ready || !ctx->csg.face_count)
         return;
-    resolved = stin__csg_depth_texture(ctx, origin);
+    resolved = stin__resolved_depth_texture(ctx, origin);
     if (!resolved)
         return;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
@@ -207,9 +207,9 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     csg[1] = (float)origin[1];
     GL(ctx, Uniform4fv)(v->pos_csg, 1, csg);
     for (i = 0; i < ctx->csg.face_count; i++)
-        if (stin__csg_face_begin(ctx, &ctx->csg.faces[i], &saved)) {
+        if (stin__resolved_face_begin(ctx, &ctx->csg.faces[i], &saved)) {
             stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &ctx->csg.faces[i]);
-            stin__csg_face_end(ctx, &saved);
+            stin__resolved_face_end(ctx, &saved);
         }
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);

@@ -339,7 +339,7 @@ void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel)
 {
     stin__vdsm_csg *c = &ctx->vdsm.csg;
     uint32_t pi;
-    if (!built(ctx) || !stin__csg_cast_wanted(ctx) || !buffers_ready(ctx))
+    if (!built(ctx) || !stin__casters_wanted(ctx) || !buffers_ready(ctx))
         return;
     bind_buffers(ctx, 1);
     if (!c->cleared) {

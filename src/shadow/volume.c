@@ -228,8 +228,8 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     uint32_t i;
     int k, n_planes;
     plane planes[5];
-    stin__csg_cast_none(ctx, "into shadow volumes (a product's volume needs its resolved "
-                             "silhouette, not its primitives'; the map techniques cast them)");
+    stin__casters_none(ctx, "into shadow volumes (a product's volume needs its resolved "
+                            "silhouette, not its primitives'; the map techniques cast them)");
     /* The frame's viewport at most: the stencil of the rest of the
      * framebuffer (other viewports of a no_clear frame) is not ours. */
     if (NO_SCISSOR(scissor))
@@ -468,5 +468,5 @@ const stin__shadow_technique stin__shadow_volume = {
     volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
     volume_mask,
     1, /* the volumes' stencil counts against the frame's depth */
-    NULL,
+    NULL, NULL,
 };

@@ -263,7 +263,7 @@ int stin__peel_begin(stin_context *ctx, const stin__path *path)
     stin__peel_attach(ctx, s->ambient, s->opaque);
     stin__peel_clear(ctx, 0, 0, 0, 0, 1);
     path->ambient(ctx, STIN__OPAQUE, 1);
-    stin__csg_depth_again(ctx, path);
+    stin__resolved_depth_again(ctx, path);
     if (s->dual) {
         s->layer = -1;
         ctx->draw_fbo = s->fbo;
