@@ -22,13 +22,20 @@ ALLOWED=${2:-tools/layers-allowed.txt}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-# symbol file, for what each object defines and what it uses
-find "$OBJ/src" -name '*.o' | sort | while read -r o; do
-    f=${o#"$OBJ"/}
-    f=${f%.o}.c
-    [ -f "$f" ] || continue # an object whose source was moved or removed
-    nm -g --defined-only "$o" | awk -v f="$f" 'NF == 3 { print $3, f }' >> "$tmp/defs"
-    nm -u "$o" | awk -v f="$f" '{ print $2, f }' >> "$tmp/uses"
+# what each object defines and what it uses, "symbol src/FILE.c" a line; one
+# nm call each (nm -A names the object on every line)
+find "$OBJ/src" -name '*.o' | sort > "$tmp/objects"
+to_source='{ f = $1; sub(/:.*/, "", f); sub("^" obj "/", "", f); sub(/\.o$/, ".c", f) }'
+xargs nm -A -g --defined-only < "$tmp/objects" |
+    awk -v obj="$OBJ" "$to_source"' NF == 3 { print $3, f }' > "$tmp/defs"
+xargs nm -A -u < "$tmp/objects" | awk -v obj="$OBJ" "$to_source"' { print $NF, f }' > "$tmp/uses"
+# an object whose source was moved or removed is left out
+for list in defs uses; do
+    awk '{ print $2 }' "$tmp/$list" | sort -u | while read -r f; do
+        [ -f "$f" ] || echo "$f"
+    done > "$tmp/gone"
+    awk 'FILENAME == ARGV[1] { gone[$1] = 1; next } !($2 in gone)' "$tmp/gone" "$tmp/$list" > "$tmp/kept"
+    mv "$tmp/kept" "$tmp/$list"
 done
 sort -o "$tmp/defs" "$tmp/defs"
 sort -o "$tmp/uses" "$tmp/uses"
