@@ -9,7 +9,9 @@
 # Environment: STIN_TEST_PLATFORMS (default "egl osmesa"),
 #              STIN_TEST_PROFILES (default: every profile of docs/profiles.md),
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme and
-#              bench suites (make check-quick), STIN_TEST_JOBS.
+#              bench suites (make check-quick), STIN_TEST_JOBS,
+#              STIN_READBACK_DIR: every image suite hashes its read-backs into
+#              DIR/PLATFORM.PROFILE.log (tools/compare-renders.sh diff-readbacks).
 set -u
 # One suite (xargs runs this script again with --suite): its output, exit
 # status and wall seconds into SUITES/NNN.*. Dispatched before the set-up
@@ -52,7 +54,12 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 {
     for plat in $PLATFORMS; do
         for prof in $PROFILES; do
-            echo "image:$plat:$prof $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $SCENES
+            hashes=
+            if [ -n "${STIN_READBACK_DIR:-}" ]; then
+                rm -f "$STIN_READBACK_DIR/$plat.$prof.log"
+                hashes="env STIN_READBACK_LOG=$STIN_READBACK_DIR/$plat.$prof.log"
+            fi
+            echo "image:$plat:$prof $hashes $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $SCENES
         done
     done
     for t in "$B"/tests/test_*; do
