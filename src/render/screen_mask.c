@@ -135,8 +135,6 @@ void stin__mask_write(stin_context *ctx, const stin__path *path, int channel)
     static const float one[4] = {1, 1, 1, 1};
     const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
     stin__pass_state ps = *stin__pass_current(ctx);
-    float quad[6 * 4];
-    stin__screen_quad_vertices(1.0f, quad);
     ps.depth_test = 1;
     ps.depth_func = GL_GREATER;
     ps.depth_write = 0;
@@ -148,7 +146,7 @@ void stin__mask_write(stin_context *ctx, const stin__path *path, int channel)
     path->volume_begin(ctx);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, identity);
     GL(ctx, Uniform4fv)(p->u_color, 1, one);
-    path->volume_draw(ctx, identity, quad, 6);
+    path->volume_draw(ctx, identity, stin__screen_quad_vertices(1), 6);
     path->volume_end(ctx);
 }
 

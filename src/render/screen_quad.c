@@ -4,15 +4,17 @@
  * screen mask) and its draw through the bound program. */
 #include "internal.h"
 
-/* Clip-space xyzw, two counter-clockwise triangles at depth 0. */
-static const float quad[6 * 4] = {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1,
-                                  -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1};
+/* Clip-space xyzw, two counter-clockwise triangles at depth 0 and on the
+ * far plane; static, since client arrays are read at the draw and the
+ * pointer stays set after it. */
+static const float quads[2][6 * 4] = {
+    {-1, -1, 0, 1, 1, -1, 0, 1, 1, 1, 0, 1, -1, -1, 0, 1, 1, 1, 0, 1, -1, 1, 0, 1},
+    {-1, -1, 1, 1, 1, -1, 1, 1, 1, 1, 1, 1, -1, -1, 1, 1, 1, 1, 1, 1, -1, 1, 1, 1},
+};
 
-void stin__screen_quad_vertices(float z, float xyzw[6 * 4])
+const float *stin__screen_quad_vertices(int far)
 {
-    int i;
-    for (i = 0; i < 6 * 4; i++)
-        xyzw[i] = i % 4 == 2 ? z : quad[i];
+    return quads[far ? 1 : 0];
 }
 
 /* GL4: through the streamed volume buffer, whose vertex array has
@@ -21,7 +23,7 @@ static void streamed(stin_context *ctx)
 {
     GL(ctx, BindVertexArray)(ctx->volume_vao);
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
-    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)sizeof quad, quad, GL_STREAM_DRAW);
+    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)sizeof quads[0], quads[0], GL_STREAM_DRAW);
     GL(ctx, DrawArrays)(GL_TRIANGLES, 0, 6);
     GL(ctx, BindVertexArray)(0);
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
@@ -36,7 +38,7 @@ static void client_arrays(stin_context *ctx)
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     for (i = 1; i < 4; i++)
         GL(ctx, DisableVertexAttribArray)((GLuint)i);
-    GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, quad);
+    GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, quads[0]);
     GL(ctx, DrawArrays)(GL_TRIANGLES, 0, 6);
     for (i = 1; i < 4; i++)
         GL(ctx, EnableVertexAttribArray)((GLuint)i);

@@ -11,8 +11,9 @@
  * from client memory with the mesh attributes 1-3 off meanwhile. No mesh's
  * arrays are bound afterwards. */
 void stin__screen_quad(stin_context *ctx);
-/* The same six vertices at clip depth z, for a pass that draws them its
- * own way (the screen mask's, on the far plane through the path). */
-void stin__screen_quad_vertices(float z, float xyzw[6 * 4]);
+/* The same six vertices (xyzw) at clip depth 0, or on the far plane (far
+ * 1), for a pass that draws them its own way (the screen mask's, through
+ * the path's volume draw). */
+const float *stin__screen_quad_vertices(int far);
 
 #endif
