@@ -396,6 +396,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     }
     ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     stin__displace_hand_down(ctx); /* before the first program is built */
+    stin__hooks_install_paths(ctx); /* the lighting path builds the features' chunks in */
     r = init_lighting(ctx);
     if (r == STIN_OK)
         r = init_shadows(ctx);
