@@ -201,7 +201,7 @@ static stin_result init_lighting(stin_context *ctx)
         stin_technique next;
         stin_result r;
         if (c->technique == STIN_TECH_LIGHTING_FIXED)
-            return stin__fixed_init(ctx);
+            return stin__dot3_init(ctx); /* the pipeline is fixed; DOT3 needs its cube map */
         if (stin__glsl_init(ctx, c->technique == STIN_TECH_LIGHTING_GLSL150 ? STIN_TIER_GL4
                                                                              : STIN_TIER_GL2,
                             msg, sizeof msg) == STIN_OK)

@@ -21,7 +21,8 @@ static const stin__resolved csg_resolved = {
     stin__csg_depth_texture,
 };
 
-/* Surface detail: the lit program's variants and their chunks. */
+/* Surface detail: the lit program's variants and their chunks (GLSL), DOT3
+ * (fixed function). */
 static const stin__path_feature surface_feature = {
     .place = STIN__CHUNK_SURFACE,
     .chunks = stin__surf_chunks,
@@ -32,6 +33,9 @@ static const stin__path_feature surface_feature = {
     .variant_top = stin__surf_variant_top,
     .variant_failed = stin__surf_variant_failed,
     .variant_for = stin__surf_variant_for,
+    .fixed_material = stin__dot3_material,
+    .fixed_lights = stin__dot3_lights,
+    .fixed_batch = stin__dot3_batch,
 };
 
 /* Translucent shadows: the deep or colour map lookup. */

@@ -119,7 +119,6 @@ typedef struct stin__path {
     void (*blended_one)(stin_context *ctx, const stin__draw *d, const stin_light_desc *light);
 } stin__path;
 
-stin_result stin__fixed_init(stin_context *ctx);
 const stin__path *stin__fixed_path(void);
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size);
 void stin__glsl_release(stin_context *ctx);

@@ -1,11 +1,12 @@
 /* SPDX-License-Identifier: MIT */
 /* What a feature adds to the lighting paths: the GLSL chunks it splices
  * into their programs with the uniforms and textures that go with them,
- * which draws a camera pass counts, and whether lights have maps of their
- * own. The frame lends each feature's hooks through the context
- * (frame/hooks.c), so no path names a feature; the paths loop over the
- * list or call the wrappers in render/path_features.c, which answer as if
- * no feature were there where none gives a hook. */
+ * the fixed-function passes it adds, which draws a camera pass counts, and
+ * whether lights have maps of their own. The frame lends each feature's
+ * hooks through the context (frame/hooks.c), so no path names a feature;
+ * the paths loop over the list or call the wrappers in
+ * render/path_features.c, which answer as if no feature were there where
+ * none gives a hook. */
 #ifndef STIN_PATH_FEATURES_H
 #define STIN_PATH_FEATURES_H
 
@@ -57,6 +58,15 @@ typedef struct stin__path_feature {
     int (*variant_top)(const stin_context *ctx);
     void (*variant_failed)(stin_context *ctx, int built, const char *msg);
     int (*variant_for)(stin_context *ctx, const stin_material *m);
+
+    /* ---- fixed-function path (render/path_fixed.c) ---- */
+    /* After a material is set up (its diffuse may come from the feature). */
+    void (*fixed_material)(stin_context *ctx, const stin_material *m);
+    /* Before a light's opaque draws: its own passes for lights[0..count),
+     * the GL lights set up as they are (depth EQUAL, the caller's stencil). */
+    void (*fixed_lights)(stin_context *ctx, const stin_light_desc *lights, int count);
+    /* After light batch `batch` of the unshadowed beauty drew its opaque draws. */
+    void (*fixed_batch)(stin_context *ctx, int batch);
 
     /* ---- camera passes ---- */
     /* Which of STIN__OPAQUE / STIN__BLENDED a camera pass counts draw d in. */

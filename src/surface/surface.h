@@ -16,14 +16,17 @@
 /* ---- surface: DOT3 bump mapping on the fixed-function path (surface/dot3.c) ----
  * Draws whose material has a normal map get their diffuse term per pixel from
  * the normal map; the fixed-function passes keep their ambient and specular
- * (set_material blacks out their diffuse through stin__dot3_material). */
-/* Creates the cube map when the technique is selected; a context without the
- * texture units or staging falls back to plain (an error if it was forced). */
+ * (set_material blacks out their diffuse through stin__dot3_material). The
+ * fixed path calls material, lights and batch as the surface's hooks
+ * (render/path_features.h, lent by frame/hooks.c). */
+/* Creates the cube map when the technique is selected (the frame's set-up
+ * of the fixed path); a context without the texture units or staging falls
+ * back to plain (an error if it was forced). */
 stin_result stin__dot3_init(stin_context *ctx);
 void stin__dot3_release(stin_context *ctx);
 /* 1 when this (opaque) material is drawn with DOT3 in the lit passes. */
 int stin__dot3_bumped(const stin_context *ctx, const stin_material *m);
-/* Called by the fixed path's set_material: diffuse off for bumped materials. */
+/* After the fixed path's set_material: diffuse off for bumped materials. */
 void stin__dot3_material(stin_context *ctx, const stin_material *m);
 /* Adds the DOT3 diffuse of the opaque bumped draws for the GL lights
  * 0..count-1 (set up as lights[0..count-1]), one additive pass per light
