@@ -2,9 +2,9 @@
 /* The services the frame lends the layers below it, pointing at the
  * features that give them: the frame is the one layer that names
  * features, so the shadow techniques, passes and post stages reach the
- * CSG products, and the lighting paths what the surface, translucent
- * shadows and transparency add to them, only through these
- * (render/casters.h, render/resolved.h, render/path_features.h). */
+ * CSG products, and the lighting paths and the visibility export what the
+ * surface, translucent shadows and transparency add to them, only through
+ * these (render/casters.h, render/resolved.h, render/path_features.h). */
 #include "internal.h"
 
 static const stin__casters csg_casters = {
@@ -38,13 +38,15 @@ static const stin__path_feature surface_feature = {
     .fixed_batch = stin__dot3_batch,
 };
 
-/* Translucent shadows: the deep or colour map lookup. */
+/* Translucent shadows: the deep or colour map lookup and each light's map. */
 static const stin__path_feature translucent_feature = {
     .place = STIN__CHUNK_SEAM,
     .chunks = stin__translucent_chunks,
     .locate = stin__translucent_locate,
     .uniforms = stin__translucent_uniforms,
     .maps_active = stin__translucent_active,
+    .light = stin__translucent_light,
+    .light_done = stin__translucent_light_done,
 };
 
 /* Transparency: the peel chunk and the draws of a peeled layer. */

@@ -56,3 +56,19 @@ int stin__light_maps_active(const stin_context *ctx)
             return 1;
     return 0;
 }
+
+void stin__light_maps_make(stin_context *ctx, uint32_t li)
+{
+    const stin__path_feature *const *f;
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->light)
+            (*f)->light(ctx, li);
+}
+
+void stin__light_maps_done(stin_context *ctx)
+{
+    const stin__path_feature *const *f;
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->light_done)
+            (*f)->light_done(ctx);
+}

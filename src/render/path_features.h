@@ -2,9 +2,9 @@
 /* What a feature adds to the lighting paths: the GLSL chunks it splices
  * into their programs with the uniforms and textures that go with them,
  * the fixed-function passes it adds, which draws a camera pass counts, and
- * whether lights have maps of their own. The frame lends each feature's
- * hooks through the context (frame/hooks.c), so no path names a feature;
- * the paths loop over the list or call the wrappers in
+ * the maps a light needs of its own. The frame lends each feature's hooks
+ * through the context (frame/hooks.c), so neither a path nor a post stage
+ * names a feature; they loop over the list or call the wrappers in
  * render/path_features.c, which answer as if no feature were there where
  * none gives a hook. */
 #ifndef STIN_PATH_FEATURES_H
@@ -75,6 +75,9 @@ typedef struct stin__path_feature {
     /* ---- a light's own maps, read by the chunk (place SEAM) ---- */
     /* Lights get them this frame (then they are lit one per pass). */
     int (*maps_active)(const stin_context *ctx);
+    /* Light li's, made now for the pass that follows; done: it is over. */
+    void (*light)(stin_context *ctx, uint32_t li);
+    void (*light_done)(stin_context *ctx);
 } stin__path_feature;
 
 /* The lent features in turn, NULL-terminated (empty where none were lent). */
@@ -87,7 +90,10 @@ int stin__lit_variant_for(stin_context *ctx, const stin_material *m);
 /* Which of STIN__OPAQUE / STIN__BLENDED a camera pass counts draw d in: the
  * first feature's answer that has one, else by the material's opacity. */
 int stin__camera_set(const stin_context *ctx, const stin__draw *d);
-/* Whether lights get maps of their own this frame (any feature's). */
+/* Whether lights get maps of their own this frame (any feature's); every
+ * feature's for light li made now, and done after the light's pass. */
 int stin__light_maps_active(const stin_context *ctx);
+void stin__light_maps_make(stin_context *ctx, uint32_t li);
+void stin__light_maps_done(stin_context *ctx);
 
 #endif
