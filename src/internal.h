@@ -16,6 +16,7 @@
 #include "render/screen_quad.h"
 #include "render/casters.h"
 #include "render/resolved.h"
+#include "render/path_features.h"
 #include "gl/pass_state.h"
 #include "shadow/shadow.h"
 #include "surface/surface.h"
@@ -86,9 +87,11 @@ struct stin_context {
         int multisampled;     /* it has sample buffers (GL_SAMPLE_BUFFERS, GL 1.3) */
     } target;
     /* what the frame lends the layers below it (frame/hooks.c): extra
-     * shadow casters and a resolved depth, NULL where no feature gives them */
+     * shadow casters and a resolved depth, NULL where no feature gives them;
+     * what features add to the lighting paths, NULL-terminated */
     stin__casters_state casters;    /* render/casters.h */
     const stin__resolved *resolved; /* render/resolved.h */
+    const stin__path_feature *const *path_features; /* render/path_features.h */
 
     /* lighting paths */
     stin__program programs[STIN__PROG_COUNT];
@@ -177,6 +180,9 @@ void stin__state_restore(stin_context *ctx);
 /* At stin_create, once the features have chosen (frame/hooks.c): the
  * services the frame lends the layers below it (ctx->casters, ->resolved). */
 void stin__hooks_install(stin_context *ctx);
+/* Before the lighting path's set-up, which builds the features' chunks into
+ * its programs (frame/hooks.c): ctx->path_features. */
+void stin__hooks_install_paths(stin_context *ctx);
 /* Caller state no pass sets (gl/caller_state.c): defaults sets GL's defaults
  * for every tier; fixed_begin, after the attribute push, does the same for
  * what the fixed pipeline mixes in (texture matrices get a stack level) and

@@ -201,7 +201,7 @@ static stin_result init_lighting(stin_context *ctx)
         stin_technique next;
         stin_result r;
         if (c->technique == STIN_TECH_LIGHTING_FIXED)
-            return stin__fixed_init(ctx);
+            return stin__dot3_init(ctx); /* the pipeline is fixed; DOT3 needs its cube map */
         if (stin__glsl_init(ctx, c->technique == STIN_TECH_LIGHTING_GLSL150 ? STIN_TIER_GL4
                                                                              : STIN_TIER_GL2,
                             msg, sizeof msg) == STIN_OK)
@@ -396,6 +396,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     }
     ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     stin__displace_hand_down(ctx); /* before the first program is built */
+    stin__hooks_install_paths(ctx); /* the lighting path builds the features' chunks in */
     r = init_lighting(ctx);
     if (r == STIN_OK)
         r = init_shadows(ctx);

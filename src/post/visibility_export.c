@@ -73,9 +73,9 @@ static uint32_t ensure_map(stin_context *ctx, int tile_w, int tile_h, uint32_t t
 static void export_transmittance(stin_context *ctx, const stin__path *path, uint32_t li)
 {
     static const float white[4] = {1, 1, 1, 1};
-    stin__translucent_light(ctx, li);
+    stin__light_maps_make(ctx, li);
     path->flat(ctx, STIN__OPAQUE, white, &ctx->lights[li]);
-    stin__translucent_light_done(ctx);
+    stin__light_maps_done(ctx);
 }
 
 /* A light's visibility through the flat pass, into the pass's channel. */
@@ -107,7 +107,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
     const int *vp = ctx->frame.viewport;
     int tile_w = vp[0] + vp[2], tile_h = vp[1] + vp[3];
     uint32_t groups = (ctx->light_count + LIGHTS_PER_TILE - 1) / LIGHTS_PER_TILE, fit, g, want;
-    int coloured = stin__translucent_active(ctx) && ctx->light_count > 0;
+    int coloured = stin__light_maps_active(ctx) && ctx->light_count > 0;
     e->valid = 0;
     e->lights = 0;
     e->transmittance_tile = 0;

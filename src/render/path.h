@@ -119,7 +119,6 @@ typedef struct stin__path {
     void (*blended_one)(stin_context *ctx, const stin__draw *d, const stin_light_desc *light);
 } stin__path;
 
-stin_result stin__fixed_init(stin_context *ctx);
 const stin__path *stin__fixed_path(void);
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size);
 void stin__glsl_release(stin_context *ctx);
@@ -146,8 +145,9 @@ GLuint stin__program_build(stin_context *ctx, const char *vert, const char *frag
                            size_t size);
 /* The lit program of a surface variant with frag_defines (NULL: the general
  * one) into p, located; 0 on failure (msg). tess: the tessellated twin;
- * peel: with the transparency's peel chunk (the general programs have it). */
-int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int peel,
+ * layer: with the chunks of a peeled layer (render/path_features.h; the
+ * general programs have them). */
+int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int layer,
                          const char *frag_defines, stin__program *p, char *msg, size_t size);
 /* The key of a light batch: its count and which parts of the equation its
  * lights need (directional, positional, spot cone, attenuation). */

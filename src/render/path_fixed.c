@@ -5,11 +5,6 @@
  * outputs. */
 #include "internal.h"
 
-stin_result stin__fixed_init(stin_context *ctx)
-{
-    return stin__dot3_init(ctx); /* the pipeline is fixed; DOT3 needs its cube map */
-}
-
 static void set_light(stin_context *ctx, int unit, const stin_light_desc *l)
 {
     GLenum id = (GLenum)(GL_LIGHT0 + unit);
@@ -89,6 +84,7 @@ static void set_material(stin_context *ctx, const stin_material *m)
     float spec[4] = {m->specular[0], m->specular[1], m->specular[2], 1.0f};
     float black[4] = {0, 0, 0, 1};
     const stin__texture_slot *t = stin__texture_lookup(ctx, m->albedo);
+    const stin__path_feature *const *f;
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_AMBIENT_AND_DIFFUSE, m->color);
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_SPECULAR, spec);
     GL(ctx, Materialfv)(GL_FRONT_AND_BACK, GL_EMISSION, black);
@@ -100,7 +96,9 @@ static void set_material(stin_context *ctx, const stin_material *m)
     } else {
         GL_DISABLE(ctx, GL_TEXTURE_2D);
     }
-    stin__dot3_material(ctx, m); /* bumped: diffuse comes from the DOT3 passes */
+    for (f = stin__path_features(ctx); *f; f++) /* bumped: diffuse comes from DOT3's passes */
+        if ((*f)->fixed_material)
+            (*f)->fixed_material(ctx, m);
 }
 
 static void draw_mesh(stin_context *ctx, const stin__draw *d)
@@ -215,6 +213,7 @@ static int batch_count(const stin_context *ctx)
 
 static void fixed_batches(stin_context *ctx, int which)
 {
+    const stin__path_feature *const *f;
     int batches = batch_count(ctx), b;
     uint32_t i;
     GL_ENABLE(ctx, GL_LIGHTING);
@@ -224,7 +223,9 @@ static void fixed_batches(stin_context *ctx, int which)
             pass_state(ctx, b > 0, 0);
             ctx->stats.passes++;
             draw_set(ctx, STIN__OPAQUE, 1);
-            stin__dot3_batch(ctx, b);
+            for (f = stin__path_features(ctx); *f; f++)
+                if ((*f)->fixed_batch)
+                    (*f)->fixed_batch(ctx, b);
         }
     if (which & STIN__BLENDED)
         for (i = 0; i < ctx->draw_count; i++) { /* each blended draw whole, far to near */
@@ -254,6 +255,7 @@ static void fixed_ambient(stin_context *ctx, int which, int depth_only)
 
 static void fixed_lit(stin_context *ctx, const stin_light_desc *light)
 {
+    const stin__path_feature *const *f;
     GL_ENABLE(ctx, GL_LIGHTING);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, LoadMatrixf)(ctx->frame.view);
@@ -261,7 +263,10 @@ static void fixed_lit(stin_context *ctx, const stin_light_desc *light)
     disable_lights(ctx, 1);
     scene_ambient(ctx, 0);
     pass_state(ctx, 1, 0);
-    stin__dot3_lights(ctx, light, 1); /* bumped diffuse first: the stencil may count lit pixels */
+    /* DOT3's bumped diffuse first: the stencil may count lit pixels */
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->fixed_lights)
+            (*f)->fixed_lights(ctx, light, 1);
     draw_set(ctx, STIN__OPAQUE, 1);
     ctx->stats.passes++;
 }

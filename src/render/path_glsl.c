@@ -9,9 +9,13 @@ static const char *const vert_names[STIN__PROG_COUNT] = {"lit.vert", "lit.vert",
                                                          "volume.vert"};
 static const char *const frag_names[STIN__PROG_COUNT] = {"lit.frag", "normal.frag", "flat.frag",
                                                          "flat.frag"};
+/* a program's fragment chunks, the shadow technique's and the features'
+ * (render/path_features.h): at most what gl/shader.c splices */
+#define LIT_CHUNKS 6
 
 static void locate(stin_context *ctx, stin__program *p)
 {
+    const stin__path_feature *const *f;
 #define LOC(field, uniform) p->field = GL(ctx, GetUniformLocation)(p->name, uniform)
     LOC(u_model, "u_model");
     LOC(u_view_proj, "u_view_proj");
@@ -36,9 +40,9 @@ static void locate(stin_context *ctx, stin__program *p)
     LOC(u_shadow_maps[5], "u_shadow_face5");
     LOC(u_color, "u_color");
 #undef LOC
-    stin__translucent_locate(ctx, p);
-    stin__peel_locate(ctx, p);
-    stin__surf_locate(ctx, p);
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->locate)
+            (*f)->locate(ctx, p);
     /* the volume program draws shadow-map depth from lights, the rest the camera's passes */
     stin__displace_locate(ctx, p->name, p != &ctx->programs[STIN__PROG_VOLUME], &p->displace);
     p->frame_serial = 0;
@@ -57,17 +61,55 @@ static stin__program *lit_program(stin_context *ctx, int variant)
                                        : &ctx->glsl_surface.lit[variant];
 }
 
-/* peel: with the transparency's peel chunk (when one is chosen) */
-static int build_lit(stin_context *ctx, const char *dir, int variant, int tess, int peel,
+/* Chunk file `name` under dir as list[n] (its text in names[n]); n + 1. */
+static int add_chunk(const char *dir, const char *name, char names[][40], const char **list,
+                     int n)
+{
+    if (n == LIT_CHUNKS)
+        return n; /* cannot happen: the shadow's and the features' at most */
+    stin__formatf(names[n], 40, "%s%s", dir, name);
+    list[n] = names[n];
+    return n + 1;
+}
+
+/* The chunks of the features at `place` for variant `variant`, from list[n]. */
+static int feature_chunks(const stin_context *ctx, stin__chunk_place place, int variant,
+                          const char *dir, char names[][40], const char **list, int n)
+{
+    const stin__path_feature *const *f;
+    for (f = stin__path_features(ctx); *f; f++) {
+        const char *c[STIN__FEATURE_CHUNKS];
+        int k, got = (*f)->place == place && (*f)->chunks ? (*f)->chunks(ctx, variant, c) : 0;
+        for (k = 0; k < got; k++)
+            n = add_chunk(dir, c[k], names, list, n);
+    }
+    return n;
+}
+
+/* A NULL-terminated chunk list around the shadow chunk: a lit program's of
+ * `variant` (layer: with a peeled layer's chunks), or without lit the flat
+ * program's shadow test (the shadow chunk and those wrapping its seam). */
+static void program_chunks(const stin_context *ctx, const char *dir, int variant, int lit,
+                           int layer, char names[LIT_CHUNKS][40], const char *list[LIT_CHUNKS + 1])
+{
+    int n = lit ? feature_chunks(ctx, STIN__CHUNK_SURFACE, variant, dir, names, list, 0) : 0;
+    n = add_chunk(dir, lit_shadow_chunk(ctx), names, list, n);
+    n = feature_chunks(ctx, STIN__CHUNK_SEAM, variant, dir, names, list, n);
+    if (lit && layer)
+        n = feature_chunks(ctx, STIN__CHUNK_LAYER, variant, dir, names, list, n);
+    list[n] = NULL;
+}
+
+/* layer: with the chunks of a peeled layer (when a feature has them) */
+static int build_lit(stin_context *ctx, const char *dir, int variant, int tess, int layer,
                      const char *frag_defines, stin__program *p, char *msg, size_t size)
 {
-    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40];
-    const char *chunks[STIN__SURF_CHUNKS + 1];
+    char vert[32], frag[32], names[LIT_CHUNKS][40];
+    const char *chunks[LIT_CHUNKS + 1];
     stin__program_source src;
     stin__formatf(vert, sizeof vert, "%slit.vert", dir);
     stin__formatf(frag, sizeof frag, "%slit.frag", dir);
-    stin__surf_chunks(variant, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
-                      peel ? stin__peel_chunk(ctx) : NULL, names, chunks);
+    program_chunks(ctx, dir, variant, 1, layer, names, chunks);
     stin__memzero(&src, sizeof src);
     src.vert = vert;
     src.frag = frag;
@@ -83,10 +125,10 @@ static int build_lit(stin_context *ctx, const char *dir, int variant, int tess, 
 
 static int gl4(const stin_context *ctx) { return ctx->volume_vao != 0; }
 
-int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int peel,
+int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int layer,
                          const char *frag_defines, stin__program *p, char *msg, size_t size)
 {
-    return build_lit(ctx, gl4(ctx) ? "gl4/" : "gl2/", variant, tess, peel, frag_defines, p, msg,
+    return build_lit(ctx, gl4(ctx) ? "gl4/" : "gl2/", variant, tess, layer, frag_defines, p, msg,
                      size);
 }
 
@@ -105,45 +147,30 @@ static int build_variants(stin_context *ctx, const char *dir, int tess, int top,
     return best;
 }
 
-/* One lit program per surface variant from normal up to the surface choice;
- * a variant that does not build leaves the best at the one below it. */
+/* One lit program per variant from normal up to the one the choice asks
+ * for; a variant that does not build leaves the best at the one below it. */
 static void build_surface_variants(stin_context *ctx, const char *dir)
 {
-    stin_choice *c = &ctx->sel.choice[STIN_FEATURE_SURFACE];
-    int top = stin__surf_variant_of(c->technique);
+    int top = stin__lit_variant_top(ctx);
     char msg[160];
-    if (c->technique == STIN_TECH_SURFACE_DOT3) /* not chosen with GLSL lighting */
-        top = STIN__SURF_PLAIN;
     ctx->glsl_surface.best = build_variants(ctx, dir, 0, top, ctx->glsl_surface.lit, msg,
                                             sizeof msg);
-    if (ctx->glsl_surface.best < top) {
-        char why[200];
-        stin__formatf(why, sizeof why, "%s failed to build (%s)",
-                      stin_technique_name(stin__surf_technique_of(ctx->glsl_surface.best + 1)),
-                      msg);
-        stin__demote(ctx, STIN_FEATURE_SURFACE, stin__surf_technique_of(ctx->glsl_surface.best),
-                     why);
-    }
+    if (ctx->glsl_surface.best < top)
+        stin__lit_variant_failed(ctx, ctx->glsl_surface.best, msg);
 }
 
 /* The lit, normal, flat and volume programs into progs; 0 on failure (msg). */
 static int build_programs(stin_context *ctx, const char *dir, int tess, stin__program *progs,
                           char *msg, size_t msg_size)
 {
-    char vert[32], frag[32], names[STIN__SURF_CHUNKS][40], none_name[40];
-    const char *chunks[STIN__SURF_CHUNKS + 1], *shadow_only[STIN__SURF_CHUNKS + 1], *no_shadow[2];
+    char vert[32], frag[32], names[LIT_CHUNKS][40], flat_names[LIT_CHUNKS][40], none_name[40];
+    const char *chunks[LIT_CHUNKS + 1], *shadow_only[LIT_CHUNKS + 1], *no_shadow[2];
     int i;
     /* the lit program's surface and shadow functions (plain variant); flat.frag
-     * serves the visibility output (the shadow test: the plain variant's chunks
-     * less the surface's) and, with no test, the depth-only volume and map
-     * passes */
-    stin__surf_chunks(STIN__SURF_PLAIN, dir, lit_shadow_chunk(ctx), stin__translucent_chunk(ctx),
-                      stin__peel_chunk(ctx), names, chunks);
-    for (i = 0; chunks[i + 1]; i++)
-        shadow_only[i] = chunks[i + 1];
-    if (stin__peel_chunk(ctx)) /* it wraps the surface's normal: lit programs only */
-        i--;
-    shadow_only[i] = NULL;
+     * serves the visibility output (the shadow test) and, with no test, the
+     * depth-only volume and map passes */
+    program_chunks(ctx, dir, STIN__SURF_PLAIN, 1, 1, names, chunks);
+    program_chunks(ctx, dir, STIN__SURF_PLAIN, 0, 0, flat_names, shadow_only);
     stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
     no_shadow[0] = none_name;
     no_shadow[1] = NULL;
@@ -283,12 +310,23 @@ static void upload_lights(stin_context *ctx, const stin__program *p, const stin_
     lit_bind(ctx, p);
 }
 
+/* The features' uniforms for the pass: every one's in a lit program, else
+ * those whose chunk wraps the shadow chunk's seam (the flat program's). */
+static void features_uniforms(stin_context *ctx, const stin__program *p, int lit)
+{
+    const stin__path_feature *const *f;
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->uniforms && (lit || (*f)->place == STIN__CHUNK_SEAM))
+            (*f)->uniforms(ctx, p);
+}
+
 /* The per-frame uniforms of a lit program (matrices, eye, sampler units,
  * the current light batch), uploaded when the program is bound after they
  * changed: switching surface variants per draw costs this only once per
  * variant and pass. */
 static void lit_refresh(stin_context *ctx, stin__program *p)
 {
+    const stin__path_feature *const *f;
     const float zero[3] = {0, 0, 0};
     float inv[16];
     if (p->frame_serial == ctx->glsl_surface.serial)
@@ -298,7 +336,9 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
     stin__mat4_invert(inv, ctx->frame.view);
     GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
     GL(ctx, Uniform1i)(p->u_albedo_tex, 0);
-    stin__surf_units(ctx, p);
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->units)
+            (*f)->units(ctx, p);
     GL(ctx, Uniform1i)(p->u_light_count, ctx->glsl_surface.light_n);
     if (ctx->glsl_surface.light_n)
         GL(ctx, Uniform4fv)(p->u_lights, 4 * ctx->glsl_surface.light_n, ctx->glsl_surface.packed);
@@ -306,8 +346,7 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
                         ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
     if (ctx->shadow->uniforms)
         ctx->shadow->uniforms(ctx, p);
-    stin__translucent_uniforms(ctx, p);
-    stin__peel_uniforms(ctx, p);
+    features_uniforms(ctx, p, 1);
 }
 
 /* Makes p (a lit program) current with this pass's uniforms. */
@@ -323,12 +362,15 @@ static void lit_bind(stin_context *ctx, const stin__program *p)
 /* The lit program of a draw's surface variant, bound, with its material. */
 static const stin__program *lit_for_draw(stin_context *ctx, const stin__draw *d)
 {
-    int v = stin__surf_variant_for(ctx, &d->material);
+    const stin__path_feature *const *f;
+    int v = stin__lit_variant_for(ctx, &d->material);
     const stin__program *q = stin__lit_specialised(
         ctx, lit_program(ctx, v), v, ctx->glsl_surface.light_key,
         stin__texture_lookup(ctx, d->material.albedo) != NULL);
     lit_bind(ctx, q);
-    stin__surf_material(ctx, q, &d->material, v);
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->material)
+            (*f)->material(ctx, q, &d->material, v);
     return q;
 }
 
@@ -519,7 +561,7 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4],
 {
     const stin__program *p = use(ctx, STIN__PROG_FLAT);
     GL(ctx, Uniform4fv)(p->u_color, 1, color);
-    if (ctx->shadow->uniforms || stin__translucent_active(ctx)) { /* the lit pass's shadow test */
+    if (ctx->shadow->uniforms || stin__light_maps_active(ctx)) { /* the lit pass's shadow test */
         float inv[16];
         stin__mat4_invert(inv, ctx->frame.view);
         GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
@@ -534,7 +576,7 @@ static void glsl_flat(stin_context *ctx, int which, const float color[4],
         if (ctx->shadow->uniforms)
             ctx->shadow->uniforms(ctx, p);
     }
-    stin__translucent_uniforms(ctx, p);
+    features_uniforms(ctx, p, 0);
     pass_state(ctx, 1, 0);
     draw_set(ctx, p, which, 0);
     ctx->stats.passes++;
@@ -605,8 +647,11 @@ static void glsl_begin(stin_context *ctx)
 
 static void glsl_end(stin_context *ctx)
 {
+    const stin__path_feature *const *f;
     int i;
-    stin__surf_unbind(ctx);
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->unbind)
+            (*f)->unbind(ctx);
     ctx->glsl_surface.current = NULL;
     if (!gl4(ctx))
         for (i = 0; i < 4; i++)

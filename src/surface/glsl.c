@@ -2,8 +2,9 @@
 /* GL2/GL4 surface detail: the lit program's surface chunks (normal mapping,
  * parallax with offset limiting, parallax occlusion mapping), which variant a
  * draw gets, and the per-draw surface inputs. The programs themselves are
- * built and switched in render/path_glsl.c; shaders/gl2|gl4/surface_*.glsl hold the
- * GLSL. Texture units: albedo 0, normal map 1, height map 2. */
+ * built and switched in render/path_glsl.c, which calls these as the
+ * surface's hooks (render/path_features.h); shaders/gl2|gl4/surface_*.glsl
+ * hold the GLSL. Texture units: albedo 0, normal map 1, height map 2. */
 #include "internal.h"
 
 static const char *const variant_chunk[STIN__SURF_COUNT] = {
@@ -13,7 +14,7 @@ static const stin_technique variant_tech[STIN__SURF_COUNT] = {
     STIN_TECH_SURFACE_PLAIN, STIN_TECH_SURFACE_NORMAL, STIN_TECH_SURFACE_PARALLAX,
     STIN_TECH_SURFACE_POM};
 
-int stin__surf_variant_of(stin_technique t)
+static int variant_of(stin_technique t)
 {
     switch (t) {
     case STIN_TECH_SURFACE_POM: return STIN__SURF_POM;
@@ -25,38 +26,35 @@ int stin__surf_variant_of(stin_technique t)
     }
 }
 
-stin_technique stin__surf_technique_of(int variant)
+static stin_technique technique_of(int variant)
 {
     return (unsigned)variant < STIN__SURF_COUNT ? variant_tech[variant] : STIN_TECH_SURFACE_PLAIN;
 }
 
-void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk, const char *after,
-                       const char *last, char names[STIN__SURF_CHUNKS][40],
-                       const char *list[STIN__SURF_CHUNKS + 1])
+int stin__surf_variant_top(const stin_context *ctx)
+{
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_SURFACE].technique;
+    return t == STIN_TECH_SURFACE_DOT3 ? STIN__SURF_PLAIN /* not chosen with GLSL lighting */
+                                       : variant_of(t);
+}
+
+void stin__surf_variant_failed(stin_context *ctx, int built, const char *msg)
+{
+    char why[200];
+    stin__formatf(why, sizeof why, "%s failed to build (%s)",
+                  stin_technique_name(technique_of(built + 1)), msg);
+    stin__demote(ctx, STIN_FEATURE_SURFACE, technique_of(built), why);
+}
+
+int stin__surf_chunks(const stin_context *ctx, int variant,
+                      const char *names[STIN__FEATURE_CHUNKS])
 {
     int n = 0;
-    if (variant != STIN__SURF_PLAIN) {
-        stin__formatf(names[n], 40, "%ssurface_frame.glsl", dir);
-        list[n] = names[n];
-        n++;
-    }
-    stin__formatf(names[n], 40, "%s%s", dir, variant_chunk[(unsigned)variant < STIN__SURF_COUNT ? variant : 0]);
-    list[n] = names[n];
-    n++;
-    stin__formatf(names[n], 40, "%s%s", dir, shadow_chunk);
-    list[n] = names[n];
-    n++;
-    if (after) { /* a chunk wrapping the shadow chunk's seam (deep) */
-        stin__formatf(names[n], 40, "%s%s", dir, after);
-        list[n] = names[n];
-        n++;
-    }
-    if (last) { /* a chunk wrapping main's first call (depth-peel) */
-        stin__formatf(names[n], 40, "%s%s", dir, last);
-        list[n] = names[n];
-        n++;
-    }
-    list[n] = NULL;
+    (void)ctx; /* every context has them */
+    if (variant != STIN__SURF_PLAIN)
+        names[n++] = "surface_frame.glsl";
+    names[n++] = variant_chunk[(unsigned)variant < STIN__SURF_COUNT ? variant : 0];
+    return n;
 }
 
 /* A small hash of what decides a draw's step down: logged once per key. */
@@ -95,7 +93,7 @@ int stin__surf_variant_for(stin_context *ctx, const stin_material *m)
 {
     int want = ctx->glsl_surface.best, v;
     if (m->surface != STIN_TECH_NONE) {
-        int asked = stin__surf_variant_of(m->surface);
+        int asked = variant_of(m->surface);
         if (asked < want)
             want = asked; /* the material's own request: not a fallback */
     }

@@ -7,23 +7,26 @@
 
 #include "stin/stin.h"
 #include "render/path.h"
+#include "render/path_features.h"
 
-/* GLSL surface variants of the lit program: one program each (surface/glsl.c). */
-enum { STIN__SURF_PLAIN = 0, STIN__SURF_NORMAL, STIN__SURF_PARALLAX, STIN__SURF_POM,
-       STIN__SURF_COUNT };
+/* The lit program's variants are render/path_features.h's STIN__SURF_*:
+ * one program each (surface/glsl.c). */
 #define STIN__SURF_LOG_KEYS 32
 
 /* ---- surface: DOT3 bump mapping on the fixed-function path (surface/dot3.c) ----
  * Draws whose material has a normal map get their diffuse term per pixel from
  * the normal map; the fixed-function passes keep their ambient and specular
- * (set_material blacks out their diffuse through stin__dot3_material). */
-/* Creates the cube map when the technique is selected; a context without the
- * texture units or staging falls back to plain (an error if it was forced). */
+ * (set_material blacks out their diffuse through stin__dot3_material). The
+ * fixed path calls material, lights and batch as the surface's hooks
+ * (render/path_features.h, lent by frame/hooks.c). */
+/* Creates the cube map when the technique is selected (the frame's set-up
+ * of the fixed path); a context without the texture units or staging falls
+ * back to plain (an error if it was forced). */
 stin_result stin__dot3_init(stin_context *ctx);
 void stin__dot3_release(stin_context *ctx);
 /* 1 when this (opaque) material is drawn with DOT3 in the lit passes. */
 int stin__dot3_bumped(const stin_context *ctx, const stin_material *m);
-/* Called by the fixed path's set_material: diffuse off for bumped materials. */
+/* After the fixed path's set_material: diffuse off for bumped materials. */
 void stin__dot3_material(stin_context *ctx, const stin_material *m);
 /* Adds the DOT3 diffuse of the opaque bumped draws for the GL lights
  * 0..count-1 (set up as lights[0..count-1]), one additive pass per light
@@ -48,17 +51,17 @@ void stin__dot3_cube_face(int face, uint32_t size, unsigned char *rgba);
 /* ---- surface: GLSL normal / parallax / POM chunks (surface/glsl.c) --------
  * The lit program is built once per surface variant, from the context's
  * surface choice down to plain; a variant that fails to build lowers the
- * best one (logged). */
-/* Variant of a technique (plain for dot3/plain/none). */
-int stin__surf_variant_of(stin_technique t);
-stin_technique stin__surf_technique_of(int variant);
-/* The chunk files of a variant for directory dir ("gl2/"): writes up to
- * STIN__SURF_CHUNKS names into names (each 40 bytes) and a NULL-terminated
- * list into list, shadow_chunk then `after` and `last` (NULL: none). */
-#define STIN__SURF_CHUNKS 5
-void stin__surf_chunks(int variant, const char *dir, const char *shadow_chunk, const char *after,
-                       const char *last, char names[STIN__SURF_CHUNKS][40],
-                       const char *list[STIN__SURF_CHUNKS + 1]);
+ * best one (logged). The GLSL path calls these as the surface's hooks
+ * (render/path_features.h, lent by frame/hooks.c). */
+/* The variant the surface choice asks for (plain for dot3/plain/none). */
+int stin__surf_variant_top(const stin_context *ctx);
+/* The variant above `built` failed to build (msg): the choice steps down to
+ * `built` (logged). */
+void stin__surf_variant_failed(stin_context *ctx, int built, const char *msg);
+/* The chunk files of a variant (surface_frame.glsl, then the variant's
+ * functions) into names; returns how many. */
+int stin__surf_chunks(const stin_context *ctx, int variant,
+                      const char *names[STIN__FEATURE_CHUNKS]);
 /* The variant a draw's material gets (logs a step down once per material). */
 int stin__surf_variant_for(stin_context *ctx, const stin_material *m);
 /* Uniform locations of the surface chunks. */

@@ -11,10 +11,13 @@ stin_log_level stin__translucent_fallback_level(const stin_context *ctx, int sha
     return shadows_off && !forced ? STIN_LOG_LEVEL_INFO : STIN_LOG_LEVEL_WARNING;
 }
 
-const char *stin__translucent_chunk(const stin_context *ctx)
+int stin__translucent_chunks(const stin_context *ctx, int variant,
+                             const char *names[STIN__FEATURE_CHUNKS])
 {
     const char *deep = stin__deep_chunk(ctx);
-    return deep ? deep : stin__coloured_chunk(ctx);
+    (void)variant; /* the same lookup under every surface */
+    names[0] = deep ? deep : stin__coloured_chunk(ctx);
+    return names[0] != NULL;
 }
 
 static void locate(stin_context *ctx, GLuint prog, stin__translucent_locs *l,

@@ -15,6 +15,7 @@
 #include "stin/stin.h"
 #include "gl/gl_types.h"
 #include "render/path.h"
+#include "render/path_features.h"
 
 #define STIN__DEEP_FACES 6
 #define STIN__DEEP_MAX_LAYERS 16 /* desc.deep_layers at most */
@@ -105,8 +106,11 @@ void stin__coloured_light_done(struct stin_context *ctx);
 stin_log_level stin__translucent_fallback_level(const struct stin_context *ctx, int shadows_off);
 
 /* The translucent-shadows technique in use, whichever it is
- * (translucent/translucent.c). The lit programs' chunk after the shadow chunk, or NULL. */
-const char *stin__translucent_chunk(const struct stin_context *ctx);
+ * (translucent/translucent.c); the paths call these as its hooks
+ * (render/path_features.h, lent by frame/hooks.c). Its chunk wrapping the
+ * shadow chunk's seam, in names: 1, or 0 without one. */
+int stin__translucent_chunks(const struct stin_context *ctx, int variant,
+                             const char *names[STIN__FEATURE_CHUNKS]);
 void stin__translucent_locate(struct stin_context *ctx, stin__program *p);
 void stin__translucent_uniforms(struct stin_context *ctx, const stin__program *p);
 /* At the frame's light pre-passes: whether any draw is transparent (a

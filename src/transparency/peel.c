@@ -29,9 +29,12 @@ static int dual(const stin_context *ctx)
            STIN_TECH_TRANSPARENCY_DUAL_PEEL;
 }
 
-const char *stin__peel_chunk(const stin_context *ctx)
+int stin__peel_chunks(const stin_context *ctx, int variant,
+                      const char *names[STIN__FEATURE_CHUNKS])
 {
-    return !chosen(ctx) ? NULL : dual(ctx) ? "dual_peel.glsl" : "peel.glsl";
+    (void)variant; /* it wraps main's first call, whatever the surface */
+    names[0] = !chosen(ctx) ? NULL : dual(ctx) ? "dual_peel.glsl" : "peel.glsl";
+    return names[0] != NULL;
 }
 
 /* A window-sized texture of one of the peel's formats (DEPTH24_STENCIL8,
@@ -223,7 +226,7 @@ void stin__peel_uniforms(stin_context *ctx, const stin__program *p)
     GL(ctx, Uniform4fv)(p->u_peel_params, 1, params);
 }
 
-int stin__camera_set(const stin_context *ctx, const stin__draw *d)
+int stin__peel_camera_set(const stin_context *ctx, const stin__draw *d)
 {
     int blended = d->material.color[3] < 1.0f;
     if (ctx->peel.peeling)

@@ -15,6 +15,7 @@
 #include "stin/stin.h"
 #include "gl/gl_types.h"
 #include "render/path.h"
+#include "render/path_features.h"
 
 #define STIN__PEEL_MAX_LAYERS 64 /* desc.transparency_layers at most */
 
@@ -61,9 +62,12 @@ typedef struct stin__peel_state {
     stin__dual_state d;
 } stin__peel_state;
 
-/* The lit programs' chunk after the others ("peel.glsl") when depth-peel is
- * the choice, else NULL. */
-const char *stin__peel_chunk(const struct stin_context *ctx);
+/* The lit programs' chunk after the others ("peel.glsl", "dual_peel.glsl")
+ * in names when a peel is the choice: 1, else 0. The GLSL path calls this,
+ * locate, uniforms and camera_set as the transparency's hooks
+ * (render/path_features.h, lent by frame/hooks.c). */
+int stin__peel_chunks(const struct stin_context *ctx, int variant,
+                      const char *names[STIN__FEATURE_CHUNKS]);
 /* Set-up after the lighting path (textures come with the first frame, the
  * size of its viewport): a failure falls back to "sorted" (logged). */
 void stin__peel_init(struct stin_context *ctx);
@@ -75,7 +79,7 @@ void stin__peel_uniforms(struct stin_context *ctx, const stin__program *p);
 /* Which of STIN__OPAQUE / STIN__BLENDED a camera pass counts draw d in:
  * while a layer is peeled its blended draws are the pass's "opaque" ones
  * (lit like them) and the opaque draws are in no set. */
-int stin__camera_set(const struct stin_context *ctx, const stin__draw *d);
+int stin__peel_camera_set(const struct stin_context *ctx, const stin__draw *d);
 
 /* The frame's peeling, in the frame plan's blended stage:
  *   if (stin__peel_begin(ctx, path))
