@@ -638,7 +638,11 @@ int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li)
 }
 
 const stin__shadow_technique stin__shadow_map_fixed = {
-    STIN_TECH_SHADOWS_MAP_DEPTH, NULL, fixed_init, fixed_release, fixed_prepare, fixed_prepass,
-    fixed_light, NULL, NULL, 0,
-    NULL, stin__map_fixed_maps_light,
+    .technique = STIN_TECH_SHADOWS_MAP_DEPTH, /* and map-combine (frame/modules.c) */
+    .init = fixed_init,
+    .release = fixed_release,
+    .prepare = fixed_prepare,
+    .light_prepass = fixed_prepass,
+    .light = fixed_light,
+    .fragment_test = stin__map_fixed_maps_light,
 };

@@ -200,7 +200,12 @@ static int pcf_fragment_test(const stin_context *ctx, uint32_t li)
 }
 
 const stin__shadow_technique stin__shadow_map_pcf = {
-    STIN_TECH_SHADOWS_MAP_PCF, "shadow_pcf.glsl", pcf_init, pcf_release, NULL, pcf_prepass,
-    pcf_light, pcf_uniforms, NULL, 0,
-    NULL, pcf_fragment_test,
+    .technique = STIN_TECH_SHADOWS_MAP_PCF,
+    .glsl_chunk = "shadow_pcf.glsl",
+    .init = pcf_init,
+    .release = pcf_release,
+    .light_prepass = pcf_prepass,
+    .light = pcf_light,
+    .uniforms = pcf_uniforms,
+    .fragment_test = pcf_fragment_test,
 };

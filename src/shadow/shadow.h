@@ -23,6 +23,9 @@
 typedef void (*stin__shade_fn)(stin_context *ctx, const stin__path *path,
                                const stin_light_desc *light, float weight);
 
+/* A module's hooks, given by designated initialisers: a hook it leaves out
+ * is NULL (0 for the flags), which each hook's comment says the meaning of,
+ * so a new optional hook touches only the modules that have it. */
 typedef struct stin__shadow_technique {
     stin_technique technique;
     /* The GLSL lit and flat programs' shadow chunk (shaders/gl2), defining

@@ -390,10 +390,15 @@ static void vdsm_light(stin_context *ctx, const stin__path *path, uint32_t li,
 }
 
 const stin__shadow_technique stin__shadow_vdsm = {
-    STIN_TECH_SHADOWS_VDSM, "shadow_mask.glsl", vdsm_init,  release,
-    NULL,                   vdsm_prepass,       vdsm_light, stin__mask_uniforms,
-    vdsm_mask,
-    0, /* the polygons test the position buffer's depth: the mask's is never read */
-    stin__vdsm_tessellate,
-    NULL,
+    .technique = STIN_TECH_SHADOWS_VDSM,
+    .glsl_chunk = "shadow_mask.glsl",
+    .init = vdsm_init,
+    .release = release,
+    .light_prepass = vdsm_prepass,
+    .light = vdsm_light,
+    .uniforms = stin__mask_uniforms,
+    .mask = vdsm_mask,
+    /* the polygons test the position buffer's depth: the mask's is never read */
+    .mask_depth = 0,
+    .tessellate = stin__vdsm_tessellate,
 };

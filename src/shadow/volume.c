@@ -464,9 +464,13 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
 }
 
 const stin__shadow_technique stin__shadow_volume = {
-    STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", volume_init, stin__volume_extrude_release,
-    volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
-    volume_mask,
-    1, /* the volumes' stencil counts against the frame's depth */
-    NULL, NULL,
+    .technique = STIN_TECH_SHADOWS_VOLUME,
+    .glsl_chunk = "shadow_mask.glsl",
+    .init = volume_init,
+    .release = stin__volume_extrude_release,
+    .prepare = volume_prepare,
+    .light = volume_shadow_light,
+    .uniforms = stin__mask_uniforms,
+    .mask = volume_mask,
+    .mask_depth = 1, /* the volumes' stencil counts against the frame's depth */
 };
