@@ -66,6 +66,29 @@ typedef struct stin__shadow_technique {
      * test. NULL: no light's are (volumes and masks count or mask against
      * the nearest opaque surface). */
     int (*fragment_test)(const stin_context *ctx, uint32_t li);
+    /* Right after the CSG resolve (frame/frame.c), the products' depth and
+     * faces in place and before any pass reads them: what the technique drew
+     * of the frame's surfaces in its light pre-pass (vdsm: the position
+     * buffer) gets the products' surfaces too. NULL: nothing to add. */
+    void (*after_csg)(stin_context *ctx, const stin__path *path);
+    /* Peeled layers of a shadowed frame (frame/frame.c's blended draws
+     * under depth-peel and dual-peel), each lit by the per-light stages of
+     * the opaque draws. layers_begin, once before the first layer: 0 lights
+     * the layers unshadowed, and neither of the other two is called.
+     * layer, before the lights of each layer that has any, that layer's
+     * depth attached to ctx->draw_fbo: whatever the technique reads as the
+     * receivers (vdsm: the position buffer) becomes the layer's. layers_end,
+     * after the last layer: the frame's own receivers back for the stages
+     * after the blended draws (the visibility export). NULL: the technique
+     * needs nothing per layer (layers_begin: the layers are shadowed). */
+    int (*layers_begin)(stin_context *ctx);
+    void (*layer)(stin_context *ctx);
+    void (*layers_end)(stin_context *ctx, const stin__path *path);
+    /* After a shadowed frame's lighting and blended draws, before the
+     * visibility export (frame/frame.c): a picture the caller's debug flags
+     * ask for, drawn over the frame's colour, the frame's stats left as they
+     * are (volume: STIN_DEBUG_SHOW_VOLUMES). NULL: none. */
+    void (*debug_overlay)(stin_context *ctx, const stin__path *path);
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
@@ -225,20 +248,24 @@ typedef struct stin__vdsm_state {
     stin__vdsm_cull culling;
     float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
     int ready;              /* this frame's position buffer is drawn */
-    int said_area, said_failed, said_layer;
+    int said_area, said_failed, said_layer, said_unshadowed_layers;
     stin__vdsm_pyramid pyramid;
     stin__vdsm_csg csg;
 } stin__vdsm_state;
 
 /* The position buffer stage and its release (shadow/vdsm_buffer.c);
- * buffer_csg adds the CSG products' surfaces after their resolve. */
+ * buffer_csg adds the CSG products' surfaces after their resolve
+ * (stin__shadow_vdsm's after_csg). */
 void stin__vdsm_buffer_draw(stin_context *ctx);
 void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path);
-/* A peeled layer's surface as the buffer (during the layer's lights, its
- * depth texture on ctx->draw_fbo), and the opaque surfaces again after the
- * layers (shadow/vdsm_buffer.c). */
+/* Peeled layers (shadow/vdsm_buffer.c; stin__shadow_vdsm's layers_begin,
+ * layer and layers_end): lit unshadowed under
+ * STIN_DEBUG_PEEL_VDSM_UNSHADOWED; a layer's surface as the buffer (during
+ * the layer's lights, its depth texture on ctx->draw_fbo); the opaque
+ * surfaces again after the layers where the visibility export reads them. */
+int stin__vdsm_buffer_layers_begin(stin_context *ctx);
 void stin__vdsm_buffer_layer(stin_context *ctx);
-void stin__vdsm_buffer_opaque(stin_context *ctx, const stin__path *path);
+void stin__vdsm_buffer_layers_end(stin_context *ctx, const stin__path *path);
 void stin__vdsm_buffer_release(stin_context *ctx);
 /* The pyramid (shadow/vdsm_pyramid.c): programs and textures at set-up
  * (a failure leaves SM and DC off, logged); per light, with the screen mask
@@ -354,8 +381,6 @@ void stin__volume_extrude_init(stin_context *ctx);
 void stin__volume_extrude_release(stin_context *ctx);
 int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const float light_object[4],
                               int zfail);
-/* STIN_DEBUG_SHOW_VOLUMES: each light's volumes added over the frame's colour. */
-void stin__volume_debug_overlay(stin_context *ctx, const stin__path *path);
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or

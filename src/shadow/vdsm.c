@@ -401,4 +401,8 @@ const stin__shadow_technique stin__shadow_vdsm = {
     /* the polygons test the position buffer's depth: the mask's is never read */
     .mask_depth = 0,
     .tessellate = stin__vdsm_tessellate,
+    .after_csg = stin__vdsm_buffer_csg,
+    .layers_begin = stin__vdsm_buffer_layers_begin,
+    .layer = stin__vdsm_buffer_layer,
+    .layers_end = stin__vdsm_buffer_layers_end,
 };
