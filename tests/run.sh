@@ -11,6 +11,26 @@
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme and
 #              bench suites (make check-quick), STIN_TEST_JOBS.
 set -u
+# One suite (xargs runs this script again with --suite): its output, exit
+# status and wall seconds into SUITES/NNN.*. Dispatched before the set-up
+# below, which would take "--suite" for the build directory: its redirection
+# into a directory that does not exist ends the shell (dash, bash --posix).
+run_suite() {
+    dir=$1 num=$2
+    shift 2
+    shift # the name
+    start=$(date +%s.%N)
+    "$@" > "$dir/$num.out" 2>&1
+    echo $? > "$dir/$num.rc"
+    end=$(date +%s.%N)
+    echo "$start $end" | awk '{ printf "%.1f\n", $2 - $1 }' > "$dir/$num.seconds"
+}
+if [ "${1:-}" = --suite ]; then
+    shift
+    run_suite "$@"
+    exit 0
+fi
+
 B=${1:-build}
 LOG=$B/test-log.txt
 OUT=$B/test-out
@@ -51,23 +71,6 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         echo "bench sh tests/cli/test_bench.sh $B/stin-bench $OUT/bench-quick.txt"
     fi
 } | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
-
-# One suite: its output, exit status and wall seconds into SUITES/NNN.*.
-run_suite() {
-    dir=$1 num=$2
-    shift 2
-    shift # the name
-    start=$(date +%s.%N)
-    "$@" > "$dir/$num.out" 2>&1
-    echo $? > "$dir/$num.rc"
-    end=$(date +%s.%N)
-    echo "$start $end" | awk '{ printf "%.1f\n", $2 - $1 }' > "$dir/$num.seconds"
-}
-if [ "${1:-}" = --suite ]; then
-    shift
-    run_suite "$@"
-    exit 0
-fi
 
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/list"
 
