@@ -9,6 +9,7 @@
 #define STIN_SHADOW_H
 
 #include "stin/stin.h"
+#include "stin/stin_debug.h"
 #include "gl/gl_types.h"
 #include "render/path.h"
 
@@ -89,6 +90,12 @@ typedef struct stin__shadow_technique {
      * ask for, drawn over the frame's colour, the frame's stats left as they
      * are (volume: STIN_DEBUG_SHOW_VOLUMES). NULL: none. */
     void (*debug_overlay)(stin_context *ctx, const stin__path *path);
+    /* stin_debug_query_shadow_map (frame/debug.c), between frames: light
+     * li's map of the last frame into *out (zeroed by the caller) and
+     * STIN_OK, or STIN_ERROR_UNSUPPORTED where none is kept (a point light's
+     * faces, a light the maps did not cover). NULL: the technique keeps no
+     * maps. */
+    stin_result (*debug_map)(const stin_context *ctx, uint32_t li, stin_debug_map *out);
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
