@@ -120,17 +120,12 @@ static void locate(stin_context *ctx)
     stin__vdsm_polygon_locate(ctx, v->polygon_prog, &v->poly);
 }
 
-/* The technique below vdsm that runs here: volumes where the frame has a
- * stencil buffer, else PCF maps when their samplers fit, else none. */
+/* The technique below vdsm that runs here: the next one down the shadows
+ * chain whose needs, lighting, conflicts (displacement's) and units the
+ * technique table says fit beside the other choices. */
 static stin_technique fallback(const stin_context *ctx)
 {
-    uint64_t pcf = stin__technique_needs(STIN_TECH_SHADOWS_MAP_PCF);
-    if ((ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) && !stin__displace_built(ctx))
-        return STIN_TECH_SHADOWS_VOLUME; /* volumes cannot shadow displaced draws */
-    if ((ctx->caps.present & pcf) == pcf &&
-        ctx->sel.shadow_unit + STIN__SHADOW_SAMPLERS <= ctx->sel.unit_limit)
-        return STIN_TECH_SHADOWS_MAP_PCF;
-    return STIN_TECH_SHADOWS_OFF;
+    return stin__fallback(&ctx->caps, &ctx->sel, STIN_FEATURE_SHADOWS);
 }
 
 /* "displace-tess": the mesh-drawing programs again, tessellated; if they
