@@ -80,6 +80,7 @@ static void release(stin_context *ctx)
     stin__vdsm_cull_release(ctx);
     stin__vdsm_csg_release(ctx);
     stin__vdsm_buffer_release(ctx);
+    stin__mesh_adjacency_use(ctx, NULL);
 }
 
 void stin__vdsm_polygon_locate(stin_context *ctx, GLuint prog, stin__vdsm_polygon_locs *l)
@@ -197,6 +198,8 @@ static stin_result vdsm_init(stin_context *ctx)
     stin__vdsm_csg_init(ctx);
     if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
         GL(ctx, GenQueries)(1, &v->query);
+    /* step SM's occluders: the light pass reads each edge's neighbour */
+    stin__mesh_adjacency_use(ctx, "it casts, but does not count as an occluder for step SM");
     return STIN_OK;
 }
 
