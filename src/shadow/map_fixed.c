@@ -653,7 +653,6 @@ static stin_result fixed_debug_map(const stin_context *ctx, uint32_t li, stin_de
 }
 
 const stin__shadow_technique stin__shadow_map_fixed = {
-    .technique = STIN_TECH_SHADOWS_MAP_DEPTH, /* and map-combine (frame/modules.c) */
     .init = fixed_init,
     .release = fixed_release,
     .prepare = fixed_prepare,

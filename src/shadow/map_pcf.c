@@ -211,7 +211,6 @@ static stin_result pcf_debug_map(const stin_context *ctx, uint32_t li, stin_debu
 }
 
 const stin__shadow_technique stin__shadow_map_pcf = {
-    .technique = STIN_TECH_SHADOWS_MAP_PCF,
     .glsl_chunk = "shadow_pcf.glsl",
     .init = pcf_init,
     .release = pcf_release,

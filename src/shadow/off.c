@@ -2,6 +2,7 @@
 /* Shadows off: the module with no hooks. */
 #include "internal.h"
 
+/* light NULL: it casts no shadows; every other hook NULL too. */
 const stin__shadow_technique stin__shadow_off = {
-    .technique = STIN_TECH_SHADOWS_OFF,
+    .light = NULL,
 };

@@ -1,10 +1,12 @@
 /* SPDX-License-Identifier: MIT */
-/* Shadow techniques: one module each behind one interface (shadow/volume.c,
- * shadow/map_fixed.c, shadow/map_pcf.c, shadow/off.c), each owning its
- * state, and the light cameras the map techniques share
- * (render/light_camera.c). The frame plan (frame/frame.c) calls the hooks; a new
- * technique is a module, a row in select/technique_table.c and its entry in
- * frame/modules.c. */
+/* Shadow techniques: one module each behind one interface (shadow/vdsm.c,
+ * shadow/volume.c, shadow/map_fixed.c, shadow/map_pcf.c, shadow/off.c),
+ * each owning its state, and the light cameras the map techniques share
+ * (render/light_camera.c). The frame plan (frame/frame.c) calls the hooks
+ * and nothing outside a module asks which technique runs: a new technique
+ * is a module (its hooks, its state below and in the context), a row in
+ * select/technique_table.c, its entry in frame/modules.c and its public
+ * name in include/stin/stin.h. */
 #ifndef STIN_SHADOW_H
 #define STIN_SHADOW_H
 
@@ -26,9 +28,10 @@ typedef void (*stin__shade_fn)(stin_context *ctx, const stin__path *path,
 
 /* A module's hooks, given by designated initialisers: a hook it leaves out
  * is NULL (0 for the flags), which each hook's comment says the meaning of,
- * so a new optional hook touches only the modules that have it. */
+ * so a new optional hook touches only the modules that have it. A module
+ * carries no technique id to compare against: one may run several (map_fixed:
+ * map-depth and map-combine), and frame/modules.c maps ids to modules. */
 typedef struct stin__shadow_technique {
-    stin_technique technique;
     /* The GLSL lit and flat programs' shadow chunk (shaders/gl2), defining
      * vec3 shadow_transmittance(int light). */
     const char *glsl_chunk;

@@ -388,7 +388,6 @@ static void vdsm_light(stin_context *ctx, const stin__path *path, uint32_t li,
 }
 
 const stin__shadow_technique stin__shadow_vdsm = {
-    .technique = STIN_TECH_SHADOWS_VDSM,
     .glsl_chunk = "shadow_mask.glsl",
     .init = vdsm_init,
     .release = release,

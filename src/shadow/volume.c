@@ -468,7 +468,6 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
 }
 
 const stin__shadow_technique stin__shadow_volume = {
-    .technique = STIN_TECH_SHADOWS_VOLUME,
     .glsl_chunk = "shadow_mask.glsl",
     .init = volume_init,
     .release = stin__volume_extrude_release,
