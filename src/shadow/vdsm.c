@@ -145,7 +145,7 @@ static void build_tessellated(stin_context *ctx)
         return;
     stin__vdsm_delete_programs(ctx, &v->position_tess, &v->polygon_tess, &none);
     stin__formatf(why, sizeof why, "vdsm's tessellated programs failed to build (%s)", msg);
-    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
+    stin__displace_untessellate(ctx, why);
 }
 
 void stin__vdsm_tessellate(stin_context *ctx, int on)
