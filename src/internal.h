@@ -104,6 +104,10 @@ struct stin_context {
                                * get a mip chain for it (assets/texture.c) */
         int tessellate;       /* programs asked to tessellate are (gl/shader.c) */
     } vertex_chunk;
+    /* Meshes get adjacency buffers for the shadows module that asked
+     * (stin__mesh_adjacency_use): what a mesh without one gets, for the
+     * log; NULL: none do. */
+    const char *adjacency_use;
     int lights_per_pass;
 
     /* shadow technique modules: each owns its part */

@@ -15,8 +15,8 @@
  * triangle's own third vertex: the edge then counts as an outline for vdsm,
  * and the extrusion draws a side quad on it from each triangle (a facing
  * test of a neighbour read in the wrong order would be inverted). Only
- * where vdsm or the extruding volume technique runs: 24 bytes of GL memory
- * per triangle. */
+ * where the shadows module asked (stin__mesh_adjacency_use: vdsm, the
+ * extruding volume technique): 24 bytes of GL memory per triangle. */
 #include "internal.h"
 
 #define NO_TRI 0xffffffffu
@@ -50,10 +50,9 @@ static uint32_t far_vertex(const stin__vertex *verts, const uint32_t *tris, cons
     return own;
 }
 
-static int adjacency_wanted(const stin_context *ctx)
+void stin__mesh_adjacency_use(stin_context *ctx, const char *without)
 {
-    stin_technique t = ctx->sel.choice[STIN_FEATURE_SHADOWS].technique;
-    return t == STIN_TECH_SHADOWS_VDSM || (t == STIN_TECH_SHADOWS_VOLUME && ctx->volume.extrude_prog);
+    ctx->adjacency_use = without;
 }
 
 void stin__mesh_adjacency_buffer_upload(stin_context *ctx, stin__mesh_slot *m)
@@ -64,15 +63,13 @@ void stin__mesh_adjacency_buffer_upload(stin_context *ctx, stin__mesh_slot *m)
     uint32_t *out = (uint32_t *)(void *)ctx->scratch, t;
     size_t bytes = sizeof(uint32_t) * 6u * m->triangle_count;
     GLuint caller_vao;
-    if (!m->vao || !adjacency_wanted(ctx))
+    if (!m->vao || !ctx->adjacency_use)
         return;
     if (bytes > ctx->scratch_bytes || !m->triangle_count) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                   "%s: no scratch for a mesh's adjacency indices: %s",
                   stin_technique_name(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique),
-                  ctx->volume.extrude_prog ? "its volumes are built on the CPU"
-                                           : "it casts, but does not count as an occluder for "
-                                             "step SM");
+                  ctx->adjacency_use);
         return;
     }
     for (t = 0; t < m->triangle_count; t++) {

@@ -113,8 +113,11 @@ void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
 
 /* A mesh's triangles with their neighbours' far vertices (adj_ibo, drawn
  * through adj_vao), for vdsm's light pass and GL4's volume extrusion
- * (assets/mesh_adjacency_buffer.c): made at mesh creation where either is
- * the shadow technique, deleted with the mesh. */
+ * (assets/mesh_adjacency_buffer.c): made at mesh creation where the shadows
+ * module's set-up asked for them, deleted with the mesh. use: from now on
+ * meshes get them (without: what one that cannot gets, for the log; NULL:
+ * none do), so this layer need not know which technique reads them. */
+void stin__mesh_adjacency_use(struct stin_context *ctx, const char *without);
 void stin__mesh_adjacency_buffer_upload(struct stin_context *ctx, stin__mesh_slot *m);
 void stin__mesh_adjacency_buffer_release(struct stin_context *ctx, stin__mesh_slot *m);
 

@@ -21,7 +21,6 @@ stin_debug_counters stin_debug_query_counters(const stin_context *ctx)
 stin_result stin_debug_query_shadow_map(const stin_context *ctx, uint32_t light,
                                         stin_debug_map *out)
 {
-    stin_technique t;
     if (!ctx || !out)
         return STIN_ERROR_INVALID_ARGUMENT;
     if (ctx->state != STIN__IDLE)
@@ -29,20 +28,7 @@ stin_result stin_debug_query_shadow_map(const stin_context *ctx, uint32_t light,
     if (light >= ctx->light_count || light >= STIN__MAX_LIGHTS)
         return STIN_ERROR_INVALID_ARGUMENT;
     stin__memzero(out, sizeof *out);
-    t = ctx->shadow->technique;
-    if (t == STIN_TECH_SHADOWS_MAP_PCF && ctx->map_pcf.valid[light]) {
-        out->texture = ctx->map_pcf.textures[light];
-        out->size = out->allocated = ctx->map_pcf.size;
-        out->depth = 1;
-        return STIN_OK;
-    }
-    if ((t == STIN_TECH_SHADOWS_MAP_DEPTH || t == STIN_TECH_SHADOWS_MAP_COMBINE) &&
-        ctx->map_fixed.valid[light]) {
-        out->texture = ctx->map_fixed.textures[light];
-        out->size = ctx->map_fixed.used;
-        out->allocated = ctx->map_fixed.size;
-        out->depth = t == STIN_TECH_SHADOWS_MAP_DEPTH;
-        return STIN_OK;
-    }
-    return STIN_ERROR_UNSUPPORTED;
+    if (!ctx->shadow->debug_map)
+        return STIN_ERROR_UNSUPPORTED; /* the technique keeps no maps */
+    return ctx->shadow->debug_map(ctx, light, out);
 }

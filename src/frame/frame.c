@@ -394,44 +394,20 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
     ctx->peel.sorted_draw = NULL;
 }
 
-/* Blended draws. depth-peel and dual-peel (behind the same stin__peel_*
- * calls): layer by layer, each lit by the same stages as the opaque draws
- * (shadowed when the frame is), then composited over the frame. vdsm's position buffer is made again from each
- * layer (the layer's points, depth EQUAL against its depth) before the
- * layer's lights, so its per-light masks are the layer's; afterwards the
- * opaque surfaces go back into it where the visibility export still reads
- * it (STIN_DEBUG_PEEL_VDSM_UNSHADOWED: layers lit unshadowed instead).
- * sorted: per object far to near, lit and shadowed light by light where
- * the technique tests a map per fragment (sorted_shadowed), else in the
- * path's light batches unshadowed (logged by stin__sorted_shadowed). */
-static void blended_draws(stin_context *ctx, const stin__path *path, int shadowed)
+/* Peeled layers: each lit by the same stages as the opaque draws
+ * (shadowed when the frame is and the technique's layers_begin agrees),
+ * the technique's receivers made the layer's before its lights (vdsm: the
+ * position buffer, so its per-light masks are the layer's) and the frame's
+ * own again after the last layer; then composited over the frame. */
+static void peeled_layers(stin_context *ctx, const stin__path *path, int shadowed)
 {
-    int vdsm_layers;
-    if (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY)
-        return;
-    if (!stin__peel_begin(ctx, path)) {
-        stin__sorted_frame(ctx);
-        if (shadowed && stin__sorted_shadowed(ctx))
-            sorted_shadowed(ctx, path);
-        else
-            path->batches(ctx, STIN__BLENDED);
-        return;
-    }
-    if (shadowed && ctx->shadow == &stin__shadow_vdsm &&
-        (ctx->desc.debug_flags & STIN_DEBUG_PEEL_VDSM_UNSHADOWED)) {
-        if (!ctx->peel.said_vdsm)
-            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                      "peeling: STIN_DEBUG_PEEL_VDSM_UNSHADOWED: peeled layers are lit "
-                      "unshadowed under vdsm");
-        ctx->peel.said_vdsm = 1;
-        shadowed = 0;
-    }
-    vdsm_layers = shadowed && ctx->shadow == &stin__shadow_vdsm;
+    const stin__shadow_technique *t = ctx->shadow;
+    shadowed = shadowed && (!t->layers_begin || t->layers_begin(ctx));
     while (stin__peel_layer_begin(ctx)) {
         path->ambient(ctx, STIN__OPAQUE, 0); /* the layer's depth, ambient and opacity */
         if (stin__peel_layer_lights(ctx)) {
-            if (vdsm_layers)
-                stin__vdsm_buffer_layer(ctx); /* the layer is the receiver now */
+            if (shadowed && t->layer)
+                t->layer(ctx); /* the layer is the receiver now */
             if (shadowed)
                 stage_lights(ctx, path, 0);
             else
@@ -440,8 +416,28 @@ static void blended_draws(stin_context *ctx, const stin__path *path, int shadowe
         stin__peel_layer_end(ctx);
     }
     stin__peel_end(ctx);
-    if (vdsm_layers && ctx->frame.export_visibility)
-        stin__vdsm_buffer_opaque(ctx, path);
+    if (shadowed && t->layers_end)
+        t->layers_end(ctx, path);
+}
+
+/* Blended draws. depth-peel and dual-peel (behind the same stin__peel_*
+ * calls): peeled_layers. sorted: per object far to near, lit and shadowed
+ * light by light where the technique tests a map per fragment
+ * (sorted_shadowed), else in the path's light batches unshadowed (logged by
+ * stin__sorted_shadowed). */
+static void blended_draws(stin_context *ctx, const stin__path *path, int shadowed)
+{
+    if (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY)
+        return;
+    if (stin__peel_begin(ctx, path)) {
+        peeled_layers(ctx, path, shadowed);
+        return;
+    }
+    stin__sorted_frame(ctx);
+    if (shadowed && stin__sorted_shadowed(ctx))
+        sorted_shadowed(ctx, path);
+    else
+        path->batches(ctx, STIN__BLENDED);
 }
 
 static void stage_blended(stin_context *ctx, const stin__path *path, int shadowed)
@@ -470,8 +466,8 @@ static void run_plan(stin_context *ctx)
         (void)stin__times_enter(ctx, STIN_STAGE_CSG);
     if (stin__csg_resolve(ctx, path)) { /* the products' depth, under every later pass */
         stin__csg_faces(ctx);
-        if (ctx->shadow == &stin__shadow_vdsm)
-            stin__vdsm_buffer_csg(ctx, path);
+        if (ctx->shadow->after_csg)
+            ctx->shadow->after_csg(ctx, path);
     }
     (void)stin__times_enter(ctx, STIN_STAGE_BASE);
     if (ctx->frame.export_visibility == STIN_EXPORT_VISIBILITY_ONLY) {
@@ -491,9 +487,8 @@ static void run_plan(stin_context *ctx)
         path->batches(ctx, STIN__OPAQUE);
         stage_blended(ctx, path, 0);
     }
-    if ((ctx->desc.debug_flags & STIN_DEBUG_SHOW_VOLUMES) && ctx->shadow == &stin__shadow_volume &&
-        shadowed)
-        stin__volume_debug_overlay(ctx, path);
+    if (shadowed && ctx->shadow->debug_overlay)
+        ctx->shadow->debug_overlay(ctx, path);
     (void)stin__times_enter(ctx, STIN_STAGE_EXPORT);
     stin__export_stage(ctx, path, shadowed);
     stin__outline_stage(ctx, path);

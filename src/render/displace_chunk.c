@@ -35,6 +35,11 @@ void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why
     stin__displace_hand_down(ctx);
 }
 
+void stin__displace_untessellate(stin_context *ctx, const char *why)
+{
+    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
+}
+
 GLenum stin__displace_primitive(const stin__displace_locs *l)
 {
     return l && l->patches ? GL_PATCHES : GL_TRIANGLES;

@@ -23,6 +23,10 @@ void stin__displace_hand_down(stin_context *ctx);
 /* Displacement steps down to `to` (logged, as stin__demote) and the layers
  * below are told. */
 void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why);
+/* A layer's tessellated programs failed to build: displacement goes on
+ * without tessellation ("displace"), the step down logged with why, so the
+ * layer need not name displacement's techniques. */
+void stin__displace_untessellate(stin_context *ctx, const char *why);
 /* What a program's mesh draws are: GL_PATCHES (tessellated) or GL_TRIANGLES. */
 GLenum stin__displace_primitive(const stin__displace_locs *l);
 /* 1 when this material's draws are displaced. */

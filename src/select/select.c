@@ -324,6 +324,72 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
     return choose_after_lighting(caps, forced_tech, out, msg, msg_size);
 }
 
+/* ---- after set-up: falling back and conflicts ------------------------------ */
+
+/* Where feature f's fragment units start (place_units); the features
+ * without any start after the rest. */
+static int first_unit(const stin__selection *sel, stin_feature f)
+{
+    switch (f) {
+    case STIN_FEATURE_LIGHTING: return 0;
+    case STIN_FEATURE_SURFACE: return sel->surface_unit;
+    case STIN_FEATURE_SHADOWS: return sel->shadow_unit;
+    case STIN_FEATURE_TRANSLUCENT_SHADOWS: return sel->translucent_unit;
+    case STIN_FEATURE_TRANSPARENCY: return sel->transparency_unit;
+    default: return sel->units_used;
+    }
+}
+
+/* STIN__TECH_BIT()s of every feature's choice but f's. */
+static uint64_t others_chosen(const stin__selection *sel, stin_feature f)
+{
+    uint64_t bits = 0;
+    int g;
+    for (g = 0; g < STIN_FEATURE_COUNT; g++)
+        if (g != (int)f && (unsigned)sel->choice[g].technique < STIN_TECH_COUNT)
+            bits |= STIN__TECH_BIT(sel->choice[g].technique);
+    return bits;
+}
+
+stin_technique stin__fallback(const stin_caps *caps, const stin__selection *sel, stin_feature f)
+{
+    stin_technique chain[STIN_TECH_COUNT];
+    chain_input in;
+    char why[160];
+    int n = stin__feature_chain(f, chain), i = 0;
+    while (i < n && chain[i] != sel->choice[f].technique)
+        i++;
+    stin__memzero(&in, sizeof in);
+    in.caps = caps;
+    in.tier = sel->tier;
+    in.feature = f;
+    in.forced = STIN_TECH_NONE; /* (forced_all 0: no room is kept for forced ones) */
+    in.lighting = sel->choice[STIN_FEATURE_LIGHTING].technique;
+    in.chosen = others_chosen(sel, f);
+    in.unit_limit = sel->unit_limit;
+    in.units_left = sel->unit_limit - first_unit(sel, f);
+    for (i++; i < n; i++) {
+        why_not(&in, chain[i], why, sizeof why);
+        if (!why[0])
+            return chain[i];
+    }
+    return n > 0 ? chain[n - 1] : STIN_TECH_NONE;
+}
+
+stin_technique stin__choice_conflict(const stin__selection *sel, stin_feature f)
+{
+    uint64_t own = STIN__TECH_BIT(sel->choice[f].technique);
+    int g;
+    for (g = 0; g < STIN_FEATURE_COUNT; g++) {
+        stin_technique t = sel->choice[g].technique;
+        if (g == (int)f || (unsigned)t >= STIN_TECH_COUNT)
+            continue;
+        if ((conflicts_of(own) & STIN__TECH_BIT(t)) || (conflicts_of(STIN__TECH_BIT(t)) & own))
+            return t;
+    }
+    return STIN_TECH_NONE;
+}
+
 void stin__demote(stin_context *ctx, stin_feature f, stin_technique to, const char *why)
 {
     stin__demote_at(ctx, STIN_LOG_LEVEL_WARNING, f, to, why);

@@ -59,6 +59,18 @@ void stin__demote(struct stin_context *ctx, stin_feature f, stin_technique to, c
 void stin__demote_at(struct stin_context *ctx, stin_log_level level, stin_feature f,
                      stin_technique to, const char *why);
 
+/* For a module whose feature f's choice cannot run after all (before
+ * stin__demote): the next technique down f's chain that runs beside the
+ * other features' choices - the context has its capabilities, it runs on
+ * the chosen tier and lighting, no other choice conflicts with it, and its
+ * fragment units fit from f's first unit on (the units placed after f's
+ * stay where they are). The chain's last where none does. */
+stin_technique stin__fallback(const stin_caps *caps, const stin__selection *sel, stin_feature f);
+/* The technique of another feature that feature f's choice conflicts with
+ * (a conflict in either row), STIN_TECH_NONE where none does: for a choice
+ * that a later fall back of another feature put beside it. */
+stin_technique stin__choice_conflict(const stin__selection *sel, stin_feature f);
+
 /* Row accessors kept for callers that ask one thing. */
 uint64_t stin__technique_needs(stin_technique t);
 stin_feature stin__technique_feature(stin_technique t);

@@ -637,8 +637,27 @@ int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li)
             (ctx->lights[li].type == STIN_LIGHT_POINT && ctx->map_fixed.faces));
 }
 
+/* A spot or directional light's map, for looking at: map-depth's depth
+ * texture or map-combine's RGBA8 ramp (one module runs both, so the kind is
+ * the selection's, not the module's). Without FBOs only `used` texels a
+ * side were drawn (bounded by the viewport). */
+static stin_result fixed_debug_map(const stin_context *ctx, uint32_t li, stin_debug_map *out)
+{
+    if (!ctx->map_fixed.valid[li])
+        return STIN_ERROR_UNSUPPORTED;
+    out->texture = ctx->map_fixed.textures[li];
+    out->size = ctx->map_fixed.used;
+    out->allocated = ctx->map_fixed.size;
+    out->depth = !combine(ctx);
+    return STIN_OK;
+}
+
 const stin__shadow_technique stin__shadow_map_fixed = {
-    STIN_TECH_SHADOWS_MAP_DEPTH, NULL, fixed_init, fixed_release, fixed_prepare, fixed_prepass,
-    fixed_light, NULL, NULL, 0,
-    NULL, stin__map_fixed_maps_light,
+    .init = fixed_init,
+    .release = fixed_release,
+    .prepare = fixed_prepare,
+    .light_prepass = fixed_prepass,
+    .light = fixed_light,
+    .fragment_test = stin__map_fixed_maps_light,
+    .debug_map = fixed_debug_map,
 };

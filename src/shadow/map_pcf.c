@@ -199,8 +199,24 @@ static int pcf_fragment_test(const stin_context *ctx, uint32_t li)
     return 1;
 }
 
+/* A spot or directional light's map, for looking at. */
+static stin_result pcf_debug_map(const stin_context *ctx, uint32_t li, stin_debug_map *out)
+{
+    if (!ctx->map_pcf.valid[li])
+        return STIN_ERROR_UNSUPPORTED;
+    out->texture = ctx->map_pcf.textures[li];
+    out->size = out->allocated = ctx->map_pcf.size;
+    out->depth = 1;
+    return STIN_OK;
+}
+
 const stin__shadow_technique stin__shadow_map_pcf = {
-    STIN_TECH_SHADOWS_MAP_PCF, "shadow_pcf.glsl", pcf_init, pcf_release, NULL, pcf_prepass,
-    pcf_light, pcf_uniforms, NULL, 0,
-    NULL, pcf_fragment_test,
+    .glsl_chunk = "shadow_pcf.glsl",
+    .init = pcf_init,
+    .release = pcf_release,
+    .light_prepass = pcf_prepass,
+    .light = pcf_light,
+    .uniforms = pcf_uniforms,
+    .fragment_test = pcf_fragment_test,
+    .debug_map = pcf_debug_map,
 };

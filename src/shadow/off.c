@@ -2,7 +2,7 @@
 /* Shadows off: the module with no hooks. */
 #include "internal.h"
 
+/* light NULL: it casts no shadows; every other hook NULL too. */
 const stin__shadow_technique stin__shadow_off = {
-    STIN_TECH_SHADOWS_OFF, NULL, NULL, NULL, NULL, NULL, NULL, NULL, NULL, 0,
-    NULL, NULL,
+    .light = NULL,
 };

@@ -1,14 +1,17 @@
 /* SPDX-License-Identifier: MIT */
-/* Shadow techniques: one module each behind one interface (shadow/volume.c,
- * shadow/map_fixed.c, shadow/map_pcf.c, shadow/off.c), each owning its
- * state, and the light cameras the map techniques share
- * (render/light_camera.c). The frame plan (frame/frame.c) calls the hooks; a new
- * technique is a module, a row in select/technique_table.c and its entry in
- * frame/modules.c. */
+/* Shadow techniques: one module each behind one interface (shadow/vdsm.c,
+ * shadow/volume.c, shadow/map_fixed.c, shadow/map_pcf.c, shadow/off.c),
+ * each owning its state, and the light cameras the map techniques share
+ * (render/light_camera.c). The frame plan (frame/frame.c) calls the hooks
+ * and nothing outside a module asks which technique runs: a new technique
+ * is a module (its hooks, its state below and in the context), a row in
+ * select/technique_table.c, its entry in frame/modules.c and its public
+ * name in include/stin/stin.h. */
 #ifndef STIN_SHADOW_H
 #define STIN_SHADOW_H
 
 #include "stin/stin.h"
+#include "stin/stin_debug.h"
 #include "gl/gl_types.h"
 #include "render/path.h"
 
@@ -23,8 +26,12 @@
 typedef void (*stin__shade_fn)(stin_context *ctx, const stin__path *path,
                                const stin_light_desc *light, float weight);
 
+/* A module's hooks, given by designated initialisers: a hook it leaves out
+ * is NULL (0 for the flags), which each hook's comment says the meaning of,
+ * so a new optional hook touches only the modules that have it. A module
+ * carries no technique id to compare against: one may run several (map_fixed:
+ * map-depth and map-combine), and frame/modules.c maps ids to modules. */
 typedef struct stin__shadow_technique {
-    stin_technique technique;
     /* The GLSL lit and flat programs' shadow chunk (shaders/gl2), defining
      * vec3 shadow_transmittance(int light). */
     const char *glsl_chunk;
@@ -63,6 +70,35 @@ typedef struct stin__shadow_technique {
      * test. NULL: no light's are (volumes and masks count or mask against
      * the nearest opaque surface). */
     int (*fragment_test)(const stin_context *ctx, uint32_t li);
+    /* Right after the CSG resolve (frame/frame.c), the products' depth and
+     * faces in place and before any pass reads them: what the technique drew
+     * of the frame's surfaces in its light pre-pass (vdsm: the position
+     * buffer) gets the products' surfaces too. NULL: nothing to add. */
+    void (*after_csg)(stin_context *ctx, const stin__path *path);
+    /* Peeled layers of a shadowed frame (frame/frame.c's blended draws
+     * under depth-peel and dual-peel), each lit by the per-light stages of
+     * the opaque draws. layers_begin, once before the first layer: 0 lights
+     * the layers unshadowed, and neither of the other two is called.
+     * layer, before the lights of each layer that has any, that layer's
+     * depth attached to ctx->draw_fbo: whatever the technique reads as the
+     * receivers (vdsm: the position buffer) becomes the layer's. layers_end,
+     * after the last layer: the frame's own receivers back for the stages
+     * after the blended draws (the visibility export). NULL: the technique
+     * needs nothing per layer (layers_begin: the layers are shadowed). */
+    int (*layers_begin)(stin_context *ctx);
+    void (*layer)(stin_context *ctx);
+    void (*layers_end)(stin_context *ctx, const stin__path *path);
+    /* After a shadowed frame's lighting and blended draws, before the
+     * visibility export (frame/frame.c): a picture the caller's debug flags
+     * ask for, drawn over the frame's colour, the frame's stats left as they
+     * are (volume: STIN_DEBUG_SHOW_VOLUMES). NULL: none. */
+    void (*debug_overlay)(stin_context *ctx, const stin__path *path);
+    /* stin_debug_query_shadow_map (frame/debug.c), between frames: light
+     * li's map of the last frame into *out (zeroed by the caller) and
+     * STIN_OK, or STIN_ERROR_UNSUPPORTED where none is kept (a point light's
+     * faces, a light the maps did not cover). NULL: the technique keeps no
+     * maps. */
+    stin_result (*debug_map)(const stin_context *ctx, uint32_t li, stin_debug_map *out);
 } stin__shadow_technique;
 
 extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
@@ -222,20 +258,24 @@ typedef struct stin__vdsm_state {
     stin__vdsm_cull culling;
     float camera[4];        /* world: the eye (w 1) or the direction toward it (w 0) */
     int ready;              /* this frame's position buffer is drawn */
-    int said_area, said_failed, said_layer;
+    int said_area, said_failed, said_layer, said_unshadowed_layers;
     stin__vdsm_pyramid pyramid;
     stin__vdsm_csg csg;
 } stin__vdsm_state;
 
 /* The position buffer stage and its release (shadow/vdsm_buffer.c);
- * buffer_csg adds the CSG products' surfaces after their resolve. */
+ * buffer_csg adds the CSG products' surfaces after their resolve
+ * (stin__shadow_vdsm's after_csg). */
 void stin__vdsm_buffer_draw(stin_context *ctx);
 void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path);
-/* A peeled layer's surface as the buffer (during the layer's lights, its
- * depth texture on ctx->draw_fbo), and the opaque surfaces again after the
- * layers (shadow/vdsm_buffer.c). */
+/* Peeled layers (shadow/vdsm_buffer.c; stin__shadow_vdsm's layers_begin,
+ * layer and layers_end): lit unshadowed under
+ * STIN_DEBUG_PEEL_VDSM_UNSHADOWED; a layer's surface as the buffer (during
+ * the layer's lights, its depth texture on ctx->draw_fbo); the opaque
+ * surfaces again after the layers where the visibility export reads them. */
+int stin__vdsm_buffer_layers_begin(stin_context *ctx);
 void stin__vdsm_buffer_layer(stin_context *ctx);
-void stin__vdsm_buffer_opaque(stin_context *ctx, const stin__path *path);
+void stin__vdsm_buffer_layers_end(stin_context *ctx, const stin__path *path);
 void stin__vdsm_buffer_release(stin_context *ctx);
 /* The pyramid (shadow/vdsm_pyramid.c): programs and textures at set-up
  * (a failure leaves SM and DC off, logged); per light, with the screen mask
@@ -351,8 +391,6 @@ void stin__volume_extrude_init(stin_context *ctx);
 void stin__volume_extrude_release(stin_context *ctx);
 int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const float light_object[4],
                               int zfail);
-/* STIN_DEBUG_SHOW_VOLUMES: each light's volumes added over the frame's colour. */
-void stin__volume_debug_overlay(stin_context *ctx, const stin__path *path);
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or

@@ -80,6 +80,7 @@ static void release(stin_context *ctx)
     stin__vdsm_cull_release(ctx);
     stin__vdsm_csg_release(ctx);
     stin__vdsm_buffer_release(ctx);
+    stin__mesh_adjacency_use(ctx, NULL);
 }
 
 void stin__vdsm_polygon_locate(stin_context *ctx, GLuint prog, stin__vdsm_polygon_locs *l)
@@ -120,17 +121,12 @@ static void locate(stin_context *ctx)
     stin__vdsm_polygon_locate(ctx, v->polygon_prog, &v->poly);
 }
 
-/* The technique below vdsm that runs here: volumes where the frame has a
- * stencil buffer, else PCF maps when their samplers fit, else none. */
+/* The technique below vdsm that runs here: the next one down the shadows
+ * chain whose needs, lighting, conflicts (displacement's) and units the
+ * technique table says fit beside the other choices. */
 static stin_technique fallback(const stin_context *ctx)
 {
-    uint64_t pcf = stin__technique_needs(STIN_TECH_SHADOWS_MAP_PCF);
-    if ((ctx->caps.present & STIN_CAP_BIT(STIN_CAP_STENCIL)) && !stin__displace_built(ctx))
-        return STIN_TECH_SHADOWS_VOLUME; /* volumes cannot shadow displaced draws */
-    if ((ctx->caps.present & pcf) == pcf &&
-        ctx->sel.shadow_unit + STIN__SHADOW_SAMPLERS <= ctx->sel.unit_limit)
-        return STIN_TECH_SHADOWS_MAP_PCF;
-    return STIN_TECH_SHADOWS_OFF;
+    return stin__fallback(&ctx->caps, &ctx->sel, STIN_FEATURE_SHADOWS);
 }
 
 /* "displace-tess": the mesh-drawing programs again, tessellated; if they
@@ -149,7 +145,7 @@ static void build_tessellated(stin_context *ctx)
         return;
     stin__vdsm_delete_programs(ctx, &v->position_tess, &v->polygon_tess, &none);
     stin__formatf(why, sizeof why, "vdsm's tessellated programs failed to build (%s)", msg);
-    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
+    stin__displace_untessellate(ctx, why);
 }
 
 void stin__vdsm_tessellate(stin_context *ctx, int on)
@@ -202,6 +198,8 @@ static stin_result vdsm_init(stin_context *ctx)
     stin__vdsm_csg_init(ctx);
     if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
         GL(ctx, GenQueries)(1, &v->query);
+    /* step SM's occluders: the light pass reads each edge's neighbour */
+    stin__mesh_adjacency_use(ctx, "it casts, but does not count as an occluder for step SM");
     return STIN_OK;
 }
 
@@ -390,10 +388,18 @@ static void vdsm_light(stin_context *ctx, const stin__path *path, uint32_t li,
 }
 
 const stin__shadow_technique stin__shadow_vdsm = {
-    STIN_TECH_SHADOWS_VDSM, "shadow_mask.glsl", vdsm_init,  release,
-    NULL,                   vdsm_prepass,       vdsm_light, stin__mask_uniforms,
-    vdsm_mask,
-    0, /* the polygons test the position buffer's depth: the mask's is never read */
-    stin__vdsm_tessellate,
-    NULL,
+    .glsl_chunk = "shadow_mask.glsl",
+    .init = vdsm_init,
+    .release = release,
+    .light_prepass = vdsm_prepass,
+    .light = vdsm_light,
+    .uniforms = stin__mask_uniforms,
+    .mask = vdsm_mask,
+    /* the polygons test the position buffer's depth: the mask's is never read */
+    .mask_depth = 0,
+    .tessellate = stin__vdsm_tessellate,
+    .after_csg = stin__vdsm_buffer_csg,
+    .layers_begin = stin__vdsm_buffer_layers_begin,
+    .layer = stin__vdsm_buffer_layer,
+    .layers_end = stin__vdsm_buffer_layers_end,
 };

@@ -234,6 +234,20 @@ static GLuint layer_depth(stin_context *ctx)
     return type == GL_TEXTURE && name > 0 ? (GLuint)name : 0;
 }
 
+/* STIN_DEBUG_PEEL_VDSM_UNSHADOWED: the layers are lit unshadowed (once
+ * said), for comparing peeling's cost with and without vdsm per layer. */
+int stin__vdsm_buffer_layers_begin(stin_context *ctx)
+{
+    if (!(ctx->desc.debug_flags & STIN_DEBUG_PEEL_VDSM_UNSHADOWED))
+        return 1;
+    if (!ctx->vdsm.said_unshadowed_layers)
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                  "peeling: STIN_DEBUG_PEEL_VDSM_UNSHADOWED: peeled layers are lit "
+                  "unshadowed under vdsm");
+    ctx->vdsm.said_unshadowed_layers = 1;
+    return 0;
+}
+
 /* A peeled layer's surface as the buffer (frame/frame.c, before the layer's
  * lights): the blended draws depth EQUAL against the layer's own depth
  * texture, attached here in place of the buffer's depth, without writing
@@ -289,9 +303,11 @@ void stin__vdsm_buffer_layer(stin_context *ctx)
 
 /* After the layers: the opaque surfaces into the buffer again, for the
  * stages that still read it (the visibility export's masks). */
-void stin__vdsm_buffer_opaque(stin_context *ctx, const stin__path *path)
+void stin__vdsm_buffer_layers_end(stin_context *ctx, const stin__path *path)
 {
     const int *vp = ctx->frame.viewport;
+    if (!ctx->frame.export_visibility)
+        return;
     stin__vdsm_buffer_draw(ctx);
     stin__vdsm_buffer_csg(ctx, path);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);

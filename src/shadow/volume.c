@@ -416,11 +416,15 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     stin__volume_light_end(ctx);
 }
 
-void stin__volume_debug_overlay(stin_context *ctx, const stin__path *path)
+/* STIN_DEBUG_SHOW_VOLUMES: each light's volumes over the frame's colour,
+ * a faint orange added per face, so their overlaps show. */
+static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
 {
     static const float tint[4] = {0.10f, 0.05f, 0.0f, 1.0f};
     stin__pass_state ps = stin__pass_defaults;
     uint32_t li, i, counted = ctx->stats.shadow_volume_triangles;
+    if (!(ctx->desc.debug_flags & STIN_DEBUG_SHOW_VOLUMES))
+        return;
     ps.depth_test = 1;
     ps.depth_write = 0;
     ps.blend = 1;
@@ -464,9 +468,13 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
 }
 
 const stin__shadow_technique stin__shadow_volume = {
-    STIN_TECH_SHADOWS_VOLUME, "shadow_mask.glsl", volume_init, stin__volume_extrude_release,
-    volume_prepare,           NULL,               volume_shadow_light, stin__mask_uniforms,
-    volume_mask,
-    1, /* the volumes' stencil counts against the frame's depth */
-    NULL, NULL,
+    .glsl_chunk = "shadow_mask.glsl",
+    .init = volume_init,
+    .release = stin__volume_extrude_release,
+    .prepare = volume_prepare,
+    .light = volume_shadow_light,
+    .uniforms = stin__mask_uniforms,
+    .mask = volume_mask,
+    .mask_depth = 1, /* the volumes' stencil counts against the frame's depth */
+    .debug_overlay = volume_debug_overlay,
 };

@@ -44,6 +44,7 @@ void stin__volume_extrude_init(stin_context *ctx)
     v->set_mode = -1;
     if (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_COUNT)
         GL(ctx, GenQueries)(1, &v->count_query);
+    stin__mesh_adjacency_use(ctx, "its volumes are built on the CPU");
     stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_TECHNIQUE_SELECTED,
               "volume: extruded by a geometry shader from each mesh's adjacency indices");
 }
@@ -56,6 +57,7 @@ void stin__volume_extrude_release(stin_context *ctx)
     if (v->count_query)
         GL(ctx, DeleteQueries)(1, &v->count_query);
     v->extrude_prog = v->count_query = 0;
+    stin__mesh_adjacency_use(ctx, NULL);
 }
 
 static void draw_mode(stin_context *ctx, const stin__mesh_slot *m, int mode)

@@ -6,9 +6,9 @@
  * surface; "displace-tess" (GL4 with tessellation) runs the same vertex
  * shaders as evaluation stages behind gl4/tess.tesc's screen-space edge
  * levels. Here: the per-frame tessellation scale, the tessellated programs
- * swapped in for frames with displaced draws, and the step down beside
- * stencil volumes; the chunk every program carries is
- * render/displace_chunk.c's. */
+ * swapped in for frames with displaced draws, and the step down beside a
+ * technique it conflicts with (stencil volumes); the chunk every program
+ * carries is render/displace_chunk.c's. */
 #include "internal.h"
 
 /* 1 when a draw of the frame is displaced. */
@@ -64,14 +64,20 @@ void stin__displace_frame_end(stin_context *ctx)
         GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, ctx->displace.caller_patch_vertices);
 }
 
+/* Selection kept displacement from what it conflicts with (the technique
+ * table: volume, whose silhouettes are the undisplaced mesh's), but another
+ * feature's set-up may have fallen back onto such a technique since. */
 void stin__displace_init(stin_context *ctx)
 {
+    stin_technique clash = stin__choice_conflict(&ctx->sel, STIN_FEATURE_DISPLACEMENT);
+    char why[200];
     ctx->displace.logged_count = 0;
-    if (stin__displace_built(ctx) &&
-        ctx->sel.choice[STIN_FEATURE_SHADOWS].technique == STIN_TECH_SHADOWS_VOLUME)
-        stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_OFF,
-                              "shadows fell back to volume, whose silhouettes are the "
-                              "undisplaced mesh's: displaced draws would cast the flat "
-                              "mesh's shadow");
+    if (!stin__displace_built(ctx) || clash == STIN_TECH_NONE)
+        return;
+    stin__formatf(why, sizeof why,
+                  "%s fell back to %s, which cannot run beside it: displaced draws would "
+                  "be shadowed as the flat mesh",
+                  stin_feature_name(stin__technique_feature(clash)), stin_technique_name(clash));
+    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_OFF, why);
 }
 

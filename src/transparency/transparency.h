@@ -54,7 +54,7 @@ typedef struct stin__peel_state {
     int peeling;           /* 1 while a layer is drawn: camera passes draw it */
     int result;            /* accum[result] holds the composite */
     GLuint frame_fbo;      /* the frame's target, bound back at the end */
-    int said_vdsm, said_failed, said_sorted;
+    int said_failed, said_sorted;
     /* "sorted", shadowed: the blended draw being lit and what was said */
     const stin__draw *sorted_draw;
     int said_sorted_unshadowed, said_sorted_light;

@@ -526,6 +526,49 @@ static void test_displacement_beside_volumes(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
 }
 
+/* A shadows set-up failure under vdsm walks the table's chain down: past
+ * volume beside displacement (a conflict), past map-pcf where its six
+ * samplers do not fit after the surface's units, past the fixed-function
+ * maps always (GLSL lighting), to off at the end. */
+static void test_fallback_walks_the_chain(void **state)
+{
+    stin_caps gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    gl45.max_texture_image_units = 16;
+    assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VDSM);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_TESS);
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
+    sel.choice[STIN_FEATURE_DISPLACEMENT].technique = STIN_TECH_DISPLACEMENT_OFF;
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
+    gl45.present &= ~BIT(STENCIL);
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
+    sel.unit_limit = sel.shadow_unit + 5; /* one sampler short */
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
+    sel.choice[STIN_FEATURE_SHADOWS].technique = STIN_TECH_SHADOWS_OFF; /* nothing below */
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
+}
+
+/* Which other choice displacement conflicts with, from either row. */
+static void test_choice_conflict(void **state)
+{
+    stin_caps gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
+    stin__selection sel;
+    char msg[256];
+    (void)state;
+    assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_DISPLACEMENT), STIN_TECH_NONE);
+    sel.choice[STIN_FEATURE_SHADOWS].technique = STIN_TECH_SHADOWS_VOLUME;
+    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_DISPLACEMENT),
+                     STIN_TECH_SHADOWS_VOLUME);
+    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_SHADOWS),
+                     STIN_TECH_DISPLACEMENT_TESS);
+    sel.choice[STIN_FEATURE_DISPLACEMENT].technique = STIN_TECH_DISPLACEMENT_OFF;
+    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_DISPLACEMENT), STIN_TECH_NONE);
+}
+
 static void test_texture_unit_budget(void **state)
 {
     stin_caps c = caps_with(21, 12, 0, GL21_BITS);
@@ -597,6 +640,8 @@ int main(void)
         cmocka_unit_test(test_every_technique_has_a_row_and_a_rank),
         cmocka_unit_test(test_texture_unit_budget),
         cmocka_unit_test(test_displacement_beside_volumes),
+        cmocka_unit_test(test_fallback_walks_the_chain),
+        cmocka_unit_test(test_choice_conflict),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
