@@ -161,14 +161,18 @@ $(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))
 
 tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/libstin.a
 
+# The build uses every core unless the caller's make already hands out jobs.
+NPROC := $(shell nproc 2>/dev/null || echo 2)
+JOBS_FLAG := $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
+
 check: deps
-	@$(MAKE) --no-print-directory tests
+	@$(MAKE) --no-print-directory $(JOBS_FLAG) tests
 	@sh tests/run.sh $(B)
 
 # The edit loop: every unit test, the image tests of three profiles (one a
 # tier: gl11, gl21, gl45-core) on EGL, the render CLI and the layer check.
 check-quick: deps
-	@$(MAKE) --no-print-directory tests
+	@$(MAKE) --no-print-directory $(JOBS_FLAG) tests
 	@STIN_TEST_QUICK=1 STIN_TEST_PLATFORMS=egl STIN_TEST_PROFILES="gl11 gl21 gl45-core" sh tests/run.sh $(B)
 
 bench: deps

@@ -49,8 +49,8 @@ export CMOCKA_MESSAGE_OUTPUT=TAP
 # Driver-internal leaks (OSMesa, EGL) are not ours; see docs/testing.md.
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 
-# The suites, one a line: "NAME COMMAND...", the longest first so that the
-# parallel run ends together. Arguments hold no spaces.
+# The suites, one a line: "NAME COMMAND...", in the order their lines are
+# printed. Arguments hold no spaces.
 {
     for plat in $PLATFORMS; do
         for prof in $PROFILES; do
@@ -79,7 +79,14 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
     fi
 } | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
 
-xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/list"
+# Started longest first (measured: gl45-core, gl33-core and gl21 take most
+# of the run; the command-line, bench and install checks next), so that the
+# parallel run ends together.
+awk '{ w = 1 }
+     $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
+     $2 == "cli" || $2 == "bench" || $2 == "install" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
+     { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
+xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
 
 # In list order: cmocka TAP -> PASS/FAIL lines; a suite that exits non-zero
 # without reporting a failure counts as one failure.
