@@ -2,7 +2,8 @@
 # stin — build, test, bench, install.
 #   make            libstin.a, libstin_platform.a, stin-render, stin-bench, examples/
 #   make check      install deps if missing, unit tests (ASan+UBSan), image tests per profile,
-#                   the stin-bench --quick smoke
+#                   the layer rule, the stin-bench --quick smoke; suites run in parallel
+#   make check-quick  the edit loop: unit tests, one profile per tier on EGL, the CLI and layers
 #   make demo       install deps if missing, render the example scenes at every tier into out/
 #   make bench      run stin-bench (docs/benchmarks.md)
 #   make fuzz       libFuzzer on the scene loader and on model/texture files, FUZZ_SECONDS
