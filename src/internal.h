@@ -18,6 +18,7 @@
 #include "render/resolved.h"
 #include "render/path_features.h"
 #include "gl/pass_state.h"
+#include "gl/render_target.h"
 #include "shadow/shadow.h"
 #include "surface/surface.h"
 #include "post/visibility_export.h"

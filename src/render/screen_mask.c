@@ -48,18 +48,6 @@ void stin__mask_release(stin_context *ctx)
     ctx->mask.width = ctx->mask.height = 0;
 }
 
-static void texture_storage(stin_context *ctx, GLuint tex, GLenum internal, GLenum format,
-                            GLenum type, int w, int h)
-{
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    GL_ENUM(ctx, TexImage2D, internal)(GL_TEXTURE_2D, 0, (GLint)internal, w, h, 0, format, type,
-                                       NULL);
-}
-
 /* The mask covers the viewport's pixels at the same window coordinates (so
  * scissor boxes and gl_FragCoord need no offset): (x + w) x (y + h). */
 static int ensure_size(stin_context *ctx)
@@ -79,18 +67,12 @@ static int ensure_size(stin_context *ctx)
     if (h < ctx->mask.height)
         h = ctx->mask.height;
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
-    texture_storage(ctx, ctx->mask.color, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
-    texture_storage(ctx, ctx->mask.depth_stencil, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL,
-                    GL_UNSIGNED_INT_24_8, w, h);
+    stin__rt_texture(ctx, ctx->mask.color, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+    stin__rt_texture(ctx, ctx->mask.depth_stencil, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL,
+                     GL_UNSIGNED_INT_24_8, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                  ctx->mask.color, 0);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                  ctx->mask.depth_stencil, 0);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                                  ctx->mask.depth_stencil, 0);
-    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    status = stin__rt_attach(ctx, ctx->mask.fbo, ctx->mask.color, ctx->mask.depth_stencil,
+                             ctx->mask.depth_stencil);
     ctx->mask.width = w;
     ctx->mask.height = h;
     if (status != GL_FRAMEBUFFER_COMPLETE) {

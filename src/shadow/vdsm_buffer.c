@@ -8,19 +8,6 @@
  * shadows, while the float buffer holds the interpolated position itself. */
 #include "internal.h"
 
-static void float_texture(stin_context *ctx, GLuint tex, GLenum internal, int w, int h)
-{
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    GL_ENUM(ctx, TexImage2D, internal)(GL_TEXTURE_2D, 0, (GLint)internal, w, h, 0,
-                                       internal == GL_DEPTH_COMPONENT24 ? GL_DEPTH_COMPONENT
-                                                                        : GL_RGBA,
-                                       GL_FLOAT, NULL);
-}
-
 void stin__vdsm_buffer_release(stin_context *ctx)
 {
     stin__vdsm_state *v = &ctx->vdsm;
@@ -60,9 +47,9 @@ static int ensure_size(stin_context *ctx)
     w = w > v->width ? w : v->width;
     h = h > v->height ? h : v->height;
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
-    float_texture(ctx, v->position, GL_RGBA32F, w, h);
-    float_texture(ctx, v->normal, GL_RGBA16F, w, h);
-    float_texture(ctx, v->depth, GL_DEPTH_COMPONENT24, w, h);
+    stin__rt_texture(ctx, v->position, GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
+    stin__rt_texture(ctx, v->normal, GL_RGBA16F, GL_RGBA, GL_FLOAT, w, h);
+    stin__rt_texture(ctx, v->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,

@@ -51,19 +51,6 @@ void stin__coloured_release(stin_context *ctx)
     stin__memzero(s, sizeof *s);
 }
 
-/* A nearest, clamped texture of the atlas's size; the caller's image. */
-static GLuint atlas_texture(stin_context *ctx)
-{
-    GLuint t = 0;
-    GL(ctx, GenTextures)(1, &t);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, t);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    return t;
-}
-
 /* The atlases and the framebuffer; "" or why they cannot be made. */
 static const char *make_targets(stin_context *ctx)
 {
@@ -71,17 +58,14 @@ static const char *make_targets(stin_context *ctx)
     GLsizei w = (GLsizei)(ATLAS_COLUMNS * s->size), h = (GLsizei)(ATLAS_ROWS * s->size);
     GLenum status;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    s->color = atlas_texture(ctx);
-    GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
-    s->depth = atlas_texture(ctx);
-    GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, w, h, 0,
-                                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    GL(ctx, GenTextures)(1, &s->color);
+    stin__rt_texture(ctx, s->color, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+    GL(ctx, GenTextures)(1, &s->depth);
+    stin__rt_texture(ctx, s->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w,
+                     h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, GenFramebuffers)(1, &s->fbo);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, s->color, 0);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, s->depth, 0);
-    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    status = stin__rt_attach(ctx, s->fbo, s->color, s->depth, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA8 + depth framebuffer is incomplete";
 }

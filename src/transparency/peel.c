@@ -41,20 +41,13 @@ int stin__peel_chunks(const stin_context *ctx, int variant,
  * RGBA8, RG32F, RGBA16F), nearest texels. */
 void stin__peel_screen_texture(stin_context *ctx, GLuint tex, GLenum format, int w, int h)
 {
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     if (format == GL_DEPTH24_STENCIL8)
-        GL_ENUM(ctx, TexImage2D, GL_DEPTH24_STENCIL8)(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, w, h,
-                                                      0, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8,
-                                                      NULL);
+        stin__rt_texture(ctx, tex, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, w,
+                         h);
     else if (format == GL_RGBA8)
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA, GL_UNSIGNED_BYTE, NULL);
+        stin__rt_texture(ctx, tex, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
     else
-        GL_ENUM(ctx, TexImage2D, format)(GL_TEXTURE_2D, 0, (GLint)format, w, h, 0,
-                                         format == GL_RG32F ? GL_RG : GL_RGBA, GL_FLOAT, NULL);
+        stin__rt_texture(ctx, tex, format, format == GL_RG32F ? GL_RG : GL_RGBA, GL_FLOAT, w, h);
 }
 
 /* The peel's framebuffer with `color` and the depth-stencil `depth`. */
@@ -99,9 +92,7 @@ static int ensure_size(stin_context *ctx)
     stin__peel_screen_texture(ctx, s->ambient, GL_RGBA8, w, h);
     stin__peel_screen_texture(ctx, s->lights, GL_RGBA8, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
-    stin__peel_attach(ctx, s->ambient, s->depth[0]);
-    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    status = stin__rt_attach(ctx, s->fbo, s->ambient, s->depth[0], s->depth[0]);
     if (s->dual && status == GL_FRAMEBUFFER_COMPLETE)
         status = stin__dual_size(ctx, w, h);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);

@@ -1,0 +1,31 @@
+/* SPDX-License-Identifier: MIT */
+/* Render targets: the texture and framebuffer set-up the passes share. */
+#include "internal.h"
+
+void stin__rt_texture(stin_context *ctx, GLuint tex, GLenum internal, GLenum format,
+                      GLenum type, int w, int h)
+{
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    GL_ENUM(ctx, TexImage2D, internal)(GL_TEXTURE_2D, 0, (GLint)internal, w, h, 0, format, type,
+                                       NULL);
+}
+
+GLenum stin__rt_attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth,
+                       GLuint stencil)
+{
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, fbo);
+    if (color)
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color,
+                                      0);
+    if (depth)
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth,
+                                      0);
+    if (stencil)
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
+                                      stencil, 0);
+    return GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+}

@@ -1,0 +1,23 @@
+/* SPDX-License-Identifier: MIT */
+/* Off-screen render targets (gl/render_target.c): the screen-sized textures
+ * and framebuffers the render and feature passes draw into, made one way. */
+#ifndef STIN_RENDER_TARGET_H
+#define STIN_RENDER_TARGET_H
+
+#include "stin/stin.h"
+#include "gl/gl_types.h"
+
+/* Binds `tex` on the active unit and gives it nearest filtering, edge
+ * clamping and a w x h level 0 of `internal` (no data: format, type). Leaves
+ * it bound; the caller chooses the unit and unbinds. */
+void stin__rt_texture(struct stin_context *ctx, GLuint tex, GLenum internal, GLenum format,
+                      GLenum type, int w, int h);
+
+/* Binds `fbo` and attaches the 2D textures that are not 0: `color` to colour
+ * attachment 0, `depth` to the depth, `stencil` to the stencil attachment.
+ * Returns the completeness status (GL_FRAMEBUFFER_COMPLETE or why not),
+ * leaving `fbo` bound. */
+GLenum stin__rt_attach(struct stin_context *ctx, GLuint fbo, GLuint color, GLuint depth,
+                       GLuint stencil);
+
+#endif
