@@ -162,9 +162,10 @@ $(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))
 
 tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/libstin.a
 
-# The build uses every core unless the caller's make already hands out jobs.
+# The build uses every core unless the caller's make already hands out jobs
+# (MAKEFLAGS names the jobserver only inside a recipe, so the test is there).
 NPROC := $(shell nproc 2>/dev/null || echo 2)
-JOBS_FLAG := $(if $(findstring -j,$(MAKEFLAGS)),,-j$(NPROC))
+JOBS_FLAG = $$(case "$(MAKEFLAGS)" in *jobserver*|*-j*) ;; *) echo -j$(NPROC) ;; esac)
 
 check: deps
 	@$(MAKE) --no-print-directory $(JOBS_FLAG) tests
