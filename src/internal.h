@@ -111,8 +111,12 @@ struct stin_context {
     const char *adjacency_use;
     int lights_per_pass;
 
+    /* Module-private state: each module defines its struct in its own
+     * folder (a *_private.h no other folder includes) and says its size; the
+     * frame lays them out in the caller's block (stin__state_slots). */
+    struct stin__volume_state *volume;
+
     /* shadow technique modules: each owns its part */
-    stin__volume_state volume;
     stin__map_fixed_state map_fixed;
     stin__map_pcf_state map_pcf;
     stin__mask_state mask;
@@ -167,6 +171,17 @@ struct stin_context {
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);
+/* A module's private state in the caller's block (frame/modules.c): where
+ * the context keeps the pointer, its size for a desc (defaults applied) and,
+ * optionally, how it lays out its own arrays behind it. stin_create zeroes
+ * it before place. */
+typedef struct stin__state_slot {
+    size_t offset;                            /* offsetof(stin_context, member) */
+    size_t (*bytes)(const stin_desc *d);
+    void (*place)(void *state, const stin_desc *d); /* NULL: nothing to place */
+} stin__state_slot;
+extern const stin__state_slot stin__state_slots[];
+extern const size_t stin__state_slot_count;
 /* The module of a shadows technique, off for anything else (frame/modules.c). */
 const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
 

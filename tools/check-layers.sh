@@ -10,6 +10,10 @@
 # folders never use each other; only frame names features. Every reference
 # that breaks the rule is printed as
 #   src/FROM.c -> src/TO.c (symbol): FOLDER may not use FOLDER
+# A module's private state is a src/FOLDER/*_private.h header that only files of
+# its folder include (read from the sources: the compiler sees no symbol for a
+# struct); each other include is printed as
+#   src/FROM.c includes src/FOLDER/X_private.h: private to FOLDER
 # Usage: tools/check-layers.sh [OBJ_DIR (default build/lib)]
 # Exits 1 when anything is printed.
 set -u
@@ -56,9 +60,22 @@ function rank(d) {
     printf "%s -> %s (%s): %s may not use %s\n", $2, $3, $1, from, to
 }' | sort > "$tmp/wrong"
 
+# private state headers included from another folder
+find src -name '*.[ch]' | sort | xargs grep -H '^#include "[a-z_]*/[a-z0-9_]*_private\.h"' |
+    awk -F: '{
+        split($1, f, "/"); h = $2; sub(/^#include "/, "", h); sub(/".*/, "", h)
+        split(h, t, "/")
+        if (f[2] != t[1]) printf "%s includes src/%s: private to %s\n", $1, h, t[1]
+    }' > "$tmp/private"
+
+if [ -s "$tmp/private" ]; then
+    cat "$tmp/private"
+    echo "check-layers: $(wc -l < "$tmp/private") includes of another folder's private state" >&2
+fi
 if [ -s "$tmp/wrong" ]; then
     cat "$tmp/wrong"
     echo "check-layers: $(awk '{ print $1, $3 }' "$tmp/wrong" | sort -u | wc -l) wrong-way file pairs" >&2
     exit 1
 fi
+[ -s "$tmp/private" ] && exit 1
 echo "check-layers: $(cat "$tmp/defs" "$tmp/uses" | awk '{ print $2 }' | sort -u | wc -l) files, no wrong-way reference" >&2

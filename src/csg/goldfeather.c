@@ -158,7 +158,7 @@ static void write_depth_core(stin_context *ctx, const resolve *r)
     float origin[4];
     upload_result(ctx, r);
     GL(ctx, UseProgram)(c->depth_prog);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     GL(ctx, Uniform1i)(c->u_depth, 0);
     origin[0] = (float)r->x;
     origin[1] = (float)r->y;
@@ -188,7 +188,7 @@ static void write_depth(stin_context *ctx, const stin__path *path, const resolve
     }
     if (!fixed) {
         GL(ctx, UseProgram)(0);
-        ctx->glsl_surface.current = NULL;
+        stin__lit_program_forget(ctx);
     }
     GL(ctx, MatrixMode)(GL_PROJECTION);
     if (!fixed)

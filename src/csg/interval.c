@@ -307,7 +307,7 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
     uint32_t q;
     int j;
     GL(ctx, UseProgram)(s->peel_prog);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, UniformMatrix4fv)(s->peel_view_proj, 1, GL_FALSE, ctx->view_proj);
     GL(ctx, Uniform1i)(s->peel_previous, previous_unit(ctx));

@@ -198,7 +198,7 @@ static void merge_quad(stin_context *ctx, const stin__csg_select *select)
     stin__csg_region_keep_to(ctx, &ps);
     stin__pass_apply(ctx, &ps);
     GL(ctx, UseProgram)(m->merge_prog);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[STIN__CSG_MERGE_WORK]);
     GL(ctx, Uniform1i)(m->u_depth, 0);
     params[0] = select ? (float)select->id : -1.0f;
@@ -224,7 +224,7 @@ static void kill_quad(stin_context *ctx, stin__pass_state *ps)
     stin__csg_region_keep_to(ctx, ps);
     stin__pass_apply(ctx, ps);
     GL(ctx, UseProgram)(ctx->csg.merge.kill_prog);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     stin__screen_quad(ctx);
 }
 
@@ -311,7 +311,7 @@ static void snap_begin(stin_context *ctx, GLuint against)
     stin__csg_merge_state *m = &ctx->csg.merge;
     float params[4];
     GL(ctx, UseProgram)(m->snap_prog);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     GL(ctx, UniformMatrix4fv)(m->snap_view_proj, 1, GL_FALSE, ctx->view_proj);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, against);
     GL(ctx, Uniform1i)(m->snap_result, 0);

@@ -103,6 +103,7 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
                  (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->max_csg_terms +
                  sizeof(uint32_t) * ((size_t)d->max_csg_literals + stin__csg_scratch_words(d));
     void *p[14];
+    size_t i;
     if (tangent_scratch > scratch)
         scratch = tangent_scratch;
     p[0] = take(a, sizeof(stin_context), &ok);
@@ -122,6 +123,17 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     p[11] = take(a, sizeof(stin_light_desc) * d->max_lights, &ok);
     p[12] = take(a, frame_scratch, &ok);
     p[13] = take(a, csg, &ok);
+    for (i = 0; i < stin__state_slot_count; i++) {
+        const stin__state_slot *slot = &stin__state_slots[i];
+        size_t bytes = slot->bytes(d);
+        void *state = take(a, bytes, &ok);
+        if (ctx && ok) {
+            stin__memzero(state, bytes); /* the block is the caller's: nothing in it is zero */
+            if (slot->place)
+                slot->place(state, d);
+            stin__memcopy((unsigned char *)ctx + slot->offset, &state, sizeof state);
+        }
+    }
     if (!ok)
         return 0;
     if (ctx) {

@@ -70,7 +70,6 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
      * (stin_query_frame_projection): a shadow technique may move its far
      * plane to infinity (volumes), whatever lights the frame gets. */
     stin__memcopy(ctx->projection, desc->projection, sizeof ctx->projection);
-    ctx->volume.depth_clamp = ctx->volume.infinite = 0;
     if (ctx->shadow->prepare)
         ctx->shadow->prepare(ctx);
     stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);

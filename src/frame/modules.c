@@ -2,6 +2,8 @@
 /* Which module runs each shadows technique. The technique table
  * (select/technique_table.c) is pure data below the feature modules, so
  * the frame, which alone may name them, owns this map. */
+#include <stddef.h>
+
 #include "internal.h"
 
 static const struct {
@@ -17,6 +19,14 @@ static const struct {
     {STIN_TECH_SHADOWS_MAP_COMBINE, &stin__shadow_map_fixed},
     {STIN_TECH_SHADOWS_OFF, &stin__shadow_off},
 };
+
+/* Every module's private state, laid out after the context. */
+#define SLOT(member, bytes, place) {offsetof(stin_context, member), bytes, place}
+const stin__state_slot stin__state_slots[] = {
+    SLOT(volume, stin__volume_state_bytes, NULL),
+};
+#undef SLOT
+const size_t stin__state_slot_count = sizeof stin__state_slots / sizeof stin__state_slots[0];
 
 const stin__shadow_technique *stin__shadow_technique_of(stin_technique t)
 {

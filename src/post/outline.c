@@ -125,7 +125,7 @@ void stin__outline_stage(stin_context *ctx, const stin__path *path)
     params[2] = f->outline_step;
     params[3] = 0.0f;
     GL(ctx, UseProgram)(o->program);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     GL(ctx, Uniform1i)(o->u_normal, 0);
     GL(ctx, Uniform1i)(o->u_depth, 1);
     GL(ctx, UniformMatrix4fv)(o->u_inverse_projection, 1, GL_FALSE, inverse);

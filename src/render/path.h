@@ -164,6 +164,12 @@ const stin__program *stin__lit_specialised(stin_context *ctx, const stin__progra
 /* A new frame: slots that served none of it may be replaced. */
 void stin__lit_cache_frame(stin_context *ctx);
 void stin__lit_cache_release(stin_context *ctx);
+/* A pass that bound its own program: the lit program is bound again (and
+ * its per-draw uniforms set) before the next lit draw. */
+void stin__lit_program_forget(stin_context *ctx);
+/* Per-frame lit uniforms changed (a peeled layer's, a mask's): every lit
+ * program uploads them again at its next use. */
+void stin__lit_uniforms_stale(stin_context *ctx);
 /* Swaps the tessellated programs in (on) or out; nothing without them. */
 void stin__glsl_tessellate(stin_context *ctx, int on);
 /* A program's stages by embedded file name: geom NULL for none; frag_outputs

@@ -730,3 +730,7 @@ const stin__path *stin__path_of(const stin_context *ctx)
                ? stin__fixed_path()
                : stin__glsl_path();
 }
+
+void stin__lit_program_forget(stin_context *ctx) { ctx->glsl_surface.current = NULL; }
+
+void stin__lit_uniforms_stale(stin_context *ctx) { ctx->glsl_surface.serial++; }

@@ -105,16 +105,6 @@ extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
     stin__shadow_map_pcf, stin__shadow_off, stin__shadow_vdsm;
 
 /* ---- module state --------------------------------------------------------- */
-typedef struct stin__volume_state {
-    int depth_clamp;      /* volumes drawn with GL_DEPTH_CLAMP (orthographic) */
-    int infinite;         /* the frame's projection has its far plane at infinity */
-    /* GL4: extrusion by geometry shader (shadow/volume_extrude.c); 0: none */
-    GLuint extrude_prog, count_query;
-    GLint u_model, u_view_proj, u_light, u_closed, u_caps, u_mode;
-    int path_unbound; /* an extruded caster left its program bound, not the path's */
-    int set_closed, set_caps, set_mode; /* the program's uniforms as last set (-1: unknown) */
-} stin__volume_state;
-
 typedef struct stin__map_fixed_state {
     GLuint textures[STIN__MAP_SLOTS];
     GLuint ramp;          /* map-combine: 1D ramp of light depth */
@@ -394,8 +384,10 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or
- * depth clamp (orthographic), for volumes. */
+ * depth clamp (orthographic), for volumes: a prepare hook. */
 void stin__volume_projection(stin_context *ctx);
+/* Bytes of volume's private state (shadow/volume_private.h). */
+size_t stin__volume_state_bytes(const stin_desc *d);
 /* Screen rectangle a light of finite range can touch; 0 when unbounded. */
 int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
 /* The slope-scaled polygon offset of a light's map pass (its shadow_offset,

@@ -359,7 +359,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, v->position);
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, v->normal);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     if (!faced) { /* else the pyramid's receivers wrote it */
         GL(ctx, UseProgram)(v->facing_prog);
         GL(ctx, Uniform1i)(v->face_position, 0);

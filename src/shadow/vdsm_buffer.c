@@ -123,7 +123,7 @@ static void use_position_program(stin_context *ctx)
     static const float off[4] = {0, 0, 0, 0};
     stin__vdsm_state *v = &ctx->vdsm;
     GL(ctx, UseProgram)(v->position_prog);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     GL(ctx, UniformMatrix4fv)(v->pos_view_proj, 1, GL_FALSE, ctx->view_proj);
     GL(ctx, Uniform4fv)(v->pos_camera, 1, v->camera);
     GL(ctx, Uniform4fv)(v->pos_csg, 1, off);

@@ -525,7 +525,7 @@ int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel
     ps.blend_src = ps.blend_dst = GL_ONE;
     stin__pass_apply(ctx, &ps);
     GL(ctx, BlendEquationSeparate)(GL_MAX, GL_MAX);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     if (sm)
         occluders(ctx, light, ps);
     if (dc && !p->atomic_prog)

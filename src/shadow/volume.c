@@ -5,7 +5,7 @@
  * in one pass with two-sided stencil and wrap where present, else in two
  * culled passes, increments first so clamped counts lose nothing. The far
  * plane is at infinity (nudged P_inf) or depth clamp keeps far caps. */
-#include "internal.h"
+#include "shadow/volume_private.h"
 
 #define NO_SCISSOR(s) ((s) == NULL)
 
@@ -33,6 +33,7 @@ static int is_perspective(const float p[16])
 
 void stin__volume_projection(stin_context *ctx)
 {
+    ctx->volume->depth_clamp = 0;
     if (is_perspective(ctx->projection)) {
         /* Row 3 of the frustum to (eps - 1, (eps - 2) n): the far plane goes to
          * infinity and w = 0 vertices land just inside NDC z = 1. Preferred
@@ -42,11 +43,16 @@ void stin__volume_projection(stin_context *ctx)
         float n = ctx->projection[14] / (ctx->projection[10] - 1.0f);
         ctx->projection[10] = eps - 1.0f;
         ctx->projection[14] = (eps - 2.0f) * n;
-        ctx->volume.infinite = 1;
     } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP)) {
-        ctx->volume.depth_clamp = 1; /* orthographic: no P_inf exists */
+        ctx->volume->depth_clamp = 1; /* orthographic: no P_inf exists */
     }
     stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);
+}
+
+size_t stin__volume_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__volume_state);
 }
 
 /* ---- z-pass or z-fail per caster ---------------------------------------- */
@@ -158,12 +164,12 @@ static void draw_caster(stin_context *ctx, const stin__path *path, const stin__d
         r.light[k] = inv[k] * light_world[0] + inv[4 + k] * light_world[1] +
                      inv[8 + k] * light_world[2] + inv[12 + k] * light_world[3];
     if (extrude && stin__volume_extrude_draw(ctx, d, r.light, zfail)) {
-        ctx->volume.path_unbound = 1;
+        ctx->volume->path_unbound = 1;
         return;
     }
-    if (ctx->volume.path_unbound) {
+    if (ctx->volume->path_unbound) {
         path->volume_begin(ctx);
-        ctx->volume.path_unbound = 0;
+        ctx->volume->path_unbound = 0;
     }
     r.verts = ctx->vertices + m->first_vertex;
     r.tris = ctx->indices + 3u * m->first_triangle;
@@ -240,14 +246,14 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     ps.scissor = 1;
     for (k = 0; k < 4; k++)
         ps.scissor_box[k] = scissor[k];
-    ps.depth_clamp = (unsigned char)ctx->volume.depth_clamp;
+    ps.depth_clamp = (unsigned char)ctx->volume->depth_clamp;
     ps.stencil_test = 1;
     stin__pass_apply(ctx, &ps);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);
     n_planes = near_clip_planes(ctx, light_world, planes);
     path->volume_begin(ctx);
-    ctx->volume.path_unbound = 0;
+    ctx->volume->path_unbound = 0;
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         float center[3], radius;
@@ -429,7 +435,7 @@ static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
     ps.depth_write = 0;
     ps.blend = 1;
     ps.blend_src = ps.blend_dst = GL_ONE;
-    ps.depth_clamp = (unsigned char)ctx->volume.depth_clamp;
+    ps.depth_clamp = (unsigned char)ctx->volume->depth_clamp;
     stin__pass_apply(ctx, &ps);
     path->volume_begin(ctx);
     if (path == stin__glsl_path())

@@ -7,11 +7,11 @@
  * triangle and light, besides streaming the result, which with several
  * lights costs more than the stencil fill. Counting, culling and the z-pass /
  * z-fail choice stay per caster in shadow/volume.c. */
-#include "internal.h"
+#include "shadow/volume_private.h"
 
 void stin__volume_extrude_init(stin_context *ctx)
 {
-    stin__volume_state *v = &ctx->volume;
+    struct stin__volume_state *v = ctx->volume;
     stin__program_source src;
     const char *no_shadow[2];
     char msg[160];
@@ -51,7 +51,7 @@ void stin__volume_extrude_init(stin_context *ctx)
 
 void stin__volume_extrude_release(stin_context *ctx)
 {
-    stin__volume_state *v = &ctx->volume;
+    struct stin__volume_state *v = ctx->volume;
     if (v->extrude_prog)
         GL(ctx, DeleteProgram)(v->extrude_prog);
     if (v->count_query)
@@ -62,8 +62,8 @@ void stin__volume_extrude_release(stin_context *ctx)
 
 static void draw_mode(stin_context *ctx, const stin__mesh_slot *m, int mode)
 {
-    if (ctx->volume.set_mode != mode)
-        GL(ctx, Uniform1i)(ctx->volume.u_mode, ctx->volume.set_mode = mode);
+    if (ctx->volume->set_mode != mode)
+        GL(ctx, Uniform1i)(ctx->volume->u_mode, ctx->volume->set_mode = mode);
     GL(ctx, DrawElements)(GL_TRIANGLES_ADJACENCY, (GLsizei)(6u * m->triangle_count),
                           GL_UNSIGNED_INT, NULL);
 }
@@ -71,7 +71,7 @@ static void draw_mode(stin_context *ctx, const stin__mesh_slot *m, int mode)
 int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const float light_object[4],
                               int zfail)
 {
-    stin__volume_state *v = &ctx->volume;
+    struct stin__volume_state *v = ctx->volume;
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     int closed = m->info.closed_manifold != 0;
     if (!v->extrude_prog || !m->adj_vao)

@@ -189,7 +189,7 @@ void stin__coloured_light(stin_context *ctx, uint32_t li)
     GL(ctx, ClearDepth)(1.0);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     GL(ctx, UseProgram)(s->program);
-    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    stin__lit_program_forget(ctx); /* the lit program is no longer current */
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
     s->kind = stin__translucent_faces(ctx, &ctx->lights[li], s->size, draw_face, &s->normal_offset);

@@ -323,7 +323,7 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
     ps.depth_test = 1; /* LESS with writes: the nearest surface behind the last layer */
     stin__pass_apply(ctx, &ps);
     GL(ctx, UseProgram)(s->program);
-    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    stin__lit_program_forget(ctx); /* the lit program is no longer current */
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
     GL(ctx, Uniform1i)(s->u_previous, s->unit);

@@ -178,7 +178,7 @@ static GLuint minmax_pass(stin_context *ctx, int k)
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, s->opaque);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, UseProgram)(d->program[t]);
-    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    stin__lit_program_forget(ctx); /* the lit program is no longer current */
     params[0] = 1.0f / (float)s->width;
     params[1] = 1.0f / (float)s->height;
     params[2] = k > 0 ? 1.0f : 0.0f;
@@ -219,7 +219,7 @@ int stin__dual_layer_begin(stin_context *ctx)
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, d->minmax[(j / 2) % 2]);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, 0);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    ctx->glsl_surface.serial++; /* every lit program's peel uniforms are stale */
+    stin__lit_uniforms_stale(ctx); /* every lit program's peel uniforms are stale */
     stin__peel_count_begin(ctx);
     return 1;
 }
@@ -253,7 +253,7 @@ static void composite_program(stin_context *ctx, int mode, GLuint accum, GLuint 
     params[2] = (float)mode;
     params[3] = 0.0f;
     GL(ctx, UseProgram)(s->program);
-    ctx->glsl_surface.current = NULL;
+    stin__lit_program_forget(ctx);
     GL(ctx, Uniform1i)(s->u_ambient, 0);
     GL(ctx, Uniform1i)(s->u_lights, 1);
     GL(ctx, Uniform1i)(s->u_accum, 2);
@@ -282,7 +282,7 @@ void stin__dual_layer_end(stin_context *ctx)
     int *result = front ? &d->front_result : &d->back_result;
     GLuint *pair = front ? d->front : d->back;
     s->peeling = 0; /* the composite and whatever follows are no layer's */
-    ctx->glsl_surface.serial++;
+    stin__lit_uniforms_stale(ctx);
     if (!d->drawn)
         return;
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);

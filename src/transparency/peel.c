@@ -296,7 +296,7 @@ int stin__peel_layer_begin(stin_context *ctx)
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, k > 0 ? layer_depth(s, k - 1) : 0);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, s->opaque);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    ctx->glsl_surface.serial++; /* every lit program's peel uniforms are stale */
+    stin__lit_uniforms_stale(ctx); /* every lit program's peel uniforms are stale */
     ctx->stats.peel_passes++;
     stin__peel_count_begin(ctx);
     return 1;
@@ -358,7 +358,7 @@ static void composite_program(stin_context *ctx, int mode)
     params[2] = (float)mode;
     params[3] = 0.0f;
     GL(ctx, UseProgram)(s->program);
-    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    stin__lit_program_forget(ctx); /* the lit program is no longer current */
     GL(ctx, Uniform1i)(s->u_ambient, 0);
     GL(ctx, Uniform1i)(s->u_lights, 1);
     GL(ctx, Uniform1i)(s->u_accum, 2);
@@ -386,7 +386,7 @@ void stin__peel_layer_end(stin_context *ctx)
         return;
     }
     s->peeling = 0; /* the composite and whatever follows are no layer's */
-    ctx->glsl_surface.serial++;
+    stin__lit_uniforms_stale(ctx);
     if (s->layer >= (int)ctx->desc.transparency_layers)
         return; /* stopped early: nothing to add */
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
@@ -427,7 +427,7 @@ void stin__peel_end(stin_context *ctx)
 {
     stin__peel_state *s = &ctx->peel;
     s->peeling = 0;
-    ctx->glsl_surface.serial++;
+    stin__lit_uniforms_stale(ctx);
     ctx->draw_fbo = s->frame_fbo;
     if (s->dual) {
         stin__dual_end(ctx);

@@ -34,3 +34,15 @@ if [ "$out" = "src/base/low.c -> src/frame/high.c (high): base may not use frame
 else
     echo "FAIL layers-self-test: expected exactly the base -> frame reference, got: $out"
 fi
+
+# csg including shadow's private state must be named; shadow including it must not.
+mkdir -p "$tmp/src/shadow" "$tmp/src/csg"
+printf 'struct stin__probe_state { int x; };\n' > "$tmp/src/shadow/probe_private.h"
+printf '#include "shadow/probe_private.h"\n' > "$tmp/src/shadow/probe.c"
+printf '#include "shadow/probe_private.h"\n' > "$tmp/src/csg/reader.c"
+out=$(cd "$tmp" && sh "$check" obj 2>/dev/null | grep -v '^src/base/low.c')
+if [ "$out" = "src/csg/reader.c includes src/shadow/probe_private.h: private to shadow" ]; then
+    echo "PASS layers-private-state: another folder's include of a *_private.h is named"
+else
+    echo "FAIL layers-private-state: expected exactly csg's include of shadow's state, got: $out"
+fi
