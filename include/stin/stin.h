@@ -66,13 +66,13 @@
  * when a new one is needed (a frame that needs more than 32 draws the rest
  * with the general programs, logged once). A program that does not build
  * logs a warning and the general program serves.
- * stin_frame_stats.lit_specialised and lit_programs_built count them;
- * STIN_DEBUG_LIT_GENERAL turns them off.
+ * stin_frame_stats.lighting.specialised and lighting.programs_built count them;
+ * STIN_DEBUG_LIGHTING_GENERAL turns them off.
  *
  * SHADOWS
  * The shadow feature's chain: "vdsm" (GL4 only), "volume" (stencil shadow
  * volumes, exact; needs a stencil buffer), "map-pcf" (GLSL lighting),
- * "map-depth" and "map-combine" (fixed-function lighting), then "off".
+ * "map-depth" and "map-combine" (fixed-function lighting), then "shadows-off".
  * "vdsm" (view-dependent shadow maps: GL 3.2 geometry shaders, float and
  * packed depth-stencil textures, a texture unit beyond the surface's): exact
  * hard shadows at the frame's resolution without a stencil buffer, adjacency
@@ -89,7 +89,7 @@
  * 1e-4 of the scene). Closed meshes drop the triangles facing the light
  * (EP; STIN_DEBUG_VDSM_NO_EP keeps them); open ones, and materials marked
  * two_sided, keep them. Per light a pyramid over the light's view (desc.
- * shadow_map_size texels a side, at most 2048: two RG32F textures, the
+ * shadows.map_size texels a side, at most 2048: two RG32F textures, the
  * second with its mip levels, and a depth-stencil texture, about 23 bytes a
  * texel of GL memory, made at stin_create; each frame draws it at the
  * power of two nearest half the viewport's larger side, at least 256 and
@@ -179,14 +179,14 @@
  * plus two texels' depth per texel of slope, a plane in the light's depth)
  * cannot follow each receiver's slope as polygon offset does: surfaces lit at
  * more than about 75 degrees from their normal (N.L under 0.25) can shadow
- * themselves in stripes; use map-depth or map-pcf where they matter. Maps are desc.shadow_map_size
+ * themselves in stripes; use map-depth or map-pcf where they matter. Maps are desc.shadows.map_size
  * texels a side where the context has FBOs; without them they are drawn in the
  * frame's own framebuffer before its clear and so are at most the viewport's
- * largest power of two (stin_frame_stats.shadow_map_size says what was used).
+ * largest power of two (stin_frame_stats.shadows.map_size says what was used).
  * Spot maps cover the cone; directional maps are orthographic, their square
  * fitted to the draws the camera sees and their depth to every caster. Area
  * lights are hard-shadowed by maps. Each of the
- * desc.max_lights light slots holds a map of shadow_map_size squared texels
+ * desc.max_lights light slots holds a map of shadows.map_size squared texels
  * (4 bytes each), made at stin_create: size max_lights to the scene.
  * map-depth's side test adds a byte a texel to each slot (and to the six
  * point-light faces), and with FBOs one RGBA8 colour and one 24-bit depth
@@ -203,7 +203,7 @@
  * perspective projection the frame is drawn with the far plane at infinity
  * (stin_query_frame_projection), so geometry past the caller's far plane shows;
  * orthographic projections use depth clamp. Lights with radius > 0 are area
- * lights: desc.soft_shadow_samples point samples, each a pass at intensity / n.
+ * lights: desc.shadows.soft_samples point samples, each a pass at intensity / n.
  * Lights with range > 0 are scissored to their screen extent.
  * On GLSL tiers with FBOs and packed depth-stencil textures (GL 3.0,
  * ARB_framebuffer_object or EXT_packed_depth_stencil) and a texture unit to
@@ -274,7 +274,7 @@
  * 1D or cube-map texture bound. On GL 4.3 a frame that used shader storage
  * buffers (deep's early-stop flag: binding point 0; vdsm's CSG product
  * shadows: points 0-2; vdsm's receivers, stin_frame_stats.
- * vdsm_atomic_receivers: point 0) leaves those binding points and the
+ * shadows.vdsm_atomic_receivers: point 0) leaves those binding points and the
  * generic GL_SHADER_STORAGE_BUFFER binding at 0.
  * Every other piece of GL state is left as the caller had it (framebuffer
  * sRGB encoding and multisampling too: the frame honours them as the target's).
@@ -313,7 +313,7 @@ extern "C" {
 /* The header's version (CHANGELOG.md). stin_version() returns the linked
  * library's as STIN_VERSION does: an application can check they match. */
 #define STIN_VERSION_MAJOR 0
-#define STIN_VERSION_MINOR 2
+#define STIN_VERSION_MINOR 3
 #define STIN_VERSION_PATCH 0
 #define STIN_VERSION (STIN_VERSION_MAJOR * 10000 + STIN_VERSION_MINOR * 100 + STIN_VERSION_PATCH)
 int stin_version(void);
@@ -473,15 +473,18 @@ typedef enum stin_feature {
 
 const char *stin_feature_name(stin_feature f);
 
-/* X(id, name, feature, tier it belongs to). New techniques are appended, so
- * values never change; each feature's chain (best first) is the library's
+/* X(id, name, feature, tier it belongs to), grouped by feature in the
+ * order of stin_feature, each feature's chain best first (values changed in
+ * 0.3.0 and may change again when a technique is added: store names, not
+ * numbers). A feature's "none" is "<feature>-off" (shadows-off, csg-off,
+ * displacement-off). Each feature's chain (best first) is the library's
  * own ranking, filtered by the tier ceiling, the caps and the texture units
  * the chosen techniques need together (GL_MAX_TEXTURE_IMAGE_UNITS with GLSL
  * lighting, GL_MAX_TEXTURE_UNITS with fixed-function lighting; features are
  * chosen lighting, shadows, surface, so shadows outrank surface detail for
  * units, and a forced technique's units are set aside first):
  *   lighting: glsl150-per-pixel, glsl110-per-pixel, fixed-function
- *   shadows:  vdsm, volume, map-pcf, map-depth, map-combine, off
+ *   shadows:  vdsm, volume, map-pcf, map-depth, map-combine, shadows-off
  *   surface:  pom, parallax, normal, dot3, plain
  *   displacement: displace-tess, displace, displacement-off
  *   translucent shadows: deep, coloured, opaque (translucent-solid: forced only)
@@ -572,7 +575,7 @@ const char *stin_feature_name(stin_feature f);
  * projection's y scale x half the viewport's height; d = 1 for an
  * orthographic camera), the two levels around lambda blended, level 0 alone
  * up close (lambda <= 0). Where displacement is built, stin_create_texture
- * gives each height map (unless no_mipmaps) a second texture with its mip
+ * gives each height map (unless base_level_only) a second texture with its mip
  * chain, CPU box-filtered as albedo chains are (parallax keeps level 0);
  * STIN_DEBUG_DISPLACE_NO_MIP reads level 0 at every distance.
  * STIN_DEBUG_DISPLACE_MANUAL_BILINEAR fetches the four texels at their
@@ -583,8 +586,8 @@ const char *stin_feature_name(stin_feature f);
  * the chain: every program that draws meshes gets a tessellation stage, and
  * each triangle of a displaced draw is split before the same vertex chunk
  * displaces the new points. An edge's level is its length in the camera's
- * pixels over desc.displace_tess_pixels (default 4), from 1 up to
- * desc.displace_tess_max (default 64), computed from that edge's two ends
+ * pixels over desc.displacement.tess_pixels (default 4), from 1 up to
+ * desc.displacement.tess_max (default 64), computed from that edge's two ends
  * only, so neighbouring triangles split a shared edge alike and no crack
  * opens; light passes use the camera's levels, so maps and vdsm shadow the
  * surface the camera sees. Undisplaced draws keep their triangles. Without
@@ -595,7 +598,7 @@ const char *stin_feature_name(stin_feature f);
  * stin_create). Limit: "deep" peels a displaced transparent caster at its
  * mesh's vertices (its peel program has no tessellated twin).
  * Vertices whose undisplaced clip position lies outside the view
- * volume grown by desc.displace_guard_band (a fraction of the volume's
+ * volume grown by desc.displacement.guard_band (a fraction of the volume's
  * half-size each side, default 1) are not displaced in the camera's passes
  * (no fetch): a triangle with a vertex that far out and pixels on screen,
  * or one crossing the eye plane, is drawn with that vertex undisplaced
@@ -608,13 +611,13 @@ const char *stin_feature_name(stin_feature f);
  * fully. "deep" (GL4: GLSL 1.50 lighting, float textures; two texture units
  * after the shadows technique's) is deep shadow maps (seed 001): per light,
  * just before its lit pass, the transparent casters are depth-peeled from
- * the light into up to desc.deep_layers layers per face (one face for spot
+ * the light into up to desc.translucent.deep_layers layers per face (one face for spot
  * and directional lights, fitted as the shadow maps are; six 90-degree faces
  * for point lights, the face picked by the major axis as map-pcf's, so no
  * seams), each texel holding its layer's depth and the visibility V behind
  * it, per RGB channel V = V' (1 - a) clamp(1 - a + c, 0, 1) (a the
  * opacity, c the colour: material colour times albedo texel at level 0; a
- * texel with a = 0 casts nothing and takes no layer; desc.deep_mono: V = V'
+ * texel with a = 0 casts nothing and takes no layer; desc.translucent.deep_mono: V = V'
  * (1 - a), grey). The lit pass multiplies the shadows technique's
  * visibility by the V of the last layer nearer the light than the point
  * (pushed 1.5 texels along its normal toward the side the eye sees, so a
@@ -631,7 +634,7 @@ const char *stin_feature_name(stin_feature f);
  * image); a face whose frustum no transparent caster's bounding box
  * reaches (a displaced one always counts) peels no layer at all, and the
  * lookup reads each face's layers up to its first empty one
- * (stin_frame_stats.deep_faces). Surfaces beyond desc.deep_layers
+ * (stin_frame_stats.translucent.deep_faces). Surfaces beyond desc.translucent.deep_layers
  * along a ray are not counted (their light passes). Lights are lit one per
  * pass while it is in use, and a frame without transparent draws draws no
  * layer. Blended draws receive the deep maps' coloured shadows where
@@ -639,20 +642,20 @@ const char *stin_feature_name(stin_feature f);
  * (export_visibility) holds the shadows technique's visibility and each
  * light's transmittance in a tile of its own (VISIBILITY FOR THE
  * APPLICATION'S SHADERS).
- * Displaced transparent casters peel their displaced surface. With shadows
- * "off" it falls back to "translucent-solid" (logged as INFO where deep was
+ * Displaced transparent casters peel their displaced surface. With
+ * "shadows-off" it falls back to "translucent-solid" (logged as INFO where deep was
  * the tier's default, as a WARNING where the caller forced it); forcing it on a
  * context without the GL4 tier is UNSUPPORTED, naming what is missing.
- * GPU memory: 2 x 6 x ceil(deep_layers / 2) x deep_map_size^2 x 16 bytes
+ * GPU memory: 2 x 6 x ceil(translucent.deep_layers / 2) x translucent.deep_map_size^2 x 16 bytes
  * (RGBA32F: depth and V; 6 faces, two ping-pong array textures) plus a
- * deep_map_size^2 x 4 depth buffer: 97 MiB at the defaults (4 layers, 512),
+ * translucent.deep_map_size^2 x 4 depth buffer: 97 MiB at the defaults (4 layers, 512),
  * 1.52 GiB at 2048 with 4 layers (stin_deep_memory_bytes); only the faces
  * a frame peels are written.
  * "coloured" (GL2 and up: GLSL lighting, FBOs, depth textures; two texture
  * units after the shadows technique's) is the next in the chain and runs
  * under every GLSL shadows technique: per light, just before its lit pass,
  * the transparent casters are drawn from the light (faces fitted as deep's,
- * in a 3 x 2 atlas of deep_map_size a face) twice: their nearest depth into
+ * in a 3 x 2 atlas of translucent.deep_map_size a face) twice: their nearest depth into
  * a depth texture, then their eq 5.3 factors multiplied together by
  * blending into an RGBA8 map cleared to white. The lit pass multiplies the
  * shadows technique's visibility by the product where the point (pushed as
@@ -666,11 +669,11 @@ const char *stin_feature_name(stin_feature f);
  * lit one per pass while it is in use, a frame without transparent draws
  * draws no map, blended draws are drawn unshadowed, the visibility map
  * (export_visibility) holds the transmittance as with deep, and
- * with shadows "off" it falls back to "opaque" (logged, at deep's levels). The face size is
+ * with "shadows-off" it falls back to "opaque" (logged, at deep's levels). The face size is
  * halved until three faces fit the context's largest texture. GPU memory:
- * 6 x deep_map_size^2 x (4 + 4) bytes (12 MiB at 512).
+ * 6 x translucent.deep_map_size^2 x (4 + 4) bytes (12 MiB at 512).
  * "opaque" (every tier) ends the chain: a caster whose opacity is at least
- * desc.translucent_opaque_threshold (default 0.5) casts a full shadow under
+ * desc.translucent.opaque_threshold (default 0.5) casts a full shadow under
  * every shadows technique, one below it none at all; "translucent-solid"
  * (all cast fully) is chosen only when forced.
  * Transparency: how the camera sees blended draws (material opacity
@@ -702,12 +705,12 @@ const char *stin_feature_name(stin_feature f);
  *   image: frame = C + T frame. The image does not depend on the order of
  *   the draws (bit for bit), and intersecting or self-overlapping
  *   transparent objects (a box's front and back) are exact. Peeling stops
- *   at desc.transparency_layers (default 8; surfaces beyond it along a ray
+ *   at desc.transparency.layers (default 8; surfaces beyond it along a ray
  *   are not drawn) or at the first pass that peeled nothing (an occlusion
  *   query; without queries every layer up to the cap is peeled;
  *   STIN_DEBUG_PEEL_NO_EARLY_STOP peels them all: the same image), so a
  *   scene whose rays cross at most n blended surfaces takes n + 1 peel
- *   passes (stin_frame_stats.peel_passes, .peel_layers). Each peeled layer
+ *   passes (stin_frame_stats.transparency.peel_passes, .peel_layers). Each peeled layer
  *   costs an ambient pass, the frame's light stages (per light: its
  *   volumes, its deep map again, its lit pass) and one full-viewport
  *   composite; one more composite ends the frame. The frame's depth buffer
@@ -738,13 +741,13 @@ const char *stin_feature_name(stin_feature f);
  *   Front layers are composited under one another, back layers over one
  *   another (RGBA16F), and at the end the back under the front, the whole
  *   over the opaque image by depth-peel's rule (frame = C + T frame,
- *   alpha 1 - T + T alpha, depth of the nearest). desc.transparency_layers
+ *   alpha 1 - T + T alpha, depth of the nearest). desc.transparency.layers
  *   caps the layers (front and back counted alike: with a cap below the
  *   depth complexity the layers dropped are the middle ones, depth-peel's
  *   the farthest). Peeling stops at a pass that found nothing (occlusion
  *   query) or after a back layer that drew nothing (no pixel had a third
  *   surface left), so a scene of n layers takes n / 2 + 1 passes
- *   (stin_frame_stats.peel_passes, integer division; .peel_layers = n);
+ *   (stin_frame_stats.transparency.peel_passes, integer division; .peel_layers = n);
  *   STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP runs cap / 2 (rounded up) passes:
  *   the same image. Cost per pass: one geometry pass without depth test;
  *   per layer depth-peel's (ambient pass, light stages, one composite).
@@ -755,7 +758,7 @@ const char *stin_feature_name(stin_feature f);
  *   (min-max, ping-pong) and 4 RGBA16F (front and back composites,
  *   ping-pong): W x H x 68 bytes, 4.25 MiB at 256 x 256, 134 MiB at
  *   1920 x 1080. A displaced draw's min-max pass is tessellated as its lit
- *   passes are. STIN_DEBUG_PEEL_OPAQUE_ONLY applies to it too. A min-max
+ *   passes are. STIN_DEBUG_TRANSPARENCY_OPAQUE_ONLY applies to it too. A min-max
  *   program that does not build moves it to depth-peel (logged; the lit
  *   programs are built again with depth-peel's chunk). On GL4
  *   depth-peel's composites are RGBA16F too (one rounding at the end;
@@ -791,36 +794,36 @@ const char *stin_feature_name(stin_feature f);
  *     off: unshadowed, as everything.
  *   STIN_DEBUG_SORTED_UNSHADOWED lights them unshadowed under every
  *   technique (the behaviour before). */
-#define STIN_TECHNIQUE_LIST(X)                                             \
-    X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                    \
-    X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4) \
-    X(LIGHTING_GLSL110, "glsl110-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL2) \
-    X(LIGHTING_FIXED, "fixed-function", STIN_FEATURE_LIGHTING, STIN_TIER_GL1)      \
-    X(SHADOWS_VOLUME, "volume", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)       \
-    X(SHADOWS_MAP_PCF, "map-pcf", STIN_FEATURE_SHADOWS, STIN_TIER_GL2)     \
-    X(SHADOWS_MAP_DEPTH, "map-depth", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
-    X(SHADOWS_MAP_COMBINE, "map-combine", STIN_FEATURE_SHADOWS, STIN_TIER_GL1) \
-    X(SHADOWS_OFF, "off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)             \
-    X(SURFACE_POM, "pom", STIN_FEATURE_SURFACE, STIN_TIER_GL2)            \
-    X(SURFACE_PARALLAX, "parallax", STIN_FEATURE_SURFACE, STIN_TIER_GL2)  \
-    X(SURFACE_NORMAL, "normal", STIN_FEATURE_SURFACE, STIN_TIER_GL2)      \
-    X(SURFACE_DOT3, "dot3", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
-    X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)          \
-    X(TRANSLUCENT_SOLID, "translucent-solid", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
-    X(DISPLACEMENT_OFF, "displacement-off", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL1) \
-    X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)                 \
-    X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)           \
-    X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2) \
-    X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4) \
-    X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1) \
-    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4) \
+#define STIN_TECHNIQUE_LIST(X)                                                        \
+    X(NONE, "none", STIN_FEATURE_COUNT, STIN_TIER_AUTO)                               \
+    X(LIGHTING_GLSL150, "glsl150-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL4)    \
+    X(LIGHTING_GLSL110, "glsl110-per-pixel", STIN_FEATURE_LIGHTING, STIN_TIER_GL2)    \
+    X(LIGHTING_FIXED, "fixed-function", STIN_FEATURE_LIGHTING, STIN_TIER_GL1)         \
+    X(SHADOWS_VDSM, "vdsm", STIN_FEATURE_SHADOWS, STIN_TIER_GL4)                      \
+    X(SHADOWS_VOLUME, "volume", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)                  \
+    X(SHADOWS_MAP_PCF, "map-pcf", STIN_FEATURE_SHADOWS, STIN_TIER_GL2)                \
+    X(SHADOWS_MAP_DEPTH, "map-depth", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)            \
+    X(SHADOWS_MAP_COMBINE, "map-combine", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)        \
+    X(SHADOWS_OFF, "shadows-off", STIN_FEATURE_SHADOWS, STIN_TIER_GL1)                \
+    X(SURFACE_POM, "pom", STIN_FEATURE_SURFACE, STIN_TIER_GL2)                        \
+    X(SURFACE_PARALLAX, "parallax", STIN_FEATURE_SURFACE, STIN_TIER_GL2)              \
+    X(SURFACE_NORMAL, "normal", STIN_FEATURE_SURFACE, STIN_TIER_GL2)                  \
+    X(SURFACE_DOT3, "dot3", STIN_FEATURE_SURFACE, STIN_TIER_GL1)                      \
+    X(SURFACE_PLAIN, "plain", STIN_FEATURE_SURFACE, STIN_TIER_GL1)                    \
+    X(TRANSLUCENT_DEEP, "deep", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL4)      \
     X(TRANSLUCENT_COLOURED, "coloured", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL2) \
-    X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
-    X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1) \
-    X(TRANSPARENCY_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
-    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1) \
-    X(TRANSPARENCY_DUAL_PEEL, "dual-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL4) \
-    X(CSG_INTERVAL, "interval", STIN_FEATURE_CSG, STIN_TIER_GL4)
+    X(TRANSLUCENT_OPAQUE, "opaque", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1)  \
+    X(TRANSLUCENT_SOLID, "translucent-solid", STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_TIER_GL1) \
+    X(DISPLACEMENT_TESS, "displace-tess", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL4)   \
+    X(DISPLACEMENT_VTF, "displace", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL2)         \
+    X(DISPLACEMENT_OFF, "displacement-off", STIN_FEATURE_DISPLACEMENT, STIN_TIER_GL1) \
+    X(CSG_SCS, "scs", STIN_FEATURE_CSG, STIN_TIER_GL1)                                \
+    X(CSG_INTERVAL, "interval", STIN_FEATURE_CSG, STIN_TIER_GL4)                      \
+    X(CSG_GOLDFEATHER, "goldfeather", STIN_FEATURE_CSG, STIN_TIER_GL1)                \
+    X(CSG_OFF, "csg-off", STIN_FEATURE_CSG, STIN_TIER_GL1)                            \
+    X(TRANSPARENCY_DUAL_PEEL, "dual-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL4)  \
+    X(TRANSPARENCY_DEPTH_PEEL, "depth-peel", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL2) \
+    X(TRANSPARENCY_SORTED, "sorted", STIN_FEATURE_TRANSPARENCY, STIN_TIER_GL1)
 
 typedef enum stin_technique {
 #define STIN_X_(id, name, feature, tier) STIN_TECH_##id,
@@ -830,7 +833,7 @@ typedef enum stin_technique {
 } stin_technique;
 
 const char *stin_technique_name(stin_technique t);
-/* Looks a technique up by its name ("fixed-function", "off", ...); STIN_TECH_NONE if unknown. */
+/* Looks a technique up by its name ("fixed-function", "shadows-off", ...); STIN_TECH_NONE if unknown. */
 stin_technique stin_technique_from_name(const char *name);
 /* The feature a technique belongs to (STIN_FEATURE_COUNT for NONE). */
 stin_feature stin_technique_feature(stin_technique t);
@@ -844,6 +847,59 @@ typedef struct stin_choice {
 /* ---- context ------------------------------------------------------------ */
 typedef void *(*stin_get_proc_fn)(void *user, const char *name);
 
+/* Per-feature settings of stin_desc (0 = the default each field names). */
+typedef struct stin_shadows_settings {
+    uint32_t soft_samples;     /* point samples of an area light (radius > 0), default 8,
+                                * at most 64 */
+    uint32_t map_size;         /* map-pcf, map-depth, map-combine: texels a side of a
+                                * light's shadow map, default 1024; a power of two, at
+                                * most 8192 */
+} stin_shadows_settings;
+
+typedef struct stin_translucent_settings {
+    uint32_t deep_layers;      /* "deep": layers peeled per face at most, default 4, at
+                                * most 16 */
+    uint32_t deep_map_size;    /* "deep" (and "coloured"'s faces): texels a side of a
+                                * face, default 512; a power of two, at most 4096 (and
+                                * the context's largest texture) */
+    int deep_mono;             /* "deep": 1 stores grey visibility V' (1 - a) instead of
+                                * the coloured one; default 0 */
+    float opaque_threshold;    /* "opaque": casters of opacity >= this cast a full
+                                * shadow, the rest none; default (0) 0.5, finite, in
+                                * (0, 1] */
+} stin_translucent_settings;
+
+typedef struct stin_displacement_settings {
+    float guard_band;          /* "displace": the view volume grown by this fraction of
+                                * its half-size each side before a vertex is left
+                                * undisplaced; default (0) 1, finite and >= 0 */
+    float tess_pixels;         /* "displace-tess": the edge length, in the camera's
+                                * pixels, tessellation aims at; default (0) 4, finite
+                                * and > 0 */
+    uint32_t tess_max;         /* "displace-tess": highest level an edge is split to,
+                                * default 64, at most 64 (and the driver's
+                                * GL_MAX_TESS_GEN_LEVEL) */
+} stin_displacement_settings;
+
+/* CSG products (stin_draw_csg), per frame, all products together. */
+typedef struct stin_csg_settings {
+    uint32_t max_primitives;   /* primitives, default 256, below 2^24 */
+    uint32_t max_terms;        /* terms of the normal forms, default 256, below 2^24 */
+    uint32_t max_literals;     /* primitives named by those terms, counted once per term;
+                                * default 4096, below 2^24. Normalising takes a scratch
+                                * of 2 (max_terms + max_literals) words, and the
+                                * products a slot per term */
+    uint32_t interval_layers;  /* "interval": crossings of one primitive peeled per
+                                * pixel (k), default 4, at most 16; a product with more
+                                * on a pixel goes to scs/goldfeather that frame */
+} stin_csg_settings;
+
+typedef struct stin_transparency_settings {
+    uint32_t layers;           /* "depth-peel", "dual-peel": layers of blended surfaces
+                                * peeled per pixel at most, default 8, at most 64;
+                                * surfaces past it along a ray are not drawn */
+} stin_transparency_settings;
+
 typedef struct stin_desc {
     stin_get_proc_fn get_proc_address; /* required */
     void *get_proc_user;
@@ -853,6 +909,7 @@ typedef struct stin_desc {
     uint64_t caps_mask;                /* STIN_CAP_BIT()s to hide; default 0 */
     int max_gl_version;                /* e.g. 14 to treat the context as GL 1.4; 0 = as reported */
     stin_technique techniques[STIN_FEATURE_COUNT]; /* forced technique per feature; NONE = auto */
+    uint64_t debug_flags;              /* STIN_DEBUG_*: diagnostics, default 0 */
     /* capacities (0 = default) */
     uint32_t max_meshes;               /* default 64 */
     uint32_t max_textures;             /* default 64 */
@@ -864,158 +921,136 @@ typedef struct stin_desc {
     uint32_t max_texture_bytes;        /* staging for texture creation, default 8 MiB
                                         * (a 2048x2048 albedo texture with mipmaps, a
                                         * 1024x1024 normal map; stin_texture_staging_bytes) */
-    uint32_t soft_shadow_samples;      /* point samples of an area light (radius > 0),
-                                        * default 8, at most 64 */
-    uint32_t debug_flags;              /* STIN_DEBUG_*: diagnostics, default 0 */
-    uint32_t shadow_map_size;          /* texels a side of a light's shadow map, default
-                                        * 1024; a power of two, at most 8192 */
-    float displace_guard_band;         /* "displace": the view volume grown by this
-                                        * fraction of its half-size each side before
-                                        * a vertex is left undisplaced; default (0) 1,
-                                        * finite and >= 0 */
-    float displace_tess_pixels;        /* "displace-tess": the edge length, in the
-                                        * camera's pixels, tessellation aims at;
-                                        * default (0) 4, finite and > 0 */
-    uint32_t displace_tess_max;        /* "displace-tess": highest level an edge is
-                                        * split to, default (0) 64, at most 64 (and
-                                        * the driver's GL_MAX_TESS_GEN_LEVEL) */
-    /* CSG products (stin_draw_csg), per frame, all products together: */
-    uint32_t max_csg_primitives;       /* primitives, default 256, below 2^24 */
-    uint32_t max_csg_terms;            /* terms of the normal forms, default 256, below 2^24 */
-    uint32_t max_csg_literals;         /* primitives named by those terms, counted once per
-                                        * term; default 4096, below 2^24. Normalising takes
-                                        * a scratch of 2 (max_csg_terms + max_csg_literals)
-                                        * words, and the products a slot per term */
-    uint32_t deep_layers;              /* "deep": layers peeled per face at most,
-                                        * default 4, at most 16 */
-    uint32_t deep_map_size;            /* "deep": texels a side of a face, default 512;
-                                        * a power of two, at most 4096 (and the
-                                        * context's largest texture) */
-    int deep_mono;                     /* "deep": 1 stores grey visibility V' (1 - a)
-                                        * instead of the coloured one; default 0 */
-    float translucent_opaque_threshold; /* "opaque": casters of opacity >= this cast a
-                                        * full shadow, the rest none; default (0) 0.5,
-                                        * finite, in (0, 1] */
-    uint32_t transparency_layers;      /* "depth-peel": layers of blended surfaces peeled
-                                        * per pixel at most, default 8, at most 64;
-                                        * surfaces past it along a ray are not drawn */
-    uint32_t csg_interval_layers;      /* "interval": crossings of one primitive peeled per
-                                        * pixel (k), default 4, at most 16; a product with
-                                        * more on a pixel goes to scs/goldfeather that frame */
+    /* per feature */
+    stin_shadows_settings shadows;
+    stin_translucent_settings translucent;
+    stin_displacement_settings displacement;
+    stin_csg_settings csg;
+    stin_transparency_settings transparency;
 } stin_desc;
 
-/* Diagnostics for tests and bug reports; none changes what a correct frame
- * looks like where the technique is exact. */
-#define STIN_DEBUG_VOLUME_ZFAIL 1u  /* z-fail for every caster (needs caps) */
-#define STIN_DEBUG_VOLUME_ZPASS 2u  /* z-pass for every caster: wrong with the eye in a volume */
-/* GL4 extrudes volumes in a geometry shader (no CPU work per caster
- * triangle); these build them on the CPU as GL1/GL2 do, or count the
- * extruded triangles into stin_frame_stats.shadow_volume_triangles (a
- * GL_PRIMITIVES_GENERATED query per caster: waits for the GPU) */
-#define STIN_DEBUG_VOLUME_CPU 16777216u
-#define STIN_DEBUG_VOLUME_COUNT 33554432u
-/* VDSM steps, each on by default, off for measurement and tests; the mask is
- * the same without them (NO_GROW: pixels a shadow polygon covers only in
- * part, not at their centre, may be lost - the artifact the growth fixes).
- * STIN_DEBUG_VDSM_COUNT's count is of what the steps left. */
-#define STIN_DEBUG_VDSM_NO_EP 4u    /* keep triangles facing the light */
-#define STIN_DEBUG_VDSM_NO_GROW 8u  /* no conservative growth of the shadow polygons */
-#define STIN_DEBUG_VDSM_COUNT 16u   /* count the primitives the geometry shader emits into
-                                     * stin_frame_stats.vdsm_primitives (waits for the GPU
-                                     * after each light) */
-#define STIN_DEBUG_VDSM_NO_SM 32u   /* no light-view pyramid culling of triangles in shadow */
-#define STIN_DEBUG_VDSM_NO_DC 64u   /* extrude to infinity; no culling of triangles with no
-                                     * receiver behind them */
-#define STIN_DEBUG_VDSM_NO_DEPTH_TEST 268435456u /* shade every fragment of the shadow
-                                                  * polygons, those behind the visible
-                                                  * surface too */
-#define STIN_DEBUG_VDSM_ONE_PASS 2147483648u /* cull and draw in one geometry shader, no
-                                              * culling pass */
-/* Displacement speed-ups (see TIERS, displacement): */
-#define STIN_DEBUG_DISPLACE_NO_GUARD 128u /* fetch the height of every vertex, on screen
-                                           * or not */
-#define STIN_DEBUG_DISPLACE_MANUAL_BILINEAR 256u /* four fetches at texel centres,
-                                                  * blended in the shader */
-/* volume: after the frame, every light's shadow volumes (its centre sample,
- * capped) are added over the colour in orange where they lie in front of
- * the surfaces: a picture of the volumes, not of the shadows */
-#define STIN_DEBUG_SHOW_VOLUMES 512u
-/* deep: peel every layer of every face, without stopping at the first layer
- * that drew nothing (the same image, more passes) */
-#define STIN_DEBUG_DEEP_NO_EARLY_STOP 1024u
-/* displacement: level 0 of the height map at every distance (no mip chain) */
-#define STIN_DEBUG_DISPLACE_NO_MIP 2048u
-/* coloured: no nearest-transparent-depth test: every point under a
- * transparent caster is tinted, those in front of it too (tests prove the
- * test is needed) */
-#define STIN_DEBUG_COLOURED_NO_DEPTH 16384u
-/* deep: the early stop by an occlusion query even where GL 4.3's storage
- * flag could run (the same image and layer count) */
-#define STIN_DEBUG_DEEP_QUERY_STOP 32768u
-/* scs: run every run of each subtraction sequence (as many as its window
- * boxes' bound allows), without the stencil check that ends it where the
- * depth lies inside no subtracted primitive (the same image, more passes) */
-#define STIN_DEBUG_CSG_SCS_NO_EARLY_STOP 65536u
-/* scs: count a term's plain primitives in one 8-bit stencil counter instead
- * of batches of 255: wrong (nothing drawn) where a term intersects more than
- * 255; a test that it shows the batching matters */
-#define STIN_DEBUG_CSG_NO_BATCH 131072u
-/* CSG: resolve the frame's products on the CPU (read-backs into the
- * staging, as GL1 contexts do) where the GPU resolve would run (the same
- * depth, bit for bit; a test and bench baseline) */
-#define STIN_DEBUG_CSG_READBACK 67108864u
-/* CSG: resolve through the work buffer, merge and snap (below) where the
- * frame's one scs candidate would resolve in place or its candidates be
- * snapped straight into the frame (direct): the same image; a test and
- * bench baseline */
-#define STIN_DEBUG_CSG_NO_IN_PLACE 536870912u
-/* GLSL lighting: every lit pass through the general program (a loop over
- * up to 8 lights bounded by a uniform, every part of the equation behind a
- * uniform branch) instead of programs specialised to the pass's lights and
- * the draw's material: the same picture within rounding; a test and bench
- * baseline */
-#define STIN_DEBUG_LIT_GENERAL 1073741824u
-/* CSG products cast no shadow into the lights' maps (as before they did):
- * a test that casting matters */
-#define STIN_DEBUG_CSG_NO_CAST 8388608u
-/* interval: the seed's one-interval method (one layer per primitive: its
- * nearest front and nearest back face, no overflow check): wrong where an
- * operand is non-convex along a ray or bodies lie behind each other; a
- * test that the k layers matter */
-#define STIN_DEBUG_CSG_INTERVAL_ONE_LAYER 524288u
-/* interval: peel 2 layers per primitive whatever desc.csg_interval_layers
- * says (a product deeper than that overflows and goes to goldfeather) */
-#define STIN_DEBUG_CSG_INTERVAL_TWO_LAYERS 1048576u
-/* depth-peel: peel all desc.transparency_layers layers, without stopping at
- * the first that drew nothing (the same image, more passes) */
-#define STIN_DEBUG_PEEL_NO_EARLY_STOP 4096u
-/* depth-peel: no layer is drawn (sorted: no blended draw): the frame shows
- * its opaque draws alone (the blended ones still cast shadows as the
- * techniques say), the image the layers are composited over */
-#define STIN_DEBUG_PEEL_OPAQUE_ONLY 8192u
-/* depth-peel under vdsm: the peeled layers lit unshadowed, as before vdsm
- * shadowed them (its position buffer made from each layer); a test that
- * the per-layer masks matter */
-#define STIN_DEBUG_PEEL_VDSM_UNSHADOWED 2097152u
-/* sorted: the blended draws lit unshadowed in the light batches, as before
- * the map techniques shadowed them; a test that the shadows matter */
-#define STIN_DEBUG_SORTED_UNSHADOWED 4194304u
+/* Diagnostics for tests and bug reports (desc.debug_flags, 64 bits: one
+ * byte of bits a feature); none changes what a correct frame looks like
+ * where the technique is exact. */
+/* -- the frame and lighting (bits 0-7) */
 /* GPU time per frame stage into stin_frame_stats.stage_ns, from timestamp
  * queries (GL 3.3 or ARB_timer_query: the "timer queries" capability) at
  * each change of stage; stin_end_frame waits for the last of them, so a
  * timed frame ends with the GPU idle (a measurement aid, as
  * STIN_DEBUG_VDSM_COUNT is). Without the capability stage_times stays 0. */
-#define STIN_DEBUG_STAGE_TIMES 134217728u
+#define STIN_DEBUG_STAGE_TIMES 0x1ull
+/* GLSL lighting: every lit pass through the general program (a loop over
+ * up to 8 lights bounded by a uniform, every part of the equation behind a
+ * uniform branch) instead of programs specialised to the pass's lights and
+ * the draw's material: the same picture within rounding; a test and bench
+ * baseline */
+#define STIN_DEBUG_LIGHTING_GENERAL 0x2ull
+/* -- shadows: volume (bits 8-15) */
+#define STIN_DEBUG_VOLUME_ZFAIL 0x100ull /* z-fail for every caster (needs caps) */
+#define STIN_DEBUG_VOLUME_ZPASS 0x200ull /* z-pass for every caster: wrong with the eye in
+                                          * a volume */
+/* GL4 extrudes volumes in a geometry shader (no CPU work per caster
+ * triangle); these build them on the CPU as GL1/GL2 do, or count the
+ * extruded triangles into stin_frame_stats.shadows.volume_triangles (a
+ * GL_PRIMITIVES_GENERATED query per caster: waits for the GPU) */
+#define STIN_DEBUG_VOLUME_CPU 0x400ull
+#define STIN_DEBUG_VOLUME_COUNT 0x800ull
+/* after the frame, every light's shadow volumes (its centre sample, capped)
+ * are added over the colour in orange where they lie in front of the
+ * surfaces: a picture of the volumes, not of the shadows */
+#define STIN_DEBUG_VOLUME_SHOW 0x1000ull
+/* -- shadows: vdsm (bits 16-23). Its steps, each on by default, off for
+ * measurement and tests; the mask is the same without them (NO_GROW: pixels
+ * a shadow polygon covers only in part, not at their centre, may be lost -
+ * the artifact the growth fixes). STIN_DEBUG_VDSM_COUNT's count is of what
+ * the steps left. */
+#define STIN_DEBUG_VDSM_NO_EP 0x10000ull   /* keep triangles facing the light */
+#define STIN_DEBUG_VDSM_NO_GROW 0x20000ull /* no conservative growth of the shadow polygons */
+#define STIN_DEBUG_VDSM_COUNT 0x40000ull   /* count the primitives the geometry shader
+                                            * emits into stats.shadows.vdsm_primitives
+                                            * (waits for the GPU after each light) */
+#define STIN_DEBUG_VDSM_NO_SM 0x80000ull   /* no light-view pyramid culling of triangles
+                                            * in shadow */
+#define STIN_DEBUG_VDSM_NO_DC 0x100000ull  /* extrude to infinity; no culling of triangles
+                                            * with no receiver behind them */
+#define STIN_DEBUG_VDSM_NO_DEPTH_TEST 0x200000ull /* shade every fragment of the shadow
+                                                   * polygons, those behind the visible
+                                                   * surface too */
+#define STIN_DEBUG_VDSM_ONE_PASS 0x400000ull /* cull and draw in one geometry shader, no
+                                              * culling pass */
+/* -- displacement (bits 24-31); see TIERS, displacement */
+#define STIN_DEBUG_DISPLACE_NO_GUARD 0x1000000ull /* fetch the height of every vertex, on
+                                                   * screen or not */
+#define STIN_DEBUG_DISPLACE_MANUAL_BILINEAR 0x2000000ull /* four fetches at texel centres,
+                                                          * blended in the shader */
+/* level 0 of the height map at every distance (no mip chain) */
+#define STIN_DEBUG_DISPLACE_NO_MIP 0x4000000ull
+/* -- translucent shadows (bits 32-39) */
+/* deep: peel every layer of every face, without stopping at the first layer
+ * that drew nothing (the same image, more passes) */
+#define STIN_DEBUG_DEEP_NO_EARLY_STOP 0x100000000ull
+/* deep: the early stop by an occlusion query even where GL 4.3's storage
+ * flag could run (the same image and layer count) */
+#define STIN_DEBUG_DEEP_QUERY_STOP 0x200000000ull
+/* coloured: no nearest-transparent-depth test: every point under a
+ * transparent caster is tinted, those in front of it too (tests prove the
+ * test is needed) */
+#define STIN_DEBUG_COLOURED_NO_DEPTH 0x400000000ull
+/* -- CSG (bits 40-47) */
+/* resolve the frame's products on the CPU (read-backs into the staging, as
+ * GL1 contexts do) where the GPU resolve would run (the same depth, bit for
+ * bit; a test and bench baseline) */
+#define STIN_DEBUG_CSG_READBACK 0x10000000000ull
+/* resolve through the work buffer, merge and snap (below) where the frame's
+ * one scs candidate would resolve in place or its candidates be snapped
+ * straight into the frame (direct): the same image; a test and bench
+ * baseline */
+#define STIN_DEBUG_CSG_NO_IN_PLACE 0x20000000000ull
+/* products cast no shadow into the lights' maps (as before they did): a
+ * test that casting matters */
+#define STIN_DEBUG_CSG_NO_CAST 0x40000000000ull
+/* scs: run every run of each subtraction sequence (as many as its window
+ * boxes' bound allows), without the stencil check that ends it where the
+ * depth lies inside no subtracted primitive (the same image, more passes) */
+#define STIN_DEBUG_CSG_SCS_NO_EARLY_STOP 0x80000000000ull
+/* scs: count a term's plain primitives in one 8-bit stencil counter instead
+ * of batches of 255: wrong (nothing drawn) where a term intersects more than
+ * 255; a test that it shows the batching matters */
+#define STIN_DEBUG_CSG_SCS_NO_BATCH 0x100000000000ull
+/* interval: the seed's one-interval method (one layer per primitive: its
+ * nearest front and nearest back face, no overflow check): wrong where an
+ * operand is non-convex along a ray or bodies lie behind each other; a
+ * test that the k layers matter */
+#define STIN_DEBUG_CSG_INTERVAL_ONE_LAYER 0x200000000000ull
+/* interval: peel 2 layers per primitive whatever desc.csg.interval_layers
+ * says (a product deeper than that overflows and goes to goldfeather) */
+#define STIN_DEBUG_CSG_INTERVAL_TWO_LAYERS 0x400000000000ull
+/* -- transparency (bits 48-55) */
+/* no blended draw is drawn (depth-peel, dual-peel: no layer; sorted: no
+ * draw): the frame shows its opaque draws alone (the blended ones still
+ * cast shadows as the techniques say), the image the layers are composited
+ * over */
+#define STIN_DEBUG_TRANSPARENCY_OPAQUE_ONLY 0x1000000000000ull
+/* depth-peel: peel all desc.transparency.layers layers, without stopping at
+ * the first that drew nothing (the same image, more passes) */
+#define STIN_DEBUG_PEEL_NO_EARLY_STOP 0x2000000000000ull
+/* depth-peel under vdsm: the peeled layers lit unshadowed, as before vdsm
+ * shadowed them (its position buffer made from each layer); a test that
+ * the per-layer masks matter */
+#define STIN_DEBUG_PEEL_VDSM_UNSHADOWED 0x4000000000000ull
 /* dual-peel: run a geometry pass per two layers up to
- * desc.transparency_layers, without stopping at a pass that finds nothing
+ * desc.transparency.layers, without stopping at a pass that finds nothing
  * or after a back layer that drew nothing (the same image) */
-#define STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP 262144u
+#define STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP 0x8000000000000ull
+/* sorted: the blended draws lit unshadowed in the light batches, as before
+ * the map techniques shadowed them; a test that the shadows matter */
+#define STIN_DEBUG_SORTED_UNSHADOWED 0x10000000000000ull
 
 typedef struct stin_context stin_context;
 
 /* GPU memory of "deep"'s maps for this desc (defaults applied): 2 x 6 x
- * ceil(deep_layers / 2) x deep_map_size^2 x 16 bytes of layers plus
- * deep_map_size^2 x 4 of depth buffer. 0 on a bad desc. */
+ * ceil(translucent.deep_layers / 2) x translucent.deep_map_size^2 x 16 bytes of layers plus
+ * translucent.deep_map_size^2 x 4 of depth buffer. 0 on a bad desc. */
 uint64_t stin_deep_memory_bytes(const stin_desc *desc);
 
 /* Bytes the configuration needs (the desc with defaults applied). 0 on a bad desc. */
@@ -1048,7 +1083,7 @@ stin_tier stin_best_tier(const stin_caps *caps);
 
 /* Exact token match against the context's extension list (GL_EXTENSIONS or
  * glGetStringi). Reports what the driver says, before caps_mask. */
-int stin_has_extension(const stin_context *ctx, const char *name);
+int stin_query_extension(const stin_context *ctx, const char *name);
 
 /* ---- meshes ------------------------------------------------------------- */
 /* Handles: 0 is never a handle. A handle resolves only in the context that
@@ -1117,14 +1152,14 @@ typedef struct stin_mesh_info {
  * (or repeated indices): a test of shape, the same at every scale from
  * float's smallest to its largest values. */
 stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin_mesh *out);
-stin_result stin_query_mesh(const stin_context *ctx, stin_mesh mesh, stin_mesh_info *out);
+stin_result stin_query_mesh_info(const stin_context *ctx, stin_mesh mesh, stin_mesh_info *out);
 /* Neighbour triangle across edge e (0..2: v0v1, v1v2, v2v0) of triangle t, or
  * UINT32_MAX for an open or non-manifold edge. */
-stin_result stin_mesh_adjacency(const stin_context *ctx, stin_mesh mesh, uint32_t t,
-                                uint32_t out_neighbours[3]);
+stin_result stin_query_mesh_adjacency(const stin_context *ctx, stin_mesh mesh, uint32_t t,
+                                      uint32_t out_neighbours[3]);
 /* Tangent (xyz) and handedness (w = +1/-1) of a vertex. */
-stin_result stin_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uint32_t vertex,
-                              float out_tangent[4]);
+stin_result stin_query_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uint32_t vertex,
+                                    float out_tangent[4]);
 /* Refused (logged, the mesh stays) while a frame is open: its draws may use it. */
 void stin_destroy_mesh(stin_context *ctx, stin_mesh mesh);
 
@@ -1141,7 +1176,7 @@ typedef struct stin_texture_desc {
                               * contexts get a power-of-two resample); width *
                               * height above 2^30: STIN_ERROR_INVALID_ARGUMENT */
     const uint8_t *pixels;   /* RGBA8, 4 bytes per pixel, rows bottom to top */
-    int no_mipmaps;          /* default 0: mipmaps are built (for
+    int base_level_only;     /* 1: no mip chain; default 0: mipmaps are built (for
                               * STIN_TEXTURE_HEIGHT only into displacement's
                               * copy, where displacement is built: parallax
                               * and pom march level 0) */
@@ -1203,13 +1238,15 @@ typedef struct stin_light_desc {
     float attenuation[3];   /* k0, k1, k2; default (1,0,0) when all zero */
     float spot_cutoff_deg;  /* half angle, (0,90]; default 45 */
     float spot_exponent;    /* default 0 */
-    float radius;           /* > 0: area light, soft shadows from desc.soft_shadow_samples
+    float radius;           /* > 0: area light, soft shadows from desc.shadows.soft_samples
                              * point samples (stin_light_sample); default 0 */
     float range;            /* > 0: the light reaches no farther (its attenuation makes it
                              * negligible); shadow passes are scissored to it. 0 = unbounded */
     float shadow_offset[2]; /* shadow-map polygon offset (factor, units), finite;
-                             * default (1.1, 4.0) when both are 0 */
-    int shadow_offset_off;  /* 1: no polygon offset (shows acne; for tests) */
+                             * default (1.1, 4.0) when both are 0, unless
+                             * shadow_offset_exact */
+    int shadow_offset_exact; /* 1: shadow_offset as given, (0, 0) too: no offset
+                              * (shows acne; for tests) */
     uint32_t pcf_kernel;    /* map-pcf: 1, 3 or 5 taps a side (each the hardware's 2x2
                              * compare); default 3 */
 } stin_light_desc;
@@ -1274,7 +1311,8 @@ typedef struct stin_frame_desc {
                               * checks again and, if it went bad in between,
                               * drops the frame with the same error. */
     float clear_color[4];    /* cleared before drawing */
-    int no_clear;            /* 1: keep colour/depth/stencil as they are */
+    int keep_contents;       /* 1: draw over the target's colour, depth and stencil
+                              * as they are (no clear) */
     float ambient[3];        /* scene ambient, multiplies albedo */
     stin_output output;
     stin_export export_visibility; /* default STIN_EXPORT_NONE */
@@ -1353,11 +1391,11 @@ typedef struct stin_csg_desc {
  * displaced material; STIN_ERROR_INVALID_HANDLE for a stale mesh;
  * STIN_ERROR_INVALID_MESH for a mesh that is not a closed 2-manifold (the
  * parity of its surfaces along a ray is what says inside);
- * STIN_ERROR_CAPACITY when the frame's max_csg_primitives, max_csg_terms or
- * max_csg_literals would be passed, when the partial normal forms outgrow
+ * STIN_ERROR_CAPACITY when the frame's csg.max_primitives, csg.max_terms or
+ * csg.max_literals would be passed, when the partial normal forms outgrow
  * the scratch, or when expanding the expression visits more than 2^22 nodes
  * (a shared node counts at each use) (the log names which; the product is
- * dropped and counted in stin_frame_stats.dropped_csg). Primitives no term
+ * dropped and counted in stin_frame_stats.csg.dropped). Primitives no term
  * names are not drawn. A product whose every term is empty draws nothing
  * and returns STIN_OK. stin_query_csg_terms reads the normal form back. */
 stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
@@ -1393,7 +1431,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * keeps it, two touching faces cancel (the exact reference's rule for
  * crossings at one distance; no speckle). The result is written into the
  * depth buffer (what it held before the resolve stays where nearer:
- * earlier products, a no_clear frame's depth). Then the products' faces
+ * earlier products, a keep_contents frame's depth). Then the products' faces
  * are drawn like draws in every pass (ambient, lit, shadow tests, normal
  * and visibility outputs, the screen mask) with depth EQUAL on the
  * resolved surface, a complemented primitive's back faces with their
@@ -1415,7 +1453,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * (slope from the resolved depth's one-sided differences). Its CPU copies
  * follow the camera's resolve in the staging (9 bytes a texel of the
  * rectangle); a rectangle that does not fit goes in bands of rows, each a
- * resolve (stin_frame_stats.csg_cast_maps, csg_cast_bands).
+ * resolve (stin_frame_stats.csg.cast_maps, csg.cast_bands).
  * STIN_DEBUG_CSG_NO_CAST turns casting off. vdsm casts products exactly,
  * as it casts triangles, where the context has GL 4.3's shader storage
  * buffers (the "compute shaders" capability): per light and product, each
@@ -1431,7 +1469,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * product; the lists take 4 bytes a pixel of the viewport plus a pool of
  * 16-byte nodes, one a pixel at first and grown (that product listed
  * again) when a product's crossings outrun it (stin_frame_stats.
- * vdsm_csg_casts, vdsm_csg_bytes); a product of more than 128 primitives
+ * shadows.vdsm_csg_casts, shadows.vdsm_csg_bytes); a product of more than 128 primitives
  * or 64 terms casts nothing under vdsm (logged once). Without the storage
  * buffers (gl33-core) vdsm casts no product, logged once. Volumes (and the
  * point lights GL1 maps hand to volumes) cast no product, logged once: a
@@ -1449,7 +1487,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * margin) are taken together, up to 32 from the next 64 of the term: no
  * pixel holds a layer of two of them, so they share the layer's clear, the
  * count of the other literals, the stencil-tested kill and the take, as
- * OpenCSG batches its primitives (stin_frame_stats.csg_grouped). A literal
+ * OpenCSG batches its primitives (stin_frame_stats.csg.grouped). A literal
  * counted over a member whose world box it does not meet follows the same
  * coincidence rule as any other (faces within 4 depth units of the
  * candidate count as crossed). Memory:
@@ -1481,13 +1519,13 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * passes exactly through (tests/image/csg_test.c: at most 2 a case).
  * In place: where the frame's only candidate is one scs term (one product
  * whose normal form has one term; the frame clears its buffers, no
- * desc.no_clear; a framebuffer that is not multisampled), it runs in the
+ * desc.keep_contents; a framebuffer that is not multisampled), it runs in the
  * frame's own depth and stencil, whose depth then holds the faces' own
  * rasterised depth: no work buffer, merge or snap (on llvmpipe 0.5-0.7x
  * the frame of a box minus one sphere). Its stencil is cleared after it. The result texture takes a copy of the
  * frame's depth (glCopyTexSubImage2D, no read-back) only when a later pass
  * draws the products elsewhere (screen masks, outlines, depth-peel, vdsm's
- * position buffer), once a frame (stin_frame_stats.csg_in_place;
+ * position buffer), once a frame (stin_frame_stats.csg.in_place;
  * STIN_DEBUG_CSG_NO_IN_PLACE keeps the work buffer).
  * Direct: every other frame's GPU resolve but interval's (its walk's layers
  * are no one face set) and a multisampled framebuffer's keeps the work
@@ -1496,7 +1534,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * fragment kept within 2^-21 of the candidate's depth in the work buffer.
  * The frame's depth is then the result, with the faces' own rasterised
  * depth: no result clear, merge quads or final snap, and the result
- * texture copied on demand as in place (stin_frame_stats.csg_direct;
+ * texture copied on demand as in place (stin_frame_stats.csg.direct;
  * STIN_DEBUG_CSG_NO_IN_PLACE merges instead).
  * Both resolves keep to a rectangle: a term's surface (scs) or a
  * candidate's (goldfeather) lies inside its own and every plain literal's
@@ -1506,7 +1544,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * Programs: three, made at stin_create; GL memory: two textures, 8 bytes a
  * pixel for 24-bit depth (16 for 32-bit float), made at the first frame
  * with a product, grown, never shrunk, freed at stin_destroy
- * (stin_frame_stats.csg_gpu_resolves, csg_gpu_bytes).
+ * (stin_frame_stats.csg.gpu_resolves, csg.gpu_bytes).
  * The near and far planes: where the near plane cuts a primitive of a term
  * (its bounding box), that primitive has lost the faces in front of the
  * plane, so the term's parity is counted from behind instead (faces behind
@@ -1543,12 +1581,12 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * somewhere (one pass a primitive counting +1 at its front and -1 at its
  * back in the stencil, its largest value taken as stencil sample counts
  * are: one wait; STIN_DEBUG_CSG_SCS_NO_EARLY_STOP runs every run of the
- * bound; stin_frame_stats.csg_scs_runs counts the runs, csg_scs_checks the
+ * bound; stin_frame_stats.csg.scs_runs counts the runs, csg.scs_checks the
  * checks); complemented
  * primitives whose boxes miss the term's rectangle are left out;
  * then a pixel survives where the depth lies in front of every plain
  * primitive's back face, counted in the stencil 255 primitives a batch
- * (no counter overflows; STIN_DEBUG_CSG_NO_BATCH shows why), and the
+ * (no counter overflows; STIN_DEBUG_CSG_SCS_NO_BATCH shows why), and the
  * nearest survivor per pixel is kept as goldfeather keeps it (on the GPU
  * or the CPU).
  * Faces within 4 depth units of the depth count as in front of it (the
@@ -1565,7 +1603,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * primitive (or a term of complements only) is resolved by goldfeather,
  * logged once per context (INFO; WARNING where the caller forced scs with
  * desc.techniques[STIN_FEATURE_CSG]); force "goldfeather" for every
- * product. stin_frame_stats.csg_scs_products counts the products scs
+ * product. stin_frame_stats.csg.scs_products counts the products scs
  * resolved. */
 
 /* CSG technique "interval" (GL4: GLSL 1.50 lighting, FBOs, float and array
@@ -1573,7 +1611,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * walk makes it 1.4-3x goldfeather's frame time on the bench's products,
  * docs/benchmarks.md):
  * the seed's G-buffer ray-interval method generalised to k layers per
- * primitive (desc.csg_interval_layers, default 4). Per product: each
+ * primitive (desc.csg.interval_layers, default 4). Per product: each
  * primitive alone depth-peeled into k layers along the camera rays (depth
  * LESS into a layer of the frame's depth format, fragments at or in front
  * of the layer before discarded; an RG32F layer beside it keeps each
@@ -1600,14 +1638,14 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * at stin_destroy): 2 x ceil((n k + 2) / 2) layers of 12 bytes a pixel
  * (depth 4, RG32F 8) and 1 byte a pixel of walk target, so about
  * (n k + 2) x 12 + 1 bytes a pixel: 409 bytes a pixel, 120 MiB at 640 x 480
- * for n = 8, k = 4 (31 MiB for n = 2); stin_frame_stats.csg_interval_bytes
+ * for n = 8, k = 4 (31 MiB for n = 2); stin_frame_stats.csg.interval_bytes
  * reports it. Selection per product: under "interval", a product goes to
  * scs's rule (then goldfeather) when it has more than 32 primitives or 64
  * terms, n k + 1 > 255 layers (the walk's 8-bit answer) or more than
  * GL_MAX_ARRAY_TEXTURE_LAYERS, or a primitive shows more than k crossings
  * on a pixel (found that frame: the product is resolved again by the
  * others), logged once per context (INFO; WARNING where the caller forced
- * interval). stin_frame_stats.csg_interval_products counts the products
+ * interval). stin_frame_stats.csg.interval_products counts the products
  * interval resolved. A light's map resolve (products casting) runs it too,
  * in the map's resolve framebuffer. */
 
@@ -1642,83 +1680,104 @@ typedef enum stin_stage {
  * "blended", "export"; "unknown stage" else. */
 const char *stin_stage_name(stin_stage s);
 
-typedef struct stin_frame_stats {
-    uint32_t draws, lights, passes, triangles;
-    uint32_t shadow_volume_triangles; /* volume sides and caps drawn */
-    uint32_t zfail_casters, zpass_casters; /* per light sample */
-    uint32_t shadow_map_size;  /* texels a side the maps were rendered at (0: none) */
-    uint32_t dropped_draws, dropped_lights;
-    /* vdsm: primitives its geometry shader emitted, all lights (GL_PRIMITIVES_GENERATED,
-     * the seed's P_c; 0 where the context has no queries) */
-    uint32_t vdsm_primitives;
-    uint32_t csg_products, csg_terms; /* accepted by stin_draw_csg (terms of their normal forms) */
-    uint32_t dropped_csg;      /* products stin_draw_csg refused */
-    /* deep: layers peeled (passes into a deep map), all lights and faces;
-     * the faces peeled (a spot or directional light's one, a point light's
-     * six, less those no transparent caster's bounding box reaches, which
-     * the early stop leaves unpeeled) */
-    uint32_t deep_layers, deep_faces;
-    /* products resolved by "scs" (the others of a frame went to goldfeather) */
-    uint32_t csg_scs_products;
-    uint32_t csg_scs_runs;    /* runs of scs's subtraction sequences (every term) */
-    uint32_t csg_scs_checks;  /* their checks for a depth still inside a subtracted one */
-    /* depth-peel: geometry passes that peeled a camera layer (the last one,
-     * which found nothing, counted: a scene of n layers under a cap above n
-     * takes n + 1), and the layers that drew something; dual-peel: its
-     * min-max passes (n layers: n / 2 + 1) and the layers lit */
-    uint32_t peel_passes, peel_layers;
-    /* maps (a spot or directional light's, a point light's face) that CSG
-     * products were resolved into from the light: they cast into it */
-    uint32_t csg_cast_maps;
-    /* the resolves those took: one a map, more where the products' rectangle
-     * of it outgrew the staging beside the camera's resolve (bands of rows),
-     * and map-depth's side test and map-combine's ramp resolving such a map
-     * again band by band */
-    uint32_t csg_cast_bands;
-    /* products resolved by "interval", and the GL memory its layers and
-     * target hold (grown to the largest viewport and product so far) */
-    uint32_t csg_interval_products;
-    uint64_t csg_interval_bytes;
-    /* volume on GL4: casters (per light sample) whose volumes the geometry
-     * shader extruded from the mesh's own buffers; their triangles count in
-     * shadow_volume_triangles only with STIN_DEBUG_VOLUME_COUNT */
-    uint32_t shadow_volume_gpu_casters;
-    /* CSG: 1 when the frame's resolve kept its candidates and result on the
-     * GPU (no read-backs), 0 when it read them back; and that resolve's GL
-     * memory (two depth textures at the viewport's window size) */
-    uint32_t csg_gpu_resolves;
-    uint64_t csg_gpu_bytes;
-    /* vdsm: products whose shadow it drew (per light and peeled layer), and
-     * the GL memory of its crossing lists (heads at the viewport's size and
-     * the node pool, grown to the most crossings a product took so far) */
-    uint32_t vdsm_csg_casts;
-    uint64_t vdsm_csg_bytes;
-    /* vdsm: lights (per peeled layer too) whose deepest receivers came by
-     * storage-buffer atomics (GL 4.3; shader storage binding point 0) */
-    uint32_t vdsm_atomic_receivers;
-    /* STIN_DEBUG_STAGE_TIMES: 1 when stage_ns holds this frame's GPU time
-     * per stage in nanoseconds (0: not asked, or no timer queries) */
-    uint32_t stage_times;
-    uint64_t stage_ns[STIN_STAGE_COUNT];
-    /* CSG: 1 when the frame's GPU resolve ran in place (one scs term in the
-     * frame's own buffers: no work buffer, merge or snap) */
-    uint32_t csg_in_place;
-    /* CSG: 1 when the frame's GPU resolve took each candidate by snapping its
-     * faces straight into the frame's depth (no result buffer or merge) */
-    uint32_t csg_direct;
-    /* goldfeather: candidates that shared their passes with others (a group
-     * of complemented convex literals whose window rectangles lie apart) */
-    uint32_t csg_grouped;
+/* Per-feature counters of stin_frame_stats. */
+typedef struct stin_lighting_stats {
     /* GLSL lighting: lit draws (per pass) shaded by a program specialised to
      * the pass's lights and the draw's material, and such programs built
      * this frame (each is built once, when a frame first needs it, and kept:
      * up to 32 a context) */
-    uint32_t lit_specialised, lit_programs_built;
+    uint32_t specialised, programs_built;
+} stin_lighting_stats;
+
+typedef struct stin_shadows_stats {
+    uint32_t map_size;           /* texels a side the maps were rendered at (0: none) */
+    /* volume: sides and caps drawn, and the casters (per light sample) by
+     * z-fail and by z-pass; on GL4 the casters whose volumes the geometry
+     * shader extruded from the mesh's own buffers (their triangles count in
+     * volume_triangles only with STIN_DEBUG_VOLUME_COUNT) */
+    uint32_t volume_triangles;
+    uint32_t zfail_casters, zpass_casters;
+    uint32_t volume_gpu_casters;
+    /* vdsm: primitives its geometry shader emitted, all lights
+     * (GL_PRIMITIVES_GENERATED, the seed's P_c; STIN_DEBUG_VDSM_COUNT, 0
+     * where the context has no queries) */
+    uint32_t vdsm_primitives;
     /* vdsm: lights (per peeled layer too) whose shadow polygons came from a
      * culling pass, and with STIN_DEBUG_VDSM_COUNT the faces those passes
      * kept (the side faces and own faces of casting triangles the eye sees,
      * or the viewport where the eye is inside a triangle's volume) */
     uint32_t vdsm_cull_passes, vdsm_kept_faces;
+    /* vdsm: lights (per peeled layer too) whose deepest receivers came by
+     * storage-buffer atomics (GL 4.3; shader storage binding point 0) */
+    uint32_t vdsm_atomic_receivers;
+    /* vdsm: products whose shadow it drew (per light and peeled layer), and
+     * the GL memory of its crossing lists (heads at the viewport's size and
+     * the node pool, grown to the most crossings a product took so far) */
+    uint32_t vdsm_csg_casts;
+    uint64_t vdsm_csg_bytes;
+} stin_shadows_stats;
+
+typedef struct stin_translucent_stats {
+    /* deep: layers peeled (passes into a deep map), all lights and faces;
+     * the faces peeled (a spot or directional light's one, a point light's
+     * six, less those no transparent caster's bounding box reaches, which
+     * the early stop leaves unpeeled) */
+    uint32_t deep_layers, deep_faces;
+} stin_translucent_stats;
+
+typedef struct stin_csg_stats {
+    uint32_t products, terms;    /* accepted by stin_draw_csg (terms of their normal forms) */
+    uint32_t dropped;            /* products stin_draw_csg refused */
+    /* products resolved by "scs" (the others of a frame went to goldfeather),
+     * the runs of its subtraction sequences (every term) and their checks
+     * for a depth still inside a subtracted one */
+    uint32_t scs_products, scs_runs, scs_checks;
+    /* products resolved by "interval", and the GL memory its layers and
+     * target hold (grown to the largest viewport and product so far) */
+    uint32_t interval_products;
+    uint64_t interval_bytes;
+    /* goldfeather: candidates that shared their passes with others (a group
+     * of complemented convex literals whose window rectangles lie apart) */
+    uint32_t grouped;
+    /* 1 when the frame's resolve kept its candidates and result on the GPU
+     * (no read-backs), 0 when it read them back; and that resolve's GL
+     * memory (two depth textures at the viewport's window size) */
+    uint32_t gpu_resolves;
+    uint64_t gpu_bytes;
+    /* 1 when the frame's GPU resolve ran in place (one scs term in the
+     * frame's own buffers: no work buffer, merge or snap), or took each
+     * candidate by snapping its faces straight into the frame's depth (no
+     * result buffer or merge) */
+    uint32_t in_place, direct;
+    /* maps (a spot or directional light's, a point light's face) that
+     * products were resolved into from the light: they cast into it; and the
+     * resolves those took: one a map, more where the products' rectangle of
+     * it outgrew the staging beside the camera's resolve (bands of rows),
+     * and map-depth's side test and map-combine's ramp resolving such a map
+     * again band by band */
+    uint32_t cast_maps, cast_bands;
+} stin_csg_stats;
+
+typedef struct stin_transparency_stats {
+    /* depth-peel: geometry passes that peeled a camera layer (the last one,
+     * which found nothing, counted: a scene of n layers under a cap above n
+     * takes n + 1), and the layers that drew something; dual-peel: its
+     * min-max passes (n layers: n / 2 + 1) and the layers lit */
+    uint32_t peel_passes, peel_layers;
+} stin_transparency_stats;
+
+typedef struct stin_frame_stats {
+    uint32_t draws, lights, passes, triangles;
+    uint32_t dropped_draws, dropped_lights;
+    stin_lighting_stats lighting;
+    stin_shadows_stats shadows;
+    stin_translucent_stats translucent;
+    stin_csg_stats csg;
+    stin_transparency_stats transparency;
+    /* STIN_DEBUG_STAGE_TIMES: 1 when stage_ns holds this frame's GPU time
+     * per stage in nanoseconds (0: not asked, or no timer queries) */
+    uint32_t stage_times;
+    uint64_t stage_ns[STIN_STAGE_COUNT];
 } stin_frame_stats;
 
 stin_frame_stats stin_query_frame_stats(const stin_context *ctx);
@@ -1728,7 +1787,7 @@ stin_frame_stats stin_query_frame_stats(const stin_context *ctx);
  * lights may use them) move a perspective far plane to infinity (the nudged
  * P_inf of Everitt & Kilgard) in every frame, whatever its lights, so an
  * application that draws its own geometry into the same depth buffer (before
- * stin with desc.no_clear, or after) must draw it with this projection, and
+ * stin with desc.keep_contents, or after) must draw it with this projection, and
  * one that unprojects depth must use it rather than its own. */
 void stin_query_frame_projection(const stin_context *ctx, float out[16]);
 

@@ -19,7 +19,7 @@ uint64_t stin_texture_staging_bytes(const stin_texture_desc *d)
     derive = normal && d->normal_from_height > 0.0f;
     /* height maps too: displacement's copy has the chain (any context may
      * displace) */
-    mips = !d->no_mipmaps;
+    mips = !d->base_level_only;
     /* the derived source is kept beside the chain whenever the size changes,
      * which a context's max_texture_size may do to any size: always count it */
     return stin__plan_staging(w, h, mips, resampled || normal,

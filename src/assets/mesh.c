@@ -322,7 +322,7 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     return STIN_OK;
 }
 
-stin_result stin_query_mesh(const stin_context *ctx, stin_mesh mesh, stin_mesh_info *out)
+stin_result stin_query_mesh_info(const stin_context *ctx, stin_mesh mesh, stin_mesh_info *out)
 {
     const stin__mesh_slot *m = stin__mesh_lookup(ctx, mesh, NULL);
     if (!out)
@@ -333,7 +333,7 @@ stin_result stin_query_mesh(const stin_context *ctx, stin_mesh mesh, stin_mesh_i
     return STIN_OK;
 }
 
-stin_result stin_mesh_adjacency(const stin_context *ctx, stin_mesh mesh, uint32_t t,
+stin_result stin_query_mesh_adjacency(const stin_context *ctx, stin_mesh mesh, uint32_t t,
                                 uint32_t out_neighbours[3])
 {
     const stin__mesh_slot *m = stin__mesh_lookup(ctx, mesh, NULL);
@@ -349,7 +349,7 @@ stin_result stin_mesh_adjacency(const stin_context *ctx, stin_mesh mesh, uint32_
     return STIN_OK;
 }
 
-stin_result stin_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uint32_t vertex,
+stin_result stin_query_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uint32_t vertex,
                               float out_tangent[4])
 {
     const stin__mesh_slot *m = stin__mesh_lookup(ctx, mesh, NULL);

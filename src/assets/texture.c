@@ -238,9 +238,9 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
         h /= 2;
     resized = w != desc->width || h != desc->height;
     /* height maps: level 0 only (the parallax march reads the true field) */
-    mips = !desc->no_mipmaps && desc->kind != STIN_TEXTURE_HEIGHT;
+    mips = !desc->base_level_only && desc->kind != STIN_TEXTURE_HEIGHT;
     /* and displacement's copy of a height map with its mip chain */
-    lods = desc->kind == STIN_TEXTURE_HEIGHT && !desc->no_mipmaps && ctx->vertex_chunk.displace;
+    lods = desc->kind == STIN_TEXTURE_HEIGHT && !desc->base_level_only && ctx->vertex_chunk.displace;
     normal = desc->kind == STIN_TEXTURE_NORMAL;
     derive = desc->normal_from_height > 0.0f;
     plan = stin__plan_staging(w, h, mips || lods, resized || normal || derive,

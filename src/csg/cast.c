@@ -292,7 +292,7 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
         if (job->surface)
             surface_pass(ctx, &base);
         bands++;
-        ctx->stats.csg_cast_bands++;
+        ctx->stats.csg.cast_bands++;
     }
     stin__pass_apply(ctx, &base);
     return bands;
@@ -349,7 +349,7 @@ int stin__csg_cast(stin_context *ctx, const stin__path *path, const float view[1
         c->valid = 1;
         c->kept = bands == 1; /* its pixels cover the rectangle */
         stin__memcopy(c->projection, ctx->projection, sizeof c->projection);
-        ctx->stats.csg_cast_maps++;
+        ctx->stats.csg.cast_maps++;
     }
     finish(ctx, &saved, &job);
     return c->valid;

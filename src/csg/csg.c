@@ -7,7 +7,7 @@
 
 uint32_t stin__csg_scratch_words(const stin_desc *d)
 {
-    return 2u * (d->max_csg_terms + d->max_csg_literals);
+    return 2u * (d->csg.max_terms + d->csg.max_literals);
 }
 
 static stin_result refuse(stin_context *ctx, stin_result r, stin_log_item item, const char *why,
@@ -15,7 +15,7 @@ static stin_result refuse(stin_context *ctx, stin_result r, stin_log_item item, 
 {
     stin__log(ctx, STIN_LOG_LEVEL_ERROR, item, "stin_draw_csg: %s (%u); product dropped", why,
               index);
-    ctx->stats.dropped_csg++;
+    ctx->stats.csg.dropped++;
     return r;
 }
 
@@ -77,7 +77,7 @@ static stin_result take_primitives(stin_context *ctx, const stin_csg_desc *desc)
             stin__memcopy(d->transform, p->transform, sizeof d->transform);
         if (stin__material_prepare(ctx, "stin_draw_csg", "product", &p->material, &d->material,
                                    &r) != STIN_OK) {
-            ctx->stats.dropped_csg++;
+            ctx->stats.csg.dropped++;
             return r;
         }
         if (d->material.color[3] < 1.0f || d->material.displace)
@@ -96,12 +96,12 @@ static const char *nf_failure(stin__csg_nf_result r)
 {
     switch (r) {
     case STIN__CSG_NF_TERMS:
-        return "its normal form has more terms than desc.max_csg_terms leaves this frame";
+        return "its normal form has more terms than desc.csg.max_terms leaves this frame";
     case STIN__CSG_NF_LITERALS:
-        return "its normal form has more literals than desc.max_csg_literals leaves this frame";
+        return "its normal form has more literals than desc.csg.max_literals leaves this frame";
     case STIN__CSG_NF_SCRATCH:
-        return "its partial normal forms outgrow the scratch of 2 (max_csg_terms + "
-               "max_csg_literals) words";
+        return "its partial normal forms outgrow the scratch of 2 (csg.max_terms + "
+               "csg.max_literals) words";
     case STIN__CSG_NF_DEPTH:
         return "the expression nests deeper than 1024";
     case STIN__CSG_NF_WORK:
@@ -139,17 +139,17 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
     if (r != STIN_OK)
         return r;
     c = &ctx->csg;
-    if (desc->primitive_count > ctx->desc.max_csg_primitives - c->primitive_count)
+    if (desc->primitive_count > ctx->desc.csg.max_primitives - c->primitive_count)
         return refuse(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
-                      "more primitives than desc.max_csg_primitives leaves this frame, primitives",
+                      "more primitives than desc.csg.max_primitives leaves this frame, primitives",
                       desc->primitive_count);
     r = take_primitives(ctx, desc);
     if (r != STIN_OK)
         return r;
     out.terms = c->terms + c->term_count;
-    out.max_terms = ctx->desc.max_csg_terms - c->term_count;
+    out.max_terms = ctx->desc.csg.max_terms - c->term_count;
     out.literals = c->literals + c->literal_count;
-    out.max_literals = ctx->desc.max_csg_literals - c->literal_count;
+    out.max_literals = ctx->desc.csg.max_literals - c->literal_count;
     out.literal_base = c->literal_count;
     nf = stin__csg_normal_form(desc->nodes, desc->node_count, c->scratch, c->scratch_words, &out);
     if (nf != STIN__CSG_NF_OK)
@@ -171,8 +171,8 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
     c->primitive_count += desc->primitive_count;
     c->term_count += out.term_count;
     c->literal_count += out.literal_count;
-    ctx->stats.csg_products++;
-    ctx->stats.csg_terms += out.term_count;
+    ctx->stats.csg.products++;
+    ctx->stats.csg.terms += out.term_count;
     return STIN_OK;
 }
 
@@ -199,7 +199,7 @@ uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_
 
 /* Each primitive's faces that a term shows: front where it is plain in a
  * term, back where it is complemented (both when both); and the product's
- * near-plane cap where the resolve kept it (3 max_csg_primitives faces at
+ * near-plane cap where the resolve kept it (3 csg.max_primitives faces at
  * most: a product has a primitive at least). */
 void stin__csg_faces(stin_context *ctx)
 {

@@ -79,7 +79,7 @@ typedef struct stin__csg_cast_state {
  * pass. Layer g (primitive * k + layer; the near-plane cap after the
  * last) lives in array g & 1 at slice g >> 1: the layer a peel reads is
  * never the texture it draws into. */
-#define STIN__CSG_INTERVAL_MAX_LAYERS 16u  /* desc.csg_interval_layers at most */
+#define STIN__CSG_INTERVAL_MAX_LAYERS 16u  /* desc.csg.interval_layers at most */
 #define STIN__CSG_INTERVAL_MAX_PRIMITIVES 32u /* a product's primitives (a bit each) */
 #define STIN__CSG_INTERVAL_MAX_TERMS 64u   /* a product's terms (uniform masks) */
 #define STIN__CSG_INTERVAL_MAX_LAYER_INDEX 255u /* layers + cap: the walk's 8-bit answer */
@@ -103,14 +103,14 @@ typedef struct stin__csg_interval_state {
 
 /* The frame's products, in the caller's block (sizes from the desc). */
 typedef struct stin__csg_state {
-    stin__draw *primitives;   /* max_csg_primitives: mesh, transform, material each */
-    stin__csg_product *products; /* max_csg_terms (a product has at least one term) */
-    stin__csg_term *terms;    /* max_csg_terms */
-    uint32_t *literals;       /* max_csg_literals */
+    stin__draw *primitives;   /* csg.max_primitives: mesh, transform, material each */
+    stin__csg_product *products; /* csg.max_terms (a product has at least one term) */
+    stin__csg_term *terms;    /* csg.max_terms */
+    uint32_t *literals;       /* csg.max_literals */
     uint32_t *scratch;        /* normalisation, scratch_words */
     uint32_t scratch_words;
     uint32_t primitive_count, product_count, term_count, literal_count;
-    stin__draw *faces;        /* 2 max_csg_primitives: the faces the frame's passes draw */
+    stin__draw *faces;        /* 2 csg.max_primitives: the faces the frame's passes draw */
     uint32_t face_count;
     int resolved;             /* this frame's products are in its depth buffer */
     int said_unusable, said_layers, said_planes;

@@ -26,7 +26,7 @@
  * FBOs and depth textures in depth textures on the GPU, else on the CPU.
  * The result goes into the frame's depth buffer (depth ALWAYS over what
  * the buffer held before, itself copied first and kept in the minimum, so
- * earlier products and a caller's no_clear depth stay): from the GPU by
+ * earlier products and a caller's keep_contents depth stay): from the GPU by
  * the faces snapped onto it (csg/merge.c: onto the result, or in a direct
  * resolve each candidate's onto its own depth), from the CPU by
  * glDrawPixels or, on core profiles, an R32F texture and the same kind of
@@ -587,7 +587,7 @@ static int take_group(stin_context *ctx, const stin__path *path, resolve *r,
         kept |= stin__csg_candidate_take(ctx, path, r, NULL, &surface, want_kept);
     }
     if (g->count > 1)
-        ctx->stats.csg_grouped += g->count;
+        ctx->stats.csg.grouped += g->count;
     return kept;
 }
 

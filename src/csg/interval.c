@@ -57,7 +57,7 @@ static int layers_of(const stin_context *ctx)
 {
     if (one_interval(ctx) || (ctx->desc.debug_flags & STIN_DEBUG_CSG_INTERVAL_TWO_LAYERS))
         return 2;
-    return (int)ctx->desc.csg_interval_layers;
+    return (int)ctx->desc.csg.interval_layers;
 }
 
 void stin__csg_interval_release(stin_context *ctx)
@@ -331,7 +331,7 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
         if (!s->said_overflow) {
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                       "interval: a primitive crosses a camera ray more than %d times "
-                      "(desc.csg_interval_layers); scs or goldfeather resolves that product "
+                      "(desc.csg.interval_layers); scs or goldfeather resolves that product "
                       "this frame", k);
             s->said_overflow = 1;
         }
@@ -469,7 +469,7 @@ int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
         return 0;
     }
-    ctx->stats.csg_interval_bytes = s->bytes;
+    ctx->stats.csg.interval_bytes = s->bytes;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     done = peel_product(ctx, p, k, &cap);
     if (done) {
@@ -480,6 +480,6 @@ int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__
     path->geometry_begin(ctx); /* the resolve's program again, for the products after */
     if (!done)
         return 0;
-    ctx->stats.csg_interval_products++;
+    ctx->stats.csg.interval_products++;
     return 1;
 }

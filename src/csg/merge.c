@@ -244,8 +244,8 @@ int stin__csg_merge_begin(stin_context *ctx)
     stin__csg_clear(ctx, GL_DEPTH_BUFFER_BIT);
     ctx->csg.resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
-    ctx->stats.csg_gpu_resolves = 1;
-    ctx->stats.csg_gpu_bytes = m->bytes;
+    ctx->stats.csg.gpu_resolves = 1;
+    ctx->stats.csg.gpu_bytes = m->bytes;
     return 1;
 }
 
@@ -253,7 +253,7 @@ int stin__csg_in_place_fits(const stin_context *ctx)
 {
     const stin__csg_state *c = &ctx->csg;
     /* the copy into the result texture cannot read a multisampled framebuffer */
-    return !(ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_IN_PLACE) && !ctx->frame.no_clear &&
+    return !(ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_IN_PLACE) && !ctx->frame.keep_contents &&
            !ctx->target.multisampled && c->product_count == 1 &&
            c->products[0].term_count == 1 && stin__csg_scs_takes(ctx, &c->products[0]);
 }
@@ -264,9 +264,9 @@ int stin__csg_in_place_begin(stin_context *ctx)
         return 0;
     ctx->csg.resolve_fbo = ctx->draw_fbo; /* ensure_targets left it bound */
     ctx->csg.in_place = 1;
-    ctx->stats.csg_gpu_resolves = 1;
-    ctx->stats.csg_gpu_bytes = ctx->csg.merge.bytes;
-    ctx->stats.csg_in_place = 1;
+    ctx->stats.csg.gpu_resolves = 1;
+    ctx->stats.csg.gpu_bytes = ctx->csg.merge.bytes;
+    ctx->stats.csg.in_place = 1;
     return 1;
 }
 
@@ -388,9 +388,9 @@ int stin__csg_direct_begin(stin_context *ctx)
     ctx->csg.resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
     ctx->csg.direct = 1;
-    ctx->stats.csg_gpu_resolves = 1;
-    ctx->stats.csg_gpu_bytes = m->bytes;
-    ctx->stats.csg_direct = 1;
+    ctx->stats.csg.gpu_resolves = 1;
+    ctx->stats.csg.gpu_bytes = m->bytes;
+    ctx->stats.csg.direct = 1;
     return 1;
 }
 

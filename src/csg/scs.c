@@ -345,7 +345,7 @@ static int still_inside(stin_context *ctx, const stin__path *path, stin__csg_pix
     int two_sided = stin__pass_two_sided_wrap(ctx);
     GLenum incr = two_sided ? GL_INCR_WRAP : GL_INCR, decr = two_sided ? GL_DECR_WRAP : GL_DECR;
     uint32_t i = 0, batch;
-    ctx->stats.csg_scs_checks++;
+    ctx->stats.csg.scs_checks++;
     while (i < n) {
         stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
         for (batch = 0; i < n && batch < 255u; i++, batch++) {
@@ -391,7 +391,7 @@ static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels
                 return;
             stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT); /* its counts: subtract_one's start at 0 */
         }
-        ctx->stats.csg_scs_runs++;
+        ctx->stats.csg.scs_runs++;
         for (i = 0; i < n; i++)
             subtract_one(ctx, path,
                          primitive_of(ctx, p, ctx->csg.literals[t->first + order[2u * i + 1u]]));
@@ -410,7 +410,7 @@ static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels
 static void clip(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                  const stin__csg_product *p, const stin__csg_term *t)
 {
-    uint32_t batch = ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_BATCH ? 0xffffffffu : BATCH;
+    uint32_t batch = ctx->desc.debug_flags & STIN_DEBUG_CSG_SCS_NO_BATCH ? 0xffffffffu : BATCH;
     uint32_t li = 0, n, lit;
     while (li < t->count) {
         stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
@@ -494,6 +494,6 @@ int stin__csg_scs_product(stin_context *ctx, const stin__path *path, stin__csg_p
     }
     for (ti = 0; ti < p->term_count; ti++)
         term(ctx, path, r, p, &ctx->csg.terms[p->first_term + ti]);
-    ctx->stats.csg_scs_products++;
+    ctx->stats.csg.scs_products++;
     return 1;
 }

@@ -16,43 +16,43 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_triangles = DEFAULT(d.max_triangles, 262144u);
     d.max_mesh_triangles = DEFAULT(d.max_mesh_triangles, d.max_triangles < 65536u ? d.max_triangles : 65536u);
     d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 8u << 20);
-    d.soft_shadow_samples = DEFAULT(d.soft_shadow_samples, 8u);
-    d.shadow_map_size = DEFAULT(d.shadow_map_size, 1024u);
-    d.max_csg_primitives = DEFAULT(d.max_csg_primitives, 256u);
-    d.max_csg_terms = DEFAULT(d.max_csg_terms, 256u);
-    d.max_csg_literals = DEFAULT(d.max_csg_literals, 4096u);
-    d.deep_layers = DEFAULT(d.deep_layers, 4u);
-    d.deep_map_size = DEFAULT(d.deep_map_size, 512u);
-    d.transparency_layers = DEFAULT(d.transparency_layers, 8u);
-    d.csg_interval_layers = DEFAULT(d.csg_interval_layers, 4u);
-    if (d.displace_guard_band == 0.0f)
-        d.displace_guard_band = 1.0f;
-    if (d.displace_tess_pixels == 0.0f)
-        d.displace_tess_pixels = 4.0f;
-    if (d.translucent_opaque_threshold == 0.0f)
-        d.translucent_opaque_threshold = 0.5f;
-    d.displace_tess_max = DEFAULT(d.displace_tess_max, 64u);
+    d.shadows.soft_samples = DEFAULT(d.shadows.soft_samples, 8u);
+    d.shadows.map_size = DEFAULT(d.shadows.map_size, 1024u);
+    d.csg.max_primitives = DEFAULT(d.csg.max_primitives, 256u);
+    d.csg.max_terms = DEFAULT(d.csg.max_terms, 256u);
+    d.csg.max_literals = DEFAULT(d.csg.max_literals, 4096u);
+    d.translucent.deep_layers = DEFAULT(d.translucent.deep_layers, 4u);
+    d.translucent.deep_map_size = DEFAULT(d.translucent.deep_map_size, 512u);
+    d.transparency.layers = DEFAULT(d.transparency.layers, 8u);
+    d.csg.interval_layers = DEFAULT(d.csg.interval_layers, 4u);
+    if (d.displacement.guard_band == 0.0f)
+        d.displacement.guard_band = 1.0f;
+    if (d.displacement.tess_pixels == 0.0f)
+        d.displacement.tess_pixels = 4.0f;
+    if (d.translucent.opaque_threshold == 0.0f)
+        d.translucent.opaque_threshold = 0.5f;
+    d.displacement.tess_max = DEFAULT(d.displacement.tess_max, 64u);
     return d;
 }
 
 static int desc_valid(const stin_desc *d)
 {
-    return d->max_lights <= 32 && d->soft_shadow_samples <= 64 &&
-           d->shadow_map_size <= 8192 && (d->shadow_map_size & (d->shadow_map_size - 1)) == 0 &&
+    return d->max_lights <= 32 && d->shadows.soft_samples <= 64 &&
+           d->shadows.map_size <= 8192 && (d->shadows.map_size & (d->shadows.map_size - 1)) == 0 &&
            d->max_meshes <= 65535 && d->max_textures <= 65535 &&
            d->max_mesh_triangles <= d->max_triangles && d->max_vertices < 0x40000000u &&
            d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u &&
-           d->displace_guard_band >= 0.0f && d->displace_guard_band <= 1e30f &&
-           d->displace_tess_pixels > 0.0f && d->displace_tess_pixels <= 1e30f &&
-           d->displace_tess_max <= 64u &&
-           d->max_csg_primitives < 0x1000000u && d->max_csg_terms < 0x1000000u &&
-           d->max_csg_literals < 0x1000000u &&
+           d->displacement.guard_band >= 0.0f && d->displacement.guard_band <= 1e30f &&
+           d->displacement.tess_pixels > 0.0f && d->displacement.tess_pixels <= 1e30f &&
+           d->displacement.tess_max <= 64u &&
+           d->csg.max_primitives < 0x1000000u && d->csg.max_terms < 0x1000000u &&
+           d->csg.max_literals < 0x1000000u &&
 
-           d->deep_layers <= 16 && d->deep_map_size <= 4096 &&
-           (d->deep_map_size & (d->deep_map_size - 1)) == 0 && (d->deep_mono & ~1) == 0 &&
-           d->translucent_opaque_threshold > 0.0f && d->translucent_opaque_threshold <= 1.0f &&
-           d->transparency_layers <= STIN__PEEL_MAX_LAYERS &&
-           d->csg_interval_layers <= STIN__CSG_INTERVAL_MAX_LAYERS;
+           d->translucent.deep_layers <= 16 && d->translucent.deep_map_size <= 4096 &&
+           (d->translucent.deep_map_size & (d->translucent.deep_map_size - 1)) == 0 && (d->translucent.deep_mono & ~1) == 0 &&
+           d->translucent.opaque_threshold > 0.0f && d->translucent.opaque_threshold <= 1.0f &&
+           d->transparency.layers <= STIN__PEEL_MAX_LAYERS &&
+           d->csg.interval_layers <= STIN__CSG_INTERVAL_MAX_LAYERS;
 }
 
 static uint32_t mesh_vertex_limit(const stin_desc *d)
@@ -99,9 +99,9 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
     size_t frame_scratch = frame_scratch_bytes(d);
     /* primitives, and their faces: two a primitive and a product's near-plane cap */
-    size_t csg = 4u * sizeof(stin__draw) * d->max_csg_primitives +
-                 (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->max_csg_terms +
-                 sizeof(uint32_t) * ((size_t)d->max_csg_literals + stin__csg_scratch_words(d));
+    size_t csg = 4u * sizeof(stin__draw) * d->csg.max_primitives +
+                 (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->csg.max_terms +
+                 sizeof(uint32_t) * ((size_t)d->csg.max_literals + stin__csg_scratch_words(d));
     void *p[14];
     size_t i;
     if (tangent_scratch > scratch)
@@ -156,10 +156,10 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
         ctx->frame_scratch_bytes = frame_scratch;
         ctx->csg.primitives = (stin__draw *)p[13];
         ctx->csg.products = (stin__csg_product *)(void *)(ctx->csg.primitives +
-                                                          d->max_csg_primitives);
-        ctx->csg.terms = (stin__csg_term *)(void *)(ctx->csg.products + d->max_csg_terms);
-        ctx->csg.literals = (uint32_t *)(void *)(ctx->csg.terms + d->max_csg_terms);
-        ctx->csg.scratch = ctx->csg.literals + d->max_csg_literals;
+                                                          d->csg.max_primitives);
+        ctx->csg.terms = (stin__csg_term *)(void *)(ctx->csg.products + d->csg.max_terms);
+        ctx->csg.literals = (uint32_t *)(void *)(ctx->csg.terms + d->csg.max_terms);
+        ctx->csg.scratch = ctx->csg.literals + d->csg.max_literals;
         ctx->csg.scratch_words = stin__csg_scratch_words(d);
         ctx->csg.faces = (stin__draw *)(void *)(ctx->csg.scratch + ctx->csg.scratch_words);
     }
@@ -190,8 +190,8 @@ uint64_t stin_deep_memory_bytes(const stin_desc *desc)
     d = stin__desc_defaults(desc);
     if (!desc_valid(&d))
         return 0;
-    texels = (uint64_t)d.deep_map_size * d.deep_map_size;
-    return 2u * STIN__CUBE_FACES * stin__deep_slices(d.deep_layers) * texels * 16u + texels * 4u;
+    texels = (uint64_t)d.translucent.deep_map_size * d.translucent.deep_map_size;
+    return 2u * STIN__CUBE_FACES * stin__deep_slices(d.translucent.deep_layers) * texels * 16u + texels * 4u;
 }
 
 static void log_early(const stin_desc *d, stin_log_level level, stin_log_item item,
@@ -351,10 +351,10 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     if (!need) {
         log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "stin_create: capacities out of range (max_lights <= 32, "
-                  "max_mesh_triangles <= max_triangles, soft_shadow_samples <= 64, "
-                  "shadow_map_size a power of two <= 8192, deep_layers <= 16, "
-                  "deep_map_size a power of two <= 4096, deep_mono 0 or 1, "
-                  "translucent_opaque_threshold in (0, 1], transparency_layers <= 64)");
+                  "max_mesh_triangles <= max_triangles, shadows.soft_samples <= 64, "
+                  "shadows.map_size a power of two <= 8192, translucent.deep_layers <= 16, "
+                  "translucent.deep_map_size a power of two <= 4096, translucent.deep_mono 0 or 1, "
+                  "translucent.opaque_threshold in (0, 1], transparency.layers <= 64)");
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     if (!memory || memory_bytes < need) {
@@ -398,12 +398,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     stin__target_init(ctx);
     r = stin__select(&ctx->caps, d.tier, d.techniques, &ctx->sel, msg, sizeof msg);
     if (r != STIN_OK) {
-        stin__log(ctx, STIN_LOG_LEVEL_ERROR,
-                  r == STIN_ERROR_INVALID_ARGUMENT ? STIN_LOG_BAD_ARGUMENT
-                  : d.tier != STIN_TIER_AUTO && msg[0] == 't' && msg[1] == 'i'
-                      ? STIN_LOG_TIER_UNSUPPORTED
-                      : STIN_LOG_TECHNIQUE_UNSUPPORTED,
-                  "stin_create: %s", msg);
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, ctx->sel.failure, "stin_create: %s", msg);
         return r;
     }
     ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);

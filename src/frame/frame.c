@@ -249,7 +249,7 @@ static void stage_target(stin_context *ctx)
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, f->framebuffer);
     GL(ctx, Viewport)(f->viewport[0], f->viewport[1], f->viewport[2], f->viewport[3]);
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the buffer */
-    if (!f->no_clear) {
+    if (!f->keep_contents) {
         GL(ctx, ClearColor)(f->clear_color[0], f->clear_color[1], f->clear_color[2],
                             f->clear_color[3]);
         GL(ctx, ClearDepth)(1.0);
@@ -426,7 +426,7 @@ static void peeled_layers(stin_context *ctx, const stin__path *path, int shadowe
  * stin__sorted_shadowed). */
 static void blended_draws(stin_context *ctx, const stin__path *path, int shadowed)
 {
-    if (ctx->desc.debug_flags & STIN_DEBUG_PEEL_OPAQUE_ONLY)
+    if (ctx->desc.debug_flags & STIN_DEBUG_TRANSPARENCY_OPAQUE_ONLY)
         return;
     if (stin__peel_begin(ctx, path)) {
         peeled_layers(ctx, path, shadowed);

@@ -281,7 +281,7 @@ stin_result stin_detect_caps(stin_get_proc_fn get_proc, void *user, uint64_t cap
     return stin__caps_detect(&gl, loaded, caps_mask, max_gl_version, out);
 }
 
-int stin_has_extension(const stin_context *ctx, const char *name)
+int stin_query_extension(const stin_context *ctx, const char *name)
 {
     size_t n = 0;
     if (!ctx || !name)

@@ -85,8 +85,8 @@ void stin__target_init(stin_context *ctx)
     int bound_stencil = ctx->caps.stencil_bits;
     uint64_t stencil = STIN_CAP_BIT(STIN_CAP_STENCIL);
     ctx->target.separate_read = ctx->caps.gl_major >= 3 ||
-                                stin_has_extension(ctx, "GL_ARB_framebuffer_object") ||
-                                stin_has_extension(ctx, "GL_EXT_framebuffer_blit");
+                                stin_query_extension(ctx, "GL_ARB_framebuffer_object") ||
+                                stin_query_extension(ctx, "GL_EXT_framebuffer_blit");
     if (has_fbo(ctx)) {
         stin__framebuffer_save(ctx, saved);
         if (saved[0])

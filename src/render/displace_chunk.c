@@ -129,7 +129,7 @@ void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const 
     p[1] = d->material.height_bias;
     p[2] = 1.0f;
     if (l->camera && !(ctx->desc.debug_flags & STIN_DEBUG_DISPLACE_NO_GUARD))
-        p[3] = ctx->desc.displace_guard_band;
+        p[3] = ctx->desc.displacement.guard_band;
     size[0] = (float)t->width;
     size[1] = (float)t->height;
     size[2] = ctx->desc.debug_flags & STIN_DEBUG_DISPLACE_MANUAL_BILINEAR ? 1.0f : 0.0f;

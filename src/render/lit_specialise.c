@@ -86,14 +86,14 @@ const stin__program *stin__lit_specialised(stin_context *ctx, const stin__progra
     char defines[256], msg[160];
     uint32_t i;
     int slot;
-    if (ctx->desc.debug_flags & STIN_DEBUG_LIT_GENERAL)
+    if (ctx->desc.debug_flags & STIN_DEBUG_LIGHTING_GENERAL)
         return general;
     for (i = 0; i < c->count; i++)
         if (c->keys[i] == key) {
             c->used[i] = c->frame;
             if (!c->programs[i].name)
                 return general;
-            ctx->stats.lit_specialised++;
+            ctx->stats.lighting.specialised++;
             return &c->programs[i];
         }
     slot = free_slot(ctx);
@@ -118,8 +118,8 @@ const stin__program *stin__lit_specialised(stin_context *ctx, const stin__progra
         c->programs[slot].name = 0;
         return general;
     }
-    ctx->stats.lit_programs_built++;
-    ctx->stats.lit_specialised++;
+    ctx->stats.lighting.programs_built++;
+    ctx->stats.lighting.specialised++;
     return &c->programs[slot];
 }
 

@@ -157,7 +157,7 @@ uint32_t stin__lit_lights_key(const stin_light_desc *lights, int n);
  * not, in a peeled layer or not: the specialised one, built on first use
  * (outside a peeled layer without the peel chunk, whose discard costs the
  * early depth test and whose fetch runs on masked lanes); general where
- * STIN_DEBUG_LIT_GENERAL is set, where every slot served this frame, or
+ * STIN_DEBUG_LIGHTING_GENERAL is set, where every slot served this frame, or
  * where its build failed. */
 const stin__program *stin__lit_specialised(stin_context *ctx, const stin__program *general,
                                            int variant, uint32_t lights_key, int albedo_tex);

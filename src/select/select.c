@@ -285,9 +285,9 @@ stin_result stin__select_after_lighting(const stin_caps *caps, const stin_techni
     return choose_after_lighting(caps, forced, sel, msg, msg_size);
 }
 
-stin_result stin__select(const stin_caps *caps, stin_tier forced,
-                         const stin_technique forced_tech[STIN_FEATURE_COUNT],
-                         stin__selection *out, char *msg, size_t msg_size)
+static stin_result select_all(const stin_caps *caps, stin_tier forced,
+                              const stin_technique forced_tech[STIN_FEATURE_COUNT],
+                              stin__selection *out, char *msg, size_t msg_size)
 {
     char missing[256];
     chain_input in;
@@ -307,6 +307,7 @@ stin_result stin__select(const stin_caps *caps, stin_tier forced,
         }
     } else if (!stin_tier_supported(caps, forced, missing, sizeof missing)) {
         stin__formatf(msg, msg_size, "tier %s needs %s", stin_tier_name(forced), missing);
+        out->failure = STIN_LOG_TIER_UNSUPPORTED;
         return STIN_ERROR_UNSUPPORTED;
     } else {
         out->tier = forced;
@@ -405,4 +406,16 @@ void stin__demote_at(stin_context *ctx, stin_log_level level, stin_feature f, st
     c->technique = to;
     c->fell_back = 1;
     stin__formatf(c->reason, sizeof c->reason, "fallback: %s", why);
+}
+
+stin_result stin__select(const stin_caps *caps, stin_tier forced,
+                         const stin_technique forced_tech[STIN_FEATURE_COUNT],
+                         stin__selection *out, char *msg, size_t msg_size)
+{
+    stin_result r = select_all(caps, forced, forced_tech, out, msg, msg_size);
+    if (r == STIN_ERROR_INVALID_ARGUMENT)
+        out->failure = STIN_LOG_BAD_ARGUMENT;
+    else if (r != STIN_OK && out->failure == STIN_LOG_NONE)
+        out->failure = STIN_LOG_TECHNIQUE_UNSUPPORTED;
+    return r;
 }

@@ -40,10 +40,13 @@ typedef struct stin__selection {
     int translucent_unit;   /* translucent shadows' first unit (deep: two) */
     int transparency_unit;  /* transparency's first unit (depth-peel: two) */
     int displace_unit;      /* displacement's vertex-stage height map (after units_used) */
+    stin_log_item failure;  /* why stin__select failed, for the log: BAD_ARGUMENT,
+                             * TIER_UNSUPPORTED (a forced tier) or TECHNIQUE_UNSUPPORTED */
 } stin__selection;
 
 /* Chooses the tier and one technique per feature. Fails (UNSUPPORTED) if a
- * forced tier or technique cannot run; writes the reason into msg. */
+ * forced tier or technique cannot run; writes the reason into msg and the
+ * log item into out->failure. */
 stin_result stin__select(const stin_caps *caps, stin_tier forced,
                          const stin_technique forced_tech[STIN_FEATURE_COUNT],
                          stin__selection *out, char *msg, size_t msg_size);

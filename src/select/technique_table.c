@@ -46,7 +46,7 @@ static const stin__technique_row rows[] = {
     /* one colour map and the nearest transparent depth per light (atlases) */
     {STIN_TECH_TRANSLUCENT_COLOURED,   1,
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0},
-    /* casters at or above desc.translucent_opaque_threshold cast, the rest not */
+    /* casters at or above desc.translucent.opaque_threshold cast, the rest not */
     {STIN_TECH_TRANSLUCENT_OPAQUE,     2, 0, STIN_TECH_NONE, 0, 0, 0, 0},
     /* every caster casts fully: chosen only when forced (opaque needs no more) */
     {STIN_TECH_TRANSLUCENT_SOLID,      3, 0, STIN_TECH_NONE, 0, 0, 0, 0},
@@ -69,7 +69,7 @@ static const stin__technique_row rows[] = {
     /* depth peeling of the camera's layers: two samplers in the lit programs
      * (the previous layer's depth, the opaque depth); packed depth-stencil
      * textures hold a layer's depth and the stencil volumes count in */
-    {STIN_TECH_TRANSPARENCY_PEEL,      1,
+    {STIN_TECH_TRANSPARENCY_DEPTH_PEEL,      1,
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(MULTITEXTURE) |
          BIT(VBO), GLSL_ANY, 0, 2, 0, 0},
     {STIN_TECH_TRANSPARENCY_SORTED,    2, 0, STIN_TECH_NONE, 0, 0, 0, 0},

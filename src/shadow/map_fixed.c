@@ -87,7 +87,7 @@ static void create_map_texture(stin_context *ctx, GLuint *t, uint32_t size)
 
 static stin_result fixed_init(stin_context *ctx)
 {
-    uint32_t i, size = ctx->desc.shadow_map_size;
+    uint32_t i, size = ctx->desc.shadows.map_size;
     int units = combine(ctx) ? 2 : 1;
     /* after the surface technique's units (selection placed them) */
     ctx->map_fixed.unit = ctx->sel.shadow_unit;
@@ -191,11 +191,13 @@ int stin__map_offset(const stin_light_desc *l, float *factor, float *units)
 {
     *factor = l->shadow_offset[0];
     *units = l->shadow_offset[1];
+    if (l->shadow_offset_exact)
+        return *factor != 0.0f || *units != 0.0f;
     if (*factor == 0.0f && *units == 0.0f) {
         *factor = 1.1f;
         *units = 4.0f;
     }
-    return !l->shadow_offset_off;
+    return 1;
 }
 
 /* Eye-linear plane of the light-eye depth mapped to [0, 1] over [n, f],
@@ -312,7 +314,8 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
      * perspective map (still a plane in d), the texel's width for an
      * orthographic one. */
     {
-        int off = ctx->lights[li].shadow_offset_off;
+        float unused_factor, unused_units;
+        int off = !stin__map_offset(&ctx->lights[li], &unused_factor, &unused_units);
         float texel = 2.0f / (proj[0] * (float)ctx->map_fixed.used);
         int ortho = proj[15] != 0.0f;
         float slope = off ? 0.0f : SLOPE_BIAS * texel;
@@ -336,7 +339,7 @@ static void fixed_prepass(stin_context *ctx)
             limit = pow2_at_most(fit);
     }
     ctx->map_fixed.used = limit;
-    ctx->stats.shadow_map_size = limit;
+    ctx->stats.shadows.map_size = limit;
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PushMatrix)();
     GL(ctx, MatrixMode)(GL_MODELVIEW);

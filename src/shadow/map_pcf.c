@@ -36,7 +36,7 @@ static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t size)
 static stin_result pcf_init(stin_context *ctx)
 {
     stin__map_pcf_state *m = &ctx->map_pcf;
-    uint32_t i, size = ctx->desc.shadow_map_size;
+    uint32_t i, size = ctx->desc.shadows.map_size;
     if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
         size = (uint32_t)ctx->caps.max_texture_size;
     m->size = size;
@@ -115,7 +115,7 @@ static void pcf_prepass(stin_context *ctx)
 {
     stin__map_pcf_state *m = &ctx->map_pcf;
     uint32_t i;
-    ctx->stats.shadow_map_size = m->size;
+    ctx->stats.shadows.map_size = m->size;
     for (i = 0; i < ctx->light_count && i < STIN__MAX_LIGHTS; i++) {
         const stin_light_desc *l = &ctx->lights[i];
         float view[16], proj[16], n, f;

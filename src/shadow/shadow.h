@@ -91,7 +91,7 @@ typedef struct stin__shadow_technique {
     /* After a shadowed frame's lighting and blended draws, before the
      * visibility export (frame/frame.c): a picture the caller's debug flags
      * ask for, drawn over the frame's colour, the frame's stats left as they
-     * are (volume: STIN_DEBUG_SHOW_VOLUMES). NULL: none. */
+     * are (volume: STIN_DEBUG_VOLUME_SHOW). NULL: none. */
     void (*debug_overlay)(stin_context *ctx, const stin__path *path);
     /* stin_debug_query_shadow_map (frame/debug.c), between frames: light
      * li's map of the last frame into *out (zeroed by the caller) and
@@ -161,7 +161,7 @@ typedef struct stin__vdsm_pyramid {
     GLuint points;              /* a vertex array without arrays: one point per pixel */
     GLuint light_prog, receiver_prog, reduce_prog;
     GLuint tris_prog;           /* the light pass's triangles (light_prog: its marks) */
-    int alloc;                  /* texels a side allocated (desc.shadow_map_size, <= 2048) */
+    int alloc;                  /* texels a side allocated (desc.shadows.map_size, <= 2048) */
     int size, top;              /* this frame's level 0 side (<= alloc); its 1 x 1 level */
     int usable;                 /* programs and framebuffer are there */
     int ready;                  /* this light's pyramid is drawn (else SM and DC are off) */
@@ -391,7 +391,8 @@ size_t stin__volume_state_bytes(const stin_desc *d);
 /* Screen rectangle a light of finite range can touch; 0 when unbounded. */
 int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
 /* The slope-scaled polygon offset of a light's map pass (its shadow_offset,
- * default 1.1 / 4); returns 0 when the light turns offsets off. */
+ * default 1.1 / 4); returns 0 where the light asks for none
+ * (shadow_offset_exact with both 0). */
 int stin__map_offset(const stin_light_desc *l, float *factor, float *units);
 
 /* map-depth's side test (shadow/map_facing.c). init decides it (a unit

@@ -325,7 +325,7 @@ static void polygons(stin_context *ctx, const float light[4])
         GLuint n = 0;
         GL(ctx, EndQuery)(GL_PRIMITIVES_GENERATED);
         GL(ctx, GetQueryObjectuiv)(v->query, GL_QUERY_RESULT, &n);
-        ctx->stats.vdsm_primitives += n;
+        ctx->stats.shadows.vdsm_primitives += n;
     }
     if (tested) {
         surface_depth(ctx, 0);

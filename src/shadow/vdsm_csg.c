@@ -376,8 +376,8 @@ void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel)
             continue;
         }
         walk(ctx, p, light, channel);
-        ctx->stats.vdsm_csg_casts++;
+        ctx->stats.shadows.vdsm_csg_casts++;
     }
     bind_buffers(ctx, 0);
-    ctx->stats.vdsm_csg_bytes = c->bytes;
+    ctx->stats.shadows.vdsm_csg_bytes = c->bytes;
 }

@@ -206,11 +206,11 @@ int stin__vdsm_cull_pass(stin_context *ctx, const float light[4])
         GL(ctx, EndQuery)(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
         GL(ctx, GetQueryObjectuiv)(c->query, GL_QUERY_RESULT, &kept);
         c->kept = kept;
-        ctx->stats.vdsm_kept_faces += kept;
+        ctx->stats.shadows.vdsm_kept_faces += kept;
     }
     GL_DISABLE(ctx, GL_RASTERIZER_DISCARD);
     feedback_target(ctx, c, 0);
-    ctx->stats.vdsm_cull_passes++;
+    ctx->stats.shadows.vdsm_cull_passes++;
     ctx->stats.passes++;
     GL(ctx, UseProgram)(c->fed_prog);
     stin__vdsm_polygon_uniforms(ctx, &c->fed, light);

@@ -39,7 +39,7 @@
  * texel counted as covered by one triangle is grown by it: room for the
  * rasteriser's snapping and the passes' rounding. */
 #define GROW_TEXELS 0.05f
-/* Texels a side at most (desc.shadow_map_size beyond it: this): 2048 is
+/* Texels a side at most (desc.shadows.map_size beyond it: this): 2048 is
  * 96 MB of GL memory (and 16 MB for the receivers' words on GL 4.3). */
 #define MAX_SIZE 2048u
 /* Texels a side of the finest level drawn at least (size_to_viewport). */
@@ -155,7 +155,7 @@ void stin__vdsm_pyramid_init(stin_context *ctx)
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
     char msg[160];
     GLenum status;
-    int size = (int)(ctx->desc.shadow_map_size < MAX_SIZE ? ctx->desc.shadow_map_size : MAX_SIZE);
+    int size = (int)(ctx->desc.shadows.map_size < MAX_SIZE ? ctx->desc.shadows.map_size : MAX_SIZE);
     msg[0] = '\0';
     p->light_prog = light_program(ctx, "gl4/vdsm_light.geom", msg, sizeof msg);
     if (p->light_prog)
@@ -486,7 +486,7 @@ static void size_to_viewport(stin__vdsm_pyramid *p, const int vp[4])
 int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
-    uint32_t flags = ctx->desc.debug_flags;
+    uint64_t flags = ctx->desc.debug_flags;
     int sm = !(flags & STIN_DEBUG_VDSM_NO_SM), dc = !(flags & STIN_DEBUG_VDSM_NO_DC);
     stin__pass_state saved = *stin__pass_current(ctx), ps = saved;
     const int *vp = ctx->frame.viewport;
@@ -547,7 +547,7 @@ int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel
 void stin__vdsm_pyramid_uniforms(stin_context *ctx, const stin__vdsm_pyramid_locs *l)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
-    uint32_t flags = ctx->desc.debug_flags;
+    uint64_t flags = ctx->desc.debug_flags;
     int on = p->ready;
     GL(ctx, Uniform1i)(l->sm, on && !(flags & STIN_DEBUG_VDSM_NO_SM));
     GL(ctx, Uniform1i)(l->dc, on && !(flags & STIN_DEBUG_VDSM_NO_DC));

@@ -115,7 +115,7 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, p->fbo);
     GL(ctx, Viewport)(0, 0, p->size, p->size);
     stin__pass_apply(ctx, &before);
-    ctx->stats.vdsm_atomic_receivers++;
+    ctx->stats.shadows.vdsm_atomic_receivers++;
 }
 
 /* Level 0 (attached, its viewport set) from the accumulation and the

@@ -188,7 +188,7 @@ static void draw_caster(stin_context *ctx, const stin__path *path, const stin__d
     r.sink = sink;
     r.user = &st;
     tris = stin__volume_build(&r);
-    ctx->stats.shadow_volume_triangles += tris;
+    ctx->stats.shadows.volume_triangles += tris;
 }
 
 static void caster_bounds(const stin_context *ctx, const stin__draw *d, float center[3],
@@ -237,7 +237,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     stin__casters_none(ctx, "into shadow volumes (a product's volume needs its resolved "
                             "silhouette, not its primitives'; the map techniques cast them)");
     /* The frame's viewport at most: the stencil of the rest of the
-     * framebuffer (other viewports of a no_clear frame) is not ours. */
+     * framebuffer (other viewports of a keep_contents frame) is not ours. */
     if (NO_SCISSOR(scissor))
         scissor = ctx->frame.viewport;
     ps.depth_test = 1;
@@ -270,9 +270,9 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
                 : d->material.color[3] < 1.0f                        ? 1
                                                                     : needs_zfail(planes, n_planes, center, radius);
         if (zfail)
-            ctx->stats.zfail_casters++;
+            ctx->stats.shadows.zfail_casters++;
         else
-            ctx->stats.zpass_casters++;
+            ctx->stats.shadows.zpass_casters++;
         face_ops(&back, zfail, 1, incr, decr);
         face_ops(&front, zfail, 0, incr, decr);
         if (two_sided) {
@@ -370,7 +370,7 @@ int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int o
 /* Samples of a light: several for an area light with soft shadows. */
 static uint32_t light_samples(const stin_context *ctx, const stin_light_desc *l)
 {
-    return l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL ? ctx->desc.soft_shadow_samples
+    return l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL ? ctx->desc.shadows.soft_samples
                                                                   : 1u;
 }
 
@@ -422,14 +422,14 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     stin__volume_light_end(ctx);
 }
 
-/* STIN_DEBUG_SHOW_VOLUMES: each light's volumes over the frame's colour,
+/* STIN_DEBUG_VOLUME_SHOW: each light's volumes over the frame's colour,
  * a faint orange added per face, so their overlaps show. */
 static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
 {
     static const float tint[4] = {0.10f, 0.05f, 0.0f, 1.0f};
     stin__pass_state ps = stin__pass_defaults;
-    uint32_t li, i, counted = ctx->stats.shadow_volume_triangles;
-    if (!(ctx->desc.debug_flags & STIN_DEBUG_SHOW_VOLUMES))
+    uint32_t li, i, counted = ctx->stats.shadows.volume_triangles;
+    if (!(ctx->desc.debug_flags & STIN_DEBUG_VOLUME_SHOW))
         return;
     ps.depth_test = 1;
     ps.depth_write = 0;
@@ -450,7 +450,7 @@ static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
             draw_caster(ctx, path, &ctx->draws[ctx->draw_order[i]], world, 1, 0);
     }
     path->volume_end(ctx);
-    ctx->stats.shadow_volume_triangles = counted; /* a picture, not the frame's work */
+    ctx->stats.shadows.volume_triangles = counted; /* a picture, not the frame's work */
 }
 
 /* A light of one sample into a mask channel: its volumes counted in the

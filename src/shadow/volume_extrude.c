@@ -105,8 +105,8 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
         GLuint n = 0;
         GL(ctx, EndQuery)(GL_PRIMITIVES_GENERATED);
         GL(ctx, GetQueryObjectuiv)(v->count_query, GL_QUERY_RESULT, &n);
-        ctx->stats.shadow_volume_triangles += (uint32_t)n;
+        ctx->stats.shadows.volume_triangles += (uint32_t)n;
     }
-    ctx->stats.shadow_volume_gpu_casters++;
+    ctx->stats.shadows.volume_gpu_casters++;
     return 1;
 }

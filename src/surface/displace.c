@@ -32,9 +32,9 @@ void stin__displace_frame_begin(stin_context *ctx)
     /* pixels a unit spans at eye distance 1 (perspective) or anywhere
      * (orthographic): the projection's y scale over half the viewport */
     ctx->displace.tess[0] = proj[5] * 0.5f * (float)ctx->frame.viewport[3];
-    ctx->displace.tess[1] = ctx->desc.displace_tess_pixels;
-    ctx->displace.tess[2] = (float)((GLint)ctx->desc.displace_tess_max < levels
-                                        ? (GLint)ctx->desc.displace_tess_max
+    ctx->displace.tess[1] = ctx->desc.displacement.tess_pixels;
+    ctx->displace.tess[2] = (float)((GLint)ctx->desc.displacement.tess_max < levels
+                                        ? (GLint)ctx->desc.displacement.tess_max
                                         : levels);
     ctx->displace.tess[3] = proj[11] != 0.0f ? 1.0f : 0.0f;
     if (!stin__mat4_invert(inv, view))

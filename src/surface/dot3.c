@@ -123,7 +123,7 @@ stin_result stin__dot3_init(stin_context *ctx)
     }
     ctx->dot3.units = ctx->sel.shadow_unit; /* 3, or 4 where selection spared one (albedo) */
     ctx->dot3.dot3_rgb = ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 13 ||
-                                 stin_has_extension(ctx, "GL_ARB_texture_env_dot3")
+                                 stin_query_extension(ctx, "GL_ARB_texture_env_dot3")
                              ? GL_DOT3_RGB
                              : GL_DOT3_RGB_EXT;
     GL(ctx, GenTextures)(1, &ctx->dot3.cube);

@@ -2,7 +2,7 @@
 /* Coloured shadow maps ("coloured", GL2 and up): deep's fallback.
  *
  * Per light, just before its lit pass, the transparent casters are drawn
- * from the light twice into one atlas (faces of deep_map_size, three across
+ * from the light twice into one atlas (faces of translucent.deep_map_size, three across
  * and two down; spot and directional lights use face 0, fitted as the
  * shadow maps are; point lights six 90-degree faces): first their depth
  * alone (LESS: the nearest transparent surface per texel), then, with no
@@ -98,7 +98,7 @@ void stin__coloured_init(stin_context *ctx)
     if (!chosen(ctx))
         return;
     stin__memzero(s, sizeof *s);
-    s->size = ctx->desc.deep_map_size;
+    s->size = ctx->desc.translucent.deep_map_size;
     while (largest && s->size > 1 && ATLAS_COLUMNS * s->size > largest)
         s->size /= 2u; /* three faces across must fit the largest texture */
     s->unit = ctx->sel.translucent_unit;

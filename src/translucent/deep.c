@@ -151,10 +151,10 @@ void stin__deep_init(stin_context *ctx)
     if (!chosen(ctx))
         return;
     stin__memzero(s, sizeof *s);
-    s->size = ctx->desc.deep_map_size;
+    s->size = ctx->desc.translucent.deep_map_size;
     if (ctx->caps.max_texture_size > 0 && s->size > (uint32_t)ctx->caps.max_texture_size)
         s->size = (uint32_t)ctx->caps.max_texture_size;
-    s->layer_cap = ctx->desc.deep_layers;
+    s->layer_cap = ctx->desc.translucent.deep_layers;
     s->slices = stin__deep_slices(s->layer_cap);
     s->unit = ctx->sel.translucent_unit;
     msg[0] = '\0';
@@ -275,7 +275,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
         return;
     }
     GL(ctx, UniformMatrix4fv)(s->u_view_proj, 1, GL_FALSE, view_proj);
-    ctx->stats.deep_faces++;
+    ctx->stats.translucent.deep_faces++;
     for (k = 0; k < s->layer_cap; k++) {
         GLint slice = (GLint)((uint32_t)face * s->slices + k / 2u);
         GLuint drawn = 1;
@@ -294,7 +294,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
         else if (stop_early)
             GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, s->query);
         draw_transparent(ctx);
-        ctx->stats.deep_layers++;
+        ctx->stats.translucent.deep_layers++;
         ctx->stats.passes++;
         if (stop_early && s->flag) { /* the shader's writes, visible to the read-back */
             GL(ctx, MemoryBarrier)(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -327,7 +327,7 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, Uniform1i)(s->u_albedo_tex, 0);
     GL(ctx, Uniform1i)(s->u_previous, s->unit);
-    GL(ctx, Uniform1i)(s->u_mono, ctx->desc.deep_mono);
+    GL(ctx, Uniform1i)(s->u_mono, ctx->desc.translucent.deep_mono);
     if (s->flag) /* binding 0 of the peel shader (and the generic binding) */
         GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, 0, s->flag);
     /* the other texture is sampled by no one while its slices are drawn */

@@ -89,7 +89,7 @@ int stin__translucent_skips(const stin_context *ctx, const stin__draw *d)
         return 1; /* it shadows through its map */
     return ctx->sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique ==
                STIN_TECH_TRANSLUCENT_OPAQUE &&
-           a < ctx->desc.translucent_opaque_threshold;
+           a < ctx->desc.translucent.opaque_threshold;
 }
 
 void stin__translucent_light(stin_context *ctx, uint32_t li)

@@ -18,7 +18,7 @@
 #include "render/path_features.h"
 
 #define STIN__DEEP_FACES 6
-#define STIN__DEEP_MAX_LAYERS 16 /* desc.deep_layers at most */
+#define STIN__DEEP_MAX_LAYERS 16 /* desc.translucent.deep_layers at most */
 
 typedef struct stin__deep_state {
     /* Layer k of face f lives in layers[k % 2] at slice f * slices + k / 2
@@ -33,7 +33,7 @@ typedef struct stin__deep_state {
         u_previous_slice, u_mono;
     stin__displace_locs displace;
     uint32_t size;         /* texels a side of a face */
-    uint32_t layer_cap;    /* desc.deep_layers */
+    uint32_t layer_cap;    /* desc.translucent.deep_layers */
     uint32_t slices;       /* per face and texture: ceil(layer_cap / 2) */
     int unit;              /* two texture units: even, odd layers */
     int ready;             /* set up: transparent casters leave the shadows technique */
@@ -75,7 +75,7 @@ int stin__deep_active(const struct stin_context *ctx);
 void stin__deep_light(struct stin_context *ctx, uint32_t li);
 void stin__deep_light_done(struct stin_context *ctx);
 
-/* Colour maps ("coloured"): faces of deep_map_size in a 3 x 2 atlas (face
+/* Colour maps ("coloured"): faces of translucent.deep_map_size in a 3 x 2 atlas (face
  * f at column f % 3, row f / 3), RGBA8 transmittance and the nearest
  * transparent depth. */
 typedef struct stin__coloured_state {

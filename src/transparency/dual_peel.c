@@ -19,7 +19,7 @@
  * T *= 1 - a), back layers over one another (C = a c + (1 - a) C,
  * T *= 1 - a), into RGBA16F; at the end back goes under front and the
  * whole over the frame as depth-peel's: frame = C + T frame.
- * Peeling stops at desc.transparency_layers, at a pass that found nothing
+ * Peeling stops at desc.transparency.layers, at a pass that found nothing
  * (occlusion query), or after a back layer that drew nothing (no pixel had
  * a third surface left, so the next pass would find nothing): a scene of N
  * layers takes N / 2 + 1 passes (integer division). */
@@ -193,7 +193,7 @@ static GLuint minmax_pass(stin_context *ctx, int k)
             stin__glsl_submit_geometry(ctx, d->u_model[t], &d->displace[t], &ctx->draws[i]);
     samples = stin__peel_count_end(ctx);
     GL(ctx, BlendEquation)(GL_FUNC_ADD);
-    ctx->stats.peel_passes++;
+    ctx->stats.transparency.peel_passes++;
     ctx->stats.passes++;
     return samples;
 }
@@ -203,7 +203,7 @@ int stin__dual_layer_begin(stin_context *ctx)
     stin__peel_state *s = &ctx->peel;
     stin__dual_state *d = &s->d;
     int j = s->layer + 1, all = (ctx->desc.debug_flags & STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP) != 0;
-    if ((uint32_t)j >= ctx->desc.transparency_layers)
+    if ((uint32_t)j >= ctx->desc.transparency.layers)
         return 0;
     if ((j & 1) == 0) { /* a front layer: its pass first */
         if (d->back_empty && !all)
@@ -234,7 +234,7 @@ int stin__dual_layer_lights(stin_context *ctx)
             s->d.back_empty = 1;
         return 0;
     }
-    ctx->stats.peel_layers++;
+    ctx->stats.transparency.peel_layers++;
     stin__peel_lights_target(ctx);
     return 1;
 }

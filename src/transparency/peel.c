@@ -11,7 +11,7 @@
  * At the end the composite goes over the opaque image, frame = C + T frame,
  * and the first layer's depth into the frame's depth where there is one (as
  * the sorted draws leave it: the nearest surface's).
- * Peeling stops at desc.transparency_layers or at the first pass that drew
+ * Peeling stops at desc.transparency.layers or at the first pass that drew
  * nothing (an occlusion query).
  * "dual-peel" (transparency/dual_peel.c) shares this file's objects and
  * entry points: each stin__peel_* call below turns to it when it is chosen. */
@@ -20,7 +20,7 @@
 static int chosen(const stin_context *ctx)
 {
     stin_technique t = ctx->sel.choice[STIN_FEATURE_TRANSPARENCY].technique;
-    return t == STIN_TECH_TRANSPARENCY_PEEL || t == STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+    return t == STIN_TECH_TRANSPARENCY_DEPTH_PEEL || t == STIN_TECH_TRANSPARENCY_DUAL_PEEL;
 }
 
 static int dual(const stin_context *ctx)
@@ -140,7 +140,7 @@ void stin__peel_init(stin_context *ctx)
                       msg);
         stin__peel_release(ctx);
         stin__demote(ctx, STIN_FEATURE_TRANSPARENCY,
-                     was_dual ? STIN_TECH_TRANSPARENCY_PEEL : STIN_TECH_TRANSPARENCY_SORTED, why);
+                     was_dual ? STIN_TECH_TRANSPARENCY_DEPTH_PEEL : STIN_TECH_TRANSPARENCY_SORTED, why);
         if (was_dual && stin__glsl_init(ctx, STIN_TIER_GL4, msg, sizeof msg) == STIN_OK)
             stin__peel_init(ctx);
         else if (was_dual) /* cannot happen where they built a moment ago */
@@ -286,7 +286,7 @@ int stin__peel_layer_begin(stin_context *ctx)
     int k = s->layer + 1;
     if (s->dual)
         return stin__dual_layer_begin(ctx);
-    if ((uint32_t)k >= ctx->desc.transparency_layers)
+    if ((uint32_t)k >= ctx->desc.transparency.layers)
         return 0;
     s->layer = k;
     s->peeling = 1;
@@ -297,7 +297,7 @@ int stin__peel_layer_begin(stin_context *ctx)
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, s->opaque);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     stin__lit_uniforms_stale(ctx); /* every lit program's peel uniforms are stale */
-    ctx->stats.peel_passes++;
+    ctx->stats.transparency.peel_passes++;
     stin__peel_count_begin(ctx);
     return 1;
 }
@@ -326,11 +326,11 @@ int stin__peel_layer_lights(stin_context *ctx)
         return stin__dual_layer_lights(ctx);
     samples = stin__peel_count_end(ctx);
     if (!samples && !(ctx->desc.debug_flags & STIN_DEBUG_PEEL_NO_EARLY_STOP)) {
-        s->layer = (int)ctx->desc.transparency_layers; /* the last: nothing is left */
+        s->layer = (int)ctx->desc.transparency.layers; /* the last: nothing is left */
         return 0;
     }
     if (samples)
-        ctx->stats.peel_layers++;
+        ctx->stats.transparency.peel_layers++;
     stin__peel_lights_target(ctx);
     return 1;
 }
@@ -387,7 +387,7 @@ void stin__peel_layer_end(stin_context *ctx)
     }
     s->peeling = 0; /* the composite and whatever follows are no layer's */
     stin__lit_uniforms_stale(ctx);
-    if (s->layer >= (int)ctx->desc.transparency_layers)
+    if (s->layer >= (int)ctx->desc.transparency.layers)
         return; /* stopped early: nothing to add */
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->composite_fbo);

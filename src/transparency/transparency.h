@@ -17,7 +17,7 @@
 #include "render/path.h"
 #include "render/path_features.h"
 
-#define STIN__PEEL_MAX_LAYERS 64 /* desc.transparency_layers at most */
+#define STIN__PEEL_MAX_LAYERS 64 /* desc.transparency.layers at most */
 
 /* dual-peel's own objects; the layer's depth, ambient and lights, the
  * opaque depth, the framebuffers and the query are depth-peel's. */

@@ -45,19 +45,19 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     d.techniques[STIN_FEATURE_SURFACE] = o->surface;
     d.techniques[STIN_FEATURE_DISPLACEMENT] = o->displacement;
     d.techniques[STIN_FEATURE_CSG] = o->csg_technique;
-    d.displace_guard_band = o->guard_band;
-    d.displace_tess_pixels = o->tess_pixels;
+    d.displacement.guard_band = o->guard_band;
+    d.displacement.tess_pixels = o->tess_pixels;
     d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] =
         o->translucent != STIN_TECH_NONE ? o->translucent : STIN_TECH_TRANSLUCENT_SOLID;
-    d.deep_layers = o->deep_layers;
-    d.deep_map_size = o->deep_map_size;
-    d.deep_mono = o->deep_mono;
-    d.translucent_opaque_threshold = o->opaque_threshold;
+    d.translucent.deep_layers = o->deep_layers;
+    d.translucent.deep_map_size = o->deep_map_size;
+    d.translucent.deep_mono = o->deep_mono;
+    d.translucent.opaque_threshold = o->opaque_threshold;
     d.debug_flags = o->debug_flags;
-    d.shadow_map_size = o->shadow_map_size;
+    d.shadows.map_size = o->shadow_map_size;
     scene_gpu_size_desc(s, &d);
     if (o->csg_capacity)
-        d.max_csg_primitives = d.max_csg_terms = d.max_csg_literals = o->csg_capacity;
+        d.csg.max_primitives = d.csg.max_terms = d.csg.max_literals = o->csg_capacity;
     size = stin_memory_size(&d);
     block = malloc(size);
     if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {

@@ -13,23 +13,23 @@
 typedef struct capture_options {
     stin_tier tier;
     stin_technique shadows;   /* forced shadow technique */
-    uint32_t debug_flags;     /* STIN_DEBUG_* */
+    uint64_t debug_flags;     /* STIN_DEBUG_* */
     uint64_t extra_mask;      /* capabilities hidden on top of the profile's */
     uint32_t shadow_map_size; /* 0: stin's default */
     stin_technique surface;   /* forced surface technique; NONE = auto */
     stin_technique displacement; /* forced displacement technique; NONE = auto */
-    float guard_band;         /* stin_desc.displace_guard_band; 0 = stin's default */
-    float tess_pixels;        /* stin_desc.displace_tess_pixels; 0 = stin's default */
+    float guard_band;         /* stin_desc.displacement.guard_band; 0 = stin's default */
+    float tess_pixels;        /* stin_desc.displacement.tess_pixels; 0 = stin's default */
     const struct scene_gpu_csg *csg; /* CSG products of the scene's objects (NULL: none) */
     int csg_count;
     stin_technique csg_technique; /* forced CSG technique; NONE = auto */
-    uint32_t csg_capacity;    /* desc.max_csg_primitives, _terms, _literals; 0 = stin's */
+    uint32_t csg_capacity;    /* desc.csg.max_primitives, _terms, _literals; 0 = stin's */
     /* forced translucent-shadows technique; NONE = translucent-solid: the
      * shadow tests compare the hard visibility (deep_test.c asks for deep) */
     stin_technique translucent;
     uint32_t deep_layers, deep_map_size; /* stin_desc's; 0 = stin's defaults */
     int deep_mono;
-    float opaque_threshold; /* stin_desc.translucent_opaque_threshold; 0 = stin's default */
+    float opaque_threshold; /* stin_desc.translucent.opaque_threshold; 0 = stin's default */
 } capture_options;
 
 typedef struct capture {

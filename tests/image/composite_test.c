@@ -3,7 +3,7 @@
  * on four-lights, the application draws a magenta quad on the plane z = 0
  * (x in [-6, 6], y in [-1, 3], through the objects and the floor) with the
  * projection stin_query_frame_projection gives after stin_begin_frame,
- * once before stin's draws (stin with no_clear) and once after stin's frame.
+ * once before stin's draws (stin with keep_contents) and once after stin's frame.
  * Exact answer: a pixel shows the quad iff the quad is nearer along the
  * pixel's ray than the Embree first hit. Pixels where the two distances are
  * within 0.1% are left out; at most 0.05% of the rest may differ (pixel
@@ -80,7 +80,7 @@ static void draw_quad(composite *c)
     gl->Disable(GL_DEPTH_TEST);
 }
 
-/* One frame: the quad before stin's draws (no_clear) or after its frame. */
+/* One frame: the quad before stin's draws (keep_contents) or after its frame. */
 static int frame(composite *c, int before)
 {
     const scene *s = c->s;
@@ -88,7 +88,7 @@ static int frame(composite *c, int before)
     stin_frame_desc fd;
     float proj[16];
     test_frame_desc(c->r, s, &fd);
-    fd.no_clear = before;
+    fd.keep_contents = before;
     if (before) { /* the application clears, draws, then stin draws with it */
         c->gl->BindFramebuffer(GL_FRAMEBUFFER, fd.framebuffer);
         c->gl->Viewport(0, 0, w, h);

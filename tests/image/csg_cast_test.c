@@ -19,7 +19,7 @@
  *               casts nothing) and 30 lit through its hole (shadowed where
  *               the slab and the ball cast as ordinary meshes): a render
  *               that leaves the product out, or casts its primitives,
- *               fails. The maps must report stin_frame_stats.csg_cast_maps.
+ *               fails. The maps must report stin_frame_stats.csg.cast_maps.
  *               Where the technique casts no product (volume; a point
  *               light under map-combine, or map-depth without framebuffer
  *               objects, which takes volumes) the render is held to the
@@ -181,9 +181,9 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
         }
     ok = compared && (double)differ <= bound * (double)compared &&
          product_shadow >= CAST_MIN_PRODUCT_SHADOW && hole >= CAST_MIN_HOLE &&
-         (cast ? (vdsm ? one.stats.vdsm_csg_casts > 0 && !said : one.stats.csg_cast_maps > 0)
+         (cast ? (vdsm ? one.stats.shadows.vdsm_csg_casts > 0 && !said : one.stats.csg.cast_maps > 0)
                : said) &&
-         (!map_size || one.stats.csg_cast_bands > one.stats.csg_cast_maps);
+         (!map_size || one.stats.csg.cast_bands > one.stats.csg.cast_maps);
     report(r, ok ? "PASS" : "FAIL", name,
            "%s %s: visibility differs from the %s reference on %ld of %ld pixels (%.3f%%, bound "
            "%.1f%%); %ld shadowed by the product alone, %ld lit through its hole (need %d, %d); "
@@ -191,8 +191,8 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
            stin_technique_name(t), cast ? "casts" : "casts no product",
            cast ? "casting" : "non-casting", differ, compared,
            compared ? 100.0 * differ / compared : 0.0, 100.0 * bound, product_shadow, hole,
-           CAST_MIN_PRODUCT_SHADOW, CAST_MIN_HOLE, one.stats.csg_cast_maps,
-           one.stats.csg_cast_bands, one.stats.vdsm_csg_casts,
+           CAST_MIN_PRODUCT_SHADOW, CAST_MIN_HOLE, one.stats.csg.cast_maps,
+           one.stats.csg.cast_bands, one.stats.shadows.vdsm_csg_casts,
            said ? "says why products cast nothing" : "says nothing of casting");
     capture_free(&one);
 }

@@ -9,17 +9,17 @@
  *               though their window boxes meet, so scs runs its sequence
  *               once without a check; "grouped": under goldfeather at
  *               least 900 of the spheres take their passes in groups
- *               (stin_frame_stats.csg_grouped), so P above proves them;
+ *               (stin_frame_stats.csg.grouped), so P above proves them;
  *   thousand    the intersection of 1000 unit spheres with centres spread
  *               over +-0.3 (one term of 1000 plain literals: scs counts
- *               them 255 a batch; STIN_DEBUG_CSG_NO_BATCH counts them in
+ *               them 255 a batch; STIN_DEBUG_CSG_SCS_NO_BATCH counts them in
  *               one 8-bit counter and must fail here), under scs;
  *   pockets     a box minus 31 spheres on a 6 x 6 grid in its top face,
  *               each cutting into its neighbours (stin-bench's grid n = 32),
  *               under scs and goldfeather. scs orders spheres by the eye's
  *               power, which takes every pixel through every sphere it
  *               lies in at once: "sequence" holds its runs
- *               (stin_frame_stats.csg_scs_runs) at 1, fewer than with the
+ *               (stin_frame_stats.csg.scs_runs) at 1, fewer than with the
  *               check off (STIN_DEBUG_CSG_SCS_NO_EARLY_STOP: every run the
  *               boxes' bound allows), with P and N the same, pixel for pixel;
  *   cycle       the box minus 3 tilted bars in a triangle, seen from above:
@@ -39,7 +39,7 @@
  *               every sphere mirrored in x (its winding reversed).
  * Against the exact CSG reference with csg_test.c's bounds (P on >= 99.9%
  * of the covered pixels, N within 2 degrees on >= 99.5% away from edges),
- * desc.max_csg_primitives and max_csg_literals raised to 1000. Contexts
+ * desc.csg.max_primitives and csg.max_literals raised to 1000. Contexts
  * without what the technique needs report SKIP with the reason.
  */
 #include "aov.h"
@@ -297,13 +297,13 @@ static void sequence_check(run *r, const scene *s, capture_options *o, const cap
 {
     capture all;
     long differ = 0;
-    unsigned runs = checked->stats.csg_scs_runs, every, least = sh == CYCLE_SHAPE ? 2u : 1u;
+    unsigned runs = checked->stats.csg.scs_runs, every, least = sh == CYCLE_SHAPE ? 2u : 1u;
     unsigned most = sh == CYCLE_SHAPE ? 0xffffffffu : 1u;
     int same;
     o->debug_flags = STIN_DEBUG_CSG_SCS_NO_EARLY_STOP;
     if (!capture_forced(r, s, o, STIN_FEATURE_CSG, STIN_TECH_CSG_SCS, &all, name))
         return;
-    every = all.stats.csg_scs_runs;
+    every = all.stats.csg.scs_runs;
     same = same_surface(&checked->img, &all.img, &differ);
     report(r, runs >= least && runs <= most && runs < every && same && differ == 0 ? "PASS"
                                                                                    : "FAIL",
@@ -338,7 +338,7 @@ static void report_surface(run *r, const scene *s, shape sh, const capture *cap,
  * the rule off: 2 runs' bound, 1 check a frame). */
 static void apart_check(run *r, const capture *cap, const char *name)
 {
-    unsigned runs = cap->stats.csg_scs_runs, checks = cap->stats.csg_scs_checks;
+    unsigned runs = cap->stats.csg.scs_runs, checks = cap->stats.csg.scs_checks;
     report(r, runs == 1u && checks == 0u ? "PASS" : "FAIL", name,
            "subtracted spheres apart in the world: %u run%s and %u check%s (need 1 and 0)", runs,
            runs == 1u ? "" : "s", checks, checks == 1u ? "" : "s");
@@ -349,7 +349,7 @@ static void apart_check(run *r, const capture *cap, const char *name)
  * proof that the groups resolve the product exactly. */
 static void grouped_check(run *r, const capture *cap, const char *name)
 {
-    unsigned grouped = cap->stats.csg_grouped;
+    unsigned grouped = cap->stats.csg.grouped;
     report(r, grouped >= 9 * MANY / 10 ? "PASS" : "FAIL", name,
            "%u of %d subtracted spheres took their passes in groups (need >= %d)", grouped,
            MANY - 1, 9 * MANY / 10);
@@ -375,7 +375,7 @@ static void mirror_check(run *r, scene *s, const capture_options *o, stin_techni
     capture_free(&mirrored);
 }
 
-static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint32_t debug)
+static void run_many(run *r, stin_tier tier, shape sh, stin_technique tech, uint64_t debug)
 {
     static int objects[MANY];
     static stin_csg_node nodes[2 * MANY - 1];
@@ -478,5 +478,5 @@ void csg_many_tests(run *r, stin_tier tier)
     run_many(r, tier, CYCLE_SHAPE, STIN_TECH_CSG_SCS, 0);
     run_many(r, tier, CYCLE_SHAPE, STIN_TECH_CSG_GOLDFEATHER, 0);
     if (getenv("STIN_CSG_BREAK_BATCH")) /* the proof that batching matters: must FAIL */
-        run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, STIN_DEBUG_CSG_NO_BATCH);
+        run_many(r, tier, THOUSAND, STIN_TECH_CSG_SCS, STIN_DEBUG_CSG_SCS_NO_BATCH);
 }

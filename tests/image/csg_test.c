@@ -31,7 +31,7 @@
  *               at least 100
  *               shadowed pixels of the product compared;
  *   gpu-resolve (GLSL tiers; interval on row and torus-far) the GPU resolve
- *               ran (stin_frame_stats.csg_gpu_resolves) and its image equals
+ *               ran (stin_frame_stats.csg.gpu_resolves) and its image equals
  *               the read-back resolve's (STIN_DEBUG_CSG_READBACK), every
  *               channel, on all but 0.05% of the covered pixels: it
  *               rasterises the candidates in its own buffer, whose coverage
@@ -39,18 +39,18 @@
  *               the frame's (Mesa draws window-system buffers upside down);
  *               measured 0-2 pixels a case;
  *   in-place    (scs, GLSL tiers) a product of one term resolved in the
- *               frame's own buffers (stin_frame_stats.csg_in_place), one
- *               of two terms not but direct (csg_direct: each candidate
+ *               frame's own buffers (stin_frame_stats.csg.in_place), one
+ *               of two terms not but direct (csg.direct: each candidate
  *               snapped into the frame's depth), and the image equal to
  *               the work buffer's merge and snap (STIN_DEBUG_CSG_NO_IN_PLACE)
  *               on all but 0.05% of the covered pixels (gpu-resolve's
  *               bound);
  *   direct      (goldfeather, GLSL tiers) its GPU resolve direct
- *               (csg_direct = 1), whose image gpu-resolve checks;
+ *               (csg.direct = 1), whose image gpu-resolve checks;
  *   gl-clean    no GL error, no call outside the profile, no logged error.
  * Every case runs under goldfeather, scs ("csg-scs-") and interval
  * ("csg-interval-"; GL4 only, SKIP elsewhere). Under interval also:
- *   resolved    stin_frame_stats.csg_interval_products = 1;
+ *   resolved    stin_frame_stats.csg.interval_products = 1;
  *   agrees      P against goldfeather's, pixel by pixel, on >= 99.9% of the
  *               covered pixels (the same P bound: both take the surface's
  *               depth from the frame's own depth buffer, so they differ
@@ -251,15 +251,15 @@ static void test_gpu_resolve(run *r, const csg_case *c, stin_technique t, stin_t
         return;
     d = differ_of(r, cap, &cpu);
     report(r,
-           cap->stats.csg_gpu_resolves == 1 && cpu.stats.csg_gpu_resolves == 0 && d.covered &&
+           cap->stats.csg.gpu_resolves == 1 && cpu.stats.csg.gpu_resolves == 0 && d.covered &&
                    d.differ <= CSG_GPU_MAX_DIFFER * d.covered
                ? "PASS"
                : "FAIL",
            name, "GPU resolve ran: %s (%llu bytes of GL memory), the read-back one ran: %s; the "
            "images differ on %ld of %ld covered pixels (depth on %ld; need <= %.2f%%)",
-           cap->stats.csg_gpu_resolves ? "yes" : "no",
-           (unsigned long long)cap->stats.csg_gpu_bytes,
-           cpu.stats.csg_gpu_resolves ? "no" : "yes", d.differ, d.covered, d.depth_differ,
+           cap->stats.csg.gpu_resolves ? "yes" : "no",
+           (unsigned long long)cap->stats.csg.gpu_bytes,
+           cpu.stats.csg.gpu_resolves ? "no" : "yes", d.differ, d.covered, d.depth_differ,
            100.0 * CSG_GPU_MAX_DIFFER);
     capture_free(&cpu);
 }
@@ -276,7 +276,7 @@ static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene
     capture merged;
     char name[256];
     image_differ d;
-    unsigned in_place = c->convex && cap->stats.csg_terms == 1;
+    unsigned in_place = c->convex && cap->stats.csg.terms == 1;
     case_name(c, STIN_TECH_CSG_SCS, tier, "in-place", name, sizeof name);
     if (tier == STIN_TIER_GL1) {
         report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
@@ -287,16 +287,16 @@ static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene
         return;
     d = differ_of(r, cap, &merged);
     report(r,
-           cap->stats.csg_in_place == in_place && cap->stats.csg_direct == !in_place &&
-                   merged.stats.csg_in_place == 0 && merged.stats.csg_direct == 0 &&
-                   merged.stats.csg_gpu_resolves == 1 && d.covered &&
+           cap->stats.csg.in_place == in_place && cap->stats.csg.direct == !in_place &&
+                   merged.stats.csg.in_place == 0 && merged.stats.csg.direct == 0 &&
+                   merged.stats.csg.gpu_resolves == 1 && d.covered &&
                    d.differ <= CSG_GPU_MAX_DIFFER * d.covered
                ? "PASS"
                : "FAIL",
            name, "in place: %u (want %u: %u terms), direct: %u, with the flag: %u and %u; the "
            "images differ on %ld of %ld covered pixels (depth on %ld; need <= %.2f%%)",
-           cap->stats.csg_in_place, in_place, cap->stats.csg_terms, cap->stats.csg_direct,
-           merged.stats.csg_in_place, merged.stats.csg_direct, d.differ, d.covered,
+           cap->stats.csg.in_place, in_place, cap->stats.csg.terms, cap->stats.csg.direct,
+           merged.stats.csg.in_place, merged.stats.csg.direct, d.differ, d.covered,
            d.depth_differ, 100.0 * CSG_GPU_MAX_DIFFER);
     capture_free(&merged);
 }
@@ -313,12 +313,12 @@ static void test_direct(run *r, const csg_case *c, stin_tier tier, const capture
         return;
     }
     report(r,
-           cap->stats.csg_direct == 1 && cap->stats.csg_in_place == 0 &&
-                   cap->stats.csg_gpu_resolves == 1
+           cap->stats.csg.direct == 1 && cap->stats.csg.in_place == 0 &&
+                   cap->stats.csg.gpu_resolves == 1
                ? "PASS"
                : "FAIL",
            name, "direct: %u (want 1), in place: %u (want 0), GPU resolve: %u (want 1)",
-           cap->stats.csg_direct, cap->stats.csg_in_place, cap->stats.csg_gpu_resolves);
+           cap->stats.csg.direct, cap->stats.csg.in_place, cap->stats.csg.gpu_resolves);
 }
 
 /* The ordinary render's P against the union's. */
@@ -360,16 +360,16 @@ static void test_scs_used(run *r, const csg_case *c, stin_tier tier, const captu
     case_name(c, STIN_TECH_CSG_SCS, tier, c->convex ? "resolved" : "falls-back", name,
               sizeof name);
     if (c->convex)
-        report(r, cap->stats.csg_scs_products == 1 ? "PASS" : "FAIL", name,
-               "%u of 1 products resolved by scs", cap->stats.csg_scs_products);
+        report(r, cap->stats.csg.scs_products == 1 ? "PASS" : "FAIL", name,
+               "%u of 1 products resolved by scs", cap->stats.csg.scs_products);
     else
         report(r,
-               cap->stats.csg_scs_products == 0 && cap->log_fallbacks &&
+               cap->stats.csg.scs_products == 0 && cap->log_fallbacks &&
                        strstr(cap->fallbacks, "scs: ")
                    ? "PASS"
                    : "FAIL",
                name, "%u products resolved by scs (want 0), fallback logged: %s",
-               cap->stats.csg_scs_products,
+               cap->stats.csg.scs_products,
                strstr(cap->fallbacks, "scs: ") ? strstr(cap->fallbacks, "scs: ") : "no");
 }
 
@@ -425,7 +425,7 @@ static void test_shadow(run *r, const csg_case *c, stin_technique tech, stin_tie
         }
     report(r,
            compared && on_product >= 100 && (double)differ <= bound * (double)compared &&
-                   (!vdsm_casts || cap->stats.vdsm_csg_casts > 0)
+                   (!vdsm_casts || cap->stats.shadows.vdsm_csg_casts > 0)
                ? "PASS"
                : "FAIL",
            name, "%s: visibility differs on %ld of %ld pixels the light reaches from the %s "
@@ -433,7 +433,7 @@ static void test_shadow(run *r, const csg_case *c, stin_technique tech, stin_tie
            "need >= 100; %u vdsm casts)",
            stin_technique_name(t), differ, compared, ref == ref_cast ? "casting" : "non-casting",
            compared ? 100.0 * differ / compared : 0.0, 100.0 * bound, shadowed, on_product,
-           cap->stats.vdsm_csg_casts);
+           cap->stats.shadows.vdsm_csg_casts);
     capture_free(&one);
 }
 
@@ -464,7 +464,7 @@ static void test_one_interval(run *r, const csg_case *c, stin_tier tier, const s
     if (!render(r, s, &o, &one, name))
         return;
     match = p_match(s, &one, refimg, hits, &cr);
-    report(r, one.stats.csg_interval_products == 1 && match < 0.99 ? "PASS" : "FAIL", name,
+    report(r, one.stats.csg.interval_products == 1 && match < 0.99 ? "PASS" : "FAIL", name,
            "one interval per operand: P matches on %.3f%% of %ld covered pixels (coverage "
            "differs on %ld, P on %ld; must be below 99%% to show the layers matter)",
            100.0 * match, cr.covered, cr.coverage_mismatch, cr.p_mismatch);
@@ -490,11 +490,11 @@ static void test_overflow(run *r, const csg_case *c, stin_tier tier, const scene
     match = p_match(s, &two, refimg, hits, &cr);
     said = strstr(two.fallbacks, "interval: a primitive crosses");
     report(r,
-           two.stats.csg_interval_products == 0 && said && match >= CSG_P_MIN_MATCH ? "PASS"
+           two.stats.csg.interval_products == 0 && said && match >= CSG_P_MIN_MATCH ? "PASS"
                                                                                    : "FAIL",
            name, "k = 2: %u products resolved by interval (want 0), overflow logged: %s; P "
            "matches on %.3f%% of %ld covered pixels (need %.1f%%)",
-           two.stats.csg_interval_products, said ? "yes" : "no", 100.0 * match, cr.covered,
+           two.stats.csg.interval_products, said ? "yes" : "no", 100.0 * match, cr.covered,
            100.0 * CSG_P_MIN_MATCH);
     capture_free(&two);
 }
@@ -579,10 +579,10 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
         test_direct(r, c, tier, &cap);
     if (tech == STIN_TECH_CSG_INTERVAL) {
         case_name(c, tech, tier, "resolved", name, sizeof name);
-        report(r, cap.stats.csg_interval_products == 1 ? "PASS" : "FAIL", name,
+        report(r, cap.stats.csg.interval_products == 1 ? "PASS" : "FAIL", name,
                "%u of 1 products resolved by interval (%llu bytes of layers)",
-               cap.stats.csg_interval_products,
-               (unsigned long long)cap.stats.csg_interval_bytes);
+               cap.stats.csg.interval_products,
+               (unsigned long long)cap.stats.csg.interval_bytes);
         test_agree(r, c, tech, tier, &s, &o, &cap);
         if (non_convex_along_rays(c)) {
             test_one_interval(r, c, tier, &s, &o, refimg, hits);

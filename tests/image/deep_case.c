@@ -267,11 +267,11 @@ void deep_test_shadows_off(const deep_case *c, const char *name, stin_technique 
     t = &cap.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS];
     report(c->r,
            t->technique == expect && t->fell_back && strstr(t->reason, "shadows are off") &&
-                   !cap.log_errors && !cap.stats.deep_layers
+                   !cap.log_errors && !cap.stats.translucent.deep_layers
                ? "PASS"
                : "FAIL",
            name, "forced %s with shadows off: %s (%s), %u layers peeled, %u errors logged",
-           c->tag, stin_technique_name(t->technique), t->reason, cap.stats.deep_layers,
+           c->tag, stin_technique_name(t->technique), t->reason, cap.stats.translucent.deep_layers,
            cap.log_errors);
     capture_free(&cap);
 }

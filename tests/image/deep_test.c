@@ -4,7 +4,7 @@
  * Embree reference (T.R T.G T.B: the product of the eq 5.3 factors of every
  * surface between the point and light 0), on the scenes made for them
  * (deep-*) and glass-panes:
- *   transmittance  (deep_layers 6 on glass-panes, whose three panes are
+ *   transmittance  (translucent.deep_layers 6 on glass-panes, whose three panes are
  *                  boxes: six surfaces) the visibility output (the shadows technique's times the
  *                  deep map's, 8-bit) within 2/255 of T per channel (the
  *                  8-bit output rounds by 1/255 and the layer's float depth
@@ -21,7 +21,7 @@
  *                  pixels and >= 99.5% of them within 2/255;
  *   own-layer      pane pixels the reference sees unshadowed (T = 1) are
  *                  within 2/255 of 1: a pane is not darkened by its layer;
- *   layer-cap      with deep_layers 2, where three panes overlap (T 0.125)
+ *   layer-cap      with translucent.deep_layers 2, where three panes overlap (T 0.125)
  *                  the floor gets 0.25 (the third pane is not captured);
  *   order          the objects drawn in reverse order give bit-identical
  *                  visibility and beauty;
@@ -37,7 +37,7 @@
  *                  techniques for the opaque casters (glass-panes);
  *   texture        (deep-window) a textured pane's opaque cells cast their
  *                  colour, its alpha-0 cells nothing;
- *   mono           deep_mono: the colour cases come out grey, 1 - a per pane;
+ *   mono           translucent.deep_mono: the colour cases come out grey, 1 - a per pane;
  *   shadows-off    forced deep with shadows off falls back to
  *                  translucent-solid at set-up, saying why;
  *   gl-clean       no GL error, no call outside the profile.
@@ -72,7 +72,7 @@ static void test_layer_cap(const deep_case *c, const char *name)
             good += deep_within(deep_gl_px(c, &cap, x, y), quarter, T_TOLERANCE);
         }
     report(c->r, n >= MIN_CLASS && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
-           "deep_layers 2: %ld of %ld pixels under three panes (T 0.125) get 0.25 within 2/255 "
+           "translucent.deep_layers 2: %ld of %ld pixels under three panes (T 0.125) get 0.25 within 2/255 "
            "(need >= %d pixels, 99.5%%)", good, n, MIN_CLASS);
     capture_free(&cap);
 }
@@ -113,17 +113,17 @@ static void test_early_stop(const deep_case *c, const capture *base, const char 
         return;
     d = deep_differing(base, &cap);
     /* glass-panes' three panes lie below the light: its -y face alone */
-    want_faces = strcmp(c->scene_name, "glass-panes") ? base->stats.deep_faces : 1u;
+    want_faces = strcmp(c->scene_name, "glass-panes") ? base->stats.translucent.deep_faces : 1u;
     report(c->r,
-           d == 0 && cap.stats.deep_layers >= base->stats.deep_layers &&
-                   cap.stats.deep_faces == 6 && base->stats.deep_faces == want_faces
+           d == 0 && cap.stats.translucent.deep_layers >= base->stats.translucent.deep_layers &&
+                   cap.stats.translucent.deep_faces == 6 && base->stats.translucent.deep_faces == want_faces
                ? "PASS"
                : "FAIL",
            name,
            "every layer peeled: visibility and beauty differ on %ld pixels (must be 0); layers "
            "peeled in the visibility frame %u with the early stop, %u without; faces %u with "
-           "it (want %u), %u without (want 6)", d, base->stats.deep_layers,
-           cap.stats.deep_layers, base->stats.deep_faces, want_faces, cap.stats.deep_faces);
+           "it (want %u), %u without (want 6)", d, base->stats.translucent.deep_layers,
+           cap.stats.translucent.deep_layers, base->stats.translucent.deep_faces, want_faces, cap.stats.translucent.deep_faces);
     capture_free(&cap);
 }
 
@@ -149,15 +149,15 @@ static void test_flag_stop(const deep_case *c, const capture *base, const char *
     if (deep_render(c, c->s, &o, &every, name)) {
         d = deep_differing(base, &query);
         report(c->r,
-               d == 0 && base->stats.deep_layers == query.stats.deep_layers &&
-                       base->stats.deep_layers < every.stats.deep_layers
+               d == 0 && base->stats.translucent.deep_layers == query.stats.translucent.deep_layers &&
+                       base->stats.translucent.deep_layers < every.stats.translucent.deep_layers
                    ? "PASS"
                    : "FAIL",
                name,
                "storage flag vs occlusion query: visibility and beauty differ on %ld pixels "
                "(must be 0); layers peeled %u with the flag, %u with the query (must be equal), "
-               "%u with every layer (must be more)", d, base->stats.deep_layers,
-               query.stats.deep_layers, every.stats.deep_layers);
+               "%u with every layer (must be more)", d, base->stats.translucent.deep_layers,
+               query.stats.translucent.deep_layers, every.stats.translucent.deep_layers);
         capture_free(&every);
     }
     capture_free(&query);
@@ -219,7 +219,7 @@ static void test_texture(const deep_case *c, const capture *cap, const char *nam
            good[1], n[1], MIN_CLASS);
 }
 
-/* deep_mono: the colour cases give grey 1 - a per pane: (0.5,0.25,0.25) ->
+/* translucent.deep_mono: the colour cases give grey 1 - a per pane: (0.5,0.25,0.25) ->
  * 0.5, (0.25,0.0625,0.0625) and (0.125,0.125,0.0625) -> 0.25. */
 static void test_mono(const deep_case *c, const char *name)
 {
@@ -249,7 +249,7 @@ static void test_mono(const deep_case *c, const char *name)
     for (k = 0; k < 3; k++)
         ok &= n[k] >= MIN_CLASS && good[k] >= T_MIN_MATCH * n[k];
     report(c->r, ok ? "PASS" : "FAIL", name,
-           "deep_mono: red %ld of %ld at 0.5, red + red %ld of %ld and red + green %ld of %ld at "
+           "translucent.deep_mono: red %ld of %ld at 0.5, red + red %ld of %ld and red + green %ld of %ld at "
            "0.25, within 2/255 (need >= %d a value, 99.5%%)", good[0], n[0], good[1], n[1],
            good[2], n[2], MIN_CLASS);
     capture_free(&cap);

@@ -107,11 +107,11 @@ static unsigned storage_used(const hostile_run *h)
     stin_frame_stats st = stin_query_frame_stats(h->ctx);
     const stin_caps *caps = stin_query_caps(h->ctx);
     unsigned used = 0;
-    if (st.deep_faces && (caps->present & STIN_CAP_BIT(STIN_CAP_COMPUTE)))
+    if (st.translucent.deep_faces && (caps->present & STIN_CAP_BIT(STIN_CAP_COMPUTE)))
         used |= 1u | 8u;
-    if (st.vdsm_csg_casts)
+    if (st.shadows.vdsm_csg_casts)
         used |= 7u | 8u;
-    if (st.vdsm_atomic_receivers)
+    if (st.shadows.vdsm_atomic_receivers)
         used |= 1u | 8u;
     return used;
 }

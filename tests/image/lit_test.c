@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Lit programs specialised to a pass's lights and a draw's material
  * (src/render/lit_specialise.c) against the general program
- * (STIN_DEBUG_LIT_GENERAL), on the scenes whose lights and materials take
+ * (STIN_DEBUG_LIGHTING_GENERAL), on the scenes whose lights and materials take
  * every part of the equation: four-lights (point lights with and without
  * attenuation, a spot and a directional light in one batch), stone-wall
  * (an albedo map on a normal-mapped wall under a spot), deep-window (an
@@ -40,7 +40,7 @@ static int wanted(const char *path)
 }
 
 /* Two frames of the scene; 0 with err set when it did not render. */
-static int render(run *r, const scene *s, stin_tier tier, stin_technique shadows, uint32_t flags,
+static int render(run *r, const scene *s, stin_tier tier, stin_technique shadows, uint64_t flags,
                   lit_frame *out, char *err, size_t err_size)
 {
     test_context t;
@@ -110,7 +110,7 @@ static void test_one(run *r, stin_tier tier, const scene *s, const char *scene_n
         free(spec.rgba);
         return;
     }
-    if (!render(r, s, tier, shadows, STIN_DEBUG_LIT_GENERAL, &gen, err, sizeof err)) {
+    if (!render(r, s, tier, shadows, STIN_DEBUG_LIGHTING_GENERAL, &gen, err, sizeof err)) {
         report(r, "FAIL", name, "general: %s", err);
         free(spec.rgba);
         free(gen.rgba);
@@ -118,24 +118,24 @@ static void test_one(run *r, stin_tier tier, const scene *s, const char *scene_n
     }
     moved = differing(r, spec.rgba, gen.rgba, 0, &max);
     over = differing(r, spec.rgba, gen.rgba, TOLERANCE, &max);
-    if (!spec.stats[0].lit_specialised || !spec.stats[0].lit_programs_built)
+    if (!spec.stats[0].lighting.specialised || !spec.stats[0].lighting.programs_built)
         report(r, "FAIL", name,
                "no specialised program served the first frame (%u draws, %u built)",
-               spec.stats[0].lit_specialised, spec.stats[0].lit_programs_built);
-    else if (spec.stats[1].lit_programs_built ||
-             spec.stats[1].lit_specialised != spec.stats[0].lit_specialised || !spec.same)
+               spec.stats[0].lighting.specialised, spec.stats[0].lighting.programs_built);
+    else if (spec.stats[1].lighting.programs_built ||
+             spec.stats[1].lighting.specialised != spec.stats[0].lighting.specialised || !spec.same)
         report(r, "FAIL", name,
                "the second frame built %u programs, served %u draws (first %u), same pixels %d",
-               spec.stats[1].lit_programs_built, spec.stats[1].lit_specialised,
-               spec.stats[0].lit_specialised, spec.same);
-    else if (gen.stats[0].lit_specialised || gen.stats[0].lit_programs_built)
-        report(r, "FAIL", name, "STIN_DEBUG_LIT_GENERAL still served %u draws specialised",
-               gen.stats[0].lit_specialised);
+               spec.stats[1].lighting.programs_built, spec.stats[1].lighting.specialised,
+               spec.stats[0].lighting.specialised, spec.same);
+    else if (gen.stats[0].lighting.specialised || gen.stats[0].lighting.programs_built)
+        report(r, "FAIL", name, "STIN_DEBUG_LIGHTING_GENERAL still served %u draws specialised",
+               gen.stats[0].lighting.specialised);
     else
         report(r, over ? "FAIL" : "PASS", name,
                "%u programs served %u lit draws; against the general program %ld pixels over "
                "%d codes (largest %d), %ld moved at all",
-               spec.stats[0].lit_programs_built, spec.stats[0].lit_specialised, over, TOLERANCE,
+               spec.stats[0].lighting.programs_built, spec.stats[0].lighting.specialised, over, TOLERANCE,
                max, moved);
     free(spec.rgba);
     free(gen.rgba);

@@ -137,7 +137,7 @@ static int render(const map_case *c, stin_technique t, uint32_t size, int no_off
  * asked: bounded outside its texel band, named by that size. */
 static void no_fbo_bound(const map_case *c, stin_technique t, const capture *cap)
 {
-    uint32_t size = cap->stats.shadow_map_size;
+    uint32_t size = cap->stats.shadows.map_size;
     int band = (int)ceil(2048.0 / size / 4.0);
     map_counts all, out;
     double f_all, f, shadowed;
@@ -187,7 +187,7 @@ static void one_path(map_case *c, stin_technique t, uint64_t caps, double bound)
             return;
         }
         f = mismatch(c, &cap, 0, 0.0, &n);
-        drawn_in_frame = cap.stats.shadow_map_size < sizes[i];
+        drawn_in_frame = cap.stats.shadows.map_size < sizes[i];
         if (cap.counters.gl_violations || cap.counters.gl_errors || cap.log_errors)
             report(c->r, "FAIL", name, "%u profile violations, %u GL errors (last log: %s)",
                    cap.counters.gl_violations, cap.counters.gl_errors, cap.last_error);
@@ -196,7 +196,7 @@ static void one_path(map_case *c, stin_technique t, uint64_t caps, double bound)
         else if (sizes[i] != 2048)
             printf("INFO %s/%s/%s: visibility differs on %.3f%% of %ld reachable pixels with a "
                    "%ux%u map\n", c->r->platform_name, c->r->profile_name, name, 100.0 * f,
-                   n.compared, cap.stats.shadow_map_size, cap.stats.shadow_map_size);
+                   n.compared, cap.stats.shadows.map_size, cap.stats.shadows.map_size);
         else
             report(c->r, f <= bound ? "PASS" : "FAIL", name,
                    "visibility differs on %.3f%% of %ld reachable pixels (at most %.0f%%)",

@@ -173,8 +173,8 @@ static void sides(model_case *c, stin_tier tier, stin_technique t)
         capture_free(&cap);
         return;
     }
-    band = (int)ceil(2048.0 / (cap.stats.shadow_map_size ? cap.stats.shadow_map_size : 2048u) / 4.0);
-    bound = cap.stats.shadow_map_size < 2048u ? SIDES_MAX_MISMATCH_IN_FRAME : SIDES_MAX_MISMATCH;
+    band = (int)ceil(2048.0 / (cap.stats.shadows.map_size ? cap.stats.shadows.map_size : 2048u) / 4.0);
+    bound = cap.stats.shadows.map_size < 2048u ? SIDES_MAX_MISMATCH_IN_FRAME : SIDES_MAX_MISMATCH;
     for (y = 0; y < c->r->height; y++)
         for (x = 0; x < c->r->width; x++) {
             const ref_hit *hit = &c->hits[(size_t)y * c->r->width + x];
@@ -202,7 +202,7 @@ static void sides(model_case *c, stin_tier tier, stin_technique t)
            "%ux%u map: visibility differs on %ld of %ld pixels, %.3f%% (at most %.2f%%; %ld of "
            "them lit where the reference is shadowed), sides turned from the light included; left "
            "out: %ld within %d pixel(s) of a shadow edge on their object, %ld lit at |cos| under "
-           "%.1f", cap.stats.shadow_map_size, cap.stats.shadow_map_size, differ, compared,
+           "%.1f", cap.stats.shadows.map_size, cap.stats.shadows.map_size, differ, compared,
            compared ? 100.0 * differ / compared : 0.0, 100.0 * bound, lit_wrong, edge,
            band, grazing, SIDES_MIN_COS);
     capture_free(&cap);

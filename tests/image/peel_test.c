@@ -21,11 +21,11 @@
  *                   and cross (intersecting);
  *   order           depth-peel: the objects drawn in reverse order give a
  *                   bit-identical image;
- *   early-stop      depth-peel with transparency_layers 64 gives the image
+ *   early-stop      depth-peel with transparency.layers 64 gives the image
  *                   of the default cap, bit for bit, in (the scene's layer
  *                   count + 1) passes; STIN_DEBUG_PEEL_NO_EARLY_STOP gives
  *                   it too, in 64 passes;
- *   cap             depth-peel with transparency_layers 1 differs from the
+ *   cap             depth-peel with transparency.layers 1 differs from the
  *                   full composite (the cap is honoured);
  *   shadowed-T      depth-peel under shadows technique T (volume, map-pcf
  *                   where the profile runs them): the beauty within 3/255 of
@@ -33,7 +33,7 @@
  *                   visibility) on >= 99.5% of the compared pixels (band 2:
  *                   map-pcf's filtered edges), both as a whole and as the
  *                   reference's layers (C, T) over the frame's own opaque
- *                   image (STIN_DEBUG_PEEL_OPAQUE_ONLY: the layers' part
+ *                   image (STIN_DEBUG_TRANSPARENCY_OPAQUE_ONLY: the layers' part
  *                   alone), with >= 50 compared pixels whose nearest surface
  *                   is a transparent one in shadow: panes receive shadows
  *                   (>= 100 compared pixels: shadow edges take more away).
@@ -64,7 +64,7 @@
  *                        way; only the composite's order of operations
  *                        differs, both in half floats, one 8-bit rounding);
  *   dual-peel-passes-n   (panes, n = 1..4 copies of a pane stacked 0.3
- *                        apart) n layers (depth-peel's peel_layers) lit by
+ *                        apart) n layers (depth-peel's transparency.peel_layers) lit by
  *                        dual-peel in n / 2 + 1 passes, and -agrees-n.
  * On GL2 and GL1 the dual-peel tests SKIP (GL4 only).
  */
@@ -85,7 +85,7 @@
 #define MIN_SEEN_THROUGH 200
 #define MIN_SHADOWED_PANE 50
 #define MIN_SHADOWED_COMPARED 100 /* shadow edges (band 2) leave fewer pixels */
-#define HIGH_CAP 64 /* desc.transparency_layers at most */
+#define HIGH_CAP 64 /* desc.transparency.layers at most */
 
 typedef struct peel_case {
     run *r;
@@ -98,7 +98,8 @@ typedef struct peel_case {
 
 typedef struct frame_opts {
     stin_technique shadows, transparency;
-    uint32_t layers, debug_flags;
+    uint32_t layers;
+    uint64_t debug_flags;
     stin_technique translucent; /* NONE: translucent-solid */
 } frame_opts;
 
@@ -145,7 +146,7 @@ static int render(const peel_case *c, const scene *s, const frame_opts *fo, fram
     d.techniques[STIN_FEATURE_TRANSPARENCY] = fo->transparency;
     d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] =
         fo->translucent != STIN_TECH_NONE ? fo->translucent : STIN_TECH_TRANSLUCENT_SOLID;
-    d.transparency_layers = fo->layers;
+    d.transparency.layers = fo->layers;
     d.debug_flags = fo->debug_flags;
     scene_gpu_size_desc(s, &d);
     size = stin_memory_size(&d);
@@ -354,7 +355,7 @@ static void test_beauty(const peel_case *c, const frame_out *f, const composite_
 {
     match m;
     stin_technique t = f->choice[STIN_FEATURE_TRANSPARENCY].technique;
-    int peeled = t == STIN_TECH_TRANSPARENCY_PEEL || t == STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+    int peeled = t == STIN_TECH_TRANSPARENCY_DEPTH_PEEL || t == STIN_TECH_TRANSPARENCY_DUAL_PEEL;
     int exact_expected = peeled || !strcmp(c->scene_name, "panes");
     /* the peels' alpha too; sorted's is GL 1.1 blending's (a a + (1 - a) alpha) */
     compare(c, f, ref, NULL, 1, peeled, &m);
@@ -429,17 +430,17 @@ static void test_early_stop(const peel_case *c, stin_technique t, const frame_ou
     d1 = differing(c, base, &high);
     d2 = differing(c, base, &all);
     report(c->r,
-           d1 == 0 && d2 == 0 && high.stats.peel_passes == want &&
-                   high.stats.peel_layers == (uint32_t)ref->max_layers &&
-                   all.stats.peel_passes == want_all
+           d1 == 0 && d2 == 0 && high.stats.transparency.peel_passes == want &&
+                   high.stats.transparency.peel_layers == (uint32_t)ref->max_layers &&
+                   all.stats.transparency.peel_passes == want_all
                ? "PASS"
                : "FAIL",
            name,
            "%s, cap %d: %u passes, %u layers lit (the scene has %d: want %u passes and as many "
            "layers); without early stop %u passes (want %u); images differ from the default "
            "cap's on %ld and %ld pixels (must be 0)", stin_technique_name(t), HIGH_CAP,
-           high.stats.peel_passes, high.stats.peel_layers, ref->max_layers, want,
-           all.stats.peel_passes, want_all, d1, d2);
+           high.stats.transparency.peel_passes, high.stats.transparency.peel_layers, ref->max_layers, want,
+           all.stats.transparency.peel_passes, want_all, d1, d2);
     free(high.rgba);
     free(all.rgba);
 }
@@ -457,16 +458,16 @@ static void test_cap(const peel_case *c, stin_technique t, const composite_ref *
         return;
     }
     compare(c, &f, ref, NULL, 1, 0, &m);
-    report(c->r, f.stats.peel_passes == 1 && ref->max_layers > 1 && !matches(&m) ? "PASS" : "FAIL",
-           name, "%s, transparency_layers 1: %u pass, composite matched on only %ld of %ld "
+    report(c->r, f.stats.transparency.peel_passes == 1 && ref->max_layers > 1 && !matches(&m) ? "PASS" : "FAIL",
+           name, "%s, transparency.layers 1: %u pass, composite matched on only %ld of %ld "
            "pixels (the scene has %d layers: one layer must not be the whole composite)",
-           stin_technique_name(t), f.stats.peel_passes, m.compared - m.over, m.compared, ref->max_layers);
+           stin_technique_name(t), f.stats.transparency.peel_passes, m.compared - m.over, m.compared, ref->max_layers);
     free(f.rgba);
 }
 
 /* The shadowed frame of transparency technique `transparency` against ref:
  * its transparent part over the technique's own opaque image
- * (STIN_DEBUG_PEEL_OPAQUE_ONLY) and as a whole; 1 when both match with
+ * (STIN_DEBUG_TRANSPARENCY_OPAQUE_ONLY) and as a whole; 1 when both match with
  * enough pixels of a pane in shadow. */
 typedef struct shadowed_run {
     match part, whole;
@@ -480,7 +481,7 @@ static void shadowed_frame(const peel_case *c, const frame_opts *base, const com
     frame_opts fo = *base;
     frame_out f, behind;
     memset(out, 0, sizeof *out);
-    fo.debug_flags = base->debug_flags | STIN_DEBUG_PEEL_OPAQUE_ONLY; /* what the layers go over */
+    fo.debug_flags = base->debug_flags | STIN_DEBUG_TRANSPARENCY_OPAQUE_ONLY; /* what the layers go over */
     if (!render(c, c->s, &fo, &behind, out->err, sizeof out->err))
         return;
     fo.debug_flags = base->debug_flags;
@@ -527,7 +528,7 @@ static double percent(const match *m)
  * fail, reported as name-broken. */
 static void test_shadowed_need(const peel_case *c, stin_technique shadows,
                                stin_technique translucent, stin_technique transparency,
-                               uint32_t broken, double need, const composite_ref *ref,
+                               uint64_t broken, double need, const composite_ref *ref,
                                const char *name)
 {
     frame_opts fo = {STIN_TECH_NONE, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
@@ -571,7 +572,7 @@ static void test_shadowed_need(const peel_case *c, stin_technique shadows,
 }
 
 static void test_shadowed(const peel_case *c, stin_technique shadows, stin_technique translucent,
-                          stin_technique transparency, uint32_t broken, const composite_ref *ref,
+                          stin_technique transparency, uint64_t broken, const composite_ref *ref,
                           const char *name)
 {
     test_shadowed_need(c, shadows, translucent, transparency, broken, MIN_MATCH, ref, name);
@@ -681,12 +682,12 @@ static int stacked(const scene *s, int n, scene *out)
 }
 
 /* dual-peel's passes on 1 to 4 stacked panes: N layers (depth-peel's
- * peel_layers) in N / 2 + 1 passes, with depth-peel's image within 1/255. */
+ * transparency.peel_layers) in N / 2 + 1 passes, with depth-peel's image within 1/255. */
 static void test_stacks(const peel_case *c, const char *prefix)
 {
     int n;
     for (n = 1; n <= 4; n++) {
-        frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_PEEL, 0, 0,
+        frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_TRANSPARENCY_DEPTH_PEEL, 0, 0,
                          STIN_TECH_NONE};
         frame_out depth, dual;
         peel_case sc = *c;
@@ -706,17 +707,17 @@ static void test_stacks(const peel_case *c, const char *prefix)
             if (!render(&sc, &s, &fo, &dual, err, sizeof err)) {
                 report(c->r, "FAIL", name, "dual-peel: %s", err);
             } else {
-                uint32_t layers = depth.stats.peel_layers;
+                uint32_t layers = depth.stats.transparency.peel_layers;
                 report(c->r,
-                       layers == (uint32_t)n && dual.stats.peel_layers == layers &&
-                               dual.stats.peel_passes == layers / 2 + 1
+                       layers == (uint32_t)n && dual.stats.transparency.peel_layers == layers &&
+                               dual.stats.transparency.peel_passes == layers / 2 + 1
                            ? "PASS"
                            : "FAIL",
                        name,
                        "%d stacked panes: %u layers (depth-peel), dual-peel %u layers in %u "
                        "passes (want %d and %u), depth-peel %u passes",
-                       n, layers, dual.stats.peel_layers, dual.stats.peel_passes, n,
-                       layers / 2 + 1, depth.stats.peel_passes);
+                       n, layers, dual.stats.transparency.peel_layers, dual.stats.transparency.peel_passes, n,
+                       layers / 2 + 1, depth.stats.transparency.peel_passes);
                 snprintf(name, sizeof name, "%s-agrees-%d", prefix, n);
                 test_agrees(&sc, &dual, &depth, name);
                 free(dual.rgba);
@@ -736,7 +737,7 @@ static void panes_tests(peel_case *c, stin_tier tier, composite_ref *shadowed)
 {
     static const stin_technique shadows[] = {STIN_TECH_SHADOWS_VOLUME,
                                              STIN_TECH_SHADOWS_MAP_PCF};
-    static const stin_technique peels[2] = {STIN_TECH_TRANSPARENCY_PEEL,
+    static const stin_technique peels[2] = {STIN_TECH_TRANSPARENCY_DEPTH_PEEL,
                                             STIN_TECH_TRANSPARENCY_DUAL_PEEL};
     static const char *const prefix[2] = {"peel", "dual-peel"};
     const char *tn = stin_tier_name(tier);
@@ -792,7 +793,7 @@ static void peel_scene(run *r, stin_tier tier, const char *path, const char *sce
     peel_case c;
     composite_ref unshadowed, shadowed;
     frame_opts fo = {STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, 0, 0, STIN_TECH_NONE};
-    static const stin_technique peels[2] = {STIN_TECH_TRANSPARENCY_PEEL,
+    static const stin_technique peels[2] = {STIN_TECH_TRANSPARENCY_DEPTH_PEEL,
                                             STIN_TECH_TRANSPARENCY_DUAL_PEEL};
     frame_out base, layered[2];
     char err[512], name[192];

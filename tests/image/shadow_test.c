@@ -220,7 +220,7 @@ static long differing(const shadow_case *c, const image *a, const image *b, int 
     return n;
 }
 
-static int render(const shadow_case *c, const scene *s, uint32_t debug, uint64_t mask, capture *out,
+static int render(const shadow_case *c, const scene *s, uint64_t debug, uint64_t mask, capture *out,
                   const char *test)
 {
     capture_options o;
@@ -247,7 +247,7 @@ static void test_zpass_zfail(const shadow_case *c, const capture *chosen)
     double max_diff;
     long n;
     name_of(c, "zpass-zfail", name, sizeof name);
-    if (!chosen->stats.zpass_casters) {
+    if (!chosen->stats.shadows.zpass_casters) {
         report(c->r, "SKIP", name, "every caster needs z-fail here (its volume may reach the near "
                                    "plane)");
         return;
@@ -257,8 +257,8 @@ static void test_zpass_zfail(const shadow_case *c, const capture *chosen)
     n = differing(c, &chosen->img, &b.img, AOV_VIS_R, 3, 0.0, &max_diff);
     report(c->r, n == 0 ? "PASS" : "FAIL", name,
            "with %u of %u casters counted by z-pass, visibility differs from all-z-fail on %ld "
-           "light-facing opaque pixels (max %.4f; must be 0)", chosen->stats.zpass_casters,
-           chosen->stats.zpass_casters + chosen->stats.zfail_casters, n, max_diff);
+           "light-facing opaque pixels (max %.4f; must be 0)", chosen->stats.shadows.zpass_casters,
+           chosen->stats.shadows.zpass_casters + chosen->stats.shadows.zfail_casters, n, max_diff);
     capture_free(&b);
 }
 
@@ -320,7 +320,7 @@ static void test_gpu_extrusion(const shadow_case *c, const capture *gpu)
     long compared = 0, n, gpu_wrong, cpu_wrong;
     int x, y;
     name_of(c, "gpu-extrusion", name, sizeof name);
-    if (!gpu->stats.shadow_volume_gpu_casters) {
+    if (!gpu->stats.shadows.volume_gpu_casters) {
         if (c->tier == STIN_TIER_GL4 && (gpu->caps_present & STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER)))
             report(c->r, "FAIL", name, "tier gl4 with geometry shaders built every volume on the CPU");
         else
@@ -341,8 +341,8 @@ static void test_gpu_extrusion(const shadow_case *c, const capture *gpu)
         }
     n = vis_disagreements(c, &gpu->img, &cpu.img, &gpu_wrong, &cpu_wrong);
     report(c->r,
-           !cpu.stats.shadow_volume_gpu_casters &&
-                   counted.stats.shadow_volume_triangles == cpu.stats.shadow_volume_triangles &&
+           !cpu.stats.shadows.volume_gpu_casters &&
+                   counted.stats.shadows.volume_triangles == cpu.stats.shadows.volume_triangles &&
                    n * 2000 <= compared && gpu_wrong <= cpu_wrong
                ? "PASS"
                : "FAIL",
@@ -351,8 +351,8 @@ static void test_gpu_extrusion(const shadow_case *c, const capture *gpu)
            "builds %u (must be equal); visibility differs from the CPU-built frame on %ld of %ld "
            "light-facing opaque pixels (at most 0.05%%), wrong against the reference on %ld of "
            "them, the CPU's on %ld (may not be fewer)",
-           gpu->stats.shadow_volume_gpu_casters, counted.stats.shadow_volume_triangles,
-           cpu.stats.shadow_volume_triangles, n, compared, gpu_wrong, cpu_wrong);
+           gpu->stats.shadows.volume_gpu_casters, counted.stats.shadows.volume_triangles,
+           cpu.stats.shadows.volume_triangles, n, compared, gpu_wrong, cpu_wrong);
     capture_free(&cpu);
     capture_free(&counted);
 }

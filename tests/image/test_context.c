@@ -21,7 +21,7 @@ int test_context_create(test_context *t, const run *r, const scene *s, stin_tier
 }
 
 int test_context_create_debug(test_context *t, const run *r, const scene *s, stin_tier tier,
-                              stin_technique shadows, int exact, uint32_t debug_flags)
+                              stin_technique shadows, int exact, uint64_t debug_flags)
 {
     stin_desc d;
     size_t size;

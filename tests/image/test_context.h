@@ -25,7 +25,7 @@ int test_context_create(test_context *t, const run *r, const scene *s, stin_tier
                         stin_technique shadows, int exact);
 /* The same with desc.debug_flags (STIN_DEBUG_*). */
 int test_context_create_debug(test_context *t, const run *r, const scene *s, stin_tier tier,
-                              stin_technique shadows, int exact, uint32_t debug_flags);
+                              stin_technique shadows, int exact, uint64_t debug_flags);
 void test_context_destroy(test_context *t);
 
 /* The scene camera's frame into the platform's framebuffer at the run's

@@ -189,7 +189,7 @@ long vdsm_mismatches(const vdsm_case *c, const capture *cap, long *compared, lon
 }
 
 
-int vdsm_render_sized(const vdsm_case *c, uint32_t debug, uint32_t map_size, capture *out,
+int vdsm_render_sized(const vdsm_case *c, uint64_t debug, uint32_t map_size, capture *out,
                         const char *test)
 {
     capture_options o;
@@ -207,7 +207,7 @@ int vdsm_render_sized(const vdsm_case *c, uint32_t debug, uint32_t map_size, cap
     return 0;
 }
 
-int vdsm_render(const vdsm_case *c, uint32_t debug, capture *out, const char *test)
+int vdsm_render(const vdsm_case *c, uint64_t debug, capture *out, const char *test)
 {
     return vdsm_render_sized(c, debug, 0, out, test);
 }

@@ -51,9 +51,9 @@ long vdsm_mismatches(const vdsm_case *c, const capture *cap, long *compared, lon
                      long *isolated, long *on_edge);
 /* The vdsm render with these debug flags (and pyramid size; 0 default); 0
  * and a FAIL under `test` when it fails. */
-int vdsm_render_sized(const vdsm_case *c, uint32_t debug, uint32_t map_size, capture *out,
+int vdsm_render_sized(const vdsm_case *c, uint64_t debug, uint32_t map_size, capture *out,
                       const char *test);
-int vdsm_render(const vdsm_case *c, uint32_t debug, capture *out, const char *test);
+int vdsm_render(const vdsm_case *c, uint64_t debug, capture *out, const char *test);
 /* The reference of a case: 0 (reported under `test`) when it cannot be
  * made; close it either way. */
 int vdsm_case_open(vdsm_case *c, run *r, const scene *s, const char *scene_name,

@@ -159,15 +159,15 @@ static void test_ring(run *r)
         unsigned ep_count = 0;
         capture ep;
         if (vdsm_render(&c, SET_EP, &ep, "ep-halves")) {
-            ep_count = ep.stats.vdsm_primitives;
+            ep_count = ep.stats.shadows.vdsm_primitives;
             capture_free(&ep);
         }
         vdsm_name(&c, "ep-halves", name, sizeof name);
         {
-            double f = sp.stats.vdsm_primitives ? (double)ep_count / sp.stats.vdsm_primitives : 0;
+            double f = sp.stats.shadows.vdsm_primitives ? (double)ep_count / sp.stats.shadows.vdsm_primitives : 0;
             report(r, f >= EP_LOW && f <= EP_HIGH ? "PASS" : "FAIL", name,
                    "primitives emitted (P_c): SP %u, SP + EP %u, ratio %.3f (need %.2f..%.2f)",
-                   sp.stats.vdsm_primitives, ep_count, f, EP_LOW, EP_HIGH);
+                   sp.stats.shadows.vdsm_primitives, ep_count, f, EP_LOW, EP_HIGH);
         }
         capture_free(&sp);
     }

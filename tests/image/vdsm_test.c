@@ -163,16 +163,16 @@ static void test_chain(const vdsm_case *c, const capture *sp, const capture *ep,
     report(c->r, n1 + e1 + n2 + e2 == 0 ? "PASS" : "FAIL", name,
            "against SP + EP, + SM differs on %ld pixels and + SM + DC on %ld (must be 0); "
            "primitives emitted: SP %u, + EP %u, + SM %u, + DC %u", n1 + e1, n2 + e2,
-           sp->stats.vdsm_primitives, ep->stats.vdsm_primitives, sm->stats.vdsm_primitives,
-           all->stats.vdsm_primitives);
+           sp->stats.shadows.vdsm_primitives, ep->stats.shadows.vdsm_primitives, sm->stats.shadows.vdsm_primitives,
+           all->stats.shadows.vdsm_primitives);
 }
 
 static void test_culls(const vdsm_case *c, const capture *ep, const capture *sm,
                        const capture *all)
 {
     char name[256];
-    uint32_t p_ep = ep->stats.vdsm_primitives, p_sm = sm->stats.vdsm_primitives,
-             p_all = all->stats.vdsm_primitives;
+    uint32_t p_ep = ep->stats.shadows.vdsm_primitives, p_sm = sm->stats.shadows.vdsm_primitives,
+             p_all = all->stats.shadows.vdsm_primitives;
     vdsm_name(c, "culls", name, sizeof name);
     if (!p_ep) {
         report(c->r, "SKIP", name, "the context counted no primitives (no queries)");
@@ -195,7 +195,7 @@ static void test_map_size(const vdsm_case *c, const capture *all)
     report(c->r, n + edge == 0 ? "PASS" : "FAIL", name,
            "a %d-texel pyramid and the default one give masks differing on %ld pixels (must "
            "be 0); primitives emitted with each: %u and %u", SMALL_MAP, n + edge,
-           b.stats.vdsm_primitives, all->stats.vdsm_primitives);
+           b.stats.shadows.vdsm_primitives, all->stats.shadows.vdsm_primitives);
     capture_free(&b);
 }
 
@@ -226,14 +226,14 @@ static void test_cull_pass(const vdsm_case *c, const capture *all)
         return;
     o = &b.stats;
     n = differ(c, all, &b, &edge);
-    ok = n + edge == 0 && f->vdsm_cull_passes > 0 && o->vdsm_cull_passes == 0 &&
-         f->vdsm_primitives == o->vdsm_primitives && f->vdsm_kept_faces > 0 &&
-         f->vdsm_kept_faces <= 4 * f->triangles * f->vdsm_cull_passes;
+    ok = n + edge == 0 && f->shadows.vdsm_cull_passes > 0 && o->shadows.vdsm_cull_passes == 0 &&
+         f->shadows.vdsm_primitives == o->shadows.vdsm_primitives && f->shadows.vdsm_kept_faces > 0 &&
+         f->shadows.vdsm_kept_faces <= 4 * f->triangles * f->shadows.vdsm_cull_passes;
     report(c->r, ok ? "PASS" : "FAIL", name,
            "culled first and in one pass the masks differ on %ld pixels (must be 0); "
            "primitives emitted %u and %u (must be equal); %u culling passes kept %u "
-           "faces (the frame draws %u triangles)", n + edge, f->vdsm_primitives,
-           o->vdsm_primitives, f->vdsm_cull_passes, f->vdsm_kept_faces, f->triangles);
+           "faces (the frame draws %u triangles)", n + edge, f->shadows.vdsm_primitives,
+           o->shadows.vdsm_primitives, f->shadows.vdsm_cull_passes, f->shadows.vdsm_kept_faces, f->triangles);
     capture_free(&b);
 }
 

@@ -102,11 +102,11 @@ void reference_transmittance(const reference *r, const ref_hit *hit, int light, 
 void reference_transmittance_factor(const float color[3], float a, float inout[3]);
 
 /* Point samples an area light (radius > 0, point or spot) is split into, as
- * stin's desc.soft_shadow_samples (whose default this is): sample k of n is
+ * stin's desc.shadows.soft_samples (whose default this is): sample k of n is
  * stin_light_sample(light, k, n) with intensity / n. */
 #define REFERENCE_SOFT_SHADOW_SAMPLES 8
 /* Sets the sample count of r (clamped to [1, 64] like stin's); match the
- * stin_desc.soft_shadow_samples of the render under test. */
+ * stin_desc.shadows.soft_samples of the render under test. */
 void reference_set_soft_shadow_samples(reference *r, unsigned n);
 
 /* Visibility of light `light` as stin's shadow passes see it: for an area

@@ -263,7 +263,7 @@ static void add_mesh(const float *pos, uint32_t nv, const uint32_t *idx, uint32_
 /* A context on the fake profile with the tetrahedron and the quad; small
  * CSG capacities (8 primitives, 4 terms, 8 literals) unless `defaults`. */
 static stin_technique forced_csg = STIN_TECH_NONE; /* make_context's desc.techniques */
-static uint32_t debug_flags_;                       /* and desc.debug_flags */
+static uint64_t debug_flags_;                       /* and desc.debug_flags */
 
 static int sample_buffers_; /* the next contexts' framebuffers are multisampled */
 
@@ -283,9 +283,9 @@ static void make_context(fake_gl_profile_id id, uint64_t caps_mask, int defaults
     d.techniques[STIN_FEATURE_CSG] = forced_csg;
     d.debug_flags = debug_flags_;
     if (!defaults) {
-        d.max_csg_primitives = 8;
-        d.max_csg_terms = 4;
-        d.max_csg_literals = 8;
+        d.csg.max_primitives = 8;
+        d.csg.max_terms = 4;
+        d.csg.max_literals = 8;
     }
     bytes = stin_memory_size(&d);
     block = malloc(bytes);
@@ -315,7 +315,7 @@ static void begin(void)
 {
     stin_frame_desc fd;
     memset(&fd, 0, sizeof fd);
-    fd.no_clear = no_clear_;
+    fd.keep_contents = no_clear_;
     stin__mat4_identity(fd.view);
     stin__mat4_identity(fd.projection);
     fd.viewport[2] = 16;
@@ -359,9 +359,9 @@ static void refused(stin_csg_desc *d, stin_result r, stin_log_item item, const c
     assert_int_equal(stin_draw_csg(ctx, d), r);
     assert_int_equal(log_.items[item], 1);
     assert_true(fake_log_has(&log_, item, text));
-    assert_int_equal(stin_query_frame_stats(ctx).dropped_csg, before.dropped_csg + 1);
-    assert_int_equal(stin_query_frame_stats(ctx).csg_products, before.csg_products);
-    assert_int_equal(ctx->csg.primitive_count, before.csg_products ? 2u : 0u);
+    assert_int_equal(stin_query_frame_stats(ctx).csg.dropped, before.csg.dropped + 1);
+    assert_int_equal(stin_query_frame_stats(ctx).csg.products, before.csg.products);
+    assert_int_equal(ctx->csg.primitive_count, before.csg.products ? 2u : 0u);
 }
 
 static void test_draw_csg_accepts_and_reads_back(void **state)
@@ -378,15 +378,15 @@ static void test_draw_csg_accepts_and_reads_back(void **state)
     assert_int_equal(lits[1], NOT(1));
     assert_int_equal(stin_query_csg_terms(ctx, 1, 0, lits, 4, &count), 0);
     assert_int_equal(count, 0);
-    assert_int_equal(stin_query_frame_stats(ctx).csg_products, 1);
-    assert_int_equal(stin_query_frame_stats(ctx).csg_terms, 1);
+    assert_int_equal(stin_query_frame_stats(ctx).csg.products, 1);
+    assert_int_equal(stin_query_frame_stats(ctx).csg.terms, 1);
     /* the zero transform is the identity; the material got its defaults */
     assert_true(ctx->csg.primitives[0].transform[0] == 1.0f);
     assert_true(ctx->csg.primitives[0].material.color[3] == 1.0f);
     /* a - a is empty: accepted, nothing kept */
     nodes[2] = (stin_csg_node)S(0, 0);
     assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
-    assert_int_equal(stin_query_frame_stats(ctx).csg_products, 1);
+    assert_int_equal(stin_query_frame_stats(ctx).csg.products, 1);
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
     begin(); /* a new frame starts empty */
     assert_int_equal(stin_query_csg_terms(ctx, 0, 0, NULL, 0, NULL), 0);
@@ -440,7 +440,7 @@ static void test_draw_csg_refuses_bad_input(void **state)
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
 }
 
-/* max_csg_primitives 8, terms 4, literals 8 */
+/* csg.max_primitives 8, terms 4, literals 8 */
 static void test_draw_csg_capacities(void **state)
 {
     stin_csg_desc d = subtraction();
@@ -458,7 +458,7 @@ static void test_draw_csg_capacities(void **state)
     nodes[5] = (stin_csg_node)U(2, 3);
     nodes[6] = (stin_csg_node)I(4, 5);
     d.node_count = 7;
-    refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "max_csg_terms");
+    refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "csg.max_terms");
     /* 0 n 1 n 2 n 3 n (2 u 3): two terms of 4 literals, more than the 6 left */
     nodes[4] = (stin_csg_node)I(0, 1);
     nodes[5] = (stin_csg_node)I(2, 3);
@@ -470,14 +470,14 @@ static void test_draw_csg_capacities(void **state)
         all[8] = (stin_csg_node)I(7, 6); /* 0 1 2 3 (2 u 3): two terms of 4 */
         d.nodes = all;
         d.node_count = 9;
-        refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "max_csg_literals");
+        refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "csg.max_literals");
         d.nodes = nodes;
     }
     /* 7 primitives: more than the 6 left */
     d = subtraction();
     prims[2] = prims[3] = prims[4] = prims[5] = prims[6] = prims[0];
     d.primitive_count = 7;
-    refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "max_csg_primitives");
+    refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "csg.max_primitives");
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
 }
 
@@ -488,19 +488,19 @@ static void test_memory_counts_the_capacities(void **state)
     (void)state;
     base = stin_memory_size(&d);
     more = d;
-    more.max_csg_literals = 4096u + 1000u;
+    more.csg.max_literals = 4096u + 1000u;
     assert_true(stin_memory_size(&more) >= base + 3u * 4u * 1000u); /* store + scratch */
     more = d;
-    more.max_csg_primitives = 256u + 100u;
+    more.csg.max_primitives = 256u + 100u;
     assert_true(stin_memory_size(&more) >= base + 100u * sizeof(stin__draw));
-    more.max_csg_terms = 1u << 24;
+    more.csg.max_terms = 1u << 24;
     assert_int_equal(stin_memory_size(&more), 0);
-    assert_int_equal(stin_query_desc(ctx).max_csg_primitives, 8);
+    assert_int_equal(stin_query_desc(ctx).csg.max_primitives, 8);
     d = fake_gl_desc(NULL);
     d = stin__desc_defaults(&d);
-    assert_int_equal(d.max_csg_primitives, 256);
-    assert_int_equal(d.max_csg_terms, 256);
-    assert_int_equal(d.max_csg_literals, 4096);
+    assert_int_equal(d.csg.max_primitives, 256);
+    assert_int_equal(d.csg.max_terms, 256);
+    assert_int_equal(d.csg.max_literals, 4096);
 }
 
 static void recreate(fake_gl_profile_id id, uint64_t caps_mask)
@@ -519,7 +519,7 @@ static void one_frame(void)
 }
 
 /* one_frame on a fresh 3.3 core context made with debug flags `flags` */
-static void flagged_frame(unsigned flags)
+static void flagged_frame(uint64_t flags)
 {
     debug_flags_ = flags;
     recreate(FAKE_GL33_CORE, 0);
@@ -542,7 +542,7 @@ static void test_frames_with_a_product(void **state)
     recreate(FAKE_GL11, 0);
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_SCS);
     one_frame();
-    assert_int_equal(ctx->stats.csg_scs_products, 1);
+    assert_int_equal(ctx->stats.csg.scs_products, 1);
     assert_true(ctx->csg.resolved);
     assert_int_equal(ctx->csg.face_count, 2); /* 0's front faces, 1's back faces */
     assert_true(fake_gl.calls[STIN_GLFN_ReadPixels] >= 2);
@@ -552,14 +552,14 @@ static void test_frames_with_a_product(void **state)
     recreate(FAKE_GL33_CORE, 0);
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_SCS);
     one_frame();
-    assert_int_equal(ctx->stats.csg_scs_products, 1);
+    assert_int_equal(ctx->stats.csg.scs_products, 1);
     assert_true(ctx->csg.resolved);
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
-    assert_true(ctx->stats.csg_gpu_bytes > 0);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
+    assert_true(ctx->stats.csg.gpu_bytes > 0);
     /* none: one subtracted primitive takes one run, with no check after
      * it; no depth, no clip count */
     assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 0);
-    assert_int_equal(ctx->stats.csg_scs_runs, 1);
+    assert_int_equal(ctx->stats.csg.scs_runs, 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 0);
 
     flagged_frame(STIN_DEBUG_STAGE_TIMES); /* the resolve timed as its own stage */
@@ -569,8 +569,8 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(ctx->times.stage[3], STIN_STAGE_BASE);
 
     flagged_frame(STIN_DEBUG_CSG_READBACK);
-    assert_int_equal(ctx->stats.csg_scs_products, 1);
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 0);
+    assert_int_equal(ctx->stats.csg.scs_products, 1);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 0);
     assert_true(fake_gl.calls[STIN_GLFN_ReadPixels] >= 2); /* depth, clip count */
     assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 1);
 
@@ -580,9 +580,9 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique,
                      STIN_TECH_CSG_INTERVAL);
     one_frame();
-    assert_int_equal(ctx->stats.csg_interval_products, 1);
-    assert_true(ctx->stats.csg_interval_bytes > 0);
-    assert_int_equal(ctx->stats.csg_scs_products, 0);
+    assert_int_equal(ctx->stats.csg.interval_products, 1);
+    assert_true(ctx->stats.csg.interval_bytes > 0);
+    assert_int_equal(ctx->stats.csg.scs_products, 0);
     assert_true(ctx->csg.resolved);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 1); /* the walk */
@@ -611,10 +611,10 @@ static void test_scs_in_place(void **state)
     (void)state;
     recreate(FAKE_GL33_CORE, 0);
     one_frame();
-    assert_int_equal(ctx->stats.csg_in_place, 1);
-    assert_int_equal(ctx->stats.csg_direct, 0);
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
-    assert_int_equal(ctx->stats.csg_scs_products, 1);
+    assert_int_equal(ctx->stats.csg.in_place, 1);
+    assert_int_equal(ctx->stats.csg.direct, 0);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg.scs_products, 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 0);
     assert_int_equal(fake_gl.draws_into_default, /* every draw into the frame */
@@ -624,9 +624,9 @@ static void test_scs_in_place(void **state)
     assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 1);
 
     flagged_frame(STIN_DEBUG_CSG_NO_IN_PLACE);
-    assert_int_equal(ctx->stats.csg_in_place, 0);
-    assert_int_equal(ctx->stats.csg_direct, 0);
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg.in_place, 0);
+    assert_int_equal(ctx->stats.csg.direct, 0);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
     assert_true(fake_gl.draws_into_default <
                 fake_gl.calls[STIN_GLFN_DrawElements] + fake_gl.calls[STIN_GLFN_DrawArrays]);
 
@@ -634,17 +634,17 @@ static void test_scs_in_place(void **state)
     no_clear_ = 1;
     one_frame();
     no_clear_ = 0;
-    assert_int_equal(ctx->stats.csg_in_place, 0);
-    assert_int_equal(ctx->stats.csg_direct, 1); /* it draws into the frame's depth only */
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg.in_place, 0);
+    assert_int_equal(ctx->stats.csg.direct, 1); /* it draws into the frame's depth only */
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
 
     sample_buffers_ = 1; /* probed with the framebuffer's bits, not every frame */
     recreate(FAKE_GL33_CORE, 0);
     sample_buffers_ = 0;
     one_frame();
-    assert_int_equal(ctx->stats.csg_in_place, 0);
-    assert_int_equal(ctx->stats.csg_direct, 0);
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg.in_place, 0);
+    assert_int_equal(ctx->stats.csg.direct, 0);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
 
     recreate(FAKE_GL33_CORE, 0);
     d = subtraction(); /* the new context's mesh */
@@ -652,9 +652,9 @@ static void test_scs_in_place(void **state)
     assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
     assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
-    assert_int_equal(ctx->stats.csg_scs_products, 2);
-    assert_int_equal(ctx->stats.csg_in_place, 0);
-    assert_int_equal(ctx->stats.csg_direct, 1);
+    assert_int_equal(ctx->stats.csg.scs_products, 2);
+    assert_int_equal(ctx->stats.csg.in_place, 0);
+    assert_int_equal(ctx->stats.csg.direct, 1);
 }
 
 /* A big tetrahedron minus three small ones, each of those moved by `step`
@@ -690,7 +690,7 @@ static unsigned clears_of(float step)
     begin();
     assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
-    assert_int_equal(ctx->stats.csg_terms, 1);
+    assert_int_equal(ctx->stats.csg.terms, 1);
     return fake_gl.calls[STIN_GLFN_Clear];
 }
 
@@ -703,15 +703,15 @@ static void test_goldfeather_groups_apart_candidates(void **state)
     unsigned apart, stacked;
     (void)state;
     apart = clears_of(0.5f);
-    assert_int_equal(ctx->stats.csg_grouped, 3);
+    assert_int_equal(ctx->stats.csg.grouped, 3);
     stacked = clears_of(0.0f);
-    assert_int_equal(ctx->stats.csg_grouped, 0);
+    assert_int_equal(ctx->stats.csg.grouped, 0);
     assert_int_equal(apart + 4u, stacked);
 }
 
 /* A second frame on a context made with forced_csg and `flags`, counting
  * the draws into the GPU resolve's result framebuffer (made in the first). */
-static void watched_frame(unsigned flags)
+static void watched_frame(uint64_t flags)
 {
     flagged_frame(flags);
     fake_gl.watched_framebuffer = ctx->csg.merge.fbo[STIN__CSG_MERGE_RESULT];
@@ -732,10 +732,10 @@ static void test_direct(void **state)
     (void)state;
     forced_csg = STIN_TECH_CSG_GOLDFEATHER;
     watched_frame(0);
-    assert_int_equal(ctx->stats.csg_direct, 1);
-    assert_int_equal(ctx->stats.csg_in_place, 0);
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
-    assert_int_equal(ctx->stats.csg_scs_products, 0);
+    assert_int_equal(ctx->stats.csg.direct, 1);
+    assert_int_equal(ctx->stats.csg.in_place, 0);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg.scs_products, 0);
     assert_int_equal(fake_gl.draws_into_watched, 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 0);
@@ -744,21 +744,21 @@ static void test_direct(void **state)
     assert_int_equal(fake_gl.calls[STIN_GLFN_CopyTexSubImage2D], 1);
 
     watched_frame(STIN_DEBUG_CSG_NO_IN_PLACE);
-    assert_int_equal(ctx->stats.csg_direct, 0);
-    assert_int_equal(ctx->stats.csg_gpu_resolves, 1);
+    assert_int_equal(ctx->stats.csg.direct, 0);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
     assert_true(fake_gl.draws_into_watched > 0); /* the merge quads */
 
     sample_buffers_ = 1;
     watched_frame(0);
     sample_buffers_ = 0;
-    assert_int_equal(ctx->stats.csg_direct, 0);
+    assert_int_equal(ctx->stats.csg.direct, 0);
     assert_true(fake_gl.draws_into_watched > 0);
 
     forced_csg = STIN_TECH_CSG_INTERVAL;
     flagged_frame(0);
     forced_csg = STIN_TECH_NONE;
-    assert_int_equal(ctx->stats.csg_interval_products, 1);
-    assert_int_equal(ctx->stats.csg_direct, 0);
+    assert_int_equal(ctx->stats.csg.interval_products, 1);
+    assert_int_equal(ctx->stats.csg.direct, 0);
 }
 
 /* A projection of fovy 90 (square) from near n to far f into ctx (view

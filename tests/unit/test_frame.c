@@ -21,7 +21,7 @@ static stin_context *ctx;
 static stin_mesh quad;
 static stin_technique shadows = STIN_TECH_SHADOWS_OFF; /* of the next context */
 static uint64_t caps_mask;
-static uint32_t debug_flags; /* of the next context */
+static uint64_t debug_flags; /* of the next context */
 static stin_technique translucent = STIN_TECH_NONE; /* forced translucent-shadows, if any */
 
 static const float quad_pos[] = {0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0};
@@ -427,17 +427,17 @@ static void test_lit_programs_specialised_once_and_kept(void **state)
         create_profile(profiles[p], 16, 8);
         made = fake_gl.programs_created;
         st = lit_frame(1, STIN_LIGHT_POINT, 0);
-        assert_int_equal(st.lit_programs_built, 1);
-        assert_int_equal(st.lit_specialised, 2);
+        assert_int_equal(st.lighting.programs_built, 1);
+        assert_int_equal(st.lighting.specialised, 2);
         assert_int_equal(fake_gl.programs_created, made + 1);
         st = lit_frame(1, STIN_LIGHT_POINT, 0); /* the same batch: kept */
-        assert_int_equal(st.lit_programs_built, 0);
-        assert_int_equal(st.lit_specialised, 2);
+        assert_int_equal(st.lighting.programs_built, 0);
+        assert_int_equal(st.lighting.specialised, 2);
         st = lit_frame(9, STIN_LIGHT_POINT, 0); /* batches of 8 (new) and 1 (kept) */
-        assert_int_equal(st.lit_programs_built, 1);
-        assert_int_equal(st.lit_specialised, 4);
+        assert_int_equal(st.lighting.programs_built, 1);
+        assert_int_equal(st.lighting.specialised, 4);
         st = lit_frame(1, STIN_LIGHT_POINT, 1); /* attenuated: another program */
-        assert_int_equal(st.lit_programs_built, 1);
+        assert_int_equal(st.lighting.programs_built, 1);
         assert_int_equal(fake_gl.programs_created, made + 3);
         assert_int_equal(fake_gl.draw_calls, 2);
     }
@@ -458,8 +458,8 @@ static void test_lit_programs_bounded(void **state)
     made = fake_gl.programs_created - fake_gl.programs_deleted;
     for (f = 0; f < 40; f++) { /* 40 batches: counts 1-8 of each kind */
         stin_frame_stats st = lit_frame(1 + f % 8, types[f / 8], f >= 24);
-        assert_int_equal(st.lit_programs_built, 1);
-        assert_int_equal(st.lit_specialised, 2);
+        assert_int_equal(st.lighting.programs_built, 1);
+        assert_int_equal(st.lighting.specialised, 2);
     }
     assert_int_equal(fake_gl.programs_created - fake_gl.programs_deleted, made + STIN__LIT_CACHE);
     destroy_context(); /* and stin_destroy deletes them all */
@@ -488,19 +488,19 @@ static void test_lit_programs_full_frame(void **state)
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
 }
 
-/* STIN_DEBUG_LIT_GENERAL: the general programs only. */
+/* STIN_DEBUG_LIGHTING_GENERAL: the general programs only. */
 static void test_lit_general_flag(void **state)
 {
     unsigned made;
     stin_frame_stats st;
     (void)state;
-    debug_flags = STIN_DEBUG_LIT_GENERAL;
+    debug_flags = STIN_DEBUG_LIGHTING_GENERAL;
     create_profile(FAKE_GL45_CORE, 16, 8);
     debug_flags = 0;
     made = fake_gl.programs_created;
     st = lit_frame(3, STIN_LIGHT_SPOT, 1);
-    assert_int_equal(st.lit_programs_built, 0);
-    assert_int_equal(st.lit_specialised, 0);
+    assert_int_equal(st.lighting.programs_built, 0);
+    assert_int_equal(st.lighting.specialised, 0);
     assert_int_equal(fake_gl.programs_created, made);
     assert_int_equal(fake_gl.draw_calls, 2);
 }
@@ -516,8 +516,8 @@ static void test_lit_failed_build_falls_back(void **state)
     made = fake_gl.programs_created;
     fake_gl.config.fail_link_from = made + 1;
     st = lit_frame(1, STIN_LIGHT_POINT, 0);
-    assert_int_equal(st.lit_programs_built, 0);
-    assert_int_equal(st.lit_specialised, 0);
+    assert_int_equal(st.lighting.programs_built, 0);
+    assert_int_equal(st.lighting.specialised, 0);
     assert_int_equal(fake_gl.draw_calls, 2);
     assert_true(fake_log_has(&log_, STIN_LOG_SHADER_COMPILE, "the general one serves"));
     st = lit_frame(1, STIN_LIGHT_POINT, 0);
@@ -733,7 +733,7 @@ static void test_texture_without_mips(void **state)
     stin_texture t;
     (void)state;
     create_profile(FAKE_GL11, 8, 8);
-    td.no_mipmaps = 1;
+    td.base_level_only = 1;
     assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_OK);
     assert_int_equal(fake_gl.tex_levels, 1);
     assert_int_equal(fake_gl.tex_level_width[0], 4);
@@ -785,7 +785,7 @@ static void test_texture_staging_too_small(void **state)
     assert_int_equal(t.id, 0);
     assert_true(fake_log_has(&log_, STIN_LOG_POOL_FULL, "max_texture_bytes"));
     assert_int_equal(fake_gl.textures_created, 0);
-    td.no_mipmaps = 1;
+    td.base_level_only = 1;
     assert_int_equal(stin_create_texture(ctx, &td, &t), STIN_OK);
 }
 
@@ -906,7 +906,7 @@ static void test_vdsm_tessellates_only_displaced_frames(void **state)
     assert_true(st.passes > 0);
     assert_true(fake_gl.draw_calls > 10);
     /* and culls first: its triangle count is known without tessellation */
-    assert_true(st.vdsm_cull_passes >= 2);
+    assert_true(st.shadows.vdsm_cull_passes >= 2);
     shadows = STIN_TECH_SHADOWS_OFF;
     assert_int_equal(fake_gl.patch_draws, 0);
 }
@@ -924,16 +924,16 @@ static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
     assert_true(ctx->vdsm.pyramid.atomic_prog != 0 && ctx->vdsm.pyramid.first_prog != 0);
     assert_int_equal(ctx->vdsm.pyramid.deepest, 0); /* made in the first frame */
     assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 0);
-    assert_int_equal(frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY).vdsm_atomic_receivers, 1);
+    assert_int_equal(frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY).shadows.vdsm_atomic_receivers, 1);
     assert_true(ctx->vdsm.pyramid.deepest != 0);
     assert_true(fake_gl.calls[STIN_GLFN_BindBufferBase] >= 4); /* bound, unbound, twice */
     create_profile(FAKE_GL33_CORE, 16, 8);
     assert_true(ctx->vdsm.pyramid.usable);
     assert_int_equal(ctx->vdsm.pyramid.atomic_prog, 0);
     st = frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
-    assert_int_equal(st.vdsm_atomic_receivers, 0);
+    assert_int_equal(st.shadows.vdsm_atomic_receivers, 0);
     /* only the culling pass's feedback buffer: bound and unbound */
-    assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 2 * st.vdsm_cull_passes);
+    assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 2 * st.shadows.vdsm_cull_passes);
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
@@ -978,7 +978,7 @@ static void test_vdsm_culls_into_feedback_then_draws_once(void **state)
     assert_true(ctx->vdsm.culling.usable && ctx->vdsm.culling.feedback != 0);
     assert_int_equal(ctx->vdsm.culling.query, 0); /* no wait without STIN_DEBUG_VDSM_COUNT */
     st = frame_with(2, 3, 0, STIN_OUTPUT_BEAUTY);
-    assert_int_equal(st.vdsm_cull_passes, 2);
+    assert_int_equal(st.shadows.vdsm_cull_passes, 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_EndTransformFeedback], 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawTransformFeedback], 2);
@@ -992,13 +992,13 @@ static void test_vdsm_culls_into_feedback_then_draws_once(void **state)
     assert_true(ctx->vdsm.culling.usable);
     assert_int_equal(ctx->vdsm.culling.feedback, 0); /* counted by a query instead */
     st = frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
-    assert_int_equal(st.vdsm_cull_passes, 1);
+    assert_int_equal(st.shadows.vdsm_cull_passes, 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawTransformFeedback], 0);
     debug_flags = STIN_DEBUG_VDSM_ONE_PASS;
     create_profile(FAKE_GL45_CORE, 16, 8);
     st = frame_with(2, 3, 0, STIN_OUTPUT_BEAUTY);
-    assert_int_equal(st.vdsm_cull_passes, 0);
+    assert_int_equal(st.shadows.vdsm_cull_passes, 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 0);
     debug_flags = 0;
     shadows = STIN_TECH_SHADOWS_OFF;

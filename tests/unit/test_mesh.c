@@ -86,13 +86,13 @@ static stin_result create(const stin_mesh_desc *md, stin_mesh *m) { return stin_
 static stin_mesh_info info_of(stin_mesh m)
 {
     stin_mesh_info info;
-    assert_int_equal(stin_query_mesh(ctx, m, &info), STIN_OK);
+    assert_int_equal(stin_query_mesh_info(ctx, m, &info), STIN_OK);
     return info;
 }
 
 static void neighbours(stin_mesh m, uint32_t t, uint32_t out[3])
 {
-    assert_int_equal(stin_mesh_adjacency(ctx, m, t, out), STIN_OK);
+    assert_int_equal(stin_query_mesh_adjacency(ctx, m, t, out), STIN_OK);
 }
 
 static const float *vertex_normal(stin_mesh m, uint32_t v)
@@ -283,7 +283,7 @@ static void test_closed_cube_with_split_normals(void **state)
             assert_neighbour_consistent(m, pos, idx, t, e, nb[e]);
         }
     }
-    assert_int_equal(stin_mesh_adjacency(ctx, m, 12, nb), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(stin_query_mesh_adjacency(ctx, m, 12, nb), STIN_ERROR_INVALID_ARGUMENT);
 }
 
 /* x moved by `ulps` units in the last place (no libm in this test). */
@@ -470,7 +470,7 @@ static void test_inconsistently_oriented_pair(void **state)
 /* ---- tangents and normals ---------------------------------------------------- */
 static void tangent(stin_mesh m, uint32_t v, float t[4])
 {
-    assert_int_equal(stin_mesh_tangent(ctx, m, v, t), STIN_OK);
+    assert_int_equal(stin_query_mesh_tangent(ctx, m, v, t), STIN_OK);
 }
 
 static void assert_unit_and_orthogonal(const float t[4], const float n[3])
@@ -498,7 +498,7 @@ static void test_tangent_follows_u(void **state)
         assert_true(t[3] == 1.0f);
         assert_unit_and_orthogonal(t, vertex_normal(m, v));
     }
-    assert_int_equal(stin_mesh_tangent(ctx, m, 4, t), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(stin_query_mesh_tangent(ctx, m, 4, t), STIN_ERROR_INVALID_ARGUMENT);
 }
 
 static void test_mirrored_uvs_flip_handedness(void **state)
@@ -774,9 +774,9 @@ static void test_destroyed_handle_is_stale(void **state)
     assert_true(a.id != 0);
     stin_destroy_mesh(ctx, a);
     assert_int_equal(fake_gl.buffers_deleted, 2);
-    assert_int_equal(stin_query_mesh(ctx, a, &info), STIN_ERROR_INVALID_HANDLE);
-    assert_int_equal(stin_mesh_adjacency(ctx, a, 0, nb), STIN_ERROR_INVALID_HANDLE);
-    assert_int_equal(stin_mesh_tangent(ctx, a, 0, t), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(ctx, a, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_adjacency(ctx, a, 0, nb), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_tangent(ctx, a, 0, t), STIN_ERROR_INVALID_HANDLE);
     reset_log();
     stin_destroy_mesh(ctx, a); /* twice: logged, nothing deleted */
     assert_int_equal(log_.items[STIN_LOG_BAD_HANDLE], 1);
@@ -785,8 +785,8 @@ static void test_destroyed_handle_is_stale(void **state)
     assert_int_equal(create(&md, &b), STIN_OK); /* reuses the slot */
     assert_int_equal(b.id & 0x1fu, a.id & 0x1fu); /* slot + 1: 5 bits for 16 meshes */
     assert_true(b.id != a.id);
-    assert_int_equal(stin_query_mesh(ctx, a, &info), STIN_ERROR_INVALID_HANDLE);
-    assert_int_equal(stin_query_mesh(ctx, b, &info), STIN_OK);
+    assert_int_equal(stin_query_mesh_info(ctx, a, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(ctx, b, &info), STIN_OK);
 }
 
 static void test_foreign_handles(void **state)
@@ -797,15 +797,15 @@ static void test_foreign_handles(void **state)
     (void)state;
     assert_int_equal(create(&md, &a), STIN_OK);
     far_slot.id = (a.id & ~0x1fu) | 17u; /* slot 16 of 16 meshes */
-    assert_int_equal(stin_query_mesh(ctx, zero, &info), STIN_ERROR_INVALID_HANDLE);
-    assert_int_equal(stin_query_mesh(ctx, far_slot, &info), STIN_ERROR_INVALID_HANDLE);
-    assert_int_equal(stin_query_mesh(NULL, a, &info), STIN_ERROR_INVALID_HANDLE);
-    assert_int_equal(stin_query_mesh(ctx, a, NULL), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(stin_query_mesh_info(ctx, zero, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(ctx, far_slot, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(NULL, a, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(ctx, a, NULL), STIN_ERROR_INVALID_ARGUMENT);
     reset_log();
     stin_destroy_mesh(ctx, zero); /* the zero handle is silently nothing */
     assert_int_equal(log_.items[STIN_LOG_BAD_HANDLE], 0);
     stin_destroy_mesh(NULL, a);
-    assert_int_equal(stin_query_mesh(ctx, a, &info), STIN_OK);
+    assert_int_equal(stin_query_mesh_info(ctx, a, &info), STIN_OK);
 }
 
 #define TEST(f) cmocka_unit_test_setup_teardown(f, setup, teardown)

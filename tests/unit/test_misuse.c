@@ -155,13 +155,13 @@ static void test_stencil_is_probed_per_frame_target(void **state)
     assert_int_equal(quad(c.ctx, &m), STIN_OK);
     fallbacks = log_.items[STIN_LOG_FALLBACK];
     /* into the colour-only framebuffer: no volumes, said once */
-    assert_int_equal(shadow_frame(&c, m, 5).shadow_volume_triangles, 0);
+    assert_int_equal(shadow_frame(&c, m, 5).shadows.volume_triangles, 0);
     assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "volume falls back to off in frames "
                                                        "into framebuffer 5"));
-    assert_int_equal(shadow_frame(&c, m, 5).shadow_volume_triangles, 0);
+    assert_int_equal(shadow_frame(&c, m, 5).shadows.volume_triangles, 0);
     assert_int_equal(log_.items[STIN_LOG_FALLBACK], fallbacks + 1);
     /* into the default one: volumes again; the choice never changed */
-    assert_true(shadow_frame(&c, m, 0).shadow_volume_triangles > 0);
+    assert_true(shadow_frame(&c, m, 0).shadows.volume_triangles > 0);
     assert_true(fake_log_has(&log_, STIN_LOG_TECHNIQUE_SELECTED, "volume again"));
     assert_int_equal(stin_query_choice(c.ctx, STIN_FEATURE_SHADOWS).technique,
                      STIN_TECH_SHADOWS_VOLUME);
@@ -409,17 +409,17 @@ static void test_handles_of_another_context_are_foreign(void **state)
     /* two blocks: tags from their addresses (1 in 256 alike; these two differ) */
     if (a.ctx->handle_tag != b.ctx->handle_tag) {
         assert_true(ma.id != mb.id);
-        assert_int_equal(stin_query_mesh(b.ctx, ma, &info), STIN_ERROR_INVALID_HANDLE);
-        assert_int_equal(stin_query_mesh(a.ctx, mb, &info), STIN_ERROR_INVALID_HANDLE);
+        assert_int_equal(stin_query_mesh_info(b.ctx, ma, &info), STIN_ERROR_INVALID_HANDLE);
+        assert_int_equal(stin_query_mesh_info(a.ctx, mb, &info), STIN_ERROR_INVALID_HANDLE);
     }
     /* the same block: a new context never takes the old one's handles */
     stin_destroy(a.ctx);
     create_in(&a, 4);
-    assert_int_equal(stin_query_mesh(a.ctx, ma, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(a.ctx, ma, &info), STIN_ERROR_INVALID_HANDLE);
     assert_int_equal(quad(a.ctx, &mb), STIN_OK); /* the same slot, generation 1 again */
     assert_true(mb.id != ma.id);
-    assert_int_equal(stin_query_mesh(a.ctx, ma, &info), STIN_ERROR_INVALID_HANDLE);
-    assert_int_equal(stin_query_mesh(a.ctx, mb, &info), STIN_OK);
+    assert_int_equal(stin_query_mesh_info(a.ctx, ma, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(a.ctx, mb, &info), STIN_OK);
     release(&a);
     release(&b);
 }
@@ -443,7 +443,7 @@ static void test_generations_never_revive_a_stale_id(void **state)
             fail_msg("re-creation %u issued the first id 0x%x again", i, first.id);
         stin_destroy_mesh(c.ctx, m);
     }
-    assert_int_equal(stin_query_mesh(c.ctx, first, &info), STIN_ERROR_INVALID_HANDLE);
+    assert_int_equal(stin_query_mesh_info(c.ctx, first, &info), STIN_ERROR_INVALID_HANDLE);
     release(&c);
 }
 
@@ -469,7 +469,7 @@ static void test_slot_at_top_generation_is_retired(void **state)
     for (i = 0; i < n; i++) {
         uint32_t k;
         m.id = ids[i];
-        assert_int_equal(stin_query_mesh(c.ctx, m, &info), STIN_ERROR_INVALID_HANDLE);
+        assert_int_equal(stin_query_mesh_info(c.ctx, m, &info), STIN_ERROR_INVALID_HANDLE);
         for (k = 0; k < i; k++)
             assert_true(ids[k] != ids[i]);
     }
@@ -518,7 +518,7 @@ static void test_meshes_at_extreme_scales(void **state)
         make_cube(scales[s], pos, idx);
         if (mesh(c.ctx, pos, 8, idx, 36, &m) != STIN_OK)
             fail_msg("a cube of half-size %g was rejected", (double)scales[s]);
-        assert_int_equal(stin_query_mesh(c.ctx, m, &info), STIN_OK);
+        assert_int_equal(stin_query_mesh_info(c.ctx, m, &info), STIN_OK);
         assert_int_equal(info.triangle_count, 12);
         assert_int_equal(info.degenerate_dropped, 0);
         assert_true(info.closed_manifold);

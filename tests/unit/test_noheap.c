@@ -201,9 +201,9 @@ static void exercise(fake_gl_profile_id profile)
             r_mesh = stin_create_mesh(ctx, &md, &mesh);
             md.index_count = 35;
             r_bad = stin_create_mesh(ctx, &md, &bad);
-            stin_query_mesh(ctx, mesh, &info);
-            stin_mesh_adjacency(ctx, mesh, 0, nb);
-            stin_mesh_tangent(ctx, mesh, 0, tangent);
+            stin_query_mesh_info(ctx, mesh, &info);
+            stin_query_mesh_adjacency(ctx, mesh, 0, nb);
+            stin_query_mesh_tangent(ctx, mesh, 0, tangent);
             r_tex = stin_create_texture(ctx, &td, &tex);
             mat.albedo = tex;
             stin_draw(ctx, mesh, NULL, NULL); /* out of order: logs */
@@ -216,7 +216,7 @@ static void exercise(fake_gl_profile_id profile)
             r_end = stin_end_frame(ctx);
             stin_query_frame_stats(ctx);
             stin_query_choice(ctx, STIN_FEATURE_LIGHTING);
-            stin_has_extension(ctx, "GL_ARB_shadow");
+            stin_query_extension(ctx, "GL_ARB_shadow");
             stin_destroy_texture(ctx, tex);
             stin_destroy_mesh(ctx, mesh);
             stin_destroy_mesh(ctx, mesh); /* stale: logs */

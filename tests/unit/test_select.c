@@ -339,7 +339,7 @@ static void test_transparency_chain(void **state)
     assert_false(c->fell_back);
     core.present &= ~BIT(OCCLUSION_QUERY); /* its early stop */
     assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
-    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_PEEL);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_DEPTH_PEEL);
     assert_true(c->fell_back);
     assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_OCCLUSION_QUERY)));
     core.present |= BIT(OCCLUSION_QUERY);
@@ -350,7 +350,7 @@ static void test_transparency_chain(void **state)
     /* the reason names the step just above: what depth-peel lacked */
     assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_PACKED_DEPTH_STENCIL)));
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
-    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_PEEL);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_DEPTH_PEEL);
     forced[STIN_FEATURE_TRANSPARENCY] = STIN_TECH_TRANSPARENCY_DUAL_PEEL;
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);

@@ -31,7 +31,7 @@ static void test_texture_staging_bytes(void **state)
     stin_texture_desc t = texture(STIN_TEXTURE_ALBEDO, 1024, 1024);
     (void)state;
     assert_int_equal(stin_texture_staging_bytes(&t), 4u * (512u * 512u + 256u * 256u));
-    t.no_mipmaps = 1;
+    t.base_level_only = 1;
     assert_int_equal(stin_texture_staging_bytes(&t), 0);
     t = texture(STIN_TEXTURE_NORMAL, 1024, 1024);
     assert_int_equal(stin_texture_staging_bytes(&t), 4u * (1024u * 1024u + 512u * 512u));
@@ -48,7 +48,7 @@ static void test_texture_staging_bytes(void **state)
     /* height maps: level 0 as given, and displacement's copy with the chain */
     t = texture(STIN_TEXTURE_HEIGHT, 256, 256);
     assert_int_equal(stin_texture_staging_bytes(&t), 4u * (128u * 128u + 64u * 64u));
-    t.no_mipmaps = 1;
+    t.base_level_only = 1;
     assert_int_equal(stin_texture_staging_bytes(&t), 0);
     t = texture(STIN_TEXTURE_ALBEDO, 0, 16);
     assert_int_equal(stin_texture_staging_bytes(&t), 0);
@@ -65,22 +65,22 @@ static void test_deep_memory(void **state)
     (void)state;
     memset(&d, 0, sizeof d);
     assert_int_equal(stin_deep_memory_bytes(&d), 2ull * 6 * 2 * 512 * 512 * 16 + 512ull * 512 * 4);
-    d.deep_map_size = 2048;
+    d.translucent.deep_map_size = 2048;
     assert_int_equal(stin_deep_memory_bytes(&d), 1610612736ull + 2048ull * 2048 * 4);
-    d.deep_layers = 3; /* three layers take two slices of the even texture, one of the odd */
+    d.translucent.deep_layers = 3; /* three layers take two slices of the even texture, one of the odd */
     assert_int_equal(stin_deep_memory_bytes(&d), 1610612736ull + 2048ull * 2048 * 4);
-    d.deep_layers = 1;
+    d.translucent.deep_layers = 1;
     assert_int_equal(stin_deep_memory_bytes(&d), 1610612736ull / 2 + 2048ull * 2048 * 4);
-    d.deep_layers = 17;
+    d.translucent.deep_layers = 17;
     assert_int_equal(stin_deep_memory_bytes(&d), 0);
     assert_int_equal(stin_memory_size(&d), 0);
-    d.deep_layers = 4;
-    d.deep_map_size = 3000; /* not a power of two */
+    d.translucent.deep_layers = 4;
+    d.translucent.deep_map_size = 3000; /* not a power of two */
     assert_int_equal(stin_deep_memory_bytes(&d), 0);
-    d.deep_map_size = 8192; /* above 4096 */
+    d.translucent.deep_map_size = 8192; /* above 4096 */
     assert_int_equal(stin_deep_memory_bytes(&d), 0);
-    d.deep_map_size = 0;
-    d.deep_mono = 2;
+    d.translucent.deep_map_size = 0;
+    d.translucent.deep_mono = 2;
     assert_int_equal(stin_memory_size(&d), 0);
     assert_int_equal(stin_deep_memory_bytes(NULL), 0);
 }

@@ -252,8 +252,8 @@ static int create_context_on(const fake_gl_config *cfg, stin_tier tier, stin_tec
     d.max_mesh_triangles = 64;
     d.max_draws = 8;
     d.max_lights = 4;
-    d.shadow_map_size = 256;
-    d.soft_shadow_samples = 2;
+    d.shadows.map_size = 256;
+    d.shadows.soft_samples = 2;
     bytes = stin_memory_size(&d);
     assert_true(bytes > 0);
     block = malloc(bytes);

@@ -4,7 +4,7 @@
  * GL1 tier only (the map techniques are fixed-function). Per set-up one stin
  * context with desc.techniques[STIN_FEATURE_SHADOWS] = off is created on the
  * one GL context and kept for the set-up; then per row a second one, forced to
- * the row's technique (map-depth or map-combine with desc.shadow_map_size set
+ * the row's technique (map-depth or map-combine with desc.shadows.map_size set
  * to the row's size, or volume), each with its own copy of the scene's meshes.
  * Both draw the scene as it is (its own lights) through scene_gpu_frame:
  * warm-up, then whole frames (glFinish included) in ABBA order, shadowed
@@ -64,7 +64,7 @@ static int side_create(setup *u, side *sd, stin_technique shadows, uint32_t map_
     desc.tier = STIN_TIER_GL1;
     desc.caps_mask = u->st->caps_mask;
     desc.techniques[STIN_FEATURE_SHADOWS] = shadows;
-    desc.shadow_map_size = map_size;
+    desc.shadows.map_size = map_size;
     scene_gpu_size_desc(u->s, &desc);
     bytes = stin_memory_size(&desc);
     if (!bytes) {
@@ -178,8 +178,8 @@ static int one_row(setup *u, maps_row *row, int first, char *err, size_t err_siz
         }
     /* the last warm-up frame's statistics: the same every frame */
     fs = stin_query_frame_stats(on.ctx);
-    if (row->technique == STIN_TECH_SHADOWS_VOLUME ? fs.shadow_volume_triangles == 0
-                                                   : fs.shadow_map_size == 0) {
+    if (row->technique == STIN_TECH_SHADOWS_VOLUME ? fs.shadows.volume_triangles == 0
+                                                   : fs.shadows.map_size == 0) {
         snprintf(err, err_size, "the %s frame rendered no %s", stin_technique_name(row->technique),
                  row->technique == STIN_TECH_SHADOWS_VOLUME ? "volume triangles" : "shadow map");
         goto done;
@@ -188,11 +188,11 @@ static int one_row(setup *u, maps_row *row, int first, char *err, size_t err_siz
         goto done;
     if (b->verbose)
         fprintf(stderr, "stin-bench: maps %s %u (rendered %u): medians shadowed %.2f off %.2f ms\n",
-                stin_technique_name(row->technique), row->requested, fs.shadow_map_size, on_ms,
+                stin_technique_name(row->technique), row->requested, fs.shadows.map_size, on_ms,
                 off_ms);
-    row->rendered = fs.shadow_map_size;
+    row->rendered = fs.shadows.map_size;
     row->passes = fs.passes;
-    row->volume_triangles = fs.shadow_volume_triangles;
+    row->volume_triangles = fs.shadows.volume_triangles;
     bench_keep_min(&row->on_ms, on_ms, first);
     bench_keep_min(&row->off_ms, off_ms, first);
     ok = 1;

@@ -21,7 +21,7 @@ typedef struct maps_settings {
     const bench_settings *b; /* plat, gl, size, verbose; b->warmup is used too */
     int frames;              /* timed frames per side, set-up and row */
     int setups;              /* fresh shadows-off context (and per row a shadowed one) each */
-    int sizes[MAPS_MAX_SIZES]; /* desc.shadow_map_size per row, powers of two */
+    int sizes[MAPS_MAX_SIZES]; /* desc.shadows.map_size per row, powers of two */
     int size_n;
     uint64_t caps_mask;      /* desc.caps_mask of every context (e.g. hide the FBO) */
 } maps_settings;
@@ -29,8 +29,8 @@ typedef struct maps_settings {
 /* One row: a shadow technique (and map size) against shadows off. */
 typedef struct maps_row {
     stin_technique technique;  /* map-depth, map-combine or volume */
-    uint32_t requested;        /* desc.shadow_map_size; 0 for volume */
-    uint32_t rendered;         /* stin_frame_stats.shadow_map_size of the shadowed frame */
+    uint32_t requested;        /* desc.shadows.map_size; 0 for volume */
+    uint32_t rendered;         /* stin_frame_stats.shadows.map_size of the shadowed frame */
     uint32_t passes, volume_triangles; /* the shadowed frame's stats */
     double off_ms, on_ms;      /* per side the lowest set-up median (glFinish included) */
     int skipped;               /* 1: the context cannot run it; why says so */

@@ -352,10 +352,10 @@ static int one_setup(const shadow_settings *st, stin_tier tier, const scene *s, 
         /* The last warm-up frame's statistics: the same every frame. */
         fs = stin_query_frame_stats(u->vol.ctx);
         if (fs.lights != (uint32_t)st->light_counts[i] ||
-            (fs.shadow_volume_triangles == 0 && fs.shadow_volume_gpu_casters == 0)) {
+            (fs.shadows.volume_triangles == 0 && fs.shadows.volume_gpu_casters == 0)) {
             snprintf(err, err_size, "the shadowed frame drew %u lights and %u volume triangles "
                      "(expected %d lights and some volumes)", fs.lights,
-                     fs.shadow_volume_triangles, st->light_counts[i]);
+                     fs.shadows.volume_triangles, st->light_counts[i]);
             goto done;
         }
         if (!abba(u, 0, st->frames, &full, err, err_size))
@@ -370,11 +370,11 @@ static int one_setup(const shadow_settings *st, stin_tier tier, const scene *s, 
                     st->light_counts[i], full.vol_ms, full.off_ms, st->small_w, st->small_h,
                     small.vol_ms, small.vol_cpu_ms, small.off_ms, small.off_cpu_ms);
         row->lights = st->light_counts[i];
-        row->volume_triangles = fs.shadow_volume_triangles;
-        row->gpu_casters = fs.shadow_volume_gpu_casters;
+        row->volume_triangles = fs.shadows.volume_triangles;
+        row->gpu_casters = fs.shadows.volume_gpu_casters;
         row->passes = fs.passes;
-        row->zpass_casters = fs.zpass_casters;
-        row->zfail_casters = fs.zfail_casters;
+        row->zpass_casters = fs.shadows.zpass_casters;
+        row->zfail_casters = fs.shadows.zfail_casters;
         bench_keep_min(&row->vol_ms, full.vol_ms, first);
         bench_keep_min(&row->off_ms, full.off_ms, first);
         bench_keep_min(&row->vol_end_ms, small.vol_ms, first);

@@ -5,7 +5,7 @@
  * configuration (shadows off; or shadows off and the plain surface) is
  * created on the one GL context and kept for the set-up; then per row a
  * second one, forced to the row's configuration (shadow technique,
- * desc.shadow_map_size, surface technique), each with its own copy of the
+ * desc.shadows.map_size, surface technique), each with its own copy of the
  * scene's meshes and textures. The row's context draws a copy of the scene
  * struct whose lights carry the row's pcf_kernel (the baseline draws the
  * scene as it is); both go through scene_gpu_frame: warm-up, then whole
@@ -83,14 +83,14 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
     desc.techniques[STIN_FEATURE_SURFACE] = c->surface;
     desc.techniques[STIN_FEATURE_DISPLACEMENT] = c->displacement;
     desc.techniques[STIN_FEATURE_TRANSPARENCY] = c->transparency;
-    desc.shadow_map_size = c->map_size;
+    desc.shadows.map_size = c->map_size;
     desc.debug_flags = c->debug_flags;
-    desc.displace_guard_band = c->guard_band;
-    desc.displace_tess_pixels = c->tess_pixels;
-    desc.displace_tess_max = c->tess_max;
+    desc.displacement.guard_band = c->guard_band;
+    desc.displacement.tess_pixels = c->tess_pixels;
+    desc.displacement.tess_max = c->tess_max;
     desc.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] = c->translucent;
-    desc.deep_layers = c->deep_layers;
-    desc.deep_map_size = c->deep_map_size;
+    desc.translucent.deep_layers = c->deep_layers;
+    desc.translucent.deep_map_size = c->deep_map_size;
     scene_gpu_size_desc(s, &desc);
     bytes = stin_memory_size(&desc);
     if (!bytes) {
@@ -212,7 +212,7 @@ static int staged_row(setup *u, tech_row *row, char *err, size_t err_size)
         }
         fs = stin_query_frame_stats(timed.ctx);
         if (k < 0 && cfg.counted_flags)
-            row->primitives = fs.vdsm_primitives;
+            row->primitives = fs.shadows.vdsm_primitives;
         if (!fs.stage_times) {
             ok = 1; /* no timer queries: no stage column */
             goto done;
@@ -261,7 +261,7 @@ static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_siz
         }
     /* the last warm-up frame's statistics: the same every frame */
     fs = stin_query_frame_stats(on.ctx);
-    if (is_map(row->cfg.shadows) && fs.shadow_map_size == 0) {
+    if (is_map(row->cfg.shadows) && fs.shadows.map_size == 0) {
         snprintf(err, err_size, "the %s frame rendered no shadow map",
                  stin_technique_name(row->cfg.shadows));
         goto done;
@@ -271,13 +271,13 @@ static int one_row(setup *u, tech_row *row, int first, char *err, size_t err_siz
     if (b->verbose)
         fprintf(stderr, "stin-bench: %s shadows %s %u (rendered %u) kernel %d surface %s: "
                 "medians row %.2f baseline %.2f ms\n", stin_tier_name(u->st->tier),
-                stin_technique_name(row->cfg.shadows), row->cfg.map_size, fs.shadow_map_size,
+                stin_technique_name(row->cfg.shadows), row->cfg.map_size, fs.shadows.map_size,
                 row->cfg.pcf_kernel, stin_technique_name(row->cfg.surface), on_ms, base_ms);
-    row->rendered = fs.shadow_map_size;
+    row->rendered = fs.shadows.map_size;
     row->passes = fs.passes;
     if (!row->cfg.counted_flags)
-        row->primitives = fs.vdsm_primitives;
-    row->peel_passes = fs.peel_passes;
+        row->primitives = fs.shadows.vdsm_primitives;
+    row->peel_passes = fs.transparency.peel_passes;
     bench_keep_min(&row->on_ms, on_ms, first);
     bench_keep_min(&row->base_ms, base_ms, first);
     if (first && u->st->stages && !staged_row(u, row, err, err_size))

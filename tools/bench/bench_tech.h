@@ -20,15 +20,15 @@
 typedef struct tech_config {
     stin_technique shadows;  /* desc.techniques[STIN_FEATURE_SHADOWS] (never NONE here) */
     stin_technique surface;  /* desc.techniques[STIN_FEATURE_SURFACE]; NONE = the tier's */
-    uint32_t map_size;       /* desc.shadow_map_size; 0 = stin's default */
+    uint32_t map_size;       /* desc.shadows.map_size; 0 = stin's default */
     int pcf_kernel;          /* every scene light's pcf_kernel; 0 = as the scene has it */
-    uint32_t debug_flags;    /* desc.debug_flags (vdsm's steps) */
+    uint64_t debug_flags;    /* desc.debug_flags (vdsm's steps) */
     /* flags the row's stage-times context adds (vdsm's counter, whose waits
      * stay out of the timed frames); its first frame gives `primitives` */
-    uint32_t counted_flags;
+    uint64_t counted_flags;
     stin_technique displacement; /* desc.techniques[STIN_FEATURE_DISPLACEMENT]; NONE = auto */
-    float guard_band, tess_pixels; /* desc.displace_guard_band, displace_tess_pixels (0: default) */
-    uint32_t tess_max;       /* desc.displace_tess_max (0: default) */
+    float guard_band, tess_pixels; /* desc.displacement.guard_band, displacement.tess_pixels (0: default) */
+    uint32_t tess_max;       /* desc.displacement.tess_max (0: default) */
     stin_technique translucent; /* desc.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS]; NONE = auto */
     uint32_t deep_layers, deep_map_size; /* desc's (0: default) */
     stin_technique transparency; /* desc.techniques[STIN_FEATURE_TRANSPARENCY]; NONE = auto */
@@ -48,10 +48,10 @@ typedef struct tech_settings {
 /* One row: its configuration (set by the caller) and what was measured. */
 typedef struct tech_row {
     tech_config cfg;
-    uint32_t rendered;       /* stin_frame_stats.shadow_map_size of the row's frame */
+    uint32_t rendered;       /* stin_frame_stats.shadows.map_size of the row's frame */
     uint32_t passes;         /* stin_frame_stats.passes of the row's frame */
-    uint32_t primitives;     /* stin_frame_stats.vdsm_primitives of the row's frame */
-    uint32_t peel_passes;    /* stin_frame_stats.peel_passes of the row's frame */
+    uint32_t primitives;     /* stin_frame_stats.shadows.vdsm_primitives of the row's frame */
+    uint32_t peel_passes;    /* stin_frame_stats.transparency.peel_passes of the row's frame */
     double base_ms, on_ms;   /* per side the lowest set-up median (glFinish included) */
     int staged;              /* stage_ms holds the row's stage medians (timer queries) */
     double stage_ms[STIN_STAGE_COUNT];

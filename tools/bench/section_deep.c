@@ -29,7 +29,8 @@
 typedef struct deep_row {
     const char *name;
     stin_technique translucent;
-    uint32_t layers, flags;
+    uint32_t layers;
+    uint64_t flags;
     int gl4_only;
 } deep_row;
 

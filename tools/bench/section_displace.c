@@ -24,7 +24,8 @@
 typedef struct disp_row {
     const char *name;
     stin_technique surface, displacement;
-    uint32_t flags, tess_max;
+    uint64_t flags;
+    uint32_t tess_max;
     float tess_pixels;
     int gl4_only;
 } disp_row;

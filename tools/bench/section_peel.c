@@ -56,7 +56,7 @@ static int shadowed_layers(bench_env *env, const scene *s, const tech_settings *
     tech_settings st = *section;
     int i, ok = 1;
     st.base.shadows = STIN_TECH_SHADOWS_VOLUME;
-    st.base.transparency = STIN_TECH_TRANSPARENCY_PEEL;
+    st.base.transparency = STIN_TECH_TRANSPARENCY_DEPTH_PEEL;
     printf("\n### gl4, depth-peel with shadows: vdsm against volume\n\n"
            "| layers on screen | volume median ms | vdsm median ms | vdsm / volume "
            "| vdsm, layers unshadowed, median ms | vdsm layer masks ms |\n"
@@ -114,7 +114,7 @@ int section_peel(bench_env *env, const scene *s, int *ran)
             scene copy;
             memset(rows, 0, sizeof rows);
             rows[0].cfg = rows[1].cfg = st.base;
-            rows[0].cfg.transparency = STIN_TECH_TRANSPARENCY_PEEL;
+            rows[0].cfg.transparency = STIN_TECH_TRANSPARENCY_DEPTH_PEEL;
             rows[1].cfg.transparency = STIN_TECH_TRANSPARENCY_DUAL_PEEL;
             if (!with_panes(s, layers[i], &copy)) {
                 fprintf(stderr, "stin-bench: the peel scene has too few transparent objects\n");

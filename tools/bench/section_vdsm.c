@@ -26,7 +26,7 @@
 static const struct step_set {
     const char *name;
     stin_technique shadows;
-    uint32_t flags;
+    uint64_t flags;
     int goal; /* one of the two rows the 1.5x goal compares (--vdsm-goal) */
 } sets[] = {
     {"SP", STIN_TECH_SHADOWS_VDSM,

@@ -178,7 +178,7 @@ void scene_gpu_light(const scene_light *in, stin_light_desc *out)
     out->spot_exponent = in->spot_exponent;
     out->shadow_offset[0] = in->shadow_offset[0];
     out->shadow_offset[1] = in->shadow_offset[1];
-    out->shadow_offset_off = in->shadow_offset_off;
+    out->shadow_offset_exact = in->shadow_offset_off;
     out->pcf_kernel = (uint32_t)in->pcf_kernel;
     out->radius = in->radius;
     out->range = in->range;

@@ -149,13 +149,13 @@ static void print_frame(const stin_frame_stats *stats, const scene *s, double ms
     } else if (timed) {
         printf("stages: not timed (the context has no timer queries)\n");
     }
-    if (st.shadow_map_size)
-        printf("shadow maps: %u texels a side\n", st.shadow_map_size);
-    if (st.zpass_casters + st.zfail_casters)
+    if (st.shadows.map_size)
+        printf("shadow maps: %u texels a side\n", st.shadows.map_size);
+    if (st.shadows.zpass_casters + st.shadows.zfail_casters)
         printf("shadow volumes: %u triangles, %u casters z-pass, %u z-fail, %u extruded by "
                "the GPU (last output)\n",
-               st.shadow_volume_triangles, st.zpass_casters, st.zfail_casters,
-               st.shadow_volume_gpu_casters);
+               st.shadows.volume_triangles, st.shadows.zpass_casters, st.shadows.zfail_casters,
+               st.shadows.volume_gpu_casters);
 }
 
 int main(int argc, char **argv)
@@ -240,7 +240,7 @@ int main(int argc, char **argv)
     desc.log_user = &log;
     desc.tier = o.tier;
     desc.debug_flags = o.debug_flags;
-    desc.shadow_map_size = o.shadow_map_size ? o.shadow_map_size
+    desc.shadows.map_size = o.shadow_map_size ? o.shadow_map_size
                          : have_scene      ? (uint32_t)s.shadow_map_size : 0u;
     if (pd.profile) {
         desc.caps_mask = pd.profile->caps_mask;

@@ -9,7 +9,7 @@
 
 enum {
     RENDER_DEBUG_SHADOW_MAP = 1, /* each light's shadow map, <output>-shadow-map-<i>.png */
-    RENDER_DEBUG_VOLUMES = 2,    /* the volumes over the beauty (STIN_DEBUG_SHOW_VOLUMES) */
+    RENDER_DEBUG_VOLUMES = 2,    /* the volumes over the beauty (STIN_DEBUG_VOLUME_SHOW) */
     RENDER_DEBUG_MASKS = 4       /* the lights' visibility map, <output>-masks.png */
 };
 

@@ -26,11 +26,11 @@ void render_usage(FILE *f)
                "  --size WxH                image size (default: the scene's, else 512x512)\n"
                "  --shadows NAME            shadow technique: vdsm (GL4), volume, map-pcf (GLSL tiers), map (map-depth where the\n"
                "                            context has ARB_shadow, else map-combine), map-depth,\n"
-               "                            map-combine, off (default auto)\n"
+               "                            map-combine, shadows-off or off (default auto)\n"
                "  --surface NAME            surface technique, or displace: materials with a\n"
                "                            height map displaced by it (default auto)\n"
                "  --csg NAME                CSG technique for the scene's csg list: scs, goldfeather,\n"
-               "                            interval (GL4), csg-off (default auto)\n"
+               "                            interval (GL4), csg-off or off (default auto)\n"
                "  --shadow-map-size N       texels a side of each shadow map: a power of two, 16..8192\n"
                "                            (default: the scene's shadow_map_size, else 1024)\n"
                "  --max-triangles N         work limit: triangles one frame may draw, instances x\n"
@@ -79,7 +79,7 @@ static int parse_count(const char *s, uint64_t *out)
     return 1;
 }
 
-/* stin_desc.shadow_map_size: a power of two, at most 8192 (and at least 16
+/* stin_desc.shadows.map_size: a power of two, at most 8192 (and at least 16
  * here: smaller maps only show blocks). */
 static int parse_map_size(const char *s, uint32_t *out)
 {
@@ -189,7 +189,7 @@ int render_parse_args(int argc, char **argv, options *o)
             }
             o->debug_outputs |= kind;
             if (kind == RENDER_DEBUG_VOLUMES)
-                o->debug_flags |= STIN_DEBUG_SHOW_VOLUMES;
+                o->debug_flags |= STIN_DEBUG_VOLUME_SHOW;
         } else if (!strcmp(a, "--shadow-map-size") || !strcmp(a, "--max-triangles")) {
             if (!parse_number_option(a, argv[++i], o))
                 return 0;
@@ -247,13 +247,19 @@ int render_parse_args(int argc, char **argv, options *o)
     return 1;
 }
 
-/* --shadows/--surface/--csg: a technique name of that feature, or "auto". */
+/* --shadows/--surface/--csg: a technique name of that feature, "auto", or
+ * "off" for the feature's "<feature>-off" technique. */
 int render_parse_technique(const char *name, stin_feature f, stin_technique *out)
 {
     int t;
+    char off[64];
     *out = STIN_TECH_NONE;
     if (!name || !strcmp(name, "auto"))
         return 1;
+    if (!strcmp(name, "off")) {
+        snprintf(off, sizeof off, "%s-off", stin_feature_name(f));
+        name = off;
+    }
     if (f == STIN_FEATURE_SHADOWS && !strcmp(name, "map")) {
         *out = STIN_TECH_SHADOWS_MAP_DEPTH; /* narrowed to what the context has, see main */
         return 1;

@@ -17,7 +17,7 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 
 typedef struct options {
     const char *scene_path, *output, *profile, *platform, *shadows, *surface, *csg;
-    uint32_t debug_flags;
+    uint64_t debug_flags;
     unsigned debug_outputs;     /* RENDER_DEBUG_* (render_debug.h) */
     uint32_t shadow_map_size;   /* 0: the scene's, else stin's default */
     uint64_t max_triangles;     /* work limit; 0 = none */
