@@ -115,6 +115,8 @@ struct stin_context {
      * folder (a *_private.h no other folder includes) and says its size; the
      * frame lays them out in the caller's block (stin__state_slots). */
     struct stin__volume_state *volume;
+    struct stin__deep_state *deep;    /* translucent shadows' deep maps (translucent/deep.c) */
+    struct stin__coloured_state *coloured; /* their colour maps (translucent/coloured.c) */
 
     /* shadow technique modules: each owns its part */
     stin__map_fixed_state map_fixed;
@@ -124,8 +126,6 @@ struct stin_context {
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
     stin__outline_state outline;   /* the deferred outline (post/outline.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
-    stin__deep_state deep;    /* translucent shadows' deep maps (translucent/deep.c) */
-    stin__coloured_state coloured; /* translucent shadows' colour maps (translucent/coloured.c) */
     stin__peel_state peel;    /* transparency's camera layers (transparency/peel.c) */
     stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
 
