@@ -79,6 +79,8 @@ struct stin_context {
                                * draws elsewhere mid-frame (maps) binds it back */
     unsigned char pass_channel; /* 0, or 1-4: the draws' passes write only R, G, B or A
                                  * (a light's channel of the visibility export) */
+    const stin__draw *sorted_draw; /* "sorted", shadowed: the blended draw the shade
+                                    * function lights (frame/frame.c) */
     GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
     struct {                  /* the frame's framebuffer (gl/framebuffer_probe.c) */
         GLuint name;          /* the one probed last (0 = default) */
@@ -117,6 +119,7 @@ struct stin_context {
     struct stin__volume_state *volume;
     struct stin__deep_state *deep;    /* translucent shadows' deep maps (translucent/deep.c) */
     struct stin__coloured_state *coloured; /* their colour maps (translucent/coloured.c) */
+    struct stin__peel_state *peel; /* transparency's camera layers (transparency/peel.c) */
 
     /* shadow technique modules: each owns its part */
     stin__map_fixed_state map_fixed;
@@ -126,7 +129,6 @@ struct stin_context {
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
     stin__outline_state outline;   /* the deferred outline (post/outline.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
-    stin__peel_state peel;    /* transparency's camera layers (transparency/peel.c) */
     stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
 
     /* surface detail */

@@ -360,7 +360,7 @@ static void shade_sorted(stin_context *ctx, const stin__path *path, const stin_l
 {
     stin_stage was = stin__times_enter(ctx, STIN_STAGE_LIGHTING);
     (void)weight;
-    path->blended_one(ctx, ctx->peel.sorted_draw, l);
+    path->blended_one(ctx, ctx->sorted_draw, l);
     (void)stin__times_enter(ctx, was);
 }
 
@@ -376,7 +376,7 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (d->material.color[3] >= 1.0f)
             continue;
-        ctx->peel.sorted_draw = d;
+        ctx->sorted_draw = d;
         path->blended_one(ctx, d, NULL);
         for (li = 0; li < ctx->light_count; li++) {
             translucent_light(ctx, li);
@@ -390,7 +390,7 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
             stin__translucent_light_done(ctx);
         }
     }
-    ctx->peel.sorted_draw = NULL;
+    ctx->sorted_draw = NULL;
 }
 
 /* Peeled layers: each lit by the same stages as the opaque draws

@@ -26,6 +26,7 @@ const stin__state_slot stin__state_slots[] = {
     SLOT(volume, stin__volume_state_bytes, NULL),
     SLOT(deep, stin__deep_state_bytes, NULL),
     SLOT(coloured, stin__coloured_state_bytes, NULL),
+    SLOT(peel, stin__peel_state_bytes, NULL),
 };
 #undef SLOT
 const size_t stin__state_slot_count = sizeof stin__state_slots / sizeof stin__state_slots[0];

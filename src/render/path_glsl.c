@@ -448,7 +448,7 @@ static void draw_csg_faces(stin_context *ctx, const stin__program *p, int which,
 {
     uint32_t i;
     stin__pass_state saved;
-    if (!(which & STIN__OPAQUE) || ctx->peel.peeling) /* not in a peeled layer */
+    if (!(which & STIN__OPAQUE) || stin__in_peeled_layer(ctx))
         return;
     for (i = 0; i < ctx->csg.face_count; i++) {
         const stin__draw *d = &ctx->csg.faces[i];
