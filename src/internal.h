@@ -14,6 +14,7 @@
 #include "render/path.h"
 #include "render/displace_chunk.h"
 #include "render/screen_quad.h"
+#include "render/screen_mask.h"
 #include "render/casters.h"
 #include "render/resolved.h"
 #include "render/path_features.h"

@@ -169,7 +169,7 @@ static stin_result vdsm_init(stin_context *ctx)
     stin__vdsm_state *v = &ctx->vdsm;
     char msg[160], why[200];
     stin__memzero(v, sizeof *v);
-    if (!ctx->mask.usable) {
+    if (!stin__mask_usable(ctx)) {
         stin__demote(ctx, STIN_FEATURE_SHADOWS, fallback(ctx),
                      "vdsm writes into the screen mask, which needs a texture unit beyond the "
                      "surface's");
@@ -246,7 +246,7 @@ static int depth_tested(const stin_context *ctx)
  * own depth-stencil (on), or back (off). */
 static void surface_depth(stin_context *ctx, int on)
 {
-    GLuint depth = on ? ctx->vdsm.depth : ctx->mask.depth_stencil;
+    GLuint depth = on ? ctx->vdsm.depth : stin__mask_target_of(ctx).depth_stencil;
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                   on ? 0u : depth, 0);

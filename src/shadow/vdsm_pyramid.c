@@ -536,7 +536,7 @@ int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel
     if (dc && p->atomic_prog)
         stin__vdsm_receivers_draw(ctx, light, channel);
     reduce(ctx);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, stin__mask_target_of(ctx).fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__pass_apply(ctx, &saved);
     ctx->stats.passes += 2u + (uint32_t)sm + (uint32_t)dc;

@@ -94,7 +94,7 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
     ps.color_only = (unsigned char)(channel + 1);
     ps.scissor = 0; /* the pyramid's scissor box is not the frame's viewport */
     stin__pass_apply(ctx, &ps);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, stin__mask_target_of(ctx).fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm.position);
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm.normal);
