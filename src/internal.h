@@ -20,6 +20,7 @@
 #include "render/path_features.h"
 #include "gl/pass_state.h"
 #include "gl/render_target.h"
+#include "gl/uniforms.h"
 #include "shadow/shadow.h"
 #include "surface/surface.h"
 #include "post/visibility_export.h"
