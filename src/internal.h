@@ -132,14 +132,14 @@ struct stin_context {
     struct stin__dot3_state *dot3; /* DOT3 bump mapping (surface/dot3.c) */
     struct stin__surf_glsl_state *surf_glsl; /* GLSL surface detail (surface/glsl.c) */
     struct stin__displace_state *displace; /* displacement's frame (surface/displace.c) */
+    struct stin__export_state *visibility; /* the visibility map (post/visibility_export.c) */
+    struct stin__outline_state *outline;   /* the deferred outline (post/outline.c) */
 
     /* shadow technique modules: each owns its part */
     stin__map_fixed_state map_fixed;
     stin__map_pcf_state map_pcf;
     stin__mask_state mask;
     stin__vdsm_state vdsm;
-    stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
-    stin__outline_state outline;   /* the deferred outline (post/outline.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
     stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
 
