@@ -76,6 +76,14 @@ static const char *make_targets(stin_context *ctx)
     return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA8 + depth framebuffer is incomplete";
 }
 
+static const stin__uniform_name cast_uniforms[] = {
+    STIN__UNIFORM(stin__coloured_state, u_model, "u_model"),
+    STIN__UNIFORM(stin__coloured_state, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__coloured_state, u_albedo, "u_albedo"),
+    STIN__UNIFORM(stin__coloured_state, u_albedo_tex, "u_albedo_tex"),
+    STIN__UNIFORM(stin__coloured_state, u_has_albedo_tex, "u_has_albedo_tex"),
+};
+
 static int make_program(stin_context *ctx, char *msg, size_t size)
 {
     stin__coloured_state *s = ctx->coloured;
@@ -86,11 +94,7 @@ static int make_program(stin_context *ctx, char *msg, size_t size)
     s->program = stin__program_build_source(ctx, &src, msg, size);
     if (!s->program)
         return 0;
-    s->u_model = GL(ctx, GetUniformLocation)(s->program, "u_model");
-    s->u_view_proj = GL(ctx, GetUniformLocation)(s->program, "u_view_proj");
-    s->u_albedo = GL(ctx, GetUniformLocation)(s->program, "u_albedo");
-    s->u_albedo_tex = GL(ctx, GetUniformLocation)(s->program, "u_albedo_tex");
-    s->u_has_albedo_tex = GL(ctx, GetUniformLocation)(s->program, "u_has_albedo_tex");
+    STIN__LOCATE(ctx, s->program, s, cast_uniforms);
     stin__displace_locate(ctx, s->program, 0, &s->displace);
     return 1;
 }

@@ -106,6 +106,17 @@ static int flag_wanted(const stin_context *ctx)
            !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_QUERY_STOP);
 }
 
+static const stin__uniform_name peel_uniforms[] = {
+    STIN__UNIFORM(stin__deep_state, u_model, "u_model"),
+    STIN__UNIFORM(stin__deep_state, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__deep_state, u_albedo, "u_albedo"),
+    STIN__UNIFORM(stin__deep_state, u_albedo_tex, "u_albedo_tex"),
+    STIN__UNIFORM(stin__deep_state, u_has_albedo_tex, "u_has_albedo_tex"),
+    STIN__UNIFORM(stin__deep_state, u_previous, "u_previous"),
+    STIN__UNIFORM(stin__deep_state, u_previous_slice, "u_previous_slice"),
+    STIN__UNIFORM(stin__deep_state, u_mono, "u_mono"),
+};
+
 /* The peel program: with the storage flag (deep_peel_flag.frag) where it is
  * wanted and builds, else with the query's (deep_peel.frag). */
 static int make_program(stin_context *ctx, char *msg, size_t size)
@@ -133,16 +144,7 @@ static int make_program(stin_context *ctx, char *msg, size_t size)
     }
     if (!s->program)
         return 0;
-#define LOC(field, name) s->field = GL(ctx, GetUniformLocation)(s->program, name)
-    LOC(u_model, "u_model");
-    LOC(u_view_proj, "u_view_proj");
-    LOC(u_albedo, "u_albedo");
-    LOC(u_albedo_tex, "u_albedo_tex");
-    LOC(u_has_albedo_tex, "u_has_albedo_tex");
-    LOC(u_previous, "u_previous");
-    LOC(u_previous_slice, "u_previous_slice");
-    LOC(u_mono, "u_mono");
-#undef LOC
+    STIN__LOCATE(ctx, s->program, s, peel_uniforms);
     stin__displace_locate(ctx, s->program, 0, &s->displace);
     return 1;
 }

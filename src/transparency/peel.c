@@ -115,6 +115,15 @@ static int ensure_size(stin_context *ctx)
     return 0;
 }
 
+static const stin__uniform_name composite_uniforms[] = {
+    STIN__UNIFORM(stin__peel_state, u_ambient, "u_ambient"),
+    STIN__UNIFORM(stin__peel_state, u_lights, "u_lights"),
+    STIN__UNIFORM(stin__peel_state, u_accum, "u_accum"),
+    STIN__UNIFORM(stin__peel_state, u_first, "u_first"),
+    STIN__UNIFORM(stin__peel_state, u_params, "u_params"),
+    STIN__UNIFORM(stin__peel_state, d.u_back, "u_back"),
+};
+
 void stin__peel_init(stin_context *ctx)
 {
     stin__peel_state *s = ctx->peel;
@@ -154,12 +163,7 @@ void stin__peel_init(stin_context *ctx)
                       "depth-peel: the lit programs failed to build again (%s)", msg);
         return;
     }
-    s->u_ambient = GL(ctx, GetUniformLocation)(s->program, "u_ambient");
-    s->u_lights = GL(ctx, GetUniformLocation)(s->program, "u_lights");
-    s->u_accum = GL(ctx, GetUniformLocation)(s->program, "u_accum");
-    s->u_first = GL(ctx, GetUniformLocation)(s->program, "u_first");
-    s->u_params = GL(ctx, GetUniformLocation)(s->program, "u_params");
-    s->d.u_back = GL(ctx, GetUniformLocation)(s->program, "u_back");
+    STIN__LOCATE(ctx, s->program, s, composite_uniforms);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
         GL(ctx, GenQueries)(1, &s->query);
     s->ready = 1;
@@ -195,11 +199,15 @@ void stin__peel_release(stin_context *ctx)
     s->layer = -1;
 }
 
+static const stin__uniform_name lit_uniforms[] = {
+    STIN__UNIFORM(stin__program, u_peel_previous, "u_peel_previous"),
+    STIN__UNIFORM(stin__program, u_peel_opaque, "u_peel_opaque"),
+    STIN__UNIFORM(stin__program, u_peel_params, "u_peel_params"),
+};
+
 void stin__peel_locate(stin_context *ctx, stin__program *p)
 {
-    p->u_peel_previous = GL(ctx, GetUniformLocation)(p->name, "u_peel_previous");
-    p->u_peel_opaque = GL(ctx, GetUniformLocation)(p->name, "u_peel_opaque");
-    p->u_peel_params = GL(ctx, GetUniformLocation)(p->name, "u_peel_params");
+    STIN__LOCATE(ctx, p->name, p, lit_uniforms);
 }
 
 void stin__peel_uniforms(stin_context *ctx, const stin__program *p)
