@@ -14,11 +14,13 @@
 #include "render/path.h"
 #include "render/displace_chunk.h"
 #include "render/screen_quad.h"
+#include "render/screen_mask.h"
 #include "render/casters.h"
 #include "render/resolved.h"
 #include "render/path_features.h"
 #include "gl/pass_state.h"
 #include "gl/render_target.h"
+#include "gl/uniforms.h"
 #include "shadow/shadow.h"
 #include "surface/surface.h"
 #include "post/visibility_export.h"
@@ -79,6 +81,8 @@ struct stin_context {
                                * draws elsewhere mid-frame (maps) binds it back */
     unsigned char pass_channel; /* 0, or 1-4: the draws' passes write only R, G, B or A
                                  * (a light's channel of the visibility export) */
+    const stin__draw *sorted_draw; /* "sorted", shadowed: the blended draw the shade
+                                    * function lights (frame/frame.c) */
     GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
     struct {                  /* the frame's framebuffer (gl/framebuffer_probe.c) */
         GLuint name;          /* the one probed last (0 = default) */
@@ -99,11 +103,18 @@ struct stin_context {
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
     struct {                  /* the displacement choice as the layers below render
-                               * read it (stin__displace_hand_down) */
+                               * read it (stin__displace_hand_down), the frame's
+                               * scale as the chunk reads it, and its log
+                               * (render/displace_chunk.c) */
         int displace;         /* vertex stages splice displace.glsl, not
                                * displace_none.glsl (gl/shader.c), and height maps
                                * get a mip chain for it (assets/texture.c) */
         int tessellate;       /* programs asked to tessellate are (gl/shader.c) */
+        float tess[4];        /* the frame's u_tess (gl4/tess.tesc); [0] and [3] serve
+                               * the mip level too (stin__displace_frame_scale) */
+        float tess_eye[3];    /* the camera's eye */
+        uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
+        uint32_t logged_count;
     } vertex_chunk;
     /* Meshes get adjacency buffers for the shadows module that asked
      * (stin__mesh_adjacency_use): what a mesh without one gets, for the
@@ -115,18 +126,21 @@ struct stin_context {
      * folder (a *_private.h no other folder includes) and says its size; the
      * frame lays them out in the caller's block (stin__state_slots). */
     struct stin__volume_state *volume;
+    struct stin__deep_state *deep;    /* translucent shadows' deep maps (translucent/deep.c) */
+    struct stin__coloured_state *coloured; /* their colour maps (translucent/coloured.c) */
+    struct stin__peel_state *peel; /* transparency's camera layers (transparency/peel.c) */
+    struct stin__dot3_state *dot3; /* DOT3 bump mapping (surface/dot3.c) */
+    struct stin__surf_glsl_state *surf_glsl; /* GLSL surface detail (surface/glsl.c) */
+    struct stin__displace_state *displace; /* displacement's frame (surface/displace.c) */
+    struct stin__export_state *visibility; /* the visibility map (post/visibility_export.c) */
+    struct stin__outline_state *outline;   /* the deferred outline (post/outline.c) */
 
     /* shadow technique modules: each owns its part */
     stin__map_fixed_state map_fixed;
     stin__map_pcf_state map_pcf;
     stin__mask_state mask;
     stin__vdsm_state vdsm;
-    stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
-    stin__outline_state outline;   /* the deferred outline (post/outline.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
-    stin__deep_state deep;    /* translucent shadows' deep maps (translucent/deep.c) */
-    stin__coloured_state coloured; /* translucent shadows' colour maps (translucent/coloured.c) */
-    stin__peel_state peel;    /* transparency's camera layers (transparency/peel.c) */
     stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
 
     /* surface detail */
@@ -140,9 +154,6 @@ struct stin_context {
         float packed[4 * 4 * STIN__LIGHTS_PER_PASS]; /* the lights last uploaded */
         int light_n, with_ambient;
         uint32_t light_key;   /* their stin__lit_lights_key */
-        int units_bound;      /* the surface units hold textures this frame */
-        uint32_t logged[STIN__SURF_LOG_KEYS]; /* per-material step-downs already logged */
-        uint32_t logged_count;
     } glsl_surface;
     stin__lit_cache lit_cache; /* lit programs per light batch and material */
     struct {                  /* "displace-tess": the programs above, tessellated
@@ -152,22 +163,6 @@ struct stin_context {
         stin__program lit[STIN__SURF_COUNT];
         int active;           /* they are in ctx->programs and glsl_surface.lit now */
     } glsl_tess;
-    struct {                  /* displacement (surface/displace.c,
-                               * render/displace_chunk.c) */
-        uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
-        uint32_t logged_count;
-        float tess[4];        /* the frame's u_tess (gl4/tess.tesc); [0] and [3] serve
-                               * the mip level too */
-        float tess_eye[3];    /* the camera's eye */
-        GLint caller_patch_vertices;
-        int tessellating;     /* this frame draws with the tessellated programs */
-    } displace;
-    struct {
-        GLuint cube;          /* normalisation cube map; 0 = DOT3 not in use */
-        GLenum dot3_rgb;      /* GL_DOT3_RGB (1.3/ARB) or GL_DOT3_RGB_EXT */
-        int units;            /* texture units (3 without an albedo texture, 4 with) */
-        int warned_scratch;   /* a mesh too big for the scratch was logged */
-    } dot3;
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);

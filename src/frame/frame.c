@@ -331,7 +331,7 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
     uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
     unsigned char masked[STIN__MAX_LIGHTS] = {0};
     stin_stage was = stin__times_enter(ctx, STIN_STAGE_SHADOW);
-    if (ctx->shadow->mask && ctx->mask.usable && path->lit_lights)
+    if (ctx->shadow->mask && stin__mask_usable(ctx) && path->lit_lights)
         (void)masked_lights(ctx, path, lights, visibility, masked);
     for (li = 0; li < lights; li++)
         if (!masked[li]) {
@@ -360,7 +360,7 @@ static void shade_sorted(stin_context *ctx, const stin__path *path, const stin_l
 {
     stin_stage was = stin__times_enter(ctx, STIN_STAGE_LIGHTING);
     (void)weight;
-    path->blended_one(ctx, ctx->peel.sorted_draw, l);
+    path->blended_one(ctx, ctx->sorted_draw, l);
     (void)stin__times_enter(ctx, was);
 }
 
@@ -376,7 +376,7 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (d->material.color[3] >= 1.0f)
             continue;
-        ctx->peel.sorted_draw = d;
+        ctx->sorted_draw = d;
         path->blended_one(ctx, d, NULL);
         for (li = 0; li < ctx->light_count; li++) {
             translucent_light(ctx, li);
@@ -390,7 +390,7 @@ static void sorted_shadowed(stin_context *ctx, const stin__path *path)
             stin__translucent_light_done(ctx);
         }
     }
-    ctx->peel.sorted_draw = NULL;
+    ctx->sorted_draw = NULL;
 }
 
 /* Peeled layers: each lit by the same stages as the opaque draws

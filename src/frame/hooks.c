@@ -56,6 +56,7 @@ static const stin__path_feature transparency_feature = {
     .locate = stin__peel_locate,
     .uniforms = stin__peel_uniforms,
     .camera_set = stin__peel_camera_set,
+    .in_layer = stin__peel_in_layer,
 };
 
 /* In the order the paths call them: locations and uniforms translucent's,

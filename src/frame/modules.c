@@ -24,6 +24,14 @@ static const struct {
 #define SLOT(member, bytes, place) {offsetof(stin_context, member), bytes, place}
 const stin__state_slot stin__state_slots[] = {
     SLOT(volume, stin__volume_state_bytes, NULL),
+    SLOT(deep, stin__deep_state_bytes, NULL),
+    SLOT(coloured, stin__coloured_state_bytes, NULL),
+    SLOT(peel, stin__peel_state_bytes, NULL),
+    SLOT(dot3, stin__dot3_state_bytes, NULL),
+    SLOT(surf_glsl, stin__surf_glsl_state_bytes, NULL),
+    SLOT(displace, stin__displace_state_bytes, NULL),
+    SLOT(visibility, stin__export_state_bytes, NULL),
+    SLOT(outline, stin__outline_state_bytes, NULL),
 };
 #undef SLOT
 const size_t stin__state_slot_count = sizeof stin__state_slots / sizeof stin__state_slots[0];

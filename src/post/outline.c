@@ -12,6 +12,27 @@
 #define DEFAULT_NORMAL_EDGE 1.0f
 #define DEFAULT_DEPTH_EDGE 0.02f
 
+typedef struct stin__outline_state {
+    GLuint program;  /* 0: the context cannot outline */
+    GLint u_normal, u_depth, u_inverse_projection, u_viewport, u_texel, u_params, u_color;
+} stin__outline_state;
+
+static const stin__uniform_name outline_uniforms[] = {
+    STIN__UNIFORM(stin__outline_state, u_normal, "u_normal"),
+    STIN__UNIFORM(stin__outline_state, u_depth, "u_depth"),
+    STIN__UNIFORM(stin__outline_state, u_inverse_projection, "u_inverse_projection"),
+    STIN__UNIFORM(stin__outline_state, u_viewport, "u_viewport"),
+    STIN__UNIFORM(stin__outline_state, u_texel, "u_texel"),
+    STIN__UNIFORM(stin__outline_state, u_params, "u_params"),
+    STIN__UNIFORM(stin__outline_state, u_color, "u_color"),
+};
+
+size_t stin__outline_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(stin__outline_state);
+}
+
 static int glsl_tier(const stin_context *ctx, int *gl4)
 {
     stin_technique t = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique;
@@ -21,17 +42,17 @@ static int glsl_tier(const stin_context *ctx, int *gl4)
 
 int stin__outline_supported(const stin_context *ctx)
 {
-    return ctx->outline.program != 0 && ctx->mask.drawable;
+    return ctx->outline->program != 0 && stin__mask_available(ctx);
 }
 
 void stin__outline_init(stin_context *ctx)
 {
-    stin__outline_state *o = &ctx->outline;
+    stin__outline_state *o = ctx->outline;
     const char *chunks[2] = {NULL, NULL};
     char msg[160];
     int gl4;
     stin__memzero(o, sizeof *o);
-    if (!glsl_tier(ctx, &gl4) || !ctx->mask.drawable)
+    if (!glsl_tier(ctx, &gl4) || !stin__mask_available(ctx))
         return;
     chunks[0] = gl4 ? "gl4/outline.glsl" : "gl2/outline.glsl";
     msg[0] = '\0';
@@ -44,22 +65,14 @@ void stin__outline_init(stin_context *ctx)
                   "are refused", msg);
         return;
     }
-#define LOC(field, name) o->field = GL(ctx, GetUniformLocation)(o->program, name)
-    LOC(u_normal, "u_normal");
-    LOC(u_depth, "u_depth");
-    LOC(u_inverse_projection, "u_inverse_projection");
-    LOC(u_viewport, "u_viewport");
-    LOC(u_texel, "u_texel");
-    LOC(u_params, "u_params");
-    LOC(u_color, "u_color");
-#undef LOC
+    STIN__LOCATE(ctx, o->program, o, outline_uniforms);
 }
 
 void stin__outline_release(stin_context *ctx)
 {
-    if (ctx->outline.program)
-        GL(ctx, DeleteProgram)(ctx->outline.program);
-    ctx->outline.program = 0;
+    if (ctx->outline->program)
+        GL(ctx, DeleteProgram)(ctx->outline->program);
+    ctx->outline->program = 0;
 }
 
 /* The surfaces' normals and depth in the mask: false where it cannot be
@@ -76,7 +89,7 @@ static int draw_normals(stin_context *ctx, const stin__path *path)
     GL(ctx, ClearDepth)(1.0);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    ctx->draw_fbo = ctx->mask.fbo;
+    ctx->draw_fbo = stin__mask_target_of(ctx).fbo;
     stin__resolved_depth_again(ctx, path);
     path->normals(ctx);
     stin__mask_frame_end(ctx); /* the mask's depth is no longer the frame's opaque one */
@@ -86,9 +99,10 @@ static int draw_normals(stin_context *ctx, const stin__path *path)
 
 void stin__outline_stage(stin_context *ctx, const stin__path *path)
 {
-    stin__outline_state *o = &ctx->outline;
+    stin__outline_state *o = ctx->outline;
     const stin_frame_desc *f = &ctx->frame;
     const int *vp = f->viewport;
+    stin__mask_target mask;
     stin__pass_state ps = stin__pass_defaults;
     float inverse[16], viewport[4], texel[4], params[4], color[4];
     int k;
@@ -108,8 +122,9 @@ void stin__outline_stage(stin_context *ctx, const stin__path *path)
     ps.blend_src = GL_SRC_ALPHA;
     ps.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
     stin__pass_apply(ctx, &ps);
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->mask.color);
-    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->mask.depth_stencil);
+    mask = stin__mask_target_of(ctx);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, mask.color);
+    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, mask.depth_stencil);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (k = 0; k < 4; k++) {
         viewport[k] = (float)vp[k];
@@ -117,8 +132,8 @@ void stin__outline_stage(stin_context *ctx, const stin__path *path)
     }
     if (color[0] == 0.0f && color[1] == 0.0f && color[2] == 0.0f && color[3] == 0.0f)
         color[3] = 1.0f; /* the default: opaque black */
-    texel[0] = 1.0f / (float)ctx->mask.width;
-    texel[1] = 1.0f / (float)ctx->mask.height;
+    texel[0] = 1.0f / (float)mask.width;
+    texel[1] = 1.0f / (float)mask.height;
     texel[2] = texel[3] = 0.0f;
     params[0] = f->outline_normal_edge > 0.0f ? f->outline_normal_edge : DEFAULT_NORMAL_EDGE;
     params[1] = f->outline_depth_edge > 0.0f ? f->outline_depth_edge : DEFAULT_DEPTH_EDGE;

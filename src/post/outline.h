@@ -10,11 +10,8 @@
 #include "gl/gl_types.h"
 #include "render/path.h"
 
-typedef struct stin__outline_state {
-    GLuint program;  /* 0: the context cannot outline */
-    GLint u_normal, u_depth, u_inverse_projection, u_viewport, u_texel, u_params, u_color;
-} stin__outline_state;
-
+/* Bytes of the outline's private state (post/outline.c). */
+size_t stin__outline_state_bytes(const stin_desc *d);
 /* Whether frames may ask for an outline (GLSL lighting, framebuffer
  * objects, packed depth-stencil and the program built). */
 int stin__outline_supported(const stin_context *ctx);

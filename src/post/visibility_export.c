@@ -16,6 +16,22 @@
 /* R, G and B: a fixed-function pass's alpha is its shadow test's (map-combine) */
 #define LIGHTS_PER_TILE 3
 
+typedef struct stin__export_state {
+    GLuint texture;
+    int width, height;           /* allocated texels (0: not yet) */
+    int tile_width, tile_height; /* of the last export */
+    uint32_t lights;             /* lights in the map */
+    uint32_t transmittance_tile; /* the first light's transmittance tile (0: none) */
+    int valid;                   /* the last frame exported */
+    int said_size;               /* lights left out for the map's size were logged */
+} stin__export_state;
+
+size_t stin__export_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(stin__export_state);
+}
+
 /* The map is drawn through the screen mask, so it needs what the mask does. */
 int stin__export_supported(const stin_context *ctx)
 {
@@ -24,16 +40,16 @@ int stin__export_supported(const stin_context *ctx)
 
 void stin__export_release(stin_context *ctx)
 {
-    if (ctx->visibility.texture)
-        GL(ctx, DeleteTextures)(1, &ctx->visibility.texture);
-    stin__memzero(&ctx->visibility, sizeof ctx->visibility);
+    if (ctx->visibility->texture)
+        GL(ctx, DeleteTextures)(1, &ctx->visibility->texture);
+    stin__memzero(ctx->visibility, sizeof *ctx->visibility);
 }
 
 /* How many of `tiles` fit the context's largest texture, the map grown to
  * hold them; 0 when not even one does. */
 static uint32_t ensure_map(stin_context *ctx, int tile_w, int tile_h, uint32_t tiles)
 {
-    stin__export_state *e = &ctx->visibility;
+    stin__export_state *e = ctx->visibility;
     int max = ctx->caps.max_texture_size > 0 ? ctx->caps.max_texture_size : 1 << 30;
     uint32_t fit = tiles;
     int cols, rows, w, h;
@@ -56,13 +72,8 @@ static uint32_t ensure_map(stin_context *ctx, int tile_w, int tile_h, uint32_t t
         h = e->height;
     if (!e->texture)
         GL(ctx, GenTextures)(1, &e->texture);
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, e->texture);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    GL_ENUM(ctx, TexImage2D, GL_RGBA8)(GL_TEXTURE_2D, 0, GL_RGBA8, w, h, 0, GL_RGBA,
-                                        GL_UNSIGNED_BYTE, NULL);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, e->texture); /* on unit 0, counted as the frame's */
+    stin__rt_texture(ctx, e->texture, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
     e->width = w;
     e->height = h;
     return fit;
@@ -103,7 +114,7 @@ static void export_light(stin_context *ctx, const stin__path *path, uint32_t li,
 
 void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
 {
-    stin__export_state *e = &ctx->visibility;
+    stin__export_state *e = ctx->visibility;
     const int *vp = ctx->frame.viewport;
     int tile_w = vp[0] + vp[2], tile_h = vp[1] + vp[3];
     uint32_t groups = (ctx->light_count + LIGHTS_PER_TILE - 1) / LIGHTS_PER_TILE, fit, g, want;
@@ -145,7 +156,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
             e->valid = 0; /* logged by the mask */
             break;
         }
-        ctx->draw_fbo = ctx->mask.fbo;
+        ctx->draw_fbo = stin__mask_target_of(ctx).fbo;
         for (li = LIGHTS_PER_TILE * g; li < ctx->light_count && li < LIGHTS_PER_TILE * (g + 1);
              li++)
             export_light(ctx, path, li, (int)(li - LIGHTS_PER_TILE * g), shadowed);
@@ -161,7 +172,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
             e->valid = 0;
             break;
         }
-        ctx->draw_fbo = ctx->mask.fbo;
+        ctx->draw_fbo = stin__mask_target_of(ctx).fbo;
         export_transmittance(ctx, path, g);
         stin__bind_unit(ctx, 0, GL_TEXTURE_2D, e->texture);
         GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, (GLint)(tile % TILES_PER_ROW) * tile_w,
@@ -183,7 +194,7 @@ stin_result stin_query_visibility_map(const stin_context *ctx, stin_visibility_m
     const stin__export_state *e;
     if (!ctx || !out)
         return STIN_ERROR_INVALID_ARGUMENT;
-    e = &ctx->visibility;
+    e = ctx->visibility;
     if (ctx->state != STIN__IDLE || !e->valid)
         return STIN_ERROR_INVALID_STATE;
     out->texture = e->texture;
@@ -208,7 +219,7 @@ stin_result stin_bind_visibility(stin_context *ctx, int unit)
     int units, glsl;
     if (!ctx)
         return STIN_ERROR_INVALID_ARGUMENT;
-    e = &ctx->visibility;
+    e = ctx->visibility;
     units = ctx->caps.max_texture_image_units > ctx->caps.max_texture_units
                 ? ctx->caps.max_texture_image_units
                 : ctx->caps.max_texture_units;

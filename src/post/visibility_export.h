@@ -11,16 +11,8 @@
 #include "gl/gl_types.h"
 #include "render/path.h"
 
-typedef struct stin__export_state {
-    GLuint texture;
-    int width, height;           /* allocated texels (0: not yet) */
-    int tile_width, tile_height; /* of the last export */
-    uint32_t lights;             /* lights in the map */
-    uint32_t transmittance_tile; /* the first light's transmittance tile (0: none) */
-    int valid;                   /* the last frame exported */
-    int said_size;               /* lights left out for the map's size were logged */
-} stin__export_state;
-
+/* Bytes of the export's private state (post/visibility_export.c). */
+size_t stin__export_state_bytes(const stin_desc *d);
 /* The context can export (framebuffer objects, packed depth-stencil). */
 int stin__export_supported(const stin_context *ctx);
 /* The stage: with the frame's target bound, and bound again after. */

@@ -66,6 +66,12 @@ void stin__displace_locate(stin_context *ctx, GLuint program, int camera, stin__
     out->camera = camera;
 }
 
+void stin__displace_frame_scale(stin_context *ctx, const float tess[4], const float eye[3])
+{
+    stin__memcopy(ctx->vertex_chunk.tess, tess, sizeof ctx->vertex_chunk.tess);
+    stin__memcopy(ctx->vertex_chunk.tess_eye, eye, sizeof ctx->vertex_chunk.tess_eye);
+}
+
 /* Once per (mesh, height map): a mesh whose edges span many texels of the
  * map shows its facets, not the relief. */
 static void log_coarse(stin_context *ctx, const stin__draw *d, const stin__texture_slot *t)
@@ -75,12 +81,13 @@ static void log_coarse(stin_context *ctx, const stin__draw *d, const stin__textu
     uint32_t key = (d->mesh_slot * 2654435761u) ^ t->name, i;
     if (texels <= COARSE_TEXELS)
         return;
-    for (i = 0; i < ctx->displace.logged_count; i++)
-        if (ctx->displace.logged[i] == key)
+    for (i = 0; i < ctx->vertex_chunk.logged_count; i++)
+        if (ctx->vertex_chunk.logged[i] == key)
             return;
-    if (ctx->displace.logged_count == sizeof ctx->displace.logged / sizeof ctx->displace.logged[0])
+    if (ctx->vertex_chunk.logged_count ==
+        sizeof ctx->vertex_chunk.logged / sizeof ctx->vertex_chunk.logged[0])
         return;
-    ctx->displace.logged[ctx->displace.logged_count++] = key;
+    ctx->vertex_chunk.logged[ctx->vertex_chunk.logged_count++] = key;
     stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
               "displace: a mesh of %u vertices is coarse for its %ux%u height map (edges span "
               "%d texels on average): the relief shows only at the vertices (subdivide it: "
@@ -103,10 +110,10 @@ static void lod_params(const stin_context *ctx, const stin__draw *d,
     float size = (float)(t->width > t->height ? t->width : t->height);
     float per_unit = m->edge > 0.0f && scale > 0.0f ? size * m->uv_edge / (m->edge * scale) : 0.0f;
     int on = t->lod_name && !(ctx->desc.debug_flags & STIN_DEBUG_DISPLACE_NO_MIP) &&
-             ctx->displace.tess[0] > 0.0f && per_unit > 0.0f;
-    out[0] = on ? per_unit / ctx->displace.tess[0] : 0.0f;
+             ctx->vertex_chunk.tess[0] > 0.0f && per_unit > 0.0f;
+    out[0] = on ? per_unit / ctx->vertex_chunk.tess[0] : 0.0f;
     out[1] = on ? (float)t->lod_top : 0.0f;
-    out[2] = ctx->displace.tess[3];
+    out[2] = ctx->vertex_chunk.tess[3];
     out[3] = 0.0f;
 }
 
@@ -142,10 +149,10 @@ void stin__displace_draw(stin_context *ctx, const stin__displace_locs *l, const 
         GL(ctx, UniformMatrix4fv)(l->clip, 1, GL_FALSE, ctx->view_proj);
     lod_params(ctx, d, t, lod);
     GL(ctx, Uniform4fv)(l->lod, 1, lod);
-    GL(ctx, Uniform3fv)(l->eye, 1, ctx->displace.tess_eye);
+    GL(ctx, Uniform3fv)(l->eye, 1, ctx->vertex_chunk.tess_eye);
     if (l->patches) {
-        GL(ctx, Uniform4fv)(l->tess, 1, ctx->displace.tess);
-        GL(ctx, Uniform3fv)(l->tess_eye, 1, ctx->displace.tess_eye);
+        GL(ctx, Uniform4fv)(l->tess, 1, ctx->vertex_chunk.tess);
+        GL(ctx, Uniform3fv)(l->tess_eye, 1, ctx->vertex_chunk.tess_eye);
     }
     GL(ctx, Uniform1i)(l->map, ctx->sel.displace_unit);
     stin__bind_unit(ctx, ctx->sel.displace_unit, GL_TEXTURE_2D, lod[1] > 0.0f ? t->lod_name : t->name);

@@ -27,6 +27,10 @@ void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why
  * without tessellation ("displace"), the step down logged with why, so the
  * layer need not name displacement's techniques. */
 void stin__displace_untessellate(stin_context *ctx, const char *why);
+/* The frame's tessellation scale (gl4/tess.tesc's u_tess; [0] and [3] serve
+ * the mip level too) and the camera's eye, which every draw's chunk gets:
+ * set by displacement at the frame's start (surface/displace.c). */
+void stin__displace_frame_scale(stin_context *ctx, const float tess[4], const float eye[3]);
 /* What a program's mesh draws are: GL_PATCHES (tessellated) or GL_TRIANGLES. */
 GLenum stin__displace_primitive(const stin__displace_locs *l);
 /* 1 when this material's draws are displaced. */

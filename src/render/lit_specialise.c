@@ -82,7 +82,7 @@ const stin__program *stin__lit_specialised(stin_context *ctx, const stin__progra
     uint32_t key = lights_key | (albedo_tex ? KEY_ALBEDO : 0u) |
                    ((uint32_t)variant << KEY_VARIANT_SHIFT) |
                    (ctx->glsl_tess.active ? KEY_TESS : 0u) |
-                   (ctx->peel.peeling ? KEY_PEEL : 0u);
+                   (stin__in_peeled_layer(ctx) ? KEY_PEEL : 0u);
     char defines[256], msg[160];
     uint32_t i;
     int slot;

@@ -48,6 +48,15 @@ int stin__camera_set(const stin_context *ctx, const stin__draw *d)
     return d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE;
 }
 
+int stin__in_peeled_layer(const stin_context *ctx)
+{
+    const stin__path_feature *const *f;
+    for (f = stin__path_features(ctx); *f; f++)
+        if ((*f)->in_layer && (*f)->in_layer(ctx))
+            return 1;
+    return 0;
+}
+
 int stin__light_maps_active(const stin_context *ctx)
 {
     const stin__path_feature *const *f;

@@ -71,6 +71,8 @@ typedef struct stin__path_feature {
     /* ---- camera passes ---- */
     /* Which of STIN__OPAQUE / STIN__BLENDED a camera pass counts draw d in. */
     int (*camera_set)(const stin_context *ctx, const stin__draw *d);
+    /* Whether the camera passes draw a peeled layer now (its chunk at work). */
+    int (*in_layer)(const stin_context *ctx);
 
     /* ---- a light's own maps, read by the chunk (place SEAM) ---- */
     /* Lights get them this frame (then they are lit one per pass). */
@@ -90,6 +92,9 @@ int stin__lit_variant_for(stin_context *ctx, const stin_material *m);
 /* Which of STIN__OPAQUE / STIN__BLENDED a camera pass counts draw d in: the
  * first feature's answer that has one, else by the material's opacity. */
 int stin__camera_set(const stin_context *ctx, const stin__draw *d);
+/* Whether a peeled layer is drawn now (any feature's): its passes leave the
+ * CSG faces out and its lit programs keep the layer chunk. */
+int stin__in_peeled_layer(const stin_context *ctx);
 /* Whether lights get maps of their own this frame (any feature's); every
  * feature's for light li made now, and done after the light's pass. */
 int stin__light_maps_active(const stin_context *ctx);

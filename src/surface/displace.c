@@ -11,6 +11,17 @@
  * carries is render/displace_chunk.c's. */
 #include "internal.h"
 
+struct stin__displace_state {
+    GLint caller_patch_vertices;
+    int tessellating;     /* this frame draws with the tessellated programs */
+};
+
+size_t stin__displace_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__displace_state);
+}
+
 /* 1 when a draw of the frame is displaced. */
 static int frame_displaces(const stin_context *ctx)
 {
@@ -24,44 +35,44 @@ static int frame_displaces(const stin_context *ctx)
 void stin__displace_frame_begin(stin_context *ctx)
 {
     const float *view = ctx->frame.view, *proj = ctx->frame.projection;
-    float inv[16];
+    float inv[16], tess[4], eye[3];
     GLint levels = ctx->caps.max_tess_gen_level > 0 ? ctx->caps.max_tess_gen_level : 64;
+    GLint cap = (GLint)ctx->desc.displacement.tess_max;
     int k;
     if (!stin__displace_built(ctx))
         return;
     /* pixels a unit spans at eye distance 1 (perspective) or anywhere
      * (orthographic): the projection's y scale over half the viewport */
-    ctx->displace.tess[0] = proj[5] * 0.5f * (float)ctx->frame.viewport[3];
-    ctx->displace.tess[1] = ctx->desc.displacement.tess_pixels;
-    ctx->displace.tess[2] = (float)((GLint)ctx->desc.displacement.tess_max < levels
-                                        ? (GLint)ctx->desc.displacement.tess_max
-                                        : levels);
-    ctx->displace.tess[3] = proj[11] != 0.0f ? 1.0f : 0.0f;
+    tess[0] = proj[5] * 0.5f * (float)ctx->frame.viewport[3];
+    tess[1] = ctx->desc.displacement.tess_pixels;
+    tess[2] = (float)(cap < levels ? cap : levels);
+    tess[3] = proj[11] != 0.0f ? 1.0f : 0.0f;
     if (!stin__mat4_invert(inv, view))
         stin__mat4_identity(inv); /* begin checked the view: not reached */
     for (k = 0; k < 3; k++)
-        ctx->displace.tess_eye[k] = inv[12 + k];
+        eye[k] = inv[12 + k];
+    stin__displace_frame_scale(ctx, tess, eye);
     if (!stin__displace_tessellated(ctx) || !frame_displaces(ctx))
         return;
     /* only frames with displaced draws pay for tessellation stages */
     stin__glsl_tessellate(ctx, 1);
     if (ctx->shadow->tessellate)
         ctx->shadow->tessellate(ctx, 1);
-    ctx->displace.tessellating = 1;
-    GL(ctx, GetIntegerv)(GL_PATCH_VERTICES, &ctx->displace.caller_patch_vertices);
+    ctx->displace->tessellating = 1;
+    GL(ctx, GetIntegerv)(GL_PATCH_VERTICES, &ctx->displace->caller_patch_vertices);
     GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, 3);
 }
 
 void stin__displace_frame_end(stin_context *ctx)
 {
-    if (!ctx->displace.tessellating)
+    if (!ctx->displace->tessellating)
         return;
     stin__glsl_tessellate(ctx, 0);
     if (ctx->shadow->tessellate)
         ctx->shadow->tessellate(ctx, 0);
-    ctx->displace.tessellating = 0;
-    if (ctx->displace.caller_patch_vertices > 0)
-        GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, ctx->displace.caller_patch_vertices);
+    ctx->displace->tessellating = 0;
+    if (ctx->displace->caller_patch_vertices > 0)
+        GL(ctx, PatchParameteri)(GL_PATCH_VERTICES, ctx->displace->caller_patch_vertices);
 }
 
 /* Selection kept displacement from what it conflicts with (the technique
@@ -71,7 +82,6 @@ void stin__displace_init(stin_context *ctx)
 {
     stin_technique clash = stin__choice_conflict(&ctx->sel, STIN_FEATURE_DISPLACEMENT);
     char why[200];
-    ctx->displace.logged_count = 0;
     if (!stin__displace_built(ctx) || clash == STIN_TECH_NONE)
         return;
     stin__formatf(why, sizeof why,

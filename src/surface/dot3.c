@@ -38,6 +38,19 @@
 #define CUBE_SIZE 32u
 #define FLOATS_PER_VERTEX 6u /* tangent-space light vector, lighting normal */
 
+struct stin__dot3_state {
+    GLuint cube;          /* normalisation cube map; 0 = DOT3 not in use */
+    GLenum dot3_rgb;      /* GL_DOT3_RGB (1.3/ARB) or GL_DOT3_RGB_EXT */
+    int units;            /* texture units (3 without an albedo texture, 4 with) */
+    int warned_scratch;   /* a mesh too big for the scratch was logged */
+};
+
+size_t stin__dot3_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__dot3_state);
+}
+
 /* ---- cube map ------------------------------------------------------------ */
 
 /* GL's cube-map face selection (GL 1.3, table 3.19) inverted: the direction
@@ -111,7 +124,7 @@ stin_result stin__dot3_init(stin_context *ctx)
     unsigned char *buf = ctx->staging_bytes >= ctx->scratch_bytes ? ctx->staging : ctx->scratch;
     size_t buf_bytes = ctx->staging_bytes >= ctx->scratch_bytes ? ctx->staging_bytes
                                                                  : ctx->scratch_bytes;
-    stin__memzero(&ctx->dot3, sizeof ctx->dot3);
+    stin__memzero(ctx->dot3, sizeof *ctx->dot3);
     if (ctx->sel.choice[STIN_FEATURE_SURFACE].technique != STIN_TECH_SURFACE_DOT3)
         return STIN_OK;
     while (size > 8u && 4u * size * size > buf_bytes)
@@ -121,14 +134,14 @@ stin_result stin__dot3_init(stin_context *ctx)
                       "the context has %zu", 4u * size * size, buf_bytes);
         return fall_back(ctx, why);
     }
-    ctx->dot3.units = ctx->sel.shadow_unit; /* 3, or 4 where selection spared one (albedo) */
-    ctx->dot3.dot3_rgb = ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 13 ||
-                                 stin_query_extension(ctx, "GL_ARB_texture_env_dot3")
-                             ? GL_DOT3_RGB
-                             : GL_DOT3_RGB_EXT;
-    GL(ctx, GenTextures)(1, &ctx->dot3.cube);
+    ctx->dot3->units = ctx->sel.shadow_unit; /* 3, or 4 where selection spared one (albedo) */
+    ctx->dot3->dot3_rgb = ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 13 ||
+                                  stin_query_extension(ctx, "GL_ARB_texture_env_dot3")
+                              ? GL_DOT3_RGB
+                              : GL_DOT3_RGB_EXT;
+    GL(ctx, GenTextures)(1, &ctx->dot3->cube);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    GL_ENUM(ctx, BindTexture, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, ctx->dot3.cube);
+    GL_ENUM(ctx, BindTexture, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, ctx->dot3->cube);
     GL_ENUM(ctx, TexParameteri, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER,
                                                      GL_LINEAR);
     GL_ENUM(ctx, TexParameteri, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER,
@@ -150,17 +163,17 @@ stin_result stin__dot3_init(stin_context *ctx)
 
 void stin__dot3_release(stin_context *ctx)
 {
-    if (ctx->dot3.cube)
-        GL(ctx, DeleteTextures)(1, &ctx->dot3.cube);
-    ctx->dot3.cube = 0;
+    if (ctx->dot3->cube)
+        GL(ctx, DeleteTextures)(1, &ctx->dot3->cube);
+    ctx->dot3->cube = 0;
 }
 
 int stin__dot3_bumped(const stin_context *ctx, const stin_material *m)
 {
-    if (!ctx->dot3.cube || m->color[3] < 1.0f || !stin__texture_lookup(ctx, m->normal_map) ||
+    if (!ctx->dot3->cube || m->color[3] < 1.0f || !stin__texture_lookup(ctx, m->normal_map) ||
         m->surface == STIN_TECH_SURFACE_PLAIN) /* the material asks for no bump */
         return 0;
-    return ctx->dot3.units >= (stin__texture_lookup(ctx, m->albedo) ? 4 : 3);
+    return ctx->dot3->units >= (stin__texture_lookup(ctx, m->albedo) ? 4 : 3);
 }
 
 void stin__dot3_material(stin_context *ctx, const stin_material *m)
@@ -314,7 +327,7 @@ static void setup_units(stin_context *ctx)
     unit(ctx, 0); /* normalised light vector */
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     GL_ENABLE(ctx, GL_TEXTURE_CUBE_MAP);
-    GL_ENUM(ctx, BindTexture, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, ctx->dot3.cube);
+    GL_ENUM(ctx, BindTexture, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, ctx->dot3->cube);
     env(ctx, GL_TEXTURE_ENV_MODE, GL_COMBINE);
     env(ctx, GL_COMBINE_RGB, GL_REPLACE);
     env(ctx, GL_SOURCE0_RGB, GL_TEXTURE);
@@ -327,7 +340,7 @@ static void setup_units(stin_context *ctx)
     unit(ctx, 1); /* N . L */
     GL_ENABLE(ctx, GL_TEXTURE_2D);
     env(ctx, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-    env(ctx, GL_COMBINE_RGB, ctx->dot3.dot3_rgb);
+    env(ctx, GL_COMBINE_RGB, ctx->dot3->dot3_rgb);
     env(ctx, GL_SOURCE0_RGB, GL_TEXTURE);
     env(ctx, GL_OPERAND0_RGB, GL_SRC_COLOR);
     env(ctx, GL_SOURCE1_RGB, GL_PREVIOUS);
@@ -352,7 +365,7 @@ static void setup_units(stin_context *ctx)
 
     client_unit(ctx, 1);
     GL(ctx, EnableClientState)(GL_TEXTURE_COORD_ARRAY);
-    if (ctx->dot3.units >= 4) { /* times the albedo texture, per draw */
+    if (ctx->dot3->units >= 4) { /* times the albedo texture, per draw */
         unit(ctx, 3);
         env(ctx, GL_TEXTURE_ENV_MODE, GL_MODULATE);
         client_unit(ctx, 3);
@@ -364,7 +377,7 @@ static void setup_units(stin_context *ctx)
 static void restore_units(stin_context *ctx)
 {
     int u;
-    for (u = ctx->dot3.units - 1; u >= 0; u--) {
+    for (u = ctx->dot3->units - 1; u >= 0; u--) {
         unit(ctx, u);
         env(ctx, GL_TEXTURE_ENV_MODE, GL_MODULATE);
         if (u < 3) {
@@ -398,8 +411,8 @@ static void draw_plain_diffuse(stin_context *ctx, const stin__draw *d, const voi
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     const GLsizei stride = (GLsizei)sizeof(stin__vertex);
     const void *idx = m->vbo ? NULL : (const void *)(ctx->indices + 3u * m->first_triangle);
-    if (!ctx->dot3.warned_scratch) {
-        ctx->dot3.warned_scratch = 1;
+    if (!ctx->dot3->warned_scratch) {
+        ctx->dot3->warned_scratch = 1;
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "surface dot3: a mesh of %u vertices needs %lu frame scratch bytes, %zu available; "
                   "drawn with per-vertex diffuse", m->vertex_count,
@@ -449,7 +462,7 @@ static void draw_bumped(stin_context *ctx, const stin__draw *d, const float ligh
     GL(ctx, VertexPointer)(3, GL_FLOAT, stride, base);
     client_unit(ctx, 1);
     GL(ctx, TexCoordPointer)(2, GL_FLOAT, stride, at_offset(base, 24));
-    if (ctx->dot3.units >= 4) {
+    if (ctx->dot3->units >= 4) {
         client_unit(ctx, 3);
         GL(ctx, TexCoordPointer)(2, GL_FLOAT, stride, at_offset(base, 24));
         unit(ctx, 3);
@@ -520,7 +533,7 @@ static int passes(stin_context *ctx, const stin_light_desc *lights, int count)
     stin__pass_state saved, ps;
     int k, j, scale;
     uint32_t i;
-    if (count <= 0 || !ctx->dot3.cube || !any_bumped(ctx))
+    if (count <= 0 || !ctx->dot3->cube || !any_bumped(ctx))
         return 0;
     /* The caller's stencil test applies; its operations do not: the shadow
      * schedule increments where it lights (so coplanar fragments are lit

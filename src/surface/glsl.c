@@ -7,6 +7,20 @@
  * hold the GLSL. Texture units: albedo 0, normal map 1, height map 2. */
 #include "internal.h"
 
+#define LOG_KEYS 32 /* materials whose step down is logged once */
+
+struct stin__surf_glsl_state {
+    int units_bound;      /* the surface units hold textures this frame */
+    uint32_t logged[LOG_KEYS]; /* per-material step-downs already logged */
+    uint32_t logged_count;
+};
+
+size_t stin__surf_glsl_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__surf_glsl_state);
+}
+
 static const char *const variant_chunk[STIN__SURF_COUNT] = {
     "surface_plain.glsl", "surface_normal.glsl", "surface_parallax.glsl", "surface_pom.glsl"};
 
@@ -77,12 +91,12 @@ static void log_step_once(stin_context *ctx, const stin_material *m, int want, i
                           const char *why)
 {
     uint32_t key = step_key(m, want, got), i;
-    for (i = 0; i < ctx->glsl_surface.logged_count; i++)
-        if (ctx->glsl_surface.logged[i] == key)
+    for (i = 0; i < ctx->surf_glsl->logged_count; i++)
+        if (ctx->surf_glsl->logged[i] == key)
             return;
-    if (ctx->glsl_surface.logged_count == STIN__SURF_LOG_KEYS)
+    if (ctx->surf_glsl->logged_count == LOG_KEYS)
         return; /* said enough; the log stays quiet per frame */
-    ctx->glsl_surface.logged[ctx->glsl_surface.logged_count++] = key;
+    ctx->surf_glsl->logged[ctx->surf_glsl->logged_count++] = key;
     stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
               "surface: a material (normal map 0x%x, height map 0x%x) falls back from %s to %s: %s",
               m->normal_map.id, m->height_map.id, stin_technique_name(variant_tech[want]),
@@ -142,7 +156,7 @@ void stin__surf_material(stin_context *ctx, const stin__program *p, const stin_m
     bind_unit(ctx, 2, variant >= STIN__SURF_PARALLAX ? stin__texture_lookup(ctx, m->height_map)
                                                      : NULL);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    ctx->glsl_surface.units_bound = 1;
+    ctx->surf_glsl->units_bound = 1;
     s[0] = m->height_scale;
     s[1] = m->height_bias;
     s[2] = (float)m->pom_min_steps;
@@ -155,10 +169,10 @@ void stin__surf_material(stin_context *ctx, const stin__program *p, const stin_m
 
 void stin__surf_unbind(stin_context *ctx)
 {
-    if (!ctx->glsl_surface.units_bound)
+    if (!ctx->surf_glsl->units_bound)
         return;
     bind_unit(ctx, 2, NULL);
     bind_unit(ctx, 1, NULL);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    ctx->glsl_surface.units_bound = 0;
+    ctx->surf_glsl->units_bound = 0;
 }

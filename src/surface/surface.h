@@ -11,7 +11,10 @@
 
 /* The lit program's variants are render/path_features.h's STIN__SURF_*:
  * one program each (surface/glsl.c). */
-#define STIN__SURF_LOG_KEYS 32
+/* Bytes of each surface module's private state (defined in its .c file). */
+size_t stin__dot3_state_bytes(const stin_desc *d);
+size_t stin__surf_glsl_state_bytes(const stin_desc *d);
+size_t stin__displace_state_bytes(const stin_desc *d);
 
 /* ---- surface: DOT3 bump mapping on the fixed-function path (surface/dot3.c) ----
  * Draws whose material has a normal map get their diffuse term per pixel from

@@ -15,7 +15,7 @@
  * ray (a receiver between two panes takes both). No opaque depth is drawn:
  * a transparent caster behind an opaque one only tints points the shadows
  * technique already darkened fully (opaque casters stay its). */
-#include "internal.h"
+#include "translucent/translucent_private.h"
 
 #define ATLAS_COLUMNS 3
 #define ATLAS_ROWS 2
@@ -31,6 +31,12 @@ static int gl4(const stin_context *ctx)
     return ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
 }
 
+size_t stin__coloured_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(stin__coloured_state);
+}
+
 /* (Built before the set-up: with shadows off it will fall back.) */
 const char *stin__coloured_chunk(const stin_context *ctx)
 {
@@ -39,7 +45,7 @@ const char *stin__coloured_chunk(const stin_context *ctx)
 
 void stin__coloured_release(stin_context *ctx)
 {
-    stin__coloured_state *s = &ctx->coloured;
+    stin__coloured_state *s = ctx->coloured;
     if (s->color)
         GL(ctx, DeleteTextures)(1, &s->color);
     if (s->depth)
@@ -54,7 +60,7 @@ void stin__coloured_release(stin_context *ctx)
 /* The atlases and the framebuffer; "" or why they cannot be made. */
 static const char *make_targets(stin_context *ctx)
 {
-    stin__coloured_state *s = &ctx->coloured;
+    stin__coloured_state *s = ctx->coloured;
     GLsizei w = (GLsizei)(ATLAS_COLUMNS * s->size), h = (GLsizei)(ATLAS_ROWS * s->size);
     GLenum status;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
@@ -70,9 +76,17 @@ static const char *make_targets(stin_context *ctx)
     return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA8 + depth framebuffer is incomplete";
 }
 
+static const stin__uniform_name cast_uniforms[] = {
+    STIN__UNIFORM(stin__coloured_state, u_model, "u_model"),
+    STIN__UNIFORM(stin__coloured_state, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__coloured_state, u_albedo, "u_albedo"),
+    STIN__UNIFORM(stin__coloured_state, u_albedo_tex, "u_albedo_tex"),
+    STIN__UNIFORM(stin__coloured_state, u_has_albedo_tex, "u_has_albedo_tex"),
+};
+
 static int make_program(stin_context *ctx, char *msg, size_t size)
 {
-    stin__coloured_state *s = &ctx->coloured;
+    stin__coloured_state *s = ctx->coloured;
     stin__program_source src;
     stin__memzero(&src, sizeof src);
     src.vert = gl4(ctx) ? "gl4/deep_peel.vert" : "gl2/coloured_cast.vert";
@@ -80,18 +94,14 @@ static int make_program(stin_context *ctx, char *msg, size_t size)
     s->program = stin__program_build_source(ctx, &src, msg, size);
     if (!s->program)
         return 0;
-    s->u_model = GL(ctx, GetUniformLocation)(s->program, "u_model");
-    s->u_view_proj = GL(ctx, GetUniformLocation)(s->program, "u_view_proj");
-    s->u_albedo = GL(ctx, GetUniformLocation)(s->program, "u_albedo");
-    s->u_albedo_tex = GL(ctx, GetUniformLocation)(s->program, "u_albedo_tex");
-    s->u_has_albedo_tex = GL(ctx, GetUniformLocation)(s->program, "u_has_albedo_tex");
+    STIN__LOCATE(ctx, s->program, s, cast_uniforms);
     stin__displace_locate(ctx, s->program, 0, &s->displace);
     return 1;
 }
 
 void stin__coloured_init(stin_context *ctx)
 {
-    stin__coloured_state *s = &ctx->coloured;
+    stin__coloured_state *s = ctx->coloured;
     char msg[160], why[220];
     const char *fail = "";
     uint32_t largest = ctx->caps.max_texture_size > 0 ? (uint32_t)ctx->caps.max_texture_size : 0;
@@ -123,7 +133,7 @@ void stin__coloured_init(stin_context *ctx)
 
 void stin__coloured_uniforms(stin_context *ctx, const stin__program *p)
 {
-    const stin__coloured_state *s = &ctx->coloured;
+    const stin__coloured_state *s = ctx->coloured;
     float params[4];
     params[0] = (float)s->size;
     params[1] = s->normal_offset;
@@ -138,19 +148,19 @@ void stin__coloured_uniforms(stin_context *ctx, const stin__program *p)
 
 int stin__coloured_active(const stin_context *ctx)
 {
-    return ctx->coloured.ready && ctx->coloured.frame_transparent;
+    return ctx->coloured->ready && ctx->coloured->frame_transparent;
 }
 
 static void draw_transparent(stin_context *ctx)
 {
-    const stin__coloured_state *s = &ctx->coloured;
+    const stin__coloured_state *s = ctx->coloured;
     stin__translucent_draw_casters(ctx, s->u_model, s->u_albedo, s->u_has_albedo_tex, &s->displace);
 }
 
 /* One face into its cell of the atlas: the nearest depth, then the product. */
 static void draw_face(stin_context *ctx, int face, const float view[16], const float proj[16])
 {
-    stin__coloured_state *s = &ctx->coloured;
+    stin__coloured_state *s = ctx->coloured;
     stin__pass_state ps = stin__pass_defaults;
     float view_proj[16];
     stin__mat4_mul(view_proj, proj, view);
@@ -176,7 +186,7 @@ static void draw_face(stin_context *ctx, int face, const float view[16], const f
 
 void stin__coloured_light(stin_context *ctx, uint32_t li)
 {
-    stin__coloured_state *s = &ctx->coloured;
+    stin__coloured_state *s = ctx->coloured;
     stin__pass_state ps = stin__pass_defaults;
     s->kind = 0;
     if (!stin__coloured_active(ctx) || li >= ctx->light_count)
@@ -203,7 +213,7 @@ void stin__coloured_light(stin_context *ctx, uint32_t li)
 
 void stin__coloured_light_done(stin_context *ctx)
 {
-    stin__coloured_state *s = &ctx->coloured;
+    stin__coloured_state *s = ctx->coloured;
     if (!s->kind)
         return;
     s->kind = 0;

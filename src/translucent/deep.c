@@ -19,11 +19,17 @@
  * same with every layer peeled. Opaque casters
  * stay the shadows technique's; the lit programs multiply its visibility by
  * the deep map's (translucent_deep.glsl). */
-#include "internal.h"
+#include "translucent/translucent_private.h"
 
 #define EMPTY_DEPTH 2.0f /* beyond every window depth: an unused texel */
 
 uint32_t stin__deep_slices(uint32_t layers) { return (layers + 1u) / 2u; }
+
+size_t stin__deep_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(stin__deep_state);
+}
 
 static int chosen(const stin_context *ctx)
 {
@@ -38,7 +44,7 @@ const char *stin__deep_chunk(const stin_context *ctx)
 
 void stin__deep_release(stin_context *ctx)
 {
-    stin__deep_state *s = &ctx->deep;
+    stin__deep_state *s = ctx->deep;
     if (s->layers[0])
         GL(ctx, DeleteTextures)(2, s->layers);
     if (s->depth)
@@ -66,7 +72,7 @@ static void nearest_clamped(stin_context *ctx, GLenum target)
 /* The textures and the framebuffer; "" or why they cannot be made. */
 static const char *make_targets(stin_context *ctx)
 {
-    stin__deep_state *s = &ctx->deep;
+    stin__deep_state *s = ctx->deep;
     GLsizei n = (GLsizei)s->size, slices = (GLsizei)(STIN__DEEP_FACES * s->slices);
     GLenum status;
     int i;
@@ -80,16 +86,14 @@ static const char *make_targets(stin_context *ctx)
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D_ARRAY, 0);
     GL(ctx, GenTextures)(1, &s->depth);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, s->depth);
-    nearest_clamped(ctx, GL_TEXTURE_2D);
-    GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, n, n, 0,
-                                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    stin__rt_texture(ctx, s->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, n,
+                     n);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, GenFramebuffers)(1, &s->fbo);
+    /* the layer before the depth: the service attaches 2D textures only */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->layers[0], 0, 0);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, s->depth, 0);
-    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    status = stin__rt_attach(ctx, s->fbo, 0, s->depth, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     return status == GL_FRAMEBUFFER_COMPLETE ? "" : "its RGBA32F layer framebuffer is incomplete";
 }
@@ -102,12 +106,23 @@ static int flag_wanted(const stin_context *ctx)
            !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_QUERY_STOP);
 }
 
+static const stin__uniform_name peel_uniforms[] = {
+    STIN__UNIFORM(stin__deep_state, u_model, "u_model"),
+    STIN__UNIFORM(stin__deep_state, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__deep_state, u_albedo, "u_albedo"),
+    STIN__UNIFORM(stin__deep_state, u_albedo_tex, "u_albedo_tex"),
+    STIN__UNIFORM(stin__deep_state, u_has_albedo_tex, "u_has_albedo_tex"),
+    STIN__UNIFORM(stin__deep_state, u_previous, "u_previous"),
+    STIN__UNIFORM(stin__deep_state, u_previous_slice, "u_previous_slice"),
+    STIN__UNIFORM(stin__deep_state, u_mono, "u_mono"),
+};
+
 /* The peel program: with the storage flag (deep_peel_flag.frag) where it is
  * wanted and builds, else with the query's (deep_peel.frag). */
 static int make_program(stin_context *ctx, char *msg, size_t size)
 {
     static const char *const chunks[] = {"gl4/deep_peel_layer.glsl", NULL};
-    stin__deep_state *s = &ctx->deep;
+    stin__deep_state *s = ctx->deep;
     stin__program_source src;
     stin__memzero(&src, sizeof src);
     src.vert = "gl4/deep_peel.vert";
@@ -129,23 +144,14 @@ static int make_program(stin_context *ctx, char *msg, size_t size)
     }
     if (!s->program)
         return 0;
-#define LOC(field, name) s->field = GL(ctx, GetUniformLocation)(s->program, name)
-    LOC(u_model, "u_model");
-    LOC(u_view_proj, "u_view_proj");
-    LOC(u_albedo, "u_albedo");
-    LOC(u_albedo_tex, "u_albedo_tex");
-    LOC(u_has_albedo_tex, "u_has_albedo_tex");
-    LOC(u_previous, "u_previous");
-    LOC(u_previous_slice, "u_previous_slice");
-    LOC(u_mono, "u_mono");
-#undef LOC
+    STIN__LOCATE(ctx, s->program, s, peel_uniforms);
     stin__displace_locate(ctx, s->program, 0, &s->displace);
     return 1;
 }
 
 void stin__deep_init(stin_context *ctx)
 {
-    stin__deep_state *s = &ctx->deep;
+    stin__deep_state *s = ctx->deep;
     char msg[160], why[220];
     const char *fail = "";
     if (!chosen(ctx))
@@ -191,7 +197,7 @@ void stin__deep_init(stin_context *ctx)
 
 void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
 {
-    const stin__deep_state *s = &ctx->deep;
+    const stin__deep_state *s = ctx->deep;
     float params[4];
     int i;
     params[0] = (float)s->slices;
@@ -208,7 +214,7 @@ void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
 
 int stin__deep_active(const stin_context *ctx)
 {
-    return ctx->deep.ready && ctx->deep.frame_transparent;
+    return ctx->deep->ready && ctx->deep->frame_transparent;
 }
 
 /* The transparent draws through the peel program in the caller's order:
@@ -217,7 +223,7 @@ int stin__deep_active(const stin_context *ctx)
  * dependence). */
 static void draw_transparent(stin_context *ctx)
 {
-    const stin__deep_state *s = &ctx->deep;
+    const stin__deep_state *s = ctx->deep;
     stin__translucent_draw_casters(ctx, s->u_model, s->u_albedo, s->u_has_albedo_tex, &s->displace);
 }
 
@@ -262,7 +268,7 @@ static int face_reached(const stin_context *ctx, const float view_proj[16])
  * and one that does stops at its first empty layer. */
 static void peel_face(stin_context *ctx, int face, const float view[16], const float proj[16])
 {
-    stin__deep_state *s = &ctx->deep;
+    stin__deep_state *s = ctx->deep;
     int stop_early = (s->query || s->flag) && !(ctx->desc.debug_flags & STIN_DEBUG_DEEP_NO_EARLY_STOP);
     static const GLuint zero = 0;
     float view_proj[16];
@@ -313,7 +319,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
 
 void stin__deep_light(stin_context *ctx, uint32_t li)
 {
-    stin__deep_state *s = &ctx->deep;
+    stin__deep_state *s = ctx->deep;
     stin__pass_state ps = stin__pass_defaults;
     s->kind = 0;
     if (!stin__deep_active(ctx) || li >= ctx->light_count)
@@ -348,7 +354,7 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
 
 void stin__deep_light_done(stin_context *ctx)
 {
-    stin__deep_state *s = &ctx->deep;
+    stin__deep_state *s = ctx->deep;
     if (!s->kind)
         return;
     s->kind = 0;

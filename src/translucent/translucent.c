@@ -3,7 +3,7 @@
  * runs it: the frame plan, the lit programs and the shadows techniques ask
  * here, and each technique's module answers only when it is the one set up
  * (the others are no-ops). */
-#include "internal.h"
+#include "translucent/translucent_private.h"
 
 stin_log_level stin__translucent_fallback_level(const stin_context *ctx, int shadows_off)
 {
@@ -70,9 +70,9 @@ void stin__translucent_frame(stin_context *ctx)
     uint32_t i;
     for (i = 0; i < ctx->draw_count && !has; i++)
         has = ctx->draws[i].material.color[3] < 1.0f;
-    ctx->deep.frame_transparent = ctx->deep.ready && has;
-    ctx->coloured.frame_transparent = ctx->coloured.ready && has;
-    ctx->deep.kind = ctx->coloured.kind = 0;
+    ctx->deep->frame_transparent = ctx->deep->ready && has;
+    ctx->coloured->frame_transparent = ctx->coloured->ready && has;
+    ctx->deep->kind = ctx->coloured->kind = 0;
 }
 
 int stin__translucent_active(const stin_context *ctx)
@@ -85,7 +85,7 @@ int stin__translucent_skips(const stin_context *ctx, const stin__draw *d)
     float a = d->material.color[3];
     if (a >= 1.0f)
         return 0;
-    if (ctx->deep.ready || ctx->coloured.ready)
+    if (ctx->deep->ready || ctx->coloured->ready)
         return 1; /* it shadows through its map */
     return ctx->sel.choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique ==
                STIN_TECH_TRANSLUCENT_OPAQUE &&

@@ -20,32 +20,6 @@
 #define STIN__DEEP_FACES 6
 #define STIN__DEEP_MAX_LAYERS 16 /* desc.translucent.deep_layers at most */
 
-typedef struct stin__deep_state {
-    /* Layer k of face f lives in layers[k % 2] at slice f * slices + k / 2
-     * (RGBA32F: depth, visibility RGB): the pass drawing layer k reads layer
-     * k - 1 from the other texture (ping-pong, no feedback loop). */
-    GLuint layers[2];
-    GLuint depth;          /* the peel passes' depth test (DEPTH_COMPONENT24) */
-    GLuint fbo, program, query;
-    GLuint flag;           /* GL 4.3: the early stop's storage flag (then no query) */
-    int flagged;           /* the program sets the flag (deep_peel_flag.frag) */
-    GLint u_model, u_view_proj, u_albedo, u_albedo_tex, u_has_albedo_tex, u_previous,
-        u_previous_slice, u_mono;
-    stin__displace_locs displace;
-    uint32_t size;         /* texels a side of a face */
-    uint32_t layer_cap;    /* desc.translucent.deep_layers */
-    uint32_t slices;       /* per face and texture: ceil(layer_cap / 2) */
-    int unit;              /* two texture units: even, odd layers */
-    int ready;             /* set up: transparent casters leave the shadows technique */
-    int frame_transparent; /* this frame has transparent draws */
-    int kind;              /* the light being shaded: 0 no map, 1 one face, 2 six */
-    float matrix[STIN__DEEP_FACES][16]; /* world -> [0,1] window coordinates per face */
-    GLint face_layers[STIN__DEEP_FACES]; /* layers the lookup reads per face: those
-                                          * peeled before an empty one, 0 for a face
-                                          * no transparent caster reaches */
-    float normal_offset;   /* world units per unit clip w: 1.5 texels */
-} stin__deep_state;
-
 /* The uniforms of one lookup chunk (translucent/translucent.c): the samplers on the
  * selection's translucent units (used or not, so a fallen-back technique's
  * samplers stay off the other units), then, for a light with a map (kind
@@ -56,6 +30,9 @@ int stin__translucent_set(struct stin_context *ctx, const stin__translucent_locs
 
 /* Slices per face of each ping-pong texture for `layers` layers. */
 uint32_t stin__deep_slices(uint32_t layers);
+/* Bytes of deep's and coloured's private state (translucent/translucent_private.h). */
+size_t stin__deep_state_bytes(const stin_desc *d);
+size_t stin__coloured_state_bytes(const stin_desc *d);
 /* The lit programs' chunk after the shadow technique's ("translucent_deep.glsl")
  * when deep is the choice, else NULL. */
 const char *stin__deep_chunk(const struct stin_context *ctx);
@@ -74,22 +51,6 @@ int stin__deep_active(const struct stin_context *ctx);
  * deep is not active. */
 void stin__deep_light(struct stin_context *ctx, uint32_t li);
 void stin__deep_light_done(struct stin_context *ctx);
-
-/* Colour maps ("coloured"): faces of translucent.deep_map_size in a 3 x 2 atlas (face
- * f at column f % 3, row f / 3), RGBA8 transmittance and the nearest
- * transparent depth. */
-typedef struct stin__coloured_state {
-    GLuint color, depth, fbo, program;
-    GLint u_model, u_view_proj, u_albedo, u_albedo_tex, u_has_albedo_tex;
-    stin__displace_locs displace;
-    uint32_t size;         /* texels a side of a face */
-    int unit;              /* two texture units: transmittance, depth */
-    int ready;             /* set up: transparent casters leave the shadows technique */
-    int frame_transparent; /* this frame has transparent draws */
-    int kind;              /* the light being shaded: 0 no map, 1 one face, 2 six */
-    float matrix[STIN__DEEP_FACES][16]; /* world -> [0,1] window coordinates per face */
-    float normal_offset;   /* world units per unit clip w: 1.5 texels */
-} stin__coloured_state;
 
 /* As deep's calls above, for "coloured". */
 const char *stin__coloured_chunk(const struct stin_context *ctx);

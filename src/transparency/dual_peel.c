@@ -23,7 +23,7 @@
  * (occlusion query), or after a back layer that drew nothing (no pixel had
  * a third surface left, so the next pass would find nothing): a scene of N
  * layers takes N / 2 + 1 passes (integer division). */
-#include "internal.h"
+#include "transparency/transparency_private.h"
 
 static const char *const minmax_uniforms[] = {"u_model", "u_view_proj", "u_previous",
                                               "u_opaque", "u_params"};
@@ -31,7 +31,7 @@ static const char *const minmax_uniforms[] = {"u_model", "u_view_proj", "u_previ
 /* The min-max program, plain (0) or tessellated (1). */
 static int build_minmax(stin_context *ctx, int tess, char *msg, size_t size)
 {
-    stin__dual_state *d = &ctx->peel.d;
+    stin__dual_state *d = &ctx->peel->d;
     stin__program_source src;
     GLint *locs[5];
     int i;
@@ -63,7 +63,7 @@ int stin__dual_init(stin_context *ctx, char *msg, size_t size)
 
 void stin__dual_release(stin_context *ctx)
 {
-    stin__dual_state *d = &ctx->peel.d;
+    stin__dual_state *d = &ctx->peel->d;
     GLuint tex[6];
     int i;
     for (i = 0; i < 2; i++) {
@@ -83,7 +83,7 @@ void stin__dual_release(stin_context *ctx)
 
 GLenum stin__dual_size(stin_context *ctx, int w, int h)
 {
-    stin__dual_state *d = &ctx->peel.d;
+    stin__dual_state *d = &ctx->peel->d;
     GLenum status;
     int i;
     if (!d->minmax_fbo) {
@@ -98,16 +98,9 @@ GLenum stin__dual_size(stin_context *ctx, int w, int h)
         stin__peel_screen_texture(ctx, d->back[i], GL_RGBA16F, w, h);
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, d->minmax_fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                  d->minmax[0], 0);
-    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
-    if (status == GL_FRAMEBUFFER_COMPLETE) { /* a float colour target of the composite */
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->peel.composite_fbo);
-        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                      d->front[0], 0);
-        status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
-    }
+    status = stin__rt_attach(ctx, d->minmax_fbo, d->minmax[0], 0, 0);
+    if (status == GL_FRAMEBUFFER_COMPLETE) /* a float colour target of the composite */
+        status = stin__rt_attach(ctx, ctx->peel->composite_fbo, d->front[0], 0, 0);
     return status;
 }
 
@@ -115,7 +108,7 @@ static int front_layer(const stin__peel_state *s) { return (s->layer & 1) == 0; 
 
 void stin__dual_uniforms(stin_context *ctx, const stin__program *p)
 {
-    const stin__peel_state *s = &ctx->peel;
+    const stin__peel_state *s = ctx->peel;
     float params[4] = {0, 0, 0, 0};
     if (s->peeling) {
         params[0] = 1.0f / (float)s->width;
@@ -136,7 +129,7 @@ static void clear_composite(stin_context *ctx, GLuint tex)
 
 void stin__dual_begin(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     stin__dual_state *d = &s->d;
     /* the first layer's depth goes into the frame at the end: none yet
      * (a frame whose first pass finds nothing begins no layer) */
@@ -154,7 +147,7 @@ void stin__dual_begin(stin_context *ctx)
  * returns the samples it drew (0: nothing left). */
 static GLuint minmax_pass(stin_context *ctx, int k)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     stin__dual_state *d = &s->d;
     stin__pass_state ps = stin__pass_defaults;
     int t = ctx->glsl_tess.active && d->program[1] ? 1 : 0;
@@ -200,7 +193,7 @@ static GLuint minmax_pass(stin_context *ctx, int k)
 
 int stin__dual_layer_begin(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     stin__dual_state *d = &s->d;
     int j = s->layer + 1, all = (ctx->desc.debug_flags & STIN_DEBUG_DUAL_PEEL_NO_EARLY_STOP) != 0;
     if ((uint32_t)j >= ctx->desc.transparency.layers)
@@ -226,7 +219,7 @@ int stin__dual_layer_begin(stin_context *ctx)
 
 int stin__dual_layer_lights(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     GLuint samples = stin__peel_count_end(ctx);
     s->d.drawn = samples != 0;
     if (!samples) {
@@ -246,7 +239,7 @@ int stin__dual_layer_lights(stin_context *ctx)
 static void composite_program(stin_context *ctx, int mode, GLuint accum, GLuint first,
                               GLuint back)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     float params[4];
     params[0] = 1.0f / (float)s->width;
     params[1] = 1.0f / (float)s->height;
@@ -275,7 +268,7 @@ static void composite_done(stin_context *ctx)
 
 void stin__dual_layer_end(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     stin__dual_state *d = &s->d;
     stin__pass_state ps = stin__pass_defaults;
     int front = front_layer(s);
@@ -300,7 +293,7 @@ void stin__dual_layer_end(stin_context *ctx)
 
 void stin__dual_end(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     stin__dual_state *d = &s->d;
     stin__peel_over_frame(ctx); /* depth-peel's rule */
     composite_program(ctx, 2, d->front[d->front_result], s->first, d->back[d->back_result]);

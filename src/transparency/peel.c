@@ -15,7 +15,7 @@
  * nothing (an occlusion query).
  * "dual-peel" (transparency/dual_peel.c) shares this file's objects and
  * entry points: each stin__peel_* call below turns to it when it is chosen. */
-#include "internal.h"
+#include "transparency/transparency_private.h"
 
 static int chosen(const stin_context *ctx)
 {
@@ -27,6 +27,12 @@ static int dual(const stin_context *ctx)
 {
     return ctx->sel.choice[STIN_FEATURE_TRANSPARENCY].technique ==
            STIN_TECH_TRANSPARENCY_DUAL_PEEL;
+}
+
+size_t stin__peel_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(stin__peel_state);
 }
 
 int stin__peel_chunks(const stin_context *ctx, int variant,
@@ -62,7 +68,7 @@ void stin__peel_attach(stin_context *ctx, GLuint color, GLuint depth)
  * (y + h), so gl_FragCoord needs no offset), grown when a frame needs more. */
 static int ensure_size(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     const int *vp = ctx->frame.viewport;
     int w = vp[0] + vp[2], h = vp[1] + vp[3], i;
     GLenum status;
@@ -109,9 +115,18 @@ static int ensure_size(stin_context *ctx)
     return 0;
 }
 
+static const stin__uniform_name composite_uniforms[] = {
+    STIN__UNIFORM(stin__peel_state, u_ambient, "u_ambient"),
+    STIN__UNIFORM(stin__peel_state, u_lights, "u_lights"),
+    STIN__UNIFORM(stin__peel_state, u_accum, "u_accum"),
+    STIN__UNIFORM(stin__peel_state, u_first, "u_first"),
+    STIN__UNIFORM(stin__peel_state, u_params, "u_params"),
+    STIN__UNIFORM(stin__peel_state, d.u_back, "u_back"),
+};
+
 void stin__peel_init(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
     char frag[40], msg[160], why[220];
     stin__memzero(s, sizeof *s);
@@ -148,12 +163,7 @@ void stin__peel_init(stin_context *ctx)
                       "depth-peel: the lit programs failed to build again (%s)", msg);
         return;
     }
-    s->u_ambient = GL(ctx, GetUniformLocation)(s->program, "u_ambient");
-    s->u_lights = GL(ctx, GetUniformLocation)(s->program, "u_lights");
-    s->u_accum = GL(ctx, GetUniformLocation)(s->program, "u_accum");
-    s->u_first = GL(ctx, GetUniformLocation)(s->program, "u_first");
-    s->u_params = GL(ctx, GetUniformLocation)(s->program, "u_params");
-    s->d.u_back = GL(ctx, GetUniformLocation)(s->program, "u_back");
+    STIN__LOCATE(ctx, s->program, s, composite_uniforms);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
         GL(ctx, GenQueries)(1, &s->query);
     s->ready = 1;
@@ -162,7 +172,7 @@ void stin__peel_init(stin_context *ctx)
 
 void stin__peel_release(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     GLuint tex[8];
     int i, n = 0;
     stin__dual_release(ctx);
@@ -189,16 +199,20 @@ void stin__peel_release(stin_context *ctx)
     s->layer = -1;
 }
 
+static const stin__uniform_name lit_uniforms[] = {
+    STIN__UNIFORM(stin__program, u_peel_previous, "u_peel_previous"),
+    STIN__UNIFORM(stin__program, u_peel_opaque, "u_peel_opaque"),
+    STIN__UNIFORM(stin__program, u_peel_params, "u_peel_params"),
+};
+
 void stin__peel_locate(stin_context *ctx, stin__program *p)
 {
-    p->u_peel_previous = GL(ctx, GetUniformLocation)(p->name, "u_peel_previous");
-    p->u_peel_opaque = GL(ctx, GetUniformLocation)(p->name, "u_peel_opaque");
-    p->u_peel_params = GL(ctx, GetUniformLocation)(p->name, "u_peel_params");
+    STIN__LOCATE(ctx, p->name, p, lit_uniforms);
 }
 
 void stin__peel_uniforms(stin_context *ctx, const stin__program *p)
 {
-    const stin__peel_state *s = &ctx->peel;
+    const stin__peel_state *s = ctx->peel;
     float params[4] = {0, 0, 0, 0};
     if (p->u_peel_params < 0)
         return;
@@ -220,10 +234,12 @@ void stin__peel_uniforms(stin_context *ctx, const stin__program *p)
 int stin__peel_camera_set(const stin_context *ctx, const stin__draw *d)
 {
     int blended = d->material.color[3] < 1.0f;
-    if (ctx->peel.peeling)
+    if (ctx->peel->peeling)
         return blended ? STIN__OPAQUE : 0;
     return blended ? STIN__BLENDED : STIN__OPAQUE;
 }
+
+int stin__peel_in_layer(const stin_context *ctx) { return ctx->peel->peeling; }
 
 static int frame_blended(const stin_context *ctx)
 {
@@ -248,7 +264,7 @@ void stin__peel_clear(stin_context *ctx, float r, float g, float b, float a, int
 
 int stin__peel_begin(stin_context *ctx, const stin__path *path)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     if (!s->ready || !frame_blended(ctx) || !ensure_size(ctx))
         return 0;
     s->frame_fbo = ctx->draw_fbo;
@@ -282,7 +298,7 @@ static GLuint layer_depth(const stin__peel_state *s, int k)
 
 int stin__peel_layer_begin(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     int k = s->layer + 1;
     if (s->dual)
         return stin__dual_layer_begin(ctx);
@@ -304,23 +320,23 @@ int stin__peel_layer_begin(stin_context *ctx)
 
 void stin__peel_count_begin(stin_context *ctx)
 {
-    if (ctx->peel.query)
-        GL(ctx, BeginQuery)(GL_SAMPLES_PASSED, ctx->peel.query);
+    if (ctx->peel->query)
+        GL(ctx, BeginQuery)(GL_SAMPLES_PASSED, ctx->peel->query);
 }
 
 GLuint stin__peel_count_end(stin_context *ctx)
 {
     GLuint samples = 1;
-    if (ctx->peel.query) {
+    if (ctx->peel->query) {
         GL(ctx, EndQuery)(GL_SAMPLES_PASSED);
-        GL(ctx, GetQueryObjectuiv)(ctx->peel.query, GL_QUERY_RESULT, &samples);
+        GL(ctx, GetQueryObjectuiv)(ctx->peel->query, GL_QUERY_RESULT, &samples);
     }
     return samples;
 }
 
 int stin__peel_layer_lights(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     GLuint samples;
     if (s->dual)
         return stin__dual_layer_lights(ctx);
@@ -339,7 +355,7 @@ void stin__peel_lights_target(stin_context *ctx)
 {
     stin__pass_state ps = stin__pass_defaults;
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                  ctx->peel.lights, 0);
+                                  ctx->peel->lights, 0);
     ps.depth_test = 1; /* keep the layer's depth: only the colour is cleared */
     ps.depth_write = 0;
     stin__pass_apply(ctx, &ps);
@@ -351,7 +367,7 @@ void stin__peel_lights_target(stin_context *ctx)
  * under the composite) or 1 (the composite over the frame). */
 static void composite_program(stin_context *ctx, int mode)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     float params[4];
     params[0] = 1.0f / (float)s->width;
     params[1] = 1.0f / (float)s->height;
@@ -379,7 +395,7 @@ void stin__peel_composite_done(stin_context *ctx)
 
 void stin__peel_layer_end(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     stin__pass_state ps = stin__pass_defaults;
     if (s->dual) {
         stin__dual_layer_end(ctx);
@@ -409,7 +425,7 @@ void stin__peel_layer_end(stin_context *ctx)
  * only; elsewhere C = 0 and T = 1 leave the frame as it is). Both peels. */
 void stin__peel_over_frame(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     stin__pass_state ps = stin__pass_defaults;
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, 0);
@@ -425,7 +441,7 @@ void stin__peel_over_frame(stin_context *ctx)
 
 void stin__peel_end(stin_context *ctx)
 {
-    stin__peel_state *s = &ctx->peel;
+    stin__peel_state *s = ctx->peel;
     s->peeling = 0;
     stin__lit_uniforms_stale(ctx);
     ctx->draw_fbo = s->frame_fbo;
