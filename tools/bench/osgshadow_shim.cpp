@@ -195,6 +195,8 @@ osg::ref_ptr<osgShadow::ShadowTechnique> make_technique(int t, int size, osg::Li
         m->setUserLight(ls->getLight());
         return m;
     }
+    case OSGS_NONE:
+        return nullptr;
     default:
         settings->setTextureSize(square);
         settings->setLightNum(0);
@@ -217,7 +219,7 @@ struct osgs_peer {
 
 static const char *const names[OSGS_TECHNIQUES] = {
     "ShadowMap", "SoftShadowMap", "StandardShadowMap", "LightSpacePerspectiveShadowMapDB",
-    "ParallelSplitShadowMap", "ViewDependentShadowMap"};
+    "ParallelSplitShadowMap", "ViewDependentShadowMap", "no shadows"};
 
 extern "C" const char *osgs_name(int technique)
 {

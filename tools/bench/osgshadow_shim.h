@@ -19,6 +19,7 @@ enum {
     OSGS_LISPSM,
     OSGS_PSSM,
     OSGS_VDSM,
+    OSGS_NONE, /* the ShadowedScene without a technique: OSG's unshadowed frame */
     OSGS_TECHNIQUES
 };
 

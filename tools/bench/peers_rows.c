@@ -44,6 +44,7 @@ static void stin_row(peer_row *r, const bench_env *env, scene *s, int map_size)
     d.tier = env->o->tier;
     d.techniques[STIN_FEATURE_SHADOWS] = (stin_technique)r->technique;
     d.shadows.map_size = (uint32_t)map_size;
+    d.debug_flags = r->debug_flags;
     scene_gpu_size_desc(s, &d);
     bytes = stin_memory_size(&d);
     if (!bytes || !(r->block = malloc(bytes))) {

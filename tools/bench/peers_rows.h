@@ -17,8 +17,9 @@ enum { PEER_SHADOWED, PEER_UNSHADOWED, PEER_FULL, PEER_VISIBILITY };
 
 typedef struct peer_row {
     char name[48];
-    int osg;                 /* 0: stin, `technique` a stin_technique; 1: OSG_* */
+    int osg;                 /* 0: stin, `technique` a stin_technique; 1: OSGS_* */
     int technique;
+    uint64_t debug_flags;    /* stin's desc.debug_flags */
     stin_context *ctx;
     void *block;
     scene_gpu gpu;
@@ -28,6 +29,8 @@ typedef struct peer_row {
     char why[256];
     peers_mismatch mm;       /* against the reference */
     long disagree;           /* stin rows: classified against its visibility output */
+    int staged;              /* stage_ms holds stin's GPU time per stage (medians) */
+    double stage_ms[STIN_STAGE_COUNT];
 } peer_row;
 
 /* Creates the row's renderer for s at the bench's size (rows are memset
@@ -38,6 +41,9 @@ void peer_row_create(peer_row *r, const bench_env *env, scene *s, int map_size);
  * and glFinish: its milliseconds, or -1 with why set. */
 double peer_row_frame(peer_row *r, const bench_env *env, int mode);
 void peer_row_destroy(peer_row *r);
+/* stin rows: stage_ms from a second context with STIN_DEBUG_STAGE_TIMES
+ * (peers_stages.c); staged stays 0 without timer queries. */
+void peer_row_stages(peer_row *r, const bench_env *env, scene *s, int map_size, int frames);
 
 /* Why osgShadow does not run here, or NULL where it does. */
 const char *peer_osg_absent(const bench_env *env);

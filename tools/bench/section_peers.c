@@ -25,7 +25,8 @@
 #include <string.h>
 
 enum { STIN_OFF, STIN_VDSM, STIN_VOLUME, STIN_MAP_PCF, STIN_ROWS };
-#define OSG_ROWS 6
+#define OSG_ROWS 7
+#define OSG_OFF STIN_ROWS /* OSG's row without a technique */
 #define MAX_ROWS (STIN_ROWS + OSG_ROWS)
 
 static const stin_technique stin_tech[STIN_ROWS] = {
@@ -63,13 +64,14 @@ static void make_rows(peers_run *p, int map_size)
     }
     for (i = 0; i < OSG_ROWS; i++) {
         peer_row *r = &p->rows[p->n++];
+        int t = i ? i - 1 : OSG_ROWS - 1; /* no shadows (OSGS_NONE) first */
 #ifdef STIN_BENCH_OSGSHADOW
-        snprintf(r->name, sizeof r->name, "OSG %s", osgs_name(i));
+        snprintf(r->name, sizeof r->name, "OSG %s", osgs_name(t));
 #else
-        snprintf(r->name, sizeof r->name, "OSG technique %d", i);
+        snprintf(r->name, sizeof r->name, "OSG technique %d", t);
 #endif
         r->osg = 1;
-        r->technique = i;
+        r->technique = t;
         if (peer_osg_absent(p->env)) {
             snprintf(r->why, sizeof r->why, "%s", peer_osg_absent(p->env));
             r->failed = 1;
@@ -121,7 +123,7 @@ static int reference(peers_run *p, char *err, size_t err_size)
 static void judge(peers_run *p, peer_row *r)
 {
     int n = p->env->b.width * p->env->b.height;
-    if (r->failed)
+    if (r->failed || r == &p->rows[STIN_OFF] || r == &p->rows[OSG_OFF])
         return;
     if (!r->osg) {
         if (!grab(p, r, PEER_SHADOWED, p->img[2]) || !grab(p, r, PEER_VISIBILITY, p->img[3]))
@@ -187,7 +189,7 @@ static void print_table(const peers_run *p, const char *label)
         printf("| %s | %.2f |", r->name, r->ms);
         for (k = STIN_VDSM; k <= STIN_MAP_PCF; k++)
             print_ratio(&p->rows[k], r);
-        if (i == STIN_OFF)
+        if (i == STIN_OFF || i == OSG_OFF)
             printf(" - | - | unshadowed |\n");
         else
             printf(" %.3f | %.3f | %s |\n", r->mm.wrong_pct, r->mm.far_pct,
@@ -199,6 +201,38 @@ static void print_table(const peers_run *p, const char *label)
         if (!p->rows[i].failed)
             printf(" %s %ld;", stin_name[i] + 5, p->rows[i].disagree);
     printf("\n");
+    fflush(stdout);
+}
+
+/* Where the time goes: each row's frame as its library's unshadowed frame
+ * plus the shadows' cost, and stin's GPU time per stage. */
+static void print_cost(const peers_run *p)
+{
+    static const int shown[] = {STIN_STAGE_PREPASS, STIN_STAGE_BASE, STIN_STAGE_SHADOW,
+                                STIN_STAGE_LIGHTING};
+    int i, k;
+    printf("\nwhere the time goes: the frame as its library's unshadowed frame plus the "
+           "shadows' cost; stin's GPU time per stage from a second context with timer "
+           "queries (median of the same frame count)\n");
+    printf("\n| renderer | frame ms | unshadowed ms | shadow cost ms | GPU ms: maps, base, "
+           "shadow, lighting |\n|---|---:|---:|---:|---|\n");
+    for (i = 0; i < p->n; i++) {
+        const peer_row *r = &p->rows[i], *base = &p->rows[r->osg ? OSG_OFF : STIN_OFF];
+        if (r->failed || r == base)
+            continue;
+        printf("| %s | %.2f |", r->name, r->ms);
+        if (base->failed)
+            printf(" - | - |");
+        else
+            printf(" %.2f | %.2f |", base->ms, r->ms - base->ms);
+        if (!r->staged) {
+            printf(" %s |\n", r->osg ? "-" : "(no timer queries)");
+            continue;
+        }
+        for (k = 0; k < (int)(sizeof shown / sizeof shown[0]); k++)
+            printf("%s%.2f", k ? ", " : " ", r->stage_ms[shown[k]]);
+        printf(" |\n");
+    }
     fflush(stdout);
 }
 
@@ -222,9 +256,13 @@ static int one_scene(peers_run *p, const char *path, int frames, int map_size)
         for (i = 1; i < p->n; i++)
             judge(p, &p->rows[i]);
         ok = time_rows(p, frames, err, sizeof err);
+        for (i = STIN_VDSM; ok && i < STIN_ROWS; i++)
+            peer_row_stages(&p->rows[i], p->env, p->s, map_size, frames);
     }
-    if (ok)
+    if (ok) {
         print_table(p, label);
+        print_cost(p);
+    }
     else
         fprintf(stderr, "stin-bench: peers: %s: %s\n", label, err);
     for (i = 0; i < p->n; i++)
