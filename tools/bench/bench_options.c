@@ -18,11 +18,14 @@
 #define SIZE_MAX_PX 16384
 #define QUICK_SCENE "tests/scenes/spheres-18k.json"
 #define SPOT_SCENE "tests/scenes/spheres-18k-spot.json"
-/* the spheres (point light), open casters (point), the spheres under a spot
- * and a directional light, and 174k triangles (point) */
+/* per light type the spheres and open models (point: open casters and a
+ * character, spot: a spider, directional: a 121k-triangle engine; the
+ * models from assimp-testmodels), and 174k triangles (point) */
 #define PEERS_SCENES                                                                   \
-    "tests/scenes/spheres-18k.json,tests/scenes/shadow-open.json," SPOT_SCENE            \
-    ",tests/scenes/spheres-18k-sun.json,tests/scenes/spheres-174k.json"
+    "tests/scenes/spheres-18k.json,tests/scenes/shadow-open.json,"                       \
+    "tools/bench/scenes/peers-wuson.json," SPOT_SCENE ",tools/bench/scenes/peers-spider.json," \
+    "tests/scenes/spheres-18k-sun.json,tools/bench/scenes/peers-engine.json,"            \
+    "tests/scenes/spheres-174k.json"
 #define USAGE_WIDTH 100
 #define PCF_MAX_SIZES 4
 #define PCF_MAX_KERNELS 3
