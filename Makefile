@@ -157,8 +157,25 @@ endif
 $(B)/obj/tools/bench/opencsg_shim.o: tools/bench/opencsg_shim.cpp tools/bench/opencsg_shim.h
 	@mkdir -p $(@D)
 	@echo "  CXX     $<"; $(CXX) $(TOOL_CXXFLAGS) -c $< -o $@
-$(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(BENCH_CXX_OBJ) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
-	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(BENCH_CXX_LIBS) $(PLATFORM_LIBS)
+# stin-bench --peers times osgShadow too where it is installed
+# (libopenscenegraph-dev): its C++ shim, compiled only for the bench
+BENCH_OSG := $(shell printf '\043include <osgShadow/ShadowedScene>\n\043include <osgViewer/Viewer>\n' | \
+  $(CXX) -E -x c++ - >/dev/null 2>&1 && echo yes)
+ifeq ($(BENCH_OSG),yes)
+BENCH_CXX_OBJ += $(B)/obj/tools/bench/osgshadow_shim.o
+BENCH_CXX_LIBS += -losgShadow -losgViewer -losgGA -losgText -losgDB -losgUtil -losg -lOpenThreads -lGL
+$(B)/obj/tools/bench/peers_osg.o $(B)/obj/tools/bench/peers_rows.o \
+  $(B)/obj/tools/bench/section_peers.o: TOOL_CFLAGS += -DSTIN_BENCH_OSGSHADOW
+endif
+$(B)/obj/tools/bench/osgshadow_shim.o: tools/bench/osgshadow_shim.cpp tools/bench/osgshadow_shim.h
+	@mkdir -p $(@D)
+	@echo "  CXX     $<"; $(CXX) $(TOOL_CXXFLAGS) -c $< -o $@
+# --peers judges visibility against the exact reference (Embree), with the
+# image tests' light_reaches and near_shadow_edge
+BENCH_REF_OBJ := $(B)/obj/tests/image/light_reach.o $(B)/libstin_reference.a
+$(B)/obj/tools/bench/peers_vis.o: TOOL_CFLAGS += -Itests/image
+$(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(BENCH_CXX_OBJ) $(BENCH_REF_OBJ) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
+	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(BENCH_CXX_LIBS) $(PLATFORM_LIBS)
 
 tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/libstin.a
 

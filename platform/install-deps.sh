@@ -9,10 +9,13 @@ set -u
 # make fuzz. cmake: the install test builds an application with find_package.
 # libopencsg-dev + libglew-dev: stin-bench --csg times OpenCSG beside stin
 # (built without them, the section times stin alone).
+# libopenscenegraph-dev: stin-bench --peers times osgShadow's techniques beside
+# stin's on the same scenes (built without it, the section has stin's rows alone);
+# assimp-testmodels: three of its scenes' models (without it they are skipped).
 PACKAGES="build-essential pkg-config libegl-dev libgl-dev libosmesa6-dev \
 libegl-mesa0 libgl1-mesa-dri libembree-dev libopenimageio-dev openimageio-tools \
 libassimp-dev libcjson-dev libcmocka-dev clang libclang-rt-dev cmake \
-libopencsg-dev libglew-dev"
+libopencsg-dev libglew-dev libopenscenegraph-dev assimp-testmodels"
 
 if ! command -v dpkg >/dev/null 2>&1; then
     echo "install-deps: dpkg not found; install these (Debian names) by hand: $PACKAGES" >&2

@@ -18,6 +18,14 @@
 #define SIZE_MAX_PX 16384
 #define QUICK_SCENE "tests/scenes/spheres-18k.json"
 #define SPOT_SCENE "tests/scenes/spheres-18k-spot.json"
+/* per light type the spheres and open models (point: open casters and a
+ * character, spot: a spider, directional: a 121k-triangle engine; the
+ * models from assimp-testmodels), and 174k triangles (point) */
+#define PEERS_SCENES                                                                   \
+    "tests/scenes/spheres-18k.json,tests/scenes/shadow-open.json,"                       \
+    "tools/bench/scenes/peers-wuson.json," SPOT_SCENE ",tools/bench/scenes/peers-spider.json," \
+    "tests/scenes/spheres-18k-sun.json,tools/bench/scenes/peers-engine.json,"            \
+    "tests/scenes/spheres-174k.json"
 #define USAGE_WIDTH 100
 #define PCF_MAX_SIZES 4
 #define PCF_MAX_KERNELS 3
@@ -257,6 +265,12 @@ static const bench_option table[] = {
      F(sec[SEC_PEEL].scene), 0, 0, 0, "the panes (0, 2 and 4 of them over the floor)"},
     FRAMES(SEC_PEEL, "--peel-frames", "7", "1", PER_ROW),
     SETUPS(SEC_PEEL, "--peel-setups", "2", "fresh sorted context per set-up"),
+
+    {SEC_PEERS, "--peers-scenes", "a.json,b.json", PEERS_SCENES, QUICK_SCENE, set_text,
+     F(peers_scenes), 0, 0, 0, "scenes (light 0 of each)"},
+    {SEC_PEERS, "--peers-map-size", "N", "2048", "256", set_pow2, F(peers_map_size), 16, 8192, 0,
+     "texels a side of every shadow map, stin's and osgShadow's"},
+    FRAMES(SEC_PEERS, "--peers-frames", "15", "1", "timed frames per renderer and scene"),
 };
 enum { OPTION_COUNT = sizeof table / sizeof table[0] };
 

@@ -46,6 +46,8 @@ typedef struct options {
     int_list displace_levels;  /* displace: fixed tessellation levels on it */
     const char *deep_one, *deep_all; /* deep: point-light scenes, one face / six */
     int deep_size;             /* deep: texels a side of every map */
+    const char *peers_scenes;  /* peers: comma-separated scene files */
+    int peers_map_size;        /* peers: texels a side of every map, stin's and OSG's */
 } options;
 
 /* Fills o from the defaults (--quick's where it is given) and argv. Prints
