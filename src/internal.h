@@ -117,11 +117,11 @@ struct stin_context {
      * folder (a *_private.h no other folder includes) and says its size; the
      * frame lays them out in the caller's block (stin__state_slots). */
     struct stin__volume_state *volume;
+    struct stin__mask_state *mask;           /* render/screen_mask.c */
 
     /* shadow technique modules: each owns its part */
     stin__map_fixed_state map_fixed;
     stin__map_pcf_state map_pcf;
-    stin__mask_state mask;
     stin__vdsm_state vdsm;
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
     stin__outline_state outline;   /* the deferred outline (post/outline.c) */

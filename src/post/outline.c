@@ -21,7 +21,7 @@ static int glsl_tier(const stin_context *ctx, int *gl4)
 
 int stin__outline_supported(const stin_context *ctx)
 {
-    return ctx->outline.program != 0 && ctx->mask.drawable;
+    return ctx->outline.program != 0 && stin__mask_available(ctx);
 }
 
 void stin__outline_init(stin_context *ctx)
@@ -31,7 +31,7 @@ void stin__outline_init(stin_context *ctx)
     char msg[160];
     int gl4;
     stin__memzero(o, sizeof *o);
-    if (!glsl_tier(ctx, &gl4) || !ctx->mask.drawable)
+    if (!glsl_tier(ctx, &gl4) || !stin__mask_available(ctx))
         return;
     chunks[0] = gl4 ? "gl4/outline.glsl" : "gl2/outline.glsl";
     msg[0] = '\0';
@@ -76,7 +76,7 @@ static int draw_normals(stin_context *ctx, const stin__path *path)
     GL(ctx, ClearDepth)(1.0);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    ctx->draw_fbo = ctx->mask.fbo;
+    ctx->draw_fbo = stin__mask_target_of(ctx).fbo;
     stin__resolved_depth_again(ctx, path);
     path->normals(ctx);
     stin__mask_frame_end(ctx); /* the mask's depth is no longer the frame's opaque one */
@@ -108,8 +108,8 @@ void stin__outline_stage(stin_context *ctx, const stin__path *path)
     ps.blend_src = GL_SRC_ALPHA;
     ps.blend_dst = GL_ONE_MINUS_SRC_ALPHA;
     stin__pass_apply(ctx, &ps);
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->mask.color);
-    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->mask.depth_stencil);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, stin__mask_target_of(ctx).color);
+    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, stin__mask_target_of(ctx).depth_stencil);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (k = 0; k < 4; k++) {
         viewport[k] = (float)vp[k];
@@ -117,8 +117,8 @@ void stin__outline_stage(stin_context *ctx, const stin__path *path)
     }
     if (color[0] == 0.0f && color[1] == 0.0f && color[2] == 0.0f && color[3] == 0.0f)
         color[3] = 1.0f; /* the default: opaque black */
-    texel[0] = 1.0f / (float)ctx->mask.width;
-    texel[1] = 1.0f / (float)ctx->mask.height;
+    texel[0] = 1.0f / (float)stin__mask_target_of(ctx).width;
+    texel[1] = 1.0f / (float)stin__mask_target_of(ctx).height;
     texel[2] = texel[3] = 0.0f;
     params[0] = f->outline_normal_edge > 0.0f ? f->outline_normal_edge : DEFAULT_NORMAL_EDGE;
     params[1] = f->outline_depth_edge > 0.0f ? f->outline_depth_edge : DEFAULT_DEPTH_EDGE;

@@ -145,7 +145,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
             e->valid = 0; /* logged by the mask */
             break;
         }
-        ctx->draw_fbo = ctx->mask.fbo;
+        ctx->draw_fbo = stin__mask_target_of(ctx).fbo;
         for (li = LIGHTS_PER_TILE * g; li < ctx->light_count && li < LIGHTS_PER_TILE * (g + 1);
              li++)
             export_light(ctx, path, li, (int)(li - LIGHTS_PER_TILE * g), shadowed);
@@ -161,7 +161,7 @@ void stin__export_stage(stin_context *ctx, const stin__path *path, int shadowed)
             e->valid = 0;
             break;
         }
-        ctx->draw_fbo = ctx->mask.fbo;
+        ctx->draw_fbo = stin__mask_target_of(ctx).fbo;
         export_transmittance(ctx, path, g);
         stin__bind_unit(ctx, 0, GL_TEXTURE_2D, e->texture);
         GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, (GLint)(tile % TILES_PER_ROW) * tile_w,

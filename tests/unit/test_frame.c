@@ -1018,8 +1018,8 @@ static void test_mask_depth_pass_only_where_read(void **state)
             shadows = techs[t];
             create_profile(FAKE_GL45_CORE, 16, 8);
             (void)frame_with(lights, 3, 0, STIN_OUTPUT_BEAUTY); /* makes the mask */
-            assert_true(ctx->mask.fbo != 0);
-            fake_gl.watched_framebuffer = ctx->mask.fbo;
+            assert_true(stin__mask_target_of(ctx).fbo != 0);
+            fake_gl.watched_framebuffer = stin__mask_target_of(ctx).fbo;
             fake_gl.draws_into_watched = fake_gl.depth_draws_into_watched = 0;
             (void)frame_with(lights, 3, 0, STIN_OUTPUT_BEAUTY);
             assert_true(fake_gl.draws_into_watched > 0); /* the masks were drawn */
