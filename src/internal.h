@@ -118,10 +118,10 @@ struct stin_context {
      * frame lays them out in the caller's block (stin__state_slots). */
     struct stin__volume_state *volume;
     struct stin__mask_state *mask;           /* render/screen_mask.c */
+    struct stin__map_fixed_state *map_fixed; /* shadow/map_fixed_private.h */
+    struct stin__map_pcf_state *map_pcf;     /* shadow/map_pcf.c */
 
     /* shadow technique modules: each owns its part */
-    stin__map_fixed_state map_fixed;
-    stin__map_pcf_state map_pcf;
     stin__vdsm_state vdsm;
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
     stin__outline_state outline;   /* the deferred outline (post/outline.c) */

@@ -25,6 +25,8 @@ static const struct {
 const stin__state_slot stin__state_slots[] = {
     SLOT(volume, stin__volume_state_bytes, NULL),
     SLOT(mask, stin__mask_state_bytes, NULL),
+    SLOT(map_fixed, stin__map_fixed_state_bytes, NULL),
+    SLOT(map_pcf, stin__map_pcf_state_bytes, NULL),
 };
 #undef SLOT
 const size_t stin__state_slot_count = sizeof stin__state_slots / sizeof stin__state_slots[0];

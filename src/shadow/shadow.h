@@ -4,7 +4,8 @@
  * each owning its state, and the light cameras the map techniques share
  * (render/light_camera.c). The frame plan (frame/frame.c) calls the hooks
  * and nothing outside a module asks which technique runs: a new technique
- * is a module (its hooks, its state below and in the context), a row in
+ * is a module (its hooks; its state in its own private header or .c, a
+ * pointer in the context and a slot row), a row in
  * select/technique_table.c, its entry in frame/modules.c and its public
  * name in include/stin/stin.h. */
 #ifndef STIN_SHADOW_H
@@ -105,40 +106,13 @@ extern const stin__shadow_technique stin__shadow_volume, stin__shadow_map_fixed,
     stin__shadow_map_pcf, stin__shadow_off, stin__shadow_vdsm;
 
 /* ---- module state --------------------------------------------------------- */
-typedef struct stin__map_fixed_state {
-    GLuint textures[STIN__MAP_SLOTS];
-    GLuint ramp;          /* map-combine: 1D ramp of light depth */
-    GLuint fbo;           /* with FBOs: render straight into the texture */
-    GLuint depth_scratch; /* map-combine with FBOs: the depth buffer of its pass */
-    GLuint face_mask;     /* 1 inside a face's 90-degree square, 0 outside */
-    /* map-depth's side maps: per slot, which side of the nearest surface the
-     * light sees (LUMINANCE8: 1 front, 0 back), copied from the colour of a
-     * pass of their own (with FBOs: facing_fbo, RGBA8 colour and a depth) */
-    GLuint facing[STIN__MAP_SLOTS];
-    GLuint facing_fbo, facing_color, facing_depth;
-    int facing_test;      /* 1: the lit passes test the side (a unit was spare) */
-    uint32_t size;        /* allocated texels a side */
-    uint32_t used;        /* rendered this frame (no FBO: bounded by the viewport) */
-    int unit;             /* first texture unit of the shadow test */
-    int faces;            /* point lights get six maps (needs FBOs: drawn mid-frame) */
-    unsigned char valid[STIN__MAX_LIGHTS];
-    float texgen[STIN__MAP_SLOTS][16];   /* world -> map texture coordinates (rows s t r q) */
-    float ramp_plane[STIN__MAP_SLOTS][4]; /* world -> ramp coordinate (map-combine) */
-    int said_point, said_area;
-} stin__map_fixed_state;
-
-typedef struct stin__map_pcf_state {
-    GLuint textures[STIN__MAP_SLOTS];
-    GLuint fbo;
-    uint32_t size;
-    int unit;             /* first sampler unit (STIN__SHADOW_SAMPLERS of them) */
-    unsigned char valid[STIN__MAX_LIGHTS];
-    float matrix[STIN__MAP_SLOTS][16];   /* world -> [0,1] map space */
-    float normal_offset[STIN__MAP_SLOTS]; /* world units per unit clip w: 1.5 texels */
-    /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
-    int kind;
-    uint32_t light;
-} stin__map_pcf_state;
+/* Each module's state is its own, defined where no other folder sees it:
+ * volume's in shadow/volume_private.h, map-depth and map-combine's in
+ * shadow/map_fixed_private.h, map-pcf's in shadow/map_pcf.c (vdsm's below
+ * until it moves). Their sizes, for their slots (frame/modules.c): */
+size_t stin__volume_state_bytes(const stin_desc *d);
+size_t stin__map_fixed_state_bytes(const stin_desc *d);
+size_t stin__map_pcf_state_bytes(const stin_desc *d);
 
 /* Where a program reads the pyramid (vdsm_cull.glsl, u_depth_row of
  * vdsm_side.glsl); -1 where it does not. */
@@ -345,8 +319,6 @@ void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or
  * depth clamp (orthographic), for volumes: a prepare hook. */
 void stin__volume_projection(stin_context *ctx);
-/* Bytes of volume's private state (shadow/volume_private.h). */
-size_t stin__volume_state_bytes(const stin_desc *d);
 /* Screen rectangle a light of finite range can touch; 0 when unbounded. */
 int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
 /* The slope-scaled polygon offset of a light's map pass (its shadow_offset,
