@@ -120,9 +120,9 @@ struct stin_context {
     struct stin__mask_state *mask;           /* render/screen_mask.c */
     struct stin__map_fixed_state *map_fixed; /* shadow/map_fixed_private.h */
     struct stin__map_pcf_state *map_pcf;     /* shadow/map_pcf.c */
+    struct stin__vdsm_state *vdsm;           /* shadow/vdsm_private.h */
 
-    /* shadow technique modules: each owns its part */
-    stin__vdsm_state vdsm;
+    /* feature modules' state, each its own module's (until it is private) */
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
     stin__outline_state outline;   /* the deferred outline (post/outline.c) */
     stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
