@@ -121,6 +121,7 @@ struct stin_context {
     struct stin__map_fixed_state *map_fixed; /* shadow/map_fixed_private.h */
     struct stin__map_pcf_state *map_pcf;     /* shadow/map_pcf.c */
     struct stin__vdsm_state *vdsm;           /* shadow/vdsm_private.h */
+    struct stin__glsl_state *glsl;           /* the GLSL path's (render/glsl_private.h) */
 
     /* feature modules' state, each its own module's (until it is private) */
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
@@ -131,29 +132,12 @@ struct stin_context {
     stin__peel_state peel;    /* transparency's camera layers (transparency/peel.c) */
     stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
 
-    /* surface detail */
+    /* surface detail: what surface/glsl.c keeps of the GLSL surfaces */
     struct {
-        /* lit programs per surface variant; [STIN__SURF_PLAIN] is unused (the
-         * plain one is programs[STIN__PROG_LIT]) */
-        stin__program lit[STIN__SURF_COUNT];
-        int best;             /* best variant built (STIN__SURF_*) */
-        const stin__program *current; /* lit program in use this pass, NULL = other */
-        uint32_t serial;      /* bumped when the per-frame lit uniforms change */
-        float packed[4 * 4 * STIN__LIGHTS_PER_PASS]; /* the lights last uploaded */
-        int light_n, with_ambient;
-        uint32_t light_key;   /* their stin__lit_lights_key */
         int units_bound;      /* the surface units hold textures this frame */
         uint32_t logged[STIN__SURF_LOG_KEYS]; /* per-material step-downs already logged */
         uint32_t logged_count;
     } glsl_surface;
-    stin__lit_cache lit_cache; /* lit programs per light batch and material */
-    struct {                  /* "displace-tess": the programs above, tessellated
-                               * (render/path_glsl.c), swapped in for frames with
-                               * displaced draws */
-        stin__program programs[STIN__PROG_COUNT];
-        stin__program lit[STIN__SURF_COUNT];
-        int active;           /* they are in ctx->programs and glsl_surface.lit now */
-    } glsl_tess;
     struct {                  /* displacement (surface/displace.c,
                                * render/displace_chunk.c) */
         uint32_t logged[16];  /* coarse meshes already logged (mesh slot, height map) */
