@@ -122,6 +122,7 @@ struct stin_context {
     struct stin__map_pcf_state *map_pcf;     /* shadow/map_pcf.c */
     struct stin__vdsm_state *vdsm;           /* shadow/vdsm_private.h */
     struct stin__glsl_state *glsl;           /* the GLSL path's (render/glsl_private.h) */
+    struct stin__stage_times *times;         /* gl/stage_times_private.h */
 
     /* feature modules' state, each its own module's (until it is private) */
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
@@ -130,7 +131,6 @@ struct stin_context {
     stin__deep_state deep;    /* translucent shadows' deep maps (translucent/deep.c) */
     stin__coloured_state coloured; /* translucent shadows' colour maps (translucent/coloured.c) */
     stin__peel_state peel;    /* transparency's camera layers (transparency/peel.c) */
-    stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
 
     /* surface detail: what surface/glsl.c keeps of the GLSL surfaces */
     struct {

@@ -14,7 +14,8 @@
 
 #include "fake_gl.h"
 #include "internal.h"
-#include "shadow/vdsm_private.h" /* module state the tests read */
+#include "gl/stage_times_private.h" /* module state the tests read */
+#include "shadow/vdsm_private.h"
 
 static fake_log log_;
 static void *block;
@@ -855,9 +856,9 @@ static void test_stage_times_follow_the_plan(void **state)
     create_profile(FAKE_GL45_CORE, 16, 8);
     st = frame_with(8, 1, 0, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.stage_times, 1);
-    assert_int_equal(ctx->times.marks, marks);
+    assert_int_equal(ctx->times->marks, marks);
     for (i = 0; i < marks; i++)
-        assert_int_equal(ctx->times.stage[i], plan[i]);
+        assert_int_equal(ctx->times->stage[i], plan[i]);
     assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], marks + 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_GetQueryObjectui64v], marks + 1);
 
@@ -874,7 +875,7 @@ static void test_stage_times_follow_the_plan(void **state)
     create_profile(FAKE_GL45_CORE, 16, 8);
     st = frame_with(16, 1, 7, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.stage_times, 1);
-    assert_int_equal(ctx->times.marks, STIN__STAGE_MARKS - 1u);
+    assert_int_equal(ctx->times->marks, STIN__STAGE_MARKS - 1u);
     assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], STIN__STAGE_MARKS);
     assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "changed stage more than"));
 
