@@ -134,35 +134,15 @@ struct stin_context {
     struct stin__displace_state *displace; /* displacement's frame (surface/displace.c) */
     struct stin__export_state *visibility; /* the visibility map (post/visibility_export.c) */
     struct stin__outline_state *outline;   /* the deferred outline (post/outline.c) */
+    struct stin__mask_state *mask;           /* render/screen_mask.c */
+    struct stin__map_fixed_state *map_fixed; /* shadow/map_fixed_private.h */
+    struct stin__map_pcf_state *map_pcf;     /* shadow/map_pcf.c */
+    struct stin__vdsm_state *vdsm;           /* shadow/vdsm_private.h */
+    struct stin__glsl_state *glsl;           /* the GLSL path's (render/glsl_private.h) */
+    struct stin__stage_times *times;         /* gl/stage_times_private.h */
 
-    /* shadow technique modules: each owns its part */
-    stin__map_fixed_state map_fixed;
-    stin__map_pcf_state map_pcf;
-    stin__mask_state mask;
-    stin__vdsm_state vdsm;
-    stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
-    stin__stage_times times;  /* STIN_DEBUG_STAGE_TIMES (gl/stage_times.c) */
-
-    /* surface detail */
-    struct {
-        /* lit programs per surface variant; [STIN__SURF_PLAIN] is unused (the
-         * plain one is programs[STIN__PROG_LIT]) */
-        stin__program lit[STIN__SURF_COUNT];
-        int best;             /* best variant built (STIN__SURF_*) */
-        const stin__program *current; /* lit program in use this pass, NULL = other */
-        uint32_t serial;      /* bumped when the per-frame lit uniforms change */
-        float packed[4 * 4 * STIN__LIGHTS_PER_PASS]; /* the lights last uploaded */
-        int light_n, with_ambient;
-        uint32_t light_key;   /* their stin__lit_lights_key */
-    } glsl_surface;
-    stin__lit_cache lit_cache; /* lit programs per light batch and material */
-    struct {                  /* "displace-tess": the programs above, tessellated
-                               * (render/path_glsl.c), swapped in for frames with
-                               * displaced draws */
-        stin__program programs[STIN__PROG_COUNT];
-        stin__program lit[STIN__SURF_COUNT];
-        int active;           /* they are in ctx->programs and glsl_surface.lit now */
-    } glsl_tess;
+    /* the frame's CSG products (csg/csg.c), until they are private */
+    stin__csg_state csg;
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);

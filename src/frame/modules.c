@@ -32,6 +32,12 @@ const stin__state_slot stin__state_slots[] = {
     SLOT(displace, stin__displace_state_bytes, NULL),
     SLOT(visibility, stin__export_state_bytes, NULL),
     SLOT(outline, stin__outline_state_bytes, NULL),
+    SLOT(mask, stin__mask_state_bytes, NULL),
+    SLOT(map_fixed, stin__map_fixed_state_bytes, NULL),
+    SLOT(map_pcf, stin__map_pcf_state_bytes, NULL),
+    SLOT(vdsm, stin__vdsm_state_bytes, NULL),
+    SLOT(glsl, stin__glsl_state_bytes, NULL),
+    SLOT(times, stin__times_state_bytes, NULL),
 };
 #undef SLOT
 const size_t stin__state_slot_count = sizeof stin__state_slots / sizeof stin__state_slots[0];

@@ -2,16 +2,38 @@
 /* Render targets: the texture and framebuffer set-up the passes share. */
 #include "internal.h"
 
+/* Binds tex, filtered by `filter` both ways, edges clamped. */
+static void bind_clamped(stin_context *ctx, GLuint tex, GLint filter)
+{
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+/* The bound texture's level 0, w x h of `internal`, no data. */
+static void level0(stin_context *ctx, GLenum internal, GLenum format, GLenum type, int w, int h)
+{
+    GL_ENUM(ctx, TexImage2D, internal)(GL_TEXTURE_2D, 0, (GLint)internal, w, h, 0, format, type,
+                                       NULL);
+}
+
 void stin__rt_texture(stin_context *ctx, GLuint tex, GLenum internal, GLenum format,
                       GLenum type, int w, int h)
 {
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, tex);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    GL_ENUM(ctx, TexImage2D, internal)(GL_TEXTURE_2D, 0, (GLint)internal, w, h, 0, format, type,
-                                       NULL);
+    bind_clamped(ctx, tex, GL_NEAREST);
+    level0(ctx, internal, format, type, w, h);
+}
+
+void stin__rt_shadow_map(stin_context *ctx, GLuint tex, int w, int h)
+{
+    bind_clamped(ctx, tex, GL_LINEAR);
+    GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_MODE)(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE,
+                                                         GL_COMPARE_R_TO_TEXTURE);
+    GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_FUNC)(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC,
+                                                         GL_LEQUAL);
+    level0(ctx, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
 }
 
 GLenum stin__rt_attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth,

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
-/* Off-screen render targets (gl/render_target.c): the screen-sized textures
- * and framebuffers the render and feature passes draw into, made one way. */
+/* Off-screen render targets (gl/render_target.c): the screen-sized textures,
+ * the shadow maps and the framebuffers the render and feature passes draw
+ * into, made one way. */
 #ifndef STIN_RENDER_TARGET_H
 #define STIN_RENDER_TARGET_H
 
@@ -12,6 +13,12 @@
  * it bound; the caller chooses the unit and unbinds. */
 void stin__rt_texture(struct stin_context *ctx, GLuint tex, GLenum internal, GLenum format,
                       GLenum type, int w, int h);
+
+/* Binds `tex` on the active unit as a w x h DEPTH_COMPONENT24 shadow map
+ * (no data): edge clamped, compared LEQUAL against the lookup's r and
+ * filtered LINEAR, the hardware's 2x2 PCF where it has one. Leaves it
+ * bound. */
+void stin__rt_shadow_map(struct stin_context *ctx, GLuint tex, int w, int h);
 
 /* Binds `fbo` and attaches the 2D textures that are not 0: `color` to colour
  * attachment 0, `depth` to the depth, `stencil` to the stencil attachment.

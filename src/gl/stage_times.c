@@ -5,11 +5,17 @@
  * by light). Timestamps, not GL_TIME_ELAPSED: those cannot nest, and the
  * stages' own occlusion and primitive queries stay free to run. The reads
  * wait for the GPU at the frame's end, so timing is a debug flag. */
-#include "internal.h"
+#include "gl/stage_times_private.h"
+
+size_t stin__times_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__stage_times);
+}
 
 void stin__times_init(stin_context *ctx)
 {
-    stin__stage_times *t = &ctx->times;
+    struct stin__stage_times *t = ctx->times;
     const uint64_t need = STIN_CAP_BIT(STIN_CAP_TIMER_QUERY) |
                           STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY);
     stin__memzero(t, sizeof *t);
@@ -27,7 +33,7 @@ void stin__times_init(stin_context *ctx)
 
 void stin__times_release(stin_context *ctx)
 {
-    stin__stage_times *t = &ctx->times;
+    struct stin__stage_times *t = ctx->times;
     if (t->on)
         GL(ctx, DeleteQueries)((GLsizei)STIN__STAGE_MARKS, t->queries);
     stin__memzero(t, sizeof *t);
@@ -35,7 +41,7 @@ void stin__times_release(stin_context *ctx)
 
 static void mark(stin_context *ctx, stin_stage s)
 {
-    stin__stage_times *t = &ctx->times;
+    struct stin__stage_times *t = ctx->times;
     t->current = s;
     if (t->marks + 1u >= STIN__STAGE_MARKS) { /* the last one ends the frame */
         if (!t->said_full)
@@ -52,22 +58,22 @@ static void mark(stin_context *ctx, stin_stage s)
 
 void stin__times_begin(stin_context *ctx, stin_stage s)
 {
-    ctx->times.marks = 0;
-    if (ctx->times.on)
+    ctx->times->marks = 0;
+    if (ctx->times->on)
         mark(ctx, s);
 }
 
 stin_stage stin__times_enter(stin_context *ctx, stin_stage s)
 {
-    stin_stage was = ctx->times.current;
-    if (ctx->times.on && s != was)
+    stin_stage was = ctx->times->current;
+    if (ctx->times->on && s != was)
         mark(ctx, s);
     return was;
 }
 
 void stin__times_end(stin_context *ctx)
 {
-    stin__stage_times *t = &ctx->times;
+    struct stin__stage_times *t = ctx->times;
     GLuint64 at[STIN__STAGE_MARKS];
     uint32_t i;
     if (!t->on || !t->marks)

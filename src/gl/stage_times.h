@@ -4,6 +4,8 @@
 #ifndef STIN_STAGE_TIMES_H
 #define STIN_STAGE_TIMES_H
 
+#include <stddef.h>
+
 #include "stin/stin.h"
 #include "gl/gl_types.h"
 
@@ -12,14 +14,9 @@
  * their time to the stage before (logged once). */
 #define STIN__STAGE_MARKS 256u
 
-typedef struct stin__stage_times {
-    GLuint queries[STIN__STAGE_MARKS]; /* made at stin_create where on */
-    int on;                      /* STIN_DEBUG_STAGE_TIMES and timer queries */
-    unsigned char stage[STIN__STAGE_MARKS]; /* the stage each timestamp opens */
-    uint32_t marks;              /* taken this frame */
-    stin_stage current;
-    int said_full;
-} stin__stage_times;
+/* Bytes of the timestamps' private state (gl/stage_times_private.h; a
+ * slot of frame/modules.c). */
+size_t stin__times_state_bytes(const stin_desc *d);
 
 /* The queries at stin_create where STIN_DEBUG_STAGE_TIMES asks and the
  * context has timer (and occlusion) queries; freed at release. */

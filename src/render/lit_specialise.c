@@ -10,7 +10,7 @@
  * masked lanes too, and its discard kept the driver from testing depth
  * before shading (the lit passes test depth EQUAL, so every hidden
  * fragment was shaded). */
-#include "internal.h"
+#include "render/glsl_private.h"
 
 /* key bits: 0-3 light count, then the parts the batch uses, the albedo
  * map, the surface variant and the tessellated twin */
@@ -59,7 +59,7 @@ static void write_defines(char *out, size_t size, uint32_t key)
  * oldest frame (not this one: a pass may still use it); -1 if none. */
 static int free_slot(stin_context *ctx)
 {
-    stin__lit_cache *c = &ctx->lit_cache;
+    stin__lit_cache *c = &ctx->glsl->lit_cache;
     uint32_t i;
     int oldest = -1;
     if (c->count < STIN__LIT_CACHE)
@@ -68,8 +68,8 @@ static int free_slot(stin_context *ctx)
         if (c->used[i] != c->frame && (oldest < 0 || c->used[i] < c->used[oldest]))
             oldest = (int)i;
     if (oldest >= 0 && c->programs[oldest].name) {
-        if (ctx->glsl_surface.current == &c->programs[oldest])
-            ctx->glsl_surface.current = NULL;
+        if (ctx->glsl->current == &c->programs[oldest])
+            ctx->glsl->current = NULL;
         GL(ctx, DeleteProgram)(c->programs[oldest].name);
     }
     return oldest;
@@ -78,10 +78,10 @@ static int free_slot(stin_context *ctx)
 const stin__program *stin__lit_specialised(stin_context *ctx, const stin__program *general,
                                            int variant, uint32_t lights_key, int albedo_tex)
 {
-    stin__lit_cache *c = &ctx->lit_cache;
+    stin__lit_cache *c = &ctx->glsl->lit_cache;
     uint32_t key = lights_key | (albedo_tex ? KEY_ALBEDO : 0u) |
                    ((uint32_t)variant << KEY_VARIANT_SHIFT) |
-                   (ctx->glsl_tess.active ? KEY_TESS : 0u) |
+                   (ctx->glsl->tess.active ? KEY_TESS : 0u) |
                    (stin__in_peeled_layer(ctx) ? KEY_PEEL : 0u);
     char defines[256], msg[160];
     uint32_t i;
@@ -110,7 +110,7 @@ const stin__program *stin__lit_specialised(stin_context *ctx, const stin__progra
     write_defines(defines, sizeof defines, key);
     c->keys[slot] = key;
     c->used[slot] = c->frame;
-    if (!stin__glsl_build_lit(ctx, variant, ctx->glsl_tess.active, (key & KEY_PEEL) != 0,
+    if (!stin__glsl_build_lit(ctx, variant, ctx->glsl->tess.active, (key & KEY_PEEL) != 0,
                               defines, &c->programs[slot], msg, sizeof msg)) {
         /* kept as a failed slot: the general program serves, without a retry per draw */
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_SHADER_COMPILE,
@@ -123,11 +123,11 @@ const stin__program *stin__lit_specialised(stin_context *ctx, const stin__progra
     return &c->programs[slot];
 }
 
-void stin__lit_cache_frame(stin_context *ctx) { ctx->lit_cache.frame++; }
+void stin__lit_cache_frame(stin_context *ctx) { ctx->glsl->lit_cache.frame++; }
 
 void stin__lit_cache_release(stin_context *ctx)
 {
-    stin__lit_cache *c = &ctx->lit_cache;
+    stin__lit_cache *c = &ctx->glsl->lit_cache;
     uint32_t i;
     for (i = 0; i < c->count; i++)
         if (c->programs[i].name)

@@ -58,21 +58,8 @@ typedef struct stin__program {
     /* peel chunk (transparency/peel.c): previous layer's depth, opaque depth, params */
     GLint u_peel_previous, u_peel_opaque, u_peel_params;
     stin__displace_locs displace; /* the vertex stage's displacement chunk */
-    uint32_t frame_serial;   /* ctx->glsl.serial its per-frame uniforms have */
+    uint32_t frame_serial;   /* the GLSL path's serial its per-frame uniforms have */
 } stin__program;
-
-/* Lit programs specialised to a light batch and a material (render/lit_specialise.c):
- * lit.frag with the batch's light count as its loop bound and only the parts
- * of the equation the batch and material use, built when a pass first needs
- * one and kept across frames, a fixed number of them (no heap). */
-#define STIN__LIT_CACHE 32
-typedef struct stin__lit_cache {
-    stin__program programs[STIN__LIT_CACHE]; /* name 0: its build failed (the general one) */
-    uint32_t keys[STIN__LIT_CACHE];
-    uint32_t used[STIN__LIT_CACHE]; /* the frame it last served */
-    uint32_t count, frame;
-    int said_full;            /* a frame found every slot in use (logged once) */
-} stin__lit_cache;
 
 /* Which draws a pass covers. */
 enum { STIN__OPAQUE = 1, STIN__BLENDED = 2, STIN__ALL = 3 };
@@ -152,6 +139,8 @@ int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int layer,
 /* The key of a light batch: its count and which parts of the equation its
  * lights need (directional, positional, spot cone, attenuation). */
 uint32_t stin__lit_lights_key(const stin_light_desc *lights, int n);
+/* Specialised lit programs kept at most (render/lit_specialise.c). */
+#define STIN__LIT_CACHE 32
 /* The program to shade a draw of surface variant `variant` (its general
  * program `general`) under the batch lights_key, with an albedo texture or
  * not, in a peeled layer or not: the specialised one, built on first use
@@ -172,6 +161,13 @@ void stin__lit_program_forget(stin_context *ctx);
 void stin__lit_uniforms_stale(stin_context *ctx);
 /* Swaps the tessellated programs in (on) or out; nothing without them. */
 void stin__glsl_tessellate(stin_context *ctx, int on);
+/* The tessellated programs are in use (a frame with displaced draws). */
+int stin__glsl_tessellated(const stin_context *ctx);
+/* The best surface variant whose lit program built (STIN__SURF_*). */
+int stin__glsl_best_variant(const stin_context *ctx);
+/* Bytes of the GLSL path's private state (render/glsl_private.h; a slot of
+ * frame/modules.c). */
+size_t stin__glsl_state_bytes(const stin_desc *d);
 /* A program's stages by embedded file name: geom NULL for none; frag_outputs
  * names the fragment outputs bound to draw buffers 0, 1, ... (GL 3.0; NULL
  * entries end the list, all NULL: the single output). */

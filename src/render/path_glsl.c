@@ -3,7 +3,7 @@
  * 110 on compatibility contexts, shaders/gl4 with #version 150 and VAOs),
  * lights in batches of 8 with additive passes, the passes the shadow
  * schedule needs, and the AOV outputs. */
-#include "internal.h"
+#include "render/glsl_private.h"
 
 static const char *const vert_names[STIN__PROG_COUNT] = {"lit.vert", "lit.vert", "lit.vert",
                                                          "volume.vert"};
@@ -60,7 +60,7 @@ static const char *lit_shadow_chunk(const stin_context *ctx)
 static stin__program *lit_program(stin_context *ctx, int variant)
 {
     return variant == STIN__SURF_PLAIN ? &ctx->programs[STIN__PROG_LIT]
-                                       : &ctx->glsl_surface.lit[variant];
+                                       : &ctx->glsl->lit[variant];
 }
 
 /* Chunk file `name` under dir as list[n] (its text in names[n]); n + 1. */
@@ -155,10 +155,10 @@ static void build_surface_variants(stin_context *ctx, const char *dir)
 {
     int top = stin__lit_variant_top(ctx);
     char msg[160];
-    ctx->glsl_surface.best = build_variants(ctx, dir, 0, top, ctx->glsl_surface.lit, msg,
+    ctx->glsl->best = build_variants(ctx, dir, 0, top, ctx->glsl->lit, msg,
                                             sizeof msg);
-    if (ctx->glsl_surface.best < top)
-        stin__lit_variant_failed(ctx, ctx->glsl_surface.best, msg);
+    if (ctx->glsl->best < top)
+        stin__lit_variant_failed(ctx, ctx->glsl->best, msg);
 }
 
 /* The lit, normal, flat and volume programs into progs; 0 on failure (msg). */
@@ -209,13 +209,13 @@ static void delete_programs(stin_context *ctx, stin__program *progs, int n)
 static void build_tessellated(stin_context *ctx, const char *dir)
 {
     char msg[160], why[220];
-    int ok = build_programs(ctx, dir, 1, ctx->glsl_tess.programs, msg, sizeof msg) &&
-             build_variants(ctx, dir, 1, ctx->glsl_surface.best, ctx->glsl_tess.lit, msg,
-                            sizeof msg) == ctx->glsl_surface.best;
+    int ok = build_programs(ctx, dir, 1, ctx->glsl->tess.programs, msg, sizeof msg) &&
+             build_variants(ctx, dir, 1, ctx->glsl->best, ctx->glsl->tess.lit, msg,
+                            sizeof msg) == ctx->glsl->best;
     if (ok)
         return;
-    delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
-    delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    delete_programs(ctx, ctx->glsl->tess.programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl->tess.lit, STIN__SURF_COUNT);
     stin__formatf(why, sizeof why, "its tessellated programs failed to build (%s)", msg);
     stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
 }
@@ -232,12 +232,12 @@ static void swap_programs(stin__program *a, stin__program *b, int n)
 
 void stin__glsl_tessellate(stin_context *ctx, int on)
 {
-    if (!on == !ctx->glsl_tess.active || !ctx->glsl_tess.programs[STIN__PROG_LIT].name)
+    if (!on == !ctx->glsl->tess.active || !ctx->glsl->tess.programs[STIN__PROG_LIT].name)
         return;
-    swap_programs(ctx->programs, ctx->glsl_tess.programs, STIN__PROG_COUNT);
-    swap_programs(ctx->glsl_surface.lit, ctx->glsl_tess.lit, STIN__SURF_COUNT);
-    ctx->glsl_tess.active = on;
-    ctx->glsl_surface.current = NULL;
+    swap_programs(ctx->programs, ctx->glsl->tess.programs, STIN__PROG_COUNT);
+    swap_programs(ctx->glsl->lit, ctx->glsl->tess.lit, STIN__SURF_COUNT);
+    ctx->glsl->tess.active = on;
+    ctx->glsl->current = NULL;
 }
 
 stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t msg_size)
@@ -269,11 +269,11 @@ void stin__glsl_release(stin_context *ctx)
 {
     stin__glsl_tessellate(ctx, 0);
     delete_programs(ctx, ctx->programs, STIN__PROG_COUNT);
-    delete_programs(ctx, ctx->glsl_surface.lit, STIN__SURF_COUNT);
-    delete_programs(ctx, ctx->glsl_tess.programs, STIN__PROG_COUNT);
-    delete_programs(ctx, ctx->glsl_tess.lit, STIN__SURF_COUNT);
+    delete_programs(ctx, ctx->glsl->lit, STIN__SURF_COUNT);
+    delete_programs(ctx, ctx->glsl->tess.programs, STIN__PROG_COUNT);
+    delete_programs(ctx, ctx->glsl->tess.lit, STIN__SURF_COUNT);
     stin__lit_cache_release(ctx);
-    ctx->glsl_surface.current = NULL;
+    ctx->glsl->current = NULL;
     if (ctx->volume_vbo)
         GL(ctx, DeleteBuffers)(1, &ctx->volume_vbo);
     if (ctx->volume_vao)
@@ -288,7 +288,7 @@ static void lit_bind(stin_context *ctx, const stin__program *p);
 static void upload_lights(stin_context *ctx, const stin__program *p, const stin_light_desc *lights,
                           int n, int with_ambient)
 {
-    float *packed = ctx->glsl_surface.packed;
+    float *packed = ctx->glsl->packed;
     int i, k;
     for (i = 0; i < n; i++) {
         const stin_light_desc *l = &lights[i];
@@ -305,10 +305,10 @@ static void upload_lights(stin_context *ctx, const stin__program *p, const stin_
         o[11] = l->type == STIN_LIGHT_SPOT ? l->spot_exponent : 0.0f;
         o[15] = 0.0f;
     }
-    ctx->glsl_surface.light_n = n;
-    ctx->glsl_surface.light_key = stin__lit_lights_key(lights, n);
-    ctx->glsl_surface.with_ambient = with_ambient;
-    ctx->glsl_surface.serial++; /* every lit program's copy is stale now */
+    ctx->glsl->light_n = n;
+    ctx->glsl->light_key = stin__lit_lights_key(lights, n);
+    ctx->glsl->with_ambient = with_ambient;
+    ctx->glsl->serial++; /* every lit program's copy is stale now */
     lit_bind(ctx, p);
 }
 
@@ -331,9 +331,9 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
     const stin__path_feature *const *f;
     const float zero[3] = {0, 0, 0};
     float inv[16];
-    if (p->frame_serial == ctx->glsl_surface.serial)
+    if (p->frame_serial == ctx->glsl->serial)
         return;
-    p->frame_serial = ctx->glsl_surface.serial;
+    p->frame_serial = ctx->glsl->serial;
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
     stin__mat4_invert(inv, ctx->frame.view);
     GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
@@ -341,11 +341,11 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
     for (f = stin__path_features(ctx); *f; f++)
         if ((*f)->units)
             (*f)->units(ctx, p);
-    GL(ctx, Uniform1i)(p->u_light_count, ctx->glsl_surface.light_n);
-    if (ctx->glsl_surface.light_n)
-        GL(ctx, Uniform4fv)(p->u_lights, 4 * ctx->glsl_surface.light_n, ctx->glsl_surface.packed);
+    GL(ctx, Uniform1i)(p->u_light_count, ctx->glsl->light_n);
+    if (ctx->glsl->light_n)
+        GL(ctx, Uniform4fv)(p->u_lights, 4 * ctx->glsl->light_n, ctx->glsl->packed);
     GL(ctx, Uniform3fv)(p->u_ambient, 1,
-                        ctx->glsl_surface.with_ambient ? ctx->frame.ambient : zero);
+                        ctx->glsl->with_ambient ? ctx->frame.ambient : zero);
     if (ctx->shadow->uniforms)
         ctx->shadow->uniforms(ctx, p);
     features_uniforms(ctx, p, 1);
@@ -354,9 +354,9 @@ static void lit_refresh(stin_context *ctx, stin__program *p)
 /* Makes p (a lit program) current with this pass's uniforms. */
 static void lit_bind(stin_context *ctx, const stin__program *p)
 {
-    if (ctx->glsl_surface.current != p) {
+    if (ctx->glsl->current != p) {
         GL(ctx, UseProgram)(p->name);
-        ctx->glsl_surface.current = p;
+        ctx->glsl->current = p;
     }
     lit_refresh(ctx, (stin__program *)p);
 }
@@ -367,7 +367,7 @@ static const stin__program *lit_for_draw(stin_context *ctx, const stin__draw *d)
     const stin__path_feature *const *f;
     int v = stin__lit_variant_for(ctx, &d->material);
     const stin__program *q = stin__lit_specialised(
-        ctx, lit_program(ctx, v), v, ctx->glsl_surface.light_key,
+        ctx, lit_program(ctx, v), v, ctx->glsl->light_key,
         stin__texture_lookup(ctx, d->material.albedo) != NULL);
     lit_bind(ctx, q);
     for (f = stin__path_features(ctx); *f; f++)
@@ -457,7 +457,7 @@ static void draw_csg_faces(stin_context *ctx, const stin__program *p, int which,
         const stin__program *q = p;
         if (!stin__resolved_face_begin(ctx, d, &saved))
             continue;
-        if (materials && ctx->glsl_surface.current)
+        if (materials && ctx->glsl->current)
             q = lit_for_draw(ctx, d);
         if (materials)
             set_material(ctx, q, &d->material);
@@ -474,7 +474,7 @@ static void draw_set(stin_context *ctx, const stin__program *p, int which, int m
         const stin__program *q = p;
         if (!in_set(ctx, d, which))
             continue;
-        if (materials && ctx->glsl_surface.current) /* a lit pass: the draw's variant */
+        if (materials && ctx->glsl->current) /* a lit pass: the draw's variant */
             q = lit_for_draw(ctx, d);
         if (materials)
             set_material(ctx, q, &d->material);
@@ -493,11 +493,11 @@ static const stin__program *use(stin_context *ctx, int which)
 {
     const stin__program *p = &ctx->programs[which];
     if (which == STIN__PROG_LIT) {
-        ctx->glsl_surface.serial++; /* a new pass: the view may have changed */
+        ctx->glsl->serial++; /* a new pass: the view may have changed */
         lit_bind(ctx, p);
         return p;
     }
-    ctx->glsl_surface.current = NULL;
+    ctx->glsl->current = NULL;
     GL(ctx, UseProgram)(p->name);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
     return p;
@@ -638,7 +638,7 @@ static void glsl_begin(stin_context *ctx)
 {
     int i;
     ctx->bound_mesh = 0xffffffffu;
-    ctx->glsl_surface.current = NULL;
+    ctx->glsl->current = NULL;
     stin__lit_cache_frame(ctx);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
@@ -654,7 +654,7 @@ static void glsl_end(stin_context *ctx)
     for (f = stin__path_features(ctx); *f; f++)
         if ((*f)->unbind)
             (*f)->unbind(ctx);
-    ctx->glsl_surface.current = NULL;
+    ctx->glsl->current = NULL;
     if (!gl4(ctx))
         for (i = 0; i < 4; i++)
             GL(ctx, DisableVertexAttribArray)((GLuint)i);
@@ -668,7 +668,7 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     uint32_t i;
     stin__mat4_mul(view_proj, proj, view);
     GL(ctx, UseProgram)(p->name);
-    ctx->glsl_surface.current = NULL; /* the lit program is no longer current */
+    ctx->glsl->current = NULL; /* the lit program is no longer current */
     if (!gl4(ctx)) { /* before the frame's passes the arrays are not on yet (glsl_end turns them off) */
         int k; /* all four: displacement reads the normal and uv */
         for (k = 0; k < 4; k++)
@@ -733,6 +733,16 @@ const stin__path *stin__path_of(const stin_context *ctx)
                : stin__glsl_path();
 }
 
-void stin__lit_program_forget(stin_context *ctx) { ctx->glsl_surface.current = NULL; }
+void stin__lit_program_forget(stin_context *ctx) { ctx->glsl->current = NULL; }
 
-void stin__lit_uniforms_stale(stin_context *ctx) { ctx->glsl_surface.serial++; }
+void stin__lit_uniforms_stale(stin_context *ctx) { ctx->glsl->serial++; }
+
+int stin__glsl_tessellated(const stin_context *ctx) { return ctx->glsl->tess.active; }
+
+int stin__glsl_best_variant(const stin_context *ctx) { return ctx->glsl->best; }
+
+size_t stin__glsl_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__glsl_state);
+}

@@ -8,6 +8,22 @@
  * and one texture unit beyond the surface's. */
 #include "internal.h"
 
+struct stin__mask_state {
+    GLuint fbo, color, depth_stencil;
+    int width, height;    /* allocated texels (0: not yet) */
+    int unit;             /* the texture unit the lit pass reads it on */
+    int drawable;         /* the context can draw masks (set at stin_create) */
+    int usable;           /* and the lit passes can read them (a unit for it) */
+    int active;           /* lights of the current lit pass read from it */
+    int depth_done;       /* the frame's depth is in the mask's buffer */
+};
+
+size_t stin__mask_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__mask_state);
+}
+
 int stin__mask_drawable(const stin_context *ctx)
 {
     uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
@@ -16,22 +32,22 @@ int stin__mask_drawable(const stin_context *ctx)
 
 int stin__mask_available(const stin_context *ctx)
 {
-    return ctx->mask.drawable;
+    return ctx->mask->drawable;
 }
 
 int stin__mask_usable(const stin_context *ctx)
 {
-    return ctx->mask.usable;
+    return ctx->mask->usable;
 }
 
 stin__mask_target stin__mask_target_of(const stin_context *ctx)
 {
     stin__mask_target t;
-    t.fbo = ctx->mask.fbo;
-    t.color = ctx->mask.color;
-    t.depth_stencil = ctx->mask.depth_stencil;
-    t.width = ctx->mask.width;
-    t.height = ctx->mask.height;
+    t.fbo = ctx->mask->fbo;
+    t.color = ctx->mask->color;
+    t.depth_stencil = ctx->mask->depth_stencil;
+    t.width = ctx->mask->width;
+    t.height = ctx->mask->height;
     return t;
 }
 
@@ -41,9 +57,9 @@ void stin__mask_init(stin_context *ctx)
                     STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
     const stin__technique_row *r =
         stin__technique_row_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
-    stin__memzero(&ctx->mask, sizeof ctx->mask);
-    ctx->mask.unit = ctx->sel.shadow_unit;
-    ctx->mask.drawable = stin__mask_drawable(ctx);
+    stin__memzero(ctx->mask, sizeof *ctx->mask);
+    ctx->mask->unit = ctx->sel.shadow_unit;
+    ctx->mask->drawable = stin__mask_drawable(ctx);
     if ((ctx->caps.present & need) != need ||
         ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED)
         return;
@@ -51,22 +67,22 @@ void stin__mask_init(stin_context *ctx)
     if (!(r && r->fragment_units > 0) && ctx->sel.shadow_spare_units < 1) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                   "shadow masks need texture unit %d of %d: each shadowed light gets its own "
-                  "lit pass", ctx->mask.unit, ctx->sel.unit_limit);
+                  "lit pass", ctx->mask->unit, ctx->sel.unit_limit);
         return;
     }
-    ctx->mask.usable = 1;
+    ctx->mask->usable = 1;
 }
 
 void stin__mask_release(stin_context *ctx)
 {
-    if (ctx->mask.fbo)
-        GL(ctx, DeleteFramebuffers)(1, &ctx->mask.fbo);
-    if (ctx->mask.color)
-        GL(ctx, DeleteTextures)(1, &ctx->mask.color);
-    if (ctx->mask.depth_stencil)
-        GL(ctx, DeleteTextures)(1, &ctx->mask.depth_stencil);
-    ctx->mask.fbo = ctx->mask.color = ctx->mask.depth_stencil = 0;
-    ctx->mask.width = ctx->mask.height = 0;
+    if (ctx->mask->fbo)
+        GL(ctx, DeleteFramebuffers)(1, &ctx->mask->fbo);
+    if (ctx->mask->color)
+        GL(ctx, DeleteTextures)(1, &ctx->mask->color);
+    if (ctx->mask->depth_stencil)
+        GL(ctx, DeleteTextures)(1, &ctx->mask->depth_stencil);
+    ctx->mask->fbo = ctx->mask->color = ctx->mask->depth_stencil = 0;
+    ctx->mask->width = ctx->mask->height = 0;
 }
 
 /* The mask covers the viewport's pixels at the same window coordinates (so
@@ -76,32 +92,32 @@ static int ensure_size(stin_context *ctx)
     const int *vp = ctx->frame.viewport;
     int w = vp[0] + vp[2], h = vp[1] + vp[3];
     GLenum status;
-    if (ctx->mask.fbo && w <= ctx->mask.width && h <= ctx->mask.height)
+    if (ctx->mask->fbo && w <= ctx->mask->width && h <= ctx->mask->height)
         return 1;
-    if (!ctx->mask.fbo) {
-        GL(ctx, GenFramebuffers)(1, &ctx->mask.fbo);
-        GL(ctx, GenTextures)(1, &ctx->mask.color);
-        GL(ctx, GenTextures)(1, &ctx->mask.depth_stencil);
+    if (!ctx->mask->fbo) {
+        GL(ctx, GenFramebuffers)(1, &ctx->mask->fbo);
+        GL(ctx, GenTextures)(1, &ctx->mask->color);
+        GL(ctx, GenTextures)(1, &ctx->mask->depth_stencil);
     }
-    if (w < ctx->mask.width)
-        w = ctx->mask.width;
-    if (h < ctx->mask.height)
-        h = ctx->mask.height;
+    if (w < ctx->mask->width)
+        w = ctx->mask->width;
+    if (h < ctx->mask->height)
+        h = ctx->mask->height;
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
-    stin__rt_texture(ctx, ctx->mask.color, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
-    stin__rt_texture(ctx, ctx->mask.depth_stencil, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL,
+    stin__rt_texture(ctx, ctx->mask->color, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, w, h);
+    stin__rt_texture(ctx, ctx->mask->depth_stencil, GL_DEPTH24_STENCIL8, GL_DEPTH_STENCIL,
                      GL_UNSIGNED_INT_24_8, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-    status = stin__rt_attach(ctx, ctx->mask.fbo, ctx->mask.color, ctx->mask.depth_stencil,
-                             ctx->mask.depth_stencil);
-    ctx->mask.width = w;
-    ctx->mask.height = h;
+    status = stin__rt_attach(ctx, ctx->mask->fbo, ctx->mask->color, ctx->mask->depth_stencil,
+                             ctx->mask->depth_stencil);
+    ctx->mask->width = w;
+    ctx->mask->height = h;
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "shadow mask framebuffer incomplete (0x%x): each shadowed light gets its own "
                   "lit pass", (unsigned)status);
         stin__mask_release(ctx);
-        ctx->mask.usable = ctx->mask.drawable = 0;
+        ctx->mask->usable = ctx->mask->drawable = 0;
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo); /* lights go on there */
         return 0;
     }
@@ -111,19 +127,19 @@ static int ensure_size(stin_context *ctx)
 int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int depth)
 {
     stin__pass_state ps = stin__pass_defaults;
-    if (!ctx->mask.drawable || !ensure_size(ctx))
+    if (!ctx->mask->drawable || !ensure_size(ctx))
         return 0;
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask->fbo);
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the mask */
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
-    if (depth && !ctx->mask.depth_done) {
+    if (depth && !ctx->mask->depth_done) {
         GL(ctx, ClearDepth)(1.0);
         GL(ctx, ClearStencil)(0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         /* the same program and draws as the target's ambient pass: equal depths */
         path->ambient(ctx, which, 1);
         stin__resolved_depth_again(ctx, path); /* the CSG products' surfaces too */
-        ctx->mask.depth_done = 1;
+        ctx->mask->depth_done = 1;
     } else {
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
     }
@@ -162,34 +178,34 @@ void stin__mask_end(stin_context *ctx)
     /* the pass's target: the frame's, or a peeled layer's (depth-peel) */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
-    stin__bind_unit(ctx, ctx->mask.unit, GL_TEXTURE_2D, ctx->mask.color);
+    stin__bind_unit(ctx, ctx->mask->unit, GL_TEXTURE_2D, ctx->mask->color);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    ctx->mask.active = 1;
-    ctx->glsl_surface.serial++; /* the lit programs' mask uniforms change */
+    ctx->mask->active = 1;
+    stin__lit_uniforms_stale(ctx); /* the lit programs' mask uniforms change */
 }
 
 void stin__mask_read_done(stin_context *ctx)
 {
-    ctx->mask.active = 0;
-    ctx->glsl_surface.serial++;
+    ctx->mask->active = 0;
+    stin__lit_uniforms_stale(ctx);
 }
 
 void stin__mask_frame_end(stin_context *ctx)
 {
-    ctx->mask.active = 0;
-    ctx->mask.depth_done = 0;
+    ctx->mask->active = 0;
+    ctx->mask->depth_done = 0;
 }
 
 void stin__mask_uniforms(stin_context *ctx, const stin__program *p)
 {
     float params[4];
-    GL(ctx, Uniform1i)(p->u_shadow_kind, ctx->mask.active);
-    if (!ctx->mask.active)
+    GL(ctx, Uniform1i)(p->u_shadow_kind, ctx->mask->active);
+    if (!ctx->mask->active)
         return;
-    params[0] = 1.0f / (float)ctx->mask.width;
-    params[1] = 1.0f / (float)ctx->mask.height;
+    params[0] = 1.0f / (float)ctx->mask->width;
+    params[1] = 1.0f / (float)ctx->mask->height;
     params[2] = params[3] = 0.0f;
     GL(ctx, Uniform4fv)(p->u_shadow_params, 1, params);
-    GL(ctx, Uniform1i)(p->u_shadow_maps[0], ctx->mask.unit);
+    GL(ctx, Uniform1i)(p->u_shadow_maps[0], ctx->mask->unit);
 }

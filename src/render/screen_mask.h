@@ -16,15 +16,8 @@
 
 #define STIN__MASK_CHANNELS 4
 
-typedef struct stin__mask_state {
-    GLuint fbo, color, depth_stencil;
-    int width, height;    /* allocated texels (0: not yet) */
-    int unit;             /* the texture unit the lit pass reads it on */
-    int drawable;         /* the context can draw masks (set at stin_create) */
-    int usable;           /* and the lit passes can read them (a unit for it) */
-    int active;           /* lights of the current lit pass read from it */
-    int depth_done;       /* the frame's depth is in the mask's buffer */
-} stin__mask_state;
+/* Bytes of the mask's private state (a slot of frame/modules.c). */
+size_t stin__mask_state_bytes(const stin_desc *d);
 /* At stin_create, before the shadow module's set-up: decides whether masks
  * can be drawn (the visibility export, any path) and read by the lit passes
  * (GLSL lighting and a texture unit: the frame's lights). */

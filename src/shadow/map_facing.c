@@ -19,24 +19,18 @@
  * a mirrored camera (det(projection * view) > 0) swaps the culled faces.
  * GL 1.1 means only, on a texture unit after the depth compare; without a
  * spare unit the test is left out (logged). */
-#include "internal.h"
+#include "shadow/map_fixed_private.h"
 
 static void create_facing_texture(stin_context *ctx, GLuint *t, uint32_t size, GLenum format)
 {
     GL(ctx, GenTextures)(1, t);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, *t);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     /* a side is a class, not a value: never averaged across a silhouette */
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, (GLint)format, (GLsizei)size, (GLsizei)size, 0,
-                        GL_LUMINANCE, GL_UNSIGNED_BYTE, NULL);
+    stin__rt_texture(ctx, *t, format, GL_LUMINANCE, GL_UNSIGNED_BYTE, (int)size, (int)size);
 }
 
 void stin__map_facing_init(stin_context *ctx, int units_after)
 {
-    stin__map_fixed_state *m = &ctx->map_fixed;
+    struct stin__map_fixed_state *m = ctx->map_fixed;
     if (m->unit + 1 + units_after > ctx->caps.max_texture_units) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                   "shadows: map-depth has no texture unit spare for its side test (%d units): "
@@ -49,32 +43,24 @@ void stin__map_facing_init(stin_context *ctx, int units_after)
         return; /* drawn in the frame's own buffer, like the map */
     create_facing_texture(ctx, &m->facing_color, m->size, GL_RGBA8);
     GL(ctx, GenTextures)(1, &m->facing_depth);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing_depth);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24,
-                                                   (GLsizei)m->size, (GLsizei)m->size, 0,
-                                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    stin__rt_texture(ctx, m->facing_depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT,
+                     GL_UNSIGNED_INT, (int)m->size, (int)m->size);
     GL(ctx, GenFramebuffers)(1, &m->facing_fbo);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->facing_fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                  m->facing_color, 0);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                  m->facing_depth, 0);
+    (void)stin__rt_attach(ctx, m->facing_fbo, m->facing_color, m->facing_depth, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
 }
 
 void stin__map_facing_create(stin_context *ctx, uint32_t slot)
 {
-    if (ctx->map_fixed.facing_test)
-        create_facing_texture(ctx, &ctx->map_fixed.facing[slot], ctx->map_fixed.size,
+    if (ctx->map_fixed->facing_test)
+        create_facing_texture(ctx, &ctx->map_fixed->facing[slot], ctx->map_fixed->size,
                               GL_LUMINANCE8);
 }
 
 void stin__map_facing_release(stin_context *ctx)
 {
-    stin__map_fixed_state *m = &ctx->map_fixed;
+    struct stin__map_fixed_state *m = ctx->map_fixed;
     uint32_t i;
     for (i = 0; i < STIN__MAP_SLOTS; i++)
         if (m->facing[i])
@@ -111,7 +97,7 @@ static void side_colours(stin_context *ctx, int on)
 void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16],
                            const float proj[16])
 {
-    stin__map_fixed_state *m = &ctx->map_fixed;
+    struct stin__map_fixed_state *m = ctx->map_fixed;
     stin__pass_state ps = *stin__pass_current(ctx); /* the map pass's viewport and scissor */
     const int *vp = ctx->frame.viewport;
     int x = m->fbo ? 0 : vp[0], y = m->fbo ? 0 : vp[1];
@@ -148,7 +134,7 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16
 
 void stin__map_facing_bind(stin_context *ctx, uint32_t slot)
 {
-    stin__map_fixed_state *m = &ctx->map_fixed;
+    struct stin__map_fixed_state *m = ctx->map_fixed;
     GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)m->unit + 1u));
     GL_ENABLE(ctx, GL_TEXTURE_2D);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing[slot]);
@@ -158,7 +144,7 @@ void stin__map_facing_bind(stin_context *ctx, uint32_t slot)
 
 void stin__map_facing_unbind(stin_context *ctx)
 {
-    stin__map_unit_off(ctx, ctx->map_fixed.unit + 1);
+    stin__map_unit_off(ctx, ctx->map_fixed->unit + 1);
 }
 
 /* The window's front faces are the surface's front (the side its
@@ -173,9 +159,9 @@ void stin__map_facing_shade(stin_context *ctx, const stin__path *path, const sti
                             stin__shade_fn shade)
 {
     static const float black[4] = {0, 0, 0, 0};
-    GLenum unit = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed.unit + 1u);
+    GLenum unit = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed->unit + 1u);
     int mirrored = camera_mirrored(ctx), side;
-    if (!ctx->map_fixed.facing_test) {
+    if (!ctx->map_fixed->facing_test) {
         shade(ctx, path, l, 1.0f);
         return;
     }

@@ -24,7 +24,7 @@
  * drawn mid-frame where there are FBOs (map-depth), kept to their squares by
  * a mask unit; elsewhere they fall back to stencil volumes (or none) and the
  * log says so once. */
-#include "internal.h"
+#include "shadow/map_fixed_private.h"
 
 #define RAMP_SIZE 256
 #define RAMP_BIAS_STEPS 1.5f /* the stored depth's rounding, with margin */
@@ -33,6 +33,12 @@
  * face frustum is widened so that the square's edge falls exactly between
  * the border texel and the first inner one (NEAREST sampling). */
 #define FACE_MASK 256u
+
+size_t stin__map_fixed_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__map_fixed_state);
+}
 
 static int combine(const stin_context *ctx)
 {
@@ -57,31 +63,17 @@ static uint32_t pow2_at_most(uint32_t n)
 static void create_map_texture(stin_context *ctx, GLuint *t, uint32_t size)
 {
     GL(ctx, GenTextures)(1, t);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, *t);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     if (combine(ctx)) {
         /* stored depths must not be averaged: nearest. Rendered into (FBO:
          * RGBA8, colour-renderable, the ramp in every channel) or copied
          * into (INTENSITY8). */
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, combine_fbo(ctx) ? GL_RGBA8 : GL_INTENSITY8,
-                            (GLsizei)size, (GLsizei)size, 0, GL_LUMINANCE, GL_UNSIGNED_BYTE,
-                            NULL);
+        stin__rt_texture(ctx, *t, combine_fbo(ctx) ? GL_RGBA8 : GL_INTENSITY8, GL_LUMINANCE,
+                         GL_UNSIGNED_BYTE, (int)size, (int)size);
     } else {
         /* compare, then filter: LINEAR is the hardware's 2x2 PCF */
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_MODE)(
-            GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_R_TO_TEXTURE);
-        GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_FUNC)(GL_TEXTURE_2D,
-                                                             GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        stin__rt_shadow_map(ctx, *t, (int)size, (int)size);
         GL_ENUM(ctx, TexParameteri, GL_DEPTH_TEXTURE_MODE)(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE,
                                                            GL_INTENSITY);
-        GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(
-            GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, (GLsizei)size, (GLsizei)size, 0,
-            GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
     }
 }
 
@@ -90,19 +82,19 @@ static stin_result fixed_init(stin_context *ctx)
     uint32_t i, size = ctx->desc.shadows.map_size;
     int units = combine(ctx) ? 2 : 1;
     /* after the surface technique's units (selection placed them) */
-    ctx->map_fixed.unit = ctx->sel.shadow_unit;
+    ctx->map_fixed->unit = ctx->sel.shadow_unit;
     if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
         size = pow2_at_most((uint32_t)ctx->caps.max_texture_size);
-    ctx->map_fixed.size = size;
+    ctx->map_fixed->size = size;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (i = 0; i < ctx->desc.max_lights; i++)
-        create_map_texture(ctx, &ctx->map_fixed.textures[i], size);
+        create_map_texture(ctx, &ctx->map_fixed->textures[i], size);
     if (combine(ctx)) {
         unsigned char ramp[RAMP_SIZE];
         for (i = 0; i < RAMP_SIZE; i++)
             ramp[i] = (unsigned char)i;
-        GL(ctx, GenTextures)(1, &ctx->map_fixed.ramp);
-        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->map_fixed.ramp);
+        GL(ctx, GenTextures)(1, &ctx->map_fixed->ramp);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->map_fixed->ramp);
         GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -110,55 +102,50 @@ static stin_result fixed_init(stin_context *ctx)
         GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
     }
     if (combine_fbo(ctx)) {
-        GL(ctx, GenTextures)(1, &ctx->map_fixed.depth_scratch);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.depth_scratch);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24,
-                                                       (GLsizei)size, (GLsizei)size, 0,
-                                                       GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
-        GL(ctx, GenFramebuffers)(1, &ctx->map_fixed.fbo);
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
-        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                      ctx->map_fixed.depth_scratch, 0);
+        /* the colour, each map's, is attached as it is drawn */
+        GL(ctx, GenTextures)(1, &ctx->map_fixed->depth_scratch);
+        stin__rt_texture(ctx, ctx->map_fixed->depth_scratch, GL_DEPTH_COMPONENT24,
+                         GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, (int)size, (int)size);
+        GL(ctx, GenFramebuffers)(1, &ctx->map_fixed->fbo);
+        (void)stin__rt_attach(ctx, ctx->map_fixed->fbo, 0, ctx->map_fixed->depth_scratch, 0);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     } else if (!combine(ctx) && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO))) {
         /* depth only: no colour buffer to draw or read (the side test's
          * colour, when there is one, is attached by its init) */
-        GL(ctx, GenFramebuffers)(1, &ctx->map_fixed.fbo);
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
+        GL(ctx, GenFramebuffers)(1, &ctx->map_fixed->fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed->fbo);
         GL(ctx, DrawBuffer)(GL_NONE);
         GL(ctx, ReadBuffer)(GL_NONE);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     }
     if (!combine(ctx)) {
         stin__map_facing_init(ctx, 0);
-        units += ctx->map_fixed.facing_test;
+        units += ctx->map_fixed->facing_test;
         for (i = 0; i < ctx->desc.max_lights; i++)
             stin__map_facing_create(ctx, i);
     }
     /* point lights: six maps drawn mid-frame (FBOs), shared by all of them,
      * and a mask unit that keeps each face to its own 90-degree square */
-    if (ctx->map_fixed.fbo && !combine(ctx) && ctx->map_fixed.unit + units + 1 <= ctx->caps.max_texture_units &&
+    if (ctx->map_fixed->fbo && !combine(ctx) && ctx->map_fixed->unit + units + 1 <= ctx->caps.max_texture_units &&
         (FACE_MASK * FACE_MASK) <= ctx->staging_bytes + ctx->scratch_bytes) {
         unsigned char *m = ctx->staging_bytes >= FACE_MASK * FACE_MASK ? ctx->staging : ctx->scratch;
         uint32_t x, y;
         for (i = 0; i < STIN__CUBE_FACES; i++) {
-            create_map_texture(ctx, &ctx->map_fixed.textures[STIN__FACE_SLOT + i], size);
+            create_map_texture(ctx, &ctx->map_fixed->textures[STIN__FACE_SLOT + i], size);
             stin__map_facing_create(ctx, STIN__FACE_SLOT + i);
         }
         for (y = 0; y < FACE_MASK; y++)
             for (x = 0; x < FACE_MASK; x++)
                 m[y * FACE_MASK + x] =
                     (x == 0 || y == 0 || x == FACE_MASK - 1 || y == FACE_MASK - 1) ? 0 : 255;
-        GL(ctx, GenTextures)(1, &ctx->map_fixed.face_mask);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.face_mask);
+        GL(ctx, GenTextures)(1, &ctx->map_fixed->face_mask);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed->face_mask);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         stin__upload_bytes(ctx, GL_TEXTURE_2D, GL_LUMINANCE, FACE_MASK, FACE_MASK, GL_LUMINANCE, m);
-        ctx->map_fixed.faces = 1;
+        ctx->map_fixed->faces = 1;
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__gl_check_errors(ctx, "shadow-map set-up");
@@ -169,20 +156,20 @@ static void fixed_release(stin_context *ctx)
 {
     uint32_t i;
     for (i = 0; i < STIN__MAP_SLOTS; i++)
-        if (ctx->map_fixed.textures[i]) {
-            GL(ctx, DeleteTextures)(1, &ctx->map_fixed.textures[i]);
-            ctx->map_fixed.textures[i] = 0;
+        if (ctx->map_fixed->textures[i]) {
+            GL(ctx, DeleteTextures)(1, &ctx->map_fixed->textures[i]);
+            ctx->map_fixed->textures[i] = 0;
         }
-    if (ctx->map_fixed.ramp)
-        GL(ctx, DeleteTextures)(1, &ctx->map_fixed.ramp);
-    if (ctx->map_fixed.fbo)
-        GL(ctx, DeleteFramebuffers)(1, &ctx->map_fixed.fbo);
-    if (ctx->map_fixed.depth_scratch)
-        GL(ctx, DeleteTextures)(1, &ctx->map_fixed.depth_scratch);
-    if (ctx->map_fixed.face_mask)
-        GL(ctx, DeleteTextures)(1, &ctx->map_fixed.face_mask);
+    if (ctx->map_fixed->ramp)
+        GL(ctx, DeleteTextures)(1, &ctx->map_fixed->ramp);
+    if (ctx->map_fixed->fbo)
+        GL(ctx, DeleteFramebuffers)(1, &ctx->map_fixed->fbo);
+    if (ctx->map_fixed->depth_scratch)
+        GL(ctx, DeleteTextures)(1, &ctx->map_fixed->depth_scratch);
+    if (ctx->map_fixed->face_mask)
+        GL(ctx, DeleteTextures)(1, &ctx->map_fixed->face_mask);
     stin__map_facing_release(ctx);
-    stin__memzero(&ctx->map_fixed, sizeof ctx->map_fixed);
+    stin__memzero(ctx->map_fixed, sizeof *ctx->map_fixed);
 }
 
 /* ---- rendering the maps -------------------------------------------------- */
@@ -217,16 +204,16 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
 {
     const stin_light_desc *l = &ctx->lights[li];
     const int *vp = ctx->frame.viewport;
-    uint32_t used = ctx->map_fixed.used;
+    uint32_t used = ctx->map_fixed->used;
     stin__pass_state ps = stin__pass_defaults;
-    int fbo = ctx->map_fixed.fbo != 0, facing = !combine(ctx) && ctx->map_fixed.facing_test;
+    int fbo = ctx->map_fixed->fbo != 0, facing = !combine(ctx) && ctx->map_fixed->facing_test;
     int map_vp[4], cast;
     ps.depth_test = 1;
     if (fbo) {
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed.fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->map_fixed->fbo);
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER,
                                       combine(ctx) ? GL_COLOR_ATTACHMENT0 : GL_DEPTH_ATTACHMENT,
-                                      GL_TEXTURE_2D, ctx->map_fixed.textures[slot], 0);
+                                      GL_TEXTURE_2D, ctx->map_fixed->textures[slot], 0);
         GL(ctx, Viewport)(0, 0, (GLsizei)used, (GLsizei)used);
     } else {
         GL(ctx, Viewport)(vp[0], vp[1], (GLsizei)used, (GLsizei)used);
@@ -251,7 +238,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     map_vp[1] = fbo ? 0 : vp[1];
     map_vp[2] = map_vp[3] = (int)used;
     cast = stin__casters_cast(ctx, stin__fixed_path(), view, proj, map_vp,
-                              fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
+                              fbo ? ctx->map_fixed->fbo : ctx->draw_fbo,
                               !fbo && stin__target_has_stencil(ctx),
                               ps.polygon_offset ? ps.offset_factor : 0.0f,
                               ps.polygon_offset ? ps.offset_units : 0.0f);
@@ -260,11 +247,11 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     if (combine(ctx)) {
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
-        stin__bind_unit(ctx, 0, GL_TEXTURE_1D, ctx->map_fixed.ramp);
+        stin__bind_unit(ctx, 0, GL_TEXTURE_1D, ctx->map_fixed->ramp);
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
         ramp_texgen_light_eye(ctx, n, f);
         if (cast) /* the products' surface in the ramp's colours */
-            stin__casters_again(ctx, map_vp, fbo ? ctx->map_fixed.fbo : ctx->draw_fbo,
+            stin__casters_again(ctx, map_vp, fbo ? ctx->map_fixed->fbo : ctx->draw_fbo,
                                 !fbo && stin__target_has_stencil(ctx));
     }
     stin__fixed_path()->depth(ctx, view, proj);
@@ -280,7 +267,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
                                       GL_TEXTURE_2D, 0, 0);
     } else {
         /* the colour (ramp) or depth of the region into the light's texture */
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.textures[slot]);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed->textures[slot]);
         GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, vp[0], vp[1], (GLsizei)used,
                                    (GLsizei)used);
         GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
@@ -296,7 +283,7 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
                          const float proj[16], float n, float f)
 {
     float vp[16], bias[16], m[16];
-    float scale = (float)ctx->map_fixed.used / (float)ctx->map_fixed.size;
+    float scale = (float)ctx->map_fixed->used / (float)ctx->map_fixed->size;
     int r, c;
     stin__mat4_mul(vp, proj, view);
     stin__mat4_identity(bias);
@@ -306,7 +293,7 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
     stin__mat4_mul(m, bias, vp);
     for (r = 0; r < 4; r++)
         for (c = 0; c < 4; c++)
-            ctx->map_fixed.texgen[slot][4 * r + c] = m[4 * c + r];
+            ctx->map_fixed->texgen[slot][4 * r + c] = m[4 * c + r];
     /* Ramp coordinate of the fragment's own light-eye depth d, nearer than
      * the stored one so that a surface does not shadow itself: a constant
      * for the 8-bit steps, plus what a slope up to SLOPE_BIAS changes the
@@ -316,14 +303,14 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
     {
         float unused_factor, unused_units;
         int off = !stin__map_offset(&ctx->lights[li], &unused_factor, &unused_units);
-        float texel = 2.0f / (proj[0] * (float)ctx->map_fixed.used);
+        float texel = 2.0f / (proj[0] * (float)ctx->map_fixed->used);
         int ortho = proj[15] != 0.0f;
         float slope = off ? 0.0f : SLOPE_BIAS * texel;
         float k = -(1.0f - (ortho ? 0.0f : slope)) / (f - n);
         float o = -n / (f - n) - (off ? 0.0f : RAMP_BIAS_STEPS / (float)(RAMP_SIZE - 1)) -
                   (ortho ? slope / (f - n) : 0.0f);
         for (c = 0; c < 4; c++)
-            ctx->map_fixed.ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
+            ctx->map_fixed->ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
     }
 }
 
@@ -332,13 +319,13 @@ static void fixed_prepass(stin_context *ctx)
 {
     uint32_t i;
     const int *vp = ctx->frame.viewport;
-    uint32_t limit = ctx->map_fixed.size;
-    if (!ctx->map_fixed.fbo) { /* drawn in the frame's own framebuffer */
+    uint32_t limit = ctx->map_fixed->size;
+    if (!ctx->map_fixed->fbo) { /* drawn in the frame's own framebuffer */
         uint32_t fit = (uint32_t)(vp[2] < vp[3] ? vp[2] : vp[3]);
         if (fit < limit)
             limit = pow2_at_most(fit);
     }
-    ctx->map_fixed.used = limit;
+    ctx->map_fixed->used = limit;
     ctx->stats.shadows.map_size = limit;
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PushMatrix)();
@@ -349,35 +336,35 @@ static void fixed_prepass(stin_context *ctx)
     for (i = 0; i < ctx->light_count && i < STIN__MAX_LIGHTS; i++) {
         const stin_light_desc *l = &ctx->lights[i];
         float view[16], proj[16], n, f;
-        ctx->map_fixed.valid[i] = 0;
+        ctx->map_fixed->valid[i] = 0;
         if (l->type == STIN_LIGHT_POINT) {
-            if (!ctx->map_fixed.said_point && !ctx->map_fixed.faces) {
+            if (!ctx->map_fixed->said_point && !ctx->map_fixed->faces) {
                 stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                           "shadows: point lights need six depth maps drawn mid-frame (map-depth "
                           "with framebuffer objects); here they use %s",
                           stin__target_has_stencil(ctx) ? "stencil volumes"
                                                                                : "no shadows");
-                ctx->map_fixed.said_point = 1;
+                ctx->map_fixed->said_point = 1;
             }
             continue;
         }
-        if (l->radius > 0.0f && !ctx->map_fixed.said_area) {
+        if (l->radius > 0.0f && !ctx->map_fixed->said_area) {
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                       "shadows: shadow maps treat area lights as points (hard shadows)");
-            ctx->map_fixed.said_area = 1;
+            ctx->map_fixed->said_area = 1;
         }
-        if (!stin__light_camera(ctx, l, view, proj, &n, &f, ctx->map_fixed.used))
+        if (!stin__light_camera(ctx, l, view, proj, &n, &f, ctx->map_fixed->used))
             continue;
         render_one(ctx, i, i, view, proj, n, f);
         store_texgen(ctx, i, i, view, proj, n, f);
-        ctx->map_fixed.valid[i] = 1;
+        ctx->map_fixed->valid[i] = 1;
     }
     GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PopMatrix)();
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PopMatrix)();
-    if (ctx->map_fixed.fbo)
+    if (ctx->map_fixed->fbo)
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     stin__gl_check_errors(ctx, "shadow maps");
 }
@@ -443,7 +430,7 @@ static void bind_slot(stin_context *ctx, uint32_t li);
 /* 1 if light li has a map this frame; binds its test onto the shadow units. */
 static int bind_light(stin_context *ctx, uint32_t li)
 {
-    if (li >= STIN__MAX_LIGHTS || !ctx->map_fixed.valid[li])
+    if (li >= STIN__MAX_LIGHTS || !ctx->map_fixed->valid[li])
         return 0;
     bind_slot(ctx, li);
     return 1;
@@ -451,18 +438,18 @@ static int bind_light(stin_context *ctx, uint32_t li)
 
 static void bind_slot(stin_context *ctx, uint32_t li)
 {
-    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed.unit);
+    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed->unit);
     /* planes are given in world space: specify them under the camera's view,
      * whose inverse GL applies, so any draw's eye coordinates map back */
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, LoadMatrixf)(ctx->frame.view);
     GL(ctx, ActiveTexture)(u);
     GL_ENABLE(ctx, GL_TEXTURE_2D);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.textures[li]);
-    stin__map_texgen(ctx, ctx->map_fixed.texgen[li], !combine(ctx));
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed->textures[li]);
+    stin__map_texgen(ctx, ctx->map_fixed->texgen[li], !combine(ctx));
     if (!combine(ctx)) {
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-        if (ctx->map_fixed.facing_test)
+        if (ctx->map_fixed->facing_test)
             stin__map_facing_bind(ctx, li);
     } else {
         /* colour passed on, the stored depth into alpha */
@@ -475,9 +462,9 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         /* next unit: stored - own + 0.5 into alpha, colour passed on */
         GL(ctx, ActiveTexture)(u + 1u);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
-        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->map_fixed.ramp);
+        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->map_fixed->ramp);
         GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
-        GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->map_fixed.ramp_plane[li]);
+        GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->map_fixed->ramp_plane[li]);
         GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
         set_combine(ctx, &compare);
         GL_ENABLE(ctx, GL_ALPHA_TEST);
@@ -492,7 +479,7 @@ static void bind_slot(stin_context *ctx, uint32_t li)
 
 static void unbind(stin_context *ctx)
 {
-    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed.unit);
+    GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed->unit);
     GL(ctx, ActiveTexture)(u);
     GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
     GL_DISABLE(ctx, GL_TEXTURE_GEN_T);
@@ -500,7 +487,7 @@ static void unbind(stin_context *ctx)
     GL_DISABLE(ctx, GL_TEXTURE_GEN_Q);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
-    if (!combine(ctx) && ctx->map_fixed.facing_test)
+    if (!combine(ctx) && ctx->map_fixed->facing_test)
         stin__map_facing_unbind(ctx);
     if (combine(ctx)) {
         GL(ctx, ActiveTexture)(u + 1u);
@@ -533,7 +520,7 @@ static float face_fov_deg(void)
 /* The face mask's unit: after the map test's (and the side test's). */
 static int mask_unit(const stin_context *ctx)
 {
-    return ctx->map_fixed.unit + (combine(ctx) ? 2 : 1 + ctx->map_fixed.facing_test);
+    return ctx->map_fixed->unit + (combine(ctx) ? 2 : 1 + ctx->map_fixed->facing_test);
 }
 
 /* Point lights with FBOs: renders cube face f (0..5: +x -x +y -y +z -z) of
@@ -545,7 +532,7 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
     const float *ax = face_axis[face];
     float view[16], proj[16], n, f, half, center[3];
     uint32_t slot = STIN__FACE_SLOT + (uint32_t)face;
-    if (!ctx->map_fixed.faces || l->type != STIN_LIGHT_POINT)
+    if (!ctx->map_fixed->faces || l->type != STIN_LIGHT_POINT)
         return 0;
     stin__light_look_along(view, l->position, ax);
     stin__light_fit(ctx, view, 0, &n, &f, &half, center);
@@ -555,7 +542,7 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
         n = f * 1e-3f;
     /* tan(fov/2) = (N/2) / (N/2 - 1): the 90-degree square ends on a texel edge */
     stin__light_perspective(proj, face_fov_deg(), n, f);
-    ctx->map_fixed.used = ctx->map_fixed.size;
+    ctx->map_fixed->used = ctx->map_fixed->size;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     GL_DISABLE(ctx, GL_LIGHTING);
@@ -575,8 +562,8 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
         GLenum mu = (GLenum)(GL_TEXTURE0 + (GLenum)mask_unit(ctx));
         GL(ctx, ActiveTexture)(mu);
         GL_ENABLE(ctx, GL_TEXTURE_2D);
-        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed.face_mask);
-        stin__map_texgen(ctx, ctx->map_fixed.texgen[slot], 0);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed->face_mask);
+        stin__map_texgen(ctx, ctx->map_fixed->texgen[slot], 0);
         const combine_stage mask = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
                                     {GL_SRC_COLOR, GL_SRC_COLOR}, GL_REPLACE, {GL_PREVIOUS, 0},
                                     {GL_SRC_ALPHA, 0}};
@@ -606,7 +593,7 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
 {
     const stin_light_desc *l = &ctx->lights[li];
     int mapped = bind_light(ctx, li), face;
-    if (!mapped && l->type == STIN_LIGHT_POINT && ctx->map_fixed.faces) {
+    if (!mapped && l->type == STIN_LIGHT_POINT && ctx->map_fixed->faces) {
         for (face = 0; face < STIN__CUBE_FACES; face++)
             if (face_begin(ctx, li, face)) {
                 stin__map_facing_shade(ctx, path, l, shade);
@@ -636,8 +623,8 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
 int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li)
 {
     return li < STIN__MAX_LIGHTS &&
-           (ctx->map_fixed.valid[li] ||
-            (ctx->lights[li].type == STIN_LIGHT_POINT && ctx->map_fixed.faces));
+           (ctx->map_fixed->valid[li] ||
+            (ctx->lights[li].type == STIN_LIGHT_POINT && ctx->map_fixed->faces));
 }
 
 /* A spot or directional light's map, for looking at: map-depth's depth
@@ -646,11 +633,11 @@ int stin__map_fixed_maps_light(const stin_context *ctx, uint32_t li)
  * side were drawn (bounded by the viewport). */
 static stin_result fixed_debug_map(const stin_context *ctx, uint32_t li, stin_debug_map *out)
 {
-    if (!ctx->map_fixed.valid[li])
+    if (!ctx->map_fixed->valid[li])
         return STIN_ERROR_UNSUPPORTED;
-    out->texture = ctx->map_fixed.textures[li];
-    out->size = ctx->map_fixed.used;
-    out->allocated = ctx->map_fixed.size;
+    out->texture = ctx->map_fixed->textures[li];
+    out->size = ctx->map_fixed->used;
+    out->allocated = ctx->map_fixed->size;
     out->depth = !combine(ctx);
     return STIN_OK;
 }

@@ -14,28 +14,36 @@
  * polygon offset (the light's shadow_offset: slope-scaled bias). */
 #include "internal.h"
 
+struct stin__map_pcf_state {
+    GLuint textures[STIN__MAP_SLOTS];
+    GLuint fbo;
+    uint32_t size;
+    int unit;             /* first sampler unit (STIN__SHADOW_SAMPLERS of them) */
+    unsigned char valid[STIN__MAX_LIGHTS];
+    float matrix[STIN__MAP_SLOTS][16];   /* world -> [0,1] map space */
+    float normal_offset[STIN__MAP_SLOTS]; /* world units per unit clip w: 1.5 texels */
+    /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
+    int kind;
+    uint32_t light;
+};
+
+size_t stin__map_pcf_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__map_pcf_state);
+}
+
 #define FACE_SLOT STIN__FACE_SLOT
 
 static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t size)
 {
     GL(ctx, GenTextures)(1, t);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, *t);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_MODE)(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE,
-                                                         GL_COMPARE_R_TO_TEXTURE);
-    GL_ENUM(ctx, TexParameteri, GL_TEXTURE_COMPARE_FUNC)(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC,
-                                                         GL_LEQUAL);
-    GL_ENUM(ctx, TexImage2D, GL_DEPTH_COMPONENT24)(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24,
-                                                   (GLsizei)size, (GLsizei)size, 0,
-                                                   GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, NULL);
+    stin__rt_shadow_map(ctx, *t, (int)size, (int)size);
 }
 
 static stin_result pcf_init(stin_context *ctx)
 {
-    stin__map_pcf_state *m = &ctx->map_pcf;
+    struct stin__map_pcf_state *m = ctx->map_pcf;
     uint32_t i, size = ctx->desc.shadows.map_size;
     if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
         size = (uint32_t)ctx->caps.max_texture_size;
@@ -59,7 +67,7 @@ static stin_result pcf_init(stin_context *ctx)
 
 static void pcf_release(stin_context *ctx)
 {
-    stin__map_pcf_state *m = &ctx->map_pcf;
+    struct stin__map_pcf_state *m = ctx->map_pcf;
     uint32_t i;
     for (i = 0; i < STIN__MAP_SLOTS; i++)
         if (m->textures[i])
@@ -72,7 +80,7 @@ static void pcf_release(stin_context *ctx)
 static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
                      const float view[16], const float proj[16])
 {
-    const stin__map_pcf_state *m = &ctx->map_pcf;
+    const struct stin__map_pcf_state *m = ctx->map_pcf;
     stin__pass_state ps = stin__pass_defaults;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
@@ -96,7 +104,7 @@ static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
-    stin__light_window_matrix(ctx->map_pcf.matrix[slot], view, proj); /* world -> [0,1] */
+    stin__light_window_matrix(ctx->map_pcf->matrix[slot], view, proj); /* world -> [0,1] */
     ctx->stats.passes++;
 }
 
@@ -113,7 +121,7 @@ static float texel_offset(const float proj[16], uint32_t size)
 /* Maps of every spot and directional light, before the camera's passes. */
 static void pcf_prepass(stin_context *ctx)
 {
-    stin__map_pcf_state *m = &ctx->map_pcf;
+    struct stin__map_pcf_state *m = ctx->map_pcf;
     uint32_t i;
     ctx->stats.shadows.map_size = m->size;
     for (i = 0; i < ctx->light_count && i < STIN__MAX_LIGHTS; i++) {
@@ -142,7 +150,7 @@ static int draw_faces(stin_context *ctx, uint32_t li)
         stin__light_cube_face(ctx, l->position, face, view, proj);
         draw_map(ctx, slot, l, view, proj);
         /* every face is 90 degrees: one offset per unit w serves the six */
-        ctx->map_pcf.normal_offset[FACE_SLOT] = texel_offset(proj, ctx->map_pcf.size);
+        ctx->map_pcf->normal_offset[FACE_SLOT] = texel_offset(proj, ctx->map_pcf->size);
         any = 1;
     }
     return any;
@@ -154,7 +162,7 @@ static int draw_faces(stin_context *ctx, uint32_t li)
  * different types on one unit are an error at draw time. */
 static void pcf_uniforms(stin_context *ctx, const stin__program *p)
 {
-    const stin__map_pcf_state *m = &ctx->map_pcf;
+    const struct stin__map_pcf_state *m = ctx->map_pcf;
     float params[4] = {0, 0, 0, 0}, mats[STIN__SHADOW_SAMPLERS * 16];
     int i, kind = m->kind, count = kind == 2 ? STIN__SHADOW_SAMPLERS : 1;
     uint32_t li = m->light;
@@ -182,7 +190,7 @@ static void pcf_uniforms(stin_context *ctx, const stin__program *p)
  * now (mid-frame, between the camera's passes). */
 static void pcf_light(stin_context *ctx, const stin__path *path, uint32_t li, stin__shade_fn shade)
 {
-    stin__map_pcf_state *m = &ctx->map_pcf;
+    struct stin__map_pcf_state *m = ctx->map_pcf;
     const stin_light_desc *l = &ctx->lights[li];
     m->light = li;
     m->kind = l->type == STIN_LIGHT_POINT ? (draw_faces(ctx, li) ? 2 : 0) : (m->valid[li] ? 1 : 0);
@@ -202,10 +210,10 @@ static int pcf_fragment_test(const stin_context *ctx, uint32_t li)
 /* A spot or directional light's map, for looking at. */
 static stin_result pcf_debug_map(const stin_context *ctx, uint32_t li, stin_debug_map *out)
 {
-    if (!ctx->map_pcf.valid[li])
+    if (!ctx->map_pcf->valid[li])
         return STIN_ERROR_UNSUPPORTED;
-    out->texture = ctx->map_pcf.textures[li];
-    out->size = out->allocated = ctx->map_pcf.size;
+    out->texture = ctx->map_pcf->textures[li];
+    out->size = out->allocated = ctx->map_pcf->size;
     out->depth = 1;
     return STIN_OK;
 }

@@ -16,7 +16,13 @@
  * shader runs on the kept ones alone. The shadow polygons need triangles
  * alone: no adjacency, so open and non-manifold meshes cast exactly (SM's
  * occluders use it where the mesh has it). */
-#include "internal.h"
+#include "shadow/vdsm_private.h"
+
+size_t stin__vdsm_state_bytes(const stin_desc *d)
+{
+    (void)d;
+    return sizeof(struct stin__vdsm_state);
+}
 
 GLuint stin__vdsm_program(stin_context *ctx, const char *vert, const char *geom,
                           const char *frag, const char *out1, int tessellate, char *msg,
@@ -68,7 +74,7 @@ void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint 
 
 static void release(stin_context *ctx)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     GLuint none = 0;
     stin__vdsm_delete_programs(ctx, &v->position_prog, &v->facing_prog, &v->polygon_prog);
     stin__vdsm_delete_programs(ctx, &v->position_tess, &v->polygon_tess, &none);
@@ -106,22 +112,22 @@ void stin__vdsm_polygon_locate(stin_context *ctx, GLuint prog, stin__vdsm_polygo
 }
 
 static const stin__uniform_name position_uniforms[] = {
-    STIN__UNIFORM(stin__vdsm_state, pos_model, "u_model"),
-    STIN__UNIFORM(stin__vdsm_state, pos_view_proj, "u_view_proj"),
-    STIN__UNIFORM(stin__vdsm_state, pos_camera, "u_camera"),
-    STIN__UNIFORM(stin__vdsm_state, pos_csg, "u_csg"),
-    STIN__UNIFORM(stin__vdsm_state, pos_csg_depth, "u_csg_depth"),
+    STIN__UNIFORM(struct stin__vdsm_state, pos_model, "u_model"),
+    STIN__UNIFORM(struct stin__vdsm_state, pos_view_proj, "u_view_proj"),
+    STIN__UNIFORM(struct stin__vdsm_state, pos_camera, "u_camera"),
+    STIN__UNIFORM(struct stin__vdsm_state, pos_csg, "u_csg"),
+    STIN__UNIFORM(struct stin__vdsm_state, pos_csg_depth, "u_csg_depth"),
 };
 
 static const stin__uniform_name facing_uniforms[] = {
-    STIN__UNIFORM(stin__vdsm_state, face_position, "u_position"),
-    STIN__UNIFORM(stin__vdsm_state, face_normal, "u_normal"),
-    STIN__UNIFORM(stin__vdsm_state, face_light, "u_light"),
+    STIN__UNIFORM(struct stin__vdsm_state, face_position, "u_position"),
+    STIN__UNIFORM(struct stin__vdsm_state, face_normal, "u_normal"),
+    STIN__UNIFORM(struct stin__vdsm_state, face_light, "u_light"),
 };
 
 static void locate(stin_context *ctx)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     STIN__LOCATE(ctx, v->position_prog, v, position_uniforms);
     STIN__LOCATE(ctx, v->facing_prog, v, facing_uniforms);
     /* the position buffer is the camera's view */
@@ -141,7 +147,7 @@ static stin_technique fallback(const stin_context *ctx)
  * do not build, displacement moves to "displace". */
 static void build_tessellated(stin_context *ctx)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     char msg[160], why[220];
     GLuint none = 0;
     msg[0] = '\0';
@@ -158,7 +164,7 @@ static void build_tessellated(stin_context *ctx)
 
 void stin__vdsm_tessellate(stin_context *ctx, int on)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     GLuint t;
     if (!on == !v->tess_active || !v->polygon_tess)
         return;
@@ -174,7 +180,7 @@ void stin__vdsm_tessellate(stin_context *ctx, int on)
 
 static stin_result vdsm_init(stin_context *ctx)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     char msg[160], why[200];
     stin__memzero(v, sizeof *v);
     if (!stin__mask_usable(ctx)) {
@@ -254,7 +260,7 @@ static int depth_tested(const stin_context *ctx)
  * own depth-stencil (on), or back (off). */
 static void surface_depth(stin_context *ctx, int on)
 {
-    GLuint depth = on ? ctx->vdsm.depth : stin__mask_target_of(ctx).depth_stencil;
+    GLuint depth = on ? ctx->vdsm->depth : stin__mask_target_of(ctx).depth_stencil;
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                   on ? 0u : depth, 0);
@@ -271,7 +277,7 @@ void stin__vdsm_polygon_uniforms(stin_context *ctx, const stin__vdsm_polygon_loc
     viewport[3] = (float)vp[3];
     GL(ctx, UniformMatrix4fv)(l->view_proj, 1, GL_FALSE, ctx->view_proj);
     GL(ctx, Uniform4fv)(l->light, 1, light);
-    GL(ctx, Uniform4fv)(l->camera, 1, ctx->vdsm.camera);
+    GL(ctx, Uniform4fv)(l->camera, 1, ctx->vdsm->camera);
     GL(ctx, Uniform4fv)(l->viewport, 1, viewport);
     GL(ctx, Uniform1f)(l->grow, ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_GROW ? 0.0f : 0.5f);
     GL(ctx, Uniform1i)(l->depth_test, depth_tested(ctx));
@@ -302,7 +308,7 @@ void stin__vdsm_draw_casters(stin_context *ctx, const stin__vdsm_polygon_locs *l
  * it, or culled and drawn in one geometry shader. */
 static void polygons(stin_context *ctx, const float light[4])
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     const stin__pass_state before = *stin__pass_current(ctx);
     stin__pass_state ps = before;
     int tested = depth_tested(ctx), fed = stin__vdsm_cull_on(ctx);
@@ -344,7 +350,7 @@ static void polygons(stin_context *ctx, const float light[4])
 /* Light li's visibility into mask channel `channel`. */
 static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int channel)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     const stin_light_desc *l = &ctx->lights[li];
     stin__pass_state ps = *stin__pass_current(ctx);
     float light[4];
@@ -387,11 +393,11 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
 static void vdsm_light(stin_context *ctx, const stin__path *path, uint32_t li,
                        stin__shade_fn shade)
 {
-    if (!ctx->vdsm.said_failed)
+    if (!ctx->vdsm->said_failed)
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK,
                   "vdsm: no screen mask or position buffer this frame: lights are drawn "
                   "without shadows");
-    ctx->vdsm.said_failed = 1;
+    ctx->vdsm->said_failed = 1;
     shade(ctx, path, &ctx->lights[li], 1.0f);
 }
 

@@ -6,11 +6,11 @@
  * positions, not depth reconstruction: a 24-bit depth buffer holds the eye
  * distance to about 1e-7 of the far/near ratio, too coarse for contact
  * shadows, while the float buffer holds the interpolated position itself. */
-#include "internal.h"
+#include "shadow/vdsm_private.h"
 
 void stin__vdsm_buffer_release(stin_context *ctx)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     GLuint tex[3];
     int i, n = 0;
     if (v->fbo)
@@ -32,7 +32,7 @@ void stin__vdsm_buffer_release(stin_context *ctx)
 static int ensure_size(stin_context *ctx)
 {
     static const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     int w = vp[0] + vp[2], h = vp[1] + vp[3];
     GLenum status;
@@ -121,7 +121,7 @@ static void camera_point(stin_context *ctx, float out[4])
 static void use_position_program(stin_context *ctx)
 {
     static const float off[4] = {0, 0, 0, 0};
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     GL(ctx, UseProgram)(v->position_prog);
     stin__lit_program_forget(ctx);
     GL(ctx, UniformMatrix4fv)(v->pos_view_proj, 1, GL_FALSE, ctx->view_proj);
@@ -134,7 +134,7 @@ static void use_position_program(stin_context *ctx)
  * visibility output blended draws count as surfaces, as in its depth pass. */
 void stin__vdsm_buffer_draw(stin_context *ctx)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     int which = ctx->frame.output == STIN_OUTPUT_VISIBILITY ? STIN__ALL : STIN__OPAQUE;
     stin__pass_state ps = stin__pass_defaults;
@@ -170,7 +170,7 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
  * depth texture, within 8 steps of a 24-bit depth buffer: 2^-21). */
 void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     stin__pass_state ps = stin__pass_defaults, saved;
     GLuint resolved;
@@ -227,11 +227,11 @@ int stin__vdsm_buffer_layers_begin(stin_context *ctx)
 {
     if (!(ctx->desc.debug_flags & STIN_DEBUG_PEEL_VDSM_UNSHADOWED))
         return 1;
-    if (!ctx->vdsm.said_unshadowed_layers)
+    if (!ctx->vdsm->said_unshadowed_layers)
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                   "peeling: STIN_DEBUG_PEEL_VDSM_UNSHADOWED: peeled layers are lit "
                   "unshadowed under vdsm");
-    ctx->vdsm.said_unshadowed_layers = 1;
+    ctx->vdsm->said_unshadowed_layers = 1;
     return 0;
 }
 
@@ -246,7 +246,7 @@ int stin__vdsm_buffer_layers_begin(stin_context *ctx)
  * pyramid follows (its receivers are read from this buffer per light). */
 void stin__vdsm_buffer_layer(stin_context *ctx)
 {
-    stin__vdsm_state *v = &ctx->vdsm;
+    struct stin__vdsm_state *v = ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     stin__pass_state ps = stin__pass_defaults;
     GLuint depth;

@@ -15,7 +15,7 @@
  * copy of the mesh. The node pool starts at one node a pixel of the
  * viewport and grows when a product's crossings outrun it (that product is
  * listed again). */
-#include "internal.h"
+#include "shadow/vdsm_private.h"
 
 #define HEAD_BYTES 4u
 #define NODE_BYTES 16u
@@ -24,7 +24,7 @@
 
 static int built(const stin_context *ctx)
 {
-    return ctx->vdsm.csg.walk_prog != 0;
+    return ctx->vdsm->csg.walk_prog != 0;
 }
 
 static const stin__uniform_name append_uniforms[] = {
@@ -51,7 +51,7 @@ static const stin__uniform_name walk_uniforms[] = {
 
 void stin__vdsm_csg_init(stin_context *ctx)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     stin__program_source src;
     char msg[160];
     stin__memzero(c, sizeof *c);
@@ -82,7 +82,7 @@ void stin__vdsm_csg_init(stin_context *ctx)
 
 void stin__vdsm_csg_release(stin_context *ctx)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     GLuint none = 0;
     stin__vdsm_delete_programs(ctx, &c->append_prog, &c->walk_prog, &none);
     if (c->buffers[0])
@@ -184,7 +184,7 @@ static int light_inside(const stin_context *ctx, const stin__draw *d, const floa
 
 static void pool_data(stin_context *ctx, uint32_t capacity)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     GLuint header[4] = {0, 0, 0, 0};
     header[2] = capacity;
     GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, c->buffers[1]);
@@ -197,7 +197,7 @@ static void pool_data(stin_context *ctx, uint32_t capacity)
 
 static void count_bytes(stin_context *ctx)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     c->bytes = (uint64_t)c->pixels * HEAD_BYTES + POOL_HEADER + (uint64_t)c->capacity * NODE_BYTES +
                2u * STIN__VDSM_CSG_MAX_TERMS * 16u;
 }
@@ -216,7 +216,7 @@ static void colour(stin_context *ctx, int channel)
  * made or a listing was abandoned). */
 static void clear_lists(stin_context *ctx)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     colour(ctx, -1);
     GL(ctx, UseProgram)(c->walk_prog);
     GL(ctx, Uniform4iv)(c->w_frame, 1, ctx->frame.viewport);
@@ -230,7 +230,7 @@ static void clear_lists(stin_context *ctx)
  * 0 where the heads' bytes would overflow GL's sizes. */
 static int buffers_ready(stin_context *ctx)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     const int *vp = ctx->frame.viewport;
     uint64_t pixels = (uint64_t)vp[2] * (uint64_t)vp[3];
     if (pixels == 0 || pixels > 0x3fffffffu / NODE_BYTES)
@@ -262,7 +262,7 @@ static int buffers_ready(stin_context *ctx)
 static uint32_t list_crossings(stin_context *ctx, const stin__csg_product *p,
                                const float light[4])
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     const int *vp = ctx->frame.viewport;
     static const GLuint zero[1] = {0};
     float viewport[4];
@@ -278,7 +278,7 @@ static uint32_t list_crossings(stin_context *ctx, const stin__csg_product *p,
     GL(ctx, UseProgram)(c->append_prog);
     GL(ctx, UniformMatrix4fv)(c->a_view_proj, 1, GL_FALSE, ctx->view_proj);
     GL(ctx, Uniform4fv)(c->a_light, 1, light);
-    GL(ctx, Uniform4fv)(c->a_camera, 1, ctx->vdsm.camera);
+    GL(ctx, Uniform4fv)(c->a_camera, 1, ctx->vdsm->camera);
     GL(ctx, Uniform4fv)(c->a_viewport, 1, viewport);
     GL(ctx, Uniform4iv)(c->a_frame, 1, vp);
     GL(ctx, Uniform1f)(c->a_grow,
@@ -302,7 +302,7 @@ static uint32_t list_crossings(stin_context *ctx, const stin__csg_product *p,
 
 static void walk(stin_context *ctx, const stin__csg_product *p, const float light[4], int channel)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     GLuint masks[2 * STIN__VDSM_CSG_MAX_TERMS][4], inside[4] = {0, 0, 0, 0};
     uint32_t ti, li;
     stin__memzero(masks, sizeof masks);
@@ -333,7 +333,7 @@ static void walk(stin_context *ctx, const stin__csg_product *p, const float ligh
 
 static void bind_buffers(stin_context *ctx, int on)
 {
-    const stin__vdsm_csg *c = &ctx->vdsm.csg;
+    const stin__vdsm_csg *c = &ctx->vdsm->csg;
     GLuint i;
     for (i = 0; i < 3; i++)
         GL(ctx, BindBufferBase)(GL_SHADER_STORAGE_BUFFER, i, on ? c->buffers[i] : 0);
@@ -343,7 +343,7 @@ static void bind_buffers(stin_context *ctx, int on)
 
 void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel)
 {
-    stin__vdsm_csg *c = &ctx->vdsm.csg;
+    stin__vdsm_csg *c = &ctx->vdsm->csg;
     uint32_t pi;
     if (!built(ctx) || !stin__casters_wanted(ctx) || !buffers_ready(ctx))
         return;

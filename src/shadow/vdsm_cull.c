@@ -18,7 +18,7 @@
  * same faces, so the mask and the primitives are the one-pass program's
  * (tests/image/vdsm_test.c "vdsm-cull-pass"). Tessellated frames keep the
  * one pass: their triangle count is not known before the draw. */
-#include "internal.h"
+#include "shadow/vdsm_private.h"
 
 #define BYTES_PER_PART 48u /* three vec4: a corner and one value each */
 #define PARTS_PER_TRIANGLE 4u /* three side faces and its own, or the viewport */
@@ -27,7 +27,7 @@
 
 void stin__vdsm_cull_release(stin_context *ctx)
 {
-    stin__vdsm_cull *c = &ctx->vdsm.culling;
+    stin__vdsm_cull *c = &ctx->vdsm->culling;
     GLuint none = 0;
     stin__vdsm_delete_programs(ctx, &c->cull_prog, &c->fed_prog, &none);
     if (c->buffer)
@@ -91,7 +91,7 @@ static void arrays(stin_context *ctx, stin__vdsm_cull *c)
 
 void stin__vdsm_cull_init(stin_context *ctx)
 {
-    stin__vdsm_cull *c = &ctx->vdsm.culling;
+    stin__vdsm_cull *c = &ctx->vdsm->culling;
     char msg[160];
     stin__memzero(c, sizeof *c);
     msg[0] = '\0';
@@ -177,8 +177,8 @@ static void feedback_target(stin_context *ctx, const stin__vdsm_cull *c, GLuint 
 
 int stin__vdsm_cull_on(stin_context *ctx)
 {
-    stin__vdsm_cull *c = &ctx->vdsm.culling;
-    if (!c->usable || ctx->vdsm.tess_active || (ctx->desc.debug_flags & STIN_DEBUG_VDSM_ONE_PASS))
+    stin__vdsm_cull *c = &ctx->vdsm->culling;
+    if (!c->usable || ctx->vdsm->tess_active || (ctx->desc.debug_flags & STIN_DEBUG_VDSM_ONE_PASS))
         return 0;
     if (reserve(ctx, c))
         return 1;
@@ -191,7 +191,7 @@ int stin__vdsm_cull_on(stin_context *ctx)
 
 int stin__vdsm_cull_pass(stin_context *ctx, const float light[4])
 {
-    stin__vdsm_cull *c = &ctx->vdsm.culling;
+    stin__vdsm_cull *c = &ctx->vdsm->culling;
     GLuint kept = 1;
     GL(ctx, UseProgram)(c->cull_prog);
     stin__vdsm_polygon_uniforms(ctx, &c->cull, light);
@@ -219,7 +219,7 @@ int stin__vdsm_cull_pass(stin_context *ctx, const float light[4])
 
 void stin__vdsm_cull_draw(stin_context *ctx)
 {
-    const stin__vdsm_cull *c = &ctx->vdsm.culling;
+    const stin__vdsm_cull *c = &ctx->vdsm->culling;
     GL(ctx, BindVertexArray)(c->vao);
     if (c->feedback)
         GL(ctx, DrawTransformFeedback)(GL_POINTS, c->feedback);

@@ -32,7 +32,7 @@
  * what lies outside the view or behind the light is looked up nowhere, and
  * those triangles cast as with SP and EP alone. Draws reaching behind the
  * light are not occluders in the pyramid. */
-#include "internal.h"
+#include "shadow/vdsm_private.h"
 
 #define BIG 1e30f
 /* The light pass's marks reach this far beyond the half texel, and the
@@ -84,7 +84,7 @@ static const stin__uniform_name reduce_uniforms[] = {
 
 static void locate(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     locate_light(ctx, p->light_prog, &p->marks);
     locate_light(ctx, p->tris_prog, &p->tris);
     stin__displace_locate(ctx, p->tris_prog, 0, &p->tris_displace);
@@ -127,7 +127,7 @@ static void float_texture(stin_context *ctx, GLuint tex, int levels, int size)
 
 void stin__vdsm_pyramid_release(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     GLuint none = 0;
     stin__vdsm_delete_programs(ctx, &p->light_prog, &p->receiver_prog, &p->reduce_prog);
     stin__vdsm_delete_programs(ctx, &p->tris_prog, &none, &none);
@@ -162,7 +162,7 @@ static GLuint light_program(stin_context *ctx, const char *geom, char *msg, size
 
 void stin__vdsm_pyramid_init(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     char msg[160];
     GLenum status;
     int size = (int)(ctx->desc.shadows.map_size < MAX_SIZE ? ctx->desc.shadows.map_size : MAX_SIZE);
@@ -348,7 +348,7 @@ static void draw_depths(const stin__vdsm_pyramid *p, const stin_context *ctx,
 static void light_uniforms(stin_context *ctx, GLuint prog, const stin__vdsm_light_locs *l,
                            const float light[4])
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     GL(ctx, UseProgram)(prog);
     GL(ctx, UniformMatrix4fv)(l->vp, 1, GL_FALSE, p->view_proj);
     GL(ctx, Uniform4fv)(l->depth, 1, p->depth_row);
@@ -370,7 +370,7 @@ static void light_draw(stin_context *ctx, GLuint prog, const stin__vdsm_light_lo
 
 static void occluders(stin_context *ctx, const float light[4], stin__pass_state ps)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     uint32_t i;
     int id = 0;
     light_uniforms(ctx, p->tris_prog, &p->tris, light);
@@ -420,11 +420,11 @@ static void occluders(stin_context *ctx, const float light[4], stin__pass_state 
 
 static void receivers(stin_context *ctx, const float light[4])
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     const int *vp = ctx->frame.viewport;
     GL(ctx, UseProgram)(p->receiver_prog);
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm.position);
-    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm.normal);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm->position);
+    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm->normal);
     GL(ctx, Uniform1i)(p->r_position, 0);
     GL(ctx, Uniform1i)(p->r_normal, 1);
     GL(ctx, Uniform4fv)(p->r_light, 1, light);
@@ -447,7 +447,7 @@ static void receivers(stin_context *ctx, const float light[4])
  * (read through its base level, so no level is read while drawn into). */
 static void reduce(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     int k;
     GL(ctx, UseProgram)(p->reduce_prog);
     GL(ctx, Uniform1i)(p->d_source, 0);
@@ -495,7 +495,7 @@ static void size_to_viewport(stin__vdsm_pyramid *p, const int vp[4])
 
 int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     uint64_t flags = ctx->desc.debug_flags;
     int sm = !(flags & STIN_DEBUG_VDSM_NO_SM), dc = !(flags & STIN_DEBUG_VDSM_NO_DC);
     stin__pass_state saved = *stin__pass_current(ctx), ps = saved;
@@ -556,7 +556,7 @@ int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel
 
 void stin__vdsm_pyramid_uniforms(stin_context *ctx, const stin__vdsm_pyramid_locs *l)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     uint64_t flags = ctx->desc.debug_flags;
     int on = p->ready;
     GL(ctx, Uniform1i)(l->sm, on && !(flags & STIN_DEBUG_VDSM_NO_SM));

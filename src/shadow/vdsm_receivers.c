@@ -13,11 +13,11 @@
  * each word back to 0, so the next light starts from none without a clear.
  * The quad reads the position buffer where the light's facing pass would:
  * it writes that pass's mask channel too, and vdsm draws no facing pass. */
-#include "internal.h"
+#include "shadow/vdsm_private.h"
 
 void stin__vdsm_receivers_release(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     GLuint none = 0;
     stin__vdsm_delete_programs(ctx, &p->atomic_prog, &p->first_prog, &none);
     if (p->deepest)
@@ -41,14 +41,14 @@ static const stin__uniform_name first_uniforms[] = {
 
 static void locate(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     STIN__LOCATE(ctx, p->atomic_prog, p, atomic_uniforms);
     STIN__LOCATE(ctx, p->first_prog, p, first_uniforms);
 }
 
 int stin__vdsm_receivers_init(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     char msg[160];
     if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_COMPUTE)) || !p->usable)
         return 0;
@@ -73,7 +73,7 @@ int stin__vdsm_receivers_init(stin_context *ctx)
  * lets storage bindings end at 0 (stin_create leaves the caller's). */
 static void make_words(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     static const GLuint none = 0;
     GL(ctx, GenBuffers)(1, &p->deepest);
     GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, p->deepest);
@@ -91,7 +91,7 @@ static void make_words(stin_context *ctx)
  * pyramid's framebuffer and viewport again. */
 void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int channel)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     const int *vp = ctx->frame.viewport;
     stin__pass_state before = *stin__pass_current(ctx), ps = before;
     if (!p->deepest)
@@ -102,8 +102,8 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
     stin__pass_apply(ctx, &ps);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, stin__mask_target_of(ctx).fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm.position);
-    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm.normal);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm->position);
+    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm->normal);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, UseProgram)(p->atomic_prog);
     GL(ctx, Uniform1i)(p->a_position, 0);
@@ -129,7 +129,7 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
  * the caller's to set again. */
 void stin__vdsm_receivers_first_level(stin_context *ctx)
 {
-    stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
+    stin__vdsm_pyramid *p = &ctx->vdsm->pyramid;
     GL(ctx, UseProgram)(p->first_prog);
     GL(ctx, Uniform1i)(p->f_source, 0);
     GL(ctx, Uniform1i)(p->f_size, p->size);

@@ -105,7 +105,7 @@ static void log_step_once(stin_context *ctx, const stin_material *m, int want, i
 
 int stin__surf_variant_for(stin_context *ctx, const stin_material *m)
 {
-    int want = ctx->glsl_surface.best, v;
+    int want = stin__glsl_best_variant(ctx), v;
     if (m->surface != STIN_TECH_NONE) {
         int asked = variant_of(m->surface);
         if (asked < want)

@@ -150,7 +150,7 @@ static GLuint minmax_pass(stin_context *ctx, int k)
     stin__peel_state *s = ctx->peel;
     stin__dual_state *d = &s->d;
     stin__pass_state ps = stin__pass_defaults;
-    int t = ctx->glsl_tess.active && d->program[1] ? 1 : 0;
+    int t = stin__glsl_tessellated(ctx) && d->program[1] ? 1 : 0;
     float params[4];
     GLuint samples;
     uint32_t i;

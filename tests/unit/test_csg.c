@@ -16,6 +16,7 @@
 
 #include "fake_gl.h"
 #include "internal.h"
+#include "gl/stage_times_private.h" /* module state the tests read */
 
 #define P(i) {STIN_CSG_PRIMITIVE, (i), 0, 0}
 #define U(a, b) {STIN_CSG_UNION, 0, (a), (b)}
@@ -564,9 +565,9 @@ static void test_frames_with_a_product(void **state)
 
     flagged_frame(STIN_DEBUG_STAGE_TIMES); /* the resolve timed as its own stage */
     assert_int_equal(ctx->stats.stage_times, 1);
-    assert_true(ctx->times.marks >= 4);
-    assert_int_equal(ctx->times.stage[2], STIN_STAGE_CSG); /* after prepass and base */
-    assert_int_equal(ctx->times.stage[3], STIN_STAGE_BASE);
+    assert_true(ctx->times->marks >= 4);
+    assert_int_equal(ctx->times->stage[2], STIN_STAGE_CSG); /* after prepass and base */
+    assert_int_equal(ctx->times->stage[3], STIN_STAGE_BASE);
 
     flagged_frame(STIN_DEBUG_CSG_READBACK);
     assert_int_equal(ctx->stats.csg.scs_products, 1);

@@ -14,6 +14,8 @@
 
 #include "fake_gl.h"
 #include "internal.h"
+#include "gl/stage_times_private.h" /* module state the tests read */
+#include "shadow/vdsm_private.h"
 
 static fake_log log_;
 static void *block;
@@ -854,9 +856,9 @@ static void test_stage_times_follow_the_plan(void **state)
     create_profile(FAKE_GL45_CORE, 16, 8);
     st = frame_with(8, 1, 0, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.stage_times, 1);
-    assert_int_equal(ctx->times.marks, marks);
+    assert_int_equal(ctx->times->marks, marks);
     for (i = 0; i < marks; i++)
-        assert_int_equal(ctx->times.stage[i], plan[i]);
+        assert_int_equal(ctx->times->stage[i], plan[i]);
     assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], marks + 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_GetQueryObjectui64v], marks + 1);
 
@@ -873,7 +875,7 @@ static void test_stage_times_follow_the_plan(void **state)
     create_profile(FAKE_GL45_CORE, 16, 8);
     st = frame_with(16, 1, 7, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.stage_times, 1);
-    assert_int_equal(ctx->times.marks, STIN__STAGE_MARKS - 1u);
+    assert_int_equal(ctx->times->marks, STIN__STAGE_MARKS - 1u);
     assert_int_equal(fake_gl.calls[STIN_GLFN_QueryCounter], STIN__STAGE_MARKS);
     assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "changed stage more than"));
 
@@ -920,16 +922,16 @@ static void test_vdsm_receivers_by_atomics_on_gl43(void **state)
     (void)state;
     shadows = STIN_TECH_SHADOWS_VDSM;
     create_profile(FAKE_GL45_CORE, 16, 8);
-    assert_true(ctx->vdsm.pyramid.usable);
-    assert_true(ctx->vdsm.pyramid.atomic_prog != 0 && ctx->vdsm.pyramid.first_prog != 0);
-    assert_int_equal(ctx->vdsm.pyramid.deepest, 0); /* made in the first frame */
+    assert_true(ctx->vdsm->pyramid.usable);
+    assert_true(ctx->vdsm->pyramid.atomic_prog != 0 && ctx->vdsm->pyramid.first_prog != 0);
+    assert_int_equal(ctx->vdsm->pyramid.deepest, 0); /* made in the first frame */
     assert_int_equal(fake_gl.calls[STIN_GLFN_BindBufferBase], 0);
     assert_int_equal(frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY).shadows.vdsm_atomic_receivers, 1);
-    assert_true(ctx->vdsm.pyramid.deepest != 0);
+    assert_true(ctx->vdsm->pyramid.deepest != 0);
     assert_true(fake_gl.calls[STIN_GLFN_BindBufferBase] >= 4); /* bound, unbound, twice */
     create_profile(FAKE_GL33_CORE, 16, 8);
-    assert_true(ctx->vdsm.pyramid.usable);
-    assert_int_equal(ctx->vdsm.pyramid.atomic_prog, 0);
+    assert_true(ctx->vdsm->pyramid.usable);
+    assert_int_equal(ctx->vdsm->pyramid.atomic_prog, 0);
     st = frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.shadows.vdsm_atomic_receivers, 0);
     /* only the culling pass's feedback buffer: bound and unbound */
@@ -948,7 +950,7 @@ static void test_vdsm_cull_buffer_given_back(void **state)
     (void)state;
     shadows = STIN_TECH_SHADOWS_VDSM;
     create_profile(FAKE_GL45_CORE, 16, 640);
-    c = &ctx->vdsm.culling;
+    c = &ctx->vdsm->culling;
     frame_with(1, 600, 0, STIN_OUTPUT_BEAUTY); /* 600 quads: 4800 parts */
     assert_int_equal(c->capacity, 6000);
     for (i = 0; i < 70; i++) /* 2000 parts: over a quarter */
@@ -975,22 +977,22 @@ static void test_vdsm_culls_into_feedback_then_draws_once(void **state)
     (void)state;
     shadows = STIN_TECH_SHADOWS_VDSM;
     create_profile(FAKE_GL45_CORE, 16, 8);
-    assert_true(ctx->vdsm.culling.usable && ctx->vdsm.culling.feedback != 0);
-    assert_int_equal(ctx->vdsm.culling.query, 0); /* no wait without STIN_DEBUG_VDSM_COUNT */
+    assert_true(ctx->vdsm->culling.usable && ctx->vdsm->culling.feedback != 0);
+    assert_int_equal(ctx->vdsm->culling.query, 0); /* no wait without STIN_DEBUG_VDSM_COUNT */
     st = frame_with(2, 3, 0, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.shadows.vdsm_cull_passes, 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_EndTransformFeedback], 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawTransformFeedback], 2);
-    assert_true(ctx->vdsm.culling.capacity >= 4 * 3 * 2); /* three quads' triangles' parts */
+    assert_true(ctx->vdsm->culling.capacity >= 4 * 3 * 2); /* three quads' triangles' parts */
     /* the pyramid allocated at the map size, drawn at the 64 x 48 viewport's
      * (the power of two nearest 32, at least 256) */
-    assert_int_equal(ctx->vdsm.pyramid.alloc, 1024);
-    assert_int_equal(ctx->vdsm.pyramid.size, 256);
-    assert_int_equal(ctx->vdsm.pyramid.top, 8);
+    assert_int_equal(ctx->vdsm->pyramid.alloc, 1024);
+    assert_int_equal(ctx->vdsm->pyramid.size, 256);
+    assert_int_equal(ctx->vdsm->pyramid.top, 8);
     create_profile(FAKE_GL33_CORE, 16, 8);
-    assert_true(ctx->vdsm.culling.usable);
-    assert_int_equal(ctx->vdsm.culling.feedback, 0); /* counted by a query instead */
+    assert_true(ctx->vdsm->culling.usable);
+    assert_int_equal(ctx->vdsm->culling.feedback, 0); /* counted by a query instead */
     st = frame_with(1, 2, 0, STIN_OUTPUT_BEAUTY);
     assert_int_equal(st.shadows.vdsm_cull_passes, 1);
     assert_int_equal(fake_gl.calls[STIN_GLFN_BeginTransformFeedback], 1);
@@ -1018,8 +1020,8 @@ static void test_mask_depth_pass_only_where_read(void **state)
             shadows = techs[t];
             create_profile(FAKE_GL45_CORE, 16, 8);
             (void)frame_with(lights, 3, 0, STIN_OUTPUT_BEAUTY); /* makes the mask */
-            assert_true(ctx->mask.fbo != 0);
-            fake_gl.watched_framebuffer = ctx->mask.fbo;
+            assert_true(stin__mask_target_of(ctx).fbo != 0);
+            fake_gl.watched_framebuffer = stin__mask_target_of(ctx).fbo;
             fake_gl.draws_into_watched = fake_gl.depth_draws_into_watched = 0;
             (void)frame_with(lights, 3, 0, STIN_OUTPUT_BEAUTY);
             assert_true(fake_gl.draws_into_watched > 0); /* the masks were drawn */
