@@ -115,6 +115,7 @@ struct stin_context {
      * folder (a *_private.h no other folder includes) and says its size; the
      * frame lays them out in the caller's block (stin__state_slots). */
     struct stin__volume_state *volume;
+    struct stin__csg_state *csg; /* the frame's CSG products (csg/csg.c) */
 
     /* shadow technique modules: each owns its part */
     stin__map_fixed_state map_fixed;
@@ -123,7 +124,6 @@ struct stin_context {
     stin__vdsm_state vdsm;
     stin__export_state visibility; /* the visibility map (post/visibility_export.c) */
     stin__outline_state outline;   /* the deferred outline (post/outline.c) */
-    stin__csg_state csg;      /* the frame's CSG products (csg/csg.c) */
     stin__deep_state deep;    /* translucent shadows' deep maps (translucent/deep.c) */
     stin__coloured_state coloured; /* translucent shadows' colour maps (translucent/coloured.c) */
     stin__peel_state peel;    /* transparency's camera layers (transparency/peel.c) */

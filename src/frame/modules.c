@@ -24,6 +24,7 @@ static const struct {
 #define SLOT(member, bytes, place) {offsetof(stin_context, member), bytes, place}
 const stin__state_slot stin__state_slots[] = {
     SLOT(volume, stin__volume_state_bytes, NULL),
+    SLOT(csg, stin__csg_state_bytes, stin__csg_state_place),
 };
 #undef SLOT
 const size_t stin__state_slot_count = sizeof stin__state_slots / sizeof stin__state_slots[0];
