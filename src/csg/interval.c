@@ -207,10 +207,7 @@ static int ensure_targets(stin_context *ctx, int slices)
         array_texture(ctx, s->crossing[i], GL_RG32F, GL_RG, GL_FLOAT, w, h, slices);
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D_ARRAY, 0);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, s->result);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, NULL);
+    stin__rt_texture(ctx, s->result, GL_R8, GL_RED, GL_UNSIGNED_BYTE, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->crossing[0], 0, 0);

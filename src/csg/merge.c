@@ -148,24 +148,15 @@ static int ensure_targets(stin_context *ctx)
     }
     w = w > m->width ? w : m->width;
     h = h > m->height ? h : m->height;
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0); /* unit 0 active for the textures */
     for (i = 0; i < 2; i++) {
-        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[i]);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, (GLint)format, w, h, 0, GL_DEPTH_STENCIL, type,
-                            NULL);
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[i]);
-        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                      m->texture[i], 0);
-        if (i == STIN__CSG_MERGE_WORK) /* its stencil counts (GL 2.x names both halves) */
-            GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                                          m->texture[i], 0);
-        GL(ctx, DrawBuffer)(GL_NONE); /* depth only: GL 2.x FBOs are incomplete otherwise */
-        GL(ctx, ReadBuffer)(GL_NONE);
+        GLenum made;
+        stin__rt_texture(ctx, m->texture[i], format, GL_DEPTH_STENCIL, type, w, h);
+        /* work: its stencil counts too (GL 2.x names both halves) */
+        made = stin__rt_attach(ctx, m->fbo[i], 0, m->texture[i],
+                               i == STIN__CSG_MERGE_WORK ? m->texture[i] : 0);
         if (status == GL_FRAMEBUFFER_COMPLETE)
-            status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+            status = made;
     }
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);

@@ -147,8 +147,8 @@ void stin__csg_upload_result(stin_context *ctx, const resolve *r)
     if (r->w > c->tex_width || r->h > c->tex_height) {
         c->tex_width = r->w > c->tex_width ? r->w : c->tex_width;
         c->tex_height = r->h > c->tex_height ? r->h : c->tex_height;
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R32F, c->tex_width, c->tex_height, 0, GL_RED,
-                            GL_FLOAT, NULL);
+        stin__rt_texture(ctx, c->depth_tex, GL_R32F, GL_RED, GL_FLOAT, c->tex_width,
+                         c->tex_height);
     }
     GL(ctx, TexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, r->w, r->h, GL_RED, GL_FLOAT, r->result);
     stin__unpack_end(ctx, &saved);

@@ -144,20 +144,6 @@ void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
     }
 }
 
-/* The R32F texture of the resolved depth (GL4 lighting: core profiles
- * write the depth through it; vdsm's position buffer reads it). */
-static void make_depth_texture(stin_context *ctx)
-{
-    GLint bound = 0;
-    GL(ctx, GenTextures)(1, &ctx->csg->depth_tex);
-    GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &bound);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->csg->depth_tex);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)bound);
-    ctx->csg->tex_width = ctx->csg->tex_height = 0;
-}
-
 void stin__csg_init(stin_context *ctx)
 {
     stin__csg_state *c = ctx->csg;
@@ -183,8 +169,10 @@ void stin__csg_init(stin_context *ctx)
         c->u_depth = GL(ctx, GetUniformLocation)(c->depth_prog, "u_depth");
         c->u_origin = GL(ctx, GetUniformLocation)(c->depth_prog, "u_origin");
     }
+    /* the R32F texture of the resolved depth (core profiles write the depth
+     * through it; vdsm's position buffer reads it), made at its first upload */
     if (gl4)
-        make_depth_texture(ctx);
+        GL(ctx, GenTextures)(1, &c->depth_tex);
     stin__csg_cap_init(ctx);
     stin__csg_merge_init(ctx);
 }
