@@ -328,7 +328,7 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
     uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
     unsigned char masked[STIN__MAX_LIGHTS] = {0};
     stin_stage was = stin__times_enter(ctx, STIN_STAGE_SHADOW);
-    if (ctx->shadow->mask && ctx->mask.usable && path->lit_lights)
+    if (ctx->shadow->mask && stin__mask_usable(ctx) && path->lit_lights)
         (void)masked_lights(ctx, path, lights, visibility, masked);
     for (li = 0; li < lights; li++)
         if (!masked[li]) {

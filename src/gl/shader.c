@@ -233,3 +233,13 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     }
     return p;
 }
+
+void stin__uniform_locations(stin_context *ctx, GLuint prog, void *locs,
+                             const stin__uniform_name *names, size_t n)
+{
+    size_t i;
+    for (i = 0; i < n; i++) {
+        GLint *field = (GLint *)(void *)((unsigned char *)locs + names[i].offset);
+        *field = GL(ctx, GetUniformLocation)(prog, names[i].name);
+    }
+}

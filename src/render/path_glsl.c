@@ -13,33 +13,35 @@ static const char *const frag_names[STIN__PROG_COUNT] = {"lit.frag", "normal.fra
  * (render/path_features.h): at most what gl/shader.c splices */
 #define LIT_CHUNKS 6
 
+static const stin__uniform_name program_uniforms[] = {
+    STIN__UNIFORM(stin__program, u_model, "u_model"),
+    STIN__UNIFORM(stin__program, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__program, u_normal_matrix, "u_normal_matrix"),
+    STIN__UNIFORM(stin__program, u_eye, "u_eye"),
+    STIN__UNIFORM(stin__program, u_ambient, "u_ambient"),
+    STIN__UNIFORM(stin__program, u_albedo, "u_albedo"),
+    STIN__UNIFORM(stin__program, u_specular, "u_specular"),
+    STIN__UNIFORM(stin__program, u_shininess, "u_shininess"),
+    STIN__UNIFORM(stin__program, u_light_count, "u_light_count"),
+    STIN__UNIFORM(stin__program, u_lights, "u_lights"),
+    STIN__UNIFORM(stin__program, u_albedo_tex, "u_albedo_tex"),
+    STIN__UNIFORM(stin__program, u_has_albedo_tex, "u_has_albedo_tex"),
+    STIN__UNIFORM(stin__program, u_shadow_kind, "u_shadow_kind"),
+    STIN__UNIFORM(stin__program, u_shadow_matrix, "u_shadow_matrix"),
+    STIN__UNIFORM(stin__program, u_shadow_params, "u_shadow_params"),
+    STIN__UNIFORM(stin__program, u_shadow_maps[0], "u_shadow_map"),
+    STIN__UNIFORM(stin__program, u_shadow_maps[1], "u_shadow_face1"),
+    STIN__UNIFORM(stin__program, u_shadow_maps[2], "u_shadow_face2"),
+    STIN__UNIFORM(stin__program, u_shadow_maps[3], "u_shadow_face3"),
+    STIN__UNIFORM(stin__program, u_shadow_maps[4], "u_shadow_face4"),
+    STIN__UNIFORM(stin__program, u_shadow_maps[5], "u_shadow_face5"),
+    STIN__UNIFORM(stin__program, u_color, "u_color"),
+};
+
 static void locate(stin_context *ctx, stin__program *p)
 {
     const stin__path_feature *const *f;
-#define LOC(field, uniform) p->field = GL(ctx, GetUniformLocation)(p->name, uniform)
-    LOC(u_model, "u_model");
-    LOC(u_view_proj, "u_view_proj");
-    LOC(u_normal_matrix, "u_normal_matrix");
-    LOC(u_eye, "u_eye");
-    LOC(u_ambient, "u_ambient");
-    LOC(u_albedo, "u_albedo");
-    LOC(u_specular, "u_specular");
-    LOC(u_shininess, "u_shininess");
-    LOC(u_light_count, "u_light_count");
-    LOC(u_lights, "u_lights");
-    LOC(u_albedo_tex, "u_albedo_tex");
-    LOC(u_has_albedo_tex, "u_has_albedo_tex");
-    LOC(u_shadow_kind, "u_shadow_kind");
-    LOC(u_shadow_matrix, "u_shadow_matrix");
-    LOC(u_shadow_params, "u_shadow_params");
-    LOC(u_shadow_maps[0], "u_shadow_map");
-    LOC(u_shadow_maps[1], "u_shadow_face1");
-    LOC(u_shadow_maps[2], "u_shadow_face2");
-    LOC(u_shadow_maps[3], "u_shadow_face3");
-    LOC(u_shadow_maps[4], "u_shadow_face4");
-    LOC(u_shadow_maps[5], "u_shadow_face5");
-    LOC(u_color, "u_color");
-#undef LOC
+    STIN__LOCATE(ctx, p->name, p, program_uniforms);
     for (f = stin__path_features(ctx); *f; f++)
         if ((*f)->locate)
             (*f)->locate(ctx, p);

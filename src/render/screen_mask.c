@@ -14,6 +14,27 @@ int stin__mask_drawable(const stin_context *ctx)
     return (ctx->caps.present & need) == need;
 }
 
+int stin__mask_available(const stin_context *ctx)
+{
+    return ctx->mask.drawable;
+}
+
+int stin__mask_usable(const stin_context *ctx)
+{
+    return ctx->mask.usable;
+}
+
+stin__mask_target stin__mask_target_of(const stin_context *ctx)
+{
+    stin__mask_target t;
+    t.fbo = ctx->mask.fbo;
+    t.color = ctx->mask.color;
+    t.depth_stencil = ctx->mask.depth_stencil;
+    t.width = ctx->mask.width;
+    t.height = ctx->mask.height;
+    return t;
+}
+
 void stin__mask_init(stin_context *ctx)
 {
     uint64_t need = STIN_CAP_BIT(STIN_CAP_GLSL) | STIN_CAP_BIT(STIN_CAP_FBO) |

@@ -326,47 +326,6 @@ void stin__vdsm_cull_draw(stin_context *ctx);
 /* 1 when EP may drop a draw's light-facing triangles (shadow/vdsm.c). */
 int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d);
 
-/* Screen visibility masks (render/screen_mask.c): an RGBA8 texture the size of the
- * frame's viewport, one light per channel, with its own depth-stencil
- * texture holding the frame's depth; the lit pass reads four lights' masks
- * at once through shadow_mask.glsl. */
-#define STIN__MASK_CHANNELS 4
-typedef struct stin__mask_state {
-    GLuint fbo, color, depth_stencil;
-    int width, height;    /* allocated texels (0: not yet) */
-    int unit;             /* the texture unit the lit pass reads it on */
-    int drawable;         /* the context can draw masks (set at stin_create) */
-    int usable;           /* and the lit passes can read them (a unit for it) */
-    int active;           /* lights of the current lit pass read from it */
-    int depth_done;       /* the frame's depth is in the mask's buffer */
-} stin__mask_state;
-
-/* At stin_create, before the shadow module's set-up: decides whether masks
- * can be drawn (the visibility export, any path) and read by the lit passes
- * (GLSL lighting and a texture unit: the frame's lights). */
-void stin__mask_init(stin_context *ctx);
-void stin__mask_release(stin_context *ctx);
-/* The context can draw masks: framebuffer objects and packed depth-stencil
- * textures (the visibility export's needs too). */
-int stin__mask_drawable(const stin_context *ctx);
-/* Binds the mask as the target, clearing its colour. With `depth`, the
- * first time in a frame also its depth and stencil, and the frame's depth
- * (draws `which`) is drawn into it; without, the passes bring their own. 0:
- * the mask cannot be made (logged once), draw the lights the old way. The
- * viewport stays the frame's (the mask has the same window coordinates). */
-int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int depth);
-/* After a technique left the stencil passing where light is visible: 1
- * into `channel` there. */
-void stin__mask_write(stin_context *ctx, const stin__path *path, int channel);
-/* Back to the frame's target, the mask bound for the lit pass. */
-void stin__mask_end(stin_context *ctx);
-/* The lit pass that read the mask is done. */
-void stin__mask_read_done(stin_context *ctx);
-/* The frame is over: the next one draws its depth again. */
-void stin__mask_frame_end(stin_context *ctx);
-/* The shadow_mask.glsl uniforms of program p. */
-void stin__mask_uniforms(stin_context *ctx, const stin__program *p);
-
 /* ---- shared by the modules ------------------------------------------------ */
 /* One light (sample) of stencil shadow volumes: leaves the stencil test set to
  * pass where the light is visible (shadow/volume.c; map-fixed's point lights). */

@@ -83,39 +83,47 @@ static void release(stin_context *ctx)
     stin__mesh_adjacency_use(ctx, NULL);
 }
 
+static const stin__uniform_name polygon_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_polygon_locs, model, "u_model"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, light, "u_light"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, camera, "u_camera"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, viewport, "u_viewport"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, grow, "u_grow"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, depth_test, "u_depth_test"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, cull_lit, "u_cull_lit"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, caps, "u_caps"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, position, "u_position"),
+    STIN__UNIFORM(stin__vdsm_polygon_locs, normal, "u_normal"),
+};
+
 void stin__vdsm_polygon_locate(stin_context *ctx, GLuint prog, stin__vdsm_polygon_locs *l)
 {
-#define LOC(field, name) l->field = GL(ctx, GetUniformLocation)(prog, name)
-    LOC(model, "u_model");
-    LOC(view_proj, "u_view_proj");
-    LOC(light, "u_light");
-    LOC(camera, "u_camera");
-    LOC(viewport, "u_viewport");
-    LOC(grow, "u_grow");
-    LOC(depth_test, "u_depth_test");
-    LOC(cull_lit, "u_cull_lit");
-    LOC(caps, "u_caps");
-    LOC(position, "u_position");
-    LOC(normal, "u_normal");
-#undef LOC
+    STIN__LOCATE(ctx, prog, l, polygon_uniforms);
     /* shadow polygons cast from anywhere, not only the camera's view */
     stin__displace_locate(ctx, prog, 0, &l->displace);
     stin__vdsm_pyramid_locate(ctx, prog, &l->pyramid);
 }
 
+static const stin__uniform_name position_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_state, pos_model, "u_model"),
+    STIN__UNIFORM(stin__vdsm_state, pos_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__vdsm_state, pos_camera, "u_camera"),
+    STIN__UNIFORM(stin__vdsm_state, pos_csg, "u_csg"),
+    STIN__UNIFORM(stin__vdsm_state, pos_csg_depth, "u_csg_depth"),
+};
+
+static const stin__uniform_name facing_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_state, face_position, "u_position"),
+    STIN__UNIFORM(stin__vdsm_state, face_normal, "u_normal"),
+    STIN__UNIFORM(stin__vdsm_state, face_light, "u_light"),
+};
+
 static void locate(stin_context *ctx)
 {
     stin__vdsm_state *v = &ctx->vdsm;
-#define LOC(field, prog, name) v->field = GL(ctx, GetUniformLocation)(v->prog, name)
-    LOC(pos_model, position_prog, "u_model");
-    LOC(pos_view_proj, position_prog, "u_view_proj");
-    LOC(pos_camera, position_prog, "u_camera");
-    LOC(pos_csg, position_prog, "u_csg");
-    LOC(pos_csg_depth, position_prog, "u_csg_depth");
-    LOC(face_position, facing_prog, "u_position");
-    LOC(face_normal, facing_prog, "u_normal");
-    LOC(face_light, facing_prog, "u_light");
-#undef LOC
+    STIN__LOCATE(ctx, v->position_prog, v, position_uniforms);
+    STIN__LOCATE(ctx, v->facing_prog, v, facing_uniforms);
     /* the position buffer is the camera's view */
     stin__displace_locate(ctx, v->position_prog, 1, &v->pos_displace);
     stin__vdsm_polygon_locate(ctx, v->polygon_prog, &v->poly);
@@ -169,7 +177,7 @@ static stin_result vdsm_init(stin_context *ctx)
     stin__vdsm_state *v = &ctx->vdsm;
     char msg[160], why[200];
     stin__memzero(v, sizeof *v);
-    if (!ctx->mask.usable) {
+    if (!stin__mask_usable(ctx)) {
         stin__demote(ctx, STIN_FEATURE_SHADOWS, fallback(ctx),
                      "vdsm writes into the screen mask, which needs a texture unit beyond the "
                      "surface's");
@@ -246,7 +254,7 @@ static int depth_tested(const stin_context *ctx)
  * own depth-stencil (on), or back (off). */
 static void surface_depth(stin_context *ctx, int on)
 {
-    GLuint depth = on ? ctx->vdsm.depth : ctx->mask.depth_stencil;
+    GLuint depth = on ? ctx->vdsm.depth : stin__mask_target_of(ctx).depth_stencil;
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                   on ? 0u : depth, 0);

@@ -27,6 +27,28 @@ static int built(const stin_context *ctx)
     return ctx->vdsm.csg.walk_prog != 0;
 }
 
+static const stin__uniform_name append_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_csg, a_model, "u_model"),
+    STIN__UNIFORM(stin__vdsm_csg, a_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__vdsm_csg, a_light, "u_light"),
+    STIN__UNIFORM(stin__vdsm_csg, a_camera, "u_camera"),
+    STIN__UNIFORM(stin__vdsm_csg, a_viewport, "u_viewport"),
+    STIN__UNIFORM(stin__vdsm_csg, a_grow, "u_grow"),
+    STIN__UNIFORM(stin__vdsm_csg, a_caps, "u_caps"),
+    STIN__UNIFORM(stin__vdsm_csg, a_position, "u_position"),
+    STIN__UNIFORM(stin__vdsm_csg, a_normal, "u_normal"),
+    STIN__UNIFORM(stin__vdsm_csg, a_primitive, "u_primitive"),
+    STIN__UNIFORM(stin__vdsm_csg, a_mirrored, "u_mirrored"),
+    STIN__UNIFORM(stin__vdsm_csg, a_frame, "u_frame"),
+};
+
+static const stin__uniform_name walk_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_csg, w_terms, "u_terms"),
+    STIN__UNIFORM(stin__vdsm_csg, w_light_inside, "u_light_inside"),
+    STIN__UNIFORM(stin__vdsm_csg, w_frame, "u_frame"),
+    STIN__UNIFORM(stin__vdsm_csg, w_clear, "u_clear"),
+};
+
 void stin__vdsm_csg_init(stin_context *ctx)
 {
     stin__vdsm_csg *c = &ctx->vdsm.csg;
@@ -52,24 +74,8 @@ void stin__vdsm_csg_init(stin_context *ctx)
         stin__vdsm_csg_release(ctx);
         return;
     }
-#define LOC(field, prog, name) c->field = GL(ctx, GetUniformLocation)(c->prog, name)
-    LOC(a_model, append_prog, "u_model");
-    LOC(a_view_proj, append_prog, "u_view_proj");
-    LOC(a_light, append_prog, "u_light");
-    LOC(a_camera, append_prog, "u_camera");
-    LOC(a_viewport, append_prog, "u_viewport");
-    LOC(a_grow, append_prog, "u_grow");
-    LOC(a_caps, append_prog, "u_caps");
-    LOC(a_position, append_prog, "u_position");
-    LOC(a_normal, append_prog, "u_normal");
-    LOC(a_primitive, append_prog, "u_primitive");
-    LOC(a_mirrored, append_prog, "u_mirrored");
-    LOC(a_frame, append_prog, "u_frame");
-    LOC(w_terms, walk_prog, "u_terms");
-    LOC(w_light_inside, walk_prog, "u_light_inside");
-    LOC(w_frame, walk_prog, "u_frame");
-    LOC(w_clear, walk_prog, "u_clear");
-#undef LOC
+    STIN__LOCATE(ctx, c->append_prog, c, append_uniforms);
+    STIN__LOCATE(ctx, c->walk_prog, c, walk_uniforms);
     stin__displace_locate(ctx, c->append_prog, 0, &c->displace);
     GL(ctx, GenBuffers)(3, c->buffers);
 }

@@ -51,20 +51,36 @@
  * than this fraction of the deepest corner. */
 #define FRONT 1e-3f
 
+static const stin__uniform_name light_pass_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_light_locs, model, "u_model"),
+    STIN__UNIFORM(stin__vdsm_light_locs, vp, "u_light_vp"),
+    STIN__UNIFORM(stin__vdsm_light_locs, depth, "u_depth_row"),
+    STIN__UNIFORM(stin__vdsm_light_locs, light, "u_light"),
+    STIN__UNIFORM(stin__vdsm_light_locs, cull_lit, "u_cull_lit"),
+    STIN__UNIFORM(stin__vdsm_light_locs, size, "u_size"),
+    STIN__UNIFORM(stin__vdsm_light_locs, grow, "u_grow"),
+    STIN__UNIFORM(stin__vdsm_light_locs, bound, "u_bound"),
+    STIN__UNIFORM(stin__vdsm_light_locs, persp, "u_perspective"),
+};
+
 static void locate_light(stin_context *ctx, GLuint prog, stin__vdsm_light_locs *l)
 {
-#define LOC(field, name) l->field = GL(ctx, GetUniformLocation)(prog, name)
-    LOC(model, "u_model");
-    LOC(vp, "u_light_vp");
-    LOC(depth, "u_depth_row");
-    LOC(light, "u_light");
-    LOC(cull_lit, "u_cull_lit");
-    LOC(size, "u_size");
-    LOC(grow, "u_grow");
-    LOC(bound, "u_bound");
-    LOC(persp, "u_perspective");
-#undef LOC
+    STIN__LOCATE(ctx, prog, l, light_pass_uniforms);
 }
+
+static const stin__uniform_name receiver_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_pyramid, r_position, "u_position"),
+    STIN__UNIFORM(stin__vdsm_pyramid, r_normal, "u_normal"),
+    STIN__UNIFORM(stin__vdsm_pyramid, r_light, "u_light"),
+    STIN__UNIFORM(stin__vdsm_pyramid, r_vp, "u_light_vp"),
+    STIN__UNIFORM(stin__vdsm_pyramid, r_depth, "u_depth_row"),
+    STIN__UNIFORM(stin__vdsm_pyramid, r_rect, "u_rect"),
+};
+
+static const stin__uniform_name reduce_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_pyramid, d_source, "u_source"),
+    STIN__UNIFORM(stin__vdsm_pyramid, d_first, "u_first"),
+};
 
 static void locate(stin_context *ctx)
 {
@@ -72,29 +88,23 @@ static void locate(stin_context *ctx)
     locate_light(ctx, p->light_prog, &p->marks);
     locate_light(ctx, p->tris_prog, &p->tris);
     stin__displace_locate(ctx, p->tris_prog, 0, &p->tris_displace);
-#define LOC(field, prog, name) p->field = GL(ctx, GetUniformLocation)(prog, name)
-    LOC(r_position, p->receiver_prog, "u_position");
-    LOC(r_normal, p->receiver_prog, "u_normal");
-    LOC(r_light, p->receiver_prog, "u_light");
-    LOC(r_vp, p->receiver_prog, "u_light_vp");
-    LOC(r_depth, p->receiver_prog, "u_depth_row");
-    LOC(r_rect, p->receiver_prog, "u_rect");
-    LOC(d_source, p->reduce_prog, "u_source");
-    LOC(d_first, p->reduce_prog, "u_first");
-#undef LOC
+    STIN__LOCATE(ctx, p->receiver_prog, p, receiver_uniforms);
+    STIN__LOCATE(ctx, p->reduce_prog, p, reduce_uniforms);
 }
+
+static const stin__uniform_name pyramid_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_pyramid_locs, sm, "u_sm"),
+    STIN__UNIFORM(stin__vdsm_pyramid_locs, dc, "u_dc"),
+    STIN__UNIFORM(stin__vdsm_pyramid_locs, vp, "u_light_vp"),
+    STIN__UNIFORM(stin__vdsm_pyramid_locs, depth, "u_depth_row"),
+    STIN__UNIFORM(stin__vdsm_pyramid_locs, pyramid, "u_pyramid"),
+    STIN__UNIFORM(stin__vdsm_pyramid_locs, size, "u_pyramid_size"),
+    STIN__UNIFORM(stin__vdsm_pyramid_locs, top, "u_pyramid_top"),
+};
 
 void stin__vdsm_pyramid_locate(stin_context *ctx, GLuint prog, stin__vdsm_pyramid_locs *l)
 {
-#define LOC(field, name) l->field = GL(ctx, GetUniformLocation)(prog, name)
-    LOC(sm, "u_sm");
-    LOC(dc, "u_dc");
-    LOC(vp, "u_light_vp");
-    LOC(depth, "u_depth_row");
-    LOC(pyramid, "u_pyramid");
-    LOC(size, "u_pyramid_size");
-    LOC(top, "u_pyramid_top");
-#undef LOC
+    STIN__LOCATE(ctx, prog, l, pyramid_uniforms);
 }
 
 static void float_texture(stin_context *ctx, GLuint tex, int levels, int size)
@@ -536,7 +546,7 @@ int stin__vdsm_pyramid_draw(stin_context *ctx, const float light[4], int channel
     if (dc && p->atomic_prog)
         stin__vdsm_receivers_draw(ctx, light, channel);
     reduce(ctx);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, stin__mask_target_of(ctx).fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__pass_apply(ctx, &saved);
     ctx->stats.passes += 2u + (uint32_t)sm + (uint32_t)dc;

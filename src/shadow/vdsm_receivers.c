@@ -25,19 +25,25 @@ void stin__vdsm_receivers_release(stin_context *ctx)
     p->deepest = 0;
 }
 
+static const stin__uniform_name atomic_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_pyramid, a_position, "u_position"),
+    STIN__UNIFORM(stin__vdsm_pyramid, a_normal, "u_normal"),
+    STIN__UNIFORM(stin__vdsm_pyramid, a_light, "u_light"),
+    STIN__UNIFORM(stin__vdsm_pyramid, a_vp, "u_light_vp"),
+    STIN__UNIFORM(stin__vdsm_pyramid, a_depth, "u_depth_row"),
+    STIN__UNIFORM(stin__vdsm_pyramid, a_size, "u_size"),
+};
+
+static const stin__uniform_name first_uniforms[] = {
+    STIN__UNIFORM(stin__vdsm_pyramid, f_source, "u_source"),
+    STIN__UNIFORM(stin__vdsm_pyramid, f_size, "u_size"),
+};
+
 static void locate(stin_context *ctx)
 {
     stin__vdsm_pyramid *p = &ctx->vdsm.pyramid;
-#define LOC(field, prog, name) p->field = GL(ctx, GetUniformLocation)(p->prog, name)
-    LOC(a_position, atomic_prog, "u_position");
-    LOC(a_normal, atomic_prog, "u_normal");
-    LOC(a_light, atomic_prog, "u_light");
-    LOC(a_vp, atomic_prog, "u_light_vp");
-    LOC(a_depth, atomic_prog, "u_depth_row");
-    LOC(a_size, atomic_prog, "u_size");
-    LOC(f_source, first_prog, "u_source");
-    LOC(f_size, first_prog, "u_size");
-#undef LOC
+    STIN__LOCATE(ctx, p->atomic_prog, p, atomic_uniforms);
+    STIN__LOCATE(ctx, p->first_prog, p, first_uniforms);
 }
 
 int stin__vdsm_receivers_init(stin_context *ctx)
@@ -94,7 +100,7 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
     ps.color_only = (unsigned char)(channel + 1);
     ps.scissor = 0; /* the pyramid's scissor box is not the frame's viewport */
     stin__pass_apply(ctx, &ps);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask.fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, stin__mask_target_of(ctx).fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm.position);
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm.normal);

@@ -9,6 +9,15 @@
  * z-fail choice stay per caster in shadow/volume.c. */
 #include "shadow/volume_private.h"
 
+static const stin__uniform_name extrude_uniforms[] = {
+    STIN__UNIFORM(struct stin__volume_state, u_model, "u_model"),
+    STIN__UNIFORM(struct stin__volume_state, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(struct stin__volume_state, u_light, "u_light"),
+    STIN__UNIFORM(struct stin__volume_state, u_closed, "u_closed"),
+    STIN__UNIFORM(struct stin__volume_state, u_caps, "u_caps"),
+    STIN__UNIFORM(struct stin__volume_state, u_mode, "u_mode"),
+};
+
 void stin__volume_extrude_init(stin_context *ctx)
 {
     struct stin__volume_state *v = ctx->volume;
@@ -35,12 +44,7 @@ void stin__volume_extrude_init(stin_context *ctx)
                   msg);
         return;
     }
-    v->u_model = GL(ctx, GetUniformLocation)(v->extrude_prog, "u_model");
-    v->u_view_proj = GL(ctx, GetUniformLocation)(v->extrude_prog, "u_view_proj");
-    v->u_light = GL(ctx, GetUniformLocation)(v->extrude_prog, "u_light");
-    v->u_closed = GL(ctx, GetUniformLocation)(v->extrude_prog, "u_closed");
-    v->u_caps = GL(ctx, GetUniformLocation)(v->extrude_prog, "u_caps");
-    v->u_mode = GL(ctx, GetUniformLocation)(v->extrude_prog, "u_mode");
+    STIN__LOCATE(ctx, v->extrude_prog, v, extrude_uniforms);
     v->set_mode = -1;
     if (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_COUNT)
         GL(ctx, GenQueries)(1, &v->count_query);
