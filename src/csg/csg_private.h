@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
-/* CSG's own state (the files of src/csg/): nothing outside src/csg/ includes this header
- * (tools/check-layers.sh). The cast and interval states are their files'
- * own (csg/cast.c, csg/interval.c), laid out behind this one. */
+/* CSG's own state: only the files of src/csg/ include this header
+ * (tools/check-layers.sh). The cast and interval parts are their own
+ * files' (csg/cast.c, csg/interval.c), laid out behind this struct; the
+ * merge's stays here for the unit tests, which watch its framebuffers. */
 #ifndef STIN_CSG_PRIVATE_H
 #define STIN_CSG_PRIVATE_H
 

@@ -108,6 +108,22 @@ void stin__csg_interval_release(stin_context *ctx)
     stin__memzero(s, sizeof *s);
 }
 
+static const stin__uniform_name peel_uniforms[] = {
+    STIN__UNIFORM(stin__csg_interval_state, peel_model, "u_model"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_previous, "u_previous"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_previous_slice, "u_previous_slice"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_mirrored, "u_mirrored"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_tolerance, "u_tolerance"),
+};
+
+static const stin__uniform_name walk_uniforms[] = {
+    STIN__UNIFORM(stin__csg_interval_state, walk_crossing[0], "u_crossing_even"),
+    STIN__UNIFORM(stin__csg_interval_state, walk_crossing[1], "u_crossing_odd"),
+    STIN__UNIFORM(stin__csg_interval_state, walk_counts, "u_counts"),
+    STIN__UNIFORM(stin__csg_interval_state, walk_terms, "u_terms"),
+};
+
 /* The peel program draws meshes as the volume program does (volume.vert:
  * its position is invariant with the lit passes'); the walk is a screen
  * quad. 0 with msg when one does not build. */
@@ -122,18 +138,8 @@ static int make_programs(stin_context *ctx, char *msg, size_t size)
                                        NULL, 0, msg, size);
     if (!s->walk_prog)
         return 0;
-#define LOC(field, prog, name) s->field = GL(ctx, GetUniformLocation)(s->prog, name)
-    LOC(peel_model, peel_prog, "u_model");
-    LOC(peel_view_proj, peel_prog, "u_view_proj");
-    LOC(peel_previous, peel_prog, "u_previous");
-    LOC(peel_previous_slice, peel_prog, "u_previous_slice");
-    LOC(peel_mirrored, peel_prog, "u_mirrored");
-    LOC(peel_tolerance, peel_prog, "u_tolerance");
-    LOC(walk_crossing[0], walk_prog, "u_crossing_even");
-    LOC(walk_crossing[1], walk_prog, "u_crossing_odd");
-    LOC(walk_counts, walk_prog, "u_counts");
-    LOC(walk_terms, walk_prog, "u_terms");
-#undef LOC
+    STIN__LOCATE(ctx, s->peel_prog, s, peel_uniforms);
+    STIN__LOCATE(ctx, s->walk_prog, s, walk_uniforms);
     stin__displace_locate(ctx, s->peel_prog, 1, &s->peel_displace);
     return 1;
 }

@@ -63,6 +63,19 @@ static GLuint build(stin_context *ctx, int gl4, const char *vert, const char *fr
     return stin__program_build(ctx, v, f, NULL, 0, msg, size);
 }
 
+static const stin__uniform_name merge_uniforms[] = {
+    STIN__UNIFORM(stin__csg_merge_state, u_depth, "u_depth"),
+    STIN__UNIFORM(stin__csg_merge_state, u_select, "u_select"),
+    STIN__UNIFORM(stin__csg_merge_state, u_params, "u_params"),
+};
+
+static const stin__uniform_name snap_uniforms[] = {
+    STIN__UNIFORM(stin__csg_merge_state, snap_model, "u_model"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_result, "u_result"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_params, "u_params"),
+};
+
 void stin__csg_merge_init(stin_context *ctx)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
@@ -86,13 +99,8 @@ void stin__csg_merge_init(stin_context *ctx)
         stin__csg_merge_release(ctx);
         return;
     }
-    m->u_depth = GL(ctx, GetUniformLocation)(m->merge_prog, "u_depth");
-    m->u_select = GL(ctx, GetUniformLocation)(m->merge_prog, "u_select");
-    m->u_params = GL(ctx, GetUniformLocation)(m->merge_prog, "u_params");
-    m->snap_model = GL(ctx, GetUniformLocation)(m->snap_prog, "u_model");
-    m->snap_view_proj = GL(ctx, GetUniformLocation)(m->snap_prog, "u_view_proj");
-    m->snap_result = GL(ctx, GetUniformLocation)(m->snap_prog, "u_result");
-    m->snap_params = GL(ctx, GetUniformLocation)(m->snap_prog, "u_params");
+    STIN__LOCATE(ctx, m->merge_prog, m, merge_uniforms);
+    STIN__LOCATE(ctx, m->snap_prog, m, snap_uniforms);
     stin__displace_locate(ctx, m->snap_prog, 0, &m->snap_displace);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
         GL(ctx, GenQueries)(STIN__CSG_MERGE_THRESHOLDS + 1, m->queries);

@@ -144,6 +144,11 @@ void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
     }
 }
 
+static const stin__uniform_name depth_uniforms[] = {
+    STIN__UNIFORM(stin__csg_state, u_depth, "u_depth"),
+    STIN__UNIFORM(stin__csg_state, u_origin, "u_origin"),
+};
+
 void stin__csg_init(stin_context *ctx)
 {
     stin__csg_state *c = ctx->csg;
@@ -166,8 +171,7 @@ void stin__csg_init(stin_context *ctx)
             stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF, why);
             return;
         }
-        c->u_depth = GL(ctx, GetUniformLocation)(c->depth_prog, "u_depth");
-        c->u_origin = GL(ctx, GetUniformLocation)(c->depth_prog, "u_origin");
+        STIN__LOCATE(ctx, c->depth_prog, c, depth_uniforms);
     }
     /* the R32F texture of the resolved depth (core profiles write the depth
      * through it; vdsm's position buffer reads it), made at its first upload */
