@@ -130,20 +130,13 @@ void stin__csg_resolve_pixels(struct stin_context *ctx, const stin__path *path,
 /* The resolve's pixels (csg/pixels.c). bytes: what the CPU's need for w x
  * h. at: the CPU's for the viewport at `offset` bytes into the staging;
  * gpu: the GPU resolve's (the stencil read alone); 0 when it has not the
- * room. pack_begin sets the caller's pack state aside (tightly packed rows
- * into client memory) until pack_end. read_depth, read_stencil: the bound
+ * room. read_depth, read_stencil (inside stin__pack_begin): the bound
  * framebuffer's in the resolve's region into r's arrays. write_depth: r's
  * result into the bound depth buffer (func: the depth test). upload_result:
  * r's result into the core profiles' R32F texture, left bound on unit 0. */
-typedef struct stin__csg_pack_saved {
-    GLint store[4];
-    GLint buffer;
-} stin__csg_pack_saved;
 size_t stin__csg_pixels_bytes(int w, int h);
 int stin__csg_pixels_at(struct stin_context *ctx, size_t offset, stin__csg_pixels *r);
 int stin__csg_pixels_gpu(struct stin_context *ctx, stin__csg_pixels *r);
-void stin__csg_pack_begin(struct stin_context *ctx, stin__csg_pack_saved *s);
-void stin__csg_pack_end(struct stin_context *ctx, const stin__csg_pack_saved *s);
 void stin__csg_read_depth(struct stin_context *ctx, const stin__csg_pixels *r, float *out);
 void stin__csg_read_stencil(struct stin_context *ctx, const stin__csg_pixels *r);
 void stin__csg_write_depth(struct stin_context *ctx, const stin__path *path,

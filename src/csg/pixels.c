@@ -12,8 +12,6 @@
 #define GL_PACK_ROW_LENGTH 0x0D02
 #define GL_PACK_SKIP_ROWS 0x0D03
 #define GL_PACK_SKIP_PIXELS 0x0D04
-#define GL_PIXEL_PACK_BUFFER 0x88EB
-#define GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
 
 typedef stin__csg_pixels resolve; /* csg.h: shared with the resolves */
 
@@ -70,40 +68,6 @@ int stin__csg_pixels_gpu(stin_context *ctx, resolve *r)
 }
 
 /* ---- pixel transfer ------------------------------------------------------- */
-static const GLenum pack_store[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
-                                     GL_PACK_SKIP_PIXELS};
-
-static int has_pack_buffer(const stin_context *ctx)
-{
-    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO)) &&
-           ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 21;
-}
-
-/* The caller's pack state set aside: tightly packed rows into client memory. */
-void stin__csg_pack_begin(stin_context *ctx, stin__csg_pack_saved *s)
-{
-    int i;
-    for (i = 0; i < 4; i++) {
-        GL(ctx, GetIntegerv)(pack_store[i], &s->store[i]);
-        GL(ctx, PixelStorei)(pack_store[i], i == 0 ? 1 : 0);
-    }
-    s->buffer = 0;
-    if (has_pack_buffer(ctx)) {
-        GL(ctx, GetIntegerv)(GL_PIXEL_PACK_BUFFER_BINDING, &s->buffer);
-        if (s->buffer)
-            GL(ctx, BindBuffer)(GL_PIXEL_PACK_BUFFER, 0);
-    }
-}
-
-void stin__csg_pack_end(stin_context *ctx, const stin__csg_pack_saved *s)
-{
-    int i;
-    for (i = 0; i < 4; i++)
-        GL(ctx, PixelStorei)(pack_store[i], s->store[i]);
-    if (s->buffer)
-        GL(ctx, BindBuffer)(GL_PIXEL_PACK_BUFFER, (GLuint)s->buffer);
-}
-
 /* The resolve's region of the bound framebuffer into its place in the
  * viewport-sized array out (rows r->w long); the rest of out is left as it
  * was (the loops over it keep to the region too). */
@@ -118,7 +82,7 @@ static void read_region(stin_context *ctx, const resolve *r, GLenum format, GLen
         GL(ctx, PixelStorei)(GL_PACK_SKIP_ROWS, g[1] - r->y);
     }
     GL(ctx, ReadPixels)(g[0], g[1], g[2], g[3], format, type, out);
-    if (!whole) { /* tightly packed again, as stin__csg_pack_begin left it */
+    if (!whole) { /* tightly packed again, as stin__pack_begin left it */
         GL(ctx, PixelStorei)(GL_PACK_ROW_LENGTH, 0);
         GL(ctx, PixelStorei)(GL_PACK_SKIP_PIXELS, 0);
         GL(ctx, PixelStorei)(GL_PACK_SKIP_ROWS, 0);

@@ -45,9 +45,9 @@ static int usable(stin_context *ctx, resolve *r, int gpu)
 
 void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve *r)
 {
-    stin__csg_pack_saved saved;
+    stin__unpack_saved saved; /* the caller's pack state */
     uint32_t pi;
-    stin__csg_pack_begin(ctx, &saved);
+    stin__pack_begin(ctx, &saved);
     stin__csg_region_reset(ctx); /* this resolve's viewport (a light's band, csg/cast.c) */
     if (!r->gpu) /* what the buffer holds stays where nearer (the GPU's: merge_begin) */
         stin__csg_read_depth(ctx, r, r->result);
@@ -64,7 +64,7 @@ void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve
     }
     stin__csg_region_reset(ctx);
     path->geometry_end(ctx);
-    stin__csg_pack_end(ctx, &saved);
+    stin__pack_end(ctx, &saved);
 }
 
 int stin__csg_resolve(stin_context *ctx, const stin__path *path)
