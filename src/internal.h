@@ -140,9 +140,7 @@ struct stin_context {
     struct stin__vdsm_state *vdsm;           /* shadow/vdsm_private.h */
     struct stin__glsl_state *glsl;           /* the GLSL path's (render/glsl_private.h) */
     struct stin__stage_times *times;         /* gl/stage_times_private.h */
-
-    /* the frame's CSG products (csg/csg.c), until they are private */
-    stin__csg_state csg;
+    struct stin__csg_state *csg;             /* CSG products (csg/csg_private.h) */
 };
 
 stin_desc stin__desc_defaults(const stin_desc *desc);

@@ -147,16 +147,19 @@ int stin__triangle_faces_light(const float *a, const float *b, const float *c, c
  * vao_begin binds vertex array 0 where there are VAOs, so buffer and
  * pointer calls do not land in the caller's; it returns the caller's,
  * which vao_end binds again. unpack_begin makes rows tight (alignment 1,
- * no row length or skips, no pixel unpack buffer); unpack_end restores. */
+ * no row length or skips, no pixel unpack buffer); unpack_end restores.
+ * pack_begin and pack_end do the same for read-backs into client memory. */
 GLuint stin__vao_begin(struct stin_context *ctx);
 void stin__vao_end(struct stin_context *ctx, GLuint saved);
 #define STIN__UNPACK_STORE 4
 typedef struct stin__unpack_saved {
     GLint store[STIN__UNPACK_STORE]; /* alignment, row length, skip rows, skip pixels */
-    GLint buffer;                    /* the bound pixel unpack buffer */
+    GLint buffer;                    /* the bound pixel unpack (pack) buffer */
 } stin__unpack_saved;
 void stin__unpack_begin(struct stin_context *ctx, stin__unpack_saved *s);
 void stin__unpack_end(struct stin_context *ctx, const stin__unpack_saved *s);
+void stin__pack_begin(struct stin_context *ctx, stin__unpack_saved *s);
+void stin__pack_end(struct stin_context *ctx, const stin__unpack_saved *s);
 
 /* Uploads one level of 8-bit texels, tightly packed (stin__unpack_begin
  * for the call, the caller's state restored); a 1D target ignores h. */

@@ -7,7 +7,7 @@
  * and its passes follow the primitives that overlap, not all of them. The
  * same holds where their world boxes do not meet: no point of the one lies
  * inside the other. */
-#include "internal.h"
+#include "csg/csg_private.h"
 
 #define NEAR_W 1e-6f /* clip w below which a point counts as at or behind the eye */
 
@@ -179,7 +179,7 @@ void stin__csg_rect_cut(float a[4], const float b[4])
 
 void stin__csg_region_reset(stin_context *ctx)
 {
-    stin__memcopy(ctx->csg.region, ctx->frame.viewport, sizeof ctx->csg.region);
+    stin__memcopy(ctx->csg->region, ctx->frame.viewport, sizeof ctx->csg->region);
 }
 
 /* A normalised device coordinate to a window one along axis k, within the
@@ -216,13 +216,13 @@ int stin__csg_window_box(const stin_context *ctx, const float ndc[4], int box[4]
 
 int stin__csg_region_narrow(stin_context *ctx, const float ndc[4])
 {
-    return stin__csg_window_box(ctx, ndc, ctx->csg.region);
+    return stin__csg_window_box(ctx, ndc, ctx->csg->region);
 }
 
 void stin__csg_region_keep_to(const stin_context *ctx, stin__pass_state *ps)
 {
     ps->scissor = 1;
-    stin__memcopy(ps->scissor_box, ctx->csg.region, sizeof ps->scissor_box);
+    stin__memcopy(ps->scissor_box, ctx->csg->region, sizeof ps->scissor_box);
 }
 
 float stin__csg_nearest_w(const stin_context *ctx, const stin__draw *d)

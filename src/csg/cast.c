@@ -16,7 +16,24 @@
  * times factor, plus units times 2^-24. The CPU copies follow the camera's
  * in the staging, so a point light's faces, drawn mid-frame, leave the
  * camera's resolve intact. */
-#include "internal.h"
+#include "csg/csg_private.h"
+
+/* A light's map resolve, kept for the passes that draw the products'
+ * surface into the same map again (map-combine's ramp, map-depth's side
+ * test): its pixels (result unbiased, candidate biased) and camera. */
+typedef struct stin__csg_cast_state {
+    GLuint fbo, depth_stencil; /* where a map without stencil resolves (0: none yet) */
+    int size;                 /* the renderbuffer's side */
+    int valid;                /* the last map's cast drew products */
+    int kept;                 /* in one band: pixels below hold its whole resolve */
+    int rect[4];              /* the map's rectangle under the products */
+    stin__csg_pixels pixels;
+    float view[16], projection[16]; /* the light's, the projection cropped to the pixels */
+    float light_projection[16];       /* the light's, uncropped */
+    int said_room, said_no_target, said_technique;
+} stin__csg_cast_state;
+
+size_t stin__csg_cast_state_bytes(void) { return sizeof(stin__csg_cast_state); }
 
 #define DEPTH_UNIT (1.0f / 16777216.0f) /* 24-bit depth's step: glPolygonOffset's r */
 
@@ -30,9 +47,9 @@ static void camera_save(const stin_context *ctx, camera_saved *s)
     stin__memcopy(s->view, ctx->frame.view, sizeof s->view);
     stin__memcopy(s->projection, ctx->projection, sizeof s->projection);
     stin__memcopy(s->view_proj, ctx->view_proj, sizeof s->view_proj);
-    stin__memcopy(s->cap_transform, ctx->csg.cap_transform, sizeof s->cap_transform);
+    stin__memcopy(s->cap_transform, ctx->csg->cap_transform, sizeof s->cap_transform);
     stin__memcopy(s->viewport, ctx->frame.viewport, sizeof s->viewport);
-    s->cap_usable = ctx->csg.cap_usable;
+    s->cap_usable = ctx->csg->cap_usable;
 }
 
 static void camera_restore(stin_context *ctx, const camera_saved *s)
@@ -40,9 +57,9 @@ static void camera_restore(stin_context *ctx, const camera_saved *s)
     stin__memcopy(ctx->frame.view, s->view, sizeof s->view);
     stin__memcopy(ctx->projection, s->projection, sizeof s->projection);
     stin__memcopy(ctx->view_proj, s->view_proj, sizeof s->view_proj);
-    stin__memcopy(ctx->csg.cap_transform, s->cap_transform, sizeof s->cap_transform);
+    stin__memcopy(ctx->csg->cap_transform, s->cap_transform, sizeof s->cap_transform);
     stin__memcopy(ctx->frame.viewport, s->viewport, sizeof s->viewport);
-    ctx->csg.cap_usable = s->cap_usable;
+    ctx->csg->cap_usable = s->cap_usable;
 }
 
 /* The frame's camera becomes the light's, its projection cropped so that
@@ -74,8 +91,8 @@ static int cover(stin_context *ctx, const int map_vp[4], int rect[4])
     float all[4] = {1.0f, 1.0f, -1.0f, -1.0f}, one[4];
     int x0, y0, x1, y1;
     uint32_t i;
-    for (i = 0; i < ctx->csg.primitive_count; i++) {
-        stin__csg_screen_rect(ctx, &ctx->csg.primitives[i], one);
+    for (i = 0; i < ctx->csg->primitive_count; i++) {
+        stin__csg_screen_rect(ctx, &ctx->csg->primitives[i], one);
         all[0] = one[0] < all[0] ? one[0] : all[0];
         all[1] = one[1] < all[1] ? one[1] : all[1];
         all[2] = one[2] > all[2] ? one[2] : all[2];
@@ -102,7 +119,7 @@ static int cover(stin_context *ctx, const int map_vp[4], int rect[4])
  * texture; made at the first cast that needs it, grown, never shrunk). */
 static int own_target(stin_context *ctx, int size)
 {
-    stin__csg_cast_state *c = &ctx->csg.cast;
+    stin__csg_cast_state *c = ctx->csg->cast;
     uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
     if ((ctx->caps.present & need) != need)
         return 0;
@@ -175,13 +192,13 @@ static void bias(stin__csg_pixels *r, float factor, float units)
 /* Bytes the camera's resolve keeps at the staging's start this frame. */
 static size_t camera_bytes(const stin_context *ctx)
 {
-    size_t n = stin__csg_goldfeather_bytes(ctx->frame.viewport[2], ctx->frame.viewport[3]);
+    size_t n = stin__csg_pixels_bytes(ctx->frame.viewport[2], ctx->frame.viewport[3]);
     return (n + 15u) & ~(size_t)15u;
 }
 
 int stin__csg_cast_wanted(const stin_context *ctx)
 {
-    return ctx->csg.product_count > 0 &&
+    return ctx->csg->product_count > 0 &&
            ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_OFF &&
            !(ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_CAST);
 }
@@ -202,8 +219,8 @@ static void surface_pass(stin_context *ctx, const stin__pass_state *base)
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, LoadMatrixf)(ctx->projection);
     ctx->bound_mesh = 0xffffffffu;
-    for (i = 0; i < ctx->csg.primitive_count; i++)
-        stin__fixed_path()->geometry(ctx, &ctx->csg.primitives[i]);
+    for (i = 0; i < ctx->csg->primitive_count; i++)
+        stin__fixed_path()->geometry(ctx, &ctx->csg->primitives[i]);
     ctx->bound_mesh = 0xffffffffu;
 }
 
@@ -225,10 +242,10 @@ typedef struct cast_job {
  * not). The camera is the light's, cropped, until the caller restores it. */
 static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
 {
-    stin__csg_cast_state *c = &ctx->csg.cast;
+    stin__csg_cast_state *c = ctx->csg->cast;
     stin__csg_pixels *r = &c->pixels, biased;
     stin__pass_state ps = stin__pass_defaults, base = *stin__pass_current(ctx);
-    size_t offset = job->offset, total, row = stin__csg_goldfeather_bytes(rect[2], 1);
+    size_t offset = job->offset, total, row = stin__csg_pixels_bytes(rect[2], 1);
     int rows, y, bands = 0;
     total = ctx->staging_bytes > ctx->scratch_bytes ? ctx->staging_bytes : ctx->scratch_bytes;
     rows = total > offset ? (int)((total - offset) / row) : 0;
@@ -260,7 +277,7 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
                              rect[1] + rect[3] - y < rows ? rect[1] + rect[3] - y : rows};
         camera_light(ctx, job->view, job->proj, job->map_vp, band);
         (void)stin__csg_pixels_at(ctx, offset, r); /* rows were sized to fit */
-        ctx->csg.resolve_fbo = job->in_place ? job->target : c->fbo;
+        ctx->csg->resolve_fbo = job->in_place ? job->target : c->fbo;
         if (!job->in_place) {
             GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, c->fbo);
             r->bits = 8;
@@ -322,7 +339,7 @@ int stin__csg_cast(stin_context *ctx, const stin__path *path, const float view[1
                    const float proj[16], const int map_vp[4], GLuint map_fbo, int in_place,
                    float factor, float units)
 {
-    stin__csg_cast_state *c = &ctx->csg.cast;
+    stin__csg_cast_state *c = ctx->csg->cast;
     cast_job job;
     camera_saved saved;
     int rect[4], bands = 0;
@@ -357,7 +374,7 @@ int stin__csg_cast(stin_context *ctx, const stin__path *path, const float view[1
 
 void stin__csg_cast_again(stin_context *ctx, const int map_vp[4], GLuint target, int in_place)
 {
-    stin__csg_cast_state *c = &ctx->csg.cast;
+    stin__csg_cast_state *c = ctx->csg->cast;
     stin__pass_state base = *stin__pass_current(ctx);
     cast_job job;
     camera_saved saved;
@@ -394,16 +411,16 @@ void stin__csg_cast_again(stin_context *ctx, const int map_vp[4], GLuint target,
 
 void stin__csg_cast_none(stin_context *ctx, const char *why)
 {
-    if (!stin__csg_cast_wanted(ctx) || !ctx->light_count || ctx->csg.cast.said_technique)
+    if (!stin__csg_cast_wanted(ctx) || !ctx->light_count || ctx->csg->cast->said_technique)
         return;
     stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "CSG products cast no shadow %s",
               why);
-    ctx->csg.cast.said_technique = 1;
+    ctx->csg->cast->said_technique = 1;
 }
 
 void stin__csg_cast_release(stin_context *ctx)
 {
-    stin__csg_cast_state *c = &ctx->csg.cast;
+    stin__csg_cast_state *c = ctx->csg->cast;
     if (c->fbo)
         GL(ctx, DeleteFramebuffers)(1, &c->fbo);
     if (c->depth_stencil)

@@ -3,11 +3,59 @@
  * primitives kept like draws and its expression normalised into the
  * frame's term and literal stores (csg/normal_form.c). Nothing of a refused
  * product stays. */
-#include "internal.h"
+#include "csg/csg_private.h"
 
-uint32_t stin__csg_scratch_words(const stin_desc *d)
+/* Words of normalisation scratch for the desc's capacities. */
+static uint32_t scratch_words(const stin_desc *d)
 {
     return 2u * (d->csg.max_terms + d->csg.max_literals);
+}
+
+/* The parts behind the struct, each from a 16-byte boundary: the cast and
+ * interval states, then the arrays (primitives, and their faces: two a
+ * primitive and a product's near-plane cap). */
+static size_t arrays_bytes(const stin_desc *d)
+{
+    return 4u * sizeof(stin__draw) * d->csg.max_primitives +
+           (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->csg.max_terms +
+           sizeof(uint32_t) * ((size_t)d->csg.max_literals + scratch_words(d));
+}
+
+size_t stin__csg_state_bytes(const stin_desc *d)
+{
+    return stin__align16(sizeof(stin__csg_state)) + stin__align16(stin__csg_cast_state_bytes()) +
+           stin__align16(stin__csg_interval_state_bytes()) + arrays_bytes(d);
+}
+
+void stin__csg_state_place(void *state, const stin_desc *d)
+{
+    stin__csg_state *c = (stin__csg_state *)state;
+    unsigned char *next = (unsigned char *)state + stin__align16(sizeof *c);
+    c->cast = (struct stin__csg_cast_state *)(void *)next;
+    next += stin__align16(stin__csg_cast_state_bytes());
+    c->interval = (struct stin__csg_interval_state *)(void *)next;
+    next += stin__align16(stin__csg_interval_state_bytes());
+    c->primitives = (stin__draw *)(void *)next;
+    c->products = (stin__csg_product *)(void *)(c->primitives + d->csg.max_primitives);
+    c->terms = (stin__csg_term *)(void *)(c->products + d->csg.max_terms);
+    c->literals = (uint32_t *)(void *)(c->terms + d->csg.max_terms);
+    c->scratch = c->literals + d->csg.max_literals;
+    c->scratch_words = scratch_words(d);
+    c->faces = (stin__draw *)(void *)(c->scratch + c->scratch_words);
+}
+
+void stin__csg_frame_begin(stin_context *ctx)
+{
+    stin__csg_state *c = ctx->csg;
+    c->primitive_count = c->product_count = 0;
+    c->term_count = c->literal_count = 0;
+    c->face_count = 0;
+    c->resolved = 0;
+}
+
+uint32_t stin__csg_product_count(const stin_context *ctx)
+{
+    return ctx->csg->product_count;
 }
 
 static stin_result refuse(stin_context *ctx, stin_result r, stin_log_item item, const char *why,
@@ -47,14 +95,14 @@ static stin_result check_nodes(stin_context *ctx, const stin_csg_desc *desc)
     return STIN_OK;
 }
 
-/* Each primitive into the store (from ctx->csg.primitive_count on; the
+/* Each primitive into the store (from ctx->csg->primitive_count on; the
  * count moves only when the whole product is accepted). */
 static stin_result take_primitives(stin_context *ctx, const stin_csg_desc *desc)
 {
     uint32_t i, slot;
     for (i = 0; i < desc->primitive_count; i++) {
         const stin_csg_primitive *p = &desc->primitives[i];
-        stin__draw *d = &ctx->csg.primitives[ctx->csg.primitive_count + i];
+        stin__draw *d = &ctx->csg->primitives[ctx->csg->primitive_count + i];
         stin__mesh_slot *m = stin__mesh_lookup(ctx, p->mesh, &slot);
         stin_result r;
         if (!m)
@@ -138,7 +186,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
     r = check_nodes(ctx, desc);
     if (r != STIN_OK)
         return r;
-    c = &ctx->csg;
+    c = ctx->csg;
     if (desc->primitive_count > ctx->desc.csg.max_primitives - c->primitive_count)
         return refuse(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
                       "more primitives than desc.csg.max_primitives leaves this frame, primitives",
@@ -184,17 +232,40 @@ uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_
     uint32_t i;
     if (count)
         *count = 0;
-    if (!ctx || product >= ctx->csg.product_count)
+    if (!ctx || product >= ctx->csg->product_count)
         return 0;
-    p = &ctx->csg.products[product];
+    p = &ctx->csg->products[product];
     if (literals && term < p->term_count) {
-        t = &ctx->csg.terms[p->first_term + term];
+        t = &ctx->csg->terms[p->first_term + term];
         for (i = 0; i < t->count && i < capacity; i++)
-            literals[i] = ctx->csg.literals[t->first + i];
+            literals[i] = ctx->csg->literals[t->first + i];
         if (count)
             *count = i;
     }
     return p->term_count;
+}
+
+int stin__csg_caster_product(const stin_context *ctx, uint32_t i, stin__caster_product *out)
+{
+    const stin__csg_state *c = ctx->csg;
+    const stin__csg_product *p;
+    if (i >= c->product_count)
+        return 0;
+    p = &c->products[i];
+    out->primitives = c->primitives + p->first_primitive;
+    out->primitive_count = p->primitive_count;
+    out->term_count = p->term_count;
+    out->index = i;
+    return 1;
+}
+
+const uint32_t *stin__csg_caster_term(const stin_context *ctx, const stin__caster_product *p,
+                                      uint32_t t, uint32_t *count)
+{
+    const stin__csg_state *c = ctx->csg;
+    const stin__csg_term *term = &c->terms[c->products[p->index].first_term + t];
+    *count = term->count;
+    return c->literals + term->first;
 }
 
 /* Each primitive's faces that a term shows: front where it is plain in a
@@ -203,7 +274,7 @@ uint32_t stin_query_csg_terms(const stin_context *ctx, uint32_t product, uint32_
  * most: a product has a primitive at least). */
 void stin__csg_faces(stin_context *ctx)
 {
-    stin__csg_state *c = &ctx->csg;
+    stin__csg_state *c = ctx->csg;
     uint32_t pi, ti, li;
     c->face_count = 0;
     if (!c->resolved)
@@ -243,6 +314,12 @@ void stin__csg_faces(stin_context *ctx)
             cap->csg = STIN__CSG_CAP;
         }
     }
+}
+
+const stin__draw *stin__csg_face_list(const stin_context *ctx, uint32_t *count)
+{
+    *count = ctx->csg->face_count;
+    return ctx->csg->faces;
 }
 
 GLenum stin__csg_face_hidden(const stin__draw *d)

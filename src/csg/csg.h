@@ -6,12 +6,11 @@
 
 #include "stin/stin.h"
 #include "render/path.h"
+#include "render/casters.h"
 #include "gl/pass_state.h"
 
-/* A literal names a primitive of its product: index * 2, + 1 complemented. */
-#define STIN__CSG_LITERAL(primitive, complemented) ((primitive) * 2u + ((complemented) ? 1u : 0u))
-#define STIN__CSG_PRIMITIVE_OF(literal) ((literal) >> 1)
-#define STIN__CSG_COMPLEMENTED(literal) ((literal) & 1u)
+/* Literals (STIN__CSG_LITERAL) are render/casters.h's: the interface that
+ * hands the products down to the shadow techniques reads them too. */
 #define STIN__CSG_MAX_NODES 65536u
 #define STIN__CSG_MAX_DEPTH 1024u
 /* Node visits of one normalisation (shared subtrees are expanded at every
@@ -28,7 +27,7 @@ typedef struct stin__csg_product {
     int capped;               /* the resolve kept its near-plane cap somewhere */
 } stin__csg_product;
 
-/* One resolve's candidates and result (csg/goldfeather.c carves them;
+/* One resolve's candidates and result (csg/pixels.c carves them;
  * csg/merge.c keeps them): on the CPU, arrays in the staging filled by
  * read-backs; on the GPU (gpu set: the frame's resolve on GLSL tiers with
  * FBOs and depth textures), depth textures, result and candidate NULL. */
@@ -42,106 +41,17 @@ typedef struct stin__csg_pixels {
     int gpu;                  /* kept on the GPU (csg/merge.c) */
 } stin__csg_pixels;
 
-/* Stencil thresholds the GPU resolve counts in occlusion queries to learn
- * a stencil's largest value without reading it (csg/merge.c): 1..16, 32,
- * 64, 128, 255; one query more tells whether a candidate kept a pixel. */
-#define STIN__CSG_MERGE_THRESHOLDS 20
-enum { STIN__CSG_MERGE_WORK, STIN__CSG_MERGE_RESULT };
-typedef struct stin__csg_merge_state {
-    GLuint merge_prog, kill_prog, snap_prog;
-    GLint u_depth, u_select, u_params;
-    GLint snap_model, snap_view_proj, snap_result, snap_params;
-    stin__displace_locs snap_displace;
-    GLuint fbo[2], texture[2]; /* work (depth-stencil), result (depth) */
-    GLenum format;
-    int width, height;        /* grown to the largest viewport window so far */
-    size_t bytes;
-    GLuint queries[STIN__CSG_MERGE_THRESHOLDS + 1]; /* 0: no occlusion queries */
-    int said_failed;
-} stin__csg_merge_state;
+/* desc.csg.interval_layers at most (csg/interval.c). */
+#define STIN__CSG_INTERVAL_MAX_LAYERS 16u
 
-/* A light's map resolve, kept for the passes that draw the products'
- * surface into the same map again (map-combine's ramp, map-depth's side
- * test): its pixels (result unbiased, candidate biased) and camera. */
-typedef struct stin__csg_cast_state {
-    GLuint fbo, depth_stencil; /* where a map without stencil resolves (0: none yet) */
-    int size;                 /* the renderbuffer's side */
-    int valid;                /* the last map's cast drew products */
-    int kept;                 /* in one band: pixels below hold its whole resolve */
-    int rect[4];              /* the map's rectangle under the products */
-    stin__csg_pixels pixels;
-    float view[16], projection[16]; /* the light's, the projection cropped to the pixels */
-    float light_projection[16];       /* the light's, uncropped */
-    int said_room, said_no_target, said_technique;
-} stin__csg_cast_state;
-/* "interval" (csg/interval.c): each primitive's crossings of the camera
- * rays peeled into k depth layers, walked per pixel by one full-screen
- * pass. Layer g (primitive * k + layer; the near-plane cap after the
- * last) lives in array g & 1 at slice g >> 1: the layer a peel reads is
- * never the texture it draws into. */
-#define STIN__CSG_INTERVAL_MAX_LAYERS 16u  /* desc.csg.interval_layers at most */
-#define STIN__CSG_INTERVAL_MAX_PRIMITIVES 32u /* a product's primitives (a bit each) */
-#define STIN__CSG_INTERVAL_MAX_TERMS 64u   /* a product's terms (uniform masks) */
-#define STIN__CSG_INTERVAL_MAX_LAYER_INDEX 255u /* layers + cap: the walk's 8-bit answer */
-typedef struct stin__csg_interval_state {
-    GLuint peel_prog, walk_prog;
-    GLint peel_model, peel_view_proj, peel_previous, peel_previous_slice, peel_mirrored,
-        peel_tolerance;
-    stin__displace_locs peel_displace;
-    GLint walk_crossing[2], walk_counts, walk_terms;
-    /* even and odd layers: depth (the peel's depth test; the frame's depth
-     * format) and RG32F crossings (the rasteriser's float depth, for exact
-     * peeling and ordering; the side) */
-    GLuint depth[2], crossing[2];
-    GLenum depth_format;
-    GLuint result, fbo, query;  /* the walk's R8 target; the overflow's query */
-    int width, height, slices;  /* grown to the largest frame and product so far */
-    size_t bytes;               /* GL memory of the textures above */
-    int max_slices;             /* GL_MAX_ARRAY_TEXTURE_LAYERS */
-    int said_fallback, said_overflow, said_failed;
-} stin__csg_interval_state;
-
-/* The frame's products, in the caller's block (sizes from the desc). */
-typedef struct stin__csg_state {
-    stin__draw *primitives;   /* csg.max_primitives: mesh, transform, material each */
-    stin__csg_product *products; /* csg.max_terms (a product has at least one term) */
-    stin__csg_term *terms;    /* csg.max_terms */
-    uint32_t *literals;       /* csg.max_literals */
-    uint32_t *scratch;        /* normalisation, scratch_words */
-    uint32_t scratch_words;
-    uint32_t primitive_count, product_count, term_count, literal_count;
-    stin__draw *faces;        /* 2 csg.max_primitives: the faces the frame's passes draw */
-    uint32_t face_count;
-    int resolved;             /* this frame's products are in its depth buffer */
-    int said_unusable, said_layers, said_planes;
-    uint32_t cap_slot;        /* the near-plane cap's mesh (csg/near.c), STIN__NO_SLOT: none */
-    float cap_transform[16];  /* this frame's: the cap onto the near plane */
-    int cap_usable;
-    /* core profiles: the resolved depth goes back through an R32F texture and
-     * a program writing gl_FragDepth (made at stin_create; the texture at the
-     * first frame, grown, never shrunk) */
-    GLuint depth_prog, depth_tex;
-    GLint u_depth, u_origin;
-    int tex_width, tex_height;
-    int said_scs_fallback, said_scs_capped;
-    stin__csg_cast_state cast; /* products casting into the lights' maps (csg/cast.c) */
-    GLuint resolve_fbo;       /* the framebuffer a resolve runs in (the frame's, or a
-                               * light map's: csg/cast.c), bound again by interval */
-    stin__csg_interval_state interval; /* csg/interval.c */
-    stin__csg_merge_state merge;       /* csg/merge.c */
-    int merged;               /* this frame's resolve kept its depth on the GPU */
-    int in_place;             /* ... and runs in the frame's own buffers (csg/merge.c) */
-    int direct;               /* ... or snaps each candidate into the frame's depth */
-    int result_pending;       /* in place: the result texture has yet to take the depth
-                               * of pending_fbo (when a pass first asks for it) */
-    GLuint pending_fbo;
-    int region[4];            /* window x, y, w, h the resolve's passes keep to: the
-                               * viewport, or on the GPU the term's or candidate's
-                               * rectangle (csg/bounds.c) */
-} stin__csg_state;
-
-/* Words of normalisation scratch for the desc's capacities. */
-uint32_t stin__csg_scratch_words(const stin_desc *d);
+/* The module's state in the caller's block (frame/modules.c's slot): its
+ * size for the desc, and its arrays laid out behind it (csg/csg.c). */
+size_t stin__csg_state_bytes(const stin_desc *d);
+void stin__csg_state_place(void *state, const stin_desc *d);
+/* At stin_begin_frame: no products, nothing resolved. */
+void stin__csg_frame_begin(struct stin_context *ctx);
+/* The products drawn into the frame so far. */
+uint32_t stin__csg_product_count(const struct stin_context *ctx);
 
 /* Where the normal form goes and how much room is left. */
 typedef struct stin__csg_out {
@@ -168,12 +78,11 @@ stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t n
                                           uint32_t *scratch, uint32_t scratch_words,
                                           stin__csg_out *out);
 
-/* Goldfeather (csg/goldfeather.c): the frame's products into its depth
+/* The resolve (csg/resolve.c): the frame's products into its depth
  * buffer (after the target's clear, before the ambient pass); 0 when it
  * cannot (logged once): the products are not drawn. depth_again puts the
  * resolved depth into the bound framebuffer too, depth LESS (the screen
  * mask's copy of the frame's depth). */
-size_t stin__csg_goldfeather_bytes(int w, int h);
 /* At stin_create after the lighting and shadows: on a core profile the
  * depth program (GL4 lighting), else csg-off (demoted, logged). */
 void stin__csg_init(struct stin_context *ctx);
@@ -185,8 +94,17 @@ void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
  * (0, 0) (the viewport's corner for the CPU resolve's R32F copy, (0, 0)
  * for the GPU resolve's depth texture). */
 GLuint stin__csg_depth_texture(struct stin_context *ctx, int origin[2]);
-/* The faces of the resolved products as draws (csg/csg.c), after the resolve. */
+/* The faces of the resolved products as draws (csg/csg.c), after the
+ * resolve; face_list: them (the render passes' stin__resolved faces hook). */
 void stin__csg_faces(struct stin_context *ctx);
+const stin__draw *stin__csg_face_list(const struct stin_context *ctx, uint32_t *count);
+/* The frame's products as the shadow techniques walk them (render/casters.h:
+ * the product and term hooks). */
+int stin__csg_caster_product(const struct stin_context *ctx, uint32_t i,
+                             stin__caster_product *out);
+const uint32_t *stin__csg_caster_term(const struct stin_context *ctx,
+                                      const stin__caster_product *p, uint32_t t,
+                                      uint32_t *count);
 /* Around a face draw of a path's pass: depth LESS becomes EQUAL, the face
  * culled that the draw does not show (skipped, returning 0, in map-depth's
  * pass for the back sides the eye sees); end restores the pass state. */
@@ -203,15 +121,27 @@ int stin__csg_cap_transform(const struct stin_context *ctx, float out[16]);
 /* Whether the frame's near and far planes cut d's bounding box. */
 void stin__csg_planes_cut(const struct stin_context *ctx, const stin__draw *d, int *near_cut,
                           int *far_cut);
-/* The resolve's pixels for the viewport at `offset` bytes into the staging
- * (0 when it has not the room); every product resolved into them in the
- * bound framebuffer, with the current camera (ctx->frame.view, projection,
- * view_proj, viewport); its depth written back (func: the depth test). */
-int stin__csg_pixels_at(struct stin_context *ctx, size_t offset, stin__csg_pixels *r);
+/* Every product resolved into r in the bound framebuffer, with the
+ * current camera (ctx->frame.view, projection, view_proj, viewport), each
+ * by the chain's first method that takes it (csg/resolve.c). */
 void stin__csg_resolve_pixels(struct stin_context *ctx, const stin__path *path,
                               stin__csg_pixels *r);
+
+/* The resolve's pixels (csg/pixels.c). bytes: what the CPU's need for w x
+ * h. at: the CPU's for the viewport at `offset` bytes into the staging;
+ * gpu: the GPU resolve's (the stencil read alone); 0 when it has not the
+ * room. read_depth, read_stencil (inside stin__pack_begin): the bound
+ * framebuffer's in the resolve's region into r's arrays. write_depth: r's
+ * result into the bound depth buffer (func: the depth test). upload_result:
+ * r's result into the core profiles' R32F texture, left bound on unit 0. */
+size_t stin__csg_pixels_bytes(int w, int h);
+int stin__csg_pixels_at(struct stin_context *ctx, size_t offset, stin__csg_pixels *r);
+int stin__csg_pixels_gpu(struct stin_context *ctx, stin__csg_pixels *r);
+void stin__csg_read_depth(struct stin_context *ctx, const stin__csg_pixels *r, float *out);
+void stin__csg_read_stencil(struct stin_context *ctx, const stin__csg_pixels *r);
 void stin__csg_write_depth(struct stin_context *ctx, const stin__path *path,
                            const stin__csg_pixels *r, GLenum func);
+void stin__csg_upload_result(struct stin_context *ctx, const stin__csg_pixels *r);
 
 /* Products casting shadows (csg/cast.c). A map technique calls cast after
  * clearing a light's map (viewport map_vp, in framebuffer map_fbo; in_place:
@@ -239,11 +169,14 @@ void stin__csg_cast_none(struct stin_context *ctx, const char *why);
  * STIN_DEBUG_CSG_NO_CAST is not set). */
 int stin__csg_cast_wanted(const struct stin_context *ctx);
 
-/* Goldfeather's passes that SCS shares: depth and stencil of the viewport
- * read back into r, the buffers cleared (colour writes off), the face a
- * primitive shows (front, back where complemented; mirroring swaps). */
-void stin__csg_read_depth(struct stin_context *ctx, const stin__csg_pixels *r, float *out);
-void stin__csg_read_stencil(struct stin_context *ctx, const stin__csg_pixels *r);
+/* Goldfeather (csg/goldfeather.c): product p into r's result (csg/merge.c),
+ * the chain's last method, which takes any product. Inside the resolve's
+ * geometry_begin. Its passes the other methods share: the buffers cleared
+ * within the resolve's region (colour writes off), the face a primitive
+ * does not show (it shows its front, its back where complemented;
+ * mirroring swaps). */
+void stin__csg_goldfeather_product(struct stin_context *ctx, const stin__path *path,
+                                   stin__csg_pixels *r, stin__csg_product *p);
 void stin__csg_clear(struct stin_context *ctx, GLbitfield bits);
 GLenum stin__csg_culled_face(const stin__draw *d, int complemented);
 

@@ -23,201 +23,21 @@
  * rectangles lie apart are taken together (a group): steps 1-3 run once
  * for all of them, with every literal but the members counted. Where the
  * candidates and the result are kept is csg/merge.c's: on GLSL tiers with
- * FBOs and depth textures in depth textures on the GPU, else on the CPU.
- * The result goes into the frame's depth buffer (depth ALWAYS over what
- * the buffer held before, itself copied first and kept in the minimum, so
- * earlier products and a caller's keep_contents depth stay): from the GPU by
- * the faces snapped onto it (csg/merge.c: onto the result, or in a direct
- * resolve each candidate's onto its own depth), from the CPU by
- * glDrawPixels or, on core profiles, an R32F texture and the same kind of
- * quad. The CPU's copies go through the block's texture staging (the
- * larger of it and the mesh scratch, both idle during a frame): 9 bytes a
- * pixel of the viewport (the GPU resolve: 1, for interval's walk and a
- * stencil read where there are no queries). The primitives' faces on the
- * resolved depth are then drawn like any draw, depth EQUAL (csg/csg.c's face
- * draws). */
-#include "internal.h"
+ * FBOs and depth textures in depth textures on the GPU, else on the CPU
+ * (csg/pixels.c). Which products come here is csg/resolve.c's choice. */
+#include "csg/csg_private.h"
 
-#define GL_STENCIL_INDEX 0x1901
 #ifndef OFFSET_UNITS
 #define OFFSET_UNITS 4.0f
 #endif
 #define GL_INVERT 0x150A
-#define GL_PACK_ROW_LENGTH 0x0D02
-#define GL_PACK_SKIP_ROWS 0x0D03
-#define GL_PACK_SKIP_PIXELS 0x0D04
-#define GL_PIXEL_PACK_BUFFER 0x88EB
-#define GL_PIXEL_PACK_BUFFER_BINDING 0x88ED
 
 typedef stin__csg_pixels resolve; /* csg.h: shared with csg/scs.c */
-
-static unsigned char *staging_of(stin_context *ctx, size_t *bytes)
-{
-    int staging = ctx->staging_bytes >= ctx->scratch_bytes;
-    *bytes = staging ? ctx->staging_bytes : ctx->scratch_bytes;
-    return staging ? ctx->staging : ctx->scratch;
-}
-
-size_t stin__csg_goldfeather_bytes(int w, int h) { return (size_t)w * (size_t)h * 9u; }
-
-/* ---- pixel transfer ------------------------------------------------------- */
-typedef struct pack_saved {
-    GLint store[4];
-    GLint buffer;
-} pack_saved;
-
-static const GLenum pack_store[4] = {GL_PACK_ALIGNMENT, GL_PACK_ROW_LENGTH, GL_PACK_SKIP_ROWS,
-                                     GL_PACK_SKIP_PIXELS};
-
-static int has_pack_buffer(const stin_context *ctx)
-{
-    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO)) &&
-           ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 21;
-}
-
-/* The caller's pack state set aside: tightly packed rows into client memory. */
-static void pack_begin(stin_context *ctx, pack_saved *s)
-{
-    int i;
-    for (i = 0; i < 4; i++) {
-        GL(ctx, GetIntegerv)(pack_store[i], &s->store[i]);
-        GL(ctx, PixelStorei)(pack_store[i], i == 0 ? 1 : 0);
-    }
-    s->buffer = 0;
-    if (has_pack_buffer(ctx)) {
-        GL(ctx, GetIntegerv)(GL_PIXEL_PACK_BUFFER_BINDING, &s->buffer);
-        if (s->buffer)
-            GL(ctx, BindBuffer)(GL_PIXEL_PACK_BUFFER, 0);
-    }
-}
-
-static void pack_end(stin_context *ctx, const pack_saved *s)
-{
-    int i;
-    for (i = 0; i < 4; i++)
-        GL(ctx, PixelStorei)(pack_store[i], s->store[i]);
-    if (s->buffer)
-        GL(ctx, BindBuffer)(GL_PIXEL_PACK_BUFFER, (GLuint)s->buffer);
-}
-
-/* The resolve's region of the bound framebuffer into its place in the
- * viewport-sized array out (rows r->w long); the rest of out is left as it
- * was (the loops over it keep to the region too). */
-static void read_region(stin_context *ctx, const resolve *r, GLenum format, GLenum type,
-                        void *out)
-{
-    const int *g = ctx->csg.region;
-    int whole = g[0] == r->x && g[1] == r->y && g[2] == r->w && g[3] == r->h;
-    if (!whole) {
-        GL(ctx, PixelStorei)(GL_PACK_ROW_LENGTH, r->w);
-        GL(ctx, PixelStorei)(GL_PACK_SKIP_PIXELS, g[0] - r->x);
-        GL(ctx, PixelStorei)(GL_PACK_SKIP_ROWS, g[1] - r->y);
-    }
-    GL(ctx, ReadPixels)(g[0], g[1], g[2], g[3], format, type, out);
-    if (!whole) { /* tightly packed again, as pack_begin left it */
-        GL(ctx, PixelStorei)(GL_PACK_ROW_LENGTH, 0);
-        GL(ctx, PixelStorei)(GL_PACK_SKIP_PIXELS, 0);
-        GL(ctx, PixelStorei)(GL_PACK_SKIP_ROWS, 0);
-    }
-}
-
-static void read_depth(stin_context *ctx, const resolve *r, float *out)
-{
-    read_region(ctx, r, GL_DEPTH_COMPONENT, GL_FLOAT, out);
-}
-
-static void read_stencil(stin_context *ctx, const resolve *r)
-{
-    read_region(ctx, r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
-}
-
-#define GL_R32F 0x822E
-
-/* The result into the R32F texture (grown to the viewport), left bound on unit 0. */
-static void upload_result(stin_context *ctx, const resolve *r)
-{
-    stin__csg_state *c = &ctx->csg;
-    stin__unpack_saved saved;
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, c->depth_tex);
-    stin__unpack_begin(ctx, &saved);
-    if (r->w > c->tex_width || r->h > c->tex_height) {
-        c->tex_width = r->w > c->tex_width ? r->w : c->tex_width;
-        c->tex_height = r->h > c->tex_height ? r->h : c->tex_height;
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R32F, c->tex_width, c->tex_height, 0, GL_RED,
-                            GL_FLOAT, NULL);
-    }
-    GL(ctx, TexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, r->w, r->h, GL_RED, GL_FLOAT, r->result);
-    stin__unpack_end(ctx, &saved);
-}
-
-/* Core profiles: the result into the R32F texture and a screen quad
- * writing it as gl_FragDepth. */
-static void write_depth_core(stin_context *ctx, const resolve *r)
-{
-    stin__csg_state *c = &ctx->csg;
-    float origin[4];
-    upload_result(ctx, r);
-    GL(ctx, UseProgram)(c->depth_prog);
-    stin__lit_program_forget(ctx);
-    GL(ctx, Uniform1i)(c->u_depth, 0);
-    origin[0] = (float)r->x;
-    origin[1] = (float)r->y;
-    origin[2] = origin[3] = 0.0f;
-    GL(ctx, Uniform4fv)(c->u_origin, 1, origin);
-    stin__screen_quad(ctx);
-}
-
-/* The result into the depth buffer at the viewport's corner: with no
- * program (the fragments keep the pixels' depth) and the raster position
- * at clip (-1, -1) through identity matrices; on core profiles through
- * write_depth_core. */
-static void write_depth(stin_context *ctx, const stin__path *path, const resolve *r, GLenum func)
-{
-    static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    stin__unpack_saved saved;
-    stin__pass_state ps = stin__pass_defaults;
-    int fixed = path == stin__fixed_path();
-    ps.depth_test = 1;
-    ps.depth_func = func;
-    ps.color_write = 0;
-    stin__pass_apply(ctx, &ps);
-    if (ctx->csg.depth_prog) {
-        write_depth_core(ctx, r);
-        ctx->stats.passes++;
-        return;
-    }
-    if (!fixed) {
-        GL(ctx, UseProgram)(0);
-        stin__lit_program_forget(ctx);
-    }
-    GL(ctx, MatrixMode)(GL_PROJECTION);
-    if (!fixed)
-        GL(ctx, PushMatrix)(); /* the caller's (the fixed path pushed its own level) */
-    GL(ctx, LoadMatrixf)(identity);
-    GL(ctx, MatrixMode)(GL_MODELVIEW);
-    if (!fixed)
-        GL(ctx, PushMatrix)();
-    GL(ctx, LoadMatrixf)(identity);
-    GL(ctx, RasterPos2f)(-1.0f, -1.0f);
-    stin__unpack_begin(ctx, &saved);
-    GL(ctx, DrawPixels)(r->w, r->h, GL_DEPTH_COMPONENT, GL_FLOAT, r->result);
-    stin__unpack_end(ctx, &saved);
-    if (!fixed) {
-        GL(ctx, PopMatrix)();
-        GL(ctx, MatrixMode)(GL_PROJECTION);
-        GL(ctx, PopMatrix)();
-    } else {
-        GL(ctx, MatrixMode)(GL_PROJECTION);
-        GL(ctx, LoadMatrixf)(ctx->projection);
-    }
-    GL(ctx, MatrixMode)(GL_MODELVIEW);
-    ctx->stats.passes++;
-}
 
 /* ---- passes ----------------------------------------------------------------- */
 /* Clears keep to the resolve's region (at most the viewport: a light's map
  * resolves a corner of a buffer it shares, csg/cast.c). */
-static void clear(stin_context *ctx, GLbitfield bits)
+void stin__csg_clear(stin_context *ctx, GLbitfield bits)
 {
     stin__pass_state ps = stin__pass_defaults;
     ps.color_write = 0;
@@ -229,7 +49,7 @@ static void clear(stin_context *ctx, GLbitfield bits)
 /* The face a primitive does not show (culled): it shows its front faces,
  * or its back faces where it is complemented; a mirroring transform swaps
  * which winding is front. */
-static GLenum culled_face(const stin__draw *d, int complemented)
+GLenum stin__csg_culled_face(const stin__draw *d, int complemented)
 {
     int mirrored = stin__mat4_det(d->transform) < 0.0;
     return (complemented != mirrored) ? GL_FRONT : GL_BACK;
@@ -315,7 +135,7 @@ static void draw_winding(stin_context *ctx, const stin__path *path, const stin__
                          int plain, const counting *how)
 {
     stin__pass_state ps = counting_pass(ctx, how);
-    int front_is_gl_front = culled_face(d, 0) == GL_BACK; /* not mirrored */
+    int front_is_gl_front = stin__csg_culled_face(d, 0) == GL_BACK; /* not mirrored */
     GLenum at_front = plain == how->behind ? GL_INCR_WRAP : GL_DECR_WRAP;
     GLenum at_back = at_front == GL_INCR_WRAP ? GL_DECR_WRAP : GL_INCR_WRAP;
     ps.two_sided = 1;
@@ -333,10 +153,10 @@ static void parity_batch(stin_context *ctx, const stin__path *path, resolve *r,
 {
     unsigned char want = 0, mask = 0;
     uint32_t j;
-    clear(ctx, GL_STENCIL_BUFFER_BIT);
+    stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
     for (j = 0; j < n; j++) {
         const stin__draw *d =
-            &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lits[j])];
+            &ctx->csg->primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lits[j])];
         draw_parity(ctx, path, d, (int)j, how);
         mask |= (unsigned char)(1u << j);
         if (!STIN__CSG_COMPLEMENTED(lits[j]))
@@ -357,7 +177,7 @@ typedef struct extent {
  * their rectangles or their world boxes do not meet (csg/bounds.c). */
 static int meets(stin_context *ctx, const stin__csg_product *p, uint32_t lit, const extent *own)
 {
-    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    const stin__draw *d = &ctx->csg->primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
     float rect[4], box[6];
     stin__csg_screen_rect(ctx, d, rect);
     if (!stin__csg_rects_meet(ctx, own->rect, rect))
@@ -398,7 +218,7 @@ static int is_member(const group *g, uint32_t j)
 /* Whether literal `lit` can matter for a member of g (meets). */
 static int meets_group(stin_context *ctx, const stin__csg_product *p, uint32_t lit, const group *g)
 {
-    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    const stin__draw *d = &ctx->csg->primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
     float rect[4], box[6];
     uint32_t i;
     stin__csg_screen_rect(ctx, d, rect);
@@ -412,7 +232,7 @@ static int meets_group(stin_context *ctx, const stin__csg_product *p, uint32_t l
 
 static int winds(const stin_context *ctx, const stin__csg_product *p, uint32_t lit)
 {
-    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    const stin__draw *d = &ctx->csg->primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
     return ctx->meshes[d->mesh_slot].info.convex;
 }
 
@@ -429,13 +249,13 @@ static uint32_t winding_batch(stin_context *ctx, const stin__path *path, resolve
 {
     unsigned most = (1u << r->bits) - 1u;
     uint32_t j, n = 0, plain = 0;
-    clear(ctx, GL_STENCIL_BUFFER_BIT);
+    stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
     for (j = from; j < t->count && n < most; j++) {
-        uint32_t lit = ctx->csg.literals[t->first + j];
+        uint32_t lit = ctx->csg->literals[t->first + j];
         if (is_member(g, j) || !winds(ctx, p, lit) || !meets_group(ctx, p, lit, g))
             continue;
         draw_winding(ctx, path,
-                     &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)],
+                     &ctx->csg->primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)],
                      !STIN__CSG_COMPLEMENTED(lit), how);
         plain += !STIN__CSG_COMPLEMENTED(lit);
         n++;
@@ -463,7 +283,7 @@ static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
     if (winding) {
         uint32_t most = (1u << bits) - 1u;
         for (j = 0; j < t->count; j++) {
-            uint32_t lit = ctx->csg.literals[t->first + j];
+            uint32_t lit = ctx->csg->literals[t->first + j];
             if (!is_member(g, j) && meets_group(ctx, p, lit, g)) {
                 meeting++;
                 wound += (uint32_t)winds(ctx, p, lit);
@@ -478,7 +298,7 @@ static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
             break;
     }
     for (j = 0; j < t->count; j++) {
-        uint32_t lit = ctx->csg.literals[t->first + j];
+        uint32_t lit = ctx->csg->literals[t->first + j];
         if (is_member(g, j) || (winding && winds(ctx, p, lit)) || !meets_group(ctx, p, lit, g))
             continue;
         others[n++] = lit;
@@ -496,11 +316,11 @@ static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
 static int depth_complexity(stin_context *ctx, const stin__path *path, resolve *r)
 {
     unsigned most = stin__csg_stencil_max(ctx, path, r, 255u);
-    if (most == 255u && !ctx->csg.said_layers) {
+    if (most == 255u && !ctx->csg->said_layers) {
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "goldfeather: a primitive is 255 or more layers deep; layers past "
                   "255 are not drawn");
-        ctx->csg.said_layers = 1;
+        ctx->csg->said_layers = 1;
     }
     return (int)most;
 }
@@ -521,14 +341,14 @@ static int admit(stin_context *ctx, const stin__csg_product *p, const stin__csg_
         stin__csg_world_box(ctx, d, own->box);
     stin__memcopy(region, own->rect, 4 * sizeof *region);
     for (j = 0; j < t->count; j++) {
-        uint32_t lit = ctx->csg.literals[t->first + j];
+        uint32_t lit = ctx->csg->literals[t->first + j];
         float rect[4];
         if (j == self || STIN__CSG_COMPLEMENTED(lit))
             continue;
         if (!meets(ctx, p, lit, own))
             return 0;
-        stin__csg_screen_rect(ctx, &ctx->csg.primitives[p->first_primitive +
-                                                       STIN__CSG_PRIMITIVE_OF(lit)], rect);
+        stin__csg_screen_rect(ctx, &ctx->csg->primitives[p->first_primitive +
+                                                        STIN__CSG_PRIMITIVE_OF(lit)], rect);
         stin__csg_rect_cut(region, rect);
     }
     return stin__csg_window_box(ctx, region, box);
@@ -537,9 +357,9 @@ static int admit(stin_context *ctx, const stin__csg_product *p, const stin__csg_
 static const stin__draw *member_draw(const stin_context *ctx, const stin__csg_product *p,
                                      const stin__csg_term *t, uint32_t self, GLenum *culled)
 {
-    uint32_t lit = ctx->csg.literals[t->first + self];
-    const stin__draw *d = &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
-    *culled = culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit));
+    uint32_t lit = ctx->csg->literals[t->first + self];
+    const stin__draw *d = &ctx->csg->primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+    *culled = stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit));
     return d;
 }
 
@@ -573,7 +393,7 @@ static int take_group(stin_context *ctx, const stin__path *path, resolve *r,
     if (!stin__csg_region_narrow(ctx, g->bound))
         return 0;
     for (k = 1; k <= layers; k++) {
-        clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        stin__csg_clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         for (i = 0; i < g->count; i++) {
             if (!cap)
                 d = member_draw(ctx, p, t, g->self[i], &culled);
@@ -598,7 +418,7 @@ static int take_group(stin_context *ctx, const stin__path *path, resolve *r,
 static int groups(const stin_context *ctx, const stin__csg_product *p, const stin__csg_term *t,
                   uint32_t li)
 {
-    uint32_t lit = ctx->csg.literals[t->first + li];
+    uint32_t lit = ctx->csg->literals[t->first + li];
     return STIN__CSG_COMPLEMENTED(lit) && winds(ctx, p, lit);
 }
 
@@ -665,10 +485,10 @@ static int term_counting(stin_context *ctx, const stin__csg_product *p, const st
     uint32_t j;
     how->behind = how->clamp = 0;
     for (j = 0; j < t->count; j++) {
-        uint32_t lit = ctx->csg.literals[t->first + j];
+        uint32_t lit = ctx->csg->literals[t->first + j];
         int near_cut, far_cut;
-        stin__csg_planes_cut(ctx, &ctx->csg.primitives[p->first_primitive +
-                                                        STIN__CSG_PRIMITIVE_OF(lit)],
+        stin__csg_planes_cut(ctx, &ctx->csg->primitives[p->first_primitive +
+                                                         STIN__CSG_PRIMITIVE_OF(lit)],
                              &near_cut, &far_cut);
         any_near |= near_cut;
         any_far |= far_cut;
@@ -679,28 +499,28 @@ static int term_counting(stin_context *ctx, const stin__csg_product *p, const st
         return 0;
     how->clamp = any_far && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP)) != 0;
     if (any_far && !how->clamp) {
-        if (!ctx->csg.said_planes) {
+        if (!ctx->csg->said_planes) {
             stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                       "goldfeather: the near and the far plane both cut a product's primitive "
                       "and the context has no depth clamp; where the eye is inside it the "
                       "product is wrong (move the far plane out)");
-            ctx->csg.said_planes = 1;
+            ctx->csg->said_planes = 1;
         }
         return 0;
     }
     how->behind = 1;
-    return plain_all_near && ctx->csg.cap_usable;
+    return plain_all_near && ctx->csg->cap_usable;
 }
 
 /* Every candidate of product p: each literal's surface of each term, and
  * the near-plane cap where a term may hold the near plane. */
-static void resolve_product(stin_context *ctx, const stin__path *path, resolve *r,
-                            stin__csg_product *p)
+void stin__csg_goldfeather_product(stin_context *ctx, const stin__path *path, resolve *r,
+                                  stin__csg_product *p)
 {
     uint32_t ti, li;
     p->capped = 0;
     for (ti = 0; ti < p->term_count; ti++) {
-        const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
+        const stin__csg_term *t = &ctx->csg->terms[p->first_term + ti];
         counting how;
         int cap = term_counting(ctx, p, t, &how);
         uint32_t pending[LOOKAHEAD], n = 0;
@@ -714,10 +534,10 @@ static void resolve_product(stin_context *ctx, const stin__path *path, resolve *
                 (void)take_group(ctx, path, r, p, t, &g, NULL, &how, 0);
         }
         if (cap) {
-            stin__draw d = ctx->csg.primitives[p->first_primitive];
+            stin__draw d = ctx->csg->primitives[p->first_primitive];
             float region[4];
-            d.mesh_slot = ctx->csg.cap_slot;
-            stin__memcopy(d.transform, ctx->csg.cap_transform, sizeof d.transform);
+            d.mesh_slot = ctx->csg->cap_slot;
+            stin__memcopy(d.transform, ctx->csg->cap_transform, sizeof d.transform);
             g.count = 1;
             g.self[0] = t->count;
             if (admit(ctx, p, t, t->count, &d, &g.own[0], region)) {
@@ -726,247 +546,4 @@ static void resolve_product(stin_context *ctx, const stin__path *path, resolve *
             }
         }
     }
-}
-
-/* The resolve's pixels for the viewport at `offset` bytes into the
- * staging; 0 when it has not the room. */
-int stin__csg_pixels_at(stin_context *ctx, size_t offset, resolve *r)
-{
-    const int *vp = ctx->frame.viewport;
-    size_t bytes, need = stin__csg_goldfeather_bytes(vp[2], vp[3]);
-    unsigned char *base = staging_of(ctx, &bytes);
-    if (offset > bytes || need > bytes - offset)
-        return 0;
-    base += offset;
-    r->x = vp[0];
-    r->y = vp[1];
-    r->w = vp[2];
-    r->h = vp[3];
-    r->pixels = (size_t)vp[2] * (size_t)vp[3];
-    r->result = (float *)(void *)base;
-    r->candidate = r->result + r->pixels;
-    r->stencil = (unsigned char *)(r->candidate + r->pixels);
-    r->bits = ctx->target.stencil_bits < 8 ? ctx->target.stencil_bits : 8;
-    r->gpu = 0;
-    return 1;
-}
-
-/* The GPU resolve's pixels: the stencil read alone (1 byte a pixel). */
-static int pixels_gpu(stin_context *ctx, resolve *r)
-{
-    const int *vp = ctx->frame.viewport;
-    size_t bytes;
-    unsigned char *base = staging_of(ctx, &bytes);
-    if ((size_t)vp[2] * (size_t)vp[3] > bytes)
-        return 0;
-    r->x = vp[0];
-    r->y = vp[1];
-    r->w = vp[2];
-    r->h = vp[3];
-    r->pixels = (size_t)r->w * (size_t)r->h;
-    r->result = r->candidate = NULL;
-    r->stencil = base;
-    r->bits = ctx->target.stencil_bits < 8 ? ctx->target.stencil_bits : 8;
-    r->gpu = 1;
-    return 1;
-}
-
-/* Whether this frame can resolve its products (on the GPU where gpu asks);
- * logs once per reason. */
-static int usable(stin_context *ctx, resolve *r, int gpu)
-{
-    const char *why = NULL;
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
-        why = "the CSG technique is csg-off";
-    else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
-        why = "the frame's framebuffer has no stencil buffer";
-    else if (gpu ? !pixels_gpu(ctx, r) : !stin__csg_pixels_at(ctx, 0, r))
-        why = gpu ? "the viewport needs more than the texture staging (1 byte a pixel; raise "
-                    "desc.max_texture_bytes)"
-                  : "the viewport needs more than the texture staging (9 bytes a pixel; raise "
-                    "desc.max_texture_bytes)";
-    if (why) {
-        if (!ctx->csg.said_unusable) {
-            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                      "CSG products are not drawn: %s", why);
-            ctx->csg.said_unusable = 1;
-        }
-        return 0;
-    }
-    return 1;
-}
-
-void stin__csg_resolve_pixels(stin_context *ctx, const stin__path *path, resolve *r)
-{
-    pack_saved saved;
-    uint32_t pi;
-    pack_begin(ctx, &saved);
-    stin__csg_region_reset(ctx); /* this resolve's viewport (a light's band, csg/cast.c) */
-    if (!r->gpu) /* what the buffer holds stays where nearer (the GPU's: merge_begin) */
-        read_depth(ctx, r, r->result);
-    ctx->csg.cap_usable = ctx->csg.cap_slot != STIN__NO_SLOT &&
-                          stin__csg_cap_transform(ctx, ctx->csg.cap_transform);
-    path->geometry_begin(ctx);
-    for (pi = 0; pi < ctx->csg.product_count; pi++) {
-        stin__csg_product *p = &ctx->csg.products[pi];
-        p->capped = 0;
-        stin__csg_region_reset(ctx); /* scs and goldfeather narrow it on the GPU */
-        if (!stin__csg_interval_product(ctx, path, r, p) &&
-            !stin__csg_scs_product(ctx, path, r, p))
-            resolve_product(ctx, path, r, p);
-    }
-    stin__csg_region_reset(ctx);
-    path->geometry_end(ctx);
-    pack_end(ctx, &saved);
-}
-
-int stin__csg_resolve(stin_context *ctx, const stin__path *path)
-{
-    resolve r;
-    int gpu = stin__csg_merge_ready(ctx);
-    ctx->csg.resolved = ctx->csg.merged = ctx->csg.result_pending = 0;
-    if (!ctx->csg.product_count || !usable(ctx, &r, gpu))
-        return 0;
-    ctx->csg.resolve_fbo = ctx->draw_fbo;
-    stin__csg_region_reset(ctx);
-    if (gpu && stin__csg_in_place_fits(ctx) && stin__csg_in_place_begin(ctx)) {
-        stin__csg_resolve_pixels(ctx, path, &r);
-        stin__csg_in_place_end(ctx);
-        ctx->csg.resolved = ctx->csg.merged = 1;
-        return 1;
-    }
-    if (gpu && stin__csg_direct_fits(ctx) && stin__csg_direct_begin(ctx)) {
-        stin__csg_resolve_pixels(ctx, path, &r);
-        stin__csg_direct_end(ctx);
-        ctx->csg.resolved = ctx->csg.merged = 1;
-        return 1;
-    }
-    if (gpu && !stin__csg_merge_begin(ctx) && !usable(ctx, &r, 0))
-        return 0; /* its framebuffers failed (logged): the CPU's, if the staging holds it */
-    stin__csg_resolve_pixels(ctx, path, &r);
-    ctx->csg.resolved = 1;
-    ctx->csg.merged = r.gpu;
-    if (r.gpu) { /* the frame's buffers untouched so far: the faces on the result */
-        ctx->csg.resolve_fbo = ctx->draw_fbo;
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
-        stin__csg_faces(ctx);
-        stin__csg_merge_snap(ctx);
-        return 1;
-    }
-    write_depth(ctx, path, &r, GL_ALWAYS);
-    clear(ctx, GL_STENCIL_BUFFER_BIT);
-    return 1;
-}
-
-GLuint stin__csg_depth_texture(stin_context *ctx, int origin[2])
-{
-    resolve r;
-    if (!ctx->csg.resolved)
-        return 0;
-    origin[0] = origin[1] = 0;
-    if (ctx->csg.merged) {
-        GLuint result;
-        stin__csg_merge_result_ready(ctx);
-        result = stin__csg_merge_result(ctx);
-        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, result);
-        return result;
-    }
-    if (!ctx->csg.depth_tex || !usable(ctx, &r, 0))
-        return 0;
-    if (!ctx->csg.depth_prog) /* compatibility profiles wrote it with glDrawPixels */
-        upload_result(ctx, &r);
-    else
-        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->csg.depth_tex);
-    origin[0] = r.x;
-    origin[1] = r.y;
-    return ctx->csg.depth_tex;
-}
-
-/* The resolved depth again into the bound framebuffer, depth LESS against
- * what it holds (the screen mask's copy of the frame's depth). */
-void stin__csg_depth_again(stin_context *ctx, const stin__path *path)
-{
-    resolve r;
-    if (!ctx->csg.resolved)
-        return;
-    if (ctx->csg.merged) {
-        stin__csg_merge_result_ready(ctx);
-        stin__csg_merge_snap(ctx);
-    } else if (usable(ctx, &r, 0)) {
-        write_depth(ctx, path, &r, GL_LESS);
-    }
-}
-
-/* The R32F texture of the resolved depth (GL4 lighting: core profiles
- * write the depth through it; vdsm's position buffer reads it). */
-static void make_depth_texture(stin_context *ctx)
-{
-    GLint bound = 0;
-    GL(ctx, GenTextures)(1, &ctx->csg.depth_tex);
-    GL(ctx, GetIntegerv)(GL_TEXTURE_BINDING_2D, &bound);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->csg.depth_tex);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)bound);
-    ctx->csg.tex_width = ctx->csg.tex_height = 0;
-}
-
-void stin__csg_init(stin_context *ctx)
-{
-    stin__csg_state *c = &ctx->csg;
-    char msg[160], why[200];
-    int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
-    c->cap_slot = STIN__NO_SLOT;
-    if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
-        return;
-    if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION))) {
-        if (!gl4) {
-            stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                         "goldfeather and scs write depth with glDrawPixels (compatibility "
-                         "profile) or a GLSL 1.50 program (GL4 lighting)");
-            return;
-        }
-        c->depth_prog = stin__program_build(ctx, "gl4/screen.vert", "gl4/csg_depth.frag",
-                                            NULL, 0, msg, sizeof msg);
-        if (!c->depth_prog) {
-            stin__formatf(why, sizeof why, "its depth program failed to build (%s)", msg);
-            stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF, why);
-            return;
-        }
-        c->u_depth = GL(ctx, GetUniformLocation)(c->depth_prog, "u_depth");
-        c->u_origin = GL(ctx, GetUniformLocation)(c->depth_prog, "u_origin");
-    }
-    if (gl4)
-        make_depth_texture(ctx);
-    stin__csg_cap_init(ctx);
-    stin__csg_merge_init(ctx);
-}
-
-void stin__csg_release(stin_context *ctx)
-{
-    stin__csg_state *c = &ctx->csg;
-    stin__csg_cast_release(ctx);
-    stin__csg_merge_release(ctx);
-    if (c->depth_prog)
-        GL(ctx, DeleteProgram)(c->depth_prog);
-    if (c->depth_tex)
-        GL(ctx, DeleteTextures)(1, &c->depth_tex);
-    c->depth_prog = c->depth_tex = 0;
-}
-
-/* ---- shared with csg/scs.c ---------------------------------------------- */
-void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out)
-{
-    read_depth(ctx, r, out);
-}
-void stin__csg_read_stencil(stin_context *ctx, const resolve *r) { read_stencil(ctx, r); }
-void stin__csg_write_depth(stin_context *ctx, const stin__path *path, const resolve *r,
-                           GLenum func)
-{
-    write_depth(ctx, path, r, func);
-}
-void stin__csg_clear(stin_context *ctx, GLbitfield bits) { clear(ctx, bits); }
-GLenum stin__csg_culled_face(const stin__draw *d, int complemented)
-{
-    return culled_face(d, complemented);
 }

@@ -30,7 +30,7 @@
  * Layer g (primitive * k + j; the cap at n k) is slice g >> 1 of array
  * g & 1: a peel reads layer g - 1 from the other array than it draws into
  * (no feedback loop). */
-#include "internal.h"
+#include "csg/csg_private.h"
 
 #define GL_DEPTH_COMPONENT32F 0x8CAC
 #define GL_DEPTH_COMPONENT16 0x81A5
@@ -39,6 +39,34 @@
 #endif
 #define GL_R8 0x8229
 #define GL_MAX_ARRAY_TEXTURE_LAYERS 0x88FF
+
+/* "interval" (csg/interval.c): each primitive's crossings of the camera
+ * rays peeled into k depth layers, walked per pixel by one full-screen
+ * pass. Layer g (primitive * k + layer; the near-plane cap after the
+ * last) lives in array g & 1 at slice g >> 1: the layer a peel reads is
+ * never the texture it draws into. */
+#define STIN__CSG_INTERVAL_MAX_PRIMITIVES 32u /* a product's primitives (a bit each) */
+#define STIN__CSG_INTERVAL_MAX_TERMS 64u   /* a product's terms (uniform masks) */
+#define STIN__CSG_INTERVAL_MAX_LAYER_INDEX 255u /* layers + cap: the walk's 8-bit answer */
+typedef struct stin__csg_interval_state {
+    GLuint peel_prog, walk_prog;
+    GLint peel_model, peel_view_proj, peel_previous, peel_previous_slice, peel_mirrored,
+        peel_tolerance;
+    stin__displace_locs peel_displace;
+    GLint walk_crossing[2], walk_counts, walk_terms;
+    /* even and odd layers: depth (the peel's depth test; the frame's depth
+     * format) and RG32F crossings (the rasteriser's float depth, for exact
+     * peeling and ordering; the side) */
+    GLuint depth[2], crossing[2];
+    GLenum depth_format;
+    GLuint result, fbo, query;  /* the walk's R8 target; the overflow's query */
+    int width, height, slices;  /* grown to the largest frame and product so far */
+    size_t bytes;               /* GL memory of the textures above */
+    int max_slices;             /* GL_MAX_ARRAY_TEXTURE_LAYERS */
+    int said_fallback, said_overflow, said_failed;
+} stin__csg_interval_state;
+
+size_t stin__csg_interval_state_bytes(void) { return sizeof(stin__csg_interval_state); }
 
 static int chosen(const stin_context *ctx)
 {
@@ -62,7 +90,7 @@ static int layers_of(const stin_context *ctx)
 
 void stin__csg_interval_release(stin_context *ctx)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     if (s->depth[0])
         GL(ctx, DeleteTextures)(2, s->depth);
     if (s->crossing[0])
@@ -80,12 +108,28 @@ void stin__csg_interval_release(stin_context *ctx)
     stin__memzero(s, sizeof *s);
 }
 
+static const stin__uniform_name peel_uniforms[] = {
+    STIN__UNIFORM(stin__csg_interval_state, peel_model, "u_model"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_previous, "u_previous"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_previous_slice, "u_previous_slice"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_mirrored, "u_mirrored"),
+    STIN__UNIFORM(stin__csg_interval_state, peel_tolerance, "u_tolerance"),
+};
+
+static const stin__uniform_name walk_uniforms[] = {
+    STIN__UNIFORM(stin__csg_interval_state, walk_crossing[0], "u_crossing_even"),
+    STIN__UNIFORM(stin__csg_interval_state, walk_crossing[1], "u_crossing_odd"),
+    STIN__UNIFORM(stin__csg_interval_state, walk_counts, "u_counts"),
+    STIN__UNIFORM(stin__csg_interval_state, walk_terms, "u_terms"),
+};
+
 /* The peel program draws meshes as the volume program does (volume.vert:
  * its position is invariant with the lit passes'); the walk is a screen
  * quad. 0 with msg when one does not build. */
 static int make_programs(stin_context *ctx, char *msg, size_t size)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     s->peel_prog = stin__program_build(ctx, "gl4/volume.vert", "gl4/csg_interval_peel.frag", NULL,
                                        0, msg, size);
     if (!s->peel_prog)
@@ -94,25 +138,15 @@ static int make_programs(stin_context *ctx, char *msg, size_t size)
                                        NULL, 0, msg, size);
     if (!s->walk_prog)
         return 0;
-#define LOC(field, prog, name) s->field = GL(ctx, GetUniformLocation)(s->prog, name)
-    LOC(peel_model, peel_prog, "u_model");
-    LOC(peel_view_proj, peel_prog, "u_view_proj");
-    LOC(peel_previous, peel_prog, "u_previous");
-    LOC(peel_previous_slice, peel_prog, "u_previous_slice");
-    LOC(peel_mirrored, peel_prog, "u_mirrored");
-    LOC(peel_tolerance, peel_prog, "u_tolerance");
-    LOC(walk_crossing[0], walk_prog, "u_crossing_even");
-    LOC(walk_crossing[1], walk_prog, "u_crossing_odd");
-    LOC(walk_counts, walk_prog, "u_counts");
-    LOC(walk_terms, walk_prog, "u_terms");
-#undef LOC
+    STIN__LOCATE(ctx, s->peel_prog, s, peel_uniforms);
+    STIN__LOCATE(ctx, s->walk_prog, s, walk_uniforms);
     stin__displace_locate(ctx, s->peel_prog, 1, &s->peel_displace);
     return 1;
 }
 
 void stin__csg_interval_init(stin_context *ctx)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     char msg[160], why[220];
     GLint most = 0;
     stin__memzero(s, sizeof *s);
@@ -157,7 +191,7 @@ static void depth_format(const stin_context *ctx, GLenum *format, GLenum *layout
  * 0 when the framebuffer is incomplete (logged once). */
 static int ensure_targets(stin_context *ctx, int slices)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     const int *vp = ctx->frame.viewport;
     int w = vp[0] + vp[2], h = vp[1] + vp[3], i;
     GLenum status, format, layout, type;
@@ -179,10 +213,7 @@ static int ensure_targets(stin_context *ctx, int slices)
         array_texture(ctx, s->crossing[i], GL_RG32F, GL_RG, GL_FLOAT, w, h, slices);
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D_ARRAY, 0);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, s->result);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, GL_R8, w, h, 0, GL_RED, GL_UNSIGNED_BYTE, NULL);
+    stin__rt_texture(ctx, s->result, GL_R8, GL_RED, GL_UNSIGNED_BYTE, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->crossing[0], 0, 0);
@@ -206,7 +237,7 @@ static int ensure_targets(stin_context *ctx, int slices)
 /* Why product p cannot go through the walk (NULL: it can). */
 static const char *unfit(const stin_context *ctx, const stin__csg_product *p, int k)
 {
-    const stin__csg_interval_state *s = &ctx->csg.interval;
+    const stin__csg_interval_state *s = ctx->csg->interval;
     if (p->primitive_count > STIN__CSG_INTERVAL_MAX_PRIMITIVES)
         return "the product has more than 32 primitives (the walk's in/out bits)";
     if (p->term_count > STIN__CSG_INTERVAL_MAX_TERMS)
@@ -223,17 +254,17 @@ static const char *unfit(const stin_context *ctx, const stin__csg_product *p, in
 static void fall_back(stin_context *ctx, const char *why)
 {
     int forced = ctx->desc.techniques[STIN_FEATURE_CSG] == STIN_TECH_CSG_INTERVAL;
-    if (ctx->csg.interval.said_fallback)
+    if (ctx->csg->interval->said_fallback)
         return;
     stin__log(ctx, forced ? STIN_LOG_LEVEL_WARNING : STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
               "interval: %s; scs or goldfeather resolves the product", why);
-    ctx->csg.interval.said_fallback = 1;
+    ctx->csg->interval->said_fallback = 1;
 }
 
 /* Layer g as the framebuffer's depth and colour. */
 static void attach_layer(stin_context *ctx, int g)
 {
-    const stin__csg_interval_state *s = &ctx->csg.interval;
+    const stin__csg_interval_state *s = ctx->csg->interval;
     GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->crossing[g & 1], 0,
                                      g >> 1);
     GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, s->depth[g & 1], 0,
@@ -249,7 +280,7 @@ static int previous_unit(const stin_context *ctx) { return ctx->sel.displace_uni
 static void peel_draw(stin_context *ctx, const stin__draw *d, int previous,
                       const stin__pass_state *ps)
 {
-    const stin__csg_interval_state *s = &ctx->csg.interval;
+    const stin__csg_interval_state *s = ctx->csg->interval;
     stin__pass_apply(ctx, ps);
     stin__bind_unit(ctx, previous_unit(ctx), GL_TEXTURE_2D_ARRAY,
                     previous < 0 ? 0 : s->crossing[previous & 1]);
@@ -282,7 +313,7 @@ static void peel(stin_context *ctx, const stin__draw *d, int g, int previous, GL
  * more against its last layer, nothing written, in one occlusion query. */
 static int overflows(stin_context *ctx, const stin__csg_product *p, int k)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     stin__pass_state ps = stin__pass_defaults;
     GLuint samples = 0;
     uint32_t q;
@@ -292,7 +323,7 @@ static int overflows(stin_context *ctx, const stin__csg_product *p, int k)
     for (q = 0; q < p->primitive_count; q++) {
         int last = (int)q * k + k - 1;
         attach_layer(ctx, last + 1); /* not the array it reads; nothing is written */
-        peel_draw(ctx, &ctx->csg.primitives[p->first_primitive + q], last, &ps);
+        peel_draw(ctx, &ctx->csg->primitives[p->first_primitive + q], last, &ps);
     }
     GL(ctx, EndQuery)(GL_SAMPLES_PASSED);
     GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &samples);
@@ -303,7 +334,7 @@ static int overflows(stin_context *ctx, const stin__csg_product *p, int k)
  * lie inside it); 0 when a primitive overflows k. */
 static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, int *cap)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     uint32_t q;
     int j;
     GL(ctx, UseProgram)(s->peel_prog);
@@ -315,7 +346,7 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
         GL(ctx, Uniform1i)(s->peel_displace.map, ctx->sel.displace_unit);
     *cap = 0;
     for (q = 0; q < p->primitive_count; q++) {
-        const stin__draw *d = &ctx->csg.primitives[p->first_primitive + q];
+        const stin__draw *d = &ctx->csg->primitives[p->first_primitive + q];
         int g = (int)q * k, near_cut, far_cut;
         stin__csg_planes_cut(ctx, d, &near_cut, &far_cut);
         *cap |= near_cut;
@@ -337,12 +368,12 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
         }
         return 0;
     }
-    *cap = *cap && ctx->csg.cap_usable;
+    *cap = *cap && ctx->csg->cap_usable;
     if (*cap) {
-        stin__draw d = ctx->csg.primitives[p->first_primitive];
-        d.mesh_slot = ctx->csg.cap_slot;
+        stin__draw d = ctx->csg->primitives[p->first_primitive];
+        d.mesh_slot = ctx->csg->cap_slot;
         d.csg = STIN__CSG_CAP;
-        stin__memcopy(d.transform, ctx->csg.cap_transform, sizeof d.transform);
+        stin__memcopy(d.transform, ctx->csg->cap_transform, sizeof d.transform);
         peel(ctx, &d, (int)p->primitive_count * k, -1, 0);
     }
     return 1;
@@ -353,7 +384,7 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
 static void walk(stin_context *ctx, stin__csg_pixels *r, const stin__csg_product *p, int k,
                  int cap)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     stin__pass_state ps = stin__pass_defaults;
     GLuint terms[2 * STIN__CSG_INTERVAL_MAX_TERMS];
     GLint counts[4];
@@ -363,10 +394,10 @@ static void walk(stin_context *ctx, stin__csg_pixels *r, const stin__csg_product
                                   0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
     for (ti = 0; ti < p->term_count; ti++) {
-        const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
+        const stin__csg_term *t = &ctx->csg->terms[p->first_term + ti];
         terms[2 * ti] = terms[2 * ti + 1] = 0;
         for (li = 0; li < t->count; li++) {
-            uint32_t lit = ctx->csg.literals[t->first + li];
+            uint32_t lit = ctx->csg->literals[t->first + li];
             terms[2 * ti + STIN__CSG_COMPLEMENTED(lit)] |= 1u << STIN__CSG_PRIMITIVE_OF(lit);
         }
     }
@@ -403,7 +434,7 @@ static void walk(stin_context *ctx, stin__csg_pixels *r, const stin__csg_product
 static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_product *p, int k,
                         int cap)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     stin__pass_state clear = stin__pass_defaults, ps = stin__pass_defaults;
     int cap_layer = (int)p->primitive_count * k, g;
     unsigned char used[STIN__CSG_INTERVAL_MAX_LAYER_INDEX + 1];
@@ -414,7 +445,7 @@ static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_produc
     stin__memzero(used, sizeof used);
     for (i = 0; i < r->pixels; i++)
         used[r->stencil[i]] = 1;
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
     GL(ctx, UseProgram)(s->peel_prog);
     GL(ctx, Uniform1f)(s->peel_tolerance, TOLERANCE);
     ctx->bound_mesh = 0xffffffffu;
@@ -423,17 +454,17 @@ static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_produc
     ps.depth_test = 1;
     ps.color_write = 0;
     for (g = 0; g <= cap_layer; g++) {
-        const stin__draw *d = &ctx->csg.primitives[p->first_primitive + g / k];
+        const stin__draw *d = &ctx->csg->primitives[p->first_primitive + g / k];
         stin__draw cap_draw;
         if (!used[g + 1])
             continue;
         if (g == cap_layer) {
             if (!cap)
                 break;
-            cap_draw = ctx->csg.primitives[p->first_primitive];
-            cap_draw.mesh_slot = ctx->csg.cap_slot;
+            cap_draw = ctx->csg->primitives[p->first_primitive];
+            cap_draw.mesh_slot = ctx->csg->cap_slot;
             cap_draw.csg = STIN__CSG_CAP;
-            stin__memcopy(cap_draw.transform, ctx->csg.cap_transform,
+            stin__memcopy(cap_draw.transform, ctx->csg->cap_transform,
                           sizeof cap_draw.transform);
             d = &cap_draw;
         }
@@ -455,7 +486,7 @@ static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_produc
 int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                                stin__csg_product *p)
 {
-    stin__csg_interval_state *s = &ctx->csg.interval;
+    stin__csg_interval_state *s = ctx->csg->interval;
     int k = layers_of(ctx), cap = 0, done;
     const char *why;
     if (!chosen(ctx))
@@ -466,7 +497,7 @@ int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__
         return 0;
     }
     if (!ensure_targets(ctx, ((int)p->primitive_count * k + 2) / 2)) {
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
         return 0;
     }
     ctx->stats.csg.interval_bytes = s->bytes;
@@ -476,7 +507,7 @@ int stin__csg_interval_product(stin_context *ctx, const stin__path *path, stin__
         walk(ctx, r, p, k, cap);
         keep_layers(ctx, r, p, k, cap);
     }
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
     path->geometry_begin(ctx); /* the resolve's program again, for the products after */
     if (!done)
         return 0;

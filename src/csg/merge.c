@@ -33,7 +33,7 @@
  * final snap (on llvmpipe the merge quads and the final snap cost the
  * small products most of their frame; docs/benchmarks.md). Both copy the
  * frame's depth into the result texture only when a pass asks for it. */
-#include "internal.h"
+#include "csg/csg_private.h"
 
 #define GL_DEPTH32F_STENCIL8 0x8CAD
 #define READ_FRAMEBUFFER 0x8CA8
@@ -63,9 +63,22 @@ static GLuint build(stin_context *ctx, int gl4, const char *vert, const char *fr
     return stin__program_build(ctx, v, f, NULL, 0, msg, size);
 }
 
+static const stin__uniform_name merge_uniforms[] = {
+    STIN__UNIFORM(stin__csg_merge_state, u_depth, "u_depth"),
+    STIN__UNIFORM(stin__csg_merge_state, u_select, "u_select"),
+    STIN__UNIFORM(stin__csg_merge_state, u_params, "u_params"),
+};
+
+static const stin__uniform_name snap_uniforms[] = {
+    STIN__UNIFORM(stin__csg_merge_state, snap_model, "u_model"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_view_proj, "u_view_proj"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_result, "u_result"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_params, "u_params"),
+};
+
 void stin__csg_merge_init(stin_context *ctx)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     const uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
                           STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
     char msg[160];
@@ -86,13 +99,8 @@ void stin__csg_merge_init(stin_context *ctx)
         stin__csg_merge_release(ctx);
         return;
     }
-    m->u_depth = GL(ctx, GetUniformLocation)(m->merge_prog, "u_depth");
-    m->u_select = GL(ctx, GetUniformLocation)(m->merge_prog, "u_select");
-    m->u_params = GL(ctx, GetUniformLocation)(m->merge_prog, "u_params");
-    m->snap_model = GL(ctx, GetUniformLocation)(m->snap_prog, "u_model");
-    m->snap_view_proj = GL(ctx, GetUniformLocation)(m->snap_prog, "u_view_proj");
-    m->snap_result = GL(ctx, GetUniformLocation)(m->snap_prog, "u_result");
-    m->snap_params = GL(ctx, GetUniformLocation)(m->snap_prog, "u_params");
+    STIN__LOCATE(ctx, m->merge_prog, m, merge_uniforms);
+    STIN__LOCATE(ctx, m->snap_prog, m, snap_uniforms);
     stin__displace_locate(ctx, m->snap_prog, 0, &m->snap_displace);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
         GL(ctx, GenQueries)(STIN__CSG_MERGE_THRESHOLDS + 1, m->queries);
@@ -100,7 +108,7 @@ void stin__csg_merge_init(stin_context *ctx)
 
 void stin__csg_merge_release(stin_context *ctx)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     GLuint programs[3];
     int i;
     programs[0] = m->merge_prog;
@@ -120,7 +128,7 @@ void stin__csg_merge_release(stin_context *ctx)
 
 int stin__csg_merge_ready(const stin_context *ctx)
 {
-    return ctx->csg.merge.snap_prog && !(ctx->desc.debug_flags & STIN_DEBUG_CSG_READBACK);
+    return ctx->csg->merge.snap_prog && !(ctx->desc.debug_flags & STIN_DEBUG_CSG_READBACK);
 }
 
 /* The frame's depth precision with a stencil beside it. */
@@ -136,7 +144,7 @@ static GLenum depth_format(const stin_context *ctx, GLenum *type)
  * (logged once). */
 static int ensure_targets(stin_context *ctx)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     const int *vp = ctx->frame.viewport;
     int w = vp[0] + vp[2], h = vp[1] + vp[3], i;
     GLenum type, format = depth_format(ctx, &type), status = GL_FRAMEBUFFER_COMPLETE;
@@ -148,24 +156,15 @@ static int ensure_targets(stin_context *ctx)
     }
     w = w > m->width ? w : m->width;
     h = h > m->height ? h : m->height;
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0); /* unit 0 active for the textures */
     for (i = 0; i < 2; i++) {
-        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[i]);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        GL(ctx, TexImage2D)(GL_TEXTURE_2D, 0, (GLint)format, w, h, 0, GL_DEPTH_STENCIL, type,
-                            NULL);
-        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[i]);
-        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                      m->texture[i], 0);
-        if (i == STIN__CSG_MERGE_WORK) /* its stencil counts (GL 2.x names both halves) */
-            GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
-                                          m->texture[i], 0);
-        GL(ctx, DrawBuffer)(GL_NONE); /* depth only: GL 2.x FBOs are incomplete otherwise */
-        GL(ctx, ReadBuffer)(GL_NONE);
+        GLenum made;
+        stin__rt_texture(ctx, m->texture[i], format, GL_DEPTH_STENCIL, type, w, h);
+        /* work: its stencil counts too (GL 2.x names both halves) */
+        made = stin__rt_attach(ctx, m->fbo[i], 0, m->texture[i],
+                               i == STIN__CSG_MERGE_WORK ? m->texture[i] : 0);
         if (status == GL_FRAMEBUFFER_COMPLETE)
-            status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+            status = made;
     }
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
@@ -189,7 +188,7 @@ static int ensure_targets(stin_context *ctx)
  * LESS, through the merge program; select: interval's layer. */
 static void merge_quad(stin_context *ctx, const stin__csg_select *select)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     stin__pass_state ps = stin__pass_defaults;
     float params[4];
     ps.depth_test = 1;
@@ -223,7 +222,7 @@ static void kill_quad(stin_context *ctx, stin__pass_state *ps)
 {
     stin__csg_region_keep_to(ctx, ps);
     stin__pass_apply(ctx, ps);
-    GL(ctx, UseProgram)(ctx->csg.merge.kill_prog);
+    GL(ctx, UseProgram)(ctx->csg->merge.kill_prog);
     stin__lit_program_forget(ctx);
     stin__screen_quad(ctx);
 }
@@ -236,14 +235,14 @@ static void resume(stin_context *ctx, const stin__path *path)
 
 int stin__csg_merge_begin(stin_context *ctx)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
         return 0;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[STIN__CSG_MERGE_RESULT]);
     GL(ctx, ClearDepth)(1.0);
     stin__csg_clear(ctx, GL_DEPTH_BUFFER_BIT);
-    ctx->csg.resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+    ctx->csg->resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
     ctx->stats.csg.gpu_resolves = 1;
     ctx->stats.csg.gpu_bytes = m->bytes;
     return 1;
@@ -251,7 +250,7 @@ int stin__csg_merge_begin(stin_context *ctx)
 
 int stin__csg_in_place_fits(const stin_context *ctx)
 {
-    const stin__csg_state *c = &ctx->csg;
+    const stin__csg_state *c = ctx->csg;
     /* the copy into the result texture cannot read a multisampled framebuffer */
     return !(ctx->desc.debug_flags & STIN_DEBUG_CSG_NO_IN_PLACE) && !ctx->frame.keep_contents &&
            !ctx->target.multisampled && c->product_count == 1 &&
@@ -262,10 +261,10 @@ int stin__csg_in_place_begin(stin_context *ctx)
 {
     if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
         return 0;
-    ctx->csg.resolve_fbo = ctx->draw_fbo; /* ensure_targets left it bound */
-    ctx->csg.in_place = 1;
+    ctx->csg->resolve_fbo = ctx->draw_fbo; /* ensure_targets left it bound */
+    ctx->csg->in_place = 1;
     ctx->stats.csg.gpu_resolves = 1;
-    ctx->stats.csg.gpu_bytes = ctx->csg.merge.bytes;
+    ctx->stats.csg.gpu_bytes = ctx->csg->merge.bytes;
     ctx->stats.csg.in_place = 1;
     return 1;
 }
@@ -273,9 +272,9 @@ int stin__csg_in_place_begin(stin_context *ctx)
 void stin__csg_in_place_end(stin_context *ctx)
 {
     stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
-    ctx->csg.in_place = 0;
-    ctx->csg.pending_fbo = ctx->draw_fbo;
-    ctx->csg.result_pending = 1;
+    ctx->csg->in_place = 0;
+    ctx->csg->pending_fbo = ctx->draw_fbo;
+    ctx->csg->result_pending = 1;
     if (!ctx->target.separate_read) /* the copy could not leave a pass's binding alone */
         stin__csg_merge_result_ready(ctx);
 }
@@ -284,31 +283,31 @@ void stin__csg_merge_result_ready(stin_context *ctx)
 {
     const int *vp = ctx->frame.viewport;
     GLint bound = 0;
-    if (!ctx->csg.result_pending)
+    if (!ctx->csg->result_pending)
         return;
     /* within the GL (no read-back); only where asked: llvmpipe's copy cost
      * a fifth of the bench's n = 2 frame */
     if (ctx->target.separate_read) {
         GL(ctx, GetIntegerv)(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
-        GL(ctx, BindFramebuffer)(READ_FRAMEBUFFER, ctx->csg.pending_fbo);
+        GL(ctx, BindFramebuffer)(READ_FRAMEBUFFER, ctx->csg->pending_fbo);
     }
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT]);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->csg->merge.texture[STIN__CSG_MERGE_RESULT]);
     GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, vp[0], vp[1], vp[0], vp[1], vp[2], vp[3]);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
     if (ctx->target.separate_read) /* stin binds both as one */
         GL(ctx, BindFramebuffer)(READ_FRAMEBUFFER, (GLuint)bound);
-    ctx->csg.result_pending = 0;
+    ctx->csg->result_pending = 0;
 }
 
 GLuint stin__csg_merge_result(stin_context *ctx)
 {
-    return ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT];
+    return ctx->csg->merge.texture[STIN__CSG_MERGE_RESULT];
 }
 
 /* The snap program bound, reading depth texture `against` on unit 0. */
 static void snap_begin(stin_context *ctx, GLuint against)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     float params[4];
     GL(ctx, UseProgram)(m->snap_prog);
     stin__lit_program_forget(ctx);
@@ -334,7 +333,7 @@ static void snap_end(stin_context *ctx)
  * `region` asks (the work texture outside it holds older candidates). */
 static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, int region)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     stin__pass_state ps = stin__pass_defaults;
     ps.depth_test = 1;
     ps.depth_func = GL_LESS; /* under what the buffer holds nearer */
@@ -351,9 +350,9 @@ static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, in
 void stin__csg_merge_snap(stin_context *ctx)
 {
     uint32_t i;
-    snap_begin(ctx, ctx->csg.merge.texture[STIN__CSG_MERGE_RESULT]);
-    for (i = 0; i < ctx->csg.face_count; i++)
-        snap_faces(ctx, &ctx->csg.faces[i], stin__csg_face_hidden(&ctx->csg.faces[i]), 0);
+    snap_begin(ctx, ctx->csg->merge.texture[STIN__CSG_MERGE_RESULT]);
+    for (i = 0; i < ctx->csg->face_count; i++)
+        snap_faces(ctx, &ctx->csg->faces[i], stin__csg_face_hidden(&ctx->csg->faces[i]), 0);
     snap_end(ctx);
 }
 
@@ -362,13 +361,13 @@ void stin__csg_merge_snap(stin_context *ctx)
 static void snap_surface(stin_context *ctx, const stin__csg_surface *s)
 {
     uint32_t i;
-    snap_begin(ctx, ctx->csg.merge.texture[STIN__CSG_MERGE_WORK]);
+    snap_begin(ctx, ctx->csg->merge.texture[STIN__CSG_MERGE_WORK]);
     if (s->cap)
         snap_faces(ctx, s->cap, s->cap_culled, 1);
     for (i = 0; !s->cap && i < s->count; i++) {
-        uint32_t lit = ctx->csg.literals[s->t->first + (s->list ? s->list[i] : s->first + i)];
+        uint32_t lit = ctx->csg->literals[s->t->first + (s->list ? s->list[i] : s->first + i)];
         const stin__draw *d =
-            &ctx->csg.primitives[s->p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
+            &ctx->csg->primitives[s->p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
         snap_faces(ctx, d, stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), 1);
     }
     snap_end(ctx);
@@ -382,12 +381,12 @@ int stin__csg_direct_fits(const stin_context *ctx)
 
 int stin__csg_direct_begin(stin_context *ctx)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
         return 0;
-    ctx->csg.resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
-    ctx->csg.direct = 1;
+    ctx->csg->resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
+    ctx->csg->direct = 1;
     ctx->stats.csg.gpu_resolves = 1;
     ctx->stats.csg.gpu_bytes = m->bytes;
     ctx->stats.csg.direct = 1;
@@ -396,12 +395,12 @@ int stin__csg_direct_begin(stin_context *ctx)
 
 void stin__csg_direct_end(stin_context *ctx)
 {
-    ctx->csg.direct = 0;
-    ctx->csg.resolve_fbo = ctx->draw_fbo;
+    ctx->csg->direct = 0;
+    ctx->csg->resolve_fbo = ctx->draw_fbo;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     stin__pass_apply(ctx, &stin__pass_defaults); /* the last candidate's scissor off */
-    ctx->csg.pending_fbo = ctx->draw_fbo;
-    ctx->csg.result_pending = 1;
+    ctx->csg->pending_fbo = ctx->draw_fbo;
+    ctx->csg->result_pending = 1;
     if (!ctx->target.separate_read) /* as in place */
         stin__csg_merge_result_ready(ctx);
 }
@@ -417,7 +416,7 @@ typedef struct region_rows {
 
 static region_rows rows_of(const stin_context *ctx, const stin__csg_pixels *r)
 {
-    const int *g = ctx->csg.region;
+    const int *g = ctx->csg->region;
     region_rows o;
     o.stride = (size_t)r->w;
     o.first = (size_t)(g[1] - r->y) * o.stride + (size_t)(g[0] - r->x);
@@ -479,7 +478,7 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
                              const stin__csg_select *select, const stin__csg_surface *surface,
                              int want_kept)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     GLuint kept = 1, q = m->queries[STIN__CSG_MERGE_THRESHOLDS];
     int counted = want_kept && m->queries[0];
     region_rows g = rows_of(ctx, r);
@@ -498,11 +497,11 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
             }
         return (int)kept;
     }
-    if (ctx->csg.in_place) /* the candidate is the result */
+    if (ctx->csg->in_place) /* the candidate is the result */
         return 1;
     /* a direct resolve has no result: every candidate it takes names its
      * faces (interval's, which do not, never runs direct) */
-    direct = ctx->csg.direct && surface;
+    direct = ctx->csg->direct && surface;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER,
                              direct ? ctx->draw_fbo : m->fbo[STIN__CSG_MERGE_RESULT]);
     if (counted)
@@ -515,7 +514,7 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
         GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
         GL(ctx, GetQueryObjectuiv)(q, GL_QUERY_RESULT, &kept);
     }
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg.resolve_fbo);
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
     resume(ctx, path);
     return kept != 0;
 }
@@ -537,7 +536,7 @@ static unsigned bound_of(const GLuint *passed, int drawn, unsigned limit)
 unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
                                unsigned limit)
 {
-    stin__csg_merge_state *m = &ctx->csg.merge;
+    stin__csg_merge_state *m = &ctx->csg->merge;
     unsigned most = 0;
     region_rows g = rows_of(ctx, r);
     size_t i, x, y;

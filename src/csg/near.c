@@ -7,7 +7,7 @@
  * plane itself lies inside a product, the product is cut open there: the
  * cut is drawn as a cap, a quad at window depth STIN__CSG_CAP_DEPTH facing
  * the eye, which the resolve treats as one more candidate surface. */
-#include "internal.h"
+#include "csg/csg_private.h"
 
 /* Clip-space position of world point p. */
 static void to_clip(const float m[16], const float p[3], float out[4])
@@ -98,5 +98,5 @@ void stin__csg_cap_init(stin_context *ctx)
         v[i].uv[1] = 0.5f * (corner[i][1] + 1.0f);
         v[i].tangent[0] = v[i].tangent[3] = 1.0f;
     }
-    ctx->csg.cap_slot = stin__mesh_builtin(ctx, v, 4, tris, 2);
+    ctx->csg->cap_slot = stin__mesh_builtin(ctx, v, 4, tris, 2);
 }

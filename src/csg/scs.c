@@ -29,7 +29,7 @@
  * plain primitives; on the GPU one wait a check. On the GPU the term's
  * passes keep to the rectangle of its plain primitives' overlap
  * (csg/bounds.c's region). */
-#include "internal.h"
+#include "csg/csg_private.h"
 
 #ifndef OFFSET_UNITS
 #define OFFSET_UNITS 4.0f
@@ -39,7 +39,7 @@
 /* Every primitive of p convex, and every term with a plain primitive. */
 static const char *unfit(const stin_context *ctx, const stin__csg_product *p)
 {
-    const stin__csg_state *c = &ctx->csg;
+    const stin__csg_state *c = ctx->csg;
     uint32_t q, ti, li;
     for (q = 0; q < p->primitive_count; q++) {
         const stin__draw *d = &c->primitives[p->first_primitive + q];
@@ -65,7 +65,7 @@ static const char *unfit(const stin_context *ctx, const stin__csg_product *p)
 static const stin__draw *primitive_of(const stin_context *ctx, const stin__csg_product *p,
                                       uint32_t literal)
 {
-    return &ctx->csg.primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(literal)];
+    return &ctx->csg->primitives[p->first_primitive + STIN__CSG_PRIMITIVE_OF(literal)];
 }
 
 /* A pass over the depth with colour writes off; `shown` is the face kept. */
@@ -121,7 +121,7 @@ static void intersect(stin_context *ctx, const stin__path *path, const stin__csg
     stin__csg_clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     GL(ctx, ClearDepth)(1.0);
     for (li = 0; li < t->count; li++) {
-        uint32_t lit = ctx->csg.literals[t->first + li];
+        uint32_t lit = ctx->csg->literals[t->first + li];
         const stin__draw *d = primitive_of(ctx, p, lit);
         stin__pass_state ps = faces(ctx, d, 0, GL_GREATER, 1);
         if (!STIN__CSG_COMPLEMENTED(lit))
@@ -158,7 +158,7 @@ static int boxes_meet(const uint32_t *a, const uint32_t *b)
  * region. Spans past 65536 pixels (no GL has such viewports) are whole. */
 static int box_of(const stin_context *ctx, const stin__draw *d, uint32_t *box)
 {
-    const int *region = ctx->csg.region;
+    const int *region = ctx->csg->region;
     float rect[4];
     int b[4], k;
     if (region[2] > 0x10000 || region[3] > 0x10000) {
@@ -187,8 +187,8 @@ static int apart(stin_context *ctx, const stin__csg_product *p, const stin__csg_
                  uint32_t li, uint32_t lj)
 {
     float a[6], b[6];
-    stin__csg_world_box(ctx, primitive_of(ctx, p, ctx->csg.literals[t->first + li]), a);
-    stin__csg_world_box(ctx, primitive_of(ctx, p, ctx->csg.literals[t->first + lj]), b);
+    stin__csg_world_box(ctx, primitive_of(ctx, p, ctx->csg->literals[t->first + li]), a);
+    stin__csg_world_box(ctx, primitive_of(ctx, p, ctx->csg->literals[t->first + lj]), b);
     return stin__csg_world_boxes_apart(ctx, a, b, 2.0f * OFFSET_UNITS);
 }
 
@@ -218,9 +218,9 @@ static int untangled(stin_context *ctx, const stin__csg_product *p, const stin__
 static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
                                   const stin__csg_term *t, unsigned *bound)
 {
-    uint32_t *box = ctx->csg.scratch, li, lj, n = 0, most = 0;
+    uint32_t *box = ctx->csg->scratch, li, lj, n = 0, most = 0;
     for (li = 0; li < t->count; li++) {
-        uint32_t lit = ctx->csg.literals[t->first + li];
+        uint32_t lit = ctx->csg->literals[t->first + li];
         if (!STIN__CSG_COMPLEMENTED(lit) || !box_of(ctx, primitive_of(ctx, p, lit), &box[2u * li]))
             box[2u * li] = box[2u * li + 1u] = OFF_REGION;
         else
@@ -255,7 +255,7 @@ static uint32_t list_complemented(stin_context *ctx, const stin__csg_product *p,
 static uint32_t *order_front_to_back(stin_context *ctx, const stin__csg_product *p,
                                      const stin__csg_term *t, uint32_t n)
 {
-    uint32_t *pair = ctx->csg.scratch, li, k = 0, gap, i, j;
+    uint32_t *pair = ctx->csg->scratch, li, k = 0, gap, i, j;
     float eye[3];
     int perspective = stin__csg_eye(ctx, eye);
     for (li = 0; li < t->count; li++) {
@@ -264,7 +264,7 @@ static uint32_t *order_front_to_back(stin_context *ctx, const stin__csg_product 
         if (!listed(pair, li))
             continue;
         /* entry k <= li overwrites boxes already read */
-        d = primitive_of(ctx, p, ctx->csg.literals[t->first + li]);
+        d = primitive_of(ctx, p, ctx->csg->literals[t->first + li]);
         key = perspective ? stin__csg_power(ctx, d, eye) : stin__csg_nearest_w(ctx, d);
         stin__memcopy(&pair[2u * k], &key, sizeof key);
         pair[2u * k + 1u] = li;
@@ -349,7 +349,7 @@ static int still_inside(stin_context *ctx, const stin__path *path, stin__csg_pix
     while (i < n) {
         stin__csg_clear(ctx, GL_STENCIL_BUFFER_BIT);
         for (batch = 0; i < n && batch < 255u; i++, batch++) {
-            uint32_t lit = ctx->csg.literals[t->first + order[2u * i + 1u]];
+            uint32_t lit = ctx->csg->literals[t->first + order[2u * i + 1u]];
             const stin__draw *d = primitive_of(ctx, p, lit);
             stin__pass_state ps = faces(ctx, d, 0, GL_LESS, 0);
             int front_is_gl_front = stin__csg_culled_face(d, 0) == GL_BACK; /* not mirrored */
@@ -394,14 +394,14 @@ static void subtract(stin_context *ctx, const stin__path *path, stin__csg_pixels
         ctx->stats.csg.scs_runs++;
         for (i = 0; i < n; i++)
             subtract_one(ctx, path,
-                         primitive_of(ctx, p, ctx->csg.literals[t->first + order[2u * i + 1u]]));
+                         primitive_of(ctx, p, ctx->csg->literals[t->first + order[2u * i + 1u]]));
     }
     if (runs == 255u && check && still_inside(ctx, path, r, p, t, order, n) &&
-        !ctx->csg.said_scs_capped) {
+        !ctx->csg->said_scs_capped) {
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "scs: 255 or more subtracted primitives cover one pixel; the subtraction "
                   "sequence stops after 255 runs");
-        ctx->csg.said_scs_capped = 1;
+        ctx->csg->said_scs_capped = 1;
     }
 }
 
@@ -417,7 +417,7 @@ static void clip(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
         for (n = 0; li < t->count && n < batch; li++) {
             const stin__draw *d;
             stin__pass_state ps;
-            lit = ctx->csg.literals[t->first + li];
+            lit = ctx->csg->literals[t->first + li];
             if (STIN__CSG_COMPLEMENTED(lit))
                 continue;
             d = primitive_of(ctx, p, lit);
@@ -445,7 +445,7 @@ static void term(stin_context *ctx, const stin__path *path, stin__csg_pixels *r,
     /* the term's surface lies inside every plain primitive's rectangle: on
      * the GPU (nothing outside read back) its passes keep to their overlap */
     for (li = 0; li < t->count; li++) {
-        uint32_t lit = ctx->csg.literals[t->first + li];
+        uint32_t lit = ctx->csg->literals[t->first + li];
         if (STIN__CSG_COMPLEMENTED(lit))
             continue;
         stin__csg_screen_rect(ctx, primitive_of(ctx, p, lit), rect);
@@ -484,16 +484,16 @@ int stin__csg_scs_product(stin_context *ctx, const stin__path *path, stin__csg_p
         return 0;
     why = unfit(ctx, p);
     if (why) {
-        if (!ctx->csg.said_scs_fallback) {
+        if (!ctx->csg->said_scs_fallback) {
             int forced = ctx->desc.techniques[STIN_FEATURE_CSG] == STIN_TECH_CSG_SCS;
             stin__log(ctx, forced ? STIN_LOG_LEVEL_WARNING : STIN_LOG_LEVEL_INFO,
                       STIN_LOG_FALLBACK, "scs: %s; goldfeather resolves the product", why);
-            ctx->csg.said_scs_fallback = 1;
+            ctx->csg->said_scs_fallback = 1;
         }
         return 0;
     }
     for (ti = 0; ti < p->term_count; ti++)
-        term(ctx, path, r, p, &ctx->csg.terms[p->first_term + ti]);
+        term(ctx, path, r, p, &ctx->csg->terms[p->first_term + ti]);
     ctx->stats.csg.scs_products++;
     return 1;
 }

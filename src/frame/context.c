@@ -98,11 +98,7 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     size_t scratch = stin__adjacency_scratch_bytes(mv, d->max_mesh_triangles);
     size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
     size_t frame_scratch = frame_scratch_bytes(d);
-    /* primitives, and their faces: two a primitive and a product's near-plane cap */
-    size_t csg = 4u * sizeof(stin__draw) * d->csg.max_primitives +
-                 (sizeof(stin__csg_product) + sizeof(stin__csg_term)) * d->csg.max_terms +
-                 sizeof(uint32_t) * ((size_t)d->csg.max_literals + stin__csg_scratch_words(d));
-    void *p[14];
+    void *p[13];
     size_t i;
     if (tangent_scratch > scratch)
         scratch = tangent_scratch;
@@ -122,7 +118,6 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     p[10] = take(a, sizeof(stin__draw) * d->max_draws + sizeof(uint32_t) * d->max_draws, &ok);
     p[11] = take(a, sizeof(stin_light_desc) * d->max_lights, &ok);
     p[12] = take(a, frame_scratch, &ok);
-    p[13] = take(a, csg, &ok);
     for (i = 0; i < stin__state_slot_count; i++) {
         const stin__state_slot *slot = &stin__state_slots[i];
         size_t bytes = slot->bytes(d);
@@ -154,14 +149,6 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
         ctx->lights = (stin_light_desc *)p[11];
         ctx->frame_scratch = (unsigned char *)p[12];
         ctx->frame_scratch_bytes = frame_scratch;
-        ctx->csg.primitives = (stin__draw *)p[13];
-        ctx->csg.products = (stin__csg_product *)(void *)(ctx->csg.primitives +
-                                                          d->csg.max_primitives);
-        ctx->csg.terms = (stin__csg_term *)(void *)(ctx->csg.products + d->csg.max_terms);
-        ctx->csg.literals = (uint32_t *)(void *)(ctx->csg.terms + d->csg.max_terms);
-        ctx->csg.scratch = ctx->csg.literals + d->csg.max_literals;
-        ctx->csg.scratch_words = stin__csg_scratch_words(d);
-        ctx->csg.faces = (stin__draw *)(void *)(ctx->csg.scratch + ctx->csg.scratch_words);
     }
     return stin__align16(a->used) + 16u; /* slack for aligning the caller's block */
 }

@@ -62,10 +62,7 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         return STIN_ERROR_INVALID_ARGUMENT;
     ctx->frame = *desc;
     ctx->draw_count = ctx->light_count = 0;
-    ctx->csg.primitive_count = ctx->csg.product_count = 0;
-    ctx->csg.term_count = ctx->csg.literal_count = 0;
-    ctx->csg.face_count = 0;
-    ctx->csg.resolved = 0;
+    stin__csg_frame_begin(ctx);
     /* The projection every pass draws with, known from here on
      * (stin_query_frame_projection): a shadow technique may move its far
      * plane to infinity (volumes), whatever lights the frame gets. */
@@ -461,7 +458,7 @@ static void run_plan(stin_context *ctx)
     (void)stin__times_enter(ctx, STIN_STAGE_BASE);
     stage_target(ctx);
     path->begin(ctx);
-    if (ctx->csg.product_count)
+    if (stin__csg_product_count(ctx))
         (void)stin__times_enter(ctx, STIN_STAGE_CSG);
     if (stin__csg_resolve(ctx, path)) { /* the products' depth, under every later pass */
         stin__csg_faces(ctx);

@@ -12,9 +12,12 @@ static const stin__casters csg_casters = {
     stin__csg_cast,
     stin__csg_cast_again,
     stin__csg_cast_none,
+    stin__csg_caster_product,
+    stin__csg_caster_term,
 };
 
 static const stin__resolved csg_resolved = {
+    stin__csg_face_list,
     stin__csg_face_begin,
     stin__csg_face_end,
     stin__csg_depth_again,

@@ -38,6 +38,7 @@ const stin__state_slot stin__state_slots[] = {
     SLOT(vdsm, stin__vdsm_state_bytes, NULL),
     SLOT(glsl, stin__glsl_state_bytes, NULL),
     SLOT(times, stin__times_state_bytes, NULL),
+    SLOT(csg, stin__csg_state_bytes, stin__csg_state_place),
 };
 #undef SLOT
 const size_t stin__state_slot_count = sizeof stin__state_slots / sizeof stin__state_slots[0];

@@ -1,8 +1,9 @@
 /* SPDX-License-Identifier: MIT */
-/* Caller state that stin's uploads and draws would otherwise write through
- * or read from: the bound vertex array object (element buffer, attribute
- * pointers) and the pixel-unpack state (row length, skips, alignment, a
- * bound pixel unpack buffer). Each is set aside for the call and put back. */
+/* Caller state that stin's uploads, draws and read-backs would otherwise
+ * write through or read from: the bound vertex array object (element
+ * buffer, attribute pointers) and the pixel unpack and pack state (row
+ * length, skips, alignment, a bound pixel buffer). Each is set aside for
+ * the call and put back. */
 #include "internal.h"
 
 #define VERTEX_ARRAY_BINDING 0x85B5
@@ -11,6 +12,11 @@
 #define UNPACK_SKIP_PIXELS 0x0CF4
 #define PIXEL_UNPACK_BUFFER 0x88EC
 #define PIXEL_UNPACK_BUFFER_BINDING 0x88EF
+#define PACK_ROW_LENGTH 0x0D02
+#define PACK_SKIP_ROWS 0x0D03
+#define PACK_SKIP_PIXELS 0x0D04
+#define PIXEL_PACK_BUFFER 0x88EB
+#define PIXEL_PACK_BUFFER_BINDING 0x88ED
 
 GLuint stin__vao_begin(stin_context *ctx)
 {
@@ -29,40 +35,70 @@ void stin__vao_end(stin_context *ctx, GLuint saved)
         GL(ctx, BindVertexArray)(saved);
 }
 
-/* Pixel unpack buffers are GL 2.1 (buffer objects bound to a new target). */
-static int has_unpack_buffer(const stin_context *ctx)
+/* Pixel pack and unpack buffers are GL 2.1 (buffer objects bound to new targets). */
+static int has_pixel_buffer(const stin_context *ctx)
 {
     return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO)) &&
            ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= 21;
 }
 
-static const GLenum store[STIN__UNPACK_STORE] = {GL_UNPACK_ALIGNMENT, UNPACK_ROW_LENGTH,
-                                                 UNPACK_SKIP_ROWS, UNPACK_SKIP_PIXELS};
+/* One direction's pixel store: its parameters and its buffer target. */
+typedef struct pixel_store {
+    GLenum store[STIN__UNPACK_STORE];
+    GLenum buffer, binding;
+} pixel_store;
+
+static const pixel_store unpack = {
+    {GL_UNPACK_ALIGNMENT, UNPACK_ROW_LENGTH, UNPACK_SKIP_ROWS, UNPACK_SKIP_PIXELS},
+    PIXEL_UNPACK_BUFFER, PIXEL_UNPACK_BUFFER_BINDING};
+static const pixel_store pack = {
+    {GL_PACK_ALIGNMENT, PACK_ROW_LENGTH, PACK_SKIP_ROWS, PACK_SKIP_PIXELS},
+    PIXEL_PACK_BUFFER, PIXEL_PACK_BUFFER_BINDING};
 static const GLint tight[STIN__UNPACK_STORE] = {1, 0, 0, 0};
 
-void stin__unpack_begin(stin_context *ctx, stin__unpack_saved *s)
+static void store_begin(stin_context *ctx, const pixel_store *p, stin__unpack_saved *s)
 {
     int i;
     for (i = 0; i < STIN__UNPACK_STORE; i++) {
         s->store[i] = tight[i];
-        GL(ctx, GetIntegerv)(store[i], &s->store[i]);
+        GL(ctx, GetIntegerv)(p->store[i], &s->store[i]);
         if (s->store[i] != tight[i])
-            GL(ctx, PixelStorei)(store[i], tight[i]);
+            GL(ctx, PixelStorei)(p->store[i], tight[i]);
     }
     s->buffer = 0;
-    if (has_unpack_buffer(ctx)) {
-        GL(ctx, GetIntegerv)(PIXEL_UNPACK_BUFFER_BINDING, &s->buffer);
+    if (has_pixel_buffer(ctx)) {
+        GL(ctx, GetIntegerv)(p->binding, &s->buffer);
         if (s->buffer)
-            GL(ctx, BindBuffer)(PIXEL_UNPACK_BUFFER, 0);
+            GL(ctx, BindBuffer)(p->buffer, 0);
     }
 }
 
-void stin__unpack_end(stin_context *ctx, const stin__unpack_saved *s)
+static void store_end(stin_context *ctx, const pixel_store *p, const stin__unpack_saved *s)
 {
     int i;
     for (i = 0; i < STIN__UNPACK_STORE; i++)
         if (s->store[i] != tight[i])
-            GL(ctx, PixelStorei)(store[i], s->store[i]);
+            GL(ctx, PixelStorei)(p->store[i], s->store[i]);
     if (s->buffer)
-        GL(ctx, BindBuffer)(PIXEL_UNPACK_BUFFER, (GLuint)s->buffer);
+        GL(ctx, BindBuffer)(p->buffer, (GLuint)s->buffer);
+}
+
+void stin__unpack_begin(stin_context *ctx, stin__unpack_saved *s)
+{
+    store_begin(ctx, &unpack, s);
+}
+
+void stin__unpack_end(stin_context *ctx, const stin__unpack_saved *s)
+{
+    store_end(ctx, &unpack, s);
+}
+
+void stin__pack_begin(stin_context *ctx, stin__unpack_saved *s)
+{
+    store_begin(ctx, &pack, s);
+}
+
+void stin__pack_end(stin_context *ctx, const stin__unpack_saved *s)
+{
+    store_end(ctx, &pack, s);
 }

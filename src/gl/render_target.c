@@ -49,5 +49,9 @@ GLenum stin__rt_attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth
     if (stencil)
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                       stencil, 0);
+    if (!color) {
+        GL(ctx, DrawBuffer)(GL_NONE);
+        GL(ctx, ReadBuffer)(GL_NONE);
+    }
     return GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
 }

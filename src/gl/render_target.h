@@ -21,9 +21,10 @@ void stin__rt_texture(struct stin_context *ctx, GLuint tex, GLenum internal, GLe
 void stin__rt_shadow_map(struct stin_context *ctx, GLuint tex, int w, int h);
 
 /* Binds `fbo` and attaches the 2D textures that are not 0: `color` to colour
- * attachment 0, `depth` to the depth, `stencil` to the stencil attachment.
- * Returns the completeness status (GL_FRAMEBUFFER_COMPLETE or why not),
- * leaving `fbo` bound. */
+ * attachment 0, `depth` to the depth, `stencil` to the stencil attachment;
+ * without `color` it draws and reads no colour buffer (depth only: GL 2.x
+ * framebuffers are incomplete otherwise). Returns the completeness status
+ * (GL_FRAMEBUFFER_COMPLETE or why not), leaving `fbo` bound. */
 GLenum stin__rt_attach(struct stin_context *ctx, GLuint fbo, GLuint color, GLuint depth,
                        GLuint stencil);
 

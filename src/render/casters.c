@@ -30,6 +30,17 @@ void stin__casters_none(stin_context *ctx, const char *why)
         ctx->casters.hooks->none(ctx, why);
 }
 
+int stin__casters_product(const stin_context *ctx, uint32_t i, stin__caster_product *out)
+{
+    return ctx->casters.hooks ? ctx->casters.hooks->product(ctx, i, out) : 0;
+}
+
+const uint32_t *stin__casters_term(const stin_context *ctx, const stin__caster_product *p,
+                                   uint32_t t, uint32_t *count)
+{
+    return ctx->casters.hooks->term(ctx, p, t, count); /* p came from product(): lent */
+}
+
 int stin__casters_drew(const stin_context *ctx)
 {
     return ctx->casters.drew;

@@ -12,6 +12,21 @@
 #include "gl/gl_types.h"
 #include "render/path.h"
 
+/* A literal names a primitive of its product: index * 2, + 1 complemented
+ * (the term takes its outside). */
+#define STIN__CSG_LITERAL(primitive, complemented) ((primitive) * 2u + ((complemented) ? 1u : 0u))
+#define STIN__CSG_PRIMITIVE_OF(literal) ((literal) >> 1)
+#define STIN__CSG_COMPLEMENTED(literal) ((literal) & 1u)
+
+/* A caster a technique walks itself (vdsm: per pixel along the light's
+ * segment): its primitives, and its shape as a sum of terms, each a product
+ * of literals. */
+typedef struct stin__caster_product {
+    const stin__draw *primitives;
+    uint32_t primitive_count, term_count;
+    uint32_t index;           /* which of the frame's, for term() */
+} stin__caster_product;
+
 typedef struct stin__casters {
     /* Whether there are any to cast this frame. */
     int (*wanted)(const stin_context *ctx);
@@ -31,6 +46,11 @@ typedef struct stin__casters {
     /* Logs once that they cast no shadow `why` (a technique or light that
      * cannot take them); nothing when there are none. */
     void (*none)(stin_context *ctx, const char *why);
+    /* The frame's product i into out; 0 past the last. term: term t of
+     * product p, its literals (count of them). */
+    int (*product)(const stin_context *ctx, uint32_t i, stin__caster_product *out);
+    const uint32_t *(*term)(const stin_context *ctx, const stin__caster_product *p, uint32_t t,
+                            uint32_t *count);
 } stin__casters;
 
 /* What the context holds: the lent hooks (NULL: none lent, every answer
@@ -46,6 +66,9 @@ int stin__casters_cast(stin_context *ctx, const stin__path *path, const float vi
                        float factor, float units);
 void stin__casters_again(stin_context *ctx, const int map_vp[4], GLuint target, int in_place);
 void stin__casters_none(stin_context *ctx, const char *why);
+int stin__casters_product(const stin_context *ctx, uint32_t i, stin__caster_product *out);
+const uint32_t *stin__casters_term(const stin_context *ctx, const stin__caster_product *p,
+                                   uint32_t t, uint32_t *count);
 /* The last cast drew some (again has something to draw). */
 int stin__casters_drew(const stin_context *ctx);
 

@@ -138,12 +138,13 @@ static int in_set(const stin__draw *d, int which)
  * told clockwise is front for them (and culls accordingly). */
 static void draw_csg_faces(stin_context *ctx, int which, int materials)
 {
-    uint32_t i;
+    uint32_t i, count;
+    const stin__draw *faces = stin__resolved_faces(ctx, &count);
     stin__pass_state saved;
     if (!(which & STIN__OPAQUE))
         return;
-    for (i = 0; i < ctx->csg.face_count; i++) {
-        const stin__draw *d = &ctx->csg.faces[i];
+    for (i = 0; i < count; i++) {
+        const stin__draw *d = &faces[i];
         if (!stin__resolved_face_begin(ctx, d, &saved))
             continue;
         if (d->csg == STIN__CSG_BACK && stin__mat4_det(d->transform) < 0.0) {

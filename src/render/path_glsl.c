@@ -448,12 +448,13 @@ static int in_set(const stin_context *ctx, const stin__draw *d, int which)
 /* The CSG products' faces on their resolved depth (opaque). */
 static void draw_csg_faces(stin_context *ctx, const stin__program *p, int which, int materials)
 {
-    uint32_t i;
+    uint32_t i, count;
+    const stin__draw *faces = stin__resolved_faces(ctx, &count);
     stin__pass_state saved;
     if (!(which & STIN__OPAQUE) || stin__in_peeled_layer(ctx))
         return;
-    for (i = 0; i < ctx->csg.face_count; i++) {
-        const stin__draw *d = &ctx->csg.faces[i];
+    for (i = 0; i < count; i++) {
+        const stin__draw *d = &faces[i];
         const stin__program *q = p;
         if (!stin__resolved_face_begin(ctx, d, &saved))
             continue;

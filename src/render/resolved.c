@@ -3,6 +3,12 @@
  * the frame lent none (render/resolved.h). */
 #include "internal.h"
 
+const stin__draw *stin__resolved_faces(const stin_context *ctx, uint32_t *count)
+{
+    *count = 0;
+    return ctx->resolved ? ctx->resolved->faces(ctx, count) : NULL;
+}
+
 int stin__resolved_face_begin(stin_context *ctx, const stin__draw *d, stin__pass_state *saved)
 {
     return ctx->resolved ? ctx->resolved->face_begin(ctx, d, saved) : 0;

@@ -15,6 +15,9 @@
 #include "render/path.h"
 
 typedef struct stin__resolved {
+    /* The faces to draw on the resolved depth this frame (count of them;
+     * none before the resolve or where it resolved nothing). */
+    const stin__draw *(*faces)(const stin_context *ctx, uint32_t *count);
     /* Around a pass's draw of face d: depth LESS becomes EQUAL, the side
      * culled that the draw does not show; 0 when the pass skips it (then
      * no face_end). face_end applies the pass state begin saved. */
@@ -29,6 +32,7 @@ typedef struct stin__resolved {
     GLuint (*depth_texture)(stin_context *ctx, int origin[2]);
 } stin__resolved;
 
+const stin__draw *stin__resolved_faces(const stin_context *ctx, uint32_t *count);
 int stin__resolved_face_begin(stin_context *ctx, const stin__draw *d, stin__pass_state *saved);
 void stin__resolved_face_end(stin_context *ctx, const stin__pass_state *saved);
 void stin__resolved_depth_again(stin_context *ctx, const stin__path *path);

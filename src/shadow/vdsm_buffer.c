@@ -176,9 +176,10 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     GLuint resolved;
     float csg[4] = {0.0f, 0.0f, 1.0f, 1.0f / 2097152.0f};
     int origin[2];
-    uint32_t i;
+    uint32_t i, count;
+    const stin__draw *faces = stin__resolved_faces(ctx, &count);
     (void)path;
-    if (!v->ready || !ctx->csg.face_count)
+    if (!v->ready || !count)
         return;
     resolved = stin__resolved_depth_texture(ctx, origin);
     if (!resolved)
@@ -193,9 +194,9 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     csg[0] = (float)origin[0];
     csg[1] = (float)origin[1];
     GL(ctx, Uniform4fv)(v->pos_csg, 1, csg);
-    for (i = 0; i < ctx->csg.face_count; i++)
-        if (stin__resolved_face_begin(ctx, &ctx->csg.faces[i], &saved)) {
-            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &ctx->csg.faces[i]);
+    for (i = 0; i < count; i++)
+        if (stin__resolved_face_begin(ctx, &faces[i], &saved)) {
+            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &faces[i]);
             stin__resolved_face_end(ctx, &saved);
         }
     ctx->bound_mesh = 0xffffffffu;

@@ -99,7 +99,7 @@ int stin__vdsm_csg_ready(const stin_context *ctx)
 
 /* A product this module can walk: at most 128 primitives (the walk's
  * 4 x 32 bits) and 64 terms (its term buffer). */
-static int fits(const stin__csg_product *p)
+static int fits(const stin__caster_product *p)
 {
     return p->primitive_count <= STIN__VDSM_CSG_MAX_PRIMITIVES &&
            p->term_count <= STIN__VDSM_CSG_MAX_TERMS;
@@ -259,7 +259,7 @@ static int buffers_ready(stin_context *ctx)
 /* ---- the two passes ---------------------------------------------------------- */
 
 /* Every primitive of p listed; returns the nodes the listing took. */
-static uint32_t list_crossings(stin_context *ctx, const stin__csg_product *p,
+static uint32_t list_crossings(stin_context *ctx, const stin__caster_product *p,
                                const float light[4])
 {
     stin__vdsm_csg *c = &ctx->vdsm->csg;
@@ -289,7 +289,7 @@ static uint32_t list_crossings(stin_context *ctx, const stin__csg_product *p,
     GL(ctx, Uniform1i)(c->a_position, 0);
     GL(ctx, Uniform1i)(c->a_normal, 1);
     for (i = 0; i < p->primitive_count; i++) {
-        const stin__draw *d = &ctx->csg.primitives[p->first_primitive + i];
+        const stin__draw *d = &p->primitives[i];
         GL(ctx, Uniform1i)(c->a_primitive, (GLint)i);
         GL(ctx, Uniform1i)(c->a_mirrored, stin__mat4_det(d->transform) < 0.0);
         stin__glsl_submit_geometry(ctx, c->a_model, &c->displace, d);
@@ -300,22 +300,23 @@ static uint32_t list_crossings(stin_context *ctx, const stin__csg_product *p,
     return used;
 }
 
-static void walk(stin_context *ctx, const stin__csg_product *p, const float light[4], int channel)
+static void walk(stin_context *ctx, const stin__caster_product *p, const float light[4],
+                 int channel)
 {
     stin__vdsm_csg *c = &ctx->vdsm->csg;
     GLuint masks[2 * STIN__VDSM_CSG_MAX_TERMS][4], inside[4] = {0, 0, 0, 0};
-    uint32_t ti, li;
+    uint32_t ti, li, count;
     stin__memzero(masks, sizeof masks);
     for (ti = 0; ti < p->term_count; ti++) {
-        const stin__csg_term *t = &ctx->csg.terms[p->first_term + ti];
-        for (li = 0; li < t->count; li++) {
-            uint32_t lit = ctx->csg.literals[t->first + li], k = STIN__CSG_PRIMITIVE_OF(lit);
+        const uint32_t *literals = stin__casters_term(ctx, p, ti, &count);
+        for (li = 0; li < count; li++) {
+            uint32_t lit = literals[li], k = STIN__CSG_PRIMITIVE_OF(lit);
             masks[2 * ti + STIN__CSG_COMPLEMENTED(lit)][k >> 5] |= 1u << (k & 31u);
         }
     }
     if (light[3] != 0.0f)
         for (li = 0; li < p->primitive_count; li++)
-            if (light_inside(ctx, &ctx->csg.primitives[p->first_primitive + li], light))
+            if (light_inside(ctx, &p->primitives[li], light))
                 inside[li >> 5] |= 1u << (li & 31u);
     GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, c->buffers[2]);
     GL(ctx, BufferSubData)(GL_SHADER_STORAGE_BUFFER, 0,
@@ -344,6 +345,7 @@ static void bind_buffers(stin_context *ctx, int on)
 void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel)
 {
     stin__vdsm_csg *c = &ctx->vdsm->csg;
+    stin__caster_product product, *p = &product;
     uint32_t pi;
     if (!built(ctx) || !stin__casters_wanted(ctx) || !buffers_ready(ctx))
         return;
@@ -352,8 +354,7 @@ void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel)
         clear_lists(ctx);
         c->cleared = 1;
     }
-    for (pi = 0; pi < ctx->csg.product_count; pi++) {
-        const stin__csg_product *p = &ctx->csg.products[pi];
+    for (pi = 0; stin__casters_product(ctx, pi, p); pi++) {
         uint32_t used;
         if (!fits(p)) {
             if (!c->said_limits)

@@ -16,7 +16,8 @@
 
 #include "fake_gl.h"
 #include "internal.h"
-#include "gl/stage_times_private.h" /* module state the tests read */
+#include "csg/csg_private.h" /* the frame's products, read back */
+#include "gl/stage_times_private.h" /* the stage marks, read back */
 
 #define P(i) {STIN_CSG_PRIMITIVE, (i), 0, 0}
 #define U(a, b) {STIN_CSG_UNION, 0, (a), (b)}
@@ -362,7 +363,7 @@ static void refused(stin_csg_desc *d, stin_result r, stin_log_item item, const c
     assert_true(fake_log_has(&log_, item, text));
     assert_int_equal(stin_query_frame_stats(ctx).csg.dropped, before.csg.dropped + 1);
     assert_int_equal(stin_query_frame_stats(ctx).csg.products, before.csg.products);
-    assert_int_equal(ctx->csg.primitive_count, before.csg.products ? 2u : 0u);
+    assert_int_equal(ctx->csg->primitive_count, before.csg.products ? 2u : 0u);
 }
 
 static void test_draw_csg_accepts_and_reads_back(void **state)
@@ -382,8 +383,8 @@ static void test_draw_csg_accepts_and_reads_back(void **state)
     assert_int_equal(stin_query_frame_stats(ctx).csg.products, 1);
     assert_int_equal(stin_query_frame_stats(ctx).csg.terms, 1);
     /* the zero transform is the identity; the material got its defaults */
-    assert_true(ctx->csg.primitives[0].transform[0] == 1.0f);
-    assert_true(ctx->csg.primitives[0].material.color[3] == 1.0f);
+    assert_true(ctx->csg->primitives[0].transform[0] == 1.0f);
+    assert_true(ctx->csg->primitives[0].material.color[3] == 1.0f);
     /* a - a is empty: accepted, nothing kept */
     nodes[2] = (stin_csg_node)S(0, 0);
     assert_int_equal(stin_draw_csg(ctx, &d), STIN_OK);
@@ -544,8 +545,8 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_SCS);
     one_frame();
     assert_int_equal(ctx->stats.csg.scs_products, 1);
-    assert_true(ctx->csg.resolved);
-    assert_int_equal(ctx->csg.face_count, 2); /* 0's front faces, 1's back faces */
+    assert_true(ctx->csg->resolved);
+    assert_int_equal(ctx->csg->face_count, 2); /* 0's front faces, 1's back faces */
     assert_true(fake_gl.calls[STIN_GLFN_ReadPixels] >= 2);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 1);
     assert_int_equal(log_.items[STIN_LOG_FALLBACK], 0);
@@ -554,7 +555,7 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_SCS);
     one_frame();
     assert_int_equal(ctx->stats.csg.scs_products, 1);
-    assert_true(ctx->csg.resolved);
+    assert_true(ctx->csg->resolved);
     assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
     assert_true(ctx->stats.csg.gpu_bytes > 0);
     /* none: one subtracted primitive takes one run, with no check after
@@ -584,7 +585,7 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(ctx->stats.csg.interval_products, 1);
     assert_true(ctx->stats.csg.interval_bytes > 0);
     assert_int_equal(ctx->stats.csg.scs_products, 0);
-    assert_true(ctx->csg.resolved);
+    assert_true(ctx->csg->resolved);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 0);
     assert_int_equal(fake_gl.calls[STIN_GLFN_ReadPixels], 1); /* the walk */
     assert_int_equal(fake_gl.calls[STIN_GLFN_TexSubImage2D], 0);
@@ -593,7 +594,7 @@ static void test_frames_with_a_product(void **state)
     assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_CSG).technique, STIN_TECH_CSG_OFF);
     one_frame(); /* accepted, not drawn */
     one_frame();
-    assert_false(ctx->csg.resolved);
+    assert_false(ctx->csg->resolved);
     assert_int_equal(fake_gl.calls[STIN_GLFN_DrawPixels], 0);
     assert_int_equal(log_.items[STIN_LOG_FALLBACK], 1);
     assert_true(fake_log_has(&log_, STIN_LOG_FALLBACK, "CSG products are not drawn"));
@@ -715,7 +716,7 @@ static void test_goldfeather_groups_apart_candidates(void **state)
 static void watched_frame(uint64_t flags)
 {
     flagged_frame(flags);
-    fake_gl.watched_framebuffer = ctx->csg.merge.fbo[STIN__CSG_MERGE_RESULT];
+    fake_gl.watched_framebuffer = ctx->csg->merge.fbo[STIN__CSG_MERGE_RESULT];
     fake_gl.draws_into_watched = 0;
     fake_gl.calls[STIN_GLFN_CopyTexSubImage2D] = 0;
     one_frame();
