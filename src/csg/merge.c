@@ -161,8 +161,8 @@ static int ensure_targets(stin_context *ctx)
         GLenum made;
         stin__rt_texture(ctx, m->texture[i], format, GL_DEPTH_STENCIL, type, w, h);
         /* work: its stencil counts too (GL 2.x names both halves) */
-        made = stin__rt_attach(ctx, m->fbo[i], 0, m->texture[i],
-                               i == STIN__CSG_MERGE_WORK ? m->texture[i] : 0);
+        made = stin__rt_attach_depth_only(ctx, m->fbo[i], m->texture[i],
+                                          i == STIN__CSG_MERGE_WORK ? m->texture[i] : 0);
         if (status == GL_FRAMEBUFFER_COMPLETE)
             status = made;
     }

@@ -36,8 +36,8 @@ void stin__rt_shadow_map(stin_context *ctx, GLuint tex, int w, int h)
     level0(ctx, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
 }
 
-GLenum stin__rt_attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth,
-                       GLuint stencil)
+/* Binds fbo and attaches the textures that are not 0. */
+static void attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth, GLuint stencil)
 {
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, fbo);
     if (color)
@@ -49,9 +49,19 @@ GLenum stin__rt_attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth
     if (stencil)
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                       stencil, 0);
-    if (!color) {
-        GL(ctx, DrawBuffer)(GL_NONE);
-        GL(ctx, ReadBuffer)(GL_NONE);
-    }
+}
+
+GLenum stin__rt_attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth,
+                       GLuint stencil)
+{
+    attach(ctx, fbo, color, depth, stencil);
+    return GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+}
+
+GLenum stin__rt_attach_depth_only(stin_context *ctx, GLuint fbo, GLuint depth, GLuint stencil)
+{
+    attach(ctx, fbo, 0, depth, stencil);
+    GL(ctx, DrawBuffer)(GL_NONE);
+    GL(ctx, ReadBuffer)(GL_NONE);
     return GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
 }

@@ -22,10 +22,15 @@ void stin__rt_shadow_map(struct stin_context *ctx, GLuint tex, int w, int h);
 
 /* Binds `fbo` and attaches the 2D textures that are not 0: `color` to colour
  * attachment 0, `depth` to the depth, `stencil` to the stencil attachment;
- * without `color` it draws and reads no colour buffer (depth only: GL 2.x
- * framebuffers are incomplete otherwise). Returns the completeness status
- * (GL_FRAMEBUFFER_COMPLETE or why not), leaving `fbo` bound. */
+ * the framebuffer's draw and read buffers stay as they are (a caller may
+ * attach its colour some other way, an array layer, or later). Returns the
+ * completeness status (GL_FRAMEBUFFER_COMPLETE or why not), leaving `fbo`
+ * bound. */
 GLenum stin__rt_attach(struct stin_context *ctx, GLuint fbo, GLuint color, GLuint depth,
                        GLuint stencil);
+/* The same for a framebuffer that never has colour: it draws and reads no
+ * colour buffer (GL 2.x framebuffers are incomplete otherwise). */
+GLenum stin__rt_attach_depth_only(struct stin_context *ctx, GLuint fbo, GLuint depth,
+                                  GLuint stencil);
 
 #endif
