@@ -103,7 +103,7 @@ struct stin_context {
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
     struct {                  /* the displacement choice as the layers below render
-                               * read it (stin__displace_hand_down), the frame's
+                               * read it (stin__selection_hand_down), the frame's
                                * scale as the chunk reads it, and its log
                                * (render/displace_chunk.c) */
         int displace;         /* vertex stages splice displace.glsl, not

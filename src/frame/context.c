@@ -226,7 +226,7 @@ static stin_result init_lighting(stin_context *ctx)
             return r;
         }
         ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
-        stin__displace_hand_down(ctx); /* the choice may have stepped down too */
+        stin__selection_hand_down(ctx); /* the choice may have stepped down too */
     }
 }
 
@@ -389,7 +389,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         return r;
     }
     ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
-    stin__displace_hand_down(ctx); /* before the first program is built */
+    stin__selection_hand_down(ctx); /* before the first program is built */
     stin__hooks_install_paths(ctx); /* the lighting path builds the features' chunks in */
     r = init_lighting(ctx);
     if (r == STIN_OK)

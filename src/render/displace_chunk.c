@@ -10,34 +10,14 @@
 /* Average edge of a mesh in texels of a map above which VTF shows facets. */
 #define COARSE_TEXELS 4.0f
 
-int stin__displace_built(const stin_context *ctx)
-{
-    stin_technique t = ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique;
-    return t == STIN_TECH_DISPLACEMENT_VTF || t == STIN_TECH_DISPLACEMENT_TESS;
-}
+/* The choice as select/ hands it down (stin__selection_hand_down). */
+int stin__displace_built(const stin_context *ctx) { return ctx->vertex_chunk.displace; }
 
-int stin__displace_tessellated(const stin_context *ctx)
-{
-    return ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique == STIN_TECH_DISPLACEMENT_TESS;
-}
-
-/* gl/ and assets/ sit below render and may not call up to ask: they read
- * the copy in ctx->vertex_chunk, kept equal to the choice here. */
-void stin__displace_hand_down(stin_context *ctx)
-{
-    ctx->vertex_chunk.displace = stin__displace_built(ctx);
-    ctx->vertex_chunk.tessellate = stin__displace_tessellated(ctx);
-}
-
-void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why)
-{
-    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, to, why);
-    stin__displace_hand_down(ctx);
-}
+int stin__displace_tessellated(const stin_context *ctx) { return ctx->vertex_chunk.tessellate; }
 
 void stin__displace_untessellate(stin_context *ctx, const char *why)
 {
-    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
+    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_VTF, why);
 }
 
 GLenum stin__displace_primitive(const stin__displace_locs *l)

@@ -15,14 +15,6 @@
 int stin__displace_built(const stin_context *ctx);
 /* 1 when they are also tessellated ("displace-tess"). */
 int stin__displace_tessellated(const stin_context *ctx);
-/* Hands the two facts above to the layers below render, which may not ask:
- * gl/shader.c's chunk and tessellation, assets/texture.c's height-map mip
- * chain (ctx->vertex_chunk). Called once the displacement choice is made
- * (frame/context.c) and by stin__displace_demote when it changes. */
-void stin__displace_hand_down(stin_context *ctx);
-/* Displacement steps down to `to` (logged, as stin__demote) and the layers
- * below are told. */
-void stin__displace_demote(stin_context *ctx, stin_technique to, const char *why);
 /* A layer's tessellated programs failed to build: displacement goes on
  * without tessellation ("displace"), the step down logged with why, so the
  * layer need not name displacement's techniques. */

@@ -217,7 +217,7 @@ static void build_tessellated(stin_context *ctx, const char *dir)
     delete_programs(ctx, ctx->glsl->tess.programs, STIN__PROG_COUNT);
     delete_programs(ctx, ctx->glsl->tess.lit, STIN__SURF_COUNT);
     stin__formatf(why, sizeof why, "its tessellated programs failed to build (%s)", msg);
-    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_VTF, why);
+    stin__displace_untessellate(ctx, why);
 }
 
 static void swap_programs(stin__program *a, stin__program *b, int n)

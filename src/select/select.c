@@ -391,6 +391,13 @@ stin_technique stin__choice_conflict(const stin__selection *sel, stin_feature f)
     return STIN_TECH_NONE;
 }
 
+void stin__selection_hand_down(stin_context *ctx)
+{
+    stin_technique t = ctx->sel.choice[STIN_FEATURE_DISPLACEMENT].technique;
+    ctx->vertex_chunk.displace = t == STIN_TECH_DISPLACEMENT_VTF || t == STIN_TECH_DISPLACEMENT_TESS;
+    ctx->vertex_chunk.tessellate = t == STIN_TECH_DISPLACEMENT_TESS;
+}
+
 void stin__demote(stin_context *ctx, stin_feature f, stin_technique to, const char *why)
 {
     stin__demote_at(ctx, STIN_LOG_LEVEL_WARNING, f, to, why);
@@ -406,6 +413,7 @@ void stin__demote_at(stin_context *ctx, stin_log_level level, stin_feature f, st
     c->technique = to;
     c->fell_back = 1;
     stin__formatf(c->reason, sizeof c->reason, "fallback: %s", why);
+    stin__selection_hand_down(ctx); /* the layers below see every step down */
 }
 
 stin_result stin__select(const stin_caps *caps, stin_tier forced,

@@ -57,6 +57,11 @@ stin_result stin__select_after_lighting(const stin_caps *caps, const stin_techni
 /* Moves feature f's choice to `to` after set-up found the chosen one
  * cannot run; logs a warning and marks the choice as fallen back. */
 void stin__demote(struct stin_context *ctx, stin_feature f, stin_technique to, const char *why);
+/* What the layers below the features read of the choices, which they may
+ * not ask for (ctx->vertex_chunk: whether programs carry the displacement
+ * chunk and are tessellated): set after selection (frame/context.c) and by
+ * every stin__demote. */
+void stin__selection_hand_down(struct stin_context *ctx);
 /* The same at log level `level` (INFO where the caller's own choice, not
  * the context, rules the technique out and it was not forced). */
 void stin__demote_at(struct stin_context *ctx, stin_log_level level, stin_feature f,

@@ -88,6 +88,6 @@ void stin__displace_init(stin_context *ctx)
                   "%s fell back to %s, which cannot run beside it: displaced draws would "
                   "be shadowed as the flat mesh",
                   stin_feature_name(stin__technique_feature(clash)), stin_technique_name(clash));
-    stin__displace_demote(ctx, STIN_TECH_DISPLACEMENT_OFF, why);
+    stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_OFF, why);
 }
 
