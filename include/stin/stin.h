@@ -138,7 +138,11 @@
  * framebuffer it runs without SM and DC (logged).
  * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
- * point lights get six 90-degree maps drawn before their pass. A point whose
+ * point lights get six 90-degree maps drawn before their pass into one
+ * atlas (3 x 2 faces, one sampler; the face size halved while three faces
+ * exceed GL_MAX_TEXTURE_SIZE), each face with only the casters whose bounds
+ * meet its frustum, a face no visible draw's bounds reach not drawn at all,
+ * and the kernel's taps kept inside the face's cell. A point whose
  * side the eye sees turns away from the light is in its own shadow, without
  * a lookup (as the test reference decides). The others are looked up from a
  * point moved along their geometric normal toward the eye by 1.5 texels'
@@ -492,8 +496,9 @@ const char *stin_feature_name(stin_feature f);
  *   transparency: dual-peel, depth-peel, sorted (see "Transparency" below)
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
- * map-pcf 6; map-depth 1 (plus 1 for its side test and 1 for point-light
- * faces, each when there is one to spare); map-combine 2; deep and coloured
+ * map-pcf 1 (a light's map or a point light's atlas); map-depth 1 (plus 1
+ * for its side test and 1 for point-light faces, each when there is one to
+ * spare); map-combine 2; deep and coloured
  * 2. Surface units follow the albedo, shadow units follow the surface's,
  * translucent shadows' the shadows'.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map
@@ -1691,6 +1696,11 @@ typedef struct stin_lighting_stats {
 
 typedef struct stin_shadows_stats {
     uint32_t map_size;           /* texels a side the maps were rendered at (0: none) */
+    /* map-pcf: point-light faces drawn into their atlas (per light and
+     * pass; a face no visible draw's bounds reach is skipped: no visible
+     * point reads it), and the casters drawn into them (a caster only into
+     * the faces its bounds meet) */
+    uint32_t map_faces, map_face_casters;
     /* volume: sides and caps drawn, and the casters (per light sample) by
      * z-fail and by z-pass; on GL4 the casters whose volumes the geometry
      * shader extruded from the mesh's own buffers (their triangles count in

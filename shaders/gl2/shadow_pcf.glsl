@@ -1,33 +1,22 @@
 // SPDX-License-Identifier: MIT
 // Shadow maps with percentage-closer filtering (technique "map-pcf").
 // u_shadow_kind: 0 no map for this pass's light, 1 one map (spot or
-// directional), 2 a point light's six 90-degree maps (u_shadow_faces).
-// Each map: world -> [0,1] texture space by u_shadow_matrix[face]; the
-// position is pushed along the geometric normal, toward the side the eye
-// sees, by u_shadow_params.z times its clip w (1.5 texels' width at the
-// point: w is 1 for an orthographic map, the distance along the light's axis
-// for a perspective one) before the lookup (normal-offset bias); the kernel
-// is (2 r + 1) x (2 r + 1) taps of the hardware's 2x2 compare, r = params.y.
+// directional), 2 a point light's six 90-degree maps side by side in one
+// atlas, 3 across and 2 up (face f in column f mod 3, row f / 3), so one
+// sampler serves the six and a fragment runs one face's taps.
+// Each map: world -> [0,1] texture space by u_shadow_matrix[face] (a face's
+// into its cell); the position is pushed along the geometric normal, toward
+// the side the eye sees, by u_shadow_params.z times its clip w (1.5 texels'
+// width at the point: w is 1 for an orthographic map, the distance along the
+// light's axis for a perspective one) before the lookup (normal-offset
+// bias); the kernel is (2 r + 1) x (2 r + 1) taps of the hardware's 2x2
+// compare, r = params.y, a face's taps kept half a texel inside its cell so
+// none reads a neighbouring face.
 uniform int u_shadow_kind;
 uniform mat4 u_shadow_matrix[6];
-uniform vec4 u_shadow_params; // x: 1 / map size, y: kernel radius, z: normal offset per unit w
+// x, w: a texel's width and height in [0,1]; y: kernel radius; z: normal offset per unit w
+uniform vec4 u_shadow_params;
 uniform sampler2DShadow u_shadow_map;
-uniform sampler2DShadow u_shadow_face1;
-uniform sampler2DShadow u_shadow_face2;
-uniform sampler2DShadow u_shadow_face3;
-uniform sampler2DShadow u_shadow_face4;
-uniform sampler2DShadow u_shadow_face5;
-
-float shadow_tap(int face, vec3 c)
-{
-    // samplers cannot be indexed in GLSL 1.10: one branch per face
-    if (face == 0) return shadow2D(u_shadow_map, c).r;
-    if (face == 1) return shadow2D(u_shadow_face1, c).r;
-    if (face == 2) return shadow2D(u_shadow_face2, c).r;
-    if (face == 3) return shadow2D(u_shadow_face3, c).r;
-    if (face == 4) return shadow2D(u_shadow_face4, c).r;
-    return shadow2D(u_shadow_face5, c).r;
-}
 
 // The filtered visibility of light i (1 lit): maps carry no colour.
 float pcf_visibility(int i)
@@ -36,6 +25,9 @@ float pcf_visibility(int i)
         return 1.0; // a shadowed pass lights one light, so i is always that one
     vec3 ng = normalize(cross(dFdx(v_world), dFdy(v_world)));
     vec4 light = u_lights[4 * i];
+    vec2 texel = u_shadow_params.xw;
+    // one map: no clamp of our own (its edge clamp is the same)
+    vec2 lo = vec2(-1.0), hi = vec2(2.0);
     int face = 0;
     if (u_shadow_kind == 2) {
         // the face is the major axis of the direction from the light
@@ -44,6 +36,12 @@ float pcf_visibility(int i)
         if (a.x >= a.y && a.x >= a.z) face = d.x > 0.0 ? 0 : 1;
         else if (a.y >= a.z) face = d.y > 0.0 ? 2 : 3;
         else face = d.z > 0.0 ? 4 : 5;
+        // its cell, less half a texel each side: the hardware's 2x2 compare
+        // at a texel's centre gives the texel beyond no weight
+        float row = face >= 3 ? 1.0 : 0.0;
+        vec2 cell = vec2(1.0 / 3.0, 0.5);
+        lo = vec2(float(face) - 3.0 * row, row) * cell + 0.5 * texel;
+        hi = lo + cell - texel;
     }
     // the side the eye sees; turned away from the light, it is in its own
     // shadow (no offset point past a thin caster may say otherwise)
@@ -65,7 +63,8 @@ float pcf_visibility(int i)
     float sum = 0.0, n = 0.0;
     for (int y = -r; y <= r; y++)
         for (int x = -r; x <= r; x++) {
-            sum += shadow_tap(face, vec3(t.xy + vec2(float(x), float(y)) * u_shadow_params.x, t.z));
+            vec2 at = clamp(t.xy + vec2(float(x), float(y)) * texel, lo, hi);
+            sum += shadow2D(u_shadow_map, vec3(at, t.z)).r;
             n += 1.0;
         }
     return sum / n;

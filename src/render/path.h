@@ -43,15 +43,15 @@ typedef struct stin__translucent_locs {
 /* GLSL programs of one tier. */
 enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_VOLUME, STIN__PROG_COUNT };
 #define STIN__LIGHTS_PER_PASS 8
-#define STIN__SHADOW_SAMPLERS 6 /* map-pcf: one map, or a point light's six faces */
 typedef struct stin__program {
     GLuint name;
     GLint u_model, u_view_proj, u_normal_matrix, u_eye, u_ambient, u_albedo, u_specular,
         u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
     /* surface chunks (surface/glsl.c): samplers and (scale, bias, min, max steps) */
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
-    /* map-pcf chunk (shadow/map_pcf.c) */
-    GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_maps[STIN__SHADOW_SAMPLERS];
+    /* map-pcf chunk (shadow/map_pcf.c): one sampler, a light's map or a
+     * point light's atlas of six faces; the screen mask's chunk reuses them */
+    GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_map;
     /* the translucent-shadows lookup chunks (translucent/translucent.c): deep's even/odd
      * layers, coloured's transmittance and nearest-depth atlases */
     stin__translucent_locs deep, coloured;
@@ -114,6 +114,14 @@ const stin__path *stin__glsl_path(void);
  * displacement through dl (NULL: the program has no displacement chunk). */
 void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__displace_locs *dl,
                                 const stin__draw *d);
+/* Which draws a light's depth pass draws (map-pcf's point-light faces:
+ * only the casters whose bounds meet the face's frustum); NULL keeps every
+ * caster. */
+typedef int (*stin__draw_keep_fn)(const stin_context *ctx, const stin__draw *d, const void *user);
+/* The GLSL path's depth pass (path->depth) over the casters keep accepts;
+ * returns how many it drew. */
+uint32_t stin__glsl_depth_kept(stin_context *ctx, const float view[16], const float proj[16],
+                               stin__draw_keep_fn keep, const void *user);
 /* The chosen lighting technique's path. */
 const stin__path *stin__path_of(const stin_context *ctx);
 /* A material checked and its defaults applied, into *out (render/material.c;

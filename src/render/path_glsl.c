@@ -29,12 +29,7 @@ static const stin__uniform_name program_uniforms[] = {
     STIN__UNIFORM(stin__program, u_shadow_kind, "u_shadow_kind"),
     STIN__UNIFORM(stin__program, u_shadow_matrix, "u_shadow_matrix"),
     STIN__UNIFORM(stin__program, u_shadow_params, "u_shadow_params"),
-    STIN__UNIFORM(stin__program, u_shadow_maps[0], "u_shadow_map"),
-    STIN__UNIFORM(stin__program, u_shadow_maps[1], "u_shadow_face1"),
-    STIN__UNIFORM(stin__program, u_shadow_maps[2], "u_shadow_face2"),
-    STIN__UNIFORM(stin__program, u_shadow_maps[3], "u_shadow_face3"),
-    STIN__UNIFORM(stin__program, u_shadow_maps[4], "u_shadow_face4"),
-    STIN__UNIFORM(stin__program, u_shadow_maps[5], "u_shadow_face5"),
+    STIN__UNIFORM(stin__program, u_shadow_map, "u_shadow_map"),
     STIN__UNIFORM(stin__program, u_color, "u_color"),
 };
 
@@ -661,12 +656,14 @@ static void glsl_end(stin_context *ctx)
             GL(ctx, DisableVertexAttribArray)((GLuint)i);
 }
 
-/* Every draw's depth through the volume program (shadow-map casters). */
-static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16])
+/* The casters' depth through the volume program (shadow-map casters):
+ * every one, or those keep accepts. */
+uint32_t stin__glsl_depth_kept(stin_context *ctx, const float view[16], const float proj[16],
+                               stin__draw_keep_fn keep, const void *user)
 {
     const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
     float view_proj[16];
-    uint32_t i;
+    uint32_t i, drawn = 0;
     stin__mat4_mul(view_proj, proj, view);
     GL(ctx, UseProgram)(p->name);
     ctx->glsl->current = NULL; /* the lit program is no longer current */
@@ -677,10 +674,20 @@ static void glsl_depth(stin_context *ctx, const float view[16], const float proj
     }
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, view_proj);
     ctx->bound_mesh = 0xffffffffu;
-    for (i = 0; i < ctx->draw_count; i++)
-        if (ctx->draws[ctx->draw_order[i]].shadow_caster)
-            submit(ctx, p, &ctx->draws[ctx->draw_order[i]]);
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (d->shadow_caster && (!keep || keep(ctx, d, user))) {
+            submit(ctx, p, d);
+            drawn++;
+        }
+    }
     ctx->bound_mesh = 0xffffffffu;
+    return drawn;
+}
+
+static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16])
+{
+    (void)stin__glsl_depth_kept(ctx, view, proj, NULL, NULL);
 }
 
 /* CSG resolve (csg/goldfeather.c): geometry alone through the volume

@@ -207,5 +207,5 @@ void stin__mask_uniforms(stin_context *ctx, const stin__program *p)
     params[1] = 1.0f / (float)ctx->mask->height;
     params[2] = params[3] = 0.0f;
     GL(ctx, Uniform4fv)(p->u_shadow_params, 1, params);
-    GL(ctx, Uniform1i)(p->u_shadow_maps[0], ctx->mask->unit);
+    GL(ctx, Uniform1i)(p->u_shadow_map, ctx->mask->unit);
 }

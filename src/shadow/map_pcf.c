@@ -4,8 +4,13 @@
  * Every spot and directional light gets a depth map (an FBO with a depth
  * texture, compare mode LEQUAL, LINEAR: each tap is the hardware's 2x2 PCF)
  * drawn before the camera's passes; a point light gets six 90-degree maps,
- * drawn just before its lit pass into six shared textures, and the shader
- * picks the face by the major axis of the light-to-point direction. The lit
+ * drawn just before its lit pass into the cells of one shared atlas (3 x 2
+ * faces: one sampler, so a fragment pays one face's taps, not every face's
+ * behind a branch), and the shader picks the face by the major axis of the
+ * light-to-point direction and keeps its taps inside that face's cell. A
+ * face gets only the casters whose bounds meet its frustum (the rest would
+ * be clipped away), and a face no visible draw's bounds reach is not drawn
+ * at all (no visible point picks it). The lit
  * pass's shadow_pcf.glsl chunk shadows a point whose side the eye sees turns
  * away from the light, else pushes it along its geometric normal toward the
  * eye (normal-offset bias: 1.5 texels' width at the point, so a wide depth
@@ -15,10 +20,12 @@
 #include "internal.h"
 
 struct stin__map_pcf_state {
-    GLuint textures[STIN__MAP_SLOTS];
+    GLuint textures[STIN__MAX_LIGHTS];
+    GLuint atlas;         /* a point light's six faces, ATLAS_COLUMNS x ATLAS_ROWS cells */
     GLuint fbo;
-    uint32_t size;
-    int unit;             /* first sampler unit (STIN__SHADOW_SAMPLERS of them) */
+    uint32_t size;        /* a spot or directional map's texels a side */
+    uint32_t face_size;   /* a face's: size, halved while the atlas exceeds the limit */
+    int unit;             /* the sampler's unit */
     unsigned char valid[STIN__MAX_LIGHTS];
     float matrix[STIN__MAP_SLOTS][16];   /* world -> [0,1] map space */
     float normal_offset[STIN__MAP_SLOTS]; /* world units per unit clip w: 1.5 texels */
@@ -34,11 +41,14 @@ size_t stin__map_pcf_state_bytes(const stin_desc *d)
 }
 
 #define FACE_SLOT STIN__FACE_SLOT
+/* Face f's cell: column f % 3, row f / 3 (shadow_pcf.glsl's clamp agrees). */
+#define ATLAS_COLUMNS 3u
+#define ATLAS_ROWS 2u
 
-static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t size)
+static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t w, uint32_t h)
 {
     GL(ctx, GenTextures)(1, t);
-    stin__rt_shadow_map(ctx, *t, (int)size, (int)size);
+    stin__rt_shadow_map(ctx, *t, (int)w, (int)h);
 }
 
 static stin_result pcf_init(stin_context *ctx)
@@ -48,13 +58,17 @@ static stin_result pcf_init(stin_context *ctx)
     if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
         size = (uint32_t)ctx->caps.max_texture_size;
     m->size = size;
+    m->face_size = size;
+    while (ctx->caps.max_texture_size > 0 && m->face_size > 1u &&
+           ATLAS_COLUMNS * m->face_size > (uint32_t)ctx->caps.max_texture_size)
+        m->face_size /= 2u; /* three faces across must fit */
     m->unit = ctx->sel.shadow_unit;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (i = 0; i < ctx->desc.max_lights; i++)
-        create_depth_texture(ctx, &m->textures[i], size);
-    for (i = 0; i < STIN__CUBE_FACES; i++)
-        create_depth_texture(ctx, &m->textures[FACE_SLOT + i], size);
+        create_depth_texture(ctx, &m->textures[i], size, size);
+    create_depth_texture(ctx, &m->atlas, ATLAS_COLUMNS * m->face_size,
+                         ATLAS_ROWS * m->face_size);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, GenFramebuffers)(1, &m->fbo);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
@@ -69,43 +83,59 @@ static void pcf_release(stin_context *ctx)
 {
     struct stin__map_pcf_state *m = ctx->map_pcf;
     uint32_t i;
-    for (i = 0; i < STIN__MAP_SLOTS; i++)
+    for (i = 0; i < STIN__MAX_LIGHTS; i++)
         if (m->textures[i])
             GL(ctx, DeleteTextures)(1, &m->textures[i]);
+    if (m->atlas)
+        GL(ctx, DeleteTextures)(1, &m->atlas);
     if (m->fbo)
         GL(ctx, DeleteFramebuffers)(1, &m->fbo);
     stin__memzero(m, sizeof *m);
 }
 
-static void draw_map(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
-                     const float view[16], const float proj[16])
+/* Where a map pass draws: a texture, the rectangle of it, whether to
+ * clear the texture first (an atlas is cleared once for all its faces),
+ * and which of the casters (keep NULL: all). */
+typedef struct map_target {
+    GLuint texture;
+    int rect[4];
+    int clear;
+    stin__draw_keep_fn keep;
+    const void *user;
+} map_target;
+
+/* The casters drawn into the map's rectangle from the light (view, proj),
+ * the texture cleared first where asked; the frame's framebuffer and
+ * viewport back after. Returns the draws drawn. */
+static uint32_t draw_map(stin_context *ctx, const map_target *t, const stin_light_desc *l,
+                         const float view[16], const float proj[16])
 {
     const struct stin__map_pcf_state *m = ctx->map_pcf;
     stin__pass_state ps = stin__pass_defaults;
+    uint32_t drawn;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                  m->textures[slot], 0);
-    GL(ctx, Viewport)(0, 0, (GLsizei)m->size, (GLsizei)m->size);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t->texture,
+                                  0);
+    GL(ctx, Viewport)(t->rect[0], t->rect[1], t->rect[2], t->rect[3]);
     ps.depth_test = 1;
     ps.color_write = 0;
     ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor, &ps.offset_units);
     stin__pass_apply(ctx, &ps);
-    GL(ctx, ClearDepth)(1.0);
-    GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
-    {
-        const int map_vp[4] = {0, 0, (int)m->size, (int)m->size};
-        if (stin__casters_cast(ctx, stin__path_of(ctx), view, proj, map_vp, m->fbo, 0,
-                               ps.polygon_offset ? ps.offset_factor : 0.0f,
-                               ps.polygon_offset ? ps.offset_units : 0.0f))
-            stin__pass_apply(ctx, &ps); /* the casters' state again */
+    if (t->clear) {
+        GL(ctx, ClearDepth)(1.0);
+        GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
     }
-    stin__path_of(ctx)->depth(ctx, view, proj);
+    if (stin__casters_cast(ctx, stin__path_of(ctx), view, proj, t->rect, m->fbo, 0,
+                           ps.polygon_offset ? ps.offset_factor : 0.0f,
+                           ps.polygon_offset ? ps.offset_units : 0.0f))
+        stin__pass_apply(ctx, &ps); /* the casters' state again */
+    drawn = stin__glsl_depth_kept(ctx, view, proj, t->keep, t->user);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
-    stin__light_window_matrix(ctx->map_pcf->matrix[slot], view, proj); /* world -> [0,1] */
     ctx->stats.passes++;
+    return drawn;
 }
 
 /* 1.5 texels' width in world units per unit of the map's clip w: a texel
@@ -132,55 +162,199 @@ static void pcf_prepass(stin_context *ctx)
             continue; /* its faces are drawn before its own pass */
         if (!stin__light_camera(ctx, l, view, proj, &n, &f, m->size))
             continue;
-        draw_map(ctx, i, l, view, proj);
+        {
+            const map_target t = {m->textures[i], {0, 0, (int)m->size, (int)m->size}, 1, NULL,
+                                  NULL};
+            (void)draw_map(ctx, &t, l, view, proj);
+        }
+        stin__light_window_matrix(m->matrix[i], view, proj); /* world -> [0,1] */
         m->normal_offset[i] = texel_offset(proj, m->size);
         m->valid[i] = 1;
     }
     stin__gl_check_errors(ctx, "pcf maps");
 }
 
-/* A point light's six faces, just before its pass; 1 if drawn. */
-static int draw_faces(stin_context *ctx, uint32_t li)
+/* ---- a point light's faces ------------------------------------------------ */
+
+/* The eight corners of draw d's bounds in world space; 0 where its bounds
+ * say nothing of what it draws (displaced in the vertex stage). */
+static int draw_corners(const stin_context *ctx, const stin__draw *d, float out[24])
 {
-    const stin_light_desc *l = &ctx->lights[li];
-    int face, any = 0;
-    for (face = 0; face < STIN__CUBE_FACES; face++) {
-        float view[16], proj[16];
-        uint32_t slot = FACE_SLOT + (uint32_t)face;
-        stin__light_cube_face(ctx, l->position, face, view, proj);
-        draw_map(ctx, slot, l, view, proj);
-        /* every face is 90 degrees: one offset per unit w serves the six */
-        ctx->map_pcf->normal_offset[FACE_SLOT] = texel_offset(proj, ctx->map_pcf->size);
-        any = 1;
+    const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
+    int c, k;
+    if (stin__displace_active(ctx, &d->material))
+        return 0;
+    for (c = 0; c < 8; c++) {
+        float p[3];
+        for (k = 0; k < 3; k++)
+            p[k] = (c >> k) & 1 ? info->bounds_max[k] : info->bounds_min[k];
+        stin__mat4_transform_point(d->transform, p, out + 3 * c);
     }
-    return any;
+    return 1;
+}
+
+/* 1 unless every corner lies outside one of the n planes (a x + b y + c z
+ * + d >= 0 inside): the box may meet the convex region they bound. The
+ * margin keeps a box grazing a plane in (being conservative is exact
+ * here: a caster the GPU clips anyway draws nothing). */
+static int box_meets(const float corners[24], const float *planes, int n)
+{
+    int p, c;
+    for (p = 0; p < n; p++) {
+        const float *q = planes + 4 * p, *v;
+        float scale = stin__sqrtf(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        int outside = 0;
+        if (!(scale > 0.0f))
+            continue; /* no plane (an infinite far plane) */
+        for (c = 0, v = corners; c < 8; c++, v += 3)
+            if (q[0] * v[0] + q[1] * v[1] + q[2] * v[2] + q[3] <
+                -1e-4f * (scale + (q[3] < 0.0f ? -q[3] : q[3])))
+                outside++;
+        if (outside == 8)
+            return 0;
+    }
+    return 1;
+}
+
+/* Face f's four side planes (its 90-degree pyramid from the light; near
+ * and far left out: the depth range covers every caster): inside where the
+ * face's axis component of p - light is at least the other two's size. */
+static void face_planes(const float light[3], int face, float planes[4][4])
+{
+    int axis = face / 2, i, k;
+    float sign = face % 2 ? -1.0f : 1.0f;
+    for (i = 0; i < 4; i++) {
+        int other = (axis + 1 + i / 2) % 3;
+        float n[3] = {0, 0, 0};
+        n[axis] = sign;
+        n[other] = i % 2 ? -1.0f : 1.0f;
+        for (k = 0; k < 3; k++)
+            planes[i][k] = n[k];
+        planes[i][3] = -(n[0] * light[0] + n[1] * light[1] + n[2] * light[2]);
+    }
+}
+
+/* The camera's six frustum planes (Gribb-Hartmann rows of view_proj). */
+static void camera_planes(const stin_context *ctx, float planes[6][4])
+{
+    const float *vp = ctx->view_proj;
+    int p, k;
+    for (p = 0; p < 6; p++)
+        for (k = 0; k < 4; k++) /* row 3 +/- row p/2 */
+            planes[p][k] = vp[4 * k + 3] + (p % 2 ? -vp[4 * k + p / 2] : vp[4 * k + p / 2]);
+}
+
+/* The faces (bit f) some visible point may pick: those a draw's bounds
+ * meet inside the camera's frustum. A draw whose bounds tell nothing, or
+ * the CSG products (their faces are not the frame's draws), keep all six. */
+static unsigned faces_seen(const stin_context *ctx, const float light[3])
+{
+    float cam[6][4], planes[STIN__CUBE_FACES][4][4];
+    unsigned seen = 0;
+    uint32_t i;
+    int face;
+    if (stin__casters_wanted(ctx))
+        return 0x3fu;
+    camera_planes(ctx, cam);
+    for (face = 0; face < STIN__CUBE_FACES; face++)
+        face_planes(light, face, planes[face]);
+    for (i = 0; i < ctx->draw_count && seen != 0x3fu; i++) {
+        float corners[24];
+        if (!draw_corners(ctx, &ctx->draws[i], corners))
+            return 0x3fu;
+        if (!box_meets(corners, cam[0], 6))
+            continue;
+        for (face = 0; face < STIN__CUBE_FACES; face++)
+            if (box_meets(corners, planes[face][0], 4))
+                seen |= 1u << face;
+    }
+    return seen;
+}
+
+/* A face's casters: those whose bounds meet its pyramid (user: its planes). */
+static int in_face(const stin_context *ctx, const stin__draw *d, const void *user)
+{
+    float corners[24];
+    if (!draw_corners(ctx, d, corners))
+        return 1;
+    return box_meets(corners, (const float *)user, 4);
+}
+
+/* world -> [0,1] window coordinates of face f's cell in the atlas: the
+ * face's window matrix scaled and moved into its cell (rows 0 and 1). */
+static void into_cell(float m[16], int face)
+{
+    float sx = 1.0f / (float)ATLAS_COLUMNS, sy = 1.0f / (float)ATLAS_ROWS;
+    float ox = (float)((unsigned)face % ATLAS_COLUMNS) * sx;
+    float oy = (float)((unsigned)face / ATLAS_COLUMNS) * sy;
+    int c;
+    for (c = 0; c < 4; c++) {
+        m[4 * c + 0] = sx * m[4 * c + 0] + ox * m[4 * c + 3];
+        m[4 * c + 1] = sy * m[4 * c + 1] + oy * m[4 * c + 3];
+    }
+}
+
+/* A point light's faces, just before its pass, each into its cell of the
+ * atlas with only its own casters; the cells of faces no visible point
+ * picks are left cleared (the lookups' clamp keeps every tap of a picked
+ * face inside its own cell). The whole atlas is cleared once: on llvmpipe
+ * a clear scissored to each cell cost more than the faces' drawing. */
+static void draw_faces(stin_context *ctx, uint32_t li)
+{
+    struct stin__map_pcf_state *m = ctx->map_pcf;
+    const stin_light_desc *l = &ctx->lights[li];
+    unsigned seen = faces_seen(ctx, l->position);
+    int face, s = (int)m->face_size, first = 1;
+    for (face = 0; face < STIN__CUBE_FACES; face++) {
+        float view[16], proj[16], planes[4][4];
+        map_target t;
+        if (!(seen & (1u << face)))
+            continue;
+        face_planes(l->position, face, planes);
+        t.texture = m->atlas;
+        t.clear = first;
+        first = 0;
+        t.rect[0] = (face % (int)ATLAS_COLUMNS) * s;
+        t.rect[1] = (face / (int)ATLAS_COLUMNS) * s;
+        t.rect[2] = t.rect[3] = s;
+        t.keep = in_face;
+        t.user = planes[0];
+        stin__light_cube_face(ctx, l->position, face, view, proj);
+        ctx->stats.shadows.map_face_casters += draw_map(ctx, &t, l, view, proj);
+        ctx->stats.shadows.map_faces++;
+        stin__light_window_matrix(m->matrix[FACE_SLOT + (uint32_t)face], view, proj);
+        into_cell(m->matrix[FACE_SLOT + (uint32_t)face], face);
+        /* every face is 90 degrees: one offset per unit w serves the six */
+        m->normal_offset[FACE_SLOT] = texel_offset(proj, m->face_size);
+    }
 }
 
 /* The shadow test's uniforms on program p for the light being shaded:
- * kind 0 (none), 1 (the light's map) or 2 (a point light's faces). Every
- * shadow sampler sits on a unit of its own, used or not: two samplers of
- * different types on one unit are an error at draw time. */
+ * kind 0 (none), 1 (the light's map) or 2 (a point light's atlas). The
+ * one sampler is set on its unit even with no map: a sampler of another
+ * type left on a unit it shares is an error at draw time. */
 static void pcf_uniforms(stin_context *ctx, const stin__program *p)
 {
     const struct stin__map_pcf_state *m = ctx->map_pcf;
-    float params[4] = {0, 0, 0, 0}, mats[STIN__SHADOW_SAMPLERS * 16];
-    int i, kind = m->kind, count = kind == 2 ? STIN__SHADOW_SAMPLERS : 1;
+    float params[4] = {0, 0, 0, 0}, mats[STIN__CUBE_FACES * 16];
+    int i, kind = m->kind, count = kind == 2 ? STIN__CUBE_FACES : 1;
     uint32_t li = m->light;
     if (p->u_shadow_kind < 0)
         return;
     GL(ctx, Uniform1i)(p->u_shadow_kind, kind);
-    for (i = 0; i < STIN__SHADOW_SAMPLERS; i++)
-        GL(ctx, Uniform1i)(p->u_shadow_maps[i], m->unit + i);
+    GL(ctx, Uniform1i)(p->u_shadow_map, m->unit);
     if (kind == 0)
         return;
     for (i = 0; i < count; i++) {
         uint32_t slot = kind == 2 ? FACE_SLOT + (uint32_t)i : li;
         stin__memcopy(mats + 16 * i, m->matrix[slot], 16 * sizeof(float));
-        stin__bind_unit(ctx, m->unit + i, GL_TEXTURE_2D, m->textures[slot]);
     }
+    stin__bind_unit(ctx, m->unit, GL_TEXTURE_2D, kind == 2 ? m->atlas : m->textures[li]);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, UniformMatrix4fv)(p->u_shadow_matrix, count, GL_FALSE, mats);
-    params[0] = 1.0f / (float)m->size;
+    /* a texel's width (x) and height (w) in the texture's [0,1] */
+    params[0] = 1.0f / (float)(kind == 2 ? ATLAS_COLUMNS * m->face_size : m->size);
+    params[3] = 1.0f / (float)(kind == 2 ? ATLAS_ROWS * m->face_size : m->size);
     params[1] = (float)(ctx->lights[li].pcf_kernel / 2u);
     params[2] = m->normal_offset[kind == 2 ? FACE_SLOT : li];
     GL(ctx, Uniform4fv)(p->u_shadow_params, 1, params);
@@ -193,7 +367,12 @@ static void pcf_light(stin_context *ctx, const stin__path *path, uint32_t li, st
     struct stin__map_pcf_state *m = ctx->map_pcf;
     const stin_light_desc *l = &ctx->lights[li];
     m->light = li;
-    m->kind = l->type == STIN_LIGHT_POINT ? (draw_faces(ctx, li) ? 2 : 0) : (m->valid[li] ? 1 : 0);
+    if (l->type == STIN_LIGHT_POINT) {
+        draw_faces(ctx, li);
+        m->kind = 2;
+    } else {
+        m->kind = m->valid[li] ? 1 : 0;
+    }
     shade(ctx, path, l, 1.0f);
     m->kind = 0;
 }

@@ -10,7 +10,12 @@
  * majority: at least 100 shadowed pixels are compared and at most 2% of
  * them may come out lit.
  * Bound (issue 4): at 2048x2048 at most 1% on the spheres scenes; other sizes
- * are printed as INFO lines.
+ * are printed as INFO lines, except under a point light (spheres-18k, -76k,
+ * -174k), where 512 and 1024 must stay within 0.05% (issue 36, "face
+ * seams"): its six faces share one atlas, and a kernel's taps reaching over
+ * a face's edge into the next cell read another face's depths; with the
+ * shader's clamp to the cell taken out, spheres-18k's 512 and 1024 differ
+ * on 0.27-0.83% (2048 on 0.13%).
  */
 #include "aov.h"
 #include "capture.h"
@@ -100,6 +105,11 @@ static void one(pcf_case *c, stin_tier tier, uint32_t size, int kernel)
     if (cap.counters.gl_violations || cap.counters.gl_errors || cap.log_errors)
         report(c->r, "FAIL", name, "%u profile violations, %u GL errors (last log: %s)",
                cap.counters.gl_violations, cap.counters.gl_errors, cap.last_error);
+    else if (size != 2048 && c->s->lights[0].type == SCENE_LIGHT_POINT)
+        report(c->r, f <= 0.0005 ? "PASS" : "FAIL", name,
+               "face seams: visibility differs on %.3f%% of %ld reachable pixels outside the "
+               "kernel's penumbra band (at most 0.05%%: no tap reads a neighbouring face)",
+               100.0 * f, compared);
     else if (size != 2048 || !strstr(c->scene_name, "spheres"))
         printf("INFO %s/%s/%s: visibility differs on %.3f%% of %ld reachable pixels outside the "
                "penumbra band\n", c->r->platform_name, c->r->profile_name, name, 100.0 * f,

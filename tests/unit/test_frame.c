@@ -1087,12 +1087,69 @@ static void test_translucent_fallback_without_shadows(void **state)
     translucent = STIN_TECH_NONE;
 }
 
+/* One frame of map-pcf: a point light at the origin and the quad (0.2 a
+ * side) at each of n corners, under the identity camera (its view the
+ * cube [-1, 1]^3). */
+static stin_frame_stats pcf_point_frame(const float (*at)[3], int n)
+{
+    stin_light_desc l;
+    int i;
+    memset(&l, 0, sizeof l);
+    begin();
+    assert_int_equal(stin_add_light(ctx, &l), STIN_OK);
+    for (i = 0; i < n; i++) {
+        float m[16];
+        stin__mat4_identity(m);
+        m[0] = m[5] = m[10] = 0.2f;
+        m[12] = at[i][0];
+        m[13] = at[i][1];
+        m[14] = at[i][2];
+        assert_int_equal(stin_draw(ctx, quad, m, NULL), STIN_OK);
+    }
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    return stin_query_frame_stats(ctx);
+}
+
+/* map-pcf under a point light (issue 36): its six faces share one atlas,
+ * each drawn with only the casters whose bounds meet its frustum, and a
+ * face no visible draw reaches is not drawn at all. A quad on each side
+ * of the light, all in view: six faces of one caster each (36 before).
+ * The +x one moved out of view: its face is skipped (no visible point
+ * picks it), the five others drawn. A visible receiver on +x again with
+ * the out-of-view quad beyond it: that face holds both, since a caster
+ * the camera does not see still shadows what it does. */
+static void test_pcf_point_faces_culled(void **state)
+{
+    float at[7][3] = {{0.5f, -0.1f, 0.0f},  {-0.7f, -0.1f, 0.0f}, {-0.1f, 0.5f, 0.0f},
+                      {-0.1f, -0.7f, 0.0f}, {-0.1f, -0.1f, 0.6f}, {-0.1f, -0.1f, -0.6f},
+                      {2.0f, -0.1f, 0.0f}};
+    stin_frame_stats st;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_MAP_PCF;
+    create_profile(FAKE_GL45_CORE, 4, 8);
+    assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_SHADOWS).technique,
+                     STIN_TECH_SHADOWS_MAP_PCF);
+    st = pcf_point_frame((const float(*)[3])at, 6);
+    assert_int_equal(st.shadows.map_faces, 6);
+    assert_int_equal(st.shadows.map_face_casters, 6);
+    /* the +x quad out of view: nothing visible reads +x */
+    st = pcf_point_frame((const float(*)[3])at + 1, 6);
+    assert_int_equal(st.shadows.map_faces, 5);
+    assert_int_equal(st.shadows.map_face_casters, 5);
+    /* a visible receiver on +x and the out-of-view caster beyond it */
+    st = pcf_point_frame((const float(*)[3])at, 7);
+    assert_int_equal(st.shadows.map_faces, 6);
+    assert_int_equal(st.shadows.map_face_casters, 7);
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 #define TEST(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
 
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         TEST(test_call_order_errors),
+        TEST(test_pcf_point_faces_culled),
         TEST(test_translucent_fallback_without_shadows),
         TEST(test_bad_frame_descs),
         TEST(test_bad_lights_are_rejected),

@@ -470,10 +470,10 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
                              t != STIN_TECH_SHADOWS_OFF);
 }
 
-/* A GL2 part with 8 fragment samplers: map-pcf (6 maps) and albedo leave
- * one unit, so pom, parallax and normal (2 more each) are passed over for
- * plain, naming the limit;
- * with 6 units map-pcf itself cannot be forced. Units are placed after
+/* A GL2 part with 3 fragment samplers: map-pcf (one sampler: a light's map
+ * or a point light's atlas) and albedo leave one unit, so pom, parallax and
+ * normal (2 more each) are passed over for plain, naming the limit;
+ * with 1 unit map-pcf itself cannot be forced. Units are placed after
  * the albedo (unit 0) in feature order. */
 /* displace conflicts with volume (CPU silhouettes of the undisplaced mesh):
  * beside auto volumes it steps down (logged reason), forcing it moves the
@@ -527,8 +527,8 @@ static void test_displacement_beside_volumes(void **state)
 }
 
 /* A shadows set-up failure under vdsm walks the table's chain down: past
- * volume beside displacement (a conflict), past map-pcf where its six
- * samplers do not fit after the surface's units, past the fixed-function
+ * volume beside displacement (a conflict), past map-pcf where its
+ * sampler does not fit after the surface's units, past the fixed-function
  * maps always (GLSL lighting), to off at the end. */
 static void test_fallback_walks_the_chain(void **state)
 {
@@ -545,7 +545,7 @@ static void test_fallback_walks_the_chain(void **state)
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
     gl45.present &= ~BIT(STENCIL);
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
-    sel.unit_limit = sel.shadow_unit + 5; /* one sampler short */
+    sel.unit_limit = sel.shadow_unit; /* no unit left for its sampler */
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
     sel.choice[STIN_FEATURE_SHADOWS].technique = STIN_TECH_SHADOWS_OFF; /* nothing below */
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
@@ -591,30 +591,36 @@ static void test_texture_unit_budget(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
     assert_int_equal(sel.shadow_spare_units, 0);
     assert_int_equal(sel.units_used, 3);
+    /* map-pcf forced beside pom on 8 units: one sampler leaves room for both */
     c.max_texture_image_units = 8;
     forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
+    assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_POM);
+    assert_int_equal(sel.shadow_unit, 3);
+    assert_int_equal(sel.translucent_unit, 4); /* coloured's two right after the one */
+    c.max_texture_image_units = 3;
     assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_MAP_PCF);
     assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_PLAIN);
     assert_true(sel.choice[STIN_FEATURE_SURFACE].fell_back);
-    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "needs 9 texture units"));
-    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "the context has 8"));
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "needs 4 texture units"));
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SURFACE].reason, "the context has 3"));
     assert_int_equal(sel.shadow_unit, 1);
-    assert_true(sel.units_used <= 8);
+    assert_true(sel.units_used <= 3);
     /* a forced surface keeps its units: the automatic shadows walk past map-pcf */
     c.present &= ~BIT(STENCIL);
     forced[STIN_FEATURE_SHADOWS] = STIN_TECH_NONE;
     forced[STIN_FEATURE_SURFACE] = STIN_TECH_SURFACE_NORMAL;
     assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_OFF);
-    assert_non_null(strstr(sel.choice[STIN_FEATURE_SHADOWS].reason, "map-pcf needs 9"));
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SHADOWS].reason, "map-pcf needs 4"));
     /* too few units for the forced technique itself: an error naming the limit */
-    c.max_texture_image_units = 6;
+    c.max_texture_image_units = 1;
     forced[STIN_FEATURE_SURFACE] = STIN_TECH_NONE;
     forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
     assert_int_equal(stin__select(&c, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
-    assert_non_null(strstr(msg, "map-pcf needs 7 texture units"));
+    assert_non_null(strstr(msg, "map-pcf needs 2 texture units"));
 }
 
 int main(void)

@@ -151,6 +151,9 @@ static void print_frame(const stin_frame_stats *stats, const scene *s, double ms
     }
     if (st.shadows.map_size)
         printf("shadow maps: %u texels a side\n", st.shadows.map_size);
+    if (st.shadows.map_faces)
+        printf("point-light faces: %u drawn, %u casters drawn into them\n",
+               st.shadows.map_faces, st.shadows.map_face_casters);
     if (st.shadows.zpass_casters + st.shadows.zfail_casters)
         printf("shadow volumes: %u triangles, %u casters z-pass, %u z-fail, %u extruded by "
                "the GPU (last output)\n",
