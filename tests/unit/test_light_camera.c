@@ -182,12 +182,36 @@ static void test_spot_fits_the_draws(void **state)
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
 }
 
+/* The map passes' polygon offset: (0, 0) means the default unless the light
+ * asks for its offset exactly, where (0, 0) turns it off and other values
+ * are used as given. */
+static void test_map_offset_default_and_exact(void **state)
+{
+    stin_light_desc l;
+    float factor, units;
+    (void)state;
+    memset(&l, 0, sizeof l);
+    assert_int_equal(stin__map_offset(&l, &factor, &units), 1);
+    assert_true(factor == 1.1f && units == 4.0f);
+    l.shadow_offset[0] = 2.0f;
+    l.shadow_offset[1] = 3.0f;
+    assert_int_equal(stin__map_offset(&l, &factor, &units), 1);
+    assert_true(factor == 2.0f && units == 3.0f);
+    l.shadow_offset_exact = 1;
+    assert_int_equal(stin__map_offset(&l, &factor, &units), 1);
+    assert_true(factor == 2.0f && units == 3.0f);
+    l.shadow_offset[0] = l.shadow_offset[1] = 0.0f;
+    assert_int_equal(stin__map_offset(&l, &factor, &units), 0);
+    assert_true(factor == 0.0f && units == 0.0f);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_directional_map_moves_by_whole_texels),
         cmocka_unit_test(test_unsnapped_map_swims),
         cmocka_unit_test(test_spot_fits_the_draws),
+        cmocka_unit_test(test_map_offset_default_and_exact),
     };
     return cmocka_run_group_tests(tests, setup, teardown);
 }
