@@ -25,6 +25,7 @@ void stin__volume_extrude_init(stin_context *ctx)
     const char *no_shadow[2];
     char msg[160];
     v->extrude_prog = v->count_query = 0;
+    v->cpu_only = 0;
     if (!ctx->volume_vao || !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER)) ||
         (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_CPU))
         return;
@@ -64,6 +65,12 @@ void stin__volume_extrude_release(stin_context *ctx)
     stin__mesh_adjacency_use(ctx, NULL);
 }
 
+int stin__volume_extrude_enable(stin_context *ctx, int on)
+{
+    ctx->volume->cpu_only = !on;
+    return ctx->volume->extrude_prog != 0;
+}
+
 static void draw_mode(stin_context *ctx, const stin__mesh_slot *m, int mode)
 {
     if (ctx->volume->set_mode != mode)
@@ -78,7 +85,7 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
     struct stin__volume_state *v = ctx->volume;
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     int closed = m->info.closed_manifold != 0;
-    if (!v->extrude_prog || !m->adj_vao)
+    if (!v->extrude_prog || !m->adj_vao || v->cpu_only)
         return 0;
     if (!v->path_unbound) { /* the light's first extruded caster, or one after a CPU-built one */
         GL(ctx, UseProgram)(v->extrude_prog);

@@ -14,6 +14,7 @@ struct stin__volume_state {
     GLint u_model, u_view_proj, u_light, u_closed, u_caps, u_mode;
     int path_unbound; /* an extruded caster left its program bound, not the path's */
     int set_closed, set_caps, set_mode; /* the program's uniforms as last set (-1: unknown) */
+    int cpu_only; /* stin__volume_extrude_enable(ctx, 0): this frame builds on the CPU */
 };
 
 #endif
