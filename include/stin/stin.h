@@ -206,8 +206,15 @@
  * triangle's own, so open and non-manifold meshes cast without leaks). With a
  * perspective projection the frame is drawn with the far plane at infinity
  * (stin_query_frame_projection), so geometry past the caller's far plane shows;
- * orthographic projections use depth clamp. Lights with radius > 0 are area
- * lights: desc.shadows.soft_samples point samples, each a pass at intensity / n.
+ * orthographic projections use depth clamp. Each volume is cut at a plane
+ * across its light's rays just past every visible draw's bounds and the eye,
+ * and closed there (instead of running to the horizon: less fill, the same
+ * count on every visible pixel); a volume whose cut hull misses the view is
+ * not drawn (stats.shadows.volume_cut_casters, volume_culled_casters). A
+ * keep_contents frame, whose depth may hold the caller's own surfaces, keeps
+ * every volume to infinity, as STIN_DEBUG_VOLUME_UNBOUNDED does. Lights with
+ * radius > 0 are area lights: desc.shadows.soft_samples point samples, each a
+ * pass at intensity / n.
  * Lights with range > 0 are scissored to their screen extent.
  * On GLSL tiers with FBOs and packed depth-stencil textures (GL 3.0,
  * ARB_framebuffer_object or EXT_packed_depth_stencil) and a texture unit to
@@ -964,6 +971,10 @@ typedef struct stin_desc {
  * are added over the colour in orange where they lie in front of the
  * surfaces: a picture of the volumes, not of the shadows */
 #define STIN_DEBUG_VOLUME_SHOW 0x1000ull
+/* every volume runs to infinity, none is skipped: neither cut past the
+ * visible receivers nor culled against the view (a baseline for tests and
+ * the bench) */
+#define STIN_DEBUG_VOLUME_UNBOUNDED 0x2000ull
 /* -- shadows: vdsm (bits 16-23). Its steps, each on by default, off for
  * measurement and tests; the mask is the same without them (NO_GROW: pixels
  * a shadow polygon covers only in part, not at their centre, may be lost -
@@ -1708,6 +1719,10 @@ typedef struct stin_shadows_stats {
     uint32_t volume_triangles;
     uint32_t zfail_casters, zpass_casters;
     uint32_t volume_gpu_casters;
+    /* volume, per light sample: casters whose volume was cut at a plane past
+     * every visible receiver and the eye (instead of running to infinity),
+     * and casters skipped because their cut volume misses the view frustum */
+    uint32_t volume_cut_casters, volume_culled_casters;
     /* vdsm: primitives its geometry shader emitted, all lights
      * (GL_PRIMITIVES_GENERATED, the seed's P_c; STIN_DEBUG_VDSM_COUNT, 0
      * where the context has no queries) */

@@ -21,6 +21,7 @@ in vec3 g_object[];      // object-space positions (volume.vert)
 uniform mat4 u_model;
 uniform mat4 u_view_proj;
 uniform vec4 u_light;    // object space: position (w 1), or the direction toward the light (w 0)
+uniform vec4 u_far_plane; // object space: where the volume is cut; (0, 0, 0, -1): infinity
 uniform int u_closed;    // 1: a closed 2-manifold (averted triangles cast nothing)
 uniform int u_caps;      // 1: z-fail, with light and far caps
 uniform int u_mode;      // 0: sides and caps; 1: light caps of averted triangles only
@@ -47,10 +48,14 @@ bool faces_light(vec3 a, vec3 b, vec3 c)
     return dot(n, u_light.xyz - u_light.w * p0) > 0.0;
 }
 
-// The point at infinity in the direction from the light through vertex i.
+// Where the ray from the light through vertex i meets the far plane: with f
+// its point at infinity, (plane . f) p - (plane . p) f (the plane (0, 0, 0,
+// -1) gives f itself), as src/shadow/volume_geometry.c computes it.
 vec4 far_point(int i)
 {
-    return u_view_proj * (u_model * vec4(g_object[i] * u_light.w - u_light.xyz, 0.0));
+    vec4 p = vec4(g_object[i], 1.0);
+    vec4 f = vec4(g_object[i] * u_light.w - u_light.xyz, 0.0);
+    return u_view_proj * (u_model * (dot(u_far_plane, f) * p - dot(u_far_plane, p) * f));
 }
 
 void emit(vec4 clip)

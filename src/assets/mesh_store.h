@@ -133,6 +133,9 @@ typedef struct stin__volume_request {
     int closed;            /* classic volume of a closed 2-manifold caster */
     int caps;              /* light and dark caps (z-fail) */
     float light[4];        /* object space; w = 1 point, w = 0 directional (toward the light) */
+    /* object space: the plane the volume is cut at (far points on it), or
+     * (0, 0, 0, -1): far points at infinity */
+    float far_plane[4];
     float *buffer;         /* chunk of 4-float vertices */
     uint32_t buffer_vertices;
     unsigned char *facing; /* tri_count bytes of scratch */

@@ -128,7 +128,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
 void stin__volume_extrude_init(stin_context *ctx);
 void stin__volume_extrude_release(stin_context *ctx);
 int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const float light_object[4],
-                              int zfail);
+                              const float far_plane_object[4], int zfail);
 /* 0: the following frames build every volume on the CPU although the
  * extrusion program exists; 1 (the state after init): extrude on the GPU where
  * it can. Returns whether GPU extrusion is available at all. */

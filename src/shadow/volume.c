@@ -6,6 +6,7 @@
  * culled passes, increments first so clamped counts lose nothing. The far
  * plane is at infinity (nudged P_inf) or depth clamp keeps far caps. */
 #include "shadow/volume_private.h"
+#include "render/draw_bounds.h"
 
 #define NO_SCISSOR(s) ((s) == NULL)
 
@@ -147,10 +148,12 @@ static int needs_zfail(const plane *planes, int n, const float center[3], float 
     return 1;
 }
 
-/* One caster's volume: extruded on the GPU where it can be (not for the
- * debug overlay, which draws with the path's program), else built here. */
+/* One caster's volume, cut at the world plane far_world: extruded on the
+ * GPU where it can be (not for the debug overlay, which draws with the
+ * path's program), else built here. */
 static void draw_caster(stin_context *ctx, const stin__path *path, const stin__draw *d,
-                        const float light_world[4], int zfail, int extrude)
+                        const float light_world[4], const float far_world[4], int zfail,
+                        int extrude)
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     stin__volume_request r;
@@ -163,7 +166,8 @@ static void draw_caster(stin_context *ctx, const stin__path *path, const stin__d
     for (k = 0; k < 4; k++)
         r.light[k] = inv[k] * light_world[0] + inv[4 + k] * light_world[1] +
                      inv[8 + k] * light_world[2] + inv[12 + k] * light_world[3];
-    if (extrude && stin__volume_extrude_draw(ctx, d, r.light, zfail)) {
+    stin__volume_plane_to_object(far_world, d->transform, r.far_plane);
+    if (extrude && stin__volume_extrude_draw(ctx, d, r.light, r.far_plane, zfail)) {
         ctx->volume->path_unbound = 1;
         return;
     }
@@ -213,6 +217,27 @@ static void caster_bounds(const stin_context *ctx, const stin__draw *d, float ce
     *radius = stin__sqrtf(r2) * 1.001f;
 }
 
+/* Where d's volume is cut (far_world); 0 where it cannot reach the view. */
+static int caster_reach(stin_context *ctx, const stin__volume_reach *reach, const stin__draw *d,
+                        float far_world[4])
+{
+    float corners[24];
+    int k;
+    if (!stin__draw_world_corners(ctx, d, corners)) {
+        for (k = 0; k < 4; k++)
+            far_world[k] = k == 3 ? -1.0f : 0.0f; /* to infinity */
+        return 1;
+    }
+    if (!stin__volume_reach_caster(reach, corners, far_world)) {
+        ctx->stats.shadows.volume_culled_casters++;
+        return 0;
+    }
+    if (far_world[3] != -1.0f || far_world[0] != 0.0f || far_world[1] != 0.0f ||
+        far_world[2] != 0.0f)
+        ctx->stats.shadows.volume_cut_casters++;
+    return 1;
+}
+
 /* Stencil operations of one face: z-pass counts faces in front of the
  * surface, z-fail the ones behind it. */
 static void face_ops(stin__stencil_face *f, int zfail, int back, GLenum incr, GLenum decr)
@@ -234,6 +259,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     uint32_t i;
     int k, n_planes;
     plane planes[5];
+    stin__volume_reach reach;
     stin__casters_none(ctx, "into shadow volumes (a product's volume needs its resolved "
                             "silhouette, not its primitives'; the map techniques cast them)");
     /* The frame's viewport at most: the stencil of the rest of the
@@ -252,15 +278,18 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);
     n_planes = near_clip_planes(ctx, light_world, planes);
+    stin__volume_reach_begin(ctx, light_world, &reach);
     path->volume_begin(ctx);
     ctx->volume->path_unbound = 0;
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        float center[3], radius;
+        float center[3], radius, far_world[4];
         stin__stencil_face back, front;
         int zfail;
         if (!d->shadow_caster)
             continue; /* a transparent caster: its map or the threshold decides */
+        if (!caster_reach(ctx, &reach, d, far_world))
+            continue;
         caster_bounds(ctx, d, center, &radius);
         /* z-pass counts a volume entered through its cap only where the
          * caster hides what lies behind it: a blended caster (not in the
@@ -281,7 +310,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
             ps.front = front;
             ps.back = back;
             stin__pass_apply(ctx, &ps);
-            draw_caster(ctx, path, d, light_world, zfail, 1);
+            draw_caster(ctx, path, d, light_world, far_world, zfail, 1);
         } else {
             /* Increments first (z-pass: front faces, z-fail: back faces), so a
              * clamped count never has to go below zero. */
@@ -289,11 +318,11 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
             ps.cull_face = zfail ? GL_FRONT : GL_BACK;
             ps.front = zfail ? back : front;
             stin__pass_apply(ctx, &ps);
-            draw_caster(ctx, path, d, light_world, zfail, 1);
+            draw_caster(ctx, path, d, light_world, far_world, zfail, 1);
             ps.cull_face = zfail ? GL_BACK : GL_FRONT;
             ps.front = zfail ? front : back;
             stin__pass_apply(ctx, &ps);
-            draw_caster(ctx, path, d, light_world, zfail, 1);
+            draw_caster(ctx, path, d, light_world, far_world, zfail, 1);
         }
     }
     path->volume_end(ctx);
@@ -428,7 +457,8 @@ static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
 {
     static const float tint[4] = {0.10f, 0.05f, 0.0f, 1.0f};
     stin__pass_state ps = stin__pass_defaults;
-    uint32_t li, i, counted = ctx->stats.shadows.volume_triangles;
+    stin_shadows_stats counted = ctx->stats.shadows;
+    uint32_t li, i;
     if (!(ctx->desc.debug_flags & STIN_DEBUG_VOLUME_SHOW))
         return;
     ps.depth_test = 1;
@@ -444,13 +474,18 @@ static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
         GL(ctx, Color4f)(tint[0], tint[1], tint[2], tint[3]);
     for (li = 0; li < ctx->light_count; li++) {
         stin_light_desc one;
-        float world[4];
+        stin__volume_reach reach;
+        float world[4], far_world[4];
         sample_light(&ctx->lights[li], 0, 1, &one, world);
-        for (i = 0; i < ctx->draw_count; i++)
-            draw_caster(ctx, path, &ctx->draws[ctx->draw_order[i]], world, 1, 0);
+        stin__volume_reach_begin(ctx, world, &reach);
+        for (i = 0; i < ctx->draw_count; i++) {
+            const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+            if (caster_reach(ctx, &reach, d, far_world))
+                draw_caster(ctx, path, d, world, far_world, 1, 0);
+        }
     }
     path->volume_end(ctx);
-    ctx->stats.shadows.volume_triangles = counted; /* a picture, not the frame's work */
+    ctx->stats.shadows = counted; /* a picture, not the frame's work */
 }
 
 /* A light of one sample into a mask channel: its volumes counted in the

@@ -13,6 +13,7 @@ static const stin__uniform_name extrude_uniforms[] = {
     STIN__UNIFORM(struct stin__volume_state, u_model, "u_model"),
     STIN__UNIFORM(struct stin__volume_state, u_view_proj, "u_view_proj"),
     STIN__UNIFORM(struct stin__volume_state, u_light, "u_light"),
+    STIN__UNIFORM(struct stin__volume_state, u_far_plane, "u_far_plane"),
     STIN__UNIFORM(struct stin__volume_state, u_closed, "u_closed"),
     STIN__UNIFORM(struct stin__volume_state, u_caps, "u_caps"),
     STIN__UNIFORM(struct stin__volume_state, u_mode, "u_mode"),
@@ -80,7 +81,7 @@ static void draw_mode(stin_context *ctx, const stin__mesh_slot *m, int mode)
 }
 
 int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const float light_object[4],
-                              int zfail)
+                              const float far_plane_object[4], int zfail)
 {
     struct stin__volume_state *v = ctx->volume;
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
@@ -94,6 +95,7 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
     }
     GL(ctx, UniformMatrix4fv)(v->u_model, 1, GL_FALSE, d->transform);
     GL(ctx, Uniform4fv)(v->u_light, 1, light_object);
+    GL(ctx, Uniform4fv)(v->u_far_plane, 1, far_plane_object);
     if (v->set_closed != closed)
         GL(ctx, Uniform1i)(v->u_closed, v->set_closed = closed);
     if (v->set_caps != zfail)

@@ -1,7 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 /* Shadow-volume geometry of one caster for one light, on the CPU, in chunks
- * of homogeneous object-space triangles (w = 0 for vertices extruded to
- * infinity away from the light).
+ * of homogeneous object-space triangles (vertices extruded away from the
+ * light onto the request's far plane, or to infinity: w = 0).
  *
  * Closed 2-manifold casters get the classic volume: the light-facing
  * triangles, side quads on their silhouette edges, caps for z-fail.
@@ -50,13 +50,21 @@ static void finite_point(const float p[3], float out[4])
     out[3] = 1.0f;
 }
 
-/* The point at infinity in the direction from the light through p. */
-static void extrude(const float p[3], const float l[4], float out[4])
+/* Where the ray from the light through p meets the far plane pl: with f
+ * the ray's point at infinity, (pl . f) p - (pl . p) f, homogeneous (pl =
+ * (0, 0, 0, -1) gives f itself). The same operations as
+ * volume_extrude.geom's far_point. */
+static void extrude(const float p[3], const float l[4], const float pl[4], float out[4])
 {
-    out[0] = p[0] * l[3] - l[0];
-    out[1] = p[1] * l[3] - l[1];
-    out[2] = p[2] * l[3] - l[2];
-    out[3] = 0.0f;
+    float f[3], pf, pp;
+    int k;
+    for (k = 0; k < 3; k++)
+        f[k] = p[k] * l[3] - l[k];
+    pf = pl[0] * f[0] + pl[1] * f[1] + pl[2] * f[2];
+    pp = pl[0] * p[0] + pl[1] * p[1] + pl[2] * p[2] + pl[3];
+    for (k = 0; k < 3; k++)
+        out[k] = pf * p[k] - pp * f[k];
+    out[3] = pf;
 }
 
 int stin__triangle_faces_light(const float *a, const float *b, const float *c, const float l[4])
@@ -101,7 +109,7 @@ uint32_t stin__volume_build(const stin__volume_request *r)
         p[2] = r->verts[tri[facing ? 2 : 1]].position;
         for (k = 0; k < 3; k++) {
             finite_point(p[k], fin[k]);
-            extrude(p[k], r->light, inf[k]);
+            extrude(p[k], r->light, r->far_plane, inf[k]);
         }
         if (r->caps) {
             if (facing) /* an averted one's light cap follows below */
