@@ -218,13 +218,15 @@
  * Lights with range > 0 are scissored to their screen extent.
  * On GLSL tiers with FBOs and packed depth-stencil textures (GL 3.0,
  * ARB_framebuffer_object or EXT_packed_depth_stencil) and a texture unit to
- * spare, each point light's visibility is counted in stin's own screen mask
- * (an RGBA8 colour and a DEPTH24_STENCIL8 texture the size of the viewport's
- * far corner, 8 bytes a pixel of GL memory, made at the first frame and kept)
+ * spare, a frame of two or more lights counts each point light's visibility
+ * in stin's own screen mask (an RGBA8 colour and a DEPTH24_STENCIL8 texture
+ * the size of the viewport's far corner, 8 bytes a pixel of GL memory, made
+ * at the first such frame and kept; its depth is a geometry pass of its own)
  * and one lit pass shades four lights reading their channels, so N lights
  * cost N stencil counts and N/4 lit passes; area lights keep a lit pass per
- * sample (their stencil test runs in the frame's framebuffer). Without
- * masks each light's lit pass is stencil-tested in the frame's framebuffer.
+ * sample (their stencil test runs in the frame's framebuffer). A frame of one
+ * light, and any frame without masks, stencil-tests each light's lit pass in
+ * the frame's framebuffer (one geometry pass fewer than the mask).
  * An incomplete mask framebuffer is logged once and the context goes on
  * without masks.
  * Stencil and depth belong to a framebuffer, not to the context. stin_create

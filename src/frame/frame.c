@@ -321,6 +321,14 @@ static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lig
     return 1;
 }
 
+/* A technique that counts against the frame's depth (volumes) pays the
+ * mask a geometry pass of its own for that depth: with one light, counting
+ * in the frame's stencil and lighting where it allows is a pass cheaper. */
+static int mask_pays(const stin_context *ctx, uint32_t lights)
+{
+    return !ctx->shadow->mask_depth || lights > 1;
+}
+
 /* Per light: its visibility (stencil count, map test, screen mask) and its
  * lighting. The visibility output shows light 0 only. */
 static void stage_lights(stin_context *ctx, const stin__path *path, int visibility)
@@ -328,7 +336,8 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
     uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
     unsigned char masked[STIN__MAX_LIGHTS] = {0};
     stin_stage was = stin__times_enter(ctx, STIN_STAGE_SHADOW);
-    if (ctx->shadow->mask && stin__mask_usable(ctx) && path->lit_lights)
+    if (ctx->shadow->mask && stin__mask_usable(ctx) && path->lit_lights &&
+        mask_pays(ctx, lights))
         (void)masked_lights(ctx, path, lights, visibility, masked);
     for (li = 0; li < lights; li++)
         if (!masked[li]) {
