@@ -18,22 +18,32 @@ uniform vec4 u_coloured_params;    // x: texels a side, y: offset per unit w, z:
 uniform sampler2D u_coloured_map;
 uniform sampler2D u_coloured_depth;
 
+// The face of a point light's cube that direction d from the light falls
+// in: +x, -x, +y, -y, +z, -z by its major axis (ties to the earlier axis).
+int coloured_face(vec3 d)
+{
+    vec3 a = abs(d);
+    if (a.x >= a.y && a.x >= a.z)
+        return d.x > 0.0 ? 0 : 1;
+    if (a.y >= a.z)
+        return d.y > 0.0 ? 2 : 3;
+    return d.z > 0.0 ? 4 : 5;
+}
+
 vec3 coloured_transmittance(int light)
 {
     if (u_coloured_kind == 0)
         return vec3(1.0); // a pass with a colour map lights that one light
-    int face = 0;
-    if (u_coloured_kind == 2) {
-        vec3 d = v_world - u_lights[4 * light].xyz;
-        vec3 a = abs(d);
-        if (a.x >= a.y && a.x >= a.z) face = d.x > 0.0 ? 0 : 1;
-        else if (a.y >= a.z) face = d.y > 0.0 ? 2 : 3;
-        else face = d.z > 0.0 ? 4 : 5;
-    }
+    int face = u_coloured_kind == 2 ? coloured_face(v_world - u_lights[4 * light].xyz) : 0;
     vec3 side = normalize(cross(dFdx(v_world), dFdy(v_world)));
     side *= sign(dot(side, u_eye - v_world) + 1e-30);
     float w = (u_coloured_matrix[face] * vec4(v_world, 1.0)).w;
-    vec4 c = u_coloured_matrix[face] * vec4(v_world + side * (u_coloured_params.y * max(w, 0.0)), 1.0);
+    vec3 pushed = v_world + side * (u_coloured_params.y * max(w, 0.0));
+    // the push may carry the point across a seam: look it up in the face it
+    // now lies in, not the one it left (the push is the same on both sides)
+    if (u_coloured_kind == 2)
+        face = coloured_face(pushed - u_lights[4 * light].xyz);
+    vec4 c = u_coloured_matrix[face] * vec4(pushed, 1.0);
     if (w <= 0.0 || c.w <= 0.0)
         return vec3(1.0);
     vec3 t = c.xyz / c.w;

@@ -36,7 +36,12 @@ vec3 deep_transmittance(int light)
     vec3 side = normalize(cross(dFdx(v_world), dFdy(v_world)));
     side *= sign(dot(side, u_eye - v_world) + 1e-30);
     float w = (u_deep_matrix[face] * vec4(v_world, 1.0)).w;
-    vec4 c = u_deep_matrix[face] * vec4(v_world + side * (u_deep_params.z * max(w, 0.0)), 1.0);
+    vec3 pushed = v_world + side * (u_deep_params.z * max(w, 0.0));
+    // the push may carry the point across a seam: look it up in the face it
+    // now lies in, not the one it left (the push is the same on both sides)
+    if (u_deep_kind == 2)
+        face = deep_face(pushed - u_lights[4 * light].xyz);
+    vec4 c = u_deep_matrix[face] * vec4(pushed, 1.0);
     if (w <= 0.0 || c.w <= 0.0)
         return vec3(1.0);
     vec3 t = c.xyz / c.w;

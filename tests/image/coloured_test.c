@@ -174,6 +174,10 @@ static void glsl_tests(deep_case *c, int stack, int colour, int panes)
     c->skip_transparent = 1;
     snprintf(name, sizeof name, "%s/%s/coloured-transmittance", tier, c->scene_name);
     deep_test_transmittance(c, &base, name);
+    if (!strcmp(c->scene_name, "deep-seams")) {
+        snprintf(name, sizeof name, "%s/%s/coloured-seams", tier, c->scene_name);
+        deep_test_seams(c, &base, name);
+    }
     if (stack || colour) {
         snprintf(name, sizeof name, "%s/%s/coloured-values", tier, c->scene_name);
         deep_test_values(c, &base, name);
@@ -212,7 +216,7 @@ void coloured_tests(run *r, stin_tier tier, const char *path)
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     stack = !strcmp(scene_name, "deep-stack");
     colour = !strcmp(scene_name, "deep-colour");
-    omni = !strcmp(scene_name, "deep-omni");
+    omni = !strcmp(scene_name, "deep-omni") || !strcmp(scene_name, "deep-seams");
     window = !strcmp(scene_name, "deep-window");
     panes = !strcmp(scene_name, "glass-panes");
     if ((!stack && !colour && !omni && !window && !panes) || !scene_load(path, &s, err, sizeof err))

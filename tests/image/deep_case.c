@@ -159,6 +159,40 @@ void deep_test_own_layer(const deep_case *c, const capture *cap, const char *nam
            ">= %d pixels, 99.5%%)", good, n, MIN_PARTIAL);
 }
 
+/* Near a seam of a point light's cube: the direction from the light has
+ * its two largest components within 3% of each other, where a lookup that
+ * strays into the neighbouring face would show (a band wider than the
+ * lookup's push, so a stray strip is a sizeable share of it). */
+static int near_seam(const float *light, const float *p)
+{
+    float a[3], hi, mid;
+    int k;
+    for (k = 0; k < 3; k++)
+        a[k] = fabsf(p[k] - light[k]);
+    hi = fmaxf(a[0], fmaxf(a[1], a[2]));
+    mid = a[0] == hi ? fmaxf(a[1], a[2]) : a[1] == hi ? fmaxf(a[0], a[2]) : fmaxf(a[0], a[1]);
+    return hi > 0.0f && mid >= 0.97f * hi;
+}
+
+void deep_test_seams(const deep_case *c, const capture *cap, const char *name)
+{
+    const float *light = c->s->lights[0].position;
+    int w = c->r->width, h = c->r->height, x, y;
+    long n = 0, good = 0;
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const ref_hit *hit = &c->hits[(size_t)y * w + x];
+            if (!hit->hit || !near_seam(light, hit->P) || !deep_comparable(c, cap, x, y))
+                continue;
+            n++;
+            good += deep_within(deep_gl_px(c, cap, x, y), deep_ref_px(c, x, y) + REFERENCE_CH_T_R,
+                                T_TOLERANCE);
+        }
+    report(c->r, n >= MIN_PARTIAL && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
+           "transmittance within 2/255 of the reference on %ld of %ld pixels beside a seam of the "
+           "light's cube faces (need >= %d pixels, 99.5%%)", good, n, MIN_PARTIAL);
+}
+
 /* Below the technique's tier: a SKIP line saying why (skip_why), then
  * forcing it must be refused with `expect` in the message. */
 void deep_refusal(run *r, stin_tier tier, const char *scene_name, const scene *s,

@@ -47,6 +47,10 @@ int deep_within(const float *g, const float *expect, double tol);
 void deep_test_transmittance(const deep_case *c, const capture *cap, const char *name);
 void deep_test_values(const deep_case *c, const capture *cap, const char *name);
 void deep_test_own_layer(const deep_case *c, const capture *cap, const char *name);
+/* Point lights: T within 2/255 on 99.5% of the pixels beside a seam of the
+ * light's cube faces (>= 100 of them), where a lookup may stray into the
+ * neighbouring face. */
+void deep_test_seams(const deep_case *c, const capture *cap, const char *name);
 /* Pane pixels the reference sees unshadowed (n), and those within 2/255
  * of 1 (good). */
 void deep_own_layer_counts(const deep_case *c, const capture *cap, long *n, long *good);

@@ -272,6 +272,10 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
     deep_test_transmittance(c, &base, name);
     snprintf(name, sizeof name, "%s/%s/deep-own-layer", tier, scene_name);
     deep_test_own_layer(c, &base, name);
+    if (!strcmp(scene_name, "deep-seams")) {
+        snprintf(name, sizeof name, "%s/%s/deep-seams", tier, scene_name);
+        deep_test_seams(c, &base, name);
+    }
     if (stack || colour) {
         snprintf(name, sizeof name, "%s/%s/deep-values", tier, scene_name);
         deep_test_values(c, &base, name);
@@ -327,7 +331,7 @@ void deep_tests(run *r, stin_tier tier, const char *path)
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     stack = !strcmp(scene_name, "deep-stack");
     colour = !strcmp(scene_name, "deep-colour");
-    omni = !strcmp(scene_name, "deep-omni");
+    omni = !strcmp(scene_name, "deep-omni") || !strcmp(scene_name, "deep-seams");
     window = !strcmp(scene_name, "deep-window");
     if ((!stack && !colour && !omni && !window && strcmp(scene_name, "glass-panes")) ||
         !scene_load(path, &s, err, sizeof err))
