@@ -138,6 +138,7 @@ struct stin_context {
     struct stin__map_fixed_state *map_fixed; /* shadow/map_fixed_private.h */
     struct stin__map_pcf_state *map_pcf;     /* shadow/map_pcf.c */
     struct stin__vdsm_state *vdsm;           /* shadow/vdsm_private.h */
+    struct stin__choice_state *choice;       /* vdsm or volumes by cost (shadow/choice.c) */
     struct stin__glsl_state *glsl;           /* the GLSL path's (render/glsl_private.h) */
     struct stin__stage_times *times;         /* gl/stage_times_private.h */
     struct stin__csg_state *csg;             /* CSG products (csg/csg_private.h) */
@@ -157,6 +158,14 @@ extern const stin__state_slot stin__state_slots[];
 extern const size_t stin__state_slot_count;
 /* The module of a shadows technique, off for anything else (frame/modules.c). */
 const stin__shadow_technique *stin__shadow_technique_of(stin_technique t);
+/* The measured choice around a frame (frame/shadow_choice.c): begin, at
+ * stin_begin_frame before the prepare hook, swaps in the module the frame
+ * begins on; plan, before the frame plan, weighs whether volumes draw this
+ * frame's lights and draws the same as vdsm and starts its timer; end,
+ * after the plan, stops it. */
+void stin__frame_choice_begin(stin_context *ctx);
+void stin__frame_choice_plan(stin_context *ctx);
+void stin__frame_choice_end(stin_context *ctx);
 
 /* Texture staging (assets/texture.c): the regions a texture's levels are built in. */
 #define STIN__MAX_TEXELS (1ull << 30) /* 32-bit byte offsets, 4 a texel */

@@ -136,6 +136,46 @@
  * its shaders or the mask it falls back (logged) to "volume" where there is
  * a stencil buffer, else "map-pcf"; without the pyramid's shaders or
  * framebuffer it runs without SM and DC (logged).
+ * Measured choice of the exact technique: vdsm and volumes are both exact,
+ * and which is cheaper depends on the GPU and the scene (on llvmpipe
+ * volumes take 0.4-0.7x vdsm's frame; on a GPU it may be the other way).
+ * Where the shadows technique is left on auto (desc.techniques[SHADOWS]
+ * NONE), the selection chose vdsm, volumes run here (stencil, and the
+ * lighting they need) and the context has timer queries (the "timer
+ * queries" and "occlusion queries" capabilities), stin_create sets up
+ * volumes beside vdsm (their state is in the block either way) and each
+ * frame runs the cheaper by measured GPU time: the candidates are vdsm,
+ * volumes extruded by the geometry shader and volumes built on the CPU (two
+ * where GPU extrusion is not there). A GL_TIME_ELAPSED query spans each
+ * shadowed frame's plan; its result is read a frame or more later, only
+ * once GL_QUERY_RESULT_AVAILABLE says so (4 in flight at most: a frame
+ * finding none free goes untimed; no frame waits for the GPU). The first
+ * 8 frames run vdsm (a context's first frames build programs and buffers;
+ * an application that draws a handful of frames keeps vdsm); then after
+ * every desc.shadows.choice_frames frames of the chosen technique (default
+ * 30) one frame runs the next other candidate as a trial (round robin),
+ * and until every candidate has been timed three times one frame in two is
+ * a trial (the first switch can come at frame 17). Each candidate's first
+ * timed frame is dropped (it makes its buffers), the rest smoothed (a
+ * quarter of each new frame's ms). The choice moves to a
+ * candidate when its smoothed ms is at least 15% below the chosen one's
+ * (x 1.15 still below it) on two of its trials in a row, so a small or noisy
+ * difference never switches it and it does not flip back; each switch logs
+ * STIN_LOG_TECHNIQUE_SELECTED naming both techniques and their ms. The
+ * shadows choice (stin_query_choice) stays "vdsm", its reason saying that
+ * frames are chosen by measurement; stin_frame_stats.shadows.choice_* say
+ * what each frame ran. The lit programs are the same for both (one shadow
+ * chunk): a switch builds nothing. A frame volumes would not draw the same
+ * stays on vdsm and is not a trial: CSG products (vdsm casts them),
+ * displaced draws (volumes cast the flat mesh), blended draws (peeled
+ * layers are vdsm's receivers; transparent casters), area lights (vdsm
+ * shadows them from their centre, volumes by samples), or a target without
+ * a stencil buffer; where such a frame follows a volume frame, the
+ * projection already given out at begin (P_inf) stays, and vdsm draws with
+ * it (exact either way), and the frames after begin on vdsm until one can
+ * run volumes again. Forcing a shadows technique, a tier without vdsm, or
+ * STIN_DEBUG_SHADOW_CHOICE_OFF keeps the selection's technique on every
+ * frame: no trial, no switch.
  * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
  * point lights get six 90-degree maps drawn before their pass into one
@@ -868,6 +908,10 @@ typedef struct stin_shadows_settings {
     uint32_t map_size;         /* map-pcf, map-depth, map-combine: texels a side of a
                                 * light's shadow map, default 1024; a power of two, at
                                 * most 8192 */
+    uint32_t choice_frames;    /* the measured choice of the exact technique (SHADOWS):
+                                * frames of the chosen technique between two trial
+                                * frames of another, default 30, at most 100000; 1
+                                * makes every other frame a trial */
 } stin_shadows_settings;
 
 typedef struct stin_translucent_settings {
@@ -959,6 +1003,9 @@ typedef struct stin_desc {
  * the draw's material: the same picture within rounding; a test and bench
  * baseline */
 #define STIN_DEBUG_LIGHTING_GENERAL 0x2ull
+/* the measured choice of the exact technique off: every frame runs the
+ * selection's "vdsm" (no trials, no timer queries) */
+#define STIN_DEBUG_SHADOW_CHOICE_OFF 0x4ull
 /* -- shadows: volume (bits 8-15) */
 #define STIN_DEBUG_VOLUME_ZFAIL 0x100ull /* z-fail for every caster (needs caps) */
 #define STIN_DEBUG_VOLUME_ZPASS 0x200ull /* z-pass for every caster: wrong with the eye in
@@ -1742,7 +1789,25 @@ typedef struct stin_shadows_stats {
      * the node pool, grown to the most crossings a product took so far) */
     uint32_t vdsm_csg_casts;
     uint64_t vdsm_csg_bytes;
+    /* The measured choice of the exact technique (SHADOWS), as
+     * stin_shadow_choice values: choice_frame what this frame's shadows ran,
+     * choice_current the chosen one (they differ on a trial and on a frame
+     * volumes cannot draw); both STIN_SHADOW_CHOICE_OFF where the choice is
+     * off in the context. choice_trial: 1 on a trial frame. choice_ms: the
+     * smoothed GPU time of a frame in ms per candidate, indexed by
+     * stin_shadow_choice - 1 (vdsm, GPU-extruded volumes, CPU-built volumes),
+     * 0 where not known yet (or not a candidate here) */
+    uint32_t choice_frame, choice_current, choice_trial;
+    float choice_ms[3];
 } stin_shadows_stats;
+
+/* What a frame's exact shadows ran under the measured choice (SHADOWS). */
+typedef enum stin_shadow_choice {
+    STIN_SHADOW_CHOICE_OFF = 0,    /* no measured choice in this context */
+    STIN_SHADOW_CHOICE_VDSM,       /* "vdsm" */
+    STIN_SHADOW_CHOICE_VOLUME_GPU, /* "volume", extruded by the geometry shader */
+    STIN_SHADOW_CHOICE_VOLUME_CPU  /* "volume", built on the CPU */
+} stin_shadow_choice;
 
 typedef struct stin_translucent_stats {
     /* deep: layers peeled (passes into a deep map), all lights and faces;

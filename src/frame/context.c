@@ -18,6 +18,7 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 8u << 20);
     d.shadows.soft_samples = DEFAULT(d.shadows.soft_samples, 8u);
     d.shadows.map_size = DEFAULT(d.shadows.map_size, 1024u);
+    d.shadows.choice_frames = DEFAULT(d.shadows.choice_frames, STIN__CHOICE_FRAMES);
     d.csg.max_primitives = DEFAULT(d.csg.max_primitives, 256u);
     d.csg.max_terms = DEFAULT(d.csg.max_terms, 256u);
     d.csg.max_literals = DEFAULT(d.csg.max_literals, 4096u);
@@ -39,6 +40,7 @@ static int desc_valid(const stin_desc *d)
 {
     return d->max_lights <= 32 && d->shadows.soft_samples <= 64 &&
            d->shadows.map_size <= 8192 && (d->shadows.map_size & (d->shadows.map_size - 1)) == 0 &&
+           d->shadows.choice_frames <= 100000u &&
            d->max_meshes <= 65535 && d->max_textures <= 65535 &&
            d->max_mesh_triangles <= d->max_triangles && d->max_vertices < 0x40000000u &&
            d->max_triangles < 0x20000000u && d->max_draws < 0x1000000u &&
@@ -302,6 +304,7 @@ static void release_gl(stin_context *ctx)
 {
     stin__glsl_release(ctx);
     stin__dot3_release(ctx);
+    stin__choice_release(ctx); /* volumes' objects; ctx->shadow back to the selection's */
     if (ctx->shadow && ctx->shadow->release)
         ctx->shadow->release(ctx);
     stin__mask_release(ctx);
@@ -339,7 +342,8 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "stin_create: capacities out of range (max_lights <= 32, "
                   "max_mesh_triangles <= max_triangles, shadows.soft_samples <= 64, "
-                  "shadows.map_size a power of two <= 8192, translucent.deep_layers <= 16, "
+                  "shadows.map_size a power of two <= 8192, shadows.choice_frames <= 100000, "
+                  "translucent.deep_layers <= 16, "
                   "translucent.deep_map_size a power of two <= 4096, translucent.deep_mono 0 or 1, "
                   "translucent.opaque_threshold in (0, 1], transparency.layers <= 64)");
         return STIN_ERROR_INVALID_ARGUMENT;
@@ -410,6 +414,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         stin__hooks_install(ctx); /* after csg's init, which may turn it off */
         stin__outline_init(ctx);
         stin__times_init(ctx);
+        stin__choice_init(ctx); /* volumes beside vdsm, after every choice is final */
     }
     if (r != STIN_OK) {
         release_gl(ctx); /* nothing half-made stays behind */

@@ -67,6 +67,7 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
      * (stin_query_frame_projection): a shadow technique may move its far
      * plane to infinity (volumes), whatever lights the frame gets. */
     stin__memcopy(ctx->projection, desc->projection, sizeof ctx->projection);
+    stin__frame_choice_begin(ctx); /* vdsm or volumes, where measured (shadow/choice.c) */
     if (ctx->shadow->prepare)
         ctx->shadow->prepare(ctx);
     stin__mat4_mul(ctx->view_proj, ctx->projection, ctx->frame.view);
@@ -518,7 +519,9 @@ stin_result stin_end_frame(stin_context *ctx)
     for (i = 0; i < ctx->draw_count; i++)
         ctx->stats.triangles += ctx->meshes[ctx->draws[i].mesh_slot].triangle_count;
     stin__state_save(ctx);
+    stin__frame_choice_plan(ctx);
     run_plan(ctx);
+    stin__frame_choice_end(ctx);
     stin__state_restore(ctx);
     stin__gl_check_errors(ctx, "stin_end_frame");
     ctx->state = STIN__IDLE;

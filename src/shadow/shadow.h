@@ -115,6 +115,31 @@ size_t stin__map_fixed_state_bytes(const stin_desc *d);
 size_t stin__map_pcf_state_bytes(const stin_desc *d);
 size_t stin__vdsm_state_bytes(const stin_desc *d);
 
+/* ---- the measured choice of the exact technique (shadow/choice.c) --------- */
+/* stin.h, SHADOWS: where the selection chose vdsm on auto, volumes run and
+ * the context has timer queries, each frame runs vdsm or volumes (GPU-
+ * extruded or CPU-built), whichever measured cheaper. Its state's size (a
+ * slot of frame/modules.c) and desc.shadows.choice_frames' default. */
+#define STIN__CHOICE_FRAMES 30u
+size_t stin__choice_state_bytes(const stin_desc *d);
+/* At stin_create after the shadows module's set-up: whether the choice
+ * runs here, and if so volumes set up beside vdsm (logged where it runs,
+ * and where timer queries alone are missing).
+ * release gives volumes' GL objects back and leaves ctx->shadow on vdsm,
+ * for the context to release as the selection's module. */
+void stin__choice_init(stin_context *ctx);
+void stin__choice_release(stin_context *ctx);
+/* At stin_begin_frame, before the module's prepare hook: the module the
+ * frame begins on (ctx->shadow where the choice is off). */
+const stin__shadow_technique *stin__choice_begin(stin_context *ctx);
+/* At stin_end_frame, before the plan: volumes_draw says whether volumes
+ * draw this frame the same as vdsm (frame/shadow_choice.c); where not, the
+ * frame goes to vdsm (ctx->shadow). Reads back what earlier frames' timers
+ * hold and starts this frame's. end, after the plan: stops it and fills
+ * stin_frame_stats.shadows.choice_*. */
+void stin__choice_plan(stin_context *ctx, int volumes_draw);
+void stin__choice_end(stin_context *ctx);
+
 /* ---- shared by the modules ------------------------------------------------ */
 /* One light (sample) of stencil shadow volumes: leaves the stencil test set to
  * pass where the light is visible (shadow/volume.c; map-fixed's point lights). */

@@ -9,7 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-static void keep_errors(void *user, stin_log_level level, stin_log_item item, const char *msg)
+void capture_log_fn(void *user, stin_log_level level, stin_log_item item, const char *msg)
 {
     capture *c = (capture *)user;
     if (item == STIN_LOG_FALLBACK) {
@@ -36,7 +36,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     memset(&d, 0, sizeof d);
     d.get_proc_address = stin_platform_get_proc_address;
     d.get_proc_user = plat;
-    d.log = keep_errors;
+    d.log = capture_log_fn;
     d.log_user = out;
     d.tier = o->tier;
     d.caps_mask = profile->caps_mask | o->extra_mask;

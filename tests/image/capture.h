@@ -49,6 +49,10 @@ typedef struct capture {
 int capture_render(stin_platform *plat, const stin_profile *profile, const scene *s,
                    const capture_options *o, capture *out, char *err, size_t err_size);
 void capture_free(capture *c);
+/* A stin_log_fn recording into the capture passed as log_user: its error
+ * count and last error, and the fallbacks' text (for contexts a test makes
+ * itself). */
+void capture_log_fn(void *user, stin_log_level level, stin_log_item item, const char *msg);
 
 /* The gl-clean verdict of a render: no GL error, no call outside the
  * profile, no error logged; one PASS/FAIL line under `name`. */

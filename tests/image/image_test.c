@@ -333,6 +333,7 @@ int main(int argc, char **argv)
             test_scene(&r, tiers[t], argv[i]);
             shadow_tests(&r, tiers[t], argv[i]);
             vdsm_tests(&r, tiers[t], argv[i]);
+            choice_tests(&r, tiers[t], argv[i]);
             map_tests(&r, tiers[t], argv[i]);
             pcf_tests(&r, tiers[t], argv[i]);
             model_tests(&r, tiers[t], argv[i]);

@@ -37,6 +37,10 @@ void model_tests(run *r, stin_tier tier, const char *path);
 void shadow_tests(run *r, stin_tier tier, const char *path);
 /* VDSM exact shadows of one scene (vdsm_test.c; GL4 only). */
 void vdsm_tests(run *r, stin_tier tier, const char *path);
+/* The measured choice of the exact technique switching between vdsm and
+ * volumes frame by frame: every frame exact, and the frames alike away from
+ * shadow edges (choice_test.c; GL4, three scenes). */
+void choice_tests(run *r, stin_tier tier, const char *path);
 /* The seed's VDSM behaviours on built-in scenes, once per run (GL4). */
 void vdsm_seed_tests(run *r, stin_tier tier);
 /* VDSM's conservative growth on random faces, from vdsm_seed_tests (vdsm_growth_test.c). */

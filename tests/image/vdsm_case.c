@@ -135,6 +135,25 @@ static int shaded_point_agrees(const vdsm_case *c, const ref_hit *h, const float
     return (vdsm_truth(c, &moved) >= 0.5f) == (g[AOV_VIS_R] >= 0.5f);
 }
 
+/* The reference's visibility (or the object) changes within one pixel. */
+int vdsm_on_shadow_edge(const vdsm_case *c, int x, int y)
+{
+    int w = c->r->width, h = c->r->height, dx, dy;
+    const ref_hit *me = &c->hits[(size_t)y * w + x];
+    float v = me->hit ? vdsm_truth(c, me) : 1.0f;
+    for (dy = -1; dy <= 1; dy++)
+        for (dx = -1; dx <= 1; dx++) {
+            int nx = x + dx, ny = y + dy;
+            const ref_hit *o;
+            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
+                continue;
+            o = &c->hits[(size_t)ny * w + nx];
+            if (o->hit != me->hit || o->object != me->object || (o->hit && vdsm_truth(c, o) != v))
+                return 1;
+        }
+    return 0;
+}
+
 /* Pixels whose visibility differs from the reference; ambiguous ones are
  * counted apart, and of the rest those next to a reference shadow edge. */
 long vdsm_mismatches(const vdsm_case *c, const capture *cap, long *compared, long *ambig,

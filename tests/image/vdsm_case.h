@@ -44,6 +44,9 @@ void vdsm_name(const vdsm_case *c, const char *test, char *out, size_t size);
 const float *vdsm_px(const image *img, int x, int y);
 /* The ray-cast visibility of a hit, left from the surface as vdsm does. */
 float vdsm_truth(const vdsm_case *c, const ref_hit *h);
+/* The reference's visibility (as vdsm_truth), or the object hit, changes
+ * within one pixel of (x, y) (y from the bottom). */
+int vdsm_on_shadow_edge(const vdsm_case *c, int x, int y);
 /* Pixels whose visibility differs from the reference; ambiguous ones are
  * counted apart, and of the rest the isolated ones and those next to a
  * reference shadow edge. Compared: covered pixels whose P matches. */

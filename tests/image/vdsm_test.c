@@ -100,25 +100,6 @@ static void test_no_grow(const vdsm_case *c, long with_growth)
     capture_free(&b);
 }
 
-/* The reference's visibility (or the object) changes within one pixel. */
-static int on_shadow_edge(const vdsm_case *c, int x, int y)
-{
-    int w = c->r->width, h = c->r->height, dx, dy;
-    const ref_hit *me = &c->hits[(size_t)y * w + x];
-    float v = me->hit ? vdsm_truth(c, me) : 1.0f;
-    for (dy = -1; dy <= 1; dy++)
-        for (dx = -1; dx <= 1; dx++) {
-            int nx = x + dx, ny = y + dy;
-            const ref_hit *o;
-            if (nx < 0 || ny < 0 || nx >= w || ny >= h)
-                continue;
-            o = &c->hits[(size_t)ny * w + nx];
-            if (o->hit != me->hit || o->object != me->object || (o->hit && vdsm_truth(c, o) != v))
-                return 1;
-        }
-    return 0;
-}
-
 /* Pixels whose visibility differs between two renders; *edge counts
  * those on a reference shadow edge (not in the return value). */
 static long differ(const vdsm_case *c, const capture *a, const capture *b, long *edge)
@@ -129,7 +110,7 @@ static long differ(const vdsm_case *c, const capture *a, const capture *b, long 
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++)
             if (vdsm_px(&a->img, x, y)[AOV_VIS_R] != vdsm_px(&b->img, x, y)[AOV_VIS_R]) {
-                if (on_shadow_edge(c, x, y))
+                if (vdsm_on_shadow_edge(c, x, y))
                     (*edge)++;
                 else
                     n++;

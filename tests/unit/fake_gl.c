@@ -47,6 +47,11 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_CheckFramebufferStatus ~, 1
 #define FAKE_CUSTOM_DrawArrays ~, 1
 #define FAKE_CUSTOM_IsFramebuffer ~, 1
+#define FAKE_CUSTOM_GenQueries ~, 1
+#define FAKE_CUSTOM_BeginQuery ~, 1
+#define FAKE_CUSTOM_EndQuery ~, 1
+#define FAKE_CUSTOM_GetQueryObjectuiv ~, 1
+#define FAKE_CUSTOM_GetQueryObjectui64v ~, 1
 
 /* Generated no-ops that leave the state fake_gl_state.h keeps alone: they
  * draw, upload, or set program, texture-object or array-pointer state,
@@ -84,13 +89,8 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_GenerateMipmap ~, 1
 #define FAKE_STATELESS_DrawBuffers ~, 1
 #define FAKE_STATELESS_BindFragDataLocation ~, 1
-#define FAKE_STATELESS_BeginQuery ~, 1
-#define FAKE_STATELESS_EndQuery ~, 1
-#define FAKE_STATELESS_GenQueries ~, 1
 #define FAKE_STATELESS_DeleteQueries ~, 1
-#define FAKE_STATELESS_GetQueryObjectuiv ~, 1
 #define FAKE_STATELESS_QueryCounter ~, 1
-#define FAKE_STATELESS_GetQueryObjectui64v ~, 1
 #define FAKE_STATELESS_TexImage3D ~, 1
 #define FAKE_STATELESS_FramebufferTextureLayer ~, 1
 #define FAKE_STATELESS_BlendEquationSeparate ~, 1
@@ -315,6 +315,56 @@ FAKE_OBJECTS(Buffers, buffers, FAKE_OBJ_BUFFER)
 FAKE_OBJECTS(VertexArrays, vertex_arrays, FAKE_OBJ_VERTEX_ARRAY)
 FAKE_OBJECTS(Framebuffers, framebuffers, FAKE_OBJ_FRAMEBUFFER)
 FAKE_OBJECTS(TransformFeedbacks, transform_feedbacks, FAKE_OBJ_TRANSFORM_FEEDBACK)
+
+/* Queries: names of their own (1, 2, ...), so the other objects' names stay
+ * as they were. A GL_TIME_ELAPSED query ending takes what the test's
+ * time_elapsed callback says it measured; its result is read back by name.
+ * Other queries' results leave the caller's value as it was. */
+static void STIN_APIENTRY fake_GenQueries(GLsizei n, GLuint *names)
+{
+    GLsizei i;
+    COUNT(GenQueries);
+    for (i = 0; i < n; i++)
+        names[i] = ++fake_gl.next_query;
+}
+
+static void STIN_APIENTRY fake_BeginQuery(GLenum target, GLuint id)
+{
+    COUNT(BeginQuery);
+    if (target == GL_TIME_ELAPSED) {
+        fake_gl.time_queries_begun++;
+        fake_gl.active_time_query = id;
+    }
+}
+
+static void STIN_APIENTRY fake_EndQuery(GLenum target)
+{
+    GLuint id = fake_gl.active_time_query;
+    COUNT(EndQuery);
+    if (target != GL_TIME_ELAPSED)
+        return;
+    if (id && id <= FAKE_GL_MAX_QUERIES)
+        fake_gl.query_ns[id - 1] =
+            fake_gl.time_elapsed ? fake_gl.time_elapsed(fake_gl.time_elapsed_user) : 0;
+    fake_gl.active_time_query = 0;
+}
+
+static void STIN_APIENTRY fake_GetQueryObjectuiv(GLuint id, GLenum pname, GLuint *v)
+{
+    (void)id;
+    COUNT(GetQueryObjectuiv);
+    if (pname == GL_QUERY_RESULT_AVAILABLE)
+        *v = !fake_gl.queries_unavailable;
+}
+
+static void STIN_APIENTRY fake_GetQueryObjectui64v(GLuint id, GLenum pname, GLuint64 *v)
+{
+    COUNT(GetQueryObjectui64v);
+    if (pname == GL_QUERY_RESULT && id && id <= FAKE_GL_MAX_QUERIES && fake_gl.time_elapsed) {
+        *v = fake_gl.query_ns[id - 1];
+        fake_gl.time_results_read++;
+    }
+}
 
 static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt, GLsizei w,
                                           GLsizei h, GLint border, GLenum fmt, GLenum type,

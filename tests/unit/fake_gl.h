@@ -70,6 +70,7 @@ fake_gl_config fake_gl_profile(fake_gl_profile_id id);
 #define FAKE_GL_MAX_SHADERS 64
 #define FAKE_GL_MAX_PROGRAMS 2048
 #define FAKE_GL_MAX_VAOS 64
+#define FAKE_GL_MAX_QUERIES 1024
 typedef struct fake_gl_state {
     fake_gl_config config;
     unsigned calls[STIN_GLFN_COUNT];     /* per entry point, index STIN_GLFN_<Name> */
@@ -100,6 +101,17 @@ typedef struct fake_gl_state {
      * uniforms (u_tess*), as a linked GL program has only its stages' */
     unsigned char shader_is_tesc[FAKE_GL_MAX_PROGRAMS], program_has_tesc[FAKE_GL_MAX_PROGRAMS];
     unsigned next_name;
+    /* Queries (names 1, 2, ... of their own). GL_TIME_ELAPSED: what a
+     * query ending now measured, in ns (a test's callback; NULL: 0 and no
+     * result is written back), each query's result by name, and the queries
+     * begun and results read; queries_unavailable makes
+     * GL_QUERY_RESULT_AVAILABLE answer 0 (results still on the GPU). */
+    GLuint64 (*time_elapsed)(void *user);
+    void *time_elapsed_user;
+    int queries_unavailable;
+    GLuint next_query, active_time_query;
+    GLuint64 query_ns[FAKE_GL_MAX_QUERIES];
+    unsigned time_queries_begun, time_results_read;
     /* GL state (fake_gl_state.h) */
     fake_gl_glstate gl;
     /* glPushAttrib's stack: the whole state and the mask at each push */

@@ -107,6 +107,25 @@ double peer_row_frame(peer_row *r, const bench_env *env, int mode)
     return bench_now_ms() - t0;
 }
 
+void peer_row_settled(peer_row *r)
+{
+    static const char *const names[] = {"no measured choice (vdsm or the selection's)",
+                                        "vdsm", "volume, GPU-extruded", "volume, CPU-built"};
+    stin_shadows_stats st;
+    if (r->failed || !r->ctx)
+        return;
+    st = stin_query_frame_stats(r->ctx).shadows;
+    if (st.choice_current > STIN_SHADOW_CHOICE_VOLUME_CPU)
+        st.choice_current = STIN_SHADOW_CHOICE_OFF;
+    if (st.choice_current == STIN_SHADOW_CHOICE_OFF) {
+        snprintf(r->note, sizeof r->note, "%s", names[0]);
+        return;
+    }
+    snprintf(r->note, sizeof r->note,
+             "settled on %s (smoothed GPU ms: vdsm %.2f, GPU volumes %.2f, CPU volumes %.2f)",
+             names[st.choice_current], st.choice_ms[0], st.choice_ms[1], st.choice_ms[2]);
+}
+
 void peer_row_destroy(peer_row *r)
 {
     if (r->ctx) {

@@ -31,6 +31,7 @@ typedef struct peer_row {
     long disagree;           /* stin rows: classified against its visibility output */
     int staged;              /* stage_ms holds stin's GPU time per stage (medians) */
     double stage_ms[STIN_STAGE_COUNT];
+    char note[160];          /* the default row: what its measured choice settled on */
 } peer_row;
 
 /* Creates the row's renderer for s at the bench's size (rows are memset
@@ -44,6 +45,10 @@ void peer_row_destroy(peer_row *r);
 /* stin rows: stage_ms from a second context with STIN_DEBUG_STAGE_TIMES
  * (peers_stages.c); staged stays 0 without timer queries. */
 void peer_row_stages(peer_row *r, const bench_env *env, scene *s, int map_size, int frames);
+
+/* The default row, after its timed frames: note says which technique the
+ * measured choice settled on and each candidate's smoothed ms. */
+void peer_row_settled(peer_row *r);
 
 /* Why osgShadow does not run here, or NULL where it does. */
 const char *peer_osg_absent(const bench_env *env);

@@ -133,6 +133,11 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
         goto done;
     if (frame_stats)
         *frame_stats = stin_query_frame_stats(ctx);
+    /* Depth was written with this frame's projection, which shadow volumes
+     * may have moved to an infinite far plane; the next frames' may differ
+     * (the measured choice of the exact technique runs vdsm or volumes). */
+    scene_camera_matrices(cam, w, h, view, proj);
+    stin_query_frame_projection(ctx, proj);
     if (!stin_platform_read_depth(p, depth)) {
         snprintf(err, err_size, "depth readback failed");
         goto done;
@@ -140,10 +145,6 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
     if (!render_read(g, ctx, p, STIN_OUTPUT_NORMAL, normal, NULL, err, err_size) ||
         !render_read(g, ctx, p, STIN_OUTPUT_VISIBILITY, vis, NULL, err, err_size))
         goto done;
-    /* Depth was written with the frame's projection, which shadow volumes may
-     * have moved to an infinite far plane. */
-    scene_camera_matrices(cam, w, h, view, proj);
-    stin_query_frame_projection(ctx, proj);
     if (!aov_inverse_view_proj(view, proj, inv)) {
         snprintf(err, err_size, "camera matrices are singular");
         goto done;
