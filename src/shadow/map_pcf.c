@@ -16,7 +16,9 @@
  * eye (normal-offset bias: 1.5 texels' width at the point, so a wide depth
  * range does not inflate it at the receivers near the light), projects it,
  * and averages a (2r+1)^2 kernel (r = pcf_kernel / 2). Maps are drawn with
- * polygon offset (the light's shadow_offset: slope-scaled bias). */
+ * polygon offset (the light's shadow_offset: slope-scaled bias). The test
+ * is all in the lit program, so the frame may draw light 0's pass in its
+ * ambient pass's place (`forward`: one camera pass for one light). */
 #include "internal.h"
 
 struct stin__map_pcf_state {
@@ -405,5 +407,6 @@ const stin__shadow_technique stin__shadow_map_pcf = {
     .light = pcf_light,
     .uniforms = pcf_uniforms,
     .fragment_test = pcf_fragment_test,
+    .forward = 1,
     .debug_map = pcf_debug_map,
 };
