@@ -184,18 +184,21 @@
  * meet its frustum, a face no visible draw's bounds reach not drawn at all,
  * and the kernel's taps kept inside the face's cell. A point whose
  * side the eye sees turns away from the light is in its own shadow, without
- * a lookup (as the test reference decides). The others are looked up from a
- * point moved along their geometric normal toward the eye by 1.5 texels'
- * width of the map where the point is: 3 d / size for a point light (d the
- * point's distance from the light along the face's axis, its largest
- * coordinate difference), 3 d tan(cutoff + 1 degree) / size for a spot (d
- * along its direction), 3 h / size for a directional light (h the map's
- * half-width: the receivers in view, rounded up to a power of two). The
- * limit of that bias: a receiver whose caster's far side lies nearer than
- * the offset along the receiver's normal (the gap plus the caster's
- * thickness, as between thin parallel fins) is looked up past the caster and
- * lit where the caster shadows it; at 1.25 times the offset it is shadowed
- * (tests/image/model_test.c, "map-pcf-gap": 1.25 shadowed, 0.8 leaks).
+ * a lookup (as the test reference decides). The others compare, at each
+ * tap, the depth of their own plane there (receiver-plane depth bias, from
+ * the screen derivatives), so no tap of the kernel shadows a sloped
+ * receiver with itself. Only where the light grazes the receiver (the
+ * cosine under 0.3) is the point also moved along its geometric normal
+ * toward the eye, by up to 1.5 texels' width of the map where the point is
+ * (all of it under 0.1): 3 d / size for a point light (d the point's
+ * distance from the light along the face's axis, its largest coordinate
+ * difference), 3 d tan(cutoff + 1 degree) / size for a spot (d along its
+ * direction), 3 h / size for a directional light (h the map's half-width:
+ * the receivers in view, rounded up to a power of two). A receiver facing
+ * the light is not moved, so a caster just above it across a thin gap
+ * still shadows it (tests/image/model_test.c, "map-pcf-gap": shadowed at
+ * 1.25 and 0.8 times the full push), and the side of a fin lit at an angle
+ * keeps its shadow edge where the next fin puts it.
  * Fixed-function shadow maps: spot lights get one map over the
  * cone, directional lights one orthographic map, point lights six 90-degree
  * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a

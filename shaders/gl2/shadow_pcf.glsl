@@ -5,13 +5,15 @@
 // atlas, 3 across and 2 up (face f in column f mod 3, row f / 3), so one
 // sampler serves the six and a fragment runs one face's taps.
 // Each map: world -> [0,1] texture space by u_shadow_matrix[face] (a face's
-// into its cell); the position is pushed along the geometric normal, toward
-// the side the eye sees, by u_shadow_params.z times its clip w (1.5 texels'
-// width at the point: w is 1 for an orthographic map, the distance along the
-// light's axis for a perspective one) before the lookup (normal-offset
-// bias); the kernel is (2 r + 1) x (2 r + 1) taps of the hardware's 2x2
-// compare, r = params.y, a face's taps kept half a texel inside its cell so
-// none reads a neighbouring face.
+// into its cell). Bias: each tap compares the depth of the receiver's own
+// plane at the tap (receiver-plane depth bias, from the screen derivatives),
+// and only where the light grazes the receiver is the position pushed along
+// the geometric normal, toward the side the eye sees, by up to
+// u_shadow_params.z times its clip w (1.5 texels' width at the point: w is 1
+// for an orthographic map, the distance along the light's axis for a
+// perspective one). The kernel is (2 r + 1) x (2 r + 1) taps of the
+// hardware's 2x2 compare, r = params.y, a face's taps kept half a texel
+// inside its cell so none reads a neighbouring face.
 uniform int u_shadow_kind;
 uniform mat4 u_shadow_matrix[6];
 // x, w: a texel's width and height in [0,1]; y: kernel radius; z: normal offset per unit w
@@ -23,7 +25,8 @@ float pcf_visibility(int i)
 {
     if (u_shadow_kind == 0)
         return 1.0; // a shadowed pass lights one light, so i is always that one
-    vec3 ng = normalize(cross(dFdx(v_world), dFdy(v_world)));
+    vec3 wx = dFdx(v_world), wy = dFdy(v_world);
+    vec3 ng = normalize(cross(wx, wy));
     vec4 light = u_lights[4 * i];
     vec2 texel = u_shadow_params.xw;
     // one map: no clamp of our own (its edge clamp is the same)
@@ -47,24 +50,42 @@ float pcf_visibility(int i)
     // shadow (no offset point past a thin caster may say otherwise)
     if (dot(ng, u_eye - v_world) < 0.0)
         ng = -ng;
-    if (dot(ng, light.w == 0.0 ? light.xyz : light.xyz - v_world) <= 0.0)
+    float cos_l = dot(ng, normalize(light.w == 0.0 ? light.xyz : light.xyz - v_world));
+    if (cos_l <= 0.0)
         return 0.0;
-    // the offset is u_shadow_params.z texels' width where this point is: a
-    // perspective map's texels grow with the distance from the light (w)
     vec4 c = u_shadow_matrix[face] * vec4(v_world, 1.0);
     if (c.w <= 0.0)
         return 0.0;
-    c = u_shadow_matrix[face] * vec4(v_world + ng * (u_shadow_params.z * c.w), 1.0);
+    // the normal offset: u_shadow_params.z texels' width where this point
+    // is (a perspective map's texels grow with the distance from the light,
+    // w), only where the light grazes the receiver (cos under 0.3, all of it
+    // under 0.1). Elsewhere the receiver plane below keeps each tap off the
+    // surface, and a push would only move the shadow: along the normal of a
+    // fin's side it carries the lookup point sideways out from under the
+    // next fin's edge (and toward a light head-on, through a thin gap)
+    float push = (1.0 - smoothstep(0.1, 0.3, cos_l)) * u_shadow_params.z * c.w;
+    vec3 p = v_world + ng * push;
+    c = u_shadow_matrix[face] * vec4(p, 1.0);
     if (c.w <= 0.0)
         return 0.0;
     vec3 t = c.xyz / c.w;
+    // receiver plane: the map depth's change per unit of u and v across
+    // this point's plane, from its screen derivatives projected into the
+    // map, so each tap of the kernel compares the plane's own depth there
+    // and a wide kernel does not shadow a sloped receiver with itself
+    vec4 ex = u_shadow_matrix[face] * vec4(wx, 0.0);
+    vec4 ey = u_shadow_matrix[face] * vec4(wy, 0.0);
+    vec3 tx = (ex.xyz - t * ex.w) / c.w, ty = (ey.xyz - t * ey.w) / c.w;
+    float det = tx.x * ty.y - tx.y * ty.x;
+    vec2 dz = abs(det) > 1e-12 ? vec2(tx.z * ty.y - ty.z * tx.y, tx.x * ty.z - ty.x * tx.z) / det
+                               : vec2(0.0);
     // the loop runs only the kernel's taps (a uniform bound: no wasted taps)
     int r = int(u_shadow_params.y + 0.5);
     float sum = 0.0, n = 0.0;
     for (int y = -r; y <= r; y++)
         for (int x = -r; x <= r; x++) {
             vec2 at = clamp(t.xy + vec2(float(x), float(y)) * texel, lo, hi);
-            sum += shadow2D(u_shadow_map, vec3(at, t.z)).r;
+            sum += shadow2D(u_shadow_map, vec3(at, t.z + dot(at - t.xy, dz))).r;
             n += 1.0;
         }
     return sum / n;

@@ -330,13 +330,17 @@ static int mask_pays(const stin_context *ctx, uint32_t lights)
     return !ctx->shadow->mask_depth || lights > 1;
 }
 
-/* Per light: its visibility (stencil count, map test, screen mask) and its
+/* Per light from `first` on (those before it lit already: the forward
+ * pass): its visibility (stencil count, map test, screen mask) and its
  * lighting. The visibility output shows light 0 only. */
-static void stage_lights(stin_context *ctx, const stin__path *path, int visibility)
+static void stage_lights(stin_context *ctx, const stin__path *path, int visibility,
+                         uint32_t first)
 {
     uint32_t li, lights = visibility ? (ctx->light_count > 0) : ctx->light_count;
     unsigned char masked[STIN__MAX_LIGHTS] = {0};
     stin_stage was = stin__times_enter(ctx, STIN_STAGE_SHADOW);
+    for (li = 0; li < first && li < lights; li++)
+        masked[li] = 1;
     if (ctx->shadow->mask && stin__mask_usable(ctx) && path->lit_lights &&
         mask_pays(ctx, lights))
         (void)masked_lights(ctx, path, lights, visibility, masked);
@@ -348,6 +352,49 @@ static void stage_lights(stin_context *ctx, const stin__path *path, int visibili
         }
     stin__mask_frame_end(ctx);
     (void)stin__times_enter(ctx, was);
+}
+
+/* The forward pass's shading: light 0 and the ambient light in one pass
+ * with depth writes, in the ambient pass's place. */
+static void shade_forward(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                          float weight)
+{
+    stin_stage was = stin__times_enter(ctx, STIN_STAGE_LIGHTING);
+    (void)weight;
+    path->lit_ambient(ctx, l);
+    (void)stin__times_enter(ctx, was);
+}
+
+/* 1 where the frame's opaque draws can take the ambient light and light 0
+ * in one pass: the technique tests light 0 in the lit program itself (a
+ * map sampled there) and nothing before the lights needs the frame's
+ * depth on its own: no screen masks (they draw the depth into the mask
+ * first), no CSG products (their faces go depth EQUAL on the resolved
+ * depth), no deep or colour map made per light between the ambient and
+ * lit passes, not the visibility output (its flat passes). The blended
+ * draws, the export and the outline come after and find the same depth. */
+static int forward_possible(const stin_context *ctx, const stin__path *path, int visibility)
+{
+    const stin__shadow_technique *t = ctx->shadow;
+    return !visibility && path->lit_ambient && t->forward && !t->mask && t->fragment_test &&
+           t->fragment_test(ctx, 0) && !stin__csg_product_count(ctx) &&
+           !stin__translucent_active(ctx);
+}
+
+/* The opaque draws' first pass: ambient and light 0 at once where
+ * forward_possible (returns 1: the lights from 1 on are left), else the
+ * ambient pass (returns 0). A frame of one map-lit light draws each mesh
+ * once from the camera instead of twice. */
+static uint32_t stage_base(stin_context *ctx, const stin__path *path, int visibility)
+{
+    if (forward_possible(ctx, path, visibility)) {
+        stin_stage was = stin__times_enter(ctx, STIN_STAGE_SHADOW);
+        ctx->shadow->light(ctx, path, 0, shade_forward);
+        (void)stin__times_enter(ctx, was);
+        return 1;
+    }
+    path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
+    return 0;
 }
 
 /* A peeled layer's lights without shadows, in batches of the path's size. */
@@ -415,7 +462,7 @@ static void peeled_layers(stin_context *ctx, const stin__path *path, int shadowe
             if (shadowed && t->layer)
                 t->layer(ctx); /* the layer is the receiver now */
             if (shadowed)
-                stage_lights(ctx, path, 0);
+                stage_lights(ctx, path, 0, 0);
             else
                 unshadowed_lights(ctx, path);
         }
@@ -481,8 +528,7 @@ static void run_plan(stin_context *ctx)
     } else if (ctx->frame.output == STIN_OUTPUT_NORMAL) {
         path->normals(ctx);
     } else if (shadowed) {
-        path->ambient(ctx, visibility ? STIN__ALL : STIN__OPAQUE, visibility);
-        stage_lights(ctx, path, visibility);
+        stage_lights(ctx, path, visibility, stage_base(ctx, path, visibility));
         if (!visibility)
             stage_blended(ctx, path, 1);
     } else if (visibility) {

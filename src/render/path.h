@@ -104,6 +104,12 @@ typedef struct stin__path {
      * writes), else that light added at the draw's opacity with depth EQUAL,
      * the technique's test applying as in path->lit. */
     void (*blended_one)(stin_context *ctx, const stin__draw *d, const stin_light_desc *light);
+    /* Opaque draws lit by the ambient light and this one light in one pass,
+     * depth LESS with writes: the ambient pass and the light's lit pass at
+     * once, for a shadow technique that tests the light per fragment of
+     * the lit program (frame/frame.c's forward pass). NULL: the path has
+     * none (fixed function: its test takes passes of its own). */
+    void (*lit_ambient)(stin_context *ctx, const stin_light_desc *light);
 } stin__path;
 
 const stin__path *stin__fixed_path(void);

@@ -549,6 +549,17 @@ static void glsl_lit_lights(stin_context *ctx, const stin_light_desc *lights, in
     ctx->stats.passes++;
 }
 
+/* Ambient and one light in the ambient pass's place: a program's ambient
+ * term rides with the first batch, as in glsl_batches. */
+static void glsl_lit_ambient(stin_context *ctx, const stin_light_desc *light)
+{
+    const stin__program *p = use(ctx, STIN__PROG_LIT);
+    upload_lights(ctx, p, light, 1, 1);
+    pass_state(ctx, 0, 0);
+    draw_set(ctx, p, STIN__OPAQUE, 1);
+    ctx->stats.passes++;
+}
+
 static void glsl_lit(stin_context *ctx, const stin_light_desc *light)
 {
     glsl_lit_lights(ctx, light, 1);
@@ -730,7 +741,7 @@ const stin__path *stin__glsl_path(void)
                                     glsl_volume_draw, glsl_volume_end, glsl_batches,
                                     glsl_normals,     glsl_depth,      glsl_lit_lights,
                                     glsl_geometry_begin, glsl_geometry, glsl_geometry_end,
-                                    glsl_blended_one};
+                                    glsl_blended_one, glsl_lit_ambient};
     return &path;
 }
 

@@ -12,11 +12,16 @@
  * be clipped away), and a face no visible draw's bounds reach is not drawn
  * at all (no visible point picks it). The lit
  * pass's shadow_pcf.glsl chunk shadows a point whose side the eye sees turns
- * away from the light, else pushes it along its geometric normal toward the
- * eye (normal-offset bias: 1.5 texels' width at the point, so a wide depth
- * range does not inflate it at the receivers near the light), projects it,
- * and averages a (2r+1)^2 kernel (r = pcf_kernel / 2). Maps are drawn with
- * polygon offset (the light's shadow_offset: slope-scaled bias). */
+ * away from the light, else projects it and averages a (2r+1)^2 kernel
+ * (r = pcf_kernel / 2), each tap against its receiver plane's depth there
+ * (receiver-plane bias); only a point the light grazes is pushed along its
+ * geometric normal toward the eye first (normal offset: up to 1.5 texels'
+ * width at the point, so a wide depth range does not inflate it at the
+ * receivers near the light; none where the light meets the receiver more
+ * squarely, where a push would move the shadow's edge). Maps are drawn with
+ * polygon offset (the light's shadow_offset: slope-scaled bias). The test
+ * is all in the lit program, so the frame may draw light 0's pass in its
+ * ambient pass's place (`forward`: one camera pass for one light). */
 #include "internal.h"
 
 struct stin__map_pcf_state {
@@ -138,7 +143,8 @@ static uint32_t draw_map(stin_context *ctx, const map_target *t, const stin_ligh
     return drawn;
 }
 
-/* 1.5 texels' width in world units per unit of the map's clip w: a texel
+/* 1.5 texels' width in world units per unit of the map's clip w (the
+ * normal offset of a grazed receiver, shadow_pcf.glsl): a texel
  * of an orthographic map (w = 1) is 2 / (proj[0] size) wide everywhere, a
  * perspective one's that times its distance along the light's axis (w), so
  * the shader's offset is 1.5 texels at each receiver, however wide the
@@ -405,5 +411,6 @@ const stin__shadow_technique stin__shadow_map_pcf = {
     .light = pcf_light,
     .uniforms = pcf_uniforms,
     .fragment_test = pcf_fragment_test,
+    .forward = 1,
     .debug_map = pcf_debug_map,
 };

@@ -71,6 +71,12 @@ typedef struct stin__shadow_technique {
      * test. NULL: no light's are (volumes and masks count or mask against
      * the nearest opaque surface). */
     int (*fragment_test)(const stin_context *ctx, uint32_t li);
+    /* 1 where light() calls shade exactly once, the test all in the lit
+     * program (fragment_test), and nothing of the technique reads the
+     * frame's depth: the frame may then draw the first light's pass in the
+     * ambient pass's place, with depth writes (frame/frame.c's forward
+     * pass). 0: the ambient pass comes first. */
+    int forward;
     /* Right after the CSG resolve (frame/frame.c), the products' depth and
      * faces in place and before any pass reads them: what the technique drew
      * of the frame's surfaces in its light pre-pass (vdsm: the position

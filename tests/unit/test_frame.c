@@ -1150,6 +1150,58 @@ static void test_pcf_point_faces_culled(void **state)
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
+/* A map-pcf frame of n opaque quads under `spots` spot lights above them
+ * (output out); its stats, the draw calls counted from begin. */
+static stin_frame_stats pcf_spot_frame(int n, int spots, stin_output out)
+{
+    stin_frame_desc fd = frame_desc();
+    int i;
+    fd.output = out;
+    fake_gl.draw_calls = 0;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    for (i = 0; i < spots; i++) {
+        stin_light_desc l = point_light(0.1f * (float)i);
+        l.type = STIN_LIGHT_SPOT;
+        l.direction[2] = -1.0f;
+        assert_int_equal(stin_add_light(ctx, &l), STIN_OK);
+    }
+    for (i = 0; i < n; i++)
+        assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    return stin_query_frame_stats(ctx);
+}
+
+/* map-pcf's one forward pass (issue 36): the lit program samples the map,
+ * so the ambient light and the first light share one pass with depth
+ * writes: each of N meshes drawn once into the map and once from the
+ * camera (2 passes, 2N draws; an ambient and a lit pass made it 3 and
+ * 3N). A second light adds its own map and lit pass; the visibility
+ * output keeps its ambient pass before the flat one. */
+static void test_pcf_forward_pass(void **state)
+{
+    static const fake_gl_profile_id profiles[] = {FAKE_GL21, FAKE_GL45_CORE};
+    const int n = 3;
+    stin_frame_stats st;
+    int p;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_MAP_PCF;
+    for (p = 0; p < 2; p++) {
+        create_profile(profiles[p], 16, 8);
+        assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_SHADOWS).technique,
+                         STIN_TECH_SHADOWS_MAP_PCF);
+        st = pcf_spot_frame(n, 1, STIN_OUTPUT_BEAUTY);
+        assert_int_equal(st.passes, 1 + 1); /* the map, the forward pass */
+        assert_int_equal(fake_gl.draw_calls, n + n);
+        st = pcf_spot_frame(n, 2, STIN_OUTPUT_BEAUTY);
+        assert_int_equal(st.passes, 2 + 1 + 1); /* two maps, forward, light 1's */
+        assert_int_equal(fake_gl.draw_calls, 2 * n + n + n);
+        st = pcf_spot_frame(n, 1, STIN_OUTPUT_VISIBILITY);
+        assert_int_equal(st.passes, 1 + 1 + 1); /* the map, ambient, flat */
+        assert_int_equal(fake_gl.draw_calls, 3 * n);
+    }
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 #define TEST(f) cmocka_unit_test_setup_teardown(f, setup, teardown)
 
 int main(void)
@@ -1157,6 +1209,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         TEST(test_call_order_errors),
         TEST(test_pcf_point_faces_culled),
+        TEST(test_pcf_forward_pass),
         TEST(test_translucent_fallback_without_shadows),
         TEST(test_bad_frame_descs),
         TEST(test_bad_lights_are_rejected),
