@@ -23,6 +23,7 @@
  * is all in the lit program, so the frame may draw light 0's pass in its
  * ambient pass's place (`forward`: one camera pass for one light). */
 #include "internal.h"
+#include "render/draw_bounds.h"
 
 struct stin__map_pcf_state {
     GLuint textures[STIN__MAX_LIGHTS];
@@ -182,46 +183,6 @@ static void pcf_prepass(stin_context *ctx)
 
 /* ---- a point light's faces ------------------------------------------------ */
 
-/* The eight corners of draw d's bounds in world space; 0 where its bounds
- * say nothing of what it draws (displaced in the vertex stage). */
-static int draw_corners(const stin_context *ctx, const stin__draw *d, float out[24])
-{
-    const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
-    int c, k;
-    if (stin__displace_active(ctx, &d->material))
-        return 0;
-    for (c = 0; c < 8; c++) {
-        float p[3];
-        for (k = 0; k < 3; k++)
-            p[k] = (c >> k) & 1 ? info->bounds_max[k] : info->bounds_min[k];
-        stin__mat4_transform_point(d->transform, p, out + 3 * c);
-    }
-    return 1;
-}
-
-/* 1 unless every corner lies outside one of the n planes (a x + b y + c z
- * + d >= 0 inside): the box may meet the convex region they bound. The
- * margin keeps a box grazing a plane in (being conservative is exact
- * here: a caster the GPU clips anyway draws nothing). */
-static int box_meets(const float corners[24], const float *planes, int n)
-{
-    int p, c;
-    for (p = 0; p < n; p++) {
-        const float *q = planes + 4 * p, *v;
-        float scale = stin__sqrtf(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
-        int outside = 0;
-        if (!(scale > 0.0f))
-            continue; /* no plane (an infinite far plane) */
-        for (c = 0, v = corners; c < 8; c++, v += 3)
-            if (q[0] * v[0] + q[1] * v[1] + q[2] * v[2] + q[3] <
-                -1e-4f * (scale + (q[3] < 0.0f ? -q[3] : q[3])))
-                outside++;
-        if (outside == 8)
-            return 0;
-    }
-    return 1;
-}
-
 /* Face f's four side planes (its 90-degree pyramid from the light; near
  * and far left out: the depth range covers every caster): inside where the
  * face's axis component of p - light is at least the other two's size. */
@@ -240,16 +201,6 @@ static void face_planes(const float light[3], int face, float planes[4][4])
     }
 }
 
-/* The camera's six frustum planes (Gribb-Hartmann rows of view_proj). */
-static void camera_planes(const stin_context *ctx, float planes[6][4])
-{
-    const float *vp = ctx->view_proj;
-    int p, k;
-    for (p = 0; p < 6; p++)
-        for (k = 0; k < 4; k++) /* row 3 +/- row p/2 */
-            planes[p][k] = vp[4 * k + 3] + (p % 2 ? -vp[4 * k + p / 2] : vp[4 * k + p / 2]);
-}
-
 /* The faces (bit f) some visible point may pick: those a draw's bounds
  * meet inside the camera's frustum. A draw whose bounds tell nothing, or
  * the CSG products (their faces are not the frame's draws), keep all six. */
@@ -261,17 +212,17 @@ static unsigned faces_seen(const stin_context *ctx, const float light[3])
     int face;
     if (stin__casters_wanted(ctx))
         return 0x3fu;
-    camera_planes(ctx, cam);
+    stin__frustum_planes(ctx->view_proj, cam);
     for (face = 0; face < STIN__CUBE_FACES; face++)
         face_planes(light, face, planes[face]);
     for (i = 0; i < ctx->draw_count && seen != 0x3fu; i++) {
         float corners[24];
-        if (!draw_corners(ctx, &ctx->draws[i], corners))
+        if (!stin__draw_world_corners(ctx, &ctx->draws[i], corners))
             return 0x3fu;
-        if (!box_meets(corners, cam[0], 6))
+        if (!stin__points_meet(corners, 8, cam[0], 6))
             continue;
         for (face = 0; face < STIN__CUBE_FACES; face++)
-            if (box_meets(corners, planes[face][0], 4))
+            if (stin__points_meet(corners, 8, planes[face][0], 4))
                 seen |= 1u << face;
     }
     return seen;
@@ -281,9 +232,9 @@ static unsigned faces_seen(const stin_context *ctx, const float light[3])
 static int in_face(const stin_context *ctx, const stin__draw *d, const void *user)
 {
     float corners[24];
-    if (!draw_corners(ctx, d, corners))
+    if (!stin__draw_world_corners(ctx, d, corners))
         return 1;
-    return box_meets(corners, (const float *)user, 4);
+    return stin__points_meet(corners, 8, (const float *)user, 4);
 }
 
 /* world -> [0,1] window coordinates of face f's cell in the atlas: the
