@@ -43,6 +43,7 @@
     X(void, TexParameterfv, (GLenum target, GLenum pname, const GLfloat *v), NEED_CORE, "") \
     X(void, PixelStorei, (GLenum pname, GLint param), NEED_CORE, "")                      \
     X(void, Finish, (void), NEED_CORE, "")                                                \
+    X(void, Flush, (void), NEED_CORE, "")                                                 \
     X(void, ReadPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum fmt, GLenum type,  \
                          void *pixels), NEED_CORE, "")                                    \
     X(void, PolygonOffset, (GLfloat factor, GLfloat units), NEED_CORE, "")                \

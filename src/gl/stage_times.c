@@ -52,7 +52,13 @@ static void mark(stin_context *ctx, stin_stage s)
         t->said_full = 1;
         return;
     }
+    /* Each counter in a submission of its own: a renderer that defers
+     * drawing to the flush (llvmpipe bins a whole scene and stamps every
+     * counter in it when the scene is done) would otherwise stamp a stage's
+     * start when the work after it is done. */
+    GL(ctx, Flush)();
     GL(ctx, QueryCounter)(t->queries[t->marks], GL_TIMESTAMP);
+    GL(ctx, Flush)();
     t->stage[t->marks++] = (unsigned char)s;
 }
 

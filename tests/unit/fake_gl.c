@@ -61,6 +61,7 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_TexParameteri ~, 1
 #define FAKE_STATELESS_TexParameterfv ~, 1
 #define FAKE_STATELESS_Finish ~, 1
+#define FAKE_STATELESS_Flush ~, 1
 #define FAKE_STATELESS_ReadPixels ~, 1
 #define FAKE_STATELESS_TexSubImage2D ~, 1
 #define FAKE_STATELESS_DrawPixels ~, 1
