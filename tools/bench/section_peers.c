@@ -29,8 +29,10 @@
 enum { STIN_OFF, STIN_VDSM, STIN_VOLUME, STIN_MAP_PCF, STIN_DEFAULT, STIN_ROWS };
 /* Frames the default row runs before its timed ones, past the bench's
  * warm-up: enough for the measured choice to time every candidate three
- * times (one frame in two a trial until then) and read the last back. */
-#define DEFAULT_SETTLE 24
+ * times (one frame in two a trial until then), then for two more trials at
+ * its default pace of one in 30 frames (a switch needs two won in a row),
+ * so the row shows where an application's frames settle. */
+#define DEFAULT_SETTLE 100
 #define OSG_ROWS 7
 #define OSG_OFF STIN_ROWS /* OSG's row without a technique */
 #define MAX_ROWS (STIN_ROWS + OSG_ROWS)
