@@ -147,7 +147,9 @@
  * frame runs the cheaper by measured GPU time: the candidates are vdsm,
  * volumes extruded by the geometry shader and volumes built on the CPU (two
  * where GPU extrusion is not there). A GL_TIME_ELAPSED query spans each
- * shadowed frame's plan; its result is read a frame or more later, only
+ * shadowed frame's plan, each of its ends between two glFlush calls (a
+ * renderer that defers drawing to the flush, as llvmpipe does, would
+ * otherwise time a frame as its submission); its result is read a frame or more later, only
  * once GL_QUERY_RESULT_AVAILABLE says so (4 in flight at most: a frame
  * finding none free goes untimed; no frame waits for the GPU). The first
  * 8 frames run vdsm (a context's first frames build programs and buffers;
@@ -176,7 +178,7 @@
  * run volumes again. Forcing a shadows technique, a tier without vdsm, or
  * STIN_DEBUG_SHADOW_CHOICE_OFF keeps the selection's technique on every
  * frame: no trial, no switch.
- * "map-pcf": depth maps through an FBO, a normal-offset bias and a 1/3/5-tap
+ * "map-pcf": depth maps through an FBO, a receiver-plane bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
  * point lights get six 90-degree maps drawn before their pass into one
  * atlas (3 x 2 faces, one sampler; the face size halved while three faces
@@ -996,9 +998,11 @@ typedef struct stin_desc {
 /* -- the frame and lighting (bits 0-7) */
 /* GPU time per frame stage into stin_frame_stats.stage_ns, from timestamp
  * queries (GL 3.3 or ARB_timer_query: the "timer queries" capability) at
- * each change of stage; stin_end_frame waits for the last of them, so a
- * timed frame ends with the GPU idle (a measurement aid, as
- * STIN_DEBUG_VDSM_COUNT is). Without the capability stage_times stays 0. */
+ * each change of stage, each between two glFlush calls (so a renderer that
+ * defers drawing to the flush stamps it where it stands); stin_end_frame
+ * waits for the last of them, so a timed frame ends with the GPU idle (a
+ * measurement aid, as STIN_DEBUG_VDSM_COUNT is). Without the capability
+ * stage_times stays 0. */
 #define STIN_DEBUG_STAGE_TIMES 0x1ull
 /* GLSL lighting: every lit pass through the general program (a loop over
  * up to 8 lights bounded by a uniform, every part of the equation behind a
