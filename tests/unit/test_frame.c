@@ -617,6 +617,37 @@ static void test_volume_lights_share_lit_passes_through_masks(void **state)
     create_profile(FAKE_GL21, 16, 8);
 }
 
+/* Volumes are cut past the visible receivers and culled where they cannot
+ * reach the view: a quad in view casts a cut volume; one at x = 5, far
+ * outside the orthographic view (x in -1..1) and lit from z = 3, casts one
+ * that only spreads away from it: skipped. STIN_DEBUG_VOLUME_UNBOUNDED
+ * draws both to infinity. */
+static void test_volumes_cut_and_culled(void **state)
+{
+    static const float aside[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 5, 0, 0, 1};
+    stin_frame_desc fd = frame_desc();
+    stin_frame_stats st;
+    int unbounded;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VOLUME;
+    for (unbounded = 0; unbounded < 2; unbounded++) {
+        debug_flags = unbounded ? STIN_DEBUG_VOLUME_UNBOUNDED : 0;
+        create_profile(FAKE_GL21, 16, 8);
+        assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+        add_lights(1);
+        assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+        assert_int_equal(stin_draw(ctx, quad, aside, NULL), STIN_OK);
+        assert_int_equal(stin_end_frame(ctx), STIN_OK);
+        st = stin_query_frame_stats(ctx);
+        assert_int_equal(st.shadows.volume_cut_casters, unbounded ? 0 : 1);
+        assert_int_equal(st.shadows.volume_culled_casters, unbounded ? 0 : 1);
+        assert_int_equal(st.shadows.zpass_casters + st.shadows.zfail_casters, unbounded ? 2 : 1);
+    }
+    debug_flags = 0;
+    shadows = STIN_TECH_SHADOWS_OFF;
+    create_profile(FAKE_GL21, 16, 8);
+}
+
 /* sorted: blended draws are drawn once per light batch each, after the
  * opaque ones (no packed depth-stencil: no depth-peel). */
 static void test_blended_draws_once_per_batch(void **state)
@@ -1227,6 +1258,7 @@ int main(void)
         TEST(test_lit_general_flag),
         TEST(test_lit_failed_build_falls_back),
         TEST(test_volume_lights_share_lit_passes_through_masks),
+        TEST(test_volumes_cut_and_culled),
         TEST(test_incomplete_mask_falls_back_into_the_target),
         TEST(test_frame_projection_is_known_at_begin),
         TEST(test_fixed_function_passes_per_max_lights),
