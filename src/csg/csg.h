@@ -94,6 +94,9 @@ void stin__csg_depth_again(struct stin_context *ctx, const stin__path *path);
  * (0, 0) (the viewport's corner for the CPU resolve's R32F copy, (0, 0)
  * for the GPU resolve's depth texture). */
 GLuint stin__csg_depth_texture(struct stin_context *ctx, int origin[2]);
+/* The band around the resolved depth within which face d's fragment lies
+ * on the resolved surface (render/resolved.h; csg/merge.c). */
+void stin__csg_snap_band(const struct stin_context *ctx, const stin__draw *d, float band[2]);
 /* The faces of the resolved products as draws (csg/csg.c), after the
  * resolve; face_list: them (the render passes' stin__resolved faces hook). */
 void stin__csg_faces(struct stin_context *ctx);
@@ -121,6 +124,10 @@ int stin__csg_cap_transform(const struct stin_context *ctx, float out[16]);
 /* Whether the frame's near and far planes cut d's bounding box. */
 void stin__csg_planes_cut(const struct stin_context *ctx, const stin__draw *d, int *near_cut,
                           int *far_cut);
+/* The same, and the largest clip coordinate of d's bounding box's corners
+ * (the scale of the clipper's rounding where the near plane cuts d). */
+void stin__csg_clip_extent(const struct stin_context *ctx, const stin__draw *d, int *near_cut,
+                           int *far_cut, float *reach);
 /* Every product resolved into r in the bound framebuffer, with the
  * current camera (ctx->frame.view, projection, view_proj, viewport), each
  * by the chain's first method that takes it (csg/resolve.c). */

@@ -42,6 +42,13 @@
  * for the same result): far above the result's error, far below what
  * separates two faces that are not one plane. */
 #define SNAP_BAND (1.0f / 2097152.0f)
+/* Where the near plane cuts a face, the clipper's new vertices carry a
+ * rounding of the face's largest clip coordinate (its reach) in every
+ * coordinate, and the divide by w magnifies it near the eye: the candidate
+ * and the snap then disagree by up to about 2^-25 reach / w (measured on
+ * a drill 20 long reaching behind the eye). The band grows by eight
+ * times that, through gl_FragCoord.w, for such faces only. */
+#define NEAR_CUT_BAND (4.0f / 16777216.0f)
 
 static const unsigned thresholds[STIN__CSG_MERGE_THRESHOLDS] = {
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 32, 64, 128, 255};
@@ -308,17 +315,11 @@ GLuint stin__csg_merge_result(stin_context *ctx)
 static void snap_begin(stin_context *ctx, GLuint against)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
-    float params[4];
     GL(ctx, UseProgram)(m->snap_prog);
     stin__lit_program_forget(ctx);
     GL(ctx, UniformMatrix4fv)(m->snap_view_proj, 1, GL_FALSE, ctx->view_proj);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, against);
     GL(ctx, Uniform1i)(m->snap_result, 0);
-    params[0] = SNAP_BAND;
-    params[1] = 0.0f;
-    params[2] = 1.0f / (float)m->width;
-    params[3] = 1.0f / (float)m->height;
-    GL(ctx, Uniform4fv)(m->snap_params, 1, params);
     ctx->bound_mesh = 0xffffffffu;
 }
 
@@ -326,6 +327,25 @@ static void snap_end(stin_context *ctx)
 {
     ctx->bound_mesh = 0xffffffffu;
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+}
+
+void stin__csg_snap_band(const stin_context *ctx, const stin__draw *d, float band[2])
+{
+    float reach;
+    int near_cut, far_cut;
+    stin__csg_clip_extent(ctx, d, &near_cut, &far_cut, &reach);
+    band[0] = SNAP_BAND;
+    band[1] = near_cut ? NEAR_CUT_BAND * reach : 0.0f;
+}
+
+static void snap_band_for(stin_context *ctx, const stin__draw *d)
+{
+    stin__csg_merge_state *m = &ctx->csg->merge;
+    float params[4];
+    stin__csg_snap_band(ctx, d, params);
+    params[2] = 1.0f / (float)m->width;
+    params[3] = 1.0f / (float)m->height;
+    GL(ctx, Uniform4fv)(m->snap_params, 1, params);
 }
 
 /* d's faces but `culled` into the bound framebuffer, depth LESS, where
@@ -343,6 +363,7 @@ static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, in
     if (region)
         stin__csg_region_keep_to(ctx, &ps);
     stin__pass_apply(ctx, &ps);
+    snap_band_for(ctx, d);
     stin__glsl_submit_geometry(ctx, m->snap_model, &m->snap_displace, d);
     ctx->stats.passes++;
 }

@@ -20,10 +20,18 @@ static void to_clip(const float m[16], const float p[3], float out[4])
 void stin__csg_planes_cut(const stin_context *ctx, const stin__draw *d, int *near_cut,
                           int *far_cut)
 {
+    float reach;
+    stin__csg_clip_extent(ctx, d, near_cut, far_cut, &reach);
+}
+
+void stin__csg_clip_extent(const stin_context *ctx, const stin__draw *d, int *near_cut,
+                           int *far_cut, float *reach)
+{
     const stin_mesh_info *info = &ctx->meshes[d->mesh_slot].info;
     float vp[16];
     int corner, k;
     *near_cut = *far_cut = 0;
+    *reach = 0.0f;
     stin__mat4_mul(vp, ctx->projection, ctx->frame.view);
     for (corner = 0; corner < 8; corner++) {
         float p[3], w[3], c[4];
@@ -35,6 +43,11 @@ void stin__csg_planes_cut(const stin_context *ctx, const stin__draw *d, int *nea
             *near_cut = 1;
         if (c[2] > c[3])
             *far_cut = 1;
+        for (k = 0; k < 4; k++) {
+            float a = c[k] < 0.0f ? -c[k] : c[k];
+            if (a > *reach)
+                *reach = a;
+        }
     }
 }
 

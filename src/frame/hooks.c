@@ -22,6 +22,7 @@ static const stin__resolved csg_resolved = {
     stin__csg_face_end,
     stin__csg_depth_again,
     stin__csg_depth_texture,
+    stin__csg_snap_band,
 };
 
 /* Surface detail: the lit program's variants and their chunks (GLSL), DOT3

@@ -30,3 +30,10 @@ GLuint stin__resolved_depth_texture(stin_context *ctx, int origin[2])
 {
     return ctx->resolved ? ctx->resolved->depth_texture(ctx, origin) : 0;
 }
+
+void stin__resolved_snap_band(const stin_context *ctx, const stin__draw *d, float band[2])
+{
+    band[0] = band[1] = 0.0f;
+    if (ctx->resolved)
+        ctx->resolved->snap_band(ctx, d, band);
+}

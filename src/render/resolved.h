@@ -30,6 +30,10 @@ typedef struct stin__resolved {
      * 0 when the frame resolved none. origin: the window pixel of its
      * texel (0, 0). */
     GLuint (*depth_texture)(stin_context *ctx, int origin[2]);
+    /* How near face d's fragment must lie to that depth texture's to be
+     * on the resolved surface: |z - r| <= band[0] + band[1] / w (w: clip
+     * w, the shader's 1 / gl_FragCoord.w). */
+    void (*snap_band)(const stin_context *ctx, const stin__draw *d, float band[2]);
 } stin__resolved;
 
 const stin__draw *stin__resolved_faces(const stin_context *ctx, uint32_t *count);
@@ -37,5 +41,6 @@ int stin__resolved_face_begin(stin_context *ctx, const stin__draw *d, stin__pass
 void stin__resolved_face_end(stin_context *ctx, const stin__pass_state *saved);
 void stin__resolved_depth_again(stin_context *ctx, const stin__path *path);
 GLuint stin__resolved_depth_texture(stin_context *ctx, int origin[2]);
+void stin__resolved_snap_band(const stin_context *ctx, const stin__draw *d, float band[2]);
 
 #endif

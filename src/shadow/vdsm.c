@@ -117,6 +117,7 @@ static const stin__uniform_name position_uniforms[] = {
     STIN__UNIFORM(struct stin__vdsm_state, pos_camera, "u_camera"),
     STIN__UNIFORM(struct stin__vdsm_state, pos_csg, "u_csg"),
     STIN__UNIFORM(struct stin__vdsm_state, pos_csg_depth, "u_csg_depth"),
+    STIN__UNIFORM(struct stin__vdsm_state, pos_csg_grow, "u_csg_grow"),
 };
 
 static const stin__uniform_name facing_uniforms[] = {

@@ -167,14 +167,14 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
  * pre-pass): the products' faces are drawn over it, depth LEQUAL against
  * the draws there without writing depth, each fragment kept only where it
  * lies on the resolved surface (the shader's test against the resolve's
- * depth texture, within 8 steps of a 24-bit depth buffer: 2^-21). */
+ * depth texture, within the face's band: render/resolved.h). */
 void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
 {
     struct stin__vdsm_state *v = ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     stin__pass_state ps = stin__pass_defaults, saved;
     GLuint resolved;
-    float csg[4] = {0.0f, 0.0f, 1.0f, 1.0f / 2097152.0f};
+    float csg[4] = {0.0f, 0.0f, 1.0f, 0.0f}, band[2];
     int origin[2];
     uint32_t i, count;
     const stin__draw *faces = stin__resolved_faces(ctx, &count);
@@ -193,9 +193,12 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     GL(ctx, Uniform1i)(v->pos_csg_depth, 0);
     csg[0] = (float)origin[0];
     csg[1] = (float)origin[1];
-    GL(ctx, Uniform4fv)(v->pos_csg, 1, csg);
     for (i = 0; i < count; i++)
         if (stin__resolved_face_begin(ctx, &faces[i], &saved)) {
+            stin__resolved_snap_band(ctx, &faces[i], band);
+            csg[3] = band[0];
+            GL(ctx, Uniform4fv)(v->pos_csg, 1, csg);
+            GL(ctx, Uniform1f)(v->pos_csg_grow, band[1]);
             stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &faces[i]);
             stin__resolved_face_end(ctx, &saved);
         }

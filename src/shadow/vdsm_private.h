@@ -107,7 +107,7 @@ struct stin__vdsm_state {
     GLuint position_prog, facing_prog, polygon_prog, query;
     GLuint position_tess, polygon_tess; /* "displace-tess": the two, tessellated */
     int tess_active;        /* they are swapped into position_prog and polygon_prog */
-    GLint pos_model, pos_view_proj, pos_camera, pos_csg, pos_csg_depth;
+    GLint pos_model, pos_view_proj, pos_camera, pos_csg, pos_csg_depth, pos_csg_grow;
     GLint face_position, face_normal, face_light;
     stin__vdsm_polygon_locs poly; /* polygon_prog's (the one-pass program) */
     stin__displace_locs pos_displace; /* position_prog's displacement chunk */

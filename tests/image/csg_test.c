@@ -122,6 +122,7 @@ static const csg_case cases[] = {
     {"shadowed", "csg/shadowed.json", {0, 1}, minus, 1, 0, 1},
     {"eye-cavity", "csg/eye-cavity.json", {0, 1}, minus, 0, 0, 0},
     {"eye-cut", "csg/eye-cut.json", {0, 1}, minus, 0, 0, 0},
+    {"eye-tunnel", "csg/eye-tunnel.json", {0, 1}, minus, 0, 0, 0},
     {"row", "csg/row.json", {0, 1}, minus, 0, 0, 0},
     {"torus-far", "csg/torus-far.json", {0, 1}, common, 0, 0, 0},
 };
