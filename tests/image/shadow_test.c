@@ -448,7 +448,7 @@ void shadow_tests(run *r, stin_tier tier, const char *path)
     c.scene_name = scene_name;
     c.samples = s.light_count > 0 && s.lights[0].radius > 0.0f &&
                         s.lights[0].type != SCENE_LIGHT_DIRECTIONAL
-                    ? 8
+                    ? 32 /* stin's default desc.shadows.soft_samples */
                     : 1;
     if (!s.light_count)
         goto done;
