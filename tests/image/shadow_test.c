@@ -165,7 +165,7 @@ static void test_visibility(const shadow_case *c, const capture *cap)
     /* one sample's worth, less what 8-bit accumulation can add up to */
     double threshold = 0.5 / c->samples;
     long compared = 0, differ = 0, far = 0, edge_on = 0, penumbra = 0;
-    char name[256];
+    char name[256], soft[96];
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
             const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
@@ -201,15 +201,18 @@ static void test_visibility(const shadow_case *c, const capture *cap)
         if (!image_write(path, &cap->img, 0, err, sizeof err))
             fprintf(stderr, "stin-imagetest: %s\n", err);
     }
+    soft[0] = '\0';
+    if (c->samples > 1)
+        snprintf(soft, sizeof soft, ", %ld in an area light's penumbra (soft-volume measures them)",
+                 penumbra);
     /* an area light has one shadow boundary per sample: 0.1% for each */
     report(c->r, compared && differ <= VIS_MAX_MISMATCH * c->samples * compared && far == 0
                      ? "PASS" : "FAIL",
            name, "visibility differs on %ld of %ld pixels (%.4f%%; at most 0.1%% a sample), %ld of them "
            "farther than one pixel from a reference shadow boundary (must be 0); not counted: %ld "
            "on a shadow edge in light space (0.1 degree from edge-on, or a 0.1%% light move "
-           "changes them), %ld in an area light's penumbra (soft-volume measures them); %d "
-           "sample%s",
-           differ, compared, compared ? 100.0 * differ / compared : 0.0, far, edge_on, penumbra,
+           "changes them)%s; %d sample%s",
+           differ, compared, compared ? 100.0 * differ / compared : 0.0, far, edge_on, soft,
            c->samples, c->samples == 1 ? "" : "s");
 }
 

@@ -124,8 +124,9 @@ static void one_technique(const soft_case *c, stin_technique t)
                MIN_PENUMBRA_PIXELS);
     } else if (why) {
         report(c->r, "SKIP", name, "%s: area lights not yet soft (mean |vis - truth| %.4f, %d "
-               "levels over %ld penumbra pixels; goal <= %.2f and >= %d): %s",
-               stin_technique_name(t), sum / n, levels, n, SOFT_MAX_MEAN, SOFT_MIN_LEVELS, why);
+               "levels over %ld penumbra pixels; goal <= %.2f and >= %d): %s (%s)",
+               stin_technique_name(t), sum / n, levels, n, SOFT_MAX_MEAN, SOFT_MIN_LEVELS, why,
+               strstr(cap.fallbacks, "area light") ? "logged" : "not logged");
     } else {
         report(c->r, sum / n <= SOFT_MAX_MEAN && levels >= SOFT_MIN_LEVELS ? "PASS" : "FAIL", name,
                "mean |vis - truth| %.4f over %ld penumbra pixels (at most %.2f), %d distinct "
