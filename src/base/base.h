@@ -63,5 +63,10 @@ int stin__finite_n(const float *v, int n);
 /* Scales v to unit length at any magnitude; 0 (v unchanged or scaled) for a
  * zero or non-finite vector. */
 int stin__normalize3(float v[3]);
+/* The share of an area light's intensity and visibility sample i of n
+ * carries: a whole number of 255ths, 255 / n rounded up or down so that the
+ * n shares sum to exactly 1 (8-bit targets add them without a step short
+ * of full light). n <= 1: 1. */
+float stin__light_sample_weight(uint32_t i, uint32_t n);
 
 #endif

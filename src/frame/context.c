@@ -16,7 +16,7 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
     d.max_triangles = DEFAULT(d.max_triangles, 262144u);
     d.max_mesh_triangles = DEFAULT(d.max_mesh_triangles, d.max_triangles < 65536u ? d.max_triangles : 65536u);
     d.max_texture_bytes = DEFAULT(d.max_texture_bytes, 8u << 20);
-    d.shadows.soft_samples = DEFAULT(d.shadows.soft_samples, 8u);
+    d.shadows.soft_samples = DEFAULT(d.shadows.soft_samples, 32u);
     d.shadows.map_size = DEFAULT(d.shadows.map_size, 1024u);
     d.shadows.choice_frames = DEFAULT(d.shadows.choice_frames, STIN__CHOICE_FRAMES);
     d.csg.max_primitives = DEFAULT(d.csg.max_primitives, 256u);

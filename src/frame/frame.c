@@ -323,11 +323,16 @@ static int masked_lights(stin_context *ctx, const stin__path *path, uint32_t lig
 }
 
 /* A technique that counts against the frame's depth (volumes) pays the
- * mask a geometry pass of its own for that depth: with one light, counting
- * in the frame's stencil and lighting where it allows is a pass cheaper. */
+ * mask a geometry pass of its own for that depth: with one point light,
+ * counting in the frame's stencil and lighting where it allows is a pass
+ * cheaper. An area light's samples add up in the mask and are lit once:
+ * one lit pass instead of one a sample, and no 8-bit rounding a pass. */
 static int mask_pays(const stin_context *ctx, uint32_t lights)
 {
-    return !ctx->shadow->mask_depth || lights > 1;
+    const stin_light_desc *l = &ctx->lights[0];
+    return !ctx->shadow->mask_depth || lights > 1 ||
+           (lights == 1 && l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL &&
+            ctx->desc.shadows.soft_samples > 1);
 }
 
 /* Per light from `first` on (those before it lit already: the forward

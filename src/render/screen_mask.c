@@ -146,12 +146,12 @@ int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int d
     return 1;
 }
 
-void stin__mask_write(stin_context *ctx, const stin__path *path, int channel)
+void stin__mask_write(stin_context *ctx, const stin__path *path, int channel, float share)
 {
     /* on the far plane, depth GREATER: only where a surface is (the
      * visibility export hands out 0 elsewhere) */
     static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    static const float one[4] = {1, 1, 1, 1};
+    const float value[4] = {share, share, share, share};
     const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
     stin__pass_state ps = *stin__pass_current(ctx);
     ps.depth_test = 1;
@@ -160,11 +160,12 @@ void stin__mask_write(stin_context *ctx, const stin__path *path, int channel)
     ps.depth_clamp = 0;
     ps.color_write = 1;
     ps.color_only = (unsigned char)(channel + 1);
-    ps.blend = 0;
+    ps.blend = share < 1.0f; /* a sample's share adds up in the channel */
+    ps.blend_src = ps.blend_dst = GL_ONE;
     stin__pass_apply(ctx, &ps);
     path->volume_begin(ctx);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, identity);
-    GL(ctx, Uniform4fv)(p->u_color, 1, one);
+    GL(ctx, Uniform4fv)(p->u_color, 1, value);
     path->volume_draw(ctx, identity, stin__screen_quad_vertices(1), 6);
     path->volume_end(ctx);
 }

@@ -46,9 +46,10 @@ stin__mask_target stin__mask_target_of(const stin_context *ctx);
  * the mask cannot be made (logged once), draw the lights the old way. The
  * viewport stays the frame's (the mask has the same window coordinates). */
 int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int depth);
-/* After a technique left the stencil passing where light is visible: 1
- * into `channel` there. */
-void stin__mask_write(stin_context *ctx, const stin__path *path, int channel);
+/* After a technique left the stencil passing where light is visible:
+ * `share` into `channel` there, replacing it at 1, added below 1 (the
+ * samples of an area light, whose shares sum to 1 in whole 255ths). */
+void stin__mask_write(stin_context *ctx, const stin__path *path, int channel, float share);
 /* Back to the frame's target, the mask bound for the lit pass. */
 void stin__mask_end(stin_context *ctx);
 /* The lit pass that read the mask is done. */

@@ -337,6 +337,13 @@ static void fixed_prepass(stin_context *ctx)
         const stin_light_desc *l = &ctx->lights[i];
         float view[16], proj[16], n, f;
         ctx->map_fixed->valid[i] = 0;
+        /* before the point lights' test: their faces, and the volumes that
+         * stand in without faces, are drawn from the centre too */
+        if (l->radius > 0.0f && !ctx->map_fixed->said_area) {
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "shadows: shadow maps treat area lights as points (hard shadows)");
+            ctx->map_fixed->said_area = 1;
+        }
         if (l->type == STIN_LIGHT_POINT) {
             if (!ctx->map_fixed->said_point && !ctx->map_fixed->faces) {
                 stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
@@ -347,11 +354,6 @@ static void fixed_prepass(stin_context *ctx)
                 ctx->map_fixed->said_point = 1;
             }
             continue;
-        }
-        if (l->radius > 0.0f && !ctx->map_fixed->said_area) {
-            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                      "shadows: shadow maps treat area lights as points (hard shadows)");
-            ctx->map_fixed->said_area = 1;
         }
         if (!stin__light_camera(ctx, l, view, proj, &n, &f, ctx->map_fixed->used))
             continue;

@@ -416,7 +416,7 @@ static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_
         return;
     }
     stin_light_sample(l, i, n, out->position);
-    out->intensity = l->intensity / (float)n;
+    out->intensity = l->intensity * stin__light_sample_weight(i, n);
     world[0] = out->position[0];
     world[1] = out->position[1];
     world[2] = out->position[2];
@@ -446,7 +446,7 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
         float world[4];
         sample_light(l, s, n, &one, world);
         stin__volume_light(ctx, path, world, scissored ? rect : NULL);
-        shade(ctx, path, &one, 1.0f / (float)n);
+        shade(ctx, path, &one, stin__light_sample_weight(s, n));
     }
     stin__volume_light_end(ctx);
 }
@@ -488,22 +488,24 @@ static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
     ctx->stats.shadows = counted; /* a picture, not the frame's work */
 }
 
-/* A light of one sample into a mask channel: its volumes counted in the
- * mask's stencil, then 1 where the count is zero. Area lights with several
- * samples are shaded per sample by volume_shadow_light instead. */
+/* A light into a mask channel: per sample its volumes counted in the
+ * mask's stencil, then the sample's share added where the count is zero
+ * (an area light's samples sum to its visible fraction, lit once at its
+ * centre by the pass that reads the mask). */
 static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, int channel)
 {
     const stin_light_desc *l = &ctx->lights[li];
     stin_light_desc one;
     float world[4];
+    uint32_t s, n = light_samples(ctx, l);
     int rect[4], scissored = stin__light_scissor(ctx, l, rect);
-    if (light_samples(ctx, l) != 1)
-        return 0;
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return 1; /* the light touches nothing on screen: its channel stays 0 */
-    sample_light(l, 0, 1, &one, world);
-    stin__volume_light(ctx, path, world, scissored ? rect : NULL);
-    stin__mask_write(ctx, path, channel);
+    for (s = 0; s < n; s++) {
+        sample_light(l, s, n, &one, world);
+        stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+        stin__mask_write(ctx, path, channel, stin__light_sample_weight(s, n));
+    }
     stin__volume_light_end(ctx);
     return 1;
 }

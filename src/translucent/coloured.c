@@ -191,6 +191,7 @@ void stin__coloured_light(stin_context *ctx, uint32_t li)
     s->kind = 0;
     if (!stin__coloured_active(ctx) || li >= ctx->light_count)
         return;
+    stin__translucent_say_area(ctx, &ctx->lights[li], &s->said_area, "coloured");
     stin__translucent_unbind(ctx, s->unit, GL_TEXTURE_2D); /* neither atlas sampled while drawn */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     GL(ctx, Viewport)(0, 0, (GLsizei)(ATLAS_COLUMNS * s->size), (GLsizei)(ATLAS_ROWS * s->size));

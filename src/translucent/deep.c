@@ -324,6 +324,7 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
     s->kind = 0;
     if (!stin__deep_active(ctx) || li >= ctx->light_count)
         return;
+    stin__translucent_say_area(ctx, &ctx->lights[li], &s->said_area, "deep");
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     GL(ctx, Viewport)(0, 0, (GLsizei)s->size, (GLsizei)s->size);
     ps.depth_test = 1; /* LESS with writes: the nearest surface behind the last layer */

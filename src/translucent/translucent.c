@@ -128,6 +128,17 @@ static float texel_offset(const float proj[16], uint32_t size)
     return 1.5f * 2.0f / (proj[0] * (float)size);
 }
 
+void stin__translucent_say_area(stin_context *ctx, const stin_light_desc *l, int *said,
+                                const char *technique)
+{
+    if (*said || !(l->radius > 0.0f) || l->type == STIN_LIGHT_DIRECTIONAL)
+        return;
+    stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+              "%s: transparent casters shadow area lights from their centre (hard edges); "
+              "opaque casters follow the shadow technique", technique);
+    *said = 1;
+}
+
 int stin__translucent_faces(stin_context *ctx, const stin_light_desc *l, uint32_t size,
                             stin__translucent_face_fn face_fn, float *normal_offset)
 {

@@ -98,6 +98,10 @@ typedef void (*stin__translucent_face_fn)(struct stin_context *ctx, int face,
                                           const float view[16], const float proj[16]);
 int stin__translucent_faces(struct stin_context *ctx, const stin_light_desc *l, uint32_t size,
                             stin__translucent_face_fn face_fn, float *normal_offset);
+/* Once per context and technique (*said): light l is an area light, whose
+ * transparent casters' map is drawn from its centre (hard edges). */
+void stin__translucent_say_area(struct stin_context *ctx, const stin_light_desc *l, int *said,
+                                const char *technique);
 /* Nothing on the two units from `unit` (target's binding); unit 0 active. */
 void stin__translucent_unbind(struct stin_context *ctx, int unit, GLenum target);
 

@@ -31,6 +31,7 @@ typedef struct stin__deep_state {
                                           * peeled before an empty one, 0 for a face
                                           * no transparent caster reaches */
     float normal_offset;   /* world units per unit clip w: 1.5 texels */
+    int said_area;         /* logged that area lights cast from their centre here */
 } stin__deep_state;
 
 /* Colour maps ("coloured"): faces of translucent.deep_map_size in a 3 x 2 atlas (face
@@ -47,6 +48,7 @@ typedef struct stin__coloured_state {
     int kind;              /* the light being shaded: 0 no map, 1 one face, 2 six */
     float matrix[STIN__DEEP_FACES][16]; /* world -> [0,1] window coordinates per face */
     float normal_offset;   /* world units per unit clip w: 1.5 texels */
+    int said_area;         /* logged that area lights cast from their centre here */
 } stin__coloured_state;
 
 #endif
