@@ -201,6 +201,18 @@
  * still shadows it (tests/image/model_test.c, "map-pcf-gap": shadowed at
  * 1.25 and 0.8 times the full push), and the side of a fin lit at an angle
  * keeps its shadow edge where the next fin puts it.
+ * An area light (radius > 0, point or spot; a directional light has no
+ * radius) gets percentage-closer soft shadows in place of the kernel: 16
+ * taps search the region the light's disc spans in the map between the
+ * receiver and half its distance from the light, each tap's blocker depth
+ * found by 5 bisecting compares; 48 taps over the disc the mean blocker
+ * gives (a Vogel spiral turned per pixel, so the penumbra takes many
+ * levels; the disc stretched as it faces the receiver) average their
+ * compares. Exact for one flat blocker; where blockers lie at several
+ * depths (a sphere, a post under a table) the mean widens or narrows the
+ * penumbra. Mean |error| over the penumbra of tests/scenes/shadow-soft.json
+ * against the integrated disc: 0.028 (0.22 when the radius was ignored).
+ * Radius 0 keeps the kernel above, unchanged.
  * Fixed-function shadow maps: spot lights get one map over the
  * cone, directional lights one orthographic map, point lights six 90-degree
  * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a
