@@ -332,6 +332,7 @@ int main(int argc, char **argv)
             }
             test_scene(&r, tiers[t], argv[i]);
             shadow_tests(&r, tiers[t], argv[i]);
+            soft_tests(&r, tiers[t], argv[i]);
             vdsm_tests(&r, tiers[t], argv[i]);
             choice_tests(&r, tiers[t], argv[i]);
             map_tests(&r, tiers[t], argv[i]);

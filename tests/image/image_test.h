@@ -33,6 +33,10 @@ void map_tests(run *r, stin_tier tier, const char *path);
  * map-pcf's documented gap limit. */
 void model_tests(run *r, stin_tier tier, const char *path);
 
+/* Soft shadows of an area light under every shadow technique of the tier,
+ * against the integrated reference over the true penumbra (soft_test.c). */
+void soft_tests(run *r, stin_tier tier, const char *path);
+
 /* Shadow-volume tests of one scene at one tier (shadow_test.c). */
 void shadow_tests(run *r, stin_tier tier, const char *path);
 /* VDSM exact shadows of one scene (vdsm_test.c; GL4 only). */

@@ -72,8 +72,8 @@ int reference_hit_on_plane(const reference *r, int width, int height, const ref_
  * (offset along Ng toward the light's side by the scene epsilon) to the light
  * position is unoccluded (directional: the ray toward -direction, to
  * infinity), else 0. Spot cones are shading, not visibility. Area lights are
- * treated as points (radius ignored; see reference_light_visibility). Background hits and bad light indices
- * give 1. */
+ * treated as points (radius ignored; see reference_light_visibility).
+ * Background hits and bad light indices give 1. */
 float reference_visibility(const reference *r, const ref_hit *hit, int light);
 
 /* As reference_visibility with the ray leaving P by `offset` world units
@@ -93,7 +93,8 @@ float reference_visibility_to(const reference *r, const ref_hit *hit, const floa
  * from the light. A transparent surface's colour is its material colour times
  * its albedo texel (bilinear, level 0), its opacity a the material's opacity
  * times the texel's alpha (a = 0 texels cast nothing). An area light
- * averages its samples. Background hits and bad light indices give 1. */
+ * averages it over the directions of reference_light_visibility. Background
+ * hits and bad light indices give 1. */
 void reference_transmittance(const reference *r, const ref_hit *hit, int light, float out[3]);
 
 /* The seed's eq 5.3 (seed 001): inout *= (1 - a) clamp(1 - a + color, 0, 1)
@@ -101,17 +102,23 @@ void reference_transmittance(const reference *r, const ref_hit *hit, int light, 
  * and no tint as a goes to 0. */
 void reference_transmittance_factor(const float color[3], float a, float inout[3]);
 
-/* Point samples an area light (radius > 0, point or spot) is split into, as
- * stin's desc.shadows.soft_samples (whose default this is): sample k of n is
- * stin_light_sample(light, k, n) with intensity / n. */
-#define REFERENCE_SOFT_SHADOW_SAMPLES 8
-/* Sets the sample count of r (clamped to [1, 64] like stin's); match the
- * stin_desc.shadows.soft_samples of the render under test. */
-void reference_set_soft_shadow_samples(reference *r, unsigned n);
+/* An area light (radius r > 0, point or spot) is a sphere of uniform
+ * radiance. Its visibility from a hit is the fraction of the light's solid
+ * angle (the cone of directions from the offset P that meet the sphere,
+ * half-angle asin(r / d)) that nothing blocks, integrated over
+ * REFERENCE_AREA_SAMPLES directions: a spherical Fibonacci set over the
+ * cone, turned about its axis by an angle hashed from P. Mean error over
+ * shadow-soft's penumbra, against 4096 directions: see reference_area.c.
+ * Shading uses the light at its centre with its full intensity, weighted by
+ * that fraction (what stin's lit pass draws from the visibility). */
+#define REFERENCE_AREA_SAMPLES 512
+/* Sets the direction count of r (at least 1; 1: the light's centre, a
+ * point light); for convergence checks. */
+void reference_set_area_samples(reference *r, unsigned n);
 
-/* Visibility of light `light` as stin's shadow passes see it: for an area
- * light (1/n) * sum of reference_visibility_to() its n samples (fractional
- * in the penumbra); else reference_visibility(). */
+/* Visibility of light `light`: for an area light the unoccluded fraction of
+ * its solid angle (above; fractional in the penumbra, 0 for directions
+ * under the surface's horizon); else reference_visibility(). */
 float reference_light_visibility(const reference *r, const ref_hit *hit, int light);
 
 /* Unshadowed shading with the lighting model of stin.h:
@@ -143,10 +150,10 @@ void reference_shade_weighted(const scene *s, const reference *r, const ref_hit 
                               int per_vertex, const float *light_weight, float out_rgba[4]);
 
 /* The beauty of a stencil-shadow-volume frame, pass by pass: an ambient pass
- * (ambient * albedo * texture), then per light and per sample (area lights:
- * REFERENCE_SOFT_SHADOW_SAMPLES points with intensity / n, as
- * reference_light_visibility) a pass with only that point light, dropped
- * where the sample is not visible. Every pass is clamped to [0,1] on its own
+ * (ambient * albedo * texture), then per light a pass with only that light,
+ * weighted by reference_light_visibility() (an area light's stin passes,
+ * one per point sample at intensity / n, add up to that where no pass
+ * saturates). Every pass is clamped to [0,1] on its own
  * (per vertex: at its vertices, as each GL1 pass is Gouraud-shaded), the
  * passes are added and the sum clamped at 1. A blended material (opacity < 1)
  * is drawn after the passes, unshadowed: reference_shade(). r is required
@@ -214,8 +221,9 @@ int reference_render(const scene *s, const reference *r, int width, int height, 
 
 /* reference_render with flags:
  * REFERENCE_RENDER_SHADOWED makes the beauty shadowed in one clamped sum:
- *   every light weighted by its visibility (as reference_shade_weighted), an
- *   area light split into its samples, each weighted by its own visibility.
+ *   every light weighted by reference_light_visibility() (as
+ *   reference_shade_weighted; an area light at its centre, weighted by its
+ *   unoccluded fraction).
  * REFERENCE_RENDER_PER_LIGHT_PASSES (implies shadowed) makes the beauty the
  *   sum of separately clamped passes, reference_shade_passes(): what a
  *   stencil-volume frame draws, including the unshadowed blended draws. */
@@ -228,7 +236,7 @@ int reference_render(const scene *s, const reference *r, int width, int height, 
 #define REFERENCE_RENDER_COMPOSITE 4u
 /* REFERENCE_RENDER_TRANSMITTANCE (with COMPOSITE) lights every layer through
  *   reference_transmittance() of each light, per RGB channel (an area
- *   light's samples share its mean transmittance): what a frame with deep
+ *   light at its centre, weighted by its mean transmittance): what a frame with deep
  *   shadow maps shows. */
 #define REFERENCE_RENDER_TRANSMITTANCE 8u
 /* Where reference_csg_cast has set products, the primary hits show them
@@ -242,7 +250,7 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
  * (material opacity 1) or the background, at most 256. Each transparent
  * surface, of opacity a = material opacity times its albedo texel's alpha,
  * is shaded as reference_shade (unshadowed), as reference_render_ex
- * SHADOWED (hard visibility of every light sample) or per channel through
+ * SHADOWED (reference_light_visibility of every light) or per channel through
  * the lights' transmittance (flags REFERENCE_RENDER_TRANSMITTANCE), both
  * sides alike (back faces are shaded with their own normal), and blended
  * under the ones in front: C += T a c, T *= 1 - a from C = 0, T = 1; then

@@ -25,11 +25,11 @@ static float opacity_at(const scene *s, const ref_hit *hit)
     return m->color[3] * tex[3];
 }
 
-/* One surface shaded under the lighting the flags ask for: unshadowed; hard
- * visibility per light sample; or per RGB channel the transmittance of each
- * light (the channel's shading uses that channel's weights). */
+/* One surface shaded under the lighting the flags ask for: unshadowed; each
+ * light weighted by its visibility; or per RGB channel the transmittance of
+ * each light (the channel's shading uses that channel's weights). */
 static void shade_surface(const scene *s, const reference *r, const ref_hit *hit, int per_vertex,
-                          unsigned flags, scene_light *lights, float *weight, float out[3])
+                          unsigned flags, float *weight, float out[3])
 {
     float px[4];
     if (flags & REFERENCE_RENDER_TRANSMITTANCE) {
@@ -46,8 +46,8 @@ static void shade_surface(const scene *s, const reference *r, const ref_hit *hit
         return;
     }
     if (flags & REFERENCE_RENDER_SHADOWED) {
-        int n = ref_expand_lights(r, hit, lights, weight);
-        ref_shade_lights(s, r, hit, per_vertex, lights, n, weight, 0, px);
+        ref_light_weights(r, hit, weight);
+        ref_shade_lights(s, r, hit, per_vertex, s->lights, s->light_count, weight, 0, px);
     } else {
         reference_shade(s, r, hit, per_vertex, px);
     }
@@ -61,17 +61,12 @@ int reference_composite_pixel(const scene *s, const reference *r, int width, int
     ref_camera_frame cf;
     double dir[3], len;
     float T = 1.0f, C[3] = {0, 0, 0};
-    int layers = 0, cap;
+    int layers = 0;
     if (!s || !r || r->s != s || !out_rgba || !ref_frame_of(&s->camera, width, height, &cf))
         return -1;
-    cap = ref_sample_capacity(r) + s->light_count + 1;
-    scene_light *lights = malloc((size_t)cap * sizeof *lights);
-    float *weight = malloc((size_t)cap * sizeof *weight);
-    if (!lights || !weight) {
-        free(weight);
-        free(lights);
+    float *weight = malloc(((size_t)s->light_count + 1) * sizeof *weight);
+    if (!weight)
         return -1;
-    }
     ref_window_dir(&cf, width, height, x + 0.5, y + 0.5, dir);
     len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     float tnear = s->camera.near_plane, behind[4];
@@ -100,7 +95,7 @@ int reference_composite_pixel(const scene *s, const reference *r, int width, int
             break; /* the background shows through what is left */
         ref_fill_hit(r, rh.hit.geomID, rh.hit.primID, rh.hit.u, rh.hit.v, s->camera.eye, &hit);
         a = opacity_at(s, &hit);
-        shade_surface(s, r, &hit, per_vertex, flags, lights, weight, shaded);
+        shade_surface(s, r, &hit, per_vertex, flags, weight, shaded);
         if (a >= 1.0f) {
             memcpy(behind, shaded, sizeof shaded);
             behind[3] = 1.0f;
@@ -121,6 +116,5 @@ int reference_composite_pixel(const scene *s, const reference *r, int width, int
         part[3] = T;
     }
     free(weight);
-    free(lights);
     return layers;
 }

@@ -23,7 +23,7 @@ struct reference {
     int object_count;
     ref_object *objects;
     double eps;         /* visibility ray offset, REFERENCE_EPS_SCALE * scene extent */
-    unsigned soft_samples; /* point samples of an area light, REFERENCE_SOFT_SHADOW_SAMPLES */
+    unsigned area_samples; /* directions an area light is integrated with, REFERENCE_AREA_SAMPLES */
     unsigned char *csg_primitive; /* per object, or NULL: 1 for a CSG primitive, which
                                    * neither shows on its own nor casts (reference_csg.h) */
     struct ref_csg_cast *csg_cast; /* products that cast (reference_csg_cast), or NULL */
@@ -37,19 +37,29 @@ void ref_normal_matrix(const float m[16], double n[9]);
 void ref_fill_hit(const reference *r, unsigned object, unsigned prim, float u, float v,
                   const float eye[3], ref_hit *hit);
 
-/* Samples light l of r's scene is split into: soft_samples for an area light
- * (radius > 0, not directional), else 1 (stin's light_samples()). */
-unsigned ref_light_sample_count(const reference *r, const scene_light *l);
+/* eps or -eps: the offset along hit's Ng that leaves the surface on the
+ * side the eye sees, so a visibility ray cannot hit its own triangle. */
+double ref_eye_side(const reference *r, const ref_hit *hit, double eps);
 
-/* Light l as its sample k of n: position from stin_light_sample(), intensity
- * divided by n (n = 1: l unchanged). */
-void ref_light_sample(const scene_light *l, unsigned k, unsigned n, scene_light *out);
+/* 1 for an area light: radius > 0, not directional. */
+int ref_is_area_light(const scene_light *l);
+/* Directions light l is integrated with: r's area_samples for an area
+ * light, else 1. */
+unsigned ref_area_sample_count(const reference *r, const scene_light *l);
+/* The cone of directions from P onto area light l's sphere (half-angle
+ * asin(r / d)), with the basis and turn its directions are laid out by
+ * (reference_area.c). ref_area_cone_of gives 0 when P lies on or inside the
+ * sphere. */
+typedef struct ref_area_cone {
+    double P[3], axis[3], e1[3], e2[3], d, r, cos_max, turn;
+} ref_area_cone;
+int ref_area_cone_of(const scene_light *l, const float P[3], ref_area_cone *cone);
+/* Where direction k of n of the cone meets the light's sphere. */
+void ref_area_cone_point(const ref_area_cone *cone, unsigned k, unsigned n, double out[3]);
 
-/* Every light of the scene split into its samples, each with its visibility
- * from hit as weight (1/0). lights and weight need ref_sample_capacity()
- * entries. Returns how many were written. */
-int ref_sample_capacity(const reference *r);
-int ref_expand_lights(const reference *r, const ref_hit *hit, scene_light *lights, float *weight);
+/* reference_light_visibility of every light of r's scene from hit, into
+ * weight (light_count entries). */
+void ref_light_weights(const reference *r, const ref_hit *hit, float *weight);
 
 /* Shading of hit with an explicit light list (weights as in
  * reference_shade_weighted). passes = 0: one clamped sum (ambient + all lights);

@@ -202,6 +202,14 @@ int reference_hit_on_plane(const reference *r, int width, int height, const ref_
     return 1;
 }
 
+double ref_eye_side(const reference *r, const ref_hit *hit, double eps)
+{
+    const float *eye = r->s->camera.eye;
+    double to_eye[3] = {eye[0] - hit->P[0], eye[1] - hit->P[1], eye[2] - hit->P[2]};
+    double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]};
+    return dot3(Ng, to_eye) >= 0.0 ? eps : -eps;
+}
+
 /* 1 when nothing lies between hit's P (offset along Ng to the side the eye
  * sees) and the light: toward `to` (a position) or, directional, along `to`
  * (the direction toward the light) to infinity. The visible side is what is
@@ -215,10 +223,7 @@ static float visible_off(const reference *r, const ref_hit *hit, const double to
         dir[c] = directional ? to[c] : to[c] - hit->P[c];
     if (!(normalize3(dir) > 0.0))
         return 1.0f; /* the light sits on the point */
-    /* Leave the surface on the eye's side so the ray cannot hit its own triangle. */
-    const float *eye = r->s->camera.eye;
-    double to_eye[3] = {eye[0] - hit->P[0], eye[1] - hit->P[1], eye[2] - hit->P[2]};
-    double side = dot3(Ng, to_eye) >= 0.0 ? eps : -eps;
+    double side = ref_eye_side(r, hit, eps);
     /* The side the eye sees turns away from the light: it shadows itself. */
     if (side * dot3(Ng, dir) <= 0.0)
         return 0.0f;
@@ -283,66 +288,4 @@ float reference_visibility_to(const reference *r, const ref_hit *hit, const floa
         return 1.0f;
     double to[3] = {position[0], position[1], position[2]};
     return visible(r, hit, to, 0);
-}
-
-/* ---- area lights: the samples stin uses ----------------------------------- */
-
-unsigned ref_light_sample_count(const reference *r, const scene_light *l)
-{
-    return l->radius > 0.0f && l->type != SCENE_LIGHT_DIRECTIONAL ? r->soft_samples : 1u;
-}
-
-void ref_light_sample(const scene_light *l, unsigned k, unsigned n, scene_light *out)
-{
-    stin_light_desc d;
-    *out = *l;
-    if (n <= 1)
-        return;
-    memset(&d, 0, sizeof d);
-    d.type = l->type == SCENE_LIGHT_SPOT ? STIN_LIGHT_SPOT
-           : l->type == SCENE_LIGHT_DIRECTIONAL ? STIN_LIGHT_DIRECTIONAL : STIN_LIGHT_POINT;
-    memcpy(d.position, l->position, sizeof d.position);
-    d.radius = l->radius;
-    stin_light_sample(&d, k, n, out->position);
-    out->intensity = l->intensity / (float)n;
-}
-
-float reference_light_visibility(const reference *r, const ref_hit *hit, int light)
-{
-    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
-        return 1.0f;
-    const scene_light *l = &r->s->lights[light];
-    unsigned n = ref_light_sample_count(r, l);
-    if (n <= 1)
-        return reference_visibility(r, hit, light);
-    double sum = 0.0;
-    for (unsigned k = 0; k < n; k++) {
-        scene_light one;
-        ref_light_sample(l, k, n, &one);
-        sum += reference_visibility_to(r, hit, one.position);
-    }
-    return (float)(sum / n);
-}
-
-int ref_sample_capacity(const reference *r)
-{
-    int total = 0;
-    for (int i = 0; i < r->s->light_count; i++)
-        total += (int)ref_light_sample_count(r, &r->s->lights[i]);
-    return total;
-}
-
-int ref_expand_lights(const reference *r, const ref_hit *hit, scene_light *lights, float *weight)
-{
-    int count = 0;
-    for (int i = 0; i < r->s->light_count; i++) {
-        const scene_light *l = &r->s->lights[i];
-        unsigned n = ref_light_sample_count(r, l);
-        for (unsigned k = 0; k < n; k++, count++) {
-            ref_light_sample(l, k, n, &lights[count]);
-            weight[count] = n <= 1 ? reference_visibility(r, hit, i)
-                                   : reference_visibility_to(r, hit, lights[count].position);
-        }
-    }
-    return count;
 }

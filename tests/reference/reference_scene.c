@@ -178,7 +178,7 @@ reference *reference_create(const scene *s, char *err, size_t err_size)
         if (!copy_object(s, i, &r->objects[i], err, err_size))
             goto fail;
     r->eps = REFERENCE_EPS_SCALE * scene_extent(r);
-    r->soft_samples = REFERENCE_SOFT_SHADOW_SAMPLES;
+    r->area_samples = REFERENCE_AREA_SAMPLES;
 
     r->device = rtcNewDevice(NULL);
     if (!r->device) {
@@ -224,10 +224,4 @@ void reference_destroy(reference *r)
     free(r->csg_primitive);
     ref_csg_cast_free(r->csg_cast);
     free(r);
-}
-
-void reference_set_soft_shadow_samples(reference *r, unsigned n)
-{
-    if (r)
-        r->soft_samples = n < 1 ? 1 : n > 64 ? 64 : n; /* stin's limits */
 }

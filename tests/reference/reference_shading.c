@@ -236,16 +236,15 @@ void reference_shade_passes(const scene *s, const reference *r, const ref_hit *h
             return;
         }
     }
-    int cap = ref_sample_capacity(r);
-    scene_light *lights = malloc((cap > 0 ? (size_t)cap : 1) * sizeof *lights);
-    float *weight = malloc((cap > 0 ? (size_t)cap : 1) * sizeof *weight);
-    if (!lights || !weight) {
+    float *weight = malloc(((size_t)s->light_count + 1) * sizeof *weight);
+    if (!weight) {
         for (int c = 0; c < 4; c++)
             out_rgba[c] = NAN;
     } else {
-        int n = hit->hit ? ref_expand_lights(r, hit, lights, weight) : 0;
-        ref_shade_lights(s, r, hit, per_vertex, lights, n, weight, 1, out_rgba);
+        if (hit->hit)
+            ref_light_weights(r, hit, weight);
+        ref_shade_lights(s, r, hit, per_vertex, s->lights, hit->hit ? s->light_count : 0, weight,
+                         1, out_rgba);
     }
     free(weight);
-    free(lights);
 }

@@ -110,16 +110,19 @@ void reference_transmittance(const reference *r, const ref_hit *hit, int light, 
     if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
         return;
     const scene_light *l = &r->s->lights[light];
-    unsigned n = ref_light_sample_count(r, l);
-    double sum[3] = {0, 0, 0};
+    int directional = l->type == SCENE_LIGHT_DIRECTIONAL;
+    unsigned n = ref_area_sample_count(r, l);
+    double sum[3] = {0, 0, 0}, to[3];
+    ref_area_cone cone;
+    if (n > 1 && !ref_area_cone_of(l, hit->P, &cone))
+        n = 1; /* inside the light's sphere: its centre */
     for (unsigned k = 0; k < n; k++) {
-        scene_light one;
-        double to[3];
         float t[3];
-        int directional = l->type == SCENE_LIGHT_DIRECTIONAL;
-        ref_light_sample(l, k, n, &one);
-        for (int c = 0; c < 3; c++)
-            to[c] = directional ? -(double)l->direction[c] : (double)one.position[c];
+        if (n > 1)
+            ref_area_cone_point(&cone, k, n, to);
+        else
+            for (int c = 0; c < 3; c++)
+                to[c] = directional ? -(double)l->direction[c] : (double)l->position[c];
         transmit(r, hit, to, directional, t);
         for (int c = 0; c < 3; c++)
             sum[c] += t[c];

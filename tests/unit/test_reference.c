@@ -1003,7 +1003,8 @@ static void test_passes_saturate(void **state)
 }
 
 /* An area light of radius 0.5 at z = 3 over a floor at z = 0, seen at the
- * origin: the samples are stin's (stin_light_sample). */
+ * origin: its visibility is the unblocked fraction of the light's solid
+ * angle. */
 static void test_area_light_visibility(void **state)
 {
     (void)state;
@@ -1038,43 +1039,42 @@ static void test_area_light_visibility(void **state)
     assert_close(img[REFERENCE_CH_R], 0.1 * 0.8, 1e-6); /* ambient pass only */
     reference_destroy(r);
 
-    /* a sheet over x < 0 at z = 2.5 (just under the light's sphere) hides the
-     * samples with x < 0: visibility = the fraction of samples with x > 0 */
+    /* a sheet over x < 0.1 at z = 2.5 (just under the light's sphere) hides
+     * the directions that cross z = 2.5 at x < 0.1: the visibility is the
+     * solid-angle fraction of the cone (half-angle asin(0.5 / 3)) beyond that
+     * line, integrated here on a fine (theta, phi) grid */
     s.objects[1].transform[0] = 2.0f; s.objects[1].transform[5] = 2.0f;
-    s.objects[1].transform[12] = -2.0f; s.objects[1].transform[14] = 2.5f;
+    s.objects[1].transform[12] = -1.9f; s.objects[1].transform[14] = 2.5f;
     r = create(&s);
     h = centre_hit(r);
     assert_int_equal(h.object, 0);
-    stin_light_desc d;
-    memset(&d, 0, sizeof d);
-    d.position[2] = 3.0f;
-    d.radius = 0.5f;
-    int right = 0;
-    for (uint32_t k = 0; k < REFERENCE_SOFT_SHADOW_SAMPLES; k++) {
-        float p[3];
-        stin_light_sample(&d, k, REFERENCE_SOFT_SHADOW_SAMPLES, p);
-        assert_true(fabs(p[0]) > 1e-3); /* none on the sheet's edge */
-        right += p[0] > 0.0f;
+    double cos_max = sqrt(1.0 - (0.5 / 3.0) * (0.5 / 3.0)), lit = 0.0, all = 0.0;
+    const int steps = 2000;
+    for (int i = 0; i < steps; i++) {
+        double c = 1.0 - (i + 0.5) / steps * (1.0 - cos_max), tan_t = sqrt(1.0 - c * c) / c;
+        for (int j = 0; j < steps; j++) { /* equal steps of cos(theta), phi: equal solid angle */
+            double phi = 2.0 * PI * (j + 0.5) / steps;
+            lit += 2.5 * tan_t * cos(phi) >= 0.1;
+            all += 1.0;
+        }
     }
+    double want = lit / all;
     float vis = reference_light_visibility(r, &h, 0);
-    assert_close(vis, (double)right / REFERENCE_SOFT_SHADOW_SAMPLES, 1e-7);
-    assert_true(vis > 0.0f && vis < 1.0f);
+    /* the reference's own error on a straight edge: well under 0.005 */
+    assert_close(vis, want, 0.005);
+    assert_true(want > 0.2 && want < 0.4);
+    reference_set_area_samples(r, 4096);
+    assert_close(reference_light_visibility(r, &h, 0), want, 0.001); /* it converges */
+    reference_set_area_samples(r, REFERENCE_AREA_SAMPLES);
     assert_true(reference_render_ex(&s, r, 1, 1, 0, REFERENCE_RENDER_PER_LIGHT_PASSES, img));
     assert_close(img[REFERENCE_CH_VIS_B], vis, 0);
-    /* the beauty: ambient plus the visible samples, each with intensity / n */
-    double want = 0.1 * 0.8;
-    for (uint32_t k = 0; k < REFERENCE_SOFT_SHADOW_SAMPLES; k++) {
-        float p[3];
-        stin_light_sample(&d, k, REFERENCE_SOFT_SHADOW_SAMPLES, p);
-        if (p[0] <= 0.0f)
-            continue;
-        double L[3] = {p[0] - h.P[0], p[1] - h.P[1], p[2] - h.P[2]};
-        unit3d(L);
-        want += L[2] * 0.8 / REFERENCE_SOFT_SHADOW_SAMPLES;
-    }
-    assert_close(img[REFERENCE_CH_R], want, 1e-5);
-    /* one sample: the light's centre, the same as reference_visibility */
-    reference_set_soft_shadow_samples(r, 1);
+    /* the beauty: ambient plus the light at its centre (straight above, full
+     * intensity) weighted by the visible fraction */
+    assert_close(img[REFERENCE_CH_R], 0.1 * 0.8 + vis * 0.8, 1e-5);
+    assert_true(reference_render_ex(&s, r, 1, 1, 0, REFERENCE_RENDER_SHADOWED, img));
+    assert_close(img[REFERENCE_CH_R], 0.1 * 0.8 + vis * 0.8, 1e-5);
+    /* one direction: the light's centre, the same as reference_visibility */
+    reference_set_area_samples(r, 1);
     assert_close(reference_light_visibility(r, &h, 0), reference_visibility(r, &h, 0), 0);
     reference_destroy(r);
     scene_release(&s);

@@ -1,0 +1,193 @@
+/* SPDX-License-Identifier: MIT */
+/*
+ * Soft shadows against the physics, on scenes whose light 0 is an area light
+ * (radius > 0, point or spot: shadow-soft), under every shadow technique of
+ * the tier: light 0's visibility against reference_light_visibility (the
+ * unblocked fraction of the light's solid angle, integrated over
+ * REFERENCE_AREA_SAMPLES directions) over the true penumbra, the pixels
+ * whose reference lies in (0.02, 0.98), that light 0 can reach, on opaque
+ * surfaces, at least one pixel from an object's edge or a jump of the
+ * reference by more than 0.5 (a contact shadow), where stin's P matches.
+ * There it reports mean |vis - truth| and the distinct values vis takes
+ * (quantised to 1/255). Goal: mean <= 0.03 (six 8-bit steps: the hard
+ * shadows measure 0.22-0.23 and 8 samples 0.079) and >= 32 levels (no
+ * visible bands: the 8 samples give 7-9). A technique that honours the
+ * radius must meet it (PASS/FAIL); one that does not yet reports SKIP with
+ * its numbers and the reason, never PASS.
+ */
+#include "aov.h"
+#include "capture.h"
+#include "image_test.h"
+#include "light_reach.h"
+#include "reference.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SOFT_MAX_MEAN 0.03
+#define SOFT_MIN_LEVELS 32
+#define PENUMBRA_LOW 0.02f
+#define PENUMBRA_HIGH 0.98f
+#define MIN_PENUMBRA_PIXELS 500 /* shadow-soft has ~2,700: fewer means a broken scene */
+
+typedef struct soft_case {
+    run *r;
+    const scene *s;
+    stin_tier tier;
+    const char *scene_name;
+    const ref_hit *hits;
+    const float *ref; /* reference_render_ex AOVs, rows bottom to top */
+} soft_case;
+
+/* Why a technique draws an area light's penumbra without its radius, or
+ * NULL for one that honours it (and must meet the goal). */
+static const char *not_soft_yet(stin_technique t)
+{
+    switch (t) {
+    case STIN_TECH_SHADOWS_VOLUME:
+        return "8 point samples stack 8 hard shadows";
+    case STIN_TECH_SHADOWS_VDSM:
+        return "area lights cast hard shadows from their centre";
+    case STIN_TECH_SHADOWS_MAP_PCF:
+        return "the filter's edge ignores the radius";
+    default:
+        return "shadow maps treat area lights as points";
+    }
+}
+
+static int opaque(const scene *s, const ref_hit *h)
+{
+    return s->materials[s->objects[h->object].material].color[3] >= 1.0f;
+}
+
+/* Pixel (x, y) (from the bottom) belongs to the true penumbra and stin drew
+ * the same surface point there. */
+static int in_penumbra(const soft_case *c, const float *g, int x, int y)
+{
+    int w = c->r->width, h = c->r->height, k;
+    const ref_hit *hit = &c->hits[(size_t)y * w + x];
+    const float *ref = c->ref + ((size_t)y * w + x) * REFERENCE_CHANNELS;
+    double d2 = 0;
+    if (!hit->hit || !(ref[REFERENCE_CH_VIS_R] > PENUMBRA_LOW && ref[REFERENCE_CH_VIS_R] < PENUMBRA_HIGH) ||
+        !opaque(c->s, hit) || !light_reaches(c->s, hit) ||
+        near_shadow_edge(c->hits, c->ref, w, h, x, y, 1) || !(g[AOV_Z] > 0.0f))
+        return 0;
+    for (k = 0; k < 3; k++)
+        d2 += (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]) * (g[AOV_PX + k] - ref[REFERENCE_CH_PX + k]);
+    return sqrt(d2) <= 1e-3 * ref[REFERENCE_CH_Z] + 1e-3;
+}
+
+static void one_technique(const soft_case *c, stin_technique t)
+{
+    capture cap;
+    capture_options o;
+    char name[256], err[512];
+    int w = c->r->width, h = c->r->height, x, y, levels = 0;
+    unsigned char seen[256];
+    long n = 0;
+    double sum = 0;
+    const char *why = not_soft_yet(t);
+    snprintf(name, sizeof name, "%s/%s/soft-%s", stin_tier_name(c->tier), c->scene_name,
+             stin_technique_name(t));
+    memset(&o, 0, sizeof o);
+    o.tier = c->tier;
+    o.shadows = t;
+    if (!capture_render(c->r->plat, c->r->profile, c->s, &o, &cap, err, sizeof err)) {
+        /* a technique the profile lacks a capability for is refused by name */
+        report(c->r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "%s", err);
+        return;
+    }
+    if (cap.choice[STIN_FEATURE_SHADOWS].technique != t) {
+        report(c->r, "SKIP", name, "%s does not run here: %s", stin_technique_name(t),
+               cap.choice[STIN_FEATURE_SHADOWS].reason);
+        capture_free(&cap);
+        return;
+    }
+    memset(seen, 0, sizeof seen);
+    for (y = 0; y < h; y++)
+        for (x = 0; x < w; x++) {
+            const float *g = cap.img.pixels + ((size_t)(h - 1 - y) * w + x) * AOV_CHANNELS;
+            double v = g[AOV_VIS_R];
+            int q;
+            if (!in_penumbra(c, g, x, y))
+                continue;
+            n++;
+            sum += fabs(v - c->ref[((size_t)y * w + x) * REFERENCE_CHANNELS + REFERENCE_CH_VIS_R]);
+            q = (int)floor((v < 0 ? 0 : v > 1 ? 1 : v) * 255.0 + 0.5);
+            levels += !seen[q];
+            seen[q] = 1;
+        }
+    if (n < MIN_PENUMBRA_PIXELS) {
+        report(c->r, "FAIL", name, "only %ld penumbra pixels to compare (at least %d)", n,
+               MIN_PENUMBRA_PIXELS);
+    } else if (why) {
+        report(c->r, "SKIP", name, "%s: area lights not yet soft (mean |vis - truth| %.4f, %d "
+               "levels over %ld penumbra pixels; goal <= %.2f and >= %d): %s",
+               stin_technique_name(t), sum / n, levels, n, SOFT_MAX_MEAN, SOFT_MIN_LEVELS, why);
+    } else {
+        report(c->r, sum / n <= SOFT_MAX_MEAN && levels >= SOFT_MIN_LEVELS ? "PASS" : "FAIL", name,
+               "mean |vis - truth| %.4f over %ld penumbra pixels (at most %.2f), %d distinct "
+               "levels (at least %d)", sum / n, n, SOFT_MAX_MEAN, levels, SOFT_MIN_LEVELS);
+    }
+    capture_free(&cap);
+}
+
+/* The reference of c's scene: primary hits and the shadowed AOVs. 1, or 0
+ * with what failed in err. */
+static int reference_of(soft_case *c, reference **ref, ref_hit **hits, float **img, char *err,
+                        size_t err_size)
+{
+    size_t pixels = (size_t)c->r->width * c->r->height;
+    if (!(*ref = reference_create(c->s, err, err_size)))
+        return 0;
+    *hits = malloc(sizeof **hits * pixels);
+    *img = malloc(sizeof **img * REFERENCE_CHANNELS * pixels);
+    snprintf(err, err_size, "out of memory or an Embree error");
+    if (!*hits || !*img || !reference_primary(*ref, c->r->width, c->r->height, *hits))
+        return 0;
+    c->hits = *hits;
+    c->ref = *img;
+    return reference_render_ex(c->s, *ref, c->r->width, c->r->height, 0, REFERENCE_RENDER_SHADOWED,
+                               *img);
+}
+
+void soft_tests(run *r, stin_tier tier, const char *path)
+{
+    /* the shadow techniques each tier offers (GL1's maps are fixed-function,
+     * the GLSL tiers' PCF) */
+    static const stin_technique techniques[3][3] = {
+        {STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE},
+        {STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_NONE},
+        {STIN_TECH_SHADOWS_VDSM, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF}};
+    const stin_technique *list = techniques[tier == STIN_TIER_GL1 ? 0 : tier == STIN_TIER_GL2 ? 1 : 2];
+    scene s;
+    reference *ref = NULL;
+    ref_hit *hits = NULL;
+    float *img = NULL;
+    soft_case c;
+    char err[512], scene_name[128], name[256];
+    int i;
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    if (!scene_load(path, &s, err, sizeof err))
+        return; /* test_scene reported it */
+    c.r = r;
+    c.s = &s;
+    c.tier = tier;
+    c.scene_name = scene_name;
+    if (s.light_count && s.lights[0].radius > 0.0f && s.lights[0].type != SCENE_LIGHT_DIRECTIONAL) {
+        if (reference_of(&c, &ref, &hits, &img, err, sizeof err)) {
+            for (i = 0; i < 3 && list[i] != STIN_TECH_NONE; i++)
+                one_technique(&c, list[i]);
+        } else {
+            snprintf(name, sizeof name, "%s/%s/soft", stin_tier_name(tier), scene_name);
+            report(r, "FAIL", name, "reference: %s", err);
+        }
+    }
+    free(hits);
+    free(img);
+    if (ref)
+        reference_destroy(ref);
+    scene_free(&s);
+}
