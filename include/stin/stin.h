@@ -226,8 +226,10 @@
  * compares. Exact for one flat blocker; where blockers lie at several
  * depths (a sphere, a post under a table) the mean widens or narrows the
  * penumbra. Mean |error| over the penumbra of tests/scenes/shadow-soft.json
- * against the integrated disc: 0.027 (0.21 when the radius was ignored).
- * Radius 0 keeps the kernel above, unchanged.
+ * against the integrated disc: 0.027 (0.21 when the radius was ignored);
+ * cost there, llvmpipe at 256 x 192 with a 1024 map: 55 ms a frame
+ * against 14 ms for the same light as a point. Radius 0 keeps the kernel
+ * above, unchanged.
  * Fixed-function shadow maps: spot lights get one map over the
  * cone, directional lights one orthographic map, point lights six 90-degree
  * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a
