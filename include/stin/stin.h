@@ -109,7 +109,22 @@
  * Under depth-peel each peeled layer gets the buffer drawn from its own
  * surface first (see Transparency), so the layers' masks, and their
  * pyramids' receivers, are the layer's.
- * Area lights are shadowed from their centre (logged once). The steps run
+ * An area light (radius > 0, point or spot) is soft: per pixel 64 segments
+ * to points of the light's disc (facing the pixel's point; a Vogel spiral
+ * turned per pixel, so the penumbra takes 65 levels, not stacked copies of
+ * the hard shadow), one bit each, ORed over every casting triangle
+ * (glLogicOp into an RG32UI texture the size of the position buffer, 8
+ * bytes a pixel of GL memory, made with its two programs at the first area
+ * light); the light's visibility is the share of bits left clear. Each
+ * triangle covers a screen rectangle holding its whole penumbra, at its
+ * nearest depth, tested against the visible surface's; EP keeps a closed
+ * mesh's triangles that face away from any point of the light; SM and DC
+ * (the centre's pyramid) and the culling pass are left out. Mean |error|
+ * over the penumbra of tests/scenes/shadow-soft.json against the
+ * integrated disc: 0.011 (0.23 hard). Cost there, llvmpipe at 256 x 192:
+ * 144 ms a frame against 12.7 ms for the same light as a point. In frames
+ * with tessellated draws, or where its programs do not build, an area
+ * light is shadowed from its centre (logged once). The steps run
  * in a culling pass of their own: per light a small geometry shader decides
  * each triangle and transform feedback keeps the faces of its volume the
  * eye sees (48 bytes each, in a GL buffer grown to 4 a casting triangle of
@@ -171,7 +186,7 @@
  * stays on vdsm and is not a trial: CSG products (vdsm casts them),
  * displaced draws (volumes cast the flat mesh), blended draws (peeled
  * layers are vdsm's receivers; transparent casters), area lights (vdsm
- * shadows them from their centre, volumes by samples), or a target without
+ * shadows them by 64 segments a pixel, volumes by samples), or a target without
  * a stencil buffer; where such a frame follows a volume frame, the
  * projection already given out at begin (P_inf) stays, and vdsm draws with
  * it (exact either way), and the frames after begin on vdsm until one can
@@ -201,6 +216,20 @@
  * still shadows it (tests/image/model_test.c, "map-pcf-gap": shadowed at
  * 1.25 and 0.8 times the full push), and the side of a fin lit at an angle
  * keeps its shadow edge where the next fin puts it.
+ * An area light (radius > 0, point or spot; a directional light has no
+ * radius) gets percentage-closer soft shadows in place of the kernel: 16
+ * taps search the region the light's disc spans in the map between the
+ * receiver and half its distance from the light, each tap's blocker depth
+ * found by 5 bisecting compares; 48 taps over the disc the mean blocker
+ * gives (a Vogel spiral turned per pixel, so the penumbra takes many
+ * levels; the disc stretched as it faces the receiver) average their
+ * compares. Exact for one flat blocker; where blockers lie at several
+ * depths (a sphere, a post under a table) the mean widens or narrows the
+ * penumbra. Mean |error| over the penumbra of tests/scenes/shadow-soft.json
+ * against the integrated disc: 0.027 (0.21 when the radius was ignored);
+ * cost there, llvmpipe at 256 x 192 with a 1024 map: 55 ms a frame
+ * against 14 ms for the same light as a point. Radius 0 keeps the kernel
+ * above, unchanged.
  * Fixed-function shadow maps: spot lights get one map over the
  * cone, directional lights one orthographic map, point lights six 90-degree
  * maps with "map-depth" where there are FBOs (drawn mid-frame, one face at a
@@ -1320,8 +1349,10 @@ typedef struct stin_light_desc {
     float attenuation[3];   /* k0, k1, k2; default (1,0,0) when all zero */
     float spot_cutoff_deg;  /* half angle, (0,90]; default 45 */
     float spot_exponent;    /* default 0 */
-    float radius;           /* > 0: area light, soft shadows from desc.shadows.soft_samples
-                             * point samples (stin_light_sample); default 0 */
+    float radius;           /* > 0: area light (point and spot), soft shadows: volumes
+                             * from desc.shadows.soft_samples point samples
+                             * (stin_light_sample), vdsm and map-pcf per pixel
+                             * (see Shadows); default 0 */
     float range;            /* > 0: the light reaches no farther (its attenuation makes it
                              * negligible); shadow passes are scissored to it. 0 = unbounded */
     float shadow_offset[2]; /* shadow-map polygon offset (factor, units), finite;

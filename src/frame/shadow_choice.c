@@ -10,8 +10,8 @@
  * look: CSG products (vdsm casts them, volumes do not), displaced draws
  * (volumes would cast the flat mesh), blended draws (vdsm makes each peeled
  * layer its receivers; transparent casters), an area light (vdsm shadows
- * it from its centre, volumes by samples), or a target without a stencil
- * buffer. */
+ * it by 64 segments a pixel, volumes by a pass a sample: the penumbrae
+ * differ), or a target without a stencil buffer. */
 static int volumes_draw(const stin_context *ctx)
 {
     uint32_t i;

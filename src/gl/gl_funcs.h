@@ -14,6 +14,7 @@
     X(void, GetIntegerv, (GLenum pname, GLint *data), NEED_CORE, "")                      \
     X(GLenum, GetError, (void), NEED_CORE, "")                                            \
     X(void, Enable, (GLenum cap), NEED_CORE, "")                                          \
+    X(void, LogicOp, (GLenum op), NEED_CORE, "")                                          \
     X(void, Disable, (GLenum cap), NEED_CORE, "")                                         \
     X(void, Clear, (GLbitfield mask), NEED_CORE, "")                                      \
     X(void, ClearColor, (GLfloat r, GLfloat g, GLfloat b, GLfloat a), NEED_CORE, "")      \
@@ -145,6 +146,7 @@
     X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")         \
     X(void, DrawBuffers, (GLsizei n, const GLenum *bufs), STIN_CAP_GLSL, "")              \
     X(void, BindFragDataLocation, (GLuint p, GLuint color, const GLchar *name), NEED_GL30, "") \
+    X(void, ClearBufferuiv, (GLenum buffer, GLint drawbuffer, const GLuint *value), NEED_GL30, "") \
     X(void, BeginQuery, (GLenum target, GLuint id), STIN_CAP_OCCLUSION_QUERY, "glBeginQueryARB") \
     X(void, EndQuery, (GLenum target), STIN_CAP_OCCLUSION_QUERY, "glEndQueryARB")          \
     X(void, GenQueries, (GLsizei n, GLuint *ids), STIN_CAP_OCCLUSION_QUERY, "glGenQueriesARB") \

@@ -50,8 +50,9 @@ typedef struct stin__program {
     /* surface chunks (surface/glsl.c): samplers and (scale, bias, min, max steps) */
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
     /* map-pcf chunk (shadow/map_pcf.c): one sampler, a light's map or a
-     * point light's atlas of six faces; the screen mask's chunk reuses them */
-    GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_map;
+     * point light's atlas of six faces; the screen mask's chunk reuses them
+     * but the area light's spread */
+    GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_map, u_shadow_soft;
     /* the translucent-shadows lookup chunks (translucent/translucent.c): deep's even/odd
      * layers, coloured's transmittance and nearest-depth atlases */
     stin__translucent_locs deep, coloured;

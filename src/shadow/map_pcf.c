@@ -19,7 +19,11 @@
  * width at the point, so a wide depth range does not inflate it at the
  * receivers near the light; none where the light meets the receiver more
  * squarely, where a push would move the shadow's edge). Maps are drawn with
- * polygon offset (the light's shadow_offset: slope-scaled bias). The test
+ * polygon offset (the light's shadow_offset: slope-scaled bias). An area
+ * light (radius > 0, spot or point) is filtered by percentage-closer soft
+ * shadows instead of the kernel: a blocker search sized by the light's
+ * radius in the map, then a disc of taps as wide as the penumbra the
+ * blockers' mean depth gives (shadow_pcf.glsl). The test
  * is all in the lit program, so the frame may draw light 0's pass in its
  * ambient pass's place (`forward`: one camera pass for one light). */
 #include "internal.h"
@@ -35,6 +39,10 @@ struct stin__map_pcf_state {
     unsigned char valid[STIN__MAX_LIGHTS];
     float matrix[STIN__MAP_SLOTS][16];   /* world -> [0,1] map space */
     float normal_offset[STIN__MAP_SLOTS]; /* world units per unit clip w: 1.5 texels */
+    /* an area light's taps' spread: texels per unit of window depth per
+     * unit of radius (0: an orthographic map), window depth per unit of
+     * 1 / distance, and 1 / proj[0] (soft_spread) */
+    float spread[STIN__MAP_SLOTS][3];
     /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
     int kind;
     uint32_t light;
@@ -155,6 +163,22 @@ static float texel_offset(const float proj[16], uint32_t size)
     return 1.5f * 2.0f / (proj[0] * (float)size);
 }
 
+/* How an area light's taps spread in a perspective map of size texels:
+ * window depth is 0.5 proj[14] / w plus a constant (w the distance along
+ * the axis), and the ray from a receiver at w_r to a point r u of the
+ * light's disc (u in the unit disc) crosses w_b 0.5 proj[0] r (1 / w_b -
+ * 1 / w_r) u away in [0,1]: proj[0] size / -proj[14] texels per unit of
+ * window depth per unit of radius (x), -0.5 proj[14] window depth per unit
+ * of 1 / w (y), and 1 / proj[0] (z) for the receiver's slope. An
+ * orthographic map (a directional light: no radius) spreads nothing. */
+static void soft_spread(float out[3], const float proj[16], uint32_t size)
+{
+    int perspective = proj[11] != 0.0f && proj[14] != 0.0f;
+    out[0] = perspective ? proj[0] * (float)size / -proj[14] : 0.0f;
+    out[1] = -0.5f * proj[14];
+    out[2] = 1.0f / proj[0];
+}
+
 /* Maps of every spot and directional light, before the camera's passes. */
 static void pcf_prepass(stin_context *ctx)
 {
@@ -176,6 +200,7 @@ static void pcf_prepass(stin_context *ctx)
         }
         stin__light_window_matrix(m->matrix[i], view, proj); /* world -> [0,1] */
         m->normal_offset[i] = texel_offset(proj, m->size);
+        soft_spread(m->spread[i], proj, m->size);
         m->valid[i] = 1;
     }
     stin__gl_check_errors(ctx, "pcf maps");
@@ -281,6 +306,7 @@ static void draw_faces(stin_context *ctx, uint32_t li)
         ctx->stats.shadows.map_faces++;
         stin__light_window_matrix(m->matrix[FACE_SLOT + (uint32_t)face], view, proj);
         into_cell(m->matrix[FACE_SLOT + (uint32_t)face], face);
+        soft_spread(m->spread[FACE_SLOT + (uint32_t)face], proj, m->face_size);
         /* every face is 90 degrees: one offset per unit w serves the six */
         m->normal_offset[FACE_SLOT] = texel_offset(proj, m->face_size);
     }
@@ -293,7 +319,7 @@ static void draw_faces(stin_context *ctx, uint32_t li)
 static void pcf_uniforms(stin_context *ctx, const stin__program *p)
 {
     const struct stin__map_pcf_state *m = ctx->map_pcf;
-    float params[4] = {0, 0, 0, 0}, mats[STIN__CUBE_FACES * 16];
+    float params[4] = {0, 0, 0, 0}, mats[STIN__CUBE_FACES * 16], soft[STIN__CUBE_FACES * 3];
     int i, kind = m->kind, count = kind == 2 ? STIN__CUBE_FACES : 1;
     uint32_t li = m->light;
     if (p->u_shadow_kind < 0)
@@ -305,6 +331,10 @@ static void pcf_uniforms(stin_context *ctx, const stin__program *p)
     for (i = 0; i < count; i++) {
         uint32_t slot = kind == 2 ? FACE_SLOT + (uint32_t)i : li;
         stin__memcopy(mats + 16 * i, m->matrix[slot], 16 * sizeof(float));
+        /* radius 0: no spread, the kernel's exact path */
+        soft[3 * i] = ctx->lights[li].radius * m->spread[slot][0];
+        soft[3 * i + 1] = m->spread[slot][1];
+        soft[3 * i + 2] = m->spread[slot][2];
     }
     stin__bind_unit(ctx, m->unit, GL_TEXTURE_2D, kind == 2 ? m->atlas : m->textures[li]);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
@@ -315,6 +345,7 @@ static void pcf_uniforms(stin_context *ctx, const stin__program *p)
     params[1] = (float)(ctx->lights[li].pcf_kernel / 2u);
     params[2] = m->normal_offset[kind == 2 ? FACE_SLOT : li];
     GL(ctx, Uniform4fv)(p->u_shadow_params, 1, params);
+    GL(ctx, Uniform3fv)(p->u_shadow_soft, count, soft);
 }
 
 /* The lit program does the test: the light's map, or its six faces drawn

@@ -85,6 +85,7 @@ static void release(stin_context *ctx)
     stin__vdsm_pyramid_release(ctx);
     stin__vdsm_cull_release(ctx);
     stin__vdsm_csg_release(ctx);
+    stin__vdsm_soft_release(ctx);
     stin__vdsm_buffer_release(ctx);
     stin__mesh_adjacency_use(ctx, NULL);
 }
@@ -228,7 +229,7 @@ static void vdsm_prepass(stin_context *ctx)
 }
 
 /* The light as a homogeneous world point: position (w 1) or the direction
- * toward it (w 0). Area lights are shadowed from their centre. */
+ * toward it (w 0); an area light's centre. */
 static void light_point(const stin_light_desc *l, float out[4])
 {
     int k;
@@ -251,7 +252,7 @@ int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d)
  * face behind it is not shaded. Where the buffer's depth is not the
  * surface tested (a peeled layer's points, products' faces) it lies behind
  * it: the test then passes more, never less. */
-static int depth_tested(const stin_context *ctx)
+int stin__vdsm_depth_tested(const stin_context *ctx)
 {
     return !(ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_DEPTH_TEST) &&
            (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_CLAMP));
@@ -281,7 +282,7 @@ void stin__vdsm_polygon_uniforms(stin_context *ctx, const stin__vdsm_polygon_loc
     GL(ctx, Uniform4fv)(l->camera, 1, ctx->vdsm->camera);
     GL(ctx, Uniform4fv)(l->viewport, 1, viewport);
     GL(ctx, Uniform1f)(l->grow, ctx->desc.debug_flags & STIN_DEBUG_VDSM_NO_GROW ? 0.0f : 0.5f);
-    GL(ctx, Uniform1i)(l->depth_test, depth_tested(ctx));
+    GL(ctx, Uniform1i)(l->depth_test, stin__vdsm_depth_tested(ctx));
     GL(ctx, Uniform1i)(l->position, 0);
     GL(ctx, Uniform1i)(l->normal, 1);
     stin__vdsm_pyramid_uniforms(ctx, &l->pyramid);
@@ -312,7 +313,7 @@ static void polygons(stin_context *ctx, const float light[4])
     struct stin__vdsm_state *v = ctx->vdsm;
     const stin__pass_state before = *stin__pass_current(ctx);
     stin__pass_state ps = before;
-    int tested = depth_tested(ctx), fed = stin__vdsm_cull_on(ctx);
+    int tested = stin__vdsm_depth_tested(ctx), fed = stin__vdsm_cull_on(ctx);
     if (fed && !stin__vdsm_cull_pass(ctx, light))
         return; /* no triangle casts */
     if (!fed) {
@@ -355,13 +356,17 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     const stin_light_desc *l = &ctx->lights[li];
     stin__pass_state ps = *stin__pass_current(ctx);
     float light[4];
-    int faced;
+    int faced, soft;
     (void)path;
     if (!v->ready)
         return 0;
-    if (l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL && !v->said_area) {
-        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "vdsm: area lights cast hard shadows from their centre");
+    soft = l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL;
+    if (soft && !stin__vdsm_soft_available(ctx)) {
+        soft = 0;
+        if (!v->said_area)
+            stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                      "vdsm: area lights cast hard shadows from their centre in tessellated "
+                      "frames or without their programs");
         v->said_area = 1;
     }
     light_point(l, light);
@@ -383,8 +388,12 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         stin__screen_quad(ctx);
         ctx->stats.passes++;
     }
-    polygons(ctx, light);
-    ctx->stats.passes++;
+    if (soft) {
+        stin__vdsm_soft_draw(ctx, l, light, channel);
+    } else {
+        polygons(ctx, light);
+        ctx->stats.passes++;
+    }
     stin__vdsm_csg_cast(ctx, light, channel);
     return 1;
 }

@@ -101,6 +101,23 @@ typedef struct stin__vdsm_cull {
     uint32_t kept;              /* faces kept by the last light's pass, where counted */
 } stin__vdsm_cull;
 
+/* Area lights (shadow/vdsm_soft.c): the 64-segment program and its
+ * resolve, built at the first area light, and the bits' RG32UI target. */
+typedef struct stin__vdsm_soft {
+    GLuint prog, resolve_prog, fbo, bits;
+    int width, height;      /* allocated texels (the position buffer's) */
+    int built;              /* tried: prog is 0 where that failed */
+    stin__vdsm_polygon_locs poly;
+    GLint radius, lo, hi, resolve_bits;
+} stin__vdsm_soft;
+/* Whether this light's soft pass can run (programs, target, an
+ * untessellated frame); the mask stays bound. The pass, after the light's
+ * facing pass, into mask channel `channel` (light: its centre, w 1). */
+int stin__vdsm_soft_available(stin_context *ctx);
+void stin__vdsm_soft_draw(stin_context *ctx, const stin_light_desc *l, const float light[4],
+                          int channel);
+void stin__vdsm_soft_release(stin_context *ctx);
+
 struct stin__vdsm_state {
     GLuint fbo, position, normal, depth;
     int width, height;      /* allocated texels (0: not yet) */
@@ -117,6 +134,7 @@ struct stin__vdsm_state {
     int said_area, said_failed, said_layer, said_unshadowed_layers;
     stin__vdsm_pyramid pyramid;
     stin__vdsm_csg csg;
+    stin__vdsm_soft soft;
 };
 
 /* The position buffer stage and its release (shadow/vdsm_buffer.c);
@@ -190,6 +208,9 @@ int stin__vdsm_cull_on(stin_context *ctx);
 int stin__vdsm_cull_pass(stin_context *ctx, const float light[4]);
 void stin__vdsm_cull_draw(stin_context *ctx);
 /* 1 when EP may drop a draw's light-facing triangles (shadow/vdsm.c). */
+/* 1 when the shadow polygons test their depth against the visible
+ * surface's (depth clamping there, not switched off for measurement). */
+int stin__vdsm_depth_tested(const stin_context *ctx);
 int stin__vdsm_cull_lit(const stin_context *ctx, const stin__draw *d);
 
 #endif

@@ -49,9 +49,9 @@ static const char *not_soft_yet(stin_technique t)
     case STIN_TECH_SHADOWS_VOLUME:
         return NULL; /* soft_samples points spread over the light's ball */
     case STIN_TECH_SHADOWS_VDSM:
-        return "area lights cast hard shadows from their centre";
+        return NULL;
     case STIN_TECH_SHADOWS_MAP_PCF:
-        return "the filter's edge ignores the radius";
+        return NULL;
     default:
         return "shadow maps treat area lights as points";
     }

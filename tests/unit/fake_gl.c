@@ -58,6 +58,8 @@ fake_gl_state fake_gl;
  * which the fake does not keep. Any other generated one is reported by
  * fake_gl_untracked_entry_point when called. */
 #define FAKE_STATELESS_Clear ~, 1
+#define FAKE_STATELESS_LogicOp ~, 1
+#define FAKE_STATELESS_ClearBufferuiv ~, 1
 #define FAKE_STATELESS_TexParameteri ~, 1
 #define FAKE_STATELESS_TexParameterfv ~, 1
 #define FAKE_STATELESS_Finish ~, 1
