@@ -67,6 +67,8 @@ static int model_case_make(model_case *c, run *r, const scene *s, const char *na
                            size_t err_size)
 {
     reference *refr = reference_create(s, err, err_size);
+    /* the maps still decide self-shadowing by the facet (issue 37) */
+    reference_facet_terminator(refr, 1);
     int ok = 0;
     memset(c, 0, sizeof *c);
     c->r = r;

@@ -24,6 +24,7 @@ struct reference {
     ref_object *objects;
     double eps;         /* visibility ray offset, REFERENCE_EPS_SCALE * scene extent */
     unsigned soft_samples; /* point samples of an area light, REFERENCE_SOFT_SHADOW_SAMPLES */
+    int facet_terminator; /* 1: every triangle decides by its facet (reference_facet_terminator) */
     unsigned char *csg_primitive; /* per object, or NULL: 1 for a CSG primitive, which
                                    * neither shows on its own nor casts (reference_csg.h) */
     struct ref_csg_cast *csg_cast; /* products that cast (reference_csg_cast), or NULL */
