@@ -185,7 +185,7 @@ size_t stin__glsl_state_bytes(const stin_desc *d);
 /* A program's stages by embedded file name: geom NULL for none; frag_outputs
  * names the fragment outputs bound to draw buffers 0, 1, ... (GL 3.0; NULL
  * entries end the list, all NULL: the single output). */
-#define STIN__MAX_FRAG_OUTPUTS 2
+#define STIN__MAX_FRAG_OUTPUTS 3
 typedef struct stin__program_source {
     const char *vert, *geom, *frag; /* frag NULL: none (a feedback-only program) */
     const char *const *frag_chunks;
