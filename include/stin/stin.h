@@ -194,8 +194,14 @@
  * exceed GL_MAX_TEXTURE_SIZE), each face with only the casters whose bounds
  * meet its frustum, a face no visible draw's bounds reach not drawn at all,
  * and the kernel's taps kept inside the face's cell. A point whose
- * side the eye sees turns away from the light is in its own shadow, without
- * a lookup (as the test reference decides). The others compare, at each
+ * side the eye sees turns away from the light, by its facet and by its
+ * shading normal, is in its own shadow, without a lookup (as the test
+ * reference decides). On a triangle whose vertex normals bend away from its
+ * facet the lookup starts from the point on the surface those normals
+ * describe (vdsm's terminator rule, above; the lit vertex stage hands the
+ * corners' tangent planes on as three more varyings, interpolated exactly),
+ * so a low-poly sphere's lit side has no terminator steps; flat triangles
+ * and displaced draws look up from their own point. The others compare, at each
  * tap, the depth of their own plane there (receiver-plane depth bias, from
  * the screen derivatives), so no tap of the kernel shadows a sloped
  * receiver with itself. Only where the light grazes the receiver (the

@@ -151,8 +151,6 @@ void pcf_tests(run *r, stin_tier tier, const char *path)
     o.shadows = STIN_TECH_SHADOWS_OFF;
     snprintf(name, sizeof name, "%s/%s/map-pcf", stin_tier_name(tier), scene_name);
     ref = reference_create(&s, err, sizeof err);
-    /* map-pcf still decides self-shadowing by the facet (issue 37) */
-    reference_facet_terminator(ref, 1);
     hits = malloc(sizeof *hits * (size_t)r->width * r->height);
     refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
     if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
