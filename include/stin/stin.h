@@ -77,13 +77,22 @@
  * packed depth-stencil textures, a texture unit beyond the surface's): exact
  * hard shadows at the frame's resolution without a stencil buffer, adjacency
  * or map resolution. A stage draws the visible surface into a position
- * buffer (RGBA32F world position + RGBA16F facet normal, 24 bytes a pixel of
- * GL memory plus a 24-bit depth texture, the size of the viewport's far
- * corner, made at the first frame and kept); per light, into a channel of
- * the screen mask below, 1 where the side the eye sees faces the light, then
- * each triangle's shadow-volume faces the eye sees, grown by half a pixel,
- * write 0 wherever the segment from the pixel's surface point to the light
- * hits that triangle. The segment leaves the surface by 2^-13 of the point's
+ * buffer (RGBA32F world position + RGBA16F facet and shading normals, 32 bytes
+ * a pixel of GL memory plus a 24-bit depth texture, the size of the
+ * viewport's far corner, made at the first frame and kept); per light, into a
+ * channel of the screen mask below, 1 where the side the eye sees faces the
+ * light, then each triangle's shadow-volume faces the eye sees, grown by half
+ * a pixel, write 0 wherever the segment from the pixel's surface point to the
+ * light hits that triangle. The terminator rule (Hanika, "Hacking the Shadow
+ * Terminator", 2021; the test reference shares it): on a triangle whose
+ * vertex normals bend away from its facet the surface point is the one on
+ * the curved surface those normals describe (the position projected onto each
+ * corner's tangent plane, blended by the barycentrics) where that lies above
+ * the facet, and the side faces the light where its facet or its shading
+ * normal does, so a low-poly sphere's lit side has no terminator steps; a
+ * triangle whose vertex normals equal its facet normal (planes, boxes) is
+ * drawn as before, and displaced draws keep their facets. The position
+ * stage carries a geometry shader for it. The segment leaves the surface by 2^-13 of the point's
  * largest coordinate along its facet normal (no self-shadowing; contact
  * shadows closer than that are lost, as with the test reference's own
  * 1e-4 of the scene). Closed meshes drop the triangles facing the light
@@ -200,8 +209,14 @@
  * exceed GL_MAX_TEXTURE_SIZE), each face with only the casters whose bounds
  * meet its frustum, a face no visible draw's bounds reach not drawn at all,
  * and the kernel's taps kept inside the face's cell. A point whose
- * side the eye sees turns away from the light is in its own shadow, without
- * a lookup (as the test reference decides). The others compare, at each
+ * side the eye sees turns away from the light, by its facet and by its
+ * shading normal, is in its own shadow, without a lookup (as the test
+ * reference decides). On a triangle whose vertex normals bend away from its
+ * facet the lookup starts from the point on the surface those normals
+ * describe (vdsm's terminator rule, above; the lit vertex stage hands the
+ * corners' tangent planes on as three more varyings, interpolated exactly),
+ * so a low-poly sphere's lit side has no terminator steps; flat triangles
+ * and displaced draws look up from their own point. The others compare, at each
  * tap, the depth of their own plane there (receiver-plane depth bias, from
  * the screen derivatives), so no tap of the kernel shadows a sloped
  * receiver with itself. Only where the light grazes the receiver (the
@@ -787,8 +802,8 @@ const char *stin_feature_name(stin_feature f);
  *   shadows technique's shadows (volume, map-pcf: exact as on opaque
  *   surfaces; "deep": the coloured transmittance) and is lit unshadowed in
  *   an unshadowed frame. Under "vdsm" the position buffer is drawn again
- *   from each layer before its lights (the blended draws depth EQUAL
- *   against the layer's own depth texture: the layer's points exactly), so
+ *   from each layer before its lights (the blended draws kept within 2^-21
+ *   of the layer's own depth texture: the layer's points exactly), so
  *   its per-light masks and light-view pyramids are the layer's, exact as
  *   on opaque surfaces; the opaque surfaces go back into it afterwards when
  *   the frame exports its visibility. Cost per peeled layer and light: one

@@ -7,6 +7,9 @@ uniform vec3 u_eye;
 uniform vec4 u_lights[32]; // light 0: the light whose visibility this shows
 varying vec3 v_world;
 varying vec3 v_normal;
+varying vec3 v_plane_dn; // the terminator rule's tangent planes (lit.vert)
+varying vec3 v_plane_nn;
+varying vec3 v_plane_nx;
 
 // @chunks
 // vec3 shadow_transmittance(int light): the shadow technique's test of a light

@@ -26,6 +26,9 @@ uniform sampler2D u_albedo_tex;
 uniform int u_has_albedo_tex;
 varying vec3 v_world;
 varying vec3 v_normal;
+varying vec3 v_plane_dn; // the terminator rule's tangent planes (lit.vert)
+varying vec3 v_plane_nn;
+varying vec3 v_plane_nx;
 varying vec2 v_uv;
 varying vec4 v_tangent; // world tangent, w = handedness
 

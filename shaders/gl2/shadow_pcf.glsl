@@ -102,6 +102,29 @@ float pcss_visibility(vec3 t, float w, vec2 dz, vec2 texel, vec2 lo, vec2 hi, ve
     return sum / float(PCSS_FILTER);
 }
 
+// The terminator rule (the test reference's and vdsm's; Hanika, "Hacking
+// the Shadow Terminator", 2021). On a triangle whose vertex normals bend away
+// from its facet ng (eye side), the lookup starts from the point on the
+// surface those normals describe: P projected onto each corner's tangent
+// plane, blended by the barycentrics, sum b_i ((c_i - P).n_i) n_i =
+// sum b_i (c_i.n_i) n_i - (sum b_i n_i n_i^T) P, both sums interpolated
+// exactly from per-corner values (lit.vert), kept where it lies above the
+// facet. `facing` gets the shading normal turned to ng's side (ng where the
+// triangle is flat: every corner's normal its facet's, or none).
+vec3 terminator_point(vec3 ng, out vec3 facing)
+{
+    mat3 nn = mat3(v_plane_nn.x, v_plane_nx.x, v_plane_nx.y,
+                   v_plane_nx.x, v_plane_nn.y, v_plane_nx.z,
+                   v_plane_nx.y, v_plane_nx.z, v_plane_nn.z);
+    facing = ng;
+    if (v_plane_nn.x + v_plane_nn.y + v_plane_nn.z < 0.5 || dot(ng, nn * ng) >= 1.0 - 1e-6)
+        return v_world;
+    vec3 s = normalize(v_normal);
+    facing = dot(s, ng) < 0.0 ? -s : s;
+    vec3 lift = v_plane_dn - nn * v_world;
+    return dot(lift, ng) > 0.0 ? v_world + lift : v_world;
+}
+
 // The filtered visibility of light i (1 lit): maps carry no colour.
 float pcf_visibility(int i)
 {
@@ -131,14 +154,18 @@ float pcf_visibility(int i)
         extent = 0.5 * cell;
         mid = lo - 0.5 * texel + extent;
     }
-    // the side the eye sees; turned away from the light, it is in its own
-    // shadow (no offset point past a thin caster may say otherwise)
+    // the side the eye sees; turned away from the light by its facet and its
+    // shading normal, it is in its own shadow (no offset point past a thin
+    // caster may say otherwise)
     if (dot(ng, u_eye - v_world) < 0.0)
         ng = -ng;
-    float cos_l = dot(ng, normalize(light.w == 0.0 ? light.xyz : light.xyz - v_world));
-    if (cos_l <= 0.0)
+    vec3 shading;
+    vec3 world = terminator_point(ng, shading);
+    vec3 to_light = normalize(light.w == 0.0 ? light.xyz : light.xyz - world);
+    float cos_l = dot(ng, to_light);
+    if (cos_l <= 0.0 && dot(shading, to_light) <= 0.0)
         return 0.0;
-    vec4 c = u_shadow_matrix[face] * vec4(v_world, 1.0);
+    vec4 c = u_shadow_matrix[face] * vec4(world, 1.0);
     if (c.w <= 0.0)
         return 0.0;
     // the normal offset: u_shadow_params.z texels' width where this point
@@ -149,7 +176,7 @@ float pcf_visibility(int i)
     // fin's side it carries the lookup point sideways out from under the
     // next fin's edge (and toward a light head-on, through a thin gap)
     float push = (1.0 - smoothstep(0.1, 0.3, cos_l)) * u_shadow_params.z * c.w;
-    vec3 p = v_world + ng * push;
+    vec3 p = world + ng * push;
     c = u_shadow_matrix[face] * vec4(p, 1.0);
     if (c.w <= 0.0)
         return 0.0;

@@ -8,6 +8,9 @@ uniform vec3 u_eye;
 uniform vec4 u_lights[32]; // light 0: the light whose visibility this shows
 in vec3 v_world;
 in vec3 v_normal;
+in vec3 v_plane_dn; // the terminator rule's tangent planes (lit.vert)
+in vec3 v_plane_nn;
+in vec3 v_plane_nx;
 
 // The chunks are shared with shaders/gl2 and use GLSL 1.10's names: map them.
 #define texture2D texture

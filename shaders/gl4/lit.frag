@@ -27,6 +27,9 @@ uniform sampler2D u_albedo_tex;
 uniform int u_has_albedo_tex;
 in vec3 v_world;
 in vec3 v_normal;
+in vec3 v_plane_dn; // the terminator rule's tangent planes (lit.vert)
+in vec3 v_plane_nn;
+in vec3 v_plane_nx;
 in vec2 v_uv;
 in vec4 v_tangent; // world tangent, w = handedness
 

@@ -9,6 +9,7 @@
 // points behind the light.
 uniform sampler2D u_position;
 uniform sampler2D u_normal;
+uniform sampler2D u_shading; // the terminator rule's second facing normal
 uniform vec4 u_light;     // world: position (w 1), or the direction toward the light (w 0)
 uniform mat4 u_light_vp;  // world -> the light's clip space
 uniform vec4 u_depth_row; // world -> light depth
@@ -21,10 +22,12 @@ void main()
     ivec2 px = r.xy + ivec2(gl_VertexID % r.z, gl_VertexID / r.z);
     vec4 p = texelFetch(u_position, px, 0);
     vec3 n = texelFetch(u_normal, px, 0).xyz;
+    vec3 s = texelFetch(u_shading, px, 0).xyz;
     vec3 to_light = u_light.xyz - p.xyz * u_light.w;
+    float facing = max(dot(n, to_light), dot(s, to_light));
     v_depth = 0.0;
     // vdsm_facing.frag's test with room for rounding: never drop one it keeps
-    if (p.w == 0.0 || dot(n, to_light) < -1e-4 * length(to_light)) {
+    if (p.w == 0.0 || facing < -1e-4 * length(to_light)) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
         return;
     }

@@ -15,6 +15,7 @@ layout(std430, binding = 0) buffer vdsm_deepest
 };
 uniform sampler2D u_position;
 uniform sampler2D u_normal;
+uniform sampler2D u_shading; // the terminator rule's second facing normal
 uniform vec4 u_light;     // world: position (w 1), or the direction toward the light (w 0)
 uniform mat4 u_light_vp;  // world -> the light's clip space
 uniform vec4 u_depth_row; // world -> light depth
@@ -33,9 +34,11 @@ void main()
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 p = texelFetch(u_position, px, 0);
     vec3 n = texelFetch(u_normal, px, 0).xyz;
+    vec3 s = texelFetch(u_shading, px, 0).xyz;
     vec3 to_light = u_light.xyz - p.xyz * u_light.w;
-    frag_color = vec4(p.w > 0.0 && dot(n, to_light) > 0.0 ? 1.0 : 0.0);
-    if (p.w == 0.0 || dot(n, to_light) < -1e-4 * length(to_light))
+    float facing = max(dot(n, to_light), dot(s, to_light));
+    frag_color = vec4(p.w > 0.0 && facing > 0.0 ? 1.0 : 0.0);
+    if (p.w == 0.0 || facing < -1e-4 * length(to_light))
         return;
     vec3 a = abs(p.xyz);
     float scale = max(max(a.x, a.y), max(a.z, 1e-3));

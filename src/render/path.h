@@ -45,7 +45,7 @@ enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_VOLUME
 #define STIN__LIGHTS_PER_PASS 8
 typedef struct stin__program {
     GLuint name;
-    GLint u_model, u_view_proj, u_normal_matrix, u_eye, u_ambient, u_albedo, u_specular,
+    GLint u_model, u_view_proj, u_normal_matrix, u_terminator, u_eye, u_ambient, u_albedo, u_specular,
         u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
     /* surface chunks (surface/glsl.c): samplers and (scale, bias, min, max steps) */
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
@@ -186,7 +186,7 @@ size_t stin__glsl_state_bytes(const stin_desc *d);
 /* A program's stages by embedded file name: geom NULL for none; frag_outputs
  * names the fragment outputs bound to draw buffers 0, 1, ... (GL 3.0; NULL
  * entries end the list, all NULL: the single output). */
-#define STIN__MAX_FRAG_OUTPUTS 2
+#define STIN__MAX_FRAG_OUTPUTS 3
 typedef struct stin__program_source {
     const char *vert, *geom, *frag; /* frag NULL: none (a feedback-only program) */
     const char *const *frag_chunks;

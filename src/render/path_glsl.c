@@ -17,6 +17,7 @@ static const stin__uniform_name program_uniforms[] = {
     STIN__UNIFORM(stin__program, u_model, "u_model"),
     STIN__UNIFORM(stin__program, u_view_proj, "u_view_proj"),
     STIN__UNIFORM(stin__program, u_normal_matrix, "u_normal_matrix"),
+    STIN__UNIFORM(stin__program, u_terminator, "u_terminator"),
     STIN__UNIFORM(stin__program, u_eye, "u_eye"),
     STIN__UNIFORM(stin__program, u_ambient, "u_ambient"),
     STIN__UNIFORM(stin__program, u_albedo, "u_albedo"),
@@ -433,6 +434,12 @@ static void submit(stin_context *ctx, const stin__program *p, const stin__draw *
                 nm[k] = -nm[k];
         GL(ctx, UniformMatrix3fv)(p->u_normal_matrix, 1, GL_FALSE, nm);
     }
+    /* the terminator rule where the vertex normals describe the drawn surface */
+    if (p->u_terminator >= 0)
+        GL(ctx, Uniform1f)(p->u_terminator,
+                           d->csg == STIN__CSG_CAP || stin__displace_active(ctx, &d->material)
+                               ? 0.0f
+                               : 1.0f);
     stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
 }
 

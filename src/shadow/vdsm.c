@@ -58,6 +58,22 @@ GLuint stin__vdsm_polygon_program(stin_context *ctx, const char *frag, int tesse
     return stin__program_build_source(ctx, &src, msg, size);
 }
 
+/* The position buffer's program (vdsm_position.*): three outputs, position,
+ * facet normal and shading normal. */
+static GLuint position_program(stin_context *ctx, int tessellate, char *msg, size_t size)
+{
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.tessellate = tessellate;
+    src.vert = "gl4/vdsm_position.vert";
+    src.geom = "gl4/vdsm_position.geom";
+    src.frag = "gl4/vdsm_position.frag";
+    src.frag_outputs[0] = "o_position";
+    src.frag_outputs[1] = "o_normal";
+    src.frag_outputs[2] = "o_shading";
+    return stin__program_build_source(ctx, &src, msg, size);
+}
+
 void stin__vdsm_delete_programs(stin_context *ctx, GLuint *a, GLuint *b, GLuint *c)
 {
     GLuint *progs[3];
@@ -114,6 +130,7 @@ void stin__vdsm_polygon_locate(stin_context *ctx, GLuint prog, stin__vdsm_polygo
 
 static const stin__uniform_name position_uniforms[] = {
     STIN__UNIFORM(struct stin__vdsm_state, pos_model, "u_model"),
+    STIN__UNIFORM(struct stin__vdsm_state, pos_normal_matrix, "u_normal_matrix"),
     STIN__UNIFORM(struct stin__vdsm_state, pos_view_proj, "u_view_proj"),
     STIN__UNIFORM(struct stin__vdsm_state, pos_camera, "u_camera"),
     STIN__UNIFORM(struct stin__vdsm_state, pos_csg, "u_csg"),
@@ -124,6 +141,7 @@ static const stin__uniform_name position_uniforms[] = {
 static const stin__uniform_name facing_uniforms[] = {
     STIN__UNIFORM(struct stin__vdsm_state, face_position, "u_position"),
     STIN__UNIFORM(struct stin__vdsm_state, face_normal, "u_normal"),
+    STIN__UNIFORM(struct stin__vdsm_state, face_shading, "u_shading"),
     STIN__UNIFORM(struct stin__vdsm_state, face_light, "u_light"),
 };
 
@@ -153,8 +171,7 @@ static void build_tessellated(stin_context *ctx)
     char msg[160], why[220];
     GLuint none = 0;
     msg[0] = '\0';
-    v->position_tess = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL,
-                                          "gl4/vdsm_position.frag", "o_normal", 1, msg, sizeof msg);
+    v->position_tess = position_program(ctx, 1, msg, sizeof msg);
     if (v->position_tess)
         v->polygon_tess = stin__vdsm_polygon_program(ctx, "gl4/vdsm.frag", 1, msg, sizeof msg);
     if (v->polygon_tess)
@@ -192,9 +209,7 @@ static stin_result vdsm_init(stin_context *ctx)
         return STIN_OK;
     }
     msg[0] = '\0';
-    v->position_prog = stin__vdsm_program(ctx, "gl4/vdsm_position.vert", NULL,
-                                          "gl4/vdsm_position.frag", "o_normal", 0, msg,
-                                          sizeof msg);
+    v->position_prog = position_program(ctx, 0, msg, sizeof msg);
     if (v->position_prog)
         v->facing_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL,
                                             "gl4/vdsm_facing.frag", NULL, 0, msg, sizeof msg);
@@ -378,12 +393,14 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     stin__pass_apply(ctx, &ps);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, v->position);
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, v->normal);
+    stin__bind_unit(ctx, 2, GL_TEXTURE_2D, v->shading);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     stin__lit_program_forget(ctx);
     if (!faced) { /* else the pyramid's receivers wrote it */
         GL(ctx, UseProgram)(v->facing_prog);
         GL(ctx, Uniform1i)(v->face_position, 0);
         GL(ctx, Uniform1i)(v->face_normal, 1);
+        GL(ctx, Uniform1i)(v->face_shading, 2);
         GL(ctx, Uniform4fv)(v->face_light, 1, light);
         stin__screen_quad(ctx);
         ctx->stats.passes++;

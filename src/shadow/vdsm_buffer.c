@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* VDSM's position buffer: a frame stage that draws the visible surface once
  * into two float textures - world position (RGBA32F, w 1 where something was
- * drawn) and the facet normal turned to the eye (RGBA16F) - the size of the
+ * drawn), the facet normal turned to the eye and the shading normal turned
+ * with it (RGBA16F each; the terminator rule, vdsm_position.frag) - the size of the
  * viewport's far corner, so gl_FragCoord addresses it directly. Exact
  * positions, not depth reconstruction: a 24-bit depth buffer holds the eye
  * distance to about 1e-7 of the far/near ratio, too coarse for contact
@@ -11,19 +12,20 @@
 void stin__vdsm_buffer_release(stin_context *ctx)
 {
     struct stin__vdsm_state *v = ctx->vdsm;
-    GLuint tex[3];
+    GLuint tex[4];
     int i, n = 0;
     if (v->fbo)
         GL(ctx, DeleteFramebuffers)(1, &v->fbo);
     tex[0] = v->position;
     tex[1] = v->normal;
-    tex[2] = v->depth;
-    for (i = 0; i < 3; i++)
+    tex[2] = v->shading;
+    tex[3] = v->depth;
+    for (i = 0; i < 4; i++)
         if (tex[i])
             tex[n++] = tex[i];
     if (n)
         GL(ctx, DeleteTextures)(n, tex);
-    v->fbo = v->position = v->normal = v->depth = 0;
+    v->fbo = v->position = v->normal = v->shading = v->depth = 0;
     v->width = v->height = 0;
 }
 
@@ -31,7 +33,8 @@ void stin__vdsm_buffer_release(stin_context *ctx)
  * incomplete (logged once; the buffer is released). */
 static int ensure_size(stin_context *ctx)
 {
-    static const GLenum both[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+    static const GLenum all[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                                  GL_COLOR_ATTACHMENT2};
     struct stin__vdsm_state *v = ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     int w = vp[0] + vp[2], h = vp[1] + vp[3];
@@ -42,6 +45,7 @@ static int ensure_size(stin_context *ctx)
         GL(ctx, GenFramebuffers)(1, &v->fbo);
         GL(ctx, GenTextures)(1, &v->position);
         GL(ctx, GenTextures)(1, &v->normal);
+        GL(ctx, GenTextures)(1, &v->shading);
         GL(ctx, GenTextures)(1, &v->depth);
     }
     w = w > v->width ? w : v->width;
@@ -49,6 +53,7 @@ static int ensure_size(stin_context *ctx)
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
     stin__rt_texture(ctx, v->position, GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
     stin__rt_texture(ctx, v->normal, GL_RGBA16F, GL_RGBA, GL_FLOAT, w, h);
+    stin__rt_texture(ctx, v->shading, GL_RGBA16F, GL_RGBA, GL_FLOAT, w, h);
     stin__rt_texture(ctx, v->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
@@ -56,9 +61,11 @@ static int ensure_size(stin_context *ctx)
                                   v->position, 0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D,
                                   v->normal, 0);
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D,
+                                  v->shading, 0);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, v->depth,
                                   0);
-    GL(ctx, DrawBuffers)(2, both); /* framebuffer state: set once */
+    GL(ctx, DrawBuffers)(3, all); /* framebuffer state: set once */
     status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
     v->width = w;
     v->height = h;
@@ -130,6 +137,19 @@ static void use_position_program(stin_context *ctx)
     ctx->bound_mesh = 0xffffffffu;
 }
 
+/* A draw into the position buffer with its normal matrix for the terminator
+ * rule (vdsm_position.geom): a zero one keeps the facets where the vertex
+ * normals do not describe the drawn surface (displaced, a CSG cap). */
+static void submit(stin_context *ctx, const stin__draw *d)
+{
+    struct stin__vdsm_state *v = ctx->vdsm;
+    float nm[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+    if (d->csg != STIN__CSG_CAP && !stin__displace_active(ctx, &d->material))
+        stin__mat3_normal(nm, d->transform);
+    GL(ctx, UniformMatrix3fv)(v->pos_normal_matrix, 1, GL_FALSE, nm);
+    stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, d);
+}
+
 /* The stage: the visible surface's positions and normals. For the
  * visibility output blended draws count as surfaces, as in its depth pass. */
 void stin__vdsm_buffer_draw(stin_context *ctx)
@@ -156,7 +176,7 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE))
-            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, d);
+            submit(ctx, d);
     }
     ctx->stats.passes++;
     v->ready = 1;
@@ -199,7 +219,7 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
             csg[3] = band[0];
             GL(ctx, Uniform4fv)(v->pos_csg, 1, csg);
             GL(ctx, Uniform1f)(v->pos_csg_grow, band[1]);
-            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, &faces[i]);
+            submit(ctx, &faces[i]);
             stin__resolved_face_end(ctx, &saved);
         }
     ctx->bound_mesh = 0xffffffffu;
@@ -240,16 +260,16 @@ int stin__vdsm_buffer_layers_begin(stin_context *ctx)
 }
 
 /* A peeled layer's surface as the buffer (frame/frame.c, before the layer's
- * lights): the blended draws depth EQUAL against the layer's own depth
- * texture, attached here in place of the buffer's depth, without writing
- * it. The position program transforms exactly as the lit programs that
- * drew the layer (invariant gl_Position), so each pixel gets the layer's
- * point and no other, with no copy of the depth through gl_FragDepth (whose
- * rounding into a depth format differs from the rasteriser's). Pixels the
+ * lights): the blended draws kept where their window depth lies within
+ * 2^-21 of the layer's own depth texture (the shader's test, as for CSG
+ * faces), without a depth test. Not depth EQUAL: the position program's
+ * geometry stage (the terminator rule) may round the depth otherwise than
+ * the lit programs that drew the layer, by far less than that. Pixels the
  * layer leaves empty hold w 0: vdsm tests nothing there. The light's
  * pyramid follows (its receivers are read from this buffer per light). */
 void stin__vdsm_buffer_layer(stin_context *ctx)
 {
+    static const float on_layer[4] = {0.0f, 0.0f, 1.0f, 1.0f / 2097152.0f};
     struct stin__vdsm_state *v = ctx->vdsm;
     const int *vp = ctx->frame.viewport;
     stin__pass_state ps = stin__pass_defaults;
@@ -268,23 +288,22 @@ void stin__vdsm_buffer_layer(stin_context *ctx)
         return;
     }
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, depth, 0);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
-    ps.depth_write = 0; /* the layer's depth stays as it is */
+    ps.depth_write = 0;
     stin__pass_apply(ctx, &ps);
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
-    ps.depth_test = 1;
-    ps.depth_func = GL_EQUAL;
-    stin__pass_apply(ctx, &ps);
     use_position_program(ctx);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, depth);
+    GL(ctx, Uniform1i)(v->pos_csg_depth, 0);
+    GL(ctx, Uniform4fv)(v->pos_csg, 1, on_layer);
+    GL(ctx, Uniform1f)(v->pos_csg_grow, 0.0f);
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (d->material.color[3] < 1.0f)
-            stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, d);
+            submit(ctx, d);
     }
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, v->depth,
-                                  0);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);

@@ -37,12 +37,12 @@ typedef struct stin__vdsm_pyramid {
     float depth_row[4];         /* world -> light depth */
     stin__vdsm_light_locs marks, tris; /* light_prog's and tris_prog's */
     stin__displace_locs tris_displace;
-    GLint r_position, r_normal, r_light, r_vp, r_depth, r_rect;
+    GLint r_position, r_normal, r_shading, r_light, r_vp, r_depth, r_rect;
     GLint d_source, d_first;
     /* GL 4.3 (shadow/vdsm_receivers.c): the receivers by atomics, per texel
      * the deepest one's ordered bits in a storage buffer (0: none) */
     GLuint deepest, atomic_prog, first_prog;
-    GLint a_position, a_normal, a_light, a_vp, a_depth, a_size, f_source, f_size;
+    GLint a_position, a_normal, a_shading, a_light, a_vp, a_depth, a_size, f_source, f_size;
     int said_no_view, said_failed;
 } stin__vdsm_pyramid;
 
@@ -119,13 +119,14 @@ void stin__vdsm_soft_draw(stin_context *ctx, const stin_light_desc *l, const flo
 void stin__vdsm_soft_release(stin_context *ctx);
 
 struct stin__vdsm_state {
-    GLuint fbo, position, normal, depth;
+    GLuint fbo, position, normal, shading, depth;
     int width, height;      /* allocated texels (0: not yet) */
     GLuint position_prog, facing_prog, polygon_prog, query;
     GLuint position_tess, polygon_tess; /* "displace-tess": the two, tessellated */
     int tess_active;        /* they are swapped into position_prog and polygon_prog */
-    GLint pos_model, pos_view_proj, pos_camera, pos_csg, pos_csg_depth, pos_csg_grow;
-    GLint face_position, face_normal, face_light;
+    GLint pos_model, pos_normal_matrix, pos_view_proj, pos_camera, pos_csg, pos_csg_depth,
+        pos_csg_grow;
+    GLint face_position, face_normal, face_shading, face_light;
     stin__vdsm_polygon_locs poly; /* polygon_prog's (the one-pass program) */
     stin__displace_locs pos_displace; /* position_prog's displacement chunk */
     stin__vdsm_cull culling;

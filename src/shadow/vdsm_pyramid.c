@@ -71,6 +71,7 @@ static void locate_light(stin_context *ctx, GLuint prog, stin__vdsm_light_locs *
 static const stin__uniform_name receiver_uniforms[] = {
     STIN__UNIFORM(stin__vdsm_pyramid, r_position, "u_position"),
     STIN__UNIFORM(stin__vdsm_pyramid, r_normal, "u_normal"),
+    STIN__UNIFORM(stin__vdsm_pyramid, r_shading, "u_shading"),
     STIN__UNIFORM(stin__vdsm_pyramid, r_light, "u_light"),
     STIN__UNIFORM(stin__vdsm_pyramid, r_vp, "u_light_vp"),
     STIN__UNIFORM(stin__vdsm_pyramid, r_depth, "u_depth_row"),
@@ -425,8 +426,10 @@ static void receivers(stin_context *ctx, const float light[4])
     GL(ctx, UseProgram)(p->receiver_prog);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm->position);
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm->normal);
+    stin__bind_unit(ctx, 2, GL_TEXTURE_2D, ctx->vdsm->shading);
     GL(ctx, Uniform1i)(p->r_position, 0);
     GL(ctx, Uniform1i)(p->r_normal, 1);
+    GL(ctx, Uniform1i)(p->r_shading, 2);
     GL(ctx, Uniform4fv)(p->r_light, 1, light);
     GL(ctx, UniformMatrix4fv)(p->r_vp, 1, GL_FALSE, p->view_proj);
     GL(ctx, Uniform4fv)(p->r_depth, 1, p->depth_row);

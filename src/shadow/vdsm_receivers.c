@@ -28,6 +28,7 @@ void stin__vdsm_receivers_release(stin_context *ctx)
 static const stin__uniform_name atomic_uniforms[] = {
     STIN__UNIFORM(stin__vdsm_pyramid, a_position, "u_position"),
     STIN__UNIFORM(stin__vdsm_pyramid, a_normal, "u_normal"),
+    STIN__UNIFORM(stin__vdsm_pyramid, a_shading, "u_shading"),
     STIN__UNIFORM(stin__vdsm_pyramid, a_light, "u_light"),
     STIN__UNIFORM(stin__vdsm_pyramid, a_vp, "u_light_vp"),
     STIN__UNIFORM(stin__vdsm_pyramid, a_depth, "u_depth_row"),
@@ -104,10 +105,12 @@ void stin__vdsm_receivers_draw(stin_context *ctx, const float light[4], int chan
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, ctx->vdsm->position);
     stin__bind_unit(ctx, 1, GL_TEXTURE_2D, ctx->vdsm->normal);
+    stin__bind_unit(ctx, 2, GL_TEXTURE_2D, ctx->vdsm->shading);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, UseProgram)(p->atomic_prog);
     GL(ctx, Uniform1i)(p->a_position, 0);
     GL(ctx, Uniform1i)(p->a_normal, 1);
+    GL(ctx, Uniform1i)(p->a_shading, 2);
     GL(ctx, Uniform4fv)(p->a_light, 1, light);
     GL(ctx, UniformMatrix4fv)(p->a_vp, 1, GL_FALSE, p->view_proj);
     GL(ctx, Uniform4fv)(p->a_depth, 1, p->depth_row);

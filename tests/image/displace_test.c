@@ -331,6 +331,9 @@ static int setup(disp_case *c, int split, const reference_displace_lod *lod, cha
     c->flat_hits = malloc(sizeof *c->flat_hits * n);
     c->ref = malloc(sizeof(float) * REFERENCE_CHANNELS * n);
     ref = reference_create(&c->ds, err, err_size);
+    /* displaced draws keep their facets (their vertex normals do not describe
+     * the displaced surface); the other objects of these scenes are planes */
+    reference_facet_terminator(ref, 1);
     flat = reference_create(c->s, err, err_size);
     ok = ref && flat && c->hits && c->flat_hits && c->ref &&
          reference_primary(ref, c->r->width, c->r->height, c->hits) &&

@@ -344,6 +344,7 @@ int main(int argc, char **argv)
             hostile_tests(&r, tiers[t], argv[i]);
             composite_tests(&r, tiers[t], argv[i]);
             visibility_tests(&r, tiers[t], argv[i]);
+            terminator_tests(&r, tiers[t], argv[i]);
             outline_tests(&r, tiers[t], argv[i]);
             csg_tests(&r, tiers[t], argv[i]);
             deep_tests(&r, tiers[t], argv[i]);

@@ -68,6 +68,10 @@ void outline_tests(run *r, stin_tier tier, const char *path);
  * (six lights) and shadow-soft (visibility_test.c). */
 void visibility_tests(run *r, stin_tier tier, const char *path);
 
+/* Lone convex objects never shadowed where their shading normal faces a
+ * light, per shadow technique, on the terminator-* scenes (terminator_test.c). */
+void terminator_tests(run *r, stin_tier tier, const char *path);
+
 /* Lit programs specialised to a pass's lights and a draw's material against
  * the general one, on four-lights, stone-wall, deep-window and glass-panes
  * (lit_test.c). */

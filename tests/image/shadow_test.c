@@ -456,6 +456,8 @@ void shadow_tests(run *r, stin_tier tier, const char *path)
     if (!s.light_count)
         goto done;
     ref = reference_create(&s, err, sizeof err);
+    /* volumes still decide self-shadowing by the facet (issue 37) */
+    reference_facet_terminator(ref, 1);
     hits = malloc(sizeof *hits * (size_t)r->width * r->height);
     refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
     if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||

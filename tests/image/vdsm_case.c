@@ -67,14 +67,19 @@ static double ray_lengths(const vdsm_case *c, const ref_hit *h)
 static int ambiguous(const vdsm_case *c, const ref_hit *h, float vis)
 {
     const scene_light *l = &c->s->lights[0];
-    double to_light[3], len = 0, cosine = 0, move = AMBIGUOUS_MOVE * ray_lengths(c, h);
+    double to_light[3], len = 0, cosine = 0, shading = 0;
+    double move = AMBIGUOUS_MOVE * ray_lengths(c, h);
     int k, axis;
     for (k = 0; k < 3; k++) {
         to_light[k] = l->type == SCENE_LIGHT_DIRECTIONAL ? -l->direction[k] : l->position[k] - h->P[k];
         len += to_light[k] * to_light[k];
         cosine += to_light[k] * h->Ng[k];
+        shading += to_light[k] * h->N[k];
     }
-    if (len > 0 && fabs(cosine) / sqrt(len) < AMBIGUOUS_COS)
+    /* the facet or the shading normal (the terminator rule's other facing
+     * test) within rounding of edge-on */
+    if (len > 0 && (fabs(cosine) / sqrt(len) < AMBIGUOUS_COS ||
+                    fabs(shading) / sqrt(len) < AMBIGUOUS_COS))
         return 1;
     /* along the surface (moving into it would only test the offset) */
     {

@@ -68,6 +68,14 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits);
 int reference_hit_on_plane(const reference *r, int width, int height, const ref_hit *hit,
                            double px, double py, ref_hit *out);
 
+/* The terminator rule stin's per-pixel techniques share (vdsm): a smooth
+ * triangle's ray starts on the surface its vertex normals describe and its
+ * side faces a light by its facet or its shading normal (reference_rays.c
+ * smooth_start). The default. on = 1 goes back to the facet rule for a
+ * technique that still decides self-shadowing by the facet (issue 37 leaves
+ * volumes and the shadow maps open): the ray from P, facing by the facet. */
+void reference_facet_terminator(reference *r, int on);
+
 /* Geometric visibility of light `light` from a hit: 1 when the segment from P
  * (offset along Ng toward the light's side by the scene epsilon) to the light
  * position is unoccluded (directional: the ray toward -direction, to

@@ -97,11 +97,12 @@ void ref_area_cone_point(const ref_area_cone *cone, unsigned k, unsigned n, doub
 enum { BATCH = 64 }; /* rays per rtcOccluded1M call */
 
 /* Of the directions [k0, k1) of the cone, how many reach the light from org
- * (the offset P) with nothing in between; side: the offset along Ng. The
+ * (the start, offset along Ng by side) with nothing in between; facing: the
+ * shading normal of the terminator rule (ref_smooth_start). The
  * batch of one pixel's rays is coherent: they fan out of one point. */
 static unsigned clear_directions(const reference *r, const ref_hit *hit, const ref_area_cone *cone,
-                                 const double org[3], double side, unsigned k0, unsigned k1,
-                                 unsigned n)
+                                 const double org[3], double side, const double facing[3],
+                                 unsigned k0, unsigned k1, unsigned n)
 {
     struct RTCRay rays[BATCH];
     double dist[BATCH];
@@ -113,8 +114,8 @@ static unsigned clear_directions(const reference *r, const ref_hit *hit, const r
         sp = sp * cg + cp * sg; /* the turn of direction k + 1, without a sine a ray */
         cp = next;
         double Ngw = hit->Ng[0] * w[0] + hit->Ng[1] * w[1] + hit->Ng[2] * w[2];
-        if (side * Ngw <= 0.0)
-            continue; /* under the horizon of the side the eye sees: its own shadow */
+        if (side * Ngw <= 0.0 && facing[0] * w[0] + facing[1] * w[1] + facing[2] * w[2] <= 0.0)
+            continue; /* under both horizons of the side the eye sees: its own shadow */
         struct RTCRay *ray = &rays[m];
         memset(ray, 0, sizeof *ray);
         ray->org_x = (float)org[0];
@@ -154,11 +155,14 @@ float reference_light_visibility(const reference *r, const ref_hit *hit, int lig
     ref_area_cone cone;
     if (n <= 1 || !ref_area_cone_of(l, hit->P, &cone))
         return reference_visibility(r, hit, light);
-    double side = ref_eye_side(r, hit, r->eps), org[3];
+    /* the start and the facing of the terminator rule, as for a point light */
+    double side = ref_eye_side(r, hit, r->eps), org[3], facing[3];
+    ref_smooth_start(r, hit, side > 0.0 ? 1.0 : -1.0, org, facing);
     for (int c = 0; c < 3; c++)
-        org[c] = hit->P[c] + side * hit->Ng[c];
+        org[c] += side * hit->Ng[c];
     for (unsigned k = 0; k < n; k += BATCH)
-        clear += clear_directions(r, hit, &cone, org, side, k, k + BATCH < n ? k + BATCH : n, n);
+        clear += clear_directions(r, hit, &cone, org, side, facing, k,
+                                  k + BATCH < n ? k + BATCH : n, n);
     return (float)((double)clear / n);
 }
 

@@ -24,6 +24,7 @@ struct reference {
     ref_object *objects;
     double eps;         /* visibility ray offset, REFERENCE_EPS_SCALE * scene extent */
     unsigned area_samples; /* directions an area light is integrated with, REFERENCE_AREA_SAMPLES */
+    int facet_terminator; /* 1: every triangle decides by its facet (reference_facet_terminator) */
     unsigned char *csg_primitive; /* per object, or NULL: 1 for a CSG primitive, which
                                    * neither shows on its own nor casts (reference_csg.h) */
     struct ref_csg_cast *csg_cast; /* products that cast (reference_csg_cast), or NULL */
@@ -40,6 +41,10 @@ void ref_fill_hit(const reference *r, unsigned object, unsigned prim, float u, f
 /* eps or -eps: the offset along hit's Ng that leaves the surface on the
  * side the eye sees, so a visibility ray cannot hit its own triangle. */
 double ref_eye_side(const reference *r, const ref_hit *hit, double eps);
+/* Where hit's shadow rays start and which normal decides its facing, by the
+ * terminator rule (reference_rays.c); side: +-1, the side the eye sees. */
+void ref_smooth_start(const reference *r, const ref_hit *hit, double side, double org[3],
+                      double facing[3]);
 
 /* 1 for an area light: radius > 0, not directional. */
 int ref_is_area_light(const scene_light *l);

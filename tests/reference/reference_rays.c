@@ -210,25 +210,96 @@ double ref_eye_side(const reference *r, const ref_hit *hit, double eps)
     return dot3(Ng, to_eye) >= 0.0 ? eps : -eps;
 }
 
-/* 1 when nothing lies between hit's P (offset along Ng to the side the eye
- * sees) and the light: toward `to` (a position) or, directional, along `to`
- * (the direction toward the light) to infinity. The visible side is what is
- * lit: a side turned away from the light is in its own shadow (0), for a
- * sheet seen from behind as for a closed object's far side. */
+/* The terminator rule stin shares (Hanika, "Hacking the Shadow Terminator",
+ * Ray Tracing Gems II, 2021): a triangle whose vertex normals bend away from
+ * its facet stands for a curved surface, so its shadow ray starts on that
+ * surface - P projected onto each vertex's tangent plane, the projections
+ * blended by the barycentrics - where the blend lies above the facet
+ * (convex; a concave corner keeps P), and the side faces the light where its
+ * facet or its shading normal (turned to the side of the facet the eye sees)
+ * does: lit by its shading normal, it does not shadow itself along the
+ * facets' steps; facing by its facet it stays lit as before (seen from the
+ * light, everything is). A facet whose vertex normals all equal its own
+ * (planes, boxes) keeps P. `org` gets the point, `facing` the shading normal
+ * (the facet's where it keeps P). */
+void ref_smooth_start(const reference *r, const ref_hit *hit, double side, double org[3],
+                      double facing[3])
+{
+    const ref_object *o = &r->objects[hit->object];
+    const uint32_t *tri = o->indices + 3 * (size_t)hit->prim;
+    double w[3] = {1.0 - (double)hit->u - (double)hit->v, hit->u, hit->v};
+    double P[3] = {hit->P[0], hit->P[1], hit->P[2]}, Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]};
+    double n[3][3], e1[3], e2[3], tri_ng[3], lift = 0.0;
+    int k, c, smooth = 0;
+    for (c = 0; c < 3; c++) {
+        org[c] = P[c];
+        facing[c] = side * Ng[c];
+    }
+    if (r->facet_terminator || (uint32_t)hit->prim >= o->triangle_count)
+        return;
+    for (c = 0; c < 3; c++) {
+        e1[c] = (double)o->positions[3 * (size_t)tri[1] + c] - o->positions[3 * (size_t)tri[0] + c];
+        e2[c] = (double)o->positions[3 * (size_t)tri[2] + c] - o->positions[3 * (size_t)tri[0] + c];
+    }
+    cross3(e1, e2, tri_ng);
+    /* not this triangle's point (a CSG cap); a CSG exit's Ng is turned */
+    if (!(normalize3(tri_ng) > 0.0) || fabs(dot3(tri_ng, Ng)) < 1.0 - 1e-6)
+        return;
+    for (k = 0; k < 3; k++) {
+        for (c = 0; c < 3; c++)
+            n[k][c] = o->normals[3 * (size_t)tri[k] + c];
+        if (dot3(n[k], n[k]) == 0.0)
+            return; /* no normals: the facet */
+        smooth |= fabs(dot3(n[k], Ng)) < 1.0 - 1e-6; /* either way round */
+    }
+    if (!smooth)
+        return;
+    double S[3] = {0, 0, 0}, Q[3];
+    for (k = 0; k < 3; k++) {
+        const float *p = o->positions + 3 * (size_t)tri[k];
+        double d = 0.0;
+        for (c = 0; c < 3; c++)
+            d += (P[c] - p[c]) * n[k][c];
+        for (c = 0; c < 3; c++) {
+            S[c] += w[k] * n[k][c];
+            Q[c] = P[c] - d * n[k][c];
+            org[c] += w[k] * (Q[c] - P[c]);
+        }
+    }
+    normalize3(S);
+    double turn = dot3(S, Ng) * side < 0.0 ? -1.0 : 1.0;
+    for (c = 0; c < 3; c++) {
+        lift += (org[c] - P[c]) * side * Ng[c];
+        facing[c] = turn * S[c];
+    }
+    if (!(lift > 0.0)) /* concave: the facet's own point */
+        for (c = 0; c < 3; c++)
+            org[c] = P[c];
+}
+
+/* 1 when nothing lies between the hit's start (ref_smooth_start, offset along Ng
+ * to the side the eye sees) and the light: toward `to` (a position) or,
+ * directional, along `to` (the direction toward the light) to infinity. The
+ * visible side is what is lit: a side turned away from the light is in its
+ * own shadow (0), for a sheet seen from behind as for a closed object's far
+ * side. */
 static float visible_off(const reference *r, const ref_hit *hit, const double to[3], int directional,
                          double eps)
 {
-    double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], dir[3], dist = INFINITY;
+    double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], facing[3], dir[3];
+    double dist = INFINITY;
+    /* Leave the surface on the eye's side so the ray cannot hit its own triangle. */
+    double side = ref_eye_side(r, hit, 1.0);
+    ref_smooth_start(r, hit, side, org, facing);
     for (int c = 0; c < 3; c++)
-        dir[c] = directional ? to[c] : to[c] - hit->P[c];
+        dir[c] = directional ? to[c] : to[c] - org[c];
     if (!(normalize3(dir) > 0.0))
         return 1.0f; /* the light sits on the point */
-    double side = ref_eye_side(r, hit, eps);
     /* The side the eye sees turns away from the light: it shadows itself. */
-    if (side * dot3(Ng, dir) <= 0.0)
+    if (side * dot3(Ng, dir) <= 0.0 && dot3(facing, dir) <= 0.0)
         return 0.0f;
     for (int c = 0; c < 3; c++)
-        org[c] = hit->P[c] + side * Ng[c];
+        org[c] += side * eps * Ng[c];
     if (!directional) {
         for (int c = 0; c < 3; c++)
             dir[c] = to[c] - org[c];
@@ -263,6 +334,12 @@ static float visible_off(const reference *r, const ref_hit *hit, const double to
 static float visible(const reference *r, const ref_hit *hit, const double to[3], int directional)
 {
     return visible_off(r, hit, to, directional, r->eps);
+}
+
+void reference_facet_terminator(reference *r, int on)
+{
+    if (r)
+        r->facet_terminator = on;
 }
 
 float reference_visibility_offset(const reference *r, const ref_hit *hit, int light, double offset)
