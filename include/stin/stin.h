@@ -91,9 +91,12 @@
  * the facet, and the side faces the light where its facet or its shading
  * normal does, so a low-poly sphere's lit side has no terminator steps; a
  * triangle whose vertex normals equal its facet normal (planes, boxes) is
- * drawn as before, and displaced draws keep their facets. The position
- * stage carries a geometry shader for it. The segment leaves the surface by 2^-13 of the point's
- * largest coordinate along its facet normal (no self-shadowing; contact
+ * drawn as before, and displaced draws keep their facets. Volumes do not
+ * follow the rule yet, so frames the measured choice (below) may give to
+ * volumes keep the facets under vdsm too: a switch changes no pixel. The
+ * position stage carries a geometry shader for it. The segment leaves the
+ * surface by 2^-13 of the point's largest coordinate along its facet
+ * normal (no self-shadowing; contact
  * shadows closer than that are lost, as with the test reference's own
  * 1e-4 of the scene). Closed meshes drop the triangles facing the light
  * (EP; STIN_DEBUG_VDSM_NO_EP keeps them); open ones, and materials marked
