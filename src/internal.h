@@ -81,12 +81,15 @@ struct stin_context {
                                * draws elsewhere mid-frame (maps) binds it back */
     unsigned char pass_channel; /* 0, or 1-4: the draws' passes write only R, G, B or A
                                  * (a light's channel of the visibility export) */
+    GLenum pass_blend[2];     /* 0, or the factors the draws' passes blend with instead
+                               * (shadow/volume.c: an area light's shares in alpha) */
     const stin__draw *sorted_draw; /* "sorted", shadowed: the blended draw the shade
                                     * function lights (frame/frame.c) */
     GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
     struct {                  /* the frame's framebuffer (gl/framebuffer_probe.c) */
         GLuint name;          /* the one probed last (0 = default) */
         int stencil_bits, depth_bits;
+        int alpha_bits;       /* of its colour: an area light's shares add up there */
         int shadows_off;      /* the shadows choice cannot run into it (frame/target.c) */
         int separate_read;    /* draw and read bindings are separate (GL 3.0, ARB_fbo) */
         int multisampled;     /* it has sample buffers (GL_SAMPLE_BUFFERS, GL 1.3) */

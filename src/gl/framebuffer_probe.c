@@ -65,6 +65,22 @@ void stin__framebuffer_restore(stin_context *ctx, const GLint saved[2])
     }
 }
 
+/* Alpha bits of `name`'s colour (bound now); on a core context those of a
+ * framebuffer object's first colour attachment, and 0 for the default
+ * framebuffer (a surfaceless one has no back buffer to ask about: Mesa
+ * answers GL_INVALID_ENUM). */
+static int alpha_bits(stin_context *ctx, GLuint name)
+{
+    GLint v = 0;
+    if (ctx->caps.profile != STIN_GL_PROFILE_CORE) {
+        GL(ctx, GetIntegerv)(GL_ALPHA_BITS, &v);
+        return v;
+    }
+    if (!name || !ctx->gl.GetFramebufferAttachmentParameteriv)
+        return 0;
+    return attachment_bits(&ctx->gl, GL_COLOR_ATTACHMENT0, GL_FRAMEBUFFER_ATTACHMENT_ALPHA_SIZE);
+}
+
 /* Reads the bits of `name`, bound now, into the cache. */
 static void probe_bits(stin_context *ctx, GLuint name)
 {
@@ -73,6 +89,7 @@ static void probe_bits(stin_context *ctx, GLuint name)
     ctx->target.stencil_bits = ctx->target.depth_bits = 0;
     stin__framebuffer_bits(&ctx->gl, ctx->caps.profile == STIN_GL_PROFILE_CORE, name,
                            &ctx->target.stencil_bits, &ctx->target.depth_bits);
+    ctx->target.alpha_bits = alpha_bits(ctx, name);
     /* GL 1.3's query; here, not per frame: a query can wait for a threaded driver */
     if (10 * ctx->caps.gl_major + ctx->caps.gl_minor >= 13)
         GL(ctx, GetIntegerv)(GL_SAMPLE_BUFFERS, &sample_buffers);

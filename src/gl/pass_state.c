@@ -160,6 +160,11 @@ stin__pass_state stin__pass_draw(const stin_context *ctx, int additive, int blen
     s.blend = additive || blend_alpha;
     s.blend_src = blend_alpha ? GL_SRC_ALPHA : GL_ONE;
     s.blend_dst = additive ? GL_ONE : blend_alpha ? GL_ONE_MINUS_SRC_ALPHA : GL_ZERO;
+    if (ctx->pass_blend[0]) {
+        s.blend = 1;
+        s.blend_src = ctx->pass_blend[0];
+        s.blend_dst = ctx->pass_blend[1];
+    }
     if (!s.blend) { /* keep the cached function: nothing to send */
         s.blend_src = ctx->pass_known ? ctx->pass.blend_src : GL_ONE;
         s.blend_dst = ctx->pass_known ? ctx->pass.blend_dst : GL_ZERO;

@@ -250,6 +250,18 @@ static void face_ops(stin__stencil_face *f, int zfail, int back, GLenum incr, GL
     f->zpass = zfail ? GL_KEEP : (back ? decr : incr);
 }
 
+/* The stencil test of a lit pass: where the count is zero; INCR keeps a
+ * second fragment at the same depth from being lit twice. */
+static void lit_where_zero(stin__pass_state *ps)
+{
+    ps->two_sided = 0;
+    ps->front.func = GL_EQUAL;
+    ps->front.ref = 0;
+    ps->front.mask = 0xffffffffu;
+    ps->front.fail = ps->front.zfail = GL_KEEP;
+    ps->front.zpass = GL_INCR;
+}
+
 void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
                         const int scissor[4])
 {
@@ -328,18 +340,11 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     path->volume_end(ctx);
     ps = *stin__pass_current(ctx);
     ps.front_face = GL_CCW;
-    /* Lit where the count is zero; INCR keeps a second fragment at the same
-     * depth from being lit twice. */
     ps.cull = 0;
     ps.cull_face = GL_BACK;
     ps.depth_clamp = 0;
     ps.color_write = 1;
-    ps.two_sided = 0;
-    ps.front.func = GL_EQUAL;
-    ps.front.ref = 0;
-    ps.front.mask = 0xffffffffu;
-    ps.front.fail = ps.front.zfail = GL_KEEP;
-    ps.front.zpass = GL_INCR;
+    lit_where_zero(&ps);
     stin__pass_apply(ctx, &ps);
     ctx->stats.passes++;
 }
@@ -431,6 +436,73 @@ static stin_result volume_init(stin_context *ctx)
 
 static void volume_prepare(stin_context *ctx) { stin__volume_projection(ctx); }
 
+/* Where an area light is shaded without the screen mask, a lit pass a
+ * sample at intensity / n rounds each pass to the target's 8 bits, and the
+ * roundings add up in bands (up to n / 2 steps). Where the frame draws into
+ * its own target and that has 8 alpha bits, the samples' shares (whole
+ * 255ths, stin__light_sample_weight) add up in destination alpha instead,
+ * exactly, and the light is shaded once at its centre, scaled by them. */
+static int shares_in_alpha(const stin_context *ctx, uint32_t n)
+{
+    return n > 1 && ctx->pass_channel == 0 && ctx->target.alpha_bits >= 8 &&
+           ctx->draw_fbo == ctx->frame.framebuffer;
+}
+
+/* Alpha-only flat pass over the opaque draws' visible surfaces, blended
+ * src * alpha + dst * dst_factor (the pass's stencil test applies). */
+static void alpha_pass(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                       float alpha, GLenum dst_factor)
+{
+    float color[4];
+    color[0] = color[1] = color[2] = 0.0f;
+    color[3] = alpha;
+    ctx->pass_channel = 4;
+    ctx->pass_blend[0] = GL_ONE;
+    ctx->pass_blend[1] = dst_factor;
+    path->flat(ctx, STIN__OPAQUE, color, l);
+    ctx->pass_channel = 0;
+    ctx->pass_blend[0] = ctx->pass_blend[1] = 0;
+}
+
+/* The stencil cleared in `rect` and set to pass each pixel once (EQUAL 0,
+ * INCR: coplanar fragments shaded once), as stin__volume_light leaves it. */
+static void once_a_pixel(stin_context *ctx, const int rect[4])
+{
+    stin__pass_state ps = *stin__pass_current(ctx);
+    int k;
+    ps.scissor = 1;
+    for (k = 0; k < 4; k++)
+        ps.scissor_box[k] = rect[k];
+    ps.stencil_test = 1;
+    ps.stencil_write_mask = 0xffu;
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, ClearStencil)(0);
+    GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);
+    lit_where_zero(&ps);
+    stin__pass_apply(ctx, &ps);
+}
+
+static void shares_light(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
+                         uint32_t n, const int *scissor, stin__shade_fn shade)
+{
+    uint32_t s;
+    alpha_pass(ctx, path, l, 0.0f, GL_ZERO); /* the shares start at 0 */
+    for (s = 0; s < n; s++) {
+        stin_light_desc one;
+        float world[4];
+        sample_light(l, s, n, &one, world);
+        stin__volume_light(ctx, path, world, scissor);
+        alpha_pass(ctx, path, &one, stin__light_sample_weight(s, n), GL_ONE);
+    }
+    once_a_pixel(ctx, scissor ? scissor : ctx->frame.viewport);
+    ctx->pass_blend[0] = GL_DST_ALPHA;
+    ctx->pass_blend[1] = GL_ONE;
+    shade(ctx, path, l, 1.0f);
+    ctx->pass_blend[0] = ctx->pass_blend[1] = 0;
+    stin__volume_light_end(ctx);
+    alpha_pass(ctx, path, l, 1.0f, GL_ONE); /* opaque again (it saturates) */
+}
+
 /* Per light sample: its volumes counted into the stencil, then the sample
  * shaded where the count is zero, within the light's scissor. */
 static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint32_t li,
@@ -441,6 +513,10 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     int rect[4], scissored = stin__light_scissor(ctx, l, rect);
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return; /* the light touches nothing on screen */
+    if (shares_in_alpha(ctx, n)) {
+        shares_light(ctx, path, l, n, scissored ? rect : NULL, shade);
+        return;
+    }
     for (s = 0; s < n; s++) {
         stin_light_desc one;
         float world[4];

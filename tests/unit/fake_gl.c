@@ -203,6 +203,7 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     case 0x88FF: *data = 2048; break; /* GL_MAX_ARRAY_TEXTURE_LAYERS: Mesa's */
     case GL_STENCIL_BITS: *data = bound_bits(1); break;
     case GL_DEPTH_BITS: *data = bound_bits(0); break;
+    case GL_ALPHA_BITS: *data = 8; break;
     case GL_SAMPLE_BUFFERS: *data = c->sample_buffers; break;
     case GL_MAX_TEXTURE_SIZE: *data = c->max_texture_size; break;
     case GL_MAX_TEXTURE_UNITS: *data = c->max_texture_units; break;
