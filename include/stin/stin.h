@@ -1543,9 +1543,24 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * again) when a product's crossings outrun it (stin_frame_stats.
  * shadows.vdsm_csg_casts, shadows.vdsm_csg_bytes); a product of more than 128 primitives
  * or 64 terms casts nothing under vdsm (logged once). Without the storage
- * buffers (gl33-core) vdsm casts no product, logged once. Volumes (and the
- * point lights GL1 maps hand to volumes) cast no product, logged once: a
- * product's volume would need its resolved silhouette. Products are opaque; a primitive's normal and height maps are
+ * buffers (gl33-core) vdsm casts no product, logged once. A product's volume
+ * would need its resolved silhouette, so volumes on the GLSL tiers (with
+ * framebuffer objects, depth textures and shadow compare) cast products
+ * through a map of their own: per light, just before its volumes are
+ * counted, the products are resolved from the light into one depth atlas
+ * (3 x 2 cells of shadows.map_size texels a side, halved while three
+ * exceed GL_MAX_TEXTURE_SIZE; a spot or directional light's map in one
+ * cell, a point light's six faces in all six: 24 MiB of GL memory at 1024,
+ * made at stin_create where volumes run on a GLSL tier), and after the
+ * count one more pass over the frame's opaque surfaces (depth EQUAL, the
+ * map-pcf test with the light's pcf_kernel) sets the stencil wherever that
+ * map shadows the pixel, so the light's lit pass (or its channel of the
+ * screen mask) lights only what both the volumes and the map leave lit: exact
+ * for the ordinary casters, the map's bound at the products' shadow edges.
+ * Logged once a light (INFO, FALLBACK): "volume: CSG products cast through
+ * map-pcf (SIZE) for light N". Frames without products draw none of it.
+ * Volumes on the GL1 tier (and the point lights GL1 maps hand to volumes)
+ * cast no product, logged once. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term; on the CPU each layer reads depth back (and
  * the stencil once per batch), so that resolve costs read-backs more than

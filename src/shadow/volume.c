@@ -260,8 +260,6 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     int k, n_planes;
     plane planes[5];
     stin__volume_reach reach;
-    stin__casters_none(ctx, "into shadow volumes (a product's volume needs its resolved "
-                            "silhouette, not its primitives'; the map techniques cast them)");
     /* The frame's viewport at most: the stencil of the rest of the
      * framebuffer (other viewports of a keep_contents frame) is not ours. */
     if (NO_SCISSOR(scissor))
@@ -426,7 +424,14 @@ static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_
 static stin_result volume_init(stin_context *ctx)
 {
     stin__volume_extrude_init(ctx);
+    stin__cast_map_init(ctx);
     return STIN_OK;
+}
+
+static void volume_release(stin_context *ctx)
+{
+    stin__volume_extrude_release(ctx);
+    stin__cast_map_release(ctx);
 }
 
 static void volume_prepare(stin_context *ctx) { stin__volume_projection(ctx); }
@@ -441,11 +446,13 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     int rect[4], scissored = stin__light_scissor(ctx, l, rect);
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return; /* the light touches nothing on screen */
+    (void)stin__cast_map_draw(ctx, path, li, ctx->draw_fbo);
     for (s = 0; s < n; s++) {
         stin_light_desc one;
         float world[4];
         sample_light(l, s, n, &one, world);
         stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+        stin__cast_map_mark(ctx);
         shade(ctx, path, &one, 1.0f / (float)n);
     }
     stin__volume_light_end(ctx);
@@ -501,8 +508,10 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
         return 0;
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return 1; /* the light touches nothing on screen: its channel stays 0 */
+    (void)stin__cast_map_draw(ctx, path, li, stin__mask_target_of(ctx).fbo);
     sample_light(l, 0, 1, &one, world);
     stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+    stin__cast_map_mark(ctx);
     stin__mask_write(ctx, path, channel);
     stin__volume_light_end(ctx);
     return 1;
@@ -511,7 +520,7 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
 const stin__shadow_technique stin__shadow_volume = {
     .glsl_chunk = "shadow_mask.glsl",
     .init = volume_init,
-    .release = stin__volume_extrude_release,
+    .release = volume_release,
     .prepare = volume_prepare,
     .light = volume_shadow_light,
     .uniforms = stin__mask_uniforms,
