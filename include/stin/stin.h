@@ -168,8 +168,8 @@
  * frames are chosen by measurement; stin_frame_stats.shadows.choice_* say
  * what each frame ran. The lit programs are the same for both (one shadow
  * chunk): a switch builds nothing. A frame volumes would not draw the same
- * stays on vdsm and is not a trial: CSG products (vdsm casts them),
- * displaced draws (volumes cast the flat mesh), blended draws (peeled
+ * stays on vdsm and is not a trial: CSG products and displaced draws
+ * (vdsm casts them exactly, volumes through a map), blended draws (peeled
  * layers are vdsm's receivers; transparent casters), area lights (vdsm
  * shadows them from their centre, volumes by samples), or a target without
  * a stencil buffer; where such a frame follows a volume frame, the
@@ -619,13 +619,20 @@ const char *stin_feature_name(stin_feature f);
  * depth-EQUAL passes match and map-pcf and vdsm shadow the displaced
  * surface. Lighting normals come from the normal map (or are the vertex
  * normals without one): the vertex stage cannot see its neighbours.
- * Shadows: stencil volumes take silhouettes from the undisplaced mesh on
- * the CPU, so "displace" conflicts with "volume" (technique table): with
- * volumes chosen displacement is "displacement-off" (logged fallback) and
- * materials get their surface chain; forcing "displace" makes the shadow
- * chain skip "volume" (vdsm, map-pcf or off); a shadow technique demoted
- * to volume at set-up demotes displacement too (logged). No technique
- * shadows the flat mesh of a displaced draw.
+ * Shadows: stencil volumes take silhouettes from the undisplaced mesh, so
+ * under "volume" a displaced draw casts no volume: it casts through
+ * volumes' own depth map (with the CSG products, see "CSG products": the
+ * map-pcf test, its bound at those shadows' edges; logged once a light,
+ * "volume: displaced casters cast through map-pcf (SIZE) for light N"),
+ * and is lit and receives every shadow at its displaced depth. That map
+ * needs framebuffer objects, depth textures and shadow compare: where the
+ * context lacks one, "displace" conflicts with "volume" (the technique
+ * table's conflict, lifted by those capabilities): with volumes chosen
+ * displacement is "displacement-off" (logged fallback) and materials get
+ * their surface chain; forcing "displace" makes the shadow chain skip
+ * "volume"; a shadow technique demoted to volume at set-up demotes
+ * displacement too (logged), as does a map test that fails to build. No
+ * technique shadows the flat mesh of a displaced draw.
  * The height map is read with GL's filtering (bilinear at texel centres,
  * repeat) at a mip level from the vertex's linear distance d to the eye:
  *   lambda = log2(d x texels per unit / pixels per unit at distance 1)
@@ -1551,9 +1558,11 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * (3 x 2 cells of shadows.map_size texels a side, halved while three
  * exceed GL_MAX_TEXTURE_SIZE; a spot or directional light's map in one
  * cell, a point light's six faces in all six: 24 MiB of GL memory at 1024,
- * made at stin_create where volumes run on a GLSL tier), and after the
+ * made at stin_create where volumes run on a GLSL tier with CSG or
+ * displacement chosen), and after the
  * count one more pass over the frame's opaque surfaces (depth EQUAL, the
- * map-pcf test with the light's pcf_kernel) sets the stencil wherever that
+ * map-pcf test with the light's pcf_kernel; displaced draws go into the map
+ * too, see Displacement) sets the stencil wherever that
  * map shadows the pixel, so the light's lit pass (or its channel of the
  * screen mask) lights only what both the volumes and the map leave lit: exact
  * for the ordinary casters, the map's bound at the products' shadow edges.

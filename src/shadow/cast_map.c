@@ -1,16 +1,18 @@
 /* SPDX-License-Identifier: MIT */
-/* The casters stencil volumes cannot cast (the CSG products, whose volume
- * would need their resolved silhouette, not their primitives'), cast for
- * them through a map of their own on the GLSL tiers: per light, just
- * before its volumes are counted, the products go into one depth map from
- * the light (csg/cast.c's resolve, through render/casters.h), and after the
- * count a pass over the frame's surfaces, depth EQUAL, sets the stencil
- * non-zero wherever that map shadows them (map-pcf's test: its kernel and
+/* The casters stencil volumes cannot cast, cast for them through a map of
+ * their own on the GLSL tiers: the CSG products (a product's volume would
+ * need its resolved silhouette, not its primitives') and displaced draws
+ * (volumes' silhouettes would be the undisplaced mesh's). Per light, just
+ * before its volumes are counted, they go into one depth map from the light
+ * (the products by csg/cast.c's resolve through render/casters.h, the
+ * displaced draws by the path's depth pass), and after the count a pass
+ * over the frame's surfaces, depth EQUAL, sets the stencil non-zero
+ * wherever that map shadows them (map-pcf's test: its kernel and
  * receiver-plane bias, lit where half the kernel is). The lit pass, or the
  * screen mask's write, then lights only where both the volumes and the map
  * say lit. One map serves every light in turn, drawn mid-frame as map-pcf
- * draws a point light's faces. Frames without such casters draw nothing
- * of it. */
+ * draws a point light's faces. Frames without such casters draw nothing of
+ * it. */
 #include "internal.h"
 #include "render/casters.h"
 #include "render/displace_chunk.h"
@@ -19,10 +21,15 @@
 
 /* The map is an atlas (shadow.h's cells, cast_mark.frag's lookup): a spot
  * or directional light's map in cell 0, a point light's face f in cell f. */
-struct stin__cast_map_state {
-    GLuint texture, fbo, program;
+typedef struct mark_program {
+    GLuint name;
     GLint u_model, u_view_proj, u_matrix, u_params, u_light, u_faces, u_map;
     stin__displace_locs displace;
+} mark_program;
+
+struct stin__cast_map_state {
+    GLuint texture, fbo;
+    mark_program mark, mark_tess; /* the pass, and its tessellated twin (displace-tess) */
     uint32_t size;         /* a cell's texels a side */
     int ready;             /* the map and its pass were made at set-up */
     int drawn;             /* the map holds the casters of the light being counted */
@@ -40,13 +47,13 @@ size_t stin__cast_map_state_bytes(const stin_desc *d)
 }
 
 static const stin__uniform_name mark_uniforms[] = {
-    STIN__UNIFORM(struct stin__cast_map_state, u_model, "u_model"),
-    STIN__UNIFORM(struct stin__cast_map_state, u_view_proj, "u_view_proj"),
-    STIN__UNIFORM(struct stin__cast_map_state, u_matrix, "u_cast_matrix"),
-    STIN__UNIFORM(struct stin__cast_map_state, u_params, "u_cast_params"),
-    STIN__UNIFORM(struct stin__cast_map_state, u_light, "u_cast_light"),
-    STIN__UNIFORM(struct stin__cast_map_state, u_faces, "u_cast_faces"),
-    STIN__UNIFORM(struct stin__cast_map_state, u_map, "u_cast_map"),
+    STIN__UNIFORM(mark_program, u_model, "u_model"),
+    STIN__UNIFORM(mark_program, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(mark_program, u_matrix, "u_cast_matrix"),
+    STIN__UNIFORM(mark_program, u_params, "u_cast_params"),
+    STIN__UNIFORM(mark_program, u_light, "u_cast_light"),
+    STIN__UNIFORM(mark_program, u_faces, "u_cast_faces"),
+    STIN__UNIFORM(mark_program, u_map, "u_cast_map"),
 };
 
 static int glsl_maps(const stin_context *ctx)
@@ -56,35 +63,56 @@ static int glsl_maps(const stin_context *ctx)
     return stin__path_of(ctx) == stin__glsl_path() && (ctx->caps.present & need) == need;
 }
 
+/* The marking pass's program (tessellated: its twin for displace-tess
+ * frames, whose lit passes are tessellated); 0 where it did not build. */
+static int build_mark(stin_context *ctx, int tessellate, mark_program *p, char *msg, size_t size)
+{
+    const char *dir = ctx->sel.tier == STIN_TIER_GL4 ? "gl4/" : "gl2/";
+    char vert[40], frag[40];
+    stin__formatf(vert, sizeof vert, "%scast_mark.vert", dir);
+    stin__formatf(frag, sizeof frag, "%scast_mark.frag", dir);
+    p->name = stin__program_build(ctx, vert, frag, NULL, tessellate, msg, size);
+    if (!p->name)
+        return 0;
+    STIN__LOCATE(ctx, p->name, p, mark_uniforms);
+    stin__displace_locate(ctx, p->name, 1, &p->displace);
+    return 1;
+}
+
+/* Volumes have something to cast through the map where the frame may have
+ * products or displaced draws. */
+static int has_casters(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_OFF ||
+           stin__displace_built(ctx);
+}
+
 void stin__cast_map_init(stin_context *ctx)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
-    const char *dir = ctx->sel.tier == STIN_TIER_GL4 ? "gl4/" : "gl2/";
-    char vert[40], frag[40], msg[160];
+    char msg[160], why[220];
     GLint caller_fbo[2];
     uint32_t size = ctx->desc.shadows.map_size;
-    if (!glsl_maps(ctx))
+    if (!glsl_maps(ctx) || !has_casters(ctx))
         return;
     while (ctx->caps.max_texture_size > 0 && size > 1u &&
            STIN__ATLAS_COLUMNS * size > (uint32_t)ctx->caps.max_texture_size)
         size /= 2u; /* three cells across must fit */
-    stin__formatf(vert, sizeof vert, "%scast_mark.vert", dir);
-    stin__formatf(frag, sizeof frag, "%scast_mark.frag", dir);
-    m->program = stin__program_build(ctx, vert, frag, NULL, 0, msg, sizeof msg);
-    if (!m->program) {
+    if (!build_mark(ctx, 0, &m->mark, msg, sizeof msg) ||
+        (stin__displace_tessellated(ctx) && !build_mark(ctx, 1, &m->mark_tess, msg, sizeof msg))) {
+        stin__formatf(why, sizeof why, "volumes' depth map test did not build (%s)", msg);
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_SHADER_COMPILE,
-                  "volume: the products' map test did not build (%s); CSG products cast no "
-                  "shadow",
-                  msg);
+                  "volume: %s; CSG products cast no shadow", why);
+        if (stin__displace_built(ctx)) /* volumes would cast the flat mesh */
+            stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_OFF, why);
         return;
     }
-    STIN__LOCATE(ctx, m->program, m, mark_uniforms);
-    stin__displace_locate(ctx, m->program, 1, &m->displace);
     m->size = size;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, GenTextures)(1, &m->texture);
-    stin__rt_shadow_map(ctx, m->texture, (int)(STIN__ATLAS_COLUMNS * size), (int)(STIN__ATLAS_ROWS * size));
+    stin__rt_shadow_map(ctx, m->texture, (int)(STIN__ATLAS_COLUMNS * size),
+                        (int)(STIN__ATLAS_ROWS * size));
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__framebuffer_save(ctx, caller_fbo); /* the caller's binding survives */
     GL(ctx, GenFramebuffers)(1, &m->fbo);
@@ -94,15 +122,17 @@ void stin__cast_map_init(stin_context *ctx)
     GL(ctx, DrawBuffer)(GL_NONE); /* depth only */
     GL(ctx, ReadBuffer)(GL_NONE);
     stin__framebuffer_restore(ctx, caller_fbo);
-    stin__gl_check_errors(ctx, "products' map set-up");
+    stin__gl_check_errors(ctx, "volumes' depth map set-up");
     m->ready = 1;
 }
 
 void stin__cast_map_release(stin_context *ctx)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
-    if (m->program)
-        GL(ctx, DeleteProgram)(m->program);
+    if (m->mark.name)
+        GL(ctx, DeleteProgram)(m->mark.name);
+    if (m->mark_tess.name)
+        GL(ctx, DeleteProgram)(m->mark_tess.name);
     if (m->texture)
         GL(ctx, DeleteTextures)(1, &m->texture);
     if (m->fbo)
@@ -110,11 +140,34 @@ void stin__cast_map_release(stin_context *ctx)
     stin__memzero(m, sizeof *m);
 }
 
-/* Says once per light what casts its products, or once that nothing does. */
-static void say(stin_context *ctx, uint32_t li, int cast)
+/* A displaced caster: the map casts it. */
+static int displaced(const stin_context *ctx, const stin__draw *d, const void *user)
+{
+    (void)user;
+    return stin__displace_active(ctx, &d->material);
+}
+
+int stin__cast_map_casts(const stin_context *ctx, const stin__draw *d)
+{
+    return ctx->cast_map->ready && displaced(ctx, d, NULL);
+}
+
+/* Whether the frame has displaced casters. */
+static int displaced_casters(const stin_context *ctx)
+{
+    uint32_t i;
+    for (i = 0; i < ctx->draw_count; i++)
+        if (ctx->draws[i].shadow_caster && displaced(ctx, &ctx->draws[i], NULL))
+            return 1;
+    return 0;
+}
+
+/* Says once per light what the map casts for it, or once that the
+ * products cast nothing. */
+static void say(stin_context *ctx, uint32_t li, int products, int displaced_draws)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
-    if (!cast) {
+    if (!m->ready) {
         stin__casters_none(ctx, "into shadow volumes (a product's volume needs its resolved "
                                 "silhouette, not its primitives'; this context has no GLSL "
                                 "depth map to cast them)");
@@ -122,7 +175,10 @@ static void say(stin_context *ctx, uint32_t li, int cast)
     }
     if (li < 32u && !(m->said_light & (1u << li))) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "volume: CSG products cast through map-pcf (%u) for light %u",
+                  "volume: %s cast through map-pcf (%u) for light %u",
+                  products && displaced_draws ? "CSG products and displaced casters"
+                  : products                  ? "CSG products"
+                                              : "displaced casters",
                   (unsigned)m->size, (unsigned)li);
         m->said_light |= 1u << li;
     }
@@ -135,8 +191,9 @@ static int draw_cell(stin_context *ctx, const stin__path *path, const stin_light
     struct stin__cast_map_state *m = ctx->cast_map;
     stin__pass_state ps = stin__pass_defaults;
     float factor = 0.0f, units = 0.0f;
-    int s = (int)m->size;
-    const int rect[4] = {(cell % (int)STIN__ATLAS_COLUMNS) * s, (cell / (int)STIN__ATLAS_COLUMNS) * s, s, s};
+    int s = (int)m->size, drew;
+    const int rect[4] = {(cell % (int)STIN__ATLAS_COLUMNS) * s,
+                         (cell / (int)STIN__ATLAS_COLUMNS) * s, s, s};
     GL(ctx, Viewport)(rect[0], rect[1], rect[2], rect[3]);
     ps.depth_test = 1;
     ps.color_write = 0;
@@ -146,7 +203,10 @@ static int draw_cell(stin_context *ctx, const stin__path *path, const stin_light
     stin__pass_apply(ctx, &ps);
     stin__light_window_matrix(m->matrix[cell], view, proj);
     stin__light_into_cell(m->matrix[cell], cell);
-    return stin__casters_cast(ctx, path, view, proj, rect, m->fbo, 0, factor, units);
+    drew = stin__casters_cast(ctx, path, view, proj, rect, m->fbo, 0, factor, units);
+    if (drew)
+        stin__pass_apply(ctx, &ps); /* the products' resolve left its own state */
+    return stin__glsl_depth_kept(ctx, view, proj, displaced, NULL) > 0 || drew;
 }
 
 int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, GLuint back)
@@ -155,14 +215,16 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     const stin_light_desc *l = &ctx->lights[li];
     stin__pass_state saved = *stin__pass_current(ctx);
     float view[16], proj[16], n, f;
-    int face;
+    int face, products = stin__casters_wanted(ctx), displaced_draws;
     m->drawn = 0;
-    if (!stin__casters_wanted(ctx))
-        return 0;
     if (!m->ready) {
-        say(ctx, li, 0);
+        if (products)
+            say(ctx, li, 1, 0);
         return 0;
     }
+    displaced_draws = displaced_casters(ctx);
+    if (!products && !displaced_draws)
+        return 0;
     if (l->type != STIN_LIGHT_POINT && !stin__light_camera(ctx, l, view, proj, &n, &f, m->size))
         return 0;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
@@ -186,28 +248,27 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     stin__pass_apply(ctx, &saved);
     ctx->stats.passes++;
     m->kernel = l->pcf_kernel;
-    say(ctx, li, 1);
+    say(ctx, li, products, displaced_draws);
     return m->drawn;
 }
 
 /* The frame's surfaces (its opaque draws and the products' faces) through
  * the marking program, depth EQUAL. */
-static void draw_receivers(stin_context *ctx)
+static void draw_receivers(stin_context *ctx, const mark_program *p)
 {
-    struct stin__cast_map_state *m = ctx->cast_map;
     const stin__draw *faces;
     uint32_t i, count;
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (stin__camera_set(ctx, d) & STIN__OPAQUE)
-            stin__glsl_submit_geometry(ctx, m->u_model, &m->displace, d);
+            stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
     }
     faces = stin__resolved_faces(ctx, &count);
     for (i = 0; i < count; i++) {
         stin__pass_state saved;
         if (!stin__resolved_face_begin(ctx, &faces[i], &saved))
             continue;
-        stin__glsl_submit_geometry(ctx, m->u_model, &m->displace, &faces[i]);
+        stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, &faces[i]);
         stin__resolved_face_end(ctx, &saved);
     }
 }
@@ -215,6 +276,7 @@ static void draw_receivers(stin_context *ctx)
 void stin__cast_map_mark(stin_context *ctx)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
+    const mark_program *p = stin__glsl_tessellated(ctx) ? &m->mark_tess : &m->mark;
     stin__pass_state saved = *stin__pass_current(ctx), ps = saved;
     float params[4] = {0, 0, 0, 0};
     if (!m->drawn)
@@ -237,20 +299,20 @@ void stin__cast_map_mark(stin_context *ctx)
     ps.front.fail = ps.front.zfail = GL_KEEP;
     ps.front.zpass = GL_REPLACE;
     stin__pass_apply(ctx, &ps);
-    GL(ctx, UseProgram)(m->program);
+    GL(ctx, UseProgram)(p->name);
     stin__lit_program_forget(ctx);
-    GL(ctx, UniformMatrix4fv)(m->u_view_proj, 1, GL_FALSE, ctx->view_proj);
-    GL(ctx, UniformMatrix4fv)(m->u_matrix, m->faces, GL_FALSE, m->matrix[0]);
-    GL(ctx, Uniform3fv)(m->u_light, 1, m->light);
-    GL(ctx, Uniform1i)(m->u_faces, m->faces);
+    GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
+    GL(ctx, UniformMatrix4fv)(p->u_matrix, m->faces, GL_FALSE, m->matrix[0]);
+    GL(ctx, Uniform3fv)(p->u_light, 1, m->light);
+    GL(ctx, Uniform1i)(p->u_faces, m->faces);
     params[0] = 1.0f / (float)(STIN__ATLAS_COLUMNS * m->size);
     params[1] = (float)(m->kernel / 2u);
     params[3] = 1.0f / (float)(STIN__ATLAS_ROWS * m->size);
-    GL(ctx, Uniform4fv)(m->u_params, 1, params);
-    GL(ctx, Uniform1i)(m->u_map, 0);
+    GL(ctx, Uniform4fv)(p->u_params, 1, params);
+    GL(ctx, Uniform1i)(p->u_map, 0);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture);
     ctx->bound_mesh = 0xffffffffu;
-    draw_receivers(ctx);
+    draw_receivers(ctx, p);
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__pass_apply(ctx, &saved);

@@ -284,8 +284,9 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         float center[3], radius, far_world[4];
         stin__stencil_face back, front;
         int zfail;
-        if (!d->shadow_caster)
-            continue; /* a transparent caster: its map or the threshold decides */
+        if (!d->shadow_caster || stin__cast_map_casts(ctx, d))
+            continue; /* a transparent caster: its map or the threshold decides;
+                       * a displaced one: volumes' depth map casts it */
         if (!caster_reach(ctx, &reach, d, far_world))
             continue;
         caster_bounds(ctx, d, center, &radius);
@@ -487,7 +488,7 @@ static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
         stin__volume_reach_begin(ctx, world, &reach);
         for (i = 0; i < ctx->draw_count; i++) {
             const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-            if (caster_reach(ctx, &reach, d, far_world))
+            if (!stin__cast_map_casts(ctx, d) && caster_reach(ctx, &reach, d, far_world))
                 draw_caster(ctx, path, d, world, far_world, 1, 0);
         }
     }
