@@ -1548,9 +1548,14 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * product; the lists take 4 bytes a pixel of the viewport plus a pool of
  * 16-byte nodes, one a pixel at first and grown (that product listed
  * again) when a product's crossings outrun it (stin_frame_stats.
- * shadows.vdsm_csg_casts, shadows.vdsm_csg_bytes); a product of more than 128 primitives
- * or 64 terms casts nothing under vdsm (logged once). Without the storage
- * buffers (gl33-core) vdsm casts no product, logged once. A product's volume
+ * shadows.vdsm_csg_casts, shadows.vdsm_csg_bytes). Without the storage
+ * buffers (gl33-core), or where a product has more than 128 primitives or
+ * 64 terms (logged once), vdsm casts the frame's products through the depth
+ * map below instead (per light, after its mask is written: 0 into the
+ * light's channel wherever the map shadows the position buffer's surface;
+ * the map's bound at those shadows' edges; logged once a light, "vdsm: CSG
+ * products cast through map-pcf (SIZE) for light N"; the map made at
+ * stin_create where CSG is chosen). A product's volume
  * would need its resolved silhouette, so volumes on the GLSL tiers (with
  * framebuffer objects, depth textures and shadow compare) cast products
  * through a map of their own: per light, just before its volumes are
@@ -1559,7 +1564,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * exceed GL_MAX_TEXTURE_SIZE; a spot or directional light's map in one
  * cell, a point light's six faces in all six: 24 MiB of GL memory at 1024,
  * made at stin_create where volumes run on a GLSL tier with CSG or
- * displacement chosen), and after the
+ * displacement chosen, shared with vdsm's), and after the
  * count one more pass over the frame's opaque surfaces (depth EQUAL, the
  * map-pcf test with the light's pcf_kernel; displaced draws go into the map
  * too, see Displacement) sets the stencil wherever that

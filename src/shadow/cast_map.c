@@ -18,21 +18,26 @@
 #include "render/displace_chunk.h"
 #include "render/resolved.h"
 #include "render/path_features.h"
+#include "render/screen_mask.h"
+#include "render/screen_quad.h"
 
 /* The map is an atlas (shadow.h's cells, cast_mark.frag's lookup): a spot
  * or directional light's map in cell 0, a point light's face f in cell f. */
+/* A program with the map test (cast_test.glsl): the marking pass's (its
+ * model and camera) or vdsm's mask pass's (its position buffer). */
 typedef struct mark_program {
     GLuint name;
-    GLint u_model, u_view_proj, u_matrix, u_params, u_light, u_faces, u_map;
+    GLint u_model, u_view_proj, u_position, u_matrix, u_params, u_light, u_faces, u_map;
     stin__displace_locs displace;
 } mark_program;
 
 struct stin__cast_map_state {
     GLuint texture, fbo;
     mark_program mark, mark_tess; /* the pass, and its tessellated twin (displace-tess) */
+    mark_program mask;            /* vdsm's: the test into its screen mask */
     uint32_t size;         /* a cell's texels a side */
-    int ready;             /* the map and its pass were made at set-up */
     int drawn;             /* the map holds the casters of the light being counted */
+    int displaced;         /* it casts the displaced draws too (volumes', not vdsm's) */
     int faces;             /* its cells: 1, or a point light's 6 */
     float matrix[STIN__CUBE_FACES][16]; /* world -> [0,1] atlas space, per cell */
     float light[3];        /* a point light's position */
@@ -49,6 +54,7 @@ size_t stin__cast_map_state_bytes(const stin_desc *d)
 static const stin__uniform_name mark_uniforms[] = {
     STIN__UNIFORM(mark_program, u_model, "u_model"),
     STIN__UNIFORM(mark_program, u_view_proj, "u_view_proj"),
+    STIN__UNIFORM(mark_program, u_position, "u_position"),
     STIN__UNIFORM(mark_program, u_matrix, "u_cast_matrix"),
     STIN__UNIFORM(mark_program, u_params, "u_cast_params"),
     STIN__UNIFORM(mark_program, u_light, "u_cast_light"),
@@ -63,15 +69,21 @@ static int glsl_maps(const stin_context *ctx)
     return stin__path_of(ctx) == stin__glsl_path() && (ctx->caps.present & need) == need;
 }
 
-/* The marking pass's program (tessellated: its twin for displace-tess
- * frames, whose lit passes are tessellated); 0 where it did not build. */
-static int build_mark(stin_context *ctx, int tessellate, mark_program *p, char *msg, size_t size)
+/* The programs with the map test: volumes' marking pass (tessellated:
+ * its twin for displace-tess frames, whose lit passes are tessellated), or
+ * vdsm's mask pass (GL4: a screen quad over its position buffer). */
+enum { MARK, MARK_TESS, MASK };
+static int build_test(stin_context *ctx, int kind, mark_program *p, char *msg, size_t size)
 {
     const char *dir = ctx->sel.tier == STIN_TIER_GL4 ? "gl4/" : "gl2/";
-    char vert[40], frag[40];
-    stin__formatf(vert, sizeof vert, "%scast_mark.vert", dir);
-    stin__formatf(frag, sizeof frag, "%scast_mark.frag", dir);
-    p->name = stin__program_build(ctx, vert, frag, NULL, tessellate, msg, size);
+    char vert[40], frag[40], chunk[40];
+    const char *chunks[2];
+    stin__formatf(vert, sizeof vert, "%s%s", dir, kind == MASK ? "screen.vert" : "cast_mark.vert");
+    stin__formatf(frag, sizeof frag, "%s%s", dir, kind == MASK ? "cast_mask.frag" : "cast_mark.frag");
+    stin__formatf(chunk, sizeof chunk, "%scast_test.glsl", dir);
+    chunks[0] = chunk;
+    chunks[1] = NULL;
+    p->name = stin__program_build(ctx, vert, frag, chunks, kind == MARK_TESS, msg, size);
     if (!p->name)
         return 0;
     STIN__LOCATE(ctx, p->name, p, mark_uniforms);
@@ -79,34 +91,18 @@ static int build_mark(stin_context *ctx, int tessellate, mark_program *p, char *
     return 1;
 }
 
-/* Volumes have something to cast through the map where the frame may have
- * products or displaced draws. */
-static int has_casters(const stin_context *ctx)
-{
-    return ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_OFF ||
-           stin__displace_built(ctx);
-}
-
-void stin__cast_map_init(stin_context *ctx)
+/* The map and its framebuffer, once for volumes and vdsm (the measured
+ * choice sets up both). */
+static void make_map(stin_context *ctx)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
-    char msg[160], why[220];
     GLint caller_fbo[2];
     uint32_t size = ctx->desc.shadows.map_size;
-    if (!glsl_maps(ctx) || !has_casters(ctx))
+    if (m->texture)
         return;
     while (ctx->caps.max_texture_size > 0 && size > 1u &&
            STIN__ATLAS_COLUMNS * size > (uint32_t)ctx->caps.max_texture_size)
         size /= 2u; /* three cells across must fit */
-    if (!build_mark(ctx, 0, &m->mark, msg, sizeof msg) ||
-        (stin__displace_tessellated(ctx) && !build_mark(ctx, 1, &m->mark_tess, msg, sizeof msg))) {
-        stin__formatf(why, sizeof why, "volumes' depth map test did not build (%s)", msg);
-        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_SHADER_COMPILE,
-                  "volume: %s; CSG products cast no shadow", why);
-        if (stin__displace_built(ctx)) /* volumes would cast the flat mesh */
-            stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_OFF, why);
-        return;
-    }
     m->size = size;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
@@ -122,8 +118,38 @@ void stin__cast_map_init(stin_context *ctx)
     GL(ctx, DrawBuffer)(GL_NONE); /* depth only */
     GL(ctx, ReadBuffer)(GL_NONE);
     stin__framebuffer_restore(ctx, caller_fbo);
-    stin__gl_check_errors(ctx, "volumes' depth map set-up");
-    m->ready = 1;
+    stin__gl_check_errors(ctx, "the casters' depth map set-up");
+}
+
+/* Volumes have something to cast through the map where the frame may have
+ * products or displaced draws. */
+static int has_casters(const stin_context *ctx)
+{
+    return ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_OFF ||
+           stin__displace_built(ctx);
+}
+
+void stin__cast_map_init(stin_context *ctx, int screen)
+{
+    struct stin__cast_map_state *m = ctx->cast_map;
+    char msg[160], why[220];
+    int built;
+    if (!glsl_maps(ctx) || !has_casters(ctx) ||
+        (screen && ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF))
+        return; /* vdsm casts displaced draws itself */
+    built = screen ? ctx->sel.tier == STIN_TIER_GL4 && build_test(ctx, MASK, &m->mask, msg, sizeof msg)
+                   : build_test(ctx, MARK, &m->mark, msg, sizeof msg) &&
+                         (!stin__displace_tessellated(ctx) ||
+                          build_test(ctx, MARK_TESS, &m->mark_tess, msg, sizeof msg));
+    if (!built) {
+        stin__formatf(why, sizeof why, "the casters' depth map test did not build (%s)", msg);
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_SHADER_COMPILE,
+                  "%s: %s; CSG products cast no shadow", screen ? "vdsm" : "volume", why);
+        if (!screen && stin__displace_built(ctx)) /* volumes would cast the flat mesh */
+            stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_OFF, why);
+        return;
+    }
+    make_map(ctx);
 }
 
 void stin__cast_map_release(stin_context *ctx)
@@ -133,6 +159,8 @@ void stin__cast_map_release(stin_context *ctx)
         GL(ctx, DeleteProgram)(m->mark.name);
     if (m->mark_tess.name)
         GL(ctx, DeleteProgram)(m->mark_tess.name);
+    if (m->mask.name)
+        GL(ctx, DeleteProgram)(m->mask.name);
     if (m->texture)
         GL(ctx, DeleteTextures)(1, &m->texture);
     if (m->fbo)
@@ -149,7 +177,7 @@ static int displaced(const stin_context *ctx, const stin__draw *d, const void *u
 
 int stin__cast_map_casts(const stin_context *ctx, const stin__draw *d)
 {
-    return ctx->cast_map->ready && displaced(ctx, d, NULL);
+    return ctx->cast_map->mark.name && displaced(ctx, d, NULL);
 }
 
 /* Whether the frame has displaced casters. */
@@ -164,18 +192,22 @@ static int displaced_casters(const stin_context *ctx)
 
 /* Says once per light what the map casts for it, or once that the
  * products cast nothing. */
-static void say(stin_context *ctx, uint32_t li, int products, int displaced_draws)
+static void say(stin_context *ctx, uint32_t li, int screen, int products, int displaced_draws)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
-    if (!m->ready) {
-        stin__casters_none(ctx, "into shadow volumes (a product's volume needs its resolved "
-                                "silhouette, not its primitives'; this context has no GLSL "
-                                "depth map to cast them)");
+    if (!m->texture) {
+        stin__casters_none(ctx, screen ? "under vdsm without GL 4.3's shader storage buffers "
+                                         "(the \"compute shaders\" capability), which its "
+                                         "per-pixel lists of crossings need, nor a GLSL depth "
+                                         "map to cast them"
+                                       : "into shadow volumes (a product's volume needs its "
+                                         "resolved silhouette, not its primitives'; this "
+                                         "context has no GLSL depth map to cast them)");
         return;
     }
     if (li < 32u && !(m->said_light & (1u << li))) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "volume: %s cast through map-pcf (%u) for light %u",
+                  "%s: %s cast through map-pcf (%u) for light %u", screen ? "vdsm" : "volume",
                   products && displaced_draws ? "CSG products and displaced casters"
                   : products                  ? "CSG products"
                                               : "displaced casters",
@@ -206,10 +238,11 @@ static int draw_cell(stin_context *ctx, const stin__path *path, const stin_light
     drew = stin__casters_cast(ctx, path, view, proj, rect, m->fbo, 0, factor, units);
     if (drew)
         stin__pass_apply(ctx, &ps); /* the products' resolve left its own state */
-    return stin__glsl_depth_kept(ctx, view, proj, displaced, NULL) > 0 || drew;
+    return (m->displaced && stin__glsl_depth_kept(ctx, view, proj, displaced, NULL) > 0) || drew;
 }
 
-int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, GLuint back)
+int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, GLuint back,
+                        int screen)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
     const stin_light_desc *l = &ctx->lights[li];
@@ -217,12 +250,13 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     float view[16], proj[16], n, f;
     int face, products = stin__casters_wanted(ctx), displaced_draws;
     m->drawn = 0;
-    if (!m->ready) {
+    if (!(screen ? m->mask.name : m->mark.name)) {
         if (products)
-            say(ctx, li, 1, 0);
+            say(ctx, li, screen, 1, 0);
         return 0;
     }
-    displaced_draws = displaced_casters(ctx);
+    m->displaced = !screen; /* vdsm casts displaced draws itself */
+    displaced_draws = m->displaced && displaced_casters(ctx);
     if (!products && !displaced_draws)
         return 0;
     if (l->type != STIN_LIGHT_POINT && !stin__light_camera(ctx, l, view, proj, &n, &f, m->size))
@@ -248,7 +282,7 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     stin__pass_apply(ctx, &saved);
     ctx->stats.passes++;
     m->kernel = l->pcf_kernel;
-    say(ctx, li, products, displaced_draws);
+    say(ctx, li, screen, products, displaced_draws);
     return m->drawn;
 }
 
@@ -273,12 +307,28 @@ static void draw_receivers(stin_context *ctx, const mark_program *p)
     }
 }
 
+/* Program p's map test uniforms for the light the map holds, the map on
+ * unit 0. */
+static void test_uniforms(stin_context *ctx, const mark_program *p)
+{
+    const struct stin__cast_map_state *m = ctx->cast_map;
+    float params[4] = {0, 0, 0, 0};
+    GL(ctx, UniformMatrix4fv)(p->u_matrix, m->faces, GL_FALSE, m->matrix[0]);
+    GL(ctx, Uniform3fv)(p->u_light, 1, m->light);
+    GL(ctx, Uniform1i)(p->u_faces, m->faces);
+    params[0] = 1.0f / (float)(STIN__ATLAS_COLUMNS * m->size);
+    params[1] = (float)(m->kernel / 2u);
+    params[3] = 1.0f / (float)(STIN__ATLAS_ROWS * m->size);
+    GL(ctx, Uniform4fv)(p->u_params, 1, params);
+    GL(ctx, Uniform1i)(p->u_map, 0);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture);
+}
+
 void stin__cast_map_mark(stin_context *ctx)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
     const mark_program *p = stin__glsl_tessellated(ctx) ? &m->mark_tess : &m->mark;
     stin__pass_state saved = *stin__pass_current(ctx), ps = saved;
-    float params[4] = {0, 0, 0, 0};
     if (!m->drawn)
         return;
     ps.depth_test = 1;
@@ -302,19 +352,31 @@ void stin__cast_map_mark(stin_context *ctx)
     GL(ctx, UseProgram)(p->name);
     stin__lit_program_forget(ctx);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
-    GL(ctx, UniformMatrix4fv)(p->u_matrix, m->faces, GL_FALSE, m->matrix[0]);
-    GL(ctx, Uniform3fv)(p->u_light, 1, m->light);
-    GL(ctx, Uniform1i)(p->u_faces, m->faces);
-    params[0] = 1.0f / (float)(STIN__ATLAS_COLUMNS * m->size);
-    params[1] = (float)(m->kernel / 2u);
-    params[3] = 1.0f / (float)(STIN__ATLAS_ROWS * m->size);
-    GL(ctx, Uniform4fv)(p->u_params, 1, params);
-    GL(ctx, Uniform1i)(p->u_map, 0);
-    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture);
+    test_uniforms(ctx, p);
     ctx->bound_mesh = 0xffffffffu;
     draw_receivers(ctx, p);
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    stin__pass_apply(ctx, &saved);
+    ctx->stats.passes++;
+}
+
+void stin__cast_map_mask(stin_context *ctx, int channel, GLuint positions)
+{
+    struct stin__cast_map_state *m = ctx->cast_map;
+    stin__pass_state saved = *stin__pass_current(ctx), ps = stin__pass_defaults;
+    if (!m->drawn)
+        return;
+    ps.depth_write = 0;
+    ps.color_only = (unsigned char)(channel + 1);
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, UseProgram)(m->mask.name);
+    stin__lit_program_forget(ctx);
+    test_uniforms(ctx, &m->mask);
+    stin__bind_unit(ctx, 1, GL_TEXTURE_2D, positions);
+    GL(ctx, Uniform1i)(m->mask.u_position, 1);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    stin__screen_quad(ctx);
     stin__pass_apply(ctx, &saved);
     ctx->stats.passes++;
 }

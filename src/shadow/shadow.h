@@ -165,21 +165,27 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
  * extrusion program exists; 1 (the state after init): extrude on the GPU where
  * it can. Returns whether GPU extrusion is available at all. */
 int stin__volume_extrude_enable(stin_context *ctx, int on);
-/* The casters volumes cannot cast (CSG products, displaced draws) through
- * a map of their own (shadow/cast_map.c), on the GLSL tiers. init/release
- * at volumes' set-up. casts: draw d is cast by the map, not by a volume.
- * draw, before light li's volumes: their map from the light (the
- * framebuffer `back` and the frame's viewport bound again after), the
+/* The casters an exact technique cannot cast through a map of their own
+ * (shadow/cast_map.c), on the GLSL tiers: volumes' CSG products and
+ * displaced draws, vdsm's products where it has no storage buffers (or a
+ * product passes its limits). init/release at the technique's set-up
+ * (screen: for vdsm's mask). casts: draw d is cast by volumes' map, not
+ * by a volume. draw, before light li's visibility: its map from the light
+ * (the framebuffer `back` and the frame's viewport bound again after), the
  * choice logged once per light, or once that the products cast nothing;
- * returns whether it drew any. mark, after a count (stin__volume_light):
- * the stencil made non-zero wherever that map shadows the frame's
- * surfaces, the pass state left as it found it; nothing where draw drew
- * none. */
-void stin__cast_map_init(stin_context *ctx);
+ * returns whether it drew any. mark, after a volumes count
+ * (stin__volume_light): the stencil made non-zero wherever that map
+ * shadows the frame's surfaces; mask, after vdsm wrote light li's channel
+ * of the bound screen mask: 0 there wherever the map shadows the surface
+ * of its position buffer (`positions`); both leave the pass state as they
+ * found it and draw nothing where draw drew none. */
+void stin__cast_map_init(stin_context *ctx, int screen);
 void stin__cast_map_release(stin_context *ctx);
 int stin__cast_map_casts(const stin_context *ctx, const stin__draw *d);
-int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, GLuint back);
+int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, GLuint back,
+                        int screen);
 void stin__cast_map_mark(stin_context *ctx);
+void stin__cast_map_mask(stin_context *ctx, int channel, GLuint positions);
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or

@@ -425,7 +425,7 @@ static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_
 static stin_result volume_init(stin_context *ctx)
 {
     stin__volume_extrude_init(ctx);
-    stin__cast_map_init(ctx);
+    stin__cast_map_init(ctx, 0);
     return STIN_OK;
 }
 
@@ -447,7 +447,7 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     int rect[4], scissored = stin__light_scissor(ctx, l, rect);
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return; /* the light touches nothing on screen */
-    (void)stin__cast_map_draw(ctx, path, li, ctx->draw_fbo);
+    (void)stin__cast_map_draw(ctx, path, li, ctx->draw_fbo, 0);
     for (s = 0; s < n; s++) {
         stin_light_desc one;
         float world[4];
@@ -509,7 +509,7 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
         return 0;
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return 1; /* the light touches nothing on screen: its channel stays 0 */
-    (void)stin__cast_map_draw(ctx, path, li, stin__mask_target_of(ctx).fbo);
+    (void)stin__cast_map_draw(ctx, path, li, stin__mask_target_of(ctx).fbo, 0);
     sample_light(l, 0, 1, &one, world);
     stin__volume_light(ctx, path, world, scissored ? rect : NULL);
     stin__cast_map_mark(ctx);
