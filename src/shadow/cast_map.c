@@ -297,6 +297,8 @@ static void draw_receivers(stin_context *ctx, const mark_program *p)
         if (stin__camera_set(ctx, d) & STIN__OPAQUE)
             stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
     }
+    if (stin__in_peeled_layer(ctx))
+        return; /* a layer's surfaces are its blended draws alone */
     faces = stin__resolved_faces(ctx, &count);
     for (i = 0; i < count; i++) {
         stin__pass_state saved;
