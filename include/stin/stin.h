@@ -1573,8 +1573,15 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * for the ordinary casters, the map's bound at the products' shadow edges.
  * Logged once a light (INFO, FALLBACK): "volume: CSG products cast through
  * map-pcf (SIZE) for light N". Frames without products draw none of it.
- * Volumes on the GL1 tier (and the point lights GL1 maps hand to volumes)
- * cast no product, logged once. Products are opaque; a primitive's normal and height maps are
+ * On the GL1 tier with framebuffer objects, depth textures, shadow compare
+ * and multitexture (gl21's GL1 tier) volumes do the same for spot and
+ * directional lights with map-depth's test: the map on texture unit 1 by
+ * eye-linear texgen, its compare's result in alpha and the alpha test
+ * passing the shadowed fragments (logged "... through map-depth (SIZE)
+ * ..."). Point lights there (a fixed-function fragment cannot pick its
+ * face of the atlas), GL1 without framebuffer objects (gl11,
+ * gl13-combine, gl14-shadow), and the point lights GL1 maps hand to
+ * volumes cast no product, logged once. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term; on the CPU each layer reads depth back (and
  * the stencil once per batch), so that resolve costs read-backs more than

@@ -11,8 +11,11 @@
  * receiver-plane bias, lit where half the kernel is). The lit pass, or the
  * screen mask's write, then lights only where both the volumes and the map
  * say lit. One map serves every light in turn, drawn mid-frame as map-pcf
- * draws a point light's faces. Frames without such casters draw nothing of
- * it. */
+ * draws a point light's faces. On GL1 with framebuffer objects the marking
+ * pass is the fixed-function path's geometry with map-depth's test (the
+ * compare into alpha, the alpha test), for spot and directional lights.
+ * vdsm without storage buffers casts the products through the same map
+ * into its screen mask. Frames without such casters draw nothing of it. */
 #include "internal.h"
 #include "render/casters.h"
 #include "render/displace_chunk.h"
@@ -36,6 +39,7 @@ struct stin__cast_map_state {
     mark_program mark, mark_tess; /* the pass, and its tessellated twin (displace-tess) */
     mark_program mask;            /* vdsm's: the test into its screen mask */
     uint32_t size;         /* a cell's texels a side */
+    int fixed;             /* volumes' marking pass is the fixed-function path's (GL1) */
     int drawn;             /* the map holds the casters of the light being counted */
     int displaced;         /* it casts the displaced draws too (volumes', not vdsm's) */
     int faces;             /* its cells: 1, or a point light's 6 */
@@ -62,11 +66,16 @@ static const stin__uniform_name mark_uniforms[] = {
     STIN__UNIFORM(mark_program, u_map, "u_cast_map"),
 };
 
-static int glsl_maps(const stin_context *ctx)
+/* The map needs a framebuffer object, depth textures and shadow compare;
+ * the fixed-function path's marking pass a second texture unit for it (the
+ * geometry pass turns unit 0's texture off). */
+static int maps_here(const stin_context *ctx)
 {
-    const uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
-                          STIN_CAP_BIT(STIN_CAP_SHADOW);
-    return stin__path_of(ctx) == stin__glsl_path() && (ctx->caps.present & need) == need;
+    uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
+                    STIN_CAP_BIT(STIN_CAP_SHADOW);
+    if (stin__path_of(ctx) != stin__glsl_path())
+        need |= STIN_CAP_BIT(STIN_CAP_MULTITEXTURE);
+    return (ctx->caps.present & need) == need;
 }
 
 /* The programs with the map test: volumes' marking pass (tessellated:
@@ -109,6 +118,9 @@ static void make_map(stin_context *ctx)
     GL(ctx, GenTextures)(1, &m->texture);
     stin__rt_shadow_map(ctx, m->texture, (int)(STIN__ATLAS_COLUMNS * size),
                         (int)(STIN__ATLAS_ROWS * size));
+    if (m->fixed) /* the compare's result in alpha too, for the alpha test */
+        GL_ENUM(ctx, TexParameteri, GL_DEPTH_TEXTURE_MODE)(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE,
+                                                           GL_INTENSITY);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__framebuffer_save(ctx, caller_fbo); /* the caller's binding survives */
     GL(ctx, GenFramebuffers)(1, &m->fbo);
@@ -134,10 +146,12 @@ void stin__cast_map_init(stin_context *ctx, int screen)
     struct stin__cast_map_state *m = ctx->cast_map;
     char msg[160], why[220];
     int built;
-    if (!glsl_maps(ctx) || !has_casters(ctx) ||
+    if (!maps_here(ctx) || !has_casters(ctx) ||
         (screen && ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF))
         return; /* vdsm casts displaced draws itself */
-    built = screen ? ctx->sel.tier == STIN_TIER_GL4 && build_test(ctx, MASK, &m->mask, msg, sizeof msg)
+    m->fixed = !screen && stin__path_of(ctx) != stin__glsl_path();
+    built = m->fixed   ? 1
+            : screen ? ctx->sel.tier == STIN_TIER_GL4 && build_test(ctx, MASK, &m->mask, msg, sizeof msg)
                    : build_test(ctx, MARK, &m->mark, msg, sizeof msg) &&
                          (!stin__displace_tessellated(ctx) ||
                           build_test(ctx, MARK_TESS, &m->mark_tess, msg, sizeof msg));
@@ -201,17 +215,18 @@ static void say(stin_context *ctx, uint32_t li, int screen, int products, int di
                                          "per-pixel lists of crossings need, nor a GLSL depth "
                                          "map to cast them"
                                        : "into shadow volumes (a product's volume needs its "
-                                         "resolved silhouette, not its primitives'; this "
-                                         "context has no GLSL depth map to cast them)");
+                                         "resolved silhouette, not its primitives'; a depth "
+                                         "map to cast them needs framebuffer objects, depth "
+                                         "textures and shadow compare)");
         return;
     }
     if (li < 32u && !(m->said_light & (1u << li))) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "%s: %s cast through map-pcf (%u) for light %u", screen ? "vdsm" : "volume",
+                  "%s: %s cast through %s (%u) for light %u", screen ? "vdsm" : "volume",
                   products && displaced_draws ? "CSG products and displaced casters"
                   : products                  ? "CSG products"
                                               : "displaced casters",
-                  (unsigned)m->size, (unsigned)li);
+                  m->fixed ? "map-depth" : "map-pcf", (unsigned)m->size, (unsigned)li);
         m->said_light |= 1u << li;
     }
 }
@@ -250,12 +265,17 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     float view[16], proj[16], n, f;
     int face, products = stin__casters_wanted(ctx), displaced_draws;
     m->drawn = 0;
-    if (!(screen ? m->mask.name : m->mark.name)) {
+    if (!(screen ? m->mask.name : m->mark.name || m->fixed)) {
         if (products)
             say(ctx, li, screen, 1, 0);
         return 0;
     }
-    m->displaced = !screen; /* vdsm casts displaced draws itself */
+    if (m->fixed && l->type == STIN_LIGHT_POINT) {
+        /* a fragment cannot pick its face of the atlas without shaders */
+        stin__casters_none(ctx, "from point lights under shadow volumes on the GL1 tier");
+        return 0;
+    }
+    m->displaced = !screen && !m->fixed; /* vdsm casts displaced draws itself; GL1 has none */
     displaced_draws = m->displaced && displaced_casters(ctx);
     if (!products && !displaced_draws)
         return 0;
@@ -279,11 +299,26 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, back);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
+    if (m->fixed) { /* the resolve from the light left its projection */
+        GL(ctx, MatrixMode)(GL_PROJECTION);
+        GL(ctx, LoadMatrixf)(ctx->projection);
+        GL(ctx, MatrixMode)(GL_MODELVIEW);
+    }
     stin__pass_apply(ctx, &saved);
     ctx->stats.passes++;
     m->kernel = l->pcf_kernel;
     say(ctx, li, screen, products, displaced_draws);
     return m->drawn;
+}
+
+/* One surface through the marking program p, or the fixed-function path
+ * (p NULL). */
+static void submit(stin_context *ctx, const mark_program *p, const stin__draw *d)
+{
+    if (p)
+        stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
+    else
+        stin__fixed_path()->geometry(ctx, d);
 }
 
 /* The frame's surfaces (its opaque draws and the products' faces) through
@@ -295,7 +330,7 @@ static void draw_receivers(stin_context *ctx, const mark_program *p)
     for (i = 0; i < ctx->draw_count; i++) {
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
         if (stin__camera_set(ctx, d) & STIN__OPAQUE)
-            stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
+            submit(ctx, p, d);
     }
     if (stin__in_peeled_layer(ctx))
         return; /* a layer's surfaces are its blended draws alone */
@@ -304,7 +339,7 @@ static void draw_receivers(stin_context *ctx, const mark_program *p)
         stin__pass_state saved;
         if (!stin__resolved_face_begin(ctx, &faces[i], &saved))
             continue;
-        stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, &faces[i]);
+        submit(ctx, p, &faces[i]);
         stin__resolved_face_end(ctx, &saved);
     }
 }
@@ -326,13 +361,11 @@ static void test_uniforms(stin_context *ctx, const mark_program *p)
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture);
 }
 
-void stin__cast_map_mark(stin_context *ctx)
+/* The pass state of the marking pass: the frame's surfaces depth EQUAL,
+ * the stencil set where a fragment passes. */
+static stin__pass_state mark_state(const stin_context *ctx)
 {
-    struct stin__cast_map_state *m = ctx->cast_map;
-    const mark_program *p = stin__glsl_tessellated(ctx) ? &m->mark_tess : &m->mark;
-    stin__pass_state saved = *stin__pass_current(ctx), ps = saved;
-    if (!m->drawn)
-        return;
+    stin__pass_state ps = *stin__pass_current(ctx);
     ps.depth_test = 1;
     ps.depth_func = GL_EQUAL;
     ps.depth_write = 0;
@@ -350,7 +383,56 @@ void stin__cast_map_mark(stin_context *ctx)
     ps.front.mask = 0xffffffffu;
     ps.front.fail = ps.front.zfail = GL_KEEP;
     ps.front.zpass = GL_REPLACE;
+    return ps;
+}
+
+/* GL1: the map on unit 1 by eye-linear texgen, its compare's result in
+ * alpha, the alpha test passing the shadowed fragments. */
+static void mark_fixed(stin_context *ctx)
+{
+    const struct stin__cast_map_state *m = ctx->cast_map;
+    const stin__path *path = stin__fixed_path();
+    float rows[16];
+    int r, c;
+    for (r = 0; r < 4; r++) /* the window matrix's rows, for the planes */
+        for (c = 0; c < 4; c++)
+            rows[4 * r + c] = m->matrix[0][4 * c + r];
+    path->geometry_begin(ctx);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(ctx->frame.view); /* planes given in world space */
+    GL(ctx, ActiveTexture)(GL_TEXTURE0 + 1);
+    GL_ENABLE(ctx, GL_TEXTURE_2D);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, m->texture);
+    stin__map_texgen(ctx, rows, 1);
+    GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
+    GL_ENABLE(ctx, GL_ALPHA_TEST);
+    GL(ctx, AlphaFunc)(GL_LESS, 0.5f);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+    draw_receivers(ctx, NULL);
+    path->geometry_end(ctx);
+    GL_DISABLE(ctx, GL_ALPHA_TEST);
+    GL(ctx, AlphaFunc)(GL_ALWAYS, 0.0f);
+    stin__map_unit_off(ctx, 1);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0 + 1);
+    GL_DISABLE(ctx, GL_TEXTURE_GEN_R);
+    GL(ctx, ActiveTexture)(GL_TEXTURE0);
+}
+
+void stin__cast_map_mark(stin_context *ctx)
+{
+    struct stin__cast_map_state *m = ctx->cast_map;
+    const mark_program *p = stin__glsl_tessellated(ctx) ? &m->mark_tess : &m->mark;
+    stin__pass_state saved = *stin__pass_current(ctx), ps;
+    if (!m->drawn)
+        return;
+    ps = mark_state(ctx);
     stin__pass_apply(ctx, &ps);
+    if (m->fixed) {
+        mark_fixed(ctx);
+        stin__pass_apply(ctx, &saved);
+        ctx->stats.passes++;
+        return;
+    }
     GL(ctx, UseProgram)(p->name);
     stin__lit_program_forget(ctx);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);

@@ -166,7 +166,8 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
  * it can. Returns whether GPU extrusion is available at all. */
 int stin__volume_extrude_enable(stin_context *ctx, int on);
 /* The casters an exact technique cannot cast through a map of their own
- * (shadow/cast_map.c), on the GLSL tiers: volumes' CSG products and
+ * (shadow/cast_map.c), on the GLSL tiers and GL1 with framebuffer objects
+ * (spot and directional lights): volumes' CSG products and
  * displaced draws, vdsm's products where it has no storage buffers (or a
  * product passes its limits). init/release at the technique's set-up
  * (screen: for vdsm's mask). casts: draw d is cast by volumes' map, not
