@@ -140,6 +140,7 @@ struct stin_context {
     struct stin__mask_state *mask;           /* render/screen_mask.c */
     struct stin__map_fixed_state *map_fixed; /* shadow/map_fixed_private.h */
     struct stin__map_pcf_state *map_pcf;     /* shadow/map_pcf.c */
+    struct stin__cast_map_state *cast_map;   /* volumes' products map (shadow/cast_map.c) */
     struct stin__vdsm_state *vdsm;           /* shadow/vdsm_private.h */
     struct stin__choice_state *choice;       /* vdsm or volumes by cost (shadow/choice.c) */
     struct stin__glsl_state *glsl;           /* the GLSL path's (render/glsl_private.h) */

@@ -195,8 +195,8 @@
  * frames are chosen by measurement; stin_frame_stats.shadows.choice_* say
  * what each frame ran. The lit programs are the same for both (one shadow
  * chunk): a switch builds nothing. A frame volumes would not draw the same
- * stays on vdsm and is not a trial: CSG products (vdsm casts them),
- * displaced draws (volumes cast the flat mesh), blended draws (peeled
+ * stays on vdsm and is not a trial: CSG products and displaced draws
+ * (vdsm casts them exactly, volumes through a map), blended draws (peeled
  * layers are vdsm's receivers; transparent casters), area lights (vdsm
  * shadows them by 64 segments a pixel, volumes by samples), or a target without
  * a stencil buffer; where such a frame follows a volume frame, the
@@ -679,13 +679,20 @@ const char *stin_feature_name(stin_feature f);
  * depth-EQUAL passes match and map-pcf and vdsm shadow the displaced
  * surface. Lighting normals come from the normal map (or are the vertex
  * normals without one): the vertex stage cannot see its neighbours.
- * Shadows: stencil volumes take silhouettes from the undisplaced mesh on
- * the CPU, so "displace" conflicts with "volume" (technique table): with
- * volumes chosen displacement is "displacement-off" (logged fallback) and
- * materials get their surface chain; forcing "displace" makes the shadow
- * chain skip "volume" (vdsm, map-pcf or off); a shadow technique demoted
- * to volume at set-up demotes displacement too (logged). No technique
- * shadows the flat mesh of a displaced draw.
+ * Shadows: stencil volumes take silhouettes from the undisplaced mesh, so
+ * under "volume" a displaced draw casts no volume: it casts through
+ * volumes' own depth map (with the CSG products, see "CSG products": the
+ * map-pcf test, its bound at those shadows' edges; logged once a light,
+ * "volume: displaced casters cast through map-pcf (SIZE) for light N"),
+ * and is lit and receives every shadow at its displaced depth. That map
+ * needs framebuffer objects, depth textures and shadow compare: where the
+ * context lacks one, "displace" conflicts with "volume" (the technique
+ * table's conflict, lifted by those capabilities): with volumes chosen
+ * displacement is "displacement-off" (logged fallback) and materials get
+ * their surface chain; forcing "displace" makes the shadow chain skip
+ * "volume"; a shadow technique demoted to volume at set-up demotes
+ * displacement too (logged), as does a map test that fails to build. No
+ * technique shadows the flat mesh of a displaced draw.
  * The height map is read with GL's filtering (bilinear at texel centres,
  * repeat) at a mip level from the vertex's linear distance d to the eye:
  *   lambda = log2(d x texels per unit / pixels per unit at distance 1)
@@ -1604,11 +1611,40 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * product; the lists take 4 bytes a pixel of the viewport plus a pool of
  * 16-byte nodes, one a pixel at first and grown (that product listed
  * again) when a product's crossings outrun it (stin_frame_stats.
- * shadows.vdsm_csg_casts, shadows.vdsm_csg_bytes); a product of more than 128 primitives
- * or 64 terms casts nothing under vdsm (logged once). Without the storage
- * buffers (gl33-core) vdsm casts no product, logged once. Volumes (and the
- * point lights GL1 maps hand to volumes) cast no product, logged once: a
- * product's volume would need its resolved silhouette. Products are opaque; a primitive's normal and height maps are
+ * shadows.vdsm_csg_casts, shadows.vdsm_csg_bytes). Without the storage
+ * buffers (gl33-core), or where a product has more than 128 primitives or
+ * 64 terms (logged once), vdsm casts the frame's products through the depth
+ * map below instead (per light, after its mask is written: 0 into the
+ * light's channel wherever the map shadows the position buffer's surface;
+ * the map's bound at those shadows' edges; logged once a light, "vdsm: CSG
+ * products cast through map-pcf (SIZE) for light N"; the map made at
+ * stin_create where CSG is chosen). A product's volume
+ * would need its resolved silhouette, so volumes on the GLSL tiers (with
+ * framebuffer objects, depth textures and shadow compare) cast products
+ * through a map of their own: per light, just before its volumes are
+ * counted, the products are resolved from the light into one depth atlas
+ * (3 x 2 cells of shadows.map_size texels a side, halved while three
+ * exceed GL_MAX_TEXTURE_SIZE; a spot or directional light's map in one
+ * cell, a point light's six faces in all six: 24 MiB of GL memory at 1024,
+ * made at stin_create where volumes run on a GLSL tier with CSG or
+ * displacement chosen, shared with vdsm's), and after the
+ * count one more pass over the frame's opaque surfaces (depth EQUAL, the
+ * map-pcf test with the light's pcf_kernel; displaced draws go into the map
+ * too, see Displacement) sets the stencil wherever that
+ * map shadows the pixel, so the light's lit pass (or its channel of the
+ * screen mask) lights only what both the volumes and the map leave lit: exact
+ * for the ordinary casters, the map's bound at the products' shadow edges.
+ * Logged once a light (INFO, FALLBACK): "volume: CSG products cast through
+ * map-pcf (SIZE) for light N". Frames without products draw none of it.
+ * On the GL1 tier with framebuffer objects, depth textures, shadow compare
+ * and multitexture (gl21's GL1 tier) volumes do the same for spot and
+ * directional lights with map-depth's test: the map on texture unit 1 by
+ * eye-linear texgen, its compare's result in alpha and the alpha test
+ * passing the shadowed fragments (logged "... through map-depth (SIZE)
+ * ..."). Point lights there (a fixed-function fragment cannot pick its
+ * face of the atlas), GL1 without framebuffer objects (gl11,
+ * gl13-combine, gl14-shadow), and the point lights GL1 maps hand to
+ * volumes cast no product, logged once. Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term; on the CPU each layer reads depth back (and
  * the stencil once per batch), so that resolve costs read-backs more than

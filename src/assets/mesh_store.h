@@ -155,9 +155,13 @@ int stin__triangle_faces_light(const float *a, const float *b, const float *c, c
 GLuint stin__vao_begin(struct stin_context *ctx);
 void stin__vao_end(struct stin_context *ctx, GLuint saved);
 #define STIN__UNPACK_STORE 4
+#define STIN__PIXEL_TRANSFER 14
 typedef struct stin__unpack_saved {
     GLint store[STIN__UNPACK_STORE]; /* alignment, row length, skip rows, skip pixels */
     GLint buffer;                    /* the bound pixel unpack (pack) buffer */
+    /* a compatibility context's pixel transfer (scales, biases, maps, index
+     * shift and offset), which scales what is read and drawn */
+    float transfer[STIN__PIXEL_TRANSFER];
 } stin__unpack_saved;
 void stin__unpack_begin(struct stin_context *ctx, stin__unpack_saved *s);
 void stin__unpack_end(struct stin_context *ctx, const stin__unpack_saved *s);

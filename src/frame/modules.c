@@ -35,6 +35,7 @@ const stin__state_slot stin__state_slots[] = {
     SLOT(mask, stin__mask_state_bytes, NULL),
     SLOT(map_fixed, stin__map_fixed_state_bytes, NULL),
     SLOT(map_pcf, stin__map_pcf_state_bytes, NULL),
+    SLOT(cast_map, stin__cast_map_state_bytes, NULL),
     SLOT(vdsm, stin__vdsm_state_bytes, NULL),
     SLOT(choice, stin__choice_state_bytes, NULL),
     SLOT(glsl, stin__glsl_state_bytes, NULL),

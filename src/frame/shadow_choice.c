@@ -7,8 +7,8 @@
 #include "internal.h"
 
 /* 0 where the frame holds something only vdsm shadows as the frame should
- * look: CSG products (vdsm casts them, volumes do not), displaced draws
- * (volumes would cast the flat mesh), blended draws (vdsm makes each peeled
+ * look: CSG products and displaced draws (vdsm casts them exactly, volumes
+ * through a map of their own), blended draws (vdsm makes each peeled
  * layer its receivers; transparent casters), an area light (vdsm shadows
  * it by 64 segments a pixel, volumes by a pass a sample: the penumbrae
  * differ), or a target without a stencil buffer. */

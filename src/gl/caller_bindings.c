@@ -2,7 +2,7 @@
 /* Caller state that stin's uploads, draws and read-backs would otherwise
  * write through or read from: the bound vertex array object (element
  * buffer, attribute pointers) and the pixel unpack and pack state (row
- * length, skips, alignment, a bound pixel buffer). Each is set aside for
+ * length, skips, alignment, a bound pixel buffer, pixel transfer). Each is set aside for
  * the call and put back. */
 #include "internal.h"
 
@@ -56,6 +56,21 @@ static const pixel_store pack = {
     PIXEL_PACK_BUFFER, PIXEL_PACK_BUFFER_BINDING};
 static const GLint tight[STIN__UNPACK_STORE] = {1, 0, 0, 0};
 
+/* Pixel transfer, GL's defaults: the GL1 tier sets them for its frame
+ * (gl/caller_state.c); the GLSL tiers of a compatibility context read
+ * back and draw depth and stencil through them too (the CSG resolve). */
+static const GLenum transfer[STIN__PIXEL_TRANSFER] = {
+    GL_RED_SCALE, GL_GREEN_SCALE, GL_BLUE_SCALE, GL_ALPHA_SCALE, GL_DEPTH_SCALE,
+    GL_RED_BIAS,  GL_GREEN_BIAS,  GL_BLUE_BIAS,  GL_ALPHA_BIAS,  GL_DEPTH_BIAS,
+    GL_MAP_COLOR, GL_MAP_STENCIL, GL_INDEX_SHIFT, GL_INDEX_OFFSET};
+static const float transfer_default[STIN__PIXEL_TRANSFER] = {1, 1, 1, 1, 1, 0, 0,
+                                                             0, 0, 0, 0, 0, 0, 0};
+
+static int has_transfer(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)) != 0;
+}
+
 static void store_begin(stin_context *ctx, const pixel_store *p, stin__unpack_saved *s)
 {
     int i;
@@ -71,6 +86,14 @@ static void store_begin(stin_context *ctx, const pixel_store *p, stin__unpack_sa
         if (s->buffer)
             GL(ctx, BindBuffer)(p->buffer, 0);
     }
+    for (i = 0; i < STIN__PIXEL_TRANSFER; i++) {
+        s->transfer[i] = transfer_default[i];
+        if (!has_transfer(ctx))
+            continue;
+        GL(ctx, GetFloatv)(transfer[i], &s->transfer[i]);
+        if (s->transfer[i] != transfer_default[i])
+            GL(ctx, PixelTransferf)(transfer[i], transfer_default[i]);
+    }
 }
 
 static void store_end(stin_context *ctx, const pixel_store *p, const stin__unpack_saved *s)
@@ -81,6 +104,9 @@ static void store_end(stin_context *ctx, const pixel_store *p, const stin__unpac
             GL(ctx, PixelStorei)(p->store[i], s->store[i]);
     if (s->buffer)
         GL(ctx, BindBuffer)(p->buffer, (GLuint)s->buffer);
+    for (i = 0; i < STIN__PIXEL_TRANSFER; i++)
+        if (s->transfer[i] != transfer_default[i])
+            GL(ctx, PixelTransferf)(transfer[i], s->transfer[i]);
 }
 
 void stin__unpack_begin(stin_context *ctx, stin__unpack_saved *s)

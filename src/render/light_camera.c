@@ -236,3 +236,15 @@ void stin__light_window_matrix(float out[16], const float view[16], const float 
     bias[12] = bias[13] = bias[14] = 0.5f;
     stin__mat4_mul(out, bias, vp);
 }
+
+void stin__light_into_cell(float m[16], int cell)
+{
+    float sx = 1.0f / (float)STIN__ATLAS_COLUMNS, sy = 1.0f / (float)STIN__ATLAS_ROWS;
+    float ox = (float)((unsigned)cell % STIN__ATLAS_COLUMNS) * sx;
+    float oy = (float)((unsigned)cell / STIN__ATLAS_COLUMNS) * sy;
+    int c;
+    for (c = 0; c < 4; c++) {
+        m[4 * c + 0] = sx * m[4 * c + 0] + ox * m[4 * c + 3];
+        m[4 * c + 1] = sy * m[4 * c + 1] + oy * m[4 * c + 3];
+    }
+}

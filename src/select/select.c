@@ -79,16 +79,24 @@ typedef struct chain_input {
     int unit_limit;    /* the context's units for the chosen lighting */
 } chain_input;
 
+/* A row's conflicts on this context: none where it has every capability
+ * that lifts them. */
+static uint64_t row_conflicts(const stin_caps *caps, const stin__technique_row *r)
+{
+    uint64_t lift = r->conflicts_lifted;
+    return lift && (caps->present & lift) == lift ? 0 : r->conflicts;
+}
+
 /* The techniques a set conflicts with, from either side's row: a conflict
  * is recorded once, on the technique that has it. */
-static uint64_t conflicts_of(uint64_t set)
+static uint64_t conflicts_of(const stin_caps *caps, uint64_t set)
 {
     uint64_t out = 0;
     int t;
     for (t = 0; t < STIN_TECH_COUNT; t++) {
         const stin__technique_row *r = stin__technique_row_of((stin_technique)t);
         if (r && (set & STIN__TECH_BIT(t)))
-            out |= r->conflicts;
+            out |= row_conflicts(caps, r);
     }
     return out;
 }
@@ -123,14 +131,16 @@ static int why_not(const chain_input *in, stin_technique t, char *why, size_t si
                       lighting_class(r->lighting), stin_technique_name(in->lighting));
         return 0;
     }
-    if ((r->conflicts & in->chosen) || (conflicts_of(in->chosen) & STIN__TECH_BIT(t))) {
+    if ((row_conflicts(in->caps, r) & in->chosen) ||
+        (conflicts_of(in->caps, in->chosen) & STIN__TECH_BIT(t))) {
         stin__formatf(why, size, "%s cannot run beside the techniques chosen before it",
                       stin_technique_name(t));
         return 1;
     }
     /* an automatic choice leaves room for another feature's forced technique */
     if (in->forced == STIN_TECH_NONE &&
-        ((r->conflicts & in->forced_all) || (conflicts_of(in->forced_all) & STIN__TECH_BIT(t)))) {
+        ((row_conflicts(in->caps, r) & in->forced_all) ||
+         (conflicts_of(in->caps, in->forced_all) & STIN__TECH_BIT(t)))) {
         stin__formatf(why, size, "%s cannot run beside a forced technique", stin_technique_name(t));
         return 1;
     }
@@ -377,7 +387,8 @@ stin_technique stin__fallback(const stin_caps *caps, const stin__selection *sel,
     return n > 0 ? chain[n - 1] : STIN_TECH_NONE;
 }
 
-stin_technique stin__choice_conflict(const stin__selection *sel, stin_feature f)
+stin_technique stin__choice_conflict(const stin_caps *caps, const stin__selection *sel,
+                                     stin_feature f)
 {
     uint64_t own = STIN__TECH_BIT(sel->choice[f].technique);
     int g;
@@ -385,7 +396,8 @@ stin_technique stin__choice_conflict(const stin__selection *sel, stin_feature f)
         stin_technique t = sel->choice[g].technique;
         if (g == (int)f || (unsigned)t >= STIN_TECH_COUNT)
             continue;
-        if ((conflicts_of(own) & STIN__TECH_BIT(t)) || (conflicts_of(STIN__TECH_BIT(t)) & own))
+        if ((conflicts_of(caps, own) & STIN__TECH_BIT(t)) ||
+            (conflicts_of(caps, STIN__TECH_BIT(t)) & own))
             return t;
     }
     return STIN_TECH_NONE;

@@ -21,6 +21,10 @@ typedef struct stin__technique_row {
     /* Texture units it takes only when they are spare and runs without
      * otherwise (volumes: the screen mask that shares lit passes). */
     uint8_t spare_units;
+    /* STIN_CAP_BIT()s that lift `conflicts` where the context has them all
+     * (0: never): displacement beside volumes, which cast displaced draws
+     * through a depth map of their own (shadow/cast_map.c). */
+    uint64_t conflicts_lifted;
 } stin__technique_row;
 
 #define STIN__TECH_BIT(t) ((uint64_t)1 << (t))
@@ -75,9 +79,11 @@ void stin__demote_at(struct stin_context *ctx, stin_log_level level, stin_featur
  * stay where they are). The chain's last where none does. */
 stin_technique stin__fallback(const stin_caps *caps, const stin__selection *sel, stin_feature f);
 /* The technique of another feature that feature f's choice conflicts with
- * (a conflict in either row), STIN_TECH_NONE where none does: for a choice
- * that a later fall back of another feature put beside it. */
-stin_technique stin__choice_conflict(const stin__selection *sel, stin_feature f);
+ * on this context (a conflict in either row, not lifted by caps),
+ * STIN_TECH_NONE where none does: for a choice that a later fall back of
+ * another feature put beside it. */
+stin_technique stin__choice_conflict(const stin_caps *caps, const stin__selection *sel,
+                                     stin_feature f);
 
 /* Row accessors kept for callers that ask one thing. */
 uint64_t stin__technique_needs(stin_technique t);

@@ -10,76 +10,80 @@
 /* GLSL 1.10 shaders need a compatibility context next to GL 2.0. */
 #define TIER2 (BIT(GLSL) | BIT(FIXED_FUNCTION))
 #define TIER4 (BIT(GLSL) | BIT(GEOMETRY_SHADER) | BIT(VBO) | BIT(VAO) | BIT(FBO))
+/* What volumes' own depth map needs (shadow/cast_map.c, on GLSL lighting). */
+#define CAST_MAP (BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW))
 
 /* Techniques that only run on top of one lighting technique: DOT3 and the
  * fixed maps are texture-environment set-ups of the fixed-function passes;
  * the GLSL surface chunks and map-pcf are chunks of the GLSL lit programs. */
 static const stin__technique_row rows[] = {
-    /* technique                      rank needs  lighting conflicts frag vert [spare] */
-    {STIN_TECH_LIGHTING_GLSL150,       0, TIER4, STIN_TECH_NONE, 0, 1, 0, 0},
-    {STIN_TECH_LIGHTING_GLSL110,       1, TIER2, STIN_TECH_NONE, 0, 1, 0, 0},
-    {STIN_TECH_LIGHTING_FIXED,         2, TIER1, STIN_TECH_NONE, 0, 1, 0, 0},
+    /* technique                      rank needs  lighting conflicts frag vert spare lifted */
+    {STIN_TECH_LIGHTING_GLSL150,       0, TIER4, STIN_TECH_NONE, 0, 1, 0, 0, 0},
+    {STIN_TECH_LIGHTING_GLSL110,       1, TIER2, STIN_TECH_NONE, 0, 1, 0, 0, 0},
+    {STIN_TECH_LIGHTING_FIXED,         2, TIER1, STIN_TECH_NONE, 0, 1, 0, 0, 0},
     /* exact shadows from a position buffer and per-triangle shadow polygons
      * drawn by a geometry shader into the screen mask (its unit) */
     {STIN_TECH_SHADOWS_VDSM,           0,
-     TIER4 | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL), STIN_TECH_LIGHTING_GLSL150, 0, 1, 0, 0},
+     TIER4 | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL), STIN_TECH_LIGHTING_GLSL150, 0, 1, 0, 0, 0},
     /* a spare unit holds the screen mask (several lights per lit pass) */
-    {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 1},
+    {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 1, 0},
     {STIN_TECH_SHADOWS_MAP_PCF,        2,
-     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE), GLSL_ANY, 0, 1, 0, 0},
+     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE), GLSL_ANY, 0, 1, 0, 0, 0},
     {STIN_TECH_SHADOWS_MAP_DEPTH,      3, BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE),
-     STIN_TECH_LIGHTING_FIXED, 0, 1, 0, 0},
+     STIN_TECH_LIGHTING_FIXED, 0, 1, 0, 0, 0},
     {STIN_TECH_SHADOWS_MAP_COMBINE,    4, BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE),
-     STIN_TECH_LIGHTING_FIXED, 0, 2, 0, 0},
-    {STIN_TECH_SHADOWS_OFF,            5, 0, STIN_TECH_NONE, 0, 0, 0, 0},
+     STIN_TECH_LIGHTING_FIXED, 0, 2, 0, 0, 0},
+    {STIN_TECH_SHADOWS_OFF,            5, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* three samplers: albedo, normal map, height map */
-    {STIN_TECH_SURFACE_POM,            0, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0},
-    {STIN_TECH_SURFACE_PARALLAX,       1, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0},
-    {STIN_TECH_SURFACE_NORMAL,         2, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0},
+    {STIN_TECH_SURFACE_POM,            0, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0, 0},
+    {STIN_TECH_SURFACE_PARALLAX,       1, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0, 0},
+    {STIN_TECH_SURFACE_NORMAL,         2, BIT(GLSL) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0, 0},
     {STIN_TECH_SURFACE_DOT3,           3,
      BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) | BIT(TEXTURE_CUBE_MAP) |
-         BIT(FIXED_FUNCTION), STIN_TECH_LIGHTING_FIXED, 0, 2, 0, 0}, /* a 4th for albedo if spare */
-    {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, 0},
+         BIT(FIXED_FUNCTION), STIN_TECH_LIGHTING_FIXED, 0, 2, 0, 0, 0}, /* a 4th for albedo if spare */
+    {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* deep shadow maps: two array textures of RGBA32F layers (even, odd) */
     {STIN_TECH_TRANSLUCENT_DEEP,       0, TIER4 | BIT(FLOAT_TEXTURE), STIN_TECH_LIGHTING_GLSL150,
-     0, 2, 0, 0},
+     0, 2, 0, 0, 0},
     /* one colour map and the nearest transparent depth per light (atlases) */
     {STIN_TECH_TRANSLUCENT_COLOURED,   1,
-     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0},
+     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0, 0},
     /* casters at or above desc.translucent.opaque_threshold cast, the rest not */
-    {STIN_TECH_TRANSLUCENT_OPAQUE,     2, 0, STIN_TECH_NONE, 0, 0, 0, 0},
+    {STIN_TECH_TRANSLUCENT_OPAQUE,     2, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* every caster casts fully: chosen only when forced (opaque needs no more) */
-    {STIN_TECH_TRANSLUCENT_SOLID,      3, 0, STIN_TECH_NONE, 0, 0, 0, 0},
+    {STIN_TECH_TRANSLUCENT_SOLID,      3, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* vertex texture fetch of the height map in every mesh-drawing vertex
-     * stage (after tessellation where there is one); volumes' CPU
-     * silhouettes would be the undisplaced mesh's */
+     * stage (after tessellation where there is one); volumes' silhouettes
+     * would be the undisplaced mesh's, so beside volumes the displaced draws
+     * cast through volumes' depth map (shadow/cast_map.c), which needs
+     * depth textures and shadow compare in a framebuffer object */
     {STIN_TECH_DISPLACEMENT_TESS,      0, TIER4 | BIT(VERTEX_TEXTURE_FETCH) | BIT(TESSELLATION),
-     STIN_TECH_LIGHTING_GLSL150, STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, 0},
+     STIN_TECH_LIGHTING_GLSL150, STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, 0, CAST_MAP},
     {STIN_TECH_DISPLACEMENT_VTF,       1, BIT(GLSL) | BIT(VERTEX_TEXTURE_FETCH), GLSL_ANY,
-     STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, 0},
-    {STIN_TECH_DISPLACEMENT_OFF,       2, 0, STIN_TECH_NONE, 0, 0, 0, 0},
+     STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, 0, CAST_MAP},
+    {STIN_TECH_DISPLACEMENT_OFF,       2, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* stencil parity; depth written back by glDrawPixels (compatibility) or
      * a GLSL 1.50 program (core: csg/goldfeather.c demotes without it) */
-    {STIN_TECH_CSG_GOLDFEATHER,        2, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 0},
-    {STIN_TECH_CSG_OFF,                3, 0, STIN_TECH_NONE, 0, 0, 0, 0},
+    {STIN_TECH_CSG_GOLDFEATHER,        2, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 0, 0},
+    {STIN_TECH_CSG_OFF,                3, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* sequenced convex subtraction (csg/scs.c) for products of convex
      * primitives, goldfeather's depth write-back; other products go to
      * goldfeather (logged) */
-    {STIN_TECH_CSG_SCS,                0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 0},
+    {STIN_TECH_CSG_SCS,                0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* depth peeling of the camera's layers: two samplers in the lit programs
      * (the previous layer's depth, the opaque depth); packed depth-stencil
      * textures hold a layer's depth and the stencil volumes count in */
     {STIN_TECH_TRANSPARENCY_DEPTH_PEEL,      1,
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(MULTITEXTURE) |
-         BIT(VBO), GLSL_ANY, 0, 2, 0, 0},
-    {STIN_TECH_TRANSPARENCY_SORTED,    2, 0, STIN_TECH_NONE, 0, 0, 0, 0},
+         BIT(VBO), GLSL_ANY, 0, 2, 0, 0, 0},
+    {STIN_TECH_TRANSPARENCY_SORTED,    2, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* dual depth peeling: depth-peel's needs on GLSL 1.50 (3.2+: the MAX
      * blend equation) with float colour targets (RG32F min-max, RGBA16F
      * composites) and occlusion queries (its early stop); the same two
      * samplers (this pass's min-max, the opaque depth) */
     {STIN_TECH_TRANSPARENCY_DUAL_PEEL, 0,
      TIER4 | BIT(FLOAT_TEXTURE) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
-         BIT(MULTITEXTURE) | BIT(OCCLUSION_QUERY), STIN_TECH_LIGHTING_GLSL150, 0, 2, 0, 0},
+         BIT(MULTITEXTURE) | BIT(OCCLUSION_QUERY), STIN_TECH_LIGHTING_GLSL150, 0, 2, 0, 0, 0},
     /* the ray-interval walk over peeled layers (csg/interval.c): GLSL 1.50,
      * FBOs, texture arrays (GL 3.0: DEPTH_COMPONENT32F and R8 layers) and a
      * float colour target (R32F) the walk writes and the CPU reads back, an
@@ -89,7 +93,7 @@ static const stin__technique_row rows[] = {
      * scs/goldfeather (logged) */
     {STIN_TECH_CSG_INTERVAL,           1, TIER4 | BIT(FLOAT_TEXTURE) | BIT(STENCIL) |
          BIT(OCCLUSION_QUERY),
-     STIN_TECH_LIGHTING_GLSL150, 0, 0, 0, 0},
+     STIN_TECH_LIGHTING_GLSL150, 0, 0, 0, 0, 0},
 };
 
 static const stin_feature tech_feature[] = {

@@ -65,8 +65,8 @@ static const stin__shadow_technique *module_of(int c)
 }
 
 /* Whether stencil volumes run where the selection put vdsm: their needs,
- * the lighting, and a stencil buffer. Displacement's conflict with volumes
- * is per draw (a displaced draw keeps its frame on vdsm). */
+ * the lighting, and a stencil buffer. A displaced draw keeps its frame on
+ * vdsm (frame/shadow_choice.c). */
 static int volumes_run(const stin_context *ctx)
 {
     const stin_technique lighting = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique;

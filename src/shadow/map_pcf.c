@@ -31,7 +31,7 @@
 
 struct stin__map_pcf_state {
     GLuint textures[STIN__MAX_LIGHTS];
-    GLuint atlas;         /* a point light's six faces, ATLAS_COLUMNS x ATLAS_ROWS cells */
+    GLuint atlas;         /* a point light's six faces, STIN__ATLAS_COLUMNS x STIN__ATLAS_ROWS cells */
     GLuint fbo;
     uint32_t size;        /* a spot or directional map's texels a side */
     uint32_t face_size;   /* a face's: size, halved while the atlas exceeds the limit */
@@ -55,9 +55,6 @@ size_t stin__map_pcf_state_bytes(const stin_desc *d)
 }
 
 #define FACE_SLOT STIN__FACE_SLOT
-/* Face f's cell: column f % 3, row f / 3 (shadow_pcf.glsl's clamp agrees). */
-#define ATLAS_COLUMNS 3u
-#define ATLAS_ROWS 2u
 
 static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t w, uint32_t h)
 {
@@ -74,15 +71,15 @@ static stin_result pcf_init(stin_context *ctx)
     m->size = size;
     m->face_size = size;
     while (ctx->caps.max_texture_size > 0 && m->face_size > 1u &&
-           ATLAS_COLUMNS * m->face_size > (uint32_t)ctx->caps.max_texture_size)
+           STIN__ATLAS_COLUMNS * m->face_size > (uint32_t)ctx->caps.max_texture_size)
         m->face_size /= 2u; /* three faces across must fit */
     m->unit = ctx->sel.shadow_unit;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (i = 0; i < ctx->desc.max_lights; i++)
         create_depth_texture(ctx, &m->textures[i], size, size);
-    create_depth_texture(ctx, &m->atlas, ATLAS_COLUMNS * m->face_size,
-                         ATLAS_ROWS * m->face_size);
+    create_depth_texture(ctx, &m->atlas, STIN__ATLAS_COLUMNS * m->face_size,
+                         STIN__ATLAS_ROWS * m->face_size);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, GenFramebuffers)(1, &m->fbo);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
@@ -262,20 +259,6 @@ static int in_face(const stin_context *ctx, const stin__draw *d, const void *use
     return stin__points_meet(corners, 8, (const float *)user, 4);
 }
 
-/* world -> [0,1] window coordinates of face f's cell in the atlas: the
- * face's window matrix scaled and moved into its cell (rows 0 and 1). */
-static void into_cell(float m[16], int face)
-{
-    float sx = 1.0f / (float)ATLAS_COLUMNS, sy = 1.0f / (float)ATLAS_ROWS;
-    float ox = (float)((unsigned)face % ATLAS_COLUMNS) * sx;
-    float oy = (float)((unsigned)face / ATLAS_COLUMNS) * sy;
-    int c;
-    for (c = 0; c < 4; c++) {
-        m[4 * c + 0] = sx * m[4 * c + 0] + ox * m[4 * c + 3];
-        m[4 * c + 1] = sy * m[4 * c + 1] + oy * m[4 * c + 3];
-    }
-}
-
 /* A point light's faces, just before its pass, each into its cell of the
  * atlas with only its own casters; the cells of faces no visible point
  * picks are left cleared (the lookups' clamp keeps every tap of a picked
@@ -296,8 +279,8 @@ static void draw_faces(stin_context *ctx, uint32_t li)
         t.texture = m->atlas;
         t.clear = first;
         first = 0;
-        t.rect[0] = (face % (int)ATLAS_COLUMNS) * s;
-        t.rect[1] = (face / (int)ATLAS_COLUMNS) * s;
+        t.rect[0] = (face % (int)STIN__ATLAS_COLUMNS) * s;
+        t.rect[1] = (face / (int)STIN__ATLAS_COLUMNS) * s;
         t.rect[2] = t.rect[3] = s;
         t.keep = in_face;
         t.user = planes[0];
@@ -305,7 +288,7 @@ static void draw_faces(stin_context *ctx, uint32_t li)
         ctx->stats.shadows.map_face_casters += draw_map(ctx, &t, l, view, proj);
         ctx->stats.shadows.map_faces++;
         stin__light_window_matrix(m->matrix[FACE_SLOT + (uint32_t)face], view, proj);
-        into_cell(m->matrix[FACE_SLOT + (uint32_t)face], face);
+        stin__light_into_cell(m->matrix[FACE_SLOT + (uint32_t)face], face);
         soft_spread(m->spread[FACE_SLOT + (uint32_t)face], proj, m->face_size);
         /* every face is 90 degrees: one offset per unit w serves the six */
         m->normal_offset[FACE_SLOT] = texel_offset(proj, m->face_size);
@@ -340,8 +323,8 @@ static void pcf_uniforms(stin_context *ctx, const stin__program *p)
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, UniformMatrix4fv)(p->u_shadow_matrix, count, GL_FALSE, mats);
     /* a texel's width (x) and height (w) in the texture's [0,1] */
-    params[0] = 1.0f / (float)(kind == 2 ? ATLAS_COLUMNS * m->face_size : m->size);
-    params[3] = 1.0f / (float)(kind == 2 ? ATLAS_ROWS * m->face_size : m->size);
+    params[0] = 1.0f / (float)(kind == 2 ? STIN__ATLAS_COLUMNS * m->face_size : m->size);
+    params[3] = 1.0f / (float)(kind == 2 ? STIN__ATLAS_ROWS * m->face_size : m->size);
     params[1] = (float)(ctx->lights[li].pcf_kernel / 2u);
     params[2] = m->normal_offset[kind == 2 ? FACE_SLOT : li];
     GL(ctx, Uniform4fv)(p->u_shadow_params, 1, params);

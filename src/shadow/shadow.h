@@ -120,6 +120,7 @@ size_t stin__volume_state_bytes(const stin_desc *d);
 size_t stin__map_fixed_state_bytes(const stin_desc *d);
 size_t stin__map_pcf_state_bytes(const stin_desc *d);
 size_t stin__vdsm_state_bytes(const stin_desc *d);
+size_t stin__cast_map_state_bytes(const stin_desc *d);
 
 /* ---- the measured choice of the exact technique (shadow/choice.c) --------- */
 /* stin.h, SHADOWS: where the selection chose vdsm on auto, volumes run and
@@ -169,6 +170,28 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
  * extrusion program exists; 1 (the state after init): extrude on the GPU where
  * it can. Returns whether GPU extrusion is available at all. */
 int stin__volume_extrude_enable(stin_context *ctx, int on);
+/* The casters an exact technique cannot cast through a map of their own
+ * (shadow/cast_map.c), on the GLSL tiers and GL1 with framebuffer objects
+ * (spot and directional lights): volumes' CSG products and
+ * displaced draws, vdsm's products where it has no storage buffers (or a
+ * product passes its limits). init/release at the technique's set-up
+ * (screen: for vdsm's mask). casts: draw d is cast by volumes' map, not
+ * by a volume. draw, before light li's visibility: its map from the light
+ * (the framebuffer `back` and the frame's viewport bound again after), the
+ * choice logged once per light, or once that the products cast nothing;
+ * returns whether it drew any. mark, after a volumes count
+ * (stin__volume_light): the stencil made non-zero wherever that map
+ * shadows the frame's surfaces; mask, after vdsm wrote light li's channel
+ * of the bound screen mask: 0 there wherever the map shadows the surface
+ * of its position buffer (`positions`); both leave the pass state as they
+ * found it and draw nothing where draw drew none. */
+void stin__cast_map_init(stin_context *ctx, int screen);
+void stin__cast_map_release(stin_context *ctx);
+int stin__cast_map_casts(const stin_context *ctx, const stin__draw *d);
+int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, GLuint back,
+                        int screen);
+void stin__cast_map_mark(stin_context *ctx);
+void stin__cast_map_mask(stin_context *ctx, int channel, GLuint positions);
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or
@@ -220,6 +243,12 @@ void stin__light_cube_face(const stin_context *ctx, const float position[3], int
                            float view[16], float proj[16]);
 /* world -> [0,1] window coordinates of a light camera: bias * proj * view. */
 void stin__light_window_matrix(float out[16], const float view[16], const float proj[16]);
+/* An atlas of a point light's six faces: 3 x 2 cells, face f in column
+ * f % 3, row f / 3 (the lookups' clamps agree). into_cell: a window matrix
+ * (above) scaled and moved into cell `cell` (rows 0 and 1). */
+#define STIN__ATLAS_COLUMNS 3u
+#define STIN__ATLAS_ROWS 2u
+void stin__light_into_cell(float m[16], int cell);
 /* The view and projection of a spot or directional light and the depth range
  * [n, f] it spans; 0 for a point light or when nothing is in front. map_size
  * snaps a directional map to whole texels (0: no snapping). */

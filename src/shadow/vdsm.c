@@ -102,6 +102,7 @@ static void release(stin_context *ctx)
     stin__vdsm_cull_release(ctx);
     stin__vdsm_csg_release(ctx);
     stin__vdsm_soft_release(ctx);
+    stin__cast_map_release(ctx);
     stin__vdsm_buffer_release(ctx);
     stin__mesh_adjacency_use(ctx, NULL);
 }
@@ -227,6 +228,7 @@ static stin_result vdsm_init(stin_context *ctx)
     stin__vdsm_pyramid_init(ctx);
     stin__vdsm_cull_init(ctx);
     stin__vdsm_csg_init(ctx);
+    stin__cast_map_init(ctx, 1);
     if (ctx->desc.debug_flags & STIN_DEBUG_VDSM_COUNT)
         GL(ctx, GenQueries)(1, &v->query);
     /* step SM's occluders: the light pass reads each edge's neighbour */
@@ -234,14 +236,7 @@ static stin_result vdsm_init(stin_context *ctx)
     return STIN_OK;
 }
 
-static void vdsm_prepass(stin_context *ctx)
-{
-    stin__vdsm_buffer_draw(ctx);
-    if (!stin__vdsm_csg_ready(ctx))
-        stin__casters_none(ctx, "under vdsm without GL 4.3's shader storage buffers (the "
-                                "\"compute shaders\" capability), which its per-pixel lists "
-                                "of crossings need; the map techniques cast them");
-}
+static void vdsm_prepass(stin_context *ctx) { stin__vdsm_buffer_draw(ctx); }
 
 /* The light as a homogeneous world point: position (w 1) or the direction
  * toward it (w 0); an area light's centre. */
@@ -372,7 +367,6 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
     stin__pass_state ps = *stin__pass_current(ctx);
     float light[4];
     int faced, soft;
-    (void)path;
     if (!v->ready)
         return 0;
     soft = l->radius > 0.0f && l->type != STIN_LIGHT_DIRECTIONAL;
@@ -412,6 +406,10 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         ctx->stats.passes++;
     }
     stin__vdsm_csg_cast(ctx, light, channel);
+    /* the products it cannot walk: through the casters' map */
+    if (!stin__vdsm_csg_walks_all(ctx) &&
+        stin__cast_map_draw(ctx, path, li, stin__mask_target_of(ctx).fbo, 1))
+        stin__cast_map_mask(ctx, channel, v->position);
     return 1;
 }
 

@@ -9,8 +9,9 @@
  * light back to the surface, primitive by primitive in or out, and writes
  * the shadow where the product's normal form holds anywhere on the way
  * (vdsm_csg_walk.frag). Needs GL 4.3's storage buffers and atomics (the
- * "compute shaders" capability); products of more than 128 primitives or
- * 64 terms cast nothing (logged). Whether the light lies inside a primitive
+ * "compute shaders" capability); without them, or where a product has more
+ * than 128 primitives or 64 terms (logged), the frame's products cast
+ * through the casters' depth map instead (shadow/cast_map.c). Whether the light lies inside a primitive
  * (where the walk starts) is a ray's parity on the CPU, from the block's
  * copy of the mesh. The node pool starts at one node a pixel of the
  * viewport and grows when a product's crossings outrun it (that product is
@@ -103,6 +104,18 @@ static int fits(const stin__caster_product *p)
 {
     return p->primitive_count <= STIN__VDSM_CSG_MAX_PRIMITIVES &&
            p->term_count <= STIN__VDSM_CSG_MAX_TERMS;
+}
+
+int stin__vdsm_csg_walks_all(const stin_context *ctx)
+{
+    stin__caster_product p;
+    uint32_t i;
+    if (!built(ctx))
+        return 0;
+    for (i = 0; stin__casters_product(ctx, i, &p); i++)
+        if (!fits(&p))
+            return 0;
+    return 1;
 }
 
 /* ---- the light's place: a ray's parity on the CPU ------------------------- */
@@ -359,8 +372,9 @@ void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel)
         if (!fits(p)) {
             if (!c->said_limits)
                 stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                          "vdsm: a CSG product of %u primitives and %u terms casts no shadow "
-                          "(at most %u and %u)", p->primitive_count, p->term_count,
+                          "vdsm: a CSG product of %u primitives and %u terms is past the "
+                          "walk's limits (%u and %u): the products cast through a depth map",
+                          p->primitive_count, p->term_count,
                           STIN__VDSM_CSG_MAX_PRIMITIVES, STIN__VDSM_CSG_MAX_TERMS);
             c->said_limits = 1;
             continue;

@@ -68,6 +68,9 @@ typedef struct stin__vdsm_csg {
 void stin__vdsm_csg_init(stin_context *ctx);
 void stin__vdsm_csg_release(stin_context *ctx);
 int stin__vdsm_csg_ready(const stin_context *ctx);
+/* It walks every product of the frame (ready, and each within its limits):
+ * else the products cast through the casters' map (shadow/cast_map.c). */
+int stin__vdsm_csg_walks_all(const stin_context *ctx);
 /* Light (homogeneous world point) shadowed by every product that fits,
  * into channel `channel` of the bound mask, after the light's polygons. */
 void stin__vdsm_csg_cast(stin_context *ctx, const float light[4], int channel);

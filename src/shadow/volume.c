@@ -272,8 +272,6 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
     int k, n_planes;
     plane planes[5];
     stin__volume_reach reach;
-    stin__casters_none(ctx, "into shadow volumes (a product's volume needs its resolved "
-                            "silhouette, not its primitives'; the map techniques cast them)");
     /* The frame's viewport at most: the stencil of the rest of the
      * framebuffer (other viewports of a keep_contents frame) is not ours. */
     if (NO_SCISSOR(scissor))
@@ -298,8 +296,9 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         float center[3], radius, far_world[4];
         stin__stencil_face back, front;
         int zfail;
-        if (!d->shadow_caster)
-            continue; /* a transparent caster: its map or the threshold decides */
+        if (!d->shadow_caster || stin__cast_map_casts(ctx, d))
+            continue; /* a transparent caster: its map or the threshold decides;
+                       * a displaced one: volumes' depth map casts it */
         if (!caster_reach(ctx, &reach, d, far_world))
             continue;
         caster_bounds(ctx, d, center, &radius);
@@ -431,7 +430,14 @@ static void sample_light(const stin_light_desc *l, uint32_t i, uint32_t n, stin_
 static stin_result volume_init(stin_context *ctx)
 {
     stin__volume_extrude_init(ctx);
+    stin__cast_map_init(ctx, 0);
     return STIN_OK;
+}
+
+static void volume_release(stin_context *ctx)
+{
+    stin__volume_extrude_release(ctx);
+    stin__cast_map_release(ctx);
 }
 
 static void volume_prepare(stin_context *ctx) { stin__volume_projection(ctx); }
@@ -492,6 +498,7 @@ static void shares_light(stin_context *ctx, const stin__path *path, const stin_l
         float world[4];
         sample_light(l, s, n, &one, world);
         stin__volume_light(ctx, path, world, scissor);
+        stin__cast_map_mark(ctx);
         alpha_pass(ctx, path, &one, stin__light_sample_weight(s, n), GL_ONE);
     }
     once_a_pixel(ctx, scissor ? scissor : ctx->frame.viewport);
@@ -513,6 +520,7 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
     int rect[4], scissored = stin__light_scissor(ctx, l, rect);
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return; /* the light touches nothing on screen */
+    (void)stin__cast_map_draw(ctx, path, li, ctx->draw_fbo, 0);
     if (shares_in_alpha(ctx, n)) {
         shares_light(ctx, path, l, n, scissored ? rect : NULL, shade);
         return;
@@ -522,6 +530,7 @@ static void volume_shadow_light(stin_context *ctx, const stin__path *path, uint3
         float world[4];
         sample_light(l, s, n, &one, world);
         stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+        stin__cast_map_mark(ctx);
         shade(ctx, path, &one, stin__light_sample_weight(s, n));
     }
     stin__volume_light_end(ctx);
@@ -556,7 +565,7 @@ static void volume_debug_overlay(stin_context *ctx, const stin__path *path)
         stin__volume_reach_begin(ctx, world, &reach);
         for (i = 0; i < ctx->draw_count; i++) {
             const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-            if (caster_reach(ctx, &reach, d, far_world))
+            if (!stin__cast_map_casts(ctx, d) && caster_reach(ctx, &reach, d, far_world))
                 draw_caster(ctx, path, d, world, far_world, 1, 0);
         }
     }
@@ -577,9 +586,11 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
     int rect[4], scissored = stin__light_scissor(ctx, l, rect);
     if (scissored && (rect[2] <= 0 || rect[3] <= 0))
         return 1; /* the light touches nothing on screen: its channel stays 0 */
+    (void)stin__cast_map_draw(ctx, path, li, stin__mask_target_of(ctx).fbo, 0);
     for (s = 0; s < n; s++) {
         sample_light(l, s, n, &one, world);
         stin__volume_light(ctx, path, world, scissored ? rect : NULL);
+        stin__cast_map_mark(ctx);
         stin__mask_write(ctx, path, channel, stin__light_sample_weight(s, n));
     }
     stin__volume_light_end(ctx);
@@ -589,7 +600,7 @@ static int volume_mask(stin_context *ctx, const stin__path *path, uint32_t li, i
 const stin__shadow_technique stin__shadow_volume = {
     .glsl_chunk = "shadow_mask.glsl",
     .init = volume_init,
-    .release = stin__volume_extrude_release,
+    .release = volume_release,
     .prepare = volume_prepare,
     .light = volume_shadow_light,
     .uniforms = stin__mask_uniforms,

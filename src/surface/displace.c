@@ -76,11 +76,13 @@ void stin__displace_frame_end(stin_context *ctx)
 }
 
 /* Selection kept displacement from what it conflicts with (the technique
- * table: volume, whose silhouettes are the undisplaced mesh's), but another
+ * table: volume, whose silhouettes are the undisplaced mesh's, where it has
+ * no depth map to cast them through), but another
  * feature's set-up may have fallen back onto such a technique since. */
 void stin__displace_init(stin_context *ctx)
 {
-    stin_technique clash = stin__choice_conflict(&ctx->sel, STIN_FEATURE_DISPLACEMENT);
+    stin_technique clash = stin__choice_conflict(&ctx->caps, &ctx->sel,
+                                                 STIN_FEATURE_DISPLACEMENT);
     char why[200];
     if (!stin__displace_built(ctx) || clash == STIN_TECH_NONE)
         return;

@@ -15,15 +15,15 @@
 #define POM STIN_TECH_SURFACE_POM
 /* translucent shadows, displacement, CSG, transparency: deep shadow maps on
  * GL4, colour maps on GL2, the opacity threshold on GL1, displacement where
- * there are vertex textures and the shadows are not volumes (their
- * silhouettes are the undisplaced mesh's), tessellated first where there
- * are tessellation shaders (GL 4.0); scs everywhere (products of non-convex
+ * there are vertex textures (beside volumes too: they cast displaced draws
+ * through a depth map of their own), tessellated first where there are
+ * tessellation shaders (GL 4.0); scs everywhere (products of non-convex
  * primitives go to goldfeather); dual depth peeling on GL4 (float
  * targets, occlusion queries), depth peeling on GL2 (FBOs, depth textures,
  * packed depth-stencil), sorted on GL1 */
 #define RESERVED STIN_TECH_TRANSLUCENT_OPAQUE, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS, \
     STIN_TECH_TRANSPARENCY_SORTED
-#define COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS, \
+#define COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_VTF, STIN_TECH_CSG_SCS, \
     STIN_TECH_TRANSPARENCY_DEPTH_PEEL
 #define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, \
     STIN_TECH_CSG_SCS, STIN_TECH_TRANSPARENCY_DUAL_PEEL

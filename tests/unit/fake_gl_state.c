@@ -422,6 +422,19 @@ void STIN_APIENTRY fake_PixelTransferf(GLenum pname, GLfloat v)
         S.pixel_transfer[i] = v;
 }
 
+/* Pixel transfer is the only float state stin reads back. */
+void STIN_APIENTRY fake_GetFloatv(GLenum pname, GLfloat *data)
+{
+    int i = find(pixel_transfer, FAKE_GL_PIXEL_TRANSFER_COUNT, pname);
+    COUNT(GetFloatv);
+    if (i < 0) {
+        *data = 0.0f;
+        fake_gl_state_untracked("glGetFloatv", pname);
+    } else {
+        *data = S.pixel_transfer[i];
+    }
+}
+
 void STIN_APIENTRY fake_AlphaFunc(GLenum func, GLfloat ref)
 {
     COUNT(AlphaFunc);

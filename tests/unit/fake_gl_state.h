@@ -276,6 +276,7 @@ const char *fake_gl_enum_name(GLenum e, char *buf, size_t size);
 #define FAKE_STATE_PatchParameteri ~, 1
 #define FAKE_STATE_BindSampler ~, 1
 #define FAKE_STATE_PixelTransferf ~, 1
+#define FAKE_STATE_GetFloatv ~, 1
 #define FAKE_STATE_PushAttrib ~, 1 /* fake_gl_attrib.c */
 #define FAKE_STATE_PopAttrib ~, 1
 

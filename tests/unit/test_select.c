@@ -475,32 +475,44 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
  * normal (2 more each) are passed over for plain, naming the limit;
  * with 1 unit map-pcf itself cannot be forced. Units are placed after
  * the albedo (unit 0) in feature order. */
-/* displace conflicts with volume (CPU silhouettes of the undisplaced mesh):
- * beside auto volumes it steps down (logged reason), forcing it moves the
- * shadow chain past volume, forcing both is refused; hidden vertex
- * textures step it down with the capability named. */
+/* displace conflicts with volume (CPU silhouettes of the undisplaced mesh)
+ * where volumes have no depth map to cast displaced draws through (FBOs,
+ * depth textures, shadow compare: the conflict's lifting capabilities):
+ * with them both run by default and may be forced together; without
+ * shadow compare, beside auto volumes it steps down (logged reason),
+ * forcing it moves the shadow chain past volume, forcing both is refused;
+ * hidden vertex textures step it down with the capability named. */
 static void test_displacement_beside_volumes(void **state)
 {
     stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS), gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
+    stin_caps no_map = caps_with(21, 12, 0, GL21_BITS & ~BIT(SHADOW));
     stin_technique forced[STIN_FEATURE_COUNT];
     stin__selection sel;
     char msg[256];
     (void)state;
     memset(forced, 0, sizeof forced);
     gl21.max_texture_image_units = gl45.max_texture_image_units = 16;
+    no_map.max_texture_image_units = 16;
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_VTF);
+    assert_false(sel.choice[STIN_FEATURE_DISPLACEMENT].fell_back);
+    forced[STIN_FEATURE_DISPLACEMENT] = STIN_TECH_DISPLACEMENT_VTF;
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VOLUME;
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    memset(forced, 0, sizeof forced);
+    assert_int_equal(stin__select(&no_map, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
     assert_true(sel.choice[STIN_FEATURE_DISPLACEMENT].fell_back);
     assert_non_null(strstr(sel.choice[STIN_FEATURE_DISPLACEMENT].reason, "displace cannot run beside"));
     forced[STIN_FEATURE_DISPLACEMENT] = STIN_TECH_DISPLACEMENT_VTF;
-    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
-    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_MAP_PCF);
-    assert_non_null(strstr(sel.choice[STIN_FEATURE_SHADOWS].reason, "volume cannot run beside a forced"));
+    assert_int_equal(stin__select(&no_map, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_OFF);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_VTF);
     assert_int_equal(sel.displace_unit, sel.units_used);
     forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VOLUME;
-    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+    assert_int_equal(stin__select(&no_map, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
     assert_non_null(strstr(msg, "displace cannot run beside"));
     /* GL4: vdsm shadows displaced geometry, so displace is the default,
@@ -526,10 +538,12 @@ static void test_displacement_beside_volumes(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
 }
 
-/* A shadows set-up failure under vdsm walks the table's chain down: past
- * volume beside displacement (a conflict), past map-pcf where its
- * sampler does not fit after the surface's units, past the fixed-function
- * maps always (GLSL lighting), to off at the end. */
+/* A shadows set-up failure under vdsm walks the table's chain down: to
+ * volume beside displacement where volumes cast it through their map, past
+ * it (a conflict) where shadow compare is missing, past map-pcf where it
+ * lacks a capability or its sampler does not fit after the surface's
+ * units, past the fixed-function maps always (GLSL lighting), to off at
+ * the end. */
 static void test_fallback_walks_the_chain(void **state)
 {
     stin_caps gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
@@ -540,7 +554,10 @@ static void test_fallback_walks_the_chain(void **state)
     assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VDSM);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_TESS);
-    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
+    gl45.present &= ~BIT(SHADOW);
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
+    gl45.present |= BIT(SHADOW);
     sel.choice[STIN_FEATURE_DISPLACEMENT].technique = STIN_TECH_DISPLACEMENT_OFF;
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
     gl45.present &= ~BIT(STENCIL);
@@ -551,22 +568,25 @@ static void test_fallback_walks_the_chain(void **state)
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
 }
 
-/* Which other choice displacement conflicts with, from either row. */
+/* Which other choice displacement conflicts with, from either row, on a
+ * context without what lifts the conflict (shadow compare); none with it. */
 static void test_choice_conflict(void **state)
 {
     stin_caps gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
+    stin_caps no_map = caps_with(45, 45, 1, GL45_CORE_BITS & ~BIT(SHADOW));
     stin__selection sel;
     char msg[256];
     (void)state;
     assert_int_equal(stin__select(&gl45, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
-    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_DISPLACEMENT), STIN_TECH_NONE);
+    assert_int_equal(stin__choice_conflict(&gl45, &sel, STIN_FEATURE_DISPLACEMENT), STIN_TECH_NONE);
     sel.choice[STIN_FEATURE_SHADOWS].technique = STIN_TECH_SHADOWS_VOLUME;
-    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_DISPLACEMENT),
+    assert_int_equal(stin__choice_conflict(&gl45, &sel, STIN_FEATURE_DISPLACEMENT), STIN_TECH_NONE);
+    assert_int_equal(stin__choice_conflict(&no_map, &sel, STIN_FEATURE_DISPLACEMENT),
                      STIN_TECH_SHADOWS_VOLUME);
-    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_SHADOWS),
+    assert_int_equal(stin__choice_conflict(&no_map, &sel, STIN_FEATURE_SHADOWS),
                      STIN_TECH_DISPLACEMENT_TESS);
     sel.choice[STIN_FEATURE_DISPLACEMENT].technique = STIN_TECH_DISPLACEMENT_OFF;
-    assert_int_equal(stin__choice_conflict(&sel, STIN_FEATURE_DISPLACEMENT), STIN_TECH_NONE);
+    assert_int_equal(stin__choice_conflict(&no_map, &sel, STIN_FEATURE_DISPLACEMENT), STIN_TECH_NONE);
 }
 
 static void test_texture_unit_budget(void **state)
