@@ -91,9 +91,9 @@
  * the facet, and the side faces the light where its facet or its shading
  * normal does, so a low-poly sphere's lit side has no terminator steps; a
  * triangle whose vertex normals equal its facet normal (planes, boxes) is
- * drawn as before, and displaced draws keep their facets. Volumes do not
- * follow the rule yet, so frames the measured choice (below) may give to
- * volumes keep the facets under vdsm too: a switch changes no pixel. The
+ * drawn as before, and displaced draws keep their facets. Volumes follow
+ * the rule too on closed meshes on the GLSL tiers (see Volumes), so a
+ * switch of the measured choice (below) changes no pixel off a shadow edge. The
  * position stage carries a geometry shader for it. The segment leaves the
  * surface by 2^-13 of the point's largest coordinate along its facet
  * normal (no self-shadowing; contact
@@ -196,7 +196,8 @@
  * what each frame ran. The lit programs are the same for both (one shadow
  * chunk): a switch builds nothing. A frame volumes would not draw the same
  * stays on vdsm and is not a trial: CSG products and displaced draws
- * (vdsm casts them exactly, volumes through a map), blended draws (peeled
+ * (vdsm casts them exactly, volumes through a map), smooth open meshes
+ * (volumes keep their facets, vdsm the terminator rule), blended draws (peeled
  * layers are vdsm's receivers; transparent casters), area lights (vdsm
  * shadows them by 64 segments a pixel, volumes by samples), or a target without
  * a stencil buffer; where such a frame follows a volume frame, the
@@ -295,7 +296,26 @@
  * caster where the near-clip region cannot reach its volume, else z-fail with
  * caps; two-sided stencil with wrap in one pass where present, else two culled
  * passes; casters that are not closed 2-manifolds get generalised volumes (each
- * triangle's own, so open and non-manifold meshes cast without leaks). With a
+ * triangle's own, so open and non-manifold meshes cast without leaks).
+ * The terminator rule (see vdsm) on the GLSL tiers: a visible pixel of a
+ * closed mesh whose facet turns away from the light lies inside that mesh's
+ * volume exactly once, so after each light's (or sample's) volumes are
+ * counted, one more pass draws the closed, smooth, undisplaced opaque
+ * casters with depth EQUAL, keeps only the fragments of the light's
+ * terminator band (facet turned away from the light by its screen
+ * derivatives, shading normal toward it, the curved surface above the
+ * facet) and decrements the count there, clamped at zero: the band is lit
+ * where nothing else lies between it and the light, and a low-poly
+ * sphere's lit side has no steps. It tests from the surface point, the rule
+ * from the curved surface above it (a fraction of a facet apart): on the
+ * repository's scenes they differ on at most one pixel a scene, where a
+ * shadow edge or the mesh's own neighbouring facets pass between the two
+ * (tests/image/shadow_test.c bounds it at 0.01%). Its cost is a pass over
+ * those casters' geometry a light (sample) whose fragments outside the band
+ * are discarded. Open meshes (their volume counts each triangle between a
+ * point and the light, the point's own included) and GL1's fixed function
+ * (no shading normal per pixel) keep the facets: the terminator steps there.
+ * With a
  * perspective projection the frame is drawn with the far plane at infinity
  * (stin_query_frame_projection), so geometry past the caller's far plane shows;
  * orthographic projections use depth clamp. Each volume is cut at a plane
@@ -1099,6 +1119,9 @@ typedef struct stin_desc {
  * visible receivers nor culled against the view (a baseline for tests and
  * the bench) */
 #define STIN_DEBUG_VOLUME_UNBOUNDED 0x2000ull
+/* volumes keep the facets on every tier, as GL1 does: no terminator band
+ * pass (a baseline for the terminator tests and the bench) */
+#define STIN_DEBUG_VOLUME_FACETS 0x4000ull
 /* -- shadows: vdsm (bits 16-23). Its steps, each on by default, off for
  * measurement and tests; the mask is the same without them (NO_GROW: pixels
  * a shadow polygon covers only in part, not at their centre, may be lost -

@@ -302,6 +302,7 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->first_triangle = tfirst;
     m->triangle_count = kept;
     stin__mesh_mean_edges(verts, tris, kept, &m->uv_edge, &m->edge);
+    m->smooth = stin__mesh_smooth(verts, tris, kept);
     m->info.vertex_count = nv;
     m->info.triangle_count = kept;
     m->info.degenerate_dropped = desc->index_count / 3u - kept0;

@@ -46,6 +46,8 @@ typedef struct stin__mesh_slot {
     float uv_edge;            /* mean uv length of its edges (displacement's coarse log) */
     float edge;               /* mean object-space length of its edges (uv_edge / edge:
                                * displacement's uv per unit, its mip level) */
+    int smooth;               /* some triangle's vertex normals bend away from its
+                               * facet: the terminator rule applies (stin__mesh_smooth) */
 } stin__mesh_slot;
 
 typedef struct stin__texture_slot {
@@ -108,6 +110,9 @@ void stin__subdivide(struct stin_context *ctx, stin__vertex *verts, uint32_t ver
 /* Mean uv length and mean object-space length of the triangles' edges. */
 void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
                            float *uv_edge, float *edge);
+/* 1 when a corner's normal leaves its triangle's facet normal by more than
+ * the terminator rule's 1e-6 of the cosine (stin.h, "The terminator rule"). */
+int stin__mesh_smooth(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count);
 void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
                                 const uint32_t *tris, uint32_t tri_count);
 

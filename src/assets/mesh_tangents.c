@@ -23,6 +23,33 @@ static float dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1
 
 static int normalize3(float v[3]) { return stin__normalize3(v); }
 
+int stin__mesh_smooth(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count)
+{
+    uint32_t t;
+    int k;
+    for (t = 0; t < tri_count; t++) {
+        const uint32_t *tri = tris + 3u * t;
+        float e1[3], e2[3], facet[3];
+        sub3(e1, verts[tri[1]].position, verts[tri[0]].position);
+        sub3(e2, verts[tri[2]].position, verts[tri[0]].position);
+        cross3(facet, e1, e2);
+        if (!normalize3(facet))
+            continue;
+        for (k = 0; k < 3; k++) {
+            float n[3], c;
+            n[0] = verts[tri[k]].normal[0];
+            n[1] = verts[tri[k]].normal[1];
+            n[2] = verts[tri[k]].normal[2];
+            if (!normalize3(n))
+                continue;
+            c = dot3(n, facet); /* either way round */
+            if (c * c < (1.0f - 1e-6f) * (1.0f - 1e-6f))
+                return 1;
+        }
+    }
+    return 0;
+}
+
 /* Face normals are taken on positions divided by the largest coordinate
  * (in double), so that their products neither overflow nor underflow at
  * any scale; the common factor leaves the area weighting as it is. */

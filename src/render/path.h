@@ -41,7 +41,14 @@ typedef struct stin__translucent_locs {
 } stin__translucent_locs;
 
 /* GLSL programs of one tier. */
-enum { STIN__PROG_LIT = 0, STIN__PROG_NORMAL, STIN__PROG_FLAT, STIN__PROG_VOLUME, STIN__PROG_COUNT };
+enum {
+    STIN__PROG_LIT = 0,
+    STIN__PROG_NORMAL,
+    STIN__PROG_FLAT,
+    STIN__PROG_VOLUME,
+    STIN__PROG_BAND,
+    STIN__PROG_COUNT
+};
 #define STIN__LIGHTS_PER_PASS 8
 typedef struct stin__program {
     GLuint name;
@@ -111,6 +118,12 @@ typedef struct stin__path {
      * the lit program (frame/frame.c's forward pass). NULL: the path has
      * none (fixed function: its test takes passes of its own). */
     void (*lit_ambient)(stin_context *ctx, const stin_light_desc *light);
+    /* A draw's fragments in the terminator band of the light at `light`
+     * (position, w 1, or direction toward it, w 0): facet turned away from
+     * it, shading normal toward it; the others discarded, depth EQUAL, the
+     * stencil state the caller's (shadow/volume.c). NULL: the path cannot
+     * tell them (fixed function keeps the facets). */
+    void (*terminator_band)(stin_context *ctx, const stin__draw *d, const float light[4]);
 } stin__path;
 
 const stin__path *stin__fixed_path(void);

@@ -428,6 +428,6 @@ const stin__path *stin__fixed_path(void)
                                     fixed_volume_draw,  fixed_volume_end,  fixed_batches,
                                     fixed_normals,      fixed_depth,       NULL,
                                     fixed_geometry_begin, draw_mesh,       fixed_geometry_end,
-                                    fixed_blended_one,  NULL};
+                                    fixed_blended_one,  NULL,              NULL};
     return &path;
 }

@@ -6,9 +6,9 @@
 #include "render/glsl_private.h"
 
 static const char *const vert_names[STIN__PROG_COUNT] = {"lit.vert", "lit.vert", "lit.vert",
-                                                         "volume.vert"};
-static const char *const frag_names[STIN__PROG_COUNT] = {"lit.frag", "normal.frag", "flat.frag",
-                                                         "flat.frag"};
+                                                         "volume.vert", "lit.vert"};
+static const char *const frag_names[STIN__PROG_COUNT] = {
+    "lit.frag", "normal.frag", "flat.frag", "flat.frag", "terminator_band.frag"};
 /* a program's fragment chunks, the shadow technique's and the features'
  * (render/path_features.h): at most what gl/shader.c splices */
 #define LIT_CHUNKS 6
@@ -742,6 +742,18 @@ static void glsl_blended_one(stin_context *ctx, const stin__draw *d, const stin_
     ctx->stats.passes++;
 }
 
+static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const float light[4])
+{
+    const stin__program *p = use(ctx, STIN__PROG_BAND);
+    float inv[16];
+    stin__mat4_invert(inv, ctx->frame.view);
+    GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
+    GL(ctx, Uniform4fv)(p->u_color, 1, light);
+    ctx->bound_mesh = 0xffffffffu;
+    submit(ctx, p, d);
+    ctx->bound_mesh = 0xffffffffu;
+}
+
 const stin__path *stin__glsl_path(void)
 {
     static const stin__path path = {glsl_begin,       glsl_end,        glsl_ambient,
@@ -749,7 +761,7 @@ const stin__path *stin__glsl_path(void)
                                     glsl_volume_draw, glsl_volume_end, glsl_batches,
                                     glsl_normals,     glsl_depth,      glsl_lit_lights,
                                     glsl_geometry_begin, glsl_geometry, glsl_geometry_end,
-                                    glsl_blended_one, glsl_lit_ambient};
+                                    glsl_blended_one, glsl_lit_ambient, glsl_terminator_band};
     return &path;
 }
 

@@ -294,9 +294,3 @@ void stin__choice_end(stin_context *ctx)
     for (c = 0; c < CANDIDATES; c++)
         st->choice_ms[c] = s->ms[c];
 }
-
-int stin__choice_mixes(const stin_context *ctx)
-{
-    const struct stin__choice_state *s = ctx->choice;
-    return s && s->on && !s->begin_on_vdsm;
-}

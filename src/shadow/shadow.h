@@ -146,11 +146,6 @@ const stin__shadow_technique *stin__choice_begin(stin_context *ctx);
  * stin_frame_stats.shadows.choice_*. */
 void stin__choice_plan(stin_context *ctx, int volumes_draw);
 void stin__choice_end(stin_context *ctx);
-/* After the plan: 1 when the choice may draw frames like this one with
- * volumes, so vdsm must shadow them as volumes do (self-shadowing by the
- * facet at a smooth mesh's terminator, until volumes take the terminator
- * rule): a switch then changes no pixel. */
-int stin__choice_mixes(const stin_context *ctx);
 
 /* ---- shared by the modules ------------------------------------------------ */
 /* One light (sample) of stencil shadow volumes: leaves the stencil test set to

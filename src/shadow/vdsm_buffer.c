@@ -139,14 +139,12 @@ static void use_position_program(stin_context *ctx)
 
 /* A draw into the position buffer with its normal matrix for the terminator
  * rule (vdsm_position.geom): a zero one keeps the facets where the vertex
- * normals do not describe the drawn surface (displaced, a CSG cap), and in
- * frames the measured choice may draw with volumes (shadow.h). */
+ * normals do not describe the drawn surface (displaced, a CSG cap). */
 static void submit(stin_context *ctx, const stin__draw *d)
 {
     struct stin__vdsm_state *v = ctx->vdsm;
     float nm[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
-    if (d->csg != STIN__CSG_CAP && !stin__displace_active(ctx, &d->material) &&
-        !stin__choice_mixes(ctx))
+    if (d->csg != STIN__CSG_CAP && !stin__displace_active(ctx, &d->material))
         stin__mat3_normal(nm, d->transform);
     GL(ctx, UniformMatrix3fv)(v->pos_normal_matrix, 1, GL_FALSE, nm);
     stin__glsl_submit_geometry(ctx, v->pos_model, &v->pos_displace, d);

@@ -262,6 +262,39 @@ static void lit_where_zero(stin__pass_state *ps)
     ps->front.zpass = GL_INCR;
 }
 
+/* The terminator rule (stin.h): a visible pixel of a closed mesh's facet
+ * turned away from the light lies inside that mesh's volume exactly once
+ * (the eye's ray enters it through a side face; z-fail: leaves it once
+ * behind). Where its shading normal turns toward the light it is lit by
+ * its own mesh, so its band takes that count back, clamped at zero, after
+ * every volume counted: the lit pass's "count zero" is then the rule's.
+ * Open meshes (per-triangle volumes), displaced and CSG draws keep facets. */
+static void take_back_own_volume(stin_context *ctx, const stin__path *path,
+                                 const float light_world[4])
+{
+    stin__pass_state ps = *stin__pass_current(ctx);
+    uint32_t i;
+    if (!path->terminator_band || (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_FACETS))
+        return;
+    ps.two_sided = 0;
+    ps.cull = 0;
+    ps.front_face = GL_CCW;
+    ps.depth_clamp = 0;
+    ps.depth_func = GL_EQUAL;
+    ps.front.func = GL_ALWAYS;
+    ps.front.fail = ps.front.zfail = GL_KEEP;
+    ps.front.zpass = GL_DECR;
+    stin__pass_apply(ctx, &ps);
+    for (i = 0; i < ctx->draw_count; i++) {
+        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
+        if (d->shadow_caster && !d->csg && d->material.color[3] >= 1.0f &&
+            !stin__cast_map_casts(ctx, d) && ctx->meshes[d->mesh_slot].info.closed_manifold)
+            path->terminator_band(ctx, d, light_world);
+    }
+    ps.depth_func = GL_LESS;
+    stin__pass_apply(ctx, &ps);
+}
+
 void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
                         const int scissor[4])
 {
@@ -337,6 +370,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         }
     }
     path->volume_end(ctx);
+    take_back_own_volume(ctx, path, light_world);
     ps = *stin__pass_current(ctx);
     ps.front_face = GL_CCW;
     ps.cull = 0;

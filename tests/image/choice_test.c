@@ -26,10 +26,9 @@
  *                interpolated surface point moves an edge by up to 1e-5 of
  *                the eye distance, and the two draw the depth with
  *                different far planes).
- *                Until volumes adopt the terminator rule, vdsm shadows the
- *                frames the choice may give to volumes by the facet as
- *                volumes do (stin.h), so every frame is compared with the
- *                reference's facet rule and a switch must change no pixel.
+ *                Both follow the terminator rule (stin.h), so every frame
+ *                is compared with the reference's rule and a switch must
+ *                change no pixel.
  *   choice-ran   frames of at least two techniques ran, none was built a
  *                lit program after the warm-up (one shadow chunk for both),
  *                and no GL error or call outside the profile.
@@ -102,10 +101,7 @@ static void test_vis(const vdsm_case *c, const capture *base, const frame_vis *f
         report(c->r, "FAIL", name, "out of memory");
         return;
     }
-    /* frames the choice mixes decide self-shadowing by the facet, both techniques */
-    reference_facet_terminator((reference *)c->refr, 1);
     differ = vdsm_mismatches(c, &cap, &compared, &ambig, &isolated, &edge);
-    reference_facet_terminator((reference *)c->refr, 0);
     if (f->technique == STIN_SHADOW_CHOICE_VDSM)
         ok = differ == 0;
     else

@@ -28,6 +28,14 @@
 #include <string.h>
 
 #define VIS_MAX_MISMATCH 0.001
+/* A pixel in a light's terminator band (reference_terminator_band) is lit
+ * by volumes where its stencil count at P, less its own mesh's volume, is
+ * zero; the reference casts from the curved surface above P instead. The
+ * two points lie a fraction of a facet apart, so they disagree only where a
+ * shadow edge, or the mesh's own neighbouring facets (a torus's inner
+ * ring), pass between them: at most this share of the compared pixels
+ * (measured on the repository's scenes: at most 1 pixel a scene). */
+#define BAND_MAX_MISMATCH 0.0001
 #define ADDITIVITY_TOLERANCE (1.0 / 255.0)
 
 typedef struct shadow_case {
@@ -164,7 +172,7 @@ static void test_visibility(const shadow_case *c, const capture *cap)
     int w = c->r->width, h = c->r->height, x, y;
     /* one sample's worth, less what 8-bit accumulation can add up to */
     double threshold = 0.5 / c->samples;
-    long compared = 0, differ = 0, far = 0, edge_on = 0, penumbra = 0;
+    long compared = 0, differ = 0, far = 0, edge_on = 0, penumbra = 0, band = 0;
     char name[256], soft[96];
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
@@ -181,6 +189,14 @@ static void test_visibility(const shadow_case *c, const capture *cap)
                 continue;
             if (grazing(c, &c->hits[(size_t)y * w + x])) {
                 edge_on++; /* rounding decides: outside the budget */
+                continue;
+            }
+            if (c->tier != STIN_TIER_GL1 &&
+                reference_terminator_band(c->refr, &c->hits[(size_t)y * w + x], 0)) {
+                band++;
+                if (getenv("STIN_TEST_VERBOSE"))
+                    fprintf(stderr, "  band mismatch at pixel %d,%d: stin %.3f, reference %.3f\n",
+                            x, h - 1 - y, g[AOV_VIS_R], ref[REFERENCE_CH_VIS_R]);
                 continue;
             }
             differ++;
@@ -206,14 +222,16 @@ static void test_visibility(const shadow_case *c, const capture *cap)
         snprintf(soft, sizeof soft, ", %ld in an area light's penumbra (soft-volume measures them)",
                  penumbra);
     /* an area light has one shadow boundary per sample: 0.1% for each */
-    report(c->r, compared && differ <= VIS_MAX_MISMATCH * c->samples * compared && far == 0
+    report(c->r, compared && differ <= VIS_MAX_MISMATCH * c->samples * compared && far == 0 &&
+                         band <= BAND_MAX_MISMATCH * compared
                      ? "PASS" : "FAIL",
            name, "visibility differs on %ld of %ld pixels (%.4f%%; at most 0.1%% a sample), %ld of them "
            "farther than one pixel from a reference shadow boundary (must be 0); not counted: %ld "
            "on a shadow edge in light space (0.1 degree from edge-on, or a 0.1%% light move "
-           "changes them)%s; %d sample%s",
-           differ, compared, compared ? 100.0 * differ / compared : 0.0, far, edge_on, soft,
-           c->samples, c->samples == 1 ? "" : "s");
+           "changes them)%s; %ld in a terminator band (at most %.0f: the count at P, the "
+           "reference from the curved surface); %d sample%s",
+           differ, compared, compared ? 100.0 * differ / compared : 0.0, far, edge_on, soft, band,
+           BAND_MAX_MISMATCH * compared, c->samples, c->samples == 1 ? "" : "s");
 }
 
 static void test_clean(const shadow_case *c, const capture *cap)
@@ -456,8 +474,10 @@ void shadow_tests(run *r, stin_tier tier, const char *path)
     if (!s.light_count)
         goto done;
     ref = reference_create(&s, err, sizeof err);
-    /* volumes still decide self-shadowing by the facet (issue 37) */
-    reference_facet_terminator(ref, 1);
+    /* volumes take the terminator rule on closed meshes where GLSL tells a
+     * pixel's shading normal; GL1's fixed function keeps the facets */
+    reference_facet_terminator(ref, tier == STIN_TIER_GL1 ? REFERENCE_FACETS_ALL
+                                                          : REFERENCE_FACETS_OPEN);
     hits = malloc(sizeof *hits * (size_t)r->width * r->height);
     refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
     if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||

@@ -71,9 +71,13 @@ int reference_hit_on_plane(const reference *r, int width, int height, const ref_
 /* The terminator rule stin's per-pixel techniques share (vdsm): a smooth
  * triangle's ray starts on the surface its vertex normals describe and its
  * side faces a light by its facet or its shading normal (reference_rays.c
- * smooth_start). The default. on = 1 goes back to the facet rule for a
- * technique that still decides self-shadowing by the facet (issue 37 leaves
- * volumes and the shadow maps open): the ray from P, facing by the facet. */
+ * smooth_start). The default (REFERENCE_FACETS_NONE). REFERENCE_FACETS_ALL
+ * goes back to the facet rule for a technique that still decides
+ * self-shadowing by the facet (GL1's volumes, the fixed-function maps): the
+ * ray from P, facing by the facet. REFERENCE_FACETS_OPEN keeps it for the
+ * objects that are not closed 2-manifolds only (stin's volumes on the GLSL
+ * tiers: an open mesh's volume is every triangle's own). */
+enum { REFERENCE_FACETS_NONE = 0, REFERENCE_FACETS_ALL = 1, REFERENCE_FACETS_OPEN = 2 };
 void reference_facet_terminator(reference *r, int on);
 
 /* Geometric visibility of light `light` from a hit: 1 when the segment from P
@@ -83,6 +87,13 @@ void reference_facet_terminator(reference *r, int on);
  * treated as points (radius ignored; see reference_light_visibility).
  * Background hits and bad light indices give 1. */
 float reference_visibility(const reference *r, const ref_hit *hit, int light);
+
+/* 1 when the hit lies in light `light`'s terminator band under the rule:
+ * its ray starts on the curved surface above the facet, the facet (the
+ * side the eye sees) turns away from the light and the shading normal
+ * toward it. Stin's volumes decide these pixels by the stencil count at P
+ * less the mesh's own volume, not by that ray (shadow_test.c). */
+int reference_terminator_band(const reference *r, const ref_hit *hit, int light);
 
 /* As reference_visibility with the ray leaving P by `offset` world units
  * (> 0) along Ng instead of the scene epsilon: for techniques that offset

@@ -14,7 +14,12 @@ typedef struct ref_object {
     float *normals;     /* world, 3 per vertex, unit or zero (singular transform, no normals) */
     float *uvs;         /* 2 per vertex, or NULL */
     uint32_t *indices;  /* 3 per triangle, validated against vertex_count */
+    int closed;         /* a closed 2-manifold (ref_object_closed) */
 } ref_object;
+
+/* 1 when o is a closed, consistently oriented 2-manifold after welding
+ * vertices at equal positions (reference_closed.c). */
+int ref_object_closed(const ref_object *o);
 
 struct reference {
     const scene *s;     /* camera and lights are read from here at call time */
@@ -24,7 +29,7 @@ struct reference {
     ref_object *objects;
     double eps;         /* visibility ray offset, REFERENCE_EPS_SCALE * scene extent */
     unsigned area_samples; /* directions an area light is integrated with, REFERENCE_AREA_SAMPLES */
-    int facet_terminator; /* 1: every triangle decides by its facet (reference_facet_terminator) */
+    int facet_terminator; /* REFERENCE_FACETS_*: which triangles decide by their facet */
     unsigned char *csg_primitive; /* per object, or NULL: 1 for a CSG primitive, which
                                    * neither shows on its own nor casts (reference_csg.h) */
     struct ref_csg_cast *csg_cast; /* products that cast (reference_csg_cast), or NULL */

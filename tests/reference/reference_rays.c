@@ -235,7 +235,9 @@ void ref_smooth_start(const reference *r, const ref_hit *hit, double side, doubl
         org[c] = P[c];
         facing[c] = side * Ng[c];
     }
-    if (r->facet_terminator || (uint32_t)hit->prim >= o->triangle_count)
+    if (r->facet_terminator == REFERENCE_FACETS_ALL ||
+        (r->facet_terminator == REFERENCE_FACETS_OPEN && !o->closed) ||
+        (uint32_t)hit->prim >= o->triangle_count)
         return;
     for (c = 0; c < 3; c++) {
         e1[c] = (double)o->positions[3 * (size_t)tri[1] + c] - o->positions[3 * (size_t)tri[0] + c];
@@ -352,6 +354,22 @@ float reference_visibility_offset(const reference *r, const ref_hit *hit, int li
     for (int c = 0; c < 3; c++)
         to[c] = directional ? -(double)l->direction[c] : (double)l->position[c];
     return visible_off(r, hit, to, directional, offset);
+}
+
+int reference_terminator_band(const reference *r, const ref_hit *hit, int light)
+{
+    if (!r || !hit || !hit->hit || light < 0 || light >= r->s->light_count)
+        return 0;
+    const scene_light *l = &r->s->lights[light];
+    double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], facing[3], dir[3];
+    double side = ref_eye_side(r, hit, 1.0), moved = 0.0;
+    ref_smooth_start(r, hit, side, org, facing);
+    for (int c = 0; c < 3; c++) {
+        dir[c] = l->type == SCENE_LIGHT_DIRECTIONAL ? -(double)l->direction[c]
+                                                    : (double)l->position[c] - org[c];
+        moved += fabs(org[c] - (double)hit->P[c]);
+    }
+    return moved > 0.0 && side * dot3(Ng, dir) <= 0.0 && dot3(facing, dir) > 0.0;
 }
 
 float reference_visibility(const reference *r, const ref_hit *hit, int light)

@@ -108,6 +108,7 @@ static int copy_object(const scene *s, int index, ref_object *o, char *err, size
         memcpy(o->indices, m->indices, 3 * nt * sizeof(uint32_t));
     if (o->uvs && nv > 0)
         memcpy(o->uvs, m->uvs, 2 * nv * sizeof(float));
+    o->closed = ref_object_closed(o);
     return 1;
 }
 

@@ -35,7 +35,8 @@ void render_usage(FILE *f)
                "                            (default: the scene's shadow_map_size, else 1024)\n"
                "  --max-triangles N         work limit: triangles one frame may draw, instances x\n"
                "                            triangles (default %u; 0 = no limit)\n"
-               "  --volume-mode auto|zpass|zfail  shadow-volume counting (diagnostics)\n"
+               "  --volume-mode auto|zpass|zfail|facets  shadow-volume counting, or facets\n"
+               "                            at the terminator (diagnostics)\n"
                "  --debug shadow-map|volumes|masks  (repeatable) pictures of the shadows' parts:\n"
                "                            OUT-shadow-map-I.png per spot/directional light's map,\n"
                "                            the volumes added over the beauty in orange,\n"
@@ -176,8 +177,9 @@ int render_parse_args(int argc, char **argv, options *o)
             i++;
             if (!strcmp(v, "zpass")) o->debug_flags |= STIN_DEBUG_VOLUME_ZPASS;
             else if (!strcmp(v, "zfail")) o->debug_flags |= STIN_DEBUG_VOLUME_ZFAIL;
+            else if (!strcmp(v, "facets")) o->debug_flags |= STIN_DEBUG_VOLUME_FACETS;
             else if (strcmp(v, "auto")) {
-                fprintf(stderr, "stin-render: --volume-mode wants auto, zpass or zfail\n");
+                fprintf(stderr, "stin-render: --volume-mode wants auto, zpass, zfail or facets\n");
                 return 0;
             }
         } else if (!strcmp(a, "--debug")) {

@@ -1,0 +1,39 @@
+#version 110
+// SPDX-License-Identifier: MIT
+// The terminator band of a light (shadow/volume.c): fragments whose facet
+// turns away from the light while their shading normal (the terminator
+// rule's, as shadow_pcf.glsl has it) turns toward it; every other fragment
+// is discarded. On a closed mesh such a fragment lies inside its own
+// mesh's volume once, and this pass takes that count back.
+uniform vec4 u_color; // the light: its position (w 1) or the direction toward it (w 0)
+uniform vec3 u_eye;
+varying vec3 v_world;
+varying vec3 v_normal;
+varying vec3 v_plane_dn; // the terminator rule's tangent planes (lit.vert)
+varying vec3 v_plane_nn;
+varying vec3 v_plane_nx;
+
+void main()
+{
+    vec3 ng = normalize(cross(dFdx(v_world), dFdy(v_world)));
+    if (dot(ng, u_eye - v_world) < 0.0)
+        ng = -ng;
+    mat3 nn = mat3(v_plane_nn.x, v_plane_nx.x, v_plane_nx.y,
+                   v_plane_nx.x, v_plane_nn.y, v_plane_nx.z,
+                   v_plane_nx.y, v_plane_nx.z, v_plane_nn.z);
+    // a flat triangle (every corner's normal its facet's) or one that keeps
+    // its facets (u_terminator 0) has no band
+    if (v_plane_nn.x + v_plane_nn.y + v_plane_nn.z < 0.5 || dot(ng, nn * ng) >= 1.0 - 1e-6)
+        discard;
+    // where the curved surface lies below the facet (a concave corner) the
+    // rule keeps the position, whose way to the light crosses its own facet
+    vec3 lift = v_plane_dn - nn * v_world;
+    if (dot(lift, ng) <= 0.0)
+        discard;
+    vec3 world = v_world + lift;
+    vec3 s = normalize(v_normal);
+    vec3 to_light = u_color.w == 0.0 ? u_color.xyz : u_color.xyz - world;
+    if (dot(ng, to_light) > 0.0 || dot(dot(s, ng) < 0.0 ? -s : s, to_light) <= 0.0)
+        discard;
+    gl_FragColor = vec4(0.0);
+}
