@@ -118,12 +118,14 @@ typedef struct stin__path {
      * the lit program (frame/frame.c's forward pass). NULL: the path has
      * none (fixed function: its test takes passes of its own). */
     void (*lit_ambient)(stin_context *ctx, const stin_light_desc *light);
-    /* A draw's fragments in the terminator band of the light at `light`
-     * (position, w 1, or direction toward it, w 0): facet turned away from
-     * it, shading normal toward it; the others discarded, depth EQUAL, the
-     * stencil state the caller's (shadow/volume.c). NULL: the path cannot
-     * tell them (fixed function keeps the facets). */
-    void (*terminator_band)(stin_context *ctx, const stin__draw *d, const float light[4]);
+    /* The fragments of d's triangles tris[0..3n) (indices into its mesh)
+     * in the terminator band of the light at `light` (world position, w 1,
+     * or direction toward it, w 0): facet turned away from it, shading
+     * normal toward it; the others discarded, depth EQUAL, the stencil
+     * state the caller's (shadow/volume.c). NULL: the path cannot tell them
+     * (fixed function keeps the facets). */
+    void (*terminator_band)(stin_context *ctx, const stin__draw *d, const float light[4],
+                            const uint32_t *tris, uint32_t n);
 } stin__path;
 
 const stin__path *stin__fixed_path(void);

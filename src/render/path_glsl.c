@@ -423,7 +423,7 @@ void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__di
 
 /* The one geometry submission of the GLSL path: a draw's transform and
  * mesh through program p (its normal matrix where p has one). */
-static void submit(stin_context *ctx, const stin__program *p, const stin__draw *d)
+static void draw_uniforms(stin_context *ctx, const stin__program *p, const stin__draw *d)
 {
     if (p->u_normal_matrix >= 0) {
         float nm[9];
@@ -440,6 +440,11 @@ static void submit(stin_context *ctx, const stin__program *p, const stin__draw *
                            d->csg == STIN__CSG_CAP || stin__displace_active(ctx, &d->material)
                                ? 0.0f
                                : 1.0f);
+}
+
+static void submit(stin_context *ctx, const stin__program *p, const stin__draw *d)
+{
+    draw_uniforms(ctx, p, d);
     stin__glsl_submit_geometry(ctx, p->u_model, &p->displace, d);
 }
 
@@ -742,15 +747,37 @@ static void glsl_blended_one(stin_context *ctx, const stin__draw *d, const stin_
     ctx->stats.passes++;
 }
 
-static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const float light[4])
+/* Some triangles of a mesh: indices from client memory, or on core
+ * profiles through the volumes' stream buffer bound as the element array
+ * (the mesh's own put back after). */
+static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const float light[4],
+                                 const uint32_t *tris, uint32_t n)
 {
     const stin__program *p = use(ctx, STIN__PROG_BAND);
+    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+    const void *idx = tris;
     float inv[16];
+    if (!in_set(ctx, d, STIN__OPAQUE))
+        return; /* not in the frame's depth */
     stin__mat4_invert(inv, ctx->frame.view);
     GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
     GL(ctx, Uniform4fv)(p->u_color, 1, light);
+    draw_uniforms(ctx, p, d);
+    GL(ctx, UniformMatrix4fv)(p->u_model, 1, GL_FALSE, d->transform);
+    stin__displace_draw(ctx, &p->displace, d);
     ctx->bound_mesh = 0xffffffffu;
-    submit(ctx, p, d);
+    bind_mesh_arrays(ctx, m, d->mesh_slot);
+    if (gl4(ctx)) {
+        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, ctx->volume_vbo);
+        GL(ctx, BufferData)(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(12u * n), tris, GL_STREAM_DRAW);
+        idx = NULL;
+    } else if (m->vbo) {
+        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
+    }
+    GL(ctx, DrawElements)(stin__displace_primitive(&p->displace), (GLsizei)(3u * n),
+                          GL_UNSIGNED_INT, idx);
+    if (gl4(ctx) || m->vbo)
+        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
     ctx->bound_mesh = 0xffffffffu;
 }
 
