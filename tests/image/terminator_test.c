@@ -12,9 +12,8 @@
  * Per shadow technique the tier runs: vdsm and volumes are exact, so none
  * may be shadowed; the maps' depth resolution allows acne on at most
  * MAP_BUDGET of those pixels at their default size. A technique that still
- * decides self-shadowing by the facet (issue 37 leaves volumes and the
- * fixed-function maps open; volumes keep facets on GL1) reports SKIP with
- * its count until it adopts the rule.
+ * decides self-shadowing by the facet (GL1's fixed-function volumes and
+ * maps) reports SKIP with its count until it adopts the rule.
  */
 #include "image_test.h"
 #include "reference.h"
