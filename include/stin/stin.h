@@ -269,7 +269,36 @@
  * test reference decide. Within about a texel of the light's silhouette (the
  * terminator) the side map may name the neighbouring facet's side. Without
  * a spare texture unit the side test is left out (logged at create).
- * "map-combine" has no side test: it lights such surfaces.
+ * The terminator test (where there are FBOs and two more texture units:
+ * four after the surface technique's, five with point lights' faces, which
+ * DOT3's optional albedo unit then yields; else logged at create and the
+ * facet decides as above), in frames whose every shadow caster is a closed
+ * mesh and not two_sided, with no CSG product (an open surface's own steep
+ * back, seen by the light through an opening, cannot be told from a solid's
+ * far side; such frames keep the facet): map-depth's maps are second-depth
+ * maps, closed
+ * meshes whose material is not two_sided drawing only their faces turned
+ * away from the light (at half the offset's slope factor). A lit surface so
+ * compares against its
+ * own far side, and a pixel whose facet turns from the light compares
+ * against itself. The side map is drawn the same way, white where the
+ * light's diffuse term at the vertex normals is positive (saturated at N.L
+ * = 1/8). A fragment is lit where the depth test passes and either the
+ * stored surface lies 1.5 texels' depth behind it (a second lookup of the
+ * same map: the lit side of a solid) or the side map says the light sees
+ * the side the eye sees: the band between a facet turned from the light and
+ * a shading normal turned to it is lit (no terminator steps, no acne on the
+ * lit side of a lone convex mesh: tests/image/terminator_test.c, 0-1
+ * pixels of 7,938-13,478 with N.L > 0.05 shadowed where up to 964 were),
+ * and the side turned from the light keeps its shadow. A closed solid
+ * thinner than 1.5 texels' depth is lit on its facing side only where its
+ * shading normals face the light; which is why maps drawn without FBOs (at
+ * most the viewport's size) keep the facet.
+ * "map-combine" has no side test: it lights such surfaces. It keeps
+ * first-depth maps and the facet (terminator steps, and stripes where a
+ * receiver grazes the light): its bias is one plane in the light's depth,
+ * as wide as a sphere resting on a floor is tall at 128 texels, so a
+ * second-depth map would let such a solid light the floor under it.
  * "map-combine" needs only texture_env_combine:
  * the light's depth drawn as an 8-bit ramp over a near/far fitted to the draws,
  * compared in the combiner, kept by the alpha test. Its bias (1.5 ramp steps
@@ -635,8 +664,9 @@ const char *stin_feature_name(stin_feature f);
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 1 (a light's map or a point light's atlas); map-depth 1 (plus 1
- * for its side test and 1 for point-light faces, each when there is one to
- * spare); map-combine 2; deep and coloured
+ * for its side test, 2 for its terminator test and 1 for point-light faces,
+ * each when there is one to spare; dot3's unit 3 goes only to what is left
+ * after these four); map-combine 2; deep and coloured
  * 2. Surface units follow the albedo, shadow units follow the surface's,
  * translucent shadows' the shadows'.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map

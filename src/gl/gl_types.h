@@ -43,6 +43,7 @@ typedef void GLvoid;
 #define GL_ZERO 0
 #define GL_ONE 1
 #define GL_SRC_COLOR 0x0300
+#define GL_ONE_MINUS_SRC_COLOR 0x0301
 #define GL_SRC_ALPHA 0x0302
 #define GL_ONE_MINUS_SRC_ALPHA 0x0303
 #define GL_DST_ALPHA 0x0304
@@ -98,6 +99,7 @@ typedef void GLvoid;
 #define GL_VERSION 0x1F02
 #define GL_EXTENSIONS 0x1F03
 #define GL_MODULATE 0x2100
+#define GL_ADD 0x0104
 #define GL_TEXTURE_ENV_MODE 0x2200
 #define GL_TEXTURE_ENV 0x2300
 #define GL_TEXTURE_ENV_COLOR 0x2201

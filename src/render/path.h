@@ -94,8 +94,10 @@ typedef struct stin__path {
     /* World normals as 0.5 + 0.5 n. */
     void (*normals)(stin_context *ctx);
     /* Every draw's depth seen through view_proj (light views, matrices
-     * restored after), no materials: shadow-map casters. */
-    void (*depth)(stin_context *ctx, const float view[16], const float proj[16]);
+     * restored after), no materials: shadow-map casters. far_side: closed
+     * meshes whose material is not two_sided draw only the faces turned
+     * away from the view (second-depth maps). */
+    void (*depth)(stin_context *ctx, const float view[16], const float proj[16], int far_side);
     /* Opaque draws lit by lights[0..n) in one additive pass; light i reads
      * channel i of the screen mask where one is bound (render/screen_mask.c). NULL:
      * the path has no masks (fixed function). */

@@ -180,8 +180,10 @@ static void draw_set(stin_context *ctx, int which, int materials)
 
 /* Every draw's geometry seen from a light (its view and projection), no
  * materials: shadow-map casters. The camera's view comes back after. */
-static void fixed_depth(stin_context *ctx, const float view[16], const float proj[16])
+static void fixed_depth(stin_context *ctx, const float view[16], const float proj[16],
+                        int far_side)
 {
+    stin__pass_state caller = *stin__pass_current(ctx), ps = caller;
     float saved_view[16];
     uint32_t i;
     GL(ctx, MatrixMode)(GL_PROJECTION);
@@ -191,9 +193,19 @@ static void fixed_depth(stin_context *ctx, const float view[16], const float pro
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++) { /* casters the translucent choice keeps */
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        if (in_set(d, STIN__ALL) && d->shadow_caster)
-            draw_mesh(ctx, d);
+        if (!in_set(d, STIN__ALL) || !d->shadow_caster)
+            continue;
+        if (far_side) { /* a closed solid's far side casts the same shadow */
+            ps.cull = !d->material.two_sided && ctx->meshes[d->mesh_slot].info.closed_manifold;
+            ps.cull_face = stin__mat4_det(d->transform) < 0.0 ? GL_BACK : GL_FRONT;
+            /* half the slope term: the full one pushes the steep far faces
+             * of a solid resting on a receiver past it (its shadow shrinks) */
+            ps.offset_factor = ps.cull ? 0.5f * caller.offset_factor : caller.offset_factor;
+            stin__pass_apply(ctx, &ps);
+        }
+        draw_mesh(ctx, d);
     }
+    stin__pass_apply(ctx, &caller);
     ctx->bound_mesh = 0xffffffffu; /* CSG products: csg/cast.c, before these */
     stin__memcopy(ctx->frame.view, saved_view, sizeof saved_view);
 }

@@ -709,8 +709,10 @@ uint32_t stin__glsl_depth_kept(stin_context *ctx, const float view[16], const fl
     return drawn;
 }
 
-static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16])
+static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16],
+                       int far_side)
 {
+    (void)far_side; /* the fixed-function maps' option; the GLSL maps lift their lookups */
     (void)stin__glsl_depth_kept(ctx, view, proj, NULL, NULL);
 }
 

@@ -18,7 +18,9 @@
  * reference. A draw mirrored by its transform flips both rasterisers alike;
  * a mirrored camera (det(projection * view) > 0) swaps the culled faces.
  * GL 1.1 means only, on a texture unit after the depth compare; without a
- * spare unit the test is left out (logged). */
+ * spare unit the test is left out (logged). With the terminator test
+ * (shadow/map_terminator.c) the side map is drawn from the faces a
+ * second-depth map keeps, lit by the light (INTENSITY8: the side in alpha). */
 #include "shadow/map_fixed_private.h"
 
 static void create_facing_texture(stin_context *ctx, GLuint *t, uint32_t size, GLenum format)
@@ -39,6 +41,17 @@ void stin__map_facing_init(stin_context *ctx, int units_after)
         return;
     }
     m->facing_test = 1;
+    /* without FBOs the map is at most the viewport's size: its texels are
+     * too coarse for the terminator test's margin (map_terminator.c) */
+    if (m->fbo && m->unit + 2 + stin__map_terminator_units() + units_after <=
+                      ctx->caps.max_texture_units)
+        m->terminator = 1;
+    else
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                  "shadows: map-depth's terminator test needs framebuffer objects and %d texture "
+                  "units spare (%d units): self-shadowing is decided by the facet (terminator "
+                  "steps, acne)",
+                  stin__map_terminator_units(), ctx->caps.max_texture_units);
     if (!m->fbo)
         return; /* drawn in the frame's own buffer, like the map */
     create_facing_texture(ctx, &m->facing_color, m->size, GL_RGBA8);
@@ -55,7 +68,7 @@ void stin__map_facing_create(stin_context *ctx, uint32_t slot)
 {
     if (ctx->map_fixed->facing_test)
         create_facing_texture(ctx, &ctx->map_fixed->facing[slot], ctx->map_fixed->size,
-                              GL_LUMINANCE8);
+                              ctx->map_fixed->terminator ? GL_INTENSITY8 : GL_LUMINANCE8);
 }
 
 void stin__map_facing_release(stin_context *ctx)
@@ -94,8 +107,8 @@ static void side_colours(stin_context *ctx, int on)
     GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, black);
 }
 
-void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16],
-                           const float proj[16])
+void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
+                           const float view[16], const float proj[16])
 {
     struct stin__map_fixed_state *m = ctx->map_fixed;
     stin__pass_state ps = *stin__pass_current(ctx); /* the map pass's viewport and scissor */
@@ -124,7 +137,9 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16
                             !m->fbo && stin__target_has_stencil(ctx));
         GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, black);
     }
-    stin__fixed_path()->depth(ctx, view, proj);
+    if (m->lifted)
+        stin__map_terminator_side_colours(ctx, l, view);
+    stin__fixed_path()->depth(ctx, view, proj, m->lifted);
     side_colours(ctx, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing[slot]);
     GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, x, y, (GLsizei)m->used, (GLsizei)m->used);
@@ -167,7 +182,9 @@ void stin__map_facing_shade(stin_context *ctx, const stin__path *path, const sti
     }
     for (side = 0; side < 2; side++) { /* 0: the eye sees front faces, 1: back faces */
         GL(ctx, ActiveTexture)(unit);
-        if (side == 0) {
+        if (ctx->map_fixed->terminator) {
+            stin__map_terminator_side(ctx, side);
+        } else if (side == 0) {
             GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
         } else { /* colour * (1 - side) + black * side */
             GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);

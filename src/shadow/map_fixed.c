@@ -9,7 +9,9 @@
  * giving the hardware's 2x2 PCF, and modulates the light's colour. The
  * next unit tests which side of the surface the light sees against the side
  * the eye sees (shadow/map_facing.c), so an open surface seen from the side
- * the light does not reach is in shadow.
+ * the light does not reach is in shadow; with FBOs the maps are second-depth
+ * maps and two more units keep the terminator band lit
+ * (shadow/map_terminator.c).
  *
  * map-combine: for TNT-class hardware without depth textures. The light's
  * depth is drawn as colour (a 1D ramp indexed by texgen of the light-eye
@@ -120,7 +122,8 @@ static stin_result fixed_init(stin_context *ctx)
     }
     if (!combine(ctx)) {
         stin__map_facing_init(ctx, 0);
-        units += ctx->map_fixed->facing_test;
+        units += ctx->map_fixed->facing_test +
+                 ctx->map_fixed->terminator * stin__map_terminator_units();
         for (i = 0; i < ctx->desc.max_lights; i++)
             stin__map_facing_create(ctx, i);
     }
@@ -254,7 +257,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
             stin__casters_again(ctx, map_vp, fbo ? ctx->map_fixed->fbo : ctx->draw_fbo,
                                 !fbo && stin__target_has_stencil(ctx));
     }
-    stin__fixed_path()->depth(ctx, view, proj);
+    stin__fixed_path()->depth(ctx, view, proj, ctx->map_fixed->lifted);
     if (combine(ctx)) {
         GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
         GL_DISABLE(ctx, GL_TEXTURE_1D);
@@ -274,7 +277,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     }
     ctx->stats.passes++;
     if (facing) /* its own pass: no offset may reorder the surfaces */
-        stin__map_facing_draw(ctx, slot, view, proj);
+        stin__map_facing_draw(ctx, slot, l, view, proj);
 }
 
 /* World -> texture: bias/scale into the used corner of the texture, then the
@@ -300,6 +303,8 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
      * depth over one texel - d times the texel's angular size for a
      * perspective map (still a plane in d), the texel's width for an
      * orthographic one. */
+    if (ctx->map_fixed->lifted)
+        stin__map_terminator_lift(ctx, slot, proj, n, f);
     {
         float unused_factor, unused_units;
         int off = !stin__map_offset(&ctx->lights[li], &unused_factor, &unused_units);
@@ -332,6 +337,9 @@ static void fixed_prepass(stin_context *ctx)
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PushMatrix)();
     GL(ctx, EnableClientState)(GL_VERTEX_ARRAY);
+    ctx->map_fixed->lifted = ctx->map_fixed->terminator && stin__map_terminator_frame(ctx);
+    if (ctx->map_fixed->lifted) /* the side pass lights the vertex normals */
+        GL(ctx, EnableClientState)(GL_NORMAL_ARRAY);
     GL_DISABLE(ctx, GL_LIGHTING);
     for (i = 0; i < ctx->light_count && i < STIN__MAX_LIGHTS; i++) {
         const stin_light_desc *l = &ctx->lights[i];
@@ -362,6 +370,7 @@ static void fixed_prepass(stin_context *ctx)
         ctx->map_fixed->valid[i] = 1;
     }
     GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
+    GL(ctx, DisableClientState)(GL_NORMAL_ARRAY);
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PopMatrix)();
     GL(ctx, MatrixMode)(GL_MODELVIEW);
@@ -402,14 +411,7 @@ void stin__map_unit_off(stin_context *ctx, int unit)
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
-/* One texture_env_combine stage: operation, sources and operands for RGB and
- * alpha (a second source of 0 is unused). */
-typedef struct combine_stage {
-    GLenum rgb, rgb_src[2], rgb_op[2];
-    GLenum alpha, alpha_src[2], alpha_op[2];
-} combine_stage;
-
-static void set_combine(stin_context *ctx, const combine_stage *c)
+void stin__map_combine(stin_context *ctx, const stin__combine_stage *c)
 {
     int i;
     GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
@@ -453,14 +455,16 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
         if (ctx->map_fixed->facing_test)
             stin__map_facing_bind(ctx, li);
+        if (ctx->map_fixed->lifted)
+            stin__map_terminator_bind(ctx, li);
     } else {
         /* colour passed on, the stored depth into alpha */
-        const combine_stage stored = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
+        const stin__combine_stage stored = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
                                       GL_REPLACE, {GL_TEXTURE, 0}, {GL_SRC_ALPHA, 0}};
-        const combine_stage compare = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
+        const stin__combine_stage compare = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
                                        GL_ADD_SIGNED, {GL_PREVIOUS, GL_TEXTURE},
                                        {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}};
-        set_combine(ctx, &stored);
+        stin__map_combine(ctx, &stored);
         /* next unit: stored - own + 0.5 into alpha, colour passed on */
         GL(ctx, ActiveTexture)(u + 1u);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
@@ -468,7 +472,7 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
         GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->map_fixed->ramp_plane[li]);
         GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
-        set_combine(ctx, &compare);
+        stin__map_combine(ctx, &compare);
         GL_ENABLE(ctx, GL_ALPHA_TEST);
         GL(ctx, AlphaFunc)(GL_GEQUAL, 0.5f);
     }
@@ -491,6 +495,8 @@ static void unbind(stin_context *ctx)
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     if (!combine(ctx) && ctx->map_fixed->facing_test)
         stin__map_facing_unbind(ctx);
+    if (!combine(ctx) && ctx->map_fixed->lifted)
+        stin__map_terminator_unbind(ctx);
     if (combine(ctx)) {
         GL(ctx, ActiveTexture)(u + 1u);
         GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
@@ -522,7 +528,10 @@ static float face_fov_deg(void)
 /* The face mask's unit: after the map test's (and the side test's). */
 static int mask_unit(const stin_context *ctx)
 {
-    return ctx->map_fixed->unit + (combine(ctx) ? 2 : 1 + ctx->map_fixed->facing_test);
+    return ctx->map_fixed->unit +
+           (combine(ctx) ? 2
+                         : 1 + ctx->map_fixed->facing_test +
+                               ctx->map_fixed->lifted * stin__map_terminator_units());
 }
 
 /* Point lights with FBOs: renders cube face f (0..5: +x -x +y -y +z -z) of
@@ -566,10 +575,10 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
         GL_ENABLE(ctx, GL_TEXTURE_2D);
         GL(ctx, BindTexture)(GL_TEXTURE_2D, ctx->map_fixed->face_mask);
         stin__map_texgen(ctx, ctx->map_fixed->texgen[slot], 0);
-        const combine_stage mask = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
+        const stin__combine_stage mask = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
                                     {GL_SRC_COLOR, GL_SRC_COLOR}, GL_REPLACE, {GL_PREVIOUS, 0},
                                     {GL_SRC_ALPHA, 0}};
-        set_combine(ctx, &mask);
+        stin__map_combine(ctx, &mask);
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     }
     return 1;

@@ -19,6 +19,11 @@ struct stin__map_fixed_state {
     GLuint facing[STIN__MAP_SLOTS];
     GLuint facing_fbo, facing_color, facing_depth;
     int facing_test;      /* 1: the lit passes test the side (a unit was spare) */
+    /* 1: the terminator test (shadow/map_terminator.c; two more units were
+     * spare): second-depth maps, a side map of the shading normal */
+    int terminator;
+    int lifted; /* this frame runs it: every caster a closed solid */
+    float lift[STIN__MAP_SLOTS]; /* its far-side margin, in the map's depth */
     uint32_t size;        /* allocated texels a side */
     uint32_t used;        /* rendered this frame (no FBO: bounded by the viewport) */
     int unit;             /* first texture unit of the shadow test */
@@ -28,5 +33,31 @@ struct stin__map_fixed_state {
     float ramp_plane[STIN__MAP_SLOTS][4]; /* world -> ramp coordinate (map-combine) */
     int said_point, said_area;
 };
+
+/* One texture_env_combine stage: operation, sources and operands for RGB and
+ * alpha (a second source of 0 is unused). */
+typedef struct stin__combine_stage {
+    GLenum rgb, rgb_src[2], rgb_op[2];
+    GLenum alpha, alpha_src[2], alpha_op[2];
+} stin__combine_stage;
+
+/* Sets the active unit's environment to stage c. */
+void stin__map_combine(stin_context *ctx, const stin__combine_stage *c);
+
+/* map-depth's terminator test (shadow/map_terminator.c). units: the units
+ * it takes after the side map's (0 where they are missing); frame: 1 when
+ * this frame can run it (every caster a closed solid); lift stores
+ * slot's margin; side_colours lights the side pass by light l's shading
+ * normal; bind / unbind put slot's test on its units; side sets the side
+ * unit for the eye's side (1: back faces). */
+int stin__map_terminator_units(void);
+int stin__map_terminator_frame(const stin_context *ctx);
+void stin__map_terminator_lift(stin_context *ctx, uint32_t slot, const float proj[16], float n,
+                               float f);
+void stin__map_terminator_side_colours(stin_context *ctx, const stin_light_desc *l,
+                                       const float view[16]);
+void stin__map_terminator_bind(stin_context *ctx, uint32_t slot);
+void stin__map_terminator_side(stin_context *ctx, int back);
+void stin__map_terminator_unbind(stin_context *ctx);
 
 #endif

@@ -208,8 +208,8 @@ int stin__map_offset(const stin_light_desc *l, float *factor, float *units);
 void stin__map_facing_init(stin_context *ctx, int units_after);
 void stin__map_facing_create(stin_context *ctx, uint32_t slot);
 void stin__map_facing_release(stin_context *ctx);
-void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const float view[16],
-                           const float proj[16]);
+void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
+                           const float view[16], const float proj[16]);
 void stin__map_facing_bind(stin_context *ctx, uint32_t slot);
 void stin__map_facing_unbind(stin_context *ctx);
 void stin__map_facing_shade(stin_context *ctx, const stin__path *path, const stin_light_desc *l,

@@ -42,6 +42,11 @@
  * reference-shadowed pixels (no band) at least half come out shadowed (a
  * hard map errs along edges only; measured 76-99%). */
 #define NOFBO_MIN_SHADOWED 0.5
+/* The acne check: without the offset the depth path must be wrong on a
+ * percent more of the pixels. Where it is right everywhere with the offset
+ * and within that percent without (lone closed solids: map-depth's
+ * second-depth maps, stin.h) there is no acne to show. */
+#define ACNE_MIN 0.01
 
 typedef struct map_case {
     run *r;
@@ -231,9 +236,15 @@ static void acne(map_case *c, uint64_t caps)
     }
     a = mismatch(c, &with, 0, 0.0, &n1);
     b = mismatch(c, &without, 0, 0.0, &n2);
-    report(c->r, b > 2.0 * a + 0.01 ? "PASS" : "FAIL", name,
-           "default offset (1.1, 4): %.3f%% wrong; no offset: %.3f%% (acne must show)", 100.0 * a,
-           100.0 * b);
+    if (a == 0.0 && b <= ACNE_MIN)
+        report(c->r, "SKIP", name,
+               "no acne to show: every receiver here is a closed solid, whose lit side a "
+               "second-depth map compares with its far side (no offset: %.3f%% wrong)",
+               100.0 * b);
+    else
+        report(c->r, b > 2.0 * a + ACNE_MIN ? "PASS" : "FAIL", name,
+               "default offset (1.1, 4): %.3f%% wrong; no offset: %.3f%% (acne must show)",
+               100.0 * a, 100.0 * b);
     capture_free(&with);
     capture_free(&without);
 }

@@ -12,8 +12,9 @@
  * Per shadow technique the tier runs: vdsm and volumes are exact, so none
  * may be shadowed; the maps' depth resolution allows acne on at most
  * MAP_BUDGET of those pixels at their default size. A technique that still
- * decides self-shadowing by the facet (GL1's fixed-function volumes and
- * maps) reports SKIP with its count until it adopts the rule.
+ * decides self-shadowing by the facet (GL1's fixed-function volumes,
+ * map-combine, and map-depth without framebuffer objects: stin.h) reports
+ * SKIP with its count until it adopts the rule.
  */
 #include "image_test.h"
 #include "reference.h"
@@ -98,17 +99,27 @@ static long shadowed_lit_side(const terminator_case *c, int li, const uint8_t *i
     return n;
 }
 
+/* 1 when technique t decides self-shadowing by the facet in context ctx:
+ * GL1's volumes (its fixed function cannot tell a pixel's shading normal),
+ * map-combine, and map-depth without framebuffer objects. */
+static int by_facet(const stin_context *ctx, stin_tier tier, stin_technique t)
+{
+    int fbo = (stin_query_caps(ctx)->present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
+    return (t == STIN_TECH_SHADOWS_VOLUME && tier == STIN_TIER_GL1) ||
+           t == STIN_TECH_SHADOWS_MAP_COMBINE || (t == STIN_TECH_SHADOWS_MAP_DEPTH && !fbo);
+}
+
 /* facets: STIN_DEBUG_VOLUME_FACETS, the volumes as before they took the
  * rule, whose steps the check must see (0: the technique as it is). */
 static void check_technique(terminator_case *c, stin_tier tier, const char *scene_name,
-                            stin_technique t, int by_facet, uint64_t facets)
+                            stin_technique t, uint64_t facets)
 {
     test_context tc;
     stin_frame_desc fd;
     char name[160], counts[160];
     long shadowed = 0, facing = 0, ref_shadowed = 0, allowed;
     size_t used = 0;
-    int li, exact = t == STIN_TECH_SHADOWS_VDSM || t == STIN_TECH_SHADOWS_VOLUME, failed = 0;
+    int li, exact = t == STIN_TECH_SHADOWS_VDSM || t == STIN_TECH_SHADOWS_VOLUME, failed = 0, facet;
     if (!test_context_create_debug(&tc, c->r, c->s, tier, t, 1, facets))
         return; /* not a technique of this tier and profile */
     snprintf(name, sizeof name, "%s/%s/terminator-%s%s", stin_tier_name(tier), scene_name,
@@ -132,6 +143,7 @@ static void check_technique(terminator_case *c, stin_tier tier, const char *scen
             used += (size_t)snprintf(counts + used, sizeof counts - used, "%slight %d %ld of %ld",
                                      li ? ", " : "", li, n, lit_side);
     }
+    facet = by_facet(tc.ctx, tier, t);
     test_context_destroy(&tc);
     allowed = exact ? 0 : (long)(MAP_BUDGET * (double)facing);
     if (failed)
@@ -141,7 +153,7 @@ static void check_technique(terminator_case *c, stin_tier tier, const char *scen
                "the check can fail: volumes keeping the facets (STIN_DEBUG_VOLUME_FACETS) shadow "
                "%ld of %ld pixels whose shading normal faces a light (%s)%s",
                shadowed, facing, counts, shadowed > allowed ? "" : ": no smooth triangle here");
-    else if (by_facet)
+    else if (facet)
         report(c->r, "SKIP", name,
                "open: %s still decides self-shadowing by the facet; %ld of %ld pixels whose "
                "shading normal faces a light shadowed (%s; %ld to be allowed)",
@@ -158,9 +170,6 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
     static const stin_technique shadows[] = {
         STIN_TECH_SHADOWS_VDSM, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF,
         STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE};
-    /* 1: the technique still decides self-shadowing by the facet (volumes
-     * on GL1, whose fixed function cannot tell a pixel's shading normal) */
-    const int by_facet[] = {0, tier == STIN_TIER_GL1, 0, 1, 1};
     const char *base = scene_base_name(path);
     char scene_name[128], err[256], name[192];
     terminator_case c;
@@ -188,9 +197,9 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
         c.ref = ref;
         c.hits = hits;
         for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++)
-            check_technique(&c, tier, scene_name, shadows[i], by_facet[i], 0);
-        if (!by_facet[1])
-            check_technique(&c, tier, scene_name, STIN_TECH_SHADOWS_VOLUME, 0,
+            check_technique(&c, tier, scene_name, shadows[i], 0);
+        if (tier != STIN_TIER_GL1)
+            check_technique(&c, tier, scene_name, STIN_TECH_SHADOWS_VOLUME,
                             STIN_DEBUG_VOLUME_FACETS);
     }
     if (ref)
