@@ -75,6 +75,9 @@ struct stin_context {
     stin__pass_state pass;    /* what GL holds, when pass_known */
     int pass_known;
     GLenum lit_cull;          /* face the lit passes cull (0: none): map-depth's facing test */
+    /* before each lit draw (NULL: none): a shadow test that differs by
+     * receiver (map-depth's terminator test: solids and the rest) */
+    void (*lit_draw)(stin_context *ctx, const stin__draw *d);
     uint32_t units_used;      /* texture units bound this frame (bit per unit) */
     GLuint draw_fbo;          /* where the frame plan draws now: the frame's framebuffer,
                                * or the screen mask (visibility export); a module that

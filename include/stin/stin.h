@@ -269,31 +269,34 @@
  * test reference decide. Within about a texel of the light's silhouette (the
  * terminator) the side map may name the neighbouring facet's side. Without
  * a spare texture unit the side test is left out (logged at create).
- * The terminator test (where there are FBOs and two more texture units:
- * four after the surface technique's, five with point lights' faces, which
- * DOT3's optional albedo unit then yields; else logged at create and the
- * facet decides as above), in frames whose every shadow caster is a closed
- * mesh and not two_sided, with no CSG product (an open surface's own steep
- * back, seen by the light through an opening, cannot be told from a solid's
- * far side; such frames keep the facet): map-depth's maps are second-depth
- * maps, closed
- * meshes whose material is not two_sided drawing only their faces turned
- * away from the light (at half the offset's slope factor). A lit surface so
- * compares against its
- * own far side, and a pixel whose facet turns from the light compares
- * against itself. The side map is drawn the same way, white where the
- * light's diffuse term at the vertex normals is positive (saturated at N.L
- * = 1/8). A fragment is lit where the depth test passes and either the
- * stored surface lies 1.5 texels' depth behind it (a second lookup of the
- * same map: the lit side of a solid) or the side map says the light sees
- * the side the eye sees: the band between a facet turned from the light and
- * a shading normal turned to it is lit (no terminator steps, no acne on the
- * lit side of a lone convex mesh: tests/image/terminator_test.c, 0-1
- * pixels of 7,938-13,478 with N.L > 0.05 shadowed where up to 964 were),
- * and the side turned from the light keeps its shadow. A closed solid
- * thinner than 1.5 texels' depth is lit on its facing side only where its
- * shading normals face the light; which is why maps drawn without FBOs (at
- * most the viewport's size) keep the facet.
+ * The terminator test (where there are FBOs and a texture unit spare after
+ * the side test's and the point-light faces' mask; else logged at create
+ * and the facet decides as above) gives each receiver draw its own rule.
+ * Closed solids (a closed mesh whose material is not two_sided) cast
+ * through second-depth maps: only their faces turned away from the light
+ * are drawn (at half the offset's slope factor), so a solid's lit side
+ * compares against its own far side and a pixel whose facet turns from the
+ * light against itself. Open casters (floors, two_sided materials) and CSG
+ * products keep both sides and the ordinary offset. The side map holds an
+ * open caster's side as above and, for a solid, the light's diffuse term at
+ * its far faces' vertex normals (saturated at N.L = 1/8). A solid seen from
+ * outside is lit where the depth test passes and either the stored surface
+ * lies 1.5 texels' depth behind it (a second lookup of the same map, pushed
+ * back: its lit side) or its shading normal faces the light (N.L above
+ * about 1/64; an alpha test on the sum): the band between a facet turned
+ * from the light and a shading normal turned to it is lit (no terminator
+ * steps, no acne on a solid's lit side: tests/image/terminator_test.c, 0 of
+ * 7,938-13,478 pixels with N.L > 0.05 shadowed where up to 1,000 were) and
+ * the side turned from the light keeps its shadow. On a very coarse smooth
+ * mesh this lights more than the reference's rule (four-lights' octahedron,
+ * whose vertex normals turn 55 degrees from its faces). Every other
+ * receiver (open surfaces, CSG products, a solid seen from inside) keeps
+ * the facet: an open surface's own back, which the light sees through an
+ * opening at a slope, is stored with the full offset, deeper than the
+ * 1.5-texel margin, and would pass for a far side. A closed solid thinner
+ * than 1.5 texels' depth is lit on its facing side only where its shading
+ * normals face the light; which is why maps drawn without FBOs (at most the
+ * viewport's size) keep the facet.
  * "map-combine" has no side test: it lights such surfaces. It keeps
  * first-depth maps and the facet (terminator steps, and stripes where a
  * receiver grazes the light): its bias is one plane in the light's depth,
@@ -664,9 +667,9 @@ const char *stin_feature_name(stin_feature f);
  * Units: lighting 1 (albedo, unit 0); normal/parallax/pom 2; dot3 2 (units
  * 0-2, and unit 3 for materials with an albedo texture when it is spare);
  * map-pcf 1 (a light's map or a point light's atlas); map-depth 1 (plus 1
- * for its side test, 2 for its terminator test and 1 for point-light faces,
- * each when there is one to spare; dot3's unit 3 goes only to what is left
- * after these four); map-combine 2; deep and coloured
+ * for its side test, 1 for point-light faces and 1 for its terminator test,
+ * in that order, each when there is one to spare after dot3's); map-combine
+ * 2; deep and coloured
  * 2. Surface units follow the albedo, shadow units follow the surface's,
  * translucent shadows' the shadows'.
  * Surface: "dot3" (GL1) is DOT3 bump mapping of the material's normal_map

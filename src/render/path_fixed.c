@@ -126,6 +126,19 @@ static void draw_mesh(stin_context *ctx, const stin__draw *d)
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
 }
 
+int stin__draw_solid(const stin_context *ctx, const stin__draw *d)
+{
+    return !d->csg && !d->material.two_sided && ctx->meshes[d->mesh_slot].info.closed_manifold;
+}
+
+/* A lit draw: the shadow test's per-receiver part first, where it has one. */
+static void draw_lit(stin_context *ctx, const stin__draw *d)
+{
+    if (ctx->lit_draw)
+        ctx->lit_draw(ctx, d);
+    draw_mesh(ctx, d);
+}
+
 static int in_set(const stin__draw *d, int which)
 {
     return (which & (d->material.color[3] < 1.0f ? STIN__BLENDED : STIN__OPAQUE)) != 0;
@@ -157,7 +170,7 @@ static void draw_csg_faces(stin_context *ctx, int which, int materials)
             GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 1);
         if (materials)
             set_material(ctx, &d->material);
-        draw_mesh(ctx, d);
+        draw_lit(ctx, d);
         if (d->csg == STIN__CSG_BACK)
             GL(ctx, LightModeli)(GL_LIGHT_MODEL_TWO_SIDE, 0);
         stin__resolved_face_end(ctx, &saved);
@@ -173,7 +186,7 @@ static void draw_set(stin_context *ctx, int which, int materials)
             continue;
         if (materials)
             set_material(ctx, &d->material);
-        draw_mesh(ctx, d);
+        draw_lit(ctx, d);
     }
     draw_csg_faces(ctx, which, materials);
 }
@@ -181,7 +194,7 @@ static void draw_set(stin_context *ctx, int which, int materials)
 /* Every draw's geometry seen from a light (its view and projection), no
  * materials: shadow-map casters. The camera's view comes back after. */
 static void fixed_depth(stin_context *ctx, const float view[16], const float proj[16],
-                        int far_side)
+                        int casters)
 {
     stin__pass_state caller = *stin__pass_current(ctx), ps = caller;
     float saved_view[16];
@@ -193,10 +206,12 @@ static void fixed_depth(stin_context *ctx, const float view[16], const float pro
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++) { /* casters the translucent choice keeps */
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        if (!in_set(d, STIN__ALL) || !d->shadow_caster)
+        int solid = stin__draw_solid(ctx, d);
+        if (!in_set(d, STIN__ALL) || !d->shadow_caster ||
+            (casters & (solid ? STIN__DEPTH_OPEN_ONLY : STIN__DEPTH_SOLIDS_ONLY)))
             continue;
-        if (far_side) { /* a closed solid's far side casts the same shadow */
-            ps.cull = !d->material.two_sided && ctx->meshes[d->mesh_slot].info.closed_manifold;
+        if (casters & STIN__DEPTH_FAR_SIDE) { /* a closed solid's far side casts the same shadow */
+            ps.cull = (unsigned char)solid;
             ps.cull_face = stin__mat4_det(d->transform) < 0.0 ? GL_BACK : GL_FRONT;
             /* half the slope term: the full one pushes the steep far faces
              * of a solid resting on a receiver past it (its shadow shrinks) */
@@ -307,7 +322,7 @@ static void fixed_blended_one(stin_context *ctx, const stin__draw *d,
         pass_state(ctx, 0, 1);
     }
     set_material(ctx, &d->material);
-    draw_mesh(ctx, d);
+    draw_lit(ctx, d);
     ctx->stats.passes++;
 }
 

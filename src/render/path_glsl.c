@@ -710,9 +710,9 @@ uint32_t stin__glsl_depth_kept(stin_context *ctx, const float view[16], const fl
 }
 
 static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16],
-                       int far_side)
+                       int casters)
 {
-    (void)far_side; /* the fixed-function maps' option; the GLSL maps lift their lookups */
+    (void)casters; /* the fixed-function maps' option; the GLSL maps lift their lookups */
     (void)stin__glsl_depth_kept(ctx, view, proj, NULL, NULL);
 }
 

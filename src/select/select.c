@@ -219,25 +219,25 @@ static int unit_limit(const stin_caps *caps, stin_technique lighting)
 }
 
 /* Where each feature's texture units start: albedo 0, the surface's, then the
- * shadows'. DOT3 takes a fourth unit (albedo textures) when one is spare
- * after the shadow technique's spare units in its row (they shape the
- * shadows themselves), and the shadow technique takes those when they fit. */
+ * shadows'. DOT3 takes a fourth unit (albedo textures) when one is spare, and
+ * so does a shadow technique with spare units in its row. */
 static void place_units(stin__selection *sel)
 {
     stin_technique surface = sel->choice[STIN_FEATURE_SURFACE].technique;
     int shadow = frag_units(sel->choice[STIN_FEATURE_SHADOWS].technique);
     int surf = frag_units(surface);
-    const stin__technique_row *shadow_row =
-        stin__technique_row_of(sel->choice[STIN_FEATURE_SHADOWS].technique);
-    int wanted = shadow + (shadow_row ? shadow_row->spare_units : 0);
     sel->surface_unit = frag_units(sel->choice[STIN_FEATURE_LIGHTING].technique);
-    if (surface == STIN_TECH_SURFACE_DOT3 && sel->surface_unit + surf + 1 + wanted <= sel->unit_limit)
+    if (surface == STIN_TECH_SURFACE_DOT3 && sel->surface_unit + surf + 1 + shadow <= sel->unit_limit)
         surf++;
     sel->shadow_unit = sel->surface_unit + surf;
     sel->units_used = sel->shadow_unit + shadow;
-    sel->shadow_spare_units =
-        sel->units_used + (wanted - shadow) <= sel->unit_limit ? wanted - shadow : 0;
-    sel->units_used += sel->shadow_spare_units;
+    {
+        const stin__technique_row *r =
+            stin__technique_row_of(sel->choice[STIN_FEATURE_SHADOWS].technique);
+        int spare = r ? r->spare_units : 0;
+        sel->shadow_spare_units = sel->units_used + spare <= sel->unit_limit ? spare : 0;
+        sel->units_used += sel->shadow_spare_units;
+    }
     /* translucent shadows' units after the shadows' */
     sel->translucent_unit = sel->units_used;
     sel->units_used += frag_units(sel->choice[STIN_FEATURE_TRANSLUCENT_SHADOWS].technique);

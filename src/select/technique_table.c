@@ -29,9 +29,8 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 1, 0},
     {STIN_TECH_SHADOWS_MAP_PCF,        2,
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE), GLSL_ANY, 0, 1, 0, 0, 0},
-    /* spare: the side test, the terminator test's two, a point light's face mask */
     {STIN_TECH_SHADOWS_MAP_DEPTH,      3, BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE),
-     STIN_TECH_LIGHTING_FIXED, 0, 1, 0, 4, 0},
+     STIN_TECH_LIGHTING_FIXED, 0, 1, 0, 0, 0},
     {STIN_TECH_SHADOWS_MAP_COMBINE,    4, BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE),
      STIN_TECH_LIGHTING_FIXED, 0, 2, 0, 0, 0},
     {STIN_TECH_SHADOWS_OFF,            5, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},

@@ -41,17 +41,6 @@ void stin__map_facing_init(stin_context *ctx, int units_after)
         return;
     }
     m->facing_test = 1;
-    /* without FBOs the map is at most the viewport's size: its texels are
-     * too coarse for the terminator test's margin (map_terminator.c) */
-    if (m->fbo && m->unit + 2 + stin__map_terminator_units() + units_after <=
-                      ctx->caps.max_texture_units)
-        m->terminator = 1;
-    else
-        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "shadows: map-depth's terminator test needs framebuffer objects and %d texture "
-                  "units spare (%d units): self-shadowing is decided by the facet (terminator "
-                  "steps, acne)",
-                  stin__map_terminator_units(), ctx->caps.max_texture_units);
     if (!m->fbo)
         return; /* drawn in the frame's own buffer, like the map */
     create_facing_texture(ctx, &m->facing_color, m->size, GL_RGBA8);
@@ -137,9 +126,10 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const stin_light_de
                             !m->fbo && stin__target_has_stencil(ctx));
         GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, black);
     }
-    if (m->lifted)
-        stin__map_terminator_side_colours(ctx, l, view);
-    stin__fixed_path()->depth(ctx, view, proj, m->lifted);
+    if (m->terminator)
+        stin__map_terminator_side_draw(ctx, l, view, proj);
+    else
+        stin__fixed_path()->depth(ctx, view, proj, 0);
     side_colours(ctx, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing[slot]);
     GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, x, y, (GLsizei)m->used, (GLsizei)m->used);

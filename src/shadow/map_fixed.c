@@ -10,8 +10,8 @@
  * next unit tests which side of the surface the light sees against the side
  * the eye sees (shadow/map_facing.c), so an open surface seen from the side
  * the light does not reach is in shadow; with FBOs the maps are second-depth
- * maps and two more units keep the terminator band lit
- * (shadow/map_terminator.c).
+ * maps for closed solids and one more unit keeps their terminator band
+ * lit (shadow/map_terminator.c).
  *
  * map-combine: for TNT-class hardware without depth textures. The light's
  * depth is drawn as colour (a 1D ramp indexed by texgen of the light-eye
@@ -82,7 +82,7 @@ static void create_map_texture(stin_context *ctx, GLuint *t, uint32_t size)
 static stin_result fixed_init(stin_context *ctx)
 {
     uint32_t i, size = ctx->desc.shadows.map_size;
-    int units = combine(ctx) ? 2 : 1;
+    int units = combine(ctx) ? 2 : 1, faces;
     /* after the surface technique's units (selection placed them) */
     ctx->map_fixed->unit = ctx->sel.shadow_unit;
     if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
@@ -120,17 +120,20 @@ static stin_result fixed_init(stin_context *ctx)
         GL(ctx, ReadBuffer)(GL_NONE);
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     }
-    if (!combine(ctx)) {
+    if (!combine(ctx))
         stin__map_facing_init(ctx, 0);
-        units += ctx->map_fixed->facing_test +
-                 ctx->map_fixed->terminator * stin__map_terminator_units();
-        for (i = 0; i < ctx->desc.max_lights; i++)
-            stin__map_facing_create(ctx, i);
-    }
+    units += ctx->map_fixed->facing_test;
     /* point lights: six maps drawn mid-frame (FBOs), shared by all of them,
-     * and a mask unit that keeps each face to its own 90-degree square */
-    if (ctx->map_fixed->fbo && !combine(ctx) && ctx->map_fixed->unit + units + 1 <= ctx->caps.max_texture_units &&
-        (FACE_MASK * FACE_MASK) <= ctx->staging_bytes + ctx->scratch_bytes) {
+     * and a mask unit that keeps each face to its own 90-degree square; the
+     * terminator test's unit only after these (shadows before their shape) */
+    faces = ctx->map_fixed->fbo && !combine(ctx) &&
+            ctx->map_fixed->unit + units + 1 <= ctx->caps.max_texture_units &&
+            (FACE_MASK * FACE_MASK) <= ctx->staging_bytes + ctx->scratch_bytes;
+    if (ctx->map_fixed->facing_test)
+        stin__map_terminator_init(ctx, units + faces);
+    for (i = 0; i < ctx->desc.max_lights; i++)
+        stin__map_facing_create(ctx, i);
+    if (faces) {
         unsigned char *m = ctx->staging_bytes >= FACE_MASK * FACE_MASK ? ctx->staging : ctx->scratch;
         uint32_t x, y;
         for (i = 0; i < STIN__CUBE_FACES; i++) {
@@ -257,7 +260,8 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
             stin__casters_again(ctx, map_vp, fbo ? ctx->map_fixed->fbo : ctx->draw_fbo,
                                 !fbo && stin__target_has_stencil(ctx));
     }
-    stin__fixed_path()->depth(ctx, view, proj, ctx->map_fixed->lifted);
+    stin__fixed_path()->depth(ctx, view, proj,
+                              ctx->map_fixed->terminator ? STIN__DEPTH_FAR_SIDE : 0);
     if (combine(ctx)) {
         GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
         GL_DISABLE(ctx, GL_TEXTURE_1D);
@@ -303,11 +307,9 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
      * depth over one texel - d times the texel's angular size for a
      * perspective map (still a plane in d), the texel's width for an
      * orthographic one. */
-    if (ctx->map_fixed->lifted)
-        stin__map_terminator_lift(ctx, slot, proj, n, f);
     {
-        float unused_factor, unused_units;
-        int off = !stin__map_offset(&ctx->lights[li], &unused_factor, &unused_units);
+        float factor, units;
+        int off = !stin__map_offset(&ctx->lights[li], &factor, &units);
         float texel = 2.0f / (proj[0] * (float)ctx->map_fixed->used);
         int ortho = proj[15] != 0.0f;
         float slope = off ? 0.0f : SLOPE_BIAS * texel;
@@ -316,6 +318,8 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
                   (ortho ? slope / (f - n) : 0.0f);
         for (c = 0; c < 4; c++)
             ctx->map_fixed->ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
+        if (ctx->map_fixed->terminator)
+            stin__map_terminator_lift(ctx, slot, proj, n, f, off ? 0.0f : units);
     }
 }
 
@@ -337,8 +341,7 @@ static void fixed_prepass(stin_context *ctx)
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PushMatrix)();
     GL(ctx, EnableClientState)(GL_VERTEX_ARRAY);
-    ctx->map_fixed->lifted = ctx->map_fixed->terminator && stin__map_terminator_frame(ctx);
-    if (ctx->map_fixed->lifted) /* the side pass lights the vertex normals */
+    if (ctx->map_fixed->terminator) /* the side pass lights the vertex normals */
         GL(ctx, EnableClientState)(GL_NORMAL_ARRAY);
     GL_DISABLE(ctx, GL_LIGHTING);
     for (i = 0; i < ctx->light_count && i < STIN__MAX_LIGHTS; i++) {
@@ -455,7 +458,7 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
         if (ctx->map_fixed->facing_test)
             stin__map_facing_bind(ctx, li);
-        if (ctx->map_fixed->lifted)
+        if (ctx->map_fixed->terminator)
             stin__map_terminator_bind(ctx, li);
     } else {
         /* colour passed on, the stored depth into alpha */
@@ -495,7 +498,7 @@ static void unbind(stin_context *ctx)
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     if (!combine(ctx) && ctx->map_fixed->facing_test)
         stin__map_facing_unbind(ctx);
-    if (!combine(ctx) && ctx->map_fixed->lifted)
+    if (!combine(ctx) && ctx->map_fixed->terminator)
         stin__map_terminator_unbind(ctx);
     if (combine(ctx)) {
         GL(ctx, ActiveTexture)(u + 1u);
@@ -531,7 +534,7 @@ static int mask_unit(const stin_context *ctx)
     return ctx->map_fixed->unit +
            (combine(ctx) ? 2
                          : 1 + ctx->map_fixed->facing_test +
-                               ctx->map_fixed->lifted * stin__map_terminator_units());
+                               ctx->map_fixed->terminator * stin__map_terminator_units());
 }
 
 /* Point lights with FBOs: renders cube face f (0..5: +x -x +y -y +z -z) of

@@ -19,11 +19,13 @@ struct stin__map_fixed_state {
     GLuint facing[STIN__MAP_SLOTS];
     GLuint facing_fbo, facing_color, facing_depth;
     int facing_test;      /* 1: the lit passes test the side (a unit was spare) */
-    /* 1: the terminator test (shadow/map_terminator.c; two more units were
-     * spare): second-depth maps, a side map of the shading normal */
+    /* 1: the terminator test (shadow/map_terminator.c; FBOs, and a unit
+     * spare after the side test's and the faces' mask): second-depth maps
+     * for closed solids, a side map of their shading normals */
     int terminator;
-    int lifted; /* this frame runs it: every caster a closed solid */
     float lift[STIN__MAP_SLOTS]; /* its far-side margin, in the map's depth */
+    int eye_back;                /* the lit pass draws the faces the eye sees from behind */
+    int receiver;                /* the rule the units hold: 1 a solid's, 0 the facet */
     uint32_t size;        /* allocated texels a side */
     uint32_t used;        /* rendered this frame (no FBO: bounded by the viewport) */
     int unit;             /* first texture unit of the shadow test */
@@ -45,17 +47,19 @@ typedef struct stin__combine_stage {
 void stin__map_combine(stin_context *ctx, const stin__combine_stage *c);
 
 /* map-depth's terminator test (shadow/map_terminator.c). units: the units
- * it takes after the side map's (0 where they are missing); frame: 1 when
- * this frame can run it (every caster a closed solid); lift stores
- * slot's margin; side_colours lights the side pass by light l's shading
- * normal; bind / unbind put slot's test on its units; side sets the side
- * unit for the eye's side (1: back faces). */
+ * it takes after the side map's; lift stores slot's margin; side_draw
+ * draws the side pass's casters (open ones in the side colours set, solids
+ * by light l's shading normal); bind / unbind put slot's test on its units;
+ * side sets the units for the eye's side (1: back faces) and each receiver
+ * after. */
 int stin__map_terminator_units(void);
-int stin__map_terminator_frame(const stin_context *ctx);
+/* Whether the test runs (units: those the map takes from its first on, the
+ * side test's and the faces' mask among them); logged where it does not. */
+void stin__map_terminator_init(stin_context *ctx, int units);
 void stin__map_terminator_lift(stin_context *ctx, uint32_t slot, const float proj[16], float n,
-                               float f);
-void stin__map_terminator_side_colours(stin_context *ctx, const stin_light_desc *l,
-                                       const float view[16]);
+                               float f, float units);
+void stin__map_terminator_side_draw(stin_context *ctx, const stin_light_desc *l,
+                                    const float view[16], const float proj[16]);
 void stin__map_terminator_bind(stin_context *ctx, uint32_t slot);
 void stin__map_terminator_side(stin_context *ctx, int back);
 void stin__map_terminator_unbind(stin_context *ctx);

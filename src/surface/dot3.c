@@ -451,6 +451,8 @@ static void draw_bumped(stin_context *ctx, const stin__draw *d, const float ligh
     const float *vec = (const float *)(void *)ctx->frame_scratch;
     int fits = (size_t)m->vertex_count * FLOATS_PER_VERTEX * sizeof(float) <= ctx->frame_scratch_bytes;
     float mv[16];
+    if (ctx->lit_draw) /* the shadow test's rule for this receiver */
+        ctx->lit_draw(ctx, d);
     stin__mat4_mul(mv, ctx->frame.view, d->transform);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, LoadMatrixf)(mv);
