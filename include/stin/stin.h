@@ -269,10 +269,12 @@
  * test reference decide. Within about a texel of the light's silhouette (the
  * terminator) the side map may name the neighbouring facet's side. Without
  * a spare texture unit the side test is left out (logged at create).
- * The terminator test (where there are FBOs and a texture unit spare after
- * the side test's and the point-light faces' mask; else logged at create
- * and the facet decides as above) gives each receiver draw its own rule.
- * Closed solids (a closed mesh whose material is not two_sided) cast
+ * The terminator test (where a texture unit is spare after the side
+ * test's and the point-light faces' mask; else logged at create and the
+ * facet decides as above) gives each receiver draw its own rule, with FBOs
+ * or without. Closed solids (a closed mesh whose material is not
+ * two_sided, at least 1.5 texels across along each axis of its bounds:
+ * a texel's width, at the map's far plane for a spot light) cast
  * through second-depth maps: only their faces turned away from the light
  * are drawn (at half the offset's slope factor), so a solid's lit side
  * compares against its own far side and a pixel whose facet turns from the
@@ -293,15 +295,25 @@
  * receiver (open surfaces, CSG products, a solid seen from inside) keeps
  * the facet: an open surface's own back, which the light sees through an
  * opening at a slope, is stored with the full offset, deeper than the
- * 1.5-texel margin, and would pass for a far side. A closed solid thinner
- * than 1.5 texels' depth is lit on its facing side only where its shading
- * normals face the light; which is why maps drawn without FBOs (at most the
- * viewport's size) keep the facet.
+ * 1.5-texel margin, and would pass for a far side. So does a solid thinner
+ * than 1.5 texels: its lit side would compare with its own far side within
+ * the margin (a 0.05-thick slab under a 128-texel map without FBOs, whose
+ * texel is 0.125 wide: 5.3% of spheres-18k-sun's pixels shadowed on its
+ * lit top before the solid's size was checked).
  * "map-combine" has no side test: it lights such surfaces. It keeps
  * first-depth maps and the facet (terminator steps, and stripes where a
- * receiver grazes the light): its bias is one plane in the light's depth,
- * as wide as a sphere resting on a floor is tall at 128 texels, so a
- * second-depth map would let such a solid light the floor under it.
+ * receiver grazes the light; logged at create). A second-depth map alone
+ * (every solid's far faces) clears its terminator (the checks' directional
+ * light: box 542, cylinder 481 pixels shadowed on the lit side, then 0),
+ * but its bias is one plane in the light's depth, as deep as a sphere
+ * resting on a floor is tall at 128 texels: spheres-18k-sun's floor under
+ * the spheres came out lit (45.6% of the shadowed pixels shadowed, where
+ * 66.1% are and the bound is 50%), and every solid's side turned from the
+ * light, compared with itself, would be lit. map-depth's rule needs two
+ * more tests joined to the depth comparison (the side, and the far side by
+ * a margin); the combiners clamp each stage and only the alpha test
+ * thresholds, once, so map-combine cannot join a second comparison in one
+ * pass.
  * "map-combine" needs only texture_env_combine:
  * the light's depth drawn as an 8-bit ramp over a near/far fitted to the draws,
  * compared in the combiner, kept by the alpha test. Its bias (1.5 ramp steps

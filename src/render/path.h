@@ -24,11 +24,13 @@ typedef struct stin__draw {
 enum { STIN__CSG_FRONT = 1, STIN__CSG_BACK = 2, STIN__CSG_CAP = 3 };
 
 /* 1 when draw d is a closed solid: a closed manifold mesh whose material is
- * not two_sided, not a CSG product's face (render/path_fixed.c). */
-int stin__draw_solid(const stin_context *ctx, const stin__draw *d);
-/* The path's depth() casters: closed solids draw only the faces turned away
- * from the view (second-depth maps; open casters keep both sides), and
- * either kind may be left out. */
+ * not two_sided, not a CSG product's face, at least min_size across along
+ * each axis of its mesh's bounds in the world (render/path_fixed.c). */
+int stin__draw_solid(const stin_context *ctx, const stin__draw *d, float min_size);
+/* The path's depth() casters: closed solids (stin__draw_solid, at least
+ * solid_min across) draw only the faces turned away from the view
+ * (second-depth maps; the rest keep both sides), and either kind may be
+ * left out. */
 enum { STIN__DEPTH_FAR_SIDE = 1, STIN__DEPTH_SOLIDS_ONLY = 2, STIN__DEPTH_OPEN_ONLY = 4 };
 
 /* The displacement chunk's uniforms in a program that draws meshes
@@ -103,8 +105,9 @@ typedef struct stin__path {
     void (*normals)(stin_context *ctx);
     /* Every draw's depth seen through view_proj (light views, matrices
      * restored after), no materials: shadow-map casters. casters: 0, or
-     * STIN__DEPTH_* flags (the fixed-function maps'). */
-    void (*depth)(stin_context *ctx, const float view[16], const float proj[16], int casters);
+     * STIN__DEPTH_* flags with their solid_min (the fixed-function maps'). */
+    void (*depth)(stin_context *ctx, const float view[16], const float proj[16], int casters,
+                  float solid_min);
     /* Opaque draws lit by lights[0..n) in one additive pass; light i reads
      * channel i of the screen mask where one is bound (render/screen_mask.c). NULL:
      * the path has no masks (fixed function). */

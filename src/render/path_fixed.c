@@ -4,6 +4,7 @@
  * schedule needs (ambient, one light, flat colour, volumes), and the AOV
  * outputs. */
 #include "internal.h"
+#include "render/draw_bounds.h"
 
 static void set_light(stin_context *ctx, int unit, const stin_light_desc *l)
 {
@@ -126,9 +127,19 @@ static void draw_mesh(stin_context *ctx, const stin__draw *d)
     GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
 }
 
-int stin__draw_solid(const stin_context *ctx, const stin__draw *d)
+int stin__draw_solid(const stin_context *ctx, const stin__draw *d, float min_size)
 {
-    return !d->csg && !d->material.two_sided && ctx->meshes[d->mesh_slot].info.closed_manifold;
+    float c[24];
+    int k;
+    if (d->csg || d->material.two_sided || !ctx->meshes[d->mesh_slot].info.closed_manifold ||
+        !stin__draw_world_corners(ctx, d, c))
+        return 0;
+    for (k = 1; k <= 4; k *= 2) /* corner 0 to its neighbour along each axis */
+        if ((c[3 * k] - c[0]) * (c[3 * k] - c[0]) + (c[3 * k + 1] - c[1]) * (c[3 * k + 1] - c[1]) +
+                (c[3 * k + 2] - c[2]) * (c[3 * k + 2] - c[2]) <
+            min_size * min_size)
+            return 0;
+    return 1;
 }
 
 /* A lit draw: the shadow test's per-receiver part first, where it has one. */
@@ -194,7 +205,7 @@ static void draw_set(stin_context *ctx, int which, int materials)
 /* Every draw's geometry seen from a light (its view and projection), no
  * materials: shadow-map casters. The camera's view comes back after. */
 static void fixed_depth(stin_context *ctx, const float view[16], const float proj[16],
-                        int casters)
+                        int casters, float solid_min)
 {
     stin__pass_state caller = *stin__pass_current(ctx), ps = caller;
     float saved_view[16];
@@ -206,7 +217,7 @@ static void fixed_depth(stin_context *ctx, const float view[16], const float pro
     ctx->bound_mesh = 0xffffffffu;
     for (i = 0; i < ctx->draw_count; i++) { /* casters the translucent choice keeps */
         const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        int solid = stin__draw_solid(ctx, d);
+        int solid = stin__draw_solid(ctx, d, solid_min);
         if (!in_set(d, STIN__ALL) || !d->shadow_caster ||
             (casters & (solid ? STIN__DEPTH_OPEN_ONLY : STIN__DEPTH_SOLIDS_ONLY)))
             continue;

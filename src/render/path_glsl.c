@@ -710,9 +710,11 @@ uint32_t stin__glsl_depth_kept(stin_context *ctx, const float view[16], const fl
 }
 
 static void glsl_depth(stin_context *ctx, const float view[16], const float proj[16],
-                       int casters)
+                       int casters, float solid_min)
 {
-    (void)casters; /* the fixed-function maps' option; the GLSL maps lift their lookups */
+    /* the fixed-function maps' options; the GLSL maps lift their lookups */
+    (void)casters;
+    (void)solid_min;
     (void)stin__glsl_depth_kept(ctx, view, proj, NULL, NULL);
 }
 

@@ -127,9 +127,9 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const stin_light_de
         GL(ctx, Materialfv)(GL_BACK, GL_EMISSION, black);
     }
     if (m->terminator)
-        stin__map_terminator_side_draw(ctx, l, view, proj);
+        stin__map_terminator_side_draw(ctx, slot, l, view, proj);
     else
-        stin__fixed_path()->depth(ctx, view, proj, 0);
+        stin__fixed_path()->depth(ctx, view, proj, 0, 0.0f);
     side_colours(ctx, 0);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing[slot]);
     GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, x, y, (GLsizei)m->used, (GLsizei)m->used);

@@ -122,6 +122,11 @@ static stin_result fixed_init(stin_context *ctx)
     }
     if (!combine(ctx))
         stin__map_facing_init(ctx, 0);
+    else /* one comparison a pass: no second-depth map without its two tests */
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                  "shadows: map-combine decides self-shadowing by the facet (terminator steps, "
+                  "acne): its combiners cannot join the side and far-side tests to its depth "
+                  "comparison");
     units += ctx->map_fixed->facing_test;
     /* point lights: six maps drawn mid-frame (FBOs), shared by all of them,
      * and a mask unit that keeps each face to its own 90-degree square; the
@@ -232,6 +237,9 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
         ps.color_write = 0;
         ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor, &ps.offset_units);
     }
+    if (ctx->map_fixed->terminator)
+        stin__map_terminator_lift(ctx, slot, proj, n, f,
+                                  ps.polygon_offset ? ps.offset_units : 0.0f);
     stin__pass_apply(ctx, &ps);
     /* A point-light face's empty texels hold a depth just under 1: a point
      * behind the face has r past 1, clamped to 1, and must fail there. */
@@ -261,7 +269,8 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
                                 !fbo && stin__target_has_stencil(ctx));
     }
     stin__fixed_path()->depth(ctx, view, proj,
-                              ctx->map_fixed->terminator ? STIN__DEPTH_FAR_SIDE : 0);
+                              ctx->map_fixed->terminator ? STIN__DEPTH_FAR_SIDE : 0,
+                              ctx->map_fixed->solid_min[slot]);
     if (combine(ctx)) {
         GL_DISABLE(ctx, GL_TEXTURE_GEN_S);
         GL_DISABLE(ctx, GL_TEXTURE_1D);
@@ -308,8 +317,8 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
      * perspective map (still a plane in d), the texel's width for an
      * orthographic one. */
     {
-        float factor, units;
-        int off = !stin__map_offset(&ctx->lights[li], &factor, &units);
+        float unused_factor, unused_units;
+        int off = !stin__map_offset(&ctx->lights[li], &unused_factor, &unused_units);
         float texel = 2.0f / (proj[0] * (float)ctx->map_fixed->used);
         int ortho = proj[15] != 0.0f;
         float slope = off ? 0.0f : SLOPE_BIAS * texel;
@@ -318,8 +327,6 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
                   (ortho ? slope / (f - n) : 0.0f);
         for (c = 0; c < 4; c++)
             ctx->map_fixed->ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
-        if (ctx->map_fixed->terminator)
-            stin__map_terminator_lift(ctx, slot, proj, n, f, off ? 0.0f : units);
     }
 }
 

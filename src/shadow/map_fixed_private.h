@@ -24,6 +24,11 @@ struct stin__map_fixed_state {
      * for closed solids, a side map of their shading normals */
     int terminator;
     float lift[STIN__MAP_SLOTS]; /* its far-side margin, in the map's depth */
+    /* the margin in the world, at the far plane: a solid thinner than it
+     * keeps the facet (its lit side would compare with its own far side
+     * within the margin) */
+    float solid_min[STIN__MAP_SLOTS];
+    uint32_t slot; /* the map the lit pass tests */
     int eye_back;                /* the lit pass draws the faces the eye sees from behind */
     int receiver;                /* the rule the units hold: 1 a solid's, 0 the facet */
     uint32_t size;        /* allocated texels a side */
@@ -47,7 +52,7 @@ typedef struct stin__combine_stage {
 void stin__map_combine(stin_context *ctx, const stin__combine_stage *c);
 
 /* map-depth's terminator test (shadow/map_terminator.c). units: the units
- * it takes after the side map's; lift stores slot's margin; side_draw
+ * it takes after the side map's; lift stores slot's margins; side_draw
  * draws the side pass's casters (open ones in the side colours set, solids
  * by light l's shading normal); bind / unbind put slot's test on its units;
  * side sets the units for the eye's side (1: back faces) and each receiver
@@ -58,7 +63,7 @@ int stin__map_terminator_units(void);
 void stin__map_terminator_init(stin_context *ctx, int units);
 void stin__map_terminator_lift(stin_context *ctx, uint32_t slot, const float proj[16], float n,
                                float f, float units);
-void stin__map_terminator_side_draw(stin_context *ctx, const stin_light_desc *l,
+void stin__map_terminator_side_draw(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
                                     const float view[16], const float proj[16]);
 void stin__map_terminator_bind(stin_context *ctx, uint32_t slot);
 void stin__map_terminator_side(stin_context *ctx, int back);

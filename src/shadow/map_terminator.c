@@ -2,7 +2,8 @@
 /* map-depth's terminator test: no steps and no acne where a closed solid
  * turns from the light.
  *
- * The depth maps are second-depth maps for closed solids: they draw only
+ * The depth maps are second-depth maps for closed solids (at least the
+ * margin below across: a thinner one is treated as open): they draw only
  * their faces turned away from the light (render/path_fixed.c), so a solid's
  * surface facing the light compares against its own far side and one turned
  * away against itself, lit (D). Open casters (floors, two_sided materials)
@@ -16,8 +17,8 @@
  * lit side of a solid).
  *
  * The rule is the receiver's, set per draw (ctx->lit_draw): a solid seen
- * from outside is lit where D * S + F > 0 (the alpha test), its colour
- * times D, so the band between a facet turned from the light and a shading
+ * from outside is lit where 4 D S + F >= 1/2 (the alpha test), its
+ * colour times D, so the band between a facet turned from the light and a shading
  * normal turned to it is lit and the side turned from the light keeps its
  * shadow; every other receiver (open surfaces, CSG products, a solid seen
  * from inside) keeps the facet: D times the side (map_facing.c). Its units:
@@ -26,7 +27,7 @@
 #include "shadow/map_fixed_private.h"
 
 /* F's margin: the far side must lie 1.5 texels' depth behind (a solid
- * thinner than that is lit on its facing side by S alone) */
+ * thinner than that across is treated as open) */
 #define LIFT_TEXELS 1.5f
 /* the side pass's diffuse gain, GL's eight lights: S saturates at N.L = 1 / 8 */
 #define FACING_GAIN 8
@@ -43,13 +44,6 @@ void stin__map_terminator_init(stin_context *ctx, int units)
 {
     struct stin__map_fixed_state *m = ctx->map_fixed;
     int need = m->unit + units + stin__map_terminator_units();
-    if (!m->fbo) {
-        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "shadows: map-depth's terminator test needs framebuffer objects (maps drawn in "
-                  "the frame's buffer are at most the viewport's size, too coarse for its "
-                  "margin): self-shadowing is decided by the facet (terminator steps, acne)");
-        return;
-    }
     if (need > ctx->caps.max_texture_units) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                   "shadows: map-depth's terminator test needs texture unit %d, after the "
@@ -70,9 +64,11 @@ void stin__map_terminator_init(stin_context *ctx, int units)
 void stin__map_terminator_lift(stin_context *ctx, uint32_t slot, const float proj[16], float n,
                                float f, float units)
 {
+    int ortho = proj[15] != 0.0f;
     float texel = 2.0f / (proj[0] * (float)ctx->map_fixed->used);
-    float per_depth = proj[15] != 0.0f ? 1.0f / (f - n) : f * n / (f - n);
+    float per_depth = ortho ? 1.0f / (f - n) : f * n / (f - n);
     ctx->map_fixed->lift[slot] = LIFT_TEXELS * texel * per_depth + 2.0f * units / 16777216.0f;
+    ctx->map_fixed->solid_min[slot] = LIFT_TEXELS * texel * (ortho ? 1.0f : f);
 }
 
 /* The solids' colours in the side pass: their far faces lit one-sided by
@@ -107,12 +103,13 @@ static void solid_colours(stin_context *ctx, const stin_light_desc *l, const flo
 
 /* The side pass's casters, the side colours on (map_facing.c): open ones by
  * those colours, then the solids' far faces by their shading normals. */
-void stin__map_terminator_side_draw(stin_context *ctx, const stin_light_desc *l,
+void stin__map_terminator_side_draw(stin_context *ctx, uint32_t slot, const stin_light_desc *l,
                                     const float view[16], const float proj[16])
 {
-    stin__fixed_path()->depth(ctx, view, proj, STIN__DEPTH_FAR_SIDE | STIN__DEPTH_OPEN_ONLY);
+    float min = ctx->map_fixed->solid_min[slot];
+    stin__fixed_path()->depth(ctx, view, proj, STIN__DEPTH_FAR_SIDE | STIN__DEPTH_OPEN_ONLY, min);
     solid_colours(ctx, l, view);
-    stin__fixed_path()->depth(ctx, view, proj, STIN__DEPTH_FAR_SIDE | STIN__DEPTH_SOLIDS_ONLY);
+    stin__fixed_path()->depth(ctx, view, proj, STIN__DEPTH_FAR_SIDE | STIN__DEPTH_SOLIDS_ONLY, min);
 }
 
 /* The side and F units (side active on entry, unit 0 on return) for a
@@ -147,10 +144,11 @@ static void receiver_units(stin_context *ctx, int solid)
 
 static void lit_draw(stin_context *ctx, const stin__draw *d)
 {
-    int solid = !ctx->map_fixed->eye_back && stin__draw_solid(ctx, d);
-    if (solid == ctx->map_fixed->receiver)
+    const struct stin__map_fixed_state *m = ctx->map_fixed;
+    int solid = !m->eye_back && stin__draw_solid(ctx, d, m->solid_min[m->slot]);
+    if (solid == m->receiver)
         return;
-    GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed->unit + 1u));
+    GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)m->unit + 1u));
     receiver_units(ctx, solid);
 }
 
@@ -165,6 +163,7 @@ void stin__map_terminator_bind(stin_context *ctx, uint32_t slot)
     GLenum u = (GLenum)(GL_TEXTURE0 + (GLenum)m->unit + 2u);
     stin__memcopy(rows, m->texgen[slot], sizeof rows);
     rows[11] += m->lift[slot];
+    m->slot = slot;
     GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)m->unit));
     stin__map_combine(ctx, &tested);
     GL(ctx, ActiveTexture)(u);
