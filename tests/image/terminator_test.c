@@ -12,8 +12,8 @@
  * Per shadow technique the tier runs: vdsm and volumes are exact, so none
  * may be shadowed; the maps' depth resolution allows acne on at most
  * MAP_BUDGET of those pixels at their default size. A technique that still
- * decides self-shadowing by the facet (GL1's fixed-function volumes and
- * maps) reports SKIP with its count until it adopts the rule.
+ * decides self-shadowing by the facet (GL1's fixed-function maps) reports
+ * SKIP with its count until it adopts the rule.
  */
 #include "image_test.h"
 #include "reference.h"
@@ -158,9 +158,8 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
     static const stin_technique shadows[] = {
         STIN_TECH_SHADOWS_VDSM, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF,
         STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE};
-    /* 1: the technique still decides self-shadowing by the facet (volumes
-     * on GL1, whose fixed function cannot tell a pixel's shading normal) */
-    const int by_facet[] = {0, tier == STIN_TIER_GL1, 0, 1, 1};
+    /* 1: the technique still decides self-shadowing by the facet */
+    static const int by_facet[] = {0, 0, 0, 1, 1};
     const char *base = scene_base_name(path);
     char scene_name[128], err[256], name[192];
     terminator_case c;
@@ -189,9 +188,8 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
         c.hits = hits;
         for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++)
             check_technique(&c, tier, scene_name, shadows[i], by_facet[i], 0);
-        if (!by_facet[1])
-            check_technique(&c, tier, scene_name, STIN_TECH_SHADOWS_VOLUME, 0,
-                            STIN_DEBUG_VOLUME_FACETS);
+        check_technique(&c, tier, scene_name, STIN_TECH_SHADOWS_VOLUME, 0,
+                        STIN_DEBUG_VOLUME_FACETS);
     }
     if (ref)
         reference_destroy(ref);
