@@ -27,13 +27,21 @@ typedef struct corner {
 
 static float dot(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
-static int world_corners(const stin__draw *d, const float normal_matrix[9], const stin__vertex *v,
-                         const uint32_t *tri, corner c[3])
+static void world_positions(const stin__draw *d, const stin__vertex *v, const uint32_t *tri,
+                            corner c[3])
+{
+    int i;
+    for (i = 0; i < 3; i++)
+        stin__mat4_transform_point(d->transform, v[tri[i]].position, c[i].p);
+}
+
+/* 0 where a normal is zero. */
+static int world_normals(const float normal_matrix[9], const stin__vertex *v, const uint32_t *tri,
+                         corner c[3])
 {
     int i, r;
     for (i = 0; i < 3; i++) {
         const float *n = v[tri[i]].normal;
-        stin__mat4_transform_point(d->transform, v[tri[i]].position, c[i].p);
         for (r = 0; r < 3; r++) /* column-major */
             c[i].n[r] = normal_matrix[r] * n[0] + normal_matrix[3 + r] * n[1] +
                         normal_matrix[6 + r] * n[2];
@@ -104,19 +112,32 @@ static float edge_rule(const corner *a, const corner *b, const float light[4], f
 }
 
 /* Where on the edge from a to b (t in 0-1) the rule turns, a's side at 0
- * and the other at 1: by bisection, to 2^-20 of the edge. */
+ * and the other at 1: by false position (Illinois), the rule being close
+ * to linear along an edge. */
 static float edge_zero(const corner *a, const corner *b, const float light[4], int a_toward)
 {
-    float lo = 0.0f, hi = 1.0f;
-    int i;
-    for (i = 0; i < 20; i++) {
-        float mid = 0.5f * (lo + hi);
-        if ((edge_rule(a, b, light, mid) > 0.0f) == a_toward)
-            lo = mid;
-        else
-            hi = mid;
+    float lo = 0.0f, hi = 1.0f, f_lo = edge_rule(a, b, light, 0.0f),
+          f_hi = edge_rule(a, b, light, 1.0f), t = 0.5f;
+    int i, last = 0;
+    for (i = 0; i < 8 && f_hi != f_lo; i++) {
+        float f;
+        t = (lo * f_hi - hi * f_lo) / (f_hi - f_lo);
+        f = edge_rule(a, b, light, t);
+        if ((f > 0.0f) == a_toward) {
+            lo = t;
+            f_lo = f;
+            if (last < 0)
+                f_hi *= 0.5f;
+            last = -1;
+        } else {
+            hi = t;
+            f_hi = f;
+            if (last > 0)
+                f_lo *= 0.5f;
+            last = 1;
+        }
     }
-    return 0.5f * (lo + hi);
+    return t < 1e-6f ? 1e-6f : t > 1.0f - 1e-6f ? 1.0f - 1e-6f : t;
 }
 
 /* Corner values whose blend turns where the rule turns on the two edges
@@ -145,18 +166,23 @@ static void fit_zero_line(const corner c[3], const float light[4], float h[3])
         h[i] /= most;
 }
 
-/* Each corner's shading normal toward the light (h: n.(L - p), L's w 0 a
- * direction) where the triangle may hold band fragments; 0 where none. */
-static int band_corners(const corner c[3], const float eye[3], const float light[4], float h[3])
+/* Whether the facet (g, seen by the eye) turns away from the light: no
+ * count to take back where it faces it. */
+static int turned_from(const corner c[3], const float g[3], const float light[4])
 {
-    float g[3], to_light[3], most = 0.0f, scale = 0.0f;
-    int i, k, smooth = 0;
-    if (!eye_side_facet(c, eye, g))
-        return 0;
+    float to_light[3];
+    int k;
     for (k = 0; k < 3; k++)
         to_light[k] = light[k] - light[3] * c[0].p[k];
-    if (dot(g, to_light) > 0.0f)
-        return 0; /* the facet faces the light: no count to take back */
+    return dot(g, to_light) <= 0.0f;
+}
+
+/* Each corner's shading normal toward the light (h: n.(L - p), L's w 0 a
+ * direction) where the triangle may hold band fragments; 0 where none. */
+static int band_corners(const corner c[3], const float g[3], const float light[4], float h[3])
+{
+    float to_light[3], most = 0.0f, scale = 0.0f;
+    int i, k, smooth = 0;
     for (i = 0; i < 3; i++) {
         float facing = dot(c[i].n, g);
         if (facing <= 0.0f)
@@ -204,9 +230,10 @@ void stin__fixed_terminator_band(stin_context *ctx, const stin__draw *d, const f
     for (t = 0; t < n; t++) {
         const uint32_t *tri = tris + 3u * t;
         corner c[3];
-        float h[3];
-        if (!world_corners(d, normal_matrix, v, tri, c) ||
-            !band_corners(c, view_inv + 12, light, h))
+        float g[3], h[3];
+        world_positions(d, v, tri, c);
+        if (!eye_side_facet(c, view_inv + 12, g) || !turned_from(c, g, light) ||
+            !world_normals(normal_matrix, v, tri, c) || !band_corners(c, g, light, h))
             continue;
         for (i = 0; i < 3; i++) {
             GL(ctx, Color4f)(0.0f, 0.0f, 0.0f, 0.5f + 0.5f * h[i]);
