@@ -2,20 +2,21 @@
 /* The terminator band (stin.h, "The terminator rule"; the GLSL path's
  * terminator_band.frag) without a fragment shader. What that shader asks
  * of each fragment is asked here of each triangle where it cannot change
- * across one, and of each fragment by the alpha test where it is linear:
- * - the facet's side of the light (and of the eye) is constant over a
+ * across one, and of each fragment by the alpha test where it is (close
+ * to) linear:
+ * - the facet's side of the light and of the eye is constant over a
  *   planar facet;
- * - the shading normal's dot with the way to the light is the corners'
- *   values blended by the barycentrics: exactly for a directional light,
- *   up to terms of second order in the facet's size for a point light (the
- *   way from the blended point, the lift above it); so each corner's
- *   colour has alpha 0.5 + 0.5 n.(L - p) / (its largest size on the
- *   triangle), and the
- *   alpha test GREATER 0.5 keeps the band's fragments;
  * - the curved surface lies above the facet on the whole triangle or not:
  *   a triangle where it does not everywhere (a concave corner, a saddle),
  *   or whose corner normals turn from the side of the facet the eye sees,
- *   keeps its facet (conservative: lit where the facet faces the light).
+ *   keeps its facet (shadowed by its own volume as before);
+ * - the rule's "shading normal toward the light" is each corner's n.(L - p)
+ *   at the corners and, blended by the barycentrics, exact inside for a
+ *   directional light; for a point light the way from the lifted point
+ *   bends its zero line at second order in the facet's size, so the
+ *   corners' values are set to turn where the rule turns on the two edges
+ *   it crosses. Each corner's colour has alpha 0.5 + 0.5 value (values in
+ *   -1..1) and the alpha test keeps the fragments above one half.
  * The positions and modelview are the lit pass's (draw_mesh), so depth
  * EQUAL meets its depths; the caller's stencil state takes the count back. */
 #include "render/terminator_fixed.h"
