@@ -341,7 +341,7 @@
  * caps; two-sided stencil with wrap in one pass where present, else two culled
  * passes; casters that are not closed 2-manifolds get generalised volumes (each
  * triangle's own, so open and non-manifold meshes cast without leaks).
- * The terminator rule (see vdsm) on the GLSL tiers: a visible pixel of a
+ * The terminator rule (see vdsm) on every tier: a visible pixel of a
  * closed mesh whose facet turns away from the light lies inside that mesh's
  * volume exactly once, so after each light's (or sample's) volumes are
  * counted, one more pass draws the closed, smooth, undisplaced opaque
@@ -360,9 +360,30 @@
  * and a draw of the thin ring of triangles that passes; on llvmpipe
  * (stin-bench --shadows, spheres-18k and terminator-sphere, 1 and 4 lights,
  * GL2 and GL4) the frame's time stays within its run-to-run noise (5%).
- * Open meshes (their volume counts each triangle between a
- * point and the light, the point's own included) and GL1's fixed function
- * (no shading normal per pixel) keep the facets: the terminator steps there.
+ * GL1's fixed function has no shading normal per pixel: there the CPU
+ * keeps a ring triangle only where its facet turns away from the light
+ * (constant over a facet), every corner normal lies on the side of the
+ * facet the eye sees and the curved surface lies above the facet on the
+ * whole triangle (else it keeps its facet: a concave corner, a saddle),
+ * and draws it in immediate mode, lighting and texturing off, each corner
+ * coloured with an alpha that the alpha test (GL_GREATER, a quarter of an
+ * 8-bit step under one half) compares: the corners' values are set so
+ * their blend turns where the rule does on the two edges it crosses
+ * (false position on each edge), exact for a directional light and for a
+ * cylinder, else off by the bend of the rule's curve inside the
+ * triangle. On the repository's scenes GL1 then differs from the test
+ * reference on no more pixels than the GLSL tiers (band pixels: at most 2
+ * a scene where GLSL has 1, within shadow_test.c's 0.01%). The alpha test
+ * goes back off, its function to GL_ALWAYS, after each band draw; the current
+ * colour is left as the last corner's (the frame gives back the
+ * caller's). Its cost at GL1 (spheres-18k, 102 casters, 1 point light):
+ * 5,474 ring candidates, 1,084 drawn, 1.2 ms of CPU and immediate-mode
+ * calls a frame; stin-bench --shadows (1 and 4 lights) stays within its
+ * run-to-run noise, and a context's first frame pays the driver's build of
+ * the alpha-tested pipeline once (llvmpipe: about 15 ms more shadow stage
+ * in stin-render --stage-times). Open meshes (their volume counts each triangle between
+ * a point and the light, the point's own included) keep the facets: the
+ * terminator steps there.
  * With a
  * perspective projection the frame is drawn with the far plane at infinity
  * (stin_query_frame_projection), so geometry past the caller's far plane shows;
@@ -1168,8 +1189,8 @@ typedef struct stin_desc {
  * visible receivers nor culled against the view (a baseline for tests and
  * the bench) */
 #define STIN_DEBUG_VOLUME_UNBOUNDED 0x2000ull
-/* volumes keep the facets on every tier, as GL1 does: no terminator band
- * pass (a baseline for the terminator tests and the bench) */
+/* volumes keep the facets on every tier: no terminator band pass (a
+ * baseline for the terminator tests and the bench) */
 #define STIN_DEBUG_VOLUME_FACETS 0x4000ull
 /* -- shadows: vdsm (bits 16-23). Its steps, each on by default, off for
  * measurement and tests; the mask is the same without them (NO_GROW: pixels

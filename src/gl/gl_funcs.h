@@ -76,6 +76,9 @@
     X(void, Materialfv, (GLenum face, GLenum pname, const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, Materialf, (GLenum face, GLenum pname, GLfloat v), STIN_CAP_FIXED_FUNCTION, "") \
     X(void, Color4f, (GLfloat r, GLfloat g, GLfloat b, GLfloat a), STIN_CAP_FIXED_FUNCTION, "") \
+    X(void, Begin, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                            \
+    X(void, End, (void), STIN_CAP_FIXED_FUNCTION, "")                                     \
+    X(void, Vertex3fv, (const GLfloat *v), STIN_CAP_FIXED_FUNCTION, "")                   \
     X(void, ShadeModel, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                       \
     X(void, EnableClientState, (GLenum array), STIN_CAP_FIXED_FUNCTION, "")               \
     X(void, DisableClientState, (GLenum array), STIN_CAP_FIXED_FUNCTION, "")              \

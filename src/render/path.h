@@ -134,8 +134,8 @@ typedef struct stin__path {
      * in the terminator band of the light at `light` (world position, w 1,
      * or direction toward it, w 0): facet turned away from it, shading
      * normal toward it; the others discarded, depth EQUAL, the stencil
-     * state the caller's (shadow/volume.c). NULL: the path cannot tell them
-     * (fixed function keeps the facets). */
+     * state the caller's (shadow/volume.c). Fixed function tells them by
+     * triangle on the CPU and by the alpha test (render/terminator_fixed.c). */
     void (*terminator_band)(stin_context *ctx, const stin__draw *d, const float light[4],
                             const uint32_t *tris, uint32_t n);
 } stin__path;

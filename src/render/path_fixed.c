@@ -5,6 +5,7 @@
  * outputs. */
 #include "internal.h"
 #include "render/draw_bounds.h"
+#include "render/terminator_fixed.h"
 
 static void set_light(stin_context *ctx, int unit, const stin_light_desc *l)
 {
@@ -466,6 +467,7 @@ const stin__path *stin__fixed_path(void)
                                     fixed_volume_draw,  fixed_volume_end,  fixed_batches,
                                     fixed_normals,      fixed_depth,       NULL,
                                     fixed_geometry_begin, draw_mesh,       fixed_geometry_end,
-                                    fixed_blended_one,  NULL,              NULL};
+                                    fixed_blended_one,  NULL,
+                                    stin__fixed_terminator_band};
     return &path;
 }

@@ -335,7 +335,7 @@ static void take_back_own_volume(stin_context *ctx, const stin__path *path,
 {
     stin__pass_state ps = *stin__pass_current(ctx);
     uint32_t i;
-    if (!path->terminator_band || (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_FACETS))
+    if (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_FACETS)
         return;
     ps.two_sided = 0;
     ps.cull = 0;

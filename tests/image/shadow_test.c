@@ -191,8 +191,7 @@ static void test_visibility(const shadow_case *c, const capture *cap)
                 edge_on++; /* rounding decides: outside the budget */
                 continue;
             }
-            if (c->tier != STIN_TIER_GL1 &&
-                reference_terminator_band(c->refr, &c->hits[(size_t)y * w + x], 0)) {
+            if (reference_terminator_band(c->refr, &c->hits[(size_t)y * w + x], 0)) {
                 band++;
                 if (getenv("STIN_TEST_VERBOSE"))
                     fprintf(stderr, "  band mismatch at pixel %d,%d: stin %.3f, reference %.3f\n",
@@ -474,10 +473,8 @@ void shadow_tests(run *r, stin_tier tier, const char *path)
     if (!s.light_count)
         goto done;
     ref = reference_create(&s, err, sizeof err);
-    /* volumes take the terminator rule on closed meshes where GLSL tells a
-     * pixel's shading normal; GL1's fixed function keeps the facets */
-    reference_facet_terminator(ref, tier == STIN_TIER_GL1 ? REFERENCE_FACETS_ALL
-                                                          : REFERENCE_FACETS_OPEN);
+    /* volumes take the terminator rule on closed meshes, on every tier */
+    reference_facet_terminator(ref, REFERENCE_FACETS_OPEN);
     hits = malloc(sizeof *hits * (size_t)r->width * r->height);
     refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
     if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||

@@ -12,9 +12,8 @@
  * Per shadow technique the tier runs: vdsm and volumes are exact, so none
  * may be shadowed; the maps' depth resolution allows acne on at most
  * MAP_BUDGET of those pixels at their default size. A technique that still
- * decides self-shadowing by the facet (GL1's fixed-function volumes and
- * map-combine: stin.h) reports SKIP with its count until it adopts the
- * rule. A point light that a GL1 map technique leaves to stencil volumes
+ * decides self-shadowing by the facet (GL1's map-combine: stin.h) reports
+ * SKIP with its count until it adopts the rule. A point light that a GL1 map technique leaves to stencil volumes
  * (no six faces) is left out of that technique's count.
  */
 #include "image_test.h"
@@ -100,13 +99,11 @@ static long shadowed_lit_side(const terminator_case *c, int li, const uint8_t *i
     return n;
 }
 
-/* 1 when technique t decides self-shadowing by the facet: GL1's volumes
- * (its fixed function cannot tell a pixel's shading normal) and
- * map-combine. */
-static int by_facet(stin_tier tier, stin_technique t)
+/* 1 when technique t decides self-shadowing by the facet: map-combine
+ * (its combiner stages cannot join the side test to the depth compare). */
+static int by_facet(stin_technique t)
 {
-    return (t == STIN_TECH_SHADOWS_VOLUME && tier == STIN_TIER_GL1) ||
-           t == STIN_TECH_SHADOWS_MAP_COMBINE;
+    return t == STIN_TECH_SHADOWS_MAP_COMBINE;
 }
 
 /* 1 when technique t leaves light l to stencil volumes in context ctx: a
@@ -159,7 +156,7 @@ static void check_technique(terminator_case *c, stin_tier tier, const char *scen
             used += (size_t)snprintf(counts + used, sizeof counts - used, "%slight %d %ld of %ld",
                                      li ? ", " : "", li, n, lit_side);
     }
-    facet = by_facet(tier, t);
+    facet = by_facet(t);
     test_context_destroy(&tc);
     allowed = exact ? 0 : (long)(MAP_BUDGET * (double)facing);
     if (failed)
@@ -214,9 +211,8 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
         c.hits = hits;
         for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++)
             check_technique(&c, tier, scene_name, shadows[i], 0);
-        if (tier != STIN_TIER_GL1)
-            check_technique(&c, tier, scene_name, STIN_TECH_SHADOWS_VOLUME,
-                            STIN_DEBUG_VOLUME_FACETS);
+        check_technique(&c, tier, scene_name, STIN_TECH_SHADOWS_VOLUME,
+                        STIN_DEBUG_VOLUME_FACETS);
     }
     if (ref)
         reference_destroy(ref);

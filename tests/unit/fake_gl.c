@@ -68,6 +68,9 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_TexSubImage2D ~, 1
 #define FAKE_STATELESS_DrawPixels ~, 1
 #define FAKE_STATELESS_RasterPos2f ~, 1
+#define FAKE_STATELESS_Begin ~, 1
+#define FAKE_STATELESS_End ~, 1
+#define FAKE_STATELESS_Vertex3fv ~, 1
 #define FAKE_STATELESS_CopyTexSubImage2D ~, 1
 #define FAKE_STATELESS_TexImage1D ~, 1
 #define FAKE_STATELESS_BufferData ~, 1

@@ -3,7 +3,8 @@
  * the fake GL keeps (fake_gl_state.h). For every fake profile, every tier
  * it runs, every shadow and surface technique stin_create accepts there and
  * every output, a frame with a spot, a directional and a point light and
- * opaque and blended draws must leave each field as the caller had it,
+ * opaque and blended draws (one smooth and closed: volumes' terminator
+ * band) must leave each field as the caller had it,
  * except the ones the header says the frame resets (to GL's defaults) or
  * overwrites. The same for stin_create (nothing changes) and for mesh and
  * texture creation (buffer and unit-0 texture bindings left at 0).
@@ -163,8 +164,16 @@ static void finish_report(const char *what)
 static fake_log log_;
 static stin_context *ctx;
 static void *block;
-static stin_mesh cube;
+static stin_mesh cube, ball;
 static stin_texture albedo, normal_map, height_map;
+
+static void create_mesh(const float *pos, const float *nrm, const float *uv, uint32_t vertices,
+                        const uint32_t *idx, uint32_t indices, stin_mesh *out)
+{
+    stin_mesh_desc md = {.positions = pos, .normals = nrm, .uvs = uv, .vertex_count = vertices,
+                         .indices = idx, .index_count = indices};
+    assert_int_equal(stin_create_mesh(ctx, &md, out), STIN_OK);
+}
 
 /* A unit cube, four vertices a face so that every face has its own normal
  * and uvs (tangents come from the uvs). */
@@ -174,7 +183,6 @@ static void make_cube(void)
                                   {0, -1, 0}, {0, 0, 1},  {0, 0, -1}};
     float pos[72], nrm[72], uv[48];
     uint32_t idx[36];
-    stin_mesh_desc md;
     int f, v, k;
     for (f = 0; f < 6; f++) {
         /* two axes spanning the face, u x v = n */
@@ -198,14 +206,17 @@ static void make_cube(void)
         idx[6 * f + 4] = (uint32_t)(4 * f + 2);
         idx[6 * f + 5] = (uint32_t)(4 * f + 3);
     }
-    memset(&md, 0, sizeof md);
-    md.positions = pos;
-    md.normals = nrm;
-    md.uvs = uv;
-    md.vertex_count = 24;
-    md.indices = idx;
-    md.index_count = 36;
-    assert_int_equal(stin_create_mesh(ctx, &md, &cube), STIN_OK);
+    create_mesh(pos, nrm, uv, 24, idx, 36, &cube);
+}
+
+/* An octahedron with its corners' normals pointing out of the centre: a
+ * closed smooth mesh, so volumes draw their terminator band. */
+static void make_ball(void)
+{
+    static const float pos[18] = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
+    static const uint32_t idx[24] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
+                                     2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+    create_mesh(pos, pos, NULL, 6, idx, 24, &ball);
 }
 
 static stin_texture make_texture(stin_texture_kind kind, const uint8_t rgba[4])
@@ -344,8 +355,18 @@ static int run_frame(stin_output output, stin_export ex)
     xf[14] = -1.2f;
     assert_int_equal(stin_draw(ctx, cube, xf, &tex), STIN_OK);
     tex.displace = 0;
+    stin__mat4_identity(xf);
+    xf[12] = -1.5f;
+    xf[13] = 0.5f;
+    assert_int_equal(stin_draw(ctx, ball, xf, &plain), STIN_OK);
     fake_gl.patch_draws = 0;
+    fake_gl.calls[STIN_GLFN_Begin] = 0;
     assert_int_equal(stin_end_frame(ctx), STIN_OK);
+    /* fixed function's terminator band (render/terminator_fixed.c) ran */
+    if (stin_query_choice(ctx, STIN_FEATURE_SHADOWS).technique == STIN_TECH_SHADOWS_VOLUME &&
+        stin_query_choice(ctx, STIN_FEATURE_LIGHTING).technique == STIN_TECH_LIGHTING_FIXED &&
+        output == STIN_OUTPUT_BEAUTY)
+        assert_true(fake_gl.calls[STIN_GLFN_Begin] > 0);
     /* tessellated: that draw's passes, where it has its height map (and
      * only frames with one: test_frame) */
     if (stin_query_choice(ctx, STIN_FEATURE_DISPLACEMENT).technique ==
@@ -563,6 +584,7 @@ static void create_scene(void)
     fake_gl_state_init(&fake_gl.gl); /* what stin_create left is checked on its own */
     e = fake_gl.gl;
     make_cube();
+    make_ball();
     albedo = make_texture(STIN_TEXTURE_ALBEDO, white);
     normal_map = make_texture(STIN_TEXTURE_NORMAL, flat);
     height_map = make_texture(STIN_TEXTURE_HEIGHT, mid);
@@ -750,6 +772,7 @@ static void test_caller_vertex_array_is_left_alone(void **state)
                 caller = vao_state(77);
                 setup = "create_mesh, caller VAO";
                 make_cube();
+                make_ball();
                 for (o = 0; o <= sizeof outputs / sizeof outputs[0]; o++) {
                     fake_gl_vao now;
                     char got[16];
