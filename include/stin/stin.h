@@ -1675,9 +1675,9 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * needs), and copied into a texture per light and face, SIZE the
  * smaller of shadows.map_size and the largest power of two the viewport
  * holds (logged "... (SIZE, drawn before the frame's clear) ..."; made
- * at the first frame, one per face of each light, remade when SIZE
- * changes), its projection cropped to the rectangle the products' bounds
- * cover (2 texels clear round it). Without depth textures but with
+ * at the first frame that needs them, one a face, 4 bytes a texel, 1
+ * with map-combine, remade when SIZE changes), its projection cropped to
+ * the rectangle the products' bounds cover (2 texels clear round it). Without depth textures but with
  * texture_env_combine (gl13-combine) the copy is map-combine's: the
  * products' light-eye depth as an 8-bit ramp over the depths their
  * bounds span, and the test is the ramp's stored - own + 0.5 in alpha

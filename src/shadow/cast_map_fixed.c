@@ -100,15 +100,15 @@ void stin__cast_fixed_cell(stin_context *ctx, int cell, const float window[16],
 
 /* ---- without FBOs: the maps in the light pre-pass ------------------------- */
 
-/* Light c's copies at `size` texels a side. */
-static void make_copies(stin_context *ctx, stin__cast_light *c, uint32_t size)
+/* Light c's first `faces` copies at `size` texels a side. */
+static void make_copies(stin_context *ctx, stin__cast_light *c, uint32_t size, int faces)
 {
     int f;
-    if (c->copy_size == size)
+    if (c->copy_size == size && c->copy_faces >= faces)
         return;
     if (!c->copy_size)
         GL(ctx, GenTextures)(STIN__CUBE_FACES, c->copies);
-    for (f = 0; f < STIN__CUBE_FACES; f++) {
+    for (f = 0; f < faces; f++) {
         if (ctx->cast_map->ramp) {
             stin__rt_texture(ctx, c->copies[f], GL_INTENSITY8, GL_LUMINANCE, GL_UNSIGNED_BYTE,
                              (int)size, (int)size);
@@ -121,6 +121,7 @@ static void make_copies(stin_context *ctx, stin__cast_light *c, uint32_t size)
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     c->copy_size = size;
+    c->copy_faces = faces;
 }
 
 /* The products seen from (view, proj), whose depth spans [n, f], into the
@@ -248,7 +249,7 @@ static void copy_light(stin_context *ctx, uint32_t li)
     c->faces = l->type == STIN_LIGHT_POINT ? STIN__CUBE_FACES : 1;
     if (c->faces > 1 && !m->face_units)
         return; /* said by stin__cast_map_draw */
-    make_copies(ctx, c, m->copy_size);
+    make_copies(ctx, c, m->copy_size, c->faces);
     if (c->faces == 1) {
         if (!stin__light_camera(ctx, l, view, proj, &n, &f, m->copy_size))
             return;

@@ -21,6 +21,7 @@ typedef struct stin__mark_program {
 typedef struct stin__cast_light {
     GLuint copies[STIN__CUBE_FACES]; /* without FBOs: each face's map (0: none made yet) */
     uint32_t copy_size;              /* their texels a side */
+    int copy_faces;                  /* how many of them have an image */
     int faces;                       /* 1, or a point light's 6 */
     unsigned drawn;                  /* bit f: face f holds products */
     float matrix[STIN__CUBE_FACES][16]; /* world -> its map's texture coordinates */
