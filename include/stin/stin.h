@@ -1729,15 +1729,35 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * for the ordinary casters, the map's bound at the products' shadow edges.
  * Logged once a light (INFO, FALLBACK): "volume: CSG products cast through
  * map-pcf (SIZE) for light N". Frames without products draw none of it.
- * On the GL1 tier with framebuffer objects, depth textures, shadow compare
- * and multitexture (gl21's GL1 tier) volumes do the same for spot and
- * directional lights with map-depth's test: the map on texture unit 1 by
- * eye-linear texgen, its compare's result in alpha and the alpha test
- * passing the shadowed fragments (logged "... through map-depth (SIZE)
- * ..."). Point lights there (a fixed-function fragment cannot pick its
- * face of the atlas), GL1 without framebuffer objects (gl11,
- * gl13-combine, gl14-shadow), and the point lights GL1 maps hand to
- * volumes cast no product, logged once. Products are opaque; a primitive's normal and height maps are
+ * On the GL1 tier with multitexture volumes do the same with map-depth's
+ * test: the map on texture unit 1 by eye-linear texgen, its compare's
+ * result in alpha and the alpha test passing the shadowed fragments
+ * (logged "... through map-depth (SIZE) ..."). With framebuffer objects,
+ * depth textures and shadow compare (gl21's GL1 tier) it is the atlas
+ * above. Without framebuffer objects (gl14-shadow) each light's map is
+ * drawn as map-depth draws its own: in the light pre-pass, before the
+ * frame's clear, in the frame's buffer at the viewport's corner
+ * (scissored; the products resolved in its stencil, which such a frame
+ * needs), and copied into a texture per light and face, SIZE the
+ * smaller of shadows.map_size and the largest power of two the viewport
+ * holds (logged "... (SIZE, drawn before the frame's clear) ..."; made
+ * at the first frame that needs them, one a face, 4 bytes a texel, 1
+ * with map-combine, remade when SIZE changes), its projection cropped to
+ * the rectangle the products' bounds cover (2 texels clear round it). Without depth textures but with
+ * texture_env_combine (gl13-combine) the copy is map-combine's: the
+ * products' light-eye depth as an 8-bit ramp over the depths their
+ * bounds span, and the test is the ramp's stored - own + 0.5 in alpha
+ * (logged "... through map-combine ..."). A point light's six faces are
+ * marked one after the other, each kept to its own pyramid by two more
+ * texture units (its square, and the side of its plane the light faces):
+ * units 1-3 (1-4 with map-combine) in all, else its products cast none,
+ * logged once. The map's bound holds at the products' shadow edges on
+ * all of them (1% of the pixels the products decide in tests/image/
+ * csg_cast_test.c, measured 0-0.04% on gl13-combine and gl14-shadow).
+ * gl11 (no multitexture) casts no product under volumes, nor do the
+ * stencil volumes map-depth and map-combine hand point lights to without
+ * framebuffer objects; each logged once.
+ * Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term; on the CPU each layer reads depth back (and
  * the stencil once per batch), so that resolve costs read-backs more than

@@ -58,6 +58,8 @@ void stin__mat4_transform_point(const float m[16], const float p[3], float out[3
 float stin__sqrtf(float x);
 float stin__cos_deg(float degrees);
 int stin__isfinite(float x);
+/* The largest power of two not above n (1 for n < 2). */
+uint32_t stin__pow2_at_most(uint32_t n);
 /* 1 when the n values are all finite. */
 int stin__finite_n(const float *v, int n);
 /* Scales v to unit length at any magnitude; 0 (v unchanged or scaled) for a

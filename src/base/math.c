@@ -212,3 +212,11 @@ int stin__finite_n(const float *v, int n)
             return 0;
     return 1;
 }
+
+uint32_t stin__pow2_at_most(uint32_t n)
+{
+    uint32_t p = 1;
+    while (p <= n / 2u)
+        p *= 2u;
+    return p;
+}

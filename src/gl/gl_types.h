@@ -226,6 +226,7 @@ typedef void GLvoid;
 #define GL_ALPHA_TEST 0x0BC0
 #define GL_GEQUAL 0x0206
 #define GL_ADD_SIGNED 0x8574
+#define GL_ADD 0x0104
 #define GL_INTENSITY 0x8049
 #define GL_INTENSITY8 0x804B
 #define GL_LUMINANCE8 0x8040

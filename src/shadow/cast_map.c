@@ -11,43 +11,16 @@
  * receiver-plane bias, lit where half the kernel is). The lit pass, or the
  * screen mask's write, then lights only where both the volumes and the map
  * say lit. One map serves every light in turn, drawn mid-frame as map-pcf
- * draws a point light's faces. On GL1 with framebuffer objects the marking
- * pass is the fixed-function path's geometry with map-depth's test (the
- * compare into alpha, the alpha test), for spot and directional lights.
- * vdsm without storage buffers casts the products through the same map
- * into its screen mask. Frames without such casters draw nothing of it. */
-#include "internal.h"
-#include "render/casters.h"
-#include "render/displace_chunk.h"
-#include "render/resolved.h"
-#include "render/path_features.h"
-#include "render/screen_mask.h"
-#include "render/screen_quad.h"
+ * draws a point light's faces. On GL1 the marking pass is the
+ * fixed-function path's geometry with map-depth's or map-combine's test
+ * (shadow/cast_map_fixed.c), for every kind of light. vdsm without storage
+ * buffers casts the products through the same map into its screen mask.
+ * Frames without such casters draw nothing of it. */
+#include "shadow/cast_map_private.h"
 
 /* The map is an atlas (shadow.h's cells, cast_mark.frag's lookup): a spot
  * or directional light's map in cell 0, a point light's face f in cell f. */
-/* A program with the map test (cast_test.glsl): the marking pass's (its
- * model and camera) or vdsm's mask pass's (its position buffer). */
-typedef struct mark_program {
-    GLuint name;
-    GLint u_model, u_view_proj, u_position, u_matrix, u_params, u_light, u_faces, u_map;
-    stin__displace_locs displace;
-} mark_program;
-
-struct stin__cast_map_state {
-    GLuint texture, fbo;
-    mark_program mark, mark_tess; /* the pass, and its tessellated twin (displace-tess) */
-    mark_program mask;            /* vdsm's: the test into its screen mask */
-    uint32_t size;         /* a cell's texels a side */
-    int fixed;             /* volumes' marking pass is the fixed-function path's (GL1) */
-    int drawn;             /* the map holds the casters of the light being counted */
-    int displaced;         /* it casts the displaced draws too (volumes', not vdsm's) */
-    int faces;             /* its cells: 1, or a point light's 6 */
-    float matrix[STIN__CUBE_FACES][16]; /* world -> [0,1] atlas space, per cell */
-    float light[3];        /* a point light's position */
-    uint32_t kernel;       /* its light's pcf_kernel */
-    uint32_t said_light;   /* bit li: what casts light li's products was logged */
-};
+typedef stin__mark_program mark_program;
 
 size_t stin__cast_map_state_bytes(const stin_desc *d)
 {
@@ -66,16 +39,25 @@ static const stin__uniform_name mark_uniforms[] = {
     STIN__UNIFORM(mark_program, u_map, "u_cast_map"),
 };
 
-/* The map needs a framebuffer object, depth textures and shadow compare;
- * the fixed-function path's marking pass a second texture unit for it (the
- * geometry pass turns unit 0's texture off). */
+static int has(const stin_context *ctx, uint64_t need)
+{
+    return (ctx->caps.present & need) == need;
+}
+
+/* The map needs a framebuffer object, depth textures and shadow compare.
+ * The fixed-function path's marking pass needs a second texture unit (the
+ * geometry pass turns unit 0's texture off); there, without framebuffer
+ * objects, the map is drawn in the frame's own buffer (its stencil for the
+ * products' resolve) and copied out, as depth or as map-combine's ramp. */
 static int maps_here(const stin_context *ctx)
 {
-    uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
-                    STIN_CAP_BIT(STIN_CAP_SHADOW);
-    if (stin__path_of(ctx) != stin__glsl_path())
-        need |= STIN_CAP_BIT(STIN_CAP_MULTITEXTURE);
-    return (ctx->caps.present & need) == need;
+    uint64_t compare = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
+    if (stin__path_of(ctx) == stin__glsl_path())
+        return has(ctx, compare | STIN_CAP_BIT(STIN_CAP_FBO));
+    if (!has(ctx, STIN_CAP_BIT(STIN_CAP_MULTITEXTURE) | STIN_CAP_BIT(STIN_CAP_STENCIL)))
+        return 0;
+    return has(ctx, compare) || (has(ctx, STIN_CAP_BIT(STIN_CAP_TEXTURE_ENV_COMBINE)) &&
+                                 ctx->caps.max_texture_units >= 3); /* the map and the ramp */
 }
 
 /* The programs with the map test: volumes' marking pass (tessellated:
@@ -150,6 +132,9 @@ void stin__cast_map_init(stin_context *ctx, int screen)
         (screen && ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF))
         return; /* vdsm casts displaced draws itself */
     m->fixed = !screen && stin__path_of(ctx) != stin__glsl_path();
+    m->copied = m->fixed && !has(ctx, STIN_CAP_BIT(STIN_CAP_FBO));
+    m->ramp = m->copied && !has(ctx, STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
+                                         STIN_CAP_BIT(STIN_CAP_SHADOW));
     built = m->fixed   ? 1
             : screen ? ctx->sel.tier == STIN_TIER_GL4 && build_test(ctx, MASK, &m->mask, msg, sizeof msg)
                    : build_test(ctx, MARK, &m->mark, msg, sizeof msg) &&
@@ -163,7 +148,10 @@ void stin__cast_map_init(stin_context *ctx, int screen)
             stin__demote(ctx, STIN_FEATURE_DISPLACEMENT, STIN_TECH_DISPLACEMENT_OFF, why);
         return;
     }
-    make_map(ctx);
+    if (m->fixed)
+        stin__cast_fixed_init(ctx);
+    if (!m->copied)
+        make_map(ctx);
 }
 
 void stin__cast_map_release(stin_context *ctx)
@@ -179,6 +167,7 @@ void stin__cast_map_release(stin_context *ctx)
         GL(ctx, DeleteTextures)(1, &m->texture);
     if (m->fbo)
         GL(ctx, DeleteFramebuffers)(1, &m->fbo);
+    stin__cast_fixed_release(ctx);
     stin__memzero(m, sizeof *m);
 }
 
@@ -209,24 +198,30 @@ static int displaced_casters(const stin_context *ctx)
 static void say(stin_context *ctx, uint32_t li, int screen, int products, int displaced_draws)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
-    if (!m->texture) {
-        stin__casters_none(ctx, screen ? "under vdsm without GL 4.3's shader storage buffers "
-                                         "(the \"compute shaders\" capability), which its "
-                                         "per-pixel lists of crossings need, nor a GLSL depth "
-                                         "map to cast them"
-                                       : "into shadow volumes (a product's volume needs its "
-                                         "resolved silhouette, not its primitives'; a depth "
-                                         "map to cast them needs framebuffer objects, depth "
-                                         "textures and shadow compare)");
+    if (!m->texture && !m->copied) {
+        const char *why =
+            screen ? "under vdsm without GL 4.3's shader storage buffers (the \"compute "
+                     "shaders\" capability), which its per-pixel lists of crossings need, nor "
+                     "a GLSL depth map to cast them"
+            : stin__path_of(ctx) == stin__glsl_path()
+                ? "into shadow volumes (a product's volume needs its resolved silhouette, not "
+                  "its primitives'; a depth map to cast them needs framebuffer objects, depth "
+                  "textures and shadow compare)"
+                : "into shadow volumes (a product's volume needs its resolved silhouette, not "
+                  "its primitives'; a depth map to cast them on GL1 needs multitexture and "
+                  "either depth textures with shadow compare or texture_env_combine)";
+        stin__casters_none(ctx, why);
         return;
     }
     if (li < 32u && !(m->said_light & (1u << li))) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "%s: %s cast through %s (%u) for light %u", screen ? "vdsm" : "volume",
+                  "%s: %s cast through %s (%u%s) for light %u", screen ? "vdsm" : "volume",
                   products && displaced_draws ? "CSG products and displaced casters"
                   : products                  ? "CSG products"
                                               : "displaced casters",
-                  m->fixed ? "map-depth" : "map-pcf", (unsigned)m->size, (unsigned)li);
+                  m->ramp ? "map-combine" : m->fixed ? "map-depth" : "map-pcf",
+                  (unsigned)(m->copied ? m->copy_size : m->size),
+                  m->copied ? ", drawn before the frame's clear" : "", (unsigned)li);
         m->said_light |= 1u << li;
     }
 }
@@ -237,7 +232,7 @@ static int draw_cell(stin_context *ctx, const stin__path *path, const stin_light
 {
     struct stin__cast_map_state *m = ctx->cast_map;
     stin__pass_state ps = stin__pass_defaults;
-    float factor = 0.0f, units = 0.0f;
+    float factor = 0.0f, units = 0.0f, window[16];
     int s = (int)m->size, drew;
     const int rect[4] = {(cell % (int)STIN__ATLAS_COLUMNS) * s,
                          (cell / (int)STIN__ATLAS_COLUMNS) * s, s, s};
@@ -248,11 +243,14 @@ static int draw_cell(stin_context *ctx, const stin__path *path, const stin_light
     ps.offset_factor = factor;
     ps.offset_units = units;
     stin__pass_apply(ctx, &ps);
-    stin__light_window_matrix(m->matrix[cell], view, proj);
+    stin__light_window_matrix(window, view, proj);
+    stin__memcopy(m->matrix[cell], window, sizeof window);
     stin__light_into_cell(m->matrix[cell], cell);
     drew = stin__casters_cast(ctx, path, view, proj, rect, m->fbo, 0, factor, units);
     if (drew)
         stin__pass_apply(ctx, &ps); /* the products' resolve left its own state */
+    if (m->fixed)
+        stin__cast_fixed_cell(ctx, cell, window, m->matrix[cell], drew);
     return (m->displaced && stin__glsl_depth_kept(ctx, view, proj, displaced, NULL) > 0) || drew;
 }
 
@@ -265,15 +263,23 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     float view[16], proj[16], n, f;
     int face, products = stin__casters_wanted(ctx), displaced_draws;
     m->drawn = 0;
+    m->current = li;
     if (!(screen ? m->mask.name : m->mark.name || m->fixed)) {
         if (products)
             say(ctx, li, screen, 1, 0);
         return 0;
     }
-    if (m->fixed && l->type == STIN_LIGHT_POINT) {
-        /* a fragment cannot pick its face of the atlas without shaders */
-        stin__casters_none(ctx, "from point lights under shadow volumes on the GL1 tier");
+    if (m->fixed && l->type == STIN_LIGHT_POINT && !m->face_units) {
+        /* each face marks its own pyramid: a unit each for its square and side */
+        stin__casters_none(ctx, "from point lights under shadow volumes on the GL1 tier "
+                                "without two texture units beside the map test's");
         return 0;
+    }
+    if (m->copied) { /* drawn in the light pre-pass */
+        m->drawn = li < STIN__MAX_LIGHTS && m->lights[li].drawn;
+        if (products)
+            say(ctx, li, screen, 1, 0);
+        return m->drawn;
     }
     m->displaced = !screen && !m->fixed; /* vdsm casts displaced draws itself; GL1 has none */
     displaced_draws = m->displaced && displaced_casters(ctx);
@@ -285,6 +291,8 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     stin__pass_apply(ctx, &stin__pass_defaults); /* depth writes on for the clear */
     GL(ctx, ClearDepth)(1.0);
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
+    if (m->fixed)
+        m->lights[li].drawn = 0;
     if (l->type == STIN_LIGHT_POINT) {
         m->faces = STIN__CUBE_FACES;
         stin__memcopy(m->light, l->position, sizeof m->light);
@@ -321,9 +329,7 @@ static void submit(stin_context *ctx, const mark_program *p, const stin__draw *d
         stin__fixed_path()->geometry(ctx, d);
 }
 
-/* The frame's surfaces (its opaque draws and the products' faces) through
- * the marking program, depth EQUAL. */
-static void draw_receivers(stin_context *ctx, const mark_program *p)
+void stin__cast_map_receivers(stin_context *ctx, const mark_program *p)
 {
     const stin__draw *faces;
     uint32_t i, count;
@@ -386,38 +392,6 @@ static stin__pass_state mark_state(const stin_context *ctx)
     return ps;
 }
 
-/* GL1: the map on unit 1 by eye-linear texgen, its compare's result in
- * alpha, the alpha test passing the shadowed fragments. */
-static void mark_fixed(stin_context *ctx)
-{
-    const struct stin__cast_map_state *m = ctx->cast_map;
-    const stin__path *path = stin__fixed_path();
-    float rows[16];
-    int r, c;
-    for (r = 0; r < 4; r++) /* the window matrix's rows, for the planes */
-        for (c = 0; c < 4; c++)
-            rows[4 * r + c] = m->matrix[0][4 * c + r];
-    path->geometry_begin(ctx);
-    GL(ctx, MatrixMode)(GL_MODELVIEW);
-    GL(ctx, LoadMatrixf)(ctx->frame.view); /* planes given in world space */
-    GL(ctx, ActiveTexture)(GL_TEXTURE0 + 1);
-    GL_ENABLE(ctx, GL_TEXTURE_2D);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, m->texture);
-    stin__map_texgen(ctx, rows, 1);
-    GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-    GL_ENABLE(ctx, GL_ALPHA_TEST);
-    GL(ctx, AlphaFunc)(GL_LESS, 0.5f);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
-    draw_receivers(ctx, NULL);
-    path->geometry_end(ctx);
-    GL_DISABLE(ctx, GL_ALPHA_TEST);
-    GL(ctx, AlphaFunc)(GL_ALWAYS, 0.0f);
-    stin__map_unit_off(ctx, 1);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0 + 1);
-    GL_DISABLE(ctx, GL_TEXTURE_GEN_R);
-    GL(ctx, ActiveTexture)(GL_TEXTURE0);
-}
-
 void stin__cast_map_mark(stin_context *ctx)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
@@ -428,7 +402,7 @@ void stin__cast_map_mark(stin_context *ctx)
     ps = mark_state(ctx);
     stin__pass_apply(ctx, &ps);
     if (m->fixed) {
-        mark_fixed(ctx);
+        stin__cast_fixed_mark(ctx);
         stin__pass_apply(ctx, &saved);
         ctx->stats.passes++;
         return;
@@ -438,7 +412,7 @@ void stin__cast_map_mark(stin_context *ctx)
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
     test_uniforms(ctx, p);
     ctx->bound_mesh = 0xffffffffu;
-    draw_receivers(ctx, p);
+    stin__cast_map_receivers(ctx, p);
     ctx->bound_mesh = 0xffffffffu;
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     stin__pass_apply(ctx, &saved);

@@ -28,9 +28,6 @@
  * log says so once. */
 #include "shadow/map_fixed_private.h"
 
-#define RAMP_SIZE 256
-#define RAMP_BIAS_STEPS 1.5f /* the stored depth's rounding, with margin */
-#define SLOPE_BIAS 2.0f      /* steepest receiver slope (depth per texel) */
 /* The face mask's border texel lies just outside the 90-degree square: the
  * face frustum is widened so that the square's edge falls exactly between
  * the border texel and the first inner one (NEAREST sampling). */
@@ -52,14 +49,6 @@ static int combine_fbo(const stin_context *ctx)
 {
     uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE);
     return combine(ctx) && (ctx->caps.present & need) == need;
-}
-
-static uint32_t pow2_at_most(uint32_t n)
-{
-    uint32_t p = 1;
-    while (p * 2u <= n)
-        p *= 2u;
-    return p;
 }
 
 static void create_map_texture(stin_context *ctx, GLuint *t, uint32_t size)
@@ -86,23 +75,13 @@ static stin_result fixed_init(stin_context *ctx)
     /* after the surface technique's units (selection placed them) */
     ctx->map_fixed->unit = ctx->sel.shadow_unit;
     if (ctx->caps.max_texture_size > 0 && size > (uint32_t)ctx->caps.max_texture_size)
-        size = pow2_at_most((uint32_t)ctx->caps.max_texture_size);
+        size = stin__pow2_at_most((uint32_t)ctx->caps.max_texture_size);
     ctx->map_fixed->size = size;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (i = 0; i < ctx->desc.max_lights; i++)
         create_map_texture(ctx, &ctx->map_fixed->textures[i], size);
-    if (combine(ctx)) {
-        unsigned char ramp[RAMP_SIZE];
-        for (i = 0; i < RAMP_SIZE; i++)
-            ramp[i] = (unsigned char)i;
-        GL(ctx, GenTextures)(1, &ctx->map_fixed->ramp);
-        GL(ctx, BindTexture)(GL_TEXTURE_1D, ctx->map_fixed->ramp);
-        GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        GL(ctx, TexParameteri)(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        stin__upload_bytes(ctx, GL_TEXTURE_1D, GL_INTENSITY8, RAMP_SIZE, 1, GL_LUMINANCE, ramp);
-        GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
-    }
+    if (combine(ctx))
+        ctx->map_fixed->ramp = stin__map_ramp_create(ctx);
     if (combine_fbo(ctx)) {
         /* the colour, each map's, is attached as it is drawn */
         GL(ctx, GenTextures)(1, &ctx->map_fixed->depth_scratch);
@@ -198,18 +177,6 @@ int stin__map_offset(const stin_light_desc *l, float *factor, float *units)
     return 1;
 }
 
-/* Eye-linear plane of the light-eye depth mapped to [0, 1] over [n, f],
- * specified while the modelview is the identity (light-eye coordinates). */
-static void ramp_texgen_light_eye(stin_context *ctx, float n, float f)
-{
-    float plane[4] = {0, 0, -1.0f / (f - n), -n / (f - n)};
-    GL(ctx, MatrixMode)(GL_MODELVIEW);
-    GL(ctx, LoadMatrixf)((const float[16]){1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1});
-    GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
-    GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, plane);
-    GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
-}
-
 static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const float view[16],
                        const float proj[16], float n, float f)
 {
@@ -263,7 +230,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
         GL_ENABLE(ctx, GL_TEXTURE_1D);
         stin__bind_unit(ctx, 0, GL_TEXTURE_1D, ctx->map_fixed->ramp);
         GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_REPLACE);
-        ramp_texgen_light_eye(ctx, n, f);
+        stin__map_ramp_texgen(ctx, n, f);
         if (cast) /* the products' surface in the ramp's colours */
             stin__casters_again(ctx, map_vp, fbo ? ctx->map_fixed->fbo : ctx->draw_fbo,
                                 !fbo && stin__target_has_stencil(ctx));
@@ -310,24 +277,8 @@ static void store_texgen(stin_context *ctx, uint32_t slot, uint32_t li, const fl
     for (r = 0; r < 4; r++)
         for (c = 0; c < 4; c++)
             ctx->map_fixed->texgen[slot][4 * r + c] = m[4 * c + r];
-    /* Ramp coordinate of the fragment's own light-eye depth d, nearer than
-     * the stored one so that a surface does not shadow itself: a constant
-     * for the 8-bit steps, plus what a slope up to SLOPE_BIAS changes the
-     * depth over one texel - d times the texel's angular size for a
-     * perspective map (still a plane in d), the texel's width for an
-     * orthographic one. */
-    {
-        float unused_factor, unused_units;
-        int off = !stin__map_offset(&ctx->lights[li], &unused_factor, &unused_units);
-        float texel = 2.0f / (proj[0] * (float)ctx->map_fixed->used);
-        int ortho = proj[15] != 0.0f;
-        float slope = off ? 0.0f : SLOPE_BIAS * texel;
-        float k = -(1.0f - (ortho ? 0.0f : slope)) / (f - n);
-        float o = -n / (f - n) - (off ? 0.0f : RAMP_BIAS_STEPS / (float)(RAMP_SIZE - 1)) -
-                  (ortho ? slope / (f - n) : 0.0f);
-        for (c = 0; c < 4; c++)
-            ctx->map_fixed->ramp_plane[slot][c] = k * view[4 * c + 2] + (c == 3 ? o : 0.0f);
-    }
+    stin__map_ramp_plane(&ctx->lights[li], view, proj, n, f, ctx->map_fixed->used,
+                         ctx->map_fixed->ramp_plane[slot]);
 }
 
 /* Every spot and directional light's map, before the camera's clear. */
@@ -339,7 +290,7 @@ static void fixed_prepass(stin_context *ctx)
     if (!ctx->map_fixed->fbo) { /* drawn in the frame's own framebuffer */
         uint32_t fit = (uint32_t)(vp[2] < vp[3] ? vp[2] : vp[3]);
         if (fit < limit)
-            limit = pow2_at_most(fit);
+            limit = stin__pow2_at_most(fit);
     }
     ctx->map_fixed->used = limit;
     ctx->stats.shadows.map_size = limit;
@@ -421,24 +372,6 @@ void stin__map_unit_off(stin_context *ctx, int unit)
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
-void stin__map_combine(stin_context *ctx, const stin__combine_stage *c)
-{
-    int i;
-    GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
-    GL_ENUM(ctx, TexEnvi, c->rgb)(GL_TEXTURE_ENV, GL_COMBINE_RGB, (GLint)c->rgb);
-    GL_ENUM(ctx, TexEnvi, c->alpha)(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, (GLint)c->alpha);
-    for (i = 0; i < 2; i++) {
-        if (c->rgb_src[i]) {
-            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_SOURCE0_RGB + i), (GLint)c->rgb_src[i]);
-            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_OPERAND0_RGB + i), (GLint)c->rgb_op[i]);
-        }
-        if (c->alpha_src[i]) {
-            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_SOURCE0_ALPHA + i), (GLint)c->alpha_src[i]);
-            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, (GLenum)(GL_OPERAND0_ALPHA + i), (GLint)c->alpha_op[i]);
-        }
-    }
-}
-
 static void bind_slot(stin_context *ctx, uint32_t li);
 
 /* 1 if light li has a map this frame; binds its test onto the shadow units. */
@@ -474,7 +407,7 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         const stin__combine_stage compare = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
                                        GL_ADD_SIGNED, {GL_PREVIOUS, GL_TEXTURE},
                                        {GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA}};
-        stin__map_combine(ctx, &stored);
+        stin__combine_set(ctx, &stored);
         /* next unit: stored - own + 0.5 into alpha, colour passed on */
         GL(ctx, ActiveTexture)(u + 1u);
         GL_ENABLE(ctx, GL_TEXTURE_1D);
@@ -482,7 +415,7 @@ static void bind_slot(stin_context *ctx, uint32_t li)
         GL(ctx, TexGeni)(GL_S, GL_TEXTURE_GEN_MODE, GL_EYE_LINEAR);
         GL(ctx, TexGenfv)(GL_S, GL_EYE_PLANE, ctx->map_fixed->ramp_plane[li]);
         GL_ENABLE(ctx, GL_TEXTURE_GEN_S);
-        stin__map_combine(ctx, &compare);
+        stin__combine_set(ctx, &compare);
         GL_ENABLE(ctx, GL_ALPHA_TEST);
         GL(ctx, AlphaFunc)(GL_GEQUAL, 0.5f);
     }
@@ -588,7 +521,7 @@ static int face_begin(stin_context *ctx, uint32_t li, int face)
         const stin__combine_stage mask = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
                                     {GL_SRC_COLOR, GL_SRC_COLOR}, GL_REPLACE, {GL_PREVIOUS, 0},
                                     {GL_SRC_ALPHA, 0}};
-        stin__map_combine(ctx, &mask);
+        stin__combine_set(ctx, &mask);
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     }
     return 1;

@@ -41,15 +41,6 @@ struct stin__map_fixed_state {
     int said_point, said_area;
 };
 
-/* One texture_env_combine stage: operation, sources and operands for RGB and
- * alpha (a second source of 0 is unused). */
-typedef struct stin__combine_stage {
-    GLenum rgb, rgb_src[2], rgb_op[2];
-    GLenum alpha, alpha_src[2], alpha_op[2];
-} stin__combine_stage;
-
-/* Sets the active unit's environment to stage c. */
-void stin__map_combine(stin_context *ctx, const stin__combine_stage *c);
 
 /* map-depth's terminator test (shadow/map_terminator.c). units: the units
  * it takes after the side map's; lift stores slot's margins; side_draw

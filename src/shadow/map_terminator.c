@@ -130,10 +130,10 @@ static void receiver_units(stin_context *ctx, int solid)
     static const stin__combine_stage lifted = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
                                                GL_ADD, {GL_PREVIOUS, GL_TEXTURE},
                                                {GL_SRC_ALPHA, GL_SRC_ALPHA}};
-    stin__map_combine(ctx, solid ? &side : &facet);
+    stin__combine_set(ctx, solid ? &side : &facet);
     GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_ALPHA_SCALE, solid ? SIDE_SCALE : 1);
     GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)m->unit + 2u));
-    stin__map_combine(ctx, solid ? &lifted : &kept);
+    stin__combine_set(ctx, solid ? &lifted : &kept);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     if (solid)
         GL_ENABLE(ctx, GL_ALPHA_TEST);
@@ -165,7 +165,7 @@ void stin__map_terminator_bind(stin_context *ctx, uint32_t slot)
     rows[11] += m->lift[slot];
     m->slot = slot;
     GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)m->unit));
-    stin__map_combine(ctx, &tested);
+    stin__combine_set(ctx, &tested);
     GL(ctx, ActiveTexture)(u);
     GL_ENABLE(ctx, GL_TEXTURE_2D);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, m->textures[slot]);

@@ -166,8 +166,8 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
  * it can. Returns whether GPU extrusion is available at all. */
 int stin__volume_extrude_enable(stin_context *ctx, int on);
 /* The casters an exact technique cannot cast through a map of their own
- * (shadow/cast_map.c), on the GLSL tiers and GL1 with framebuffer objects
- * (spot and directional lights): volumes' CSG products and
+ * (shadow/cast_map.c), on the GLSL tiers and GL1 with multitexture (and
+ * depth compare or texture_env_combine): volumes' CSG products and
  * displaced draws, vdsm's products where it has no storage buffers (or a
  * product passes its limits). init/release at the technique's set-up
  * (screen: for vdsm's mask). casts: draw d is cast by volumes' map, not
@@ -187,6 +187,10 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
                         int screen);
 void stin__cast_map_mark(stin_context *ctx);
 void stin__cast_map_mask(stin_context *ctx, int channel, GLuint positions);
+/* GL1 without framebuffer objects (shadow/cast_map_fixed.c): volumes' light
+ * pre-pass, every light's map drawn in the frame's buffer before its clear
+ * and copied out (draw then finds it made). */
+void stin__cast_map_prepass(stin_context *ctx);
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or
@@ -220,6 +224,23 @@ void stin__map_texgen(stin_context *ctx, const float *rows, int with_r);
 /* A projected 2D unit back off: texgen S, T, Q and the texture disabled,
  * nothing bound, environment MODULATE; unit 0 active after. */
 void stin__map_unit_off(stin_context *ctx, int unit);
+/* One texture_env_combine stage: operation, sources and operands for RGB
+ * and alpha (a second source of 0 is unused); set makes it the active
+ * unit's environment (shadow/map_combine.c). */
+typedef struct stin__combine_stage {
+    GLenum rgb, rgb_src[2], rgb_op[2];
+    GLenum alpha, alpha_src[2], alpha_op[2];
+} stin__combine_stage;
+void stin__combine_set(stin_context *ctx, const stin__combine_stage *c);
+/* map-combine's depth as colour (shadow/map_combine.c): the 1D INTENSITY8
+ * ramp of 256 steps (created), its texgen of light-eye depth over [n, f]
+ * on the active unit (the modelview left the identity), and the plane of
+ * a receiver's own ramp coordinate in world space, biased nearer for the
+ * 8-bit steps and slopes over a texel of a map `texels` wide. */
+GLuint stin__map_ramp_create(stin_context *ctx);
+void stin__map_ramp_texgen(stin_context *ctx, float n, float f);
+void stin__map_ramp_plane(const stin_light_desc *l, const float view[16], const float proj[16],
+                          float n, float f, uint32_t texels, float plane[4]);
 /* map-depth / map-combine: 1 if light li is shadowed by a map test on the
  * lit pass this frame (its map, or a point light's faces), 0 where its
  * shadows are stencil volumes or none. */

@@ -697,6 +697,7 @@ const stin__shadow_technique stin__shadow_volume = {
     .init = volume_init,
     .release = volume_release,
     .prepare = volume_prepare,
+    .light_prepass = stin__cast_map_prepass, /* GL1 without FBOs: the products' maps */
     .light = volume_shadow_light,
     .uniforms = stin__mask_uniforms,
     .mask = volume_mask,

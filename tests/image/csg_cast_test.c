@@ -25,9 +25,11 @@
  *               fails. The maps must report stin_frame_stats.csg.cast_maps.
  *               The exact techniques cast products through a map of their
  *               own (shadow/cast_map.c) where they cannot themselves:
- *               volumes on the GLSL tiers and, for spot and directional
- *               lights, on GL1 with framebuffer objects (gl21's GL1 tier;
- *               map-depth's test), vdsm without GL 4.3's storage
+ *               volumes on the GLSL tiers and on GL1 for every light
+ *               (map-depth's test in framebuffer objects, gl21's GL1
+ *               tier, or drawn before the frame's clear and copied,
+ *               gl14-shadow; map-combine's ramp, gl13-combine), vdsm
+ *               without GL 4.3's storage
  *               buffers (gl33-core); there the map's bound (1%) holds on
  *               the pixels the product decides (its shadow, and 2 pixels
  *               around it), the technique's own elsewhere (0.5% volumes, 0
@@ -38,9 +40,8 @@
  *               framebuffer objects, which takes volumes) the render is
  *               held to the reference without casting (volumes' 0.5%) and
  *               the log must say why; volumes that cast none (GL1
- *               without framebuffer objects: gl11, gl13-combine,
- *               gl14-shadow; point lights on GL1) report SKIP with the
- *               log's reason when so held.
+ *               without multitexture: gl11) report SKIP with the log's
+ *               reason when so held.
  *               STIN_DEBUG_CSG_NO_CAST turns casting off: the map rows
  *               fail with it (tested by hand: 8.5% and 16.3%).
  *   cast-<technique>-bands  the same at a 4096 map (map-pcf on gl45-core,
@@ -156,16 +157,19 @@ static int product_near(const truth *tr, int w, int h, int x, int y)
     return 0;
 }
 
-/* Volumes cast products through their depth map: on the GLSL tiers, and on
- * GL1 with framebuffer objects, depth textures and shadow compare for
- * spot and directional lights (a fixed-function fragment cannot pick a
- * point light's face). */
-static int volume_casts(const capture *one, const scene *s)
+/* Volumes cast products through their depth map: on the GLSL tiers, and
+ * on GL1 with multitexture and either depth textures with shadow compare
+ * (map-depth's test, drawn in framebuffer objects or, without them, in the
+ * frame's buffer before its clear and copied out) or texture_env_combine
+ * (map-combine's ramp of depths), for every kind of light (a point light's
+ * six faces each marking its own pyramid). gl11 has neither. */
+int csg_volume_casts(const capture *one)
 {
-    const uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
-                          STIN_CAP_BIT(STIN_CAP_SHADOW) | STIN_CAP_BIT(STIN_CAP_MULTITEXTURE);
+    const uint64_t compare = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
+    const uint64_t caps = one->caps_present;
     return one->choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_FIXED ||
-           ((one->caps_present & need) == need && s->lights[0].type != SCENE_LIGHT_POINT);
+           ((caps & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE)) &&
+            ((caps & compare) == compare || (caps & STIN_CAP_BIT(STIN_CAP_TEXTURE_ENV_COMBINE))));
 }
 
 static void test_cast(run *r, stin_tier tier, const char *label, const scene *s, const truth *tr,
@@ -206,7 +210,7 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
      * casts them through a map of its own; volumes cast through that map on
      * the GLSL tiers */
     said = strstr(one.fallbacks, "CSG products cast no shadow") != NULL;
-    cast = map ? s->lights[0].type != SCENE_LIGHT_POINT || !said : volume ? volume_casts(&one, s) : 1;
+    cast = map ? s->lights[0].type != SCENE_LIGHT_POINT || !said : volume ? csg_volume_casts(&one) : 1;
     via_map = cast && (volume || (vdsm && !(one.caps_present & STIN_CAP_BIT(STIN_CAP_COMPUTE))));
     truth_vis = cast ? tr->vis_cast : tr->vis_none;
     bound = cast ? (vdsm ? CAST_VDSM_MAX : CAST_MAP_MAX) : CAST_VOLUME_MAX;

@@ -400,12 +400,11 @@ static void test_shadow(run *r, const csg_case *c, stin_technique tech, stin_tie
     if (!capture_forced(r, s, &o, STIN_FEATURE_SHADOWS, t, &one, name))
         return;
     /* vdsm walks products where it has GL 4.3's storage buffers, else casts
-     * them through a map of its own; volumes cast through that map on the
-     * GLSL tiers (the map's bound then), not on GL1 */
+     * them through a map of its own; volumes cast through that map (the
+     * map's bound then) save on GL1 without multitexture (csg_cast_test.c) */
     vdsm_casts = t == STIN_TECH_SHADOWS_VDSM &&
                  (cap->caps_present & STIN_CAP_BIT(STIN_CAP_COMPUTE));
-    via_map = (t == STIN_TECH_SHADOWS_VOLUME &&
-               cap->choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_FIXED) ||
+    via_map = (t == STIN_TECH_SHADOWS_VOLUME && csg_volume_casts(cap)) ||
               (t == STIN_TECH_SHADOWS_VDSM && !vdsm_casts);
     if (via_map)
         bound = CSG_VIS_MAP_MAX;

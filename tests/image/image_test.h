@@ -91,8 +91,12 @@ void csg_many_tests(run *r, stin_tier tier);
 struct compare_result;
 void csg_report_normals(run *r, const char *name, const struct compare_result *cr,
                         double degrees, double min_match);
-/* Products casting shadows (csg_cast_test.c; from csg_tests, dir: csg.json's folder). */
+/* Products casting shadows (csg_cast_test.c; from csg_tests, dir: csg.json's folder).
+ * volume_casts: whether volumes cast products in the context of a capture
+ * (capture.h) through their map, for every kind of light. */
 void csg_cast_tests(run *r, stin_tier tier, const char *dir);
+struct capture;
+int csg_volume_casts(const struct capture *one);
 /* Deep shadow maps ("deep", GL4) against the reference's transmittance, on
  * deep-stack, deep-colour and glass-panes; below GL4 a SKIP and the refusal
  * of a forced deep (deep_test.c). */
