@@ -250,7 +250,7 @@ clean:
 
 # ---- fuzzing (docs/fuzzing.md) ----------------------------------------------
 # The loader's sources without GL: the targets link no stin, no platform.
-FUZZ_SRC := $(addprefix tools/common/,image_buffer.c isolate.c one_line.c scene_camera.c scene_entries.c scene_json.c \
+FUZZ_SRC := $(addprefix tools/common/,image_buffer.c isolate.c name_table.c one_line.c scene_camera.c scene_entries.c scene_json.c \
   scene_json_util.c scene_mesh_file.c scene_model_check.c scene_model_import.c \
   scene_model_materials.c scene_model_wire.c scene_primitives.c scene_texture.c)
 FUZZ_LIBS := -lOpenImageIO -lOpenImageIO_Util -lassimp -lcjson -lstdc++ -lm

@@ -1581,10 +1581,10 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
  * words (a context has 2 (csg.max_terms + csg.max_literals)). Primitives
  * are not looked at (desc->primitives need only be non-NULL). STIN_OK and
  * size->terms, size->literals (0 terms: every term empty); else the result
- * stin_draw_csg gives for it and *why (if not NULL) its log's words: a
- * STIN_ERROR_CAPACITY for the scratch wants more scratch (size->
- * scratch_words says how far it got), for the steps is the expression's
- * own. size->scratch_words: the scratch it used at most, which a frame's
+ * stin_draw_csg gives for it and *why (if not NULL) its log's words (a
+ * STIN_ERROR_CAPACITY with size->scratch_words above scratch_words: the
+ * scratch was short, try a larger one; else the expression's own).
+ * size->scratch_words: the scratch it used at most, which a frame's
  * 2 (csg.max_terms + csg.max_literals) must reach. */
 typedef struct stin_csg_size {
     uint32_t terms, literals, scratch_words;

@@ -199,7 +199,10 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
     }
     stin__memzero(&out, sizeof out); /* terms NULL: counted only */
     nf = stin__csg_normal_form(desc->nodes, desc->node_count, scratch, scratch_words, &out);
-    size->scratch_words = out.scratch_peak;
+    /* short of scratch: more than it had (what it needs is not known yet) */
+    size->scratch_words = nf == STIN__CSG_NF_SCRATCH && scratch_words < UINT32_MAX
+                              ? scratch_words + 1u
+                              : out.scratch_peak;
     if (nf != STIN__CSG_NF_OK) {
         if (why)
             *why = nf_failure(nf);

@@ -351,6 +351,7 @@ static void test_measure(void **state)
     assert_true(size.scratch_words >= 2 * 257 && size.scratch_words <= WORDS);
     assert_int_equal(stin_csg_measure(&d, scratch, 100, &size, &why), STIN_ERROR_CAPACITY);
     assert_non_null(strstr(why, "scratch"));
+    assert_int_equal(size.scratch_words, 101); /* short: more than it had */
     d.primitive_count = 256; /* node 256 names primitive 256 */
     assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why),
                      STIN_ERROR_INVALID_ARGUMENT);
@@ -367,6 +368,7 @@ static void test_measure(void **state)
     assert_int_equal(stin_csg_measure(&d, big_scratch, BIG_WORDS, &size, &why),
                      STIN_ERROR_CAPACITY);
     assert_non_null(strstr(why, "2^24 steps"));
+    assert_true(size.scratch_words <= BIG_WORDS);
     /* 1025 deep */
     d.node_count = doubled(0, 0, STIN__CSG_MAX_DEPTH + 1, 0) + 1;
     assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why),
