@@ -14,7 +14,7 @@ typedef struct builder {
     int object_count, object_cap, operand_cap;
     /* per csg entry and per object: the product that last reached it (+1)
      * and its node there */
-    int *entry_seen, *entry_node, *object_seen, *object_node;
+    int *entry_seen, *entry_node, *object_seen, *object_node, *object_slot;
     int *order, *stack;   /* the entries of the product being built, and the walk's */
 } builder;
 
@@ -49,37 +49,53 @@ static int push_node(builder *b, stin_csg_node n)
 }
 
 /* Entries reached from root (once each) into b->order, ascending: operands
- * are earlier entries, so that is an order with operands first. Counts the
- * distinct objects too. */
+ * are earlier entries, so that is an order with operands first. The objects'
+ * primitive slots go in the order a walk a before b first meets them (a
+ * tree's leaves left to right, as when products were expanded). Returns the
+ * entries; *objects: the objects. */
 static int reach(builder *b, int root, int mark, int *objects)
 {
-    int n = 0, top = 0, k;
+    int n = 0, top = 0;
     *objects = 0;
     b->entry_seen[root] = mark;
-    b->stack[top++] = root;
+    b->stack[top++] = -1 - root; /* operand codes: an object, or -1 - an entry */
     while (top > 0) {
-        int at = b->stack[--top];
-        const scene_csg *e = &b->s->csg[at];
-        b->order[n++] = at;
-        for (k = 0; k < 2; k++) {
-            int x = k ? e->b : e->a;
-            if (x >= 0 && b->object_seen[x] != mark) {
+        int x = b->stack[--top];
+        const scene_csg *e;
+        if (x >= 0) {
+            if (b->object_seen[x] != mark) {
                 b->object_seen[x] = mark;
-                ++*objects;
-            } else if (x < 0 && b->entry_seen[-1 - x] != mark) {
-                b->entry_seen[-1 - x] = mark; /* marked when pushed: on the stack once */
-                b->stack[top++] = -1 - x;
+                b->object_slot[x] = (*objects)++;
             }
+            continue;
+        }
+        b->order[n++] = -1 - x;
+        e = &b->s->csg[-1 - x];
+        if (e->b >= 0 || b->entry_seen[-1 - e->b] != mark) {
+            if (e->b < 0)
+                b->entry_seen[-1 - e->b] = mark; /* marked when pushed: pushed once */
+            b->stack[top++] = e->b;
+        }
+        if (e->a >= 0 || b->entry_seen[-1 - e->a] != mark) {
+            if (e->a < 0)
+                b->entry_seen[-1 - e->a] = mark;
+            b->stack[top++] = e->a;
         }
     }
     qsort(b->order, (size_t)n, sizeof *b->order, ascending);
     return n;
 }
 
-/* One product's nodes from b->node_count on; 0 out of memory. */
-static int emit(builder *b, int entries, int first_node, int first_object)
+/* One product's nodes from b->node_count on, its objects[] from
+ * first_object on (objects of them); 0 out of memory. */
+static int emit(builder *b, int entries, int first_node, int first_object, int objects)
 {
     int i, k;
+    if (!grow((void **)&b->objects, &b->object_cap, first_object + objects, sizeof *b->objects) ||
+        !grow((void **)&b->operands, &b->operand_cap, first_object + objects,
+              sizeof *b->operands))
+        return 0;
+    b->object_count = first_object + objects;
     for (i = 0; i < entries; i++) {
         int at = b->order[i];
         const scene_csg *e = &b->s->csg[at];
@@ -93,16 +109,12 @@ static int emit(builder *b, int entries, int first_node, int first_object)
                 node = b->object_node[x];
             } else {
                 stin_csg_node leaf;
-                int slot = b->object_count;
-                if (!grow((void **)&b->objects, &b->object_cap, slot + 1, sizeof *b->objects) ||
-                    !grow((void **)&b->operands, &b->operand_cap, slot + 1, sizeof *b->operands))
-                    return 0;
+                int slot = first_object + b->object_slot[x];
                 b->objects[slot] = x;
                 b->operands[slot] = 2 * at + k;
-                b->object_count++;
                 memset(&leaf, 0, sizeof leaf);
                 leaf.op = STIN_CSG_PRIMITIVE;
-                leaf.primitive = (uint32_t)(slot - first_object);
+                leaf.primitive = (uint32_t)b->object_slot[x];
                 node = b->object_node[x] = b->node_count;
                 if (!push_node(b, leaf))
                     return 0;
@@ -131,6 +143,7 @@ static void builder_free(builder *b)
     free(b->entry_node);
     free(b->object_seen);
     free(b->object_node);
+    free(b->object_slot);
     free(b->order);
     free(b->stack);
 }
@@ -149,11 +162,12 @@ int scene_csg_products_build(const scene *s, scene_csg_products *out)
     b.entry_seen = calloc(entries, sizeof *b.entry_seen);
     b.entry_node = calloc(entries, sizeof *b.entry_node);
     b.order = calloc(entries, sizeof *b.order);
-    b.stack = calloc(entries, sizeof *b.stack);
+    b.stack = calloc(3 * entries, sizeof *b.stack); /* each entry once, and its two operands */
     b.object_seen = calloc(objects, sizeof *b.object_seen);
     b.object_node = malloc(objects * sizeof *b.object_node);
+    b.object_slot = calloc(objects, sizeof *b.object_slot);
     if (!out->products || !out->roots || !first || !b.entry_seen || !b.entry_node ||
-        !b.order || !b.stack || !b.object_seen || !b.object_node)
+        !b.order || !b.stack || !b.object_seen || !b.object_node || !b.object_slot)
         goto fail;
     for (i = 0; i < s->object_count; i++)
         b.object_node[i] = -1;
@@ -173,7 +187,7 @@ int scene_csg_products_build(const scene *s, scene_csg_products *out)
             first[2 * out->count - 1] = -1;
             continue;
         }
-        if (!emit(&b, reached, first_node, first_object))
+        if (!emit(&b, reached, first_node, first_object, distinct))
             goto fail;
         p->primitive_count = b.object_count - first_object;
         p->node_count = b.node_count - first_node;
