@@ -848,7 +848,7 @@ static void test_csg_checked(void **state)
         "{\"meshes\": {\"ball\": {\"primitive\": \"sphere\"}},\n"
         " \"objects\": [{\"mesh\": \"ball\", \"name\": \"a\"}, {\"mesh\": \"ball\", \"name\": \"b\"}],\n"
         " \"csg\": [{\"op\": \"subtract\", \"a\": \"a\", \"b\": \"b\", \"name\": \"x0\"}";
-    char text[8192], err[512];
+    char text[32768], err[512];
     size_t n = 0;
     int i;
     scene s;
@@ -874,6 +874,28 @@ static void test_csg_checked(void **state)
     memset(&desc, 0, sizeof desc);
     assert_int_equal(scene_csg_products_check(&s, &p, &desc, err, sizeof err), 1);
     assert_int_equal(desc.csg.max_terms, 0); /* stin's defaults hold it */
+    scene_csg_products_free(&p);
+    scene_free(&s);
+    /* a union of 257 objects: stin's 256 primitives and terms raised to 257 */
+    n = (size_t)snprintf(text, sizeof text, "{\"meshes\": {\"cube\": {\"primitive\": \"box\"}},\n"
+                         "\"objects\": [{\"mesh\": \"cube\", \"name\": \"o0\"}");
+    for (i = 1; i < 257; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n, ", {\"mesh\": \"cube\", \"name\": \"o%d\"}", i);
+    n += (size_t)snprintf(text + n, sizeof text - n,
+                          "],\n\"csg\": [{\"op\": \"union\", \"a\": \"o0\", \"b\": \"o1\", \"name\": \"u1\"}");
+    for (i = 2; i < 257; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n,
+                              ", {\"op\": \"union\", \"a\": \"u%d\", \"b\": \"o%d\", \"name\": \"u%d\"}",
+                              i - 1, i, i);
+    n += (size_t)snprintf(text + n, sizeof text - n, "]}\n");
+    assert_true(n < sizeof text);
+    assert_int_equal(scene_load_text("union.json", text, n, &s, err, sizeof err), 1);
+    assert_int_equal(scene_csg_products_build(&s, &p), 1);
+    memset(&desc, 0, sizeof desc);
+    assert_int_equal(scene_csg_products_check(&s, &p, &desc, err, sizeof err), 1);
+    assert_int_equal(desc.csg.max_primitives, 257);
+    assert_int_equal(desc.csg.max_terms, 257);
+    assert_int_equal(desc.csg.max_literals, 0); /* 257 of stin's default 4096 */
     scene_csg_products_free(&p);
     scene_free(&s);
 }

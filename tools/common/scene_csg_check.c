@@ -80,7 +80,7 @@ static int raise_capacity(uint32_t *field, uint64_t need, uint32_t dflt)
 int scene_csg_products_check(const scene *s, const scene_csg_products *p, stin_desc *desc,
                              char *err, size_t err_size)
 {
-    uint64_t primitives = 0, terms = 0, literals = 0, scratch_need = 0;
+    uint64_t primitives = 0, terms = 0, literals = 0, scratch_need = 0, room;
     uint32_t words = 1u << 16, *scratch = malloc((size_t)words * sizeof *scratch);
     int i, j, ok = 1;
     if (!scratch)
@@ -126,9 +126,9 @@ int scene_csg_products_check(const scene *s, const scene_csg_products *p, stin_d
         ok = 0;
     /* the frame's scratch is 2 (max_terms + max_literals) words */
     scratch_need = (scratch_need + 1) / 2;
-    terms = desc->csg.max_terms ? desc->csg.max_terms : 256u;
-    if (ok && scratch_need > terms + literals)
-        literals = scratch_need - terms;
+    room = desc->csg.max_terms ? desc->csg.max_terms : 256u;
+    if (ok && scratch_need > room + literals)
+        literals = scratch_need - room;
     if (!ok || !raise_capacity(&desc->csg.max_literals, literals, 4096)) {
         snprintf(err, err_size, "%s: csg: the products need %llu primitives, %llu terms and "
                  "%llu literals a frame; stin takes fewer than 2^24 of each", s->path,
