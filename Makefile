@@ -249,10 +249,11 @@ clean:
 	rm -rf $(B) out
 
 # ---- fuzzing (docs/fuzzing.md) ----------------------------------------------
-# The loader's sources without GL: the targets link no stin, no platform.
-FUZZ_SRC := $(addprefix tools/common/,image_buffer.c isolate.c one_line.c scene_camera.c scene_entries.c scene_json.c \
-  scene_json_util.c scene_mesh_file.c scene_model_check.c scene_model_import.c \
-  scene_model_materials.c scene_model_wire.c scene_primitives.c scene_texture.c)
+# The loader's sources without GL, and stin (built for the fuzzer) for the
+# csg products' checks (stin_csg_measure): no GL call is made, no platform.
+FUZZ_SRC := $(addprefix tools/common/,image_buffer.c isolate.c name_table.c one_line.c scene_camera.c scene_csg.c \
+  scene_csg_check.c scene_entries.c scene_json.c scene_json_util.c scene_mesh_file.c scene_model_check.c \
+  scene_model_import.c scene_model_materials.c scene_model_wire.c scene_primitives.c scene_texture.c)
 FUZZ_LIBS := -lOpenImageIO -lOpenImageIO_Util -lassimp -lcjson -lstdc++ -lm
 FUZZ_CXX ?= clang++
 FUZZ_SECONDS ?= 60
@@ -262,15 +263,21 @@ FUZZ_DIRS_files := tests/fuzz/corpus/files:tests/fuzz/crashes/files
 $(B)/fuzz/image_io.o: tools/common/image_io.cpp tools/common/image_io.h
 	@mkdir -p $(@D)
 	$(FUZZ_CXX) -std=c++17 $(WARN) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -Itools/common -c $< -o $@
-$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_SRC) $(B)/fuzz/image_io.o $(wildcard tools/common/*.h)
+$(B)/fuzz/lib/%.o: %.c
+	@mkdir -p $(@D)
+	@echo "  CC fuzz $<"; $(FUZZ_CXX) -x c $(LIB_CFLAGS) $(FUZZ_SAN) -fsanitize=fuzzer-no-link -c $< -o $@
+$(B)/fuzz/libstin.a: $(LIB_SRC:%.c=$(B)/fuzz/lib/%.o) $(B)/fuzz/lib/$(B)/shaders_embedded.o
+	rm -f $@ && $(AR) rcs $@ $^
+$(B)/fuzz/fuzz_%: tests/fuzz/fuzz_%.c $(FUZZ_SRC) $(B)/fuzz/image_io.o $(B)/fuzz/libstin.a $(wildcard tools/common/*.h)
 	$(FUZZ_CXX) -x c -std=c99 $(WARN) $(FUZZ_SAN) -fsanitize=fuzzer -D_POSIX_C_SOURCE=200809L -Iinclude \
 	  -Itools/common $(shell pkg-config --cflags libcjson 2>/dev/null) -o $@ $< $(FUZZ_SRC) -x none \
-	  $(B)/fuzz/image_io.o $(FUZZ_LIBS)
+	  $(B)/fuzz/image_io.o $(B)/fuzz/libstin.a $(FUZZ_LIBS)
 # make check replays the committed corpus and every crash found, without libFuzzer.
-$(B)/tests/test_fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(call san_obj,$(FUZZ_SRC) tools/common/image_io.cpp)
+$(B)/tests/test_fuzz_%: tests/fuzz/fuzz_%.c tests/fuzz/replay_main.c $(call san_obj,$(FUZZ_SRC) tools/common/image_io.cpp) $(B)/libstin_san.a
 	@mkdir -p $(@D)
 	$(CC) $(SAN_CFLAGS) -DREPLAY_NAME='"fuzz_$*"' -DREPLAY_DIRS='"$(FUZZ_DIRS_$*)"' \
-	  -o $@ $< tests/fuzz/replay_main.c $(call san_obj,$(FUZZ_SRC) tools/common/image_io.cpp) $(FUZZ_LIBS)
+	  -o $@ $< tests/fuzz/replay_main.c $(call san_obj,$(FUZZ_SRC) tools/common/image_io.cpp) \
+	  $(B)/libstin_san.a $(FUZZ_LIBS)
 fuzz: deps $(B)/fuzz/fuzz_scene $(B)/fuzz/fuzz_files
 	@sh tests/fuzz/run.sh $(B) $(FUZZ_SECONDS)
 

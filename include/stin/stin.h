@@ -1581,9 +1581,11 @@ stin_result stin_end_frame(stin_context *ctx);
  * a n (b u c) = a b u a c). Each term keeps at least one primitive that is
  * not complemented; literals are sorted by primitive, repeats within a term
  * are merged and a term that holds a primitive and its complement is empty
- * and dropped (a - a draws nothing). No other simplification is made: a
- * union of n terms with k primitives each costs what Goldfeather's method
- * costs for it.
+ * and dropped (a - a draws nothing). An operation whose two operands are
+ * the same node is that node (a u a = a n a = a, a - a empty), so a tree
+ * that unions a node with itself level after level stays one term. No other
+ * simplification is made: a union of n terms with k primitives each costs
+ * what Goldfeather's method costs for it.
  * The product's visible surface is where the camera ray first enters the
  * solid: a primitive's outside where it is not complemented, the inside of a
  * complemented one (a cavity's wall, shaded with the primitive's material and
@@ -1628,12 +1630,33 @@ typedef struct stin_csg_desc {
  * parity of its surfaces along a ray is what says inside);
  * STIN_ERROR_CAPACITY when the frame's csg.max_primitives, csg.max_terms or
  * csg.max_literals would be passed, when the partial normal forms outgrow
- * the scratch, or when expanding the expression visits more than 2^22 nodes
- * (a shared node counts at each use) (the log names which; the product is
- * dropped and counted in stin_frame_stats.csg.dropped). Primitives no term
- * names are not drawn. A product whose every term is empty draws nothing
- * and returns STIN_OK. stin_query_csg_terms reads the normal form back. */
+ * the scratch, or when normalising takes more than 2^24 steps (a step: a
+ * node visited, a shared node at each use; and per pair of terms crossed,
+ * one plus the literals of both: about 0.1 s; a union of 2^12 terms
+ * crossed with 2^12 terms each empty against it is past it) (the log names
+ * which; the product is dropped and counted in stin_frame_stats.csg.dropped).
+ * Primitives no term names are not drawn. A product whose every term is
+ * empty draws nothing and returns STIN_OK. stin_query_csg_terms reads the
+ * normal form back. */
 stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc);
+
+/* What stin_draw_csg would make of desc's expression, without a context or
+ * GL (a scene loader's check before any frame): the checks on its nodes
+ * (count, ops, primitive indices below desc->primitive_count, order, depth)
+ * and its normal form, normalised in the caller's scratch of scratch_words
+ * words (a context has 2 (csg.max_terms + csg.max_literals)). Primitives
+ * are not looked at (desc->primitives need only be non-NULL). STIN_OK and
+ * size->terms, size->literals (0 terms: every term empty); else the result
+ * stin_draw_csg gives for it and *why (if not NULL) its log's words (a
+ * STIN_ERROR_CAPACITY with size->scratch_words above scratch_words: the
+ * scratch was short, try a larger one; else the expression's own).
+ * size->scratch_words: the scratch it used at most, which a frame's
+ * 2 (csg.max_terms + csg.max_literals) must reach. */
+typedef struct stin_csg_size {
+    uint32_t terms, literals, scratch_words;
+} stin_csg_size;
+stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
+                             uint32_t scratch_words, stin_csg_size *size, const char **why);
 
 /* CSG technique "goldfeather" (every tier with a stencil buffer: it reads
  * depth with glReadPixels and writes it back with glDrawPixels on

@@ -76,23 +76,30 @@ static int all_zero(const float *v, int n)
     return 1;
 }
 
-/* Ops known, primitive indices in range, operands before their node. */
-static stin_result check_nodes(stin_context *ctx, const stin_csg_desc *desc)
+/* Ops known, primitive indices in range, operands before their node: NULL,
+ * or what is wrong with node *at. */
+static const char *node_problem(const stin_csg_node *nodes, uint32_t node_count,
+                                uint32_t primitive_count, uint32_t *at)
 {
     uint32_t i;
-    for (i = 0; i < desc->node_count; i++) {
-        const stin_csg_node *n = &desc->nodes[i];
+    for (i = 0; i < node_count; i++) {
+        const stin_csg_node *n = &nodes[i];
+        *at = i;
         if ((unsigned)n->op > STIN_CSG_SUBTRACTION)
-            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
-                          "unknown op in node", i);
-        if (n->op == STIN_CSG_PRIMITIVE && n->primitive >= desc->primitive_count)
-            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
-                          "primitive index out of range in node", i);
+            return "unknown op in node";
+        if (n->op == STIN_CSG_PRIMITIVE && n->primitive >= primitive_count)
+            return "primitive index out of range in node";
         if (n->op != STIN_CSG_PRIMITIVE && (n->a >= i || n->b >= i))
-            return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
-                          "an operand must be a node before the one using it, in node", i);
+            return "an operand must be a node before the one using it, in node";
     }
-    return STIN_OK;
+    return NULL;
+}
+
+static stin_result check_nodes(stin_context *ctx, const stin_csg_desc *desc)
+{
+    uint32_t at;
+    const char *why = node_problem(desc->nodes, desc->node_count, desc->primitive_count, &at);
+    return why ? refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT, why, at) : STIN_OK;
 }
 
 /* Each primitive into the store (from ctx->csg->primitive_count on; the
@@ -153,11 +160,57 @@ static const char *nf_failure(stin__csg_nf_result r)
     case STIN__CSG_NF_DEPTH:
         return "the expression nests deeper than 1024";
     case STIN__CSG_NF_WORK:
-        return "the expression expands to more than 2^22 node visits";
+        return "normalising the expression takes more than 2^24 steps (a node visited, "
+               "a pair of terms crossed and their literals)";
     case STIN__CSG_NF_OK:
         break;
     }
     return "";
+}
+
+static stin_result nf_result(stin__csg_nf_result nf)
+{
+    return nf == STIN__CSG_NF_OK      ? STIN_OK
+           : nf == STIN__CSG_NF_DEPTH ? STIN_ERROR_INVALID_ARGUMENT
+                                      : STIN_ERROR_CAPACITY;
+}
+
+stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
+                             uint32_t scratch_words, stin_csg_size *size, const char **why)
+{
+    static const char *const empty = "empty expression: nodes and primitives are required";
+    stin__csg_out out;
+    stin__csg_nf_result nf;
+    uint32_t at;
+    const char *problem;
+    if (why)
+        *why = "";
+    if (!desc || !scratch || !size)
+        return STIN_ERROR_INVALID_ARGUMENT;
+    stin__memzero(size, sizeof *size);
+    problem = !desc->nodes || !desc->node_count || !desc->primitives || !desc->primitive_count
+                  ? empty
+              : desc->node_count > STIN__CSG_MAX_NODES ? "more than 65536 nodes"
+                  : node_problem(desc->nodes, desc->node_count, desc->primitive_count, &at);
+    if (problem) {
+        if (why)
+            *why = problem;
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
+    stin__memzero(&out, sizeof out); /* terms NULL: counted only */
+    nf = stin__csg_normal_form(desc->nodes, desc->node_count, scratch, scratch_words, &out);
+    /* short of scratch: more than it had (what it needs is not known yet) */
+    size->scratch_words = nf == STIN__CSG_NF_SCRATCH && scratch_words < UINT32_MAX
+                              ? scratch_words + 1u
+                              : out.scratch_peak;
+    if (nf != STIN__CSG_NF_OK) {
+        if (why)
+            *why = nf_failure(nf);
+        return nf_result(nf);
+    }
+    size->terms = out.term_count;
+    size->literals = out.literal_count;
+    return STIN_OK;
 }
 
 stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
@@ -201,8 +254,7 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
     out.literal_base = c->literal_count;
     nf = stin__csg_normal_form(desc->nodes, desc->node_count, c->scratch, c->scratch_words, &out);
     if (nf != STIN__CSG_NF_OK)
-        return refuse(ctx, nf == STIN__CSG_NF_DEPTH ? STIN_ERROR_INVALID_ARGUMENT
-                                                    : STIN_ERROR_CAPACITY,
+        return refuse(ctx, nf_result(nf),
                       nf == STIN__CSG_NF_DEPTH ? STIN_LOG_BAD_ARGUMENT : STIN_LOG_POOL_FULL,
                       nf_failure(nf), desc->node_count);
     if (out.term_count == 0) {

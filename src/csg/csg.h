@@ -13,9 +13,11 @@
  * hands the products down to the shadow techniques reads them too. */
 #define STIN__CSG_MAX_NODES 65536u
 #define STIN__CSG_MAX_DEPTH 1024u
-/* Node visits of one normalisation (shared subtrees are expanded at every
- * use; a tree of a - a - a ... would otherwise take 2^depth visits). */
-#define STIN__CSG_MAX_VISITS (1u << 22)
+/* Steps of one normalisation: a node visited (a shared subtree is expanded
+ * at every use), and per pair of terms crossed one and the literals of both
+ * (a cross product of two long lists may leave nothing: a union doubled L
+ * times, crossed with its complement, would take 4^L). */
+#define STIN__CSG_MAX_WORK (1u << 24)
 
 typedef struct stin__csg_term {
     uint32_t first, count;   /* literals[first .. first + count), sorted, each primitive once */
@@ -60,6 +62,7 @@ typedef struct stin__csg_out {
     uint32_t *literals;
     uint32_t max_literals, literal_count;
     uint32_t literal_base;    /* added to each term's `first` (the store's offset) */
+    uint32_t scratch_peak;    /* words of scratch the normalisation used at most */
 } stin__csg_out;
 
 typedef enum stin__csg_nf_result {
@@ -68,12 +71,13 @@ typedef enum stin__csg_nf_result {
     STIN__CSG_NF_LITERALS,    /* more literals than out->max_literals */
     STIN__CSG_NF_SCRATCH,     /* intermediate forms outgrew the scratch */
     STIN__CSG_NF_DEPTH,       /* nested deeper than STIN__CSG_MAX_DEPTH */
-    STIN__CSG_NF_WORK         /* more than STIN__CSG_MAX_VISITS node visits */
+    STIN__CSG_NF_WORK         /* more than STIN__CSG_MAX_WORK steps */
 } stin__csg_nf_result;
 
 /* The normal form of nodes[node_count - 1] (nodes already checked: ops
  * known, operands before their node, primitive indices in range) into out.
- * Pure: no context, no GL. On failure out's counts are left at 0. */
+ * Pure: no context, no GL. On failure out's counts are left at 0. With
+ * out->terms NULL it only counts (term_count, literal_count: no limits). */
 stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t node_count,
                                           uint32_t *scratch, uint32_t scratch_words,
                                           stin__csg_out *out);

@@ -9,14 +9,17 @@
  * are built on a stack of words in the scratch (a term is its length, then
  * its sorted literals); a cross product is written above its operands and
  * moved down over them, so the scratch holds one chain of partial results,
- * never a heap. */
+ * never a heap. An operation on one node twice is that node (a u a = a n a
+ * = a; a - a is empty): a tree doubled level by level stays one term. The
+ * work is counted (STIN__CSG_MAX_WORK): a shared subtree is expanded at each
+ * use, and a cross product of two long lists may leave nothing. */
 #include "internal.h"
 
 typedef struct nf_work {
     const stin_csg_node *nodes;
     uint32_t *w;
-    uint32_t size, top;
-    uint32_t visits;        /* nodes visited: a shared subtree is expanded each time */
+    uint32_t size, top, peak;
+    uint64_t work;          /* steps so far (STIN__CSG_MAX_WORK) */
     stin__csg_nf_result failed;
 } nf_work;
 
@@ -28,6 +31,17 @@ static void push(nf_work *k, uint32_t v)
         return;
     }
     k->w[k->top++] = v;
+    if (k->top > k->peak)
+        k->peak = k->top;
+}
+
+/* Adds steps; past the limit the normalisation stops. */
+static int spend(nf_work *k, uint64_t steps)
+{
+    k->work += steps;
+    if (k->work > STIN__CSG_MAX_WORK && !k->failed)
+        k->failed = STIN__CSG_NF_WORK;
+    return !k->failed;
 }
 
 /* The term a n b (both sorted) at the top of the stack; nothing when it
@@ -68,7 +82,7 @@ static void cross(nf_work *k, uint32_t x, int cx, uint32_t y, int cy, uint32_t d
     normal_form(k, y, cy, depth);
     r0 = k->top;
     for (a = a0; a < b0 && !k->failed; a += 1 + k->w[a])
-        for (b = b0; b < r0 && !k->failed; b += 1 + k->w[b])
+        for (b = b0; b < r0 && spend(k, 1u + k->w[a] + k->w[b]); b += 1 + k->w[b])
             push_conjunction(k, a, b);
     if (k->failed)
         return;
@@ -86,8 +100,15 @@ static void normal_form(nf_work *k, uint32_t node, int complement, uint32_t dept
         k->failed = STIN__CSG_NF_DEPTH;
         return;
     }
-    if (++k->visits > STIN__CSG_MAX_VISITS) {
-        k->failed = STIN__CSG_NF_WORK;
+    if (!spend(k, 1))
+        return;
+    if (n->op != STIN_CSG_PRIMITIVE && n->a == n->b) {
+        uint32_t at = k->top;
+        normal_form(k, n->a, complement, depth + 1); /* a u a = a n a = a, and its complement */
+        if (n->op == STIN_CSG_SUBTRACTION && !complement)
+            k->top = at; /* a - a is empty (a was expanded for its checks) */
+        else if (n->op == STIN_CSG_SUBTRACTION)
+            normal_form(k, n->a, 0, depth + 1); /* !(a - a) = !a + a */
         return;
     }
     switch (n->op) {
@@ -132,15 +153,21 @@ stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t n
     k.nodes = nodes;
     k.w = scratch;
     k.size = scratch_words;
-    k.top = 0;
-    k.visits = 0;
+    k.top = k.peak = 0;
+    k.work = 0;
     k.failed = STIN__CSG_NF_OK;
     normal_form(&k, node_count - 1u, 0, 0);
+    out->scratch_peak = k.peak;
     if (k.failed)
         return k.failed;
     for (t = 0; t < k.top; t += 1 + k.w[t]) {
         terms++;
         literals += k.w[t];
+    }
+    if (!out->terms) { /* measured only */
+        out->term_count = terms;
+        out->literal_count = literals;
+        return STIN__CSG_NF_OK;
     }
     if (terms > out->max_terms)
         return STIN__CSG_NF_TERMS;

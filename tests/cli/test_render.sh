@@ -16,6 +16,7 @@ check() { # name, condition result (0 = pass), detail
 # Each bad file: exit 2 in bounded time, exactly one stderr line of valid
 # UTF-8 naming the file, no image.
 for f in tests/scenes/bad/*.json; do
+    rm -f "$T/out.png"
     timeout 60 "$R" "$f" -o "$T/out.png" > "$T/stdout" 2> "$T/stderr"
     rc=$?
     ok=1
@@ -23,6 +24,49 @@ for f in tests/scenes/bad/*.json; do
         [ "$(wc -l < "$T/stderr")" -eq 1 ] && iconv -f UTF-8 -t UTF-8 "$T/stderr" > /dev/null 2>&1 && ok=0
     check "bad-scene $(basename "$f")" $ok "exit $rc, stderr: $(head -c 200 "$T/stderr")"
 done
+
+# CSG lists stin could not take as written: a tree that unions an entry with
+# itself 28 times is 30 nodes, not 2^28 (it ran out of memory); a union of
+# 257 objects gets the capacities it needs (stin's default is 256); a chain
+# of 300,000 entries is refused in seconds (names are looked up through a
+# hash: it loaded quadratically, still at it after 120 s).
+csg_scene() { # file, then the csg entries on stdin, one a line
+    { printf '{"camera": {"eye": [0, 2, 5], "target": [0, 0, 0]},\n'
+      printf ' "meshes": {"ball": {"primitive": "sphere", "radius": 0.5, "slices": 6, "stacks": 4}},\n'
+      printf ' "objects": [%s],\n' "$CSG_OBJECTS"
+      printf ' "lights": [{"type": "point", "position": [0, 5, 0]}],\n "csg": [\n'
+      sed '$!s/$/,/'
+      printf ']}\n'; } > "$1"
+}
+CSG_OBJECTS='{"mesh": "ball", "name": "a"}, {"mesh": "ball", "name": "b", "translate": [0.4, 0, 0]}'
+{ echo '{"op": "subtract", "a": "a", "b": "b", "name": "x0"}'
+  i=1; while [ $i -le 28 ]; do
+      echo "{\"op\": \"union\", \"a\": \"x$((i - 1))\", \"b\": \"x$((i - 1))\", \"name\": \"x$i\"}"
+      i=$((i + 1)); done; } | csg_scene "$T/doubled.json"
+timeout 60 "$R" "$T/doubled.json" --size 64x64 -o "$T/doubled.png" > /dev/null 2> "$T/stderr"
+rc=$?
+check "csg doubled 28 times renders" $([ $rc -eq 0 ] && [ -s "$T/doubled.png" ] && echo 0 || echo 1) \
+    "exit $rc, stderr: $(head -c 200 "$T/stderr")"
+CSG_OBJECTS=$(awk 'BEGIN { for (i = 0; i < 257; i++)
+    printf "%s{\"mesh\": \"ball\", \"name\": \"o%d\", \"translate\": [%g, 0, 0]}", i ? ", " : "", i, i / 100 }')
+awk 'BEGIN { print "{\"op\": \"union\", \"a\": \"o0\", \"b\": \"o1\", \"name\": \"u1\"}"
+    for (i = 2; i < 257; i++) printf "{\"op\": \"union\", \"a\": \"u%d\", \"b\": \"o%d\", \"name\": \"u%d\"}\n", i - 1, i, i }' |
+    csg_scene "$T/union257.json"
+timeout 60 "$R" "$T/union257.json" --size 64x64 -o "$T/union257.png" > /dev/null 2> "$T/stderr"
+rc=$?
+check "csg union of 257 objects renders" $([ $rc -eq 0 ] && [ -s "$T/union257.png" ] && echo 0 || echo 1) \
+    "exit $rc, stderr: $(head -c 200 "$T/stderr")"
+CSG_OBJECTS='{"mesh": "ball", "name": "o"}'
+awk 'BEGIN { print "{\"op\": \"union\", \"a\": \"o\", \"b\": \"o\", \"name\": \"r0\"}"
+    for (i = 1; i < 300000; i++) printf "{\"op\": \"union\", \"a\": \"r%d\", \"b\": \"o\", \"name\": \"r%d\"}\n", i - 1, i }' |
+    csg_scene "$T/chain.json"
+start=$(date +%s)
+timeout 60 "$R" "$T/chain.json" --size 64x64 -o "$T/chain.png" > /dev/null 2> "$T/stderr"
+rc=$?
+took=$(( $(date +%s) - start ))
+check "csg chain of 300,000 entries refused in seconds" \
+    $([ $rc -eq 2 ] && [ $took -le 20 ] && grep -q 'csg\[299999\]' "$T/stderr" && [ ! -e "$T/chain.png" ] &&
+      echo 0 || echo 1) "exit $rc after $took s, stderr: $(head -c 200 "$T/stderr")"
 
 "$R" tests/scenes/does-not-exist.json -o "$T/out.png" > /dev/null 2> "$T/stderr"
 rc=$?

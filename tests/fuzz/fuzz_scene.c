@@ -1,8 +1,11 @@
 /* SPDX-License-Identifier: MIT */
-/* libFuzzer target: the scene loader (JSON text -> scene) on any bytes.
+/* libFuzzer target: the scene loader (JSON text -> scene) on any bytes,
+ * then the csg list as products (a DAG: operands before their node, each
+ * primitive in range) and stin's checks of them (stin_csg_measure; no GL).
  * Relative file names resolve against tests/scenes/, so mutated scenes reach
  * the example models and textures too. Run from the repository root. */
 #include "scene.h"
+#include "scene_csg.h"
 #include "scene_internal.h"
 
 #include <stdint.h>
@@ -25,6 +28,35 @@ static int has_big_number(const cJSON *j)
     return 0;
 }
 
+/* Every product's nodes name earlier nodes and its own primitives, which
+ * are objects of the scene; the checks fail with one line or pass. */
+static void check_products(const scene *s)
+{
+    scene_csg_products p;
+    stin_desc desc;
+    char err[1024] = "";
+    int i, k, r;
+    if (!scene_csg_products_build(s, &p))
+        return; /* out of memory */
+    for (i = 0; i < p.count; i++) {
+        const scene_gpu_csg *c = &p.products[i];
+        for (k = 0; c->nodes && k < c->node_count; k++) {
+            const stin_csg_node *n = &c->nodes[k];
+            if (n->op == STIN_CSG_PRIMITIVE ? n->primitive >= (uint32_t)c->primitive_count
+                                            : n->a >= (uint32_t)k || n->b >= (uint32_t)k)
+                abort();
+        }
+        for (k = 0; k < c->primitive_count; k++)
+            if (c->objects[k] < 0 || c->objects[k] >= s->object_count)
+                abort();
+    }
+    memset(&desc, 0, sizeof desc);
+    r = scene_csg_products_check(s, &p, &desc, err, sizeof err);
+    if (r == 0 && (!err[0] || strchr(err, '\n')))
+        abort();
+    scene_csg_products_free(&p);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
@@ -42,8 +74,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     probe = cJSON_Parse(text);
     if (!has_big_number(probe)) {
         scene_import_seconds = 5; /* a looping decoder costs 5 s, not 60 */
-        if (scene_load_text("tests/scenes/fuzz.json", text, size, &s, err, sizeof err))
+        if (scene_load_text("tests/scenes/fuzz.json", text, size, &s, err, sizeof err)) {
+            check_products(&s);
             scene_free(&s);
+        }
         else if (!err[0] || strchr(err, '\n'))
             abort(); /* every failure has exactly one line to say */
     }

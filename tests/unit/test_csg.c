@@ -230,13 +230,152 @@ static void test_limits(void **state)
         assert_int_equal(stin__csg_normal_form(nodes, 15, scratch, WORDS, &out),
                          STIN__CSG_NF_TERMS);
     }
-    /* x_i = x_{i-1} - x_{i-1}: empty at each level, 2^i visits */
+    /* x_i = x_{i-1} - x_{i-1}: one node twice, empty at once */
     for (i = 1; i < 40; i++) {
         stin_csg_node s = S(0, 0);
         s.a = s.b = i - 1;
         chain[i] = s;
     }
-    assert_int_equal(normalise(chain, 40, &out, WORDS), STIN__CSG_NF_WORK);
+    assert_int_equal(normalise(chain, 40, &out, WORDS), STIN__CSG_NF_OK);
+    assert_int_equal(out.term_count, 0);
+    /* x_i = x_{i-1} - (x_{i-1} n x_{i-1}): x_{i-1} expanded twice a level */
+    for (i = 1; i < 80; i += 2) {
+        stin_csg_node n = I(0, 0), s = S(0, 0);
+        n.a = n.b = i - 1;
+        s.a = i - 1;
+        s.b = i;
+        chain[i] = n;
+        chain[i + 1] = s;
+    }
+    assert_int_equal(normalise(chain, 81, &out, WORDS), STIN__CSG_NF_WORK);
+}
+
+/* ---- bounded work --------------------------------------------------------- */
+enum { BIG_WORDS = 1 << 18 };
+static uint32_t big_scratch[BIG_WORDS];
+static stin_csg_node big[4 * STIN__CSG_MAX_DEPTH];
+
+/* A union of primitive doubled `levels` times from big[at] on: through one
+ * shared node (x u x), or through a second node (x u (x n x)). The index
+ * of its root. */
+static uint32_t doubled(uint32_t at, uint32_t primitive, uint32_t levels, int second)
+{
+    uint32_t i, x = at;
+    big[at] = (stin_csg_node)P(0);
+    big[at].primitive = primitive;
+    for (i = 0; i < levels; i++) {
+        stin_csg_node u = U(0, 0), n = I(0, 0);
+        u.a = u.b = n.a = n.b = x;
+        if (second) {
+            big[x + 1] = n;
+            u.b = x + 1;
+            x++;
+        }
+        big[++x] = u;
+    }
+    return x;
+}
+
+/* X n (Y - p), X a union of p and Y one of q, each doubled L times: every
+ * one of X's terms [p] crossed with Y's [q !p] is empty. */
+static uint32_t doubled_product(uint32_t levels, int second)
+{
+    uint32_t x = doubled(0, 0, levels, second), y = doubled(x + 1, 1, levels, second);
+    big[y + 1] = (stin_csg_node)S(0, 0);
+    big[y + 1].a = y;
+    big[y + 2] = (stin_csg_node)I(0, 0);
+    big[y + 2].a = x;
+    big[y + 2].b = y + 1;
+    return y + 3;
+}
+
+static void test_work_is_bounded(void **state)
+{
+    stin__csg_out out;
+    uint32_t n;
+    (void)state;
+    /* one shared node doubled 20 times is one term (it was 2^20), and the
+     * product with its complement is empty at once (it was 4^20 crossings) */
+    n = doubled(0, 0, 20, 0);
+    assert_int_equal(normalise(big, n + 1, &out, WORDS), STIN__CSG_NF_OK);
+    assert_int_equal(out.term_count, 1);
+    assert_int_equal(literals[terms[0].first], L(0));
+    n = doubled_product(20, 0);
+    assert_int_equal(normalise(big, n, &out, WORDS), STIN__CSG_NF_OK);
+    assert_int_equal(out.term_count, 0);
+    /* through a second node: 2^13 x 2^13 crossings, each empty, with room
+     * for them all: refused for the steps, not run for seconds */
+    n = doubled_product(13, 1);
+    memset(&out, 0, sizeof out);
+    out.terms = terms;
+    out.max_terms = TERMS;
+    out.literals = literals;
+    out.max_literals = LITERALS;
+    assert_int_equal(stin__csg_normal_form(big, n, big_scratch, BIG_WORDS, &out),
+                     STIN__CSG_NF_WORK);
+    assert_int_equal(out.term_count, 0);
+    /* 2^6 x 2^6 is within it */
+    n = doubled_product(6, 1);
+    assert_int_equal(stin__csg_normal_form(big, n, big_scratch, BIG_WORDS, &out),
+                     STIN__CSG_NF_OK);
+    assert_int_equal(out.term_count, 0);
+}
+
+static void test_measure(void **state)
+{
+    static stin_csg_primitive one;
+    stin_csg_desc d;
+    stin_csg_size size;
+    const char *why = NULL;
+    uint32_t i, n;
+    (void)state;
+    memset(&d, 0, sizeof d);
+    d.primitives = &one;
+    d.nodes = big;
+    /* a union of 257 primitives: 257 terms of one */
+    for (i = 0; i < 257; i++) {
+        big[i] = (stin_csg_node)P(0);
+        big[i].primitive = i;
+    }
+    big[257] = (stin_csg_node)U(0, 1);
+    for (n = 258, i = 2; i < 257; i++, n++) {
+        big[n] = (stin_csg_node)U(0, 0);
+        big[n].a = n - 1;
+        big[n].b = i;
+    }
+    d.primitive_count = 257;
+    d.node_count = n;
+    assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why), STIN_OK);
+    assert_int_equal(size.terms, 257);
+    assert_int_equal(size.literals, 257);
+    assert_true(size.scratch_words >= 2 * 257 && size.scratch_words <= WORDS);
+    assert_int_equal(stin_csg_measure(&d, scratch, 100, &size, &why), STIN_ERROR_CAPACITY);
+    assert_non_null(strstr(why, "scratch"));
+    assert_int_equal(size.scratch_words, 101); /* short: more than it had */
+    d.primitive_count = 256; /* node 256 names primitive 256 */
+    assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why),
+                     STIN_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(why, "out of range"));
+    /* the doubled tree: one term; through a second node: past the steps */
+    d.primitive_count = 2;
+    d.node_count = doubled_product(28, 0);
+    assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why), STIN_OK);
+    assert_int_equal(size.terms, 0);
+    d.node_count = doubled(0, 0, 28, 0) + 1;
+    assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why), STIN_OK);
+    assert_int_equal(size.terms, 1);
+    d.node_count = doubled_product(13, 1);
+    assert_int_equal(stin_csg_measure(&d, big_scratch, BIG_WORDS, &size, &why),
+                     STIN_ERROR_CAPACITY);
+    assert_non_null(strstr(why, "2^24 steps"));
+    assert_true(size.scratch_words <= BIG_WORDS);
+    /* 1025 deep */
+    d.node_count = doubled(0, 0, STIN__CSG_MAX_DEPTH + 1, 0) + 1;
+    assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why),
+                     STIN_ERROR_INVALID_ARGUMENT);
+    assert_non_null(strstr(why, "1024"));
+    d.node_count = doubled(0, 0, STIN__CSG_MAX_DEPTH - 1, 0) + 1;
+    assert_int_equal(stin_csg_measure(&d, scratch, WORDS, &size, &why), STIN_OK);
 }
 
 /* ---- stin_draw_csg on the fake GL ---------------------------------------- */
@@ -820,6 +959,8 @@ int main(void)
         cmocka_unit_test(test_empty_terms_dropped_and_repeats_merged),
         cmocka_unit_test(test_random_trees_match_their_normal_forms),
         cmocka_unit_test(test_limits),
+        cmocka_unit_test(test_work_is_bounded),
+        cmocka_unit_test(test_measure),
         cmocka_unit_test_setup_teardown(test_draw_csg_accepts_and_reads_back, setup, teardown),
         cmocka_unit_test_setup_teardown(test_draw_csg_refuses_bad_input, setup, teardown),
         cmocka_unit_test_setup_teardown(test_draw_csg_capacities, setup, teardown),

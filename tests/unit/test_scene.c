@@ -21,6 +21,7 @@
 #include "one_line.h"
 #include "scene.h"
 #include "scene_csg.h"
+#include "scene_internal.h" /* scene_load_text */
 #include "scene_primitives.h"
 
 #define BAD_DIR "tests/scenes/bad"
@@ -165,6 +166,15 @@ static const struct {
     { "degenerate-mesh.json", NULL, "" },
     { "raw-bytes.json", "", "line 2, column 13: unexpected '\\xff\\xfe\\n\\x01" },
     { "truncated-glb.json", "meshes.cut.file", "cannot open 'truncated.glb'" },
+    { "camera-near-tiny.json", "camera.near", "must be at least 1e-06 (got 1e-30)" },
+    { "surface-not-a-surface.json", "materials.grey.surface", "'vdsm' is not a surface technique" },
+    { "surface-csg-off.json", "materials.grey.surface", "'csg-off' is not a surface technique" },
+    /* loaded; scene_csg_products_check refuses them (test_csg_checked) */
+    { "csg-transparent-operand.json", NULL, "" },
+    { "csg-too-deep.json", NULL, "" },
+    { "csg-doubled-crossed.json", NULL, "" },
+    /* loaded; refused once stin has judged the meshes (tests/cli/test_render.sh) */
+    { "csg-open-mesh.json", NULL, "" },
 };
 #define BAD_COUNT (sizeof bad_scenes / sizeof bad_scenes[0])
 
@@ -813,6 +823,83 @@ static void test_csg_list(void **state)
     scene_free(&s);
 }
 
+/* What stin_draw_csg would refuse, refused before any GL with the key that
+ * names it; what its capacities can hold, given room. */
+static void expect_csg_refused(const char *file, const char *key, const char *problem)
+{
+    scene s;
+    scene_csg_products p;
+    stin_desc desc;
+    char err[512], path[256];
+    snprintf(path, sizeof path, BAD_DIR "/%s", file);
+    memset(&desc, 0, sizeof desc);
+    assert_int_equal(scene_load(path, &s, err, sizeof err), 1);
+    assert_int_equal(scene_csg_products_build(&s, &p), 1);
+    assert_int_equal(scene_csg_products_check(&s, &p, &desc, err, sizeof err), 0);
+    if (!strstr(err, key) || !strstr(err, problem) || strncmp(err, path, strlen(path)) != 0)
+        fail_msg("%s: got \"%s\", want %s ... %s", path, err, key, problem);
+    scene_csg_products_free(&p);
+    scene_free(&s);
+}
+
+static void test_csg_checked(void **state)
+{
+    static const char doubled[] =
+        "{\"meshes\": {\"ball\": {\"primitive\": \"sphere\"}},\n"
+        " \"objects\": [{\"mesh\": \"ball\", \"name\": \"a\"}, {\"mesh\": \"ball\", \"name\": \"b\"}],\n"
+        " \"csg\": [{\"op\": \"subtract\", \"a\": \"a\", \"b\": \"b\", \"name\": \"x0\"}";
+    char text[32768], err[512];
+    size_t n = 0;
+    int i;
+    scene s;
+    scene_csg_products p;
+    stin_desc desc;
+    (void)state;
+    expect_csg_refused("csg-transparent-operand.json", "csg[0].b", "opacity 0.5");
+    expect_csg_refused("csg-too-deep.json", "csg[1024]", "nests deeper than 1024");
+    expect_csg_refused("csg-doubled-crossed.json", "csg[59]", "2^24 steps");
+    /* an entry unioned with itself 28 times: 31 nodes, one term */
+    n += (size_t)snprintf(text + n, sizeof text - n, "%s", doubled);
+    for (i = 1; i <= 28; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n,
+                              ",\n{\"op\": \"union\", \"a\": \"x%d\", \"b\": \"x%d\", \"name\": \"x%d\"}",
+                              i - 1, i - 1, i);
+    n += (size_t)snprintf(text + n, sizeof text - n, "]}\n");
+    assert_true(n < sizeof text);
+    assert_int_equal(scene_load_text("doubled.json", text, n, &s, err, sizeof err), 1);
+    assert_int_equal(scene_csg_products_build(&s, &p), 1);
+    assert_int_equal(p.count, 1);
+    assert_int_equal(p.products[0].node_count, 31);
+    assert_int_equal(p.products[0].primitive_count, 2);
+    memset(&desc, 0, sizeof desc);
+    assert_int_equal(scene_csg_products_check(&s, &p, &desc, err, sizeof err), 1);
+    assert_int_equal(desc.csg.max_terms, 0); /* stin's defaults hold it */
+    scene_csg_products_free(&p);
+    scene_free(&s);
+    /* a union of 257 objects: stin's 256 primitives and terms raised to 257 */
+    n = (size_t)snprintf(text, sizeof text, "{\"meshes\": {\"cube\": {\"primitive\": \"box\"}},\n"
+                         "\"objects\": [{\"mesh\": \"cube\", \"name\": \"o0\"}");
+    for (i = 1; i < 257; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n, ", {\"mesh\": \"cube\", \"name\": \"o%d\"}", i);
+    n += (size_t)snprintf(text + n, sizeof text - n,
+                          "],\n\"csg\": [{\"op\": \"union\", \"a\": \"o0\", \"b\": \"o1\", \"name\": \"u1\"}");
+    for (i = 2; i < 257; i++)
+        n += (size_t)snprintf(text + n, sizeof text - n,
+                              ", {\"op\": \"union\", \"a\": \"u%d\", \"b\": \"o%d\", \"name\": \"u%d\"}",
+                              i - 1, i, i);
+    n += (size_t)snprintf(text + n, sizeof text - n, "]}\n");
+    assert_true(n < sizeof text);
+    assert_int_equal(scene_load_text("union.json", text, n, &s, err, sizeof err), 1);
+    assert_int_equal(scene_csg_products_build(&s, &p), 1);
+    memset(&desc, 0, sizeof desc);
+    assert_int_equal(scene_csg_products_check(&s, &p, &desc, err, sizeof err), 1);
+    assert_int_equal(desc.csg.max_primitives, 257);
+    assert_int_equal(desc.csg.max_terms, 257);
+    assert_int_equal(desc.csg.max_literals, 0); /* 257 of stin's default 4096 */
+    scene_csg_products_free(&p);
+    scene_free(&s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -833,6 +920,7 @@ int main(void)
         cmocka_unit_test(test_file_texture),
         cmocka_unit_test(test_compare),
         cmocka_unit_test(test_csg_list),
+        cmocka_unit_test(test_csg_checked),
     };
     return cmocka_run_group_tests(tests, make_tmp_dir, remove_tmp_dir);
 }

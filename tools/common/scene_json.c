@@ -8,9 +8,11 @@
  * operands that exist) but not evaluated: the CSG renderer reads the file
  * itself, and every object stays an ordinary renderable mesh.
  */
+#include "name_table.h"
 #include "scene_entries.h"
 #include "scene_internal.h"
 #include "scene_primitives.h"
+#include "stin/stin.h" /* the technique list only: the loader links no stin */
 
 #include <errno.h>
 #include <math.h>
@@ -22,6 +24,9 @@
 #define TESSELLATION_MAX 1024
 #define INSTANCES_MAX 1000000
 #define IMAGE_SIZE_MAX 16384
+/* The smallest camera.near: below it the camera's matrices cannot be
+ * inverted for the output's positions (1e-20 could not; 1e-15 could). */
+#define CAMERA_NEAR_MIN 1e-6f
 
 static const float identity[16] = { 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1 };
 
@@ -210,6 +215,31 @@ static int texture_slot(scene_parser *p, const cJSON *j, const char *key, const 
     return 1;
 }
 
+/* A material's "surface": one of stin's surface techniques (a technique of
+ * another feature would drop the draw). */
+static int check_surface(scene_parser *p, const char *where, const char *name)
+{
+#define SCENE_TECHNIQUE_(id, text, feature, tier) {text, feature},
+    static const struct { const char *name; stin_feature feature; } list[] = {
+        STIN_TECHNIQUE_LIST(SCENE_TECHNIQUE_)};
+#undef SCENE_TECHNIQUE_
+    char names[128] = "", path[256];
+    size_t i;
+    if (!name[0])
+        return 1;
+    for (i = 0; i < sizeof list / sizeof list[0]; i++) {
+        if (list[i].feature != STIN_FEATURE_SURFACE)
+            continue;
+        if (!strcmp(list[i].name, name))
+            return 1;
+        snprintf(names + strlen(names), sizeof names - strlen(names), "%s%s",
+                 names[0] ? ", " : "", list[i].name);
+    }
+    scene_join(path, sizeof path, where, "surface");
+    return scene_fail(p, path, "'%s' is not a surface technique (%s, or none for automatic)",
+                      name, names);
+}
+
 void scene_material_defaults(scene_material *m)
 {
     const scene_material d = { "", { 0.8f, 0.8f, 0.8f, 1 }, { 0, 0, 0 }, 32, -1, -1, -1, 0.04f, "", 0, 0, 0, 0, 0 };
@@ -243,7 +273,8 @@ static int parse_material(scene_parser *p, const cJSON *j, const char *where, sc
         !scene_get_string(p, j, "surface", where, m->surface, sizeof m->surface) ||
         !scene_get_string(p, j, "self_shadow", where, self_shadow, sizeof self_shadow) ||
         !scene_get_bool(p, j, "two_sided", where, &m->two_sided) ||
-        !scene_get_bool(p, j, "displace", where, &m->displace))
+        !scene_get_bool(p, j, "displace", where, &m->displace) ||
+        !check_surface(p, where, m->surface))
         return 0;
     m->has_height_bias = cJSON_GetObjectItemCaseSensitive(j, "height_bias") != NULL;
     if (!scene_get_number(p, j, "height_bias", where, SCENE_ANY, &m->height_bias))
@@ -437,11 +468,12 @@ static int add_instances(scene_parser *p, scene *s, int *cap, const char *where,
 }
 
 /* names: one SCENE_NAME_MAX slot per objects[] entry ("" when unnamed), for
- * csg. An entry of several parts (a model file's nodes) gives one instance
+ * csg, each named one in table (its entry). An entry of several parts (a model file's nodes) gives one instance
  * per part: object transform * node transform, and the node's material
  * unless the object names one. */
 static int parse_objects(scene_parser *p, const cJSON *j, scene *s, const scene_entries *e,
-                         char (*names)[SCENE_NAME_MAX], int *first, int *instances)
+                         char (*names)[SCENE_NAME_MAX], name_table *table, int *first,
+                         int *instances)
 {
     static const char *const keys[] = { "name", "mesh", "material", "translate", "rotate",
                                         "scale", "matrix", "repeat", NULL };
@@ -450,15 +482,17 @@ static int parse_objects(scene_parser *p, const cJSON *j, scene *s, const scene_
     int i = 0, cap = 0;
     for (c = j->child; c; c = c->next, i++) {
         float m[16], step[3], world[16];
-        int count[3], entry, material = -1, k;
+        int count[3], entry, material = -1, k, taken;
         snprintf(where, sizeof where, "objects[%d]", i);
         if (!scene_check_object(p, c, where, keys) || !scene_require(p, c, "mesh", where) ||
             !scene_get_string(p, c, "name", where, names[i], SCENE_NAME_MAX))
             return 0;
-        if (names[i][0] && find_named(names[0], SCENE_NAME_MAX, i, names[i]) >= 0) {
+        if (names[i][0] && name_table_find(table, names[i], &taken)) {
             scene_join(path, sizeof path, where, "name");
             return scene_fail(p, path, "duplicate object name '%s'", names[i]);
         }
+        if (names[i][0])
+            name_table_add(table, names[i], i);
         scene_join(path, sizeof path, where, "mesh");
         if (!scene_get_string(p, c, "mesh", where, ref, sizeof ref))
             return 0;
@@ -622,21 +656,25 @@ static int parse_camera(scene_parser *p, const cJSON *j, scene_camera *cam)
         return scene_fail(p, "camera.up", "must not be zero or parallel to the view direction");
     if (cam->fovy_deg >= 180)
         return scene_fail(p, "camera.fovy", "must be in (0, 180) degrees (got %g)", cam->fovy_deg);
+    if (cam->near_plane < CAMERA_NEAR_MIN)
+        return scene_fail(p, "camera.near", "must be at least %g (got %g)", CAMERA_NEAR_MIN,
+                          cam->near_plane);
     if (!(cam->far_plane > cam->near_plane))
         return scene_fail(p, "camera.far", "must be greater than camera.near");
     return 1;
 }
 
-/* Operands name objects or earlier named csg results; an object operand
- * must be one instance (no repeat, not a model file of several parts). */
-static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_MAX], int object_entries,
-                     const int *first, const int *instances, scene *s)
+/* Operands name objects or earlier named csg results (table: an object's
+ * entry, or -1 - a result's); an object operand must be one instance (no
+ * repeat, not a model file of several parts). */
+static int parse_csg(scene_parser *p, const cJSON *j, name_table *table, const int *first,
+                     const int *instances, scene *s)
 {
     static const char *const keys[] = { "op", "a", "b", "name", NULL };
     static const char *const operand[] = { "a", "b" };
     const cJSON *c;
     char where[64], path[96], op[16] = "", ref[SCENE_NAME_MAX], (*results)[SCENE_NAME_MAX];
-    int i = 0, k, ok = 1;
+    int i = 0, k, ok = 1, taken;
     if (!cJSON_IsArray(j))
         return scene_fail(p, "csg", "expected an array");
     results = calloc((size_t)cJSON_GetArraySize(j) + 1, SCENE_NAME_MAX);
@@ -655,17 +693,17 @@ static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_M
             scene_join(path, sizeof path, where, "op");
             ok = scene_fail(p, path, "unknown operation '%s' (subtract, union, intersect)", op);
         }
-        if (ok && results[i][0] &&
-            (find_named(results[0], SCENE_NAME_MAX, i, results[i]) >= 0 ||
-             find_named(names[0], SCENE_NAME_MAX, object_entries, results[i]) >= 0)) {
+        if (ok && results[i][0] && name_table_find(table, results[i], &taken)) {
             scene_join(path, sizeof path, where, "name");
             ok = scene_fail(p, path, "name '%s' is already taken", results[i]);
         }
         for (k = 0; k < 2 && ok; k++) {
-            int object, result, *to = k ? &s->csg[i].b : &s->csg[i].a;
+            int object = -1, result = -1, named, *to = k ? &s->csg[i].b : &s->csg[i].a;
             ok = scene_get_string(p, c, operand[k], where, ref, sizeof ref);
-            object = ok ? find_named(names[0], SCENE_NAME_MAX, object_entries, ref) : -1;
-            result = ok && object < 0 ? find_named(results[0], SCENE_NAME_MAX, i, ref) : -1;
+            if (ok && name_table_find(table, ref, &named)) {
+                object = named >= 0 ? named : -1;
+                result = named < 0 ? -1 - named : -1;
+            }
             scene_join(path, sizeof path, where, operand[k]);
             if (ok && object < 0 && result < 0)
                 ok = scene_fail(p, path, "unknown object or csg result '%s'", ref);
@@ -683,6 +721,8 @@ static int parse_csg(scene_parser *p, const cJSON *j, char (*names)[SCENE_NAME_M
             s->csg[i].op = !strcmp(op, "union") ? SCENE_CSG_UNION
                          : !strcmp(op, "intersect") ? SCENE_CSG_INTERSECT : SCENE_CSG_SUBTRACT;
             s->csg_count = i + 1;
+            if (results[i][0]) /* from here on: an entry's operands are earlier ones */
+                name_table_add(table, results[i], -1 - i);
         }
     }
     free(results);
@@ -696,6 +736,7 @@ static int parse_scene_objects(scene_parser *p, const cJSON *root, scene *s, con
     const cJSON *objects = cJSON_GetObjectItemCaseSensitive(root, "objects");
     const cJSON *csg = cJSON_GetObjectItemCaseSensitive(root, "csg");
     char (*names)[SCENE_NAME_MAX];
+    name_table table;
     int ok, entries, *first, *instances;
     if (s->shadow_map_size & (s->shadow_map_size - 1))
         return scene_fail(p, "shadow_map_size", "must be a power of two in [16, 8192] (got %d)",
@@ -706,11 +747,13 @@ static int parse_scene_objects(scene_parser *p, const cJSON *root, scene *s, con
     names = calloc((size_t)entries, SCENE_NAME_MAX);
     first = calloc((size_t)entries, sizeof *first);
     instances = calloc((size_t)entries, sizeof *instances);
-    ok = names && first && instances;
+    ok = name_table_init(&table, (size_t)entries + (size_t)cJSON_GetArraySize(csg));
+    ok = ok && names && first && instances;
     if (!ok)
         scene_fail(p, "objects", "out of memory");
-    ok = ok && parse_objects(p, objects, s, e, names, first, instances) &&
-         (!csg || parse_csg(p, csg, names, entries, first, instances, s));
+    ok = ok && parse_objects(p, objects, s, e, names, &table, first, instances) &&
+         (!csg || parse_csg(p, csg, &table, first, instances, s));
+    name_table_free(&table);
     free(names);
     free(first);
     free(instances);

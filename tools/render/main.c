@@ -217,6 +217,18 @@ int main(int argc, char **argv)
             rc = EXIT_BAD_INPUT;
             goto done;
         }
+        /* the file's csg list: what stin would refuse, refused now; the
+         * capacities it needs, given */
+        if (!scene_csg_products_build(&s, &products)) {
+            fail_line(NULL, "%s: out of memory", s.path);
+            goto done;
+        }
+        i = scene_csg_products_check(&s, &products, &desc, err, sizeof err);
+        if (i <= 0) {
+            fail_line(NULL, "%s%s", i < 0 ? s.path : err, i < 0 ? ": out of memory" : "");
+            rc = i < 0 ? EXIT_FAILED : EXIT_BAD_INPUT;
+            goto done;
+        }
     }
     file = have_scene ? s.path : "stin-render";
     memset(&pd, 0, sizeof pd);
@@ -297,8 +309,9 @@ int main(int argc, char **argv)
         goto done;
     }
     have_gpu = 1;
-    if (!scene_csg_products_build(&s, &products)) {
-        fail_line(&log, "%s: out of memory", file);
+    if (!scene_csg_products_check_meshes(&g, &products, ctx, err, sizeof err)) {
+        fail_line(NULL, "%s", err);
+        rc = EXIT_BAD_INPUT;
         goto done;
     }
     g.csg = products.products; /* the file's csg list: its objects drawn as products */
