@@ -575,6 +575,7 @@ typedef struct stin_caps {
     uint64_t present;             /* STIN_CAP_BIT()s after desc.caps_mask */
     uint64_t hidden;              /* bits the driver has but caps_mask hid */
     int max_texture_size;
+    int max_viewport_dims[2];     /* GL_MAX_VIEWPORT_DIMS: a frame's widest, tallest viewport */
     int max_texture_units;        /* fixed-function units (GL1), 1 without multitexture */
     int max_texture_image_units;  /* fragment shader samplers, 0 without GLSL */
     int max_vertex_texture_units;
@@ -1030,7 +1031,13 @@ typedef struct stin_displacement_settings {
                                 * undisplaced; default (0) 1, finite and >= 0 */
     float tess_pixels;         /* "displace-tess": the edge length, in the camera's
                                 * pixels, tessellation aims at; default (0) 4, finite
-                                * and > 0 */
+                                * and > 0; below 1 it is raised to 1 (logged
+                                * at stin_create, STIN_LOG_BAD_ARGUMENT, a
+                                * warning): no edge is split into pieces
+                                * shorter than a pixel at their distance, so
+                                * a frame's triangles grow with its pixels,
+                                * not without bound (the work grows with the
+                                * square of 1 / tess_pixels) */
     uint32_t tess_max;         /* "displace-tess": highest level an edge is split to,
                                 * default 64, at most 64 (and the driver's
                                 * GL_MAX_TESS_GEN_LEVEL) */
@@ -1470,7 +1477,14 @@ typedef struct stin_frame_desc {
     float view[16];          /* column-major world -> eye; required: finite and invertible */
     float projection[16];    /* column-major eye -> clip; required: finite and invertible
                               * (all zeros, e.g. a forgotten matrix, is an error) */
-    int viewport[4];         /* x, y, width, height; required */
+    int viewport[4];         /* x, y, width, height; required: width and height > 0
+                              * and at most caps.max_viewport_dims, x and y >= 0,
+                              * x + width and y + height at most
+                              * caps.max_texture_size (stin's buffers of the
+                              * viewport's window size are textures), width x
+                              * height < 2^31; else a logged
+                              * STIN_ERROR_INVALID_ARGUMENT before any GL call,
+                              * the context unchanged */
     uint32_t framebuffer;    /* GL framebuffer name to draw into; 0 = default. Else a
                               * complete framebuffer object of the context:
                               * stin_begin_frame checks (binding it for the
