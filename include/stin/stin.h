@@ -1017,7 +1017,11 @@ typedef struct stin_translucent_settings {
                                 * most 16 */
     uint32_t deep_map_size;    /* "deep" (and "coloured"'s faces): texels a side of a
                                 * face, default 512; a power of two, at most 4096 (and
-                                * the context's largest texture) */
+                                * the context's largest texture). "deep" halves it
+                                * at stin_create until the driver takes its layer
+                                * arrays (GL_PROXY_TEXTURE_2D_ARRAY; logged,
+                                * STIN_LOG_FALLBACK), and falls back as when its
+                                * targets fail where it takes none of 64 or more */
     int deep_mono;             /* "deep": 1 stores grey visibility V' (1 - a) instead of
                                 * the coloured one; default 0 */
     float opaque_threshold;    /* "opaque": casters of opacity >= this cast a full
@@ -1227,7 +1231,9 @@ typedef struct stin_context stin_context;
  * translucent.deep_map_size^2 x 4 of depth buffer. 0 on a bad desc. */
 uint64_t stin_deep_memory_bytes(const stin_desc *desc);
 
-/* Bytes the configuration needs (the desc with defaults applied). 0 on a bad desc. */
+/* Bytes the configuration needs (the desc with defaults applied). 0 on a bad desc:
+ * one stin_create refuses as STIN_ERROR_INVALID_ARGUMENT (a capacity out of range, an
+ * unknown tier, a forced technique that is not one of its feature's). */
 size_t stin_memory_size(const stin_desc *desc);
 
 /* Creates a context in the caller's block. The GL context must be current.
