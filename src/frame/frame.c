@@ -47,9 +47,10 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
                   "stin_begin_frame: viewport (%d, %d, %d, %d) outside the context's limits: "
                   "x, y >= 0, width <= %d, height <= %d (GL_MAX_VIEWPORT_DIMS), x + width and "
-                  "y + height <= %d (GL_MAX_TEXTURE_SIZE), width x height < 2^31", desc->viewport[0], desc->viewport[1],
-                  desc->viewport[2], desc->viewport[3], ctx->caps.max_viewport_dims[0],
-                  ctx->caps.max_viewport_dims[1], ctx->caps.max_texture_size);
+                  "y + height <= %d (GL_MAX_TEXTURE_SIZE), width x height < 2^31",
+                  desc->viewport[0], desc->viewport[1], desc->viewport[2], desc->viewport[3],
+                  ctx->caps.max_viewport_dims[0], ctx->caps.max_viewport_dims[1],
+                  ctx->caps.max_texture_size);
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     if (!stin__finite_n(desc->view, 16) || !stin__finite_n(desc->projection, 16) ||
