@@ -4,6 +4,10 @@
 #include "internal.h"
 
 #define DEFAULT(v, d) ((v) ? (v) : (d))
+/* displacement.tess_pixels' floor: an edge split finer than a pixel adds
+ * no detail a pixel shows, while the triangles grow with the square of
+ * 1 / tess_pixels (a 512-triangle grid at 0.02 took minutes a frame). */
+#define TESS_PIXELS_MIN 1.0f
 
 stin_desc stin__desc_defaults(const stin_desc *desc)
 {
@@ -30,6 +34,8 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
         d.displacement.guard_band = 1.0f;
     if (d.displacement.tess_pixels == 0.0f)
         d.displacement.tess_pixels = 4.0f;
+    else if (d.displacement.tess_pixels > 0.0f && d.displacement.tess_pixels < TESS_PIXELS_MIN)
+        d.displacement.tess_pixels = TESS_PIXELS_MIN; /* logged by stin_create */
     if (d.translucent.opaque_threshold == 0.0f)
         d.translucent.opaque_threshold = 0.5f;
     d.displacement.tess_max = DEFAULT(d.displacement.tess_max, 64u);
@@ -38,7 +44,9 @@ stin_desc stin__desc_defaults(const stin_desc *desc)
 
 static int desc_valid(const stin_desc *d)
 {
-    return d->max_lights <= 32 && d->shadows.soft_samples <= 64 &&
+    char unused[8];
+    return stin__forced_known(d->tier, d->techniques, unused, sizeof unused) &&
+           d->max_lights <= 32 && d->shadows.soft_samples <= 64 &&
            d->shadows.map_size <= 8192 && (d->shadows.map_size & (d->shadows.map_size - 1)) == 0 &&
            d->shadows.choice_frames <= 100000u &&
            d->max_meshes <= 65535 && d->max_textures <= 65535 &&
@@ -337,6 +345,10 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         return STIN_ERROR_INVALID_ARGUMENT;
     }
     d = stin__desc_defaults(desc);
+    if (!stin__forced_known(d.tier, d.techniques, msg, sizeof msg)) {
+        log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT, "stin_create: %s", msg);
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
     need = stin_memory_size(desc);
     if (!need) {
         log_early(&d, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
@@ -368,6 +380,12 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     ctx->handle_tag = stin__handle_tag(ctx->creation_serial, ctx);
     layout(&d, &a, ctx);
     ctx->desc = d;
+    if (desc->displacement.tess_pixels != d.displacement.tess_pixels &&
+        desc->displacement.tess_pixels != 0.0f)
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_BAD_ARGUMENT,
+                  "stin_create: displacement.tess_pixels %f raised to %f: tessellation splits "
+                  "no edge finer than a pixel", (double)desc->displacement.tess_pixels,
+                  (double)TESS_PIXELS_MIN);
     /* The block is the caller's: nothing in it is assumed zero. */
     stin__memzero(ctx->meshes, sizeof(stin__mesh_slot) * (d.max_meshes + 1u));
     stin__memzero(ctx->textures, sizeof(stin__texture_slot) * d.max_textures);

@@ -5,6 +5,8 @@
  * tier and technique (run_plan below). */
 #include "internal.h"
 
+#include <limits.h>
+
 static stin_result state_error(stin_context *ctx, const char *call, const char *why)
 {
     stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE, "%s: %s", call, why);
@@ -17,6 +19,22 @@ static stin_result arg_error(stin_context *ctx, const char *call, const char *wh
     return STIN_ERROR_INVALID_ARGUMENT;
 }
 
+/* The viewport within the context's limits: each side within
+ * GL_MAX_VIEWPORT_DIMS, the origin not negative, the far corner (the window
+ * size of the buffers stin keeps, which are textures) within
+ * GL_MAX_TEXTURE_SIZE and the area an int, so no sum or product of its
+ * fields overflows. A limit the driver reports as 0 is not checked. */
+static int viewport_fits(const stin_caps *c, const int vp[4])
+{
+    int far = c->max_texture_size > 0 ? c->max_texture_size : INT_MAX, side;
+    for (side = 0; side < 2; side++) {
+        int dims = c->max_viewport_dims[side];
+        if (vp[side] < 0 || (dims > 0 && vp[2 + side] > dims) || vp[side] > far - vp[2 + side])
+            return 0;
+    }
+    return vp[2] <= INT_MAX / vp[3]; /* a point a pixel: vdsm's receivers */
+}
+
 stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
 {
     if (!ctx || !desc)
@@ -25,6 +43,16 @@ stin_result stin_begin_frame(stin_context *ctx, const stin_frame_desc *desc)
         return state_error(ctx, "stin_begin_frame", "a frame is already open");
     if (desc->viewport[2] <= 0 || desc->viewport[3] <= 0)
         return arg_error(ctx, "stin_begin_frame", "viewport width and height must be positive");
+    if (!viewport_fits(&ctx->caps, desc->viewport)) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_BAD_ARGUMENT,
+                  "stin_begin_frame: viewport (%d, %d, %d, %d) outside the context's limits: "
+                  "x, y >= 0, width <= %d, height <= %d (GL_MAX_VIEWPORT_DIMS), x + width and "
+                  "y + height <= %d (GL_MAX_TEXTURE_SIZE), width x height < 2^31",
+                  desc->viewport[0], desc->viewport[1], desc->viewport[2], desc->viewport[3],
+                  ctx->caps.max_viewport_dims[0], ctx->caps.max_viewport_dims[1],
+                  ctx->caps.max_texture_size);
+        return STIN_ERROR_INVALID_ARGUMENT;
+    }
     if (!stin__finite_n(desc->view, 16) || !stin__finite_n(desc->projection, 16) ||
         !stin__finite_n(desc->ambient, 3) || !stin__finite_n(desc->clear_color, 4))
         return arg_error(ctx, "stin_begin_frame", "view, projection, ambient and clear colour "

@@ -195,6 +195,7 @@ static void detect_limits(const stin__gl *gl, stin_caps *caps, int reported_vers
 {
     int core = caps->profile == STIN_GL_PROFILE_CORE;
     caps->max_texture_size = get_int(gl, GL_MAX_TEXTURE_SIZE);
+    gl->GetIntegerv(GL_MAX_VIEWPORT_DIMS, caps->max_viewport_dims); /* GL 1.0: two values */
     caps->max_clip_planes = get_int(gl, GL_MAX_CLIP_PLANES);
     if (!core) {
         stin__framebuffer_bits(gl, 0, 0, &caps->stencil_bits, &caps->depth_bits);

@@ -68,6 +68,7 @@ typedef void GLvoid;
 #define GL_PACK_ALIGNMENT 0x0D05
 #define GL_MAX_LIGHTS 0x0D31
 #define GL_MAX_TEXTURE_SIZE 0x0D33
+#define GL_MAX_VIEWPORT_DIMS 0x0D3A
 #define GL_ALPHA_BITS 0x0D55
 #define GL_DEPTH_BITS 0x0D56
 #define GL_STENCIL_BITS 0x0D57
@@ -297,6 +298,8 @@ typedef void GLvoid;
 #define GL_DYNAMIC_COPY 0x88EA
 /* deep shadow maps' layers */
 #define GL_TEXTURE_2D_ARRAY 0x8C1A
+#define GL_PROXY_TEXTURE_2D_ARRAY 0x8C1B
+#define GL_TEXTURE_WIDTH 0x1000
 #define GL_SAMPLES_PASSED 0x8914
 
 /* caller state a frame establishes (gl/caller_state.c) */

@@ -153,16 +153,31 @@ static int why_not(const chain_input *in, stin_technique t, char *why, size_t si
     return 1;
 }
 
+int stin__forced_known(stin_tier tier, const stin_technique forced[STIN_FEATURE_COUNT],
+                       char *msg, size_t msg_size)
+{
+    int f;
+    if (tier != STIN_TIER_AUTO && tier != STIN_TIER_GL1 && tier != STIN_TIER_GL2 &&
+        tier != STIN_TIER_GL4) {
+        stin__formatf(msg, msg_size, "unknown tier %d", (int)tier);
+        return 0;
+    }
+    for (f = 0; forced && f < STIN_FEATURE_COUNT; f++)
+        if (forced[f] != STIN_TECH_NONE &&
+            ((unsigned)forced[f] >= STIN_TECH_COUNT ||
+             stin__technique_feature(forced[f]) != (stin_feature)f)) {
+            stin__formatf(msg, msg_size, "technique %s is not a %s technique",
+                          stin_technique_name(forced[f]), stin_feature_name((stin_feature)f));
+            return 0;
+        }
+    return 1;
+}
+
+/* in->forced is known and of in->feature (stin__forced_known). */
 static stin_result choose_forced(const chain_input *in, stin_choice *out, char *msg,
                                  size_t msg_size)
 {
     char why[160];
-    if ((unsigned)in->forced >= STIN_TECH_COUNT || in->forced == STIN_TECH_NONE ||
-        stin__technique_feature(in->forced) != in->feature) {
-        stin__formatf(msg, msg_size, "technique %s is not a %s technique",
-                      stin_technique_name(in->forced), stin_feature_name(in->feature));
-        return STIN_ERROR_INVALID_ARGUMENT;
-    }
     why_not(in, in->forced, why, sizeof why);
     if (why[0]) {
         stin__formatf(msg, msg_size, "%s technique %s", stin_feature_name(in->feature), why);
@@ -303,11 +318,8 @@ static stin_result select_all(const stin_caps *caps, stin_tier forced,
     chain_input in;
     stin_result r;
     stin__memzero(out, sizeof *out);
-    if (forced != STIN_TIER_AUTO && forced != STIN_TIER_GL1 && forced != STIN_TIER_GL2 &&
-        forced != STIN_TIER_GL4) {
-        stin__formatf(msg, msg_size, "unknown tier %d", (int)forced);
+    if (!stin__forced_known(forced, forced_tech, msg, msg_size))
         return STIN_ERROR_INVALID_ARGUMENT;
-    }
     if (forced == STIN_TIER_AUTO) {
         out->tier = stin_best_tier(caps);
         if (out->tier == STIN_TIER_AUTO) {

@@ -48,6 +48,12 @@ typedef struct stin__selection {
                              * TIER_UNSUPPORTED (a forced tier) or TECHNIQUE_UNSUPPORTED */
 } stin__selection;
 
+/* 1 when tier is a stin_tier and each forced technique (NULL: none) is
+ * NONE or one of its feature's; else 0 with the reason in msg. The one
+ * check of a desc's enum values: stin_memory_size, stin_create and
+ * stin__select all ask it. */
+int stin__forced_known(stin_tier tier, const stin_technique forced[STIN_FEATURE_COUNT],
+                       char *msg, size_t msg_size);
 /* Chooses the tier and one technique per feature. Fails (UNSUPPORTED) if a
  * forced tier or technique cannot run; writes the reason into msg and the
  * log item into out->failure. */

@@ -69,13 +69,52 @@ static void nearest_clamped(stin_context *ctx, GLenum target)
     GL(ctx, TexParameteri)(target, GL_TEXTURE_MAX_LEVEL, 0);
 }
 
+/* 1 when the driver takes a layer array of n x n (GL_PROXY_TEXTURE_2D_ARRAY:
+ * asks without allocating, raises no GL error and reads none). */
+static int driver_takes(stin_context *ctx, GLsizei n, GLsizei slices)
+{
+    GLint width = 0;
+    GL_ENUM(ctx, TexImage3D, GL_RGBA32F)(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, n, n, slices,
+                                        0, GL_RGBA, GL_FLOAT, NULL);
+    GL(ctx, GetTexLevelParameteriv)(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &width);
+    return width == n;
+}
+
+/* The largest face size from s->size down that the driver takes (maps of
+ * desc.translucent.deep_map_size 4096 take 6.3 GB: allocating them left
+ * GL_OUT_OF_MEMORY and no maps); logged when it steps down. 0 if it takes
+ * none of MIN_SIZE (or s->size, if smaller) or more. */
+#define MIN_SIZE 64u
+static uint32_t fit_size(stin_context *ctx)
+{
+    stin__deep_state *s = ctx->deep;
+    GLsizei slices = (GLsizei)(STIN__DEEP_FACES * s->slices);
+    uint32_t size = s->size, least = s->size < MIN_SIZE ? s->size : MIN_SIZE;
+    while (!driver_takes(ctx, (GLsizei)size, slices)) {
+        if (size <= least)
+            return 0;
+        size /= 2u;
+    }
+    if (size != s->size)
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                  "deep: the driver takes no %u x %u x %d RGBA32F layer array "
+                  "(translucent.deep_map_size): the maps are %u x %u",
+                  (unsigned)s->size, (unsigned)s->size, (int)slices, (unsigned)size,
+                  (unsigned)size);
+    return size;
+}
+
 /* The textures and the framebuffer; "" or why they cannot be made. */
 static const char *make_targets(stin_context *ctx)
 {
     stin__deep_state *s = ctx->deep;
-    GLsizei n = (GLsizei)s->size, slices = (GLsizei)(STIN__DEEP_FACES * s->slices);
+    GLsizei n, slices = (GLsizei)(STIN__DEEP_FACES * s->slices);
     GLenum status;
     int i;
+    s->size = fit_size(ctx);
+    if (!s->size)
+        return "the driver takes none of its layer arrays (GL_PROXY_TEXTURE_2D_ARRAY)";
+    n = (GLsizei)s->size;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, GenTextures)(2, s->layers);
     for (i = 0; i < 2; i++) {

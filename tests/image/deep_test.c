@@ -38,12 +38,18 @@
  *   texture        (deep-window) a textured pane's opaque cells cast their
  *                  colour, its alpha-0 cells nothing;
  *   mono           translucent.deep_mono: the colour cases come out grey, 1 - a per pane;
+ *   size-max       (deep-stack) translucent.deep_map_size 4096, the documented
+ *                  maximum (6.3 GB of maps): the maps step down to a size
+ *                  the driver takes, saying so, with no GL error (before:
+ *                  GL_OUT_OF_MEMORY, no log, no maps) and the transmittance
+ *                  test as above;
  *   shadows-off    forced deep with shadows off falls back to
  *                  translucent-solid at set-up, saying why;
  *   gl-clean       no GL error, no call outside the profile.
  * Below GL4 the deep tests SKIP (the tier has no deep), and forcing deep
  * there must be refused, naming what is missing.
  */
+#include "caller_gl.h"
 #include "deep_case.h"
 
 #include <math.h>
@@ -74,6 +80,36 @@ static void test_layer_cap(const deep_case *c, const char *name)
     report(c->r, n >= MIN_CLASS && good >= T_MIN_MATCH * n ? "PASS" : "FAIL", name,
            "translucent.deep_layers 2: %ld of %ld pixels under three panes (T 0.125) get 0.25 within 2/255 "
            "(need >= %d pixels, 99.5%%)", good, n, MIN_CLASS);
+    capture_free(&cap);
+}
+
+static void test_size_max(const deep_case *c, char *name, size_t size)
+{
+    deep_case stepped = *c;
+    caller_gl gl;
+    capture cap;
+    capture_options o;
+    GLenum pending;
+    const char *said;
+    caller_gl_load(&gl, c->r->plat);
+    deep_options(c, &o);
+    o.deep_map_size = 4096;
+    if (!deep_render(c, c->s, &o, &cap, name))
+        return;
+    pending = gl.GetError();
+    said = strstr(cap.fallbacks, "the maps are ");
+    if (cap.counters.gl_errors || cap.log_errors || pending != GL_NO_ERROR || !said ||
+        sscanf(said, "the maps are %u", &stepped.map_size) != 1) {
+        report(c->r, "FAIL", name,
+               "translucent.deep_map_size 4096: %u GL errors, %u error logs (last: %s), GL "
+               "error 0x%x pending, the step down %s", cap.counters.gl_errors, cap.log_errors,
+               cap.last_error, pending, said ? "logged" : "not logged");
+    } else {
+        report(c->r, "PASS", name, "translucent.deep_map_size 4096: no GL error; the log says "
+               "%.*s", (int)strcspn(said, "\n"), said);
+        strncat(name, "-transmittance", size - strlen(name) - 1);
+        deep_test_transmittance(&stepped, &cap, name);
+    }
     capture_free(&cap);
 }
 
@@ -285,6 +321,8 @@ static void gl4_tests(deep_case *c, int stack, int colour, int omni)
     if (stack) {
         snprintf(name, sizeof name, "%s/%s/deep-layer-cap", tier, scene_name);
         test_layer_cap(c, name);
+        snprintf(name, sizeof name, "%s/%s/deep-size-max", tier, scene_name);
+        test_size_max(c, name, sizeof name);
         snprintf(name, sizeof name, "%s/%s/deep-shadows-off", tier, scene_name);
         deep_test_shadows_off(c, name, STIN_TECH_TRANSLUCENT_SOLID);
     } else if (colour) {

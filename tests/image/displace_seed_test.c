@@ -10,22 +10,32 @@
  *                    "displace-tess"; and the coverage differs from the
  *                    undisplaced plate's (the silhouette moves), so the test
  *                    sees the displacement rather than a plate drawn at 0.5.
+ *   tess-bounded     one 64 x 64 frame of the plate (512 triangles) under vdsm
+ *                    and "displace-tess" with desc.displacement.tess_pixels
+ *                    0.02 ends within BOUNDED_MS (glFinish included): stin
+ *                    raises the target to 1 pixel. Before, such a frame took
+ *                    over 120 s (5 s at 0.05). The bound is loose for a
+ *                    loaded machine; the frame takes tens of milliseconds.
  * Behaviours 3 (a side view shows a bumpy silhouette) and 6 (the guard band
  * changes no pixel) are displace_test.c's silhouette and guard-band tests.
  */
 #include "aov.h"
 #include "capture.h"
 #include "image_test.h"
+#include "scene_gpu.h"
 #include "scene_primitives.h"
+#include "test_context.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #define PLATE_Y 0.5f
 #define P_TOLERANCE 1e-4
 #define MAP 8
+#define BOUNDED_MS 2000.0
 
 static int plate_scene(scene *s)
 {
@@ -134,6 +144,57 @@ static void one(run *r, stin_tier tier, const scene *s, stin_technique t, const 
     capture_free(&cap);
 }
 
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+static void tess_bounded(run *r, const scene *s)
+{
+    static const int viewport[4] = {0, 0, 64, 64};
+    const char *name = "gl4/displace-constant/tess-bounded";
+    void (*finish)(void);
+    void *fp = stin_platform_get_proc_address(r->plat, "glFinish");
+    test_context t;
+    stin_desc d;
+    size_t size;
+    char err[256];
+    double t0, ms;
+    stin_result res;
+    memcpy(&finish, &fp, sizeof finish);
+    memset(&t, 0, sizeof t);
+    test_desc(r, STIN_TIER_GL4, &d);
+    d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VDSM;
+    d.techniques[STIN_FEATURE_DISPLACEMENT] = STIN_TECH_DISPLACEMENT_TESS;
+    d.displacement.tess_pixels = 0.02f;
+    scene_gpu_size_desc(s, &d);
+    size = stin_memory_size(&d);
+    t.block = malloc(size);
+    if (!t.block || stin_create(&d, t.block, size, &t.ctx) != STIN_OK) {
+        report(r, "SKIP", name, "the profile runs no vdsm with displace-tess");
+        free(t.block);
+        return;
+    }
+    if (!scene_gpu_create(&t.g, s, t.ctx, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        test_context_destroy(&t);
+        return;
+    }
+    finish();
+    t0 = now_ms();
+    res = scene_gpu_frame_viewport(&t.g, t.ctx, viewport, STIN_OUTPUT_BEAUTY, STIN_EXPORT_NONE,
+                                   stin_platform_framebuffer(r->plat));
+    finish();
+    ms = now_ms() - t0;
+    report(r, res == STIN_OK && ms < BOUNDED_MS ? "PASS" : "FAIL", name,
+           "a 64x64 vdsm frame of 512 triangles at tess_pixels 0.02 (taken as %.2f): %s in "
+           "%.0f ms (bound %.0f)", (double)stin_query_desc(t.ctx).displacement.tess_pixels,
+           stin_result_name(res), ms, BOUNDED_MS);
+    test_context_destroy(&t);
+}
+
 void displace_seed_tests(run *r, stin_tier tier, uint64_t caps)
 {
     static unsigned done;
@@ -159,8 +220,10 @@ void displace_seed_tests(run *r, stin_tier tier, uint64_t caps)
         return;
     }
     one(r, tier, &s, STIN_TECH_DISPLACEMENT_VTF, &flat);
-    if (tier == STIN_TIER_GL4 && (caps & STIN_CAP_BIT(STIN_CAP_TESSELLATION)))
+    if (tier == STIN_TIER_GL4 && (caps & STIN_CAP_BIT(STIN_CAP_TESSELLATION))) {
         one(r, tier, &s, STIN_TECH_DISPLACEMENT_TESS, &flat);
+        tess_bounded(r, &s);
+    }
     capture_free(&flat);
     scene_free(&s);
 }

@@ -347,6 +347,7 @@ int main(int argc, char **argv)
             terminator_tests(&r, tiers[t], argv[i]);
             outline_tests(&r, tiers[t], argv[i]);
             csg_tests(&r, tiers[t], argv[i]);
+            csg_merge_tests(&r, tiers[t], argv[i]);
             deep_tests(&r, tiers[t], argv[i]);
             coloured_tests(&r, tiers[t], argv[i]);
             peel_tests(&r, tiers[t], argv[i]);

@@ -84,6 +84,9 @@ int displace_scene(const char *path);
 /* CSG products against the exact CSG reference, on csg.json and the scenes
  * of tests/scenes/csg/ beside it (csg_test.c). */
 void csg_tests(run *r, stin_tier tier, const char *path);
+/* STIN_DEBUG_CSG_NO_IN_PLACE against the default on the scene files' own
+ * products, every pixel (csg_merge_test.c; from csg.json). */
+void csg_merge_tests(run *r, stin_tier tier, const char *path);
 /* Products of 1000 primitives, generated (csg_many_test.c; from csg_tests). */
 void csg_many_tests(run *r, stin_tier tier);
 /* N against the CSG reference: within `degrees` on min_match of the pixels

@@ -13,6 +13,7 @@
  * shadows: the GPU and the CPU resolve, vdsm, volumes, GL1 maps) and on
  * glass-panes (peeled layers, each vdsm's receiver in turn), every tier.
  */
+#include "caller_gl.h"
 #include "image_test.h"
 #include "scene.h"
 #include "scene_csg.h"
@@ -99,6 +100,72 @@ done:
     free(b);
 }
 
+/* Viewports past the context's limits: stin_begin_frame refuses each with
+ * STIN_ERROR_INVALID_ARGUMENT and no GL error pending (before, a far
+ * corner past GL_MAX_TEXTURE_SIZE returned STIN_OK with GL_INVALID_VALUE
+ * and left the screen mask and position buffer unusable; an origin of
+ * 0x7fff0000 aborted the process in the driver), and the context's next
+ * ordinary frame is bit for bit a fresh context's first (the same
+ * commands on the same driver: no tolerance). */
+static int refuses_limits(test_context *t, const run *r, const caller_gl *gl, char *why,
+                          size_t size)
+{
+    const stin_caps *c = stin_query_caps(t->ctx);
+    const int bad[3][4] = {{c->max_texture_size - 32, 0, 64, 64},
+                           {0x7fff0000, 0, 64, 64},
+                           {0, 0, c->max_viewport_dims[0] + 1, 64}};
+    int i;
+    for (i = 0; i < 3; i++) {
+        stin_result res = scene_gpu_frame_viewport(&t->g, t->ctx, bad[i], STIN_OUTPUT_BEAUTY,
+                                                   STIN_EXPORT_NONE,
+                                                   stin_platform_framebuffer(r->plat));
+        GLenum e = gl->GetError();
+        if (res != STIN_ERROR_INVALID_ARGUMENT || e != GL_NO_ERROR) {
+            snprintf(why, size, "viewport (%d, %d, %d, %d): %s, GL error 0x%x pending",
+                     bad[i][0], bad[i][1], bad[i][2], bad[i][3], stin_result_name(res), e);
+            return 0;
+        }
+    }
+    return 1;
+}
+
+static void test_limits(run *r, stin_tier tier, const scene *s, const char *scene_name)
+{
+    const int whole[4] = {0, 0, r->width, r->height};
+    size_t bytes = (size_t)r->width * (size_t)r->height * 4u;
+    uint8_t *fresh = malloc(bytes), *after = malloc(bytes);
+    test_context t;
+    caller_gl gl;
+    char name[160], why[160] = "";
+    caller_gl_load(&gl, r->plat);
+    snprintf(name, sizeof name, "%s/%s/viewport-limits", stin_tier_name(tier), scene_name);
+    if (!fresh || !after || !test_context_create(&t, r, s, tier, STIN_TECH_NONE, 0)) {
+        report(r, "FAIL", name, "out of memory or no stin context for the scene");
+        goto done;
+    }
+    if (!draw_at(&t, r, whole, fresh)) {
+        report(r, "FAIL", name, "the fresh context's frame failed");
+    } else {
+        test_context_destroy(&t);
+        if (!test_context_create(&t, r, s, tier, STIN_TECH_NONE, 0)) {
+            report(r, "FAIL", name, "no second stin context");
+            goto done;
+        }
+        if (!refuses_limits(&t, r, &gl, why, sizeof why))
+            report(r, "FAIL", name, "%s", why);
+        else if (!draw_at(&t, r, whole, after))
+            report(r, "FAIL", name, "the frame after the refusals failed");
+        else
+            report(r, memcmp(fresh, after, bytes) ? "FAIL" : "PASS", name,
+                   "three viewports past the limits refused, no GL error; the next frame %s a "
+                   "fresh context's", memcmp(fresh, after, bytes) ? "differs from" : "equals");
+    }
+    test_context_destroy(&t);
+done:
+    free(fresh);
+    free(after);
+}
+
 void viewport_tests(run *r, stin_tier tier, const char *path)
 {
     const char *base = scene_base_name(path);
@@ -111,5 +178,7 @@ void viewport_tests(run *r, stin_tier tier, const char *path)
         return;
     }
     test_origin(r, tier, &s, base);
+    if (!strcmp(base, "csg"))
+        test_limits(r, tier, &s, base);
     scene_free(&s);
 }

@@ -52,6 +52,8 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_EndQuery ~, 1
 #define FAKE_CUSTOM_GetQueryObjectuiv ~, 1
 #define FAKE_CUSTOM_GetQueryObjectui64v ~, 1
+#define FAKE_CUSTOM_TexImage3D ~, 1
+#define FAKE_CUSTOM_GetTexLevelParameteriv ~, 1
 
 /* Generated no-ops that leave the state fake_gl_state.h keeps alone: they
  * draw, upload, or set program, texture-object or array-pointer state,
@@ -97,7 +99,6 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_BindFragDataLocation ~, 1
 #define FAKE_STATELESS_DeleteQueries ~, 1
 #define FAKE_STATELESS_QueryCounter ~, 1
-#define FAKE_STATELESS_TexImage3D ~, 1
 #define FAKE_STATELESS_FramebufferTextureLayer ~, 1
 #define FAKE_STATELESS_BlendEquationSeparate ~, 1
 #define FAKE_STATELESS_TransformFeedbackVaryings ~, 1
@@ -209,6 +210,7 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     case GL_ALPHA_BITS: *data = 8; break;
     case GL_SAMPLE_BUFFERS: *data = c->sample_buffers; break;
     case GL_MAX_TEXTURE_SIZE: *data = c->max_texture_size; break;
+    case GL_MAX_VIEWPORT_DIMS: data[0] = data[1] = 16384; break; /* Mesa's */
     case GL_MAX_TEXTURE_UNITS: *data = c->max_texture_units; break;
     case GL_MAX_TEXTURE_IMAGE_UNITS: *data = c->max_texture_image_units; break;
     case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: *data = c->max_vertex_texture_units; break;
@@ -394,6 +396,36 @@ static void STIN_APIENTRY fake_TexImage2D(GLenum target, GLint level, GLint ifmt
         if ((unsigned)level + 1 > fake_gl.tex_levels)
             fake_gl.tex_levels = (unsigned)level + 1;
     }
+}
+
+/* A proxy array's width reads back as given when its bytes (16 a texel)
+ * are within config.max_array_bytes (0: any), else 0, as GL's proxies do. */
+static void STIN_APIENTRY fake_TexImage3D(GLenum target, GLint level, GLint ifmt, GLsizei w,
+                                          GLsizei h, GLsizei d, GLint border, GLenum fmt,
+                                          GLenum type, const void *pixels)
+{
+    unsigned long long bytes = 16ull * (unsigned long long)w * (unsigned long long)h * d;
+    unsigned long long most = fake_gl.config.max_array_bytes;
+    (void)level;
+    (void)ifmt;
+    (void)border;
+    (void)fmt;
+    (void)type;
+    (void)pixels;
+    COUNT(TexImage3D);
+    if (target == GL_PROXY_TEXTURE_2D_ARRAY)
+        fake_gl.proxy_width = most && bytes > most ? 0 : w;
+    else
+        fake_gl.array_width = w;
+}
+
+static void STIN_APIENTRY fake_GetTexLevelParameteriv(GLenum target, GLint level, GLenum pname,
+                                                      GLint *v)
+{
+    (void)level;
+    COUNT(GetTexLevelParameteriv);
+    *v = target == GL_PROXY_TEXTURE_2D_ARRAY && pname == GL_TEXTURE_WIDTH ? fake_gl.proxy_width
+                                                                          : 0;
 }
 
 /* ---- shaders and programs ----------------------------------------------- */

@@ -51,6 +51,7 @@ typedef struct fake_gl_config {
     int framebuffer_count;
     GLenum generated_framebuffer_status; /* of the ones stin makes: 0 complete */
     int sample_buffers;                  /* GL_SAMPLE_BUFFERS of every framebuffer */
+    unsigned long long max_array_bytes;  /* largest array texture a proxy takes; 0 = any */
 } fake_gl_config;
 
 /* Configs shaped like the emulation profiles of DESIGN.md. */
@@ -87,6 +88,8 @@ typedef struct fake_gl_state {
     unsigned programs_created, programs_deleted, program_link_failures;
     unsigned deletes_of_zero;            /* glDelete* of name 0 (harmless, but suspicious) */
     /* glTexImage2D: the mip chain of the most recent level-0 upload. */
+    GLsizei proxy_width;                 /* of the last proxy array texture (0: refused) */
+    GLsizei array_width;                 /* of the last array texture made */
     unsigned tex_images;                 /* calls in total */
     unsigned tex_images_loose;           /* calls made while fake_gl_unpack_loose() */
     unsigned tex_levels;                 /* levels of the latest chain */

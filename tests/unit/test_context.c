@@ -408,11 +408,36 @@ static void test_unknown_tier_is_a_bad_argument(void **state)
     (void)state;
     fixture_init(&f, &cfg);
     f.desc.tier = (stin_tier)3;
-    assert_int_equal(fixture_create(&f), STIN_ERROR_INVALID_ARGUMENT);
+    assert_int_equal(stin_memory_size(&f.desc), 0); /* no size for what create refuses */
+    f.block = block_alloc(64);
+    assert_int_equal(stin_create(&f.desc, f.block, 64, &f.ctx), STIN_ERROR_INVALID_ARGUMENT);
     assert_null(f.ctx);
     assert_int_equal(f.log.items[STIN_LOG_TECHNIQUE_UNSUPPORTED], 0);
     assert_true(fake_log_has(&f.log, STIN_LOG_BAD_ARGUMENT, "tier"));
     fixture_free(&f);
+}
+
+/* displacement.tess_pixels below 1 is raised to 1 and logged (a 512-triangle
+ * grid at 0.02 took minutes a frame); 1 and above stay; not above 0 is
+ * still a bad desc. */
+static void test_tess_pixels_floor(void **state)
+{
+    static const float given[3] = {0.02f, 1e-6f, 2.5f}, taken[3] = {1.0f, 1.0f, 2.5f};
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
+    fixture f;
+    int i;
+    (void)state;
+    for (i = 0; i < 3; i++) {
+        fixture_init(&f, &cfg);
+        f.desc.displacement.tess_pixels = given[i];
+        assert_int_equal(fixture_create(&f), STIN_OK);
+        assert_true(stin_query_desc(f.ctx).displacement.tess_pixels == taken[i]);
+        assert_int_equal(fake_log_has(&f.log, STIN_LOG_BAD_ARGUMENT, "tess_pixels"), i < 2);
+        fixture_free(&f);
+    }
+    fixture_init(&f, &cfg);
+    f.desc.displacement.tess_pixels = -0.5f;
+    assert_int_equal(stin_memory_size(&f.desc), 0);
 }
 
 static void test_forcing_a_lower_tier(void **state)
@@ -686,6 +711,7 @@ int main(void)
         TEST(test_forcing_gl4_on_gl21_is_unsupported),
         TEST(test_unknown_tier_is_a_bad_argument),
         TEST(test_forcing_a_lower_tier),
+        TEST(test_tess_pixels_floor),
         TEST(test_forced_technique_unsupported_is_logged),
         TEST(test_caps_mask_lowers_the_tier_and_is_logged),
         TEST(test_glsl150_compile_failure_falls_back_to_glsl110),

@@ -182,6 +182,52 @@ static void test_bad_frame_descs(void **state)
     assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
 }
 
+/* A viewport past the context's limits (GL_MAX_VIEWPORT_DIMS 16384 and
+ * GL_MAX_TEXTURE_SIZE 16384 on the fake's core profiles) is refused before
+ * any GL call and named in the log: a huge origin aborted the driver, its
+ * far corner overflowed an int in vdsm's buffers, a far corner past the
+ * texture limit left GL_INVALID_VALUE pending. The largest that fits runs. */
+static unsigned gl_calls(void)
+{
+    unsigned n = 0;
+    size_t i;
+    for (i = 0; i < STIN_GLFN_COUNT; i++)
+        n += fake_gl.calls[i];
+    return n;
+}
+
+static void test_viewport_outside_limits(void **state)
+{
+    static const int bad[][4] = {{0x7fff0000, 0, 64, 48},  {0, 0x7fffffc0, 64, 48},
+                                 {0, 0, 100000, 100000},   {0, 0, 16385, 48},
+                                 {16384 - 63, 0, 64, 48},  {0, 16384 - 47, 64, 48},
+                                 {-1, 0, 64, 48},          {0, -5, 64, 48}};
+    stin_frame_desc fd;
+    unsigned calls;
+    size_t i;
+    (void)state;
+    destroy_context();
+    create_profile(FAKE_GL45_CORE, 8, 8);
+    assert_int_equal(stin_query_caps(ctx)->max_viewport_dims[0], 16384);
+    for (i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        fd = frame_desc();
+        memcpy(fd.viewport, bad[i], sizeof fd.viewport);
+        calls = gl_calls();
+        assert_int_equal(stin_begin_frame(ctx, &fd), STIN_ERROR_INVALID_ARGUMENT);
+        assert_int_equal(gl_calls(), calls);
+        assert_int_equal(log_.items[STIN_LOG_BAD_ARGUMENT], (int)i + 1);
+        assert_true(fake_log_has(&log_, STIN_LOG_BAD_ARGUMENT, "GL_MAX_VIEWPORT_DIMS"));
+        assert_int_equal(stin_end_frame(ctx), STIN_ERROR_INVALID_STATE);
+    }
+    fd = frame_desc();
+    fd.viewport[0] = 16384 - 64;
+    fd.viewport[1] = 16384 - 48;
+    assert_int_equal(stin_begin_frame(ctx, &fd), STIN_OK);
+    add_lights(1);
+    assert_int_equal(stin_draw(ctx, quad, NULL, NULL), STIN_OK);
+    assert_int_equal(stin_end_frame(ctx), STIN_OK);
+}
+
 /* ---- lights ------------------------------------------------------------------ */
 static void test_bad_lights_are_rejected(void **state)
 {
@@ -1107,6 +1153,31 @@ static void test_export_without_room_for_transmittance(void **state)
     shadows = STIN_TECH_SHADOWS_OFF;
 }
 
+/* Deep maps the driver cannot make (its proxy array refuses them) step
+ * down to the largest size it takes, logged; none of 64 or more and deep
+ * falls back to translucent-solid. Before, maps of deep_map_size 4096 were
+ * allocated as asked: GL_OUT_OF_MEMORY pending, no log, no maps. */
+static void test_deep_maps_step_down_to_what_the_driver_takes(void **state)
+{
+    static const unsigned long long most[3] = {0, 16ull * 256 * 256 * 12, 16ull * 32 * 32 * 12};
+    static const GLsizei width[3] = {512, 256, 0};
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
+    int round;
+    (void)state;
+    shadows = STIN_TECH_SHADOWS_VOLUME;
+    for (round = 0; round < 3; round++) {
+        cfg.max_array_bytes = most[round]; /* the default 512 x 512, 2 slices x 6 faces */
+        create_context(&cfg, 4, 8, 4096);
+        assert_int_equal(fake_gl.array_width, width[round]);
+        assert_int_equal(stin_query_choice(ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS).technique,
+                         round < 2 ? STIN_TECH_TRANSLUCENT_DEEP : STIN_TECH_TRANSLUCENT_SOLID);
+        assert_int_equal(fake_log_has(&log_, STIN_LOG_FALLBACK, "the maps are 256 x 256"),
+                         round == 1);
+        assert_int_equal(fake_log_has(&log_, STIN_LOG_FALLBACK, "takes none"), round == 2);
+    }
+    shadows = STIN_TECH_SHADOWS_OFF;
+}
+
 /* With shadows off no light has a map, so deep (the GL4 default) falls
  * back: said as INFO when it was only the default (the caller's own
  * choice rules it out), as a WARNING when the caller forced it. */
@@ -1241,8 +1312,10 @@ int main(void)
         TEST(test_call_order_errors),
         TEST(test_pcf_point_faces_culled),
         TEST(test_pcf_forward_pass),
+        TEST(test_deep_maps_step_down_to_what_the_driver_takes),
         TEST(test_translucent_fallback_without_shadows),
         TEST(test_bad_frame_descs),
+        TEST(test_viewport_outside_limits),
         TEST(test_bad_lights_are_rejected),
         TEST(test_light_defaults_and_direction_normalised),
         TEST(test_more_lights_than_max_lights),

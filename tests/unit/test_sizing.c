@@ -85,6 +85,41 @@ static void test_deep_memory(void **state)
     assert_int_equal(stin_deep_memory_bytes(NULL), 0);
 }
 
+/* A desc stin_create refuses for its enum values (an unknown tier, an
+ * unknown technique, a technique forced on another feature) has no size
+ * either: stin_memory_size and stin_deep_memory_bytes are 0, and
+ * stin_create names the value (the same check, select/select.c). */
+static void test_bad_enums_have_no_size(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL21);
+    fake_log log;
+    stin_desc d;
+    stin_context *ctx = NULL;
+    static unsigned char block[64];
+    int i;
+    (void)state;
+    for (i = 0; i < 4; i++) {
+        fake_gl_reset(&cfg);
+        d = fake_gl_desc(&log);
+        if (i == 0)
+            d.tier = (stin_tier)3;
+        else if (i == 1)
+            d.techniques[STIN_FEATURE_SHADOWS] = (stin_technique)STIN_TECH_COUNT;
+        else if (i == 2)
+            d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SURFACE_NORMAL;
+        else
+            d.techniques[STIN_FEATURE_CSG] = (stin_technique)-7;
+        assert_int_equal(stin_memory_size(&d), 0);
+        assert_int_equal(stin_deep_memory_bytes(&d), 0);
+        assert_int_equal(stin_create(&d, block, sizeof block, &ctx), STIN_ERROR_INVALID_ARGUMENT);
+        assert_true(fake_log_has(&log, STIN_LOG_BAD_ARGUMENT, i ? "is not a" : "unknown tier 3"));
+        assert_null(ctx);
+    }
+    d = fake_gl_desc(&log);
+    d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VOLUME;
+    assert_true(stin_memory_size(&d) > 0);
+}
+
 static void test_desc_fit_raises_and_limits(void **state)
 {
     stin_desc d;
@@ -202,6 +237,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_texture_staging_bytes),
         cmocka_unit_test(test_deep_memory),
+        cmocka_unit_test(test_bad_enums_have_no_size),
         cmocka_unit_test(test_desc_fit_raises_and_limits),
         cmocka_unit_test(test_real_asset_sizes_load),
     };
