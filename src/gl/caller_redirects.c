@@ -50,7 +50,7 @@ void stin__caller_detect(stin_context *ctx)
     if (has(ctx, STIN_CAP_VBO) &&
         (v >= 44 || stin_query_extension(ctx, "GL_ARB_query_buffer_object")))
         h |= STIN__CALLER_QUERY_BUFFER;
-    if (loaded(ctx, STIN_GLFN_BindProgramPipeline) &&
+    if (loaded(ctx, STIN_GLFN_BindProgramPipeline) && has(ctx, STIN_CAP_GLSL) &&
         (v >= 41 || stin_query_extension(ctx, "GL_ARB_separate_shader_objects")))
         h |= STIN__CALLER_PIPELINE;
     if (loaded(ctx, STIN_GLFN_ClampColor) &&
@@ -100,9 +100,17 @@ void stin__redirects_begin(stin_context *ctx, stin__redirects *s)
     if (h & STIN__CALLER_QUERY_BUFFER)
         unbind_buffer(ctx, QUERY_BUFFER_BINDING, QUERY_BUFFER, &s->query_buffer);
     if (h & STIN__CALLER_PIPELINE) {
+        /* a current program hides the bound pipeline (Mesa reads 0), which
+         * comes back when the program is 0 */
+        GLint program = 0;
+        GL(ctx, GetIntegerv)(GL_CURRENT_PROGRAM, &program);
+        if (program)
+            GL(ctx, UseProgram)(0);
         GL(ctx, GetIntegerv)(PROGRAM_PIPELINE_BINDING, &s->pipeline);
         if (s->pipeline)
             GL(ctx, BindProgramPipeline)(0);
+        if (program)
+            GL(ctx, UseProgram)((GLuint)program);
     }
     if (h & STIN__CALLER_CLAMP) {
         if (has(ctx, STIN_CAP_FIXED_FUNCTION)) /* not in core profiles */
