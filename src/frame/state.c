@@ -32,7 +32,6 @@ void stin__state_save(stin_context *ctx)
 void stin__state_restore(stin_context *ctx)
 {
     uint64_t caps = ctx->caps.present;
-    uint32_t units = ctx->units_used | 1u; /* interval's arrays go on unit 0 directly */
     int fixed = uses_fixed_function(ctx);
     stin__displace_frame_end(ctx);
     if (fixed) {
@@ -62,6 +61,6 @@ void stin__state_restore(stin_context *ctx)
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0); /* vertex array 0's */
     }
     stin__vao_end(ctx, ctx->caller_vao);
-    stin__caller_frame_end(ctx, &ctx->caller, fixed ? 0u : units);
+    stin__caller_frame_end(ctx, &ctx->caller);
     stin__pass_forget(ctx); /* between frames GL is the caller's */
 }

@@ -236,12 +236,13 @@ void stin__caller_frame_begin(stin_context *ctx, stin__caller_frame *s)
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
-/* After the header's list is applied: units are the ones the frame used. */
-void stin__caller_frame_end(stin_context *ctx, const stin__caller_frame *s, uint32_t units)
+/* After the header's list is applied. Every unit the caller had an array
+ * on gets it again: a module may bind and empty a unit mid-frame. */
+void stin__caller_frame_end(stin_context *ctx, const stin__caller_frame *s)
 {
     int u, n = array_units(ctx);
     for (u = 0; u < n; u++) {
-        if (!(units & (1u << u)) || !s->arrays[u])
+        if (!s->arrays[u])
             continue;
         if (has(ctx, STIN_CAP_MULTITEXTURE))
             GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + u));

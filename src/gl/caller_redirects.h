@@ -6,8 +6,6 @@
 
 #include "gl/gl_calls.h"
 
-#include <stdint.h>
-
 struct stin_context;
 
 /* What the context defines, so may be queried (ctx->caller_has). */
@@ -59,11 +57,10 @@ void stin__create_bindings_save(struct stin_context *ctx, stin__create_bindings 
 void stin__create_bindings_restore(struct stin_context *ctx, const stin__create_bindings *s);
 /* Around a frame: the redirects, the caller's busy query targets, and what
  * a pass changes that the header does not list (depth clamp, polygon
- * offset fill, the stencil clear value, the 2D-array binding of each unit
- * in `units`, the ones the frame used), given back at the end. */
+ * offset fill, the stencil clear value, each unit's 2D-array binding),
+ * given back at the end. */
 void stin__caller_frame_begin(struct stin_context *ctx, stin__caller_frame *s);
-void stin__caller_frame_end(struct stin_context *ctx, const stin__caller_frame *s,
-                            uint32_t units);
+void stin__caller_frame_end(struct stin_context *ctx, const stin__caller_frame *s);
 /* Begins query `id` on `target` unless a caller's query holds it (the
  * STIN__QUERY_* bit `which`): 1 when begun, so the caller of this ends it. */
 int stin__query_begin(struct stin_context *ctx, unsigned which, GLenum target, GLuint id);
