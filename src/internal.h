@@ -19,6 +19,7 @@
 #include "render/resolved.h"
 #include "render/path_features.h"
 #include "gl/pass_state.h"
+#include "gl/caller_redirects.h"
 #include "gl/render_target.h"
 #include "gl/uniforms.h"
 #include "shadow/shadow.h"
@@ -89,6 +90,9 @@ struct stin_context {
     const stin__draw *sorted_draw; /* "sorted", shadowed: the blended draw the shade
                                     * function lights (frame/frame.c) */
     GLuint caller_vao;        /* the caller's vertex array object, bound again at the end */
+    unsigned caller_has;      /* STIN__CALLER_*: what caller_redirects.c may query */
+    unsigned queries_busy;    /* STIN__QUERY_*: targets the caller's active queries hold */
+    stin__caller_frame caller; /* the frame's set-aside caller state */
     struct {                  /* the frame's framebuffer (gl/framebuffer_probe.c) */
         GLuint name;          /* the one probed last (0 = default) */
         int stencil_bits, depth_bits;

@@ -461,8 +461,30 @@
  * context has feedback objects (GL 4.0).
  * The viewport and the framebuffer binding stay as the frame set them; the
  * caller's matrices (GL1 matrix stacks) are restored. Clear colour, clear
- * depth and polygon offset are overwritten, and so are the scissor box and
- * the stencil buffer's contents.
+ * depth and the polygon offset factor and units are overwritten, and so are
+ * the scissor box and the stencil buffer's contents; depth clamp and polygon
+ * offset fill (though the frame's passes set them) and the stencil clear
+ * value are the caller's again.
+ * State that would turn stin's own GL work into something else is set
+ * aside for the frame (and for stin_create) and given back: a bound pixel
+ * unpack or pack buffer (GL 2.1), a query buffer (GL 4.4,
+ * ARB_query_buffer_object), a program pipeline object (GL 4.1,
+ * ARB_separate_shader_objects), fragment and read colour clamping (GL 3.0,
+ * ARB_color_buffer_float; FIXED_ONLY meanwhile) and the provoking vertex
+ * (GL 3.2, ARB/EXT_provoking_vertex; LAST meanwhile).
+ * A query of the caller's left active across a frame stays the caller's
+ * and counts the frame's own work; stin begins none of its own on that
+ * target. Under a samples-passed (or any-samples-passed) query peeling
+ * runs to its layer limit (transparency.layers, translucent.deep_layers)
+ * without the stop at the first empty layer and the CSG resolve reads its
+ * stencil back instead of counting it (the same picture, slower), and
+ * interval hands its products to scs or goldfeather for the frame (logged
+ * once, as for a primitive with too many crossings).
+ * Under a primitives-generated query stin_frame_stats' volume and vdsm
+ * primitive counts stay 0; under a transform-feedback-primitives-written
+ * query vdsm without feedback objects (GL 3.x) draws its casters without
+ * the culling pass; under a time-elapsed query the measured shadow choice
+ * times no frame.
  * On the GL1 tier the frame saves the caller's fixed-function state with one
  * level of the attribute stack (glPushAttrib of the current, lighting,
  * transform, enable, texture and pixel-mode groups) and one level of each
@@ -478,7 +500,8 @@
  * GL_FRAGMENT_PROGRAM_ARB) must be off when a GL1 frame runs.
  * With a GLSL technique, the texture units a frame used (the surface
  * technique's units 1 and 2, the shadow maps' units) are left with no 2D,
- * 1D or cube-map texture bound. On GL 4.3 a frame that used shader storage
+ * 1D or cube-map texture bound; their 2D-array bindings (deep maps,
+ * peeling, interval; GL 3.0) are the caller's again. On GL 4.3 a frame that used shader storage
  * buffers (deep's early-stop flag: binding point 0; vdsm's CSG product
  * shadows: points 0-2; vdsm's receivers, stin_frame_stats.
  * shadows.vdsm_atomic_receivers: point 0) leaves those binding points and the
@@ -492,8 +515,10 @@
  * memory whatever the caller's unpack state: alignment, row length, skip
  * rows and pixels and (GL 2.1+) a bound pixel unpack buffer are set for the
  * upload and restored after. stin_create and the destroy calls create or
- * delete GL objects and leave every binding as they found it. Queries touch
- * no GL.
+ * delete GL objects and leave every binding as they found it (stin_create
+ * sets aside the vertex array, array buffer, active unit, unit 0's 2D,
+ * 2D-array and cube-map textures and the state above for its set-up).
+ * Queries touch no GL.
  *
  * MEMORY
  * stin_memory_size(&desc) returns the bytes a configuration needs; the block

@@ -319,7 +319,8 @@ static int overflows(stin_context *ctx, const stin__csg_product *p, int k)
     uint32_t q;
     ps.depth_write = 0;
     ps.color_write = 0;
-    GL(ctx, BeginQuery)(GL_SAMPLES_PASSED, s->query);
+    if (!stin__query_begin(ctx, STIN__QUERY_SAMPLES, GL_SAMPLES_PASSED, s->query))
+        return 1; /* a caller's samples query: taken as an overflow */
     for (q = 0; q < p->primitive_count; q++) {
         int last = (int)q * k + k - 1;
         attach_layer(ctx, last + 1); /* not the array it reads; nothing is written */
@@ -362,8 +363,9 @@ static int peel_product(stin_context *ctx, const stin__csg_product *p, int k, in
         if (!s->said_overflow) {
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                       "interval: a primitive crosses a camera ray more than %d times "
-                      "(desc.csg.interval_layers); scs or goldfeather resolves that product "
-                      "this frame", k);
+                      "(desc.csg.interval_layers), or a query of the caller's holds the "
+                      "occlusion count; scs or goldfeather resolves that product this frame",
+                      k);
             s->said_overflow = 1;
         }
         return 0;

@@ -501,7 +501,7 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     GLuint kept = 1, q = m->queries[STIN__CSG_MERGE_THRESHOLDS];
-    int counted = want_kept && m->queries[0];
+    int counted = want_kept && m->queries[0] && !(ctx->queries_busy & STIN__QUERY_SAMPLES);
     region_rows g = rows_of(ctx, r);
     size_t x, y;
     int direct;
@@ -561,7 +561,7 @@ unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__
     unsigned most = 0;
     region_rows g = rows_of(ctx, r);
     size_t i, x, y;
-    if (r->gpu && m->queries[0]) {
+    if (r->gpu && m->queries[0] && !(ctx->queries_busy & STIN__QUERY_SAMPLES)) {
         GLuint passed[STIN__CSG_MERGE_THRESHOLDS];
         stin__pass_state ps = stin__pass_defaults;
         int n = 0;

@@ -326,6 +326,45 @@ static void release_gl(stin_context *ctx)
     stin__times_release(ctx);
 }
 
+/* Selection and every module's GL set-up. */
+static stin_result set_up(stin_context *ctx)
+{
+    char msg[256];
+    stin_result r = stin__select(&ctx->caps, ctx->desc.tier, ctx->desc.techniques, &ctx->sel,
+                                 msg, sizeof msg);
+    if (r != STIN_OK) {
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, ctx->sel.failure, "stin_create: %s", msg);
+        return r;
+    }
+    ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
+    stin__selection_hand_down(ctx); /* before the first program is built */
+    stin__hooks_install_paths(ctx); /* the lighting path builds the features' chunks in */
+    r = init_lighting(ctx);
+    if (r == STIN_OK)
+        r = init_shadows(ctx);
+    if (r == STIN_OK) {
+        GLint fb[2] = {0, 0};
+        int fbo = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
+        if (fbo) /* the caller's binding survives the translucent maps' set-up */
+            stin__framebuffer_save(ctx, fb);
+        stin__deep_init(ctx);
+        stin__coloured_init(ctx);
+        if (fbo)
+            stin__framebuffer_restore(ctx, fb);
+        stin__peel_init(ctx);
+        stin__displace_init(ctx);
+        stin__csg_init(ctx);
+        stin__csg_interval_init(ctx);
+        stin__hooks_install(ctx); /* after csg's init, which may turn it off */
+        stin__outline_init(ctx);
+        stin__times_init(ctx);
+        stin__choice_init(ctx); /* volumes beside vdsm, after every choice is final */
+    }
+    if (r != STIN_OK)
+        release_gl(ctx); /* nothing half-made stays behind */
+    return r;
+}
+
 stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes,
                         stin_context **out)
 {
@@ -334,7 +373,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     stin_context *ctx;
     size_t need;
     uint32_t serial;
-    char msg[256];
+    stin__create_bindings bindings;
     stin_result r;
     if (out)
         *out = NULL;
@@ -405,39 +444,12 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         return r;
     }
     stin__target_init(ctx);
-    r = stin__select(&ctx->caps, d.tier, d.techniques, &ctx->sel, msg, sizeof msg);
-    if (r != STIN_OK) {
-        stin__log(ctx, STIN_LOG_LEVEL_ERROR, ctx->sel.failure, "stin_create: %s", msg);
+    stin__caller_detect(ctx);
+    stin__create_bindings_save(ctx, &bindings);
+    r = set_up(ctx);
+    stin__create_bindings_restore(ctx, &bindings);
+    if (r != STIN_OK)
         return r;
-    }
-    ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
-    stin__selection_hand_down(ctx); /* before the first program is built */
-    stin__hooks_install_paths(ctx); /* the lighting path builds the features' chunks in */
-    r = init_lighting(ctx);
-    if (r == STIN_OK)
-        r = init_shadows(ctx);
-    if (r == STIN_OK) {
-        GLint fb[2] = {0, 0};
-        int fbo = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
-        if (fbo) /* the caller's binding survives the translucent maps' set-up */
-            stin__framebuffer_save(ctx, fb);
-        stin__deep_init(ctx);
-        stin__coloured_init(ctx);
-        if (fbo)
-            stin__framebuffer_restore(ctx, fb);
-        stin__peel_init(ctx);
-        stin__displace_init(ctx);
-        stin__csg_init(ctx);
-        stin__csg_interval_init(ctx);
-        stin__hooks_install(ctx); /* after csg's init, which may turn it off */
-        stin__outline_init(ctx);
-        stin__times_init(ctx);
-        stin__choice_init(ctx); /* volumes beside vdsm, after every choice is final */
-    }
-    if (r != STIN_OK) {
-        release_gl(ctx); /* nothing half-made stays behind */
-        return r;
-    }
     ctx->lights_per_pass = STIN__LIGHTS_PER_PASS;
     if (ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED &&
         ctx->caps.max_lights < ctx->lights_per_pass)

@@ -21,6 +21,7 @@ void stin__state_save(stin_context *ctx)
     int fixed = uses_fixed_function(ctx);
     if (fixed)
         GL(ctx, PushAttrib)(FIXED_FUNCTION_BITS);
+    stin__caller_frame_begin(ctx, &ctx->caller);
     ctx->caller_vao = stin__vao_begin(ctx);
     stin__caller_state_defaults(ctx);
     if (fixed)
@@ -60,5 +61,6 @@ void stin__state_restore(stin_context *ctx)
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0); /* vertex array 0's */
     }
     stin__vao_end(ctx, ctx->caller_vao);
+    stin__caller_frame_end(ctx, &ctx->caller);
     stin__pass_forget(ctx); /* between frames GL is the caller's */
 }

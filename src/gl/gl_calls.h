@@ -10,9 +10,11 @@
 
 /* ---- GL entry points ---------------------------------------------------- */
 /* What an entry point or enum needs: a capability (STIN_CAP_*), GL 1.1
- * (NEED_CORE) or a core GL version (NEED_GLxy). */
+ * (NEED_CORE), a core GL version (NEED_GLxy) or, for the caller-state
+ * calls of gl/caller_redirects.c, the version or extension that file checks
+ * before it calls them (NEED_CHECKED). */
 enum { NEED_CORE = STIN_CAP_COUNT, NEED_GL12, NEED_GL13, NEED_GL14, NEED_GL30, NEED_GL31, NEED_GL32,
-       NEED_GL33, NEED_GL43, NEED_COUNT };
+       NEED_GL33, NEED_GL43, NEED_CHECKED, NEED_COUNT };
 
 typedef enum stin__glfn {
 #define STIN_X_(ret, name, params, need, alt) STIN_GLFN_##name,

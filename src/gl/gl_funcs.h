@@ -161,6 +161,13 @@
     X(void, BlendEquationSeparate, (GLenum rgb, GLenum alpha), NEED_GL30, "")              \
     X(void, GetQueryObjectuiv, (GLuint id, GLenum pname, GLuint *v), STIN_CAP_OCCLUSION_QUERY, \
       "glGetQueryObjectuivARB")                                                            \
+    X(void, GetQueryiv, (GLenum target, GLenum pname, GLint *v), STIN_CAP_OCCLUSION_QUERY, \
+      "glGetQueryivARB")                                                                   \
+    /* the caller's state set aside around stin's work (gl/caller_redirects.c) */          \
+    X(GLboolean, IsEnabled, (GLenum cap), NEED_CORE, "")                                   \
+    X(void, BindProgramPipeline, (GLuint pipeline), NEED_CHECKED, "")                      \
+    X(void, ClampColor, (GLenum target, GLenum clamp), NEED_CHECKED, "glClampColorARB")    \
+    X(void, ProvokingVertex, (GLenum mode), NEED_CHECKED, "glProvokingVertexEXT")          \
     /* GL 3.3 / ARB_timer_query (STIN_DEBUG_STAGE_TIMES) */                                \
     X(void, QueryCounter, (GLuint id, GLenum target), STIN_CAP_TIMER_QUERY, "")            \
     X(void, GetQueryObjectui64v, (GLuint id, GLenum pname, GLuint64 *v), STIN_CAP_TIMER_QUERY, \

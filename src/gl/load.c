@@ -30,14 +30,15 @@ int stin__glfn_need(stin__glfn fn) { return (unsigned)fn < STIN_GLFN_COUNT ? gl_
 
 int stin__need_version(int need)
 {
-    static const int versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 43};
+    static const int versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 43, 11};
     return need >= NEED_CORE && need < NEED_COUNT ? versions[need - NEED_CORE] : 0;
 }
 
 const char *stin__need_name(int need)
 {
     static const char *const names[NEED_COUNT - NEED_CORE] = {
-        "GL 1.1", "GL 1.2", "GL 1.3", "GL 1.4", "GL 3.0", "GL 3.1", "GL 3.2", "GL 3.3", "GL 4.3"};
+        "GL 1.1", "GL 1.2", "GL 1.3", "GL 1.4", "GL 3.0", "GL 3.1", "GL 3.2", "GL 3.3", "GL 4.3",
+        "its version or extension"};
     return need >= NEED_CORE && need < NEED_COUNT ? names[need - NEED_CORE]
                                                   : stin_cap_name((stin_cap)need);
 }

@@ -259,7 +259,8 @@ void stin__choice_plan(stin_context *ctx, int volumes_draw)
     } else {
         s->since_trial++;
     }
-    s->timing = free_query(s);
+    /* a caller's time query: this frame goes untimed */
+    s->timing = ctx->queries_busy & STIN__QUERY_TIME ? -1 : free_query(s);
     if (s->timing < 0)
         return;
     s->busy[s->timing] = 1;

@@ -323,7 +323,7 @@ static void polygons(stin_context *ctx, const float light[4])
     struct stin__vdsm_state *v = ctx->vdsm;
     const stin__pass_state before = *stin__pass_current(ctx);
     stin__pass_state ps = before;
-    int tested = stin__vdsm_depth_tested(ctx), fed = stin__vdsm_cull_on(ctx);
+    int tested = stin__vdsm_depth_tested(ctx), fed = stin__vdsm_cull_on(ctx), counted;
     if (fed && !stin__vdsm_cull_pass(ctx, light))
         return; /* no triangle casts */
     if (!fed) {
@@ -341,13 +341,13 @@ static void polygons(stin_context *ctx, const float light[4])
         surface_depth(ctx, 1);
         stin__pass_apply(ctx, &ps);
     }
-    if (v->query)
-        GL(ctx, BeginQuery)(GL_PRIMITIVES_GENERATED, v->query);
+    counted = v->query && stin__query_begin(ctx, STIN__QUERY_PRIMITIVES, GL_PRIMITIVES_GENERATED,
+                                            v->query);
     if (fed)
         stin__vdsm_cull_draw(ctx);
     else
         stin__vdsm_draw_casters(ctx, &v->poly);
-    if (v->query) {
+    if (counted) {
         GLuint n = 0;
         GL(ctx, EndQuery)(GL_PRIMITIVES_GENERATED);
         GL(ctx, GetQueryObjectuiv)(v->query, GL_QUERY_RESULT, &n);

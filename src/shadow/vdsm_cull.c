@@ -180,6 +180,9 @@ int stin__vdsm_cull_on(stin_context *ctx)
     stin__vdsm_cull *c = &ctx->vdsm->culling;
     if (!c->usable || ctx->vdsm->tess_active || (ctx->desc.debug_flags & STIN_DEBUG_VDSM_ONE_PASS))
         return 0;
+    /* drawn from a count it cannot read under a caller's feedback query */
+    if (!c->feedback && (ctx->queries_busy & STIN__QUERY_FEEDBACK))
+        return 0;
     if (reserve(ctx, c))
         return 1;
     c->usable = 0; /* past 11 million casting triangles */
@@ -193,16 +196,17 @@ int stin__vdsm_cull_pass(stin_context *ctx, const float light[4])
 {
     stin__vdsm_cull *c = &ctx->vdsm->culling;
     GLuint kept = 1;
+    int counted;
     GL(ctx, UseProgram)(c->cull_prog);
     stin__vdsm_polygon_uniforms(ctx, &c->cull, light);
     feedback_target(ctx, c, c->buffer);
     GL_ENABLE(ctx, GL_RASTERIZER_DISCARD);
-    if (c->query)
-        GL(ctx, BeginQuery)(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, c->query);
+    counted = c->query && stin__query_begin(ctx, STIN__QUERY_FEEDBACK,
+                                            GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, c->query);
     GL(ctx, BeginTransformFeedback)(GL_POINTS);
     stin__vdsm_draw_casters(ctx, &c->cull);
     GL(ctx, EndTransformFeedback)();
-    if (c->query) {
+    if (counted) {
         GL(ctx, EndQuery)(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
         GL(ctx, GetQueryObjectuiv)(c->query, GL_QUERY_RESULT, &kept);
         c->kept = kept;

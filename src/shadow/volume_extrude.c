@@ -85,7 +85,7 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
 {
     struct stin__volume_state *v = ctx->volume;
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    int closed = m->info.closed_manifold != 0;
+    int closed = m->info.closed_manifold != 0, counted;
     if (!v->extrude_prog || !m->adj_vao || v->cpu_only)
         return 0;
     if (!v->path_unbound) { /* the light's first extruded caster, or one after a CPU-built one */
@@ -101,8 +101,8 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
     if (v->set_caps != zfail)
         GL(ctx, Uniform1i)(v->u_caps, v->set_caps = zfail);
     GL(ctx, BindVertexArray)(m->adj_vao);
-    if (v->count_query)
-        GL(ctx, BeginQuery)(GL_PRIMITIVES_GENERATED, v->count_query);
+    counted = v->count_query && stin__query_begin(ctx, STIN__QUERY_PRIMITIVES,
+                                                  GL_PRIMITIVES_GENERATED, v->count_query);
     draw_mode(ctx, m, 0);
     if (zfail && !closed) {
         /* light caps of averted triangles, on the surface they came from:
@@ -114,7 +114,7 @@ int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const floa
         ps.front_face = GL_CCW;
         stin__pass_apply(ctx, &ps);
     }
-    if (v->count_query) {
+    if (counted) {
         GLuint n = 0;
         GL(ctx, EndQuery)(GL_PRIMITIVES_GENERATED);
         GL(ctx, GetQueryObjectuiv)(v->count_query, GL_QUERY_RESULT, &n);

@@ -324,6 +324,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
     for (k = 0; k < s->layer_cap; k++) {
         GLint slice = (GLint)((uint32_t)face * s->slices + k / 2u);
         GLuint drawn = 1;
+        int counted = 0;
         GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->layers[k % 2u], 0,
                                          slice);
         GL(ctx, ClearColor)(EMPTY_DEPTH, 1.0f, 1.0f, 1.0f);
@@ -336,8 +337,8 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
                            k > 0 ? (GLint)((uint32_t)face * s->slices + (k - 1u) / 2u) : -1);
         if (stop_early && s->flag)
             GL(ctx, BufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof zero, &zero);
-        else if (stop_early)
-            GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, s->query);
+        else if (stop_early) /* a caller's samples query: no early stop */
+            counted = stin__query_begin(ctx, STIN__QUERY_SAMPLES, GL_SAMPLES_PASSED, s->query);
         draw_transparent(ctx);
         ctx->stats.translucent.deep_layers++;
         ctx->stats.passes++;
@@ -345,7 +346,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
             GL(ctx, MemoryBarrier)(GL_BUFFER_UPDATE_BARRIER_BIT);
             GL(ctx, GetBufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof drawn,
                                       &drawn);
-        } else if (stop_early) {
+        } else if (counted) {
             GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
             GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &drawn);
         }

@@ -318,16 +318,18 @@ int stin__peel_layer_begin(stin_context *ctx)
     return 1;
 }
 
+/* Under a caller's samples query the peeling runs to its layer limit. */
 void stin__peel_count_begin(stin_context *ctx)
 {
-    if (ctx->peel->query)
-        GL(ctx, BeginQuery)(GL_SAMPLES_PASSED, ctx->peel->query);
+    ctx->peel->counting = ctx->peel->query && stin__query_begin(ctx, STIN__QUERY_SAMPLES,
+                                                                GL_SAMPLES_PASSED,
+                                                                ctx->peel->query);
 }
 
 GLuint stin__peel_count_end(stin_context *ctx)
 {
     GLuint samples = 1;
-    if (ctx->peel->query) {
+    if (ctx->peel->counting) {
         GL(ctx, EndQuery)(GL_SAMPLES_PASSED);
         GL(ctx, GetQueryObjectuiv)(ctx->peel->query, GL_QUERY_RESULT, &samples);
     }

@@ -34,6 +34,7 @@ typedef struct stin__peel_state {
     GLuint accum[2];       /* the composite so far, (C, T) front to back, ping-pong */
     GLenum accum_format;   /* accum's: RGBA16F on GL4 (with float textures), else RGBA8 */
     GLuint fbo, composite_fbo, program, query;
+    int counting;          /* the layer's query began (not under a caller's) */
     GLint u_ambient, u_lights, u_accum, u_first, u_params;
     int width, height;     /* allocated texels (0: not yet) */
     int unit;              /* two units: the previous layer's depth, the opaque depth */

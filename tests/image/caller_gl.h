@@ -80,6 +80,22 @@
     X(void, Viewport, (GLint x, GLint y, GLsizei w, GLsizei h))                           \
     X(void, Clear, (GLbitfield mask))                                                     \
     X(void, ClearColor, (GLfloat r, GLfloat g, GLfloat b, GLfloat a))                     \
+    X(void, ClearStencil, (GLint s))                                                      \
+    X(const GLubyte *, GetString, (GLenum name))                                          \
+    X(void, TexImage3D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLsizei h,    \
+                         GLsizei d, GLint border, GLenum fmt, GLenum type, const void *p)) \
+    X(void, GenQueries, (GLsizei n, GLuint *q))                                           \
+    X(void, DeleteQueries, (GLsizei n, const GLuint *q))                                  \
+    X(void, BeginQuery, (GLenum target, GLuint q))                                        \
+    X(void, EndQuery, (GLenum target))                                                    \
+    X(void, GetQueryiv, (GLenum target, GLenum pname, GLint *v))                          \
+    X(GLuint, CreateShaderProgramv, (GLenum type, GLsizei n, const GLchar *const *src))   \
+    X(void, GenProgramPipelines, (GLsizei n, GLuint *p))                                  \
+    X(void, DeleteProgramPipelines, (GLsizei n, const GLuint *p))                         \
+    X(void, BindProgramPipeline, (GLuint p))                                              \
+    X(void, UseProgramStages, (GLuint p, GLbitfield stages, GLuint program))              \
+    X(void, ClampColor, (GLenum target, GLenum clamp))                                    \
+    X(void, ProvokingVertex, (GLenum mode))                                               \
     /* compatibility profile */                                                           \
     X(void, AlphaFunc, (GLenum f, GLclampf ref))                                          \
     X(void, ClipPlane, (GLenum plane, const GLdouble *eq))                                \

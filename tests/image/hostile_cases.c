@@ -54,10 +54,10 @@ typedef struct enable_case {
 } enable_case;
 
 static const enable_case enable_cases[] = {
-    {GL_COLOR_LOGIC_OP, 0}, {GL_POLYGON_OFFSET_FILL, 0}, {GL_SCISSOR_TEST, 0},
+    {GL_COLOR_LOGIC_OP, 0}, {GL_POLYGON_OFFSET_FILL, 1}, {GL_SCISSOR_TEST, 0},
     {GL_STENCIL_TEST, 0},   {GL_DEPTH_TEST, 0},          {GL_BLEND, 0},
     {GL_CULL_FACE, 0},      {GL_POLYGON_SMOOTH, 0},      {GL_PRIMITIVE_RESTART, 0},
-    {GL_PRIMITIVE_RESTART_FIXED_INDEX, 0}, {GL_RASTERIZER_DISCARD, 0}, {GL_DEPTH_CLAMP, 0},
+    {GL_PRIMITIVE_RESTART_FIXED_INDEX, 0}, {GL_RASTERIZER_DISCARD, 0}, {GL_DEPTH_CLAMP, 1},
     {GL_CLIP_PLANE0, 0},    {GL_ALPHA_TEST, 0},          {GL_POLYGON_STIPPLE, 0},
     {GL_FOG, 1},            {GL_COLOR_MATERIAL, 1},      {GL_LIGHT5, 1},
     {GL_TEXTURE_GEN_S, 1}};
@@ -387,10 +387,165 @@ static int after_storage(hostile_env *e, char *got, size_t size)
     return 1;
 }
 
+
+/* ---- state that redirects stin's own work (issue 38) ------------------------------ */
+static int binding_is(hostile_env *e, GLenum pname, GLuint want, char *got, size_t size)
+{
+    return int_is(e, pname, (GLint)want, got, size);
+}
+
+/* a query buffer: query results would be written into it */
+static int query_buffer_available(const hostile_env *e)
+{
+    return (e->version >= 44 || e->ext_query_buffer) && e->buffer;
+}
+static void set_query_buffer(hostile_env *e) { e->gl->BindBuffer(GL_QUERY_BUFFER, e->buffer); }
+static void reset_query_buffer(hostile_env *e) { e->gl->BindBuffer(GL_QUERY_BUFFER, 0); }
+static int after_query_buffer(hostile_env *e, char *got, size_t size)
+{
+    return binding_is(e, GL_QUERY_BUFFER_BINDING, e->buffer, got, size);
+}
+
+/* the caller's samples-passed query, active across the frame */
+static int query_available(const hostile_env *e) { return e->query != 0; }
+static void set_samples_query(hostile_env *e) { e->gl->BeginQuery(GL_SAMPLES_PASSED, e->query); }
+static void reset_samples_query(hostile_env *e)
+{
+    e->gl->EndQuery(GL_SAMPLES_PASSED);
+    while (e->gl->GetError() != GL_NO_ERROR) { /* stin's frame may have ended it */
+    }
+}
+static int after_samples_query(hostile_env *e, char *got, size_t size)
+{
+    GLint current = 0;
+    e->gl->GetQueryiv(GL_SAMPLES_PASSED, GL_CURRENT_QUERY, &current);
+    if (current != (GLint)e->query)
+        snprintf(got, size, "the caller's samples query %s",
+                 current ? "replaced" : "no longer active");
+    return current == (GLint)e->query;
+}
+
+/* pixel unpack and pack buffers: allocations and read-backs would use them */
+static int pixel_buffer_available(const hostile_env *e) { return e->version >= 21 && e->buffer; }
+static void set_unpack(hostile_env *e) { e->gl->BindBuffer(GL_PIXEL_UNPACK_BUFFER, e->buffer); }
+static void reset_unpack(hostile_env *e) { e->gl->BindBuffer(GL_PIXEL_UNPACK_BUFFER, 0); }
+static int after_unpack(hostile_env *e, char *got, size_t size)
+{
+    return binding_is(e, GL_PIXEL_UNPACK_BUFFER_BINDING, e->buffer, got, size);
+}
+static void set_pack(hostile_env *e) { e->gl->BindBuffer(GL_PIXEL_PACK_BUFFER, e->buffer); }
+static void reset_pack(hostile_env *e) { e->gl->BindBuffer(GL_PIXEL_PACK_BUFFER, 0); }
+static int after_pack(hostile_env *e, char *got, size_t size)
+{
+    return binding_is(e, GL_PIXEL_PACK_BUFFER_BINDING, e->buffer, got, size);
+}
+
+/* a program pipeline drawing red: draws with program 0 would go through it */
+static int pipeline_available(const hostile_env *e) { return e->pipeline != 0; }
+static void set_pipeline(hostile_env *e) { e->gl->BindProgramPipeline(e->pipeline); }
+static void reset_pipeline(hostile_env *e) { e->gl->BindProgramPipeline(0); }
+static int after_pipeline(hostile_env *e, char *got, size_t size)
+{
+    return binding_is(e, GL_PROGRAM_PIPELINE_BINDING, e->pipeline, got, size);
+}
+
+/* colour clamping on: float targets would clamp (fragment: compatibility only) */
+static int clamp_available(const hostile_env *e)
+{
+    return (e->version >= 30 || e->ext_clamp) && e->gl->ClampColor;
+}
+static void clamping(hostile_env *e, GLenum mode)
+{
+    if (e->compat)
+        e->gl->ClampColor(GL_CLAMP_FRAGMENT_COLOR, mode);
+    e->gl->ClampColor(GL_CLAMP_READ_COLOR, mode);
+}
+static void set_clamp(hostile_env *e) { clamping(e, GL_TRUE); }
+static void reset_clamp(hostile_env *e) { clamping(e, GL_FIXED_ONLY); }
+static int after_clamp(hostile_env *e, char *got, size_t size)
+{
+    return (!e->compat || int_is(e, GL_CLAMP_FRAGMENT_COLOR, GL_TRUE, got, size)) &&
+           int_is(e, GL_CLAMP_READ_COLOR, GL_TRUE, got, size);
+}
+
+/* the first vertex provokes: flat-shaded values would come from it */
+static int provoking_available(const hostile_env *e)
+{
+    return (e->version >= 32 || e->ext_provoking) && e->gl->ProvokingVertex;
+}
+static void set_provoking(hostile_env *e) { e->gl->ProvokingVertex(GL_FIRST_VERTEX_CONVENTION); }
+static void reset_provoking(hostile_env *e) { e->gl->ProvokingVertex(GL_LAST_VERTEX_CONVENTION); }
+static int after_provoking(hostile_env *e, char *got, size_t size)
+{
+    return int_is(e, GL_PROVOKING_VERTEX, GL_FIRST_VERTEX_CONVENTION, got, size);
+}
+
+/* the stencil clear value */
+static void set_clear_stencil(hostile_env *e) { e->gl->ClearStencil(0x5a); }
+static void reset_clear_stencil(hostile_env *e) { e->gl->ClearStencil(0); }
+static int after_clear_stencil(hostile_env *e, char *got, size_t size)
+{
+    return int_is(e, GL_STENCIL_CLEAR_VALUE, 0x5a, got, size);
+}
+
+/* a 2D-array texture on units 0-7 (stin binds its own arrays on some) */
+#define ARRAY_UNITS 8
+static int arrays_available(const hostile_env *e) { return e->array_texture != 0; }
+static void arrays_to(hostile_env *e, GLuint t)
+{
+    int u;
+    for (u = 0; u < ARRAY_UNITS; u++) {
+        e->gl->ActiveTexture((GLenum)(GL_TEXTURE0 + u));
+        e->gl->BindTexture(GL_TEXTURE_2D_ARRAY, t);
+    }
+    e->gl->ActiveTexture(GL_TEXTURE0);
+}
+static void set_arrays(hostile_env *e) { arrays_to(e, e->array_texture); }
+static void reset_arrays(hostile_env *e) { arrays_to(e, 0); }
+static int after_arrays(hostile_env *e, char *got, size_t size)
+{
+    int u, ok = 1;
+    for (u = 0; u < ARRAY_UNITS && ok; u++) {
+        e->gl->ActiveTexture((GLenum)(GL_TEXTURE0 + u));
+        ok = binding_is(e, GL_TEXTURE_BINDING_2D_ARRAY, e->array_texture, got, size);
+    }
+    e->gl->ActiveTexture(GL_TEXTURE0);
+    return ok;
+}
+
+/* stin_create's set-up: the caller's vertex array, array buffer, active unit
+ * 3, and unit 0's 2D and 2D-array textures */
+static int bindings_available(const hostile_env *e) { return e->vao && e->array_texture; }
+static void create_bindings(hostile_env *e, int on)
+{
+    e->gl->BindVertexArray(on ? e->vao : 0);
+    e->gl->BindBuffer(GL_ARRAY_BUFFER, on ? e->buffer : 0);
+    e->gl->ActiveTexture(GL_TEXTURE0);
+    e->gl->BindTexture(GL_TEXTURE_2D, on ? e->texture : 0);
+    e->gl->BindTexture(GL_TEXTURE_2D_ARRAY, on ? e->array_texture : 0);
+    e->gl->ActiveTexture(on ? GL_TEXTURE3 : GL_TEXTURE0);
+}
+static void set_create_bindings(hostile_env *e) { create_bindings(e, 1); }
+static void reset_create_bindings(hostile_env *e) { create_bindings(e, 0); }
+static int after_create_bindings(hostile_env *e, char *got, size_t size)
+{
+    int ok = binding_is(e, GL_VERTEX_ARRAY_BINDING, e->vao, got, size) &&
+             binding_is(e, GL_ARRAY_BUFFER_BINDING, e->buffer, got, size) &&
+             int_is(e, GL_ACTIVE_TEXTURE, GL_TEXTURE3, got, size);
+    e->gl->ActiveTexture(GL_TEXTURE0);
+    ok = ok && binding_is(e, GL_TEXTURE_BINDING_2D, e->texture, got, size) &&
+         binding_is(e, GL_TEXTURE_BINDING_2D_ARRAY, e->array_texture, got, size);
+    e->gl->ActiveTexture(GL_TEXTURE3);
+    return ok;
+}
+
 #define ENABLE(name, cap, version, compat, set, reset) \
-    {name, cap, version, compat, set, reset, NULL}
+    {name, cap, version, compat, set, reset, NULL, HOSTILE_FRAME, NULL, NULL}
 #define STATE(name, version, compat, set, reset, after) \
-    {name, 0, version, compat, set, reset, after}
+    {name, 0, version, compat, set, reset, after, HOSTILE_FRAME, NULL, NULL}
+/* version 0: `available` decides */
+#define REDIRECT(name, when, available, set, reset, after) \
+    {name, 0, 0, 0, set, reset, after, when, available, NULL}
 
 const hostile_case hostile_cases[] = {
     ENABLE("logic-op-invert", GL_COLOR_LOGIC_OP, 11, 0, set_logic_op, reset_logic_op),
@@ -424,13 +579,34 @@ const hostile_case hostile_cases[] = {
     STATE("texture-matrix", 11, 1, set_matrix, reset_matrix, after_matrix),
     STATE("colour-array", 11, 1, set_colors, reset_colors, after_colors),
     STATE("pixel-transfer", 11, 1, set_transfer, reset_transfer, after_transfer),
-    STATE("storage-buffers", 43, 0, set_storage, reset_storage, after_storage)};
+    STATE("storage-buffers", 43, 0, set_storage, reset_storage, after_storage),
+    REDIRECT("query-buffer", HOSTILE_FRAME, query_buffer_available, set_query_buffer,
+             reset_query_buffer, after_query_buffer),
+    REDIRECT("samples-query-active", HOSTILE_FRAME, query_available, set_samples_query,
+             reset_samples_query, after_samples_query),
+    REDIRECT("pixel-unpack-buffer", HOSTILE_FRAME | HOSTILE_CREATE, pixel_buffer_available,
+             set_unpack, reset_unpack, after_unpack),
+    REDIRECT("pixel-pack-buffer", HOSTILE_FRAME, pixel_buffer_available, set_pack, reset_pack,
+             after_pack),
+    REDIRECT("program-pipeline", HOSTILE_FRAME, pipeline_available, set_pipeline,
+             reset_pipeline, after_pipeline),
+    REDIRECT("clamp-colour", HOSTILE_FRAME, clamp_available, set_clamp, reset_clamp,
+             after_clamp),
+    REDIRECT("provoking-first", HOSTILE_FRAME, provoking_available, set_provoking,
+             reset_provoking, after_provoking),
+    STATE("stencil-clear-value", 11, 0, set_clear_stencil, reset_clear_stencil,
+          after_clear_stencil),
+    REDIRECT("2d-array-units", HOSTILE_FRAME, arrays_available, set_arrays, reset_arrays,
+             after_arrays),
+    REDIRECT("create-bindings", HOSTILE_CREATE, bindings_available, set_create_bindings,
+             reset_create_bindings, after_create_bindings)};
 
 const size_t hostile_case_count = sizeof hostile_cases / sizeof hostile_cases[0];
 
 int hostile_applies(const hostile_case *c, const hostile_env *e)
 {
-    return e->version >= c->version && (!c->compat || e->compat);
+    return e->version >= c->version && (!c->compat || e->compat) &&
+           (!c->available || c->available(e));
 }
 
 void hostile_set(const hostile_case *c, hostile_env *e)
@@ -452,4 +628,98 @@ void hostile_reset(const hostile_case *c, hostile_env *e)
 int hostile_after(const hostile_case *c, hostile_env *e, char *got, size_t size)
 {
     return c->after ? c->after(e, got, size) : after_enable(e, c->cap, got, size);
+}
+
+int hostile_after_create(const hostile_case *c, hostile_env *e, char *got, size_t size)
+{
+    return c->after_create ? c->after_create(e, got, size) : hostile_after(c, e, got, size);
+}
+
+/* ---- the caller's objects ----------------------------------------------------------- */
+static const char red_fragment[] = "#version 150\nout vec4 c;\nvoid main() { c = vec4(1.0, 0.0, 0.0, 1.0); }\n";
+static const char red_fragment_110[] = "#version 110\nvoid main() { gl_FragColor = vec4(1.0, 0.0, 0.0, 1.0); }\n";
+
+static void make_pipeline(hostile_env *e, int core)
+{
+    const char *src = core ? red_fragment : red_fragment_110;
+    GLuint fragment;
+    if (!(e->version >= 41 || e->ext_pipeline) || !e->gl->GenProgramPipelines ||
+        !e->gl->CreateShaderProgramv)
+        return;
+    fragment = e->gl->CreateShaderProgramv(GL_FRAGMENT_SHADER, 1, &src);
+    if (!fragment)
+        return;
+    e->gl->GenProgramPipelines(1, &e->pipeline);
+    e->gl->UseProgramStages(e->pipeline, GL_FRAGMENT_SHADER_BIT, fragment);
+    e->gl->DeleteProgram(fragment); /* the pipeline keeps it */
+}
+
+void hostile_objects_make(hostile_env *e, int core)
+{
+    static const GLubyte texel[4] = {255, 0, 0, 255};
+    const caller_gl *gl = e->gl;
+    gl->GenTextures(1, &e->texture);
+    gl->BindTexture(GL_TEXTURE_2D, e->texture);
+    gl->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE, texel);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    if (e->version >= 20)
+        e->program = caller_gl_flat_program(gl, core, 1.0f, 0.0f, 0.0f);
+    if (e->version >= 43 && gl->GenBuffers && gl->BindBufferBase && gl->GetIntegeri_v) {
+        gl->GenBuffers(1, &e->storage);
+        gl->BindBuffer(GL_SHADER_STORAGE_BUFFER, e->storage);
+        gl->BufferData(GL_SHADER_STORAGE_BUFFER, 64, NULL, GL_DYNAMIC_DRAW);
+        gl->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    }
+    if (e->version >= 15 && gl->GenBuffers) {
+        gl->GenBuffers(1, &e->buffer);
+        gl->BindBuffer(GL_ARRAY_BUFFER, e->buffer);
+        gl->BufferData(GL_ARRAY_BUFFER, 64, NULL, GL_DYNAMIC_DRAW);
+        gl->BindBuffer(GL_ARRAY_BUFFER, 0);
+    }
+    if (e->version >= 15 && gl->GenQueries && gl->GetQueryiv)
+        gl->GenQueries(1, &e->query);
+    if (e->version >= 30 && gl->TexImage3D) {
+        gl->GenTextures(1, &e->array_texture);
+        gl->BindTexture(GL_TEXTURE_2D_ARRAY, e->array_texture);
+        gl->TexImage3D(GL_TEXTURE_2D_ARRAY, 0, GL_RGBA8, 1, 1, 1, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                       texel);
+        gl->BindTexture(GL_TEXTURE_2D_ARRAY, 0);
+    }
+    if (e->version >= 30 && gl->GenVertexArrays)
+        gl->GenVertexArrays(1, &e->vao);
+    if (e->version >= 33 && gl->GenSamplers) {
+        gl->GenSamplers(1, &e->sampler);
+        gl->SamplerParameteri(e->sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl->SamplerParameteri(e->sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl->SamplerParameteri(e->sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl->SamplerParameteri(e->sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    make_pipeline(e, core);
+    while (gl->GetError() != GL_NO_ERROR) {
+    }
+}
+
+void hostile_objects_free(hostile_env *e)
+{
+    const caller_gl *gl = e->gl;
+    gl->DeleteTextures(1, &e->texture);
+    if (e->program)
+        gl->DeleteProgram(e->program);
+    if (e->sampler)
+        gl->DeleteSamplers(1, &e->sampler);
+    if (e->storage)
+        gl->DeleteBuffers(1, &e->storage);
+    if (e->buffer)
+        gl->DeleteBuffers(1, &e->buffer);
+    if (e->query)
+        gl->DeleteQueries(1, &e->query);
+    if (e->array_texture)
+        gl->DeleteTextures(1, &e->array_texture);
+    if (e->vao)
+        gl->DeleteVertexArrays(1, &e->vao);
+    if (e->pipeline)
+        gl->DeleteProgramPipelines(1, &e->pipeline);
+    e->texture = e->program = e->sampler = e->storage = e->buffer = e->query = 0;
+    e->array_texture = e->vao = e->pipeline = 0;
 }

@@ -19,12 +19,23 @@ typedef struct hostile_env {
     GLuint program;  /* a linked program writing red */
     GLuint sampler;  /* nearest filtering, clamped */
     GLuint storage;  /* a shader storage buffer (GL 4.3) */
+    GLuint buffer;   /* a 64-byte buffer: pixel unpack, pack, query, array (GL 1.5+) */
+    GLuint query;    /* a query object (occlusion queries) */
+    GLuint pipeline; /* a program pipeline drawing red (GL 4.1, separate shader objects) */
+    GLuint array_texture; /* a 1x1x1 2D-array texture (GL 3.0) */
+    GLuint vao;      /* a vertex array object (GL 3.0) */
+    /* extensions that bring a state to an older version */
+    int ext_query_buffer, ext_pipeline, ext_clamp, ext_provoking;
     /* after the frame: the storage-buffer bindings a technique of stin's
      * used (bits 0-2 the indexed points, bit 3 the generic binding): those
      * read 0, the others the caller's */
     unsigned storage_used;
     const float *colors; /* a colour array longer than any test mesh */
 } hostile_env;
+
+/* When a case is set: around a frame (the context made clean), or around
+ * stin_create and the first frames (then taken away before a clean frame). */
+enum { HOSTILE_FRAME = 1, HOSTILE_CREATE = 2 };
 
 typedef struct hostile_case {
     const char *name;
@@ -36,15 +47,25 @@ typedef struct hostile_case {
     /* 1 when the state after the frame reads as documented; NULL: the
      * enable is off after the frame (or the caller's, per the case) */
     int (*after)(hostile_env *e, char *got, size_t size);
+    unsigned when;   /* HOSTILE_FRAME, HOSTILE_CREATE or both */
+    /* whether the context has the state (NULL: version and compat decide) */
+    int (*available)(const hostile_env *e);
+    /* after stin_create: 1 when the state reads as the caller left it
+     * (NULL: `after`) */
+    int (*after_create)(hostile_env *e, char *got, size_t size);
 } hostile_case;
 
 extern const hostile_case hostile_cases[];
 extern const size_t hostile_case_count;
 
 int hostile_applies(const hostile_case *c, const hostile_env *e);
+/* The caller's objects the cases bind, made and deleted on the current context. */
+void hostile_objects_make(hostile_env *e, int core);
+void hostile_objects_free(hostile_env *e);
 void hostile_set(const hostile_case *c, hostile_env *e);
 void hostile_reset(const hostile_case *c, hostile_env *e);
 /* After a frame: 1 if the state is as the header says, else `got` says what it read. */
 int hostile_after(const hostile_case *c, hostile_env *e, char *got, size_t size);
+int hostile_after_create(const hostile_case *c, hostile_env *e, char *got, size_t size);
 
 #endif

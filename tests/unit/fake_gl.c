@@ -47,6 +47,8 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_CheckFramebufferStatus ~, 1
 #define FAKE_CUSTOM_DrawArrays ~, 1
 #define FAKE_CUSTOM_IsFramebuffer ~, 1
+#define FAKE_CUSTOM_IsEnabled ~, 1
+#define FAKE_CUSTOM_GetQueryiv ~, 1
 #define FAKE_CUSTOM_GenQueries ~, 1
 #define FAKE_CUSTOM_BeginQuery ~, 1
 #define FAKE_CUSTOM_EndQuery ~, 1
@@ -105,6 +107,10 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_BeginTransformFeedback ~, 1
 #define FAKE_STATELESS_EndTransformFeedback ~, 1
 #define FAKE_STATELESS_DrawTransformFeedback ~, 1
+/* the caller's state stin sets aside: the fake's caller never sets it */
+#define FAKE_STATELESS_BindProgramPipeline ~, 1
+#define FAKE_STATELESS_ClampColor ~, 1
+#define FAKE_STATELESS_ProvokingVertex ~, 1
 
 #define FAKE_IS_CUSTOM(name) FAKE_PROBE(FAKE_CUSTOM_##name)
 #define FAKE_IS_STATELESS(name) FAKE_PROBE(FAKE_STATELESS_##name)
@@ -579,6 +585,21 @@ static GLboolean STIN_APIENTRY fake_IsFramebuffer(GLuint fb)
 {
     COUNT(IsFramebuffer);
     return caller_fbo(fb) || (fb && fb <= fake_gl.next_name);
+}
+
+static GLboolean STIN_APIENTRY fake_IsEnabled(GLenum cap)
+{
+    COUNT(IsEnabled);
+    return (GLboolean)fake_gl_is_enabled(cap);
+}
+
+/* No query of the caller's is active. */
+static void STIN_APIENTRY fake_GetQueryiv(GLenum target, GLenum pname, GLint *v)
+{
+    (void)target;
+    (void)pname;
+    COUNT(GetQueryiv);
+    *v = 0;
 }
 
 static GLint STIN_APIENTRY fake_GetUniformLocation(GLuint p, const GLchar *name)

@@ -43,6 +43,10 @@
 #define FAKE_VERTEX_ARRAY_BINDING 0x85B5
 #define FAKE_PIXEL_UNPACK_BUFFER 0x88EC
 #define FAKE_PIXEL_UNPACK_BUFFER_BINDING 0x88EF
+#define FAKE_PIXEL_PACK_BUFFER 0x88EB
+#define FAKE_PIXEL_PACK_BUFFER_BINDING 0x88ED
+#define FAKE_QUERY_BUFFER 0x9192
+#define FAKE_QUERY_BUFFER_BINDING 0x9193
 #define FAKE_TEXTURE_BINDING_1D 0x8068
 #define FAKE_COLOR_INDEXES 0x1603
 #define FAKE_LIGHT_MODEL_COLOR_CONTROL 0x81F8
@@ -887,6 +891,10 @@ void STIN_APIENTRY fake_BindBuffer(GLenum target, GLuint b)
     COUNT(BindBuffer);
     if (target == FAKE_PIXEL_UNPACK_BUFFER)
         S.pixel_unpack_buffer = b;
+    else if (target == FAKE_PIXEL_PACK_BUFFER)
+        S.pixel_pack_buffer = b;
+    else if (target == FAKE_QUERY_BUFFER)
+        S.query_buffer = b;
     else if (target == GL_ARRAY_BUFFER)
         S.array_buffer = b;
     else if (target == GL_ELEMENT_ARRAY_BUFFER)
@@ -1018,6 +1026,8 @@ void fake_gl_state_deleted(fake_gl_object kind, GLsizei n, const GLuint *names)
         case FAKE_OBJ_BUFFER:
             unbind(&S.array_buffer, name);
             unbind(&S.pixel_unpack_buffer, name);
+            unbind(&S.pixel_pack_buffer, name);
+            unbind(&S.query_buffer, name);
             unbind(&S.shader_storage_buffer, name);
             unbind(&S.shader_storage_buffer0, name);
             unbind(&S.transform_feedback_buffer, name);
@@ -1082,6 +1092,13 @@ int fake_gl_state_get(GLenum pname, GLint *data)
     case FAKE_ELEMENT_ARRAY_BUFFER_BINDING: *data = (GLint)bound_vao()->element_buffer; return 1;
     case FAKE_VERTEX_ARRAY_BINDING: *data = (GLint)S.vertex_array_binding; return 1;
     case FAKE_PIXEL_UNPACK_BUFFER_BINDING: *data = (GLint)S.pixel_unpack_buffer; return 1;
+    case FAKE_PIXEL_PACK_BUFFER_BINDING: *data = (GLint)S.pixel_pack_buffer; return 1;
+    case FAKE_QUERY_BUFFER_BINDING: *data = (GLint)S.query_buffer; return 1;
+    case 0x8C1D: *data = (GLint)u->binding[FAKE_GL_TARGET_2D_ARRAY]; return 1; /* 2D array */
+    /* the caller's state stin sets aside, at GL's defaults in the fake */
+    case 0x825A: *data = 0; return 1;          /* GL_PROGRAM_PIPELINE_BINDING */
+    case 0x8E4F: *data = 0x8E4E; return 1;     /* GL_PROVOKING_VERTEX: LAST */
+    case 0x891B: case 0x891C: *data = 0x891D; return 1; /* GL_CLAMP_*_COLOR: FIXED_ONLY */
     case GL_DRAW_FRAMEBUFFER_BINDING: *data = (GLint)S.draw_framebuffer; return 1;
     case FAKE_READ_FRAMEBUFFER_BINDING: *data = (GLint)S.read_framebuffer; return 1;
     case FAKE_DRAW_BUFFER: *data = (GLint)S.draw_buffer; return 1;
@@ -1433,6 +1450,8 @@ unsigned fake_gl_state_diff(const fake_gl_glstate *a, const fake_gl_glstate *b, 
     WORD(array_buffer, K_INT);
     WORD(vertex_array_binding, K_INT);
     WORD(pixel_unpack_buffer, K_INT);
+    WORD(pixel_pack_buffer, K_INT);
+    WORD(query_buffer, K_INT);
     WORD(shader_storage_buffer, K_INT);
     WORD(shader_storage_buffer0, K_INT);
     WORD(transform_feedback, K_INT);

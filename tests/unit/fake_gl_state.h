@@ -178,7 +178,7 @@ typedef struct fake_gl_glstate {
     GLuint vertex_array, normal_array, color_array;
     GLuint index_array, edge_flag_array, fog_coord_array, secondary_color_array;
     GLuint array_buffer, vertex_array_binding;
-    GLuint pixel_unpack_buffer;
+    GLuint pixel_unpack_buffer, pixel_pack_buffer, query_buffer;
     GLuint shader_storage_buffer, shader_storage_buffer0; /* generic, index 0 */
     /* the transform feedback object bound; its buffer's generic binding and
      * index 0 of the default object (a caller's feedback would land there) */
