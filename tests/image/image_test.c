@@ -9,6 +9,7 @@
 #include "aov.h"
 #include "compare.h"
 #include "expected.h"
+#include "gl_errors.h"
 #include "image_test.h"
 #include "reference.h"
 #include "scene_gpu.h"
@@ -43,6 +44,7 @@
 void report(run *r, const char *verdict, const char *name, const char *fmt, ...)
 {
     va_list ap;
+    gl_errors_flush(r, name);
     printf("%s %s/%s/%s: ", verdict, r->platform_name, r->profile_name, name);
     va_start(ap, fmt);
     vprintf(fmt, ap);
@@ -316,6 +318,7 @@ int main(int argc, char **argv)
         report(&r, "SKIP", "context", "no %s context for this profile: %s", r.platform_name, err);
         return 0;
     }
+    gl_errors_arm(&r);
     test_selection(&r, e);
     displaced = calloc((size_t)argc, 1); /* once per scene, not per tier */
     for (i = first_scene; displaced && i < argc; i++)
@@ -354,6 +357,7 @@ int main(int argc, char **argv)
         }
     }
     free(displaced);
+    gl_errors_finish(&r);
     stin_platform_destroy(r.plat);
     return 0;
 }
