@@ -430,6 +430,13 @@
  * delete GL objects and leave every binding as they found it. Queries touch
  * no GL.
  *
+ * GL ERRORS
+ * stin raises no GL error: it asks the driver only for limits that the GL
+ * version or a listed extension defines. It never calls glGetError, in either build,
+ * so an error the caller left pending is still the caller's to read after
+ * any stin call. To watch for GL errors, install a KHR_debug callback (the
+ * image tests do, and fail on any error raised inside a stin call).
+ *
  * MEMORY
  * stin_memory_size(&desc) returns the bytes a configuration needs; the block
  * passed to stin_create must be at least that big (else STIN_ERROR_OUT_OF_MEMORY

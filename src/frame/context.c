@@ -425,7 +425,6 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         ctx->caps.max_lights < ctx->lights_per_pass)
         ctx->lights_per_pass = ctx->caps.max_lights > 0 ? ctx->caps.max_lights : 1;
     log_selection(ctx);
-    stin__gl_check_errors(ctx, "stin_create");
     *out = ctx;
     return STIN_OK;
 }

@@ -13,7 +13,6 @@
     X(const GLubyte *, GetString, (GLenum name), NEED_CORE, "")                           \
     X(void, GetIntegerv, (GLenum pname, GLint *data), NEED_CORE, "")                      \
     X(void, GetFloatv, (GLenum pname, GLfloat *data), NEED_CORE, "")                      \
-    X(GLenum, GetError, (void), NEED_CORE, "")                                            \
     X(void, Enable, (GLenum cap), NEED_CORE, "")                                          \
     X(void, LogicOp, (GLenum op), NEED_CORE, "")                                          \
     X(void, Disable, (GLenum cap), NEED_CORE, "")                                         \

@@ -19,7 +19,6 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GetString ~, 1
 #define FAKE_CUSTOM_GetStringi ~, 1
 #define FAKE_CUSTOM_GetIntegerv ~, 1
-#define FAKE_CUSTOM_GetError ~, 1
 #define FAKE_CUSTOM_DrawElements ~, 1
 #define FAKE_CUSTOM_GenTextures ~, 1
 #define FAKE_CUSTOM_DeleteTextures ~, 1
@@ -238,12 +237,6 @@ static void STIN_APIENTRY fake_GetFramebufferAttachmentParameteriv(GLenum target
     *v = pname == GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE ? bound_bits(1)
          : pname == GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE ? bound_bits(0)
                                                          : 0;
-}
-
-static GLenum STIN_APIENTRY fake_GetError(void)
-{
-    COUNT(GetError);
-    return GL_NO_ERROR;
 }
 
 /* ---- drawing ------------------------------------------------------------ */
