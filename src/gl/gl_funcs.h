@@ -115,6 +115,8 @@
     X(void, DeleteProgram, (GLuint p), STIN_CAP_GLSL, "")                                 \
     X(void, UseProgram, (GLuint p), STIN_CAP_GLSL, "")                                    \
     X(GLint, GetUniformLocation, (GLuint p, const GLchar *name), STIN_CAP_GLSL, "")       \
+    X(void, GetActiveUniform, (GLuint p, GLuint i, GLsizei size, GLsizei *len, GLint *count, \
+                               GLenum *type, GLchar *name), STIN_CAP_GLSL, "")            \
     X(void, Uniform1i, (GLint loc, GLint v), STIN_CAP_GLSL, "")                           \
     X(void, Uniform1f, (GLint loc, GLfloat v), STIN_CAP_GLSL, "")                         \
     X(void, Uniform3fv, (GLint loc, GLsizei n, const GLfloat *v), STIN_CAP_GLSL, "")      \
