@@ -66,8 +66,8 @@
 static struct {
     int armed, depth, arming;
     const char *call;                  /* the outermost stin call now */
-    unsigned pending, outside, armed_seen;
-    char text[KEPT_MESSAGES * 200 + 64]; /* the first pending messages */
+    unsigned pending, distinct, outside, armed_seen;
+    char text[KEPT_MESSAGES * 240]; /* the first distinct pending messages */
     char first_outside[200];
     char last_line[192];               /* the name of the last result line */
 } st;
@@ -104,6 +104,7 @@ STIN_CALLS(WRAP_X, WRAP_V)
 static void GLAPIENTRY on_message(GLenum source, GLenum type, GLuint id, GLenum severity,
                                   GLsizei length, const GLchar *message, const void *user)
 {
+    char one[232];
     size_t used;
     (void)source;
     (void)id;
@@ -121,10 +122,13 @@ static void GLAPIENTRY on_message(GLenum source, GLenum type, GLuint id, GLenum 
             snprintf(st.first_outside, sizeof st.first_outside, "%s", message);
         return;
     }
+    st.pending++;
+    snprintf(one, sizeof one, "[%s] %.200s", st.call, message);
+    if (strstr(st.text, one))
+        return;
     used = strlen(st.text);
-    if (st.pending++ < KEPT_MESSAGES)
-        snprintf(st.text + used, sizeof st.text - used, "%s[%s] %.180s", used ? "; " : "",
-                 st.call, message);
+    if (st.distinct++ < KEPT_MESSAGES)
+        snprintf(st.text + used, sizeof st.text - used, "%s%s", used ? "; " : "", one);
 }
 
 /* GL_KHR_debug in the extension list, read the way the context allows. */
@@ -200,18 +204,18 @@ void gl_errors_arm(run *r)
 void gl_errors_flush(run *r, const char *next)
 {
     char name[256], text[sizeof st.text], previous[sizeof st.last_line];
-    unsigned n = st.pending;
+    unsigned n = st.pending, distinct = st.distinct;
     snprintf(previous, sizeof previous, "%s", st.last_line);
     snprintf(st.last_line, sizeof st.last_line, "%s", next);
     if (!n)
         return;
     snprintf(text, sizeof text, "%s", st.text);
-    st.pending = 0;
+    st.pending = st.distinct = 0;
     st.text[0] = '\0';
     snprintf(name, sizeof name, "%s/gl-errors", next);
     report(r, "FAIL", name, "%u GL error message%s during stin calls since the line %s: %s%s", n,
            n == 1 ? "" : "s", previous[0] ? previous : "(none)", text,
-           n > KEPT_MESSAGES ? "; ..." : "");
+           distinct > KEPT_MESSAGES ? "; and more" : "");
     snprintf(st.last_line, sizeof st.last_line, "%s", next);
 }
 

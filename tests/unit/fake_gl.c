@@ -210,7 +210,11 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: *data = c->max_vertex_texture_units; break;
     case GL_MAX_DRAW_BUFFERS: *data = c->max_draw_buffers; break;
     case GL_MAX_GEOMETRY_OUTPUT_VERTICES: *data = c->max_geometry_output_vertices; break;
-    case GL_MAX_TESS_GEN_LEVEL: *data = c->max_tess_gen_level; break;
+    case GL_MAX_TESS_GEN_LEVEL: /* GL_INVALID_ENUM without GL 4.0 or ARB_tessellation_shader */
+        if (!c->max_tess_gen_level)
+            fake_gl_state_refused("glGetIntegerv", pname);
+        *data = c->max_tess_gen_level;
+        break;
     case GL_NUM_EXTENSIONS: *data = c->extension_count; break;
     case GL_CONTEXT_PROFILE_MASK: *data = c->core_profile ? GL_CONTEXT_CORE_PROFILE_BIT : 2; break;
     default:
