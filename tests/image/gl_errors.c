@@ -64,7 +64,7 @@
 #define KEPT_MESSAGES 3
 
 static struct {
-    int armed, depth, arming;
+    int depth, arming;
     const char *call;                  /* the outermost stin call now */
     unsigned pending, distinct, outside, armed_seen;
     char text[KEPT_MESSAGES * 240]; /* the first distinct pending messages */
@@ -189,8 +189,7 @@ void gl_errors_arm(run *r)
     enable(0); /* GL_INVALID_ENUM, the test's own */
     st.arming = 0;
     get_error();
-    st.armed = st.armed_seen > 0;
-    if (st.armed)
+    if (st.armed_seen)
         report(r, "PASS", "gl-errors",
                "KHR_debug callback armed on GL %d.%d: a deliberate glEnable(0) was reported; any "
                "error stin raises fails the test whose line follows",
