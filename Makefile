@@ -104,9 +104,18 @@ $(B)/stin-render: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/render/*.c
 	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
 # tests/image/readback_log.c: every read-back hashed into STIN_READBACK_LOG
 READBACK_WRAP := -Wl,--wrap=stin_platform_read_color,--wrap=stin_platform_read_depth
+# tests/image/gl_errors.c: every public call that takes a context, so that a
+# GL error is known to be stin's (STIN_CALLS there; the link checks the two agree)
+STIN_CALL_WRAP := $(addprefix -Xlinker --wrap=,stin_create stin_destroy \
+  stin_query_desc stin_query_caps stin_query_tier stin_query_choice stin_detect_caps \
+  stin_query_extension stin_create_mesh stin_query_mesh_info stin_query_mesh_adjacency \
+  stin_query_mesh_tangent stin_destroy_mesh stin_create_texture stin_destroy_texture \
+  stin_begin_frame stin_add_light stin_draw stin_end_frame stin_draw_csg stin_query_csg_terms \
+  stin_query_frame_stats stin_query_frame_projection stin_query_visibility_map \
+  stin_bind_visibility stin_debug_query_counters stin_debug_query_shadow_map)
 IMAGETEST_OBJ := $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tests/image/*.c)))
 $(B)/stin-imagetest: $(IMAGETEST_OBJ) $(B)/libstin_reference.a $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin_checked.a
-	$(CC) $(OPT) -o $@ $^ $(READBACK_WRAP) $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
+	$(CC) $(OPT) -o $@ $^ $(READBACK_WRAP) $(STIN_CALL_WRAP) $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
 
 # ---- unit tests (cmocka, AddressSanitizer + UndefinedBehaviorSanitizer) ----
 SAN_CFLAGS := -std=c99 $(WARN) -g -O1 $(SAN) -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -I$(B) \

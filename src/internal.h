@@ -41,7 +41,6 @@ struct stin_context {
     stin__selection sel;
     const stin__shadow_technique *shadow; /* the shadows choice's module */
     uint32_t gl_violations;   /* checked build: calls the profile does not allow */
-    uint32_t gl_errors;       /* checked build: glGetError results */
 
     /* meshes and textures (assets/mesh.c, assets/texture.c) */
     uint32_t creation_serial; /* contexts made in this block so far (kept across them) */

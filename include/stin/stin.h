@@ -520,6 +520,15 @@
  * 2D-array and cube-map textures and the state above for its set-up).
  * Queries touch no GL.
  *
+ * GL ERRORS
+ * stin raises no GL error: it asks the driver only for limits that the GL
+ * version or a listed extension defines, and refuses (with a log line) what
+ * GL would refuse, such as a program whose uniforms do not fit
+ * stin_bind_visibility's chunk. It never calls glGetError, in either build,
+ * so an error the caller left pending is still the caller's to read after
+ * any stin call. To watch for GL errors, install a KHR_debug callback (the
+ * image tests do, and fail on any error raised inside a stin call).
+ *
  * MEMORY
  * stin_memory_size(&desc) returns the bytes a configuration needs; the block
  * passed to stin_create must be at least that big (else STIN_ERROR_OUT_OF_MEMORY
@@ -2283,7 +2292,10 @@ const char *stin_visibility_glsl(void);
  * (see stin_query_visibility_map), on a context without GLSL or with no
  * current program (each logged),
  * STIN_ERROR_INVALID_ARGUMENT for a unit the context does not have.
- * A program without the chunk's uniforms is fine (nothing is set). */
+ * A program without the chunk's uniforms is fine (nothing is set); one that
+ * declares any of their names with another type (say an int
+ * stin_visibility_lights), or whose last link failed, is
+ * STIN_ERROR_INVALID_STATE, logged, with nothing bound or set. */
 stin_result stin_bind_visibility(stin_context *ctx, int unit);
 
 /* Sample i of n of an area light: the point light the soft-shadow pass uses.

@@ -196,7 +196,6 @@ static void upload(stin_context *ctx, stin__mesh_slot *m)
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
     stin__vao_end(ctx, caller_vao);
-    stin__gl_check_errors(ctx, "mesh upload");
 }
 
 static uint32_t free_slot(const stin_context *ctx)

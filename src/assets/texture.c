@@ -298,7 +298,6 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     if (lods) /* level 0 is still src: upload_levels halved into other regions only */
         create_lods(ctx, t, src, w, h, buf, region_b);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, (GLuint)caller_binding);
-    stin__gl_check_errors(ctx, "texture upload");
     t->kind = desc->kind;
     t->width = desc->width;
     t->height = desc->height;

@@ -375,6 +375,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
     uint32_t serial;
     stin__create_bindings bindings;
     stin_result r;
+    char msg[256];
     if (out)
         *out = NULL;
     if (!desc || !out || !desc->get_proc_address) {
@@ -455,7 +456,6 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         ctx->caps.max_lights < ctx->lights_per_pass)
         ctx->lights_per_pass = ctx->caps.max_lights > 0 ? ctx->caps.max_lights : 1;
     log_selection(ctx);
-    stin__gl_check_errors(ctx, "stin_create");
     *out = ctx;
     return STIN_OK;
 }

@@ -11,10 +11,8 @@ stin_debug_counters stin_debug_query_counters(const stin_context *ctx)
 #if defined(STIN_GL_CHECK) && STIN_GL_CHECK
     c.checked = 1;
 #endif
-    if (ctx) {
+    if (ctx)
         c.gl_violations = ctx->gl_violations;
-        c.gl_errors = ctx->gl_errors;
-    }
     return c;
 }
 

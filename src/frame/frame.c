@@ -602,7 +602,6 @@ stin_result stin_end_frame(stin_context *ctx)
     run_plan(ctx);
     stin__frame_choice_end(ctx);
     stin__state_restore(ctx);
-    stin__gl_check_errors(ctx, "stin_end_frame");
     ctx->state = STIN__IDLE;
     return STIN_OK;
 }

@@ -191,6 +191,14 @@ static void copy_text(char *dst, size_t size, const char *src)
     dst[i] = '\0';
 }
 
+/* What the context has, the caps mask aside: a limit is queried only where
+ * the version or a listed extension defines it (an unknown one is a GL error,
+ * and stin raises none). */
+static int has(const stin_caps *caps, stin_cap cap)
+{
+    return ((caps->present | caps->hidden) & STIN_CAP_BIT(cap)) != 0;
+}
+
 static void detect_limits(const stin__gl *gl, stin_caps *caps, int reported_version)
 {
     int core = caps->profile == STIN_GL_PROFILE_CORE;
@@ -200,7 +208,9 @@ static void detect_limits(const stin__gl *gl, stin_caps *caps, int reported_vers
     if (!core) {
         stin__framebuffer_bits(gl, 0, 0, &caps->stencil_bits, &caps->depth_bits);
         caps->max_lights = get_int(gl, GL_MAX_LIGHTS);
-        caps->max_texture_units = gl->ActiveTexture ? get_int(gl, GL_MAX_TEXTURE_UNITS) : 1;
+        caps->max_texture_units = has(caps, STIN_CAP_MULTITEXTURE)
+                                      ? get_int(gl, GL_MAX_TEXTURE_UNITS)
+                                      : 1;
     } else if (gl->GetFramebufferAttachmentParameteriv && gl->BindFramebuffer) {
         stin__framebuffer_bits(gl, 1, (GLuint)get_int(gl, GL_DRAW_FRAMEBUFFER_BINDING),
                                &caps->stencil_bits, &caps->depth_bits);
@@ -214,11 +224,8 @@ static void detect_limits(const stin__gl *gl, stin_caps *caps, int reported_vers
     }
     if (reported_version >= 32)
         caps->max_geometry_output_vertices = get_int(gl, GL_MAX_GEOMETRY_OUTPUT_VERTICES);
-    if (reported_version >= 32 && gl->PatchParameteri) /* 4.0 or ARB_tessellation_shader */
+    if (has(caps, STIN_CAP_TESSELLATION))
         caps->max_tess_gen_level = get_int(gl, GL_MAX_TESS_GEN_LEVEL);
-    while (gl->GetError() != GL_NO_ERROR) {
-        /* a limit the driver does not know is 0, not an error for the caller */
-    }
 }
 
 stin_result stin__caps_detect(const stin__gl *gl, const unsigned char *loaded,
@@ -229,7 +236,7 @@ stin_result stin__caps_detect(const stin__gl *gl, const unsigned char *loaded,
     int major = 0, minor = 0, reported;
     stin__memzero(caps, sizeof *caps);
     stin__memzero(&in, sizeof in);
-    if (!gl->GetString || !gl->GetIntegerv || !gl->GetError)
+    if (!gl->GetString || !gl->GetIntegerv)
         return STIN_ERROR_GL;
     in.version = (const char *)gl->GetString(GL_VERSION);
     if (!parse_version(in.version, &major, &minor))

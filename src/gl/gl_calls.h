@@ -58,7 +58,5 @@ void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e);
 /* glEnable/glDisable and friends take an enum whose capability is audited. */
 #define GL_ENABLE(ctx, e) GL_ENUM(ctx, Enable, e)(e)
 #define GL_DISABLE(ctx, e) GL_ENUM(ctx, Disable, e)(e)
-/* In checked builds, GL errors after a pass are logged and counted. */
-void stin__gl_check_errors(struct stin_context *ctx, const char *where);
 
 #endif

@@ -15,7 +15,6 @@
     X(void, GetFloatv, (GLenum pname, GLfloat *data), NEED_CORE, "")                      \
     X(void, GetTexLevelParameteriv, (GLenum target, GLint level, GLenum pname, GLint *v),  \
       NEED_CORE, "")                                                                       \
-    X(GLenum, GetError, (void), NEED_CORE, "")                                            \
     X(void, Enable, (GLenum cap), NEED_CORE, "")                                          \
     X(void, LogicOp, (GLenum op), NEED_CORE, "")                                          \
     X(void, Disable, (GLenum cap), NEED_CORE, "")                                         \
@@ -121,6 +120,8 @@
     X(void, DeleteProgram, (GLuint p), STIN_CAP_GLSL, "")                                 \
     X(void, UseProgram, (GLuint p), STIN_CAP_GLSL, "")                                    \
     X(GLint, GetUniformLocation, (GLuint p, const GLchar *name), STIN_CAP_GLSL, "")       \
+    X(void, GetActiveUniform, (GLuint p, GLuint i, GLsizei size, GLsizei *len, GLint *count, \
+                               GLenum *type, GLchar *name), STIN_CAP_GLSL, "")            \
     X(void, Uniform1i, (GLint loc, GLint v), STIN_CAP_GLSL, "")                           \
     X(void, Uniform1f, (GLint loc, GLfloat v), STIN_CAP_GLSL, "")                         \
     X(void, Uniform3fv, (GLint loc, GLsizei n, const GLfloat *v), STIN_CAP_GLSL, "")      \

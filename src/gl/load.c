@@ -156,23 +156,4 @@ void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e)
                   stin__need_name(need));
     }
 }
-
-void stin__gl_check_errors(struct stin_context *ctx, const char *where)
-{
-    int guard;
-    for (guard = 0; guard < 8; guard++) {
-        GLenum err = ctx->gl.GetError();
-        if (err == GL_NO_ERROR)
-            return;
-        ctx->gl_errors++;
-        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR, "GL error 0x%x after %s",
-                  (unsigned)err, where);
-    }
-}
-#else
-void stin__gl_check_errors(struct stin_context *ctx, const char *where)
-{
-    (void)ctx;
-    (void)where;
-}
 #endif

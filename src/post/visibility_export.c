@@ -212,10 +212,66 @@ const char *stin_visibility_glsl(void)
     return stin__shader_source("gl2/app_visibility.glsl");
 }
 
+/* The chunk's uniforms (shaders/gl2/app_visibility.glsl) and their types. */
+#define CHUNK_UNIFORMS 4
+static const struct {
+    const char *name;
+    GLenum type;
+    const char *glsl;
+} chunk_uniforms[CHUNK_UNIFORMS] = {
+    {"stin_visibility_map", GL_SAMPLER_2D, "sampler2D"},
+    {"stin_visibility_layout", GL_FLOAT_VEC4, "vec4"},
+    {"stin_visibility_lights", GL_FLOAT, "float"},
+    {"stin_visibility_transmittance", GL_FLOAT, "float"},
+};
+
+/* An active uniform's name is `want`, or `want` "[0]" for an array. */
+static int uniform_named(const char *active, const char *want)
+{
+    size_t i = 0;
+    while (want[i] && active[i] == want[i])
+        i++;
+    if (want[i])
+        return 0;
+    return active[i] == '\0' ||
+           (active[i] == '[' && active[i + 1] == '0' && active[i + 2] == ']' && !active[i + 3]);
+}
+
+/* The chunk's uniform locations in `program` (-1: not declared), or 0, logged,
+ * when the program declares one of them with another type: setting it would
+ * be GL_INVALID_OPERATION, so nothing is set. */
+static int chunk_locations(stin_context *ctx, GLuint program, GLint loc[CHUNK_UNIFORMS])
+{
+    GLint active = 0, i;
+    int u, declared = 0;
+    for (u = 0; u < CHUNK_UNIFORMS; u++)
+        declared += (loc[u] = GL(ctx, GetUniformLocation)(program, chunk_uniforms[u].name)) >= 0;
+    if (declared)
+        GL(ctx, GetProgramiv)(program, GL_ACTIVE_UNIFORMS, &active);
+    for (i = 0; i < active; i++) {
+        GLchar name[64];
+        GLsizei length = 0;
+        GLint count = 0;
+        GLenum type = GL_NONE;
+        GL(ctx, GetActiveUniform)(program, (GLuint)i, (GLsizei)sizeof name, &length, &count, &type,
+                                  name);
+        for (u = 0; u < CHUNK_UNIFORMS; u++)
+            if (loc[u] >= 0 && uniform_named(name, chunk_uniforms[u].name) &&
+                type != chunk_uniforms[u].type) {
+                stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE,
+                          "stin_bind_visibility: the current program declares %s with GL type "
+                          "0x%x, not the chunk's %s; nothing was set",
+                          chunk_uniforms[u].name, (unsigned)type, chunk_uniforms[u].glsl);
+                return 0;
+            }
+    }
+    return 1;
+}
+
 stin_result stin_bind_visibility(stin_context *ctx, int unit)
 {
     const stin__export_state *e;
-    GLint program = 0, active = GL_TEXTURE0, loc;
+    GLint program = 0, active = GL_TEXTURE0, linked = GL_FALSE, loc[CHUNK_UNIFORMS];
     int units, glsl;
     if (!ctx)
         return STIN_ERROR_INVALID_ARGUMENT;
@@ -242,6 +298,14 @@ stin_result stin_bind_visibility(stin_context *ctx, int unit)
                   "stin_bind_visibility: no program is current");
         return STIN_ERROR_INVALID_STATE;
     }
+    GL(ctx, GetProgramiv)((GLuint)program, GL_LINK_STATUS, &linked);
+    if (!linked) { /* relinked since glUseProgram: it has no uniforms to set */
+        stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FRAME_STATE,
+                  "stin_bind_visibility: the current program's last link failed");
+        return STIN_ERROR_INVALID_STATE;
+    }
+    if (!chunk_locations(ctx, (GLuint)program, loc))
+        return STIN_ERROR_INVALID_STATE;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE)) {
         GL(ctx, GetIntegerv)(GL_ACTIVE_TEXTURE, &active);
         GL(ctx, ActiveTexture)(GL_TEXTURE0 + (GLenum)unit);
@@ -249,21 +313,19 @@ stin_result stin_bind_visibility(stin_context *ctx, int unit)
     GL(ctx, BindTexture)(GL_TEXTURE_2D, e->texture);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)((GLenum)active);
-    if ((loc = GL(ctx, GetUniformLocation)((GLuint)program, "stin_visibility_map")) >= 0)
-        GL(ctx, Uniform1i)(loc, unit);
-    if ((loc = GL(ctx, GetUniformLocation)((GLuint)program, "stin_visibility_layout")) >= 0)
-    {
+    if (loc[0] >= 0)
+        GL(ctx, Uniform1i)(loc[0], unit);
+    if (loc[1] >= 0) {
         float layout[4];
         layout[0] = (float)e->tile_width;
         layout[1] = (float)e->tile_height;
         layout[2] = 1.0f / (float)e->width;
         layout[3] = 1.0f / (float)e->height;
-        GL(ctx, Uniform4fv)(loc, 1, layout);
+        GL(ctx, Uniform4fv)(loc[1], 1, layout);
     }
-    if ((loc = GL(ctx, GetUniformLocation)((GLuint)program, "stin_visibility_lights")) >= 0)
-        GL(ctx, Uniform1f)(loc, (float)e->lights);
-    if ((loc = GL(ctx, GetUniformLocation)((GLuint)program, "stin_visibility_transmittance")) >=
-        0)
-        GL(ctx, Uniform1f)(loc, (float)e->transmittance_tile);
+    if (loc[2] >= 0)
+        GL(ctx, Uniform1f)(loc[2], (float)e->lights);
+    if (loc[3] >= 0)
+        GL(ctx, Uniform1f)(loc[3], (float)e->transmittance_tile);
     return STIN_OK;
 }

@@ -258,7 +258,6 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
         GL(ctx, BindVertexArray)(0);
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     }
-    stin__gl_check_errors(ctx, "shader set-up");
     return STIN_OK;
 }
 

@@ -112,7 +112,6 @@ static void make_map(stin_context *ctx)
     GL(ctx, DrawBuffer)(GL_NONE); /* depth only */
     GL(ctx, ReadBuffer)(GL_NONE);
     stin__framebuffer_restore(ctx, caller_fbo);
-    stin__gl_check_errors(ctx, "the casters' depth map set-up");
 }
 
 /* Volumes have something to cast through the map where the frame may have

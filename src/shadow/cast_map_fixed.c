@@ -67,7 +67,6 @@ void stin__cast_fixed_init(stin_context *ctx)
     clamped(ctx, GL_TEXTURE_1D);
     stin__upload_bytes(ctx, GL_TEXTURE_1D, GL_INTENSITY8, 2, 1, GL_LUMINANCE, front);
     GL(ctx, BindTexture)(GL_TEXTURE_1D, 0);
-    stin__gl_check_errors(ctx, "the casters' map tests set-up");
 }
 
 void stin__cast_fixed_release(stin_context *ctx)
@@ -292,7 +291,6 @@ void stin__cast_map_prepass(stin_context *ctx)
     GL(ctx, MatrixMode)(GL_MODELVIEW);
     GL(ctx, PopMatrix)();
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
-    stin__gl_check_errors(ctx, "the casters' maps");
 }
 
 /* ---- the marking pass ------------------------------------------------------ */

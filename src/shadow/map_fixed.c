@@ -138,7 +138,6 @@ static stin_result fixed_init(stin_context *ctx)
         ctx->map_fixed->faces = 1;
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-    stin__gl_check_errors(ctx, "shadow-map set-up");
     return STIN_OK;
 }
 
@@ -338,7 +337,6 @@ static void fixed_prepass(stin_context *ctx)
     GL(ctx, PopMatrix)();
     if (ctx->map_fixed->fbo)
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
-    stin__gl_check_errors(ctx, "shadow maps");
 }
 
 /* ---- the lit pass's shadow test ----------------------------------------- */

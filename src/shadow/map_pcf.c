@@ -86,7 +86,6 @@ static stin_result pcf_init(stin_context *ctx)
     GL(ctx, DrawBuffer)(GL_NONE); /* depth only */
     GL(ctx, ReadBuffer)(GL_NONE);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
-    stin__gl_check_errors(ctx, "pcf set-up");
     return STIN_OK;
 }
 
@@ -200,7 +199,6 @@ static void pcf_prepass(stin_context *ctx)
         soft_spread(m->spread[i], proj, m->size);
         m->valid[i] = 1;
     }
-    stin__gl_check_errors(ctx, "pcf maps");
 }
 
 /* ---- a point light's faces ------------------------------------------------ */

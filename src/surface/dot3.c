@@ -157,7 +157,6 @@ stin_result stin__dot3_init(stin_context *ctx)
         stin__upload_bytes(ctx, target, GL_RGBA8, size, size, GL_RGBA, buf);
     }
     GL_ENUM(ctx, BindTexture, GL_TEXTURE_CUBE_MAP)(GL_TEXTURE_CUBE_MAP, 0);
-    stin__gl_check_errors(ctx, "dot3 normalisation cube map");
     return STIN_OK;
 }
 

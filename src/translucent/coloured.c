@@ -128,7 +128,6 @@ void stin__coloured_init(stin_context *ctx)
         return;
     }
     s->ready = 1;
-    stin__gl_check_errors(ctx, "coloured set-up");
 }
 
 void stin__coloured_uniforms(stin_context *ctx, const stin__program *p)
@@ -209,7 +208,6 @@ void stin__coloured_light(stin_context *ctx, uint32_t li)
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
     ctx->bound_mesh = 0xffffffffu;
-    stin__gl_check_errors(ctx, "coloured maps");
 }
 
 void stin__coloured_light_done(stin_context *ctx)

@@ -231,7 +231,6 @@ void stin__deep_init(stin_context *ctx)
         GL(ctx, GenQueries)(1, &s->query);
     }
     s->ready = 1;
-    stin__gl_check_errors(ctx, "deep set-up");
 }
 
 void stin__deep_uniforms(stin_context *ctx, const stin__program *p)
@@ -390,7 +389,6 @@ void stin__deep_light(stin_context *ctx, uint32_t li)
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
     ctx->bound_mesh = 0xffffffffu;
-    stin__gl_check_errors(ctx, "deep layers");
 }
 
 void stin__deep_light_done(stin_context *ctx)

@@ -300,5 +300,4 @@ void stin__dual_end(stin_context *ctx)
     stin__screen_quad(ctx);
     composite_done(ctx);
     ctx->stats.passes++;
-    stin__gl_check_errors(ctx, "dual-peel");
 }

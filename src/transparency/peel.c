@@ -167,7 +167,6 @@ void stin__peel_init(stin_context *ctx)
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
         GL(ctx, GenQueries)(1, &s->query);
     s->ready = 1;
-    stin__gl_check_errors(ctx, "depth-peel set-up");
 }
 
 void stin__peel_release(stin_context *ctx)
@@ -456,5 +455,4 @@ void stin__peel_end(stin_context *ctx)
     stin__screen_quad(ctx);
     stin__peel_composite_done(ctx);
     ctx->stats.passes++;
-    stin__gl_check_errors(ctx, "depth-peel");
 }

@@ -68,6 +68,10 @@ void outline_tests(run *r, stin_tier tier, const char *path);
  * (six lights) and shadow-soft (visibility_test.c). */
 void visibility_tests(run *r, stin_tier tier, const char *path);
 
+/* A GL error the caller left pending is still pending after stin's calls,
+ * on four-lights only (error_kept_test.c). */
+void error_kept_tests(run *r, stin_tier tier, const char *path);
+
 /* Lone convex objects never shadowed where their shading normal faces a
  * light, per shadow technique, on the terminator-* scenes (terminator_test.c). */
 void terminator_tests(run *r, stin_tier tier, const char *path);

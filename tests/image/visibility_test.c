@@ -403,12 +403,48 @@ static const char app_shader[] =
     "uniform int light;\n"
     "void main() { c = vec4(stin_shadow_transmittance(light), 1.0); }\n";
 
+/* A program that declares the chunk's names with other types: refused, and
+ * nothing bound or set (on main stin set them: STIN_OK, GL_INVALID_OPERATION;
+ * a GL error fails the gl-errors line before this one, gl_errors.c). */
+static const char mistyped_shader[] =
+    "uniform int stin_visibility_lights;\n"
+    "uniform vec3 stin_visibility_layout;\n"
+    "void main() { c = vec4(stin_visibility_layout, float(stin_visibility_lights)); }\n";
+
+static void check_mistyped(vis_run *v, const char *name)
+{
+    const caller_gl *gl = v->gl;
+    GLuint program = caller_gl_program(gl, v->r->profile->core, mistyped_shader);
+    GLint bound = -1;
+    stin_result res;
+    if (!program || !export_frame(v, STIN_EXPORT_VISIBILITY, v->map)) {
+        report(v->r, "FAIL", name, "%s", program ? "the exporting frame failed"
+                                                 : "the mistyped program did not link");
+        if (program)
+            gl->DeleteProgram(program);
+        return;
+    }
+    gl->UseProgram(program);
+    gl->ActiveTexture(GL_TEXTURE0 + 5);
+    gl->BindTexture(GL_TEXTURE_2D, 0);
+    res = stin_bind_visibility(v->t.ctx, 5);
+    gl->GetIntegerv(GL_TEXTURE_BINDING_2D, &bound);
+    gl->ActiveTexture(GL_TEXTURE0);
+    gl->UseProgram(0);
+    gl->DeleteProgram(program);
+    report(v->r, res == STIN_ERROR_INVALID_STATE && bound == 0 ? "PASS" : "FAIL", name,
+           "a program with an int stin_visibility_lights and a vec3 stin_visibility_layout: %s "
+           "(need STIN_ERROR_INVALID_STATE), unit 5's texture %d (need 0: nothing bound)",
+           stin_result_name(res), (int)bound);
+}
+
 static void run_techniques(vis_run *v, stin_tier tier, const char *scene_name)
 {
     static const stin_technique shadows[] = {
         STIN_TECH_SHADOWS_VDSM,      STIN_TECH_SHADOWS_VOLUME,      STIN_TECH_SHADOWS_MAP_PCF,
         STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SHADOWS_OFF};
     size_t i;
+    int mistyped = 0;
     char name[160];
     for (i = 0; i < sizeof shadows / sizeof shadows[0]; i++) {
         if (!test_context_create(&v->t, v->r, v->s, tier, shadows[i], 1))
@@ -417,12 +453,18 @@ static void run_techniques(vis_run *v, stin_tier tier, const char *scene_name)
                  stin_technique_name(shadows[i]));
         v->failures[0] = '\0';
         v->failed = 0;
-        if (!(stin_query_caps(v->t.ctx)->present & STIN_CAP_BIT(STIN_CAP_FBO)))
+        if (!(stin_query_caps(v->t.ctx)->present & STIN_CAP_BIT(STIN_CAP_FBO))) {
             check_refusal(v, name);
-        else
+        } else {
             check_technique(v, name, shadows[i] == STIN_TECH_SHADOWS_OFF,
                             shadows[i] == STIN_TECH_SHADOWS_MAP_PCF ||
                                 shadows[i] == STIN_TECH_SHADOWS_MAP_DEPTH);
+            if (v->program && !mistyped++) { /* once a scene: stin_bind_visibility's check */
+                snprintf(name, sizeof name, "%s/%s/visibility-map-mistyped",
+                         stin_tier_name(tier), scene_name);
+                check_mistyped(v, name);
+            }
+        }
         test_context_destroy(&v->t);
     }
 }

@@ -19,7 +19,6 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_GetString ~, 1
 #define FAKE_CUSTOM_GetStringi ~, 1
 #define FAKE_CUSTOM_GetIntegerv ~, 1
-#define FAKE_CUSTOM_GetError ~, 1
 #define FAKE_CUSTOM_DrawElements ~, 1
 #define FAKE_CUSTOM_GenTextures ~, 1
 #define FAKE_CUSTOM_DeleteTextures ~, 1
@@ -222,7 +221,11 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: *data = c->max_vertex_texture_units; break;
     case GL_MAX_DRAW_BUFFERS: *data = c->max_draw_buffers; break;
     case GL_MAX_GEOMETRY_OUTPUT_VERTICES: *data = c->max_geometry_output_vertices; break;
-    case GL_MAX_TESS_GEN_LEVEL: *data = c->max_tess_gen_level; break;
+    case GL_MAX_TESS_GEN_LEVEL: /* GL_INVALID_ENUM without GL 4.0 or ARB_tessellation_shader */
+        if (!c->max_tess_gen_level)
+            fake_gl_state_refused("glGetIntegerv", pname);
+        *data = c->max_tess_gen_level;
+        break;
     case GL_NUM_EXTENSIONS: *data = c->extension_count; break;
     case GL_CONTEXT_PROFILE_MASK: *data = c->core_profile ? GL_CONTEXT_CORE_PROFILE_BIT : 2; break;
     default:
@@ -249,12 +252,6 @@ static void STIN_APIENTRY fake_GetFramebufferAttachmentParameteriv(GLenum target
     *v = pname == GL_FRAMEBUFFER_ATTACHMENT_STENCIL_SIZE ? bound_bits(1)
          : pname == GL_FRAMEBUFFER_ATTACHMENT_DEPTH_SIZE ? bound_bits(0)
                                                          : 0;
-}
-
-static GLenum STIN_APIENTRY fake_GetError(void)
-{
-    COUNT(GetError);
-    return GL_NO_ERROR;
 }
 
 /* ---- drawing ------------------------------------------------------------ */

@@ -224,7 +224,7 @@ static int known(int i, const char *call, GLenum e)
     return i >= 0;
 }
 
-static void gl_error(const char *call, GLenum e)
+void fake_gl_state_refused(const char *call, GLenum e)
 {
     if (!fake_gl.gl_errors++)
         describe(fake_gl.gl_error_what, sizeof fake_gl.gl_error_what, call, e);
@@ -237,7 +237,7 @@ static fake_gl_unit *unit_of(GLenum texture_enum, const char *call)
 {
     GLuint i = texture_enum - GL_TEXTURE0;
     if (i >= FAKE_GL_UNITS) {
-        gl_error(call, texture_enum);
+        fake_gl_state_refused(call, texture_enum);
         i = 0;
     }
     return &S.units[i];
@@ -258,7 +258,7 @@ static fake_gl_vao *bound_vao(void)
             free_slot = i;
     }
     if (free_slot < 0) {
-        gl_error("glBindVertexArray: more vertex arrays than the fake keeps", name);
+        fake_gl_state_refused("glBindVertexArray: more vertex arrays than the fake keeps", name);
         return &S.vao0;
     }
     fake_gl.vaos[free_slot].name = name;
@@ -397,7 +397,7 @@ void STIN_APIENTRY fake_PolygonMode(GLenum face, GLenum mode)
     if (face == GL_BACK || face == GL_FRONT_AND_BACK)
         S.polygon_mode[1] = mode;
     if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK)
-        gl_error("glPolygonMode", face);
+        fake_gl_state_refused("glPolygonMode", face);
 }
 
 void STIN_APIENTRY fake_DepthRange(GLdouble n, GLdouble f)
@@ -411,7 +411,7 @@ void STIN_APIENTRY fake_BindSampler(GLuint unit, GLuint sampler)
 {
     COUNT(BindSampler);
     if (unit >= FAKE_GL_UNITS)
-        gl_error("glBindSampler", unit);
+        fake_gl_state_refused("glBindSampler", unit);
     else
         S.units[unit].sampler = sampler;
 }
@@ -466,7 +466,7 @@ static int separate_faces(GLenum face, fake_gl_stencil *out[2], const char *call
     case GL_FRONT: out[0] = &S.stencil[0]; return 1;
     case GL_BACK: out[0] = &S.stencil[1]; return 1;
     case GL_FRONT_AND_BACK: out[0] = &S.stencil[0]; out[1] = &S.stencil[1]; return 2;
-    default: gl_error(call, face); return 0;
+    default: fake_gl_state_refused(call, face); return 0;
     }
 }
 
@@ -521,7 +521,7 @@ void STIN_APIENTRY fake_ActiveStencilFaceEXT(GLenum face)
 {
     COUNT(ActiveStencilFaceEXT);
     if (face != GL_FRONT && face != GL_BACK)
-        gl_error("glActiveStencilFaceEXT", face);
+        fake_gl_state_refused("glActiveStencilFaceEXT", face);
     else
         S.active_stencil_face = face;
 }
@@ -573,7 +573,7 @@ static fake_gl_light *light_of(GLenum light, const char *call)
 {
     GLuint i = light - GL_LIGHT0;
     if (i >= FAKE_GL_LIGHTS) {
-        gl_error(call, light);
+        fake_gl_state_refused(call, light);
         return NULL;
     }
     return &S.lights[i];
@@ -660,7 +660,7 @@ static void material(const char *call, GLenum face, GLenum pname, const GLfloat 
 {
     int i, first = face == GL_BACK ? 1 : 0, last = face == GL_FRONT ? 0 : 1;
     if (face != GL_FRONT && face != GL_BACK && face != GL_FRONT_AND_BACK) {
-        gl_error(call, face);
+        fake_gl_state_refused(call, face);
         return;
     }
     for (i = first; i <= last; i++) {
@@ -690,7 +690,7 @@ void STIN_APIENTRY fake_Materialf(GLenum face, GLenum pname, GLfloat v)
 {
     COUNT(Materialf);
     if (pname != GL_SHININESS)
-        gl_error("glMaterialf", pname); /* only the scalar one is allowed */
+        fake_gl_state_refused("glMaterialf", pname); /* only the scalar one is allowed */
     else
         material("glMaterialf", face, pname, &v);
 }
@@ -725,7 +725,7 @@ void STIN_APIENTRY fake_PushMatrix(void)
     stack st = current_stack();
     COUNT(PushMatrix);
     if (*st.depth >= st.cap) {
-        gl_error("glPushMatrix: stack overflow in mode", S.matrix_mode);
+        fake_gl_state_refused("glPushMatrix: stack overflow in mode", S.matrix_mode);
         return;
     }
     memcpy(st.m[*st.depth], st.m[*st.depth - 1], sizeof st.m[0]);
@@ -737,7 +737,7 @@ void STIN_APIENTRY fake_PopMatrix(void)
     stack st = current_stack();
     COUNT(PopMatrix);
     if (*st.depth <= 1) {
-        gl_error("glPopMatrix: stack underflow in mode", S.matrix_mode);
+        fake_gl_state_refused("glPopMatrix: stack underflow in mode", S.matrix_mode);
         return;
     }
     (*st.depth)--;
@@ -748,7 +748,7 @@ void STIN_APIENTRY fake_PopMatrix(void)
 static void select_unit(GLenum *field, GLenum unit, const char *call)
 {
     if (unit - GL_TEXTURE0 >= FAKE_GL_UNITS)
-        gl_error(call, unit);
+        fake_gl_state_refused(call, unit);
     else
         *field = unit;
 }
@@ -817,7 +817,7 @@ void STIN_APIENTRY fake_TexEnvfv(GLenum target, GLenum pname, const GLfloat *v)
 static int coord_of(GLenum coord, const char *call)
 {
     if (coord < GL_S || coord > GL_Q) {
-        gl_error(call, coord);
+        fake_gl_state_refused(call, coord);
         return -1;
     }
     return (int)(coord - GL_S);
@@ -847,7 +847,7 @@ void STIN_APIENTRY fake_TexGenfv(GLenum coord, GLenum pname, const GLfloat *v)
         memcpy(u->object_plane[c], v, sizeof u->object_plane[c]);
     } else if (pname == GL_EYE_PLANE) {
         if (!stin__mat4_invert(inv, modelview_top())) { /* the library's, tested on its own */
-            gl_error("glTexGenfv: singular modelview for", pname);
+            fake_gl_state_refused("glTexGenfv: singular modelview for", pname);
             return;
         }
         for (j = 0; j < 4; j++) /* p M^-1: the plane in eye space */
@@ -881,7 +881,7 @@ static void client_state(const char *call, GLenum array, GLuint on)
 static void attrib_array(const char *call, GLuint i, GLuint on)
 {
     if (i >= FAKE_GL_ATTRIBS)
-        gl_error(call, i);
+        fake_gl_state_refused(call, i);
     else
         bound_vao()->attrib_array[i] = on;
 }
@@ -941,7 +941,7 @@ void STIN_APIENTRY fake_BindFramebuffer(GLenum target, GLuint fb)
         S.read_framebuffer = fb;
     if (target != GL_FRAMEBUFFER && target != FAKE_DRAW_FRAMEBUFFER &&
         target != FAKE_READ_FRAMEBUFFER)
-        gl_error("glBindFramebuffer", target);
+        fake_gl_state_refused("glBindFramebuffer", target);
 }
 
 /* Client-memory pointers are refused while a vertex array object is bound
@@ -950,7 +950,7 @@ void STIN_APIENTRY fake_BindFramebuffer(GLenum target, GLuint fb)
 static void pointer_call(const char *call, const void *p)
 {
     if (S.vertex_array_binding && !S.array_buffer && p)
-        gl_error(call, S.vertex_array_binding);
+        fake_gl_state_refused(call, S.vertex_array_binding);
 }
 
 void STIN_APIENTRY fake_VertexPointer(GLint size, GLenum type, GLsizei stride, const void *p)

@@ -306,6 +306,8 @@ typedef enum fake_gl_object {
 void fake_gl_state_deleted(fake_gl_object kind, GLsizei n, const GLuint *names);
 int fake_gl_state_get(GLenum pname, GLint *data); /* 0: not a state the fake keeps */
 void fake_gl_state_untracked(const char *call, GLenum e);
+/* A call a real GL would refuse with an error: counted in fake_gl.gl_errors. */
+void fake_gl_state_refused(const char *call, GLenum e);
 void fake_gl_state_reset(void);
 #endif
 
