@@ -11,7 +11,9 @@ uniform vec4 u_surface;          // height scale, height bias, pom min steps, ma
 uniform int u_self_shadow;       // 0 off, 1 hard, 2 soft
 vec3 s_t, s_b, s_n;              // orthonormal tangent frame, B = w * cross(N, T)
 vec2 s_au, s_av;                 // uv change per scene unit along T and along B
-vec2 s_dx, s_dy;                 // screen derivatives of the unmoved uv
+// screen derivatives of the unmoved uv (set by surface_frame; initialised so
+// the compiler sees no read of an unset value on paths it cannot follow)
+vec2 s_dx = vec2(0.0), s_dy = vec2(0.0);
 float s_depth;                   // pom: depth of the hit, 0..1 of the height scale
 
 // Colour maps at the (moved) uv.

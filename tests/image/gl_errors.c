@@ -8,7 +8,10 @@
  *
  * A message counts when its type is an error or undefined behaviour, or
  * its severity is high (Mesa's "user error" is GL_DEBUG_TYPE_ERROR, high);
- * performance and other notes do not.
+ * performance and other notes do not, nor the shader compiler's warnings
+ * (Mesa gives them high severity, but only when a program is compiled
+ * rather than found in its shader cache, so they come and go with the
+ * cache; a shader that fails to compile fails stin_create).
  */
 #include "gl_errors.h"
 #include "stin/stin_debug.h"
@@ -106,12 +109,13 @@ static void GLAPIENTRY on_message(GLenum source, GLenum type, GLuint id, GLenum 
 {
     char one[232];
     size_t used;
-    (void)source;
     (void)id;
     (void)length;
     (void)user;
     if (type != GL_DEBUG_TYPE_ERROR && type != GL_DEBUG_TYPE_UNDEFINED_BEHAVIOR &&
         severity != GL_DEBUG_SEVERITY_HIGH)
+        return;
+    if (source == GL_DEBUG_SOURCE_SHADER_COMPILER && type != GL_DEBUG_TYPE_ERROR)
         return;
     if (st.arming) {
         st.armed_seen++;
