@@ -138,6 +138,11 @@ $(B)/san/shaders_embedded.o: $(B)/shaders_embedded.c
 $(B)/libstin_san.a: $(LIB_SRC:%.c=$(B)/san/%.o) $(B)/san/shaders_embedded.o
 	rm -f $@ && $(AR) rcs $@ $^
 san_obj = $(patsubst %.cpp,$(B)/san/%.o,$(patsubst %.c,$(B)/san/%.o,$(1)))
+# stin-render under ASan + UBSan, library included, for the hostile scene run
+# (tools/hostile-scenes.py, docs/fuzzing.md); not part of make or make check.
+RENDER_SAN_SRC := $(sort $(wildcard tools/render/*.c)) $(COMMON_SRC) $(COMMON_CXX) $(PLATFORM_SRC)
+$(B)/stin-render-san: $(call san_obj,$(RENDER_SAN_SRC)) $(B)/libstin_san.a
+	$(CXX) $(SAN) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
 FAKE_GL_SRC := tests/unit/fake_gl.c tests/unit/fake_gl_state.c tests/unit/fake_gl_attrib.c
 $(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: $(B)/san/tests/unit/%.o $(call san_obj,$(FAKE_GL_SRC)) $(B)/libstin_san.a
 	@mkdir -p $(@D)
