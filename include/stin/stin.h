@@ -1645,9 +1645,12 @@ stin_result stin_end_frame(stin_context *ctx);
  * are merged and a term that holds a primitive and its complement is empty
  * and dropped (a - a draws nothing). An operation whose two operands are
  * the same node is that node (a u a = a n a = a, a - a empty), so a tree
- * that unions a node with itself level after level stays one term. No other
- * simplification is made: a union of n terms with k primitives each costs
- * what Goldfeather's method costs for it.
+ * that unions a node with itself level after level stays one term, and a
+ * term the list already holds is dropped (where the list has at most about
+ * 2,900 terms: they are compared pairwise), so a chain that unions the same
+ * primitive in again and again is one term of it. No other simplification
+ * is made: a union of n terms with k primitives each costs what
+ * Goldfeather's method costs for it.
  * The product's visible surface is where the camera ray first enters the
  * solid: a primitive's outside where it is not complemented, the inside of a
  * complemented one (a cavity's wall, shaded with the primitive's material and

@@ -10,9 +10,12 @@
  * its sorted literals); a cross product is written above its operands and
  * moved down over them, so the scratch holds one chain of partial results,
  * never a heap. An operation on one node twice is that node (a u a = a n a
- * = a; a - a is empty): a tree doubled level by level stays one term. The
- * work is counted (STIN__CSG_MAX_WORK): a shared subtree is expanded at each
- * use, and a cross product of two long lists may leave nothing. */
+ * = a; a - a is empty): a tree doubled level by level stays one term, and a
+ * term the list already holds is dropped at the end (a chain that unions the
+ * same primitive in again and again is one term of it, not one per use:
+ * every term costs a pass per light face when products cast). The work is
+ * counted (STIN__CSG_MAX_WORK): a shared subtree is expanded at each use,
+ * and a cross product of two long lists may leave nothing. */
 #include "internal.h"
 
 typedef struct nf_work {
@@ -143,6 +146,44 @@ static void normal_form(nf_work *k, uint32_t node, int complement, uint32_t dept
     }
 }
 
+/* 1 if the terms at a and b hold the same literals (both sorted). */
+static int same_term(const uint32_t *w, uint32_t a, uint32_t b)
+{
+    uint32_t i;
+    if (w[a] != w[b])
+        return 0;
+    for (i = 1; i <= w[a]; i++)
+        if (w[a + i] != w[b + i])
+            return 0;
+    return 1;
+}
+
+/* Drops every term an earlier term repeats, moving the rest down in order.
+ * Pairwise, so only for lists short enough (REPEAT_PAIRS); a longer list
+ * keeps its repeats (the same union, drawn once more). */
+#define REPEAT_PAIRS (1u << 22)
+static void drop_repeated_terms(nf_work *k)
+{
+    uint32_t t, kept = 0, s, i, terms = 0;
+    for (t = 0; t < k->top; t += 1 + k->w[t])
+        terms++;
+    if ((uint64_t)terms * terms / 2u > REPEAT_PAIRS)
+        return;
+    for (t = 0; t < k->top;) {
+        uint32_t len = 1 + k->w[t];
+        int repeated = 0;
+        for (s = 0; s < kept && !repeated; s += 1 + k->w[s])
+            repeated = same_term(k->w, s, t);
+        if (!repeated) {
+            for (i = 0; i < len; i++) /* down (kept <= t) */
+                k->w[kept + i] = k->w[t + i];
+            kept += len;
+        }
+        t += len;
+    }
+    k->top = kept;
+}
+
 stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t node_count,
                                           uint32_t *scratch, uint32_t scratch_words,
                                           stin__csg_out *out)
@@ -157,6 +198,8 @@ stin__csg_nf_result stin__csg_normal_form(const stin_csg_node *nodes, uint32_t n
     k.work = 0;
     k.failed = STIN__CSG_NF_OK;
     normal_form(&k, node_count - 1u, 0, 0);
+    if (!k.failed)
+        drop_repeated_terms(&k);
     out->scratch_peak = k.peak;
     if (k.failed)
         return k.failed;

@@ -101,11 +101,18 @@ static void test_empty_terms_dropped_and_repeats_merged(void **state)
     /* a leaf used twice through a shared node */
     static const stin_csg_node shared[] = {P(0), P(1), S(0, 1), I(2, 2)};
     static const uint32_t shared_nf[] = {L(0), NOT(1), END, END};
+    /* a chain that unions the same primitive in again, and a union of two
+     * nodes with the same terms: each term once, in first-use order */
+    static const stin_csg_node chain[] = {P(0), P(1), U(0, 1), U(2, 1), U(3, 1), U(4, 1)};
+    static const stin_csg_node twice[] = {P(0), P(1), U(0, 1), U(1, 0), U(2, 3)};
+    static const uint32_t a_b[] = {L(0), END, L(1), END, END};
     (void)state;
     expect_terms(self_minus, 2, none);
     expect_terms(self_inter, 2, one);
     expect_terms(half, 4, half_nf);
     expect_terms(shared, 4, shared_nf);
+    expect_terms(chain, 6, a_b);
+    expect_terms(twice, 5, a_b);
 }
 
 /* ---- random trees: the normal form holds exactly where the tree does ---- */
@@ -195,8 +202,9 @@ static void test_limits(void **state)
     }
     assert_int_equal(normalise(chain, STIN__CSG_MAX_DEPTH + 2, &out, WORDS), STIN__CSG_NF_DEPTH);
     assert_int_equal(out.term_count, 0);
-    /* 1023 deep is fine: 1024 terms [0] */
-    assert_int_equal(normalise(chain, STIN__CSG_MAX_DEPTH, &out, WORDS), STIN__CSG_NF_TERMS);
+    /* 1023 deep is fine: 1024 terms [0], merged into one */
+    assert_int_equal(normalise(chain, STIN__CSG_MAX_DEPTH, &out, WORDS), STIN__CSG_NF_OK);
+    assert_int_equal(out.term_count, 1);
     /* (a u b) n (c u d) n (e u f) n (g u h): 16 terms of 4 */
     for (i = 0; i < 8; i++) {
         stin_csg_node leaf = P(0);
@@ -600,15 +608,11 @@ static void test_draw_csg_capacities(void **state)
     nodes[6] = (stin_csg_node)I(4, 5);
     d.node_count = 7;
     refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "csg.max_terms");
-    /* 0 n 1 n 2 n 3 n (2 u 3): two terms of 4 literals, more than the 6 left */
-    nodes[4] = (stin_csg_node)I(0, 1);
-    nodes[5] = (stin_csg_node)I(2, 3);
-    nodes[6] = (stin_csg_node)U(2, 3);
-    nodes[7] = (stin_csg_node)I(4, 5);
+    /* two terms of 4 literals, more than the 6 left */
     {
-        stin_csg_node all[9];
-        memcpy(all, nodes, sizeof nodes);
-        all[8] = (stin_csg_node)I(7, 6); /* 0 1 2 3 (2 u 3): two terms of 4 */
+        /* (0 n 1) n ((2 - 3) u (3 - 2)): two terms of 4 */
+        stin_csg_node all[9] = {P(0), P(1), P(2), P(3), I(0, 1), S(2, 3), S(3, 2), U(5, 6),
+                                I(4, 7)};
         d.nodes = all;
         d.node_count = 9;
         refused(&d, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL, "csg.max_literals");
