@@ -1794,7 +1794,9 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * again) when a product's crossings outrun it (stin_frame_stats.
  * shadows.vdsm_csg_casts, shadows.vdsm_csg_bytes). Without the storage
  * buffers (gl33-core), or where a product has more than 128 primitives or
- * 64 terms (logged once), vdsm casts the frame's products through the depth
+ * 64 terms (logged once: "vdsm: a CSG product of P primitives and T terms
+ * is past the walk's limits (128 and 64): the products cast through a
+ * depth map"), vdsm casts the frame's products through the depth
  * map below instead (per light, after its mask is written: 0 into the
  * light's channel wherever the map shadows the position buffer's surface;
  * the map's bound at those shadows' edges; logged once a light, "vdsm: CSG

@@ -11,8 +11,13 @@
  * light inside both: vdsm's walk starts inside them, the maps resolve
  * from within), and csg/cast-beside.json (the slab under a spot light
  * straight above its hole, an ordinary box casting beside it, a second
- * light so the GLSL tiers' volumes go through the screen mask). Per shadow
- * technique:
+ * light so the GLSL tiers' volumes go through the screen mask), and two
+ * past vdsm's walk limits: csg/cast-terms.json (cast.json's slab with 66
+ * studs unioned onto its top: one product of 67 terms, past 64) and
+ * csg/cast-bores.json (the slab drilled through by 139 thin cylinders
+ * besides its hole: 141 primitives in one term, past 128; their spots of
+ * light on the floor lie within the 2 pixels left out at shadow edges).
+ * Each scene's product is its csg list's. Per shadow technique:
  *   cast-<technique>  light 0's visibility on the pixels whose P matches
  *               the reference (csg_test.c's tolerance), that face the light
  *               and lie 2 pixels or more from a reference shadow edge,
@@ -30,12 +35,15 @@
  *               tier, or drawn before the frame's clear and copied,
  *               gl14-shadow; map-combine's ramp, gl13-combine), vdsm
  *               without GL 4.3's storage
- *               buffers (gl33-core); there the map's bound (1%) holds on
+ *               buffers (gl33-core) or past its walk's limits (cast-terms,
+ *               cast-bores on gl45-core, where the log must say so, and
+ *               nowhere else); there the map's bound (1%) holds on
  *               the pixels the product decides (its shadow, and 2 pixels
  *               around it), the technique's own elsewhere (0.5% volumes, 0
  *               vdsm), and the log must name the map. vdsm with storage
- *               buffers walks them (stin_frame_stats.shadows.
- *               vdsm_csg_casts). Where the technique casts no product (a
+ *               buffers walks the others (stin_frame_stats.shadows.
+ *               vdsm_csg_casts; none where the map casts). Where the
+ *               technique casts no product (a
  *               point light under map-combine, or map-depth without
  *               framebuffer objects, which takes volumes) the render is
  *               held to the reference without casting (volumes' 0.5%) and
@@ -58,6 +66,7 @@
 #include "light_reach.h"
 #include "reference.h"
 #include "reference_csg.h"
+#include "scene_csg.h"
 #include "scene_gpu.h"
 #include "test_context.h"
 
@@ -75,9 +84,14 @@
 #define CAST_PRODUCT_REACH 2 /* pixels: the map's edge may stray this far */
 #define BANDS_MAP_SIZE 4096u
 
-static const stin_csg_node minus[] = {
-    {STIN_CSG_PRIMITIVE, 0, 0, 0}, {STIN_CSG_PRIMITIVE, 1, 0, 0}, {STIN_CSG_SUBTRACTION, 0, 0, 1}};
-static const int primitives[2] = {0, 1}; /* slab, ball */
+/* The scenes; past_walk: a product past vdsm's walk limits (128 primitives,
+ * 64 terms: include/stin/stin.h), which vdsm casts through the map even
+ * with storage buffers. */
+static const struct cast_scene {
+    const char *file;
+    int past_walk;
+} cast_scenes[] = {{"cast", 0}, {"cast-point", 0}, {"cast-lamp", 0}, {"cast-beside", 0},
+                   {"cast-terms", 1}, {"cast-bores", 1}};
 
 /* Per pixel: the reference's hit and light 0's visibility three ways. */
 typedef struct truth {
@@ -95,10 +109,12 @@ static void truth_free(truth *t)
     free(t->shadow_ref);
 }
 
-static int truth_make(const scene *s, int w, int h, truth *t, char *err, size_t n)
+static int truth_make(const scene *s, const scene_gpu_csg *product, int w, int h, truth *t,
+                      char *err, size_t n)
 {
     size_t i, px = (size_t)w * (size_t)h;
-    ref_csg_product rp = {primitives, 2, minus, 3};
+    ref_csg_product rp = {product->objects, product->primitive_count, product->nodes,
+                          product->node_count};
     reference *ref = reference_create(s, err, n), *naive = reference_create(s, err, n);
     int ok = 0;
     memset(t, 0, sizeof *t);
@@ -172,21 +188,21 @@ int csg_volume_casts(const capture *one)
             ((caps & compare) == compare || (caps & STIN_CAP_BIT(STIN_CAP_TEXTURE_ENV_COMBINE))));
 }
 
-static void test_cast(run *r, stin_tier tier, const char *label, const scene *s, const truth *tr,
-                      stin_technique t, uint32_t map_size, stin_technique csg)
+static void test_cast(run *r, stin_tier tier, const struct cast_scene *c, const scene *s,
+                      const scene_gpu_csg *product, const truth *tr, stin_technique t,
+                      uint32_t map_size, stin_technique csg)
 {
     int w = r->width, h = r->height, x, y, vdsm = t == STIN_TECH_SHADOWS_VDSM,
-        volume = t == STIN_TECH_SHADOWS_VOLUME, map = !volume && !vdsm;
+        volume = t == STIN_TECH_SHADOWS_VOLUME, map = !volume && !vdsm, storage, past;
     long compared = 0, differ = 0, compared_product = 0, differ_product = 0, product_shadow = 0,
          hole = 0;
     int said, cast, ok, logged, via_map;
     char name[256];
     const float *truth_vis;
     double bound;
-    scene_gpu_csg product = {primitives, 2, minus, 3};
     capture_options o;
     capture one;
-    snprintf(name, sizeof name, "%s/csg-%s/cast-%s%s%s%s", stin_tier_name(tier), label,
+    snprintf(name, sizeof name, "%s/csg-%s/cast-%s%s%s%s", stin_tier_name(tier), c->file,
              stin_technique_name(t), map_size ? "-bands" : "", csg ? "-" : "",
              csg ? stin_technique_name(csg) : "");
     memset(&o, 0, sizeof o);
@@ -194,7 +210,7 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
     o.shadow_map_size = map_size;
     o.csg_technique = csg;
     o.shadows = t;
-    o.csg = &product;
+    o.csg = product;
     o.csg_count = 1;
     if (!capture_forced(r, s, &o, STIN_FEATURE_SHADOWS, t, &one, name))
         return;
@@ -211,7 +227,9 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
      * the GLSL tiers */
     said = strstr(one.fallbacks, "CSG products cast no shadow") != NULL;
     cast = map ? s->lights[0].type != SCENE_LIGHT_POINT || !said : volume ? csg_volume_casts(&one) : 1;
-    via_map = cast && (volume || (vdsm && !(one.caps_present & STIN_CAP_BIT(STIN_CAP_COMPUTE))));
+    storage = (one.caps_present & STIN_CAP_BIT(STIN_CAP_COMPUTE)) != 0;
+    past = vdsm && storage && c->past_walk; /* the walk is there but cannot take the product */
+    via_map = cast && (volume || (vdsm && (!storage || past)));
     truth_vis = cast ? tr->vis_cast : tr->vis_none;
     bound = cast ? (vdsm ? CAST_VDSM_MAX : CAST_MAP_MAX) : CAST_VOLUME_MAX;
     for (y = 0; y < h; y++)
@@ -242,13 +260,15 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
         }
     if (via_map)
         bound = vdsm ? CAST_VDSM_MAX : CAST_VOLUME_MAX;
-    logged = !via_map || strstr(one.fallbacks, vdsm ? "vdsm: CSG products cast through map-pcf"
-                                                    : "volume: CSG products cast through map-");
+    logged = (!via_map || strstr(one.fallbacks, vdsm ? "vdsm: CSG products cast through map-pcf"
+                                                     : "volume: CSG products cast through map-")) &&
+             past == (strstr(one.fallbacks, "is past the walk's limits") != NULL);
     ok = compared && (double)differ <= bound * (double)compared &&
          (double)differ_product <= CAST_MAP_MAX * (double)compared_product &&
          product_shadow >= CAST_MIN_PRODUCT_SHADOW && hole >= CAST_MIN_HOLE && logged &&
          (cast ? (vdsm && !via_map ? one.stats.shadows.vdsm_csg_casts > 0 && !said
-                                   : one.stats.csg.cast_maps > 0)
+                                   : one.stats.csg.cast_maps > 0 &&
+                                         (!vdsm || one.stats.shadows.vdsm_csg_casts == 0))
                : said) &&
          (!map_size || one.stats.csg.cast_bands > one.stats.csg.cast_maps);
     if (ok && !cast && volume) {
@@ -271,6 +291,7 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
            one.stats.csg.cast_maps, one.stats.csg.cast_bands, one.stats.shadows.vdsm_csg_casts,
            said               ? "says why products cast nothing"
            : !via_map          ? "says nothing of casting"
+           : logged && past    ? "names the walk's limits and the map that casts them"
            : logged            ? "names the map that casts them"
                                : "does not name what casts them");
     capture_free(&one);
@@ -278,45 +299,54 @@ static void test_cast(run *r, stin_tier tier, const char *label, const scene *s,
 
 void csg_cast_tests(run *r, stin_tier tier, const char *dir)
 {
-    static const char *const files[] = {"cast", "cast-point", "cast-lamp", "cast-beside"};
     static const stin_technique techniques[] = {
         STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE,
         STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_VDSM};
     size_t f, k;
-    for (f = 0; f < sizeof files / sizeof files[0]; f++) {
+    for (f = 0; f < sizeof cast_scenes / sizeof cast_scenes[0]; f++) {
+        const struct cast_scene *c = &cast_scenes[f];
         char path[1200], err[512], name[256];
         scene s;
+        scene_csg_products p;
         truth tr;
-        snprintf(path, sizeof path, "%s/csg/%s.json", dir, files[f]);
-        snprintf(name, sizeof name, "%s/csg-%s/reference", stin_tier_name(tier), files[f]);
+        snprintf(path, sizeof path, "%s/csg/%s.json", dir, c->file);
+        snprintf(name, sizeof name, "%s/csg-%s/reference", stin_tier_name(tier), c->file);
         if (!scene_load(path, &s, err, sizeof err)) {
             report(r, "FAIL", name, "%s", err);
             continue;
         }
-        if (!truth_make(&s, r->width, r->height, &tr, err, sizeof err)) {
+        if (!scene_csg_products_build(&s, &p) || p.count != 1) {
+            report(r, "FAIL", name, "the scene's csg list is not one product (or no memory)");
+            scene_csg_products_free(&p);
+            scene_free(&s);
+            continue;
+        }
+        if (!truth_make(&s, &p.products[0], r->width, r->height, &tr, err, sizeof err)) {
             report(r, "FAIL", name, "%s", err);
             truth_free(&tr);
+            scene_csg_products_free(&p);
             scene_free(&s);
             continue;
         }
         for (k = 0; k < sizeof techniques / sizeof techniques[0]; k++)
-            test_cast(r, tier, files[f], &s, &tr, techniques[k], 0, STIN_TECH_NONE);
+            test_cast(r, tier, c, &s, &p.products[0], &tr, techniques[k], 0, STIN_TECH_NONE);
         /* a 4096 map: the products' rectangle outgrows the staging beside
          * the camera's resolve and goes in bands (once per technique: GLSL
          * maps on gl45-core, map-depth's framebuffer objects and side test,
          * resolved again band by band, on gl21) */
         if (f == 0 && strcmp(r->profile->name, "gl45-core") == 0 && tier == STIN_TIER_GL4)
-            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_PCF, BANDS_MAP_SIZE,
-                      STIN_TECH_NONE);
+            test_cast(r, tier, c, &s, &p.products[0], &tr, STIN_TECH_SHADOWS_MAP_PCF,
+                      BANDS_MAP_SIZE, STIN_TECH_NONE);
         if (f == 0 && strcmp(r->profile->name, "gl21") == 0 && tier == STIN_TIER_GL1)
-            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_DEPTH, BANDS_MAP_SIZE,
-                      STIN_TECH_NONE);
+            test_cast(r, tier, c, &s, &p.products[0], &tr, STIN_TECH_SHADOWS_MAP_DEPTH,
+                      BANDS_MAP_SIZE, STIN_TECH_NONE);
         /* interval resolves from the light too (in the map's resolve
          * framebuffer), both scenes, once: gl45-core */
         if (strcmp(r->profile->name, "gl45-core") == 0 && tier == STIN_TIER_GL4)
-            test_cast(r, tier, files[f], &s, &tr, STIN_TECH_SHADOWS_MAP_PCF, 0,
+            test_cast(r, tier, c, &s, &p.products[0], &tr, STIN_TECH_SHADOWS_MAP_PCF, 0,
                       STIN_TECH_CSG_INTERVAL);
         truth_free(&tr);
+        scene_csg_products_free(&p);
         scene_free(&s);
     }
 }
