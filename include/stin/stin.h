@@ -872,7 +872,10 @@ const char *stin_feature_name(stin_feature f);
  * (1 - a), grey). The lit pass multiplies the shadows technique's
  * visibility by the V of the last layer nearer the light than the point
  * (pushed 1.5 texels along its normal toward the side the eye sees, so a
- * pane is not darkened by its own layer; nearest texel). Opaque casters stay
+ * pane is not darkened by its own layer; nearest texel; on a triangle whose
+ * vertex normals bend away from its facet from the terminator rule's point,
+ * as map-pcf's, along its shading normal, so a translucent low-poly sphere
+ * does not darken its own lit side). Opaque casters stay
  * the shadows technique's (exact under vdsm and volume); transparent ones
  * are left out of it (no volume, no shadow polygon, no map-pcf depth) and
  * shadow through the deep map only. A face's peeling stops at the first

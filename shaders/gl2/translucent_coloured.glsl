@@ -10,8 +10,9 @@
 // column f % 3, row f / 3 of a 3 x 2 atlas: u_coloured_map holds the
 // product, u_coloured_depth the nearest transparent depth (1 where none).
 // The point is pushed u_coloured_params.y times its clip w (1.5 texels'
-// width there) along its facet normal toward the side the eye sees, as
-// deep's lookup, so a pane's own depth lies behind its lit side.
+// width there) along its normal toward the side the eye sees, from the
+// terminator rule's point, as deep's lookup, so a pane's own depth lies
+// behind its lit side.
 uniform int u_coloured_kind;
 uniform mat4 u_coloured_matrix[6]; // world -> [0,1] window coordinates of face f
 uniform vec4 u_coloured_params;    // x: texels a side, y: offset per unit w, z: 0 skips the depth test
@@ -35,10 +36,15 @@ vec3 coloured_transmittance(int light)
     if (u_coloured_kind == 0)
         return vec3(1.0); // a pass with a colour map lights that one light
     int face = u_coloured_kind == 2 ? coloured_face(v_world - u_lights[4 * light].xyz) : 0;
+    // the side of the facet the eye sees; the lookup starts from the
+    // terminator rule's point and is pushed along its normal (the facet's
+    // on a flat triangle) by the offset at its clip w
     vec3 side = normalize(cross(dFdx(v_world), dFdy(v_world)));
     side *= sign(dot(side, u_eye - v_world) + 1e-30);
-    float w = (u_coloured_matrix[face] * vec4(v_world, 1.0)).w;
-    vec3 pushed = v_world + side * (u_coloured_params.y * max(w, 0.0));
+    vec3 normal;
+    vec3 start = terminator_point(side, normal);
+    float w = (u_coloured_matrix[face] * vec4(start, 1.0)).w;
+    vec3 pushed = start + normal * (u_coloured_params.y * max(w, 0.0));
     // the push may carry the point across a seam: look it up in the face it
     // now lies in, not the one it left (the push is the same on both sides)
     if (u_coloured_kind == 2)

@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: MIT
 // The terminator band of a light (shadow/volume.c): fragments whose facet
 // turns away from the light while their shading normal (the terminator
-// rule's, as shadow_pcf.glsl has it) turns toward it; every other fragment
+// rule's, as terminator_point.glsl has it) turns toward it; every other fragment
 // is discarded. On a closed mesh such a fragment lies inside its own
 // mesh's volume once, and this pass takes that count back.
 uniform vec4 u_color; // the light: its position (w 1) or the direction toward it (w 0)

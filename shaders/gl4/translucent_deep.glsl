@@ -9,8 +9,10 @@
 // u_deep_even (k even) or u_deep_odd (k odd): x its depth in the face's
 // window coordinates, yzw the visibility behind it; unused texels hold depth
 // 2 (beyond everything). The point is pushed u_deep_params.z times its clip
-// w (1.5 texels' width there) along its facet normal toward the side the eye
-// sees, so its own layer lies behind it.
+// w (1.5 texels' width there) along its normal toward the side the eye
+// sees, so its own layer lies behind it: from the terminator rule's point
+// along its shading normal (terminator_point.glsl; the facet's on a flat
+// triangle), so a smooth mesh's lit side is not darkened by its own facets.
 uniform int u_deep_kind;
 uniform mat4 u_deep_matrix[6];  // world -> [0,1] window coordinates of face f
 uniform vec4 u_deep_params;     // x: slices per face, y: texels a side, z: offset per unit w, w: layers
@@ -32,11 +34,15 @@ vec3 deep_transmittance(int light)
     if (u_deep_kind == 0)
         return vec3(1.0); // a pass with a deep map lights that one light
     int face = u_deep_kind == 2 ? deep_face(v_world - u_lights[4 * light].xyz) : 0;
-    // the side of the facet the eye sees, pushed by the offset at its clip w
+    // the side of the facet the eye sees; the lookup starts from the
+    // terminator rule's point and is pushed along its normal (the facet's
+    // on a flat triangle) by the offset at its clip w
     vec3 side = normalize(cross(dFdx(v_world), dFdy(v_world)));
     side *= sign(dot(side, u_eye - v_world) + 1e-30);
-    float w = (u_deep_matrix[face] * vec4(v_world, 1.0)).w;
-    vec3 pushed = v_world + side * (u_deep_params.z * max(w, 0.0));
+    vec3 normal;
+    vec3 start = terminator_point(side, normal);
+    float w = (u_deep_matrix[face] * vec4(start, 1.0)).w;
+    vec3 pushed = start + normal * (u_deep_params.z * max(w, 0.0));
     // the push may carry the point across a seam: look it up in the face it
     // now lies in, not the one it left (the push is the same on both sides)
     if (u_deep_kind == 2)

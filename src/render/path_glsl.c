@@ -9,8 +9,9 @@ static const char *const vert_names[STIN__PROG_COUNT] = {"lit.vert", "lit.vert",
                                                          "volume.vert", "lit.vert"};
 static const char *const frag_names[STIN__PROG_COUNT] = {
     "lit.frag", "normal.frag", "flat.frag", "flat.frag", "terminator_band.frag"};
-/* a program's fragment chunks, the shadow technique's and the features'
- * (render/path_features.h): at most what gl/shader.c splices */
+/* a program's fragment chunks, the terminator rule's lookup point, the
+ * shadow technique's and the features' (render/path_features.h): at most
+ * what gl/shader.c splices */
 #define LIT_CHUNKS 6
 
 static const stin__uniform_name program_uniforms[] = {
@@ -65,7 +66,7 @@ static int add_chunk(const char *dir, const char *name, char names[][40], const 
                      int n)
 {
     if (n == LIT_CHUNKS)
-        return n; /* cannot happen: the shadow's and the features' at most */
+        return n; /* cannot happen: the terminator's, the shadow's and the features' at most */
     stin__formatf(names[n], 40, "%s%s", dir, name);
     list[n] = names[n];
     return n + 1;
@@ -87,11 +88,15 @@ static int feature_chunks(const stin_context *ctx, stin__chunk_place place, int 
 
 /* A NULL-terminated chunk list around the shadow chunk: a lit program's of
  * `variant` (layer: with a peeled layer's chunks), or without lit the flat
- * program's shadow test (the shadow chunk and those wrapping its seam). */
+ * program's shadow test (the shadow chunk and those wrapping its seam).
+ * terminator_point.glsl comes first: map-pcf's lookups and the translucent
+ * maps' start from its point. */
 static void program_chunks(const stin_context *ctx, const char *dir, int variant, int lit,
                            int layer, char names[LIT_CHUNKS][40], const char *list[LIT_CHUNKS + 1])
 {
-    int n = lit ? feature_chunks(ctx, STIN__CHUNK_SURFACE, variant, dir, names, list, 0) : 0;
+    int n = add_chunk(dir, "terminator_point.glsl", names, list, 0);
+    if (lit)
+        n = feature_chunks(ctx, STIN__CHUNK_SURFACE, variant, dir, names, list, n);
     n = add_chunk(dir, lit_shadow_chunk(ctx), names, list, n);
     n = feature_chunks(ctx, STIN__CHUNK_SEAM, variant, dir, names, list, n);
     if (lit && layer)

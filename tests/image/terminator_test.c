@@ -15,7 +15,15 @@
  * decides self-shadowing by the facet (GL1's map-combine: stin.h) reports
  * SKIP with its count until it adopts the rule. A point light that a GL1 map technique leaves to stencil volumes
  * (no six faces) is left out of that technique's count.
+ * The translucent shadow maps ("deep", "coloured") take the same rule: with
+ * the meshes at opacity TRANSLUCENT_OPACITY, at most MAP_BUDGET of those
+ * pixels may get a light's transmittance below 1 - TRANSMITTANCE_TOLERANCE
+ * (the object darkening its own lit side), under vdsm and map-pcf for the
+ * opaque casters, and none with maps of FINE_MAP_SIZE, where the lookup's
+ * push no longer hides the facets' steps; the reference's count (its
+ * transmittance rays take the rule too) is printed beside it.
  */
+#include "aov.h"
 #include "image_test.h"
 #include "reference.h"
 #include "scene.h"
@@ -30,6 +38,17 @@
  * toward the light, where lighting is already visibly above 0. */
 #define TERMINATOR_MIN_COS 0.05
 #define MAP_BUDGET 0.001
+/* the translucent check's opacity, and its tolerance: the visibility
+ * output is 8-bit and rounds by 1/255; a lit pixel's maps hold exactly 1
+ * (deep's float layers, coloured's 8-bit product) */
+#define TRANSLUCENT_OPACITY 0.5f
+#define TRANSMITTANCE_TOLERANCE (2.0 / 255.0)
+/* At the default size (512) the lookup's push of 1.5 texels (0.035 at light
+ * 0's distance) is wider than a 16-slice sphere's sag between its facets
+ * (1 - cos(11.25 deg) = 0.019), so the facets' steps hide behind it; at
+ * 2048 (0.009) they show unless the lookup takes the terminator rule, which
+ * leaves none there. */
+#define FINE_MAP_SIZE 2048u
 /* Which face a pixel on a silhouette or a crease shows is rasterisation's
  * rounding, not shadowing: pixels with a 4-neighbour on the background,
  * another object or a normal more than 30 degrees apart are left out
@@ -42,7 +61,27 @@ typedef struct terminator_case {
     const reference *ref;
     const ref_hit *hits;
     uint8_t *color;
+    scene translucent;             /* the scene with its materials at TRANSLUCENT_OPACITY */
+    const reference *translucent_ref;
 } terminator_case;
+
+/* Per-light counts summed over a check's lights, and their text. */
+typedef struct light_tally {
+    long bad, facing, ref_bad;
+    char counts[160];
+    size_t used;
+} light_tally;
+
+/* Light li's count: bad of lit pixels (the reference's ref_bad). */
+static void tally_light(light_tally *t, int li, long bad, long lit, long ref_bad)
+{
+    t->bad += bad;
+    t->facing += lit;
+    t->ref_bad += ref_bad;
+    if (t->used < sizeof t->counts)
+        t->used += (size_t)snprintf(t->counts + t->used, sizeof t->counts - t->used,
+                                    "%slight %d %ld of %ld", li ? ", " : "", li, bad, lit);
+}
 
 /* The unit direction from the hit toward light li. */
 static void toward_light(const scene_light *l, const ref_hit *h, double out[3])
@@ -77,24 +116,61 @@ static int on_edge(const terminator_case *c, int x, int y)
     return 0;
 }
 
+/* 1 when pixel i is on light li's lit side: its shading normal turned
+ * more than TERMINATOR_MIN_COS toward the light, away from edges. */
+static int lit_side(const terminator_case *c, int li, size_t i)
+{
+    const ref_hit *h = &c->hits[i];
+    double L[3];
+    if (!h->hit || on_edge(c, (int)(i % (size_t)c->r->width), (int)(i / (size_t)c->r->width)))
+        return 0;
+    toward_light(&c->s->lights[li], h, L);
+    return h->N[0] * L[0] + h->N[1] * L[1] + h->N[2] * L[2] > TERMINATOR_MIN_COS;
+}
+
 /* Light li's lit-side pixels (*facing) and, among them, those the image
  * (R: light li's visibility) or, with image NULL, the reference shadows. */
 static long shadowed_lit_side(const terminator_case *c, int li, const uint8_t *image, long *facing)
 {
-    const scene_light *l = &c->s->lights[li];
     size_t i, pixels = (size_t)c->r->width * c->r->height;
     long n = 0;
     *facing = 0;
     for (i = 0; i < pixels; i++) {
-        const ref_hit *h = &c->hits[i];
-        double L[3];
-        if (!h->hit || on_edge(c, (int)(i % (size_t)c->r->width), (int)(i / (size_t)c->r->width)))
-            continue;
-        toward_light(l, h, L);
-        if (h->N[0] * L[0] + h->N[1] * L[1] + h->N[2] * L[2] <= TERMINATOR_MIN_COS)
+        if (!lit_side(c, li, i))
             continue;
         (*facing)++;
-        n += image ? image[4 * i] < 128 : reference_visibility(c->ref, h, li) < 0.5f;
+        n += image ? image[4 * i] < 128 : reference_visibility(c->ref, &c->hits[i], li) < 0.5f;
+    }
+    return n;
+}
+
+/* Light li's lit-side pixels (*facing) and, among them, those whose
+ * transmittance is below 1 - TRANSMITTANCE_TOLERANCE in any channel: in the
+ * capture's visibility output (light li drawn first) or, with cap NULL, the
+ * translucent scene's reference. */
+static long dimmed_lit_side(const terminator_case *c, int li, const capture *cap, long *facing)
+{
+    size_t i, pixels = (size_t)c->r->width * c->r->height;
+    long n = 0;
+    *facing = 0;
+    for (i = 0; i < pixels; i++) {
+        size_t x = i % (size_t)c->r->width, y = i / (size_t)c->r->width;
+        float t[3];
+        int k, dim = 0;
+        if (!lit_side(c, li, i))
+            continue;
+        (*facing)++;
+        if (cap) {
+            const float *g = cap->img.pixels +
+                             ((size_t)(c->r->height - 1 - (int)y) * c->r->width + x) * AOV_CHANNELS;
+            for (k = 0; k < 3; k++)
+                t[k] = g[AOV_VIS_R + k];
+        } else {
+            reference_transmittance(c->translucent_ref, &c->hits[i], li, t);
+        }
+        for (k = 0; k < 3; k++)
+            dim |= t[k] < 1.0 - TRANSMITTANCE_TOLERANCE;
+        n += dim;
     }
     return n;
 }
@@ -123,23 +199,24 @@ static void check_technique(terminator_case *c, stin_tier tier, const char *scen
 {
     test_context tc;
     stin_frame_desc fd;
-    char name[160], counts[160];
-    long shadowed = 0, facing = 0, ref_shadowed = 0, allowed;
-    size_t used = 0;
+    char name[160];
+    light_tally tally;
+    long allowed;
     int li, exact = t == STIN_TECH_SHADOWS_VDSM || t == STIN_TECH_SHADOWS_VOLUME, failed = 0, facet;
     if (!test_context_create_debug(&tc, c->r, c->s, tier, t, 1, facets))
         return; /* not a technique of this tier and profile */
     snprintf(name, sizeof name, "%s/%s/terminator-%s%s", stin_tier_name(tier), scene_name,
              stin_technique_name(t), facets ? "-facets" : "");
-    counts[0] = '\0';
+    memset(&tally, 0, sizeof tally);
     test_frame_desc(c->r, c->s, &fd);
     fd.output = STIN_OUTPUT_VISIBILITY;
     for (li = 0; li < c->s->light_count; li++) {
-        long lit_side, n, ref_n;
+        long lit, n, ref_n;
         if (volumes_stand_in(tc.ctx, t, &c->s->lights[li])) {
-            if (used < sizeof counts)
-                used += (size_t)snprintf(counts + used, sizeof counts - used,
-                                         "%slight %d: volumes", li ? ", " : "", li);
+            if (tally.used < sizeof tally.counts)
+                tally.used += (size_t)snprintf(tally.counts + tally.used,
+                                               sizeof tally.counts - tally.used,
+                                               "%slight %d: volumes", li ? ", " : "", li);
             continue;
         }
         if (test_context_frame(&tc, c->s, &fd, li) != STIN_OK ||
@@ -147,35 +224,89 @@ static void check_technique(terminator_case *c, stin_tier tier, const char *scen
             failed = 1;
             break;
         }
-        n = shadowed_lit_side(c, li, c->color, &lit_side);
-        ref_n = shadowed_lit_side(c, li, NULL, &lit_side);
-        shadowed += n;
-        facing += lit_side;
-        ref_shadowed += ref_n;
-        if (used < sizeof counts)
-            used += (size_t)snprintf(counts + used, sizeof counts - used, "%slight %d %ld of %ld",
-                                     li ? ", " : "", li, n, lit_side);
+        n = shadowed_lit_side(c, li, c->color, &lit);
+        ref_n = shadowed_lit_side(c, li, NULL, &lit);
+        tally_light(&tally, li, n, lit, ref_n);
     }
     facet = by_facet(t);
     test_context_destroy(&tc);
-    allowed = exact ? 0 : (long)(MAP_BUDGET * (double)facing);
+    allowed = exact ? 0 : (long)(MAP_BUDGET * (double)tally.facing);
     if (failed)
         report(c->r, "FAIL", name, "a visibility frame failed");
     else if (facets)
-        report(c->r, shadowed > allowed ? "PASS" : "INFO", name,
+        report(c->r, tally.bad > allowed ? "PASS" : "INFO", name,
                "the check can fail: volumes keeping the facets (STIN_DEBUG_VOLUME_FACETS) shadow "
-               "%ld of %ld pixels whose shading normal faces a light (%s)%s",
-               shadowed, facing, counts, shadowed > allowed ? "" : ": no smooth triangle here");
+               "%ld of %ld pixels whose shading normal faces a light (%s)%s", tally.bad,
+               tally.facing, tally.counts,
+               tally.bad > allowed ? "" : ": no smooth triangle here");
     else if (facet)
         report(c->r, "SKIP", name,
                "open: %s still decides self-shadowing by the facet; %ld of %ld pixels whose "
                "shading normal faces a light shadowed (%s; %ld to be allowed)",
-               stin_technique_name(t), shadowed, facing, counts, allowed);
+               stin_technique_name(t), tally.bad, tally.facing, tally.counts, allowed);
     else
-        report(c->r, shadowed <= allowed && facing > 0 ? "PASS" : "FAIL", name,
+        report(c->r, tally.bad <= allowed && tally.facing > 0 ? "PASS" : "FAIL", name,
                "%ld of %ld pixels whose shading normal faces a light (N.L > %.2f) shadowed "
                "(%s; at most %ld allowed); the shared terminator rule's reference shadows %ld",
-               shadowed, facing, TERMINATOR_MIN_COS, counts, allowed, ref_shadowed);
+               tally.bad, tally.facing, TERMINATOR_MIN_COS, tally.counts, allowed, tally.ref_bad);
+}
+
+/* Translucent technique tt with shadows technique t for the opaque casters,
+ * on the scene made translucent: a frame per light, that light first; fine:
+ * with maps of FINE_MAP_SIZE, where none may be dimmed. */
+static void check_translucent(terminator_case *c, stin_tier tier, const char *scene_name,
+                              stin_technique tt, stin_technique t, int fine)
+{
+    scene s = c->translucent;
+    scene_light lights[8];
+    capture_options o;
+    capture cap;
+    char name[160];
+    light_tally tally;
+    long allowed;
+    int li, k;
+    if (tier == STIN_TIER_GL1 ||
+        (tier != STIN_TIER_GL4 && (tt == STIN_TECH_TRANSLUCENT_DEEP || t == STIN_TECH_SHADOWS_VDSM)))
+        return; /* not techniques of this tier */
+    snprintf(name, sizeof name, "%s/%s/terminator-%s-%s%s", stin_tier_name(tier), scene_name,
+             stin_technique_name(tt), stin_technique_name(t), fine ? "-fine" : "");
+    if (s.light_count > (int)(sizeof lights / sizeof lights[0])) {
+        report(c->r, "FAIL", name, "more lights than the check takes");
+        return;
+    }
+    memset(&o, 0, sizeof o);
+    o.tier = tier;
+    o.shadows = t;
+    o.translucent = tt;
+    o.deep_map_size = fine ? FINE_MAP_SIZE : 0;
+    memset(&tally, 0, sizeof tally);
+    s.lights = lights;
+    for (li = 0; li < s.light_count; li++) {
+        long lit, n, ref_n;
+        stin_technique ran;
+        lights[0] = c->s->lights[li];
+        for (k = 0; k < s.light_count - 1; k++)
+            lights[k + 1] = c->s->lights[k < li ? k : k + 1];
+        if (!capture_forced(c->r, &s, &o, STIN_FEATURE_TRANSLUCENT_SHADOWS, tt, &cap, name))
+            return;
+        ran = cap.choice[STIN_FEATURE_SHADOWS].technique;
+        if (ran != t) { /* another technique's own run covers it */
+            capture_free(&cap);
+            report(c->r, "SKIP", name, "%s does not run here: %s does", stin_technique_name(t),
+                   stin_technique_name(ran));
+            return;
+        }
+        n = dimmed_lit_side(c, li, &cap, &lit);
+        ref_n = dimmed_lit_side(c, li, NULL, &lit);
+        capture_free(&cap);
+        tally_light(&tally, li, n, lit, ref_n);
+    }
+    allowed = fine ? 0 : (long)(MAP_BUDGET * (double)tally.facing);
+    report(c->r, tally.bad <= allowed && tally.facing > 0 ? "PASS" : "FAIL", name,
+           "opacity %.1f, %s maps: %ld of %ld pixels whose shading normal faces a light (N.L > "
+           "%.2f) get its transmittance below 1 - 2/255 (%s; at most %ld allowed); the reference %ld",
+           TRANSLUCENT_OPACITY, fine ? "2048-texel" : "default", tally.bad, tally.facing,
+           TERMINATOR_MIN_COS, tally.counts, allowed, tally.ref_bad);
 }
 
 void terminator_tests(run *r, stin_tier tier, const char *path)
@@ -183,13 +314,18 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
     static const stin_technique shadows[] = {
         STIN_TECH_SHADOWS_VDSM, STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF,
         STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE};
+    static const stin_technique translucent[] = {STIN_TECH_TRANSLUCENT_DEEP,
+                                                 STIN_TECH_TRANSLUCENT_COLOURED};
+    static const stin_technique opaque[] = {STIN_TECH_SHADOWS_VDSM, STIN_TECH_SHADOWS_MAP_PCF};
     const char *base = scene_base_name(path);
     char scene_name[128], err[256], name[192];
     terminator_case c;
     scene s;
-    reference *ref = NULL;
+    reference *ref = NULL, *translucent_ref = NULL;
+    scene_material *materials = NULL;
     ref_hit *hits = NULL;
-    size_t i, pixels = (size_t)r->width * r->height;
+    int fine;
+    size_t i, j, pixels = (size_t)r->width * r->height;
     if (strncmp(base, "terminator-", 11) != 0)
         return;
     snprintf(scene_name, sizeof scene_name, "%s", base);
@@ -201,7 +337,15 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
     memset(&c, 0, sizeof c);
     hits = malloc(sizeof *hits * pixels);
     c.color = malloc(pixels * 4);
-    if (!hits || !c.color || !(ref = reference_create(&s, err, sizeof err)) ||
+    materials = malloc(sizeof *materials * (size_t)(s.material_count ? s.material_count : 1));
+    c.translucent = s;
+    c.translucent.materials = materials;
+    for (i = 0; materials && i < (size_t)s.material_count; i++) {
+        materials[i] = s.materials[i];
+        materials[i].color[3] = TRANSLUCENT_OPACITY;
+    }
+    if (!hits || !c.color || !materials || !(ref = reference_create(&s, err, sizeof err)) ||
+        !(translucent_ref = reference_create(&c.translucent, err, sizeof err)) ||
         !reference_primary(ref, r->width, r->height, hits)) {
         report(r, "FAIL", name, "reference: %s", ref ? "primary rays failed" : err);
     } else {
@@ -213,10 +357,18 @@ void terminator_tests(run *r, stin_tier tier, const char *path)
             check_technique(&c, tier, scene_name, shadows[i], 0);
         check_technique(&c, tier, scene_name, STIN_TECH_SHADOWS_VOLUME,
                         STIN_DEBUG_VOLUME_FACETS);
+        c.translucent_ref = translucent_ref;
+        for (i = 0; i < sizeof translucent / sizeof translucent[0]; i++)
+            for (j = 0; j < sizeof opaque / sizeof opaque[0]; j++)
+                for (fine = 0; fine < 2; fine++)
+                    check_translucent(&c, tier, scene_name, translucent[i], opaque[j], fine);
     }
+    if (translucent_ref)
+        reference_destroy(translucent_ref);
     if (ref)
         reference_destroy(ref);
     free(hits);
     free(c.color);
+    free(materials);
     scene_free(&s);
 }

@@ -2,7 +2,8 @@
 /* Transmittance toward a light through transparent casters: every hit along
  * the segment, found by tracing again past the last one, multiplies the
  * light's colour by the deep shadow maps' coloured factor (seed 001, eq 5.3)
- * and an opaque hit stops it. */
+ * and an opaque hit stops it. The segment starts where the terminator
+ * rule says (ref_smooth_start), as the shadow rays' do. */
 #include <math.h>
 #include <string.h>
 
@@ -46,23 +47,24 @@ static int transparent_at(const reference *r, unsigned object, unsigned prim, fl
 }
 
 /* Transmittance from hit toward `to` (a position, or directional: the
- * direction toward the light), leaving the side the eye sees by eps. */
+ * direction toward the light), from the terminator rule's start
+ * (ref_smooth_start) left by eps on the side the eye sees. */
 static void transmit(const reference *r, const ref_hit *hit, const double to[3], int directional,
                      float out[3])
 {
-    double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], dir[3], dist = INFINITY, len;
-    const float *eye = r->s->camera.eye;
-    double to_eye[3] = {eye[0] - hit->P[0], eye[1] - hit->P[1], eye[2] - hit->P[2]};
-    double side = dot3(Ng, to_eye) >= 0.0 ? r->eps : -r->eps;
+    double Ng[3] = {hit->Ng[0], hit->Ng[1], hit->Ng[2]}, org[3], facing[3], dir[3];
+    double dist = INFINITY, len, side = ref_eye_side(r, hit, 1.0);
     out[0] = out[1] = out[2] = 1.0f;
+    ref_smooth_start(r, hit, side, org, facing);
     for (int c = 0; c < 3; c++)
-        dir[c] = directional ? to[c] : to[c] - hit->P[c];
-    if (side * dot3(Ng, dir) <= 0.0) { /* the seen side turns away: its own shadow */
+        dir[c] = directional ? to[c] : to[c] - org[c];
+    /* the seen side turns away, by its facet and its shading normal: its own shadow */
+    if (side * dot3(Ng, dir) <= 0.0 && dot3(facing, dir) <= 0.0) {
         out[0] = out[1] = out[2] = 0.0f;
         return;
     }
     for (int c = 0; c < 3; c++) {
-        org[c] = hit->P[c] + side * Ng[c];
+        org[c] += side * r->eps * Ng[c];
         dir[c] = directional ? to[c] : to[c] - org[c];
     }
     len = sqrt(dot3(dir, dir));
