@@ -35,6 +35,9 @@ DEPFLAGS = -MMD -MP
 
 OSMESA ?= yes
 OIIO ?= yes
+# The interactive viewer (examples/viewer) needs GLFW (libglfw3-dev): built
+# by make examples and make tests where it is installed, by make viewer always.
+VIEWER_GLFW := $(shell pkg-config --exists glfw3 2>/dev/null && echo yes)
 PLATFORM_LIBS := -lEGL $(if $(filter no,$(OSMESA)),,-lOSMesa) -ldl
 TOOL_LIBS := $(if $(filter no,$(OIIO)),,-lOpenImageIO -lOpenImageIO_Util) -lassimp -lcjson -lstdc++ -lm
 REF_LIBS := -lembree3
@@ -53,7 +56,7 @@ PLATFORM_OBJ := $(PLATFORM_SRC:%.c=$(B)/obj/%.o)
 COMMON_OBJ := $(COMMON_SRC:%.c=$(B)/obj/%.o) $(COMMON_CXX:%.cpp=$(B)/obj/%.o)
 REF_OBJ := $(REF_SRC:%.c=$(B)/obj/%.o)
 
-.PHONY: all check check-quick demo bench install uninstall clean deps tests fuzz examples
+.PHONY: all check check-quick demo bench install uninstall clean deps tests fuzz examples viewer
 all: $(B)/libstin.a $(B)/libstin_platform.a $(B)/stin-render $(B)/stin-bench examples
 
 deps:
@@ -191,7 +194,8 @@ $(B)/obj/tools/bench/peers_vis.o: TOOL_CFLAGS += -Itests/image
 $(B)/stin-bench: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/bench/*.c))) $(BENCH_CXX_OBJ) $(BENCH_REF_OBJ) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
 	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(BENCH_CXX_LIBS) $(PLATFORM_LIBS)
 
-tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/libstin.a
+tests: $(UNIT_BINS) $(B)/stin-imagetest $(B)/stin-render $(B)/stin-bench $(B)/libstin.a \
+  $(if $(VIEWER_GLFW),$(B)/examples/viewer)
 
 # The build uses every core unless the caller's make already hands out jobs
 # (MAKEFLAGS names the jobserver only inside a recipe, so the test is there).
@@ -225,13 +229,21 @@ demo: deps
 # ---- examples (examples/: headless programs; make check builds them again
 # against a scratch install and checks their pictures) ----------------------
 EXAMPLE_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARN) -pedantic $(OPT) -Iinclude
-examples: $(B)/examples/egl_shadow $(B)/examples/egl_app_shader $(B)/examples/osmesa_shadow
+examples: $(B)/examples/egl_shadow $(B)/examples/egl_app_shader $(B)/examples/osmesa_shadow \
+  $(if $(VIEWER_GLFW),$(B)/examples/viewer)
 $(B)/examples/egl_%: examples/egl_%.c examples/example_scene.h examples/example_egl.h $(B)/libstin.a
 	@mkdir -p $(@D)
 	$(CC) $(EXAMPLE_CFLAGS) -o $@ $< $(B)/libstin.a -lEGL -lm
 $(B)/examples/osmesa_shadow: examples/osmesa_shadow.c examples/example_scene.h $(B)/libstin.a
 	@mkdir -p $(@D)
 	$(CC) $(EXAMPLE_CFLAGS) -o $@ $< $(B)/libstin.a -lOSMesa -lm
+
+VIEWER_OBJ := $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard examples/viewer/*.c)))
+$(VIEWER_OBJ): TOOL_CFLAGS += -pedantic $(shell pkg-config --cflags glfw3 2>/dev/null)
+viewer: $(B)/examples/viewer
+$(B)/examples/viewer: $(VIEWER_OBJ) $(B)/libstin_tools.a $(B)/libstin.a
+	@mkdir -p $(@D)
+	$(CC) $(OPT) -o $@ $^ $(shell pkg-config --libs glfw3 2>/dev/null || echo -lglfw) $(TOOL_LIBS)
 
 # ---- install ---------------------------------------------------------------
 # The version comes from the header; the installed files are listed once, for

@@ -12,10 +12,14 @@ set -u
 # libopenscenegraph-dev: stin-bench --peers times osgShadow's techniques beside
 # stin's on the same scenes (built without it, the section has stin's rows alone);
 # assimp-testmodels: three of its scenes' models (without it they are skipped).
+# libglfw3-dev: examples/viewer, the interactive viewer (built when present);
+# xvfb + xauth: its test runs it on a virtual display (xvfb-run);
+# imagemagick + twm: the viewer's screenshot with its title bar (import -window root).
 PACKAGES="build-essential pkg-config libegl-dev libgl-dev libosmesa6-dev \
 libegl-mesa0 libgl1-mesa-dri libembree-dev libopenimageio-dev openimageio-tools \
 libassimp-dev libcjson-dev libcmocka-dev clang libclang-rt-dev cmake \
-libopencsg-dev libglew-dev libopenscenegraph-dev assimp-testmodels"
+libopencsg-dev libglew-dev libopenscenegraph-dev assimp-testmodels \
+libglfw3-dev xvfb xauth imagemagick twm"
 
 if ! command -v dpkg >/dev/null 2>&1; then
     echo "install-deps: dpkg not found; install these (Debian names) by hand: $PACKAGES" >&2

@@ -8,8 +8,8 @@
 # Usage: tests/run.sh BUILD_DIR
 # Environment: STIN_TEST_PLATFORMS (default "egl osmesa"),
 #              STIN_TEST_PROFILES (default: every profile of docs/profiles.md),
-#              STIN_TEST_QUICK=1 leaves out the install, licence, readme and
-#              bench suites (make check-quick), STIN_TEST_JOBS,
+#              STIN_TEST_QUICK=1 leaves out the install, licence, readme,
+#              bench and viewer suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
 #              DIR/PLATFORM.PROFILE.log (tools/compare-renders.sh diff-readbacks).
 set -u
@@ -82,6 +82,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         echo "licence sh tests/cli/test_licence.sh"
         echo "readme sh tests/cli/test_readme.sh"
         echo "bench sh tests/cli/test_bench.sh $B/stin-bench $OUT/bench-quick.txt"
+        echo "viewer sh tests/cli/test_viewer.sh $B/examples/viewer $B/stin-render"
     fi
 } | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
 

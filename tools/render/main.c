@@ -13,6 +13,7 @@
 #include "scene_gpu.h"
 #include "stin/stin.h"
 #include "stin_platform.h"
+#include "technique_option.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -94,17 +95,6 @@ static int within_work_limit(const options *o, const scene *s, const cli_log *lo
                    "limit of %llu; raise it with --max-triangles",
               s->path, (unsigned long long)tris, (unsigned long long)o->max_triangles);
     return 0;
-}
-
-/* The best map path the context has for --shadows map. */
-static void narrow_map(stin_platform *plat, stin_desc *desc)
-{
-    stin_caps caps;
-    uint64_t depth = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
-    if (stin_detect_caps(stin_platform_get_proc_address, plat, desc->caps_mask,
-                         desc->max_gl_version, &caps) == STIN_OK &&
-        (caps.present & depth) != depth)
-        desc->techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_COMBINE;
 }
 
 /* What a model file lost, one stderr line each ("stin-render: warning: ..."). */
@@ -262,7 +252,7 @@ int main(int argc, char **argv)
         desc.max_gl_version = pd.profile->max_gl_version;
     }
     if (o.shadows && !strcmp(o.shadows, "map"))
-        narrow_map(plat, &desc);
+        technique_option_narrow_map(stin_platform_get_proc_address, plat, &desc);
     if (o.caps) {
         stin_caps caps;
         if (stin_detect_caps(stin_platform_get_proc_address, plat, desc.caps_mask,

@@ -3,6 +3,7 @@
 #include "render_options.h"
 #include "render_debug.h"
 #include "stin_platform.h"
+#include "technique_option.h"
 
 #include <errno.h>
 #include <stdlib.h>
@@ -249,35 +250,7 @@ int render_parse_args(int argc, char **argv, options *o)
     return 1;
 }
 
-/* --shadows/--surface/--csg: a technique name of that feature, "auto", or
- * "off" for the feature's "<feature>-off" technique. */
 int render_parse_technique(const char *name, stin_feature f, stin_technique *out)
 {
-    int t;
-    char off[64];
-    *out = STIN_TECH_NONE;
-    if (!name || !strcmp(name, "auto"))
-        return 1;
-    if (!strcmp(name, "off")) {
-        snprintf(off, sizeof off, "%s-off", stin_feature_name(f));
-        name = off;
-    }
-    if (f == STIN_FEATURE_SHADOWS && !strcmp(name, "map")) {
-        *out = STIN_TECH_SHADOWS_MAP_DEPTH; /* narrowed to what the context has, see main */
-        return 1;
-    }
-    for (t = 1; t < STIN_TECH_COUNT; t++) {
-        stin_technique tech = (stin_technique)t;
-        if (!strcmp(stin_technique_name(tech), name) && stin_technique_feature(tech) == f) {
-            *out = tech;
-            return 1;
-        }
-    }
-    fprintf(stderr, "stin-render: unknown %s technique '%s'; this build knows: auto%s",
-            stin_feature_name(f), name, f == STIN_FEATURE_SHADOWS ? ", map" : "");
-    for (t = 1; t < STIN_TECH_COUNT; t++)
-        if (stin_technique_feature((stin_technique)t) == f)
-            fprintf(stderr, ", %s", stin_technique_name((stin_technique)t));
-    fprintf(stderr, "\n");
-    return 0;
+    return technique_option_parse("stin-render", name, f, out);
 }
