@@ -87,11 +87,11 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 } | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
 
 # Started longest first (measured: gl45-core, gl33-core and gl21 take most
-# of the run; the command-line, bench and install checks next), so that the
+# of the run; the command-line, bench, install and viewer checks next), so that the
 # parallel run ends together.
 awk '{ w = 1 }
      $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
-     $2 == "cli" || $2 == "bench" || $2 == "install" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
+     $2 == "cli" || $2 == "bench" || $2 == "install" || $2 == "viewer" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
      { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
 
