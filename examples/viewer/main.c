@@ -192,7 +192,7 @@ static int run_script(viewer *v)
 int main(int argc, char **argv)
 {
     static viewer v;
-    char err[1024];
+    char err[1024], note[1024];
     int code = EXIT_FAILED;
     setvbuf(stdout, NULL, _IOLBF, 0);
     if (!viewer_parse_args(argc, argv, &v.opt))
@@ -218,9 +218,14 @@ int main(int argc, char **argv)
     v.session.products = &v.products;
     v.session.verbose = v.opt.verbose;
     if (!open_window(&v, v.opt.settings.samples, err, sizeof err)) {
-        fprintf(stderr, "viewer: %s\n", err);
-        code = EXIT_NO_DISPLAY;
-        goto done;
+        /* a display without multisampled windows: say so, go on without */
+        if (!v.opt.settings.samples || !open_window(&v, 0, note, sizeof note)) {
+            fprintf(stderr, "viewer: %s\n", err);
+            code = EXIT_NO_DISPLAY;
+            goto done;
+        }
+        fprintf(stderr, "viewer: %d samples: %s; running without\n", v.opt.settings.samples, err);
+        v.opt.settings.samples = 0;
     }
     if (!viewer_session_open(&v.session, &v.opt.settings, &code)) {
         fprintf(stderr, "viewer: %s\n", v.session.refused);
