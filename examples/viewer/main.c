@@ -42,7 +42,7 @@ static int open_window(viewer *v, int samples, char *err, size_t err_size)
     if (!viewer_window_open(&v->window, v->width, v->height, samples, 1, !v->opt.hidden,
                             "stin viewer", err, err_size))
         return 0;
-    v->window.srgb_asked = v->opt.settings.srgb;
+    v->window.srgb_asked = v->asked.srgb; /* kept across new windows */
     viewer_input_attach(&v->input, &v->window);
     return 1;
 }
@@ -217,6 +217,7 @@ int main(int argc, char **argv)
     v.session.scene = &v.scene;
     v.session.products = &v.products;
     v.session.verbose = v.opt.verbose;
+    v.asked = v.opt.settings;
     if (!open_window(&v, v.opt.settings.samples, err, sizeof err)) {
         /* a display without multisampled windows: say so, go on without */
         if (!v.opt.settings.samples || !open_window(&v, 0, note, sizeof note)) {
@@ -231,7 +232,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "viewer: %s\n", v.session.refused);
         goto done;
     }
-    v.asked = v.opt.settings;
+    v.asked.samples = v.opt.settings.samples;
     viewer_status_print(&v.session, &v.window);
     code = v.opt.frames ? run_script(&v) : run_interactive(&v);
 done:
