@@ -47,6 +47,8 @@ cat > "$T/viewer.sh" << EOF
 echo \$? > "$T/auto.rc"
 "$V" "$SCENE" --size $SIZE --frames 4 --keys TSS --screenshot "$T/gl1-volume.exr" > "$T/gl1-volume.txt" 2>&1
 echo \$? > "$T/gl1-volume.rc"
+"$V" "$SCENE" --size $SIZE --frames 2 --keys G --screenshot "$T/srgb.exr" > "$T/srgb.txt" 2>&1
+echo \$? > "$T/srgb.rc"
 "$V" "$SCENE" --size $SIZE --frames 2 --orbit 0.1,0 --screenshot "$T/nudged.exr" > "$T/nudged.txt" 2>&1
 echo \$? > "$T/nudged.rc"
 EOF
@@ -84,6 +86,23 @@ for name in auto gl1-volume; do
         echo "FAIL viewer: $name ($tech): $p% of pixels over 2/255 (bound $BOUND%)"
     fi
 done
+
+# G (sRGB on): stin lights in linear space and the framebuffer encodes;
+# the read-back decoded must agree with the linear reference within the
+# same bound (an 8-bit sRGB step is at most 2.3/255 in linear terms, so
+# rounding stays under 2/255). Measured: no pixel over 2/255.
+if grep -q "sRGB: unavailable" "$T/srgb.txt"; then
+    echo "SKIP viewer: srgb: the display has no sRGB-capable framebuffer"
+elif [ "$(cat "$T/srgb.rc")" -ne 0 ] || ! grep -q "sRGB: on" "$T/srgb.txt"; then
+    echo "FAIL viewer: srgb: exit $(cat "$T/srgb.rc"), $(grep sRGB "$T/srgb.txt" | tail -n 1)"
+else
+    p=$(over "$T/auto.ref.exr" "$T/srgb.exr")
+    if [ -n "$p" ] && awk -v p="$p" -v b=$BOUND 'BEGIN { exit !(p <= b) }'; then
+        echo "PASS viewer: srgb (G) decoded agrees with stin-render: $p% of pixels over 2/255"
+    else
+        echo "FAIL viewer: srgb (G): $p% of pixels over 2/255 (bound $BOUND%)"
+    fi
+fi
 
 # The title: tier, the techniques, the frame's stage times (gl4 has timer
 # queries) and why; the keys' refusal said in stin's words.
