@@ -18,8 +18,7 @@ static size_t put(char *out, size_t size, size_t at, const char *fmt, const char
     return n < 0 ? at : at + (size_t)n;
 }
 
-/* The stages that took any time, biggest first would be costlier to read
- * than the frame order: the plan's order. */
+/* The stages that took time, in the frame plan's order. */
 static size_t put_stages(char *out, size_t size, size_t at, const stin_frame_stats *st)
 {
     int i;
@@ -27,7 +26,7 @@ static size_t put_stages(char *out, size_t size, size_t at, const stin_frame_sta
         return put(out, size, at, "%s", " (no timer queries)", 0);
     at = put(out, size, at, "%s", " [", 0);
     for (i = 0; i < STIN_STAGE_COUNT; i++)
-        if (st->stage_ns[i] >= 5000) { /* 0.01 ms shown as 0.0: left out */
+        if (st->stage_ns[i] >= 5000) { /* under 0.005 ms reads 0.00: left out */
             at = put(out, size, at, "%s ", stin_stage_name((stin_stage)i), 0);
             at = put(out, size, at, "%.2f ", NULL, st->stage_ns[i] / 1e6);
         }
