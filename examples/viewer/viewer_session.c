@@ -13,7 +13,7 @@ int viewer_session_open(viewer_session *v, const viewer_settings *settings, int 
     stin_desc desc;
     scene_context sc;
     stin_result r;
-    char err[512], line[1024];
+    char err[512], line[1400];
     scene_context_step step;
     memset(&desc, 0, sizeof desc);
     desc.get_proc_address = viewer_window_get_proc;
@@ -31,13 +31,14 @@ int viewer_session_open(viewer_session *v, const viewer_settings *settings, int 
     v->log.collect = 1;
     step = scene_context_open(&sc, v->scene, v->products, &desc, &r, err, sizeof err);
     if (step != SCENE_CONTEXT_OK) {
-        /* with stin's own words: what it lacks */
-        snprintf(line, sizeof line, "%s%s%s", err, v->log.first_error[0] ? ": " : "",
-                 v->log.first_error);
+        int bare = step == SCENE_CONTEXT_MEMORY || step == SCENE_CONTEXT_CREATE;
+        /* the file, then with stin's own words: what it lacks */
+        snprintf(line, sizeof line, "%s%s%s%s%s", bare ? v->scene->path : "", bare ? ": " : "",
+                 err, v->log.first_error[0] ? ": " : "", v->log.first_error);
         one_line_copy(v->refused, sizeof v->refused, line);
         *exit_code = step == SCENE_CONTEXT_CREATE && r == STIN_ERROR_UNSUPPORTED ? EXIT_UNSUPPORTED
-                   : step == SCENE_CONTEXT_SCENE || step == SCENE_CONTEXT_MESHES ? EXIT_BAD_INPUT
-                                                                                 : EXIT_FAILED;
+                   : step == SCENE_CONTEXT_CREATE || step == SCENE_CONTEXT_MEMORY ? EXIT_FAILED
+                                                                                  : EXIT_BAD_INPUT;
         return 0;
     }
     viewer_session_close(v);

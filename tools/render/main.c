@@ -9,6 +9,7 @@
 #include "render_options.h"
 #include "render_progress.h"
 #include "scene.h"
+#include "scene_context.h"
 #include "scene_csg.h"
 #include "scene_gpu.h"
 #include "stin/stin.h"
@@ -155,23 +156,26 @@ int main(int argc, char **argv)
 {
     options o;
     scene s;
-    scene_gpu g;
+    scene_context sc;
+    scene_context_step step;
+    scene_gpu *g;
+    stin_result r;
     scene_csg_products products = {0};
     stin_platform_desc pd;
     stin_platform *plat = NULL;
     stin_desc desc;
     stin_context *ctx = NULL;
     static cli_log log;
-    void *block = NULL;
     char err[1024];
     const char *file;
-    int rc = EXIT_FAILED, have_scene = 0, have_gpu = 0, displace_all, i;
+    int rc = EXIT_FAILED, have_scene = 0, displace_all, i;
     image img;
     double ms = 0;
     stin_frame_stats stats;
     progress pr;
 
     memset(&s, 0, sizeof s);
+    memset(&sc, 0, sizeof sc);
     memset(&img, 0, sizeof img);
     setvbuf(stdout, NULL, _IOLBF, 0); /* piped output appears as it is printed */
     if (!render_parse_args(argc, argv, &o))
@@ -264,25 +268,19 @@ int main(int argc, char **argv)
                pd.profile ? pd.profile->name : "none");
         print_caps(&caps);
     }
-    if (have_scene && !scene_gpu_size_desc_checked(&s, &desc, err, sizeof err)) {
-        fail_line(NULL, "%s", err);
-        rc = EXIT_BAD_INPUT;
+    step = scene_context_create(&sc, have_scene ? &s : NULL, &products, &desc, &r, err,
+                                sizeof err);
+    if (step != SCENE_CONTEXT_OK) {
+        if (step == SCENE_CONTEXT_SCENE)
+            fail_line(NULL, "%s", err);
+        else
+            fail_line(step == SCENE_CONTEXT_CREATE ? &log : NULL, "%s: %s", file, err);
+        rc = step == SCENE_CONTEXT_SCENE            ? EXIT_BAD_INPUT
+           : r == STIN_ERROR_UNSUPPORTED            ? EXIT_UNSUPPORTED
+                                                    : EXIT_FAILED;
         goto done;
     }
-    block = malloc(stin_memory_size(&desc));
-    if (!block) {
-        fail_line(NULL, "%s: cannot allocate %zu bytes for the stin context", file,
-                  stin_memory_size(&desc));
-        goto done;
-    }
-    {
-        stin_result r = stin_create(&desc, block, stin_memory_size(&desc), &ctx);
-        if (r != STIN_OK) {
-            fail_line(&log, "%s: cannot create the stin context (%s)", file, stin_result_name(r));
-            rc = r == STIN_ERROR_UNSUPPORTED ? EXIT_UNSUPPORTED : EXIT_FAILED;
-            goto done;
-        }
-    }
+    ctx = sc.ctx;
     log.note_count = 0; /* from here on: what frames fell back to */
     if (o.caps || !have_scene) {
         print_choices(ctx, &log);
@@ -292,25 +290,20 @@ int main(int argc, char **argv)
     if (o.frame || !s.has_camera)
         frame_camera(&s, pd.width, pd.height);
     progress_start(&pr, "creating meshes and textures");
-    if (!scene_gpu_create(&g, &s, ctx, err, sizeof err)) {
-        print_choices(ctx, &log);
-        fail_line(&log, "%s", err);
+    step = scene_context_load(&sc, &s, &products, err, sizeof err);
+    if (step != SCENE_CONTEXT_OK) {
+        if (step == SCENE_CONTEXT_MESHES)
+            print_choices(ctx, &log);
+        fail_line(step == SCENE_CONTEXT_MESHES ? &log : NULL, "%s", err);
         rc = EXIT_BAD_INPUT;
         goto done;
     }
-    have_gpu = 1;
-    if (!scene_csg_products_check_meshes(&g, &products, ctx, err, sizeof err)) {
-        fail_line(NULL, "%s", err);
-        rc = EXIT_BAD_INPUT;
-        goto done;
-    }
-    g.csg = products.products; /* the file's csg list: its objects drawn as products */
-    g.csg_count = products.count;
-    g.outline_step = o.outline; /* black: stin's default colour */
+    g = &sc.gpu;
+    g->outline_step = o.outline; /* black: stin's default colour */
     progress_done(&pr, "created meshes and textures");
     progress_start(&pr, "rendering %dx%d (beauty, normal and visibility frames)", pd.width,
                    pd.height);
-    if (!aov_capture(&g, ctx, plat, &img, &ms, &stats, err, sizeof err)) {
+    if (!aov_capture(g, ctx, plat, &img, &ms, &stats, err, sizeof err)) {
         print_choices(ctx, &log);
         fail_line(&log, "%s: %s", file, err);
         goto done;
@@ -327,7 +320,7 @@ int main(int argc, char **argv)
         }
         printf("wrote %s\n", o.output);
         if (o.debug_outputs &&
-            !render_debug_write(o.debug_outputs, o.output, &g, ctx, plat, err, sizeof err)) {
+            !render_debug_write(o.debug_outputs, o.output, g, ctx, plat, err, sizeof err)) {
             fail_line(NULL, "%s", err);
             goto done;
         }
@@ -339,12 +332,8 @@ int main(int argc, char **argv)
     }
 done:
     image_free(&img);
-    if (have_gpu)
-        scene_gpu_destroy(&g, ctx);
+    scene_context_close(&sc);
     scene_csg_products_free(&products);
-    if (ctx)
-        stin_destroy(ctx);
-    free(block);
     if (plat)
         stin_platform_destroy(plat);
     if (have_scene)
