@@ -1847,9 +1847,11 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * logged once. The map's bound holds at the products' shadow edges on
  * all of them (1% of the pixels the products decide in tests/image/
  * csg_cast_test.c, measured 0-0.04% on gl13-combine and gl14-shadow).
- * gl11 (no multitexture) casts no product under volumes, nor do the
- * stencil volumes map-depth and map-combine hand point lights to without
- * framebuffer objects; each logged once.
+ * gl11 (no multitexture) casts no product under volumes; each logged
+ * once. The stencil volumes map-depth (without framebuffer objects) and
+ * map-combine hand point lights to cast the products as volumes do: their
+ * map (six faces, drawn in the light pre-pass without framebuffer objects),
+ * marked into the stencil after each count.
  * Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term; on the CPU each layer reads depth back (and
