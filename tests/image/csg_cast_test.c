@@ -33,7 +33,11 @@
  *               volumes on the GLSL tiers and on GL1 for every light
  *               (map-depth's test in framebuffer objects, gl21's GL1
  *               tier, or drawn before the frame's clear and copied,
- *               gl14-shadow; map-combine's ramp, gl13-combine), vdsm
+ *               gl14-shadow; map-combine's ramp, gl13-combine; on GL
+ *               1.1, gl11, the light's depth images read back and
+ *               tested per pixel on the CPU, the log naming
+ *               "read-backs": SKIP before, and with that path switched
+ *               off every pixel the product decides differs), vdsm
  *               without GL 4.3's storage
  *               buffers (gl33-core) or past its walk's limits (cast-terms,
  *               cast-bores on gl45-core, where the log must say so, and
