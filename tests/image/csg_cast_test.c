@@ -186,16 +186,12 @@ static int product_near(const truth *tr, int w, int h, int x, int y)
  * frame's buffer before its clear and copied out) or texture_env_combine
  * (map-combine's ramp of depths), for every kind of light (a point light's
  * six faces each marking its own pyramid); on GL 1.1 (gl11: one texture
- * unit) through the light's depth images read back and tested per pixel
- * on the CPU (shadow/cast_readback.c). The profiles all have one of them
- * (a GL1 context with multitexture but neither would cast none). */
+ * unit) and wherever GL1 has neither map, through the light's depth
+ * images read back and tested per pixel on the CPU
+ * (shadow/cast_readback.c): wherever volumes run (they need a stencil). */
 int csg_volume_casts(const capture *one)
 {
-    const uint64_t compare = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
-    const uint64_t caps = one->caps_present;
-    return one->choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_FIXED ||
-           !(caps & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE)) || (caps & compare) == compare ||
-           (caps & STIN_CAP_BIT(STIN_CAP_TEXTURE_ENV_COMBINE));
+    return (one->caps_present & STIN_CAP_BIT(STIN_CAP_STENCIL)) != 0;
 }
 
 static void test_cast(run *r, stin_tier tier, const struct cast_scene *c, const scene *s,
@@ -273,7 +269,8 @@ static void test_cast(run *r, stin_tier tier, const struct cast_scene *c, const 
         }
     if (via_map)
         bound = vdsm ? CAST_VDSM_MAX : CAST_VOLUME_MAX;
-    readback = volume && !(one.caps_present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE));
+    readback = volume && one.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED &&
+               !(one.caps_present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE));
     logged = (!via_map ||
               strstr(one.fallbacks, vdsm       ? "vdsm: CSG products cast through map-pcf"
                                     : readback ? "volume: CSG products cast through read-backs"
