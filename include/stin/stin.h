@@ -1847,9 +1847,36 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * logged once. The map's bound holds at the products' shadow edges on
  * all of them (1% of the pixels the products decide in tests/image/
  * csg_cast_test.c, measured 0-0.04% on gl13-combine and gl14-shadow).
- * gl11 (no multitexture) casts no product under volumes, nor do the
- * stencil volumes map-depth and map-combine hand point lights to without
- * framebuffer objects; each logged once.
+ * On GL 1.1 (gl11: one texture unit, no framebuffer objects or depth
+ * textures) the map is made and tested on the CPU (logged "volume: CSG
+ * products cast through read-backs (SIZE, the light's depth images tested
+ * on the CPU per pixel) for light N"): per light, before its count, the
+ * products are resolved from the light into the frame's depth at the
+ * viewport's corner and read back, one image for a spot or directional
+ * light, one per face for a point light, SIZE the smaller of 128,
+ * shadows.map_size and the largest power of two the viewport holds,
+ * cropped to the products' bounds as above (the frame's depth there read
+ * back first and drawn back after, glDrawPixels, depth ALWAYS). After the
+ * count the frame's depth is read back in bands of 16384 pixels, each
+ * pixel unprojected and projected into its light's image (a point light's
+ * face by the major axis of its direction from the light): shadowed where
+ * it lies farther from the light than the stored depth, which carries
+ * the light's shadow_offset, plus 2^-14 of the light's window depth (the
+ * frame's 24-bit depth unprojected). The decisions go into the stencil
+ * as an alpha image (glDrawPixels, alpha test GREATER 0.5, stencil
+ * REPLACE 0x80), so the lit pass's "count zero" leaves them dark. Memory:
+ * the block holds 7 images of 128 x 128 floats (shadows.map_size below
+ * 128: of its size) and the band (16384 x 5 bytes), 528 KiB at the
+ * defaults, in stin_memory_size unless the desc rules the path out (tier
+ * GL2 or GL4 forced, CSG or shadows forced off); a viewport wider than
+ * 16384 pixels casts none (logged once). Cost per light: the frame's
+ * depth read back (in bands) and its corner, each image's resolve and
+ * read-back, glDrawPixels for the corner and each band, and an unprojection
+ * per pixel on the CPU (measured in docs/testing.md). The stencil volumes map-depth (without framebuffer
+ * objects) and
+ * map-combine hand point lights to cast the products as volumes do: their
+ * map (six faces, drawn in the light pre-pass without framebuffer objects),
+ * marked into the stencil after each count.
  * Products are opaque; a primitive's normal and height maps are
  * ignored. Passes: about (1 + layers) x (1 + overlapping literals / 8)
  * per literal of each term; on the CPU each layer reads depth back (and

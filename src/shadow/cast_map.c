@@ -13,7 +13,9 @@
  * say lit. One map serves every light in turn, drawn mid-frame as map-pcf
  * draws a point light's faces. On GL1 the marking pass is the
  * fixed-function path's geometry with map-depth's or map-combine's test
- * (shadow/cast_map_fixed.c), for every kind of light. vdsm without storage
+ * (shadow/cast_map_fixed.c), for every kind of light; on GL 1.1 (one
+ * texture unit) the map is read back and tested per pixel on the CPU
+ * (shadow/cast_readback.c). vdsm without storage
  * buffers casts the products through the same map into its screen mask.
  * Frames without such casters draw nothing of it. */
 #include "shadow/cast_map_private.h"
@@ -24,8 +26,7 @@ typedef stin__mark_program mark_program;
 
 size_t stin__cast_map_state_bytes(const stin_desc *d)
 {
-    (void)d;
-    return sizeof(struct stin__cast_map_state);
+    return stin__align16(sizeof(struct stin__cast_map_state)) + stin__cast_readback_bytes(d);
 }
 
 static const stin__uniform_name mark_uniforms[] = {
@@ -127,6 +128,12 @@ void stin__cast_map_init(stin_context *ctx, int screen)
     struct stin__cast_map_state *m = ctx->cast_map;
     char msg[160], why[220];
     int built;
+    if (!screen && stin__path_of(ctx) != stin__glsl_path() && !maps_here(ctx) &&
+        has(ctx, STIN_CAP_BIT(STIN_CAP_STENCIL)) &&
+        ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_OFF) {
+        stin__cast_readback_init(ctx); /* GL 1.1: no second unit for a map's test */
+        return;
+    }
     if (!maps_here(ctx) || !has_casters(ctx) ||
         (screen && ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF))
         return; /* vdsm casts displaced draws itself */
@@ -197,7 +204,7 @@ static int displaced_casters(const stin_context *ctx)
 static void say(stin_context *ctx, uint32_t li, int screen, int products, int displaced_draws)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
-    if (!m->texture && !m->copied) {
+    if (!m->texture && !m->copied && !m->cpu) {
         const char *why =
             screen ? "under vdsm without GL 4.3's shader storage buffers (the \"compute "
                      "shaders\" capability), which its per-pixel lists of crossings need, nor "
@@ -218,9 +225,12 @@ static void say(stin_context *ctx, uint32_t li, int screen, int products, int di
                   products && displaced_draws ? "CSG products and displaced casters"
                   : products                  ? "CSG products"
                                               : "displaced casters",
-                  m->ramp ? "map-combine" : m->fixed ? "map-depth" : "map-pcf",
-                  (unsigned)(m->copied ? m->copy_size : m->size),
-                  m->copied ? ", drawn before the frame's clear" : "", (unsigned)li);
+                  m->cpu ? "read-backs" : m->ramp ? "map-combine" : m->fixed ? "map-depth" : "map-pcf",
+                  (unsigned)(m->cpu ? m->cpu_size : m->copied ? m->copy_size : m->size),
+                  m->cpu      ? ", the light's depth images tested on the CPU per pixel"
+                  : m->copied ? ", drawn before the frame's clear"
+                              : "",
+                  (unsigned)li);
         m->said_light |= 1u << li;
     }
 }
@@ -263,6 +273,12 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
     int face, products = stin__casters_wanted(ctx), displaced_draws;
     m->drawn = 0;
     m->current = li;
+    if (m->cpu && !screen) {
+        m->drawn = products && stin__cast_readback_draw(ctx, li);
+        if (products)
+            say(ctx, li, screen, 1, 0);
+        return m->drawn;
+    }
     if (!(screen ? m->mask.name : m->mark.name || m->fixed)) {
         if (products)
             say(ctx, li, screen, 1, 0);
@@ -399,6 +415,14 @@ void stin__cast_map_mark(stin_context *ctx)
     if (!m->drawn)
         return;
     ps = mark_state(ctx);
+    if (m->cpu) { /* written by glDrawPixels: no depth test */
+        ps.depth_test = 0;
+        stin__pass_apply(ctx, &ps);
+        stin__cast_readback_mark(ctx);
+        stin__pass_apply(ctx, &saved);
+        ctx->stats.passes++;
+        return;
+    }
     stin__pass_apply(ctx, &ps);
     if (m->fixed) {
         stin__cast_fixed_mark(ctx);

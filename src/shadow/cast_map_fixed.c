@@ -123,6 +123,38 @@ static void make_copies(stin_context *ctx, stin__cast_light *c, uint32_t size, i
     c->copy_faces = faces;
 }
 
+/* The products into the frame's buffer at map_vp; ramp: map-combine's
+ * colour cleared too, and no offset (the ramp's bias stands in for it). */
+static int products(stin_context *ctx, const stin_light_desc *l, const int map_vp[4],
+                    const float view[16], const float proj[16], int ramp,
+                    stin__pass_state *ps)
+{
+    *ps = stin__pass_defaults;
+    ps->depth_test = 1;
+    ps->scissor = 1;
+    stin__memcopy(ps->scissor_box, map_vp, sizeof ps->scissor_box);
+    if (!ramp) {
+        ps->color_write = 0;
+        ps->polygon_offset = (unsigned char)stin__map_offset(l, &ps->offset_factor,
+                                                             &ps->offset_units);
+    }
+    GL(ctx, Viewport)(map_vp[0], map_vp[1], map_vp[2], map_vp[3]);
+    stin__pass_apply(ctx, ps);
+    GL(ctx, ClearDepth)(1.0);
+    GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
+    GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (ramp ? GL_COLOR_BUFFER_BIT : 0u));
+    return stin__casters_cast(ctx, stin__fixed_path(), view, proj, map_vp, ctx->draw_fbo, 1,
+                              ps->polygon_offset ? ps->offset_factor : 0.0f,
+                              ps->polygon_offset ? ps->offset_units : 0.0f);
+}
+
+int stin__cast_fixed_products(stin_context *ctx, const stin_light_desc *l, const int map_vp[4],
+                              const float view[16], const float proj[16])
+{
+    stin__pass_state ps;
+    return products(ctx, l, map_vp, view, proj, 0, &ps);
+}
+
 /* The products seen from (view, proj), whose depth spans [n, f], into the
  * frame's buffer at the viewport's corner, then into face `face`'s copy;
  * 1 if any drew. */
@@ -132,24 +164,8 @@ static int copy_face(stin_context *ctx, const stin_light_desc *l, stin__cast_lig
     struct stin__cast_map_state *m = ctx->cast_map;
     const int *vp = ctx->frame.viewport;
     const int map_vp[4] = {vp[0], vp[1], (int)m->copy_size, (int)m->copy_size};
-    stin__pass_state ps = stin__pass_defaults;
-    int drew;
-    ps.depth_test = 1;
-    ps.scissor = 1;
-    stin__memcopy(ps.scissor_box, map_vp, sizeof ps.scissor_box);
-    if (!m->ramp) { /* the ramp's bias stands in for the offset */
-        ps.color_write = 0;
-        ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor,
-                                                            &ps.offset_units);
-    }
-    GL(ctx, Viewport)(map_vp[0], map_vp[1], map_vp[2], map_vp[3]);
-    stin__pass_apply(ctx, &ps);
-    GL(ctx, ClearDepth)(1.0);
-    GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
-    GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (m->ramp ? GL_COLOR_BUFFER_BIT : 0u));
-    drew = stin__casters_cast(ctx, stin__fixed_path(), view, proj, map_vp, ctx->draw_fbo, 1,
-                              ps.polygon_offset ? ps.offset_factor : 0.0f,
-                              ps.polygon_offset ? ps.offset_units : 0.0f);
+    stin__pass_state ps;
+    int drew = products(ctx, l, map_vp, view, proj, m->ramp, &ps);
     stin__light_window_matrix(c->matrix[face], view, proj);
     if (!drew)
         return 0;
@@ -184,8 +200,8 @@ static int copy_face(stin_context *ctx, const stin_light_desc *l, stin__cast_lig
  * nearer reads as lit, one farther as the ramp's end, behind whatever
  * product the map holds). Unchanged where a primitive's bounds tell
  * nothing or reach behind the light. */
-static void focus(const stin_context *ctx, const float view[16], float proj[16], float *n,
-                  float *f)
+void stin__cast_fixed_focus(const stin_context *ctx, uint32_t size, const float view[16],
+                            float proj[16], float *n, float *f)
 {
     stin__caster_product p;
     float lo = *f, hi = *n, box[4] = {1, 1, -1, -1}, corners[24], vp[16], margin;
@@ -215,7 +231,7 @@ static void focus(const stin_context *ctx, const float view[16], float proj[16],
     if (hi <= lo || box[2] <= box[0] || box[3] <= box[1])
         return;
     for (a = 0; a < 2; a++) { /* the margin in the focused map's texels, within [-1, 1] */
-        float texel = (box[2 + a] - box[a]) / ((float)ctx->cast_map->copy_size - 2.0f * FOCUS_MARGIN);
+        float texel = (box[2 + a] - box[a]) / ((float)size - 2.0f * FOCUS_MARGIN);
         float x0 = box[a] - FOCUS_MARGIN * texel, x1 = box[2 + a] + FOCUS_MARGIN * texel;
         x0 = x0 > -1.0f ? x0 : -1.0f;
         x1 = x1 < 1.0f ? x1 : 1.0f;
@@ -252,7 +268,7 @@ static void copy_light(stin_context *ctx, uint32_t li)
     if (c->faces == 1) {
         if (!stin__light_camera(ctx, l, view, proj, &n, &f, m->copy_size))
             return;
-        focus(ctx, view, proj, &n, &f);
+        stin__cast_fixed_focus(ctx, m->copy_size, view, proj, &n, &f);
         if (copy_face(ctx, l, c, 0, view, proj, n, f))
             c->drawn = 1u;
         return;
@@ -261,13 +277,14 @@ static void copy_light(stin_context *ctx, uint32_t li)
         stin__light_cube_face(ctx, l->position, face, view, proj);
         depth_range(proj, &n, &f);
         stin__light_window_matrix(c->window[face], view, proj); /* the face's own square */
-        focus(ctx, view, proj, &n, &f);
+        stin__cast_fixed_focus(ctx, m->copy_size, view, proj, &n, &f);
         if (copy_face(ctx, l, c, face, view, proj, n, f))
             c->drawn |= 1u << face;
     }
 }
 
-void stin__cast_map_prepass(stin_context *ctx)
+/* Every light's map, or the point lights' alone. */
+static void prepass(stin_context *ctx, int points_only)
 {
     struct stin__cast_map_state *m = ctx->cast_map;
     const int *vp = ctx->frame.viewport;
@@ -284,7 +301,8 @@ void stin__cast_map_prepass(stin_context *ctx)
     GL(ctx, EnableClientState)(GL_VERTEX_ARRAY); /* the fixed path's draws, before its begin */
     GL_DISABLE(ctx, GL_LIGHTING);
     for (li = 0; li < ctx->light_count && li < STIN__MAX_LIGHTS; li++)
-        copy_light(ctx, li);
+        if (!points_only || ctx->lights[li].type == STIN_LIGHT_POINT)
+            copy_light(ctx, li);
     GL(ctx, DisableClientState)(GL_VERTEX_ARRAY);
     GL(ctx, MatrixMode)(GL_PROJECTION);
     GL(ctx, PopMatrix)();
@@ -292,6 +310,10 @@ void stin__cast_map_prepass(stin_context *ctx)
     GL(ctx, PopMatrix)();
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
 }
+
+void stin__cast_map_prepass(stin_context *ctx) { prepass(ctx, 0); }
+
+void stin__cast_map_prepass_points(stin_context *ctx) { prepass(ctx, 1); }
 
 /* ---- the marking pass ------------------------------------------------------ */
 

@@ -52,6 +52,18 @@ struct stin__cast_map_state {
     uint32_t copy_size;    /* without FBOs: this frame's face size (the viewport bounds it) */
     uint32_t current;      /* the light being counted */
     stin__cast_light lights[STIN__MAX_LIGHTS];
+    /* GL 1.1 (shadow/cast_readback.c): the products' depth from the light
+     * read back, tested per pixel of the frame on the CPU */
+    int cpu;               /* volumes cast through read-backs */
+    uint32_t cpu_cap;      /* the images' largest side (the slot was sized for it) */
+    uint32_t cpu_size;     /* this light's images' side */
+    int cpu_faces;         /* 1, or a point light's 6 */
+    unsigned cpu_drawn;    /* bit f: face f holds products */
+    float cpu_matrix[STIN__CUBE_FACES][16]; /* world -> face f's window [0, 1] cube */
+    float *cpu_images;     /* after the struct in the slot: six faces' depths */
+    float *cpu_corner;     /* the frame's depth under the images while they are drawn */
+    unsigned char *cpu_rows; /* a band of the frame: its depth, then the decisions */
+    int said_cpu_wide;     /* a viewport wider than the band was logged */
 };
 
 /* shadow/cast_map.c: the frame's surfaces (its opaque draws and the
@@ -69,5 +81,23 @@ void stin__cast_fixed_release(stin_context *ctx);
 void stin__cast_fixed_cell(stin_context *ctx, int cell, const float window[16],
                            const float into[16], int drew);
 void stin__cast_fixed_mark(stin_context *ctx);
+/* The products seen from light l (view, proj) into the depth of the frame's
+ * buffer at map_vp (cleared first; scissored to it, colour writes off, the
+ * light's offset); 1 if any drew. */
+int stin__cast_fixed_products(stin_context *ctx, const stin_light_desc *l, const int map_vp[4],
+                              const float view[16], const float proj[16]);
+/* proj cropped to the rectangle the products' bounds cover in a map of
+ * `size` texels a side, [n, f] narrowed to their depths (shadow/cast_map_fixed.c). */
+void stin__cast_fixed_focus(const stin_context *ctx, uint32_t size, const float view[16],
+                            float proj[16], float *n, float *f);
+
+/* shadow/cast_readback.c (GL 1.1): bytes its slot part needs for desc d;
+ * init places it after the state (logs the choice); draw: light li's
+ * images from the light, mid-frame (1 if any product drew); mark: after
+ * the count, the stencil set to 0x80 where they shadow the frame's depth. */
+size_t stin__cast_readback_bytes(const stin_desc *d);
+void stin__cast_readback_init(stin_context *ctx);
+int stin__cast_readback_draw(stin_context *ctx, uint32_t li);
+void stin__cast_readback_mark(stin_context *ctx);
 
 #endif

@@ -25,7 +25,8 @@
  * orthographic one fitted to the draws. Point lights get six 90-degree maps
  * drawn mid-frame where there are FBOs (map-depth), kept to their squares by
  * a mask unit; elsewhere they fall back to stencil volumes (or none) and the
- * log says so once. */
+ * log says so once; the CSG products cast for them as volumes cast them
+ * (shadow/cast_map.c's map, marked after each count). */
 #include "shadow/map_fixed_private.h"
 
 /* The face mask's border texel lies just outside the 90-degree square: the
@@ -138,6 +139,10 @@ static stin_result fixed_init(stin_context *ctx)
         ctx->map_fixed->faces = 1;
     }
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    /* point lights without faces go to volumes: the CSG products cast
+     * for them through volumes' own map (shadow/cast_map.c) */
+    if (!ctx->map_fixed->faces)
+        stin__cast_map_init(ctx, 0);
     return STIN_OK;
 }
 
@@ -158,6 +163,7 @@ static void fixed_release(stin_context *ctx)
     if (ctx->map_fixed->face_mask)
         GL(ctx, DeleteTextures)(1, &ctx->map_fixed->face_mask);
     stin__map_facing_release(ctx);
+    stin__cast_map_release(ctx);
     stin__memzero(ctx->map_fixed, sizeof *ctx->map_fixed);
 }
 
@@ -337,6 +343,8 @@ static void fixed_prepass(stin_context *ctx)
     GL(ctx, PopMatrix)();
     if (ctx->map_fixed->fbo)
         GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    if (!ctx->map_fixed->faces) /* the products' maps of the point lights volumes take */
+        stin__cast_map_prepass_points(ctx);
 }
 
 /* ---- the lit pass's shadow test ----------------------------------------- */
@@ -555,13 +563,14 @@ static void fixed_light(stin_context *ctx, const stin__path *path, uint32_t li,
     }
     if (!mapped && l->type == STIN_LIGHT_POINT && stin__target_has_stencil(ctx)) {
         float world[4];
-        stin__casters_none(ctx, "from a point light without map faces (its shadow volumes "
-                                "stand in, and volumes cast no product)");
         world[0] = l->position[0];
         world[1] = l->position[1];
         world[2] = l->position[2];
         world[3] = 1.0f;
+        /* the products as volumes cast them: their map, marked after the count */
+        (void)stin__cast_map_draw(ctx, path, li, ctx->draw_fbo, 0);
         stin__volume_light(ctx, path, world, NULL);
+        stin__cast_map_mark(ctx);
     }
     if (mapped && !combine(ctx))
         stin__map_facing_shade(ctx, path, l, shade);

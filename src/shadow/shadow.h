@@ -191,6 +191,9 @@ void stin__cast_map_mask(stin_context *ctx, int channel, GLuint positions);
  * pre-pass, every light's map drawn in the frame's buffer before its clear
  * and copied out (draw then finds it made). */
 void stin__cast_map_prepass(stin_context *ctx);
+/* The same for the point lights alone: map-depth and map-combine without
+ * faces, which hand those to volumes (shadow/map_fixed.c). */
+void stin__cast_map_prepass_points(stin_context *ctx);
 /* After a light's last sample: stencil test and scissor off. */
 void stin__volume_light_end(stin_context *ctx);
 /* The frame's projection with the far plane at infinity (perspective) or

@@ -33,7 +33,11 @@
  *               volumes on the GLSL tiers and on GL1 for every light
  *               (map-depth's test in framebuffer objects, gl21's GL1
  *               tier, or drawn before the frame's clear and copied,
- *               gl14-shadow; map-combine's ramp, gl13-combine), vdsm
+ *               gl14-shadow; map-combine's ramp, gl13-combine; on GL
+ *               1.1, gl11, the light's depth images read back and
+ *               tested per pixel on the CPU, the log naming
+ *               "read-backs": SKIP before, and with that path switched
+ *               off every pixel the product decides differs), vdsm
  *               without GL 4.3's storage
  *               buffers (gl33-core) or past its walk's limits (cast-terms,
  *               cast-bores on gl45-core, where the log must say so, and
@@ -42,14 +46,17 @@
  *               around it), the technique's own elsewhere (0.5% volumes, 0
  *               vdsm), and the log must name the map. vdsm with storage
  *               buffers walks the others (stin_frame_stats.shadows.
- *               vdsm_csg_casts; none where the map casts). Where the
- *               technique casts no product (a
- *               point light under map-combine, or map-depth without
- *               framebuffer objects, which takes volumes) the render is
- *               held to the reference without casting (volumes' 0.5%) and
- *               the log must say why; volumes that cast none (GL1
- *               without multitexture: gl11) report SKIP with the log's
- *               reason when so held.
+ *               vdsm_csg_casts; none where the map casts). A point
+ *               light a map technique hands to volumes (map-combine, or
+ *               map-depth without framebuffer objects: gl13-combine,
+ *               gl14-shadow) casts the products as volumes do (their map,
+ *               marked after the count): held to the casting reference,
+ *               the map's 1%, stin_frame_stats.csg.cast_maps > 0 (before,
+ *               they cast none and these rows differed on every pixel the
+ *               product decides). Where the technique casts no product the
+ *               render is held to the reference without casting (volumes'
+ *               0.5%) and the log must say why; volumes that cast none
+ *               report SKIP with the log's reason when so held.
  *               STIN_DEBUG_CSG_NO_CAST turns casting off: the map rows
  *               fail with it (tested by hand: 8.5% and 16.3%).
  *   cast-<technique>-bands  the same at a 4096 map (map-pcf on gl45-core,
@@ -178,14 +185,13 @@ static int product_near(const truth *tr, int w, int h, int x, int y)
  * (map-depth's test, drawn in framebuffer objects or, without them, in the
  * frame's buffer before its clear and copied out) or texture_env_combine
  * (map-combine's ramp of depths), for every kind of light (a point light's
- * six faces each marking its own pyramid). gl11 has neither. */
+ * six faces each marking its own pyramid); on GL 1.1 (gl11: one texture
+ * unit) and wherever GL1 has neither map, through the light's depth
+ * images read back and tested per pixel on the CPU
+ * (shadow/cast_readback.c): wherever volumes run (they need a stencil). */
 int csg_volume_casts(const capture *one)
 {
-    const uint64_t compare = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
-    const uint64_t caps = one->caps_present;
-    return one->choice[STIN_FEATURE_LIGHTING].technique != STIN_TECH_LIGHTING_FIXED ||
-           ((caps & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE)) &&
-            ((caps & compare) == compare || (caps & STIN_CAP_BIT(STIN_CAP_TEXTURE_ENV_COMBINE))));
+    return (one->caps_present & STIN_CAP_BIT(STIN_CAP_STENCIL)) != 0;
 }
 
 static void test_cast(run *r, stin_tier tier, const struct cast_scene *c, const scene *s,
@@ -196,7 +202,7 @@ static void test_cast(run *r, stin_tier tier, const struct cast_scene *c, const 
         volume = t == STIN_TECH_SHADOWS_VOLUME, map = !volume && !vdsm, storage, past;
     long compared = 0, differ = 0, compared_product = 0, differ_product = 0, product_shadow = 0,
          hole = 0;
-    int said, cast, ok, logged, via_map;
+    int said, cast, ok, logged, via_map, readback;
     char name[256];
     const float *truth_vis;
     double bound;
@@ -221,12 +227,15 @@ static void test_cast(run *r, stin_tier tier, const struct cast_scene *c, const 
         capture_free(&one);
         return;
     }
-    /* a map casts, save a point light it hands to volumes (said in the log);
-     * vdsm walks them where the context has GL 4.3's storage buffers, else
-     * casts them through a map of its own; volumes cast through that map on
-     * the GLSL tiers */
+    /* a map casts, and a point light it hands to volumes (map-depth without
+     * framebuffer objects, map-combine) casts as volumes do; vdsm walks them
+     * where the context has GL 4.3's storage buffers, else casts them
+     * through a map of its own; volumes cast through that map on the GLSL
+     * tiers */
     said = strstr(one.fallbacks, "CSG products cast no shadow") != NULL;
-    cast = map ? s->lights[0].type != SCENE_LIGHT_POINT || !said : volume ? csg_volume_casts(&one) : 1;
+    cast = map && s->lights[0].type != SCENE_LIGHT_POINT ? 1
+           : map || volume                               ? csg_volume_casts(&one)
+                                                         : 1;
     storage = (one.caps_present & STIN_CAP_BIT(STIN_CAP_COMPUTE)) != 0;
     past = vdsm && storage && c->past_walk; /* the walk is there but cannot take the product */
     via_map = cast && (volume || (vdsm && (!storage || past)));
@@ -260,8 +269,12 @@ static void test_cast(run *r, stin_tier tier, const struct cast_scene *c, const 
         }
     if (via_map)
         bound = vdsm ? CAST_VDSM_MAX : CAST_VOLUME_MAX;
-    logged = (!via_map || strstr(one.fallbacks, vdsm ? "vdsm: CSG products cast through map-pcf"
-                                                     : "volume: CSG products cast through map-")) &&
+    readback = volume && one.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED &&
+               !(one.caps_present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE));
+    logged = (!via_map ||
+              strstr(one.fallbacks, vdsm       ? "vdsm: CSG products cast through map-pcf"
+                                    : readback ? "volume: CSG products cast through read-backs"
+                                               : "volume: CSG products cast through map-")) &&
              past == (strstr(one.fallbacks, "is past the walk's limits") != NULL);
     ok = compared && (double)differ <= bound * (double)compared &&
          (double)differ_product <= CAST_MAP_MAX * (double)compared_product &&
