@@ -92,7 +92,7 @@
  * normal does, so a low-poly sphere's lit side has no terminator steps; a
  * triangle whose vertex normals equal its facet normal (planes, boxes) is
  * drawn as before, and displaced draws keep their facets. Volumes follow
- * the rule too on closed meshes on the GLSL tiers (see Volumes), so a
+ * the rule too, on closed and open meshes, on every tier (see Volumes), so a
  * switch of the measured choice (below) changes no pixel off a shadow edge. The
  * position stage carries a geometry shader for it. The segment leaves the
  * surface by 2^-13 of the point's largest coordinate along its facet
@@ -196,8 +196,7 @@
  * what each frame ran. The lit programs are the same for both (one shadow
  * chunk): a switch builds nothing. A frame volumes would not draw the same
  * stays on vdsm and is not a trial: CSG products and displaced draws
- * (vdsm casts them exactly, volumes through a map), smooth open meshes
- * (volumes keep their facets, vdsm the terminator rule), blended draws (peeled
+ * (vdsm casts them exactly, volumes through a map), blended draws (peeled
  * layers are vdsm's receivers; transparent casters), area lights (vdsm
  * shadows them by 64 segments a pixel, volumes by samples), or a target without
  * a stencil buffer; where such a frame follows a volume frame, the
@@ -381,9 +380,33 @@
  * calls a frame; stin-bench --shadows (1 and 4 lights) stays within its
  * run-to-run noise, and a context's first frame pays the driver's build of
  * the alpha-tested pipeline once (llvmpipe: about 15 ms more shadow stage
- * in stin-render --stage-times). Open meshes (their volume counts each triangle between
- * a point and the light, the point's own included) keep the facets: the
- * terminator steps there.
+ * in stin-render --stage-times). Open meshes (not closed 2-manifolds:
+ * each triangle has its own volume, so a point's count is the number of
+ * triangles between it and the light, its own averted facet included)
+ * follow the rule too: a band pixel's count holds its own facet once and,
+ * where its ray leaves the mesh through a light-facing neighbour, that
+ * neighbour once more; near the mesh's open edge the ray may leave
+ * through the hole instead. So the band takes back its own facet's count
+ * and one more only where the pixel lies inside the volume of a
+ * light-facing triangle of the ring around the band (those sharing a
+ * corner with a band triangle or with one of its edge neighbours): the
+ * ring's volumes are built on the CPU and drawn with z-fail and
+ * GL_INVERT into stencil bit 0x40 (its parity; the counts must stay below
+ * 64 at band pixels), the band decrements where that bit is set and a
+ * count is left, and the ring's volumes drawn again clear it. A ray that
+ * leaves beyond the ring keeps its count (the facet's step, shadowed), and
+ * a pixel whose ray leaves through the hole is lit only where nothing else
+ * lies between it and the light. (Limit: a ray that leaves through the hole
+ * and then crosses a ring triangle farther along the same mesh, a bowl's
+ * band facing its own far rim, would have that crossing taken back too.)
+ * On tests/scenes/terminator/open-can.json
+ * (an open 12-slice cylinder and a box shadowing its rim) volumes agree
+ * with the reference's rule on every pixel off a shadow edge on GL1,
+ * GL2 and GL4. Its cost per light (sample) and open smooth caster: three
+ * looks at each triangle on the CPU (the band, the ring twice), two band
+ * draws and the ring's volumes (8 triangles each) twice; with fewer than 8
+ * stencil bits, or a band list larger than the frame scratch, only the own
+ * count is taken back.
  * With a
  * perspective projection the frame is drawn with the far plane at infinity
  * (stin_query_frame_projection), so geometry past the caller's far plane shows;

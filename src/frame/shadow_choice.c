@@ -11,8 +11,8 @@
  * through a map of their own), blended draws (vdsm makes each peeled
  * layer its receivers; transparent casters), an area light (vdsm shadows
  * it by 64 segments a pixel, volumes by a pass a sample: the penumbrae
- * differ), a target without a stencil buffer, or a smooth open mesh (vdsm
- * follows the terminator rule on it, volumes keep its facets). */
+ * differ), or a target without a stencil buffer. Smooth meshes, closed or
+ * open, take the terminator rule under both (shadow/volume_band.c). */
 static int volumes_draw(const stin_context *ctx)
 {
     uint32_t i;
@@ -23,9 +23,7 @@ static int volumes_draw(const stin_context *ctx)
             return 0;
     for (i = 0; i < ctx->draw_count; i++) {
         const stin_material *m = &ctx->draws[i].material;
-        const stin__mesh_slot *mesh = &ctx->meshes[ctx->draws[i].mesh_slot];
-        if (m->color[3] < 1.0f || stin__displace_active(ctx, m) ||
-            (mesh->smooth && !mesh->info.closed_manifold))
+        if (m->color[3] < 1.0f || stin__displace_active(ctx, m))
             return 0;
     }
     return 1;

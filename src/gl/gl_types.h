@@ -126,6 +126,7 @@ typedef void GLvoid;
 #define GL_KEEP 0x1E00
 #define GL_INCR 0x1E02
 #define GL_DECR 0x1E03
+#define GL_INVERT 0x150A
 #define GL_TEXTURE_BINDING_2D 0x8069
 /* GL 1.2 */
 #define GL_LIGHT_MODEL_COLOR_CONTROL 0x81F8

@@ -10,15 +10,9 @@
 
 #define NO_SCISSOR(s) ((s) == NULL)
 
-typedef struct volume_sink_state {
-    stin_context *ctx;
-    const stin__path *path;
-    const float *model;
-} volume_sink_state;
-
-static void sink(void *user, const float *xyzw, uint32_t n, int clockwise)
+void stin__volume_sink_draw(void *user, const float *xyzw, uint32_t n, int clockwise)
 {
-    volume_sink_state *s = (volume_sink_state *)user;
+    stin__volume_sink_state *s = (stin__volume_sink_state *)user;
     stin__pass_state ps = *stin__pass_current(s->ctx);
     ps.front_face = clockwise ? GL_CW : GL_CCW;
     stin__pass_apply(s->ctx, &ps);
@@ -157,7 +151,7 @@ static void draw_caster(stin_context *ctx, const stin__path *path, const stin__d
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     stin__volume_request r;
-    volume_sink_state st;
+    stin__volume_sink_state st;
     float inv[16];
     int k;
     uint32_t tris;
@@ -189,7 +183,7 @@ static void draw_caster(stin_context *ctx, const stin__path *path, const stin__d
     st.ctx = ctx;
     st.path = path;
     st.model = d->transform;
-    r.sink = sink;
+    r.sink = stin__volume_sink_draw;
     r.user = &st;
     tris = stin__volume_build(&r);
     ctx->stats.shadows.volume_triangles += tris;
@@ -260,100 +254,6 @@ static void lit_where_zero(stin__pass_state *ps)
     ps->front.mask = 0xffffffffu;
     ps->front.fail = ps->front.zfail = GL_KEEP;
     ps->front.zpass = GL_INCR;
-}
-
-/* Whether triangle tri may hold band fragments for the object-space light
- * l: some corner's normal turned otherwise than the facet, seen from a
- * corner (the interpolated normal's dot with the way to the light is
- * linear across the triangle, so its extremes lie at the corners). */
-static int in_band(const stin__vertex *v, const uint32_t *tri, const float l[4])
-{
-    const float *a = v[tri[0]].position, *b = v[tri[1]].position, *c = v[tri[2]].position;
-    float e1[3], e2[3], f[3], d[3][3], facet = 0.0f;
-    int j, k, i;
-    for (k = 0; k < 3; k++) {
-        e1[k] = b[k] - a[k];
-        e2[k] = c[k] - a[k];
-        for (j = 0; j < 3; j++)
-            d[j][k] = l[k] - l[3] * v[tri[j]].position[k];
-    }
-    f[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    f[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    f[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    for (k = 0; k < 3; k++)
-        facet += f[k] * d[0][k];
-    for (j = 0; j < 3; j++)
-        for (i = 0; i < 3; i++) {
-            const float *n = v[tri[i]].normal;
-            float s = n[0] * d[j][0] + n[1] * d[j][1] + n[2] * d[j][2];
-            if ((facet > 0.0f) != (s > 0.0f))
-                return 1;
-        }
-    return 0;
-}
-
-/* d's triangles that may hold band fragments, in chunks of frame scratch. */
-static void draw_band(stin_context *ctx, const stin__path *path, const stin__draw *d,
-                      const float light_world[4])
-{
-    const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    const stin__vertex *v = ctx->vertices + m->first_vertex;
-    const uint32_t *tris = ctx->indices + 3u * m->first_triangle;
-    uint32_t *out = (uint32_t *)(void *)ctx->frame_scratch, t, n = 0;
-    uint32_t room = (uint32_t)(ctx->frame_scratch_bytes / (3u * sizeof *out));
-    float inv[16], l[4];
-    int k;
-    if (!stin__mat4_invert(inv, d->transform) || room == 0)
-        return;
-    for (k = 0; k < 4; k++)
-        l[k] = inv[k] * light_world[0] + inv[4 + k] * light_world[1] +
-               inv[8 + k] * light_world[2] + inv[12 + k] * light_world[3];
-    for (t = 0; t < m->triangle_count; t++) {
-        if (!in_band(v, tris + 3u * t, l))
-            continue;
-        for (k = 0; k < 3; k++)
-            out[3u * n + (uint32_t)k] = tris[3u * t + (uint32_t)k];
-        if (++n == room) {
-            path->terminator_band(ctx, d, light_world, out, n);
-            n = 0;
-        }
-    }
-    if (n)
-        path->terminator_band(ctx, d, light_world, out, n);
-}
-
-/* The terminator rule (stin.h): a visible pixel of a closed mesh's facet
- * turned away from the light lies inside that mesh's volume exactly once
- * (the eye's ray enters it through a side face; z-fail: leaves it once
- * behind). Where its shading normal turns toward the light it is lit by
- * its own mesh, so its band takes that count back, clamped at zero, after
- * every volume counted: the lit pass's "count zero" is then the rule's.
- * Only the triangles that may hold the band are drawn (a thin ring).
- * Open meshes (per-triangle volumes), displaced and CSG draws keep facets. */
-static void take_back_own_volume(stin_context *ctx, const stin__path *path,
-                                 const float light_world[4])
-{
-    stin__pass_state ps = *stin__pass_current(ctx);
-    uint32_t i;
-    if (ctx->desc.debug_flags & STIN_DEBUG_VOLUME_FACETS)
-        return;
-    ps.two_sided = 0;
-    ps.cull = 0;
-    ps.front_face = GL_CCW;
-    ps.depth_clamp = 0;
-    ps.depth_func = GL_EQUAL;
-    ps.front.func = GL_ALWAYS;
-    ps.front.fail = ps.front.zfail = GL_KEEP;
-    ps.front.zpass = GL_DECR;
-    stin__pass_apply(ctx, &ps);
-    for (i = 0; i < ctx->draw_count; i++) {
-        const stin__draw *d = &ctx->draws[ctx->draw_order[i]];
-        if (d->shadow_caster && !d->csg && d->material.color[3] >= 1.0f &&
-            !stin__cast_map_casts(ctx, d) && ctx->meshes[d->mesh_slot].info.closed_manifold)
-            draw_band(ctx, path, d, light_world);
-    }
-    ps.depth_func = GL_LESS;
-    stin__pass_apply(ctx, &ps);
 }
 
 void stin__volume_light(stin_context *ctx, const stin__path *path, const float light_world[4],
@@ -431,7 +331,7 @@ void stin__volume_light(stin_context *ctx, const stin__path *path, const float l
         }
     }
     path->volume_end(ctx);
-    take_back_own_volume(ctx, path, light_world);
+    stin__volume_take_back_band(ctx, path, light_world, &reach);
     ps = *stin__pass_current(ctx);
     ps.front_face = GL_CCW;
     ps.cull = 0;

@@ -473,8 +473,8 @@ void shadow_tests(run *r, stin_tier tier, const char *path)
     if (!s.light_count)
         goto done;
     ref = reference_create(&s, err, sizeof err);
-    /* volumes take the terminator rule on closed meshes, on every tier */
-    reference_facet_terminator(ref, REFERENCE_FACETS_OPEN);
+    /* volumes take the terminator rule on every smooth mesh, on every tier */
+    reference_facet_terminator(ref, REFERENCE_FACETS_NONE);
     hits = malloc(sizeof *hits * (size_t)r->width * r->height);
     refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
     if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||

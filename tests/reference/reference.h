@@ -75,8 +75,8 @@ int reference_hit_on_plane(const reference *r, int width, int height, const ref_
  * goes back to the facet rule for a technique that still decides
  * self-shadowing by the facet (GL1's volumes, the fixed-function maps): the
  * ray from P, facing by the facet. REFERENCE_FACETS_OPEN keeps it for the
- * objects that are not closed 2-manifolds only (stin's volumes on the GLSL
- * tiers: an open mesh's volume is every triangle's own). */
+ * objects that are not closed 2-manifolds only (stin's volumes before they
+ * took the rule on open meshes: shadow/volume_band.c). */
 enum { REFERENCE_FACETS_NONE = 0, REFERENCE_FACETS_ALL = 1, REFERENCE_FACETS_OPEN = 2 };
 void reference_facet_terminator(reference *r, int on);
 
