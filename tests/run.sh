@@ -12,9 +12,10 @@
 #              bench suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
 #              DIR/PLATFORM.PROFILE.log (tools/compare-renders.sh diff-readbacks),
-#              STIN_REFERENCE_CACHE: the reference cache's directory (default
-#              BUILD_DIR/test-out/reference-cache, emptied before and after the
-#              run; set but empty: no cache, every suite computes its own).
+#              STIN_TEST_REFERENCE_CACHE=0: no reference cache, every image
+#              suite computes its own references (default: the suites share
+#              them in BUILD_DIR/test-out/reference-cache, emptied before and
+#              after the run).
 set -u
 # One suite (xargs runs this script again with --suite): its output, exit
 # status and wall seconds into SUITES/NNN.*. Dispatched before the set-up
@@ -51,8 +52,9 @@ SCENES=$(ls tests/scenes/*.json)
 # The image suites share whole-image reference results (Embree) through
 # files keyed by everything that determines them (docs/testing.md, "The
 # reference cache"); emptied here so no result outlives this run's build.
-CACHE=${STIN_REFERENCE_CACHE-$OUT/reference-cache}
-if [ -n "$CACHE" ]; then
+CACHE=
+if [ "${STIN_TEST_REFERENCE_CACHE:-1}" != 0 ]; then
+    CACHE=$OUT/reference-cache
     rm -rf "$CACHE"
     mkdir -p "$CACHE"
 fi
@@ -132,6 +134,8 @@ while read -r num name _; do
     echo "$(cat "$SUITES/$num.seconds" 2>/dev/null || echo 0) $name"
 done < "$SUITES/list" | sort -rn | head -n 10 | sed 's/^/  /'
 
-[ -n "$CACHE" ] && rm -rf "$CACHE"
+if [ -n "$CACHE" ]; then
+    rm -rf "$CACHE"
+fi
 
 awk '/^PASS /{p++} /^FAIL /{f++} /^SKIP /{s++} END {printf "%d passed, %d failed, %d skipped\n", p, f, s; exit f > 0}' "$LOG"
