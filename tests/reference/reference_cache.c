@@ -269,7 +269,7 @@ int ref_cache_load(const ref_cache_key *key, const ref_cache_part *parts, int co
     ok = fread(&fh, sizeof fh, 1, f) == 1 && !memcmp(fh.magic, magic, sizeof magic) &&
          fh.key[0] == key->k[0] && fh.key[1] == key->k[1] && fh.size == payload_size(parts, count);
     for (int i = 0; ok && i < count; i++)
-        ok = fread(parts[i].data, 1, parts[i].size, f) == parts[i].size;
+        ok = !parts[i].size || fread(parts[i].data, 1, parts[i].size, f) == parts[i].size;
     ok = ok && fgetc(f) == EOF;
     fclose(f);
     if (!ok)
@@ -302,7 +302,7 @@ void ref_cache_store(const ref_cache_key *key, const ref_cache_part *parts, int 
         return;
     ok = fwrite(&fh, sizeof fh, 1, f) == 1;
     for (int i = 0; ok && i < count; i++)
-        ok = fwrite(parts[i].data, 1, parts[i].size, f) == parts[i].size;
+        ok = !parts[i].size || fwrite(parts[i].data, 1, parts[i].size, f) == parts[i].size;
     ok = fclose(f) == 0 && ok;
     if (!ok || rename(tmp, path) != 0)
         remove(tmp);
