@@ -11,7 +11,11 @@
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme,
 #              bench and viewer suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
-#              DIR/PLATFORM.PROFILE.log (tools/compare-renders.sh diff-readbacks).
+#              DIR/PLATFORM.PROFILE.log (tools/compare-renders.sh diff-readbacks),
+#              STIN_TEST_REFERENCE_CACHE=0: no reference cache, every image
+#              suite computes its own references (default: the suites share
+#              them in BUILD_DIR/test-out/reference-cache, emptied before and
+#              after the run).
 set -u
 # One suite (xargs runs this script again with --suite): its output, exit
 # status and wall seconds into SUITES/NNN.*. Dispatched before the set-up
@@ -44,6 +48,17 @@ PLATFORMS=${STIN_TEST_PLATFORMS:-egl osmesa}
 PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45-core}
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 SCENES=$(ls tests/scenes/*.json)
+
+# The image suites share whole-image reference results (Embree) through
+# files keyed by everything that determines them (docs/testing.md, "The
+# reference cache"); emptied here so no result outlives this run's build.
+CACHE=
+if [ "${STIN_TEST_REFERENCE_CACHE:-1}" != 0 ]; then
+    CACHE=$OUT/reference-cache
+    rm -rf "$CACHE"
+    mkdir -p "$CACHE"
+fi
+export STIN_REFERENCE_CACHE="$CACHE"
 
 export CMOCKA_MESSAGE_OUTPUT=TAP
 # With a suite per core already, llvmpipe's own rasteriser threads only add
@@ -88,9 +103,13 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 
 # Started longest first (measured: gl45-core, gl33-core and gl21 take most
 # of the run; the command-line, bench, install and viewer checks next), so that the
-# parallel run ends together.
-awk '{ w = 1 }
+# parallel run ends together. gl45-core and gl33-core of the first platform
+# go before the second's: two suites that run the same scenes side by side
+# would both compute every reference the cache could have shared.
+first=${PLATFORMS%% *}
+awk -v first="image:$first:" '{ w = 1 }
      $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
+     w >= 5 && index($2, first) == 1 { w += 10 }
      $2 == "cli" || $2 == "bench" || $2 == "install" || $2 == "viewer" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
      { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
@@ -115,5 +134,9 @@ echo "slowest suites (wall seconds, $JOBS at a time):"
 while read -r num name _; do
     echo "$(cat "$SUITES/$num.seconds" 2>/dev/null || echo 0) $name"
 done < "$SUITES/list" | sort -rn | head -n 10 | sed 's/^/  /'
+
+if [ -n "$CACHE" ]; then
+    rm -rf "$CACHE"
+fi
 
 awk '/^PASS /{p++} /^FAIL /{f++} /^SKIP /{s++} END {printf "%d passed, %d failed, %d skipped\n", p, f, s; exit f > 0}' "$LOG"

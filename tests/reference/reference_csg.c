@@ -217,8 +217,8 @@ static void fill_cap(const reference *r, const ref_csg_product *p, const ref_cam
     (void)r;
 }
 
-int reference_csg_primary(const reference *r, const ref_csg_product *products, int count,
-                          int width, int height, ref_hit *hits, int *product_of)
+static int csg_primary_traced(const reference *r, const ref_csg_product *products, int count,
+                              int width, int height, ref_hit *hits, int *product_of)
 {
     ref_camera_frame cf;
     collector c;
@@ -350,6 +350,52 @@ done:
     return ok && rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
 }
 
+void ref_csg_hash_products(ref_hasher *h, const ref_csg_product *products, int count)
+{
+    ref_hash_u64(h, (uint64_t)count);
+    for (int p = 0; p < count; p++) {
+        ref_hash_array(h, products[p].objects, sizeof(int) * (size_t)products[p].primitive_count);
+        ref_hash_array(h, products[p].nodes, sizeof(stin_csg_node) * (size_t)products[p].node_count);
+    }
+}
+
+/* Cached by everything above and the products (reference_cache.h). */
+int reference_csg_primary(const reference *r, const ref_csg_product *products, int count,
+                          int width, int height, ref_hit *hits, int *product_of)
+{
+    ref_hasher h;
+    ref_cache_key key;
+    ref_cache_part parts[2];
+    size_t n = (size_t)width * (size_t)height;
+    int cached = 0;
+    if (r && hits && count >= 0 && (products || !count) && width > 0 && height > 0 &&
+        ref_cache_key_begin(r, "csg_primary", &h)) {
+        ref_csg_hash_products(&h, products, count);
+        ref_hash_u64(&h, (uint64_t)width);
+        ref_hash_u64(&h, (uint64_t)height);
+        ref_hash_u64(&h, product_of != NULL);
+        ref_cache_key_end(&h, &key);
+        parts[0].data = hits;
+        parts[0].size = n * sizeof *hits;
+        parts[1].data = product_of;
+        parts[1].size = product_of ? n * sizeof *product_of : 0;
+        cached = 1;
+        if (ref_cache_load(&key, parts, 2))
+            return 1;
+    }
+    int ok;
+    if (cached)
+        ref_cache_compute_begin();
+    ok = csg_primary_traced(r, products, count, width, height, hits, product_of);
+    if (cached)
+        ref_cache_compute_end();
+    if (!ok)
+        return 0;
+    if (cached)
+        ref_cache_store(&key, parts, 2);
+    return 1;
+}
+
 /* ---- products casting ------------------------------------------------------ */
 struct ref_csg_cast {
     product_index *index;
@@ -428,6 +474,14 @@ static int holds_before(const product_index *pi, const crossing *x, int n, doubl
         i = end;
     }
     return 0;
+}
+
+void ref_csg_hash_state(const reference *r, ref_hasher *h)
+{
+    ref_hash_array(h, r->csg_primitive, (size_t)r->object_count);
+    ref_hash_u64(h, r->csg_cast != NULL);
+    if (r->csg_cast)
+        ref_csg_hash_products(h, r->csg_cast->index[0].p, r->csg_cast->count);
 }
 
 int ref_csg_blocks(const reference *r, const float org[3], const float dir[3], double dist)

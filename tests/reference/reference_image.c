@@ -50,11 +50,9 @@ static void pixel(const scene *s, const reference *r, const ref_hit *h, int per_
         reference_transmittance(r, h, 0, px + REFERENCE_CH_T_R);
 }
 
-int reference_render_ex(const scene *s, const reference *r, int width, int height, int per_vertex,
-                        unsigned flags, float *out)
+static int render_traced(const scene *s, const reference *r, int width, int height,
+                         int per_vertex, unsigned flags, float *out)
 {
-    if (!s || !r || r->s != s || !out || width <= 0 || height <= 0)
-        return 0;
     size_t n = (size_t)width * (size_t)height;
     ref_hit *hits = malloc(n * sizeof *hits);
     float *weight = malloc(((size_t)s->light_count + 1) * sizeof *weight);
@@ -74,6 +72,41 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
     free(weight);
     free(hits);
     return ok;
+}
+
+/* Cached by the reference's state and the arguments (reference_cache.h). */
+int reference_render_ex(const scene *s, const reference *r, int width, int height, int per_vertex,
+                        unsigned flags, float *out)
+{
+    ref_hasher h;
+    ref_cache_key key;
+    ref_cache_part part;
+    int cached = 0;
+    if (!s || !r || r->s != s || !out || width <= 0 || height <= 0)
+        return 0;
+    if (ref_cache_key_begin(r, "render", &h)) {
+        ref_hash_u64(&h, (uint64_t)width);
+        ref_hash_u64(&h, (uint64_t)height);
+        ref_hash_u64(&h, (uint64_t)(int64_t)per_vertex);
+        ref_hash_u64(&h, flags);
+        ref_cache_key_end(&h, &key);
+        part.data = out;
+        part.size = (size_t)width * (size_t)height * REFERENCE_CHANNELS * sizeof *out;
+        cached = 1;
+        if (ref_cache_load(&key, &part, 1))
+            return 1;
+    }
+    int ok;
+    if (cached)
+        ref_cache_compute_begin();
+    ok = render_traced(s, r, width, height, per_vertex, flags, out);
+    if (cached)
+        ref_cache_compute_end();
+    if (!ok)
+        return 0;
+    if (cached)
+        ref_cache_store(&key, &part, 1);
+    return 1;
 }
 
 int reference_render(const scene *s, const reference *r, int width, int height, int per_vertex,

@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <embree3/rtcore.h>
 #include "reference.h"
+#include "reference_cache.h"
 
 typedef struct ref_object {
     uint32_t vertex_count, triangle_count;
@@ -33,6 +34,8 @@ struct reference {
     unsigned char *csg_primitive; /* per object, or NULL: 1 for a CSG primitive, which
                                    * neither shows on its own nor casts (reference_csg.h) */
     struct ref_csg_cast *csg_cast; /* products that cast (reference_csg_cast), or NULL */
+    int snapshot_hashed;          /* objects' hash taken (reference_cache.h: cache on) */
+    uint64_t snapshot_hash[2];
 };
 
 /* The inverse transpose of a column-major transform's 3x3, up to scale
@@ -109,6 +112,12 @@ void ref_csg_context_init(const reference *r, ref_csg_context *ctx);
  * crossings outgrew the list or memory ran out. */
 int ref_csg_blocks(const reference *r, const float org[3], const float dir[3], double dist);
 void ref_csg_cast_free(struct ref_csg_cast *c);
+/* The CSG state of r for a cache key (reference_cache.h): the marks and
+ * the casting products' contents. */
+void ref_csg_hash_state(const reference *r, ref_hasher *h);
+struct ref_csg_product;
+/* Products' contents (primitives' objects, nodes) for a cache key. */
+void ref_csg_hash_products(ref_hasher *h, const struct ref_csg_product *products, int count);
 /* Primary hits with the casting products shown (reference_csg_primary of
  * them); 0 where none are set or on failure. */
 int ref_csg_primary_cast(const reference *r, int width, int height, ref_hit *hits);

@@ -131,7 +131,7 @@ void ref_window_dir(const ref_camera_frame *cf, int width, int height, double px
         dir[c] = cf->f[c] + nx * cf->tx * cf->s[c] + ny * cf->ty * cf->u[c];
 }
 
-int reference_primary(const reference *r, int width, int height, ref_hit *hits)
+static int primary_traced(const reference *r, int width, int height, ref_hit *hits)
 {
     if (!r || !hits)
         return 0;
@@ -166,6 +166,36 @@ int reference_primary(const reference *r, int width, int height, ref_hit *hits)
         }
     }
     return rtcGetDeviceError(r->device) == RTC_ERROR_NONE;
+}
+
+/* Cached by the reference's state and the size (reference_cache.h). */
+int reference_primary(const reference *r, int width, int height, ref_hit *hits)
+{
+    ref_hasher h;
+    ref_cache_key key;
+    ref_cache_part part;
+    int cached = 0;
+    if (r && hits && width > 0 && height > 0 && ref_cache_key_begin(r, "primary", &h)) {
+        ref_hash_u64(&h, (uint64_t)width);
+        ref_hash_u64(&h, (uint64_t)height);
+        ref_cache_key_end(&h, &key);
+        part.data = hits;
+        part.size = (size_t)width * (size_t)height * sizeof *hits;
+        cached = 1;
+        if (ref_cache_load(&key, &part, 1))
+            return 1;
+    }
+    int ok;
+    if (cached)
+        ref_cache_compute_begin();
+    ok = primary_traced(r, width, height, hits);
+    if (cached)
+        ref_cache_compute_end();
+    if (!ok)
+        return 0;
+    if (cached)
+        ref_cache_store(&key, &part, 1);
+    return 1;
 }
 
 int reference_hit_on_plane(const reference *r, int width, int height, const ref_hit *hit,

@@ -201,6 +201,7 @@ reference *reference_create(const scene *s, char *err, size_t err_size)
     rtcCommitScene(r->rtc);
     if (!device_ok(r->device, "rtcCommitScene", err, err_size))
         goto fail;
+    ref_cache_snapshot(r);
     return r;
 fail:
     reference_destroy(r);
