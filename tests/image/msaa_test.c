@@ -296,6 +296,48 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex
     free(rgba);
 }
 
+/* A CSG product into the multisampled target must be refused, not drawn
+ * with lines along its faces' edges (stin.h, MULTISAMPLED TARGETS). */
+static void csg_refused(run *r, const scene *s, stin_tier tier)
+{
+    test_context tc;
+    stin_frame_desc fd;
+    stin_csg_primitive prim;
+    stin_csg_node node;
+    stin_csg_desc cd;
+    stin_result res = STIN_OK;
+    char name[64];
+    snprintf(name, sizeof name, "%s/msaa-csg-refused", stin_tier_name(tier));
+    if (!test_context_create(&tc, r, s, tier, STIN_TECH_NONE, 0)) {
+        report(r, "FAIL", name, "no context");
+        return;
+    }
+    memset(&fd, 0, sizeof fd);
+    scene_camera_matrices(&s->camera, s->width, s->height, fd.view, fd.projection);
+    fd.viewport[2] = s->width;
+    fd.viewport[3] = s->height;
+    fd.framebuffer = stin_platform_framebuffer(r->plat);
+    memset(&prim, 0, sizeof prim);
+    prim.mesh = tc.g.meshes[s->objects[0].mesh]; /* the ball: closed */
+    prim.material = tc.g.materials[s->objects[0].material];
+    memset(&node, 0, sizeof node);
+    memset(&cd, 0, sizeof cd);
+    cd.primitives = &prim;
+    cd.primitive_count = 1;
+    cd.nodes = &node;
+    cd.node_count = 1;
+    if (stin_begin_frame(tc.ctx, &fd) == STIN_OK) {
+        res = stin_draw_csg(tc.ctx, &cd);
+        stin_end_frame(tc.ctx);
+    }
+    report(r, res == STIN_ERROR_UNSUPPORTED && stin_query_frame_stats(tc.ctx).csg.dropped == 1
+                  ? "PASS" : "FAIL",
+           name, "stin_draw_csg into a %d-sample target: %s, %u dropped (want "
+           "STIN_ERROR_UNSUPPORTED, 1)", stin_platform_samples(r->plat), stin_result_name(res),
+           (unsigned)stin_query_frame_stats(tc.ctx).csg.dropped);
+    test_context_destroy(&tc);
+}
+
 /* One run a tier: GL4 on the two core profiles, GL2 and the GL1 path on
  * gl21 (the GL 1.x profiles hide framebuffer objects from stin). */
 static int runs_here(const run *r, stin_tier tier)
@@ -357,6 +399,8 @@ void msaa_tests(run *r, stin_tier tier, const char *path)
         for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
             if (cases[i].tier == tier)
                 one_case(r, &s, &cases[i], per_vertex, (const float(*)[2])pos, n);
+        if (tier != STIN_TIER_GL1)
+            csg_refused(r, &s, tier);
     }
     if (!stin_platform_set_samples(r->plat, 0, err, sizeof err))
         report(r, "FAIL", name, "back to the default framebuffer: %s", err);
