@@ -48,6 +48,7 @@ struct stin_platform {
     p_pixel_storei_fn pixel_storei;
     p_get_error_fn get_error;
     p_bind_buffer_fn bind_buffer;
+    stin_platform_msaa msaa; /* desc.samples > 1 or stin_platform_set_samples */
 };
 
 static const char *const override_vars[3] = {
@@ -228,7 +229,8 @@ stin_platform *stin_platform_create(const stin_platform_desc *desc, char *err, s
         p->egl = stin_egl_create(p->width, p->height, desc->profile, err, err_size);
     else
         p->osmesa = stin_osmesa_create(p->width, p->height, desc->profile, err, err_size);
-    if ((!p->egl && !p->osmesa) || !load_readback(p, err, err_size)) {
+    if ((!p->egl && !p->osmesa) || !load_readback(p, err, err_size) ||
+        !stin_platform_set_samples(p, desc->samples, err, err_size)) {
         stin_platform_destroy(p);
         return NULL;
     }
@@ -239,6 +241,8 @@ void stin_platform_destroy(stin_platform *p)
 {
     if (!p)
         return;
+    if (p->read_pixels) /* the context is current: its objects can go */
+        stin_platform_msaa_release(p, &p->msaa);
     stin_egl_destroy(p->egl);
     stin_osmesa_destroy(p->osmesa);
     free(p);
@@ -246,8 +250,29 @@ void stin_platform_destroy(stin_platform *p)
 
 uint32_t stin_platform_framebuffer(const stin_platform *p)
 {
-    (void)p;
-    return 0;
+    return p ? p->msaa.fbo : 0;
+}
+
+int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t err_size)
+{
+    if (!p || samples < 0 || samples > 64) {
+        stin_platform_errorf(err, err_size, "stin_platform_set_samples: bad samples %d",
+                             samples);
+        return 0;
+    }
+    if (!stin_platform_msaa_create(p, &p->msaa, samples, p->width, p->height, err, err_size)) {
+        char why[400];
+        snprintf(why, sizeof why, "%s", err ? err : "");
+        stin_platform_errorf(err, err_size, "%s: no multisampled target: %s",
+                             stin_platform_kind_name(p->kind), why);
+        return 0;
+    }
+    return 1;
+}
+
+int stin_platform_samples(const stin_platform *p)
+{
+    return p && p->msaa.fbo ? p->msaa.samples : 0;
 }
 
 int stin_platform_width(const stin_platform *p)
@@ -294,16 +319,30 @@ static void pack_end(stin_platform *p, const pack_state *s)
         p->bind_buffer(P_GL_PIXEL_PACK_BUFFER, (unsigned)s->buffer);
 }
 
+/* The buffer a read of `format` needs resolved from a multisampled target:
+ * colour is averaged over the samples, depth and stencil take one sample. */
+static unsigned resolve_bit(unsigned format)
+{
+    return format == P_GL_DEPTH_COMPONENT ? 0x100u   /* GL_DEPTH_BUFFER_BIT */
+           : format == P_GL_STENCIL_INDEX ? 0x400u   /* GL_STENCIL_BUFFER_BIT */
+                                          : 0x4000u; /* GL_COLOR_BUFFER_BIT */
+}
+
 /* Any GL error (pending ones included, which this consumes) fails the read. */
 static int read_pixels(stin_platform *p, unsigned format, unsigned type, void *out)
 {
     pack_state s;
-    int ok = 1, i;
+    int ok = 1, i, saved[2];
+    int resolved;
     if (!p || !out)
         return 0;
+    resolved = stin_platform_msaa_resolve(p, &p->msaa, resolve_bit(format), p->width,
+                                          p->height, saved);
     pack_begin(p, &s);
     p->read_pixels(0, 0, p->width, p->height, format, type, out);
     pack_end(p, &s);
+    if (resolved)
+        stin_platform_msaa_resolve_end(p, saved);
     for (i = 0; i < 32 && p->get_error() != P_GL_NO_ERROR; i++)
         ok = 0; /* bounded: a lost context can report errors forever */
     return ok;

@@ -25,6 +25,26 @@ void stin_platform_errorf(char *err, size_t err_size, const char *fmt, ...)
 #endif
     ;
 
+/* A multisampled target (platform_msaa.c): its framebuffer and the
+ * single-sampled twin read-backs resolve into; fbo 0: none. */
+typedef struct stin_platform_msaa {
+    unsigned fbo, resolve_fbo;
+    unsigned rb[4]; /* colour, depth-stencil; the twin's colour, depth-stencil */
+    int samples;    /* what the driver allocated (>= the count asked) */
+} stin_platform_msaa;
+
+/* Replaces m by a target of `samples` (<= 1: none, the default framebuffer)
+ * and leaves it bound; 0 with err when the context cannot. */
+int stin_platform_msaa_create(stin_platform *p, stin_platform_msaa *m, int samples, int w,
+                              int h, char *err, size_t err_size);
+void stin_platform_msaa_release(stin_platform *p, stin_platform_msaa *m);
+/* Blits buffer_bit (GL_COLOR/DEPTH/STENCIL_BUFFER_BIT) into the twin and
+ * binds it for reading; saved[] gets the draw and read bindings for
+ * stin_platform_msaa_resolve_end. 0: no target. */
+int stin_platform_msaa_resolve(stin_platform *p, stin_platform_msaa *m, unsigned buffer_bit,
+                               int w, int h, int saved[2]);
+void stin_platform_msaa_resolve_end(stin_platform *p, const int saved[2]);
+
 typedef struct stin_egl stin_egl;
 stin_egl *stin_egl_create(int width, int height, const stin_profile *profile,
                           char *err, size_t err_size);

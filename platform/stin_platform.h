@@ -53,6 +53,10 @@ typedef struct stin_platform_desc {
     stin_platform_kind kind;
     int width, height;              /* default 256 x 256 */
     const stin_profile *profile;    /* NULL: best compatibility context, no overrides */
+    /* 0 or 1: render into the single-sampled default framebuffer. 2, 4, 8...:
+     * into a framebuffer object of that many samples (stin_platform_set_samples);
+     * create fails, saying why, where the context has none. */
+    int samples;
 } stin_platform_desc;
 
 typedef struct stin_platform stin_platform;
@@ -73,8 +77,24 @@ void *stin_platform_get_proc_address(void *user, const char *name);
 const char *stin_platform_kind_name(stin_platform_kind kind);
 int stin_platform_kind_from_name(const char *name, stin_platform_kind *out); /* 1 ok */
 
-/* Framebuffer name to render into (0, the default framebuffer). */
+/* Framebuffer name to render into: 0, the default framebuffer, or the
+ * multisampled framebuffer object of stin_platform_set_samples. */
 uint32_t stin_platform_framebuffer(const stin_platform *p);
+
+/* Renders into a framebuffer object of `samples` samples from now on (an
+ * RGBA8 and a depth 24 / stencil 8 renderbuffer of the platform's size,
+ * left bound), replacing an earlier one; 0 or 1 goes back to the default
+ * framebuffer. Needs GL 3.0, GL_ARB_framebuffer_object, or
+ * GL_EXT_framebuffer_object with GL_EXT_framebuffer_multisample and
+ * GL_EXT_framebuffer_blit, on either backend, and samples <= GL_MAX_SAMPLES.
+ * Returns 1, or 0 with err saying which is missing (the target is then the
+ * default framebuffer). The read-backs below resolve it first: one blit into
+ * a single-sampled twin (colour averaged over the samples; depth and stencil
+ * one sample's, the driver's choice), the caller's framebuffer bindings kept. */
+int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t err_size);
+/* The samples of the current target as the driver allocated them (it may
+ * round the count up); 0 for the default framebuffer. */
+int stin_platform_samples(const stin_platform *p);
 int stin_platform_width(const stin_platform *p);
 int stin_platform_height(const stin_platform *p);
 

@@ -457,6 +457,54 @@
  * the frames' target changes to it; stin_query_choice keeps the context's
  * choice.
  *
+ * MULTISAMPLED TARGETS
+ * A frame draws into a multisampled framebuffer (GL_SAMPLE_BUFFERS > 0:
+ * a framebuffer object with multisampled renderbuffers, or a multisampled
+ * default framebuffer) as GL draws there: every pass is rasterised per
+ * sample, each fragment shaded once a pixel a surface at the pixel centre,
+ * and depth, stencil and the blend per sample. What each technique's
+ * visibility is per sample:
+ * - "volume": the stencil counts in the frame's own stencil are per sample
+ *   (one light, GL1, no masks); through the screen mask see below.
+ * - "map-pcf", "map-depth", "map-combine", "deep", "coloured": looked up
+ *   in the lit pass at the fragment's own surface point (the pixel centre
+ *   on that surface), so a sample never takes another surface's. (Tested
+ *   for map-pcf; the fixed-function maps drawn in the frame's own buffer,
+ *   without FBOs, are not tested into a multisampled default framebuffer.)
+ * - "vdsm", and "volume" through the screen mask (two or more lights, or
+ *   an area light, on GLSL tiers): the mask and vdsm's position buffer stay
+ *   single-sampled, one surface a pixel, the one at its centre. Where the
+ *   target is multisampled the lit pass also reads the depth the mask was
+ *   decided against (the mask's own, or vdsm's position buffer's) on one
+ *   more texture unit (the one after displacement's), and where the
+ *   fragment's depth is not within 16 steps of 24 bits of it, the fragment
+ *   belongs to a surface that covers some samples but not the centre (a
+ *   silhouette): it reads the neighbouring texel (of the 3 x 3) whose depth
+ *   is nearest its own, its own surface one pixel on. So no sample takes the
+ *   visibility of the surface in front of or behind it (no halo or dark
+ *   rim); where a shadow edge of the fragment's own surface meets the
+ *   silhouette, the visibility is that surface's one pixel away (a one-pixel
+ *   bound, as any per-pixel shading). Without a unit to spare (the unit
+ *   limit reached) the mask is read at the pixel as in a single-sampled
+ *   target. Measured (tests/image/msaa_test.c, 4 samples): 0 of 698
+ *   silhouette-band pixels beyond 0.03 of the reference shaded at the
+ *   target's sample positions, against 125 (up to 0.21) reading the mask at
+ *   the pixel.
+ * - Depth peeling ("depth-peel", "dual-peel", and deep's layers) peels into
+ *   single-sampled layers: the blended surfaces are composited once a pixel
+ *   over the multisampled frame (all samples of a pixel get the layer's
+ *   colour and the first layer's depth), so their edges are not
+ *   antialiased; the opaque draws under them are. "sorted" blends per
+ *   sample.
+ * - CSG products: the resolve keeps one depth a pixel, which the products'
+ *   faces do not match sample by sample (lines along their triangle edges),
+ *   so stin_draw_csg into a frame whose target is multisampled is refused:
+ *   STIN_ERROR_UNSUPPORTED, logged (TECHNIQUE_UNSUPPORTED), the product
+ *   dropped (stin_frame_stats.csg.dropped). Render products into a
+ *   single-sampled target.
+ * The visibility export's map and the outline are drawn from the
+ * single-sampled mask and buffers: one value a pixel.
+ *
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
  * viewport, and on return leaves these at their GL defaults: depth test off,
@@ -530,7 +578,8 @@
  * shadows.vdsm_atomic_receivers: point 0) leaves those binding points and the
  * generic GL_SHADER_STORAGE_BUFFER binding at 0.
  * Every other piece of GL state is left as the caller had it (framebuffer
- * sRGB encoding and multisampling too: the frame honours them as the target's).
+ * sRGB encoding and multisampling too: the frame honours them as the
+ * target's; MULTISAMPLED TARGETS above says how each technique does).
  * stin_create_mesh leaves the array buffer and vertex array 0's element
  * buffer at 0; the caller's vertex array object stays bound and untouched.
  * stin_create_texture leaves every binding as it found it (the active
@@ -1725,7 +1774,9 @@ typedef struct stin_csg_desc {
  * node visited, a shared node at each use; and per pair of terms crossed,
  * one plus the literals of both: about 0.1 s; a union of 2^12 terms
  * crossed with 2^12 terms each empty against it is past it) (the log names
- * which; the product is dropped and counted in stin_frame_stats.csg.dropped).
+ * which; the product is dropped and counted in stin_frame_stats.csg.dropped);
+ * STIN_ERROR_UNSUPPORTED when the frame's target is multisampled (logged,
+ * dropped and counted the same; MULTISAMPLED TARGETS).
  * Primitives no term names are not drawn. A product whose every term is
  * empty draws nothing and returns STIN_OK. stin_query_csg_terms reads the
  * normal form back. */
@@ -1946,7 +1997,8 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * passes exactly through (tests/image/csg_test.c: at most 2 a case).
  * In place: where the frame's only candidate is one scs term (one product
  * whose normal form has one term; the frame clears its buffers, no
- * desc.keep_contents; a framebuffer that is not multisampled), it runs in the
+ * desc.keep_contents; a framebuffer that is not multisampled: CSG into a
+ * multisampled one is refused, MULTISAMPLED TARGETS), it runs in the
  * frame's own depth and stencil, whose depth then holds the faces' own
  * rasterised depth: no work buffer, merge or snap (on llvmpipe 0.5-0.7x
  * the frame of a box minus one sphere). Its stencil is cleared after it. The result texture takes a copy of the

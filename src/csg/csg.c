@@ -229,6 +229,13 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
     }
     if (!desc)
         return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT, "desc is NULL", 0);
+    /* the resolve keeps one depth a pixel, which its faces' samples do not
+     * match: lines along their edges, so no product rather than a wrong one */
+    if (ctx->target.multisampled)
+        return refuse(ctx, STIN_ERROR_UNSUPPORTED, STIN_LOG_TECHNIQUE_UNSUPPORTED,
+                      "the frame's target is multisampled, which the CSG resolve (one depth "
+                      "a pixel) does not support; products drawn so far",
+                      ctx->csg->product_count);
     if (!desc->nodes || !desc->node_count || !desc->primitives || !desc->primitive_count)
         return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
                       "empty expression: nodes and primitives are required, node count",

@@ -70,6 +70,7 @@ typedef struct stin__program {
      * point light's atlas of six faces; the screen mask's chunk reuses them
      * but the area light's spread */
     GLint u_shadow_kind, u_shadow_matrix, u_shadow_params, u_shadow_map, u_shadow_soft;
+    GLint u_shadow_depth; /* the mask's depth, for multisampled targets (screen_mask.c) */
     /* the translucent-shadows lookup chunks (translucent/translucent.c): deep's even/odd
      * layers, coloured's transmittance and nearest-depth atlases */
     stin__translucent_locs deep, coloured;

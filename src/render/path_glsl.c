@@ -33,6 +33,7 @@ static const stin__uniform_name program_uniforms[] = {
     STIN__UNIFORM(stin__program, u_shadow_params, "u_shadow_params"),
     STIN__UNIFORM(stin__program, u_shadow_map, "u_shadow_map"),
     STIN__UNIFORM(stin__program, u_shadow_soft, "u_shadow_soft"),
+    STIN__UNIFORM(stin__program, u_shadow_depth, "u_shadow_depth"),
     STIN__UNIFORM(stin__program, u_color, "u_color"),
 };
 

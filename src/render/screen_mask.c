@@ -5,7 +5,13 @@
  * shades four lights reading their channels (shaders/gl2/shadow_mask.glsl).
  * N shadowed lights cost N visibility passes and N/4 lit passes instead of
  * N lit passes. Needs GLSL lighting, FBOs, packed depth-stencil textures
- * and one texture unit beyond the surface's. */
+ * and one texture unit beyond the surface's.
+ * The mask is single-sampled: one surface a pixel, the one at its centre.
+ * Into a multisampled target the lit pass also reads the depth the mask
+ * was drawn against (one more unit, after displacement's) and, where the
+ * fragment's surface is not the centre's, takes the neighbouring texel of
+ * its own surface (shadow_mask.glsl), so no sample gets the visibility of
+ * the surface behind or in front of it. */
 #include "internal.h"
 
 struct stin__mask_state {
@@ -16,7 +22,22 @@ struct stin__mask_state {
     int usable;           /* and the lit passes can read them (a unit for it) */
     int active;           /* lights of the current lit pass read from it */
     int depth_done;       /* the frame's depth is in the mask's buffer */
+    int depth_unit;       /* where the lit pass reads depth_source; -1: no unit spare */
+    GLuint depth_source;  /* the depth the mask was drawn against (this group's) */
 };
+
+/* Window depth the mask's depth may lie from the fragment's and still be
+ * its surface: a few steps of 24 bits (the two are rasterised alike, or by
+ * another program of the same transform: vdsm's position buffer). */
+#define MASK_SAME_SURFACE (16.0f / 16777216.0f)
+
+/* The lit pass takes the fragment's own surface's texel (file comment):
+ * into the frame's multisampled target, where a unit is spare. */
+static int lookup_by_depth(const stin_context *ctx)
+{
+    return ctx->target.multisampled && ctx->draw_fbo == ctx->frame.framebuffer &&
+           ctx->mask->depth_unit >= 0 && ctx->mask->depth_source != 0;
+}
 
 size_t stin__mask_state_bytes(const stin_desc *d)
 {
@@ -59,6 +80,8 @@ void stin__mask_init(stin_context *ctx)
         stin__technique_row_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     stin__memzero(ctx->mask, sizeof *ctx->mask);
     ctx->mask->unit = ctx->sel.shadow_unit;
+    ctx->mask->depth_unit =
+        ctx->sel.displace_unit + 1 < ctx->sel.unit_limit ? ctx->sel.displace_unit + 1 : -1;
     ctx->mask->drawable = stin__mask_drawable(ctx);
     if ((ctx->caps.present & need) != need ||
         ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED)
@@ -130,6 +153,7 @@ int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int d
     if (!ctx->mask->drawable || !ensure_size(ctx))
         return 0;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->mask->fbo);
+    ctx->mask->depth_source = depth ? ctx->mask->depth_stencil : 0; /* else the technique names its own */
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the mask */
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
     if (depth && !ctx->mask->depth_done) {
@@ -180,10 +204,17 @@ void stin__mask_end(stin_context *ctx)
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__bind_unit(ctx, ctx->mask->unit, GL_TEXTURE_2D, ctx->mask->color);
+    if (lookup_by_depth(ctx))
+        stin__bind_unit(ctx, ctx->mask->depth_unit, GL_TEXTURE_2D, ctx->mask->depth_source);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     ctx->mask->active = 1;
     stin__lit_uniforms_stale(ctx); /* the lit programs' mask uniforms change */
+}
+
+void stin__mask_depth_from(stin_context *ctx, GLuint depth)
+{
+    ctx->mask->depth_source = depth;
 }
 
 void stin__mask_read_done(stin_context *ctx)
@@ -206,7 +237,10 @@ void stin__mask_uniforms(stin_context *ctx, const stin__program *p)
         return;
     params[0] = 1.0f / (float)ctx->mask->width;
     params[1] = 1.0f / (float)ctx->mask->height;
-    params[2] = params[3] = 0.0f;
+    params[2] = lookup_by_depth(ctx) ? 1.0f : 0.0f;
+    params[3] = MASK_SAME_SURFACE;
     GL(ctx, Uniform4fv)(p->u_shadow_params, 1, params);
     GL(ctx, Uniform1i)(p->u_shadow_map, ctx->mask->unit);
+    if (params[2] != 0.0f)
+        GL(ctx, Uniform1i)(p->u_shadow_depth, ctx->mask->depth_unit);
 }

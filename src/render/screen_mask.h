@@ -50,6 +50,10 @@ int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int d
  * `share` into `channel` there, replacing it at 1, added below 1 (the
  * samples of an area light, whose shares sum to 1 in whole 255ths). */
 void stin__mask_write(stin_context *ctx, const stin__path *path, int channel, float share);
+/* A technique whose mask_depth is 0 names the depth its visibility was
+ * decided against (vdsm: its position buffer's), after stin__mask_begin;
+ * the lit pass into a multisampled target reads it (screen_mask.c). */
+void stin__mask_depth_from(stin_context *ctx, GLuint depth);
 /* Back to the frame's target, the mask bound for the lit pass. */
 void stin__mask_end(stin_context *ctx);
 /* The lit pass that read the mask is done. */

@@ -379,6 +379,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         v->said_area = 1;
     }
     light_point(l, light);
+    stin__mask_depth_from(ctx, v->depth); /* its mask's surfaces are the buffer's */
     faced = stin__vdsm_pyramid_draw(ctx, light, channel);
     ps.depth_test = ps.depth_write = ps.stencil_test = ps.blend = ps.cull = 0;
     ps.scissor = ps.depth_clamp = ps.polygon_offset = 0;

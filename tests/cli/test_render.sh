@@ -120,6 +120,15 @@ check "--stage-times without timer queries" $([ $? -eq 0 ] && grep -q "^stages: 
 "$R" tests/scenes/torus.json --size 0x10 > /dev/null 2>&1
 check "bad --size" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --size 0x10"
 
+"$R" tests/scenes/torus.json --samples 3 > /dev/null 2>&1
+check "bad --samples" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --samples 3"
+
+# A 4x target: rendered and resolved (msaa_test.c checks the pixels).
+"$R" tests/scenes/msaa/halo.json --size 64x48 --samples 4 -o "$T/msaa.png" > /dev/null 2> "$T/stderr"
+rc=$?
+check "--samples 4" $([ $rc -eq 0 ] && [ -s "$T/msaa.png" ] && echo 0 || echo 1) \
+    "exit $rc, stderr: $(head -c 300 "$T/stderr")"
+
 "$R" tests/scenes/torus.json --tier gl9 > /dev/null 2>&1
 check "unknown tier" $([ $? -eq 2 ] && echo 0 || echo 1) "accepted --tier gl9"
 

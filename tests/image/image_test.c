@@ -355,6 +355,7 @@ int main(int argc, char **argv)
             coloured_tests(&r, tiers[t], argv[i]);
             peel_tests(&r, tiers[t], argv[i]);
             viewport_tests(&r, tiers[t], argv[i]);
+            msaa_tests(&r, tiers[t], argv[i]);
             error_kept_tests(&r, tiers[t], argv[i]);
         }
     }

@@ -117,6 +117,10 @@ void coloured_tests(run *r, stin_tier tier, const char *path);
  * (peel_test.c). */
 void peel_tests(run *r, stin_tier tier, const char *path);
 void displace_tests(run *r, stin_tier tier, const char *path);
+/* Every shadow technique into a 4x multisampled target against the
+ * reference at its sample positions, at silhouettes (msaa_test.c; from
+ * shadow-overlap, on msaa/halo.json beside it). */
+void msaa_tests(run *r, stin_tier tier, const char *path);
 /* The seed's displacement behaviour 5 on a built-in plate, once per GLSL
  * tier (displace_seed_test.c); caps: the context's present capabilities. */
 void displace_seed_tests(run *r, stin_tier tier, uint64_t caps);

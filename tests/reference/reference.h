@@ -57,6 +57,10 @@ void reference_destroy(reference *r);
  * scene camera. hits has width*height entries, row-major, bottom row first.
  * Returns 1, or 0 on bad arguments or an Embree error. */
 int reference_primary(const reference *r, int width, int height, ref_hit *hits);
+/* The same through the point (x + dx, y + dy) of every pixel (x, y) instead
+ * of its centre: one sample position of a multisampled frame. */
+int reference_primary_at(const reference *r, int width, int height, double dx, double dy,
+                         ref_hit *hits);
 
 /* The point of hit's triangle seen through window point (px, py) of a
  * width x height image (pixels from the bottom-left corner: pixel (x, y) has

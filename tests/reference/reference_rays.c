@@ -133,6 +133,12 @@ void ref_window_dir(const ref_camera_frame *cf, int width, int height, double px
 
 static int primary_traced(const reference *r, int width, int height, ref_hit *hits)
 {
+    return reference_primary_at(r, width, height, 0.5, 0.5, hits);
+}
+
+int reference_primary_at(const reference *r, int width, int height, double dx, double dy,
+                         ref_hit *hits)
+{
     if (!r || !hits)
         return 0;
     const scene_camera *cam = &r->s->camera;
@@ -145,8 +151,8 @@ static int primary_traced(const reference *r, int width, int height, ref_hit *hi
     for (size_t i = 0; i < total; i++) {
         double dir[3];
         struct RTCRayHit *rh = &rays[n];
-        ref_window_dir(&cf, width, height, (double)(i % (size_t)width) + 0.5,
-                   (double)(i / (size_t)width) + 0.5, dir);
+        ref_window_dir(&cf, width, height, (double)(i % (size_t)width) + dx,
+                   (double)(i / (size_t)width) + dy, dir);
         memset(rh, 0, sizeof *rh);
         rh->ray.org_x = cam->eye[0];
         rh->ray.org_y = cam->eye[1];

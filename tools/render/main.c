@@ -243,6 +243,11 @@ int main(int argc, char **argv)
         fail_line(NULL, "no GL context: %s", err);
         goto done;
     }
+    if (o.samples > 1 && !stin_platform_set_samples(plat, o.samples, err, sizeof err)) {
+        fail_line(NULL, "--samples %d: %s", o.samples, err);
+        rc = EXIT_UNSUPPORTED;
+        goto done;
+    }
     desc.get_proc_address = stin_platform_get_proc_address;
     desc.get_proc_user = plat;
     desc.log = cli_log_fn;

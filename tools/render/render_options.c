@@ -25,6 +25,9 @@ void render_usage(FILE *f)
     fprintf(f, "\n"
                "  --platform egl|osmesa     context backend (default egl)\n"
                "  --size WxH                image size (default: the scene's, else 512x512)\n"
+               "  --samples N               render into a multisampled target of N samples (1, 2,\n"
+               "                            4, 8, 16; default 1: single-sampled); exit 3 where the\n"
+               "                            context has no such target\n"
                "  --shadows NAME            shadow technique: vdsm (GL4), volume, map-pcf (GLSL tiers), map (map-depth where the\n"
                "                            context has ARB_shadow, else map-combine), map-depth,\n"
                "                            map-combine, shadows-off or off (default auto)\n"
@@ -107,7 +110,8 @@ static int takes_value(const char *a)
 {
     static const char *const names[] = {"-o", "--tier", "--profile", "--platform", "--shadows",
                                         "--volume-mode", "--shadow-map-size", "--max-triangles",
-                                        "--surface", "--csg", "--size", "--debug", "--outline"};
+                                        "--surface", "--csg", "--size", "--debug", "--outline",
+                                        "--samples"};
     size_t i;
     for (i = 0; i < sizeof names / sizeof names[0]; i++)
         if (!strcmp(a, names[i]))
@@ -207,6 +211,13 @@ int render_parse_args(int argc, char **argv, options *o)
             o->surface = argv[++i];
         } else if (!strcmp(a, "--csg")) {
             o->csg = argv[++i];
+        } else if (!strcmp(a, "--samples")) {
+            char extra;
+            if (sscanf(argv[++i], "%d%c", &o->samples, &extra) != 1 || o->samples < 1 ||
+                o->samples > 16 || (o->samples & (o->samples - 1))) {
+                fprintf(stderr, "stin-render: --samples wants 1, 2, 4, 8 or 16, got '%s'\n", v);
+                return 0;
+            }
         } else if (!strcmp(a, "--size")) {
             char extra;
             if (sscanf(argv[++i], "%dx%d%c", &o->width, &o->height, &extra) != 2 ||

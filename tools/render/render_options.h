@@ -23,6 +23,7 @@ typedef struct options {
     uint64_t max_triangles;     /* work limit; 0 = none */
     stin_tier tier;
     int width, height, caps, verbose;
+    int samples;                /* --samples: the target's samples (0: single-sampled) */
     int no_output;              /* --no-output: render and print statistics only */
     int progress;               /* --progress: progress lines even when stderr is no terminal */
     int frame;                  /* --frame: fit the camera to the scene's bounds */
