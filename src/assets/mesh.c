@@ -156,11 +156,12 @@ static void bounds(stin_mesh_info *info, const stin__vertex *v, uint32_t n)
         }
 }
 
-void stin__mesh_derive(stin_context *ctx, stin__mesh_slot *m)
+void stin__mesh_derive(stin_context *ctx, stin__mesh_slot *m, int uvs_changed)
 {
     const stin__vertex *verts = ctx->vertices + m->first_vertex;
     const uint32_t *tris = ctx->indices + 3u * m->first_triangle;
-    stin__mesh_mean_edges(verts, tris, m->triangle_count, &m->uv_edge, &m->edge);
+    stin__mesh_mean_edges(verts, tris, m->triangle_count, uvs_changed ? &m->uv_edge : NULL,
+                          &m->edge);
     m->smooth = stin__mesh_smooth(verts, tris, m->triangle_count);
     bounds(&m->info, verts, m->vertex_count);
 }
@@ -334,7 +335,7 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->subdivide = desc->subdivide;
     m->has_uvs = desc->uvs != NULL;
     m->dynamic = 0;
-    stin__mesh_derive(ctx, m);
+    stin__mesh_derive(ctx, m, 1);
     m->info.vertex_count = nv;
     m->info.triangle_count = kept;
     m->info.degenerate_dropped = desc->index_count / 3u - kept0;

@@ -141,7 +141,7 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
     }
     *one_piece = (int64_t)welded_count - (int64_t)edge_count + (int64_t)tri_count == 2;
     info->convex = info->closed_manifold && *one_piece &&
-                   stin__mesh_concave_edges(verts, tris, adjacency, welds, tri_count) == 0;
+                   !stin__mesh_concave_edge(verts, tris, adjacency, welds, tri_count);
     return STIN_OK;
 }
 
@@ -161,18 +161,17 @@ static uint32_t twin(const uint32_t *tris, const uint32_t *adjacency, const uint
 }
 
 /* Each pair once, from its lower half-edge, as the build met them. */
-uint32_t stin__mesh_concave_edges(const stin__vertex *verts, const uint32_t *tris,
-                                  const uint32_t *adjacency, const uint32_t *welds,
-                                  uint32_t tri_count)
+int stin__mesh_concave_edge(const stin__vertex *verts, const uint32_t *tris,
+                            const uint32_t *adjacency, const uint32_t *welds, uint32_t tri_count)
 {
-    uint32_t he, concave = 0;
+    uint32_t he;
     for (he = 0; he < 3u * tri_count; he++) {
         uint32_t n = adjacency[he], h1;
         if (n == NO_TRI)
             continue;
         h1 = twin(tris, adjacency, welds, he / 3u, he % 3u, n);
-        if (h1 != NO_TRI && h1 > he)
-            concave += !convex_edge(verts, tris, he / 3u, h1);
+        if (h1 != NO_TRI && h1 > he && !convex_edge(verts, tris, he / 3u, h1))
+            return 1;
     }
-    return concave;
+    return 0;
 }

@@ -93,15 +93,15 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
                                        const uint32_t *tris, uint32_t tri_count,
                                        uint32_t *adjacency, uint32_t *welds,
                                        stin_mesh_info *info, int *one_piece);
-/* Shared edges (adjacency) whose dihedral angle is concave, each pair
- * tested once as at creation (stin_mesh_info.convex). */
-uint32_t stin__mesh_concave_edges(const stin__vertex *verts, const uint32_t *tris,
+/* 1 when a shared edge (adjacency) bends concave, each pair tested once
+ * from its lower half-edge (stin_mesh_info.convex). */
+int stin__mesh_concave_edge(const stin__vertex *verts, const uint32_t *tris,
                                   const uint32_t *adjacency, const uint32_t *welds,
                                   uint32_t tri_count);
 /* The shape's derived data from the mesh's stored vertices (after
- * normals, tangents and welds): bounds, convex, the terminator rule's
- * smooth flag and the mean edge lengths. */
-void stin__mesh_derive(stin_context *ctx, stin__mesh_slot *m);
+ * normals, tangents and welds): bounds, the terminator rule's smooth flag
+ * and the mean edge lengths (the uv one too where uvs_changed). */
+void stin__mesh_derive(stin_context *ctx, stin__mesh_slot *m, int uvs_changed);
 /* 1 when all n floats of v (NULL: none) are finite, else 0 with the first
  * bad index in *bad. */
 int stin__mesh_finite(const float *v, uint32_t n, uint32_t *bad);
@@ -139,7 +139,8 @@ void stin__subdivide(struct stin_context *ctx, stin__vertex *verts, uint32_t ver
  * order, no scratch. */
 void stin__subdivide_again(stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
                            uint32_t levels);
-/* Mean uv length and mean object-space length of the triangles' edges. */
+/* Mean uv length (uv_edge NULL: not wanted) and mean object-space length
+ * of the triangles' edges. */
 void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
                            float *uv_edge, float *edge);
 /* 1 when a corner's normal leaves its triangle's facet normal by more than

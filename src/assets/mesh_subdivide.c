@@ -163,12 +163,15 @@ void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint
     uint32_t i;
     for (i = 0; i < 3u * tri_count; i++) {
         const stin__vertex *a = &verts[tris[i]], *b = &verts[tris[i - i % 3u + (i + 1u) % 3u]];
-        float du = a->uv[0] - b->uv[0], dv = a->uv[1] - b->uv[1];
         float dx = a->position[0] - b->position[0], dy = a->position[1] - b->position[1];
         float dz = a->position[2] - b->position[2];
-        uv += (double)stin__sqrtf(du * du + dv * dv);
+        if (uv_edge) {
+            float du = a->uv[0] - b->uv[0], dv = a->uv[1] - b->uv[1];
+            uv += (double)stin__sqrtf(du * du + dv * dv);
+        }
         len += (double)stin__sqrtf(dx * dx + dy * dy + dz * dz);
     }
-    *uv_edge = tri_count ? (float)(uv / (3.0 * (double)tri_count)) : 0.0f;
+    if (uv_edge)
+        *uv_edge = tri_count ? (float)(uv / (3.0 * (double)tri_count)) : 0.0f;
     *edge = tri_count ? (float)(len / (3.0 * (double)tri_count)) : 0.0f;
 }

@@ -108,12 +108,11 @@ stin_result stin_update_mesh(stin_context *ctx, stin_mesh mesh, const stin_mesh_
         stin__mesh_tangents(verts, m->vertex_count, tris, m->triangle_count,
                             (float *)(void *)ctx->scratch, m->has_uvs);
     snap_welds(verts, ctx->welds + m->first_vertex, m->vertex_count);
-    stin__mesh_derive(ctx, m);
+    stin__mesh_derive(ctx, m, 0); /* uvs as created */
     m->info.convex = m->info.closed_manifold && m->one_piece &&
-                     stin__mesh_concave_edges(verts, tris,
+                     !stin__mesh_concave_edge(verts, tris,
                                               ctx->adjacency + 3u * m->first_triangle,
-                                              ctx->welds + m->first_vertex,
-                                              m->triangle_count) == 0;
+                                              ctx->welds + m->first_vertex, m->triangle_count);
     m->dynamic = 1;
     stin__mesh_upload_vertices(ctx, m);
     return STIN_OK;

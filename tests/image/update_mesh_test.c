@@ -259,11 +259,7 @@ static int compare_frame(const run *r, const scene *s, const image *img, int ban
 
 static stin_result update(test_context *tc, const scene *s)
 {
-    stin_mesh_update_desc u;
-    memset(&u, 0, sizeof u);
-    u.positions = s->meshes[1].positions;
-    u.normals = s->meshes[1].normals;
-    u.vertex_count = s->meshes[1].vertex_count;
+    stin_mesh_update_desc u = scene_gpu_mesh_update_desc(&s->meshes[1]);
     return stin_update_mesh(tc->ctx, tc->g.meshes[1], &u);
 }
 
@@ -279,13 +275,7 @@ static void equals_create(run *r, stin_tier tier, test_context *tc, const scene 
     size_t i, n = (size_t)updated->width * updated->height * AOV_CHANNELS;
     snprintf(name, sizeof name, "%s/update-mesh/update-equals-create", stin_tier_name(tier));
     stin_destroy_mesh(tc->ctx, tc->g.meshes[1]);
-    memset(&md, 0, sizeof md);
-    md.positions = s->meshes[1].positions;
-    md.normals = s->meshes[1].normals;
-    md.uvs = s->meshes[1].uvs;
-    md.vertex_count = s->meshes[1].vertex_count;
-    md.indices = s->meshes[1].indices;
-    md.index_count = 3u * s->meshes[1].triangle_count;
+    md = scene_gpu_mesh_desc(&s->meshes[1]);
     memset(&again, 0, sizeof again);
     if (stin_create_mesh(tc->ctx, &md, &tc->g.meshes[1]) != STIN_OK ||
         !aov_capture(&tc->g, tc->ctx, r->plat, &again, NULL, NULL, err, sizeof err)) {
