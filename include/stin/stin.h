@@ -509,7 +509,8 @@
  * Every other piece of GL state is left as the caller had it (framebuffer
  * sRGB encoding and multisampling too: the frame honours them as the target's).
  * stin_create_mesh leaves the array buffer and vertex array 0's element
- * buffer at 0; the caller's vertex array object stays bound and untouched.
+ * buffer at 0, stin_update_mesh the array buffer; the caller's vertex array
+ * object stays bound and untouched.
  * stin_create_texture leaves every binding as it found it (the active
  * unit's 2D texture included) and reads `pixels` as tightly packed client
  * memory whatever the caller's unpack state: alignment, row length, skip
@@ -534,7 +535,7 @@
  * passed to stin_create must be at least that big (else STIN_ERROR_OUT_OF_MEMORY
  * and a log line saying how many bytes are needed). All capacities live in the
  * block. A full pool is a logged error that drops the item. With every default
- * the block is about 39 MB, most of it the vertex and triangle stores
+ * the block is about 41 MB, most of it the vertex and triangle stores
  * (52 bytes a vertex: 48 of data and its weld, 24 a triangle), the mesh-creation scratch for
  * max_mesh_triangles and the 8 MiB texture staging: size them to the
  * application's assets (stin_desc_fit with stin_texture_staging_bytes).
@@ -1473,14 +1474,17 @@ typedef struct stin_mesh_update_desc {
  * positions is redone, so every technique (volumes, vdsm, the maps, deep
  * and coloured maps, CSG, displacement) casts and draws the new shape in
  * the next frame.
- * Cost: one pass over the vertices and one over the triangles (normals
- * where none are given, tangents, bounds), plus an upload of the vertex
- * buffer (48 bytes a vertex, glBufferData: the buffer's usage becomes
- * GL_DYNAMIC_DRAW) where the context has buffer objects; no adjacency,
- * welding or index upload. Tangents: as given, else recomputed from the
- * uvs where the mesh was created with uvs (the uv gradients against the
- * new positions), else an arbitrary perpendicular to the new normal (as
- * stin_create_mesh gives a mesh without uvs).
+ * Cost: a few passes over the vertices and triangles (normals where none
+ * are given, tangents, bounds, the mean edge length, and for a closed mesh
+ * of one piece the convexity test), plus an upload of the vertex buffer
+ * (48 bytes a vertex, glBufferData into the same buffer: its usage becomes
+ * GL_DYNAMIC_DRAW) where the context has buffer objects; no index
+ * validation, welding, adjacency or index upload: about 3-5x cheaper than
+ * destroying and creating the mesh (docs/benchmarks.md, "Mesh updates").
+ * Tangents: as given (xyz as they are, w made +1 or -1), else recomputed
+ * from the uvs where the mesh was created with uvs (their gradients over
+ * the new positions), else an arbitrary perpendicular to the new normal
+ * (as stin_create_mesh gives a mesh without uvs).
  * Welds: vertices stin_create_mesh welded (stin_mesh_desc.weld_tolerance)
  * stay one vertex: each takes the new position of the first vertex of its
  * group (the lowest index, the one it was snapped onto at creation),
@@ -1488,26 +1492,27 @@ typedef struct stin_mesh_update_desc {
  * watertight. Give welded copies (uv seams, split normals) the same
  * position, as skinning equal rest positions with equal weights does, and
  * nothing is moved; their normals and tangents stay their own.
- * stin_mesh_info: bounds_min/max and convex (the same test as at creation,
- * over the kept adjacency) are recomputed; vertex and triangle counts,
- * degenerate_dropped, open_edges, nonmanifold_edges, closed_manifold and
- * welded_vertices are kept (topology). Whether the normals bend away from
- * the facets (the terminator rule, which also decides the measured choice
- * between vdsm and volumes) is tested again on the new data. A triangle dropped as degenerate
- * at creation stays dropped; one the new positions flatten stays (it casts
- * and covers nothing). A subdivided mesh (stin_mesh_desc.subdivide) takes
- * its source vertices; the midpoints are made again as at creation.
- * The result equals destroying the mesh and creating it from the new data
- * (bit for bit, where the new positions weld as the old ones did).
- * Errors (logged, the mesh unchanged): STIN_ERROR_INVALID_ARGUMENT for a
- * NULL context, desc or positions, a vertex_count other than the
- * creation's, or tangents for a subdivided mesh; STIN_ERROR_INVALID_HANDLE
- * for a stale or foreign handle; STIN_ERROR_INVALID_MESH for a NaN or Inf
- * position, normal or tangent (the vertex named); STIN_ERROR_INVALID_STATE
- * while a frame is open (between stin_begin_frame and stin_end_frame: its
- * draws were recorded against the mesh's current shape). GL state: as
- * stin_create_mesh (the array buffer left at 0, the caller's vertex array
- * untouched). */
+ * stin_mesh_info: bounds_min/max and convex (the same test as at
+ * creation, over the kept adjacency) are recomputed; vertex and triangle
+ * counts, degenerate_dropped, open_edges, nonmanifold_edges,
+ * closed_manifold and welded_vertices are kept (topology). Whether the
+ * normals bend away from the facets (the terminator rule, which also
+ * decides the measured choice between vdsm and volumes) is tested again.
+ * A triangle dropped as degenerate at creation stays dropped; one the new
+ * positions flatten stays (it covers and casts nothing). A subdivided mesh
+ * (stin_mesh_desc.subdivide) takes its source vertices; the midpoints are
+ * made again as at creation. The result equals destroying the mesh and
+ * creating it from the new data, bit for bit, where the new positions weld
+ * and drop triangles as the creation's did.
+ * Errors (logged where there is a context; the mesh unchanged):
+ * STIN_ERROR_INVALID_ARGUMENT for a NULL context, desc or positions, a
+ * vertex_count other than the creation's, or tangents for a subdivided
+ * mesh; STIN_ERROR_INVALID_HANDLE for a stale or foreign handle;
+ * STIN_ERROR_INVALID_MESH for a NaN or Inf position, normal or tangent
+ * (the vertex named); STIN_ERROR_INVALID_STATE while a frame is open
+ * (between stin_begin_frame and stin_end_frame: its draws were recorded
+ * against the mesh's current shape). GL state: as stin_create_mesh (the
+ * array buffer left at 0, the caller's vertex array untouched). */
 stin_result stin_update_mesh(stin_context *ctx, stin_mesh mesh,
                              const stin_mesh_update_desc *desc);
 
