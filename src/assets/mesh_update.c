@@ -3,10 +3,18 @@
  * topology kept. The same steps as creation in the same order (normals,
  * tangents, then the creation's welds snapped), so an update equals
  * destroying and creating the mesh; adjacency, welding and the index
- * buffers are not redone. Everything a technique derives from positions
- * each frame reads the block's vertices or the vertex buffer; what is kept
- * per mesh (bounds, convexity, the smooth flag, edge lengths) is redone
- * here. */
+ * buffers are not redone.
+ * Who reads positions, and why nothing else needs refreshing: every
+ * technique reads the shape each frame, from the block (volumes' CPU
+ * extrusion, GL1 client arrays, DOT3's light vectors, the fixed path's
+ * terminator band, vdsm's parity test for CSG lights) or from the vertex
+ * buffer (the lit passes, maps, deep and coloured maps, vdsm and GL4's
+ * extrusion through the adjacency vertex array, which reads the same
+ * buffer name). What is kept per mesh is redone here: bounds (draw
+ * culling, volumes' reach, the light cameras' fit, CSG's rectangles and
+ * boxes, deep's fit), convexity (scs), the smooth flag (the terminator
+ * rule, the measured choice) and the mean edge length (displacement's mip
+ * level). Welds keep the adjacency buffer's far vertices bit-equal. */
 #include "internal.h"
 
 static stin_result refuse(stin_context *ctx, stin_result r, stin_log_item item, const char *fmt,
