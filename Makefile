@@ -112,7 +112,7 @@ READBACK_WRAP := -Wl,--wrap=stin_platform_read_color,--wrap=stin_platform_read_d
 STIN_CALL_WRAP := $(addprefix -Xlinker --wrap=,stin_create stin_destroy \
   stin_query_desc stin_query_caps stin_query_tier stin_query_choice stin_detect_caps \
   stin_query_extension stin_create_mesh stin_query_mesh_info stin_query_mesh_adjacency \
-  stin_query_mesh_tangent stin_destroy_mesh stin_create_texture stin_destroy_texture \
+  stin_query_mesh_tangent stin_destroy_mesh stin_update_mesh stin_create_texture stin_destroy_texture \
   stin_begin_frame stin_add_light stin_draw stin_end_frame stin_draw_csg stin_query_csg_terms \
   stin_query_frame_stats stin_query_frame_projection stin_query_visibility_map \
   stin_bind_visibility stin_debug_query_counters stin_debug_query_shadow_map)
@@ -230,8 +230,11 @@ demo: deps
 # against a scratch install and checks their pictures) ----------------------
 EXAMPLE_CFLAGS := -std=c99 -D_POSIX_C_SOURCE=200809L $(WARN) -pedantic $(OPT) -Iinclude
 examples: $(B)/examples/egl_shadow $(B)/examples/egl_app_shader $(B)/examples/osmesa_shadow \
-  $(if $(VIEWER_GLFW),$(B)/examples/viewer)
+  $(B)/examples/skinned $(if $(VIEWER_GLFW),$(B)/examples/viewer)
 $(B)/examples/egl_%: examples/egl_%.c examples/example_scene.h examples/example_egl.h $(B)/libstin.a
+	@mkdir -p $(@D)
+	$(CC) $(EXAMPLE_CFLAGS) -o $@ $< $(B)/libstin.a -lEGL -lm
+$(B)/examples/skinned: examples/skinned.c examples/example_scene.h examples/example_egl.h $(B)/libstin.a
 	@mkdir -p $(@D)
 	$(CC) $(EXAMPLE_CFLAGS) -o $@ $< $(B)/libstin.a -lEGL -lm
 $(B)/examples/osmesa_shadow: examples/osmesa_shadow.c examples/example_scene.h $(B)/libstin.a

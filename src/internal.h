@@ -48,6 +48,8 @@ struct stin_context {
     stin__mesh_slot *meshes;
     stin__texture_slot *textures;
     stin__vertex *vertices;   /* max_vertices */
+    uint32_t *welds;          /* max_vertices: the vertex (of its mesh) each was welded
+                               * onto at creation, for stin_update_mesh */
     uint32_t *indices;        /* 3 * max_triangles */
     uint32_t *adjacency;      /* 3 * max_triangles */
     stin__range_alloc vertex_ranges, triangle_ranges;

@@ -581,7 +581,8 @@
  * sRGB encoding and multisampling too: the frame honours them as the
  * target's; MULTISAMPLED TARGETS above says how each technique does).
  * stin_create_mesh leaves the array buffer and vertex array 0's element
- * buffer at 0; the caller's vertex array object stays bound and untouched.
+ * buffer at 0, stin_update_mesh the array buffer; the caller's vertex array
+ * object stays bound and untouched.
  * stin_create_texture leaves every binding as it found it (the active
  * unit's 2D texture included) and reads `pixels` as tightly packed client
  * memory whatever the caller's unpack state: alignment, row length, skip
@@ -606,8 +607,8 @@
  * passed to stin_create must be at least that big (else STIN_ERROR_OUT_OF_MEMORY
  * and a log line saying how many bytes are needed). All capacities live in the
  * block. A full pool is a logged error that drops the item. With every default
- * the block is about 39 MB, most of it the vertex and triangle stores
- * (48 bytes a vertex, 24 a triangle), the mesh-creation scratch for
+ * the block is about 41 MB, most of it the vertex and triangle stores
+ * (52 bytes a vertex: 48 of data and its weld, 24 a triangle), the mesh-creation scratch for
  * max_mesh_triangles and the 8 MiB texture staging: size them to the
  * application's assets (stin_desc_fit with stin_texture_staging_bytes).
  *
@@ -1525,6 +1526,67 @@ stin_result stin_query_mesh_tangent(const stin_context *ctx, stin_mesh mesh, uin
                                     float out_tangent[4]);
 /* Refused (logged, the mesh stays) while a frame is open: its draws may use it. */
 void stin_destroy_mesh(stin_context *ctx, stin_mesh mesh);
+
+/* New vertex data for a mesh whose shape changes (a character skinned or
+ * morphed on the CPU): the same vertices in the same order, the triangles
+ * and uvs as created. */
+typedef struct stin_mesh_update_desc {
+    const float *positions;   /* 3 floats per vertex, required */
+    const float *normals;     /* 3 per vertex; default: area-weighted face normals of
+                               * the new positions (as stin_create_mesh) */
+    const float *tangents;    /* 4 per vertex: xyz and handedness (w < 0: -1, else +1);
+                               * default: recomputed (below). Not with subdivide. */
+    uint32_t vertex_count;    /* must equal the stin_mesh_desc.vertex_count the mesh
+                               * was created with */
+} stin_mesh_update_desc;
+
+/* Replaces a mesh's positions and normals (and tangents) between frames,
+ * keeping its topology: the triangles, the adjacency, the welds, the
+ * adjacency index buffer and the GL names stay; what is derived from
+ * positions is redone, so every technique (volumes, vdsm, the maps, deep
+ * and coloured maps, CSG, displacement) casts and draws the new shape in
+ * the next frame.
+ * Cost: a few passes over the vertices and triangles (normals where none
+ * are given, tangents, bounds, the mean edge length, and for a closed mesh
+ * of one piece the convexity test), plus an upload of the vertex buffer
+ * (48 bytes a vertex, glBufferData into the same buffer: its usage becomes
+ * GL_DYNAMIC_DRAW) where the context has buffer objects; no index
+ * validation, welding, adjacency or index upload: about 3-5x cheaper than
+ * destroying and creating the mesh (docs/benchmarks.md, "Mesh updates").
+ * Tangents: as given (xyz as they are, w made +1 or -1), else recomputed
+ * from the uvs where the mesh was created with uvs (their gradients over
+ * the new positions), else an arbitrary perpendicular to the new normal
+ * (as stin_create_mesh gives a mesh without uvs).
+ * Welds: vertices stin_create_mesh welded (stin_mesh_desc.weld_tolerance)
+ * stay one vertex: each takes the new position of the first vertex of its
+ * group (the lowest index, the one it was snapped onto at creation),
+ * whatever position it is given, so volumes and the drawn surface stay
+ * watertight. Give welded copies (uv seams, split normals) the same
+ * position, as skinning equal rest positions with equal weights does, and
+ * nothing is moved; their normals and tangents stay their own.
+ * stin_mesh_info: bounds_min/max and convex (the same test as at
+ * creation, over the kept adjacency) are recomputed; vertex and triangle
+ * counts, degenerate_dropped, open_edges, nonmanifold_edges,
+ * closed_manifold and welded_vertices are kept (topology). Whether the
+ * normals bend away from the facets (the terminator rule, which also
+ * decides the measured choice between vdsm and volumes) is tested again.
+ * A triangle dropped as degenerate at creation stays dropped; one the new
+ * positions flatten stays (it covers and casts nothing). A subdivided mesh
+ * (stin_mesh_desc.subdivide) takes its source vertices; the midpoints are
+ * made again as at creation. The result equals destroying the mesh and
+ * creating it from the new data, bit for bit, where the new positions weld
+ * and drop triangles as the creation's did.
+ * Errors (logged where there is a context; the mesh unchanged):
+ * STIN_ERROR_INVALID_ARGUMENT for a NULL context, desc or positions, a
+ * vertex_count other than the creation's, or tangents for a subdivided
+ * mesh; STIN_ERROR_INVALID_HANDLE for a stale or foreign handle;
+ * STIN_ERROR_INVALID_MESH for a NaN or Inf position, normal or tangent
+ * (the vertex named); STIN_ERROR_INVALID_STATE while a frame is open
+ * (between stin_begin_frame and stin_end_frame: its draws were recorded
+ * against the mesh's current shape). GL state: as stin_create_mesh (the
+ * array buffer left at 0, the caller's vertex array untouched). */
+stin_result stin_update_mesh(stin_context *ctx, stin_mesh mesh,
+                             const stin_mesh_update_desc *desc);
 
 /* ---- textures ----------------------------------------------------------- */
 typedef enum stin_texture_kind {

@@ -24,7 +24,7 @@ static stin_result fail(stin_context *ctx, stin_result r, stin_log_item item, co
     return r;
 }
 
-static int finite_all(const float *v, uint32_t n, uint32_t *bad)
+int stin__mesh_finite(const float *v, uint32_t n, uint32_t *bad)
 {
     uint32_t i;
     if (!v)
@@ -81,13 +81,13 @@ static stin_result validate(stin_context *ctx, const stin_mesh_desc *d, uint32_t
             return fail(ctx, STIN_ERROR_INVALID_MESH, STIN_LOG_MESH_INDEX_RANGE,
                         "stin_create_mesh: index %u is out of range (vertex count %u)", i,
                         d->vertex_count);
-    if (!finite_all(d->positions, 3u * d->vertex_count, &bad))
+    if (!stin__mesh_finite(d->positions, 3u * d->vertex_count, &bad))
         return fail(ctx, STIN_ERROR_INVALID_MESH, STIN_LOG_MESH_NOT_FINITE,
                     "stin_create_mesh: position of vertex %u is NaN or Inf", bad / 3u, 0);
-    if (!finite_all(d->normals, 3u * d->vertex_count, &bad))
+    if (!stin__mesh_finite(d->normals, 3u * d->vertex_count, &bad))
         return fail(ctx, STIN_ERROR_INVALID_MESH, STIN_LOG_MESH_NOT_FINITE,
                     "stin_create_mesh: normal of vertex %u is NaN or Inf", bad / 3u, 0);
-    if (!finite_all(d->uvs, 2u * d->vertex_count, &bad))
+    if (!stin__mesh_finite(d->uvs, 2u * d->vertex_count, &bad))
         return fail(ctx, STIN_ERROR_INVALID_MESH, STIN_LOG_MESH_NOT_FINITE,
                     "stin_create_mesh: uv of vertex %u is NaN or Inf", bad / 2u, 0);
     tris = d->index_count / 3u;
@@ -118,8 +118,8 @@ static void copy_vertices(stin__vertex *v, const stin_mesh_desc *d)
 }
 
 /* Given normals are normalised; a zero one takes the face-derived normal. */
-static void fix_normals(stin__vertex *v, uint32_t n, const uint32_t *tris, uint32_t tri_count,
-                        int given)
+void stin__mesh_fix_normals(stin__vertex *v, uint32_t n, const uint32_t *tris,
+                            uint32_t tri_count, int given)
 {
     uint32_t i, zero = 0;
     if (!given) {
@@ -156,6 +156,16 @@ static void bounds(stin_mesh_info *info, const stin__vertex *v, uint32_t n)
         }
 }
 
+void stin__mesh_derive(stin_context *ctx, stin__mesh_slot *m, int uvs_changed)
+{
+    const stin__vertex *verts = ctx->vertices + m->first_vertex;
+    const uint32_t *tris = ctx->indices + 3u * m->first_triangle;
+    stin__mesh_mean_edges(verts, tris, m->triangle_count, uvs_changed ? &m->uv_edge : NULL,
+                          &m->edge);
+    m->smooth = stin__mesh_smooth(verts, tris, m->triangle_count);
+    bounds(&m->info, verts, m->vertex_count);
+}
+
 /* Attribute layout shared by every GLSL program (see gl/shader.c). */
 void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base)
 {
@@ -165,6 +175,14 @@ void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base)
     GL(ctx, VertexAttribPointer)(1, 3, GL_FLOAT, GL_FALSE, stride, b + 12);
     GL(ctx, VertexAttribPointer)(2, 2, GL_FLOAT, GL_FALSE, stride, b + 24);
     GL(ctx, VertexAttribPointer)(3, 4, GL_FLOAT, GL_FALSE, stride, b + 32);
+}
+
+static void vertex_data(stin_context *ctx, const stin__mesh_slot *m)
+{
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
+    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(stin__vertex) * m->vertex_count),
+                        ctx->vertices + m->first_vertex,
+                        m->dynamic ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW);
 }
 
 static void upload(stin_context *ctx, stin__mesh_slot *m)
@@ -180,9 +198,7 @@ static void upload(stin_context *ctx, stin__mesh_slot *m)
         GL(ctx, GenVertexArrays)(1, &m->vao);
         GL(ctx, BindVertexArray)(m->vao);
     }
-    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
-    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(stin__vertex) * m->vertex_count),
-                        ctx->vertices + m->first_vertex, GL_STATIC_DRAW);
+    vertex_data(ctx, m);
     GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
     GL(ctx, BufferData)(GL_ELEMENT_ARRAY_BUFFER,
                         (GLsizeiptr)(sizeof(uint32_t) * 3u * m->triangle_count),
@@ -195,6 +211,20 @@ static void upload(stin_context *ctx, stin__mesh_slot *m)
     }
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
+    stin__vao_end(ctx, caller_vao);
+}
+
+/* The same buffer name again (the vertex arrays that read it, adjacency's
+ * too, stay valid): glBufferData orphans the old storage, so a frame the
+ * driver still draws from the old data does not stall the update. */
+void stin__mesh_upload_vertices(stin_context *ctx, stin__mesh_slot *m)
+{
+    GLuint caller_vao;
+    if (!m->vbo)
+        return; /* client arrays straight from the arena */
+    caller_vao = stin__vao_begin(ctx);
+    vertex_data(ctx, m);
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     stin__vao_end(ctx, caller_vao);
 }
 
@@ -285,11 +315,12 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     stin__subdivide(ctx, verts, desc->vertex_count, tris, kept, desc->subdivide);
     kept0 = kept;
     kept = nt;
-    fix_normals(verts, nv, tris, kept, desc->normals != NULL);
+    stin__mesh_fix_normals(verts, nv, tris, kept, desc->normals != NULL);
     stin__mesh_tangents(verts, nv, tris, kept, (float *)(void *)ctx->scratch,
                         desc->uvs != NULL);
-    r = stin__mesh_adjacency_build(ctx, verts, nv, desc->weld_tolerance, tris,
-                                   kept, ctx->adjacency + 3u * tfirst, &m->info);
+    r = stin__mesh_adjacency_build(ctx, verts, nv, desc->weld_tolerance, tris, kept,
+                                   ctx->adjacency + 3u * tfirst, ctx->welds + vfirst, &m->info,
+                                   &m->one_piece);
     if (r != STIN_OK) {
         stin__range_give(&ctx->vertex_ranges, vfirst);
         stin__range_give(&ctx->triangle_ranges, tfirst);
@@ -300,12 +331,14 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->vertex_count = nv;
     m->first_triangle = tfirst;
     m->triangle_count = kept;
-    stin__mesh_mean_edges(verts, tris, kept, &m->uv_edge, &m->edge);
-    m->smooth = stin__mesh_smooth(verts, tris, kept);
+    m->source_vertices = desc->vertex_count;
+    m->subdivide = desc->subdivide;
+    m->has_uvs = desc->uvs != NULL;
+    m->dynamic = 0;
+    stin__mesh_derive(ctx, m, 1);
     m->info.vertex_count = nv;
     m->info.triangle_count = kept;
     m->info.degenerate_dropped = desc->index_count / 3u - kept0;
-    bounds(&m->info, verts, nv);
     m->vbo = m->ibo = m->vao = m->adj_ibo = m->adj_vao = 0;
     out->id = stin__handle_issue(&m->handle, slot, ctx->desc.max_meshes, ctx->handle_tag);
     upload(ctx, m);

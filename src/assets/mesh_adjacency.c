@@ -63,7 +63,8 @@ size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count)
 stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
                                        uint32_t vertex_count, float weld_tolerance,
                                        const uint32_t *tris, uint32_t tri_count,
-                                       uint32_t *adjacency, stin_mesh_info *info)
+                                       uint32_t *adjacency, uint32_t *welds,
+                                       stin_mesh_info *info, int *one_piece)
 {
     uint32_t weld_size = pow2_at_least(2ull * vertex_count);
     uint32_t edge_size = pow2_at_least(4ull * tri_count);
@@ -73,7 +74,7 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
     edge_entry *edges = (edge_entry *)(void *)(base + stin__align16(
         (size_t)vertex_count * 4u + (size_t)weld_size * 4u));
     unsigned char *counts = (unsigned char *)(edges + edge_size);
-    uint32_t he, i, inconsistent = 0, concave = 0, welded_count = 0, edge_count = 0;
+    uint32_t he, i, inconsistent = 0, welded_count = 0, edge_count = 0;
 
     if (stin__adjacency_scratch_bytes(vertex_count, tri_count) > ctx->scratch_bytes)
         return STIN_ERROR_CAPACITY;
@@ -128,16 +129,49 @@ stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
         }
         adjacency[h0] = t1;
         adjacency[h1] = t0;
-        concave += !convex_edge(verts, tris, t0, h1);
     }
     info->nonmanifold_edges += inconsistent;
     info->closed_manifold = info->open_edges == 0 && info->nonmanifold_edges == 0;
     /* Locally convex closed pieces are spheres (Euler characteristic 2
      * each): one piece when V - E + F = 2 (an unused vertex also breaks it:
      * not convex, the safe side) */
-    for (i = 0; i < vertex_count; i++)
+    for (i = 0; i < vertex_count; i++) {
         welded_count += weld[i] == i;
-    info->convex = info->closed_manifold && concave == 0 &&
-                   (int64_t)welded_count - (int64_t)edge_count + (int64_t)tri_count == 2;
+        welds[i] = weld[i];
+    }
+    *one_piece = (int64_t)welded_count - (int64_t)edge_count + (int64_t)tri_count == 2;
+    info->convex = info->closed_manifold && *one_piece &&
+                   !stin__mesh_concave_edge(verts, tris, adjacency, welds, tri_count);
     return STIN_OK;
+}
+
+/* The half-edge of triangle n that runs t's edge e (the same welded
+ * endpoints), or NO_TRI. A sliver may border t on two edges: the
+ * endpoints tell which. */
+static uint32_t twin(const uint32_t *tris, const uint32_t *adjacency, const uint32_t *welds,
+                     uint32_t t, uint32_t e, uint32_t n)
+{
+    uint32_t a = welds[tris[3u * t + e]], b = welds[tris[3u * t + (e + 1u) % 3u]], j;
+    for (j = 0; j < 3u; j++) {
+        uint32_t p = welds[tris[3u * n + j]], q = welds[tris[3u * n + (j + 1u) % 3u]];
+        if (adjacency[3u * n + j] == t && ((p == b && q == a) || (p == a && q == b)))
+            return 3u * n + j;
+    }
+    return NO_TRI;
+}
+
+/* Each pair once, from its lower half-edge, as the build met them. */
+int stin__mesh_concave_edge(const stin__vertex *verts, const uint32_t *tris,
+                            const uint32_t *adjacency, const uint32_t *welds, uint32_t tri_count)
+{
+    uint32_t he;
+    for (he = 0; he < 3u * tri_count; he++) {
+        uint32_t n = adjacency[he], h1;
+        if (n == NO_TRI)
+            continue;
+        h1 = twin(tris, adjacency, welds, he / 3u, he % 3u, n);
+        if (h1 != NO_TRI && h1 > he && !convex_edge(verts, tris, he / 3u, h1))
+            return 1;
+    }
+    return 0;
 }

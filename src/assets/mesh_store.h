@@ -48,6 +48,12 @@ typedef struct stin__mesh_slot {
                                * displacement's uv per unit, its mip level) */
     int smooth;               /* some triangle's vertex normals bend away from its
                                * facet: the terminator rule applies (stin__mesh_smooth) */
+    /* what stin_update_mesh needs of the creation: the caller's vertex
+     * count (before subdivision), the levels, whether uvs were given (the
+     * tangents follow them), and one closed piece (convex's Euler test) */
+    uint32_t source_vertices, subdivide;
+    int has_uvs, one_piece;
+    int dynamic;              /* updated once: its vertex buffer is GL_DYNAMIC_DRAW */
 } stin__mesh_slot;
 
 typedef struct stin__texture_slot {
@@ -79,12 +85,33 @@ stin__texture_slot *stin__texture_lookup(const stin_context *ctx, stin_texture t
 /* Points attributes 0..3 (position, normal, uv, tangent) at base (NULL with a VBO bound). */
 void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base);
 /* Adjacency over position-welded vertices (weld_tolerance as in
- * stin_mesh_desc; welded positions are snapped); fills info's edge counts
- * and welded_vertices. */
+ * stin_mesh_desc; welded positions are snapped); fills info's edge counts,
+ * welded_vertices and convex, welds (the vertex each was welded onto) and
+ * one_piece (V - E + F = 2 over welded positions). */
 stin_result stin__mesh_adjacency_build(stin_context *ctx, stin__vertex *verts,
                                        uint32_t vertex_count, float weld_tolerance,
                                        const uint32_t *tris, uint32_t tri_count,
-                                       uint32_t *adjacency, stin_mesh_info *info);
+                                       uint32_t *adjacency, uint32_t *welds,
+                                       stin_mesh_info *info, int *one_piece);
+/* 1 when a shared edge (adjacency) bends concave, each pair tested once
+ * from its lower half-edge (stin_mesh_info.convex). */
+int stin__mesh_concave_edge(const stin__vertex *verts, const uint32_t *tris,
+                                  const uint32_t *adjacency, const uint32_t *welds,
+                                  uint32_t tri_count);
+/* The shape's derived data from the mesh's stored vertices (after
+ * normals, tangents and welds): bounds, the terminator rule's smooth flag
+ * and the mean edge lengths (the uv one too where uvs_changed). */
+void stin__mesh_derive(stin_context *ctx, stin__mesh_slot *m, int uvs_changed);
+/* 1 when all n floats of v (NULL: none) are finite, else 0 with the first
+ * bad index in *bad. */
+int stin__mesh_finite(const float *v, uint32_t n, uint32_t *bad);
+/* Normals: given ones normalised (a zero one: all face-derived), else
+ * area-weighted face normals. */
+void stin__mesh_fix_normals(stin__vertex *v, uint32_t n, const uint32_t *tris,
+                            uint32_t tri_count, int given);
+/* The vertex buffer again from the arena (GL_DYNAMIC_DRAW once m->dynamic),
+ * where the context has buffer objects. */
+void stin__mesh_upload_vertices(stin_context *ctx, stin__mesh_slot *m);
 /* weld[i] = the first vertex within `tolerance` of vertex i (see
  * stin_mesh_desc.weld_tolerance), using `table` (size a power of two at least
  * 2 n) as scratch; moves welded positions onto it and returns how many moved. */
@@ -107,7 +134,13 @@ stin_result stin__subdivide_counts(struct stin_context *ctx, const uint32_t *tri
                                    uint32_t *out_triangles);
 void stin__subdivide(struct stin_context *ctx, stin__vertex *verts, uint32_t vertex_count,
                      uint32_t *tris, uint32_t tri_count, uint32_t levels);
-/* Mean uv length and mean object-space length of the triangles' edges. */
+/* The midpoint vertices of an already subdivided mesh made again from its
+ * source vertices (stin_update_mesh): read from the subdivided triangles'
+ * order, no scratch. */
+void stin__subdivide_again(stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
+                           uint32_t levels);
+/* Mean uv length (uv_edge NULL: not wanted) and mean object-space length
+ * of the triangles' edges. */
 void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
                            float *uv_edge, float *edge);
 /* 1 when a corner's normal leaves its triangle's facet normal by more than

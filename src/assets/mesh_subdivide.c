@@ -129,6 +129,33 @@ void stin__subdivide(stin_context *ctx, stin__vertex *verts, uint32_t vertex_cou
     }
 }
 
+/* Corner k of triangle i of level `level` (of `levels`): a child k keeps
+ * its parent's corner k (the order stin__subdivide writes), so it is the
+ * stored triangle reached by child k at every level below. */
+static uint32_t corner(const uint32_t *tris, uint32_t level, uint32_t levels, uint32_t i,
+                       uint32_t k)
+{
+    for (; level < levels; level++)
+        i = 4u * i + k;
+    return tris[3u * i + k];
+}
+
+void stin__subdivide_again(stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
+                           uint32_t levels)
+{
+    uint32_t l, i, count = tri_count >> (2u * levels);
+    for (l = 0; l < levels; l++, count *= 4u)
+        for (i = 0; i < count; i++) {
+            uint32_t a = corner(tris, l, levels, i, 0), b = corner(tris, l, levels, i, 1);
+            uint32_t c = corner(tris, l, levels, i, 2);
+            /* children 0 (a, ab, ca) and 1 (ab, b, bc); a midpoint is the
+             * same whichever neighbour made it (a + b == b + a) */
+            midpoint(&verts[corner(tris, l + 1u, levels, 4u * i, 1)], &verts[a], &verts[b]);
+            midpoint(&verts[corner(tris, l + 1u, levels, 4u * i + 1u, 2)], &verts[b], &verts[c]);
+            midpoint(&verts[corner(tris, l + 1u, levels, 4u * i, 2)], &verts[c], &verts[a]);
+        }
+}
+
 void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
                            float *uv_edge, float *edge)
 {
@@ -136,12 +163,15 @@ void stin__mesh_mean_edges(const stin__vertex *verts, const uint32_t *tris, uint
     uint32_t i;
     for (i = 0; i < 3u * tri_count; i++) {
         const stin__vertex *a = &verts[tris[i]], *b = &verts[tris[i - i % 3u + (i + 1u) % 3u]];
-        float du = a->uv[0] - b->uv[0], dv = a->uv[1] - b->uv[1];
         float dx = a->position[0] - b->position[0], dy = a->position[1] - b->position[1];
         float dz = a->position[2] - b->position[2];
-        uv += (double)stin__sqrtf(du * du + dv * dv);
+        if (uv_edge) {
+            float du = a->uv[0] - b->uv[0], dv = a->uv[1] - b->uv[1];
+            uv += (double)stin__sqrtf(du * du + dv * dv);
+        }
         len += (double)stin__sqrtf(dx * dx + dy * dy + dz * dz);
     }
-    *uv_edge = tri_count ? (float)(uv / (3.0 * (double)tri_count)) : 0.0f;
+    if (uv_edge)
+        *uv_edge = tri_count ? (float)(uv / (3.0 * (double)tri_count)) : 0.0f;
     *edge = tri_count ? (float)(len / (3.0 * (double)tri_count)) : 0.0f;
 }

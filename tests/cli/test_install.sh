@@ -54,7 +54,7 @@ fi
 # pictures checked against the exact shadow (tests/cli/example_check.c).
 cc -std=c99 -D_DEFAULT_SOURCE -Wall -Wextra -Werror tests/cli/example_check.c -lm -o "$dir/check" 2> "$dir/log" ||
     echo "FAIL examples: the checker does not build: $(tail -n 1 "$dir/log")"
-for ex in osmesa_shadow:-lOSMesa egl_shadow:-lEGL egl_app_shader:-lEGL; do
+for ex in osmesa_shadow:-lOSMesa egl_shadow:-lEGL egl_app_shader:-lEGL skinned:-lEGL; do
     name=${ex%%:*}
     if ! cc -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -pedantic \
         "examples/${name}.c" $flags ${ex#*:} -lm -o "$dir/$name" > "$dir/log" 2>&1; then

@@ -43,6 +43,8 @@
     X(stin_result, stin_query_mesh_tangent,                                                    \
       (const stin_context *a, stin_mesh b, uint32_t c, float d[4]), (a, b, c, d))              \
     V(stin_destroy_mesh, (stin_context * a, stin_mesh b), (a, b))                              \
+    X(stin_result, stin_update_mesh,                                                           \
+      (stin_context * a, stin_mesh b, const stin_mesh_update_desc *c), (a, b, c))              \
     X(stin_result, stin_create_texture,                                                        \
       (stin_context * a, const stin_texture_desc *b, stin_texture *c), (a, b, c))              \
     V(stin_destroy_texture, (stin_context * a, stin_texture b), (a, b))                        \

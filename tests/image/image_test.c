@@ -328,6 +328,7 @@ int main(int argc, char **argv)
             test_refusal(&r, tiers[t]);
             continue;
         }
+        update_mesh_tests(&r, tiers[t]);
         for (i = first_scene; i < argc; i++) {
             if (displaced && displaced[i]) {
                 displace_tests(&r, tiers[t], argv[i]);

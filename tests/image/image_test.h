@@ -45,6 +45,10 @@ void vdsm_tests(run *r, stin_tier tier, const char *path);
  * volumes frame by frame: every frame exact, and the frames alike away from
  * shadow edges (choice_test.c; GL4, three scenes). */
 void choice_tests(run *r, stin_tier tier, const char *path);
+/* stin_update_mesh: a tube bent over three frames in one context, each
+ * frame's shadows against its own reference, per shadow technique of the
+ * tier; gl11, gl21 and gl45-core only (update_mesh_test.c). */
+void update_mesh_tests(run *r, stin_tier tier);
 /* The seed's VDSM behaviours on built-in scenes, once per run (GL4). */
 void vdsm_seed_tests(run *r, stin_tier tier);
 /* VDSM's conservative growth on random faces, from vdsm_seed_tests (vdsm_growth_test.c). */

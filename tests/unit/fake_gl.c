@@ -24,6 +24,7 @@ fake_gl_state fake_gl;
 #define FAKE_CUSTOM_DeleteTextures ~, 1
 #define FAKE_CUSTOM_TexImage2D ~, 1
 #define FAKE_CUSTOM_GenBuffers ~, 1
+#define FAKE_CUSTOM_BufferData ~, 1
 #define FAKE_CUSTOM_DeleteBuffers ~, 1
 #define FAKE_CUSTOM_GenVertexArrays ~, 1
 #define FAKE_CUSTOM_DeleteVertexArrays ~, 1
@@ -76,7 +77,6 @@ fake_gl_state fake_gl;
 #define FAKE_STATELESS_Vertex3fv ~, 1
 #define FAKE_STATELESS_CopyTexSubImage2D ~, 1
 #define FAKE_STATELESS_TexImage1D ~, 1
-#define FAKE_STATELESS_BufferData ~, 1
 #define FAKE_STATELESS_BufferSubData ~, 1
 #define FAKE_STATELESS_GetBufferSubData ~, 1
 #define FAKE_STATELESS_MemoryBarrier ~, 1
@@ -327,6 +327,26 @@ FAKE_OBJECTS(Buffers, buffers, FAKE_OBJ_BUFFER)
 FAKE_OBJECTS(VertexArrays, vertex_arrays, FAKE_OBJ_VERTEX_ARRAY)
 FAKE_OBJECTS(Framebuffers, framebuffers, FAKE_OBJ_FRAMEBUFFER)
 FAKE_OBJECTS(TransformFeedbacks, transform_feedbacks, FAKE_OBJ_TRANSFORM_FEEDBACK)
+
+/* glBufferData of GL_ARRAY_BUFFER: the buffer bound, its size and usage
+ * and a hash of its bytes (a test compares what was uploaded). */
+static void STIN_APIENTRY fake_BufferData(GLenum target, GLsizeiptr size, const void *data,
+                                          GLenum usage)
+{
+    const unsigned char *b = (const unsigned char *)data;
+    unsigned long long h = 1469598103934665603ull;
+    GLsizeiptr i;
+    COUNT(BufferData);
+    if (target != GL_ARRAY_BUFFER)
+        return;
+    for (i = 0; b && i < size; i++)
+        h = (h ^ b[i]) * 1099511628211ull;
+    fake_gl.array_data.buffer = fake_gl.gl.array_buffer;
+    fake_gl.array_data.size = (unsigned long long)size;
+    fake_gl.array_data.usage = usage;
+    fake_gl.array_data.hash = h;
+    fake_gl.array_data.uploads++;
+}
 
 /* Queries: names of their own (1, 2, ...), so the other objects' names stay
  * as they were. A GL_TIME_ELAPSED query ending takes what the test's

@@ -83,6 +83,15 @@ typedef struct fake_gl_state {
     unsigned depth_draws_into_watched;   /* of those, with depth tested and written */
     unsigned textures_created, textures_deleted;
     unsigned buffers_created, buffers_deleted;
+    /* the latest glBufferData into GL_ARRAY_BUFFER: the buffer bound, the
+     * bytes, the usage, an FNV-1a (64-bit) hash of the data, and
+     * how many there were */
+    struct {
+        GLuint buffer;
+        unsigned long long size, hash;
+        GLenum usage;
+        unsigned uploads;
+    } array_data;
     unsigned vertex_arrays_created, vertex_arrays_deleted;
     unsigned shaders_created, shaders_deleted, shader_compile_failures;
     unsigned programs_created, programs_deleted, program_link_failures;

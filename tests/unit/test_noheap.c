@@ -154,6 +154,7 @@ static void exercise(fake_gl_profile_id profile)
     stin_desc d = small_desc(), defaults;
     stin_context *ctx = NULL;
     stin_mesh_desc md;
+    stin_mesh_update_desc ud;
     stin_mesh mesh = {0}, bad = {0};
     stin_texture_desc td;
     stin_texture tex = {0};
@@ -168,12 +169,13 @@ static void exercise(fake_gl_profile_id profile)
     size_t bytes = 0, default_bytes = 0;
     int i;
     stin_result r_small = STIN_OK, r_create = STIN_OK, r_mesh = STIN_OK, r_bad = STIN_OK,
-                r_tex = STIN_OK, r_end = STIN_OK, r_detect = STIN_OK;
+                r_tex = STIN_OK, r_end = STIN_OK, r_detect = STIN_OK, r_update = STIN_OK;
 
     fake_gl_reset(&cfg);
     memset(&log_, 0, sizeof log_);
     memset(&defaults, 0, sizeof defaults);
     memset(&md, 0, sizeof md);
+    memset(&ud, 0, sizeof ud);
     md.positions = cube_pos;
     md.uvs = cube_uv;
     md.vertex_count = 8;
@@ -204,6 +206,9 @@ static void exercise(fake_gl_profile_id profile)
             stin_query_mesh_info(ctx, mesh, &info);
             stin_query_mesh_adjacency(ctx, mesh, 0, nb);
             stin_query_mesh_tangent(ctx, mesh, 0, tangent);
+            ud.positions = cube_pos;
+            ud.vertex_count = 8;
+            r_update = stin_update_mesh(ctx, mesh, &ud);
             r_tex = stin_create_texture(ctx, &td, &tex);
             mat.albedo = tex;
             stin_draw(ctx, mesh, NULL, NULL); /* out of order: logs */
@@ -213,6 +218,7 @@ static void exercise(fake_gl_profile_id profile)
             stin_draw(ctx, mesh, NULL, &mat);
             stin_draw(ctx, mesh, NULL, NULL);
             stin_draw(ctx, bad, NULL, NULL);
+            stin_update_mesh(ctx, mesh, &ud); /* in a frame: logs */
             r_end = stin_end_frame(ctx);
             stin_query_frame_stats(ctx);
             stin_query_choice(ctx, STIN_FEATURE_LIGHTING);
@@ -231,6 +237,7 @@ static void exercise(fake_gl_profile_id profile)
     assert_int_equal(r_small, STIN_ERROR_OUT_OF_MEMORY);
     assert_int_equal(r_create, STIN_OK);
     assert_int_equal(r_mesh, STIN_OK);
+    assert_int_equal(r_update, STIN_OK);
     assert_int_equal(r_bad, STIN_ERROR_INVALID_ARGUMENT);
     assert_int_equal(r_tex, STIN_OK);
     assert_int_equal(r_end, STIN_OK);

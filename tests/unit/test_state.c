@@ -210,13 +210,16 @@ static void make_cube(void)
 }
 
 /* An octahedron with its corners' normals pointing out of the centre: a
- * closed smooth mesh, so volumes draw their terminator band. */
+ * closed smooth mesh, so volumes draw their terminator band; updated once. */
 static void make_ball(void)
 {
     static const float pos[18] = {1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1};
     static const uint32_t idx[24] = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4,
                                      2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+    stin_mesh_update_desc ud = {.positions = pos, .normals = pos, .vertex_count = 6};
     create_mesh(pos, pos, NULL, 6, idx, 24, &ball);
+    /* the same shape again: the update's GL state is held with creation's */
+    assert_int_equal(stin_update_mesh(ctx, ball, &ud), STIN_OK);
 }
 
 static stin_texture make_texture(stin_texture_kind kind, const uint8_t rgba[4])

@@ -266,6 +266,8 @@ static const bench_option table[] = {
     FRAMES(SEC_PEEL, "--peel-frames", "7", "1", PER_ROW),
     SETUPS(SEC_PEEL, "--peel-setups", "2", "fresh sorted context per set-up"),
 
+    FRAMES(SEC_UPDATE, "--update-frames", "20", "1", "timed calls per row, mesh and tier"),
+
     {SEC_PEERS, "--peers-scenes", "a.json,b.json", PEERS_SCENES, QUICK_SCENE, set_text,
      F(peers_scenes), 0, 0, 0, "scenes (light 0 of each)"},
     {SEC_PEERS, "--peers-map-size", "N", "2048", "256", set_pow2, F(peers_map_size), 16, 8192, 0,

@@ -14,7 +14,7 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
 
 /* Indices into bench_sections[], in the order they run. */
 enum { SEC_RAW, SEC_SHADOWS, SEC_MAPS, SEC_PCF, SEC_SURFACE, SEC_VDSM, SEC_DISPLACE, SEC_DEEP,
-       SEC_CSG, SEC_PEEL, SEC_PEERS,
+       SEC_CSG, SEC_PEEL, SEC_UPDATE, SEC_PEERS,
        SECTION_COUNT };
 
 struct options;
@@ -51,6 +51,7 @@ int section_displace(bench_env *env, const scene *s, int *ran);
 int section_deep(bench_env *env, const scene *s, int *ran);
 int section_csg(bench_env *env, const scene *s, int *ran);
 int section_peel(bench_env *env, const scene *s, int *ran);
+int section_update(bench_env *env, const scene *s, int *ran);
 int section_peers(bench_env *env, const scene *s, int *ran);
 
 #endif

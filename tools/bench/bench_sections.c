@@ -20,6 +20,8 @@ const bench_section bench_sections[SECTION_COUNT] = {
             "128 primitives and a row along the view", section_csg},
     {"peel", "GL2/GL4 camera transparency: depth-peel and dual-peel (GL4) against sorted "
              "with 0, 2 and 4 transparent layers on screen (passes and time)", section_peel},
+    {"update", "stin_update_mesh against destroy and create on UV spheres of 18k and 76k "
+               "vertices, per tier: ms and ns per vertex", section_update},
     {"peers", "stin's vdsm, volume and map-pcf against osgShadow's ShadowMap, SoftShadowMap, "
               "StandardShadowMap, LiSPSM, PSSM and ViewDependentShadowMap on the same scenes: "
               "frame time, ratios and mismatch against the exact reference", section_peers},

@@ -73,6 +73,29 @@ static stin_texture_kind texture_kind(scene_texture_kind k)
                                      : STIN_TEXTURE_ALBEDO;
 }
 
+stin_mesh_desc scene_gpu_mesh_desc(const scene_mesh *m)
+{
+    stin_mesh_desc md;
+    memset(&md, 0, sizeof md);
+    md.positions = m->positions;
+    md.normals = m->normals;
+    md.uvs = m->uvs;
+    md.vertex_count = m->vertex_count;
+    md.indices = m->indices;
+    md.index_count = 3u * m->triangle_count;
+    return md;
+}
+
+stin_mesh_update_desc scene_gpu_mesh_update_desc(const scene_mesh *m)
+{
+    stin_mesh_update_desc ud;
+    memset(&ud, 0, sizeof ud);
+    ud.positions = m->positions;
+    ud.normals = m->normals;
+    ud.vertex_count = m->vertex_count;
+    return ud;
+}
+
 int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err, size_t err_size)
 {
     int i;
@@ -88,16 +111,8 @@ int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err,
     }
     for (i = 0; i < s->mesh_count; i++) {
         const scene_mesh *m = &s->meshes[i];
-        stin_mesh_desc md;
-        stin_result r;
-        memset(&md, 0, sizeof md);
-        md.positions = m->positions;
-        md.normals = m->normals;
-        md.uvs = m->uvs;
-        md.vertex_count = m->vertex_count;
-        md.indices = m->indices;
-        md.index_count = 3u * m->triangle_count;
-        r = stin_create_mesh(ctx, &md, &g->meshes[i]);
+        stin_mesh_desc md = scene_gpu_mesh_desc(m);
+        stin_result r = stin_create_mesh(ctx, &md, &g->meshes[i]);
         if (r != STIN_OK) {
             snprintf(err, err_size, "%s: meshes.%s: %s", s->path, m->name, stin_result_name(r));
             scene_gpu_destroy(g, ctx);

@@ -45,6 +45,10 @@ typedef struct scene_gpu {
 int scene_gpu_size_desc_checked(const scene *s, stin_desc *desc, char *err, size_t err_size);
 /* The same for callers whose scenes are known to fit. */
 void scene_gpu_size_desc(const scene *s, stin_desc *desc);
+/* A scene mesh as stin_create_mesh takes it, and its positions and normals
+ * as stin_update_mesh does (the arrays stay the scene's). */
+stin_mesh_desc scene_gpu_mesh_desc(const scene_mesh *m);
+stin_mesh_update_desc scene_gpu_mesh_update_desc(const scene_mesh *m);
 /* Creates every mesh and texture; on failure writes a message and releases
  * what was created. 1 on success. */
 int scene_gpu_create(scene_gpu *g, const scene *s, stin_context *ctx, char *err, size_t err_size);
