@@ -24,6 +24,10 @@ void render_usage(FILE *f)
     fprintf(f, "\n"
                "  --platform egl|osmesa     context backend (default egl)\n"
                "  --size WxH                image size (default: the scene's, else 512x512)\n"
+               "  --srgb                    render into an sRGB colour target (GL encodes, stin\n"
+               "                            lights in linear): the PNG gets its bytes as stored,\n"
+               "                            the EXR their decoded linear values; exit 3 where\n"
+               "                            the context has no such target\n"
                "  --shadows NAME            shadow technique: vdsm (GL4), volume, map-pcf (GLSL tiers), map (map-depth where the\n"
                "                            context has ARB_shadow, else map-combine), map-depth,\n"
                "                            map-combine, shadows-off or off (default auto)\n"
@@ -157,6 +161,8 @@ int render_parse_args(int argc, char **argv, options *o)
             o->progress = 1;
         } else if (!strcmp(a, "--frame")) {
             o->frame = 1;
+        } else if (!strcmp(a, "--srgb")) {
+            o->srgb = 1;
         } else if (takes_value(a) && !v) {
             fprintf(stderr, "stin-render: %s needs a value\n", a);
             return 0;
