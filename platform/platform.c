@@ -21,6 +21,8 @@
 #define P_GL_DEPTH_COMPONENT 0x1902
 #define P_GL_RGBA 0x1908
 #define P_GL_VERSION 0x1F02
+#define P_GL_EXTENSIONS 0x1F03
+#define P_GL_NUM_EXTENSIONS 0x821D
 #define P_GL_NO_ERROR 0
 #define P_GL_PACK_ROW_LENGTH 0x0D02
 #define P_GL_PACK_SKIP_ROWS 0x0D03
@@ -36,6 +38,7 @@ typedef void (*p_pixel_storei_fn)(unsigned pname, int param);
 typedef const unsigned char *(*p_get_string_fn)(unsigned name);
 typedef unsigned (*p_get_error_fn)(void);
 typedef void (*p_bind_buffer_fn)(unsigned target, unsigned buffer);
+typedef const unsigned char *(*p_get_stringi_fn)(unsigned name, unsigned i);
 
 struct stin_platform {
     stin_platform_kind kind;
@@ -49,6 +52,7 @@ struct stin_platform {
     p_get_error_fn get_error;
     p_bind_buffer_fn bind_buffer;
     stin_platform_msaa msaa; /* desc.samples > 1 or stin_platform_set_samples */
+    stin_platform_srgb_target srgb; /* desc.srgb or stin_platform_set_srgb */
 };
 
 static const char *const override_vars[3] = {
@@ -176,6 +180,41 @@ static int parse_gl_version(const unsigned char *s)
     return major * 10 + minor;
 }
 
+int stin_platform_has_token(const char *list, const char *token)
+{
+    size_t n = strlen(token);
+    const char *s = list;
+    while (s && (s = strstr(s, token)) != NULL) {
+        if ((s == list || s[-1] == ' ') && (s[n] == '\0' || s[n] == ' '))
+            return 1;
+        s += n;
+    }
+    return 0;
+}
+
+int stin_platform_gl_version(stin_platform *p)
+{
+    p_get_string_fn get_string = (p_get_string_fn)load(p, "glGetString");
+    return get_string ? parse_gl_version(get_string(P_GL_VERSION)) : 0;
+}
+
+int stin_platform_has_extension(stin_platform *p, const char *name)
+{
+    p_get_string_fn get_string = (p_get_string_fn)load(p, "glGetString");
+    p_get_stringi_fn get_stringi = (p_get_stringi_fn)load(p, "glGetStringi");
+    int count = 0, i;
+    if (stin_platform_gl_version(p) >= 30 && get_stringi && p->get_integerv) {
+        /* a core context has no GL_EXTENSIONS string */
+        p->get_integerv(P_GL_NUM_EXTENSIONS, &count);
+        for (i = 0; i < count; i++)
+            if (!strcmp((const char *)get_stringi(P_GL_EXTENSIONS, (unsigned)i), name))
+                return 1;
+        return 0;
+    }
+    return get_string && stin_platform_has_token((const char *)get_string(P_GL_EXTENSIONS),
+                                                 name);
+}
+
 static int load_readback(stin_platform *p, char *err, size_t err_size)
 {
     p_get_string_fn get_string = (p_get_string_fn)load(p, "glGetString");
@@ -230,7 +269,8 @@ stin_platform *stin_platform_create(const stin_platform_desc *desc, char *err, s
     else
         p->osmesa = stin_osmesa_create(p->width, p->height, desc->profile, err, err_size);
     if ((!p->egl && !p->osmesa) || !load_readback(p, err, err_size) ||
-        !stin_platform_set_samples(p, desc->samples, err, err_size)) {
+        !stin_platform_set_samples(p, desc->samples, err, err_size) ||
+        (desc->srgb && !stin_platform_set_srgb(p, 1, err, err_size))) {
         stin_platform_destroy(p);
         return NULL;
     }
@@ -241,8 +281,10 @@ void stin_platform_destroy(stin_platform *p)
 {
     if (!p)
         return;
-    if (p->read_pixels) /* the context is current: its objects can go */
+    if (p->read_pixels) { /* the context is current: its objects can go */
         stin_platform_msaa_release(p, &p->msaa);
+        stin_platform_srgb_release(p, &p->srgb);
+    }
     stin_egl_destroy(p->egl);
     stin_osmesa_destroy(p->osmesa);
     free(p);
@@ -250,7 +292,9 @@ void stin_platform_destroy(stin_platform *p)
 
 uint32_t stin_platform_framebuffer(const stin_platform *p)
 {
-    return p ? p->msaa.fbo : 0;
+    if (!p)
+        return 0;
+    return p->msaa.fbo ? p->msaa.fbo : p->srgb.fbo;
 }
 
 int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t err_size)
@@ -258,6 +302,11 @@ int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t e
     if (!p || samples < 0 || samples > 64) {
         stin_platform_errorf(err, err_size, "stin_platform_set_samples: bad samples %d",
                              samples);
+        return 0;
+    }
+    if (samples > 1 && p->srgb.fbo) {
+        stin_platform_errorf(err, err_size, "stin_platform_set_samples: the target is sRGB; "
+                                            "multisampled sRGB targets are not offered");
         return 0;
     }
     if (!stin_platform_msaa_create(p, &p->msaa, samples, p->width, p->height, err, err_size)) {
@@ -270,9 +319,38 @@ int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t e
     return 1;
 }
 
+int stin_platform_set_srgb(stin_platform *p, int on, char *err, size_t err_size)
+{
+    if (!p) {
+        stin_platform_errorf(err, err_size, "stin_platform_set_srgb: platform is NULL");
+        return 0;
+    }
+    if (!on) {
+        stin_platform_srgb_release(p, &p->srgb);
+        return 1;
+    }
+    if (p->msaa.fbo) {
+        stin_platform_errorf(err, err_size, "stin_platform_set_srgb: the target is multisampled; "
+                                            "multisampled sRGB targets are not offered");
+        return 0;
+    }
+    if (!stin_platform_srgb_create(p, &p->srgb, p->width, p->height, err, err_size)) {
+        char why[400];
+        snprintf(why, sizeof why, "%s", err ? err : "");
+        stin_platform_errorf(err, err_size, "%s: %s", stin_platform_kind_name(p->kind), why);
+        return 0;
+    }
+    return 1;
+}
+
 int stin_platform_samples(const stin_platform *p)
 {
     return p && p->msaa.fbo ? p->msaa.samples : 0;
+}
+
+int stin_platform_srgb(const stin_platform *p)
+{
+    return p && p->srgb.fbo;
 }
 
 int stin_platform_width(const stin_platform *p)

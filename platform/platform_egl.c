@@ -92,23 +92,6 @@ static void egl_fail(char *err, size_t err_size, const char *call)
                          egl_error_name(code), (unsigned)code);
 }
 
-/* Exact token match in a space-separated extension string. */
-static int has_token(const char *list, const char *token)
-{
-    size_t n = strlen(token);
-    const char *s = list;
-    if (!list)
-        return 0;
-    while ((s = strstr(s, token)) != NULL) {
-        int starts = (s == list || s[-1] == ' ');
-        int ends = (s[n] == '\0' || s[n] == ' ');
-        if (starts && ends)
-            return 1;
-        s += n;
-    }
-    return 0;
-}
-
 static void *egl_proc(const char *name)
 {
     return stin_platform_fn_to_ptr((stin_platform_fn)eglGetProcAddress(name));
@@ -150,7 +133,7 @@ static EGLDisplay open_device(const char *client_exts,
     EGLDeviceEXT devices[MAX_DEVICES];
     EGLint count = 0, i;
 
-    if (!has_token(client_exts, "EGL_EXT_platform_device")) {
+    if (!stin_platform_has_token(client_exts, "EGL_EXT_platform_device")) {
         stin_platform_errorf(err, err_size,
                              "EGL: neither EGL_MESA_platform_surfaceless nor "
                              "EGL_EXT_platform_device is available");
@@ -194,12 +177,12 @@ static EGLDisplay open_display(char *err, size_t err_size)
     get_display = (PFNEGLGETPLATFORMDISPLAYEXTPROC)stin_platform_ptr_to_fn(
         egl_proc("eglGetPlatformDisplayEXT"));
     if (!client_exts || !get_display ||
-        !has_token(client_exts, "EGL_EXT_platform_base")) {
+        !stin_platform_has_token(client_exts, "EGL_EXT_platform_base")) {
         stin_platform_errorf(err, err_size,
                              "EGL: EGL_EXT_platform_base (eglGetPlatformDisplayEXT) is missing");
         return EGL_NO_DISPLAY;
     }
-    if (!want_device() && has_token(client_exts, "EGL_MESA_platform_surfaceless")) {
+    if (!want_device() && stin_platform_has_token(client_exts, "EGL_MESA_platform_surfaceless")) {
         dpy = open_surfaceless(get_display, surfaceless_err, sizeof surfaceless_err);
         if (dpy != EGL_NO_DISPLAY)
             return dpy;

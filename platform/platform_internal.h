@@ -45,6 +45,27 @@ int stin_platform_msaa_resolve(stin_platform *p, stin_platform_msaa *m, unsigned
                                int w, int h, int saved[2]);
 void stin_platform_msaa_resolve_end(stin_platform *p, const int saved[2]);
 
+/* Exact token match in a space-separated list (NULL: none). */
+int stin_platform_has_token(const char *list, const char *token);
+
+/* The current context's GL version as major * 10 + minor (0: unknown), and
+ * whether it lists extension `name` (exact token; glGetStringi on 3.0+). */
+int stin_platform_gl_version(stin_platform *p);
+int stin_platform_has_extension(stin_platform *p, const char *name);
+
+/* An sRGB colour target (platform_srgb.c); fbo 0: none. */
+typedef struct stin_platform_srgb_target {
+    unsigned fbo;
+    unsigned rb[2]; /* SRGB8_ALPHA8 colour, depth 24 / stencil 8 */
+} stin_platform_srgb_target;
+
+/* Replaces s by a w x h sRGB target, left bound with GL_FRAMEBUFFER_SRGB
+ * enabled; 0 with err saying what the context lacks. */
+int stin_platform_srgb_create(stin_platform *p, stin_platform_srgb_target *s, int w, int h,
+                              char *err, size_t err_size);
+/* Deletes it, disables GL_FRAMEBUFFER_SRGB and binds framebuffer 0. */
+void stin_platform_srgb_release(stin_platform *p, stin_platform_srgb_target *s);
+
 typedef struct stin_egl stin_egl;
 stin_egl *stin_egl_create(int width, int height, const stin_profile *profile,
                           char *err, size_t err_size);

@@ -57,6 +57,10 @@ typedef struct stin_platform_desc {
      * into a framebuffer object of that many samples (stin_platform_set_samples);
      * create fails, saying why, where the context has none. */
     int samples;
+    /* 1: render into an sRGB colour target (stin_platform_set_srgb); create
+     * fails, saying why, where the context has none. 0: the default
+     * framebuffer (linear RGBA8). */
+    int srgb;
 } stin_platform_desc;
 
 typedef struct stin_platform stin_platform;
@@ -78,7 +82,8 @@ const char *stin_platform_kind_name(stin_platform_kind kind);
 int stin_platform_kind_from_name(const char *name, stin_platform_kind *out); /* 1 ok */
 
 /* Framebuffer name to render into: 0, the default framebuffer, or the
- * multisampled framebuffer object of stin_platform_set_samples. */
+ * framebuffer object of stin_platform_set_samples or stin_platform_set_srgb
+ * (one at a time: multisampled sRGB targets are not offered). */
 uint32_t stin_platform_framebuffer(const stin_platform *p);
 
 /* Renders into a framebuffer object of `samples` samples from now on (an
@@ -95,6 +100,22 @@ int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t e
 /* The samples of the current target as the driver allocated them (it may
  * round the count up); 0 for the default framebuffer. */
 int stin_platform_samples(const stin_platform *p);
+
+/* on = 1: renders into an sRGB colour target from now on: a framebuffer
+ * object of the platform's size with a GL_SRGB8_ALPHA8 colour and a depth
+ * 24 / stencil 8 renderbuffer, left bound, and GL_FRAMEBUFFER_SRGB enabled
+ * (the application's part: GL then encodes every colour written to it with
+ * the sRGB transfer function and blends in linear space). Needs framebuffer
+ * objects (GL 3.0, GL_ARB_framebuffer_object, or GL_EXT_framebuffer_object
+ * with GL_EXT_packed_depth_stencil) and sRGB rendering (GL 3.0, or
+ * GL_ARB_framebuffer_sRGB or GL_EXT_framebuffer_sRGB with
+ * GL_EXT_texture_sRGB), on either backend. Returns 1, or 0 with err saying
+ * what is missing (the target is then the default framebuffer).
+ * on = 0: deletes it, disables GL_FRAMEBUFFER_SRGB and binds framebuffer 0.
+ * stin_platform_read_color returns its stored, encoded bytes. */
+int stin_platform_set_srgb(stin_platform *p, int on, char *err, size_t err_size);
+/* 1 while the target is the sRGB one. */
+int stin_platform_srgb(const stin_platform *p);
 int stin_platform_width(const stin_platform *p);
 int stin_platform_height(const stin_platform *p);
 

@@ -577,9 +577,27 @@
  * shadows: points 0-2; vdsm's receivers, stin_frame_stats.
  * shadows.vdsm_atomic_receivers: point 0) leaves those binding points and the
  * generic GL_SHADER_STORAGE_BUFFER binding at 0.
- * Every other piece of GL state is left as the caller had it (framebuffer
- * sRGB encoding and multisampling too: the frame honours them as the
- * target's; MULTISAMPLED TARGETS above says how each technique does).
+ * Every other piece of GL state is left as the caller had it (multisampling
+ * too: the frame honours it as the target's; MULTISAMPLED TARGETS above
+ * says how each technique does).
+ * sRGB targets: stin never enables GL_FRAMEBUFFER_SRGB. Into a target whose
+ * colour is sRGB-encoded (GL_SRGB8_ALPHA8) with the caller's
+ * GL_FRAMEBUFFER_SRGB on, a beauty frame lights in linear space and GL
+ * encodes each write once; the ambient pass and every light's pass (volumes,
+ * the GL1 passes, blended draws) blend in linear space, as GL decodes the
+ * stored value before it blends. stin's own render targets (maps, screen
+ * masks, position buffers, peeling layers, CSG results, the visibility map)
+ * are linear formats, which GL never encodes whatever the enable; stin
+ * copies no colour from an FBO target's frame and reads back only depth and
+ * stencil. A frame with STIN_OUTPUT_NORMAL or STIN_OUTPUT_VISIBILITY writes
+ * data, not colour: it turns GL_FRAMEBUFFER_SRGB off for the frame and gives
+ * the caller's enable back (GL 3.0, ARB/EXT_framebuffer_sRGB). The GL1 tier
+ * draws the same way: GL 1.x itself has no sRGB framebuffers, but on a
+ * context that has them (GL 2.1 with the extensions, or 3.0+) the
+ * fixed-function output is encoded by GL like any other, and tested so
+ * (tests/image/srgb_test.c). Without framebuffer objects the fixed-function
+ * maps are drawn in the frame's own colour buffer and copied; an
+ * sRGB-encoding default framebuffer would encode them, which is untested.
  * stin_create_mesh leaves the array buffer and vertex array 0's element
  * buffer at 0, stin_update_mesh the array buffer; the caller's vertex array
  * object stays bound and untouched.

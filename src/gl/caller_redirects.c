@@ -8,7 +8,8 @@
  * the target fails). stin_create and each frame set these aside and give
  * them back; a frame also gives back what a pass changes but the header
  * does not list (depth clamp, polygon offset fill, the stencil clear value,
- * 2D-array bindings). */
+ * 2D-array bindings), and turns sRGB encoding off for a frame whose output
+ * is data (normal, visibility): GL would encode it like a colour. */
 #include "internal.h"
 
 #define PIXEL_PACK_BUFFER 0x88EB
@@ -30,6 +31,7 @@
 #define TEXTURE_BINDING_2D_ARRAY 0x8C1D
 #define ARRAY_BUFFER_BINDING 0x8894
 #define VERTEX_ARRAY_BINDING 0x85B5
+#define FRAMEBUFFER_SRGB 0x8DB9
 
 static int version(const stin_context *ctx) { return ctx->caps.gl_major * 10 + ctx->caps.gl_minor; }
 
@@ -62,6 +64,9 @@ void stin__caller_detect(stin_context *ctx)
         h |= STIN__CALLER_PROVOKING;
     if (loaded(ctx, STIN_GLFN_GetQueryiv) && has(ctx, STIN_CAP_OCCLUSION_QUERY))
         h |= STIN__CALLER_QUERIES;
+    if (v >= 30 || stin_query_extension(ctx, "GL_ARB_framebuffer_sRGB") ||
+        stin_query_extension(ctx, "GL_EXT_framebuffer_sRGB"))
+        h |= STIN__CALLER_SRGB;
     ctx->caller_has = h;
 }
 
@@ -226,6 +231,10 @@ void stin__caller_frame_begin(stin_context *ctx, stin__caller_frame *s)
     s->depth_clamp = has(ctx, STIN_CAP_DEPTH_CLAMP) &&
                      GL_ENUM(ctx, IsEnabled, GL_DEPTH_CLAMP)(GL_DEPTH_CLAMP);
     s->offset_fill = GL(ctx, IsEnabled)(GL_POLYGON_OFFSET_FILL) != 0;
+    s->srgb = (ctx->caller_has & STIN__CALLER_SRGB) && ctx->frame.output != STIN_OUTPUT_BEAUTY &&
+              GL(ctx, IsEnabled)(FRAMEBUFFER_SRGB);
+    if (s->srgb)
+        GL(ctx, Disable)(FRAMEBUFFER_SRGB);
     GL(ctx, GetIntegerv)(STENCIL_CLEAR_VALUE, &s->clear_stencil);
     for (u = 0; u < n; u++) {
         if (has(ctx, STIN_CAP_MULTITEXTURE))
@@ -254,6 +263,8 @@ void stin__caller_frame_end(stin_context *ctx, const stin__caller_frame *s)
         GL_ENABLE(ctx, GL_DEPTH_CLAMP);
     if (s->offset_fill)
         GL(ctx, Enable)(GL_POLYGON_OFFSET_FILL);
+    if (s->srgb)
+        GL(ctx, Enable)(FRAMEBUFFER_SRGB);
     GL(ctx, ClearStencil)(s->clear_stencil);
     ctx->queries_busy = 0;
     stin__redirects_end(ctx, &s->redirects);

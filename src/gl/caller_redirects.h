@@ -15,7 +15,8 @@ enum {
     STIN__CALLER_PIPELINE = 4u,      /* GL 4.1, ARB_separate_shader_objects */
     STIN__CALLER_CLAMP = 8u,         /* GL 3.0, ARB_color_buffer_float */
     STIN__CALLER_PROVOKING = 16u,    /* GL 3.2, ARB/EXT_provoking_vertex */
-    STIN__CALLER_QUERIES = 32u       /* glGetQueryiv: the caller's active queries */
+    STIN__CALLER_QUERIES = 32u,      /* glGetQueryiv: the caller's active queries */
+    STIN__CALLER_SRGB = 64u          /* GL 3.0, ARB/EXT_framebuffer_sRGB */
 };
 
 /* Query targets the caller's active queries hold this frame (ctx->queries_busy). */
@@ -41,6 +42,7 @@ typedef struct stin__create_bindings {
 typedef struct stin__caller_frame {
     stin__redirects redirects;
     int depth_clamp, offset_fill;
+    int srgb; /* GL_FRAMEBUFFER_SRGB, turned off for a data output's frame */
     GLint clear_stencil;
     GLint arrays[STIN__CALLER_ARRAY_UNITS]; /* each unit's 2D-array binding */
 } stin__caller_frame;
@@ -58,7 +60,8 @@ void stin__create_bindings_restore(struct stin_context *ctx, const stin__create_
 /* Around a frame: the redirects, the caller's busy query targets, and what
  * a pass changes that the header does not list (depth clamp, polygon
  * offset fill, the stencil clear value, each unit's 2D-array binding),
- * given back at the end. */
+ * given back at the end; sRGB encoding off for a normal or visibility
+ * output (data, not colour). */
 void stin__caller_frame_begin(struct stin_context *ctx, stin__caller_frame *s);
 void stin__caller_frame_end(struct stin_context *ctx, const stin__caller_frame *s);
 /* Begins query `id` on `target` unless a caller's query holds it (the

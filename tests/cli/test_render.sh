@@ -113,6 +113,18 @@ ok=1
     echo "$line" | grep -q "prepass [0-9.]* csg [0-9.]* base [0-9.]* translucent [0-9.]* shadow [0-9.]* lighting [0-9.]* blended [0-9.]* export [0-9.]*;" &&
     awk -v t="$total" -v f="$frame" 'BEGIN { exit !(t > 0 && t <= f * 1.1 + 1) }' && ok=0
 check "--stage-times" $ok "exit $rc, stages: $line, frame: $frame ms"
+# --srgb: the frame into an sRGB target. Its EXR (decoded to linear) is the
+# linear frame's within 2.55/255 (half an encoded step near 1 is 1.2/255 in
+# linear, plus the linear frame's own rounding) and its P, N and
+# visibility are the same.
+"$R" tests/scenes/torus.json --size 64x48 --profile gl33-core -o "$T/linear.exr" > /dev/null 2>&1 &&
+    "$R" tests/scenes/torus.json --size 64x48 --profile gl33-core --srgb -o "$T/srgb.exr" \
+        > /dev/null 2>&1
+rc=$?
+idiff -fail 0.01 "$T/linear.exr" "$T/srgb.exr" > "$T/idiff" 2>&1
+drc=$?
+check "--srgb" $([ $rc -eq 0 ] && [ $drc -eq 0 ] && echo 0 || echo 1) \
+    "exit $rc, $(grep -i 'max error' "$T/idiff")"
 "$R" tests/scenes/torus.json --size 64x64 --no-output --profile gl21 --stage-times > "$T/stdout" 2>&1
 check "--stage-times without timer queries" $([ $? -eq 0 ] && grep -q "^stages: not timed" "$T/stdout" &&
     echo 0 || echo 1) "stdout: $(head -c 300 "$T/stdout")"

@@ -125,6 +125,10 @@ void displace_tests(run *r, stin_tier tier, const char *path);
  * reference at its sample positions, at silhouettes (msaa_test.c; from
  * shadow-overlap, on msaa/halo.json beside it). */
 void msaa_tests(run *r, stin_tier tier, const char *path);
+/* Frames into an sRGB colour target against the encoded reference, per
+ * shadow technique, on four-lights under gl21, gl33-core and gl45-core
+ * (srgb_test.c). */
+void srgb_tests(run *r, stin_tier tier, const char *path);
 /* The seed's displacement behaviour 5 on a built-in plate, once per GLSL
  * tier (displace_seed_test.c); caps: the context's present capabilities. */
 void displace_seed_tests(run *r, stin_tier tier, uint64_t caps);

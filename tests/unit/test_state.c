@@ -490,6 +490,8 @@ static void caller_values(int non_default)
         s->program = 4242;
     if (has(STIN_CAP_MULTITEXTURE))
         s->active_texture = GL_TEXTURE0 + 1;
+    if (gl_version() >= 30) /* an sRGB target's encoding: kept, though data outputs set it aside */
+        s->enabled[FAKE_GL_FRAMEBUFFER_SRGB] = 1;
     hostile_values(s);
     if (has(STIN_CAP_FIXED_FUNCTION)) {
         s->shade_model = 0x1D00; /* GL_FLAT */

@@ -16,6 +16,7 @@
 #include "stin_platform.h"
 #include "technique_option.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -122,6 +123,18 @@ static void frame_camera(scene *s, int width, int height)
 }
 
 /* The beauty frame's figures; stage times where timed asks for them. */
+/* An sRGB target's stored beauty (R G B) back to linear: IEC 61966-2-1. */
+static void decode_beauty(image *img)
+{
+    size_t i, n = (size_t)img->width * img->height;
+    int c;
+    for (i = 0; i < n; i++)
+        for (c = AOV_R; c <= AOV_B; c++) {
+            float *v = &img->pixels[i * AOV_CHANNELS + c];
+            *v = *v <= 0.04045f ? *v / 12.92f : powf((*v + 0.055f) / 1.055f, 2.4f);
+        }
+}
+
 static void print_frame(const stin_frame_stats *stats, const scene *s, double ms, int w, int h,
                         int timed)
 {
@@ -248,6 +261,11 @@ int main(int argc, char **argv)
         rc = EXIT_UNSUPPORTED;
         goto done;
     }
+    if (o.srgb && !stin_platform_set_srgb(plat, 1, err, sizeof err)) {
+        fail_line(NULL, "--srgb: %s", err);
+        rc = EXIT_UNSUPPORTED;
+        goto done;
+    }
     desc.get_proc_address = stin_platform_get_proc_address;
     desc.get_proc_user = plat;
     desc.log = cli_log_fn;
@@ -319,7 +337,10 @@ int main(int argc, char **argv)
                 (o.debug_flags & STIN_DEBUG_STAGE_TIMES) != 0);
     if (o.output) {
         const char *dot = strrchr(o.output, '.');
-        if (!image_write(o.output, &img, strcmp(dot, ".png") == 0, err, sizeof err)) {
+        int png = strcmp(dot, ".png") == 0;
+        if (o.srgb && !png) /* the EXR's beauty is linear */
+            decode_beauty(&img);
+        if (!image_write(o.output, &img, png && !o.srgb, err, sizeof err)) {
             fail_line(NULL, "%s", err);
             goto done;
         }

@@ -28,6 +28,10 @@ void render_usage(FILE *f)
                "  --samples N               render into a multisampled target of N samples (1, 2,\n"
                "                            4, 8, 16; default 1: single-sampled); exit 3 where the\n"
                "                            context has no such target\n"
+               "  --srgb                    render into an sRGB colour target (GL encodes, stin\n"
+               "                            lights in linear): the PNG gets its bytes as stored,\n"
+               "                            the EXR their decoded linear values; exit 3 where\n"
+               "                            the context has no such target\n"
                "  --shadows NAME            shadow technique: vdsm (GL4), volume, map-pcf (GLSL tiers), map (map-depth where the\n"
                "                            context has ARB_shadow, else map-combine), map-depth,\n"
                "                            map-combine, shadows-off or off (default auto)\n"
@@ -162,6 +166,8 @@ int render_parse_args(int argc, char **argv, options *o)
             o->progress = 1;
         } else if (!strcmp(a, "--frame")) {
             o->frame = 1;
+        } else if (!strcmp(a, "--srgb")) {
+            o->srgb = 1;
         } else if (takes_value(a) && !v) {
             fprintf(stderr, "stin-render: %s needs a value\n", a);
             return 0;

@@ -27,6 +27,7 @@ typedef struct options {
     int no_output;              /* --no-output: render and print statistics only */
     int progress;               /* --progress: progress lines even when stderr is no terminal */
     int frame;                  /* --frame: fit the camera to the scene's bounds */
+    int srgb;                   /* --srgb: render into an sRGB colour target */
     float outline;              /* --outline: the filter's step in pixels (0: none) */
 } options;
 
