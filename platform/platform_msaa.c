@@ -62,26 +62,14 @@ typedef struct msaa_gl {
     m_cap_fn enable, disable;
 } msaa_gl;
 
-/* Exact token in a space-separated list. */
-static int has_token(const char *list, const char *token)
-{
-    size_t n = strlen(token);
-    const char *s = list;
-    while (s && (s = strstr(s, token)) != NULL) {
-        if ((s == list || s[-1] == ' ') && (s[n] == '\0' || s[n] == ' '))
-            return 1;
-        s += n;
-    }
-    return 0;
-}
-
 /* Asked below GL 3.0 only, where GL_EXTENSIONS is one string (asking
  * GL_NUM_EXTENSIONS there would raise an error the read-backs then see). */
 static int has_extension(stin_platform *p, const char *name)
 {
     m_get_string_fn get_string =
         (m_get_string_fn)stin_platform_ptr_to_fn(stin_platform_get_proc_address(p, "glGetString"));
-    return get_string && has_token((const char *)get_string(M_GL_EXTENSIONS), name);
+    return get_string &&
+           stin_platform_has_token((const char *)get_string(M_GL_EXTENSIONS), name);
 }
 
 /* The entry point `name` + suffix ("" or "EXT"). */
