@@ -1405,6 +1405,12 @@ typedef struct stin_desc {
 /* interval: peel 2 layers per primitive whatever desc.csg.interval_layers
  * says (a product deeper than that overflows and goes to goldfeather) */
 #define STIN_DEBUG_CSG_INTERVAL_TWO_LAYERS 0x400000000000ull
+/* a multisampled target's snap as a single-sampled target's: each product
+ * face's fragment kept only where its depth at the pixel centre lies within
+ * 8 steps of 24 bits of the resolve's, without the slope band or the
+ * neighbours (MULTISAMPLED TARGETS): lines along its triangle edges and
+ * aliased silhouettes (the test that the band matters) */
+#define STIN_DEBUG_CSG_SNAP_AT_CENTRE 0x800000000000ull
 /* -- transparency (bits 48-55) */
 /* no blended draw is drawn (depth-peel, dual-peel: no layer; sorted: no
  * draw): the frame shows its opaque draws alone (the blended ones still

@@ -19,7 +19,7 @@ enum { STIN__CSG_MERGE_WORK, STIN__CSG_MERGE_RESULT };
 typedef struct stin__csg_merge_state {
     GLuint merge_prog, kill_prog, snap_prog;
     GLint u_depth, u_select, u_params;
-    GLint snap_model, snap_view_proj, snap_result, snap_params;
+    GLint snap_model, snap_view_proj, snap_result, snap_params, snap_samples, snap_ids;
     stin__displace_locs snap_displace;
     GLuint fbo[2], texture[2]; /* work (depth-stencil), result (depth) */
     GLenum format;
@@ -27,6 +27,11 @@ typedef struct stin__csg_merge_state {
     size_t bytes;
     GLuint queries[STIN__CSG_MERGE_THRESHOLDS + 1]; /* 0: no occlusion queries */
     int said_failed;
+    /* a multisampled frame's snap: which face set lies on the result at
+     * each pixel centre (RGBA8, the targets' size; made at the first such
+     * frame, grown, never shrunk); ids_done: this resolve's are drawn */
+    GLuint id_fbo, id_texture;
+    int id_width, id_height, ids_done, said_ids_failed;
 } stin__csg_merge_state;
 
 /* The frame's products, laid out by stin__csg_state_place behind the

@@ -49,6 +49,15 @@
  * a drill 20 long reaching behind the eye). The band grows by eight
  * times that, through gl_FragCoord.w, for such faces only. */
 #define NEAR_CUT_BAND (4.0f / 16777216.0f)
+/* Into a multisampled framebuffer the result (single-sampled) holds, at a
+ * pixel a triangle edge crosses, the depth of the triangle over the
+ * centre; the other triangle's fragment there carries its own plane's
+ * depth at the centre, off by the two planes' slopes times the centre's
+ * distance from the edge (under half a pixel where that triangle covers a
+ * sample). The band grows by this many pixels of the fragment's own depth
+ * change (|dz/dx| + |dz/dy|); each kept fragment still writes its own
+ * per-sample depth, depth LESS. */
+#define SNAP_SLOPE 1.0f
 
 static const unsigned thresholds[STIN__CSG_MERGE_THRESHOLDS] = {
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 32, 64, 128, 255};
@@ -81,6 +90,8 @@ static const stin__uniform_name snap_uniforms[] = {
     STIN__UNIFORM(stin__csg_merge_state, snap_view_proj, "u_view_proj"),
     STIN__UNIFORM(stin__csg_merge_state, snap_result, "u_result"),
     STIN__UNIFORM(stin__csg_merge_state, snap_params, "u_params"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_samples, "u_samples"),
+    STIN__UNIFORM(stin__csg_merge_state, snap_ids, "u_ids"),
 };
 
 void stin__csg_merge_init(stin_context *ctx)
@@ -130,6 +141,10 @@ void stin__csg_merge_release(stin_context *ctx)
         GL(ctx, DeleteTextures)(2, m->texture);
     if (m->queries[0])
         GL(ctx, DeleteQueries)(STIN__CSG_MERGE_THRESHOLDS + 1, m->queries);
+    if (m->id_fbo) {
+        GL(ctx, DeleteFramebuffers)(1, &m->id_fbo);
+        GL(ctx, DeleteTextures)(1, &m->id_texture);
+    }
     stin__memzero(m, sizeof *m);
 }
 
@@ -144,6 +159,18 @@ static GLenum depth_format(const stin_context *ctx, GLenum *type)
     int wide = ctx->target.depth_bits > 24;
     *type = wide ? GL_FLOAT_32_UNSIGNED_INT_24_8_REV : GL_UNSIGNED_INT_24_8;
     return wide ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+}
+
+/* 1 where status says complete; else 0, and `what` logged once (said). */
+static int complete(stin_context *ctx, GLenum status, int *said, const char *what)
+{
+    if (status == GL_FRAMEBUFFER_COMPLETE)
+        return 1;
+    if (!*said)
+        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK, "CSG: %s (0x%x)", what,
+                  (unsigned)status);
+    *said = 1;
+    return 0;
 }
 
 /* Work and result at the viewport's window size (x + w by y + h: texel =
@@ -179,13 +206,10 @@ static int ensure_targets(stin_context *ctx)
     m->height = h;
     m->format = format;
     m->bytes = (size_t)w * (size_t)h * (format == GL_DEPTH24_STENCIL8 ? 4u : 8u) * 2u;
-    if (status == GL_FRAMEBUFFER_COMPLETE)
+    if (complete(ctx, status, &m->said_failed,
+                 "the GPU resolve's framebuffers are incomplete; products resolve with "
+                 "read-backs"))
         return 1;
-    if (!m->said_failed)
-        stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                  "CSG: the GPU resolve's framebuffers are incomplete (0x%x); products "
-                  "resolve with read-backs", (unsigned)status);
-    m->said_failed = 1;
     m->width = m->height = 0; /* tried again next frame */
     return 0;
 }
@@ -252,6 +276,7 @@ int stin__csg_merge_begin(stin_context *ctx)
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
     ctx->stats.csg.gpu_resolves = 1;
     ctx->stats.csg.gpu_bytes = m->bytes;
+    m->ids_done = 0;
     return 1;
 }
 
@@ -311,8 +336,13 @@ GLuint stin__csg_merge_result(stin_context *ctx)
     return ctx->csg->merge.texture[STIN__CSG_MERGE_RESULT];
 }
 
-/* The snap program bound, reading depth texture `against` on unit 0. */
-static void snap_begin(stin_context *ctx, GLuint against)
+/* The unit of the id pass's texture: not the height map's (a sampler of
+ * another type on one unit is an error at the draw). */
+static int ids_unit(const stin_context *ctx) { return ctx->sel.displace_unit == 1 ? 2 : 1; }
+
+/* The snap program bound, reading depth texture `against` on unit 0 and
+ * the id pass's texture `ids` (0: none) on ids_unit. */
+static void snap_begin(stin_context *ctx, GLuint against, GLuint ids)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     GL(ctx, UseProgram)(m->snap_prog);
@@ -320,13 +350,33 @@ static void snap_begin(stin_context *ctx, GLuint against)
     GL(ctx, UniformMatrix4fv)(m->snap_view_proj, 1, GL_FALSE, ctx->view_proj);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, against);
     GL(ctx, Uniform1i)(m->snap_result, 0);
+    if (ids) {
+        stin__bind_unit(ctx, ids_unit(ctx), GL_TEXTURE_2D, ids);
+        GL(ctx, Uniform1i)(m->snap_ids, ids_unit(ctx));
+    }
     ctx->bound_mesh = 0xffffffffu;
 }
 
-static void snap_end(stin_context *ctx)
+static void snap_end(stin_context *ctx, GLuint ids)
 {
     ctx->bound_mesh = 0xffffffffu;
+    if (ids)
+        stin__bind_unit(ctx, ids_unit(ctx), GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+}
+
+/* u_samples for the next face set: the slope band and the neighbours (a
+ * multisampled target), its id (1-based; the id pass writes it), and
+ * whether the id pass's texture is read. */
+static void snap_samples(stin_context *ctx, float slope, float neighbours, uint32_t id,
+                         float with_ids)
+{
+    float v[4];
+    v[0] = slope;
+    v[1] = neighbours;
+    v[2] = (float)id;
+    v[3] = with_ids;
+    GL(ctx, Uniform4fv)(ctx->csg->merge.snap_samples, 1, v);
 }
 
 void stin__csg_snap_band(const stin_context *ctx, const stin__draw *d, float band[2])
@@ -350,14 +400,16 @@ static void snap_band_for(stin_context *ctx, const stin__draw *d)
 
 /* d's faces but `culled` into the bound framebuffer, depth LESS, where
  * they lie on the bound texture's depth; within the resolve's region where
- * `region` asks (the work texture outside it holds older candidates). */
-static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, int region)
+ * `region` asks (the work texture outside it holds older candidates); ids:
+ * the id pass (colour written, no depth test). */
+static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, int region,
+                       int ids)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     stin__pass_state ps = stin__pass_defaults;
-    ps.depth_test = 1;
+    ps.depth_test = (unsigned char)!ids;
     ps.depth_func = GL_LESS; /* under what the buffer holds nearer */
-    ps.color_write = 0;
+    ps.color_write = (unsigned char)ids;
     ps.cull = 1;
     ps.cull_face = culled;
     if (region)
@@ -368,13 +420,88 @@ static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, in
     ctx->stats.passes++;
 }
 
+/* The id texture at the targets' size, its framebuffer bound; 0 when the
+ * framebuffer is incomplete (logged once). */
+static int ensure_ids(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg->merge;
+    GLenum status;
+    if (m->id_fbo && m->id_width == m->width && m->id_height == m->height) {
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->id_fbo);
+        return 1;
+    }
+    if (!m->id_fbo) {
+        GL(ctx, GenFramebuffers)(1, &m->id_fbo);
+        GL(ctx, GenTextures)(1, &m->id_texture);
+    }
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    stin__rt_texture(ctx, m->id_texture, GL_RGBA8, GL_RGBA, GL_UNSIGNED_BYTE, m->width,
+                     m->height);
+    status = stin__rt_attach(ctx, m->id_fbo, m->id_texture, 0, 0);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    m->id_width = m->width;
+    m->id_height = m->height;
+    if (complete(ctx, status, &m->said_ids_failed,
+                 "the multisampled snap's id framebuffer is incomplete; products are snapped "
+                 "at the pixel centres (lines along their edges)"))
+        return 1;
+    m->id_width = m->id_height = 0;
+    return 0;
+}
+
+/* The id pass (once a resolve): each face set's faces, single-sampled,
+ * where they lie on the result at the pixel centre (the snap's band),
+ * write their id, so that the multisampled snap keeps a face only where
+ * the centre's surface (or at a silhouette a neighbour's) is its own face
+ * set's: a face whose plane passes near another primitive's surface (a
+ * rim where two meet at a shallow angle) stays out. 0 when it cannot
+ * (more than 65535 face sets, or no framebuffer). */
+static GLuint face_ids(stin_context *ctx)
+{
+    stin__csg_merge_state *m = &ctx->csg->merge;
+    GLint bound = 0;
+    uint32_t i;
+    if (m->ids_done)
+        return m->id_texture;
+    if (ctx->csg->face_count > 65535u)
+        return 0;
+    GL(ctx, GetIntegerv)(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    if (ensure_ids(ctx)) {
+        stin__pass_apply(ctx, &stin__pass_defaults); /* colour writes on, no scissor */
+        GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
+        GL(ctx, Clear)(GL_COLOR_BUFFER_BIT);
+        snap_begin(ctx, m->texture[STIN__CSG_MERGE_RESULT], 0);
+        for (i = 0; i < ctx->csg->face_count; i++) {
+            snap_samples(ctx, 0.0f, 0.0f, i + 1u, 0.0f);
+            snap_faces(ctx, &ctx->csg->faces[i], stin__csg_face_hidden(&ctx->csg->faces[i]), 0,
+                       1);
+        }
+        snap_end(ctx, 0);
+        m->ids_done = 1;
+        ctx->stats.csg.gpu_bytes = m->bytes + (size_t)m->id_width * (size_t)m->id_height * 4u;
+    }
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, (GLuint)bound);
+    return m->ids_done ? m->id_texture : 0;
+}
+
 void stin__csg_merge_snap(stin_context *ctx)
 {
+    GLint sample_buffers = 0;
+    GLuint ids = 0;
     uint32_t i;
-    snap_begin(ctx, ctx->csg->merge.texture[STIN__CSG_MERGE_RESULT]);
-    for (i = 0; i < ctx->csg->face_count; i++)
-        snap_faces(ctx, &ctx->csg->faces[i], stin__csg_face_hidden(&ctx->csg->faces[i]), 0);
-    snap_end(ctx);
+    /* the frame's target, or a pass's own buffer (screen mask, outline, peel) */
+    GL(ctx, GetIntegerv)(GL_SAMPLE_BUFFERS, &sample_buffers);
+    if (sample_buffers > 0 && !(ctx->desc.debug_flags & STIN_DEBUG_CSG_SNAP_AT_CENTRE))
+        ids = face_ids(ctx);
+    snap_begin(ctx, ctx->csg->merge.texture[STIN__CSG_MERGE_RESULT], ids);
+    for (i = 0; i < ctx->csg->face_count; i++) {
+        if (ids)
+            snap_samples(ctx, SNAP_SLOPE, 1.0f, i + 1u, 1.0f);
+        else
+            snap_samples(ctx, 0.0f, 0.0f, 0u, 0.0f);
+        snap_faces(ctx, &ctx->csg->faces[i], stin__csg_face_hidden(&ctx->csg->faces[i]), 0, 0);
+    }
+    snap_end(ctx, ids);
 }
 
 /* The direct resolve's take: the surface's faces on the work texture's
@@ -382,16 +509,17 @@ void stin__csg_merge_snap(stin_context *ctx)
 static void snap_surface(stin_context *ctx, const stin__csg_surface *s)
 {
     uint32_t i;
-    snap_begin(ctx, ctx->csg->merge.texture[STIN__CSG_MERGE_WORK]);
+    snap_begin(ctx, ctx->csg->merge.texture[STIN__CSG_MERGE_WORK], 0); /* never multisampled */
+    snap_samples(ctx, 0.0f, 0.0f, 0u, 0.0f);
     if (s->cap)
-        snap_faces(ctx, s->cap, s->cap_culled, 1);
+        snap_faces(ctx, s->cap, s->cap_culled, 1, 0);
     for (i = 0; !s->cap && i < s->count; i++) {
         uint32_t lit = ctx->csg->literals[s->t->first + (s->list ? s->list[i] : s->first + i)];
         const stin__draw *d =
             &ctx->csg->primitives[s->p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
-        snap_faces(ctx, d, stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), 1);
+        snap_faces(ctx, d, stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), 1, 0);
     }
-    snap_end(ctx);
+    snap_end(ctx, 0);
 }
 
 int stin__csg_direct_fits(const stin_context *ctx)

@@ -88,8 +88,10 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
         ctx->csg->resolved = ctx->csg->merged = 1;
         return 1;
     }
-    if (gpu && !stin__csg_merge_begin(ctx) && !usable(ctx, &r, 0))
-        return 0; /* its framebuffers failed (logged): the CPU's, if the staging holds it */
+    /* its framebuffers failed (logged): the CPU's, if the staging holds it
+     * and the frame's buffers can be read back (not multisampled) */
+    if (gpu && !stin__csg_merge_begin(ctx) && (ctx->target.multisampled || !usable(ctx, &r, 0)))
+        return 0;
     stin__csg_resolve_pixels(ctx, path, &r);
     ctx->csg->resolved = 1;
     ctx->csg->merged = r.gpu;

@@ -125,6 +125,10 @@ void displace_tests(run *r, stin_tier tier, const char *path);
  * reference at its sample positions, at silhouettes (msaa_test.c; from
  * shadow-overlap, on msaa/halo.json beside it). */
 void msaa_tests(run *r, stin_tier tier, const char *path);
+/* CSG products into a 4x target against the CSG reference at its sample
+ * positions, away from edges and in the silhouette band (msaa_csg_test.c;
+ * from csg.json, on msaa/csg.json beside it; GL1: the refusal). */
+void msaa_csg_tests(run *r, stin_tier tier, const char *path);
 /* Frames into an sRGB colour target against the encoded reference, per
  * shadow technique, on four-lights under gl21, gl33-core and gl45-core
  * (srgb_test.c). */

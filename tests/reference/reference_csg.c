@@ -218,7 +218,8 @@ static void fill_cap(const reference *r, const ref_csg_product *p, const ref_cam
 }
 
 static int csg_primary_traced(const reference *r, const ref_csg_product *products, int count,
-                              int width, int height, ref_hit *hits, int *product_of)
+                              int width, int height, double dx, double dy, ref_hit *hits,
+                              int *product_of)
 {
     ref_camera_frame cf;
     collector c;
@@ -277,7 +278,7 @@ static int csg_primary_traced(const reference *r, const ref_csg_product *product
             if (product_of)
                 product_of[at] = -1;
             /* the nearest ordinary object, through the primitives */
-            ref_window_dir(&cf, width, height, x + 0.5, y + 0.5, dir);
+            ref_window_dir(&cf, width, height, x + dx, y + dy, dir);
             memset(&rh, 0, sizeof rh);
             rh.ray.org_x = eye[0];
             rh.ray.org_y = eye[1];
@@ -359,9 +360,18 @@ void ref_csg_hash_products(ref_hasher *h, const ref_csg_product *products, int c
     }
 }
 
-/* Cached by everything above and the products (reference_cache.h). */
 int reference_csg_primary(const reference *r, const ref_csg_product *products, int count,
                           int width, int height, ref_hit *hits, int *product_of)
+{
+    return reference_csg_primary_at(r, products, count, width, height, 0.5, 0.5, hits,
+                                    product_of);
+}
+
+/* Cached by everything above, the products and the point in the pixel
+ * (reference_cache.h). */
+int reference_csg_primary_at(const reference *r, const ref_csg_product *products, int count,
+                             int width, int height, double dx, double dy, ref_hit *hits,
+                             int *product_of)
 {
     ref_hasher h;
     ref_cache_key key;
@@ -374,6 +384,10 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
         ref_hash_u64(&h, (uint64_t)width);
         ref_hash_u64(&h, (uint64_t)height);
         ref_hash_u64(&h, product_of != NULL);
+        if (dx != 0.5 || dy != 0.5) { /* the centre's key as before */
+            ref_hash_array(&h, &dx, sizeof dx);
+            ref_hash_array(&h, &dy, sizeof dy);
+        }
         ref_cache_key_end(&h, &key);
         parts[0].data = hits;
         parts[0].size = n * sizeof *hits;
@@ -386,7 +400,7 @@ int reference_csg_primary(const reference *r, const ref_csg_product *products, i
     int ok;
     if (cached)
         ref_cache_compute_begin();
-    ok = csg_primary_traced(r, products, count, width, height, hits, product_of);
+    ok = csg_primary_traced(r, products, count, width, height, dx, dy, hits, product_of);
     if (cached)
         ref_cache_compute_end();
     if (!ok)

@@ -59,6 +59,12 @@ int reference_csg_cast(reference *r, const ref_csg_product *products, int count)
  * error. */
 int reference_csg_primary(const reference *r, const ref_csg_product *products, int count,
                           int width, int height, ref_hit *hits, int *product_of);
+/* The same through point (dx, dy) of each pixel (0..1 from its bottom-left
+ * corner; 0.5, 0.5 is reference_csg_primary): a multisampled target's
+ * sample positions. */
+int reference_csg_primary_at(const reference *r, const ref_csg_product *products, int count,
+                             int width, int height, double dx, double dy, ref_hit *hits,
+                             int *product_of);
 
 #ifdef __cplusplus
 }

@@ -655,8 +655,8 @@ static void recreate(fake_gl_profile_id id, uint64_t caps_mask)
     log_.items[STIN_LOG_FALLBACK] = 0; /* what stin_create logged */
 }
 
-/* stin_draw_csg into a multisampled target: refused, dropped, nothing
- * resolved (stin.h, MULTISAMPLED TARGETS). */
+/* stin_draw_csg into a multisampled target where the resolve reads back:
+ * refused, dropped, nothing resolved (stin.h, MULTISAMPLED TARGETS). */
 static void refused_frame(void)
 {
     stin_csg_desc d = subtraction();
@@ -797,8 +797,19 @@ static void test_scs_in_place(void **state)
 
     sample_buffers_ = 1; /* probed with the framebuffer's bits, not every frame */
     recreate(FAKE_GL33_CORE, 0);
+    one_frame(); /* a multisampled target: merged, never in place or direct */
+    assert_int_equal(ctx->stats.csg.in_place, 0);
+    assert_int_equal(ctx->stats.csg.direct, 0);
+    assert_int_equal(ctx->stats.csg.gpu_resolves, 1);
+    /* the snap's id pass: its texture counted beside the work and result */
+    assert_true(ctx->stats.csg.gpu_bytes > ctx->csg->merge.bytes);
+    flagged_frame(STIN_DEBUG_CSG_SNAP_AT_CENTRE); /* no id pass */
+    assert_int_equal(ctx->stats.csg.gpu_bytes, ctx->csg->merge.bytes);
+    debug_flags_ = STIN_DEBUG_CSG_READBACK;
+    recreate(FAKE_GL33_CORE, 0);
+    debug_flags_ = 0;
     sample_buffers_ = 0;
-    refused_frame(); /* a multisampled target takes no product */
+    refused_frame(); /* the read-back resolve takes no product into it */
 
     recreate(FAKE_GL33_CORE, 0); /* single-sampled again, for the tests after */
 

@@ -1,0 +1,57 @@
+/* SPDX-License-Identifier: MIT */
+/* What the multisampled-target tests share (msaa_common.c): the target's
+ * sample positions, the exact reference shaded at them and box-filtered as
+ * the resolve averages them, and the comparison that separates the
+ * silhouette band (pixels within one of a change of object among the
+ * samples) from the rest. */
+#ifndef STIN_TESTS_MSAA_COMMON_H
+#define STIN_TESTS_MSAA_COMMON_H
+
+#include "image_test.h"
+#include "reference.h"
+#include "scene.h"
+
+#include <stdint.h>
+
+#define MSAA_MAX_SAMPLES 16
+
+/* The target's sample positions in the pixel (0..1); 0 where the context
+ * cannot say (GL 3.2 / ARB_texture_multisample). */
+int msaa_sample_positions(run *r, float pos[][2]);
+
+typedef struct msaa_ref {
+    int w, h, n;
+    ref_hit *hits;   /* n images of w x h, bottom row first */
+    float *colour;   /* w x h x 3: the samples' mean */
+    float *vis;      /* n x w x h: every light's visibility at each sample */
+    unsigned char *centre_differs; /* w x h: a sample's surface, taken on to the pixel
+                                    * centre, has another visibility there */
+} msaa_ref;
+
+/* m->w, m->h set: the arrays for n samples (1, or 0 out of memory). */
+int msaa_ref_alloc(msaa_ref *m, int n);
+/* m->hits filled (sample k's image at hits + k w h): each sample shaded
+ * into colour, vis and centre_differs; at_centre: where multisampling
+ * shades, its surface taken on to the pixel centre (one fragment a surface
+ * a pixel); MSAA_AT_CENTRE_INSIDE: so where that point lies on the
+ * sample's triangle, else at the sample (a CSG product's faces: the point
+ * beyond a triangle's edge lies inside the solid, whose rays it shadows,
+ * where stin's map lookup is biased). */
+#define MSAA_AT_CENTRE_INSIDE 2
+void msaa_ref_shade(const scene *s, const reference *ref, int per_vertex, int at_centre,
+                    msaa_ref *m);
+void msaa_ref_free(msaa_ref *m);
+
+typedef struct msaa_band {
+    long band, over, compared, compared_over;
+    double band_max, compared_max;
+} msaa_band;
+
+/* rgba: the resolved frame, w x h rows bottom first, stride pixels a row;
+ * pixels by a shadow edge left out (the shadow tests' business). */
+void msaa_compare_band(const msaa_ref *m, const uint8_t *rgba, int stride, double tolerance,
+                       msaa_band *b);
+/* The render beside the reference into the run's output folder. */
+void msaa_save_pair(run *r, const char *name, const uint8_t *rgba, const msaa_ref *m);
+
+#endif
