@@ -22,20 +22,28 @@
 #include <string.h>
 
 #define MSAA_CSG_SAMPLES 4
-/* As msaa_test.c's: 8-bit rounding and float interpolation, the reference
- * shaded where multisampling shades (each surface at the pixel centre). */
+/* A sample dropped from a face (the old snap's lines) moves its pixel by a
+ * quarter of the contrast with what lies behind (the cavity's orange over
+ * the floor or the black background: 0.12 or more). The reference shades
+ * each sample where multisampling shades (its surface at the pixel
+ * centre) but at the sample itself where that point would leave the
+ * sample's triangle (msaa_common.h): half a pixel of shading, 0.05 in the
+ * cavity's highlight. */
 #define MSAA_CSG_TOLERANCE 0.06
 /* Of the pixels away from a change of object among the samples (and from
- * shadow edges): measured 0-3 on llvmpipe (map-pcf's filtered edges
- * beside the excluded band); the snap at the centre leaves 60 or more. */
+ * shadow edges): measured 17 of 17,448 on llvmpipe on every row: the
+ * highlight, and the sphere's pole, where a fragment shaded at the centre
+ * extrapolates its vertex normals beyond a sliver facet (multisampling's
+ * shading, as for any mesh; a snap band four times wider leaves the same
+ * pixels); the snap at the pixel centre leaves 597. */
 #define MSAA_CSG_MAX_OVER 40
-/* Of the silhouette band: the product's own edges between its primitives
- * (the cavity's rim) are decided once a pixel, at its centre, as in a
- * single-sampled target (stin.h, MULTISAMPLED TARGETS), so they are not
- * antialiased: the band's pixels there may differ by up to the two
- * surfaces' contrast. Bounded as a share of the band: measured 0.14-0.17;
+/* Of the silhouette band (pixels within one of a change of object): the
+ * product's own edges between its primitives (the cavity's rim) are
+ * decided once a pixel, at its centre, as in a single-sampled target
+ * (stin.h, MULTISAMPLED TARGETS), so they are not antialiased and differ
+ * by up to the two surfaces' contrast there. Measured 148 of 1,387 (0.11);
  * the snap at the centre, whose silhouettes against the floor are aliased
- * too, 0.3 or more. */
+ * too, 278 (0.20). */
 #define MSAA_CSG_MAX_BAND_SHARE 0.15
 
 typedef struct csg_run {
