@@ -32,7 +32,11 @@
  * the frame's depth is the result, with no result clear, merge quads or
  * final snap (on llvmpipe the merge quads and the final snap cost the
  * small products most of their frame; docs/benchmarks.md). Both copy the
- * frame's depth into the result texture only when a pass asks for it. */
+ * frame's depth into the result texture only when a pass asks for it.
+ * A multisampled frame takes neither: the result stays one depth a pixel,
+ * and the final snap (face_ids, then the snap with SNAP_SLOPE and the
+ * neighbours) keeps each face on the samples it covers (stin.h,
+ * MULTISAMPLED TARGETS). */
 #include "csg/csg_private.h"
 
 #define GL_DEPTH32F_STENCIL8 0x8CAD
