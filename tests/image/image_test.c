@@ -357,6 +357,7 @@ int main(int argc, char **argv)
             peel_tests(&r, tiers[t], argv[i]);
             viewport_tests(&r, tiers[t], argv[i]);
             msaa_tests(&r, tiers[t], argv[i]);
+            msaa_blend_tests(&r, tiers[t], argv[i]);
             error_kept_tests(&r, tiers[t], argv[i]);
             srgb_tests(&r, tiers[t], argv[i]);
         }

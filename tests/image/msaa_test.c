@@ -10,6 +10,7 @@
  * one on the ball there, a one-pixel halo.
  */
 #include "image_test.h"
+#include "msaa_shared.h"
 #include "reference.h"
 #include "scene.h"
 #include "test_context.h"
@@ -20,8 +21,6 @@
 #include <string.h>
 
 #define MSAA_SAMPLES 4
-#define MSAA_MAX_SAMPLES 16
-#define GL_SAMPLE_POSITION_ 0x8E50
 /* A sample of the floor's light (0.34 here) in four: 0.085; the reference
  * shades where multisampling does (each surface at the pixel centre), so
  * what is left is 8-bit rounding and float interpolation. */
@@ -31,26 +30,10 @@
  * the ball's outline over its shadow is 40 or more. */
 #define MSAA_MAX_BAND_OVER 3
 
-typedef void (*get_multisamplefv_fn)(unsigned pname, unsigned index, float *val);
-
 typedef struct msaa_case {
     stin_tier tier;
     stin_technique shadows;
 } msaa_case;
-
-/* The target's sample positions in the pixel (0..1); 0 where the context
- * cannot say (GL 3.2 / ARB_texture_multisample). */
-static int sample_positions(run *r, float pos[][2])
-{
-    get_multisamplefv_fn get = (get_multisamplefv_fn)stin_platform_get_proc_address(
-        r->plat, "glGetMultisamplefv");
-    int i, n = stin_platform_samples(r->plat);
-    if (!get || n < 2 || n > MSAA_MAX_SAMPLES)
-        return 0;
-    for (i = 0; i < n; i++)
-        get(GL_SAMPLE_POSITION_, (unsigned)i, pos[i]);
-    return n;
-}
 
 /* The visibility rule of each technique's reference (shadow_test.c's). */
 static int facets_of(stin_tier tier, stin_technique t)
@@ -207,66 +190,12 @@ static void compare_band(const msaa_ref *m, const uint8_t *rgba, int stride, ban
         }
 }
 
-/* One frame of the scene at its own size into the platform's target. */
-static int render(run *r, const scene *s, stin_tier tier, stin_technique t, uint8_t *rgba,
-                  char *why, size_t why_size)
-{
-    test_context tc;
-    stin_frame_desc fd;
-    stin_result res;
-    if (!test_context_create(&tc, r, s, tier, t, 1)) {
-        snprintf(why, why_size, "%s does not run on this tier here", stin_technique_name(t));
-        return -1;
-    }
-    memset(&fd, 0, sizeof fd);
-    scene_camera_matrices(&s->camera, s->width, s->height, fd.view, fd.projection);
-    fd.viewport[2] = s->width;
-    fd.viewport[3] = s->height;
-    fd.framebuffer = stin_platform_framebuffer(r->plat);
-    memcpy(fd.clear_color, s->background, sizeof fd.clear_color);
-    memcpy(fd.ambient, s->ambient, sizeof fd.ambient);
-    res = test_context_frame(&tc, s, &fd, -1);
-    test_context_destroy(&tc);
-    if (res != STIN_OK) {
-        snprintf(why, why_size, "frame: %s", stin_result_name(res));
-        return 0;
-    }
-    if (!stin_platform_read_color(r->plat, rgba)) {
-        snprintf(why, why_size, "read-back failed");
-        return 0;
-    }
-    return 1;
-}
-
-static void save_pair(run *r, const char *name, const uint8_t *rgba, const msaa_ref *m)
-{
-    image img;
-    char path[1024], err[256];
-    int x, y, c;
-    if (!r->out_dir || !image_alloc(&img, 2 * m->w, m->h, 3))
-        return;
-    for (y = 0; y < m->h; y++)
-        for (x = 0; x < m->w; x++)
-            for (c = 0; c < 3; c++) {
-                float *row = img.pixels + 3 * (size_t)(m->h - 1 - y) * 2 * m->w;
-                row[3 * x + c] = rgba[4 * ((size_t)y * r->width + x) + c] / 255.0f;
-                row[3 * (m->w + x) + c] = m->colour[3 * ((size_t)y * m->w + x) + c];
-            }
-    snprintf(path, sizeof path, "%s/%s-%s-%s.png", r->out_dir, r->platform_name,
-             r->profile_name, name);
-    for (c = (int)strlen(r->out_dir) + 1; path[c]; c++)
-        if (path[c] == '/')
-            path[c] = '-';
-    if (!image_write(path, &img, 0, err, sizeof err))
-        fprintf(stderr, "stin-imagetest: %s\n", err);
-    image_free(&img);
-}
-
 static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex,
                      const float pos[][2], int n)
 {
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
+    msaa_techniques tech = {mc->tier, mc->shadows, STIN_TECH_NONE, STIN_TECH_NONE};
     msaa_ref m;
     band_result b;
     int got;
@@ -275,7 +204,7 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex
     m.h = s->height;
     snprintf(name, sizeof name, "%s/msaa-%s", stin_tier_name(mc->tier),
              stin_technique_name(mc->shadows));
-    got = rgba ? render(r, s, mc->tier, mc->shadows, rgba, why, sizeof why) : 0;
+    got = rgba ? msaa_render(r, s, &tech, rgba, why, sizeof why) : 0;
     if (got < 0) {
         report(r, "SKIP", name, "%s", why);
     } else if (!got) {
@@ -290,7 +219,7 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex
                n, b.over, b.band, MSAA_TOLERANCE, b.band_max, MSAA_MAX_BAND_OVER,
                b.compared_over, b.compared);
         if (b.over > MSAA_MAX_BAND_OVER)
-            save_pair(r, name, rgba, &m);
+            msaa_save_pair(r, name, rgba, m.colour, m.w, m.h);
     }
     ref_free(&m);
     free(rgba);
@@ -381,7 +310,7 @@ void msaa_tests(run *r, stin_tier tier, const char *path)
         scene_free(&s);
         return;
     }
-    n = sample_positions(r, pos);
+    n = msaa_sample_positions(r, pos);
     if (!n) {
         report(r, "SKIP", name, "the context cannot say where its samples lie "
                                 "(glGetMultisamplefv: GL 3.2 or ARB_texture_multisample)");
