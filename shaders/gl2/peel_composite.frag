@@ -12,7 +12,30 @@ uniform sampler2D u_ambient; // the layer's ambient colour and opacity
 uniform sampler2D u_lights;  // the layer's lights, added up
 uniform sampler2D u_accum;   // (C, T) of the layers before it
 uniform sampler2D u_first;   // the first layer's depth (mode 1)
-uniform vec4 u_params;       // 1 / texture size (x, y), mode
+uniform vec4 u_params;       // 1 / texture size (x, y), mode, covered samples only
+// Mode 1 into a multisampled target (w = 1): the quad colours only the
+// samples a blended surface covers (src/transparency/peel_coverage.c), so
+// where the pixel centre holds no layer (T = 1) they take the composite of
+// the nearest neighbour that does: edge neighbours first, then corners.
+
+vec4 layered(vec4 best, vec2 at, vec2 step)
+{
+    return best.a < 1.0 ? best : texture2D(u_accum, at + step * u_params.xy);
+}
+
+vec4 covering(vec4 acc, vec2 at)
+{
+    if (u_params.w < 0.5)
+        return acc;
+    acc = layered(acc, at, vec2(1.0, 0.0));
+    acc = layered(acc, at, vec2(-1.0, 0.0));
+    acc = layered(acc, at, vec2(0.0, 1.0));
+    acc = layered(acc, at, vec2(0.0, -1.0));
+    acc = layered(acc, at, vec2(1.0, 1.0));
+    acc = layered(acc, at, vec2(-1.0, 1.0));
+    acc = layered(acc, at, vec2(1.0, -1.0));
+    return layered(acc, at, vec2(-1.0, -1.0));
+}
 
 void main()
 {
@@ -20,6 +43,7 @@ void main()
     vec4 acc = texture2D(u_accum, at);
     gl_FragDepth = texture2D(u_first, at).r;
     if (u_params.z > 0.5) {
+        acc = covering(acc, at);
         gl_FragColor = vec4(acc.rgb, 1.0 - acc.a);
         return;
     }

@@ -244,7 +244,7 @@ static void composite_program(stin_context *ctx, int mode, GLuint accum, GLuint 
     params[0] = 1.0f / (float)s->width;
     params[1] = 1.0f / (float)s->height;
     params[2] = (float)mode;
-    params[3] = 0.0f;
+    params[3] = mode == 2 ? (float)s->coverage : 0.0f;
     GL(ctx, UseProgram)(s->program);
     stin__lit_program_forget(ctx);
     GL(ctx, Uniform1i)(s->u_ambient, 0);

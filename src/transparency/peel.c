@@ -267,6 +267,7 @@ int stin__peel_begin(stin_context *ctx, const stin__path *path)
     if (!s->ready || !frame_blended(ctx) || !ensure_size(ctx))
         return 0;
     s->frame_fbo = ctx->draw_fbo;
+    s->path = path;
     /* the opaque depth, drawn again as the target's (the mask's way) */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
     stin__peel_attach(ctx, s->ambient, s->opaque);
@@ -373,7 +374,7 @@ static void composite_program(stin_context *ctx, int mode)
     params[0] = 1.0f / (float)s->width;
     params[1] = 1.0f / (float)s->height;
     params[2] = (float)mode;
-    params[3] = 0.0f;
+    params[3] = mode ? (float)s->coverage : 0.0f;
     GL(ctx, UseProgram)(s->program);
     stin__lit_program_forget(ctx); /* the lit program is no longer current */
     GL(ctx, Uniform1i)(s->u_ambient, 0);
@@ -392,6 +393,7 @@ void stin__peel_composite_done(stin_context *ctx)
     int i;
     for (i = 3; i >= 0; i--)
         stin__bind_unit(ctx, i, GL_TEXTURE_2D, 0);
+    stin__peel_coverage_done(ctx);
 }
 
 void stin__peel_layer_end(stin_context *ctx)
@@ -423,7 +425,10 @@ void stin__peel_layer_end(stin_context *ctx)
  * freed: over the opaque image as premultiplied colour with coverage 1 - T
  * (frame = C + T frame, alpha = 1 - T + T alpha) and the first layer's
  * depth where it has a surface (its depth, cleared to 1, passes LESS there
- * only; elsewhere C = 0 and T = 1 leave the frame as it is). Both peels. */
+ * only; elsewhere C = 0 and T = 1 leave the frame as it is). Into a
+ * multisampled target with a stencil the samples the blended draws cover
+ * are marked first and the quad colours those alone (peel_coverage.c).
+ * Both peels. */
 void stin__peel_over_frame(stin_context *ctx)
 {
     stin__peel_state *s = ctx->peel;
@@ -431,6 +436,8 @@ void stin__peel_over_frame(stin_context *ctx)
     stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D, 0);
     stin__bind_unit(ctx, s->unit + 1, GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
+    if (stin__peel_coverage(ctx))
+        return;
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;
     ps.depth_write = 1;

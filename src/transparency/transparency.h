@@ -68,6 +68,13 @@ void stin__peel_clear(struct stin_context *ctx, float r, float g, float b, float
 /* The last quad's target and state, shared by both peels (transparency/peel.c). */
 void stin__peel_over_frame(struct stin_context *ctx);
 void stin__peel_composite_done(struct stin_context *ctx);
+/* Into a multisampled target with a stencil (transparency/peel_coverage.c):
+ * marks the samples the blended draws cover in front of the opaque ones
+ * (their depth written, per sample) and sets the state for the last quad
+ * to colour those samples alone; 1 when it did (s->coverage), 0 where the
+ * target is single-sampled or has no stencil. _done after the quad. */
+int stin__peel_coverage(struct stin_context *ctx);
+void stin__peel_coverage_done(struct stin_context *ctx);
 /* The layer's lights texture as the peel framebuffer's colour, cleared. */
 void stin__peel_lights_target(struct stin_context *ctx);
 /* The samples the query counted since stin__peel_count_begin (1 without a query). */

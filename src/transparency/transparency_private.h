@@ -43,6 +43,8 @@ typedef struct stin__peel_state {
     int peeling;           /* 1 while a layer is drawn: camera passes draw it */
     int result;            /* accum[result] holds the composite */
     GLuint frame_fbo;      /* the frame's target, bound back at the end */
+    const stin__path *path; /* the frame's path (the coverage pass draws through it) */
+    int coverage;          /* the last quad colours the covered samples alone (peel_coverage.c) */
     int said_failed;
     int said_sorted, said_sorted_unshadowed, said_sorted_light; /* "sorted": what was said */
     int dual;              /* the technique is dual-peel (its state below) */

@@ -129,6 +129,11 @@ void msaa_tests(run *r, stin_tier tier, const char *path);
  * positions, away from edges and in the silhouette band (msaa_csg_test.c;
  * from csg.json, on msaa/csg.json beside it; GL1: the refusal). */
 void msaa_csg_tests(run *r, stin_tier tier, const char *path);
+/* Blended draws (depth-peel, dual-peel) and translucent shadows (deep,
+ * coloured) into a 4x target against the reference composite at its sample
+ * positions, at silhouettes (msaa_blend_test.c; from shadow-overlap, on
+ * msaa/glass.json beside it). */
+void msaa_blend_tests(run *r, stin_tier tier, const char *path);
 /* Frames into an sRGB colour target against the encoded reference, per
  * shadow technique, on four-lights under gl21, gl33-core and gl45-core
  * (srgb_test.c). */

@@ -7,22 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define GL_SAMPLE_POSITION_ 0x8E50
-
-typedef void (*get_multisamplefv_fn)(unsigned pname, unsigned index, float *val);
-
-int msaa_sample_positions(run *r, float pos[][2])
-{
-    get_multisamplefv_fn get = (get_multisamplefv_fn)stin_platform_get_proc_address(
-        r->plat, "glGetMultisamplefv");
-    int i, n = stin_platform_samples(r->plat);
-    if (!get || n < 2 || n > MSAA_MAX_SAMPLES)
-        return 0;
-    for (i = 0; i < n; i++)
-        get(GL_SAMPLE_POSITION_, (unsigned)i, pos[i]);
-    return n;
-}
-
 int msaa_ref_alloc(msaa_ref *m, int n)
 {
     size_t px = (size_t)m->w * m->h;
@@ -161,28 +145,4 @@ void msaa_compare_band(const msaa_ref *m, const uint8_t *rgba, int stride, doubl
                 b->compared_max = fmax(b->compared_max, d);
             }
         }
-}
-
-void msaa_save_pair(run *r, const char *name, const uint8_t *rgba, const msaa_ref *m)
-{
-    image img;
-    char path[1024], err[256];
-    int x, y, c;
-    if (!r->out_dir || !image_alloc(&img, 2 * m->w, m->h, 3))
-        return;
-    for (y = 0; y < m->h; y++)
-        for (x = 0; x < m->w; x++)
-            for (c = 0; c < 3; c++) {
-                float *row = img.pixels + 3 * (size_t)(m->h - 1 - y) * 2 * m->w;
-                row[3 * x + c] = rgba[4 * ((size_t)y * r->width + x) + c] / 255.0f;
-                row[3 * (m->w + x) + c] = m->colour[3 * ((size_t)y * m->w + x) + c];
-            }
-    snprintf(path, sizeof path, "%s/%s-%s-%s.png", r->out_dir, r->platform_name,
-             r->profile_name, name);
-    for (c = (int)strlen(r->out_dir) + 1; path[c]; c++)
-        if (path[c] == '/')
-            path[c] = '-';
-    if (!image_write(path, &img, 0, err, sizeof err))
-        fprintf(stderr, "stin-imagetest: %s\n", err);
-    image_free(&img);
 }

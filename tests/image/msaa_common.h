@@ -1,6 +1,6 @@
 /* SPDX-License-Identifier: MIT */
-/* What the multisampled-target tests share (msaa_common.c): the target's
- * sample positions, the exact reference shaded at them and box-filtered as
+/* What the multisampled-target tests share (msaa_common.c) beside
+ * msaa_shared.h's target and frame: the exact reference shaded at them and box-filtered as
  * the resolve averages them, and the comparison that separates the
  * silhouette band (pixels within one of a change of object among the
  * samples) from the rest. */
@@ -8,16 +8,11 @@
 #define STIN_TESTS_MSAA_COMMON_H
 
 #include "image_test.h"
+#include "msaa_shared.h"
 #include "reference.h"
 #include "scene.h"
 
 #include <stdint.h>
-
-#define MSAA_MAX_SAMPLES 16
-
-/* The target's sample positions in the pixel (0..1); 0 where the context
- * cannot say (GL 3.2 / ARB_texture_multisample). */
-int msaa_sample_positions(run *r, float pos[][2]);
 
 typedef struct msaa_ref {
     int w, h, n;
@@ -51,7 +46,5 @@ typedef struct msaa_band {
  * pixels by a shadow edge left out (the shadow tests' business). */
 void msaa_compare_band(const msaa_ref *m, const uint8_t *rgba, int stride, double tolerance,
                        msaa_band *b);
-/* The render beside the reference into the run's output folder. */
-void msaa_save_pair(run *r, const char *name, const uint8_t *rgba, const msaa_ref *m);
 
 #endif

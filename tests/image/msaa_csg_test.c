@@ -163,7 +163,7 @@ static void one_case(run *r, const csg_run *c, stin_tier tier, stin_technique cs
                b.compared_max, MSAA_CSG_MAX_OVER, b.over, b.band, share,
                MSAA_CSG_MAX_BAND_SHARE, flags ? " (must fail: the snap at the centre)" : "");
         if (pass == !!flags)
-            msaa_save_pair(r, name, rgba, &c->m);
+            msaa_save_pair(r, name, rgba, c->m.colour, c->m.w, c->m.h);
     }
     free(rgba);
 }

@@ -61,42 +61,12 @@ static int ref_build(const scene *s, stin_tier tier, stin_technique t, int per_v
     return ok;
 }
 
-/* One frame of the scene at its own size into the platform's target. */
-static int render(run *r, const scene *s, stin_tier tier, stin_technique t, uint8_t *rgba,
-                  char *why, size_t why_size)
-{
-    test_context tc;
-    stin_frame_desc fd;
-    stin_result res;
-    if (!test_context_create(&tc, r, s, tier, t, 1)) {
-        snprintf(why, why_size, "%s does not run on this tier here", stin_technique_name(t));
-        return -1;
-    }
-    memset(&fd, 0, sizeof fd);
-    scene_camera_matrices(&s->camera, s->width, s->height, fd.view, fd.projection);
-    fd.viewport[2] = s->width;
-    fd.viewport[3] = s->height;
-    fd.framebuffer = stin_platform_framebuffer(r->plat);
-    memcpy(fd.clear_color, s->background, sizeof fd.clear_color);
-    memcpy(fd.ambient, s->ambient, sizeof fd.ambient);
-    res = test_context_frame(&tc, s, &fd, -1);
-    test_context_destroy(&tc);
-    if (res != STIN_OK) {
-        snprintf(why, why_size, "frame: %s", stin_result_name(res));
-        return 0;
-    }
-    if (!stin_platform_read_color(r->plat, rgba)) {
-        snprintf(why, why_size, "read-back failed");
-        return 0;
-    }
-    return 1;
-}
-
 static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex,
                      const float pos[][2], int n)
 {
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
+    msaa_techniques tech = {mc->tier, mc->shadows, STIN_TECH_NONE, STIN_TECH_NONE};
     msaa_ref m;
     msaa_band b;
     int got;
@@ -105,7 +75,7 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex
     m.h = s->height;
     snprintf(name, sizeof name, "%s/msaa-%s", stin_tier_name(mc->tier),
              stin_technique_name(mc->shadows));
-    got = rgba ? render(r, s, mc->tier, mc->shadows, rgba, why, sizeof why) : 0;
+    got = rgba ? msaa_render(r, s, &tech, rgba, why, sizeof why) : 0;
     if (got < 0) {
         report(r, "SKIP", name, "%s", why);
     } else if (!got) {
@@ -120,7 +90,7 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex
                n, b.over, b.band, MSAA_TOLERANCE, b.band_max, MSAA_MAX_BAND_OVER,
                b.compared_over, b.compared);
         if (b.over > MSAA_MAX_BAND_OVER)
-            msaa_save_pair(r, name, rgba, &m);
+            msaa_save_pair(r, name, rgba, m.colour, m.w, m.h);
     }
     msaa_ref_free(&m);
     free(rgba);

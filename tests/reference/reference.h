@@ -287,6 +287,11 @@ int reference_render_ex(const scene *s, const reference *r, int width, int heigh
 int reference_composite_pixel(const scene *s, const reference *r, int width, int height, int x,
                               int y, int per_vertex, unsigned flags, float out_rgba[4],
                               float part[4]);
+/* The same through window point (px, py) instead of a pixel centre: one
+ * sample position of a multisampled frame (tests/image/msaa_blend_test.c). */
+int reference_composite_at(const scene *s, const reference *r, int width, int height, double px,
+                           double py, int per_vertex, unsigned flags, float out_rgba[4],
+                           float part[4]);
 
 #ifdef __cplusplus
 }

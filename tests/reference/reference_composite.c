@@ -58,6 +58,14 @@ int reference_composite_pixel(const scene *s, const reference *r, int width, int
                               int y, int per_vertex, unsigned flags, float out_rgba[4],
                               float part[4])
 {
+    return reference_composite_at(s, r, width, height, x + 0.5, y + 0.5, per_vertex, flags,
+                                  out_rgba, part);
+}
+
+int reference_composite_at(const scene *s, const reference *r, int width, int height, double px,
+                           double py, int per_vertex, unsigned flags, float out_rgba[4],
+                           float part[4])
+{
     ref_camera_frame cf;
     double dir[3], len;
     float T = 1.0f, C[3] = {0, 0, 0};
@@ -67,7 +75,7 @@ int reference_composite_pixel(const scene *s, const reference *r, int width, int
     float *weight = malloc(((size_t)s->light_count + 1) * sizeof *weight);
     if (!weight)
         return -1;
-    ref_window_dir(&cf, width, height, x + 0.5, y + 0.5, dir);
+    ref_window_dir(&cf, width, height, px, py, dir);
     len = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     float tnear = s->camera.near_plane, behind[4];
     for (int c = 0; c < 4; c++)
