@@ -89,6 +89,7 @@
     X(void, BeginQuery, (GLenum target, GLuint q))                                        \
     X(void, EndQuery, (GLenum target))                                                    \
     X(void, GetQueryiv, (GLenum target, GLenum pname, GLint *v))                          \
+    X(void, GetQueryObjectuiv, (GLuint q, GLenum pname, GLuint *v))                       \
     X(GLuint, CreateShaderProgramv, (GLenum type, GLsizei n, const GLchar *const *src))   \
     X(void, GenProgramPipelines, (GLsizei n, GLuint *p))                                  \
     X(void, DeleteProgramPipelines, (GLsizei n, const GLuint *p))                         \

@@ -12,14 +12,17 @@
  *                    sees the displacement rather than a plate drawn at 0.5.
  *   tess-bounded     one 64 x 64 frame of the plate (512 triangles) under vdsm
  *                    and "displace-tess" with desc.displacement.tess_pixels
- *                    0.02 ends within BOUNDED_MS (glFinish included): stin
- *                    raises the target to 1 pixel. Before, such a frame took
- *                    over 120 s (5 s at 0.05). The bound is loose for a
- *                    loaded machine; the frame takes tens of milliseconds.
+ *                    0.02 emits exactly the primitives (GL_PRIMITIVES_GENERATED
+ *                    around the whole frame, the caller's query) of the same
+ *                    frame at 1 pixel: stin raises the target to 1 pixel.
+ *                    Before, the 0.02 frame tessellated 2,500 times finer
+ *                    (over 120 s on llvmpipe). A count, not a clock, so a
+ *                    loaded machine cannot fail it.
  * Behaviours 3 (a side view shows a bumpy silhouette) and 6 (the guard band
  * changes no pixel) are displace_test.c's silhouette and guard-band tests.
  */
 #include "aov.h"
+#include "caller_gl.h"
 #include "capture.h"
 #include "image_test.h"
 #include "scene_gpu.h"
@@ -30,12 +33,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #define PLATE_Y 0.5f
 #define P_TOLERANCE 1e-4
 #define MAP 8
-#define BOUNDED_MS 2000.0
 
 static int plate_scene(scene *s)
 {
@@ -144,55 +145,78 @@ static void one(run *r, stin_tier tier, const scene *s, stin_technique t, const 
     capture_free(&cap);
 }
 
-static double now_ms(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
-}
-
-static void tess_bounded(run *r, const scene *s)
+/* One 64 x 64 frame of the plate under vdsm and displace-tess at
+ * tess_pixels, inside the caller's GL_PRIMITIVES_GENERATED query: 1 with
+ * *count and the target stin took; 0 (why) where the frame cannot run,
+ * -1 where the profile runs no vdsm with displace-tess. */
+static int tess_frame(run *r, const scene *s, float tess_pixels, GLuint *count, float *taken,
+                      char *why, size_t why_size)
 {
     static const int viewport[4] = {0, 0, 64, 64};
-    const char *name = "gl4/displace-constant/tess-bounded";
-    void (*finish)(void);
-    void *fp = stin_platform_get_proc_address(r->plat, "glFinish");
+    caller_gl gl;
     test_context t;
     stin_desc d;
     size_t size;
-    char err[256];
-    double t0, ms;
+    GLuint query = 0;
     stin_result res;
-    memcpy(&finish, &fp, sizeof finish);
+    caller_gl_load(&gl, r->plat);
+    if (!gl.GenQueries || !gl.BeginQuery || !gl.EndQuery || !gl.GetQueryObjectuiv ||
+        !gl.DeleteQueries) {
+        snprintf(why, why_size, "no query entry points");
+        return 0;
+    }
     memset(&t, 0, sizeof t);
     test_desc(r, STIN_TIER_GL4, &d);
     d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VDSM;
     d.techniques[STIN_FEATURE_DISPLACEMENT] = STIN_TECH_DISPLACEMENT_TESS;
-    d.displacement.tess_pixels = 0.02f;
+    d.displacement.tess_pixels = tess_pixels;
     scene_gpu_size_desc(s, &d);
     size = stin_memory_size(&d);
     t.block = malloc(size);
     if (!t.block || stin_create(&d, t.block, size, &t.ctx) != STIN_OK) {
-        report(r, "SKIP", name, "the profile runs no vdsm with displace-tess");
         free(t.block);
-        return;
+        return -1;
     }
-    if (!scene_gpu_create(&t.g, s, t.ctx, err, sizeof err)) {
-        report(r, "FAIL", name, "%s", err);
+    if (!scene_gpu_create(&t.g, s, t.ctx, why, why_size)) {
         test_context_destroy(&t);
-        return;
+        return 0;
     }
-    finish();
-    t0 = now_ms();
+    *taken = stin_query_desc(t.ctx).displacement.tess_pixels;
+    gl.GenQueries(1, &query);
+    gl.BeginQuery(GL_PRIMITIVES_GENERATED, query);
     res = scene_gpu_frame_viewport(&t.g, t.ctx, viewport, STIN_OUTPUT_BEAUTY, STIN_EXPORT_NONE,
                                    stin_platform_framebuffer(r->plat));
-    finish();
-    ms = now_ms() - t0;
-    report(r, res == STIN_OK && ms < BOUNDED_MS ? "PASS" : "FAIL", name,
-           "a 64x64 vdsm frame of 512 triangles at tess_pixels 0.02 (taken as %.2f): %s in "
-           "%.0f ms (bound %.0f)", (double)stin_query_desc(t.ctx).displacement.tess_pixels,
-           stin_result_name(res), ms, BOUNDED_MS);
+    gl.EndQuery(GL_PRIMITIVES_GENERATED);
+    gl.GetQueryObjectuiv(query, GL_QUERY_RESULT, count);
+    gl.DeleteQueries(1, &query);
     test_context_destroy(&t);
+    if (res != STIN_OK) {
+        snprintf(why, why_size, "frame: %s", stin_result_name(res));
+        return 0;
+    }
+    return 1;
+}
+
+static void tess_bounded(run *r, const scene *s)
+{
+    const char *name = "gl4/displace-constant/tess-bounded";
+    char why[256] = "";
+    GLuint fine = 0, pixel = 0;
+    float fine_taken = 0, pixel_taken = 0;
+    int got = tess_frame(r, s, 1.0f, &pixel, &pixel_taken, why, sizeof why);
+    if (got < 0) {
+        report(r, "SKIP", name, "the profile runs no vdsm with displace-tess");
+        return;
+    }
+    if (got)
+        got = tess_frame(r, s, 0.02f, &fine, &fine_taken, why, sizeof why);
+    if (got <= 0) {
+        report(r, "FAIL", name, "%s", why);
+        return;
+    }
+    report(r, fine == pixel && pixel > 0 && fine_taken >= 1.0f ? "PASS" : "FAIL", name,
+           "a 64x64 vdsm frame of 512 triangles at tess_pixels 0.02 (taken as %.2f) emitted "
+           "%u primitives; at 1 pixel %u (need equal)", (double)fine_taken, fine, pixel);
 }
 
 void displace_seed_tests(run *r, stin_tier tier, uint64_t caps)
