@@ -7,7 +7,9 @@
  * the resolve averages the samples. The check is at silhouettes: a sample
  * that took the other surface's visibility (a screen mask read at the
  * pixel, single-sampled) shows as a lit rim on the shadowed floor or a dark
- * one on the ball there, a one-pixel halo.
+ * one on the ball there, a one-pixel halo. The same check into 2 and 8
+ * samples where the context has them (one technique a tier), with the
+ * count the driver allocated.
  */
 #include "image_test.h"
 #include "reference.h"
