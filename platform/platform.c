@@ -297,6 +297,33 @@ uint32_t stin_platform_framebuffer(const stin_platform *p)
     return p->msaa.fbo ? p->msaa.fbo : p->srgb.fbo;
 }
 
+/* The target of `samples` (<= 1: single-sampled), sRGB or not: one
+ * framebuffer object of platform_msaa.c or platform_srgb.c, or none. */
+static int make_target(stin_platform *p, int samples, int srgb, char *err, size_t err_size)
+{
+    stin_platform_msaa_release(p, &p->msaa);
+    stin_platform_srgb_release(p, &p->srgb);
+    if (samples > 1)
+        return stin_platform_msaa_create(p, &p->msaa, samples, srgb, p->width, p->height, err,
+                                         err_size);
+    return !srgb || stin_platform_srgb_create(p, &p->srgb, p->width, p->height, err, err_size);
+}
+
+/* make_target, or on failure the target as it was (err kept). */
+static int change_target(stin_platform *p, int samples, int srgb, char *err, size_t err_size)
+{
+    int was_samples = p->msaa.fbo ? p->msaa.samples : 0, was_srgb = stin_platform_srgb(p);
+    char why[400];
+    if (make_target(p, samples, srgb, err, err_size))
+        return 1;
+    snprintf(why, sizeof why, "%s", err ? err : "");
+    if (!make_target(p, was_samples, was_srgb, NULL, 0))
+        make_target(p, 0, 0, NULL, 0);
+    stin_platform_errorf(err, err_size, "%s: %s%s", stin_platform_kind_name(p->kind),
+                         samples > 1 ? "no multisampled target: " : "", why);
+    return 0;
+}
+
 int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t err_size)
 {
     if (!p || samples < 0 || samples > 64) {
@@ -304,19 +331,7 @@ int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t e
                              samples);
         return 0;
     }
-    if (samples > 1 && p->srgb.fbo) {
-        stin_platform_errorf(err, err_size, "stin_platform_set_samples: the target is sRGB; "
-                                            "multisampled sRGB targets are not offered");
-        return 0;
-    }
-    if (!stin_platform_msaa_create(p, &p->msaa, samples, p->width, p->height, err, err_size)) {
-        char why[400];
-        snprintf(why, sizeof why, "%s", err ? err : "");
-        stin_platform_errorf(err, err_size, "%s: no multisampled target: %s",
-                             stin_platform_kind_name(p->kind), why);
-        return 0;
-    }
-    return 1;
+    return change_target(p, samples, stin_platform_srgb(p), err, err_size);
 }
 
 int stin_platform_set_srgb(stin_platform *p, int on, char *err, size_t err_size)
@@ -325,22 +340,7 @@ int stin_platform_set_srgb(stin_platform *p, int on, char *err, size_t err_size)
         stin_platform_errorf(err, err_size, "stin_platform_set_srgb: platform is NULL");
         return 0;
     }
-    if (!on) {
-        stin_platform_srgb_release(p, &p->srgb);
-        return 1;
-    }
-    if (p->msaa.fbo) {
-        stin_platform_errorf(err, err_size, "stin_platform_set_srgb: the target is multisampled; "
-                                            "multisampled sRGB targets are not offered");
-        return 0;
-    }
-    if (!stin_platform_srgb_create(p, &p->srgb, p->width, p->height, err, err_size)) {
-        char why[400];
-        snprintf(why, sizeof why, "%s", err ? err : "");
-        stin_platform_errorf(err, err_size, "%s: %s", stin_platform_kind_name(p->kind), why);
-        return 0;
-    }
-    return 1;
+    return change_target(p, p->msaa.fbo ? p->msaa.samples : 0, on, err, err_size);
 }
 
 int stin_platform_samples(const stin_platform *p)
@@ -350,7 +350,7 @@ int stin_platform_samples(const stin_platform *p)
 
 int stin_platform_srgb(const stin_platform *p)
 {
-    return p && p->srgb.fbo;
+    return p && (p->srgb.fbo || (p->msaa.fbo && p->msaa.srgb));
 }
 
 int stin_platform_width(const stin_platform *p)
@@ -407,14 +407,14 @@ static unsigned resolve_bit(unsigned format)
 }
 
 /* Any GL error (pending ones included, which this consumes) fails the read. */
-static int read_pixels(stin_platform *p, unsigned format, unsigned type, void *out)
+static int read_pixels(stin_platform *p, unsigned format, unsigned type, int data, void *out)
 {
     pack_state s;
     int ok = 1, i, saved[2];
     int resolved;
     if (!p || !out)
         return 0;
-    resolved = stin_platform_msaa_resolve(p, &p->msaa, resolve_bit(format), p->width,
+    resolved = stin_platform_msaa_resolve(p, &p->msaa, resolve_bit(format), data, p->width,
                                           p->height, saved);
     pack_begin(p, &s);
     p->read_pixels(0, 0, p->width, p->height, format, type, out);
@@ -428,15 +428,20 @@ static int read_pixels(stin_platform *p, unsigned format, unsigned type, void *o
 
 int stin_platform_read_color(stin_platform *p, uint8_t *rgba)
 {
-    return read_pixels(p, P_GL_RGBA, P_GL_UNSIGNED_BYTE, rgba);
+    return read_pixels(p, P_GL_RGBA, P_GL_UNSIGNED_BYTE, 0, rgba);
+}
+
+int stin_platform_read_data(stin_platform *p, uint8_t *rgba)
+{
+    return read_pixels(p, P_GL_RGBA, P_GL_UNSIGNED_BYTE, 1, rgba);
 }
 
 int stin_platform_read_depth(stin_platform *p, float *depth)
 {
-    return read_pixels(p, P_GL_DEPTH_COMPONENT, P_GL_FLOAT, depth);
+    return read_pixels(p, P_GL_DEPTH_COMPONENT, P_GL_FLOAT, 1, depth);
 }
 
 int stin_platform_read_stencil(stin_platform *p, uint8_t *stencil)
 {
-    return read_pixels(p, P_GL_STENCIL_INDEX, P_GL_UNSIGNED_BYTE, stencil);
+    return read_pixels(p, P_GL_STENCIL_INDEX, P_GL_UNSIGNED_BYTE, 1, stencil);
 }

@@ -31,18 +31,22 @@ typedef struct stin_platform_msaa {
     unsigned fbo, resolve_fbo;
     unsigned rb[4]; /* colour, depth-stencil; the twin's colour, depth-stencil */
     int samples;    /* what the driver allocated (>= the count asked) */
+    int srgb;       /* 1: both colours GL_SRGB8_ALPHA8, GL_FRAMEBUFFER_SRGB enabled */
 } stin_platform_msaa;
 
-/* Replaces m by a target of `samples` (<= 1: none, the default framebuffer)
- * and leaves it bound; 0 with err when the context cannot. */
-int stin_platform_msaa_create(stin_platform *p, stin_platform_msaa *m, int samples, int w,
-                              int h, char *err, size_t err_size);
+/* Replaces m by a target of `samples` (<= 1: none, the default framebuffer),
+ * sRGB-encoded with srgb = 1 (its resolve twin too, GL_FRAMEBUFFER_SRGB
+ * enabled), and leaves it bound; 0 with err when the context cannot. */
+int stin_platform_msaa_create(stin_platform *p, stin_platform_msaa *m, int samples, int srgb,
+                              int w, int h, char *err, size_t err_size);
 void stin_platform_msaa_release(stin_platform *p, stin_platform_msaa *m);
 /* Blits buffer_bit (GL_COLOR/DEPTH/STENCIL_BUFFER_BIT) into the twin and
  * binds it for reading; saved[] gets the draw and read bindings for
- * stin_platform_msaa_resolve_end. 0: no target. */
+ * stin_platform_msaa_resolve_end. data = 1: an sRGB target's samples are
+ * averaged as stored (GL_FRAMEBUFFER_SRGB off for the blit), not decoded.
+ * 0: no target. */
 int stin_platform_msaa_resolve(stin_platform *p, stin_platform_msaa *m, unsigned buffer_bit,
-                               int w, int h, int saved[2]);
+                               int data, int w, int h, int saved[2]);
 void stin_platform_msaa_resolve_end(stin_platform *p, const int saved[2]);
 
 /* Exact token match in a space-separated list (NULL: none). */
@@ -58,6 +62,12 @@ typedef struct stin_platform_srgb_target {
     unsigned fbo;
     unsigned rb[2]; /* SRGB8_ALPHA8 colour, depth 24 / stencil 8 */
 } stin_platform_srgb_target;
+
+/* 1 when the context renders sRGB (GL 3.0, or ARB/EXT_framebuffer_sRGB with
+ * EXT_texture_sRGB); 0 with why. *encoding_query: whether GL defines the
+ * attachment's colour-encoding query (GL 3.0, ARB_framebuffer_sRGB). */
+int stin_platform_srgb_supported(stin_platform *p, int *encoding_query, char *why,
+                                 size_t why_size);
 
 /* Replaces s by a w x h sRGB target, left bound with GL_FRAMEBUFFER_SRGB
  * enabled; 0 with err saying what the context lacks. */

@@ -7,7 +7,10 @@
  * its own, so this is the one way either platform offers them. Needs GL 3.0,
  * ARB_framebuffer_object, or EXT_framebuffer_object with
  * EXT_framebuffer_multisample and EXT_framebuffer_blit (the EXT entry
- * points are used then).
+ * points are used then). An sRGB one has GL_SRGB8_ALPHA8 colour in both
+ * framebuffers and GL_FRAMEBUFFER_SRGB on, as an application enables it:
+ * writes are encoded, blending and the resolve's average are in linear
+ * space (GL 4.4's blit rule; Mesa does so).
  */
 #include "platform_internal.h"
 
@@ -24,6 +27,10 @@
 #define M_GL_DEPTH_ATTACHMENT 0x8D00
 #define M_GL_STENCIL_ATTACHMENT 0x8D20
 #define M_GL_RGBA8 0x8058
+#define M_GL_SRGB8_ALPHA8 0x8C43
+#define M_GL_FRAMEBUFFER_SRGB 0x8DB9
+#define M_GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING 0x8210
+#define M_GL_SRGB 0x8C40
 #define M_GL_DEPTH24_STENCIL8 0x88F0
 #define M_GL_FRAMEBUFFER_COMPLETE 0x8CD5
 #define M_GL_MAX_SAMPLES 0x8D57
@@ -47,6 +54,8 @@ typedef void (*m_get_rb_param_fn)(unsigned target, unsigned pname, int *data);
 typedef unsigned char (*m_is_enabled_fn)(unsigned cap);
 typedef void (*m_cap_fn)(unsigned cap);
 typedef const unsigned char *(*m_get_string_fn)(unsigned name);
+typedef void (*m_get_attachment_fn)(unsigned target, unsigned attachment, unsigned pname,
+                                    int *out);
 
 typedef struct msaa_gl {
     m_gen_fn gen_framebuffers, gen_renderbuffers;
@@ -60,6 +69,7 @@ typedef struct msaa_gl {
     m_get_rb_param_fn get_rb_param;
     m_is_enabled_fn is_enabled;
     m_cap_fn enable, disable;
+    m_get_attachment_fn get_attachment;
 } msaa_gl;
 
 /* Asked below GL 3.0 only, where GL_EXTENSIONS is one string (asking
@@ -124,10 +134,12 @@ static int load_gl(stin_platform *p, msaa_gl *gl, char *why, size_t why_size)
     gl->is_enabled = (m_is_enabled_fn)load(p, "glIsEnabled", "");
     gl->enable = (m_cap_fn)load(p, "glEnable", "");
     gl->disable = (m_cap_fn)load(p, "glDisable", "");
+    gl->get_attachment =
+        (m_get_attachment_fn)load(p, "glGetFramebufferAttachmentParameteriv", x);
     if (!gl->gen_framebuffers || !gl->gen_renderbuffers || !gl->delete_framebuffers ||
         !gl->delete_renderbuffers || !gl->bind_framebuffer || !gl->bind_renderbuffer ||
         !gl->storage_ms || !gl->attach || !gl->status || !gl->blit || !gl->get_rb_param ||
-        !gl->get_integerv || !gl->is_enabled || !gl->enable || !gl->disable) {
+        !gl->get_integerv || !gl->is_enabled || !gl->enable || !gl->disable || !gl->get_attachment) {
         snprintf(why, why_size, "an entry point of multisampled framebuffers (suffix '%s') "
                                 "did not resolve", x);
         return 0;
@@ -135,15 +147,16 @@ static int load_gl(stin_platform *p, msaa_gl *gl, char *why, size_t why_size)
     return 1;
 }
 
-/* A framebuffer of colour + depth-stencil renderbuffers with `samples`
- * (0: single-sampled); 1 when complete. rb[0], rb[1] get the renderbuffers. */
-static int make_target(const msaa_gl *gl, int samples, int w, int h, unsigned *fbo,
-                       unsigned rb[2])
+/* A framebuffer of colour (`colour`: RGBA8 or SRGB8_ALPHA8) + depth-stencil
+ * renderbuffers with `samples` (0: single-sampled); 1 when complete. rb[0],
+ * rb[1] get the renderbuffers. */
+static int make_target(const msaa_gl *gl, int samples, unsigned colour, int w, int h,
+                       unsigned *fbo, unsigned rb[2])
 {
     gl->gen_framebuffers(1, fbo);
     gl->gen_renderbuffers(2, rb);
     gl->bind_renderbuffer(M_GL_RENDERBUFFER, rb[0]);
-    gl->storage_ms(M_GL_RENDERBUFFER, samples, M_GL_RGBA8, w, h);
+    gl->storage_ms(M_GL_RENDERBUFFER, samples, colour, w, h);
     gl->bind_renderbuffer(M_GL_RENDERBUFFER, rb[1]);
     gl->storage_ms(M_GL_RENDERBUFFER, samples, M_GL_DEPTH24_STENCIL8, w, h);
     gl->bind_renderbuffer(M_GL_RENDERBUFFER, 0);
@@ -164,6 +177,8 @@ void stin_platform_msaa_release(stin_platform *p, stin_platform_msaa *m)
         unsigned fbos[2];
         fbos[0] = m->fbo;
         fbos[1] = m->resolve_fbo;
+        if (m->srgb) /* the enable is the platform's, as it set it */
+            gl.disable(M_GL_FRAMEBUFFER_SRGB);
         gl.bind_framebuffer(M_GL_FRAMEBUFFER, 0);
         gl.delete_framebuffers(2, fbos);
         gl.delete_renderbuffers(4, m->rb);
@@ -171,17 +186,30 @@ void stin_platform_msaa_release(stin_platform *p, stin_platform_msaa *m)
     memset(m, 0, sizeof *m);
 }
 
-int stin_platform_msaa_create(stin_platform *p, stin_platform_msaa *m, int samples, int w,
-                              int h, char *err, size_t err_size)
+/* 1 when the bound framebuffer's colour is stored encoded (asked where GL
+ * defines the query). */
+static int stores_srgb(const msaa_gl *gl)
+{
+    int encoding = 0;
+    gl->get_attachment(M_GL_FRAMEBUFFER, M_GL_COLOR_ATTACHMENT0,
+                       M_GL_FRAMEBUFFER_ATTACHMENT_COLOR_ENCODING, &encoding);
+    return encoding == M_GL_SRGB;
+}
+
+int stin_platform_msaa_create(stin_platform *p, stin_platform_msaa *m, int samples, int srgb,
+                              int w, int h, char *err, size_t err_size)
 {
     msaa_gl gl;
     char why[200];
-    int max_samples = 0, got = 0;
+    int max_samples = 0, got = 0, encoding_query = 0;
+    unsigned colour = srgb ? M_GL_SRGB8_ALPHA8 : M_GL_RGBA8;
     stin_platform_msaa_release(p, m);
     if (samples <= 1)
         return 1;
-    if (!load_gl(p, &gl, why, sizeof why)) {
-        stin_platform_errorf(err, err_size, "%d samples: %s", samples, why);
+    if (!load_gl(p, &gl, why, sizeof why) ||
+        (srgb && !stin_platform_srgb_supported(p, &encoding_query, why, sizeof why))) {
+        stin_platform_errorf(err, err_size, "%d samples%s: %s", samples, srgb ? ", sRGB" : "",
+                             why);
         return 0;
     }
     gl.get_integerv(M_GL_MAX_SAMPLES, &max_samples);
@@ -190,22 +218,28 @@ int stin_platform_msaa_create(stin_platform *p, stin_platform_msaa *m, int sampl
                              "(GL_MAX_SAMPLES)", samples, max_samples);
         return 0;
     }
-    if (!make_target(&gl, 0, w, h, &m->resolve_fbo, m->rb + 2) ||
-        !make_target(&gl, samples, w, h, &m->fbo, m->rb)) {
+    if (!make_target(&gl, 0, colour, w, h, &m->resolve_fbo, m->rb + 2) ||
+        (encoding_query && !stores_srgb(&gl)) ||
+        !make_target(&gl, samples, colour, w, h, &m->fbo, m->rb) ||
+        (encoding_query && !stores_srgb(&gl))) {
         stin_platform_msaa_release(p, m);
-        stin_platform_errorf(err, err_size, "%d samples: the framebuffer is incomplete",
-                             samples);
+        stin_platform_errorf(err, err_size, "%d samples%s: the framebuffer is incomplete%s",
+                             samples, srgb ? ", sRGB" : "",
+                             srgb ? " or the driver stores GL_SRGB8_ALPHA8 linear" : "");
         return 0;
     }
     gl.bind_renderbuffer(M_GL_RENDERBUFFER, m->rb[0]);
     gl.get_rb_param(M_GL_RENDERBUFFER, M_GL_RENDERBUFFER_SAMPLES, &got);
     gl.bind_renderbuffer(M_GL_RENDERBUFFER, 0);
     m->samples = got;
+    m->srgb = srgb;
+    if (srgb)
+        gl.enable(M_GL_FRAMEBUFFER_SRGB); /* the caller's part: encode on write */
     return 1; /* the multisampled framebuffer stays bound */
 }
 
 int stin_platform_msaa_resolve(stin_platform *p, stin_platform_msaa *m, unsigned buffer_bit,
-                               int w, int h, int saved[2])
+                               int data, int w, int h, int saved[2])
 {
     msaa_gl gl;
     char why[8];
@@ -219,7 +253,11 @@ int stin_platform_msaa_resolve(stin_platform *p, stin_platform_msaa *m, unsigned
         gl.disable(M_GL_SCISSOR_TEST);
     gl.bind_framebuffer(M_GL_READ_FRAMEBUFFER, m->fbo);
     gl.bind_framebuffer(M_GL_DRAW_FRAMEBUFFER, m->resolve_fbo);
+    if (data && m->srgb) /* data bytes, not colour: no decode, no encode */
+        gl.disable(M_GL_FRAMEBUFFER_SRGB);
     gl.blit(0, 0, w, h, 0, 0, w, h, buffer_bit, M_GL_NEAREST);
+    if (data && m->srgb)
+        gl.enable(M_GL_FRAMEBUFFER_SRGB);
     if (scissor)
         gl.enable(M_GL_SCISSOR_TEST);
     gl.bind_framebuffer(M_GL_READ_FRAMEBUFFER, m->resolve_fbo);

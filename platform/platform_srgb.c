@@ -55,32 +55,38 @@ static stin_platform_fn load(stin_platform *p, const char *name, const char *suf
     return stin_platform_ptr_to_fn(stin_platform_get_proc_address(p, full));
 }
 
+int stin_platform_srgb_supported(stin_platform *p, int *encoding_query, char *why,
+                                 size_t why_size)
+{
+    int version = stin_platform_gl_version(p);
+    *encoding_query = version >= 30 || stin_platform_has_extension(p, "GL_ARB_framebuffer_sRGB");
+    if (version >= 30 || ((stin_platform_has_extension(p, "GL_ARB_framebuffer_sRGB") ||
+                           stin_platform_has_extension(p, "GL_EXT_framebuffer_sRGB")) &&
+                          stin_platform_has_extension(p, "GL_EXT_texture_sRGB")))
+        return 1;
+    snprintf(why, why_size, "GL %d.%d has no sRGB rendering (GL 3.0, or "
+                            "GL_ARB/EXT_framebuffer_sRGB with GL_EXT_texture_sRGB)",
+             version / 10, version % 10);
+    return 0;
+}
+
 /* The entry-point suffix the context promises framebuffer objects with
- * ("" or "EXT"), or NULL with why; *encoding_query: whether GL defines the
- * attachment's colour-encoding query. */
+ * ("" or "EXT") where it renders sRGB too, or NULL with why. */
 static const char *fbo_suffix(stin_platform *p, int *encoding_query, char *why,
                               size_t why_size)
 {
     int version = stin_platform_gl_version(p);
-    int srgb = version >= 30 || ((stin_platform_has_extension(p, "GL_ARB_framebuffer_sRGB") ||
-                                  stin_platform_has_extension(p, "GL_EXT_framebuffer_sRGB")) &&
-                                 stin_platform_has_extension(p, "GL_EXT_texture_sRGB"));
-    const char *suffix = NULL;
-    *encoding_query = version >= 30 || stin_platform_has_extension(p, "GL_ARB_framebuffer_sRGB");
+    if (!stin_platform_srgb_supported(p, encoding_query, why, why_size))
+        return NULL;
     if (version >= 30 || stin_platform_has_extension(p, "GL_ARB_framebuffer_object"))
-        suffix = "";
-    else if (stin_platform_has_extension(p, "GL_EXT_framebuffer_object") &&
-             stin_platform_has_extension(p, "GL_EXT_packed_depth_stencil"))
-        suffix = "EXT";
-    if (!suffix || !srgb)
-        snprintf(why, why_size,
-                 "GL %d.%d has %s%s%s", version / 10, version % 10,
-                 suffix ? "" : "no framebuffer objects (GL 3.0, GL_ARB_framebuffer_object or "
-                               "GL_EXT_framebuffer_object + GL_EXT_packed_depth_stencil)",
-                 !suffix && !srgb ? " and " : "",
-                 srgb ? "" : "no sRGB rendering (GL 3.0, or GL_ARB/EXT_framebuffer_sRGB "
-                             "with GL_EXT_texture_sRGB)");
-    return suffix && srgb ? suffix : NULL;
+        return "";
+    if (stin_platform_has_extension(p, "GL_EXT_framebuffer_object") &&
+        stin_platform_has_extension(p, "GL_EXT_packed_depth_stencil"))
+        return "EXT";
+    snprintf(why, why_size, "GL %d.%d has no framebuffer objects (GL 3.0, "
+                            "GL_ARB_framebuffer_object or GL_EXT_framebuffer_object + "
+                            "GL_EXT_packed_depth_stencil)", version / 10, version % 10);
+    return NULL;
 }
 
 static int load_gl(stin_platform *p, srgb_gl *gl, char *why, size_t why_size)

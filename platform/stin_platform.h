@@ -82,8 +82,8 @@ const char *stin_platform_kind_name(stin_platform_kind kind);
 int stin_platform_kind_from_name(const char *name, stin_platform_kind *out); /* 1 ok */
 
 /* Framebuffer name to render into: 0, the default framebuffer, or the
- * framebuffer object of stin_platform_set_samples or stin_platform_set_srgb
- * (one at a time: multisampled sRGB targets are not offered). */
+ * framebuffer object of stin_platform_set_samples and stin_platform_set_srgb
+ * (the two combine: a multisampled sRGB target). */
 uint32_t stin_platform_framebuffer(const stin_platform *p);
 
 /* Renders into a framebuffer object of `samples` samples from now on (an
@@ -93,9 +93,14 @@ uint32_t stin_platform_framebuffer(const stin_platform *p);
  * GL_EXT_framebuffer_object with GL_EXT_framebuffer_multisample and
  * GL_EXT_framebuffer_blit, on either backend, and samples <= GL_MAX_SAMPLES.
  * Returns 1, or 0 with err saying which is missing (the target is then the
- * default framebuffer). The read-backs below resolve it first: one blit into
- * a single-sampled twin (colour averaged over the samples; depth and stencil
- * one sample's, the driver's choice), the caller's framebuffer bindings kept. */
+ * one before, or the default framebuffer where that cannot be made again).
+ * The read-backs below resolve it first: one blit into a single-sampled twin
+ * (colour averaged over the samples; depth and stencil one sample's, the
+ * driver's choice), the caller's framebuffer bindings kept. With
+ * stin_platform_set_srgb on, both colours are GL_SRGB8_ALPHA8 and
+ * GL_FRAMEBUFFER_SRGB is on: the samples are written encoded and the resolve
+ * averages them in linear space and encodes the mean (GL 4.4's blit rule,
+ * which Mesa follows). */
 int stin_platform_set_samples(stin_platform *p, int samples, char *err, size_t err_size);
 /* The samples of the current target as the driver allocated them (it may
  * round the count up); 0 for the default framebuffer. */
@@ -110,8 +115,11 @@ int stin_platform_samples(const stin_platform *p);
  * with GL_EXT_packed_depth_stencil) and sRGB rendering (GL 3.0, or
  * GL_ARB_framebuffer_sRGB or GL_EXT_framebuffer_sRGB with
  * GL_EXT_texture_sRGB), on either backend. Returns 1, or 0 with err saying
- * what is missing (the target is then the default framebuffer).
- * on = 0: deletes it, disables GL_FRAMEBUFFER_SRGB and binds framebuffer 0.
+ * what is missing (the target is then the one before). Into a multisampled
+ * target (stin_platform_set_samples, before or after) the multisampled
+ * colour and its resolve twin are the sRGB ones.
+ * on = 0: deletes it, disables GL_FRAMEBUFFER_SRGB and binds framebuffer 0
+ * (the linear multisampled target, where the samples are still set).
  * stin_platform_read_color returns its stored, encoded bytes. */
 int stin_platform_set_srgb(stin_platform *p, int on, char *err, size_t err_size);
 /* 1 while the target is the sRGB one. */
@@ -128,6 +136,12 @@ int stin_platform_height(const stin_platform *p);
  * error afterwards; errors pending before the call count too and are
  * consumed. */
 int stin_platform_read_color(stin_platform *p, uint8_t *rgba);
+/* read_color for a data frame (STIN_OUTPUT_NORMAL, STIN_OUTPUT_VISIBILITY):
+ * the same bytes, except that a multisampled sRGB target's samples are
+ * averaged as stored (GL_FRAMEBUFFER_SRGB off for the resolve), since stin
+ * writes data there unencoded; read_color would decode, average and encode
+ * them as colour, moving silhouette pixels. */
+int stin_platform_read_data(stin_platform *p, uint8_t *rgba);
 int stin_platform_read_depth(stin_platform *p, float *depth);
 int stin_platform_read_stencil(stin_platform *p, uint8_t *stencil);
 

@@ -1,8 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* viewer: a window onto a scene file through libstin. Orbit and zoom with
  * the mouse; keys force the tier and each feature's technique (a new stin
- * context each time, what stin chose and why in the title), multisampling
- * and sRGB. --frames N runs a script with no input instead and can write
+ * context each time, what stin chose and why in the title and the
+ * overlay), multisampling and sRGB. --frames N runs a script with no input instead and can write
  * the last frame's read-back (the test compares it with stin-render's). */
 #include "cli_log.h"
 #include "scene.h"
@@ -10,6 +10,7 @@
 #include "viewer_camera.h"
 #include "viewer_input.h"
 #include "viewer_options.h"
+#include "viewer_overlay.h"
 #include "viewer_session.h"
 #include "viewer_shot.h"
 #include "viewer_status.h"
@@ -33,6 +34,9 @@ typedef struct viewer {
     viewer_orbit orbit;
     stin_feature why;         /* the feature the title explains */
     char title[1024];         /* the last frame's */
+    char lines[2048];         /* the overlay's text, the last frame's */
+    int overlay_on;           /* O */
+    viewer_overlay overlay;
     int width, height;
 } viewer;
 
@@ -96,6 +100,12 @@ static void frame(viewer *v, double *ms)
     *ms = now_ms() - t0;
     viewer_status_title(&v->session, &v->window, v->why, *ms, v->title, sizeof v->title);
     viewer_window_set_title(&v->window, v->title);
+    if (v->overlay_on) { /* after stin's frame, over it; the times are the frame's alone */
+        int w, h;
+        viewer_window_size(&v->window, &w, &h);
+        viewer_status_lines(&v->session, &v->window, v->why, *ms, v->lines, sizeof v->lines);
+        viewer_overlay_draw(&v->overlay, v->lines, w, h);
+    }
 }
 
 /* One key, as pressed in the window or given by --keys. 0: go on; else
@@ -126,6 +136,9 @@ static int handle_key(viewer *v, int key, int *exit_code)
     case VIEWER_SRGB:
         v->window.srgb_asked = want.srgb;
         break;
+    case VIEWER_OVERLAY:
+        v->overlay_on = !v->overlay_on;
+        return 0;
     case VIEWER_RECREATE_CONTEXT:
     case VIEWER_RECREATE_WINDOW:
         if (!apply(v, &want, a == VIEWER_RECREATE_WINDOW, exit_code))
@@ -186,6 +199,8 @@ static int run_script(viewer *v)
     }
     viewer_status_print(&v->session, &v->window);
     printf("title: %s\n", v->title);
+    if (v->overlay_on) /* the test compares what lies below the panel */
+        printf("overlay: %dx%d at the top left\n", v->overlay.panel_w, v->overlay.panel_h);
     return v->session.refused[0] || v->session.log.errors ? EXIT_FAILED : 0;
 }
 
@@ -233,6 +248,7 @@ int main(int argc, char **argv)
         goto done;
     }
     v.asked.samples = v.opt.settings.samples;
+    v.overlay_on = !v.opt.frames; /* a script's read-back is stin's frame alone unless O */
     viewer_status_print(&v.session, &v.window);
     code = v.opt.frames ? run_script(&v) : run_interactive(&v);
 done:

@@ -12,6 +12,7 @@ const char viewer_keys_help[] =
     "  P             transparency technique\n"
     "  M             samples: 0, 2, 4, 8 (a new window)\n"
     "  G             sRGB framebuffer on/off\n"
+    "  O             status overlay on/off (on at start; off in a --frames script)\n"
     "  R             the file's camera again\n"
     "  H             this help (on stdout)\n"
     "  Q, Esc        quit\n";
@@ -59,6 +60,8 @@ viewer_action viewer_settings_key(viewer_settings *s, int key, stin_feature *fea
     case GLFW_KEY_G:
         s->srgb = !s->srgb;
         return VIEWER_SRGB;
+    case GLFW_KEY_O:
+        return VIEWER_OVERLAY;
     case GLFW_KEY_H:
         return VIEWER_HELP;
     case GLFW_KEY_R:

@@ -19,6 +19,7 @@ typedef enum viewer_action {
     VIEWER_RECREATE_CONTEXT, /* tier or technique: a new stin context */
     VIEWER_RECREATE_WINDOW,  /* samples: a new window (and so context) */
     VIEWER_SRGB,             /* sRGB on or off: the next frame */
+    VIEWER_OVERLAY,          /* the status overlay on or off */
     VIEWER_HELP,
     VIEWER_RESET_CAMERA,
     VIEWER_QUIT
@@ -26,7 +27,8 @@ typedef enum viewer_action {
 
 /* Applies key (a GLFW key code) to s: T tier, S shadows, F surface,
  * P transparency (each cycles auto, then the feature's techniques best
- * first), M samples (0, 2, 4, 8), G sRGB, H help, R camera, Esc/Q quit.
+ * first), M samples (0, 2, 4, 8), G sRGB, O overlay, H help, R camera,
+ * Esc/Q quit.
  * *feature gets the feature a technique key changed (else
  * STIN_FEATURE_COUNT). */
 viewer_action viewer_settings_key(viewer_settings *s, int key, stin_feature *feature);

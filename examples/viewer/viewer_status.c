@@ -48,26 +48,59 @@ static const char *why_text(const viewer_session *v, stin_feature f, stin_choice
     return c->reason;
 }
 
-void viewer_status_title(const viewer_session *v, const viewer_window *w,
-                         stin_feature why_feature, double frame_ms, char *out, size_t size)
+/* Samples and sRGB: after the tier on its line, or " | 4x | sRGB". */
+static size_t put_target(char *out, size_t size, size_t at, const viewer_window *w, int lines)
+{
+    if (lines && !w->samples)
+        at = put(out, size, at, "%s", ", single-sampled", 0);
+    if (w->samples)
+        at = put(out, size, at, lines ? ", %.0f samples" : " | %.0fx", NULL, (double)w->samples);
+    if (w->srgb_asked && w->srgb_capable)
+        at = put(out, size, at, "%s", lines ? ", sRGB" : " | sRGB", 0);
+    return at;
+}
+
+/* The facts as the title (lines = 0: " | " between them) or the overlay's
+ * lines (1: a fact a line, each named). */
+static void compose(const viewer_session *v, const viewer_window *w, stin_feature why_feature,
+                    double frame_ms, int lines, char *out, size_t size)
 {
     size_t at = 0, i;
     stin_frame_stats st = stin_query_frame_stats(v->sc.ctx);
     stin_feature f = why_feature == STIN_FEATURE_COUNT ? STIN_FEATURE_SHADOWS : why_feature;
+    const char *sep = lines ? "\n" : " | ";
     stin_choice c;
-    at = put(out, size, at, "stin %s", stin_tier_name(stin_query_tier(v->sc.ctx)), 0);
+    at = put(out, size, at, lines ? "tier %s" : "stin %s",
+             stin_tier_name(stin_query_tier(v->sc.ctx)), 0);
+    if (lines)
+        at = put_target(out, size, at, w, 1);
     for (i = 0; i < sizeof shown / sizeof shown[0]; i++) {
         stin_choice ci = stin_query_choice(v->sc.ctx, shown[i]);
-        at = put(out, size, at, " | %s", stin_technique_name(ci.technique), 0);
+        at = put(out, size, at, "%s", sep, 0);
+        if (lines)
+            at = put(out, size, at, "%s: ", stin_feature_name(shown[i]), 0);
+        at = put(out, size, at, "%s", stin_technique_name(ci.technique), 0);
     }
-    if (w->samples)
-        at = put(out, size, at, " | %.0fx", NULL, (double)w->samples);
-    if (w->srgb_asked && w->srgb_capable)
-        at = put(out, size, at, "%s", " | sRGB", 0);
-    at = put(out, size, at, " | %.1f ms", NULL, frame_ms);
+    if (!lines)
+        at = put_target(out, size, at, w, 0);
+    at = put(out, size, at, "%s", sep, 0);
+    at = put(out, size, at, lines ? "frame %.1f ms\nstages" : "%.1f ms", NULL, frame_ms);
     at = put_stages(out, size, at, &st);
-    at = put(out, size, at, " | %s: ", stin_feature_name(f), 0);
+    at = put(out, size, at, "%s", sep, 0);
+    at = put(out, size, at, lines ? "why %s: " : "%s: ", stin_feature_name(f), 0);
     put(out, size, at, "%s", why_text(v, f, &c), 0);
+}
+
+void viewer_status_title(const viewer_session *v, const viewer_window *w,
+                         stin_feature why_feature, double frame_ms, char *out, size_t size)
+{
+    compose(v, w, why_feature, frame_ms, 0, out, size);
+}
+
+void viewer_status_lines(const viewer_session *v, const viewer_window *w,
+                         stin_feature why_feature, double frame_ms, char *out, size_t size)
+{
+    compose(v, w, why_feature, frame_ms, 1, out, size);
 }
 
 void viewer_status_print(const viewer_session *v, const viewer_window *w)

@@ -14,6 +14,9 @@
  * begin to swap. */
 void viewer_status_title(const viewer_session *v, const viewer_window *w,
                          stin_feature why_feature, double frame_ms, char *out, size_t size);
+/* The title's facts a line each ('\n' between), for the overlay. */
+void viewer_status_lines(const viewer_session *v, const viewer_window *w,
+                         stin_feature why_feature, double frame_ms, char *out, size_t size);
 /* The same facts over several lines, for stdout (H, and each change). */
 void viewer_status_print(const viewer_session *v, const viewer_window *w);
 

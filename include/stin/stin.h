@@ -551,6 +551,11 @@
  *   target.
  * The visibility export's map and the outline are drawn from the
  * single-sampled mask and buffers: one value a pixel.
+ * Tested (tests/image/msaa_test.c) at 4 samples for vdsm, volume and
+ * map-pcf on GL4, volume and map-pcf on GL2, volume on GL1; at 2 and 8
+ * samples, where GL_MAX_SAMPLES has them, for vdsm, GL2's map-pcf and
+ * GL1's volume (llvmpipe has at most 4 and allocates 2 as 4); in a 4x sRGB
+ * target (tests/image/srgb_test.c) for vdsm, GL2's and GL1's volume.
  *
  * GL STATE
  * stin_end_frame() binds desc->framebuffer (GL 3.0/FBO contexts), sets the
@@ -645,6 +650,12 @@
  * (tests/image/srgb_test.c). Without framebuffer objects the fixed-function
  * maps are drawn in the frame's own colour buffer and copied; an
  * sRGB-encoding default framebuffer would encode them, which is untested.
+ * A multisampled sRGB target: the beauty frame is written encoded per
+ * sample, and a resolve (glBlitFramebuffer) with GL_FRAMEBUFFER_SRGB on
+ * averages the samples in linear space, as it should for colour. A data
+ * frame's samples are stored unencoded: resolve it with the enable off, or
+ * a silhouette pixel's samples are decoded, averaged and encoded as if
+ * colour (stin_platform_read_data does so).
  * stin_create_mesh leaves the array buffer and vertex array 0's element
  * buffer at 0, stin_update_mesh the array buffer; the caller's vertex array
  * object stays bound and untouched.

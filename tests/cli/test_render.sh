@@ -125,6 +125,19 @@ idiff -fail 0.01 "$T/linear.exr" "$T/srgb.exr" > "$T/idiff" 2>&1
 drc=$?
 check "--srgb" $([ $rc -eq 0 ] && [ $drc -eq 0 ] && echo 0 || echo 1) \
     "exit $rc, $(grep -i 'max error' "$T/idiff")"
+# --samples 4 --srgb: the multisampled sRGB target against the 4x linear one
+# by the same bound (the resolve averages the beauty's samples in linear
+# space, as the linear target stores them; N and visibility are data, read
+# without a decode).
+"$R" tests/scenes/torus.json --size 64x48 --profile gl33-core --samples 4 -o "$T/linear4.exr" \
+    > /dev/null 2>&1 &&
+    "$R" tests/scenes/torus.json --size 64x48 --profile gl33-core --samples 4 --srgb \
+        -o "$T/srgb4.exr" > /dev/null 2>&1
+rc=$?
+idiff -fail 0.01 "$T/linear4.exr" "$T/srgb4.exr" > "$T/idiff" 2>&1
+drc=$?
+check "--samples 4 --srgb" $([ $rc -eq 0 ] && [ $drc -eq 0 ] && echo 0 || echo 1) \
+    "exit $rc, $(grep -i 'max error' "$T/idiff")"
 "$R" tests/scenes/torus.json --size 64x64 --no-output --profile gl21 --stage-times > "$T/stdout" 2>&1
 check "--stage-times without timer queries" $([ $? -eq 0 ] && grep -q "^stages: not timed" "$T/stdout" &&
     echo 0 || echo 1) "stdout: $(head -c 300 "$T/stdout")"

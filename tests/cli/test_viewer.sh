@@ -51,6 +51,8 @@ echo \$? > "$T/gl1-volume.rc"
 echo \$? > "$T/srgb.rc"
 "$V" "$SCENE" --size $SIZE --frames 2 --orbit 0.1,0 --screenshot "$T/nudged.exr" > "$T/nudged.txt" 2>&1
 echo \$? > "$T/nudged.rc"
+"$V" "$SCENE" --size $SIZE --frames 2 --keys O --screenshot "$T/overlay.exr" > "$T/overlay.txt" 2>&1
+echo \$? > "$T/overlay.rc"
 EOF
 timeout 120 xvfb-run -a -s "-screen 0 640x480x24" sh "$T/viewer.sh" > "$T/xvfb.txt" 2>&1
 if [ "$(cat "$T/auto.rc" 2>/dev/null)" = 4 ] || [ ! -e "$T/auto.rc" ]; then
@@ -120,4 +122,30 @@ if [ "$(cat "$T/nudged.rc")" -eq 0 ] && [ -n "$p" ] && awk -v p="$p" -v b=$BOUND
     echo "PASS viewer: a camera 0.1 degrees off is caught: $p% of pixels over 2/255"
 else
     echo "FAIL viewer: a camera 0.1 degrees off passed: ${p:-?}% of pixels over 2/255 (bound $BOUND%)"
+fi
+
+# O (the status overlay; off in a script until pressed, so the comparisons
+# above are stin's frame alone): the panel it reports at the top left must
+# differ from stin-render's frame on at least half its pixels (a dark panel
+# with light text), and the rows below it agree by the bound above.
+# Measured at 160x120: a 160x112 panel, 93.3% of the frame's pixels over
+# 2/255 (all of the panel's), the 8 rows below: none.
+W=${SIZE%x*}
+H=${SIZE#*x}
+panel=$(sed -n 's/^overlay: \([0-9]*x[0-9]*\) at the top left$/\1/p' "$T/overlay.txt")
+pw=${panel%x*}
+ph=${panel#*x}
+p=$(over "$T/auto.ref.exr" "$T/overlay.exr")
+below=0
+if [ -n "$panel" ] && [ "$ph" -lt "$H" ]; then
+    out=$(oiiotool --fail $THRESH --warn $THRESH "$T/auto.ref.exr" --ch R,G,B,A \
+        --cut "${W}x$((H - ph))+0+$ph" "$T/overlay.exr" --cut "${W}x$((H - ph))+0+$ph" --diff 2>&1)
+    echo "$out" | grep -q '^PASS' || below=$(echo "$out" | sed -n 's/.*pixels (\([0-9.e+-]*\)%) over.*/\1/p' | head -n 1)
+fi
+if [ "$(cat "$T/overlay.rc")" -eq 0 ] && [ -n "$panel" ] && [ -n "$p" ] &&
+    awk -v p="$p" -v a="$((pw * ph))" -v n="$((W * H))" -v b="${below:-100}" -v bound=$BOUND \
+        'BEGIN { exit !(p * n / 100 >= a / 2 && b <= bound) }'; then
+    echo "PASS viewer: the overlay (O) draws its ${panel} panel: $p% of pixels over 2/255, below it $below%"
+else
+    echo "FAIL viewer: overlay (O): exit $(cat "$T/overlay.rc"), panel '${panel}', $p% of pixels over 2/255, below it ${below:-?}%"
 fi

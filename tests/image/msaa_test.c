@@ -7,7 +7,9 @@
  * the resolve averages the samples. The check is at silhouettes: a sample
  * that took the other surface's visibility (a screen mask read at the
  * pixel, single-sampled) shows as a lit rim on the shadowed floor or a dark
- * one on the ball there, a one-pixel halo.
+ * one on the ball there, a one-pixel halo. The same check into 2 and 8
+ * samples where the context has them (one technique a tier), with the
+ * count the driver allocated.
  */
 #include "msaa_common.h"
 #include "test_context.h"
@@ -31,6 +33,14 @@ typedef struct msaa_case {
     stin_tier tier;
     stin_technique shadows;
 } msaa_case;
+
+/* 2x and 8x: one technique a tier (vdsm, GL2's map-pcf, GL1's volumes),
+ * which keeps make check's time; the 4x rows run every one. */
+static const msaa_case other_counts[] = {
+    {STIN_TIER_GL4, STIN_TECH_SHADOWS_VDSM},
+    {STIN_TIER_GL2, STIN_TECH_SHADOWS_MAP_PCF},
+    {STIN_TIER_GL1, STIN_TECH_SHADOWS_VOLUME},
+};
 
 /* The visibility rule of each technique's reference (shadow_test.c's). */
 static int facets_of(stin_tier tier, stin_technique t)
@@ -61,7 +71,7 @@ static int ref_build(const scene *s, stin_tier tier, stin_technique t, int per_v
     return ok;
 }
 
-static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex,
+static void one_case(run *r, const scene *s, const msaa_case *mc, int asked, int per_vertex,
                      const float pos[][2], int n)
 {
     char name[128], why[512] = "";
@@ -73,8 +83,12 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex
     memset(&m, 0, sizeof m);
     m.w = s->width;
     m.h = s->height;
-    snprintf(name, sizeof name, "%s/msaa-%s", stin_tier_name(mc->tier),
-             stin_technique_name(mc->shadows));
+    if (asked == MSAA_SAMPLES)
+        snprintf(name, sizeof name, "%s/msaa-%s", stin_tier_name(mc->tier),
+                 stin_technique_name(mc->shadows));
+    else
+        snprintf(name, sizeof name, "%s/msaa-%dx-%s", stin_tier_name(mc->tier), asked,
+                 stin_technique_name(mc->shadows));
     got = rgba ? msaa_render(r, s, &tech, rgba, why, sizeof why) : 0;
     if (got < 0) {
         report(r, "SKIP", name, "%s", why);
@@ -85,9 +99,9 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int per_vertex
     } else {
         msaa_compare_band(&m, rgba, r->width, MSAA_TOLERANCE, &b);
         report(r, b.over <= MSAA_MAX_BAND_OVER && b.band > 100 ? "PASS" : "FAIL", name,
-               "%d samples: %ld of %ld silhouette-band pixels beyond %.2f of the reference "
-               "at the samples (max %.3f; at most %d); elsewhere %ld of %ld",
-               n, b.over, b.band, MSAA_TOLERANCE, b.band_max, MSAA_MAX_BAND_OVER,
+               "%d samples (%d asked): %ld of %ld silhouette-band pixels beyond %.2f of the "
+               "reference at the samples (max %.3f; at most %d); elsewhere %ld of %ld",
+               n, asked, b.over, b.band, MSAA_TOLERANCE, b.band_max, MSAA_MAX_BAND_OVER,
                b.compared_over, b.compared);
         if (b.over > MSAA_MAX_BAND_OVER)
             msaa_save_pair(r, name, rgba, m.colour, m.w, m.h);
@@ -105,6 +119,47 @@ static int runs_here(const run *r, stin_tier tier)
     return !strcmp(r->profile_name, "gl21");
 }
 
+static int gl1_per_vertex(run *r, const scene *s)
+{
+    test_context tc;
+    int per_vertex = 0;
+    if (test_context_create(&tc, r, s, STIN_TIER_GL1, STIN_TECH_NONE, 0)) {
+        per_vertex = stin_query_caps(tc.ctx)->present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR)
+                         ? 1
+                         : REFERENCE_GOURAUD_SINGLE_COLOR;
+        test_context_destroy(&tc);
+    }
+    return per_vertex;
+}
+
+/* The list's rows of this tier into a target of `asked` samples. */
+static void at_count(run *r, const scene *s, stin_tier tier, int asked, const msaa_case *list,
+                     size_t count)
+{
+    char err[512], name[64];
+    float pos[MSAA_MAX_SAMPLES][2];
+    int n, per_vertex = tier == STIN_TIER_GL1 ? gl1_per_vertex(r, s) : 0;
+    size_t i;
+    if (asked == MSAA_SAMPLES)
+        snprintf(name, sizeof name, "%s/msaa", stin_tier_name(tier));
+    else
+        snprintf(name, sizeof name, "%s/msaa-%dx", stin_tier_name(tier), asked);
+    if (!stin_platform_set_samples(r->plat, asked, err, sizeof err)) {
+        report(r, "SKIP", name, "%s", err);
+        return;
+    }
+    n = msaa_sample_positions(r, pos);
+    if (!n)
+        report(r, "SKIP", name, "the context cannot say where its samples lie "
+                                "(glGetMultisamplefv: GL 3.2 or ARB_texture_multisample)");
+    else
+        for (i = 0; i < count; i++)
+            if (list[i].tier == tier)
+                one_case(r, s, &list[i], asked, per_vertex, (const float(*)[2])pos, n);
+    if (!stin_platform_set_samples(r->plat, 0, err, sizeof err))
+        report(r, "FAIL", name, "back to the default framebuffer: %s", err);
+}
+
 void msaa_tests(run *r, stin_tier tier, const char *path)
 {
     static const msaa_case cases[] = {
@@ -114,9 +169,6 @@ void msaa_tests(run *r, stin_tier tier, const char *path)
     };
     char file[1024], err[512], name[64];
     const char *slash = strrchr(path, '/');
-    float pos[MSAA_MAX_SAMPLES][2];
-    int n, per_vertex = 0;
-    size_t i;
     scene s;
     if (strcmp(scene_base_name(path), "shadow-overlap"))
         return;
@@ -134,31 +186,8 @@ void msaa_tests(run *r, stin_tier tier, const char *path)
         scene_free(&s);
         return;
     }
-    if (!stin_platform_set_samples(r->plat, MSAA_SAMPLES, err, sizeof err)) {
-        report(r, "SKIP", name, "%s", err);
-        scene_free(&s);
-        return;
-    }
-    n = msaa_sample_positions(r, pos);
-    if (!n) {
-        report(r, "SKIP", name, "the context cannot say where its samples lie "
-                                "(glGetMultisamplefv: GL 3.2 or ARB_texture_multisample)");
-    } else {
-        if (tier == STIN_TIER_GL1) {
-            test_context tc;
-            if (test_context_create(&tc, r, &s, tier, STIN_TECH_NONE, 0)) {
-                per_vertex = stin_query_caps(tc.ctx)->present &
-                                     STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR)
-                                 ? 1
-                                 : REFERENCE_GOURAUD_SINGLE_COLOR;
-                test_context_destroy(&tc);
-            }
-        }
-        for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
-            if (cases[i].tier == tier)
-                one_case(r, &s, &cases[i], per_vertex, (const float(*)[2])pos, n);
-    }
-    if (!stin_platform_set_samples(r->plat, 0, err, sizeof err))
-        report(r, "FAIL", name, "back to the default framebuffer: %s", err);
+    at_count(r, &s, tier, MSAA_SAMPLES, cases, sizeof cases / sizeof cases[0]);
+    at_count(r, &s, tier, 2, other_counts, sizeof other_counts / sizeof other_counts[0]);
+    at_count(r, &s, tier, 8, other_counts, sizeof other_counts / sizeof other_counts[0]);
     scene_free(&s);
 }

@@ -157,8 +157,9 @@ static void compare_normal_output(srgb_case *c, test_context *t)
            "in the two formats)", differ, npix);
 }
 
-/* Its PASS/FAIL lines from the two read-backs. */
-static void report_beauty(srgb_case *c, stin_technique shadows)
+/* Its PASS/FAIL lines from the two read-backs; label: "srgb" or
+ * "srgb-msaa" (the names' prefix after the scene's). */
+static void report_beauty(srgb_case *c, stin_technique shadows, const char *label)
 {
     char name[160];
     srgb_counts n;
@@ -171,14 +172,14 @@ static void report_beauty(srgb_case *c, stin_technique shadows)
                 count_pixel(c, (size_t)y * w + x, &n);
     match = n.compared ? 1.0 - (double)n.over / n.compared : 0;
     mean = n.compared ? n.sum / (3.0 * n.compared) : 1;
-    snprintf(name, sizeof name, "%s/four-lights/srgb-%s", stin_tier_name(c->tier),
+    snprintf(name, sizeof name, "%s/four-lights/%s-%s", stin_tier_name(c->tier), label,
              stin_technique_name(shadows));
     report(c->r, match >= SRGB_MIN_MATCH && mean <= SRGB_MAX_MEAN ? "PASS" : "FAIL", name,
            "encoded reference within %.4f on %.3f%% of %ld pixels (max %.4f, mean %.5f; need "
            "%.1f%% and mean <= 1/255); %ld left out where the linear frame differs",
            SRGB_TOLERANCE, 100.0 * match, n.compared, n.max, mean, 100.0 * SRGB_MIN_MATCH,
            n.left_out);
-    snprintf(name, sizeof name, "%s/four-lights/srgb-%s-once", stin_tier_name(c->tier),
+    snprintf(name, sizeof name, "%s/four-lights/%s-%s-once", stin_tier_name(c->tier), label,
              stin_technique_name(shadows));
     report(c->r,
            n.midtones >= MIDTONE_MIN && n.as_linear <= MIDTONE_MAX_WRONG * n.midtones &&
@@ -210,10 +211,46 @@ static void compare_technique(srgb_case *c, stin_technique shadows)
     if (!ok)
         report(c->r, "FAIL", name, "a frame or its read-back failed");
     else
-        report_beauty(c, shadows);
+        report_beauty(c, shadows, "srgb");
     if (ok && shadows == STIN_TECH_SHADOWS_OFF) /* its context serves the data output too */
         compare_normal_output(c, &t);
     test_context_destroy(&t);
+}
+
+/* The tier's first technique into a 4x sRGB target (GL_SRGB8_ALPHA8
+ * samples, resolved by a blit into an sRGB twin with GL_FRAMEBUFFER_SRGB
+ * on) against the encoded reference, by the single-sampled bound: the
+ * compared pixels lie inside one surface, where every sample of a pixel
+ * takes the fragment's one colour and the resolve gives it back. The linear
+ * frame that picks them is the same context's into a 4x linear target. A
+ * context with both targets apart must give them together (FAIL, not SKIP). */
+static void compare_msaa(srgb_case *c, stin_technique shadows)
+{
+    char name[160], err[512];
+    test_context t;
+    int ok;
+    snprintf(name, sizeof name, "%s/four-lights/srgb-msaa-%s", stin_tier_name(c->tier),
+             stin_technique_name(shadows));
+    if (!stin_platform_set_samples(c->r->plat, 4, err, sizeof err)) {
+        report(c->r, "SKIP", name, "%s", err);
+        return;
+    }
+    if (!test_context_create(&t, c->r, c->s, c->tier, shadows, 1)) {
+        report(c->r, "FAIL", name, "%s did not run on this tier", stin_technique_name(shadows));
+    } else {
+        c->ref = c->shadowed;
+        ok = frame_into(c, &t, STIN_OUTPUT_BEAUTY, c->linear);
+        if (ok && !stin_platform_set_srgb(c->r->plat, 1, err, sizeof err))
+            report(c->r, "FAIL", name, "4x and sRGB targets apart, not together: %s", err);
+        else if (!ok || !frame_into(c, &t, STIN_OUTPUT_BEAUTY, c->encoded))
+            report(c->r, "FAIL", name, "a frame or its read-back failed");
+        else
+            report_beauty(c, shadows, "srgb-msaa");
+        test_context_destroy(&t);
+    }
+    if (!stin_platform_set_srgb(c->r->plat, 0, err, sizeof err) ||
+        !stin_platform_set_samples(c->r->plat, 0, err, sizeof err))
+        report(c->r, "FAIL", name, "back to the default framebuffer: %s", err);
 }
 
 /* four-lights on EGL under gl21, gl33-core and gl45-core. */
@@ -282,6 +319,8 @@ void srgb_tests(run *r, stin_tier tier, const char *path)
         c.hits = hits;
         for (i = 0; list[i] != STIN_TECH_NONE; i++)
             compare_technique(&c, list[i]);
+        if (strcmp(r->profile_name, "gl33-core")) /* gl45-core runs GL4's */
+            compare_msaa(&c, list[0]);
     }
     free(c.linear);
     free(c.encoded);

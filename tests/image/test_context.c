@@ -14,14 +14,12 @@ void test_desc(const run *r, stin_tier tier, stin_desc *d)
     d->max_gl_version = r->profile->max_gl_version;
 }
 
-int test_context_create(test_context *t, const run *r, const scene *s, stin_tier tier,
-                        stin_technique shadows, int exact)
-{
-    return test_context_create_debug(t, r, s, tier, shadows, exact, 0);
-}
-
-int test_context_create_debug(test_context *t, const run *r, const scene *s, stin_tier tier,
-                              stin_technique shadows, int exact, uint64_t debug_flags)
+/* The context and the scene's meshes; translucent: a forced technique of
+ * translucent shadows (STIN_TECH_NONE: the tier's choice), held as shadows
+ * is with `exact`. */
+static int create(test_context *t, const run *r, const scene *s, stin_tier tier,
+                  stin_technique shadows, stin_technique translucent, int exact,
+                  uint64_t debug_flags)
 {
     stin_desc d;
     size_t size;
@@ -29,6 +27,7 @@ int test_context_create_debug(test_context *t, const run *r, const scene *s, sti
     memset(t, 0, sizeof *t);
     test_desc(r, tier, &d);
     d.techniques[STIN_FEATURE_SHADOWS] = shadows;
+    d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] = translucent;
     d.debug_flags = debug_flags;
     scene_gpu_size_desc(s, &d);
     size = stin_memory_size(&d);
@@ -40,6 +39,8 @@ int test_context_create_debug(test_context *t, const run *r, const scene *s, sti
     }
     if ((exact && shadows != STIN_TECH_NONE &&
          stin_query_choice(t->ctx, STIN_FEATURE_SHADOWS).technique != shadows) ||
+        (exact && translucent != STIN_TECH_NONE &&
+         stin_query_choice(t->ctx, STIN_FEATURE_TRANSLUCENT_SHADOWS).technique != translucent) ||
         !scene_gpu_create(&t->g, s, t->ctx, err, sizeof err)) {
         stin_destroy(t->ctx);
         free(t->block);
@@ -47,6 +48,25 @@ int test_context_create_debug(test_context *t, const run *r, const scene *s, sti
         return 0;
     }
     return 1;
+}
+
+int test_context_create(test_context *t, const run *r, const scene *s, stin_tier tier,
+                        stin_technique shadows, int exact)
+{
+    return create(t, r, s, tier, shadows, STIN_TECH_NONE, exact, 0);
+}
+
+int test_context_create_debug(test_context *t, const run *r, const scene *s, stin_tier tier,
+                              stin_technique shadows, int exact, uint64_t debug_flags)
+{
+    return create(t, r, s, tier, shadows, STIN_TECH_NONE, exact, debug_flags);
+}
+
+int test_context_create_translucent(test_context *t, const run *r, const scene *s,
+                                    stin_tier tier, stin_technique shadows,
+                                    stin_technique translucent)
+{
+    return create(t, r, s, tier, shadows, translucent, 1, 0);
 }
 
 void test_context_destroy(test_context *t)

@@ -26,6 +26,11 @@ int test_context_create(test_context *t, const run *r, const scene *s, stin_tier
 /* The same with desc.debug_flags (STIN_DEBUG_*). */
 int test_context_create_debug(test_context *t, const run *r, const scene *s, stin_tier tier,
                               stin_technique shadows, int exact, uint64_t debug_flags);
+/* test_context_create (exact) with a forced translucent-shadows technique
+ * too, which must be the one chosen. */
+int test_context_create_translucent(test_context *t, const run *r, const scene *s,
+                                    stin_tier tier, stin_technique shadows,
+                                    stin_technique translucent);
 void test_context_destroy(test_context *t);
 
 /* The scene camera's frame into the platform's framebuffer at the run's

@@ -106,7 +106,8 @@ static int render_read(const scene_gpu *g, stin_context *ctx, stin_platform *p,
         snprintf(err, err_size, "frame failed: %s", stin_result_name(r));
         return 0;
     }
-    if (!stin_platform_read_color(p, rgba)) {
+    if (!(out == STIN_OUTPUT_BEAUTY ? stin_platform_read_color(p, rgba)
+                                    : stin_platform_read_data(p, rgba))) {
         snprintf(err, err_size, "colour readback failed");
         return 0;
     }
