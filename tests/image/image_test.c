@@ -21,6 +21,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 
 /* P: 24-bit depth resolves eye depth z to about z^2 / (near * 2^24), i.e.
  * 2.4e-4 at z = 20 with near 0.1; 1e-3 * Z + 1e-3 leaves margin for float
@@ -41,6 +42,35 @@
  * before single pixels pass 3/255: the mean must stay within 1/255. */
 #define BEAUTY_MAX_MEAN (1.0 / 255.0)
 
+/* The process's CPU seconds (user + system; llvmpipe rasterises in this
+ * thread under LP_NUM_THREADS=0, Embree in this process). */
+static double cpu_seconds(void)
+{
+    struct rusage u;
+    if (getrusage(RUSAGE_SELF, &u) != 0)
+        return 0;
+    return (double)u.ru_utime.tv_sec + u.ru_utime.tv_usec * 1e-6 + (double)u.ru_stime.tv_sec +
+           u.ru_stime.tv_usec * 1e-6;
+}
+
+/* STIN_TEST_CPU=1: after each line, "# cpu S" with the CPU seconds spent
+ * since the line before (the work that led to this verdict; set-up shared by
+ * several lines is charged to the first), so a suite's time can be summed per
+ * test (docs/testing.md, "Where make check's time goes"). */
+static void report_cpu(void)
+{
+    static int on = -1;
+    static double last;
+    double now;
+    if (on < 0)
+        on = getenv("STIN_TEST_CPU") && strcmp(getenv("STIN_TEST_CPU"), "0");
+    if (!on)
+        return;
+    now = cpu_seconds();
+    printf("# cpu %.3f\n", now - last);
+    last = now;
+}
+
 void report(run *r, const char *verdict, const char *name, const char *fmt, ...)
 {
     va_list ap;
@@ -50,6 +80,7 @@ void report(run *r, const char *verdict, const char *name, const char *fmt, ...)
     vprintf(fmt, ap);
     va_end(ap);
     printf("\n");
+    report_cpu();
     fflush(stdout);
     if (!strcmp(verdict, "PASS")) r->passed++;
     else if (!strcmp(verdict, "FAIL")) r->failed++;
