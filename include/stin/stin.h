@@ -759,8 +759,28 @@ typedef enum stin_gl_profile {
 } stin_gl_profile;
 
 typedef struct stin_caps {
-    int gl_major, gl_minor;       /* parsed from GL_VERSION */
-    int glsl_major, glsl_minor;   /* 0.0 when there is no GLSL */
+    int gl_major, gl_minor;       /* parsed from GL_VERSION (the ES version on ES) */
+    int glsl_major, glsl_minor;   /* 0.0 when there is no GLSL; GLSL ES 1.00 reads 1.0 */
+    /* 1 on an OpenGL ES context ("OpenGL ES 3.2 Mesa ..."): the versions
+     * above are ES and GLSL ES ones, profile reads CORE (ES has no fixed
+     * function), and each capability comes from the ES version that has it
+     * in core or from an ES extension:
+     *   ES 2.0: GLSL (ES 1.00), FBO, VBO, separate stencil, stencil wrap,
+     *           multitexture, cube maps;
+     *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
+     *           occlusion queries (any-samples only), float textures (counted
+     *           only with EXT_color_buffer_float: stin renders into them);
+     *   ES 3.1: + compute; ES 3.2: + geometry shaders, tessellation;
+     *   on ES 2.0 by extension: OES_depth_texture, OES_packed_depth_stencil,
+     *           OES_vertex_array_object, EXT_shadow_samplers,
+     *           EXT_occlusion_query_boolean.
+     * Never on ES: FIXED_FUNCTION (so never the GL1 tier), texture_env_*,
+     * SEPARATE_SPECULAR, STENCIL_TWO_SIDE (EXT's), DEPTH_CLAMP, TIMER_QUERY,
+     * TRANSFORM_FEEDBACK (drawing from the object is desktop GL 4.0).
+     * Desktop-only entry points (glClearDepth, glDepthRange, glPolygonMode,
+     * glDrawBuffer, glLogicOp, client arrays...) count as not loaded there,
+     * whatever the driver's get_proc_address returns for them. */
+    int es;
     stin_gl_profile profile;
     uint64_t present;             /* STIN_CAP_BIT()s after desc.caps_mask */
     uint64_t hidden;              /* bits the driver has but caps_mask hid */
@@ -769,11 +789,16 @@ typedef struct stin_caps {
     int max_texture_units;        /* fixed-function units (GL1), 1 without multitexture */
     int max_texture_image_units;  /* fragment shader samplers, 0 without GLSL */
     int max_vertex_texture_units;
-    int max_lights;               /* fixed-function lights, 0 on core profiles */
-    int max_clip_planes;          /* user clip planes (clip distances on core profiles) */
+    int max_lights;               /* fixed-function lights, 0 on core profiles and ES */
+    int max_clip_planes;          /* user clip planes (clip distances on core profiles);
+                                   * 0 on ES */
     int stencil_bits, depth_bits; /* at stin_create: the bound or the default framebuffer's,
                                    * whichever has the larger stencil; frames probe their own */
     int max_draw_buffers;
+    /* uniform space in vec4s (GL_MAX_*_UNIFORM_VECTORS on ES, the
+     * *_COMPONENTS / 4 on desktop GLSL); 0 without GLSL. ES 2.0 promises
+     * only 128 vertex and 16 fragment vectors. */
+    int max_vertex_uniform_vectors, max_fragment_uniform_vectors;
     int max_geometry_output_vertices;
     int max_tess_gen_level;       /* 0 without tessellation */
     char renderer[64];            /* GL_RENDERER, truncated */

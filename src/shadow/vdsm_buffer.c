@@ -167,7 +167,7 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the buffer */
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;

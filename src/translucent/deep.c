@@ -327,7 +327,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
         GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->layers[k % 2u], 0,
                                          slice);
         GL(ctx, ClearColor)(EMPTY_DEPTH, 1.0f, 1.0f, 1.0f);
-        GL(ctx, ClearDepth)(1.0);
+        stin__clear_depth(ctx, 1.0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         /* layer k - 1 on the deep unit; the texture drawn into is on none */
         stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D_ARRAY, k > 0 ? s->layers[(k - 1u) % 2u] : 0);
