@@ -768,15 +768,16 @@ typedef struct stin_caps {
      *   ES 2.0: GLSL (ES 1.00), FBO, VBO, separate stencil, stencil wrap,
      *           multitexture, cube maps;
      *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
-     *           occlusion queries (any-samples only), float textures (counted
-     *           only with EXT_color_buffer_float: stin renders into them);
+     *           float textures (counted only with EXT_color_buffer_float:
+     *           stin renders into them);
      *   ES 3.1: + compute; ES 3.2: + geometry shaders, tessellation;
      *   on ES 2.0 by extension: OES_depth_texture, OES_packed_depth_stencil,
-     *           OES_vertex_array_object, EXT_shadow_samplers,
-     *           EXT_occlusion_query_boolean.
+     *           OES_vertex_array_object, EXT_shadow_samplers.
      * Never on ES: FIXED_FUNCTION (so never the GL1 tier), texture_env_*,
      * SEPARATE_SPECULAR, STENCIL_TWO_SIDE (EXT's), DEPTH_CLAMP, TIMER_QUERY,
-     * TRANSFORM_FEEDBACK (drawing from the object is desktop GL 4.0).
+     * TRANSFORM_FEEDBACK (drawing from the object is desktop GL 4.0),
+     * OCCLUSION_QUERY (stin counts samples; ES answers only "any passed"):
+     * so no dual peeling or interval CSG on ES yet.
      * Desktop-only entry points (glClearDepth, glDepthRange, glPolygonMode,
      * glDrawBuffer, glLogicOp, client arrays...) count as not loaded there,
      * whatever the driver's get_proc_address returns for them. */

@@ -264,11 +264,15 @@ static stin_result init_shadows(stin_context *ctx)
 static stin_result check_entry_points(stin_context *ctx)
 {
     stin_result r = STIN_OK;
-    int i, es = stin__gl_is_es(&ctx->gl);
+    int i, es = stin__gl_is_es(&ctx->gl), desktop_only = 0;
     for (i = 0; i < STIN_GLFN_COUNT; i++) {
         int need = stin__glfn_need((stin__glfn)i);
         if (ctx->gl_loaded[i])
             continue;
+        if (es && stin__glfn_desktop_only((stin__glfn)i)) {
+            desktop_only++; /* expected there: one line for them all */
+            continue;
+        }
         if (need == NEED_CORE || (need == NEED_DESKTOP && !es)) {
             stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_MISSING_ENTRY_POINT,
                       "stin_create: GL 1.1 entry point %s did not load",
@@ -280,6 +284,9 @@ static stin_result check_entry_points(stin_context *ctx)
                       stin__need_name(need));
         }
     }
+    if (desktop_only)
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_MISSING_ENTRY_POINT,
+                  "OpenGL ES: %d desktop-only entry points are not used", desktop_only);
     return r;
 }
 

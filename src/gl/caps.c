@@ -24,7 +24,9 @@ static const char *const cap_extensions[] = {
  * EXT_depth_clamp is left to a later change: volumes take the far plane at
  * infinity), timer queries (EXT_disjoint_timer_query's entry points are not
  * loaded) and drawing from a transform feedback object (GL 4.0; ES 3.0 has
- * the objects, not that draw). */
+ * the objects, not that draw) and occlusion queries: stin counts samples
+ * (GL_SAMPLES_PASSED), ES 3.0 and EXT_occlusion_query_boolean answer only
+ * whether any passed. */
 typedef struct es_rule {
     int version;            /* ES major * 10 + minor, 0 = never core */
     const char *extensions; /* any one of them gives it */
@@ -46,8 +48,6 @@ static const es_rule es_rules[STIN_CAP_COUNT] = {
     [STIN_CAP_VAO] = {30, "GL_OES_vertex_array_object", NULL},
     [STIN_CAP_GEOMETRY_SHADER] = {32, "", NULL},
     [STIN_CAP_TESSELLATION] = {32, "", NULL},
-    /* any-samples queries: ES has no sample count */
-    [STIN_CAP_OCCLUSION_QUERY] = {30, "GL_EXT_occlusion_query_boolean", NULL},
     [STIN_CAP_COMPUTE] = {31, "", NULL},
     [STIN_CAP_PACKED_DEPTH_STENCIL] = {30, "GL_OES_packed_depth_stencil", NULL},
     /* TODO(es2-prep): ELEMENT_INDEX_UINT = {30, "GL_OES_element_index_uint", NULL} */

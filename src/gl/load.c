@@ -32,7 +32,7 @@ int stin__glfn_need(stin__glfn fn) { return (unsigned)fn < STIN_GLFN_COUNT ? gl_
  * version with the same entry points and enums (-1: never). */
 static const int need_versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 43, 11,
                                                          11, -1};
-static const int need_es_versions[NEED_COUNT - NEED_CORE] = {20, 30, 20, 20, 30, 30, 32, 30, 31,
+static const int need_es_versions[NEED_COUNT - NEED_CORE] = {20, 30, 20, 20, 30, 30, 32, 30, 30,
                                                             20, -1, 20};
 
 int stin__need_version(int need)

@@ -41,15 +41,19 @@ static const char *shared_chunk(const char *name)
 }
 
 /* OpenGL ES: the same sources under a version and precision preamble that
- * replaces the file's #version line. shaders/gl2 runs as GLSL ES 1.00 (on
- * every ES context: ES 3.x compiles 1.00 too), shaders/gl4 as GLSL ES
- * 3.00/3.10/3.20, the context's. Fragment stages get highp where the ES 2.0
- * part has it (GL_FRAGMENT_PRECISION_HIGH; ES 3.x always has), and the
- * sampler types without a default precision get one. STIN_ES marks the few
- * differences in the sources. */
+ * replaces the file's #version line. On ES 2.0 shaders/gl2 runs as GLSL ES
+ * 1.00; on ES 3.x every source runs as the context's GLSL ES 3.x0 (GLSL ES
+ * 1.00 there has no shadow samplers or gl_FragDepth), shaders/gl2 with its
+ * GLSL 1.10 names mapped, as the gl4 main files map them for the chunks
+ * they share. Fragment stages get highp where the ES 2.0 part has it
+ * (GL_FRAGMENT_PRECISION_HIGH; ES 3.x always has), and the sampler types
+ * without a default precision get one. STIN_ES marks the few differences
+ * in the sources. */
 static const char es100_vertex[] = "#version 100\n#define STIN_ES 1\n";
 static const char es100_fragment[] =
     "#version 100\n#define STIN_ES 1\n"
+    /* the sources take derivatives (face normals, filter footprints) */
+    "#extension GL_OES_standard_derivatives : enable\n"
     "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
     "precision highp float;\nprecision highp int;\n"
     "#else\n"
@@ -62,25 +66,38 @@ static const char es3_precision[] =
     "precision highp sampler2DArray;\nprecision highp sampler2DArrayShadow;\n"
     "precision highp sampler3D;\nprecision highp samplerCube;\n"
     "precision highp usampler2D;\nprecision highp isampler2D;\n";
+/* GLSL 1.10's names in GLSL ES 3.x0, for shaders/gl2 */
+static const char es3_gl2_vertex[] =
+    "#define attribute in\n#define varying out\n"
+    "#define texture2D texture\n#define texture2DLod textureLod\n";
+static const char es3_gl2_fragment[] =
+    "#define varying in\n"
+    "#define texture2D texture\n#define texture2DLod textureLod\n"
+    "#define textureCube texture\n#define shadow2D(s, c) vec4(texture(s, c))\n"
+    "out vec4 stin_frag_color;\n#define gl_FragColor stin_frag_color\n";
 
-/* The ES version line of a gl4 source: the context's GLSL ES 3.x. */
+/* The ES version line of the context's GLSL ES 3.x. */
 static const char *es3_version(const stin_context *ctx)
 {
     int v = ctx->caps.glsl_major * 10 + ctx->caps.glsl_minor;
     return v >= 32 ? "#version 320 es\n" : v == 31 ? "#version 310 es\n" : "#version 300 es\n";
 }
 
-/* The parts that replace the #version line of `name` on ES (count, at most 2). */
+/* The parts that replace the #version line of `name` on ES (count, at most 3). */
 static int es_preamble(const stin_context *ctx, GLenum type, const char *name,
                        const GLchar **parts)
 {
-    if (name[2] == '2') {
-        parts[0] = type == GL_FRAGMENT_SHADER ? es100_fragment : es100_vertex;
+    int fragment = type == GL_FRAGMENT_SHADER;
+    if (ctx->caps.gl_major < 3) {
+        parts[0] = fragment ? es100_fragment : es100_vertex;
         return 1;
     }
     parts[0] = es3_version(ctx);
     parts[1] = es3_precision;
-    return 2;
+    if (name[2] != '2')
+        return 2;
+    parts[2] = fragment ? es3_gl2_fragment : es3_gl2_vertex;
+    return 3;
 }
 
 /* The first lines of a tessellation stage: GLSL 4.00, or 1.50 with the

@@ -649,7 +649,7 @@ static void test_texture_unit_budget(void **state)
      BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
 #define ES30_BITS                                                                         \
     (ES20_BITS | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) |  \
-     BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH))
+     BIT(VERTEX_TEXTURE_FETCH))
 #define ES32_BITS                                                                         \
     (ES30_BITS | BIT(COMPUTE) | BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) | BIT(FLOAT_TEXTURE))
 
