@@ -269,6 +269,8 @@ static stin_result check_entry_points(stin_context *ctx)
         int need = stin__glfn_need((stin__glfn)i);
         if (ctx->gl_loaded[i])
             continue;
+        if (!es && need == NEED_ES)
+            continue; /* glClearDepthf and the like: called on ES only */
         if (es && stin__glfn_desktop_only((stin__glfn)i)) {
             desktop_only++; /* expected there: one line for them all */
             continue;

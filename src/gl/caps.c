@@ -160,8 +160,8 @@ static uint64_t caps_missing_entry_points(const unsigned char *loaded, int es)
         return 0;
     for (i = 0; i < STIN_GLFN_COUNT; i++) {
         int need = stin__glfn_need((stin__glfn)i);
-        if (es && stin__glfn_desktop_only((stin__glfn)i))
-            continue; /* ES runs its capabilities without them */
+        if (es && stin__glfn_es_exempt((stin__glfn)i))
+            continue; /* ES runs their capabilities without them */
         if (!loaded[i] && need < STIN_CAP_COUNT)
             missing |= STIN_CAP_BIT(need);
     }

@@ -42,6 +42,10 @@ const char *stin__glfn_name(stin__glfn fn);
 int stin__glfn_need(stin__glfn fn);
 /* 1 for an entry point OpenGL ES does not have (loaded is then 0 on ES). */
 int stin__glfn_desktop_only(stin__glfn fn);
+/* 1 for a desktop-only entry point whose capability ES runs without it
+ * (glClientActiveTexture: multitexture); 0 for glGetBufferSubData and
+ * glClearBufferData, which stin's COMPUTE paths cannot do without. */
+int stin__glfn_es_exempt(stin__glfn fn);
 /* 1 when the current context's GL_VERSION names OpenGL ES. */
 int stin__gl_is_es(const stin__gl *gl);
 /* The GL version (major * 10 + minor) a NEED_GLxy names, else 0. */

@@ -56,6 +56,16 @@ const char *stin__need_name(int need)
                                                   : stin_cap_name((stin_cap)need);
 }
 
+/* What fn needs on this context: the query object calls are audited as
+ * occlusion queries on desktop (GL 1.5 brought both), but ES 3.0 has the
+ * objects without sample counts (primitive and any-samples queries). */
+static int need_of(const stin_context *ctx, stin__glfn fn)
+{
+    if (ctx->caps.es && gl_needs[fn] == STIN_CAP_OCCLUSION_QUERY)
+        return NEED_GL30;
+    return gl_needs[fn];
+}
+
 static int need_present(const stin_context *ctx, int need)
 {
     int version = stin__need_version_in(need, ctx->caps.es);
@@ -83,6 +93,14 @@ static int desktop_only_name(stin__glfn fn)
     }
 }
 
+int stin__glfn_es_exempt(stin__glfn fn)
+{
+    /* stin's storage-buffer reads and clears: without them its COMPUTE
+     * paths cannot run, so ES 3.1's compute does not count (yet) */
+    return stin__glfn_desktop_only(fn) && fn != STIN_GLFN_GetBufferSubData &&
+           fn != STIN_GLFN_ClearBufferData;
+}
+
 int stin__glfn_desktop_only(stin__glfn fn)
 {
     int need = stin__glfn_need(fn);
@@ -102,7 +120,7 @@ int stin__gl_is_es(const stin__gl *gl)
 
 int stin__gl_available(const stin_context *ctx, stin__glfn fn)
 {
-    return ctx->gl_loaded[fn] && need_present(ctx, gl_needs[fn]);
+    return ctx->gl_loaded[fn] && need_present(ctx, need_of(ctx, fn));
 }
 
 /* Function and object pointers do not convert in ISO C; copy the bits. */
@@ -140,7 +158,7 @@ int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
 
 void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn)
 {
-    int need = gl_needs[fn];
+    int need = need_of(ctx, fn);
     if (!ctx->gl_loaded[fn] || !need_present(ctx, need)) {
         ctx->gl_violations++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,

@@ -8,7 +8,7 @@ void stin__clear_depth(stin_context *ctx, double depth)
     if (ctx->caps.es)
         GL(ctx, ClearDepthf)((GLfloat)depth);
     else
-        stin__clear_depth(ctx, depth);
+        GL(ctx, ClearDepth)(depth);
 }
 
 void stin__depth_range(stin_context *ctx, double n, double f)

@@ -280,6 +280,9 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     if (ok_so_far && src->frag)
         ok_so_far = (stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks,
                                          src->frag_defines, msg, size)) != 0;
+    else if (ok_so_far && ctx->caps.es) /* ES links no program without one */
+        ok_so_far = (stages[4] = compile(ctx, GL_FRAGMENT_SHADER, "gl4/empty.frag", NULL, NULL,
+                                         msg, size)) != 0;
     if (!ok_so_far) {
         delete_stages(ctx, stages, 5);
         return 0;

@@ -54,7 +54,7 @@ static int ensure_size(stin_context *ctx)
     stin__rt_texture(ctx, v->position, GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
     stin__rt_texture(ctx, v->normal, GL_RGBA16F, GL_RGBA, GL_FLOAT, w, h);
     stin__rt_texture(ctx, v->shading, GL_RGBA16F, GL_RGBA, GL_FLOAT, w, h);
-    stin__rt_texture(ctx, v->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, w, h);
+    stin__rt_texture(ctx, v->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,

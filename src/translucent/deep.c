@@ -73,7 +73,11 @@ static void nearest_clamped(stin_context *ctx, GLenum target)
  * asks without allocating, raises no GL error and reads none). */
 static int driver_takes(stin_context *ctx, GLsizei n, GLsizei slices)
 {
-    GLint width = 0;
+    GLint width = 0, layers = 0;
+    if (ctx->caps.es) { /* ES has no proxy textures: the limits are all it says */
+        GL(ctx, GetIntegerv)(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+        return n <= ctx->caps.max_texture_size && slices <= layers;
+    }
     GL_ENUM(ctx, TexImage3D, GL_RGBA32F)(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, n, n, slices,
                                         0, GL_RGBA, GL_FLOAT, NULL);
     GL(ctx, GetTexLevelParameteriv)(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &width);

@@ -551,6 +551,13 @@ static void test_es_loader_marks_desktop_only_entry_points(void **state)
     assert_int_equal(c.max_lights, 0);
     assert_int_equal(c.max_clip_planes, 0);
     assert_int_equal(c.max_fragment_uniform_vectors, 1024);
+    /* ES 3.1's compute without glGetBufferSubData/glClearBufferData */
+    cfg.version = "OpenGL ES 3.2 Mesa 22.3.6";
+    cfg.glsl_version = "OpenGL ES GLSL ES 3.20";
+    fake_gl_reset(&cfg);
+    assert_int_equal(stin_detect_caps(fake_gl_get_proc, NULL, 0, 0, &c), STIN_OK);
+    assert_false(HAS(c, COMPUTE));
+    assert_true(HAS(c, GEOMETRY_SHADER));
 }
 
 int main(void)
