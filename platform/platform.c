@@ -19,6 +19,8 @@
 #define P_GL_FLOAT 0x1406
 #define P_GL_STENCIL_INDEX 0x1901
 #define P_GL_DEPTH_COMPONENT 0x1902
+#define P_GL_DEPTH_STENCIL 0x84F9
+#define P_GL_UNSIGNED_INT_24_8 0x84FA
 #define P_GL_RGBA 0x1908
 #define P_GL_VERSION 0x1F02
 #define P_GL_EXTENSIONS 0x1F03
@@ -46,6 +48,7 @@ struct stin_platform {
     stin_egl *egl;
     stin_osmesa *osmesa;
     int has_pack_buffer; /* GL 2.1+: a bound PIXEL_PACK_BUFFER would hijack readback */
+    int es;              /* OpenGL ES: depth and stencil read back packed (below) */
     p_read_pixels_fn read_pixels;
     p_get_integerv_fn get_integerv;
     p_pixel_storei_fn pixel_storei;
@@ -55,10 +58,12 @@ struct stin_platform {
     stin_platform_srgb_target srgb; /* desc.srgb or stin_platform_set_srgb */
 };
 
-static const char *const override_vars[3] = {
+#define OVERRIDE_VARS 4
+static const char *const override_vars[OVERRIDE_VARS] = {
     "MESA_GL_VERSION_OVERRIDE",
     "MESA_GLSL_VERSION_OVERRIDE",
     "MESA_EXTENSION_OVERRIDE",
+    "MESA_GLES_VERSION_OVERRIDE",
 };
 
 /* Mesa reads the overrides once per process; a second context with other
@@ -113,12 +118,15 @@ int stin_platform_kind_from_name(const char *name, stin_platform_kind *out)
     return 1;
 }
 
+/* An ES profile's version override is Mesa's ES one; the desktop one is
+ * then unset, and the other way round. */
 static const char *profile_value(const stin_profile *profile, int i)
 {
     switch (i) {
-    case 0: return profile->gl_version_override;
+    case 0: return profile->es ? NULL : profile->gl_version_override;
     case 1: return profile->glsl_version_override;
-    default: return profile->extension_override;
+    case 2: return profile->extension_override;
+    default: return profile->es ? profile->gl_version_override : NULL;
     }
 }
 
@@ -134,7 +142,7 @@ static int apply_profile_env(const stin_profile *profile, char *err, size_t err_
     int i;
     if (!profile)
         return 1;
-    for (i = 0; i < 3; i++) {
+    for (i = 0; i < OVERRIDE_VARS; i++) {
         const char *want = profile_value(profile, i);
         if (driver_loaded && !same_value(getenv(override_vars[i]), want)) {
             stin_platform_errorf(err, err_size,
@@ -144,7 +152,7 @@ static int apply_profile_env(const stin_profile *profile, char *err, size_t err_
             return 0;
         }
     }
-    for (i = 0; i < 3; i++) {
+    for (i = 0; i < OVERRIDE_VARS; i++) {
         const char *want = profile_value(profile, i);
         int rc = want ? setenv(override_vars[i], want, 1) : unsetenv(override_vars[i]);
         if (rc != 0) {
@@ -171,13 +179,22 @@ static stin_platform_fn load(stin_platform *p, const char *name)
     return stin_platform_ptr_to_fn(stin_platform_get_proc_address(p, name));
 }
 
-/* "2.1 Mesa ..." or "4.5 (Core Profile) Mesa ..." -> 21, 45. */
+/* "2.1 Mesa ..." or "4.5 (Core Profile) Mesa ..." -> 21, 45; "OpenGL ES 3.2
+ * Mesa ..." -> 32 (is_es() tells the two apart). */
 static int parse_gl_version(const unsigned char *s)
 {
     int major = 0, minor = 0;
-    if (!s || sscanf((const char *)s, "%d.%d", &major, &minor) != 2)
+    const char *t = (const char *)s;
+    if (t && strncmp(t, "OpenGL ES ", 10) == 0)
+        t += 10;
+    if (!t || sscanf(t, "%d.%d", &major, &minor) != 2)
         return 0;
     return major * 10 + minor;
+}
+
+static int is_es(const unsigned char *s)
+{
+    return s && strncmp((const char *)s, "OpenGL ES ", 10) == 0;
 }
 
 int stin_platform_has_token(const char *list, const char *token)
@@ -204,6 +221,7 @@ int stin_platform_has_extension(stin_platform *p, const char *name)
     p_get_stringi_fn get_stringi = (p_get_stringi_fn)load(p, "glGetStringi");
     int count = 0, i;
     if (stin_platform_gl_version(p) >= 30 && get_stringi && p->get_integerv) {
+        /* (ES 3.0 has glGetStringi too) */
         /* a core context has no GL_EXTENSIONS string */
         p->get_integerv(P_GL_NUM_EXTENSIONS, &count);
         for (i = 0; i < count; i++)
@@ -230,7 +248,9 @@ static int load_readback(stin_platform *p, char *err, size_t err_size)
                              stin_platform_kind_name(p->kind));
         return 0;
     }
-    if (parse_gl_version(get_string(P_GL_VERSION)) >= 21) {
+    p->es = is_es(get_string(P_GL_VERSION));
+    /* pack buffers: desktop GL 2.1, OpenGL ES 3.0 */
+    if (parse_gl_version(get_string(P_GL_VERSION)) >= (is_es(get_string(P_GL_VERSION)) ? 30 : 21)) {
         p->bind_buffer = (p_bind_buffer_fn)load(p, "glBindBuffer");
         p->has_pack_buffer = p->bind_buffer != NULL;
     }
@@ -251,6 +271,12 @@ stin_platform *stin_platform_create(const stin_platform_desc *desc, char *err, s
         stin_platform_errorf(err, err_size,
                              "stin_platform_create: bad desc (kind %d, size %dx%d)",
                              (int)desc->kind, desc->width, desc->height);
+        return NULL;
+    }
+    if (desc->profile && desc->profile->es && desc->kind != STIN_PLATFORM_EGL) {
+        stin_platform_errorf(err, err_size,
+                             "profile %s is OpenGL ES, which %s does not offer; run it on egl",
+                             desc->profile->name, stin_platform_kind_name(desc->kind));
         return NULL;
     }
     if (!apply_profile_env(desc->profile, err, err_size))
@@ -401,7 +427,8 @@ static void pack_end(stin_platform *p, const pack_state *s)
  * colour is averaged over the samples, depth and stencil take one sample. */
 static unsigned resolve_bit(unsigned format)
 {
-    return format == P_GL_DEPTH_COMPONENT ? 0x100u   /* GL_DEPTH_BUFFER_BIT */
+    return format == P_GL_DEPTH_STENCIL ? 0x500u      /* both */
+           : format == P_GL_DEPTH_COMPONENT ? 0x100u   /* GL_DEPTH_BUFFER_BIT */
            : format == P_GL_STENCIL_INDEX ? 0x400u   /* GL_STENCIL_BUFFER_BIT */
                                           : 0x4000u; /* GL_COLOR_BUFFER_BIT */
 }
@@ -436,12 +463,35 @@ int stin_platform_read_data(stin_platform *p, uint8_t *rgba)
     return read_pixels(p, P_GL_RGBA, P_GL_UNSIGNED_BYTE, 1, rgba);
 }
 
+/* OpenGL ES reads neither GL_FLOAT depth nor, on ES 2.0, stencil indices;
+ * Mesa's NV_read_depth_stencil reads both as one 24/8 word on every ES
+ * version: depth in the top 24 bits (exact: the buffer has 24), stencil in
+ * the low 8. */
+static int read_es_depth_stencil(stin_platform *p, float *depth, uint8_t *stencil)
+{
+    size_t i, n = (size_t)p->width * (size_t)p->height;
+    uint32_t *words = malloc(n * sizeof *words);
+    int ok = words && read_pixels(p, P_GL_DEPTH_STENCIL, P_GL_UNSIGNED_INT_24_8, 1, words);
+    for (i = 0; ok && i < n; i++) {
+        if (depth)
+            depth[i] = (float)((double)(words[i] >> 8) / 16777215.0);
+        if (stencil)
+            stencil[i] = (uint8_t)(words[i] & 0xffu);
+    }
+    free(words);
+    return ok;
+}
+
 int stin_platform_read_depth(stin_platform *p, float *depth)
 {
+    if (p && p->es)
+        return depth && read_es_depth_stencil(p, depth, NULL);
     return read_pixels(p, P_GL_DEPTH_COMPONENT, P_GL_FLOAT, 1, depth);
 }
 
 int stin_platform_read_stencil(stin_platform *p, uint8_t *stencil)
 {
+    if (p && p->es)
+        return stencil && read_es_depth_stencil(p, NULL, stencil);
     return read_pixels(p, P_GL_STENCIL_INDEX, P_GL_UNSIGNED_BYTE, 1, stencil);
 }

@@ -3,7 +3,8 @@
  * EGL backend: surfaceless Mesa by default, device EGL when STIN_EGL_DEVICE=1
  * or when the surfaceless platform is missing (GPU machines). Both render into
  * a pbuffer so that GL 1.x contexts, which cannot make an FBO, still have a
- * default framebuffer with depth and stencil.
+ * default framebuffer with depth and stencil; OpenGL ES contexts (ES profiles)
+ * use the same pbuffer, from an ES2/ES3-renderable config.
  */
 #include "platform_internal.h"
 
@@ -206,11 +207,25 @@ static EGLint config_attrib(EGLDisplay dpy, EGLConfig cfg, EGLint name)
 
 /* eglChooseConfig sorts deeper colour first, so pick exactly RGBA8 / S8 /
  * single-sampled ourselves, preferring depth 24 over deeper. */
-static int choose_config(EGLDisplay dpy, EGLConfig *out, char *err, size_t err_size)
+static EGLint renderable_bit(const stin_profile *profile)
 {
-    static const EGLint attribs[] = {
+    if (!profile || !profile->es)
+        return EGL_OPENGL_BIT;
+    return profile->gl_major >= 3 ? EGL_OPENGL_ES3_BIT_KHR : EGL_OPENGL_ES2_BIT;
+}
+
+static const char *renderable_name(EGLint bit)
+{
+    return bit == EGL_OPENGL_BIT ? "EGL_OPENGL_BIT"
+           : bit == EGL_OPENGL_ES2_BIT ? "EGL_OPENGL_ES2_BIT" : "EGL_OPENGL_ES3_BIT_KHR";
+}
+
+static int choose_config(EGLDisplay dpy, EGLint renderable, EGLConfig *out, char *err,
+                         size_t err_size)
+{
+    const EGLint attribs[] = {
         EGL_SURFACE_TYPE, EGL_PBUFFER_BIT,
-        EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+        EGL_RENDERABLE_TYPE, renderable,
         EGL_RED_SIZE, 8, EGL_GREEN_SIZE, 8, EGL_BLUE_SIZE, 8, EGL_ALPHA_SIZE, 8,
         EGL_DEPTH_SIZE, 24, EGL_STENCIL_SIZE, 8,
         EGL_NONE
@@ -239,7 +254,7 @@ static int choose_config(EGLDisplay dpy, EGLConfig *out, char *err, size_t err_s
     if (best < 0) {
         stin_platform_errorf(err, err_size,
                              "EGL: no pbuffer config with RGBA8, depth 24, stencil 8 and "
-                             "EGL_OPENGL_BIT (%d candidates)", (int)count);
+                             "%s (%d candidates)", renderable_name(renderable), (int)count);
         return 0;
     }
     *out = configs[best];
@@ -248,12 +263,19 @@ static int choose_config(EGLDisplay dpy, EGLConfig *out, char *err, size_t err_s
 
 /* Core (or compat >= 3.2): ask for the version and the profile. Older compat:
  * ask for nothing, Mesa gives its best compat context and
- * MESA_GL_VERSION_OVERRIDE decides what it reports. */
+ * MESA_GL_VERSION_OVERRIDE decides what it reports. ES: ask for the version
+ * (Mesa 22.3 answers every request from 2.0 up with its best, ES 3.2;
+ * MESA_GLES_VERSION_OVERRIDE decides what it reports). */
 static void context_attribs(const stin_profile *profile, EGLint *a)
 {
     int n = 0;
     int versioned = profile && (profile->core || profile->gl_major * 10 + profile->gl_minor >= 32);
-    if (versioned) {
+    if (profile && profile->es) {
+        a[n++] = EGL_CONTEXT_MAJOR_VERSION;
+        a[n++] = profile->gl_major;
+        a[n++] = EGL_CONTEXT_MINOR_VERSION;
+        a[n++] = profile->gl_minor;
+    } else if (versioned) {
         a[n++] = EGL_CONTEXT_MAJOR_VERSION;
         a[n++] = profile->gl_major;
         a[n++] = EGL_CONTEXT_MINOR_VERSION;
@@ -283,7 +305,9 @@ static int create_context(stin_egl *egl, EGLConfig cfg, int width, int height,
         stin_platform_errorf(err, err_size,
                              "EGL: eglCreateContext failed for a %s %d.%d context "
                              "(profile %s): %s (0x%04x)",
-                             profile && profile->core ? "core" : "compatibility",
+                             profile && profile->es     ? "OpenGL ES"
+                             : profile && profile->core ? "core"
+                                                        : "compatibility",
                              profile ? profile->gl_major : 0, profile ? profile->gl_minor : 0,
                              profile ? profile->name : "none", egl_error_name(code),
                              (unsigned)code);
@@ -334,11 +358,12 @@ stin_egl *stin_egl_create(int width, int height, const stin_profile *profile, ch
     if (egl->display == EGL_NO_DISPLAY)
         goto fail;
     egl->counted = display_acquire(egl->display);
-    if (!eglBindAPI(EGL_OPENGL_API)) {
-        egl_fail(err, err_size, "eglBindAPI(EGL_OPENGL_API)");
+    if (!eglBindAPI(profile && profile->es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) {
+        egl_fail(err, err_size, profile && profile->es ? "eglBindAPI(EGL_OPENGL_ES_API)"
+                                                       : "eglBindAPI(EGL_OPENGL_API)");
         goto fail;
     }
-    if (!choose_config(egl->display, &cfg, err, err_size) ||
+    if (!choose_config(egl->display, renderable_bit(profile), &cfg, err, err_size) ||
         !create_context(egl, cfg, width, height, profile, err, err_size))
         goto fail;
     return egl;

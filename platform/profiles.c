@@ -35,6 +35,25 @@
 /* GL 3.3 class: the 4.x features Mesa still lists as extensions. */
 #define GL33_HIDE (BIT(TESSELLATION) | BIT(COMPUTE) | BIT(TRANSFORM_FEEDBACK))
 
+/* OpenGL ES 2.0 core: GLSL ES 1.00, FBOs, buffers, separate stencil with
+ * wrap, multitexture and cube maps; no depth textures, float textures,
+ * VAOs, vertex texture units or occlusion queries. */
+#define ES20_KEEP                                                                 \
+    (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) | \
+     BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
+/* The usual ES 2.0 extensions (OES_element_index_uint and
+ * OES_standard_derivatives have no bit of their own). */
+#define ES20_EXT_KEEP (ES20_KEEP | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL))
+/* ES 3.0 has no geometry, tessellation or compute stages (3.1, 3.2). */
+#define ES30_HIDE (BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) | BIT(COMPUTE))
+/* The ES extensions Mesa 22.3 lets a profile disable; OES_depth_texture,
+ * OES_packed_depth_stencil, OES_element_index_uint, OES_vertex_array_object,
+ * EXT_color_buffer_float, EXT_draw_buffers and OES_mapbuffer "cannot be
+ * disabled" and are left to the mask. */
+#define ES20_EXT_OFF                                                          \
+    "-GL_OES_texture_float -GL_OES_texture_half_float -GL_OES_texture_float_linear " \
+    "-GL_OES_texture_half_float_linear -GL_EXT_occlusion_query_boolean -GL_OES_texture_3D"
+
 /* Disable-able extensions shared by every GL 1.x profile: shaders of any
  * kind, FBO, float textures, PBOs, NPOT textures (GL1 hardware had none; stin
  * resamples to powers of two), occlusion queries, separate stencil. */
@@ -61,6 +80,7 @@ static const stin_profile profiles[] = {
         " -GL_EXT_texture_env_dot3 -GL_NV_texture_env_combine4 -GL_ATI_texture_env_combine3",
         ALL_CAPS & ~GL11_KEEP,
         11,
+        0,
     },
     {
         "gl13-combine",
@@ -70,6 +90,7 @@ static const stin_profile profiles[] = {
         GL1X_OFF GL14_GROUP_OFF,
         ALL_CAPS & ~GL13_KEEP,
         13,
+        0,
     },
     {
         "gl14-shadow",
@@ -79,6 +100,7 @@ static const stin_profile profiles[] = {
         GL1X_OFF,
         ALL_CAPS & ~GL14_KEEP,
         14,
+        0,
     },
     {
         "gl21",
@@ -89,6 +111,7 @@ static const stin_profile profiles[] = {
         "-GL_ATI_texture_float -GL_EXT_gpu_shader4",
         GL21_HIDE,
         21,
+        0,
     },
     {
         "gl33-core",
@@ -98,6 +121,7 @@ static const stin_profile profiles[] = {
         "-GL_ARB_tessellation_shader -GL_ARB_compute_shader",
         GL33_HIDE,
         33,
+        0,
     },
     {
         "gl45-core",
@@ -106,6 +130,56 @@ static const stin_profile profiles[] = {
         NULL, NULL, NULL,
         0,
         45,
+        0,
+    },
+    {
+        "es20",
+        "OpenGL ES 2.0 bare: GLSL ES 1.00; no depth or float textures, 32-bit indices, "
+        "vertex textures or derivatives",
+        2, 0, 0,
+        "2.0", NULL,
+        ES20_EXT_OFF " -GL_OES_standard_derivatives",
+        ALL_CAPS & ~ES20_KEEP,
+        20,
+        1,
+    },
+    {
+        "es20-ext",
+        "OpenGL ES 2.0 + OES_depth_texture, OES_packed_depth_stencil, "
+        "OES_element_index_uint, OES_standard_derivatives",
+        2, 0, 0,
+        "2.0", NULL,
+        ES20_EXT_OFF,
+        ALL_CAPS & ~ES20_EXT_KEEP,
+        20,
+        1,
+    },
+    {
+        "es30",
+        "OpenGL ES 3.0, GLSL ES 3.00 (WebGL 2 class)",
+        3, 0, 0,
+        "3.0", NULL, NULL,
+        ES30_HIDE,
+        30,
+        1,
+    },
+    {
+        "es31",
+        "OpenGL ES 3.1, GLSL ES 3.10: + compute",
+        3, 1, 0,
+        "3.1", NULL, NULL,
+        BIT(GEOMETRY_SHADER) | BIT(TESSELLATION),
+        31,
+        1,
+    },
+    {
+        "es32",
+        "OpenGL ES 3.2, GLSL ES 3.20: + geometry and tessellation shaders",
+        3, 2, 0,
+        "3.2", NULL, NULL,
+        0,
+        32,
+        1,
     },
     {
         /* For tools, not tests: whatever the driver offers, no emulation.
@@ -114,6 +188,7 @@ static const stin_profile profiles[] = {
         "the driver's best compatibility context, no overrides, no mask",
         0, 0, 0,
         NULL, NULL, NULL,
+        0,
         0,
         0,
     },

@@ -8,11 +8,15 @@
  *           surface (24-bit depth, 8-bit stencil) so that legacy contexts have a
  *           default framebuffer; device EGL (EGL_EXT_platform_device) when
  *           STIN_EGL_DEVICE=1 or when surfaceless is missing (GPU machines).
- *   OSMesa  Mesa's software context into client memory, compatibility or core.
+ *           OpenGL ES 2.0-3.2 contexts (the profiles with es set) come from
+ *           the same display, with EGL_OPENGL_ES_API and an ES2/ES3 config.
+ *   OSMesa  Mesa's software context into client memory, compatibility or core;
+ *           no OpenGL ES (an ES profile there fails, saying so).
  *
  * Capability profiles emulate weaker hardware. Each profile is run in its own
  * process: stin_platform_create() applies the profile's Mesa overrides
- * (MESA_GL_VERSION_OVERRIDE, MESA_GLSL_VERSION_OVERRIDE, MESA_EXTENSION_OVERRIDE)
+ * (MESA_GL_VERSION_OVERRIDE or, for the OpenGL ES profiles, MESA_GLES_VERSION_OVERRIDE;
+ * MESA_GLSL_VERSION_OVERRIDE, MESA_EXTENSION_OVERRIDE)
  * to the environment before the driver loads, and the profile's caps_mask and
  * max_gl_version go into stin_desc — the in-process mask is the authority, since
  * Mesa refuses to disable some extensions.
@@ -41,7 +45,11 @@ typedef struct stin_profile {
     const char *glsl_version_override; /* MESA_GLSL_VERSION_OVERRIDE, NULL = none */
     const char *extension_override;    /* MESA_EXTENSION_OVERRIDE, NULL = none */
     uint64_t caps_mask;             /* STIN_CAP_BIT()s hidden in-process */
-    int max_gl_version;             /* stin_desc.max_gl_version */
+    int max_gl_version;             /* stin_desc.max_gl_version (the ES version on ES) */
+    /* 1: an OpenGL ES context of version gl_major.gl_minor (EGL only: OSMesa
+     * has no ES); gl_version_override then goes to MESA_GLES_VERSION_OVERRIDE
+     * and core is 0. */
+    int es;
 } stin_profile;
 
 /* The table of named profiles (see docs/profiles.md). */

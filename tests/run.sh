@@ -7,7 +7,8 @@
 #   N passed, N failed, N skipped
 # Usage: tests/run.sh BUILD_DIR
 # Environment: STIN_TEST_PLATFORMS (default "egl osmesa"),
-#              STIN_TEST_PROFILES (default: every profile of docs/profiles.md),
+#              STIN_TEST_PROFILES (default: every desktop profile of docs/profiles.md),
+#              STIN_TEST_ES_PROFILES (default "es30 es32"; egl only, two scenes),
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme,
 #              bench and viewer suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
@@ -46,6 +47,11 @@ mkdir -p "$OUT" "$SUITES"
 : > "$LOG"
 PLATFORMS=${STIN_TEST_PLATFORMS:-egl osmesa}
 PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45-core}
+# OpenGL ES (egl only: OSMesa has no ES), on the scenes that prove the path:
+# lighting, volumes and vdsm on four-lights, map-pcf on spheres-18k-sun (es30;
+# es32 has no timer queries for its vdsm/volumes choice tests there).
+ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32}
+ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 SCENES=$(ls tests/scenes/*.json)
 
@@ -90,6 +96,11 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
                 hashes="env STIN_READBACK_LOG=$STIN_READBACK_DIR/$plat.$prof.log"
             fi
             echo "image:$plat:$prof $hashes $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $SCENES
+        done
+        [ "$plat" = egl ] || continue
+        for prof in $ES_PROFILES; do
+            more=; [ "$prof" = es30 ] && more=tests/scenes/spheres-18k-sun.json
+            echo "image:$plat:$prof $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $ES_SCENES $more
         done
     done
     for t in "$B"/tests/test_*; do

@@ -34,6 +34,19 @@
  *                  Per-pixel lighting.
  *   STIN_TIER_GL4  GLSL 1.50+ on a GL 3.2+ context (core or compatibility),
  *                  geometry shaders available. Per-pixel lighting.
+ * OpenGL ES (caps.es): no fixed function, so never GL1. GL2 on ES 2.0 and
+ * 3.0/3.1 (the GLSL 1.10 sources run as GLSL ES 1.00 on ES 2.0 and as GLSL
+ * ES 3.x0 on ES 3.x, under a version and precision preamble), GL4 on ES 3.2
+ * (the GLSL 1.50 sources as GLSL ES 3.20). Measured on Mesa 22.3 llvmpipe
+ * against the same reference and bounds as desktop: per-pixel lighting,
+ * stencil volumes (z-fail with the far plane at infinity: ES has no depth
+ * clamp) and map-pcf on ES 3.0 and 3.2; volumes extruded by a geometry
+ * shader and vdsm on ES 3.2. Not yet on ES: CSG below GL4 lighting (no depth
+ * write-back without glDrawPixels), dual peeling and interval CSG (they
+ * count samples; ES queries answer "any"), deep's and vdsm's storage-buffer
+ * paths (COMPUTE stays off), vdsm's transform-feedback culling pass (it
+ * culls in its geometry shader instead), and the bare ES 2.0 part (no
+ * derivatives, depth textures or 32-bit indices): each falls back, logged.
  * desc.tier = STIN_TIER_AUTO picks the highest tier the context runs. Any other
  * value forces that tier; if the context (after desc.caps_mask) cannot run it,
  * stin_create fails with STIN_ERROR_UNSUPPORTED and logs the missing
@@ -817,8 +830,32 @@ typedef enum stin_gl_profile {
 } stin_gl_profile;
 
 typedef struct stin_caps {
-    int gl_major, gl_minor;       /* parsed from GL_VERSION */
-    int glsl_major, glsl_minor;   /* 0.0 when there is no GLSL */
+    int gl_major, gl_minor;       /* parsed from GL_VERSION (the ES version on ES) */
+    int glsl_major, glsl_minor;   /* 0.0 when there is no GLSL; GLSL ES 1.00 reads 1.0 */
+    /* 1 on an OpenGL ES context ("OpenGL ES 3.2 Mesa ..."): the versions
+     * above are ES and GLSL ES ones, profile reads CORE (ES has no fixed
+     * function), and each capability comes from the ES version that has it
+     * in core or from an ES extension:
+     *   ES 2.0: GLSL (ES 1.00), FBO, VBO, separate stencil, stencil wrap,
+     *           multitexture, cube maps;
+     *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
+     *           float textures (counted only with EXT_color_buffer_float:
+     *           stin renders into them);
+     *   ES 3.1: + compute (detected, but stin's storage-buffer reads and
+     *           clears, glGetBufferSubData and glClearBufferData, are desktop
+     *           GL: COMPUTE stays off on a live ES context for now);
+     *   ES 3.2: + geometry shaders, tessellation;
+     *   on ES 2.0 by extension: OES_depth_texture, OES_packed_depth_stencil,
+     *           OES_vertex_array_object, EXT_shadow_samplers.
+     * Never on ES: FIXED_FUNCTION (so never the GL1 tier), texture_env_*,
+     * SEPARATE_SPECULAR, STENCIL_TWO_SIDE (EXT's), DEPTH_CLAMP, TIMER_QUERY,
+     * TRANSFORM_FEEDBACK (drawing from the object is desktop GL 4.0),
+     * OCCLUSION_QUERY (stin counts samples; ES answers only "any passed"):
+     * so no dual peeling or interval CSG on ES yet.
+     * Desktop-only entry points (glClearDepth, glDepthRange, glPolygonMode,
+     * glDrawBuffer, glLogicOp, client arrays...) count as not loaded there,
+     * whatever the driver's get_proc_address returns for them. */
+    int es;
     stin_gl_profile profile;
     uint64_t present;             /* STIN_CAP_BIT()s after desc.caps_mask */
     uint64_t hidden;              /* bits the driver has but caps_mask hid */
@@ -827,11 +864,16 @@ typedef struct stin_caps {
     int max_texture_units;        /* fixed-function units (GL1), 1 without multitexture */
     int max_texture_image_units;  /* fragment shader samplers, 0 without GLSL */
     int max_vertex_texture_units;
-    int max_lights;               /* fixed-function lights, 0 on core profiles */
-    int max_clip_planes;          /* user clip planes (clip distances on core profiles) */
+    int max_lights;               /* fixed-function lights, 0 on core profiles and ES */
+    int max_clip_planes;          /* user clip planes (clip distances on core profiles);
+                                   * 0 on ES */
     int stencil_bits, depth_bits; /* at stin_create: the bound or the default framebuffer's,
                                    * whichever has the larger stencil; frames probe their own */
     int max_draw_buffers;
+    /* uniform space in vec4s (GL_MAX_*_UNIFORM_VECTORS on ES, the
+     * *_COMPONENTS / 4 on desktop GLSL); 0 without GLSL. ES 2.0 promises
+     * only 128 vertex and 16 fragment vectors. */
+    int max_vertex_uniform_vectors, max_fragment_uniform_vectors;
     int max_geometry_output_vertices;
     int max_tess_gen_level;       /* 0 without tessellation */
     char renderer[64];            /* GL_RENDERER, truncated */
@@ -1325,7 +1367,8 @@ typedef struct stin_desc {
     void *log_user;
     stin_tier tier;                    /* default AUTO: best the context runs */
     uint64_t caps_mask;                /* STIN_CAP_BIT()s to hide; default 0 */
-    int max_gl_version;                /* e.g. 14 to treat the context as GL 1.4; 0 = as reported */
+    int max_gl_version;                /* e.g. 14 to treat the context as GL 1.4 (on OpenGL ES:
+                                        * 30 treats it as ES 3.0); 0 = as reported */
     stin_technique techniques[STIN_FEATURE_COUNT]; /* forced technique per feature; NONE = auto */
     uint64_t debug_flags;              /* STIN_DEBUG_*: diagnostics, default 0 */
     /* capacities (0 = default) */

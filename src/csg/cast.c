@@ -140,8 +140,7 @@ static int own_target(stin_context *ctx, int size)
                                       c->depth_stencil, 0);
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_STENCIL_ATTACHMENT, GL_TEXTURE_2D,
                                       c->depth_stencil, 0);
-        GL(ctx, DrawBuffer)(GL_NONE);
-        GL(ctx, ReadBuffer)(GL_NONE);
+        stin__no_colour_buffers(ctx);
         c->size = size;
     }
     return 1;
@@ -286,7 +285,7 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
         ps.scissor = 1;
         stin__memcopy(ps.scissor_box, band, sizeof ps.scissor_box);
         stin__pass_apply(ctx, &ps);
-        GL(ctx, ClearDepth)(1.0);
+        stin__clear_depth(ctx, 1.0);
         GL(ctx, ClearStencil)(0);
         GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         if (job->path == stin__fixed_path()) {

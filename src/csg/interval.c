@@ -300,7 +300,7 @@ static void peel(stin_context *ctx, const stin__draw *d, int g, int previous, GL
     ps.depth_write = 1;
     stin__pass_apply(ctx, &ps);
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;
@@ -471,7 +471,7 @@ static void keep_layers(stin_context *ctx, stin__csg_pixels *r, stin__csg_produc
             d = &cap_draw;
         }
         stin__pass_apply(ctx, &clear);
-        GL(ctx, ClearDepth)(1.0);
+        stin__clear_depth(ctx, 1.0);
         GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
         peel_draw(ctx, d, g % k && g != cap_layer ? g - 1 : -1, &ps);
         select.id = g + 1;

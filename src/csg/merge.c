@@ -274,7 +274,7 @@ int stin__csg_merge_begin(stin_context *ctx)
     if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
         return 0;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[STIN__CSG_MERGE_RESULT]);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     stin__csg_clear(ctx, GL_DEPTH_BUFFER_BIT);
     ctx->csg->resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);

@@ -117,9 +117,9 @@ static void intersect(stin_context *ctx, const stin__path *path, const stin__csg
                       const stin__csg_term *t)
 {
     uint32_t li;
-    GL(ctx, ClearDepth)(0.0);
+    stin__clear_depth(ctx, 0.0);
     stin__csg_clear(ctx, GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     for (li = 0; li < t->count; li++) {
         uint32_t lit = ctx->csg->literals[t->first + li];
         const stin__draw *d = primitive_of(ctx, p, lit);

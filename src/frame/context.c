@@ -219,9 +219,9 @@ static stin_result init_lighting(stin_context *ctx)
             return STIN_OK;
         next = c->technique == STIN_TECH_LIGHTING_GLSL150 ? STIN_TECH_LIGHTING_GLSL110
                                                           : STIN_TECH_LIGHTING_FIXED;
-        if (stin__technique_needs(next) & ~ctx->caps.present)
+        if (stin__needs_here(&ctx->caps, stin__technique_needs(next)) & ~ctx->caps.present)
             next = STIN_TECH_LIGHTING_FIXED;
-        if (stin__technique_needs(next) & ~ctx->caps.present) {
+        if (stin__needs_here(&ctx->caps, stin__technique_needs(next)) & ~ctx->caps.present) {
             stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK,
                       "lighting: %s failed (%s) and nothing below it runs here",
                       stin_technique_name(c->technique), msg);
@@ -264,12 +264,18 @@ static stin_result init_shadows(stin_context *ctx)
 static stin_result check_entry_points(stin_context *ctx)
 {
     stin_result r = STIN_OK;
-    int i;
+    int i, es = stin__gl_is_es(&ctx->gl), desktop_only = 0;
     for (i = 0; i < STIN_GLFN_COUNT; i++) {
         int need = stin__glfn_need((stin__glfn)i);
         if (ctx->gl_loaded[i])
             continue;
-        if (need == NEED_CORE) {
+        if (!es && need == NEED_ES)
+            continue; /* glClearDepthf and the like: called on ES only */
+        if (es && stin__glfn_desktop_only((stin__glfn)i)) {
+            desktop_only++; /* expected there: one line for them all */
+            continue;
+        }
+        if (need == NEED_CORE || (need == NEED_DESKTOP && !es)) {
             stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_MISSING_ENTRY_POINT,
                       "stin_create: GL 1.1 entry point %s did not load",
                       stin__glfn_name((stin__glfn)i));
@@ -280,6 +286,9 @@ static stin_result check_entry_points(stin_context *ctx)
                       stin__need_name(need));
         }
     }
+    if (desktop_only)
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_MISSING_ENTRY_POINT,
+                  "OpenGL ES: %d desktop-only entry points are not used", desktop_only);
     return r;
 }
 
@@ -288,10 +297,12 @@ static void log_selection(stin_context *ctx)
     char names[512];
     int f;
     stin__cap_names(ctx->caps.present, names, sizeof names);
-    stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_CAPS, "GL %d.%d, GLSL %d.%d, %s: %s",
+    stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_CAPS, "\"%s\": %s %d.%d, GLSL %d.%d, %s: %s",
+              (const char *)GL(ctx, GetString)(GL_VERSION), ctx->caps.es ? "OpenGL ES" : "GL",
               ctx->caps.gl_major, ctx->caps.gl_minor, ctx->caps.glsl_major,
               ctx->caps.glsl_minor,
-              ctx->caps.profile == STIN_GL_PROFILE_CORE ? "core" : "compatibility", names);
+              ctx->caps.es ? "ES"
+              : ctx->caps.profile == STIN_GL_PROFILE_CORE ? "core" : "compatibility", names);
     if (ctx->caps.hidden) {
         stin__cap_names(ctx->caps.hidden, names, sizeof names);
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_CAPS, "hidden by the caps mask: %s", names);

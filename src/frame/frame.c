@@ -278,7 +278,7 @@ static void stage_target(stin_context *ctx)
     if (!f->keep_contents) {
         GL(ctx, ClearColor)(f->clear_color[0], f->clear_color[1], f->clear_color[2],
                             f->clear_color[3]);
-        GL(ctx, ClearDepth)(1.0);
+        stin__clear_depth(ctx, 1.0);
         GL(ctx, ClearStencil)(0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT |
                        (ctx->target.stencil_bits > 0 ? GL_STENCIL_BUFFER_BIT : 0u));

@@ -30,7 +30,20 @@ static void disable_from(stin_context *ctx, int min_version, const GLenum *caps,
         GL_DISABLE(ctx, caps[i]);
 }
 
-void stin__caller_state_defaults(stin_context *ctx)
+/* OpenGL ES: the same defaults where ES has the state (no logic op,
+ * polygon mode or smoothing, clip planes or non-fixed primitive restart). */
+static void es_defaults(stin_context *ctx)
+{
+    static const GLenum es20[] = {GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE};
+    static const GLenum es30[] = {GL_RASTERIZER_DISCARD, GL_PRIMITIVE_RESTART_FIXED_INDEX};
+    static const GLenum es32[] = {GL_SAMPLE_MASK}; /* ES 3.1, audited as GL 3.2 */
+    disable_from(ctx, 20, es20, 2);
+    disable_from(ctx, 30, es30, 2);
+    disable_from(ctx, 32, es32, 1);
+    stin__depth_range(ctx, 0.0, 1.0);
+}
+
+static void desktop_defaults(stin_context *ctx)
 {
     static const GLenum gl11[] = {GL_COLOR_LOGIC_OP, GL_POLYGON_SMOOTH};
     static const GLenum gl13[] = {GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_ALPHA_TO_ONE,
@@ -55,6 +68,15 @@ void stin__caller_state_defaults(stin_context *ctx)
     }
     GL(ctx, PolygonMode)(GL_FRONT_AND_BACK, GL_FILL);
     GL(ctx, DepthRange)(0.0, 1.0);
+}
+
+void stin__caller_state_defaults(stin_context *ctx)
+{
+    int i;
+    if (ctx->caps.es)
+        es_defaults(ctx);
+    else
+        desktop_defaults(ctx);
     if (stin__gl_available(ctx, STIN_GLFN_BlendEquation))
         GL(ctx, BlendEquation)(GL_FUNC_ADD);
     if (stin__gl_available(ctx, STIN_GLFN_BindSampler)) {

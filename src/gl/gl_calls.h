@@ -12,9 +12,12 @@
 /* What an entry point or enum needs: a capability (STIN_CAP_*), GL 1.1
  * (NEED_CORE), a core GL version (NEED_GLxy) or, for the caller-state
  * calls of gl/caller_redirects.c, the version or extension that file checks
- * before it calls them (NEED_CHECKED). */
+ * before it calls them (NEED_CHECKED). On OpenGL ES each NEED_GLxy reads as
+ * the ES version that has the same calls (load.c); NEED_DESKTOP is GL 1.1
+ * that ES never has (glClearDepth, glPolygonMode...), NEED_ES an ES 2.0
+ * entry point stin calls only on ES (glClearDepthf: gl/portable_calls.c). */
 enum { NEED_CORE = STIN_CAP_COUNT, NEED_GL12, NEED_GL13, NEED_GL14, NEED_GL30, NEED_GL31, NEED_GL32,
-       NEED_GL33, NEED_GL43, NEED_CHECKED, NEED_COUNT };
+       NEED_GL33, NEED_GL43, NEED_CHECKED, NEED_DESKTOP, NEED_ES, NEED_COUNT };
 
 typedef enum stin__glfn {
 #define STIN_X_(ret, name, params, need, alt) STIN_GLFN_##name,
@@ -30,13 +33,26 @@ typedef struct stin__gl {
 } stin__gl;
 
 /* Resolves every entry point; returns the number that did not resolve.
- * loaded[i] is 1 for each entry point i that did. */
+ * loaded[i] is 1 for each entry point i that did. On an OpenGL ES context
+ * (GL_VERSION "OpenGL ES ...") the desktop-only ones count as not resolved
+ * and stay NULL: drivers resolve their names on ES too. */
 int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
                   unsigned char loaded[STIN_GLFN_COUNT]);
 const char *stin__glfn_name(stin__glfn fn);
 int stin__glfn_need(stin__glfn fn);
+/* 1 for an entry point OpenGL ES does not have (loaded is then 0 on ES). */
+int stin__glfn_desktop_only(stin__glfn fn);
+/* 1 for a desktop-only entry point whose capability ES runs without it
+ * (glClientActiveTexture: multitexture); 0 for glGetBufferSubData and
+ * glClearBufferData, which stin's COMPUTE paths cannot do without. */
+int stin__glfn_es_exempt(stin__glfn fn);
+/* 1 when the current context's GL_VERSION names OpenGL ES. */
+int stin__gl_is_es(const stin__gl *gl);
 /* The GL version (major * 10 + minor) a NEED_GLxy names, else 0. */
 int stin__need_version(int need);
+/* The version a need asks of a desktop (es 0) or ES (es 1) context: 0 for a
+ * capability need, -1 where that API never has it. */
+int stin__need_version_in(int need, int es);
 /* "GL 3.3" or the capability's name, for messages. */
 const char *stin__need_name(int need);
 struct stin_context;
@@ -55,6 +71,12 @@ void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e);
 #define GL(ctx, name) ((ctx)->gl.name)
 #define GL_ENUM(ctx, name, e) ((void)(e), (ctx)->gl.name)
 #endif
+/* Calls whose entry point differs on OpenGL ES (gl/portable_calls.c). */
+void stin__clear_depth(struct stin_context *ctx, double depth);
+void stin__depth_range(struct stin_context *ctx, double n, double f);
+/* glDrawBuffer(GL_NONE) + glReadBuffer(GL_NONE) for a depth-only target. */
+void stin__no_colour_buffers(struct stin_context *ctx);
+
 /* glEnable/glDisable and friends take an enum whose capability is audited. */
 #define GL_ENABLE(ctx, e) GL_ENUM(ctx, Enable, e)(e)
 #define GL_DISABLE(ctx, e) GL_ENUM(ctx, Disable, e)(e)

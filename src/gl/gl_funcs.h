@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* Every GL entry point stin calls, as one X-macro list:
  *   X(return type, name without "gl", parameter list, what it needs, alternate name)
- * "needs" is a STIN_CAP_* or NEED_CORE (GL 1.1) / NEED_GL30 (GL 3.0); an entry
+ * "needs" is a STIN_CAP_* or NEED_CORE (GL 1.1) / NEED_GL30 (GL 3.0) /
+ * NEED_DESKTOP (GL 1.1, not on OpenGL ES) / NEED_ES (ES only) ...; an entry
  * point whose capability the context (after the caps mask) lacks must not be
  * called, and the checked build (STIN_GL_CHECK) fails a test that does.
  * The alternate name is tried when the core name does not resolve (ARB/EXT). */
@@ -16,11 +17,11 @@
     X(void, GetTexLevelParameteriv, (GLenum target, GLint level, GLenum pname, GLint *v),  \
       NEED_CORE, "")                                                                       \
     X(void, Enable, (GLenum cap), NEED_CORE, "")                                          \
-    X(void, LogicOp, (GLenum op), NEED_CORE, "")                                          \
+    X(void, LogicOp, (GLenum op), NEED_DESKTOP, "")                                          \
     X(void, Disable, (GLenum cap), NEED_CORE, "")                                         \
     X(void, Clear, (GLbitfield mask), NEED_CORE, "")                                      \
     X(void, ClearColor, (GLfloat r, GLfloat g, GLfloat b, GLfloat a), NEED_CORE, "")      \
-    X(void, ClearDepth, (GLdouble d), NEED_CORE, "")                                      \
+    X(void, ClearDepth, (GLdouble d), NEED_DESKTOP, "")                                      \
     X(void, ClearStencil, (GLint s), NEED_CORE, "")                                       \
     X(void, Viewport, (GLint x, GLint y, GLsizei w, GLsizei h), NEED_CORE, "")            \
     X(void, DepthFunc, (GLenum func), NEED_CORE, "")                                      \
@@ -50,15 +51,18 @@
     X(void, ReadPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum fmt, GLenum type,  \
                          void *pixels), NEED_CORE, "")                                    \
     X(void, PolygonOffset, (GLfloat factor, GLfloat units), NEED_CORE, "")                \
-    X(void, DrawBuffer, (GLenum buf), NEED_CORE, "")                                      \
+    X(void, DrawBuffer, (GLenum buf), NEED_DESKTOP, "")                                      \
     X(void, ReadBuffer, (GLenum buf), NEED_CORE, "")                                      \
     X(void, CopyTexSubImage2D, (GLenum target, GLint level, GLint xo, GLint yo, GLint x,  \
                                 GLint y, GLsizei w, GLsizei h), NEED_CORE, "")            \
     X(void, TexImage1D, (GLenum target, GLint level, GLint ifmt, GLsizei w, GLint border, \
-                         GLenum fmt, GLenum type, const void *pixels), NEED_CORE, "")     \
-    X(void, PolygonMode, (GLenum face, GLenum mode), NEED_CORE, "")                       \
-    X(void, DepthRange, (GLdouble n, GLdouble f), NEED_CORE, "")                          \
+                         GLenum fmt, GLenum type, const void *pixels), NEED_DESKTOP, "")     \
+    X(void, PolygonMode, (GLenum face, GLenum mode), NEED_DESKTOP, "")                       \
+    X(void, DepthRange, (GLdouble n, GLdouble f), NEED_DESKTOP, "")                          \
     X(void, BlendEquation, (GLenum mode), NEED_GL14, "glBlendEquationEXT")                \
+    /* OpenGL ES's float forms of glClearDepth and glDepthRange */                       \
+    X(void, ClearDepthf, (GLfloat d), NEED_ES, "")                                        \
+    X(void, DepthRangef, (GLfloat n, GLfloat f), NEED_ES, "")                              \
     X(void, BindSampler, (GLuint unit, GLuint sampler), NEED_GL33, "")                    \
     /* fixed function (compatibility contexts) */                                         \
     X(void, MatrixMode, (GLenum mode), STIN_CAP_FIXED_FUNCTION, "")                       \

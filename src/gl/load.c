@@ -28,32 +28,99 @@ const char *stin__glfn_name(stin__glfn fn)
 
 int stin__glfn_need(stin__glfn fn) { return (unsigned)fn < STIN_GLFN_COUNT ? gl_needs[fn] : NEED_CORE; }
 
+/* Per NEED_* from NEED_CORE: the desktop GL version, and the OpenGL ES
+ * version with the same entry points and enums (-1: never). */
+static const int need_versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 43, 11,
+                                                         11, -1};
+static const int need_es_versions[NEED_COUNT - NEED_CORE] = {20, 30, 20, 20, 30, 30, 32, 30, 30,
+                                                            20, -1, 20};
+
 int stin__need_version(int need)
 {
-    static const int versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 43, 11};
-    return need >= NEED_CORE && need < NEED_COUNT ? versions[need - NEED_CORE] : 0;
+    return need >= NEED_CORE && need < NEED_COUNT ? need_versions[need - NEED_CORE] : 0;
+}
+
+int stin__need_version_in(int need, int es)
+{
+    if (need < NEED_CORE || need >= NEED_COUNT)
+        return 0;
+    return es ? need_es_versions[need - NEED_CORE] : need_versions[need - NEED_CORE];
 }
 
 const char *stin__need_name(int need)
 {
     static const char *const names[NEED_COUNT - NEED_CORE] = {
         "GL 1.1", "GL 1.2", "GL 1.3", "GL 1.4", "GL 3.0", "GL 3.1", "GL 3.2", "GL 3.3", "GL 4.3",
-        "its version or extension"};
+        "its version or extension", "desktop GL (not OpenGL ES)", "OpenGL ES"};
     return need >= NEED_CORE && need < NEED_COUNT ? names[need - NEED_CORE]
                                                   : stin_cap_name((stin_cap)need);
 }
 
+/* What fn needs on this context: the query object calls are audited as
+ * occlusion queries on desktop (GL 1.5 brought both), but ES 3.0 has the
+ * objects without sample counts (primitive and any-samples queries). */
+static int need_of(const stin_context *ctx, stin__glfn fn)
+{
+    if (ctx->caps.es && gl_needs[fn] == STIN_CAP_OCCLUSION_QUERY)
+        return NEED_GL30;
+    return gl_needs[fn];
+}
+
 static int need_present(const stin_context *ctx, int need)
 {
-    int version = stin__need_version(need);
+    int version = stin__need_version_in(need, ctx->caps.es);
+    if (version < 0)
+        return 0;
     if (version)
         return ctx->caps.gl_major * 10 + ctx->caps.gl_minor >= version;
     return (ctx->caps.present & STIN_CAP_BIT(need)) != 0;
 }
 
+/* Entry points OpenGL ES 3.2 lacks besides fixed function: their ES
+ * counterparts differ in name or type (glClearDepthf) or do not exist. */
+static int desktop_only_name(stin__glfn fn)
+{
+    switch (fn) {
+    case STIN_GLFN_ClientActiveTexture: case STIN_GLFN_ActiveStencilFaceEXT:
+    case STIN_GLFN_BindFragDataLocation: case STIN_GLFN_ClampColor:
+    case STIN_GLFN_ProvokingVertex: case STIN_GLFN_GetTexLevelParameteriv:
+    case STIN_GLFN_DrawTransformFeedback: case STIN_GLFN_GetBufferSubData:
+    case STIN_GLFN_ClearBufferData: case STIN_GLFN_QueryCounter:
+    case STIN_GLFN_GetQueryObjectui64v:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+int stin__glfn_es_exempt(stin__glfn fn)
+{
+    /* stin's storage-buffer reads and clears: without them its COMPUTE
+     * paths cannot run, so ES 3.1's compute does not count (yet) */
+    return stin__glfn_desktop_only(fn) && fn != STIN_GLFN_GetBufferSubData &&
+           fn != STIN_GLFN_ClearBufferData;
+}
+
+int stin__glfn_desktop_only(stin__glfn fn)
+{
+    int need = stin__glfn_need(fn);
+    return need == NEED_DESKTOP || need == STIN_CAP_FIXED_FUNCTION || desktop_only_name(fn);
+}
+
+int stin__gl_is_es(const stin__gl *gl)
+{
+    const char *v = gl->GetString ? (const char *)gl->GetString(GL_VERSION) : NULL;
+    const char *p = "OpenGL ES";
+    while (v && *p && *v == *p) {
+        v++;
+        p++;
+    }
+    return v && !*p;
+}
+
 int stin__gl_available(const stin_context *ctx, stin__glfn fn)
 {
-    return ctx->gl_loaded[fn] && need_present(ctx, gl_needs[fn]);
+    return ctx->gl_loaded[fn] && need_present(ctx, need_of(ctx, fn));
 }
 
 /* Function and object pointers do not convert in ISO C; copy the bits. */
@@ -64,14 +131,24 @@ int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
                   unsigned char loaded[STIN_GLFN_COUNT])
 {
     stin__any_fn *slots = (stin__any_fn *)(void *)gl;
-    int i, missing = 0;
+    int i, missing = 0, es;
     for (i = 0; i < STIN_GLFN_COUNT; i++) {
         void *p = get_proc(user, gl_names[i]);
         if (!p && gl_alt_names[i][0])
             p = get_proc(user, gl_alt_names[i]);
         store_fn(&slots[i], p);
         loaded[i] = p != NULL;
-        if (!p)
+    }
+    es = stin__gl_is_es(gl);
+    for (i = 0; i < STIN_GLFN_COUNT; i++) {
+        if (es && stin__glfn_desktop_only((stin__glfn)i)) {
+            store_fn(&slots[i], NULL);
+            loaded[i] = 0;
+        } else if (!es && gl_needs[i] == NEED_ES) {
+            loaded[i] = 0; /* never called there; not missing either */
+            continue;
+        }
+        if (!loaded[i])
             missing++;
     }
     return missing;
@@ -81,7 +158,7 @@ int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
 
 void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn)
 {
-    int need = gl_needs[fn];
+    int need = need_of(ctx, fn);
     if (!ctx->gl_loaded[fn] || !need_present(ctx, need)) {
         ctx->gl_violations++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,

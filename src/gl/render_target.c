@@ -61,7 +61,6 @@ GLenum stin__rt_attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth
 GLenum stin__rt_attach_depth_only(stin_context *ctx, GLuint fbo, GLuint depth, GLuint stencil)
 {
     attach(ctx, fbo, 0, depth, stencil);
-    GL(ctx, DrawBuffer)(GL_NONE);
-    GL(ctx, ReadBuffer)(GL_NONE);
+    stin__no_colour_buffers(ctx);
     return GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
 }

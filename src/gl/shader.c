@@ -3,6 +3,9 @@
 #include "internal.h"
 
 #define MAX_CHUNKS 6
+/* version line, precision, defines' version line and defines, main text,
+ * chunks, the main text after the chunks */
+#define MAX_PARTS (MAX_CHUNKS + 6)
 #define CHUNK_MARKER "// @chunks"
 
 /* Where the marker line starts in src, or NULL. */
@@ -37,11 +40,74 @@ static const char *shared_chunk(const char *name)
     return stin__shader_source(gl2);
 }
 
+/* OpenGL ES: the same sources under a version and precision preamble that
+ * replaces the file's #version line. On ES 2.0 shaders/gl2 runs as GLSL ES
+ * 1.00; on ES 3.x every source runs as the context's GLSL ES 3.x0 (GLSL ES
+ * 1.00 there has no shadow samplers or gl_FragDepth), shaders/gl2 with its
+ * GLSL 1.10 names mapped, as the gl4 main files map them for the chunks
+ * they share. Fragment stages get highp where the ES 2.0 part has it
+ * (GL_FRAGMENT_PRECISION_HIGH; ES 3.x always has), and the sampler types
+ * without a default precision get one. STIN_ES marks the few differences
+ * in the sources. */
+static const char es100_vertex[] = "#version 100\n#define STIN_ES 1\n";
+static const char es100_fragment[] =
+    "#version 100\n#define STIN_ES 1\n"
+    /* the sources take derivatives (face normals, filter footprints) */
+    "#extension GL_OES_standard_derivatives : enable\n"
+    "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
+    "precision highp float;\nprecision highp int;\n"
+    "#else\n"
+    "precision mediump float;\nprecision mediump int;\n"
+    "#endif\n";
+static const char es3_precision[] =
+    "#define STIN_ES 1\n"
+    "precision highp float;\nprecision highp int;\n"
+    "precision highp sampler2D;\nprecision highp sampler2DShadow;\n"
+    "precision highp sampler2DArray;\nprecision highp sampler2DArrayShadow;\n"
+    "precision highp sampler3D;\nprecision highp samplerCube;\n"
+    "precision highp usampler2D;\nprecision highp isampler2D;\n";
+/* GLSL 1.10's names in GLSL ES 3.x0, for shaders/gl2 */
+static const char es3_gl2_vertex[] =
+    "#define attribute in\n#define varying out\n"
+    "#define texture2D texture\n#define texture2DLod textureLod\n";
+static const char es3_gl2_fragment[] =
+    "#define varying in\n"
+    "#define texture2D texture\n#define texture2DLod textureLod\n"
+    "#define textureCube texture\n#define shadow2D(s, c) vec4(texture(s, c))\n"
+    "out vec4 stin_frag_color;\n#define gl_FragColor stin_frag_color\n";
+
+/* The ES version line of the context's GLSL ES 3.x. */
+static const char *es3_version(const stin_context *ctx)
+{
+    int v = ctx->caps.glsl_major * 10 + ctx->caps.glsl_minor;
+    return v >= 32 ? "#version 320 es\n" : v == 31 ? "#version 310 es\n" : "#version 300 es\n";
+}
+
+/* The parts that replace the #version line of `name` on ES (count, at most 3). */
+static int es_preamble(const stin_context *ctx, GLenum type, const char *name,
+                       const GLchar **parts)
+{
+    int fragment = type == GL_FRAGMENT_SHADER;
+    if (ctx->caps.gl_major < 3) {
+        parts[0] = fragment ? es100_fragment : es100_vertex;
+        return 1;
+    }
+    parts[0] = es3_version(ctx);
+    parts[1] = es3_precision;
+    if (name[2] != '2')
+        return 2;
+    parts[2] = fragment ? es3_gl2_fragment : es3_gl2_vertex;
+    return 3;
+}
+
 /* The first lines of a tessellation stage: GLSL 4.00, or 1.50 with the
  * ARB extension (no `precise` there: the blend is written so that a shared
- * edge's two patches evaluate it in the same order). */
+ * edge's two patches evaluate it in the same order); GLSL ES 3.20 has
+ * tessellation and `precise` in core. */
 static const char *tess_version(const stin_context *ctx)
 {
+    if (ctx->caps.es)
+        return "#define STIN_PRECISE precise\n";
     if (ctx->caps.glsl_major * 100 + ctx->caps.glsl_minor >= 400)
         return "#version 400 core\n#define STIN_PRECISE precise\n";
     return "#version 150\n#extension GL_ARB_tessellation_shader : require\n#define STIN_PRECISE\n";
@@ -55,8 +121,8 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
                       const char *const *chunks, const char *defines, char *msg, size_t size)
 {
     const char *src = stin__shader_source(name), *marker;
-    const GLchar *parts[MAX_CHUNKS + 4];
-    GLint lengths[MAX_CHUNKS + 4];
+    const GLchar *parts[MAX_PARTS];
+    GLint lengths[MAX_PARTS];
     GLsizei count = 0;
     GLuint s;
     GLint ok = 0;
@@ -71,12 +137,25 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
         stin__formatf(msg, size, "shader %s has no %s line for its chunks", name, CHUNK_MARKER);
         return 0;
     }
+    if (ctx->caps.es) {
+        /* the file's #version line gives way to the ES preamble */
+        int n = es_preamble(ctx, type, name, parts);
+        while (count < n)
+            lengths[count++] = -1;
+    }
     if (type == GL_TESS_CONTROL_SHADER || type == GL_TESS_EVALUATION_SHADER) {
         /* the file's #version line gives way to the tessellation one */
         parts[count] = tess_version(ctx);
         lengths[count++] = -1;
+    }
+    if (count) {
         while (*src && *src != '\n')
             src++;
+    }
+    if (count && defines) {
+        parts[count] = defines;
+        lengths[count++] = -1;
+        defines = NULL;
     }
     if (defines) { /* after the file's #version line, which must come first */
         const char *line = src;
@@ -201,6 +280,9 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
     if (ok_so_far && src->frag)
         ok_so_far = (stages[4] = compile(ctx, GL_FRAGMENT_SHADER, src->frag, src->frag_chunks,
                                          src->frag_defines, msg, size)) != 0;
+    else if (ok_so_far && ctx->caps.es) /* ES links no program without one */
+        ok_so_far = (stages[4] = compile(ctx, GL_FRAGMENT_SHADER, "gl4/empty.frag", NULL, NULL,
+                                         msg, size)) != 0;
     if (!ok_so_far) {
         delete_stages(ctx, stages, 5);
         return 0;
@@ -210,7 +292,9 @@ GLuint stin__program_build_source(stin_context *ctx, const stin__program_source 
         if (stages[i])
             GL(ctx, AttachShader)(p, stages[i]);
     bind_attributes(ctx, p, src->attributes);
-    for (i = 0; i < STIN__MAX_FRAG_OUTPUTS && src->frag_outputs[i]; i++)
+    /* ES has no glBindFragDataLocation: a single output takes location 0,
+     * several need layout(location) in the source (STIN_ES) */
+    for (i = 0; !ctx->caps.es && i < STIN__MAX_FRAG_OUTPUTS && src->frag_outputs[i]; i++)
         GL(ctx, BindFragDataLocation)(p, (GLuint)i, src->frag_outputs[i]);
     if (src->feedback) {
         GLsizei n = 0;

@@ -86,7 +86,7 @@ static int draw_normals(stin_context *ctx, const stin__path *path)
         return 0;
     }
     stin__pass_apply(ctx, &ps);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     ctx->draw_fbo = stin__mask_target_of(ctx).fbo;

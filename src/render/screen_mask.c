@@ -157,7 +157,7 @@ int stin__mask_begin(stin_context *ctx, const stin__path *path, int which, int d
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the mask */
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
     if (depth && !ctx->mask->depth_done) {
-        GL(ctx, ClearDepth)(1.0);
+        stin__clear_depth(ctx, 1.0);
         GL(ctx, ClearStencil)(0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
         /* the same program and draws as the target's ambient pass: equal depths */

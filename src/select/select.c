@@ -45,7 +45,7 @@ int stin_tier_supported(const stin_caps *caps, stin_tier tier, char *missing, si
             missing[0] = '\0';
         return 0;
     }
-    lack = stin__tier_needs(tier) & ~caps->present;
+    lack = stin__needs_here(caps, stin__tier_needs(tier)) & ~caps->present;
     if (missing)
         stin__cap_names(lack, missing, size);
     return tier != STIN_TIER_AUTO && lack == 0;
@@ -113,7 +113,7 @@ static int frag_units(stin_technique t)
 static int why_not(const chain_input *in, stin_technique t, char *why, size_t size)
 {
     const stin__technique_row *r = stin__technique_row_of(t);
-    uint64_t lack = r->needs & ~in->caps->present;
+    uint64_t lack = stin__needs_here(in->caps, r->needs) & ~in->caps->present;
     char names[160];
     why[0] = '\0';
     stin__cap_names(lack, names, sizeof names);

@@ -99,6 +99,11 @@ stin_technique stin__technique_lighting(stin_technique t);
 /* 1 when technique t can run with this lighting technique. */
 int stin__technique_runs_with(stin_technique t, stin_technique lighting);
 uint64_t stin__tier_needs(stin_tier t);
+/* The needs (a row's or a tier's) as this context reads them: on OpenGL ES
+ * a GLSL need's FIXED_FUNCTION (the compatibility context #version 110 asks
+ * for on desktop) is met by GLSL ES 1.00; the GL1 rows keep it and are never
+ * offered on ES. */
+uint64_t stin__needs_here(const stin_caps *caps, uint64_t needs);
 /* Names of the bits in `bits`, comma separated. */
 void stin__cap_names(uint64_t bits, char *out, size_t size);
 

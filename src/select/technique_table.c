@@ -7,7 +7,10 @@
 #define BIT(c) STIN_CAP_BIT(STIN_CAP_##c)
 #define GLSL_ANY STIN_TECH_LIGHTING_GLSL110 /* "any GLSL lighting" */
 #define TIER1 (BIT(FIXED_FUNCTION))
-/* GLSL 1.10 shaders need a compatibility context next to GL 2.0. */
+/* GLSL 1.10 shaders need a compatibility context next to GL 2.0 (a core
+ * context refuses #version 110/120). On OpenGL ES the same sources run as
+ * GLSL ES 1.00, which every ES 2.0+ context takes: stin__needs_here drops
+ * FIXED_FUNCTION from a need that has GLSL beside it there. */
 #define TIER2 (BIT(GLSL) | BIT(FIXED_FUNCTION))
 #define TIER4 (BIT(GLSL) | BIT(GEOMETRY_SHADER) | BIT(VBO) | BIT(VAO) | BIT(FBO))
 /* What volumes' own depth map needs (shadow/cast_map.c, on GLSL lighting). */
@@ -137,6 +140,13 @@ uint64_t stin__tier_needs(stin_tier t)
     case STIN_TIER_AUTO: break;
     }
     return 0;
+}
+
+uint64_t stin__needs_here(const stin_caps *caps, uint64_t needs)
+{
+    if (caps && caps->es && (needs & BIT(GLSL)))
+        needs &= ~BIT(FIXED_FUNCTION);
+    return needs;
 }
 
 uint64_t stin__technique_needs(stin_technique t)

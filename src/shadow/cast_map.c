@@ -110,8 +110,7 @@ static void make_map(stin_context *ctx)
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m->texture,
                                   0);
-    GL(ctx, DrawBuffer)(GL_NONE); /* depth only */
-    GL(ctx, ReadBuffer)(GL_NONE);
+    stin__no_colour_buffers(ctx); /* depth only */
     stin__framebuffer_restore(ctx, caller_fbo);
 }
 
@@ -304,7 +303,7 @@ int stin__cast_map_draw(stin_context *ctx, const stin__path *path, uint32_t li, 
         return 0;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
     stin__pass_apply(ctx, &stin__pass_defaults); /* depth writes on for the clear */
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
     if (m->fixed)
         m->lights[li].drawn = 0;

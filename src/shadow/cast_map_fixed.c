@@ -140,7 +140,7 @@ static int products(stin_context *ctx, const stin_light_desc *l, const int map_v
     }
     GL(ctx, Viewport)(map_vp[0], map_vp[1], map_vp[2], map_vp[3]);
     stin__pass_apply(ctx, ps);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (ramp ? GL_COLOR_BUFFER_BIT : 0u));
     return stin__casters_cast(ctx, stin__fixed_path(), view, proj, map_vp, ctx->draw_fbo, 1,

@@ -110,7 +110,7 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const stin_light_de
     ps.polygon_offset = 0;
     ps.color_only = 0;
     stin__pass_apply(ctx, &ps);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, ClearColor)(0.5f, 0.5f, 0.5f, 1.0f); /* texels no surface covers: neither side */
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);

@@ -215,7 +215,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     stin__pass_apply(ctx, &ps);
     /* A point-light face's empty texels hold a depth just under 1: a point
      * behind the face has r past 1, clamped to 1, and must fail there. */
-    GL(ctx, ClearDepth)(slot >= STIN__FACE_SLOT ? 1.0 - 1.0 / 65536.0 : 1.0);
+    stin__clear_depth(ctx, slot >= STIN__FACE_SLOT ? 1.0 - 1.0 / 65536.0 : 1.0);
     GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* map-combine: "nothing" is the far end */
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (combine(ctx) ? GL_COLOR_BUFFER_BIT : 0u));
     /* CSG products first (csg/cast.c), in the frame's buffer where the map

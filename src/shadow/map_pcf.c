@@ -83,8 +83,7 @@ static stin_result pcf_init(stin_context *ctx)
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, GenFramebuffers)(1, &m->fbo);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
-    GL(ctx, DrawBuffer)(GL_NONE); /* depth only */
-    GL(ctx, ReadBuffer)(GL_NONE);
+    stin__no_colour_buffers(ctx); /* depth only */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
     return STIN_OK;
 }
@@ -132,7 +131,7 @@ static uint32_t draw_map(stin_context *ctx, const map_target *t, const stin_ligh
     ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor, &ps.offset_units);
     stin__pass_apply(ctx, &ps);
     if (t->clear) {
-        GL(ctx, ClearDepth)(1.0);
+        stin__clear_depth(ctx, 1.0);
         GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
     }
     if (stin__casters_cast(ctx, stin__path_of(ctx), view, proj, t->rect, m->fbo, 0,

@@ -54,7 +54,7 @@ static int ensure_size(stin_context *ctx)
     stin__rt_texture(ctx, v->position, GL_RGBA32F, GL_RGBA, GL_FLOAT, w, h);
     stin__rt_texture(ctx, v->normal, GL_RGBA16F, GL_RGBA, GL_FLOAT, w, h);
     stin__rt_texture(ctx, v->shading, GL_RGBA16F, GL_RGBA, GL_FLOAT, w, h);
-    stin__rt_texture(ctx, v->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_FLOAT, w, h);
+    stin__rt_texture(ctx, v->depth, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
@@ -167,7 +167,7 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
     GL(ctx, Viewport)(vp[0], vp[1], vp[2], vp[3]);
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the buffer */
     GL(ctx, ClearColor)(0.0f, 0.0f, 0.0f, 0.0f);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     ps.depth_test = 1;
     ps.depth_func = GL_LESS;

@@ -196,7 +196,7 @@ void stin__coloured_light(stin_context *ctx, uint32_t li)
     GL(ctx, Viewport)(0, 0, (GLsizei)(ATLAS_COLUMNS * s->size), (GLsizei)(ATLAS_ROWS * s->size));
     stin__pass_apply(ctx, &ps); /* writes on, no scissor: the clear covers the atlas */
     GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     GL(ctx, UseProgram)(s->program);
     stin__lit_program_forget(ctx); /* the lit program is no longer current */

@@ -73,7 +73,11 @@ static void nearest_clamped(stin_context *ctx, GLenum target)
  * asks without allocating, raises no GL error and reads none). */
 static int driver_takes(stin_context *ctx, GLsizei n, GLsizei slices)
 {
-    GLint width = 0;
+    GLint width = 0, layers = 0;
+    if (ctx->caps.es) { /* ES has no proxy textures: the limits are all it says */
+        GL(ctx, GetIntegerv)(GL_MAX_ARRAY_TEXTURE_LAYERS, &layers);
+        return n <= ctx->caps.max_texture_size && slices <= layers;
+    }
     GL_ENUM(ctx, TexImage3D, GL_RGBA32F)(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_RGBA32F, n, n, slices,
                                         0, GL_RGBA, GL_FLOAT, NULL);
     GL(ctx, GetTexLevelParameteriv)(GL_PROXY_TEXTURE_2D_ARRAY, 0, GL_TEXTURE_WIDTH, &width);
@@ -327,7 +331,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
         GL(ctx, FramebufferTextureLayer)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, s->layers[k % 2u], 0,
                                          slice);
         GL(ctx, ClearColor)(EMPTY_DEPTH, 1.0f, 1.0f, 1.0f);
-        GL(ctx, ClearDepth)(1.0);
+        stin__clear_depth(ctx, 1.0);
         GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         /* layer k - 1 on the deep unit; the texture drawn into is on none */
         stin__bind_unit(ctx, s->unit, GL_TEXTURE_2D_ARRAY, k > 0 ? s->layers[(k - 1u) % 2u] : 0);

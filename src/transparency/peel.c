@@ -255,7 +255,7 @@ void stin__peel_clear(stin_context *ctx, float r, float g, float b, float a, int
     stin__pass_state ps = stin__pass_defaults; /* writes on, no scissor */
     stin__pass_apply(ctx, &ps);
     GL(ctx, ClearColor)(r, g, b, a);
-    GL(ctx, ClearDepth)(1.0);
+    stin__clear_depth(ctx, 1.0);
     GL(ctx, ClearStencil)(0);
     GL(ctx, Clear)(GL_COLOR_BUFFER_BIT |
                    (depth ? GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT : 0u));

@@ -450,6 +450,12 @@ void hostile_tests(run *r, stin_tier tier, const char *path)
     float *colors;
     if (!all && !csg && strcmp(base, "glass-panes") && strcmp(base, "stone-wall"))
         return;
+    if (r->profile->es) {
+        report(r, "SKIP", "hostile",
+               "the hostile states are desktop GL's (logic op, polygon mode, clip planes, "
+               "client arrays...): OpenGL ES cases are not written yet");
+        return;
+    }
     memset(&h, 0, sizeof h);
     memset(&products, 0, sizeof products);
     h.r = r;

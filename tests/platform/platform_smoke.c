@@ -34,6 +34,7 @@ typedef const unsigned char *(*get_stringi_fn)(unsigned, unsigned);
 typedef void (*get_integerv_fn)(unsigned, int *);
 typedef void (*clear_color_fn)(float, float, float, float);
 typedef void (*clear_depth_fn)(double);
+typedef void (*clear_depthf_fn)(float);
 typedef void (*clear_stencil_fn)(int);
 typedef void (*clear_fn)(unsigned);
 typedef unsigned (*get_error_fn)(void);
@@ -44,7 +45,9 @@ typedef struct gl {
     get_stringi_fn get_stringi;
     get_integerv_fn get_integerv;
     clear_color_fn clear_color;
-    clear_depth_fn clear_depth;
+    clear_depth_fn clear_depth;   /* desktop GL */
+    clear_depthf_fn clear_depthf; /* OpenGL ES */
+    int es;
     clear_stencil_fn clear_stencil;
     clear_fn clear;
     get_error_fn get_error;
@@ -65,12 +68,18 @@ static int load_gl(stin_platform *p, gl *g)
     LOAD(p, g->get_stringi, "glGetStringi");
     LOAD(p, g->get_integerv, "glGetIntegerv");
     LOAD(p, g->clear_color, "glClearColor");
-    LOAD(p, g->clear_depth, "glClearDepth");
+    LOAD(p, g->get_string, "glGetString");
+    g->es = g->get_string && !strncmp((const char *)g->get_string(GL_VERSION), "OpenGL ES ", 10);
+    if (g->es) /* Mesa resolves desktop-only names on ES too: never call them there */
+        LOAD(p, g->clear_depthf, "glClearDepthf");
+    else
+        LOAD(p, g->clear_depth, "glClearDepth");
     LOAD(p, g->clear_stencil, "glClearStencil");
     LOAD(p, g->clear, "glClear");
     LOAD(p, g->get_error, "glGetError");
     LOAD(p, g->get_fb_attachment, "glGetFramebufferAttachmentParameteriv");
-    return g->get_string && g->get_integerv && g->clear_color && g->clear_depth &&
+    return g->get_string && g->get_integerv && g->clear_color &&
+           (g->clear_depth || g->clear_depthf) &&
            g->clear_stencil && g->clear && g->get_error;
 }
 
@@ -84,6 +93,8 @@ static const char *str(const gl *g, unsigned name)
 static int is_core(const gl *g)
 {
     int mask = 0;
+    if (g->es)
+        return 0;
     g->get_integerv(GL_CONTEXT_PROFILE_MASK, &mask);
     g->get_error(); /* INVALID_ENUM before GL 3.2 */
     return (mask & GL_CONTEXT_CORE_PROFILE_BIT) != 0;
@@ -104,7 +115,7 @@ static int stencil_bits(const gl *g, int core)
 static void print_extensions(const gl *g, int core)
 {
     int i, n = 0;
-    if (!core) {
+    if (!core || g->es) { /* ES 3.x keeps the GL_EXTENSIONS string */
         printf("extensions: %s\n", str(g, GL_EXTENSIONS));
         return;
     }
@@ -129,7 +140,10 @@ static int check_clear(stin_platform *p, const gl *g)
     float *depth = malloc(n * sizeof *depth);
 
     g->clear_color(0.25f, 0.5f, 0.75f, 1.0f);
-    g->clear_depth(0.5);
+    if (g->es)
+        g->clear_depthf(0.5f);
+    else
+        g->clear_depth(0.5);
     g->clear_stencil(7);
     g->clear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     if (!rgba || !stencil || !depth || !stin_platform_read_color(p, rgba) ||
@@ -220,7 +234,7 @@ int main(int argc, char **argv)
     printf("GL_RENDERER: %s\n", str(&g, GL_RENDERER));
     printf("GL_VERSION: %s\n", str(&g, GL_VERSION));
     printf("GL_SHADING_LANGUAGE_VERSION: %s\n", str(&g, GL_SHADING_LANGUAGE_VERSION));
-    printf("profile: %s\n", core ? "core" : "compatibility");
+    printf("profile: %s\n", g.es ? "es" : core ? "core" : "compatibility");
     printf("stencil bits: %d\n", stencil_bits(&g, core));
     if (extensions)
         print_extensions(&g, core);

@@ -220,6 +220,10 @@ static void STIN_APIENTRY fake_GetIntegerv(GLenum pname, GLint *data)
     case GL_MAX_TEXTURE_IMAGE_UNITS: *data = c->max_texture_image_units; break;
     case GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS: *data = c->max_vertex_texture_units; break;
     case GL_MAX_DRAW_BUFFERS: *data = c->max_draw_buffers; break;
+    case GL_MAX_VERTEX_UNIFORM_COMPONENTS: case GL_MAX_FRAGMENT_UNIFORM_COMPONENTS:
+        *data = 4096; break; /* Mesa's */
+    case GL_MAX_VERTEX_UNIFORM_VECTORS: case GL_MAX_FRAGMENT_UNIFORM_VECTORS:
+        *data = 1024; break;
     case GL_MAX_GEOMETRY_OUTPUT_VERTICES: *data = c->max_geometry_output_vertices; break;
     case GL_MAX_TESS_GEN_LEVEL: /* GL_INVALID_ENUM without GL 4.0 or ARB_tessellation_shader */
         if (!c->max_tess_gen_level)

@@ -432,6 +432,134 @@ static void test_detect_without_version_fails(void **state)
     assert_int_equal(stin_detect_caps(NULL, NULL, 0, 0, &c), STIN_ERROR_INVALID_ARGUMENT);
 }
 
+/* ---- OpenGL ES ------------------------------------------------------------ */
+#define ES20_CORE                                                                        \
+    (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) |        \
+     BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
+#define ES30_CORE                                                                        \
+    (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL))
+
+static void test_es_version_strings(void **state)
+{
+    stin_caps c;
+    (void)state;
+    c = parse("OpenGL ES 3.2 Mesa 22.3.6", "OpenGL ES GLSL ES 3.20", NULL);
+    assert_int_equal(c.es, 1);
+    assert_int_equal(c.gl_major * 10 + c.gl_minor, 32);
+    assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 32);
+    assert_int_equal(c.profile, STIN_GL_PROFILE_CORE);
+    c = parse("OpenGL ES 2.0 Mesa 22.3.6", "OpenGL ES GLSL ES 1.0.16", NULL);
+    assert_int_equal(c.es, 1);
+    assert_int_equal(c.gl_major * 10 + c.gl_minor, 20);
+    assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 10); /* GLSL ES 1.00 */
+    assert_true(HAS(c, GLSL));
+    /* a GLSL ES version above the ES version's is capped, as on desktop */
+    c = parse("OpenGL ES 3.0 Mesa 22.3.6", "OpenGL ES GLSL ES 3.20", NULL);
+    assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 30);
+    c = parse("4.5 (Core Profile) Mesa 22.3.6", "4.50", NULL);
+    assert_int_equal(c.es, 0);
+    c = parse("OpenGL ES-CM 1.1 Mesa 22.3.6", NULL, NULL); /* ES 1.x: nothing stin runs */
+    assert_int_equal(c.es, 1);
+    assert_int_equal(c.present, 0);
+}
+
+/* What each ES version has in core, and never fixed function. */
+static void test_es_core_capabilities_by_version(void **state)
+{
+    stin_caps c;
+    (void)state;
+    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", NULL);
+    assert_int_equal(c.present, ES20_CORE);
+    c = parse("OpenGL ES 3.0 Mesa", "OpenGL ES GLSL ES 3.00", NULL);
+    assert_int_equal(c.present, ES30_CORE);
+    /* float textures are core, rendering into them needs EXT_color_buffer_float */
+    c = parse("OpenGL ES 3.0 Mesa", "OpenGL ES GLSL ES 3.00", "GL_EXT_color_buffer_float");
+    assert_int_equal(c.present, ES30_CORE | BIT(FLOAT_TEXTURE));
+    c = parse("OpenGL ES 3.1 Mesa", "OpenGL ES GLSL ES 3.10", NULL);
+    assert_int_equal(c.present, ES30_CORE | BIT(COMPUTE));
+    c = parse("OpenGL ES 3.2 Mesa", "OpenGL ES GLSL ES 3.20", "GL_EXT_color_buffer_float");
+    assert_int_equal(c.present, ES30_CORE | BIT(COMPUTE) | BIT(FLOAT_TEXTURE) |
+                                    BIT(GEOMETRY_SHADER) | BIT(TESSELLATION));
+    assert_false(HAS(c, FIXED_FUNCTION));
+}
+
+/* ES 2.0's extensions map to the same bits; desktop names mean nothing on
+ * ES and ES names nothing on desktop. */
+static void test_es_extension_names(void **state)
+{
+    stin_caps c;
+    (void)state;
+    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
+              "GL_OES_depth_texture GL_OES_packed_depth_stencil GL_OES_vertex_array_object "
+              "GL_EXT_occlusion_query_boolean GL_EXT_shadow_samplers GL_OES_texture_float "
+              "GL_EXT_color_buffer_float");
+    /* any-samples queries are not the sample counts OCCLUSION_QUERY means */
+    assert_int_equal(c.present, ES20_CORE | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
+                                    BIT(VAO) | BIT(SHADOW));
+    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
+              "GL_ARB_depth_texture GL_ARB_shadow GL_EXT_stencil_two_side GL_ARB_depth_clamp "
+              "GL_ARB_texture_env_combine GL_EXT_depth_clamp");
+    assert_int_equal(c.present, ES20_CORE);
+    c = parse("1.3 Mesa", NULL, "GL_OES_depth_texture GL_OES_packed_depth_stencil");
+    assert_false(HAS(c, DEPTH_TEXTURE));
+    assert_false(HAS(c, PACKED_DEPTH_STENCIL));
+}
+
+static void test_es_max_gl_version_clamps(void **state)
+{
+    stin__caps_input in;
+    stin_caps c;
+    (void)state;
+    memset(&in, 0, sizeof in);
+    in.version = "OpenGL ES 3.2 Mesa 22.3.6";
+    in.glsl_version = "OpenGL ES GLSL ES 3.20";
+    in.max_gl_version = 30;
+    assert_int_equal(stin__caps_parse(&in, &c), 1);
+    assert_int_equal(c.gl_major * 10 + c.gl_minor, 30);
+    assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 30);
+    assert_int_equal(c.present, ES30_CORE);
+}
+
+/* Drivers resolve desktop-only names on ES too: the loader marks them not
+ * loaded there, and capabilities that desktop ties to them stay. */
+static void test_es_loader_marks_desktop_only_entry_points(void **state)
+{
+    fake_gl_config cfg = fake_gl_profile(FAKE_GL33_CORE);
+    unsigned char loaded[STIN_GLFN_COUNT];
+    stin__gl gl;
+    stin_caps c;
+    (void)state;
+    fake_gl_reset(&cfg);
+    stin__gl_load(&gl, fake_gl_get_proc, NULL, loaded);
+    assert_true(loaded[STIN_GLFN_ClearDepth] && loaded[STIN_GLFN_PolygonMode]);
+    assert_false(loaded[STIN_GLFN_ClearDepthf]); /* ES only: never called on desktop */
+    cfg.version = "OpenGL ES 3.0 Mesa 22.3.6";
+    cfg.glsl_version = "OpenGL ES GLSL ES 3.00";
+    fake_gl_reset(&cfg);
+    stin__gl_load(&gl, fake_gl_get_proc, NULL, loaded);
+    assert_false(loaded[STIN_GLFN_ClearDepth]);
+    assert_null(gl.ClearDepth);
+    assert_false(loaded[STIN_GLFN_DepthRange] || loaded[STIN_GLFN_PolygonMode] ||
+                 loaded[STIN_GLFN_DrawBuffer] || loaded[STIN_GLFN_LogicOp] ||
+                 loaded[STIN_GLFN_TexImage1D] || loaded[STIN_GLFN_ClientActiveTexture] ||
+                 loaded[STIN_GLFN_MatrixMode] || loaded[STIN_GLFN_BindFragDataLocation]);
+    assert_true(loaded[STIN_GLFN_ClearDepthf] && loaded[STIN_GLFN_DepthRangef]);
+    assert_int_equal(stin_detect_caps(fake_gl_get_proc, NULL, 0, 0, &c), STIN_OK);
+    assert_int_equal(c.es, 1);
+    assert_true(HAS(c, MULTITEXTURE)); /* without glClientActiveTexture */
+    assert_false(HAS(c, FIXED_FUNCTION));
+    assert_int_equal(c.max_lights, 0);
+    assert_int_equal(c.max_clip_planes, 0);
+    assert_int_equal(c.max_fragment_uniform_vectors, 1024);
+    /* ES 3.1's compute without glGetBufferSubData/glClearBufferData */
+    cfg.version = "OpenGL ES 3.2 Mesa 22.3.6";
+    cfg.glsl_version = "OpenGL ES GLSL ES 3.20";
+    fake_gl_reset(&cfg);
+    assert_int_equal(stin_detect_caps(fake_gl_get_proc, NULL, 0, 0, &c), STIN_OK);
+    assert_false(HAS(c, COMPUTE));
+    assert_true(HAS(c, GEOMETRY_SHADER));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -457,6 +585,11 @@ int main(void)
         cmocka_unit_test(test_detect_mask_and_max_version_through_fake),
         cmocka_unit_test(test_detect_masked_vertex_texture_fetch_is_hidden),
         cmocka_unit_test(test_detect_without_version_fails),
+        cmocka_unit_test(test_es_version_strings),
+        cmocka_unit_test(test_es_core_capabilities_by_version),
+        cmocka_unit_test(test_es_extension_names),
+        cmocka_unit_test(test_es_max_gl_version_clamps),
+        cmocka_unit_test(test_es_loader_marks_desktop_only_entry_points),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -643,6 +643,104 @@ static void test_texture_unit_budget(void **state)
     assert_non_null(strstr(msg, "map-pcf needs 2 texture units"));
 }
 
+/* ---- OpenGL ES ------------------------------------------------------------ */
+#define ES20_BITS                                                                         \
+    (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) |         \
+     BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
+#define ES30_BITS                                                                         \
+    (ES20_BITS | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) |  \
+     BIT(VERTEX_TEXTURE_FETCH))
+#define ES32_BITS                                                                         \
+    (ES30_BITS | BIT(COMPUTE) | BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) | BIT(FLOAT_TEXTURE))
+
+static stin_caps es_caps(int version, uint64_t present)
+{
+    stin_caps c = caps_with(version, version >= 30 ? version : 10, 1, present);
+    c.es = 1;
+    return c;
+}
+
+/* GLSL ES 1.00 runs the GLSL 1.10 sources: ES 2.0 and 3.0 take the GL2
+ * tier without fixed function; ES 3.2 (geometry shaders) the GL4 tier. */
+static void test_es_tiers(void **state)
+{
+    stin_caps es20 = es_caps(20, ES20_BITS), es30 = es_caps(30, ES30_BITS);
+    stin_caps es32 = es_caps(32, ES32_BITS);
+    stin_caps desktop = caps_with(33, 33, 1, ES32_BITS); /* the same bits on core: no GL2 */
+    char missing[256];
+    (void)state;
+    assert_int_equal(stin_best_tier(&es20), STIN_TIER_GL2);
+    assert_int_equal(stin_best_tier(&es30), STIN_TIER_GL2);
+    assert_int_equal(stin_best_tier(&es32), STIN_TIER_GL4);
+    assert_true(stin_tier_supported(&es32, STIN_TIER_GL2, NULL, 0));
+    assert_false(stin_tier_supported(&desktop, STIN_TIER_GL2, missing, sizeof missing));
+    assert_string_equal(missing, stin_cap_name(STIN_CAP_FIXED_FUNCTION));
+    /* no fixed function on ES: the GL1 tier is refused, naming it */
+    assert_false(stin_tier_supported(&es32, STIN_TIER_GL1, missing, sizeof missing));
+    assert_string_equal(missing, stin_cap_name(STIN_CAP_FIXED_FUNCTION));
+    assert_false(stin_tier_supported(&es30, STIN_TIER_GL4, missing, sizeof missing));
+    assert_string_equal(missing, stin_cap_name(STIN_CAP_GEOMETRY_SHADER));
+}
+
+static void test_es_auto_selection(void **state)
+{
+    stin_caps es20 = es_caps(20, ES20_BITS), es30 = es_caps(30, ES30_BITS);
+    stin_caps es32 = es_caps(32, ES32_BITS);
+    stin__selection sel;
+    char msg[256];
+    int f;
+    (void)state;
+    assert_int_equal(stin__select(&es20, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL110);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
+    assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_POM);
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
+    assert_int_equal(stin__select(&es30, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.tier, STIN_TIER_GL2);
+    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL110);
+    assert_int_equal(stin__select(&es32, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.tier, STIN_TIER_GL4);
+    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL150);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VDSM);
+    for (f = 0; f < STIN_FEATURE_COUNT; f++) /* nothing of the fixed pipeline */
+        assert_false(stin__technique_needs(sel.choice[f].technique) & BIT(FIXED_FUNCTION));
+}
+
+/* Forcing what the ES context lacks is the same error as on desktop,
+ * naming what is missing; the GL1 techniques are never offered. */
+static void test_es_forced_above_the_context(void **state)
+{
+    static const stin_technique fixed[] = {STIN_TECH_LIGHTING_FIXED, STIN_TECH_SHADOWS_MAP_DEPTH,
+                                           STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SURFACE_DOT3};
+    stin_caps es20 = es_caps(20, ES20_BITS), es32 = es_caps(32, ES32_BITS);
+    stin_technique forced[STIN_FEATURE_COUNT];
+    stin__selection sel;
+    char msg[256];
+    size_t i;
+    int f;
+    (void)state;
+    assert_int_equal(stin__select(&es32, STIN_TIER_GL1, NULL, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_FIXED_FUNCTION)));
+    assert_int_equal(stin__select(&es20, STIN_TIER_GL4, NULL, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_GEOMETRY_SHADER)));
+    for (i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
+        for (f = 0; f < STIN_FEATURE_COUNT; f++)
+            forced[f] = STIN_TECH_NONE;
+        forced[stin__technique_feature(fixed[i])] = fixed[i];
+        assert_int_equal(stin__select(&es32, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                         STIN_ERROR_UNSUPPORTED);
+    }
+    for (f = 0; f < STIN_FEATURE_COUNT; f++)
+        forced[f] = STIN_TECH_NONE;
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
+    assert_int_equal(stin__select(&es20, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+                     STIN_ERROR_UNSUPPORTED);
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_DEPTH_TEXTURE)));
+    assert_null(strstr(msg, stin_cap_name(STIN_CAP_FIXED_FUNCTION)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -668,6 +766,9 @@ int main(void)
         cmocka_unit_test(test_displacement_beside_volumes),
         cmocka_unit_test(test_fallback_walks_the_chain),
         cmocka_unit_test(test_choice_conflict),
+        cmocka_unit_test(test_es_tiers),
+        cmocka_unit_test(test_es_auto_selection),
+        cmocka_unit_test(test_es_forced_above_the_context),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -46,9 +46,10 @@ static void print_caps(const stin_caps *c)
 {
     int i;
     char missing[512];
-    printf("GL %d.%d, GLSL %d.%d, %s profile, renderer %s\n", c->gl_major, c->gl_minor,
-           c->glsl_major, c->glsl_minor,
-           c->profile == STIN_GL_PROFILE_CORE ? "core" : "compatibility", c->renderer);
+    printf("%s %d.%d, GLSL %d.%d, %s profile, renderer %s\n", c->es ? "OpenGL ES" : "GL",
+           c->gl_major, c->gl_minor, c->glsl_major, c->glsl_minor,
+           c->es ? "ES" : c->profile == STIN_GL_PROFILE_CORE ? "core" : "compatibility",
+           c->renderer);
     printf("limits: texture %d, units %d/%d (fixed/fragment), vertex textures %d, lights %d, "
            "stencil %d bits, depth %d bits, draw buffers %d, GS output %d\n",
            c->max_texture_size, c->max_texture_units, c->max_texture_image_units,
