@@ -21,7 +21,8 @@
 #define ALL_CAPS ((uint64_t)0 STIN_CAP_LIST(OR_BIT_))
 
 /* What each profile keeps; its mask is the complement. */
-#define GL11_KEEP (BIT(STENCIL) | BIT(FIXED_FUNCTION))
+/* every desktop GL has 32-bit element indices */
+#define GL11_KEEP (BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(ELEMENT_INDEX_UINT))
 #define GL13_KEEP                                                                   \
     (GL11_KEEP | BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) | \
      BIT(TEXTURE_CUBE_MAP) | BIT(SEPARATE_SPECULAR))

@@ -126,7 +126,7 @@ static void test_versions_enable_core_capabilities(void **state)
     stin_caps c;
     (void)state;
     c = parse("1.1 Mesa 22.3.6", NULL, "");
-    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION));
+    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(ELEMENT_INDEX_UINT));
 
     c = parse("1.3 Mesa 22.3.6", NULL, "");
     assert_true(HAS(c, MULTITEXTURE) && HAS(c, TEXTURE_ENV_COMBINE) && HAS(c, TEXTURE_ENV_DOT3));
@@ -163,7 +163,8 @@ static void test_ext_texture_env_combine_alone(void **state)
     stin_caps c;
     (void)state;
     c = parse("1.1 Mesa 22.3.6", NULL, "GL_EXT_texture_env_combine");
-    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(TEXTURE_ENV_COMBINE));
+    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(TEXTURE_ENV_COMBINE) |
+                                    BIT(ELEMENT_INDEX_UINT));
 }
 
 static void test_extension_string_spacing(void **state)
@@ -328,7 +329,7 @@ static void test_detect_gl11_through_fake(void **state)
     fake_gl_reset(&cfg);
     assert_int_equal(stin_detect_caps(fake_gl_get_proc, NULL, 0, 0, &c), STIN_OK);
     assert_int_equal(c.gl_major * 10 + c.gl_minor, 11);
-    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION));
+    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(ELEMENT_INDEX_UINT));
     assert_int_equal(c.max_lights, 6);
     assert_int_equal(c.max_texture_size, 1024);
     assert_int_equal(c.stencil_bits, 8);
