@@ -2,7 +2,7 @@
 /* GLSL compile and link with the driver's info log in a stack buffer. */
 #include "internal.h"
 
-#define MAX_CHUNKS 6
+#define MAX_CHUNKS 8
 #define CHUNK_MARKER "// @chunks"
 
 /* Where the marker line starts in src, or NULL. */

@@ -12,7 +12,7 @@ static const char *const frag_names[STIN__PROG_COUNT] = {
 /* a program's fragment chunks, the terminator rule's lookup point, the
  * shadow technique's and the features' (render/path_features.h): at most
  * what gl/shader.c splices */
-#define LIT_CHUNKS 6
+#define LIT_CHUNKS 8
 
 static const stin__uniform_name program_uniforms[] = {
     STIN__UNIFORM(stin__program, u_model, "u_model"),
@@ -98,6 +98,8 @@ static void program_chunks(const stin_context *ctx, const char *dir, int variant
     int n = add_chunk(dir, "terminator_point.glsl", names, list, 0);
     if (lit)
         n = feature_chunks(ctx, STIN__CHUNK_SURFACE, variant, dir, names, list, n);
+    if (ctx->shadow->glsl_pre_chunk)
+        n = add_chunk(dir, ctx->shadow->glsl_pre_chunk(ctx), names, list, n);
     n = add_chunk(dir, lit_shadow_chunk(ctx), names, list, n);
     n = feature_chunks(ctx, STIN__CHUNK_SEAM, variant, dir, names, list, n);
     if (lit && layer)
