@@ -60,14 +60,16 @@ size_t stin__map_pcf_state_bytes(const stin_desc *d)
 #define FACE_SLOT STIN__FACE_SLOT
 
 /* A map: a comparing depth texture, or without shadow compare one read as a
- * number (nearest texels: the shader filters its compares itself). */
+ * number (nearest texels: the shader filters its compares itself), its
+ * internal format unsized as OES_depth_texture requires (format, internal
+ * format and GL_UNSIGNED_INT: ES 2.0's only depth-texture form). */
 static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t w, uint32_t h)
 {
     GL(ctx, GenTextures)(1, t);
     if (ctx->map_pcf->compare)
         stin__rt_shadow_map(ctx, *t, (int)w, (int)h);
     else
-        stin__rt_texture(ctx, *t, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
+        stin__rt_texture(ctx, *t, GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
                          (int)w, (int)h);
 }
 
