@@ -21,7 +21,8 @@
 #define ALL_CAPS ((uint64_t)0 STIN_CAP_LIST(OR_BIT_))
 
 /* What each profile keeps; its mask is the complement. */
-#define GL11_KEEP (BIT(STENCIL) | BIT(FIXED_FUNCTION))
+/* every desktop GL has 32-bit element indices */
+#define GL11_KEEP (BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(ELEMENT_INDEX_UINT))
 #define GL13_KEEP                                                                   \
     (GL11_KEEP | BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) | \
      BIT(TEXTURE_CUBE_MAP) | BIT(SEPARATE_SPECULAR))
@@ -41,9 +42,10 @@
 #define ES20_KEEP                                                                 \
     (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) | \
      BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
-/* The usual ES 2.0 extensions (OES_element_index_uint and
- * OES_standard_derivatives have no bit of their own). */
-#define ES20_EXT_KEEP (ES20_KEEP | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL))
+/* The usual ES 2.0 extensions (OES_standard_derivatives has no bit of its
+ * own). */
+#define ES20_EXT_KEEP                                                           \
+    (ES20_KEEP | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(ELEMENT_INDEX_UINT))
 /* ES 3.0 has no geometry, tessellation or compute stages (3.1, 3.2). */
 #define ES30_HIDE (BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) | BIT(COMPUTE))
 /* The ES extensions Mesa 22.3 lets a profile disable; OES_depth_texture,

@@ -52,6 +52,9 @@ struct stin_context {
                                * onto at creation, for stin_update_mesh */
     uint32_t *indices;        /* 3 * max_triangles */
     uint32_t *adjacency;      /* 3 * max_triangles */
+    /* a row of index_chunks_per_mesh per mesh slot (assets/mesh_chunks.c) */
+    stin__index_chunk *index_chunks;
+    uint32_t index_chunks_per_mesh;
     stin__range_alloc vertex_ranges, triangle_ranges;
     stin__range *vertex_range_store, *triangle_range_store;
     unsigned char *scratch;   /* mesh creation: weld and edge tables */
@@ -112,6 +115,7 @@ struct stin_context {
     /* lighting paths */
     stin__program programs[STIN__PROG_COUNT];
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
+    unsigned char warned_split_band; /* a split mesh's band was left out (logged once) */
     GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
     struct {                  /* the displacement choice as the layers below render
                                * read it (stin__selection_hand_down), the frame's

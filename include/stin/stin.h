@@ -220,6 +220,15 @@
  * frame: no trial, no switch.
  * "map-pcf": depth maps through an FBO, a receiver-plane bias and a 1/3/5-tap
  * kernel of hardware 2x2 compares (the light's pcf_kernel) in the lit shader;
+ * without shadow compare (STIN_CAP_SHADOW: OpenGL ES 2.0, whose samplers
+ * cannot compare) the maps are depth textures read as numbers (GL_NEAREST,
+ * unsized GL_DEPTH_COMPONENT as OES_depth_texture takes them) and each tap
+ * does the 2x2 compare in the shader: the four texels around it, each lit
+ * where the reference (clamped to [0,1]) is at most its depth, weighted
+ * bilinearly as GL_LINEAR weights them, so the kernel, the biases and the
+ * bounds are the same. Without depth textures (bare ES 2.0) map-pcf is not
+ * offered: forcing it fails naming "depth textures" (depth packed into
+ * RGBA8 is not built yet);
  * point lights get six 90-degree maps drawn before their pass into one
  * atlas (3 x 2 faces, one sampler; the face size halved while three faces
  * exceed GL_MAX_TEXTURE_SIZE), each face with only the casters whose bounds
@@ -783,6 +792,26 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
  * version or one of the listed extensions provides it AND every entry point it
  * needs loaded. desc.caps_mask hides capabilities to emulate weaker hardware.
  * X(id, name, min core version as major*10+minor (0 = never core), extensions)
+ *
+ * ELEMENT_INDEX_UINT (32-bit element indices; every desktop GL has them,
+ * OpenGL ES 2.0 only with GL_OES_element_index_uint): without it, where
+ * buffer objects exist, every mesh's element buffer holds 16-bit indices,
+ * and a mesh of more than 65,535 vertices is split into chunks: runs of
+ * consecutive triangles of at most 65,535 vertices each, a vertex shared
+ * across a seam copied into each chunk that uses it, each chunk drawn with
+ * its own index range and its attributes moved to its vertices, so every
+ * technique draws the same triangles in the same order. The copies live in
+ * the GL buffers only; the block's mesh (its vertices, triangles, queries
+ * and stin_update_mesh) is unchanged, and the chunk table is part of the
+ * block (stin_memory_size: 16 bytes a chunk, 3 max_mesh_triangles / 65,533
+ * + 1 chunks per mesh slot). Refused with a logged fall-back for a split
+ * mesh, where one draw must see the whole mesh: its adjacency buffer (vdsm
+ * and GL4's extruded volumes, which need geometry shaders, i.e. ES 3.2,
+ * which has 32-bit indices: CPU-built volumes instead, vdsm's fall-back),
+ * DOT3's bumped passes (fixed function, not on ES: the mesh's bumped lit
+ * passes are left out) and the GLSL terminator band of stencil volumes (a
+ * pixel or two on the terminator of a smooth split mesh). Client arrays
+ * (no buffer objects: desktop GL 1.x) keep the block's 32-bit indices.
  */
 #define STIN_CAP_LIST(X)                                                              \
     X(STENCIL, "stencil buffer", 11, "")                                              \
@@ -813,7 +842,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(PACKED_DEPTH_STENCIL, "packed depth-stencil textures", 30,                      \
       "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")                        \
     X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")                         \
-    X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2")
+    X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2") \
+    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,

@@ -16,11 +16,13 @@
 // inside its cell so none reads a neighbouring face.
 // An area light (radius > 0) is shadowed by percentage-closer soft shadows
 // instead: pcss_visibility below.
+// Every tap is pcf_tap(at, z, texel), from the chunk spliced in before this
+// one (src/shadow/map_pcf.c): pcf_tap_compare.glsl where the map compares,
+// pcf_tap_depth.glsl where it is read as a number and compared here.
 uniform int u_shadow_kind;
 uniform mat4 u_shadow_matrix[6];
 // x, w: a texel's width and height in [0,1]; y: kernel radius; z: normal offset per unit w
 uniform vec4 u_shadow_params;
-uniform sampler2DShadow u_shadow_map;
 // per face (0 for one map), for an area light: x, the texels a tap
 // spreads per unit of window depth between blocker and receiver (0: radius
 // 0, the kernel below); y, the window depth per unit of 1 / distance along
@@ -52,7 +54,7 @@ vec2 pcss_tap(int i, int n, vec2 cs, vec2 a, float k_a)
 // u of the light's disc crosses window depth z at t + soft.x (t.z - z) u
 // texels. A blocker search over the region that spans from the receiver to
 // PCSS_NEAREST of its distance finds the blockers' mean depth (each by a
-// bisection of compares: the sampler compares, it cannot read), and a disc
+// bisection of taps: a comparing sampler cannot read), and a disc
 // of taps sized by that depth averages the compares: exact for one planar
 // blocker. The taps turn per pixel so the penumbra takes many levels, and
 // are clamped to [lo, hi] (a face's cell) as the kernel's are. mid,
@@ -76,12 +78,12 @@ float pcss_visibility(vec3 t, float w, vec2 dz, vec2 texel, vec2 lo, vec2 hi, ve
     for (int i = 0; i < PCSS_SEARCH; i++) {
         vec2 at = clamp(t.xy + pcss_tap(i, PCSS_SEARCH, cs, a, k_a) * reach * texel, lo, hi);
         float ref = t.z + dot(at - t.xy, dz);
-        float b = 1.0 - shadow2D(u_shadow_map, vec3(at, ref)).r;
+        float b = 1.0 - pcf_tap(at, ref, texel);
         if (b > 0.0) {
             float near = t.z - span, far = ref;
             for (int k = 0; k < PCSS_DEPTH_STEPS; k++) {
                 float z = 0.5 * (near + far);
-                if (shadow2D(u_shadow_map, vec3(at, z)).r > 0.5)
+                if (pcf_tap(at, z, texel) > 0.5)
                     near = z;
                 else
                     far = z;
@@ -97,7 +99,7 @@ float pcss_visibility(vec3 t, float w, vec2 dz, vec2 texel, vec2 lo, vec2 hi, ve
     float sum = 0.0;
     for (int i = 0; i < PCSS_FILTER; i++) {
         vec2 at = clamp(t.xy + pcss_tap(i, PCSS_FILTER, cs, a, k_a) * spread * texel, lo, hi);
-        sum += shadow2D(u_shadow_map, vec3(at, t.z + dot(at - t.xy, dz))).r;
+        sum += pcf_tap(at, t.z + dot(at - t.xy, dz), texel);
     }
     return sum / float(PCSS_FILTER);
 }
@@ -176,7 +178,7 @@ float pcf_visibility(int i)
     for (int y = -r; y <= r; y++)
         for (int x = -r; x <= r; x++) {
             vec2 at = clamp(t.xy + vec2(float(x), float(y)) * texel, lo, hi);
-            sum += shadow2D(u_shadow_map, vec3(at, t.z + dot(at - t.xy, dz))).r;
+            sum += pcf_tap(at, t.z + dot(at - t.xy, dz), texel);
             n += 1.0;
         }
     return sum / n;

@@ -179,10 +179,12 @@ void stin__mesh_bind_attributes(stin_context *ctx, const stin__vertex *base)
 
 static void vertex_data(stin_context *ctx, const stin__mesh_slot *m)
 {
+    GLenum usage = m->dynamic ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW;
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
-    GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(sizeof(stin__vertex) * m->vertex_count),
-                        ctx->vertices + m->first_vertex,
-                        m->dynamic ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW);
+    if (!stin__mesh_chunked_vertices(ctx, m, usage)) /* 16-bit chunks have their own copies */
+        GL(ctx, BufferData)(GL_ARRAY_BUFFER,
+                            (GLsizeiptr)(sizeof(stin__vertex) * m->vertex_count),
+                            ctx->vertices + m->first_vertex, usage);
 }
 
 static void upload(stin_context *ctx, stin__mesh_slot *m)
@@ -200,9 +202,7 @@ static void upload(stin_context *ctx, stin__mesh_slot *m)
     }
     vertex_data(ctx, m);
     GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
-    GL(ctx, BufferData)(GL_ELEMENT_ARRAY_BUFFER,
-                        (GLsizeiptr)(sizeof(uint32_t) * 3u * m->triangle_count),
-                        ctx->indices + 3u * m->first_triangle, GL_STATIC_DRAW);
+    stin__mesh_index_data(ctx, m);
     if (m->vao) {
         for (i = 0; i < 4; i++)
             GL(ctx, EnableVertexAttribArray)((GLuint)i);
@@ -226,6 +226,11 @@ void stin__mesh_upload_vertices(stin_context *ctx, stin__mesh_slot *m)
     vertex_data(ctx, m);
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     stin__vao_end(ctx, caller_vao);
+}
+
+static stin__index_chunk *chunk_row(const stin_context *ctx, uint32_t slot)
+{
+    return ctx->index_chunks + (size_t)slot * ctx->index_chunks_per_mesh;
 }
 
 static uint32_t free_slot(const stin_context *ctx)
@@ -340,6 +345,13 @@ stin_result stin_create_mesh(stin_context *ctx, const stin_mesh_desc *desc, stin
     m->info.triangle_count = kept;
     m->info.degenerate_dropped = desc->index_count / 3u - kept0;
     m->vbo = m->ibo = m->vao = m->adj_ibo = m->adj_vao = 0;
+    if (stin__mesh_index_plan(ctx, m, chunk_row(ctx, slot)) != STIN_OK) {
+        stin__range_give(&ctx->vertex_ranges, vfirst);
+        stin__range_give(&ctx->triangle_ranges, tfirst);
+        return fail(ctx, STIN_ERROR_CAPACITY, STIN_LOG_POOL_FULL,
+                    "stin_create_mesh: %u vertices need more than desc.max_mesh_triangles' "
+                    "16-bit index chunks (no 32-bit element indices; %u triangles)", nv, kept);
+    }
     out->id = stin__handle_issue(&m->handle, slot, ctx->desc.max_meshes, ctx->handle_tag);
     upload(ctx, m);
     stin__mesh_adjacency_buffer_upload(ctx, m);
@@ -463,6 +475,7 @@ uint32_t stin__mesh_builtin(stin_context *ctx, const stin__vertex *v, uint32_t v
     for (i = 0; i < 3u * tri_count; i++)
         ctx->indices[3u * m->first_triangle + i] = tris[i];
     bounds(&m->info, ctx->vertices + m->first_vertex, vertex_count);
+    (void)stin__mesh_index_plan(ctx, m, chunk_row(ctx, slot)); /* 4 vertices: one chunk */
     upload(ctx, m);
     return slot;
 }

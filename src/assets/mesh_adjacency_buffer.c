@@ -65,6 +65,14 @@ void stin__mesh_adjacency_buffer_upload(stin_context *ctx, stin__mesh_slot *m)
     GLuint caller_vao;
     if (!m->vao || !ctx->adjacency_use)
         return;
+    if (m->chunk_count > 1u) { /* one draw of the whole mesh: no 16-bit chunks */
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                  "%s: a mesh of %u vertices has no adjacency indices without 32-bit element "
+                  "indices: %s",
+                  stin_technique_name(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique),
+                  m->vertex_count, ctx->adjacency_use);
+        return;
+    }
     if (bytes > ctx->scratch_bytes || !m->triangle_count) {
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                   "%s: no scratch for a mesh's adjacency indices: %s",
@@ -80,6 +88,12 @@ void stin__mesh_adjacency_buffer_upload(stin_context *ctx, stin__mesh_slot *m)
             out[6u * t + 2u * (uint32_t)e + 1u] =
                 far_vertex(verts, tris, adj, t, (uint32_t)e, adj[3u * t + (uint32_t)e], own);
         }
+    }
+    if (m->index_type == GL_UNSIGNED_SHORT) { /* narrowed in place, front to back */
+        uint16_t *narrow = (uint16_t *)(void *)out;
+        for (t = 0; t < 6u * m->triangle_count; t++)
+            narrow[t] = (uint16_t)out[t];
+        bytes /= 2u;
     }
     caller_vao = stin__vao_begin(ctx);
     GL(ctx, GenBuffers)(1, &m->adj_ibo);

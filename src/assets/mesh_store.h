@@ -36,6 +36,16 @@ typedef struct stin__vertex {
     float tangent[4];
 } stin__vertex;
 
+/* A run of a mesh's triangles drawn with 16-bit indices of its own
+ * (assets/mesh_chunks.c): its triangles, and its vertices in the vertex
+ * buffer (the chunks' copies one after another). */
+typedef struct stin__index_chunk {
+    uint32_t first_triangle, triangle_count;
+    uint32_t first_vertex, vertex_count;
+} stin__index_chunk;
+/* The most vertices a 16-bit chunk holds (indices 0 to 65,534). */
+#define STIN__CHUNK_VERTICES 65535u
+
 typedef struct stin__mesh_slot {
     stin__handle handle;
     uint32_t first_vertex, vertex_count;
@@ -54,6 +64,12 @@ typedef struct stin__mesh_slot {
     uint32_t source_vertices, subdivide;
     int has_uvs, one_piece;
     int dynamic;              /* updated once: its vertex buffer is GL_DYNAMIC_DRAW */
+    /* its element buffer's index type: GL_UNSIGNED_INT, or GL_UNSIGNED_SHORT
+     * without STIN_CAP_ELEMENT_INDEX_UINT (where buffers exist), then in
+     * chunk_count chunks (1: the whole mesh, its vertex buffer as stored) */
+    GLenum index_type;
+    uint32_t chunk_count;
+    stin__index_chunk *chunks; /* its row of ctx->index_chunks */
 } stin__mesh_slot;
 
 typedef struct stin__texture_slot {
@@ -158,6 +174,40 @@ void stin__mesh_default_normals(stin__vertex *verts, uint32_t vertex_count,
 void stin__mesh_adjacency_use(struct stin_context *ctx, const char *without);
 void stin__mesh_adjacency_buffer_upload(struct stin_context *ctx, stin__mesh_slot *m);
 void stin__mesh_adjacency_buffer_release(struct stin_context *ctx, stin__mesh_slot *m);
+
+/* 16-bit indices (assets/mesh_chunks.c). The most chunks a mesh of
+ * max_mesh_triangles may need (the row of ctx->index_chunks each slot has). */
+uint32_t stin__index_chunks_max(uint32_t max_mesh_triangles);
+/* Splits tris (tri_count, over vertex_count vertices) into chunks of at
+ * most `limit` vertices each, greedily in triangle order; stamp and local:
+ * vertex_count entries of scratch each. Returns the chunks written to out,
+ * 0 when more than max_out would be needed. */
+uint32_t stin__index_split(const uint32_t *tris, uint32_t tri_count, uint32_t vertex_count,
+                           uint32_t limit, uint32_t *stamp, uint32_t *local,
+                           stin__index_chunk *out, uint32_t max_out);
+/* Chunk `chunk`'s local indices (3 per triangle) and, per local vertex, the
+ * mesh vertex it copies (src), either NULL to skip; stamp_id: a value no
+ * earlier chunk of this pass used (stamp zeroed before the pass's first). */
+void stin__index_chunk_fill(const uint32_t *tris, const stin__index_chunk *chunk,
+                            uint32_t stamp_id, uint32_t *stamp, uint32_t *local,
+                            uint16_t *indices, uint32_t *src);
+/* Decides m's index type and chunks (row: its table row) before upload;
+ * CAPACITY when the creation scratch cannot hold the split. */
+stin_result stin__mesh_index_plan(struct stin_context *ctx, stin__mesh_slot *m,
+                                  stin__index_chunk *row);
+/* m's indices into the bound element buffer, in its index type. */
+void stin__mesh_index_data(struct stin_context *ctx, const stin__mesh_slot *m);
+/* A chunked mesh's vertices into the bound array buffer (1), or 0 when m is
+ * not chunked and its stored vertices are the buffer's. */
+int stin__mesh_chunked_vertices(struct stin_context *ctx, const stin__mesh_slot *m, GLenum usage);
+/* Points the draw's vertex attributes at base (a buffer offset). */
+typedef void (*stin__rebase_fn)(struct stin_context *ctx, const stin__vertex *base);
+/* All of m's triangles from the bound element buffer (client_indices: the
+ * arena's, without buffers), chunk by chunk where it is split: rebase moves
+ * the attributes to each chunk's vertices and back to the first after
+ * (NULL: the caller cannot, the whole index range is drawn). */
+void stin__mesh_draw(struct stin_context *ctx, const stin__mesh_slot *m, GLenum mode,
+                     const void *client_indices, stin__rebase_fn rebase);
 
 /* ---- shadow volumes ----------------------------------------------------- */
 /* clockwise: the triangles are wound clockwise toward their outside (front

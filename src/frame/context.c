@@ -108,7 +108,8 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     size_t scratch = stin__adjacency_scratch_bytes(mv, d->max_mesh_triangles);
     size_t tangent_scratch = (size_t)mv * 6u * sizeof(float);
     size_t frame_scratch = frame_scratch_bytes(d);
-    void *p[14];
+    void *p[15];
+    uint32_t chunks = stin__index_chunks_max(d->max_mesh_triangles);
     size_t i;
     if (tangent_scratch > scratch)
         scratch = tangent_scratch;
@@ -129,6 +130,7 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
     p[11] = take(a, sizeof(stin_light_desc) * d->max_lights, &ok);
     p[12] = take(a, frame_scratch, &ok);
     p[13] = take(a, sizeof(uint32_t) * ((size_t)d->max_vertices + STIN__BUILTIN_VERTICES), &ok);
+    p[14] = take(a, sizeof(stin__index_chunk) * chunks * ((size_t)d->max_meshes + 1u), &ok);
     for (i = 0; i < stin__state_slot_count; i++) {
         const stin__state_slot *slot = &stin__state_slots[i];
         size_t bytes = slot->bytes(d);
@@ -161,6 +163,8 @@ static size_t layout(const stin_desc *d, stin__arena *a, stin_context *ctx)
         ctx->frame_scratch = (unsigned char *)p[12];
         ctx->frame_scratch_bytes = frame_scratch;
         ctx->welds = (uint32_t *)p[13];
+        ctx->index_chunks = (stin__index_chunk *)p[14];
+        ctx->index_chunks_per_mesh = chunks;
     }
     return stin__align16(a->used) + 16u; /* slack for aligning the caller's block */
 }

@@ -50,7 +50,7 @@ static const es_rule es_rules[STIN_CAP_COUNT] = {
     [STIN_CAP_TESSELLATION] = {32, "", NULL},
     [STIN_CAP_COMPUTE] = {31, "", NULL},
     [STIN_CAP_PACKED_DEPTH_STENCIL] = {30, "GL_OES_packed_depth_stencil", NULL},
-    /* TODO(es2-prep): ELEMENT_INDEX_UINT = {30, "GL_OES_element_index_uint", NULL} */
+    [STIN_CAP_ELEMENT_INDEX_UINT] = {30, "GL_OES_element_index_uint", NULL},
 };
 
 int stin__token_in_list(const char *list, const char *token, size_t token_len)

@@ -199,9 +199,10 @@
       "")                                                                                  \
     X(void, DrawTransformFeedback, (GLenum mode, GLuint id), STIN_CAP_TRANSFORM_FEEDBACK,  \
       "")                                                                                  \
-    /* deep's early stop by a shader storage flag (GL 4.3: SSBOs with compute) */          \
+    /* deep's early stop by a shader storage flag (GL 4.3: SSBOs with compute); the     \
+     * 16-bit index chunks' uploads (GL 1.5, ES 2.0: any buffer objects) */               \
     X(void, BufferSubData, (GLenum target, GLintptr off, GLsizeiptr size, const void *d),  \
-      STIN_CAP_COMPUTE, "")                                                                 \
+      STIN_CAP_VBO, "glBufferSubDataARB")                                                   \
     X(void, GetBufferSubData, (GLenum target, GLintptr off, GLsizeiptr size, void *d),     \
       STIN_CAP_COMPUTE, "")                                                                 \
     X(void, MemoryBarrier, (GLbitfield barriers), STIN_CAP_COMPUTE, "")                   \

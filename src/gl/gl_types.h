@@ -170,6 +170,7 @@ typedef void GLvoid;
 /* GL 1.5 */
 #define GL_ARRAY_BUFFER 0x8892
 #define GL_ELEMENT_ARRAY_BUFFER 0x8893
+#define GL_UNSIGNED_SHORT 0x1403
 #define GL_STATIC_DRAW 0x88E4
 #define GL_DYNAMIC_DRAW 0x88E8
 /* GL 2.0 */

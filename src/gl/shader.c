@@ -2,7 +2,7 @@
 /* GLSL compile and link with the driver's info log in a stack buffer. */
 #include "internal.h"
 
-#define MAX_CHUNKS 6
+#define MAX_CHUNKS 8
 /* version line, precision, defines' version line and defines, main text,
  * chunks, the main text after the chunks */
 #define MAX_PARTS (MAX_CHUNKS + 6)

@@ -103,11 +103,19 @@ static void set_material(stin_context *ctx, const stin_material *m)
             (*f)->fixed_material(ctx, m);
 }
 
+/* The fixed path's arrays at base (a buffer offset, or client memory). */
+static void fixed_pointers(stin_context *ctx, const stin__vertex *at)
+{
+    const char *base = (const char *)at;
+    GL(ctx, VertexPointer)(3, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base);
+    GL(ctx, NormalPointer)(GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 12);
+    GL(ctx, TexCoordPointer)(2, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 24);
+}
+
 static void draw_mesh(stin_context *ctx, const stin__draw *d)
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     float mv[16];
-    const char *base = NULL;
     const void *idx;
     stin__mat4_mul(mv, ctx->frame.view, d->transform);
     GL(ctx, MatrixMode)(GL_MODELVIEW);
@@ -117,15 +125,11 @@ static void draw_mesh(stin_context *ctx, const stin__draw *d)
         if (m->vbo) {
             GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
             GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
-        } else {
-            base = (const char *)(ctx->vertices + m->first_vertex);
         }
-        GL(ctx, VertexPointer)(3, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base);
-        GL(ctx, NormalPointer)(GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 12);
-        GL(ctx, TexCoordPointer)(2, GL_FLOAT, (GLsizei)sizeof(stin__vertex), base + 24);
+        fixed_pointers(ctx, m->vbo ? NULL : ctx->vertices + m->first_vertex);
         ctx->bound_mesh = d->mesh_slot;
     }
-    GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+    stin__mesh_draw(ctx, m, GL_TRIANGLES, idx, fixed_pointers);
 }
 
 int stin__draw_solid(const stin_context *ctx, const stin__draw *d, float min_size)

@@ -12,7 +12,7 @@ static const char *const frag_names[STIN__PROG_COUNT] = {
 /* a program's fragment chunks, the terminator rule's lookup point, the
  * shadow technique's and the features' (render/path_features.h): at most
  * what gl/shader.c splices */
-#define LIT_CHUNKS 6
+#define LIT_CHUNKS 8
 
 static const stin__uniform_name program_uniforms[] = {
     STIN__UNIFORM(stin__program, u_model, "u_model"),
@@ -98,6 +98,8 @@ static void program_chunks(const stin_context *ctx, const char *dir, int variant
     int n = add_chunk(dir, "terminator_point.glsl", names, list, 0);
     if (lit)
         n = feature_chunks(ctx, STIN__CHUNK_SURFACE, variant, dir, names, list, n);
+    if (ctx->shadow->glsl_pre_chunk)
+        n = add_chunk(dir, ctx->shadow->glsl_pre_chunk(ctx), names, list, n);
     n = add_chunk(dir, lit_shadow_chunk(ctx), names, list, n);
     n = feature_chunks(ctx, STIN__CHUNK_SEAM, variant, dir, names, list, n);
     if (lit && layer)
@@ -414,6 +416,19 @@ static void bind_mesh_arrays(stin_context *ctx, const stin__mesh_slot *m, uint32
     ctx->bound_mesh = slot;
 }
 
+/* A 16-bit chunk's attributes (stin__mesh_draw) in the bound mesh's buffer;
+ * a vertex array's own binding is not the array buffer's, so it is bound
+ * here, and put back to none after the last chunk where a vertex array
+ * holds the mesh (as bind_mesh_arrays leaves it). */
+static void glsl_rebase(stin_context *ctx, const stin__vertex *base)
+{
+    const stin__mesh_slot *m = &ctx->meshes[ctx->bound_mesh];
+    GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, m->vbo);
+    stin__mesh_bind_attributes(ctx, base);
+    if (!base && m->vao)
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+}
+
 void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__displace_locs *dl,
                                 const stin__draw *d)
 {
@@ -422,8 +437,7 @@ void stin__glsl_submit_geometry(stin_context *ctx, GLint u_model, const stin__di
     GL(ctx, UniformMatrix4fv)(u_model, 1, GL_FALSE, d->transform);
     stin__displace_draw(ctx, dl, d);
     bind_mesh_arrays(ctx, m, d->mesh_slot);
-    GL(ctx, DrawElements)(stin__displace_primitive(dl), (GLsizei)(3u * m->triangle_count),
-                          GL_UNSIGNED_INT, idx);
+    stin__mesh_draw(ctx, m, stin__displace_primitive(dl), idx, glsl_rebase);
 }
 
 /* The one geometry submission of the GLSL path: a draw's transform and
@@ -756,6 +770,36 @@ static void glsl_blended_one(stin_context *ctx, const stin__draw *d, const stin_
     ctx->stats.passes++;
 }
 
+/* n triangles' indices (bytes of them, of type) from client memory, or on
+ * core profiles through the bound stream buffer. */
+static void band_indices(stin_context *ctx, const stin__displace_locs *dl, GLenum type,
+                         const void *idx, size_t bytes, uint32_t n)
+{
+    if (gl4(ctx)) {
+        GL(ctx, BufferData)(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)bytes, idx, GL_STREAM_DRAW);
+        idx = NULL;
+    }
+    GL(ctx, DrawElements)(stin__displace_primitive(dl), (GLsizei)(3u * n), type, idx);
+}
+
+/* Without 32-bit indices: the band's triangles narrowed on the stack a
+ * batch at a time (the mesh has at most 65,535 vertices: frame.c draws no
+ * band of a split mesh). */
+#define BAND_BATCH 256u
+static void band_narrow(stin_context *ctx, const stin__displace_locs *dl, const uint32_t *tris,
+                        uint32_t n)
+{
+    uint16_t narrow[3u * BAND_BATCH];
+    uint32_t t, k;
+    for (t = 0; t < n; t += k) {
+        uint32_t i;
+        k = n - t < BAND_BATCH ? n - t : BAND_BATCH;
+        for (i = 0; i < 3u * k; i++)
+            narrow[i] = (uint16_t)tris[3u * t + i];
+        band_indices(ctx, dl, GL_UNSIGNED_SHORT, narrow, 6u * k, k);
+    }
+}
+
 /* Some triangles of a mesh: indices from client memory, or on core
  * profiles through the volumes' stream buffer bound as the element array
  * (the mesh's own put back after). */
@@ -764,10 +808,18 @@ static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const f
 {
     const stin__program *p = use(ctx, STIN__PROG_BAND);
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-    const void *idx = tris;
     float inv[16];
     if (!in_set(ctx, d, STIN__OPAQUE))
         return; /* not in the frame's depth */
+    if (m->chunk_count > 1u) { /* its indices reach past 16 bits: no band (logged once) */
+        if (!ctx->warned_split_band)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "volume: a mesh of %u vertices without 32-bit element indices gets no "
+                      "terminator band (its terminator may show its facets' shadow)",
+                      m->vertex_count, 0);
+        ctx->warned_split_band = 1;
+        return;
+    }
     stin__mat4_invert(inv, ctx->frame.view);
     GL(ctx, Uniform3fv)(p->u_eye, 1, inv + 12);
     GL(ctx, Uniform4fv)(p->u_color, 1, light);
@@ -776,15 +828,14 @@ static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const f
     stin__displace_draw(ctx, &p->displace, d);
     ctx->bound_mesh = 0xffffffffu;
     bind_mesh_arrays(ctx, m, d->mesh_slot);
-    if (gl4(ctx)) {
+    if (gl4(ctx))
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, ctx->volume_vbo);
-        GL(ctx, BufferData)(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(12u * n), tris, GL_STREAM_DRAW);
-        idx = NULL;
-    } else if (m->vbo) {
+    else if (m->vbo)
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
-    }
-    GL(ctx, DrawElements)(stin__displace_primitive(&p->displace), (GLsizei)(3u * n),
-                          GL_UNSIGNED_INT, idx);
+    if (m->index_type == GL_UNSIGNED_SHORT)
+        band_narrow(ctx, &p->displace, tris, n);
+    else
+        band_indices(ctx, &p->displace, GL_UNSIGNED_INT, tris, 12u * n, n);
     if (gl4(ctx) || m->vbo)
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, m->ibo);
     ctx->bound_mesh = 0xffffffffu;

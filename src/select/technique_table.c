@@ -30,8 +30,9 @@ static const stin__technique_row rows[] = {
      TIER4 | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL), STIN_TECH_LIGHTING_GLSL150, 0, 1, 0, 0, 0},
     /* a spare unit holds the screen mask (several lights per lit pass) */
     {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 1, 0},
+    /* without shadow compare the lit programs compare (shadow/map_pcf.c) */
     {STIN_TECH_SHADOWS_MAP_PCF,        2,
-     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE), GLSL_ANY, 0, 1, 0, 0, 0},
+     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(MULTITEXTURE), GLSL_ANY, 0, 1, 0, 0, 0},
     {STIN_TECH_SHADOWS_MAP_DEPTH,      3, BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE),
      STIN_TECH_LIGHTING_FIXED, 0, 1, 0, 0, 0},
     {STIN_TECH_SHADOWS_MAP_COMBINE,    4, BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE),

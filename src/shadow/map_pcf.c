@@ -43,6 +43,9 @@ struct stin__map_pcf_state {
      * unit of radius (0: an orthographic map), window depth per unit of
      * 1 / distance, and 1 / proj[0] (soft_spread) */
     float spread[STIN__MAP_SLOTS][3];
+    /* how the lit programs read the maps: 1 they compare (ARB_shadow), 0
+     * they are depth textures read as numbers, compared in the shader */
+    int compare;
     /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
     int kind;
     uint32_t light;
@@ -56,10 +59,26 @@ size_t stin__map_pcf_state_bytes(const stin_desc *d)
 
 #define FACE_SLOT STIN__FACE_SLOT
 
+/* A map: a comparing depth texture, or without shadow compare one read as a
+ * number (nearest texels: the shader filters its compares itself), its
+ * internal format unsized as OES_depth_texture requires (format, internal
+ * format and GL_UNSIGNED_INT: ES 2.0's only depth-texture form). */
 static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t w, uint32_t h)
 {
     GL(ctx, GenTextures)(1, t);
-    stin__rt_shadow_map(ctx, *t, (int)w, (int)h);
+    if (ctx->map_pcf->compare)
+        stin__rt_shadow_map(ctx, *t, (int)w, (int)h);
+    else
+        stin__rt_texture(ctx, *t, GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
+                         (int)w, (int)h);
+}
+
+/* The lit programs' tap (shaders/gl2/pcf_tap_*.glsl): the sampler's compare
+ * where there is one, else the shader's. */
+static const char *pcf_tap_chunk(const stin_context *ctx)
+{
+    return ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SHADOW) ? "pcf_tap_compare.glsl"
+                                                             : "pcf_tap_depth.glsl";
 }
 
 static stin_result pcf_init(stin_context *ctx)
@@ -74,6 +93,7 @@ static stin_result pcf_init(stin_context *ctx)
            STIN__ATLAS_COLUMNS * m->face_size > (uint32_t)ctx->caps.max_texture_size)
         m->face_size /= 2u; /* three faces across must fit */
     m->unit = ctx->sel.shadow_unit;
+    m->compare = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SHADOW)) != 0;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (i = 0; i < ctx->desc.max_lights; i++)
@@ -367,6 +387,7 @@ static stin_result pcf_debug_map(const stin_context *ctx, uint32_t li, stin_debu
 
 const stin__shadow_technique stin__shadow_map_pcf = {
     .glsl_chunk = "shadow_pcf.glsl",
+    .glsl_pre_chunk = pcf_tap_chunk,
     .init = pcf_init,
     .release = pcf_release,
     .light_prepass = pcf_prepass,

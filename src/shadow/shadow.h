@@ -36,6 +36,9 @@ typedef struct stin__shadow_technique {
     /* The GLSL lit and flat programs' shadow chunk (shaders/gl2), defining
      * vec3 shadow_transmittance(int light). */
     const char *glsl_chunk;
+    /* A chunk spliced in just before glsl_chunk, chosen for the context
+     * (map-pcf: how a tap reads its map). NULL hook: none. */
+    const char *(*glsl_pre_chunk)(const stin_context *ctx);
     /* Set-up at stin_create (GL objects) and their release; init may demote. */
     stin_result (*init)(stin_context *ctx);
     void (*release)(stin_context *ctx);

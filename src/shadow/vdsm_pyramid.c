@@ -404,7 +404,7 @@ static void occluders(stin_context *ctx, const float light[4], stin__pass_state 
         ps.front.ref = id;
         ps.front.zpass = GL_REPLACE;
         stin__pass_apply(ctx, &ps);
-        GL(ctx, DrawElements)(GL_TRIANGLES_ADJACENCY, count, GL_UNSIGNED_INT, NULL);
+        GL(ctx, DrawElements)(GL_TRIANGLES_ADJACENCY, count, m->index_type, NULL);
         light_draw(ctx, p->tris_prog, &p->tris, d, deepest);
         ps.color_write = 1;
         ps.front.func = GL_NOTEQUAL;

@@ -77,7 +77,7 @@ static void draw_mode(stin_context *ctx, const stin__mesh_slot *m, int mode)
     if (ctx->volume->set_mode != mode)
         GL(ctx, Uniform1i)(ctx->volume->u_mode, ctx->volume->set_mode = mode);
     GL(ctx, DrawElements)(GL_TRIANGLES_ADJACENCY, (GLsizei)(6u * m->triangle_count),
-                          GL_UNSIGNED_INT, NULL);
+                          m->index_type, NULL);
 }
 
 int stin__volume_extrude_draw(stin_context *ctx, const stin__draw *d, const float light_object[4],

@@ -43,6 +43,7 @@ struct stin__dot3_state {
     GLenum dot3_rgb;      /* GL_DOT3_RGB (1.3/ARB) or GL_DOT3_RGB_EXT */
     int units;            /* texture units (3 without an albedo texture, 4 with) */
     int warned_scratch;   /* a mesh too big for the scratch was logged */
+    int warned_split;     /* a mesh split for 16-bit indices was logged */
 };
 
 size_t stin__dot3_state_bytes(const stin_desc *d)
@@ -431,7 +432,7 @@ static void draw_plain_diffuse(stin_context *ctx, const stin__draw *d, const voi
     GL_DISABLE(ctx, GL_TEXTURE_2D);
     unit(ctx, 2);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
-    GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+    stin__mesh_draw(ctx, m, GL_TRIANGLES, idx, NULL);
     GL_ENABLE(ctx, GL_TEXTURE_2D);
     unit(ctx, 1);
     GL_ENABLE(ctx, GL_TEXTURE_2D);
@@ -450,6 +451,15 @@ static void draw_bumped(stin_context *ctx, const stin__draw *d, const float ligh
     const float *vec = (const float *)(void *)ctx->frame_scratch;
     int fits = (size_t)m->vertex_count * FLOATS_PER_VERTEX * sizeof(float) <= ctx->frame_scratch_bytes;
     float mv[16];
+    if (m->chunk_count > 1u) { /* per-vertex vectors follow the stored vertices, not chunks */
+        if (!ctx->dot3->warned_split) {
+            ctx->dot3->warned_split = 1;
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "surface dot3: a mesh of %u vertices without 32-bit element indices is "
+                      "not drawn bumped (its lit passes are left out)", m->vertex_count, 0);
+        }
+        return;
+    }
     if (ctx->lit_draw) /* the shadow test's rule for this receiver */
         ctx->lit_draw(ctx, d);
     stin__mat4_mul(mv, ctx->frame.view, d->transform);
@@ -490,7 +500,7 @@ static void draw_bumped(stin_context *ctx, const stin__draw *d, const float ligh
     GL(ctx, BindTexture)(GL_TEXTURE_2D, nt->name);
     unit(ctx, 2);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, nt->name);
-    GL(ctx, DrawElements)(GL_TRIANGLES, (GLsizei)(3u * m->triangle_count), GL_UNSIGNED_INT, idx);
+    stin__mesh_draw(ctx, m, GL_TRIANGLES, idx, NULL);
 }
 
 static void light_vector(const stin_light_desc *l, float out[4])

@@ -372,6 +372,7 @@ int main(int argc, char **argv)
             choice_tests(&r, tiers[t], argv[i]);
             map_tests(&r, tiers[t], argv[i]);
             pcf_tests(&r, tiers[t], argv[i]);
+            index16_tests(&r, tiers[t], argv[i]);
             model_tests(&r, tiers[t], argv[i]);
             surface_tests(&r, tiers[t], argv[i]);
             lit_tests(&r, tiers[t], argv[i]);

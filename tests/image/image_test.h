@@ -24,6 +24,8 @@ void viewport_tests(run *r, stin_tier tier, const char *path);
 
 /* GLSL PCF shadow-map tests of one scene (pcf_test.c; GL2/GL4). */
 void pcf_tests(run *r, stin_tier tier, const char *path);
+/* 16-bit element indices: a mesh over 65,535 vertices drawn in chunks (index16_test.c). */
+void index16_tests(run *r, stin_tier tier, const char *path);
 
 /* Fixed-function shadow-map tests of one scene (map_test.c; GL1 only). */
 void map_tests(run *r, stin_tier tier, const char *path);

@@ -272,10 +272,11 @@ static void watched_draw(void)
 static void STIN_APIENTRY fake_DrawElements(GLenum mode, GLsizei count, GLenum type,
                                             const void *idx)
 {
-    (void)type;
     (void)idx;
     COUNT(DrawElements);
     fake_gl.draw_calls++;
+    fake_gl.uint_index_draws += type == GL_UNSIGNED_INT;
+    fake_gl.ushort_index_draws += type == GL_UNSIGNED_SHORT;
     fake_gl.patch_draws += mode == GL_PATCHES;
     fake_gl.draws_into_default += fake_gl.gl.draw_framebuffer == 0;
     watched_draw();

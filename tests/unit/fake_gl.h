@@ -76,6 +76,7 @@ typedef struct fake_gl_state {
     fake_gl_config config;
     unsigned calls[STIN_GLFN_COUNT];     /* per entry point, index STIN_GLFN_<Name> */
     unsigned draw_calls, drawn_indices;
+    unsigned uint_index_draws, ushort_index_draws; /* glDrawElements by index type */
     unsigned patch_draws;                /* draw calls of GL_PATCHES (tessellated) */
     unsigned draws_into_default;         /* draw calls while framebuffer 0 was bound */
     GLuint watched_framebuffer;          /* a test's choice (0 until it sets one) */

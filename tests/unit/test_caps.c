@@ -126,7 +126,7 @@ static void test_versions_enable_core_capabilities(void **state)
     stin_caps c;
     (void)state;
     c = parse("1.1 Mesa 22.3.6", NULL, "");
-    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION));
+    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(ELEMENT_INDEX_UINT));
 
     c = parse("1.3 Mesa 22.3.6", NULL, "");
     assert_true(HAS(c, MULTITEXTURE) && HAS(c, TEXTURE_ENV_COMBINE) && HAS(c, TEXTURE_ENV_DOT3));
@@ -163,7 +163,8 @@ static void test_ext_texture_env_combine_alone(void **state)
     stin_caps c;
     (void)state;
     c = parse("1.1 Mesa 22.3.6", NULL, "GL_EXT_texture_env_combine");
-    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(TEXTURE_ENV_COMBINE));
+    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(TEXTURE_ENV_COMBINE) |
+                                    BIT(ELEMENT_INDEX_UINT));
 }
 
 static void test_extension_string_spacing(void **state)
@@ -328,7 +329,7 @@ static void test_detect_gl11_through_fake(void **state)
     fake_gl_reset(&cfg);
     assert_int_equal(stin_detect_caps(fake_gl_get_proc, NULL, 0, 0, &c), STIN_OK);
     assert_int_equal(c.gl_major * 10 + c.gl_minor, 11);
-    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION));
+    assert_int_equal(c.present, BIT(STENCIL) | BIT(FIXED_FUNCTION) | BIT(ELEMENT_INDEX_UINT));
     assert_int_equal(c.max_lights, 6);
     assert_int_equal(c.max_texture_size, 1024);
     assert_int_equal(c.stencil_bits, 8);
@@ -437,7 +438,8 @@ static void test_detect_without_version_fails(void **state)
     (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) |        \
      BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
 #define ES30_CORE                                                                        \
-    (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL))
+    (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) | \
+     BIT(ELEMENT_INDEX_UINT))
 
 static void test_es_version_strings(void **state)
 {
@@ -492,10 +494,10 @@ static void test_es_extension_names(void **state)
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
               "GL_OES_depth_texture GL_OES_packed_depth_stencil GL_OES_vertex_array_object "
               "GL_EXT_occlusion_query_boolean GL_EXT_shadow_samplers GL_OES_texture_float "
-              "GL_EXT_color_buffer_float");
+              "GL_EXT_color_buffer_float GL_OES_element_index_uint");
     /* any-samples queries are not the sample counts OCCLUSION_QUERY means */
     assert_int_equal(c.present, ES20_CORE | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
-                                    BIT(VAO) | BIT(SHADOW));
+                                    BIT(VAO) | BIT(SHADOW) | BIT(ELEMENT_INDEX_UINT));
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
               "GL_ARB_depth_texture GL_ARB_shadow GL_EXT_stencil_two_side GL_ARB_depth_clamp "
               "GL_ARB_texture_env_combine GL_EXT_depth_clamp");

@@ -485,7 +485,8 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
 static void test_displacement_beside_volumes(void **state)
 {
     stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS), gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
-    stin_caps no_map = caps_with(21, 12, 0, GL21_BITS & ~BIT(SHADOW));
+    /* no shadow compare (lifts nothing) and no depth textures (no map-pcf either) */
+    stin_caps no_map = caps_with(21, 12, 0, GL21_BITS & ~(BIT(SHADOW) | BIT(DEPTH_TEXTURE)));
     stin_technique forced[STIN_FEATURE_COUNT];
     stin__selection sel;
     char msg[256];
@@ -555,9 +556,11 @@ static void test_fallback_walks_the_chain(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VDSM);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_TESS);
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
-    gl45.present &= ~BIT(SHADOW);
+    gl45.present &= ~BIT(SHADOW); /* map-pcf compares in its shader (ES 2.0) */
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
+    gl45.present &= ~BIT(DEPTH_TEXTURE);
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
-    gl45.present |= BIT(SHADOW);
+    gl45.present |= BIT(SHADOW) | BIT(DEPTH_TEXTURE);
     sel.choice[STIN_FEATURE_DISPLACEMENT].technique = STIN_TECH_DISPLACEMENT_OFF;
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
     gl45.present &= ~BIT(STENCIL);
