@@ -866,8 +866,10 @@ typedef struct stin_caps {
      * above are ES and GLSL ES ones, profile reads CORE (ES has no fixed
      * function), and each capability comes from the ES version that has it
      * in core or from an ES extension:
-     *   ES 2.0: GLSL (ES 1.00), FBO, VBO, separate stencil, stencil wrap,
-     *           multitexture, cube maps;
+     *   ES 2.0: GLSL (ES 1.00; counted only with OES_standard_derivatives,
+     *           which stin's shaders take: without it no tier runs and
+     *           stin_create says so), FBO, VBO, separate stencil, stencil
+     *           wrap, multitexture, cube maps;
      *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
      *           float textures (counted only with EXT_color_buffer_float:
      *           stin renders into them);

@@ -434,9 +434,12 @@ static void test_detect_without_version_fails(void **state)
 }
 
 /* ---- OpenGL ES ------------------------------------------------------------ */
-#define ES20_CORE                                                                        \
+/* ES 2.0 without OES_standard_derivatives: no GLSL stin can run */
+#define ES20_BARE                                                                        \
     (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) |        \
-     BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
+     BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(FBO))
+#define ES20_CORE (ES20_BARE | BIT(GLSL))
+#define DERIVATIVES "GL_OES_standard_derivatives"
 #define ES30_CORE                                                                        \
     (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) | \
      BIT(ELEMENT_INDEX_UINT))
@@ -450,7 +453,7 @@ static void test_es_version_strings(void **state)
     assert_int_equal(c.gl_major * 10 + c.gl_minor, 32);
     assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 32);
     assert_int_equal(c.profile, STIN_GL_PROFILE_CORE);
-    c = parse("OpenGL ES 2.0 Mesa 22.3.6", "OpenGL ES GLSL ES 1.0.16", NULL);
+    c = parse("OpenGL ES 2.0 Mesa 22.3.6", "OpenGL ES GLSL ES 1.0.16", DERIVATIVES);
     assert_int_equal(c.es, 1);
     assert_int_equal(c.gl_major * 10 + c.gl_minor, 20);
     assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 10); /* GLSL ES 1.00 */
@@ -470,7 +473,10 @@ static void test_es_core_capabilities_by_version(void **state)
 {
     stin_caps c;
     (void)state;
+    /* stin's shaders take derivatives: an extension on ES 2.0, core from 3.0 */
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", NULL);
+    assert_int_equal(c.present, ES20_BARE);
+    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", DERIVATIVES);
     assert_int_equal(c.present, ES20_CORE);
     c = parse("OpenGL ES 3.0 Mesa", "OpenGL ES GLSL ES 3.00", NULL);
     assert_int_equal(c.present, ES30_CORE);
@@ -494,14 +500,14 @@ static void test_es_extension_names(void **state)
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
               "GL_OES_depth_texture GL_OES_packed_depth_stencil GL_OES_vertex_array_object "
               "GL_EXT_occlusion_query_boolean GL_EXT_shadow_samplers GL_OES_texture_float "
-              "GL_EXT_color_buffer_float GL_OES_element_index_uint");
+              "GL_EXT_color_buffer_float GL_OES_element_index_uint " DERIVATIVES);
     /* any-samples queries are not the sample counts OCCLUSION_QUERY means */
     assert_int_equal(c.present, ES20_CORE | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
                                     BIT(VAO) | BIT(SHADOW) | BIT(ELEMENT_INDEX_UINT));
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
               "GL_ARB_depth_texture GL_ARB_shadow GL_EXT_stencil_two_side GL_ARB_depth_clamp "
-              "GL_ARB_texture_env_combine GL_EXT_depth_clamp");
-    assert_int_equal(c.present, ES20_CORE);
+              "GL_ARB_texture_env_combine GL_EXT_depth_clamp GL_ARB_shader_objects");
+    assert_int_equal(c.present, ES20_BARE);
     c = parse("1.3 Mesa", NULL, "GL_OES_depth_texture GL_OES_packed_depth_stencil");
     assert_false(HAS(c, DEPTH_TEXTURE));
     assert_false(HAS(c, PACKED_DEPTH_STENCIL));
