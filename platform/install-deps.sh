@@ -26,12 +26,18 @@ if ! command -v dpkg >/dev/null 2>&1; then
     exit 1
 fi
 
+# One dpkg-query for every package (make check runs this first: a dpkg -s
+# per package took 0.55 CPU s). Removed-but-configured packages are listed
+# too, so the state must be "installed".
+# shellcheck disable=SC2086 # one word per package, on purpose
+installed=" $(dpkg-query -W -f='${db:Status-Status} ${Package}\n' $PACKAGES 2>/dev/null |
+    awk '$1 == "installed" { printf "%s ", $2 }')"
 missing=""
 for pkg in $PACKAGES; do
-    # dpkg -s also succeeds for removed-but-configured packages; require "installed".
-    if ! dpkg -s "$pkg" 2>/dev/null | grep -q '^Status: .* installed$'; then
-        missing="$missing $pkg"
-    fi
+    case $installed in
+        *" $pkg "*) ;;
+        *) missing="$missing $pkg" ;;
+    esac
 done
 missing=${missing# }
 
