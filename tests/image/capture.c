@@ -2,6 +2,7 @@
 /* A stin context per render, sized to the scene, torn down afterwards. */
 #include "capture.h"
 #include "aov.h"
+#include "capture_cache.h"
 #include "image_test.h"
 #include "scene_gpu.h"
 
@@ -31,7 +32,12 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     scene_gpu g;
     void *block;
     size_t size;
-    int ok = 0, have_gpu = 0;
+    int ok = 0, have_gpu = 0, keyed;
+    capture_key key;
+    memset(out, 0, sizeof *out);
+    keyed = capture_cache_key(plat, profile, s, o, &key);
+    if (keyed && capture_cache_find(&key, out))
+        return 1;
     memset(out, 0, sizeof *out);
     memset(&d, 0, sizeof d);
     d.get_proc_address = stin_platform_get_proc_address;
@@ -81,6 +87,8 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     out->counters = stin_debug_query_counters(ctx);
     out->stats = stin_query_frame_stats(ctx);
     ok = 1;
+    if (keyed)
+        capture_cache_keep(&key, out);
 done:
     if (have_gpu)
         scene_gpu_destroy(&g, ctx);

@@ -149,7 +149,7 @@ static int binary_id(uint64_t out[2])
     return state == 1;
 }
 
-static void hash_scene(ref_hasher *h, const scene *s)
+void ref_hash_scene(ref_hasher *h, const scene *s)
 {
     ref_hash_u64(h, (uint64_t)s->mesh_count);
     for (int i = 0; i < s->mesh_count; i++) {
@@ -221,7 +221,7 @@ int ref_cache_key_begin(const reference *r, const char *tag, ref_hasher *h)
     ref_hash_u64(h, r->area_samples);
     ref_hash_u64(h, (uint64_t)r->facet_terminator);
     ref_csg_hash_state(r, h);
-    hash_scene(h, r->s);
+    ref_hash_scene(h, r->s);
     stats.key_s += cpu_seconds() - start;
     return 1;
 }

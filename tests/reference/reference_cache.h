@@ -31,6 +31,11 @@ void ref_hash_bytes(ref_hasher *h, const void *data, size_t n);
  * lengths or a missing array never run into one another. */
 void ref_hash_array(ref_hasher *h, const void *data, size_t n);
 void ref_hash_u64(ref_hasher *h, uint64_t v);
+/* Everything of a scene a render or a reference reads: meshes, textures,
+ * materials, objects, lights, CSG list, camera, ambient, background, size
+ * and shadow-map size (also the image tests' frame cache, capture_cache.h). */
+struct scene;
+void ref_hash_scene(ref_hasher *h, const struct scene *s);
 
 typedef struct ref_cache_key {
     uint64_t k[2];
