@@ -10,6 +10,8 @@
 #include "stin/stin_debug.h"
 #include "stin_platform.h"
 
+/* Every field is part of the frame cache's key (capture_cache.c hashes
+ * them one by one): a new one must be added there. */
 typedef struct capture_options {
     stin_tier tier;
     stin_technique shadows;   /* forced shadow technique */

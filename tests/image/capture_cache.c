@@ -51,6 +51,8 @@ int capture_cache_key(const stin_platform *plat, const stin_profile *profile, co
     ref_hash_array(&h, profile->name, strlen(profile->name));
     ref_hash_u64(&h, (uint64_t)stin_platform_width(plat));
     ref_hash_u64(&h, (uint64_t)stin_platform_height(plat));
+    ref_hash_u64(&h, (uint64_t)stin_platform_samples(plat));
+    ref_hash_u64(&h, (uint64_t)stin_platform_srgb(plat));
     /* the options field by field: the struct has padding and a pointer */
     ref_hash_u64(&h, (uint64_t)o->tier);
     ref_hash_u64(&h, (uint64_t)o->shadows);

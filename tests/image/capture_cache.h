@@ -2,7 +2,8 @@
 /*
  * Render once, check many: capture_render's results kept for the rest of
  * the process, keyed by everything that determines them (the profile, the
- * framebuffer's size, the whole scene, every option and the CSG products),
+ * framebuffer's size, samples and encoding, the whole scene, every option
+ * and the CSG products: a new field of capture_options must be hashed too),
  * so that rows asking for the same frame (a probe of the context's
  * capabilities, the same technique checked by two files) share one render.
  * On by default; STIN_TEST_FRAME_CACHE=0 turns it off,
