@@ -565,12 +565,30 @@
  *   597 snapping at the centre (STIN_DEBUG_CSG_SNAP_AT_CENTRE). The
  *   products cast into the lights' maps as in a single-sampled frame (the
  *   maps' own resolves). The read-back resolve (GL1 tiers, or
- *   STIN_DEBUG_CSG_READBACK) reads the frame's depth and stencil, which a
- *   multisampled framebuffer object cannot give: there stin_draw_csg into a
- *   multisampled target is refused, STIN_ERROR_UNSUPPORTED, logged
- *   (TECHNIQUE_UNSUPPORTED), the product dropped
- *   (stin_frame_stats.csg.dropped); render those into a single-sampled
- *   target.
+ *   STIN_DEBUG_CSG_READBACK on a compatibility context) cannot read a
+ *   multisampled framebuffer object: it blits the frame's depth and
+ *   stencil (one sample a pixel) into the GPU resolve's single-sampled
+ *   work framebuffer and resolves there, then draws the products' faces
+ *   into the frame kept within a band about the result (8 steps of a
+ *   24-bit depth plus twice the result's depth change to the next pixel;
+ *   beside the outline, the neighbours' bands) with fixed-function depth
+ *   and stencil tests: the farthest face at or behind the band's near
+ *   bound, or where that is beyond its far bound the nearest before it;
+ *   the band's bounds go in as a quad a pixel (glDrawPixels writes one
+ *   sample a pixel on llvmpipe). So each sample takes its own face's
+ *   depth, as the GPU resolve's snap gives it. It needs framebuffer
+ *   objects, packed depth-stencil, depth textures, a framebuffer blit (GL
+ *   3.0, ARB_framebuffer_object or EXT_framebuffer_blit), fixed function,
+ *   and 13 bytes of texture staging a pixel (the CPU resolve's 9 and the
+ *   frame's depth; short of it the products are not drawn, logged once).
+ *   Measured (gl21's GL1 tier, volumes, the cavity left out): 8 of 14,986
+ *   pixels away from edges beyond 0.06, 4 of 792 silhouette-band pixels;
+ *   one depth a pixel (STIN_DEBUG_CSG_SNAP_AT_CENTRE) 1,099 and 311.
+ *   Where the context lacks one of those (the GL 1.x profiles hide
+ *   framebuffer objects) stin_draw_csg into a multisampled target is
+ *   refused, STIN_ERROR_UNSUPPORTED, logged (TECHNIQUE_UNSUPPORTED, naming
+ *   what it needs), the product dropped (stin_frame_stats.csg.dropped);
+ *   render those into a single-sampled target.
  * The visibility export's map and the outline are drawn from the
  * single-sampled mask and buffers: one value a pixel.
  * Tested (tests/image/msaa_test.c) at 4 samples for vdsm, volume and
@@ -1542,7 +1560,9 @@ typedef struct stin_desc {
  * face's fragment kept only where its depth at the pixel centre lies within
  * 8 steps of 24 bits of the resolve's, without the slope band or the
  * neighbours (MULTISAMPLED TARGETS): lines along its triangle edges and
- * aliased silhouettes (the test that the band matters) */
+ * aliased silhouettes (the test that the band matters); under the
+ * read-back resolve, its result written one depth a pixel into every
+ * sample instead of the faces' band passes */
 #define STIN_DEBUG_CSG_SNAP_AT_CENTRE 0x800000000000ull
 /* -- transparency (bits 48-55) */
 /* no blended draw is drawn (depth-peel, dual-peel: no layer; sorted: no
@@ -1994,9 +2014,11 @@ typedef struct stin_csg_desc {
  * one plus the literals of both: about 0.1 s; a union of 2^12 terms
  * crossed with 2^12 terms each empty against it is past it) (the log names
  * which; the product is dropped and counted in stin_frame_stats.csg.dropped);
- * STIN_ERROR_UNSUPPORTED when the frame's target is multisampled and the
- * resolve reads back (GL1 tiers, STIN_DEBUG_CSG_READBACK; logged, dropped
- * and counted the same; the GPU resolve draws into multisampled targets:
+ * STIN_ERROR_UNSUPPORTED when the frame's target is multisampled, the
+ * resolve reads back (GL1 tiers, STIN_DEBUG_CSG_READBACK) and the context
+ * lacks what its single-sampled copy needs (FBOs, packed depth-stencil,
+ * depth textures, a blit, fixed function; logged, dropped and counted the
+ * same; both resolves draw into multisampled targets otherwise:
  * MULTISAMPLED TARGETS).
  * Primitives no term names are not drawn. A product whose every term is
  * empty draws nothing and returns STIN_OK. stin_query_csg_terms reads the

@@ -230,16 +230,19 @@ stin_result stin_draw_csg(stin_context *ctx, const stin_csg_desc *desc)
     if (!desc)
         return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT, "desc is NULL", 0);
     /* the CPU resolve reads the frame's depth and stencil back, which a
-     * multisampled framebuffer object does not allow, and writes one depth a
-     * pixel, which the faces' samples do not meet (lines along their edges):
-     * no product rather than a wrong one. The GPU resolve snaps the faces'
-     * own samples (csg/merge.c). */
+     * multisampled framebuffer object does not allow: it resolves through a
+     * single-sampled copy (csg/resolve_msaa.c) where the context has what
+     * that needs; else no product rather than a wrong one. The GPU resolve
+     * snaps the faces' own samples (csg/merge.c). */
     if (ctx->target.multisampled && !stin__csg_merge_ready(ctx) &&
+        !stin__csg_msaa_readback_ready(ctx) &&
         ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_OFF)
         return refuse(ctx, STIN_ERROR_UNSUPPORTED, STIN_LOG_TECHNIQUE_UNSUPPORTED,
-                      "the frame's target is multisampled, which the CSG read-back resolve "
-                      "(GL1 tiers, STIN_DEBUG_CSG_READBACK) does not support; products drawn "
-                      "so far", ctx->csg->product_count);
+                      "the frame's target is multisampled, and the CSG read-back resolve "
+                      "(GL1 tiers, STIN_DEBUG_CSG_READBACK) reads it through a single-sampled "
+                      "copy only with framebuffer objects, packed depth-stencil, depth "
+                      "textures, a framebuffer blit and glDrawPixels; products drawn so far",
+                      ctx->csg->product_count);
     if (!desc->nodes || !desc->node_count || !desc->primitives || !desc->primitive_count)
         return refuse(ctx, STIN_ERROR_INVALID_ARGUMENT, STIN_LOG_BAD_ARGUMENT,
                       "empty expression: nodes and primitives are required, node count",

@@ -148,10 +148,28 @@ void stin__csg_resolve_pixels(struct stin_context *ctx, const stin__path *path,
 size_t stin__csg_pixels_bytes(int w, int h);
 int stin__csg_pixels_at(struct stin_context *ctx, size_t offset, stin__csg_pixels *r);
 int stin__csg_pixels_gpu(struct stin_context *ctx, stin__csg_pixels *r);
+float *stin__csg_pixels_held(struct stin_context *ctx, const stin__csg_pixels *r);
+/* The read-back resolve into a multisampled framebuffer object
+ * (csg/resolve_msaa.c): ready: whether the context has what it needs (else
+ * stin_draw_csg refuses the product); resolve: the frame's products through
+ * a single-sampled copy of its depth, their faces drawn into the frame on
+ * the result so each sample takes its own face's depth; 0 when it cannot
+ * (logged once). */
+int stin__csg_msaa_readback_ready(const struct stin_context *ctx);
+int stin__csg_msaa_resolve(struct stin_context *ctx, const stin__path *path,
+                           stin__csg_pixels *r);
 void stin__csg_read_depth(struct stin_context *ctx, const stin__csg_pixels *r, float *out);
 void stin__csg_read_stencil(struct stin_context *ctx, const stin__csg_pixels *r);
 void stin__csg_write_depth(struct stin_context *ctx, const stin__path *path,
                            const stin__csg_pixels *r, GLenum func);
+/* identity: identity matrices and no program around draws in clip
+ * coordinates (compatibility contexts). draw_depth_pixels: values into the
+ * bound depth buffer by glDrawPixels under pass state ps. */
+void stin__csg_identity_begin(struct stin_context *ctx, const stin__path *path);
+void stin__csg_identity_end(struct stin_context *ctx, const stin__path *path);
+void stin__csg_draw_depth_pixels(struct stin_context *ctx, const stin__path *path,
+                                 const stin__csg_pixels *r, const float *values,
+                                 const stin__pass_state *ps);
 void stin__csg_upload_result(struct stin_context *ctx, const stin__csg_pixels *r);
 
 /* Products casting shadows (csg/cast.c). A map technique calls cast after
@@ -290,6 +308,10 @@ void stin__csg_merge_init(struct stin_context *ctx);
 void stin__csg_merge_release(struct stin_context *ctx);
 int stin__csg_merge_ready(const struct stin_context *ctx);
 int stin__csg_merge_begin(struct stin_context *ctx);
+/* The work and result framebuffers (depth-stencil textures at the
+ * viewport's window size, FBO and packed depth-stencil caps); 0 when
+ * incomplete (logged once). */
+int stin__csg_merge_targets(struct stin_context *ctx);
 void stin__csg_merge_snap(struct stin_context *ctx);
 GLuint stin__csg_merge_result(struct stin_context *ctx);
 /* The GPU resolve in place: a frame whose one candidate (one product of one

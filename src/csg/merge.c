@@ -180,7 +180,7 @@ static int complete(stin_context *ctx, GLenum status, int *said, const char *wha
 /* Work and result at the viewport's window size (x + w by y + h: texel =
  * window pixel), grown, never shrunk; 0 when a framebuffer is incomplete
  * (logged once). */
-static int ensure_targets(stin_context *ctx)
+int stin__csg_merge_targets(stin_context *ctx)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     const int *vp = ctx->frame.viewport;
@@ -271,7 +271,7 @@ static void resume(stin_context *ctx, const stin__path *path)
 int stin__csg_merge_begin(stin_context *ctx)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
-    if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
+    if (!stin__csg_merge_ready(ctx) || !stin__csg_merge_targets(ctx))
         return 0;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo[STIN__CSG_MERGE_RESULT]);
     stin__clear_depth(ctx, 1.0);
@@ -295,9 +295,9 @@ int stin__csg_in_place_fits(const stin_context *ctx)
 
 int stin__csg_in_place_begin(stin_context *ctx)
 {
-    if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
+    if (!stin__csg_merge_ready(ctx) || !stin__csg_merge_targets(ctx))
         return 0;
-    ctx->csg->resolve_fbo = ctx->draw_fbo; /* ensure_targets left it bound */
+    ctx->csg->resolve_fbo = ctx->draw_fbo; /* stin__csg_merge_targets left it bound */
     ctx->csg->in_place = 1;
     ctx->stats.csg.gpu_resolves = 1;
     ctx->stats.csg.gpu_bytes = ctx->csg->merge.bytes;
@@ -535,7 +535,7 @@ int stin__csg_direct_fits(const stin_context *ctx)
 int stin__csg_direct_begin(stin_context *ctx)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
-    if (!stin__csg_merge_ready(ctx) || !ensure_targets(ctx))
+    if (!stin__csg_merge_ready(ctx) || !stin__csg_merge_targets(ctx))
         return 0;
     ctx->csg->resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);

@@ -47,6 +47,17 @@ int stin__csg_pixels_at(stin_context *ctx, size_t offset, resolve *r)
     return 1;
 }
 
+/* The frame's depth before a multisampled read-back resolve: a float a
+ * pixel behind r's arrays (16-byte aligned); NULL without the room. */
+float *stin__csg_pixels_held(stin_context *ctx, const resolve *r)
+{
+    size_t bytes, at = (stin__csg_pixels_bytes(r->w, r->h) + 15u) & ~(size_t)15u;
+    unsigned char *base = staging_of(ctx, &bytes);
+    if (at > bytes || r->pixels * sizeof(float) > bytes - at)
+        return NULL;
+    return (float *)(void *)(base + at);
+}
+
 /* The GPU resolve's pixels: the stencil read alone (1 byte a pixel). */
 int stin__csg_pixels_gpu(stin_context *ctx, resolve *r)
 {
@@ -135,26 +146,12 @@ static void write_depth_core(stin_context *ctx, const resolve *r)
     stin__screen_quad(ctx);
 }
 
-/* The result into the depth buffer at the viewport's corner: with no
- * program (the fragments keep the pixels' depth) and the raster position
- * at clip (-1, -1) through identity matrices; on core profiles through
- * write_depth_core. */
-void stin__csg_write_depth(stin_context *ctx, const stin__path *path, const resolve *r,
-                           GLenum func)
+/* Identity matrices and no program (compatibility contexts), for draws
+ * given in clip coordinates; end: the caller's or the fixed path's again. */
+void stin__csg_identity_begin(stin_context *ctx, const stin__path *path)
 {
     static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    stin__unpack_saved saved;
-    stin__pass_state ps = stin__pass_defaults;
     int fixed = path == stin__fixed_path();
-    ps.depth_test = 1;
-    ps.depth_func = func;
-    ps.color_write = 0;
-    stin__pass_apply(ctx, &ps);
-    if (ctx->csg->depth_prog) {
-        write_depth_core(ctx, r);
-        ctx->stats.passes++;
-        return;
-    }
     if (!fixed) {
         GL(ctx, UseProgram)(0);
         stin__lit_program_forget(ctx);
@@ -167,11 +164,11 @@ void stin__csg_write_depth(stin_context *ctx, const stin__path *path, const reso
     if (!fixed)
         GL(ctx, PushMatrix)();
     GL(ctx, LoadMatrixf)(identity);
-    GL(ctx, RasterPos2f)(-1.0f, -1.0f);
-    stin__unpack_begin(ctx, &saved);
-    GL(ctx, DrawPixels)(r->w, r->h, GL_DEPTH_COMPONENT, GL_FLOAT, r->result);
-    stin__unpack_end(ctx, &saved);
-    if (!fixed) {
+}
+
+void stin__csg_identity_end(stin_context *ctx, const stin__path *path)
+{
+    if (path != stin__fixed_path()) {
         GL(ctx, PopMatrix)();
         GL(ctx, MatrixMode)(GL_PROJECTION);
         GL(ctx, PopMatrix)();
@@ -180,5 +177,41 @@ void stin__csg_write_depth(stin_context *ctx, const stin__path *path, const reso
         GL(ctx, LoadMatrixf)(ctx->projection);
     }
     GL(ctx, MatrixMode)(GL_MODELVIEW);
+}
+
+/* values (r's viewport, rows r->w long) into the depth buffer at the
+ * viewport's corner under pass state ps by glDrawPixels, with no program
+ * (the fragments keep the pixels' depth) and the raster position at clip
+ * (-1, -1). Compatibility contexts only. */
+void stin__csg_draw_depth_pixels(stin_context *ctx, const stin__path *path, const resolve *r,
+                                 const float *values, const stin__pass_state *ps)
+{
+    stin__unpack_saved saved;
+    stin__pass_apply(ctx, ps);
+    stin__csg_identity_begin(ctx, path);
+    GL(ctx, RasterPos2f)(-1.0f, -1.0f);
+    stin__unpack_begin(ctx, &saved);
+    GL(ctx, DrawPixels)(r->w, r->h, GL_DEPTH_COMPONENT, GL_FLOAT, values);
+    stin__unpack_end(ctx, &saved);
+    stin__csg_identity_end(ctx, path);
     ctx->stats.passes++;
+}
+
+/* The result into the depth buffer at the viewport's corner (func: the
+ * depth test): by glDrawPixels, or on core profiles through
+ * write_depth_core. */
+void stin__csg_write_depth(stin_context *ctx, const stin__path *path, const resolve *r,
+                           GLenum func)
+{
+    stin__pass_state ps = stin__pass_defaults;
+    ps.depth_test = 1;
+    ps.depth_func = func;
+    ps.color_write = 0;
+    if (ctx->csg->depth_prog) {
+        stin__pass_apply(ctx, &ps);
+        write_depth_core(ctx, r);
+        ctx->stats.passes++;
+        return;
+    }
+    stin__csg_draw_depth_pixels(ctx, path, r, r->result, &ps);
 }

@@ -88,6 +88,8 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
         ctx->csg->resolved = ctx->csg->merged = 1;
         return 1;
     }
+    if (!gpu && ctx->target.multisampled) /* through a single-sampled copy */
+        return stin__csg_msaa_resolve(ctx, path, &r);
     /* its framebuffers failed (logged): the CPU's, if the staging holds it
      * and the frame's buffers can be read back (not multisampled) */
     if (gpu && !stin__csg_merge_begin(ctx) && (ctx->target.multisampled || !usable(ctx, &r, 0)))

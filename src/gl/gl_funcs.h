@@ -152,6 +152,10 @@
                                    GLint level), STIN_CAP_FBO, "glFramebufferTexture2DEXT") \
     X(GLenum, CheckFramebufferStatus, (GLenum target), STIN_CAP_FBO, "glCheckFramebufferStatusEXT") \
     X(GLboolean, IsFramebuffer, (GLuint fb), STIN_CAP_FBO, "glIsFramebufferEXT")           \
+    /* GL 3.0, ARB_framebuffer_object or EXT_framebuffer_blit (target.separate_read) */    \
+    X(void, BlitFramebuffer, (GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0,       \
+                              GLint dy0, GLint dx1, GLint dy1, GLbitfield mask,            \
+                              GLenum filter), NEED_CHECKED, "glBlitFramebufferEXT")        \
     X(void, GetFramebufferAttachmentParameteriv, (GLenum target, GLenum att, GLenum pname, \
                                                   GLint *v), NEED_GL30, "")               \
     X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")         \

@@ -66,7 +66,9 @@ static int render(run *r, const csg_run *c, stin_tier tier, stin_technique csg, 
     int ok = 0;
     stin_result res;
     test_desc(r, tier, &d);
-    d.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
+    /* GL1 has no PCF: volumes there (its rows leave the cavity out: ref_build) */
+    d.techniques[STIN_FEATURE_SHADOWS] =
+        tier == STIN_TIER_GL1 ? STIN_TECH_SHADOWS_VOLUME : STIN_TECH_SHADOWS_MAP_PCF;
     d.techniques[STIN_FEATURE_CSG] = csg;
     d.debug_flags = flags;
     scene_gpu_size_desc(c->s, &d);
@@ -74,8 +76,9 @@ static int render(run *r, const csg_run *c, stin_tier tier, stin_technique csg, 
     block = malloc(size);
     if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {
         free(block);
-        snprintf(why, why_size, "%s with map-pcf does not run on this tier here",
-                 stin_technique_name(csg));
+        snprintf(why, why_size, "%s with %s does not run on this tier here",
+                 stin_technique_name(csg),
+                 stin_technique_name(d.techniques[STIN_FEATURE_SHADOWS]));
         return -1;
     }
     if (stin_query_choice(ctx, STIN_FEATURE_CSG).technique != csg) {
@@ -91,8 +94,11 @@ static int render(run *r, const csg_run *c, stin_tier tier, stin_technique csg, 
                               stin_platform_framebuffer(r->plat));
         if (res != STIN_OK)
             snprintf(why, why_size, "frame: %s", stin_result_name(res));
-        else if (stin_query_frame_stats(ctx).csg.gpu_resolves != 1)
-            snprintf(why, why_size, "the product was not resolved on the GPU");
+        else if (stin_query_frame_stats(ctx).csg.gpu_resolves != (tier != STIN_TIER_GL1) ||
+                 stin_query_frame_stats(ctx).csg.products != 1)
+            snprintf(why, why_size, "the product was not resolved %s (%u dropped)",
+                     tier == STIN_TIER_GL1 ? "by the read-back resolve" : "on the GPU",
+                     (unsigned)stin_query_frame_stats(ctx).csg.dropped);
         else if (!stin_platform_read_color(r->plat, rgba))
             snprintf(why, why_size, "read-back failed");
         else
@@ -104,8 +110,29 @@ static int render(run *r, const csg_run *c, stin_tier tier, stin_technique csg, 
     return ok;
 }
 
+/* GL1's rows: the pixels (and their neighbours) where a sample sees a
+ * subtracted primitive's inside are left out of both bounds. There GL1's
+ * volumes light the cavity (a product does not shadow its own faces
+ * through the volumes' cast map, single-sampled too) and the per-vertex
+ * reference shades it with the primitive's outward vertex normals: its
+ * shading, not the samples' depth, decides those pixels. */
+static void leave_out_cavity(csg_run *c)
+{
+    size_t px = (size_t)c->m.w * c->m.h, i;
+    int k, j, sub = -1;
+    const scene_gpu_csg *p = &c->prods.products[0];
+    for (j = 0; j < p->primitive_count; j++)
+        if (j > 0) /* a - b: b's faces are the cavity */
+            sub = p->objects[j];
+    for (i = 0; sub >= 0 && i < px; i++)
+        for (k = 0; k < c->m.n; k++)
+            if (c->m.hits[px * (size_t)k + i].hit && c->m.hits[px * (size_t)k + i].object == sub)
+                c->m.centre_differs[i] = 1;
+}
+
 /* The reference at the target's sample positions, the product casting. */
-static int ref_build(csg_run *c, const float pos[][2], int n, char *err, size_t err_size)
+static int ref_build(csg_run *c, const float pos[][2], int n, int per_vertex, char *err,
+                     size_t err_size)
 {
     reference *ref = reference_create(c->s, err, err_size);
     ref_csg_product p[4];
@@ -127,7 +154,9 @@ static int ref_build(csg_run *c, const float pos[][2], int n, char *err, size_t 
         ok = reference_csg_primary_at(ref, p, c->prods.count, c->m.w, c->m.h, pos[k][0],
                                       pos[k][1], c->m.hits + px * (size_t)k, NULL);
     if (ok)
-        msaa_ref_shade(c->s, ref, 0, MSAA_AT_CENTRE_INSIDE, &c->m);
+        msaa_ref_shade(c->s, ref, per_vertex, MSAA_AT_CENTRE_INSIDE, &c->m);
+    if (ok && per_vertex)
+        leave_out_cavity(c);
     if (ref)
         reference_destroy(ref);
     if (!ok && err[0] == '\0')
@@ -168,10 +197,15 @@ static void one_case(run *r, const csg_run *c, stin_tier tier, stin_technique cs
     free(rgba);
 }
 
-/* Where the resolve reads back (GL1 tiers), a product into the
- * multisampled target is refused, not drawn wrong (stin.h, stin_draw_csg). */
+/* Where the read-back resolve (GL1 tiers) cannot copy the multisampled
+ * target (here packed depth-stencil hidden, as a context without it; the
+ * GL 1.x profiles hide framebuffer objects, and the platform has no
+ * multisampled target there), a product into it is refused, not drawn
+ * wrong (stin.h, stin_draw_csg). */
 static void refused(run *r, const csg_run *c, stin_tier tier)
 {
+    stin_profile hidden = *r->profile;
+    run without = *r;
     test_context tc;
     stin_frame_desc fd;
     stin_csg_primitive prim[2];
@@ -181,7 +215,9 @@ static void refused(run *r, const csg_run *c, stin_tier tier)
     char name[64];
     int i;
     snprintf(name, sizeof name, "%s/msaa-csg-refused", stin_tier_name(tier));
-    if (!test_context_create(&tc, r, c->s, tier, STIN_TECH_NONE, 0)) {
+    hidden.caps_mask |= STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
+    without.profile = &hidden;
+    if (!test_context_create(&tc, &without, c->s, tier, STIN_TECH_NONE, 0)) {
         report(r, "SKIP", name, "the tier does not run here");
         return;
     }
@@ -204,8 +240,8 @@ static void refused(run *r, const csg_run *c, stin_tier tier)
     }
     report(r, res == STIN_ERROR_UNSUPPORTED && stin_query_frame_stats(tc.ctx).csg.dropped == 1
                   ? "PASS" : "FAIL",
-           name, "stin_draw_csg into a %d-sample target on the read-back resolve: %s, %u "
-           "dropped (want STIN_ERROR_UNSUPPORTED, 1)", stin_platform_samples(r->plat),
+           name, "stin_draw_csg into a %d-sample target on the read-back resolve without "
+           "packed depth-stencil: %s, %u dropped (want STIN_ERROR_UNSUPPORTED, 1)", stin_platform_samples(r->plat),
            stin_result_name(res), (unsigned)stin_query_frame_stats(tc.ctx).csg.dropped);
     test_context_destroy(&tc);
 }
@@ -213,7 +249,9 @@ static void refused(run *r, const csg_run *c, stin_tier tier)
 /* The techniques each profile runs (each a distinct resolve; the budget
  * of make check's time allows no more): gl45-core's GL4 goldfeather (and
  * the row at the centre that must fail), scs and interval; gl33-core's
- * GL4 goldfeather; gl21's GL2 goldfeather and scs and its GL1 refusal. */
+ * GL4 goldfeather; gl21's GL2 goldfeather and scs, and its GL1 goldfeather
+ * (and the row at the centre) and scs through the read-back resolve, and
+ * its refusal without packed depth-stencil. */
 static int cases_here(const run *r, stin_tier tier, stin_technique out[4])
 {
     int n = 0;
@@ -223,7 +261,7 @@ static int cases_here(const run *r, stin_tier tier, stin_technique out[4])
         out[n++] = STIN_TECH_CSG_INTERVAL;
     } else if (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl33-core")) {
         out[n++] = STIN_TECH_CSG_GOLDFEATHER;
-    } else if (tier == STIN_TIER_GL2 && !strcmp(r->profile_name, "gl21")) {
+    } else if (tier != STIN_TIER_GL4 && !strcmp(r->profile_name, "gl21")) {
         out[n++] = STIN_TECH_CSG_GOLDFEATHER;
         out[n++] = STIN_TECH_CSG_SCS;
     }
@@ -261,15 +299,17 @@ void msaa_csg_tests(run *r, stin_tier tier, const char *path)
         n = msaa_sample_positions(r, pos);
         if (gl1)
             refused(r, &c, tier);
-        else if (!n)
+        if (!n)
             report(r, "SKIP", name, "the context cannot say where its samples lie "
                                     "(glGetMultisamplefv: GL 3.2 or ARB_texture_multisample)");
-        else if (!ref_build(&c, (const float(*)[2])pos, n, err, sizeof err))
+        else if (!ref_build(&c, (const float(*)[2])pos, n,
+                            tier == STIN_TIER_GL1 ? msaa_gl1_per_vertex(r, &s) : 0, err,
+                            sizeof err))
             report(r, "FAIL", name, "reference: %s", err);
         else
             for (i = 0; i < count; i++) {
                 one_case(r, &c, tier, techs[i], 0);
-                if (i == 0 && !strcmp(r->profile_name, "gl45-core"))
+                if (i == 0 && (tier == STIN_TIER_GL1 || !strcmp(r->profile_name, "gl45-core")))
                     one_case(r, &c, tier, techs[i], STIN_DEBUG_CSG_SNAP_AT_CENTRE);
             }
         if (!stin_platform_set_samples(r->plat, 0, err, sizeof err))

@@ -1,5 +1,6 @@
 /* SPDX-License-Identifier: MIT */
 #include "msaa_shared.h"
+#include "reference.h"
 #include "test_context.h"
 
 #include <stdio.h>
@@ -153,4 +154,17 @@ void msaa_close(run *r, const char *name, scene *s)
     if (!stin_platform_set_samples(r->plat, 0, err, sizeof err))
         report(r, "FAIL", name, "back to the default framebuffer: %s", err);
     scene_free(s);
+}
+
+int msaa_gl1_per_vertex(run *r, const scene *s)
+{
+    test_context tc;
+    int per_vertex = 0;
+    if (test_context_create(&tc, r, s, STIN_TIER_GL1, STIN_TECH_NONE, 0)) {
+        per_vertex = stin_query_caps(tc.ctx)->present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR)
+                         ? 1
+                         : REFERENCE_GOURAUD_SINGLE_COLOR;
+        test_context_destroy(&tc);
+    }
+    return per_vertex;
 }

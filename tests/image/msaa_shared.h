@@ -44,5 +44,9 @@ int msaa_open(run *r, const char *path, const char *file, int samples, const cha
               scene *s, float pos[][2]);
 /* Back to the default framebuffer (FAIL as `name` where it cannot), s freed. */
 void msaa_close(run *r, const char *name, scene *s);
+/* The reference's per-vertex lighting of the GL1 tier here (reference.h:
+ * 1, or REFERENCE_GOURAUD_SINGLE_COLOR without separate specular); 0 where
+ * the tier does not run. */
+int msaa_gl1_per_vertex(run *r, const scene *s);
 
 #endif

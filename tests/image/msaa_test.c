@@ -119,26 +119,13 @@ static int runs_here(const run *r, stin_tier tier)
     return !strcmp(r->profile_name, "gl21");
 }
 
-static int gl1_per_vertex(run *r, const scene *s)
-{
-    test_context tc;
-    int per_vertex = 0;
-    if (test_context_create(&tc, r, s, STIN_TIER_GL1, STIN_TECH_NONE, 0)) {
-        per_vertex = stin_query_caps(tc.ctx)->present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR)
-                         ? 1
-                         : REFERENCE_GOURAUD_SINGLE_COLOR;
-        test_context_destroy(&tc);
-    }
-    return per_vertex;
-}
-
 /* The list's rows of this tier into a target of `asked` samples. */
 static void at_count(run *r, const scene *s, stin_tier tier, int asked, const msaa_case *list,
                      size_t count)
 {
     char err[512], name[64];
     float pos[MSAA_MAX_SAMPLES][2];
-    int n, per_vertex = tier == STIN_TIER_GL1 ? gl1_per_vertex(r, s) : 0;
+    int n, per_vertex = tier == STIN_TIER_GL1 ? msaa_gl1_per_vertex(r, s) : 0;
     size_t i;
     if (asked == MSAA_SAMPLES)
         snprintf(name, sizeof name, "%s/msaa", stin_tier_name(tier));
