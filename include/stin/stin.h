@@ -843,7 +843,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
       "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")                        \
     X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")                         \
     X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2") \
-    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")
+    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")     \
+    X(FRAG_DEPTH, "fragment depth writes", 20, "")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
