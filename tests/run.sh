@@ -50,8 +50,8 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # OpenGL ES (egl only: OSMesa has no ES), on the scenes that prove the path:
 # lighting, volumes and vdsm on four-lights, map-pcf on spheres-18k-sun (es30;
 # es32 has no timer queries for its vdsm/volumes choice tests there); es20-ext
-# (GLSL ES 1.00) also depth peeling and coloured shadows on glass-panes and
-# normal/parallax/pom on stone-wall (19 CPU seconds in all, measured).
+# (GLSL ES 1.00) also depth peeling and coloured shadows on glass-panes,
+# normal/parallax/pom on stone-wall and displacement on displace-plate.
 ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
@@ -104,7 +104,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
             case $prof in
                 es30) more=tests/scenes/spheres-18k-sun.json ;;
                 es20-ext) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json
-                                tests/scenes/stone-wall.json" ;;
+                                tests/scenes/stone-wall.json tests/scenes/displace-plate.json" ;;
                 *) more= ;;
             esac
             echo "image:$plat:$prof $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $ES_SCENES $more
