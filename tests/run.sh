@@ -8,7 +8,7 @@
 # Usage: tests/run.sh BUILD_DIR
 # Environment: STIN_TEST_PLATFORMS (default "egl osmesa"),
 #              STIN_TEST_PROFILES (default: every desktop profile of docs/profiles.md),
-#              STIN_TEST_ES_PROFILES (default "es30 es32"; egl only, two scenes),
+#              STIN_TEST_ES_PROFILES (default "es30 es32 es20-ext"; egl only, few scenes),
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme,
 #              bench and viewer suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
@@ -49,8 +49,10 @@ PLATFORMS=${STIN_TEST_PLATFORMS:-egl osmesa}
 PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45-core}
 # OpenGL ES (egl only: OSMesa has no ES), on the scenes that prove the path:
 # lighting, volumes and vdsm on four-lights, map-pcf on spheres-18k-sun (es30;
-# es32 has no timer queries for its vdsm/volumes choice tests there).
-ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32}
+# es32 has no timer queries for its vdsm/volumes choice tests there); es20-ext
+# (GLSL ES 1.00) also depth peeling and coloured shadows on glass-panes,
+# normal/parallax/pom on stone-wall and displacement on displace-plate.
+ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 SCENES=$(ls tests/scenes/*.json)
@@ -99,7 +101,12 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         done
         [ "$plat" = egl ] || continue
         for prof in $ES_PROFILES; do
-            more=; [ "$prof" = es30 ] && more=tests/scenes/spheres-18k-sun.json
+            case $prof in
+                es30) more=tests/scenes/spheres-18k-sun.json ;;
+                es20-ext) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json
+                                tests/scenes/stone-wall.json tests/scenes/displace-plate.json" ;;
+                *) more= ;;
+            esac
             echo "image:$plat:$prof $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $ES_SCENES $more
         done
     done

@@ -861,7 +861,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
       "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")                        \
     X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")                         \
     X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2") \
-    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")
+    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")     \
+    X(FRAG_DEPTH, "fragment depth writes", 20, "")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -889,14 +890,18 @@ typedef struct stin_caps {
      *           stin_create says so), FBO, VBO, separate stencil, stencil
      *           wrap, multitexture, cube maps;
      *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
-     *           float textures (counted only with EXT_color_buffer_float:
+     *           fragment depth writes, float textures (counted only with EXT_color_buffer_float:
      *           stin renders into them);
      *   ES 3.1: + compute (detected, but stin's storage-buffer reads and
      *           clears, glGetBufferSubData and glClearBufferData, are desktop
      *           GL: COMPUTE stays off on a live ES context for now);
      *   ES 3.2: + geometry shaders, tessellation;
      *   on ES 2.0 by extension: OES_depth_texture, OES_packed_depth_stencil,
-     *           OES_vertex_array_object, EXT_shadow_samplers.
+     *           OES_vertex_array_object, EXT_shadow_samplers, EXT_frag_depth
+     *           (FRAG_DEPTH), OES_element_index_uint. ES 2.0's textures take
+     *           unsized formats (stin chooses them); without
+     *           OES_texture_npot stin_create_texture resamples the
+     *           application's textures to powers of two (mipmaps, repeat).
      * Never on ES: FIXED_FUNCTION (so never the GL1 tier), texture_env_*,
      * SEPARATE_SPECULAR, STENCIL_TWO_SIDE (EXT's), DEPTH_CLAMP, TIMER_QUERY,
      * TRANSFORM_FEEDBACK (drawing from the object is desktop GL 4.0),
@@ -1775,7 +1780,8 @@ typedef enum stin_texture_kind {
 typedef struct stin_texture_desc {
     stin_texture_kind kind;
     uint32_t width, height;  /* each at most caps.max_texture_size; any size (GL1
-                              * contexts get a power-of-two resample); width *
+                              * and ES 2.0 without OES_texture_npot get a
+                              * power-of-two resample); width *
                               * height above 2^30: STIN_ERROR_INVALID_ARGUMENT */
     const uint8_t *pixels;   /* RGBA8, 4 bytes per pixel, rows bottom to top */
     int base_level_only;     /* 1: no mip chain; default 0: mipmaps are built (for
@@ -1797,7 +1803,7 @@ typedef struct stin_texture_desc {
  * texture on any context (pixels may be NULL): 5/16 of w * h * 4 for an
  * albedo or height map uploaded as given with mipmaps (levels 1 and 2; none
  * without mipmaps: a height map's chain is displacement's copy), 5/4 for normal maps and power-of-two resamples (GL1
- * contexts resample non-power-of-two sizes up), plus w * h * 4 for a normal
+ * contexts and ES 2.0 without OES_texture_npot resample non-power-of-two sizes up), plus w * h * 4 for a normal
  * map derived from a height field (kept while the size changes). 0 for a
  * bad desc. */
 uint64_t stin_texture_staging_bytes(const stin_texture_desc *desc);

@@ -228,7 +228,7 @@ stin_result stin_create_texture(stin_context *ctx, const stin_texture_desc *desc
     max = ctx->caps.max_texture_size > 0 ? (uint32_t)ctx->caps.max_texture_size : 64u;
     w = desc->width;
     h = desc->height;
-    if (ctx->caps.gl_major < 2) { /* NPOT textures are core from GL 2.0 */
+    if (!stin__npot_textures(ctx)) { /* mipmapped, repeated: GL 2.0, ES 3.0 */
         w = stin__pot_at_least(w);
         h = stin__pot_at_least(h);
     }
@@ -345,6 +345,7 @@ void stin__upload_level(stin_context *ctx, GLenum target, GLint level, GLenum in
                         uint32_t w, uint32_t h, GLenum format, const void *pixels)
 {
     stin__unpack_saved saved;
+    internal_format = stin__texture_format(ctx, internal_format);
     stin__unpack_begin(ctx, &saved);
     if (target == GL_TEXTURE_1D)
         GL(ctx, TexImage1D)(target, level, (GLint)internal_format, (GLsizei)w, 0, format,

@@ -132,9 +132,9 @@ static int own_target(stin_context *ctx, int size)
         stin__bind_unit(ctx, 0, GL_TEXTURE_2D, c->depth_stencil);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        GL_ENUM(ctx, TexImage2D, GL_DEPTH24_STENCIL8)(GL_TEXTURE_2D, 0, GL_DEPTH24_STENCIL8, size,
-                                                      size, 0, GL_DEPTH_STENCIL,
-                                                      GL_UNSIGNED_INT_24_8, NULL);
+        GLenum f = stin__texture_format(ctx, GL_DEPTH24_STENCIL8);
+        GL_ENUM(ctx, TexImage2D, f)(GL_TEXTURE_2D, 0, (GLint)f, size, size, 0, GL_DEPTH_STENCIL,
+                                    GL_UNSIGNED_INT_24_8, NULL);
         GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
                                       c->depth_stencil, 0);

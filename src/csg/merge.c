@@ -102,7 +102,8 @@ void stin__csg_merge_init(stin_context *ctx)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     const uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
-                          STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
+                          STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL) |
+                          STIN_CAP_BIT(STIN_CAP_FRAG_DEPTH);
     char msg[160];
     int gl4;
     stin__memzero(m, sizeof *m);

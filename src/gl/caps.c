@@ -55,6 +55,7 @@ static const es_rule es_rules[STIN_CAP_COUNT] = {
     [STIN_CAP_COMPUTE] = {31, "", NULL},
     [STIN_CAP_PACKED_DEPTH_STENCIL] = {30, "GL_OES_packed_depth_stencil", NULL},
     [STIN_CAP_ELEMENT_INDEX_UINT] = {30, "GL_OES_element_index_uint", NULL},
+    [STIN_CAP_FRAG_DEPTH] = {30, "GL_EXT_frag_depth", NULL},
 };
 
 int stin__token_in_list(const char *list, const char *token, size_t token_len)

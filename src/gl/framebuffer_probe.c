@@ -65,6 +65,15 @@ void stin__framebuffer_restore(stin_context *ctx, const GLint saved[2])
     }
 }
 
+/* Whether the bits are asked of the framebuffer's attachments: desktop core
+ * profiles removed GL_STENCIL_BITS and its kind; every ES version keeps
+ * them, and ES 2.0 cannot ask the window-system framebuffer's attachments
+ * (GL_INVALID_OPERATION). */
+static int bits_by_attachment(const stin_context *ctx)
+{
+    return ctx->caps.profile == STIN_GL_PROFILE_CORE && !ctx->caps.es;
+}
+
 /* Alpha bits of `name`'s colour (bound now); on a core context those of a
  * framebuffer object's first colour attachment, and 0 for the default
  * framebuffer (a surfaceless one has no back buffer to ask about: Mesa
@@ -72,7 +81,7 @@ void stin__framebuffer_restore(stin_context *ctx, const GLint saved[2])
 static int alpha_bits(stin_context *ctx, GLuint name)
 {
     GLint v = 0;
-    if (ctx->caps.profile != STIN_GL_PROFILE_CORE) {
+    if (!bits_by_attachment(ctx)) {
         GL(ctx, GetIntegerv)(GL_ALPHA_BITS, &v);
         return v;
     }
@@ -87,7 +96,7 @@ static void probe_bits(stin_context *ctx, GLuint name)
     GLint sample_buffers = 0;
     ctx->target.name = name;
     ctx->target.stencil_bits = ctx->target.depth_bits = 0;
-    stin__framebuffer_bits(&ctx->gl, ctx->caps.profile == STIN_GL_PROFILE_CORE, name,
+    stin__framebuffer_bits(&ctx->gl, bits_by_attachment(ctx), name,
                            &ctx->target.stencil_bits, &ctx->target.depth_bits);
     ctx->target.alpha_bits = alpha_bits(ctx, name);
     /* GL 1.3's query; here, not per frame: a query can wait for a threaded driver */

@@ -76,6 +76,17 @@ void stin__clear_depth(struct stin_context *ctx, double depth);
 void stin__depth_range(struct stin_context *ctx, double n, double f);
 /* glDrawBuffer(GL_NONE) + glReadBuffer(GL_NONE) for a depth-only target. */
 void stin__no_colour_buffers(struct stin_context *ctx);
+/* The internal format for a texture of sized format `sized` on this context
+ * (gl/texture_format.c): `sized` itself, or on OpenGL ES 2.0, which has no
+ * sized formats, its base format (GL_RGBA8 -> GL_RGBA, GL_DEPTH_COMPONENT24
+ * -> GL_DEPTH_COMPONENT, GL_DEPTH24_STENCIL8 -> GL_DEPTH_STENCIL). Every
+ * glTexImage2D of stin's goes through it; the format and type stay the
+ * caller's. stin__sized_formats says whether the context takes sized ones. */
+GLenum stin__texture_format(const struct stin_context *ctx, GLenum sized);
+int stin__sized_formats(const struct stin_context *ctx);
+/* Whether a texture may have any size with mipmaps and GL_REPEAT (else
+ * stin_create_texture resamples to powers of two). */
+int stin__npot_textures(const struct stin_context *ctx);
 
 /* glEnable/glDisable and friends take an enum whose capability is audited. */
 #define GL_ENABLE(ctx, e) GL_ENUM(ctx, Enable, e)(e)

@@ -15,8 +15,8 @@ static void bind_clamped(stin_context *ctx, GLuint tex, GLint filter)
 /* The bound texture's level 0, w x h of `internal`, no data. */
 static void level0(stin_context *ctx, GLenum internal, GLenum format, GLenum type, int w, int h)
 {
-    GL_ENUM(ctx, TexImage2D, internal)(GL_TEXTURE_2D, 0, (GLint)internal, w, h, 0, format, type,
-                                       NULL);
+    GLenum f = stin__texture_format(ctx, internal);
+    GL_ENUM(ctx, TexImage2D, f)(GL_TEXTURE_2D, 0, (GLint)f, w, h, 0, format, type, NULL);
 }
 
 void stin__rt_texture(stin_context *ctx, GLuint tex, GLenum internal, GLenum format,

@@ -42,20 +42,29 @@ static const char *shared_chunk(const char *name)
 
 /* OpenGL ES: the same sources under a version and precision preamble that
  * replaces the file's #version line. On ES 2.0 shaders/gl2 runs as GLSL ES
- * 1.00; on ES 3.x every source runs as the context's GLSL ES 3.x0 (GLSL ES
- * 1.00 there has no shadow samplers or gl_FragDepth), shaders/gl2 with its
- * GLSL 1.10 names mapped, as the gl4 main files map them for the chunks
- * they share. Fragment stages get highp where the ES 2.0 part has it
+ * 1.00, gl_FragDepth mapped to GL_EXT_frag_depth's name where the driver
+ * has it; on ES 3.x every source runs as the context's GLSL ES 3.x0 (GLSL
+ * ES 1.00 has no shadow samplers), shaders/gl2 with its GLSL 1.10 names
+ * mapped, as the gl4 main files map them for the chunks they share. Fragment stages get highp where the ES 2.0 part has it
  * (GL_FRAGMENT_PRECISION_HIGH; ES 3.x always has), and the sampler types
  * without a default precision get one. STIN_ES marks the few differences
  * in the sources. */
-static const char es100_vertex[] = "#version 100\n#define STIN_ES 1\n";
+/* GLSL ES 1.00's samplers default to lowp, and a lowp lookup is what Mesa
+ * then returns: 10 bits of a depth texture (the outline's depth steps banded
+ * the floor); highp where the stage has it. */
+static const char es100_vertex[] =
+    "#version 100\n#define STIN_ES 1\nprecision highp sampler2D;\nprecision highp samplerCube;\n";
 static const char es100_fragment[] =
     "#version 100\n#define STIN_ES 1\n"
     /* the sources take derivatives (face normals, filter footprints) */
     "#extension GL_OES_standard_derivatives : enable\n"
+    /* gl_FragDepth (STIN_CAP_FRAG_DEPTH; programs that write it are built
+     * only where the capability is) */
+    "#ifdef GL_EXT_frag_depth\n#extension GL_EXT_frag_depth : enable\n"
+    "#define gl_FragDepth gl_FragDepthEXT\n#endif\n"
     "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
     "precision highp float;\nprecision highp int;\n"
+    "precision highp sampler2D;\nprecision highp samplerCube;\n"
     "#else\n"
     "precision mediump float;\nprecision mediump int;\n"
     "#endif\n";

@@ -76,10 +76,11 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_CSG_SCS,                0, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* depth peeling of the camera's layers: two samplers in the lit programs
      * (the previous layer's depth, the opaque depth); packed depth-stencil
-     * textures hold a layer's depth and the stencil volumes count in */
+     * textures hold a layer's depth and the stencil volumes count in; the
+     * composite writes the first layer's depth (gl_FragDepth) */
     {STIN_TECH_TRANSPARENCY_DEPTH_PEEL,      1,
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(MULTITEXTURE) |
-         BIT(VBO), GLSL_ANY, 0, 2, 0, 0, 0},
+         BIT(VBO) | BIT(FRAG_DEPTH), GLSL_ANY, 0, 2, 0, 0, 0},
     {STIN_TECH_TRANSPARENCY_SORTED,    2, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* dual depth peeling: depth-peel's needs on GLSL 1.50 (3.2+: the MAX
      * blend equation) with float colour targets (RG32F min-max, RGBA16F

@@ -242,7 +242,12 @@ static void outline_scene(run *r, stin_tier tier, const char *path, const char *
     }
     t.g.csg = products.products;
     t.g.csg_count = products.count;
-    if (tier == STIN_TIER_GL1) {
+    if (products.count &&
+        stin_query_choice(t.ctx, STIN_FEATURE_CSG).technique == STIN_TECH_CSG_OFF) {
+        snprintf(name, sizeof name, "%s/%s/outline", stin_tier_name(tier), label);
+        report(r, "SKIP", name, "no CSG technique runs here (%s)",
+               stin_query_choice(t.ctx, STIN_FEATURE_CSG).reason);
+    } else if (tier == STIN_TIER_GL1) {
         stin_frame_desc fd;
         stin_result res;
         snprintf(name, sizeof name, "%s/%s/outline-refused", stin_tier_name(tier), label);

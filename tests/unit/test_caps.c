@@ -442,7 +442,7 @@ static void test_detect_without_version_fails(void **state)
 #define DERIVATIVES "GL_OES_standard_derivatives"
 #define ES30_CORE                                                                        \
     (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) | \
-     BIT(ELEMENT_INDEX_UINT))
+     BIT(ELEMENT_INDEX_UINT) | BIT(FRAG_DEPTH))
 
 static void test_es_version_strings(void **state)
 {
@@ -500,10 +500,18 @@ static void test_es_extension_names(void **state)
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
               "GL_OES_depth_texture GL_OES_packed_depth_stencil GL_OES_vertex_array_object "
               "GL_EXT_occlusion_query_boolean GL_EXT_shadow_samplers GL_OES_texture_float "
-              "GL_EXT_color_buffer_float GL_OES_element_index_uint " DERIVATIVES);
+              "GL_EXT_color_buffer_float GL_OES_element_index_uint GL_EXT_frag_depth "
+              DERIVATIVES);
     /* any-samples queries are not the sample counts OCCLUSION_QUERY means */
     assert_int_equal(c.present, ES20_CORE | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
-                                    BIT(VAO) | BIT(SHADOW) | BIT(ELEMENT_INDEX_UINT));
+                                    BIT(VAO) | BIT(SHADOW) | BIT(ELEMENT_INDEX_UINT) |
+                                    BIT(FRAG_DEPTH));
+    /* gl_FragDepth: GLSL ES 1.00 has it only by GL_EXT_frag_depth; every
+     * desktop GLSL has it */
+    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", "GL_OES_depth_texture " DERIVATIVES);
+    assert_false(HAS(c, FRAG_DEPTH));
+    c = parse("2.1 Mesa", "1.20", "");
+    assert_true(HAS(c, FRAG_DEPTH));
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16",
               "GL_ARB_depth_texture GL_ARB_shadow GL_EXT_stencil_two_side GL_ARB_depth_clamp "
               "GL_ARB_texture_env_combine GL_EXT_depth_clamp GL_ARB_shader_objects");

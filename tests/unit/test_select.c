@@ -22,7 +22,7 @@
     (GL13_BITS | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(STENCIL_WRAP) |                   \
      BIT(STENCIL_TWO_SIDE) | BIT(DEPTH_CLAMP))
 #define GL21_BITS (GL14_BITS | BIT(VBO) | BIT(GLSL) | BIT(SEPARATE_STENCIL) | BIT(FBO) |  \
-                   BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH))
+                   BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH) | BIT(FRAG_DEPTH))
 #define GL33_CORE_BITS                                                                    \
     ((GL21_BITS & ~BIT(FIXED_FUNCTION)) | BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | \
      BIT(PACKED_DEPTH_STENCIL))
@@ -351,6 +351,12 @@ static void test_transparency_chain(void **state)
     assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_PACKED_DEPTH_STENCIL)));
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_DEPTH_PEEL);
+    /* its composite writes depth: GLSL ES 1.00 without GL_EXT_frag_depth */
+    gl21.present &= ~BIT(FRAG_DEPTH);
+    assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_SORTED);
+    assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_FRAG_DEPTH)));
+    gl21.present |= BIT(FRAG_DEPTH);
     forced[STIN_FEATURE_TRANSPARENCY] = STIN_TECH_TRANSPARENCY_DUAL_PEEL;
     assert_int_equal(stin__select(&gl21, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
