@@ -843,7 +843,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
       "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")                        \
     X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")                         \
     X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2") \
-    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")
+    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint") \
+    X(DERIVATIVES, "fragment derivatives (dFdx, dFdy)", 20, "")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -866,11 +867,11 @@ typedef struct stin_caps {
      * above are ES and GLSL ES ones, profile reads CORE (ES has no fixed
      * function), and each capability comes from the ES version that has it
      * in core or from an ES extension:
-     *   ES 2.0: GLSL (ES 1.00; counted only with OES_standard_derivatives,
-     *           which stin's shaders take: without it no tier runs and
-     *           stin_create says so), FBO, VBO, separate stencil, stencil
-     *           wrap, multitexture, cube maps;
-     *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
+     *   ES 2.0: GLSL (ES 1.00), FBO, VBO, separate stencil, stencil
+     *           wrap, multitexture, cube maps; DERIVATIVES only with
+     *           OES_standard_derivatives (without it the shaders take their
+     *           derivative-free paths: see DERIVATIVES below);
+     *   ES 3.0: + DERIVATIVES, VAO, depth textures, shadow compare, packed depth-stencil,
      *           float textures (counted only with EXT_color_buffer_float:
      *           stin renders into them);
      *   ES 3.1: + compute (detected, but stin's storage-buffer reads and

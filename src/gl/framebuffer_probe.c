@@ -85,10 +85,14 @@ static int alpha_bits(stin_context *ctx, GLuint name)
 static void probe_bits(stin_context *ctx, GLuint name)
 {
     GLint sample_buffers = 0;
+    /* ES 2.0 answers no attachment query of the default framebuffer
+     * (GL_INVALID_OPERATION) but GL_STENCIL_BITS of whichever is bound */
+    int attachments = ctx->caps.profile == STIN_GL_PROFILE_CORE &&
+                      !(ctx->caps.es && ctx->caps.gl_major < 3);
     ctx->target.name = name;
     ctx->target.stencil_bits = ctx->target.depth_bits = 0;
-    stin__framebuffer_bits(&ctx->gl, ctx->caps.profile == STIN_GL_PROFILE_CORE, name,
-                           &ctx->target.stencil_bits, &ctx->target.depth_bits);
+    stin__framebuffer_bits(&ctx->gl, attachments, name, &ctx->target.stencil_bits,
+                           &ctx->target.depth_bits);
     ctx->target.alpha_bits = alpha_bits(ctx, name);
     /* GL 1.3's query; here, not per frame: a query can wait for a threaded driver */
     if (10 * ctx->caps.gl_major + ctx->caps.gl_minor >= 13)

@@ -152,6 +152,14 @@
                                    GLint level), STIN_CAP_FBO, "glFramebufferTexture2DEXT") \
     X(GLenum, CheckFramebufferStatus, (GLenum target), STIN_CAP_FBO, "glCheckFramebufferStatusEXT") \
     X(GLboolean, IsFramebuffer, (GLuint fb), STIN_CAP_FBO, "glIsFramebufferEXT")           \
+    X(void, GenRenderbuffers, (GLsizei n, GLuint *rb), STIN_CAP_FBO, "glGenRenderbuffersEXT") \
+    X(void, DeleteRenderbuffers, (GLsizei n, const GLuint *rb), STIN_CAP_FBO,             \
+      "glDeleteRenderbuffersEXT")                                                          \
+    X(void, BindRenderbuffer, (GLenum target, GLuint rb), STIN_CAP_FBO, "glBindRenderbufferEXT") \
+    X(void, RenderbufferStorage, (GLenum target, GLenum internal, GLsizei w, GLsizei h),    \
+      STIN_CAP_FBO, "glRenderbufferStorageEXT")                                            \
+    X(void, FramebufferRenderbuffer, (GLenum target, GLenum att, GLenum rb_target, GLuint rb), \
+      STIN_CAP_FBO, "glFramebufferRenderbufferEXT")                                        \
     X(void, GetFramebufferAttachmentParameteriv, (GLenum target, GLenum att, GLenum pname, \
                                                   GLint *v), NEED_GL30, "")               \
     X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")         \
