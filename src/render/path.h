@@ -66,8 +66,8 @@ typedef struct stin__program {
     GLuint name;
     GLint u_model, u_view_proj, u_normal_matrix, u_terminator, u_eye, u_ambient, u_albedo, u_specular,
         u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
-    /* the draw's mesh's object units per unit of uv (surface_frame.glsl
-     * without derivatives) */
+    /* the draw's mesh's object lengths of a unit of u and of v
+     * (surface_frame.glsl without derivatives) */
     GLint u_uv_unit;
     /* surface chunks (surface/glsl.c): samplers and (scale, bias, min, max steps) */
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;

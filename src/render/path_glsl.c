@@ -475,11 +475,14 @@ static void draw_uniforms(stin_context *ctx, const stin__program *p, const stin_
                            d->csg == STIN__CSG_CAP || stin__displace_active(ctx, &d->material)
                                ? 0.0f
                                : 1.0f);
-    /* the mesh's mean edge over its mean uv edge: the surface's uv scale
+    /* the mesh's mean lengths of a unit of u and v: the surface's uv scale
      * where no derivatives tell it per pixel */
     if (p->u_uv_unit >= 0) {
-        const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
-        GL(ctx, Uniform1f)(p->u_uv_unit, m->uv_edge > 0.0f ? m->edge / m->uv_edge : 1.0f);
+        const float *unit = ctx->meshes[d->mesh_slot].uv_unit;
+        /* 0: a mesh stin made itself (CSG's near cap), unit scale */
+        const float v[4] = {unit[0] > 0.0f ? unit[0] : 1.0f, unit[1] > 0.0f ? unit[1] : 1.0f,
+                            0.0f, 0.0f};
+        GL(ctx, Uniform4fv)(p->u_uv_unit, 1, v);
     }
 }
 
