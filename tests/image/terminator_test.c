@@ -429,9 +429,12 @@ static void run_scene(run *r, stin_tier tier, const char *path, int open_mesh)
                         STIN_DEBUG_VOLUME_FACETS);
         /* without derivatives (the GLSL 1.10 programs bare ES 2.0 runs):
          * the band's facet facts asked per triangle on the CPU, map-pcf's
-         * geometric normal the interpolated one; once, on gl21's sphere */
+         * geometric normal the interpolated one; once, on gl21's sphere
+         * on egl */
         for (i = 0; !open_mesh && tier == STIN_TIER_GL2 && !strcmp(r->profile_name, "gl21") &&
-                    !strcmp(base, "terminator-sphere") && i < 2; i++)
+                    !strcmp(r->platform_name, "egl") && !strcmp(base, "terminator-sphere") &&
+                    i < 2;
+             i++)
             check_technique(&c, tier, scene_name,
                             i ? STIN_TECH_SHADOWS_MAP_PCF : STIN_TECH_SHADOWS_VOLUME,
                             STIN_DEBUG_NO_DERIVATIVES);
