@@ -42,13 +42,13 @@
 #define ES20_KEEP                                                                 \
     (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) | \
      BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
-/* The usual ES 2.0 extensions (OES_standard_derivatives has no bit of its
- * own), and EXT_frag_depth, which ES 2.0 parts with depth textures commonly
- * have and Mesa offers (depth peeling's composite writes depth); vertex
- * texture units are a limit of ES 2.0 (0 allowed), and llvmpipe has 32. */
+/* The usual ES 2.0 extensions, and EXT_frag_depth, which ES 2.0 parts with
+ * depth textures commonly have and Mesa offers (depth peeling's composite
+ * writes depth); vertex texture units are a limit of ES 2.0 (0 allowed),
+ * and llvmpipe has 32. */
 #define ES20_EXT_KEEP                                                             \
     (ES20_KEEP | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(ELEMENT_INDEX_UINT) | \
-     BIT(FRAG_DEPTH) | BIT(VERTEX_TEXTURE_FETCH))
+     BIT(DERIVATIVES) | BIT(FRAG_DEPTH) | BIT(VERTEX_TEXTURE_FETCH))
 /* ES 3.0 has no geometry, tessellation or compute stages (3.1, 3.2). */
 #define ES30_HIDE (BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) | BIT(COMPUTE))
 /* The ES extensions Mesa 22.3 lets a profile disable; OES_depth_texture,

@@ -41,12 +41,14 @@
  * against the same reference and bounds as desktop: per-pixel lighting,
  * stencil volumes (z-fail with the far plane at infinity: ES has no depth
  * clamp) and map-pcf on ES 3.0 and 3.2; volumes extruded by a geometry
- * shader and vdsm on ES 3.2. Not yet on ES: CSG below GL4 lighting (no depth
- * write-back without glDrawPixels), dual peeling and interval CSG (they
- * count samples; ES queries answer "any"), deep's and vdsm's storage-buffer
- * paths (COMPUTE stays off), vdsm's transform-feedback culling pass (it
- * culls in its geometry shader instead), and the bare ES 2.0 part (no
- * derivatives, depth textures or 32-bit indices): each falls back, logged.
+ * shader and vdsm on ES 3.2; on bare ES 2.0 (no derivatives, depth textures
+ * or 32-bit indices) the GL2 tier with the shaders' derivative-free paths
+ * (STIN_CAP_DERIVATIVES) and map-pcf's depth packed into RGBA8. Not yet on
+ * ES: CSG below GL4 lighting (no depth write-back without glDrawPixels),
+ * dual peeling and interval CSG (they count samples; ES queries answer
+ * "any"), deep's and vdsm's storage-buffer paths (COMPUTE stays off),
+ * vdsm's transform-feedback culling pass (it culls in its geometry shader
+ * instead): each falls back, logged.
  * desc.tier = STIN_TIER_AUTO picks the highest tier the context runs. Any other
  * value forces that tier; if the context (after desc.caps_mask) cannot run it,
  * stin_create fails with STIN_ERROR_UNSUPPORTED and logs the missing
@@ -226,9 +228,18 @@
  * does the 2x2 compare in the shader: the four texels around it, each lit
  * where the reference (clamped to [0,1]) is at most its depth, weighted
  * bilinearly as GL_LINEAR weights them, so the kernel, the biases and the
- * bounds are the same. Without depth textures (bare ES 2.0) map-pcf is not
- * offered: forcing it fails naming "depth textures" (depth packed into
- * RGBA8 is not built yet);
+ * bounds are the same. Without depth textures (STIN_CAP_DEPTH_TEXTURE:
+ * bare ES 2.0) each map is an RGBA8 colour texture (unsized GL_RGBA) that
+ * holds the casters' window depth in 24 bits (R high, B low, A 1), drawn
+ * with a depth renderbuffer of its size beside it (GL_DEPTH_COMPONENT16 on
+ * ES 2.0, 24 elsewhere: it only picks the nearest caster; the stored depth
+ * is the fragment's own, in 24 bits), and each tap unpacks the four texels
+ * and compares as above: the same kernel, biases and bounds. The packing
+ * needs a highp fragment float (24-bit significand; ES 2.0 parts without
+ * GL_FRAGMENT_PRECISION_HIGH round it). Displaced draws are drawn into
+ * packed maps like any caster; CSG products are not yet (their resolve
+ * writes depth only: they cast nothing there; on ES 2.0 there is no CSG
+ * below GL4 lighting anyway);
  * point lights get six 90-degree maps drawn before their pass into one
  * atlas (3 x 2 faces, one sampler; the face size halved while three faces
  * exceed GL_MAX_TEXTURE_SIZE), each face with only the casters whose bounds
@@ -830,6 +841,38 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
  * passes are left out) and the GLSL terminator band of stencil volumes (a
  * pixel or two on the terminator of a smooth split mesh). Client arrays
  * (no buffer objects: desktop GL 1.x) keep the block's 32-bit indices.
+ *
+ * DERIVATIVES (dFdx/dFdy in fragment shaders: core in desktop GLSL and GLSL
+ * ES 3.00, GL_OES_standard_derivatives on ES 2.0; never without GLSL;
+ * STIN_DEBUG_NO_DERIVATIVES hides it like the mask): without it every
+ * fragment stage is built with STIN_NO_DERIVATIVES defined and the GLSL 1.10
+ * sources take their derivative-free paths:
+ * - the geometric normal (map-pcf's and coloured's side of the surface, the
+ *   terminator rule's facet) is the interpolated vertex normal: exact where
+ *   a triangle's corners carry its facet's normal (a flat-shaded, unwelded
+ *   mesh), the curved surface's elsewhere. The terminator rule then still
+ *   lifts a lookup onto the curved surface, but cannot see a facet turned
+ *   from a light its shading normal faces: such a point is looked up, not
+ *   shadowed outright;
+ * - map-pcf's receiver-plane bias spans the plane of that normal (two
+ *   perpendiculars projected into the map: a slope-scaled bias from the
+ *   normal in light space) instead of the screen derivatives; the volumes'
+ *   CSG/displaced cast map (no normal there) compares each tap at the
+ *   point's own depth, its polygon offset the only bias;
+ * - the volumes' terminator band asks its facet facts (the facet's side of
+ *   the light and of the eye, the corners' normals on the eye's side, the
+ *   curved surface above the facet) of each triangle on the CPU, as the
+ *   fixed-function band does, and draws only those that pass; the shader
+ *   keeps the per-pixel "shading normal toward the light";
+ * - normal, parallax and pom take the tangent frame from the mesh's tangent
+ *   attribute (as before) and the uv scale from the mesh's mean edge over
+ *   its mean uv edge, times the model's scale along the tangent: the same
+ *   along both axes, exact for a mapping without stretch or skew; colour
+ *   maps take the moved uv's own footprint;
+ * - CSG's snap in multisampled targets has no slope band (ES 2.0 has no
+ *   multisampled targets).
+ * vdsm and deep shadows (GL4) need it: their facet normals cannot be
+ * replaced by a vertex normal; forcing them fails naming it.
  */
 #define STIN_CAP_LIST(X)                                                              \
     X(STENCIL, "stencil buffer", 11, "")                                              \
@@ -862,7 +905,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")                         \
     X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2") \
     X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")     \
-    X(FRAG_DEPTH, "fragment depth writes", 20, "")
+    X(FRAG_DEPTH, "fragment depth writes", 20, "")                                        \
+    X(DERIVATIVES, "fragment derivatives (dFdx, dFdy)", 20, "")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -885,11 +929,12 @@ typedef struct stin_caps {
      * above are ES and GLSL ES ones, profile reads CORE (ES has no fixed
      * function), and each capability comes from the ES version that has it
      * in core or from an ES extension:
-     *   ES 2.0: GLSL (ES 1.00; counted only with OES_standard_derivatives,
-     *           which stin's shaders take: without it no tier runs and
-     *           stin_create says so), FBO, VBO, separate stencil, stencil
-     *           wrap, multitexture, cube maps;
-     *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
+     *   ES 2.0: GLSL (ES 1.00), FBO, VBO, separate stencil, stencil
+     *           wrap, multitexture, cube maps; DERIVATIVES only with
+     *           OES_standard_derivatives (without it the shaders take their
+     *           derivative-free paths: see DERIVATIVES below), FRAG_DEPTH
+     *           only with EXT_frag_depth;
+     *   ES 3.0: + DERIVATIVES, VAO, depth textures, shadow compare, packed depth-stencil,
      *           fragment depth writes, float textures (counted only with EXT_color_buffer_float:
      *           stin renders into them);
      *   ES 3.1: + compute (detected, but stin's storage-buffer reads and
@@ -1589,6 +1634,9 @@ typedef struct stin_desc {
 /* sorted: the blended draws lit unshadowed in the light batches, as before
  * the map techniques shadowed them; a test that the shadows matter */
 #define STIN_DEBUG_SORTED_UNSHADOWED 0x10000000000000ull
+/* hide STIN_CAP_DERIVATIVES as caps_mask would: the shaders' derivative-free
+ * paths (bare OpenGL ES 2.0's) on any context, for tests */
+#define STIN_DEBUG_NO_DERIVATIVES 0x20000000000000ull
 
 typedef struct stin_context stin_context;
 

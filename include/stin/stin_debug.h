@@ -35,7 +35,8 @@ typedef struct stin_debug_map {
     uint32_t size;      /* texels a side the frame drew, from texel (0, 0) */
     uint32_t allocated; /* texels a side of the texture */
     int depth;          /* 1: GL_DEPTH_COMPONENT (map-pcf, map-depth); 0: map-combine's
-                         * RGBA8 light-depth ramp */
+                         * RGBA8 light-depth ramp, or map-pcf's RGBA8 map without depth
+                         * textures (window depth in 24 bits: R high, B low, A 1) */
 } stin_debug_map;
 
 stin_result stin_debug_query_shadow_map(const stin_context *ctx, uint32_t light,

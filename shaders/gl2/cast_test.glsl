@@ -35,12 +35,18 @@ float cast_visibility()
     vec3 t = c.xyz / c.w;
     if (u_cast_faces == 1 && (any(lessThan(t.xy, lo)) || any(greaterThan(t.xy, hi))))
         return 1.0; // outside a spot or directional map: no product casts there
+#ifdef STIN_NO_DERIVATIVES
+    // no derivatives and no normal here: every tap compares the point's own
+    // depth, the map's slope-scaled polygon offset the only bias
+    vec2 dz = vec2(0.0);
+#else
     vec4 ex = m * vec4(dFdx(v_world), 0.0);
     vec4 ey = m * vec4(dFdy(v_world), 0.0);
     vec3 tx = (ex.xyz - t * ex.w) / c.w, ty = (ey.xyz - t * ey.w) / c.w;
     float det = tx.x * ty.y - tx.y * ty.x;
     vec2 dz = abs(det) > 1e-12 ? vec2(tx.z * ty.y - ty.z * tx.y, tx.x * ty.z - ty.x * tx.z) / det
                                : vec2(0.0);
+#endif
     int r = int(u_cast_params.y + 0.5);
     float sum = 0.0, n = 0.0;
     for (int y = -r; y <= r; y++)

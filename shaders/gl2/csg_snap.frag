@@ -29,7 +29,11 @@ bool on_surface(vec2 at, float z, float band)
 void main()
 {
     float z = gl_FragCoord.z;
+#ifdef STIN_NO_DERIVATIVES
+    vec2 slope = vec2(0.0); // no slope band (a multisampled target's: ES 2.0 has none)
+#else
     vec2 slope = vec2(dFdx(z), dFdy(z)); // before any branch: derivatives
+#endif
     float band = u_params.x + u_params.y * gl_FragCoord.w +
                  u_samples.x * (abs(slope.x) + abs(slope.y));
     gl_FragColor = vec4(floor(u_samples.z / 256.0) / 255.0, mod(u_samples.z, 256.0) / 255.0, 0.0,

@@ -6,7 +6,8 @@
 // sampler serves the six and a fragment runs one face's taps.
 // Each map: world -> [0,1] texture space by u_shadow_matrix[face] (a face's
 // into its cell). Bias: each tap compares the depth of the receiver's own
-// plane at the tap (receiver-plane depth bias, from the screen derivatives),
+// plane at the tap (receiver-plane depth bias, from the screen derivatives,
+// or without them from the plane of the normal: terminator_point.glsl),
 // and only where the light grazes the receiver is the position pushed along
 // the geometric normal, toward the side the eye sees, by up to
 // u_shadow_params.z times its clip w (1.5 texels' width at the point: w is 1
@@ -109,8 +110,8 @@ float pcf_visibility(int i)
 {
     if (u_shadow_kind == 0)
         return 1.0; // a shadowed pass lights one light, so i is always that one
-    vec3 wx = dFdx(v_world), wy = dFdy(v_world);
-    vec3 ng = normalize(cross(wx, wy));
+    vec3 wx, wy, ng = geometric_normal();
+    receiver_span(ng, wx, wy);
     vec4 light = u_lights[4 * i];
     vec2 texel = u_shadow_params.xw;
     // one map: no clamp of our own (its edge clamp is the same)

@@ -9,6 +9,9 @@ uniform sampler2D u_normal_tex;  // unit 1: 128 + 127 n, A = mean-normal length
 uniform sampler2D u_height_tex;  // unit 2: height in R, 1 = top, level 0 only
 uniform vec4 u_surface;          // height scale, height bias, pom min steps, max steps
 uniform int u_self_shadow;       // 0 off, 1 hard, 2 soft
+#ifdef STIN_NO_DERIVATIVES
+uniform vec4 u_uv_unit;          // xy: the mesh's mean object lengths of a unit of u, of v
+#endif
 vec3 s_t, s_b, s_n;              // orthonormal tangent frame, B = w * cross(N, T)
 vec2 s_au, s_av;                 // uv change per scene unit along T and along B
 // screen derivatives of the unmoved uv (set by surface_frame; initialised so
@@ -29,6 +32,15 @@ void surface_frame()
     s_n = n;
     s_t = dot(t, t) > 1e-20 ? normalize(t) : normalize(cross(n, abs(n.x) > 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
     s_b = (v_tangent.w < 0.0 ? -1.0 : 1.0) * cross(n, s_t);
+#ifdef STIN_NO_DERIVATIVES
+    // No derivatives: the uv scale is the mesh's mean length of a unit of u
+    // and of v (u_uv_unit) times the model's scale along T (the world
+    // tangent's length; B taken as scaled alike): exact for a mapping
+    // without skew; colour maps take the moved uv's own footprint.
+    vec2 unit = max(length(v_tangent.xyz) * u_uv_unit.xy, vec2(1e-20));
+    s_au = vec2(1.0 / unit.x, 0.0);
+    s_av = vec2(0.0, 1.0 / unit.y);
+#else
     // The surface is affine per triangle: its world and uv derivatives give
     // uv = A (offset . T, offset . B) exactly, whatever the uv scale or skew.
     vec3 px = dFdx(v_world), py = dFdy(v_world);
@@ -43,6 +55,7 @@ void surface_frame()
         s_au = vec2(1.0, 0.0);
         s_av = vec2(0.0, 1.0);
     }
+#endif
     s_depth = 0.0;
 }
 

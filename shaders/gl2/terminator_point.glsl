@@ -3,6 +3,35 @@
 // the translucent ones': where a per-pixel shadow lookup starts (map-pcf,
 // deep, coloured), from lit.vert's v_plane_* varyings.
 
+// The facet's unit normal (either side): from the screen derivatives, or
+// without them (STIN_NO_DERIVATIVES) the interpolated vertex normal, which
+// is the facet's own where the corners carry their facet's normal (a
+// flat-shaded, unwelded mesh) and the curved surface's elsewhere: the rule
+// below then sees no facet turned from the light that the shading normal
+// faces (its lookup point is still lifted onto the curved surface).
+vec3 geometric_normal()
+{
+#ifdef STIN_NO_DERIVATIVES
+    return dot(v_normal, v_normal) > 1e-20 ? normalize(v_normal) : vec3(0.0, 0.0, 1.0);
+#else
+    return normalize(cross(dFdx(v_world), dFdy(v_world)));
+#endif
+}
+
+// Two world vectors that span the receiver's plane at v_world: its screen
+// derivatives, or without them two perpendiculars of its normal ng (a
+// receiver-plane bias only needs the plane, not the pixel's footprint).
+void receiver_span(vec3 ng, out vec3 wx, out vec3 wy)
+{
+#ifdef STIN_NO_DERIVATIVES
+    wx = normalize(cross(ng, abs(ng.x) > 0.9 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0)));
+    wy = cross(ng, wx);
+#else
+    wx = dFdx(v_world);
+    wy = dFdy(v_world);
+#endif
+}
+
 // The terminator rule (the test reference's and vdsm's; Hanika, "Hacking
 // the Shadow Terminator", 2021). On a triangle whose vertex normals bend away
 // from its facet ng (eye side), the lookup starts from the point on the

@@ -39,7 +39,7 @@ vec3 coloured_transmittance(int light)
     // the side of the facet the eye sees; the lookup starts from the
     // terminator rule's point and is pushed along its normal (the facet's
     // on a flat triangle) by the offset at its clip w
-    vec3 side = normalize(cross(dFdx(v_world), dFdy(v_world)));
+    vec3 side = geometric_normal();
     side *= sign(dot(side, u_eye - v_world) + 1e-30);
     vec3 normal;
     vec3 start = terminator_point(side, normal);

@@ -41,7 +41,11 @@ float s_normal_length = 1.0;
 #define shadow2D(s, c) vec4(texture(s, c))
 // The unmoved footprint: no mip jumps where pom steps; level 0 of the height
 // field, defined inside loops too.
+#ifdef STIN_NO_DERIVATIVES // masked: no footprint known, the moved uv's own
+#define SAMPLE_FOOTPRINT(t, uv, dx, dy) texture(t, uv)
+#else
 #define SAMPLE_FOOTPRINT(t, uv, dx, dy) textureGrad(t, uv, dx, dy)
+#endif
 #define SAMPLE_LEVEL0(t, uv) textureLod(t, uv, 0.0)
 
 // @chunks

@@ -162,6 +162,7 @@ void stin__mesh_derive(stin_context *ctx, stin__mesh_slot *m, int uvs_changed)
     const uint32_t *tris = ctx->indices + 3u * m->first_triangle;
     stin__mesh_mean_edges(verts, tris, m->triangle_count, uvs_changed ? &m->uv_edge : NULL,
                           &m->edge);
+    stin__mesh_uv_units(verts, tris, m->triangle_count, m->uv_unit);
     m->smooth = stin__mesh_smooth(verts, tris, m->triangle_count);
     bounds(&m->info, verts, m->vertex_count);
 }

@@ -56,6 +56,8 @@ typedef struct stin__mesh_slot {
     float uv_edge;            /* mean uv length of its edges (displacement's coarse log) */
     float edge;               /* mean object-space length of its edges (uv_edge / edge:
                                * displacement's uv per unit, its mip level) */
+    float uv_unit[2];         /* mean object length of a unit of u, of v (surface
+                               * detail without derivatives) */
     int smooth;               /* some triangle's vertex normals bend away from its
                                * facet: the terminator rule applies (stin__mesh_smooth) */
     /* what stin_update_mesh needs of the creation: the caller's vertex
@@ -137,6 +139,11 @@ uint32_t stin__weld_positions(stin__vertex *verts, uint32_t n, float tolerance, 
 uint32_t stin__weld_mix(uint32_t h);
 /* Bytes of scratch the adjacency build needs for these sizes. */
 size_t stin__adjacency_scratch_bytes(uint32_t vertex_count, uint32_t tri_count);
+/* The mean object length of a unit of u (out[0]) and of v (out[1]) over
+ * the triangles whose uvs have a gradient; 1 where none has. */
+void stin__mesh_uv_units(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
+                         float out[2]);
+
 /* Per-vertex tangents (Gram-Schmidt, handedness in w); uses scratch. */
 void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint32_t *tris,
                          uint32_t tri_count, float *scratch_bitangents, int have_uvs);

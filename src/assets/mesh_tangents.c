@@ -109,6 +109,45 @@ static void perpendicular(const float n[3], float out[3])
     normalize3(out);
 }
 
+/* Triangle t's position gradients along u (s) and v (u); 0 where its uvs
+ * have none. */
+static int uv_gradients(const stin__vertex *verts, const uint32_t *tris, uint32_t t, float s[3],
+                        float u[3])
+{
+    const stin__vertex *a = &verts[tris[3 * t]], *b = &verts[tris[3 * t + 1]],
+                       *c = &verts[tris[3 * t + 2]];
+    float e1[3], e2[3], du1 = b->uv[0] - a->uv[0], dv1 = b->uv[1] - a->uv[1],
+                        du2 = c->uv[0] - a->uv[0], dv2 = c->uv[1] - a->uv[1];
+    float det = du1 * dv2 - du2 * dv1;
+    int j;
+    if (det == 0.0f || !stin__isfinite(1.0f / det))
+        return 0; /* no uv gradient on this triangle */
+    sub3(e1, b->position, a->position);
+    sub3(e2, c->position, a->position);
+    for (j = 0; j < 3; j++) {
+        s[j] = (dv2 * e1[j] - dv1 * e2[j]) / det;
+        u[j] = (du1 * e2[j] - du2 * e1[j]) / det;
+    }
+    return 1;
+}
+
+void stin__mesh_uv_units(const stin__vertex *verts, const uint32_t *tris, uint32_t tri_count,
+                         float out[2])
+{
+    double su = 0.0, sv = 0.0;
+    uint32_t t, n = 0;
+    for (t = 0; t < tri_count; t++) {
+        float s[3], u[3];
+        if (!uv_gradients(verts, tris, t, s, u))
+            continue;
+        su += stin__sqrtf(dot3(s, s));
+        sv += stin__sqrtf(dot3(u, u));
+        n++;
+    }
+    out[0] = n && su > 0.0 ? (float)(su / n) : 1.0f;
+    out[1] = n && sv > 0.0 ? (float)(sv / n) : 1.0f;
+}
+
 void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint32_t *tris,
                          uint32_t tri_count, float *acc, int have_uvs)
 {
@@ -117,20 +156,10 @@ void stin__mesh_tangents(stin__vertex *verts, uint32_t vertex_count, const uint3
         acc[i] = 0.0f;
     if (have_uvs) {
         for (t = 0; t < tri_count; t++) {
-            const stin__vertex *a = &verts[tris[3 * t]], *b = &verts[tris[3 * t + 1]],
-                               *c = &verts[tris[3 * t + 2]];
-            float e1[3], e2[3], du1 = b->uv[0] - a->uv[0], dv1 = b->uv[1] - a->uv[1],
-                                du2 = c->uv[0] - a->uv[0], dv2 = c->uv[1] - a->uv[1];
-            float det = du1 * dv2 - du2 * dv1, s[3], u[3];
+            float s[3], u[3];
             int k, j;
-            if (det == 0.0f || !stin__isfinite(1.0f / det))
-                continue; /* no uv gradient on this triangle */
-            sub3(e1, b->position, a->position);
-            sub3(e2, c->position, a->position);
-            for (j = 0; j < 3; j++) {
-                s[j] = (dv2 * e1[j] - dv1 * e2[j]) / det;
-                u[j] = (du1 * e2[j] - du2 * e1[j]) / det;
-            }
+            if (!uv_gradients(verts, tris, t, s, u))
+                continue;
             for (k = 0; k < 3; k++) {
                 float *ac = acc + 6u * tris[3 * t + k];
                 for (j = 0; j < 3; j++) {

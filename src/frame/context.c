@@ -455,7 +455,11 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
         if (r != STIN_OK)
             return r;
     }
-    r = stin__caps_detect(&ctx->gl, ctx->gl_loaded, d.caps_mask, d.max_gl_version, &ctx->caps);
+    r = stin__caps_detect(&ctx->gl, ctx->gl_loaded,
+                          d.caps_mask | (d.debug_flags & STIN_DEBUG_NO_DERIVATIVES
+                                             ? STIN_CAP_BIT(STIN_CAP_DERIVATIVES)
+                                             : 0u),
+                          d.max_gl_version, &ctx->caps);
     if (r != STIN_OK) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_CAPS,
                   "stin_create: no current GL context (GL_VERSION unreadable)");

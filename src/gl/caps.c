@@ -16,12 +16,11 @@ static const char *const cap_extensions[] = {
 };
 
 /* OpenGL ES: the ES version that has each capability in core and the ES
- * extensions that give it earlier; `also` must be listed as well, below the
- * ES version `also_core` that has it in core (float textures are core in
- * ES 3.0 but colour-renderable, which is what stin renders into, only with
- * EXT_color_buffer_float; stin's GLSL sources take derivatives (face
- * normals, filter footprints), core in GLSL ES 3.00 and an extension of
- * ES 2.0, without which stin has no shaders to run). Capabilities left out are
+ * extensions that give it earlier; `also` must be listed as well (float
+ * textures are core in ES 3.0 but colour-renderable, which is what stin
+ * renders into, only with EXT_color_buffer_float). Fragment derivatives are
+ * core in GLSL ES 3.00 and OES_standard_derivatives on ES 2.0 (without them
+ * the shaders take their derivative-free paths). Capabilities left out are
  * never present on ES: fixed function and its texture environments, EXT's
  * two-sided stencil (ES 2.0 has separate stencil), depth clamp (Mesa's
  * EXT_depth_clamp is left to a later change: volumes take the far plane at
@@ -34,7 +33,6 @@ typedef struct es_rule {
     int version;            /* ES major * 10 + minor, 0 = never core */
     const char *extensions; /* any one of them gives it */
     const char *also;       /* NULL, or one that must be listed too */
-    int also_core;          /* the ES version from which `also` is core, 0 = never */
 } es_rule;
 
 static const es_rule es_rules[STIN_CAP_COUNT] = {
@@ -46,7 +44,7 @@ static const es_rule es_rules[STIN_CAP_COUNT] = {
     [STIN_CAP_STENCIL_WRAP] = {20, "", NULL},
     [STIN_CAP_SEPARATE_STENCIL] = {20, "", NULL},
     [STIN_CAP_VBO] = {20, "", NULL},
-    [STIN_CAP_GLSL] = {20, "", "GL_OES_standard_derivatives", 30},
+    [STIN_CAP_GLSL] = {20, "", NULL},
     [STIN_CAP_FBO] = {20, "", NULL},
     [STIN_CAP_FLOAT_TEXTURE] = {30, "", "GL_EXT_color_buffer_float"},
     [STIN_CAP_VAO] = {30, "GL_OES_vertex_array_object", NULL},
@@ -56,6 +54,7 @@ static const es_rule es_rules[STIN_CAP_COUNT] = {
     [STIN_CAP_PACKED_DEPTH_STENCIL] = {30, "GL_OES_packed_depth_stencil", NULL},
     [STIN_CAP_ELEMENT_INDEX_UINT] = {30, "GL_OES_element_index_uint", NULL},
     [STIN_CAP_FRAG_DEPTH] = {30, "GL_EXT_frag_depth", NULL},
+    [STIN_CAP_DERIVATIVES] = {30, "GL_OES_standard_derivatives", NULL},
 };
 
 int stin__token_in_list(const char *list, const char *token, size_t token_len)
@@ -197,8 +196,7 @@ static uint64_t es_bits(const stin__caps_input *in, int ver)
     for (c = 0; c < STIN_CAP_COUNT; c++) {
         const es_rule *r = &es_rules[c];
         int got = (r->version > 0 && ver >= r->version) || (ext & STIN_CAP_BIT(c));
-        if (got && (!r->also || (r->also_core > 0 && ver >= r->also_core) ||
-                    (also & STIN_CAP_BIT(c))))
+        if (got && (!r->also || (also & STIN_CAP_BIT(c))))
             have |= STIN_CAP_BIT(c);
     }
     return have;
@@ -218,7 +216,7 @@ static uint64_t desktop_bits(const stin__caps_input *in, int ver)
 
 int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
 {
-    int ver, glsl, es, glsl_rule;
+    int ver, glsl, es;
     uint64_t have;
     if (!parse_version(in->version, &out->gl_major, &out->gl_minor))
         return 0;
@@ -244,21 +242,19 @@ int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
     /* ES has one profile, without fixed function: "compatibility" is not it */
     out->profile = in->core_profile || es ? STIN_GL_PROFILE_CORE : STIN_GL_PROFILE_COMPATIBILITY;
     have = es ? es_bits(in, ver) : desktop_bits(in, ver);
-    /* ES 2.0's GLSL counts only with the derivatives stin's sources take
-     * (es_rules); the version rule below decides the rest. */
-    glsl_rule = !es || (have & STIN_CAP_BIT(STIN_CAP_GLSL));
     /* Capabilities that are not a plain version-or-extension rule. */
     have &= ~(STIN_CAP_BIT(STIN_CAP_GLSL) | STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER) |
               STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION) | STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH));
-    if (ver >= 20 && glsl >= (es ? 10 : 11) && glsl_rule) /* GLSL ES 1.00 reads 1.0 */
+    if (ver >= 20 && glsl >= (es ? 10 : 11)) /* GLSL ES 1.00 reads 1.0 */
         have |= STIN_CAP_BIT(STIN_CAP_GLSL);
     if (ver >= 32 && glsl >= (es ? 32 : 15))
         have |= STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER);
     if (!in->core_profile && !es)
         have |= STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION);
     have &= ~caps_missing_entry_points(in->loaded, es);
-    if (!(have & STIN_CAP_BIT(STIN_CAP_GLSL))) /* geometry shaders are GLSL shaders */
-        have &= ~STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER);
+    if (!(have & STIN_CAP_BIT(STIN_CAP_GLSL))) /* geometry shaders, derivatives, frag depth are GLSL's */
+        have &= ~(STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER) | STIN_CAP_BIT(STIN_CAP_DERIVATIVES) |
+                  STIN_CAP_BIT(STIN_CAP_FRAG_DEPTH));
     out->hidden = have & in->caps_mask;
     out->present = have & ~in->caps_mask;
     return 1;

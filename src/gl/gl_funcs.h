@@ -156,6 +156,14 @@
     X(void, BlitFramebuffer, (GLint sx0, GLint sy0, GLint sx1, GLint sy1, GLint dx0,       \
                               GLint dy0, GLint dx1, GLint dy1, GLbitfield mask,            \
                               GLenum filter), NEED_CHECKED, "glBlitFramebufferEXT")        \
+    X(void, GenRenderbuffers, (GLsizei n, GLuint *rb), STIN_CAP_FBO, "glGenRenderbuffersEXT") \
+    X(void, DeleteRenderbuffers, (GLsizei n, const GLuint *rb), STIN_CAP_FBO,             \
+      "glDeleteRenderbuffersEXT")                                                          \
+    X(void, BindRenderbuffer, (GLenum target, GLuint rb), STIN_CAP_FBO, "glBindRenderbufferEXT") \
+    X(void, RenderbufferStorage, (GLenum target, GLenum internal, GLsizei w, GLsizei h),    \
+      STIN_CAP_FBO, "glRenderbufferStorageEXT")                                            \
+    X(void, FramebufferRenderbuffer, (GLenum target, GLenum att, GLenum rb_target, GLuint rb), \
+      STIN_CAP_FBO, "glFramebufferRenderbufferEXT")                                        \
     X(void, GetFramebufferAttachmentParameteriv, (GLenum target, GLenum att, GLenum pname, \
                                                   GLint *v), NEED_GL30, "")               \
     X(void, GenerateMipmap, (GLenum target), STIN_CAP_FBO, "glGenerateMipmapEXT")         \

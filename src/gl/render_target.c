@@ -36,6 +36,19 @@ void stin__rt_shadow_map(stin_context *ctx, GLuint tex, int w, int h)
     level0(ctx, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
 }
 
+GLuint stin__rt_depth_renderbuffer(stin_context *ctx, int w, int h)
+{
+    GLuint rb = 0;
+    /* ES 2.0 renders depth in 16 bits (24 only by OES_depth24) */
+    GLenum internal =
+        ctx->caps.es && ctx->caps.gl_major < 3 ? GL_DEPTH_COMPONENT16 : GL_DEPTH_COMPONENT24;
+    GL(ctx, GenRenderbuffers)(1, &rb);
+    GL(ctx, BindRenderbuffer)(GL_RENDERBUFFER, rb);
+    GL(ctx, RenderbufferStorage)(GL_RENDERBUFFER, internal, w, h);
+    GL(ctx, BindRenderbuffer)(GL_RENDERBUFFER, 0);
+    return rb;
+}
+
 /* Binds fbo and attaches the textures that are not 0. */
 static void attach(stin_context *ctx, GLuint fbo, GLuint color, GLuint depth, GLuint stencil)
 {

@@ -20,6 +20,11 @@ void stin__rt_texture(struct stin_context *ctx, GLuint tex, GLenum internal, GLe
  * bound. */
 void stin__rt_shadow_map(struct stin_context *ctx, GLuint tex, int w, int h);
 
+/* A new w x h depth renderbuffer (DEPTH_COMPONENT16 on ES 2.0, 24
+ * elsewhere): the depth test beside a colour target that holds the depth
+ * itself (map-pcf's packed maps); GL_RENDERBUFFER left unbound. */
+GLuint stin__rt_depth_renderbuffer(struct stin_context *ctx, int w, int h);
+
 /* Binds `fbo` and attaches the 2D textures that are not 0: `color` to colour
  * attachment 0, `depth` to the depth, `stencil` to the stencil attachment;
  * the framebuffer's draw and read buffers stay as they are (a caller may

@@ -3,9 +3,10 @@
 #include "internal.h"
 
 #define MAX_CHUNKS 8
-/* version line, precision, defines' version line and defines, main text,
+/* the ES preamble (version line, derivatives, frag depth, precision) or a
+ * tessellation version line, the context's defines, defines, main text,
  * chunks, the main text after the chunks */
-#define MAX_PARTS (MAX_CHUNKS + 6)
+#define MAX_PARTS (MAX_CHUNKS + 8)
 #define CHUNK_MARKER "// @chunks"
 
 /* Where the marker line starts in src, or NULL. */
@@ -51,17 +52,18 @@ static const char *shared_chunk(const char *name)
  * in the sources. */
 /* GLSL ES 1.00's samplers default to lowp, and a lowp lookup is what Mesa
  * then returns: 10 bits of a depth texture (the outline's depth steps banded
- * the floor); highp where the stage has it. */
-static const char es100_vertex[] =
-    "#version 100\n#define STIN_ES 1\nprecision highp sampler2D;\nprecision highp samplerCube;\n";
-static const char es100_fragment[] =
-    "#version 100\n#define STIN_ES 1\n"
-    /* the sources take derivatives (face normals, filter footprints) */
-    "#extension GL_OES_standard_derivatives : enable\n"
-    /* gl_FragDepth (STIN_CAP_FRAG_DEPTH; programs that write it are built
-     * only where the capability is) */
+ * the floor); highp where the stage has it. #extension lines come before
+ * any statement, so the precision lines come last. */
+static const char es100_version[] = "#version 100\n#define STIN_ES 1\n";
+static const char es100_vertex[] = "precision highp sampler2D;\nprecision highp samplerCube;\n";
+/* fragment derivatives where the context has them (STIN_CAP_DERIVATIVES) */
+static const char es100_derivatives[] = "#extension GL_OES_standard_derivatives : enable\n";
+/* gl_FragDepth (STIN_CAP_FRAG_DEPTH; programs that write it are built only
+ * where the capability is) */
+static const char es100_frag_depth[] =
     "#ifdef GL_EXT_frag_depth\n#extension GL_EXT_frag_depth : enable\n"
-    "#define gl_FragDepth gl_FragDepthEXT\n#endif\n"
+    "#define gl_FragDepth gl_FragDepthEXT\n#endif\n";
+static const char es100_fragment[] =
     "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
     "precision highp float;\nprecision highp int;\n"
     "precision highp sampler2D;\nprecision highp samplerCube;\n"
@@ -92,14 +94,27 @@ static const char *es3_version(const stin_context *ctx)
     return v >= 32 ? "#version 320 es\n" : v == 31 ? "#version 310 es\n" : "#version 300 es\n";
 }
 
-/* The parts that replace the #version line of `name` on ES (count, at most 3). */
+static int has_derivatives(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DERIVATIVES)) != 0;
+}
+
+/* The parts that replace the #version line of `name` on ES (count, at most 4). */
 static int es_preamble(const stin_context *ctx, GLenum type, const char *name,
                        const GLchar **parts)
 {
-    int fragment = type == GL_FRAGMENT_SHADER;
+    int fragment = type == GL_FRAGMENT_SHADER, n = 1;
     if (ctx->caps.gl_major < 3) {
-        parts[0] = fragment ? es100_fragment : es100_vertex;
-        return 1;
+        parts[0] = es100_version;
+        if (!fragment) {
+            parts[n++] = es100_vertex;
+            return n;
+        }
+        if (has_derivatives(ctx))
+            parts[n++] = es100_derivatives;
+        parts[n++] = es100_frag_depth;
+        parts[n++] = es100_fragment;
+        return n;
     }
     parts[0] = es3_version(ctx);
     parts[1] = es3_precision;
@@ -122,13 +137,28 @@ static const char *tess_version(const stin_context *ctx)
     return "#version 150\n#extension GL_ARB_tessellation_shader : require\n#define STIN_PRECISE\n";
 }
 
+/* A fragment stage without derivatives takes the sources' derivative-free
+ * paths (stin.h, DERIVATIVES), and without depth textures reads maps packed
+ * into colour (pcf_tap_depth.glsl); NULL where nothing is defined. */
+static const char *context_defines(const stin_context *ctx, GLenum type)
+{
+    static const char *const lines[4] = {
+        NULL, "#define STIN_NO_DERIVATIVES 1\n", "#define STIN_NO_DEPTH_TEXTURE 1\n",
+        "#define STIN_NO_DERIVATIVES 1\n#define STIN_NO_DEPTH_TEXTURE 1\n"};
+    int depth = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE)) != 0;
+    if (type != GL_FRAGMENT_SHADER)
+        return NULL;
+    return lines[(has_derivatives(ctx) ? 0 : 1) + (depth ? 0 : 2)];
+}
+
 /* The main file's text up to its "// @chunks" line, then each chunk, then
  * the rest: one shader from several embedded files, without copying (GL
- * takes the pieces with their lengths); defines (or NULL) go in after the
- * #version line. */
+ * takes the pieces with their lengths); the context's defines and then
+ * defines (or NULL) go in after the #version line. */
 static GLuint compile(stin_context *ctx, GLenum type, const char *name,
                       const char *const *chunks, const char *defines, char *msg, size_t size)
 {
+    const char *own = context_defines(ctx, type);
     const char *src = stin__shader_source(name), *marker;
     const GLchar *parts[MAX_PARTS];
     GLint lengths[MAX_PARTS];
@@ -161,12 +191,7 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
         while (*src && *src != '\n')
             src++;
     }
-    if (count && defines) {
-        parts[count] = defines;
-        lengths[count++] = -1;
-        defines = NULL;
-    }
-    if (defines) { /* after the file's #version line, which must come first */
+    if (!count && (own || defines)) { /* after the file's #version line, which comes first */
         const char *line = src;
         while (*src && *src != '\n')
             src++;
@@ -174,6 +199,12 @@ static GLuint compile(stin_context *ctx, GLenum type, const char *name,
             src++;
         parts[count] = line;
         lengths[count++] = (GLint)(src - line);
+    }
+    if (own) {
+        parts[count] = own;
+        lengths[count++] = -1;
+    }
+    if (defines) {
         parts[count] = defines;
         lengths[count++] = -1;
     }

@@ -57,6 +57,8 @@ enum {
     STIN__PROG_FLAT,
     STIN__PROG_VOLUME,
     STIN__PROG_BAND,
+    /* shadow-map depth packed into colour (no depth textures: map-pcf) */
+    STIN__PROG_PACKED_DEPTH,
     STIN__PROG_COUNT
 };
 #define STIN__LIGHTS_PER_PASS 8
@@ -64,6 +66,9 @@ typedef struct stin__program {
     GLuint name;
     GLint u_model, u_view_proj, u_normal_matrix, u_terminator, u_eye, u_ambient, u_albedo, u_specular,
         u_shininess, u_light_count, u_lights, u_albedo_tex, u_has_albedo_tex, u_color;
+    /* the draw's mesh's object lengths of a unit of u and of v
+     * (surface_frame.glsl without derivatives) */
+    GLint u_uv_unit;
     /* surface chunks (surface/glsl.c): samplers and (scale, bias, min, max steps) */
     GLint u_normal_tex, u_height_tex, u_surface, u_self_shadow;
     /* map-pcf chunk (shadow/map_pcf.c): one sampler, a light's map or a

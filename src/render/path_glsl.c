@@ -4,11 +4,13 @@
  * lights in batches of 8 with additive passes, the passes the shadow
  * schedule needs, and the AOV outputs. */
 #include "render/glsl_private.h"
+#include "render/terminator_fixed.h"
 
-static const char *const vert_names[STIN__PROG_COUNT] = {"lit.vert", "lit.vert", "lit.vert",
-                                                         "volume.vert", "lit.vert"};
+static const char *const vert_names[STIN__PROG_COUNT] = {
+    "lit.vert", "lit.vert", "lit.vert", "volume.vert", "lit.vert", "volume.vert"};
 static const char *const frag_names[STIN__PROG_COUNT] = {
-    "lit.frag", "normal.frag", "flat.frag", "flat.frag", "terminator_band.frag"};
+    "lit.frag", "normal.frag", "flat.frag", "flat.frag", "terminator_band.frag",
+    "depth_packed.frag"};
 /* a program's fragment chunks, the terminator rule's lookup point, the
  * shadow technique's and the features' (render/path_features.h): at most
  * what gl/shader.c splices */
@@ -35,6 +37,7 @@ static const stin__uniform_name program_uniforms[] = {
     STIN__UNIFORM(stin__program, u_shadow_soft, "u_shadow_soft"),
     STIN__UNIFORM(stin__program, u_shadow_depth, "u_shadow_depth"),
     STIN__UNIFORM(stin__program, u_color, "u_color"),
+    STIN__UNIFORM(stin__program, u_uv_unit, "u_uv_unit"),
 };
 
 static void locate(stin_context *ctx, stin__program *p)
@@ -45,7 +48,10 @@ static void locate(stin_context *ctx, stin__program *p)
         if ((*f)->locate)
             (*f)->locate(ctx, p);
     /* the volume program draws shadow-map depth from lights, the rest the camera's passes */
-    stin__displace_locate(ctx, p->name, p != &ctx->programs[STIN__PROG_VOLUME], &p->displace);
+    stin__displace_locate(ctx, p->name,
+                          p != &ctx->programs[STIN__PROG_VOLUME] &&
+                              p != &ctx->programs[STIN__PROG_PACKED_DEPTH],
+                          &p->displace);
     p->frame_serial = 0;
 }
 
@@ -170,8 +176,9 @@ static void build_surface_variants(stin_context *ctx, const char *dir)
 static int build_programs(stin_context *ctx, const char *dir, int tess, stin__program *progs,
                           char *msg, size_t msg_size)
 {
-    char vert[32], frag[32], names[LIT_CHUNKS][40], flat_names[LIT_CHUNKS][40], none_name[40];
-    const char *chunks[LIT_CHUNKS + 1], *shadow_only[LIT_CHUNKS + 1], *no_shadow[2];
+    char vert[32], frag[32], names[LIT_CHUNKS][40], flat_names[LIT_CHUNKS][40], none_name[40],
+        pack_name[40];
+    const char *chunks[LIT_CHUNKS + 1], *shadow_only[LIT_CHUNKS + 1], *no_shadow[2], *pack[2];
     int i;
     /* the lit program's surface and shadow functions (plain variant); flat.frag
      * serves the visibility output (the shadow test) and, with no test, the
@@ -181,14 +188,23 @@ static int build_programs(stin_context *ctx, const char *dir, int tess, stin__pr
     stin__formatf(none_name, sizeof none_name, "%sshadow_none.glsl", dir);
     no_shadow[0] = none_name;
     no_shadow[1] = NULL;
+    stin__formatf(pack_name, sizeof pack_name, "%spack_depth.glsl", dir);
+    pack[0] = pack_name;
+    pack[1] = NULL;
     for (i = 0; i < STIN__PROG_COUNT; i++) {
         stin__program *p = &progs[i];
+        if (i == STIN__PROG_PACKED_DEPTH &&
+            (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE))) {
+            p->name = 0; /* maps are depth textures */
+            continue;
+        }
         stin__formatf(vert, sizeof vert, "%s%s", dir, vert_names[i]);
         stin__formatf(frag, sizeof frag, "%s%s", dir, frag_names[i]);
         p->name = stin__program_build(ctx, vert, frag,
                                       i == STIN__PROG_LIT      ? chunks
                                       : i == STIN__PROG_FLAT   ? shadow_only
                                       : i == STIN__PROG_VOLUME ? no_shadow
+                                      : i == STIN__PROG_PACKED_DEPTH ? pack
                                                                : NULL,
                                       tess, msg, msg_size);
         if (!p->name)
@@ -459,6 +475,15 @@ static void draw_uniforms(stin_context *ctx, const stin__program *p, const stin_
                            d->csg == STIN__CSG_CAP || stin__displace_active(ctx, &d->material)
                                ? 0.0f
                                : 1.0f);
+    /* the mesh's mean lengths of a unit of u and v: the surface's uv scale
+     * where no derivatives tell it per pixel */
+    if (p->u_uv_unit >= 0) {
+        const float *unit = ctx->meshes[d->mesh_slot].uv_unit;
+        /* 0: a mesh stin made itself (CSG's near cap), unit scale */
+        const float v[4] = {unit[0] > 0.0f ? unit[0] : 1.0f, unit[1] > 0.0f ? unit[1] : 1.0f,
+                            0.0f, 0.0f};
+        GL(ctx, Uniform4fv)(p->u_uv_unit, 1, v);
+    }
 }
 
 static void submit(stin_context *ctx, const stin__program *p, const stin__draw *d)
@@ -699,12 +724,15 @@ static void glsl_end(stin_context *ctx)
             GL(ctx, DisableVertexAttribArray)((GLuint)i);
 }
 
-/* The casters' depth through the volume program (shadow-map casters):
- * every one, or those keep accepts. */
+/* The casters' depth through the volume program (shadow-map casters), or
+ * without depth textures packed into colour: every one, or those keep
+ * accepts. */
 uint32_t stin__glsl_depth_kept(stin_context *ctx, const float view[16], const float proj[16],
                                stin__draw_keep_fn keep, const void *user)
 {
-    const stin__program *p = &ctx->programs[STIN__PROG_VOLUME];
+    const stin__program *p = &ctx->programs[ctx->programs[STIN__PROG_PACKED_DEPTH].name
+                                                ? STIN__PROG_PACKED_DEPTH
+                                                : STIN__PROG_VOLUME];
     float view_proj[16];
     uint32_t i, drawn = 0;
     stin__mat4_mul(view_proj, proj, view);
@@ -782,22 +810,48 @@ static void band_indices(stin_context *ctx, const stin__displace_locs *dl, GLenu
     GL(ctx, DrawElements)(stin__displace_primitive(dl), (GLsizei)(3u * n), type, idx);
 }
 
-/* Without 32-bit indices: the band's triangles narrowed on the stack a
- * batch at a time (the mesh has at most 65,535 vertices: frame.c draws no
- * band of a split mesh). */
+/* The band's triangles copied on the stack a batch at a time: narrowed to
+ * 16 bits without 32-bit indices (the mesh has at most 65,535 vertices:
+ * frame.c draws no band of a split mesh), and without derivatives only
+ * those whose facet facts hold (bv not NULL: terminator_band.frag cannot
+ * ask them of its facet). */
 #define BAND_BATCH 256u
-static void band_narrow(stin_context *ctx, const stin__displace_locs *dl, const uint32_t *tris,
-                        uint32_t n)
-{
+typedef struct band_batch {
     uint16_t narrow[3u * BAND_BATCH];
-    uint32_t t, k;
-    for (t = 0; t < n; t += k) {
-        uint32_t i;
-        k = n - t < BAND_BATCH ? n - t : BAND_BATCH;
-        for (i = 0; i < 3u * k; i++)
-            narrow[i] = (uint16_t)tris[3u * t + i];
-        band_indices(ctx, dl, GL_UNSIGNED_SHORT, narrow, 6u * k, k);
+    uint32_t wide[3u * BAND_BATCH];
+    uint32_t count;
+    int is_narrow;
+} band_batch;
+
+static void band_flush(stin_context *ctx, const stin__displace_locs *dl, band_batch *b)
+{
+    if (b->count)
+        band_indices(ctx, dl, b->is_narrow ? GL_UNSIGNED_SHORT : GL_UNSIGNED_INT,
+                     b->is_narrow ? (const void *)b->narrow : (const void *)b->wide,
+                     (b->is_narrow ? 6u : 12u) * b->count, b->count);
+    b->count = 0;
+}
+
+static void band_batched(stin_context *ctx, const stin__displace_locs *dl, const stin__draw *d,
+                         const float light[4], const stin__band_view *bv, int narrow,
+                         const uint32_t *tris, uint32_t n)
+{
+    band_batch b;
+    uint32_t t, i;
+    b.count = 0;
+    b.is_narrow = narrow;
+    for (t = 0; t < n; t++) {
+        const uint32_t *tri = tris + 3u * t;
+        if (bv && !stin__band_triangle(ctx, bv, d, light, tri))
+            continue;
+        for (i = 0; i < 3u; i++) {
+            b.narrow[3u * b.count + i] = (uint16_t)tri[i];
+            b.wide[3u * b.count + i] = tri[i];
+        }
+        if (++b.count == BAND_BATCH)
+            band_flush(ctx, dl, &b);
     }
+    band_flush(ctx, dl, &b);
 }
 
 /* Some triangles of a mesh: indices from client memory, or on core
@@ -808,6 +862,7 @@ static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const f
 {
     const stin__program *p = use(ctx, STIN__PROG_BAND);
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
+    stin__band_view bv;
     float inv[16];
     if (!in_set(ctx, d, STIN__OPAQUE))
         return; /* not in the frame's depth */
@@ -832,8 +887,12 @@ static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const f
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, ctx->volume_vbo);
     else if (m->vbo)
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
-    if (m->index_type == GL_UNSIGNED_SHORT)
-        band_narrow(ctx, &p->displace, tris, n);
+    if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DERIVATIVES)) &&
+        stin__band_view_init(ctx, d, &bv))
+        band_batched(ctx, &p->displace, d, light, &bv, m->index_type == GL_UNSIGNED_SHORT, tris,
+                     n);
+    else if (m->index_type == GL_UNSIGNED_SHORT)
+        band_batched(ctx, &p->displace, d, light, NULL, 1, tris, n);
     else
         band_indices(ctx, &p->displace, GL_UNSIGNED_INT, tris, 12u * n, n);
     if (gl4(ctx) || m->vbo)

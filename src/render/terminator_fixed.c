@@ -205,17 +205,47 @@ static int band_corners(const corner c[3], const float g[3], const float light[4
     return 1;
 }
 
+int stin__band_view_init(const stin_context *ctx, const stin__draw *d, stin__band_view *bv)
+{
+    float view_inv[16];
+    if (!stin__mat4_invert(view_inv, ctx->frame.view))
+        return 0;
+    stin__memcopy(bv->eye, view_inv + 12, sizeof bv->eye);
+    stin__mat3_normal(bv->normal_matrix, d->transform);
+    return 1;
+}
+
+/* The triangle's facts (h: its corners' values) where it may hold band
+ * fragments; 0 where none. */
+static int band_triangle(const stin_context *ctx, const stin__band_view *bv, const stin__draw *d,
+                         const float light[4], const uint32_t *tri, float h[3])
+{
+    const stin__vertex *v = ctx->vertices + ctx->meshes[d->mesh_slot].first_vertex;
+    corner c[3];
+    float g[3];
+    world_positions(d, v, tri, c);
+    return eye_side_facet(c, bv->eye, g) && turned_from(c, g, light) &&
+           world_normals(bv->normal_matrix, v, tri, c) && band_corners(c, g, light, h);
+}
+
+int stin__band_triangle(const stin_context *ctx, const stin__band_view *bv, const stin__draw *d,
+                        const float light[4], const uint32_t *tri)
+{
+    float h[3];
+    return band_triangle(ctx, bv, d, light, tri, h);
+}
+
 void stin__fixed_terminator_band(stin_context *ctx, const stin__draw *d, const float light[4],
                                  const uint32_t *tris, uint32_t n)
 {
     const stin__mesh_slot *m = &ctx->meshes[d->mesh_slot];
     const stin__vertex *v = ctx->vertices + m->first_vertex;
-    float view_inv[16], mv[16], normal_matrix[9];
+    stin__band_view bv;
+    float mv[16];
     uint32_t t;
     int i;
-    if (!stin__mat4_invert(view_inv, ctx->frame.view))
+    if (!stin__band_view_init(ctx, d, &bv))
         return;
-    stin__mat3_normal(normal_matrix, d->transform);
     stin__mat4_mul(mv, ctx->frame.view, d->transform);
     GL_DISABLE(ctx, GL_LIGHTING);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
@@ -230,11 +260,8 @@ void stin__fixed_terminator_band(stin_context *ctx, const stin__draw *d, const f
     GL(ctx, Begin)(GL_TRIANGLES);
     for (t = 0; t < n; t++) {
         const uint32_t *tri = tris + 3u * t;
-        corner c[3];
-        float g[3], h[3];
-        world_positions(d, v, tri, c);
-        if (!eye_side_facet(c, view_inv + 12, g) || !turned_from(c, g, light) ||
-            !world_normals(normal_matrix, v, tri, c) || !band_corners(c, g, light, h))
+        float h[3];
+        if (!band_triangle(ctx, &bv, d, light, tri, h))
             continue;
         for (i = 0; i < 3; i++) {
             GL(ctx, Color4f)(0.0f, 0.0f, 0.0f, 0.5f + 0.5f * h[i]);

@@ -25,14 +25,18 @@ static const stin__technique_row rows[] = {
     {STIN_TECH_LIGHTING_GLSL110,       1, TIER2, STIN_TECH_NONE, 0, 1, 0, 0, 0},
     {STIN_TECH_LIGHTING_FIXED,         2, TIER1, STIN_TECH_NONE, 0, 1, 0, 0, 0},
     /* exact shadows from a position buffer and per-triangle shadow polygons
-     * drawn by a geometry shader into the screen mask (its unit) */
+     * drawn by a geometry shader into the screen mask (its unit); the
+     * position buffer's facet normals are screen derivatives (no vertex
+     * normal can stand in for the exact facet) */
     {STIN_TECH_SHADOWS_VDSM,           0,
-     TIER4 | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL), STIN_TECH_LIGHTING_GLSL150, 0, 1, 0, 0, 0},
+     TIER4 | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(DERIVATIVES),
+     STIN_TECH_LIGHTING_GLSL150, 0, 1, 0, 0, 0},
     /* a spare unit holds the screen mask (several lights per lit pass) */
     {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 1, 0},
-    /* without shadow compare the lit programs compare (shadow/map_pcf.c) */
+    /* without shadow compare the lit programs compare, without depth
+     * textures the maps hold depth packed into RGBA8 (shadow/map_pcf.c) */
     {STIN_TECH_SHADOWS_MAP_PCF,        2,
-     BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(MULTITEXTURE), GLSL_ANY, 0, 1, 0, 0, 0},
+     BIT(GLSL) | BIT(FBO) | BIT(MULTITEXTURE), GLSL_ANY, 0, 1, 0, 0, 0},
     {STIN_TECH_SHADOWS_MAP_DEPTH,      3, BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(MULTITEXTURE),
      STIN_TECH_LIGHTING_FIXED, 0, 1, 0, 0, 0},
     {STIN_TECH_SHADOWS_MAP_COMBINE,    4, BIT(TEXTURE_ENV_COMBINE) | BIT(MULTITEXTURE),
@@ -46,9 +50,10 @@ static const stin__technique_row rows[] = {
      BIT(MULTITEXTURE) | BIT(TEXTURE_ENV_COMBINE) | BIT(TEXTURE_ENV_DOT3) | BIT(TEXTURE_CUBE_MAP) |
          BIT(FIXED_FUNCTION), STIN_TECH_LIGHTING_FIXED, 0, 2, 0, 0, 0}, /* a 4th for albedo if spare */
     {STIN_TECH_SURFACE_PLAIN,          4, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
-    /* deep shadow maps: two array textures of RGBA32F layers (even, odd) */
-    {STIN_TECH_TRANSLUCENT_DEEP,       0, TIER4 | BIT(FLOAT_TEXTURE), STIN_TECH_LIGHTING_GLSL150,
-     0, 2, 0, 0, 0},
+    /* deep shadow maps: two array textures of RGBA32F layers (even, odd);
+     * its gl4 sources take the facet from derivatives */
+    {STIN_TECH_TRANSLUCENT_DEEP,       0, TIER4 | BIT(FLOAT_TEXTURE) | BIT(DERIVATIVES),
+     STIN_TECH_LIGHTING_GLSL150, 0, 2, 0, 0, 0},
     /* one colour map and the nearest transparent depth per light (atlases) */
     {STIN_TECH_TRANSLUCENT_COLOURED,   1,
      BIT(GLSL) | BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(MULTITEXTURE), GLSL_ANY, 0, 2, 0, 0, 0},

@@ -23,7 +23,11 @@
  * light (radius > 0, spot or point) is filtered by percentage-closer soft
  * shadows instead of the kernel: a blocker search sized by the light's
  * radius in the map, then a disc of taps as wide as the penumbra the
- * blockers' mean depth gives (shadow_pcf.glsl). The test
+ * blockers' mean depth gives (shadow_pcf.glsl). Without depth textures
+ * (bare OpenGL ES 2.0) each map is an RGBA8 colour texture that holds the
+ * casters' window depth in 24 bits (pack_depth.glsl), drawn with a depth
+ * renderbuffer of its size beside it, and the taps unpack and compare it
+ * (pcf_tap_depth.glsl). The test
  * is all in the lit program, so the frame may draw light 0's pass in its
  * ambient pass's place (`forward`: one camera pass for one light). */
 #include "internal.h"
@@ -46,6 +50,10 @@ struct stin__map_pcf_state {
     /* how the lit programs read the maps: 1 they compare (ARB_shadow), 0
      * they are depth textures read as numbers, compared in the shader */
     int compare;
+    /* no depth textures: the maps are colour, their depth packed; the depth
+     * test's renderbuffers, a map's size and the atlas's */
+    int packed;
+    GLuint depth_rb[2];
     /* the light being shaded: kind 0 none, 1 its map, 2 its six faces */
     int kind;
     uint32_t light;
@@ -62,11 +70,15 @@ size_t stin__map_pcf_state_bytes(const stin_desc *d)
 /* A map: a comparing depth texture, or without shadow compare one read as a
  * number (nearest texels: the shader filters its compares itself), its
  * internal format unsized as OES_depth_texture requires (format, internal
- * format and GL_UNSIGNED_INT: ES 2.0's only depth-texture form). */
+ * format and GL_UNSIGNED_INT: ES 2.0's only depth-texture form); without
+ * depth textures an RGBA8 one (unsized: ES 2.0's form) the depth is packed
+ * into. */
 static void create_depth_texture(stin_context *ctx, GLuint *t, uint32_t w, uint32_t h)
 {
     GL(ctx, GenTextures)(1, t);
-    if (ctx->map_pcf->compare)
+    if (ctx->map_pcf->packed)
+        stin__rt_texture(ctx, *t, GL_RGBA, GL_RGBA, GL_UNSIGNED_BYTE, (int)w, (int)h);
+    else if (ctx->map_pcf->compare)
         stin__rt_shadow_map(ctx, *t, (int)w, (int)h);
     else
         stin__rt_texture(ctx, *t, GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT,
@@ -93,7 +105,8 @@ static stin_result pcf_init(stin_context *ctx)
            STIN__ATLAS_COLUMNS * m->face_size > (uint32_t)ctx->caps.max_texture_size)
         m->face_size /= 2u; /* three faces across must fit */
     m->unit = ctx->sel.shadow_unit;
-    m->compare = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SHADOW)) != 0;
+    m->packed = !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE));
+    m->compare = !m->packed && (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_SHADOW)) != 0;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     for (i = 0; i < ctx->desc.max_lights; i++)
@@ -102,6 +115,12 @@ static stin_result pcf_init(stin_context *ctx)
                          STIN__ATLAS_ROWS * m->face_size);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     GL(ctx, GenFramebuffers)(1, &m->fbo);
+    if (m->packed) { /* every attachment of an ES 2.0 framebuffer has one size */
+        m->depth_rb[0] = stin__rt_depth_renderbuffer(ctx, (int)size, (int)size);
+        m->depth_rb[1] = stin__rt_depth_renderbuffer(ctx, (int)(STIN__ATLAS_COLUMNS * m->face_size),
+                                                     (int)(STIN__ATLAS_ROWS * m->face_size));
+        return STIN_OK;
+    }
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
     stin__no_colour_buffers(ctx); /* depth only */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, 0);
@@ -119,6 +138,9 @@ static void pcf_release(stin_context *ctx)
         GL(ctx, DeleteTextures)(1, &m->atlas);
     if (m->fbo)
         GL(ctx, DeleteFramebuffers)(1, &m->fbo);
+    for (i = 0; i < 2u; i++)
+        if (m->depth_rb[i])
+            GL(ctx, DeleteRenderbuffers)(1, &m->depth_rb[i]);
     stin__memzero(m, sizeof *m);
 }
 
@@ -133,6 +155,24 @@ typedef struct map_target {
     const void *user;
 } map_target;
 
+/* Attaches t's map (a packed one with its depth renderbuffer), or with
+ * texture 0 detaches it. */
+static void attach_map(stin_context *ctx, GLuint texture)
+{
+    const struct stin__map_pcf_state *m = ctx->map_pcf;
+    if (!m->packed) {
+        GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture,
+                                      0);
+        return;
+    }
+    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture,
+                                  0);
+    GL(ctx, FramebufferRenderbuffer)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                     !texture              ? 0
+                                     : texture == m->atlas ? m->depth_rb[1]
+                                                           : m->depth_rb[0]);
+}
+
 /* The casters drawn into the map's rectangle from the light (view, proj),
  * the texture cleared first where asked; the frame's framebuffer and
  * viewport back after. Returns the draws drawn. */
@@ -143,23 +183,24 @@ static uint32_t draw_map(stin_context *ctx, const map_target *t, const stin_ligh
     stin__pass_state ps = stin__pass_defaults;
     uint32_t drawn;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, m->fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t->texture,
-                                  0);
+    attach_map(ctx, t->texture);
     GL(ctx, Viewport)(t->rect[0], t->rect[1], t->rect[2], t->rect[3]);
     ps.depth_test = 1;
-    ps.color_write = 0;
+    ps.color_write = (unsigned char)m->packed;
     ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor, &ps.offset_units);
     stin__pass_apply(ctx, &ps);
     if (t->clear) {
         stin__clear_depth(ctx, 1.0);
-        GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT);
+        if (m->packed) /* white: depth 1 packed, nothing cast */
+            GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f);
+        GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | (m->packed ? GL_COLOR_BUFFER_BIT : 0u));
     }
     if (stin__casters_cast(ctx, stin__path_of(ctx), view, proj, t->rect, m->fbo, 0,
                            ps.polygon_offset ? ps.offset_factor : 0.0f,
                            ps.polygon_offset ? ps.offset_units : 0.0f))
         stin__pass_apply(ctx, &ps); /* the casters' state again */
     drawn = stin__glsl_depth_kept(ctx, view, proj, t->keep, t->user);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+    attach_map(ctx, 0);
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->draw_fbo);
     GL(ctx, Viewport)(ctx->frame.viewport[0], ctx->frame.viewport[1], ctx->frame.viewport[2],
                       ctx->frame.viewport[3]);
@@ -381,7 +422,7 @@ static stin_result pcf_debug_map(const stin_context *ctx, uint32_t li, stin_debu
         return STIN_ERROR_UNSUPPORTED;
     out->texture = ctx->map_pcf->textures[li];
     out->size = out->allocated = ctx->map_pcf->size;
-    out->depth = 1;
+    out->depth = !ctx->map_pcf->packed; /* packed: RGBA8, 24 bits of depth in RGB */
     return STIN_OK;
 }
 

@@ -73,9 +73,10 @@ static double mismatch(const pcf_case *c, const capture *cap, int band, long *co
 }
 
 /* extra_mask: capabilities hidden on top of the profile's (the row's name
- * says which: "-no-compare" for SHADOW); 0 for the plain rows. */
+ * says which: "-no-compare" for SHADOW, "-packed" for depth textures too);
+ * debug: STIN_DEBUG_* flags ("-no-derivatives"); 0 for the plain rows. */
 static void one(pcf_case *c, stin_tier tier, uint32_t size, int kernel, uint64_t extra_mask,
-                const char *suffix)
+                uint64_t debug, const char *suffix)
 {
     capture cap;
     capture_options o;
@@ -95,6 +96,7 @@ static void one(pcf_case *c, stin_tier tier, uint32_t size, int kernel, uint64_t
     o.shadows = STIN_TECH_SHADOWS_MAP_PCF;
     o.shadow_map_size = size;
     o.extra_mask = extra_mask;
+    o.debug_flags = debug;
     snprintf(name, sizeof name, "%s/%s/map-pcf-%u-k%d%s", stin_tier_name(tier), c->scene_name,
              size, kernel, suffix);
     if (!capture_render(c->r->plat, c->r->profile, &copy, &o, &cap, err, sizeof err)) {
@@ -129,30 +131,6 @@ static void one(pcf_case *c, stin_tier tier, uint32_t size, int kernel, uint64_t
                "penumbra band (at most 1%%); of the %ld shadowed ones (at least 100) %ld came out "
                "lit (at most 2%%)", 100.0 * f, compared, shadowed, shadowed_wrong);
     capture_free(&cap);
-}
-
-/* Bare OpenGL ES 2.0: no depth textures. map-pcf's maps need them (depth
- * packed into RGBA8 is not built yet), so forcing it must be refused by
- * name: SKIP with stin's reason, FAIL on anything else. */
-static void no_depth_texture(pcf_case *c, stin_tier tier)
-{
-    char name[256], err[512];
-    capture_options o;
-    capture cap;
-    snprintf(name, sizeof name, "%s/%s/map-pcf-2048-k3-no-depth-texture", stin_tier_name(tier),
-             c->scene_name);
-    memset(&o, 0, sizeof o);
-    o.extra_mask = STIN_CAP_BIT(STIN_CAP_SHADOW) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE);
-    o.tier = tier;
-    o.shadows = STIN_TECH_SHADOWS_MAP_PCF;
-    o.shadow_map_size = 2048;
-    if (capture_render(c->r->plat, c->r->profile, c->s, &o, &cap, err, sizeof err)) {
-        report(c->r, "FAIL", name, "map-pcf ran without depth textures (%s)",
-               stin_technique_name(cap.choice[STIN_FEATURE_SHADOWS].technique));
-        capture_free(&cap);
-    } else {
-        report(c->r, strstr(err, "needs depth textures") ? "SKIP" : "FAIL", name, "%s", err);
-    }
 }
 
 void pcf_tests(run *r, stin_tier tier, const char *path)
@@ -191,11 +169,11 @@ void pcf_tests(run *r, stin_tier tier, const char *path)
         goto done;
     }
     {
-        /* map-pcf's needs: without shadow compare the lit programs compare
-         * (OpenGL ES 2.0 with OES_depth_texture) */
-        uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE);
+        /* without shadow compare or depth textures the maps are compared in
+         * the shader or packed into colour (bare ES 2.0) */
+        uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO);
         if ((probe.caps_present & need) != need) {
-            report(r, "SKIP", name, "the profile has no FBOs with depth textures");
+            report(r, "SKIP", name, "the profile has no FBOs");
             capture_free(&probe);
             goto done;
         }
@@ -208,17 +186,26 @@ void pcf_tests(run *r, stin_tier tier, const char *path)
     c.hits = hits;
     for (i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
         for (k = 0; k < sizeof kernels / sizeof kernels[0]; k++)
-            one(&c, tier, sizes[i], kernels[k], 0, "");
+            one(&c, tier, sizes[i], kernels[k], 0, 0, "");
     /* OpenGL ES 2.0's maps: depth textures without shadow compare, the
-     * lit programs comparing (pcf_tap_depth.glsl); held to the 2048 rows'
-     * bound, on one scene and one tier each of gl21 (GL2) and gl33-core
-     * (GL4), where the programs differ */
+     * lit programs comparing (pcf_tap_depth.glsl), and on bare ES 2.0 no
+     * depth textures at all: the depth packed into RGBA8 maps; held to the
+     * 2048 rows' bound, on one scene and one tier each of gl21 (GL2) and
+     * gl33-core (GL4), where the programs differ. Bare ES 2.0's lit
+     * programs also lack derivatives (the receiver plane and the geometric
+     * normal from the interpolated normal): that row on gl21, which runs
+     * them */
     if (!strcmp(scene_name, "spheres-18k-spot") &&
         ((tier == STIN_TIER_GL2 && !strcmp(r->profile_name, "gl21")) ||
          (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl33-core"))))
     {
-        one(&c, tier, 2048, 3, STIN_CAP_BIT(STIN_CAP_SHADOW), "-no-compare");
-        no_depth_texture(&c, tier);
+        uint64_t depth = STIN_CAP_BIT(STIN_CAP_SHADOW) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE);
+        int egl = !strcmp(r->platform_name, "egl"); /* the new rows once: make check's time */
+        one(&c, tier, 2048, 3, STIN_CAP_BIT(STIN_CAP_SHADOW), 0, "-no-compare");
+        if (egl)
+            one(&c, tier, 2048, 3, depth, 0, "-packed");
+        if (egl && tier == STIN_TIER_GL2)
+            one(&c, tier, 2048, 3, depth, STIN_DEBUG_NO_DERIVATIVES, "-packed-no-derivatives");
     }
 done:
     free(hits);

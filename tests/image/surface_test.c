@@ -98,8 +98,9 @@ static int glsl_tier(run *r, stin_tier tier, const char *name)
     return 1;
 }
 
+/* debug: STIN_DEBUG_* flags (STIN_DEBUG_NO_DERIVATIVES: bare ES 2.0's paths) */
 static int render(run *r, const scene *s, stin_tier tier, stin_technique surface, capture *c,
-                  const char *name)
+                  const char *name, uint64_t debug)
 {
     capture_options o;
     char err[512];
@@ -107,6 +108,7 @@ static int render(run *r, const scene *s, stin_tier tier, stin_technique surface
     o.tier = tier;
     o.shadows = STIN_TECH_SHADOWS_OFF;
     o.surface = surface;
+    o.debug_flags = debug;
     if (!capture_render(r->plat, r->profile, s, &o, c, err, sizeof err)) {
         report(r, "FAIL", name, "%s: %s", stin_technique_name(surface), err);
         return 0;
@@ -232,8 +234,8 @@ static void test_flat(run *r, stin_tier tier, const scene *s, const char *scene_
             }
         }
     flat.textures = tex;
-    if (render(r, &flat, tier, STIN_TECH_SURFACE_NORMAL, &a, name)) {
-        if (render(r, &flat, tier, STIN_TECH_SURFACE_PLAIN, &b, name)) {
+    if (render(r, &flat, tier, STIN_TECH_SURFACE_NORMAL, &a, name, 0)) {
+        if (render(r, &flat, tier, STIN_TECH_SURFACE_PLAIN, &b, name, 0)) {
             diff(&a, &b, SURF_FLAT_TOLERANCE, &n, &over, &max);
             report(r, n && !over ? "PASS" : "FAIL", name,
                    "constant (128,128,255) normal map equals plain per-pixel lighting within "
@@ -298,9 +300,9 @@ static void test_down(run *r, stin_tier tier, const scene *s, const char *scene_
     down.camera.fovy_deg = 0.25f;
     down.camera.near_plane = 150.0f;
     down.camera.far_plane = 170.0f;
-    if (!render(r, &down, tier, STIN_TECH_SURFACE_PARALLAX, &a, name))
+    if (!render(r, &down, tier, STIN_TECH_SURFACE_PARALLAX, &a, name, 0))
         return;
-    if (render(r, &down, tier, STIN_TECH_SURFACE_NORMAL, &b, name)) {
+    if (render(r, &down, tier, STIN_TECH_SURFACE_NORMAL, &b, name, 0)) {
         diff(&a, &b, SURF_DOWN_TOLERANCE, &cnt, &over, &max);
         report(r, cnt && !over ? "PASS" : "FAIL", name,
                "seen straight down (0.25-degree lens, |V.xy| < 0.003), parallax equals normal mapping within 2/255: "
@@ -355,7 +357,7 @@ static int footprint(const scene *s, const reference *ref, const ref_surface *rs
 }
 
 static void test_reference(run *r, stin_tier tier, const scene *s, const char *scene_name,
-                           stin_technique tech, int ref_tech, const char *test)
+                           stin_technique tech, int ref_tech, const char *test, uint64_t debug)
 {
     char name[256], err[512];
     capture a;
@@ -366,7 +368,7 @@ static void test_reference(run *r, stin_tier tier, const scene *s, const char *s
     double sum = 0, max = 0;
     int x, y, k;
     snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_name, test);
-    if (!render(r, s, tier, tech, &a, name))
+    if (!render(r, s, tier, tech, &a, name, debug))
         return;
     ref = reference_create(s, err, sizeof err);
     rs = ref_surface_create(s);
@@ -526,7 +528,7 @@ static void test_parallax_limit(run *r, stin_tier tier, const scene *s, const ch
     g.camera.fovy_deg = 40.0f;
     g.camera.near_plane = 0.5f;
     g.camera.far_plane = 30.0f;
-    if (!render(r, &g, tier, STIN_TECH_SURFACE_PARALLAX, &a, name))
+    if (!render(r, &g, tier, STIN_TECH_SURFACE_PARALLAX, &a, name, 0))
         goto done;
     captured = 1;
     ref = reference_create(&g, err, sizeof err);
@@ -670,11 +672,11 @@ static void test_pom_shadow(run *r, stin_tier tier, const scene *s, const char *
     g.light_count = 1;
     for (k = 0; k < 3; k++)
         g.ambient[k] = 0.0f;
-    if (!render(r, &g, tier, STIN_TECH_SURFACE_POM, &on, name))
+    if (!render(r, &g, tier, STIN_TECH_SURFACE_POM, &on, name, 0))
         goto done;
     have_on = 1;
     mat[mi].self_shadow = 0;
-    if (!render(r, &g, tier, STIN_TECH_SURFACE_POM, &off, name))
+    if (!render(r, &g, tier, STIN_TECH_SURFACE_POM, &off, name, 0))
         goto done;
     have_off = 1;
     mat[mi].self_shadow = 1;
@@ -747,9 +749,20 @@ void surface_tests(run *r, stin_tier tier, const char *path)
             test_flat(r, tier, &s, scene_name);
             test_down(r, tier, &s, scene_name);
             test_reference(r, tier, &s, scene_name, STIN_TECH_SURFACE_NORMAL, REF_SURFACE_NORMAL,
-                           "normal-reference");
+                           "normal-reference", 0);
             test_reference(r, tier, &s, scene_name, STIN_TECH_SURFACE_POM, REF_SURFACE_POM,
-                           "pom-reference");
+                           "pom-reference", 0);
+            /* the same bounds without derivatives (bare ES 2.0's GLSL):
+             * the tangent attribute's frame, the mesh's mean uv scale;
+             * once, on gl21 on egl */
+            if (tier == STIN_TIER_GL2 && !strcmp(r->profile_name, "gl21") &&
+                !strcmp(r->platform_name, "egl")) {
+                test_reference(r, tier, &s, scene_name, STIN_TECH_SURFACE_NORMAL,
+                               REF_SURFACE_NORMAL, "normal-reference-no-derivatives",
+                               STIN_DEBUG_NO_DERIVATIVES);
+                test_reference(r, tier, &s, scene_name, STIN_TECH_SURFACE_POM, REF_SURFACE_POM,
+                               "pom-reference-no-derivatives", STIN_DEBUG_NO_DERIVATIVES);
+            }
             test_parallax_limit(r, tier, &s, scene_name);
             test_pom_shadow(r, tier, &s, scene_name);
         }

@@ -294,8 +294,8 @@ static void test_missing_entry_points_turn_caps_off(void **state)
     loaded[STIN_GLFN_ClientActiveTexture] = 0;
     loaded[STIN_GLFN_GenerateMipmap] = 0;
     assert_int_equal(stin__caps_parse(&in, &some), 1);
-    assert_int_equal(all.present & ~some.present,
-                     BIT(GLSL) | BIT(VBO) | BIT(MULTITEXTURE) | BIT(FBO));
+    assert_int_equal(all.present & ~some.present, /* derivatives are GLSL's */
+                     BIT(GLSL) | BIT(DERIVATIVES) | BIT(VBO) | BIT(MULTITEXTURE) | BIT(FBO));
     assert_int_equal(some.hidden, 0); /* not hidden by the mask: absent */
 }
 
@@ -434,12 +434,12 @@ static void test_detect_without_version_fails(void **state)
 }
 
 /* ---- OpenGL ES ------------------------------------------------------------ */
-/* ES 2.0 without OES_standard_derivatives: no GLSL stin can run */
+/* ES 2.0 without OES_standard_derivatives: GLSL, no derivatives */
 #define ES20_BARE                                                                        \
     (BIT(STENCIL) | BIT(MULTITEXTURE) | BIT(TEXTURE_CUBE_MAP) | BIT(STENCIL_WRAP) |        \
-     BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(FBO))
-#define ES20_CORE (ES20_BARE | BIT(GLSL))
-#define DERIVATIVES "GL_OES_standard_derivatives"
+     BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(FBO) | BIT(GLSL))
+#define ES20_CORE (ES20_BARE | BIT(DERIVATIVES))
+#define DERIVATIVES_EXT "GL_OES_standard_derivatives"
 #define ES30_CORE                                                                        \
     (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) | \
      BIT(ELEMENT_INDEX_UINT) | BIT(FRAG_DEPTH))
@@ -453,7 +453,7 @@ static void test_es_version_strings(void **state)
     assert_int_equal(c.gl_major * 10 + c.gl_minor, 32);
     assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 32);
     assert_int_equal(c.profile, STIN_GL_PROFILE_CORE);
-    c = parse("OpenGL ES 2.0 Mesa 22.3.6", "OpenGL ES GLSL ES 1.0.16", DERIVATIVES);
+    c = parse("OpenGL ES 2.0 Mesa 22.3.6", "OpenGL ES GLSL ES 1.0.16", DERIVATIVES_EXT);
     assert_int_equal(c.es, 1);
     assert_int_equal(c.gl_major * 10 + c.gl_minor, 20);
     assert_int_equal(c.glsl_major * 10 + c.glsl_minor, 10); /* GLSL ES 1.00 */
@@ -473,10 +473,10 @@ static void test_es_core_capabilities_by_version(void **state)
 {
     stin_caps c;
     (void)state;
-    /* stin's shaders take derivatives: an extension on ES 2.0, core from 3.0 */
+    /* derivatives: an extension on ES 2.0 (its GLSL counts without), core from 3.0 */
     c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", NULL);
     assert_int_equal(c.present, ES20_BARE);
-    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", DERIVATIVES);
+    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", DERIVATIVES_EXT);
     assert_int_equal(c.present, ES20_CORE);
     c = parse("OpenGL ES 3.0 Mesa", "OpenGL ES GLSL ES 3.00", NULL);
     assert_int_equal(c.present, ES30_CORE);
@@ -501,14 +501,14 @@ static void test_es_extension_names(void **state)
               "GL_OES_depth_texture GL_OES_packed_depth_stencil GL_OES_vertex_array_object "
               "GL_EXT_occlusion_query_boolean GL_EXT_shadow_samplers GL_OES_texture_float "
               "GL_EXT_color_buffer_float GL_OES_element_index_uint GL_EXT_frag_depth "
-              DERIVATIVES);
+              DERIVATIVES_EXT);
     /* any-samples queries are not the sample counts OCCLUSION_QUERY means */
     assert_int_equal(c.present, ES20_CORE | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
                                     BIT(VAO) | BIT(SHADOW) | BIT(ELEMENT_INDEX_UINT) |
                                     BIT(FRAG_DEPTH));
     /* gl_FragDepth: GLSL ES 1.00 has it only by GL_EXT_frag_depth; every
      * desktop GLSL has it */
-    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", "GL_OES_depth_texture " DERIVATIVES);
+    c = parse("OpenGL ES 2.0 Mesa", "OpenGL ES GLSL ES 1.0.16", "GL_OES_depth_texture " DERIVATIVES_EXT);
     assert_false(HAS(c, FRAG_DEPTH));
     c = parse("2.1 Mesa", "1.20", "");
     assert_true(HAS(c, FRAG_DEPTH));
@@ -519,6 +519,35 @@ static void test_es_extension_names(void **state)
     c = parse("1.3 Mesa", NULL, "GL_OES_depth_texture GL_OES_packed_depth_stencil");
     assert_false(HAS(c, DEPTH_TEXTURE));
     assert_false(HAS(c, PACKED_DEPTH_STENCIL));
+}
+
+/* Fragment derivatives are a capability of their own: core on desktop GLSL
+ * and from ES 3.0, OES_standard_derivatives on ES 2.0, never without GLSL;
+ * GLSL on ES 2.0 no longer waits for them, and the mask hides them. */
+static void test_derivatives_capability(void **state)
+{
+    stin__caps_input in;
+    stin_caps c;
+    (void)state;
+    c = parse("2.1 Mesa 22.3.6", "1.20", "");
+    assert_true(HAS(c, GLSL) && HAS(c, DERIVATIVES));
+    c = parse("1.4 Mesa 22.3.6", "4.50", "");
+    assert_false(HAS(c, GLSL) || HAS(c, DERIVATIVES));
+    c = parse("OpenGL ES 2.0 Mesa 22.3.6", "OpenGL ES GLSL ES 1.0.16", NULL);
+    assert_true(HAS(c, GLSL));
+    assert_false(HAS(c, DERIVATIVES));
+    c = parse("OpenGL ES 2.0 Mesa 22.3.6", "OpenGL ES GLSL ES 1.0.16", DERIVATIVES_EXT);
+    assert_true(HAS(c, GLSL) && HAS(c, DERIVATIVES));
+    c = parse("OpenGL ES 3.0 Mesa 22.3.6", "OpenGL ES GLSL ES 3.00", NULL);
+    assert_true(HAS(c, DERIVATIVES));
+    memset(&in, 0, sizeof in);
+    in.version = "3.3 Mesa 22.3.6";
+    in.glsl_version = "3.30";
+    in.caps_mask = BIT(DERIVATIVES);
+    assert_int_equal(stin__caps_parse(&in, &c), 1);
+    assert_false(HAS(c, DERIVATIVES));
+    assert_true(HAS(c, GLSL));
+    assert_int_equal(c.hidden, BIT(DERIVATIVES));
 }
 
 static void test_es_max_gl_version_clamps(void **state)
@@ -605,6 +634,7 @@ int main(void)
         cmocka_unit_test(test_es_core_capabilities_by_version),
         cmocka_unit_test(test_es_extension_names),
         cmocka_unit_test(test_es_max_gl_version_clamps),
+        cmocka_unit_test(test_derivatives_capability),
         cmocka_unit_test(test_es_loader_marks_desktop_only_entry_points),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

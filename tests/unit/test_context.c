@@ -13,6 +13,10 @@
 #include "fake_gl.h"
 #include "internal.h"
 
+/* the path's shared programs: the packed-depth one is built only without
+ * depth textures, which every fake profile here has */
+#define SHARED_PROGRAMS (STIN__PROG_COUNT - 1)
+
 #define BIT(c) STIN_CAP_BIT(STIN_CAP_##c)
 
 /* A context on the fake GL, in a heap block owned by the test. */
@@ -511,7 +515,7 @@ static void test_glsl150_compile_failure_falls_back_to_glsl110(void **state)
     /* the shared programs plus the lit program's normal, parallax and pom
      * variants, depth-peel's composite, the GPU CSG resolve's three and
      * the outline's */
-    assert_int_equal(fake_gl.programs_created, STIN__PROG_COUNT + 3 + 1 + 3 + 1);
+    assert_int_equal(fake_gl.programs_created, SHARED_PROGRAMS + 3 + 1 + 3 + 1);
     m = make_quad(f.ctx);
     run_frame(f.ctx, m);
     assert_int_equal(fake_gl.draw_calls, 1);
@@ -542,7 +546,7 @@ static void test_vdsm_link_failure_steps_down_and_releases(void **state)
     fake_gl_config cfg = fake_gl_profile(FAKE_GL45_CORE);
     fixture f;
     (void)state;
-    cfg.fail_link_from = STIN__PROG_COUNT + 3 + 1; /* the first program after lighting's */
+    cfg.fail_link_from = SHARED_PROGRAMS + 3 + 1; /* the first program after lighting's */
     fixture_init(&f, &cfg);
     f.desc.techniques[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VDSM;
     assert_int_equal(fixture_create(&f), STIN_OK);
@@ -622,14 +626,14 @@ static void test_destroy_deletes_every_gl_object(void **state)
      * kill and snap programs (its textures come with the first product),
      * and the outline's; the frame's one lit program specialised to its
      * light batch (render/lit_specialise.c) */
-    check_destroy_balances(FAKE_GL21, 2, 0, STIN__PROG_COUNT + 3 + 1 + 3 + 1 + 1, 0);
+    check_destroy_balances(FAKE_GL21, 2, 0, SHARED_PROGRAMS + 3 + 1 + 3 + 1 + 1, 0);
     /* GL 4.5: each program again, tessellated ("displace-tess"), dual-peel's
      * composite and its min-max programs (plain and tessellated), on core
      * goldfeather's depth program (compatibility contexts use glDrawPixels;
      * interval, not the default, builds its two where chosen), and the GPU
      * resolve's three, the outline's, and the specialised lit program */
     check_destroy_balances(FAKE_GL45_CORE, 2, 1,
-                           2 * (STIN__PROG_COUNT + 3) + 1 + 2 + 1 + 3 + 1 + 1, 1);
+                           2 * (SHARED_PROGRAMS + 3) + 1 + 2 + 1 + 3 + 1 + 1, 1);
 }
 
 /* ---- entry points and extensions ------------------------------------------ */

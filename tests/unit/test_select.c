@@ -22,7 +22,8 @@
     (GL13_BITS | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(STENCIL_WRAP) |                   \
      BIT(STENCIL_TWO_SIDE) | BIT(DEPTH_CLAMP))
 #define GL21_BITS (GL14_BITS | BIT(VBO) | BIT(GLSL) | BIT(SEPARATE_STENCIL) | BIT(FBO) |  \
-                   BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH) | BIT(FRAG_DEPTH))
+                   BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH) | BIT(FRAG_DEPTH) |     \
+                   BIT(DERIVATIVES))
 #define GL33_CORE_BITS                                                                    \
     ((GL21_BITS & ~BIT(FIXED_FUNCTION)) | BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | \
      BIT(PACKED_DEPTH_STENCIL))
@@ -491,7 +492,8 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
 static void test_displacement_beside_volumes(void **state)
 {
     stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS), gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
-    /* no shadow compare (lifts nothing) and no depth textures (no map-pcf either) */
+    /* no shadow compare (lifts nothing) and no depth textures (map-pcf packs
+     * its depth into colour) */
     stin_caps no_map = caps_with(21, 12, 0, GL21_BITS & ~(BIT(SHADOW) | BIT(DEPTH_TEXTURE)));
     stin_technique forced[STIN_FEATURE_COUNT];
     stin__selection sel;
@@ -515,7 +517,7 @@ static void test_displacement_beside_volumes(void **state)
     assert_non_null(strstr(sel.choice[STIN_FEATURE_DISPLACEMENT].reason, "displace cannot run beside"));
     forced[STIN_FEATURE_DISPLACEMENT] = STIN_TECH_DISPLACEMENT_VTF;
     assert_int_equal(stin__select(&no_map, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
-    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_OFF);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_MAP_PCF);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_VTF);
     assert_int_equal(sel.displace_unit, sel.units_used);
     forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VOLUME;
@@ -564,9 +566,11 @@ static void test_fallback_walks_the_chain(void **state)
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
     gl45.present &= ~BIT(SHADOW); /* map-pcf compares in its shader (ES 2.0) */
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
-    gl45.present &= ~BIT(DEPTH_TEXTURE);
+    gl45.present &= ~BIT(DEPTH_TEXTURE); /* packed into colour (bare ES 2.0) */
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
+    gl45.present &= ~BIT(FBO);
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
-    gl45.present |= BIT(SHADOW) | BIT(DEPTH_TEXTURE);
+    gl45.present |= BIT(SHADOW) | BIT(DEPTH_TEXTURE) | BIT(FBO);
     sel.choice[STIN_FEATURE_DISPLACEMENT].technique = STIN_TECH_DISPLACEMENT_OFF;
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
     gl45.present &= ~BIT(STENCIL);
@@ -658,7 +662,7 @@ static void test_texture_unit_budget(void **state)
      BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
 #define ES30_BITS                                                                         \
     (ES20_BITS | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) |  \
-     BIT(VERTEX_TEXTURE_FETCH))
+     BIT(VERTEX_TEXTURE_FETCH) | BIT(DERIVATIVES))
 #define ES32_BITS                                                                         \
     (ES30_BITS | BIT(COMPUTE) | BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) | BIT(FLOAT_TEXTURE))
 
@@ -743,10 +747,16 @@ static void test_es_forced_above_the_context(void **state)
     }
     for (f = 0; f < STIN_FEATURE_COUNT; f++)
         forced[f] = STIN_TECH_NONE;
+    /* bare ES 2.0 runs map-pcf (its depth packed into colour) */
     forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_MAP_PCF;
-    assert_int_equal(stin__select(&es20, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
+    assert_int_equal(stin__select(&es20, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_MAP_PCF);
+    /* vdsm's facets come from derivatives: refused without them, named */
+    es32.present &= ~BIT(DERIVATIVES);
+    forced[STIN_FEATURE_SHADOWS] = STIN_TECH_SHADOWS_VDSM;
+    assert_int_equal(stin__select(&es32, STIN_TIER_AUTO, forced, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
-    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_DEPTH_TEXTURE)));
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_DERIVATIVES)));
     assert_null(strstr(msg, stin_cap_name(STIN_CAP_FIXED_FUNCTION)));
 }
 
