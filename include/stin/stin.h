@@ -843,7 +843,9 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
       "GL_ARB_framebuffer_object GL_EXT_packed_depth_stencil")                        \
     X(TIMER_QUERY, "timer queries", 33, "GL_ARB_timer_query")                         \
     X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2") \
-    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")
+    X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint") \
+    X(ANY_SAMPLES_QUERY, "any-samples-passed queries", 15, "GL_ARB_occlusion_query") \
+    X(FLOAT_BLEND, "blending into float targets", 30, "GL_ARB_texture_float")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -872,7 +874,9 @@ typedef struct stin_caps {
      *           wrap, multitexture, cube maps;
      *   ES 3.0: + VAO, depth textures, shadow compare, packed depth-stencil,
      *           float textures (counted only with EXT_color_buffer_float:
-     *           stin renders into them);
+     *           stin renders into them), ANY_SAMPLES_QUERY
+     *           (GL_ANY_SAMPLES_PASSED), FLOAT_BLEND (by EXT_float_blend,
+     *           beside EXT_color_buffer_float);
      *   ES 3.1: + compute (detected, but stin's storage-buffer reads and
      *           clears, glGetBufferSubData and glClearBufferData, are desktop
      *           GL: COMPUTE stays off on a live ES context for now);
@@ -882,8 +886,12 @@ typedef struct stin_caps {
      * Never on ES: FIXED_FUNCTION (so never the GL1 tier), texture_env_*,
      * SEPARATE_SPECULAR, STENCIL_TWO_SIDE (EXT's), DEPTH_CLAMP, TIMER_QUERY,
      * TRANSFORM_FEEDBACK (drawing from the object is desktop GL 4.0),
-     * OCCLUSION_QUERY (stin counts samples; ES answers only "any passed"):
-     * so no dual peeling or interval CSG on ES yet.
+     * OCCLUSION_QUERY (sample counts, GL_SAMPLES_PASSED; ES answers only
+     * "any passed", which is all stin asks: ANY_SAMPLES_QUERY).
+     * ANY_SAMPLES_QUERY on desktop GL is OCCLUSION_QUERY (a sample count
+     * answers "any" too; a mask that hides OCCLUSION_QUERY hides it as
+     * well); FLOAT_BLEND on desktop is FLOAT_TEXTURE's rule (GL 3.0 blends
+     * float targets), and it is never present without FLOAT_TEXTURE.
      * Desktop-only entry points (glClearDepth, glDepthRange, glPolygonMode,
      * glDrawBuffer, glLogicOp, client arrays...) count as not loaded there,
      * whatever the driver's get_proc_address returns for them. */
