@@ -52,8 +52,10 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # spheres-18k-sun (es32 has no timer queries for its vdsm/volumes choice
 # tests there), depth peeling with its any-samples early stop and coloured
 # maps on glass-panes (10 s), scs and goldfeather with their GLSL ES 3.00
-# depth write-back on csg (42 s). es32's dual peeling and deep maps
-# (glass-panes, 58 s: both its tiers run) are left to a run by hand.
+# depth write-back on csg (42 s), displacement by vertex textures on
+# displace-plate (2 s); on es32 tessellated displacement on displace-tess
+# (3 s). es32's dual peeling and deep maps (glass-panes, 58 s: both its
+# tiers run) and interval CSG (csg, 117 s) are left to a run by hand.
 ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
@@ -103,8 +105,11 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         done
         [ "$plat" = egl ] || continue
         for prof in $ES_PROFILES; do
-            more=
-            [ "$prof" = es30 ] && more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json tests/scenes/csg.json"
+            case $prof in
+                es30) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-plate.json" ;;
+                es32) more=tests/scenes/displace-tess.json ;;
+                *) more= ;;
+            esac
             echo "image:$plat:$prof $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $ES_SCENES $more
         done
     done
