@@ -906,7 +906,9 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(TRANSFORM_FEEDBACK, "transform feedback objects", 40, "GL_ARB_transform_feedback2") \
     X(ELEMENT_INDEX_UINT, "32-bit element indices", 11, "GL_OES_element_index_uint")     \
     X(FRAG_DEPTH, "fragment depth writes", 20, "")                                        \
-    X(DERIVATIVES, "fragment derivatives (dFdx, dFdy)", 20, "")
+    X(DERIVATIVES, "fragment derivatives (dFdx, dFdy)", 20, "")                           \
+    X(ANY_SAMPLES_QUERY, "any-samples-passed queries", 15, "GL_ARB_occlusion_query")      \
+    X(FLOAT_BLEND, "blending into float targets", 30, "GL_ARB_texture_float")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -936,7 +938,9 @@ typedef struct stin_caps {
      *           only with EXT_frag_depth;
      *   ES 3.0: + DERIVATIVES, VAO, depth textures, shadow compare, packed depth-stencil,
      *           fragment depth writes, float textures (counted only with EXT_color_buffer_float:
-     *           stin renders into them);
+     *           stin renders into them), ANY_SAMPLES_QUERY
+     *           (GL_ANY_SAMPLES_PASSED), FLOAT_BLEND (by EXT_float_blend,
+     *           beside EXT_color_buffer_float);
      *   ES 3.1: + compute (detected, but stin's storage-buffer reads and
      *           clears, glGetBufferSubData and glClearBufferData, are desktop
      *           GL: COMPUTE stays off on a live ES context for now);
@@ -950,8 +954,12 @@ typedef struct stin_caps {
      * Never on ES: FIXED_FUNCTION (so never the GL1 tier), texture_env_*,
      * SEPARATE_SPECULAR, STENCIL_TWO_SIDE (EXT's), DEPTH_CLAMP, TIMER_QUERY,
      * TRANSFORM_FEEDBACK (drawing from the object is desktop GL 4.0),
-     * OCCLUSION_QUERY (stin counts samples; ES answers only "any passed"):
-     * so no dual peeling or interval CSG on ES yet.
+     * OCCLUSION_QUERY (sample counts, GL_SAMPLES_PASSED; ES answers only
+     * "any passed", which is all stin asks: ANY_SAMPLES_QUERY).
+     * ANY_SAMPLES_QUERY on desktop GL is OCCLUSION_QUERY (a sample count
+     * answers "any" too; a mask that hides OCCLUSION_QUERY hides it as
+     * well); FLOAT_BLEND on desktop is FLOAT_TEXTURE's rule (GL 3.0 blends
+     * float targets), and it is never present without FLOAT_TEXTURE.
      * Desktop-only entry points (glClearDepth, glDepthRange, glPolygonMode,
      * glDrawBuffer, glLogicOp, client arrays...) count as not loaded there,
      * whatever the driver's get_proc_address returns for them. */
@@ -1173,7 +1181,8 @@ const char *stin_feature_name(stin_feature f);
  * layer that drew nothing: on GL 4.3 (capability "compute shaders") a flag
  * in a 4-byte shader storage buffer that the peel shader sets and stin
  * reads back (binding point 0 and the generic GL_SHADER_STORAGE_BUFFER
- * binding are left at 0), on GL 3.2-4.2 an occlusion query
+ * binding are left at 0), on GL 3.2-4.2 and OpenGL ES 3.2 an occlusion
+ * query (GL_ANY_SAMPLES_PASSED on ES: "any-samples-passed queries")
  * (STIN_DEBUG_DEEP_QUERY_STOP: the query everywhere;
  * STIN_DEBUG_DEEP_NO_EARLY_STOP peels every layer of every face: the same
  * image); a face whose frustum no transparent caster's bounding box
@@ -1272,7 +1281,9 @@ const char *stin_feature_name(stin_feature f);
  *   lights, the composite's two), W x H x 32 bytes: 2 MiB at 256 x 256,
  *   63 MiB at 1920 x 1080.
  *   "dual-peel" (GL4's default: GLSL 1.50 lighting, float textures
- *   (RG32F, RGBA16F targets), occlusion queries and depth-peel's needs; the
+ *   (RG32F, RGBA16F targets) it blends into ("blending into float targets":
+ *   EXT_float_blend on OpenGL ES), any-samples-passed queries (its early
+ *   stop; GL_ANY_SAMPLES_PASSED on ES 3.2) and depth-peel's needs; the
  *   same two texture units) peels two layers per geometry pass (Bavoil &
  *   Myers 2008): pass k draws the blended draws once with MAX blending of
  *   (-z, z) into RG32F, keeping what lies in front of the opaque depth and
@@ -2101,9 +2112,13 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * depth with glReadPixels and writes it back with glDrawPixels on
  * compatibility contexts, on core profiles through an R32F texture the
  * size of the viewport, made at the first frame and kept, and a GLSL 1.50
- * program writing gl_FragDepth; a core context without GL4 lighting, or
- * a frame into a framebuffer without stencil, draws no products: "csg-off"
- * or a FALLBACK warning, logged once; products are still accepted). The frame
+ * program writing gl_FragDepth (GLSL ES 3.00 on OpenGL ES 3.x, whatever
+ * the lighting; ES reads depth back as GL_DEPTH_STENCIL 24_8 words and
+ * stencil as indices, so an ES context needs GL_NV_read_depth_stencil and
+ * GL_NV_read_stencil); a core context without GL4 lighting, an ES 2.0
+ * context, or a frame into a framebuffer without stencil, draws no
+ * products: "csg-off" or a FALLBACK warning, logged once; products are
+ * still accepted). The frame
  * plan resolves every product of the frame after the target's clear and
  * before the ambient pass, in the frame's own depth and stencil buffers:
  * per term, per literal, per layer of that primitive's front faces (back
@@ -2386,7 +2401,7 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * resolved. */
 
 /* CSG technique "interval" (GL4: GLSL 1.50 lighting, FBOs, float and array
- * textures, occlusion queries; forced, not the default: on llvmpipe its
+ * textures, any-samples-passed queries; forced, not the default: on llvmpipe its
  * walk makes it 1.4-3x goldfeather's frame time on the bench's products,
  * docs/benchmarks.md):
  * the seed's G-buffer ray-interval method generalised to k layers per

@@ -315,20 +315,17 @@ static int overflows(stin_context *ctx, const stin__csg_product *p, int k)
 {
     stin__csg_interval_state *s = ctx->csg->interval;
     stin__pass_state ps = stin__pass_defaults;
-    GLuint samples = 0;
     uint32_t q;
     ps.depth_write = 0;
     ps.color_write = 0;
-    if (!stin__query_begin(ctx, STIN__QUERY_SAMPLES, GL_SAMPLES_PASSED, s->query))
+    if (!stin__any_samples_begin(ctx, s->query))
         return 1; /* a caller's samples query: taken as an overflow */
     for (q = 0; q < p->primitive_count; q++) {
         int last = (int)q * k + k - 1;
         attach_layer(ctx, last + 1); /* not the array it reads; nothing is written */
         peel_draw(ctx, &ctx->csg->primitives[p->first_primitive + q], last, &ps);
     }
-    GL(ctx, EndQuery)(GL_SAMPLES_PASSED);
-    GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &samples);
-    return samples != 0;
+    return stin__any_samples_end(ctx, s->query);
 }
 
 /* Every layer of p's primitives (and the cap's, where the near plane may

@@ -125,7 +125,7 @@ void stin__csg_merge_init(stin_context *ctx)
     STIN__LOCATE(ctx, m->merge_prog, m, merge_uniforms);
     STIN__LOCATE(ctx, m->snap_prog, m, snap_uniforms);
     stin__displace_locate(ctx, m->snap_prog, 0, &m->snap_displace);
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_ANY_SAMPLES_QUERY))
         GL(ctx, GenQueries)(STIN__CSG_MERGE_THRESHOLDS + 1, m->queries);
 }
 
@@ -635,6 +635,7 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
     stin__csg_merge_state *m = &ctx->csg->merge;
     GLuint kept = 1, q = m->queries[STIN__CSG_MERGE_THRESHOLDS];
     int counted = want_kept && m->queries[0] && !(ctx->queries_busy & STIN__QUERY_SAMPLES);
+    GLenum target = stin__any_samples_target(ctx);
     region_rows g = rows_of(ctx, r);
     size_t x, y;
     int direct;
@@ -659,13 +660,13 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER,
                              direct ? ctx->draw_fbo : m->fbo[STIN__CSG_MERGE_RESULT]);
     if (counted)
-        GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, q);
+        GL_ENUM(ctx, BeginQuery, target)(target, q);
     if (direct)
         snap_surface(ctx, surface);
     else
         merge_quad(ctx, select);
     if (counted) {
-        GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
+        GL_ENUM(ctx, EndQuery, target)(target);
         GL(ctx, GetQueryObjectuiv)(q, GL_QUERY_RESULT, &kept);
     }
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
@@ -696,6 +697,7 @@ unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__
     size_t i, x, y;
     if (r->gpu && m->queries[0] && !(ctx->queries_busy & STIN__QUERY_SAMPLES)) {
         GLuint passed[STIN__CSG_MERGE_THRESHOLDS];
+        GLenum target = stin__any_samples_target(ctx);
         stin__pass_state ps = stin__pass_defaults;
         int n = 0;
         ps.depth_write = 0;
@@ -707,9 +709,9 @@ unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__
         while (n < STIN__CSG_MERGE_THRESHOLDS && thresholds[n] <= limit) {
             ps.front.ref = (GLint)thresholds[n];
             ps.back = ps.front;
-            GL_ENUM(ctx, BeginQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED, m->queries[n]);
+            GL_ENUM(ctx, BeginQuery, target)(target, m->queries[n]);
             kill_quad(ctx, &ps);
-            GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
+            GL_ENUM(ctx, EndQuery, target)(target);
             n++;
         }
         for (i = 0; i < (size_t)n; i++) /* in order: the first read waits, the rest follow */

@@ -100,9 +100,31 @@ static void read_region(stin_context *ctx, const resolve *r, GLenum format, GLen
     }
 }
 
+/* OpenGL ES reads no GL_DEPTH_COMPONENT as floats: a 24-bit depth comes
+ * back with its stencil as one GL_UNSIGNED_INT_24_8 word
+ * (NV_read_depth_stencil, which stin__csg_init asks for on ES), each
+ * turned into the float desktop GL would have read, in place. */
+static void read_depth_es(stin_context *ctx, const resolve *r, float *out)
+{
+    const int *g = ctx->csg->region;
+    int x, y;
+    read_region(ctx, r, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out);
+    for (y = 0; y < g[3]; y++) {
+        float *row = out + (size_t)(g[1] - r->y + y) * (size_t)r->w + (size_t)(g[0] - r->x);
+        for (x = 0; x < g[2]; x++) {
+            uint32_t word;
+            stin__memcopy(&word, &row[x], sizeof word); /* the bytes GL wrote */
+            row[x] = (float)((double)(word >> 8) / 16777215.0);
+        }
+    }
+}
+
 void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out)
 {
-    read_region(ctx, r, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+    if (ctx->caps.es && ctx->target.depth_bits <= 24)
+        read_depth_es(ctx, r, out);
+    else
+        read_region(ctx, r, GL_DEPTH_COMPONENT, GL_FLOAT, out);
 }
 
 void stin__csg_read_stencil(stin_context *ctx, const resolve *r)

@@ -157,7 +157,10 @@ void stin__csg_init(stin_context *ctx)
 {
     stin__csg_state *c = ctx->csg;
     char msg[160], why[200];
-    int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150;
+    /* GLSL ES 3.00 has gl_FragDepth and texelFetch: the depth program
+     * builds on every ES 3.x context, whichever lighting it chose */
+    int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150 ||
+              (ctx->caps.es && ctx->caps.glsl_major >= 3);
     c->cap_slot = STIN__NO_SLOT;
     if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
         return;
@@ -165,7 +168,17 @@ void stin__csg_init(stin_context *ctx)
         if (!gl4) {
             stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
                          "goldfeather and scs write depth with glDrawPixels (compatibility "
-                         "profile) or a GLSL 1.50 program (GL4 lighting)");
+                         "profile) or a GLSL 1.50 / GLSL ES 3.00 program (GL4 lighting, "
+                         "OpenGL ES 3.0+)");
+            return;
+        }
+        /* the read-back resolves (light maps', STIN_DEBUG_CSG_READBACK,
+         * no GPU resolve) read depth and stencil, which core ES cannot */
+        if (ctx->caps.es && (!stin_query_extension(ctx, "GL_NV_read_depth_stencil") ||
+                             !stin_query_extension(ctx, "GL_NV_read_stencil"))) {
+            stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
+                         "OpenGL ES reads depth and stencil back only with "
+                         "GL_NV_read_depth_stencil and GL_NV_read_stencil");
             return;
         }
         c->depth_prog = stin__program_build(ctx, "gl4/screen.vert", "gl4/csg_depth.frag",

@@ -62,7 +62,7 @@ void stin__caller_detect(stin_context *ctx)
         (v >= 32 || stin_query_extension(ctx, "GL_ARB_provoking_vertex") ||
          stin_query_extension(ctx, "GL_EXT_provoking_vertex")))
         h |= STIN__CALLER_PROVOKING;
-    if (loaded(ctx, STIN_GLFN_GetQueryiv) && has(ctx, STIN_CAP_OCCLUSION_QUERY))
+    if (loaded(ctx, STIN_GLFN_GetQueryiv) && has(ctx, STIN_CAP_ANY_SAMPLES_QUERY))
         h |= STIN__CALLER_QUERIES;
     if (v >= 30 || stin_query_extension(ctx, "GL_ARB_framebuffer_sRGB") ||
         stin_query_extension(ctx, "GL_EXT_framebuffer_sRGB"))
@@ -199,23 +199,25 @@ static int array_units(const stin_context *ctx)
 
 static void busy_queries(stin_context *ctx)
 {
+    /* the GL and the ES version that has each target (0: ES has none) */
     static const struct {
         GLenum target;
-        int version;
+        int version, es_version;
         unsigned bit;
-    } targets[] = {{GL_SAMPLES_PASSED, 15, STIN__QUERY_SAMPLES},
-                   {ANY_SAMPLES_PASSED, 33, STIN__QUERY_SAMPLES},
-                   {ANY_SAMPLES_PASSED_CONSERVATIVE, 43, STIN__QUERY_SAMPLES},
-                   {GL_PRIMITIVES_GENERATED, 30, STIN__QUERY_PRIMITIVES},
-                   {GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 30, STIN__QUERY_FEEDBACK},
-                   {GL_TIME_ELAPSED, 33, STIN__QUERY_TIME}};
+    } targets[] = {{GL_SAMPLES_PASSED, 15, 0, STIN__QUERY_SAMPLES},
+                   {ANY_SAMPLES_PASSED, 33, 30, STIN__QUERY_SAMPLES},
+                   {ANY_SAMPLES_PASSED_CONSERVATIVE, 43, 30, STIN__QUERY_SAMPLES},
+                   {GL_PRIMITIVES_GENERATED, 30, 32, STIN__QUERY_PRIMITIVES},
+                   {GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 30, 30, STIN__QUERY_FEEDBACK},
+                   {GL_TIME_ELAPSED, 33, 0, STIN__QUERY_TIME}};
     size_t i;
     ctx->queries_busy = 0;
     if (!(ctx->caller_has & STIN__CALLER_QUERIES))
         return;
     for (i = 0; i < sizeof targets / sizeof targets[0]; i++) {
         GLint current = 0;
-        if (version(ctx) < targets[i].version)
+        int since = ctx->caps.es ? targets[i].es_version : targets[i].version;
+        if (since == 0 || version(ctx) < since)
             continue;
         GL(ctx, GetQueryiv)(targets[i].target, CURRENT_QUERY, &current);
         if (current)
@@ -276,4 +278,23 @@ int stin__query_begin(stin_context *ctx, unsigned which, GLenum target, GLuint i
         return 0;
     GL_ENUM(ctx, BeginQuery, target)(target, id);
     return 1;
+}
+
+GLenum stin__any_samples_target(const stin_context *ctx)
+{
+    return has(ctx, STIN_CAP_OCCLUSION_QUERY) ? GL_SAMPLES_PASSED : GL_ANY_SAMPLES_PASSED;
+}
+
+int stin__any_samples_begin(stin_context *ctx, GLuint id)
+{
+    return stin__query_begin(ctx, STIN__QUERY_SAMPLES, stin__any_samples_target(ctx), id);
+}
+
+int stin__any_samples_end(stin_context *ctx, GLuint id)
+{
+    GLenum target = stin__any_samples_target(ctx);
+    GLuint passed = 0;
+    GL_ENUM(ctx, EndQuery, target)(target);
+    GL(ctx, GetQueryObjectuiv)(id, GL_QUERY_RESULT, &passed);
+    return passed != 0;
 }

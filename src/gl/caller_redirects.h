@@ -67,5 +67,13 @@ void stin__caller_frame_end(struct stin_context *ctx, const stin__caller_frame *
 /* Begins query `id` on `target` unless a caller's query holds it (the
  * STIN__QUERY_* bit `which`): 1 when begun, so the caller of this ends it. */
 int stin__query_begin(struct stin_context *ctx, unsigned which, GLenum target, GLuint id);
+/* The target of stin's "did any sample pass" queries: GL_SAMPLES_PASSED
+ * where the context counts samples (desktop), else GL_ANY_SAMPLES_PASSED
+ * (OpenGL ES 3.0+); only where ANY_SAMPLES_QUERY is present. */
+GLenum stin__any_samples_target(const struct stin_context *ctx);
+/* stin__query_begin of an any-samples query on id (STIN__QUERY_SAMPLES). */
+int stin__any_samples_begin(struct stin_context *ctx, GLuint id);
+/* Ends the query stin__any_samples_begin began; 1 when any sample passed. */
+int stin__any_samples_end(struct stin_context *ctx, GLuint id);
 
 #endif

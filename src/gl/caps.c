@@ -26,9 +26,9 @@ static const char *const cap_extensions[] = {
  * EXT_depth_clamp is left to a later change: volumes take the far plane at
  * infinity), timer queries (EXT_disjoint_timer_query's entry points are not
  * loaded) and drawing from a transform feedback object (GL 4.0; ES 3.0 has
- * the objects, not that draw) and occlusion queries: stin counts samples
- * (GL_SAMPLES_PASSED), ES 3.0 and EXT_occlusion_query_boolean answer only
- * whether any passed. */
+ * the objects, not that draw) and sample-count occlusion queries
+ * (GL_SAMPLES_PASSED): ES answers only whether any passed, which is
+ * ANY_SAMPLES_QUERY. */
 typedef struct es_rule {
     int version;            /* ES major * 10 + minor, 0 = never core */
     const char *extensions; /* any one of them gives it */
@@ -55,6 +55,14 @@ static const es_rule es_rules[STIN_CAP_COUNT] = {
     [STIN_CAP_ELEMENT_INDEX_UINT] = {30, "GL_OES_element_index_uint", NULL},
     [STIN_CAP_FRAG_DEPTH] = {30, "GL_EXT_frag_depth", NULL},
     [STIN_CAP_DERIVATIVES] = {30, "GL_OES_standard_derivatives", NULL},
+    /* "did any sample pass" is all stin asks of a query (peel and deep
+     * stops, CSG's merge and overflow tests): core in ES 3.0 (ES 2.0's
+     * EXT_occlusion_query_boolean names its entry points ...EXT, which
+     * stin does not load) */
+    [STIN_CAP_ANY_SAMPLES_QUERY] = {30, "", NULL},
+    /* ES 3.2 renders into float targets but blends 32-bit ones only with
+     * EXT_float_blend (dual peeling's RG32F MIN/MAX) */
+    [STIN_CAP_FLOAT_BLEND] = {0, "GL_EXT_float_blend", "GL_EXT_color_buffer_float"},
 };
 
 int stin__token_in_list(const char *list, const char *token, size_t token_len)
@@ -168,6 +176,9 @@ static uint64_t caps_missing_entry_points(const unsigned char *loaded, int es)
             continue; /* ES runs their capabilities without them */
         if (!loaded[i] && need < STIN_CAP_COUNT)
             missing |= STIN_CAP_BIT(need);
+        /* the query objects' entry points serve both kinds of query */
+        if (!loaded[i] && need == STIN_CAP_OCCLUSION_QUERY)
+            missing |= STIN_CAP_BIT(STIN_CAP_ANY_SAMPLES_QUERY);
     }
     return missing;
 }
@@ -257,6 +268,12 @@ int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
                   STIN_CAP_BIT(STIN_CAP_FRAG_DEPTH));
     out->hidden = have & in->caps_mask;
     out->present = have & ~in->caps_mask;
+    /* desktop answers "any passed" with its sample counts: what hides
+     * those hides it; nothing blends into float targets it cannot render */
+    if (!es && !(out->present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY)))
+        out->present &= ~STIN_CAP_BIT(STIN_CAP_ANY_SAMPLES_QUERY);
+    if (!(out->present & STIN_CAP_BIT(STIN_CAP_FLOAT_TEXTURE)))
+        out->present &= ~STIN_CAP_BIT(STIN_CAP_FLOAT_BLEND);
     return 1;
 }
 

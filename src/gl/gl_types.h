@@ -314,6 +314,7 @@ typedef void GLvoid;
 #define GL_PROXY_TEXTURE_2D_ARRAY 0x8C1B
 #define GL_TEXTURE_WIDTH 0x1000
 #define GL_SAMPLES_PASSED 0x8914
+#define GL_ANY_SAMPLES_PASSED 0x8C2F
 
 /* caller state a frame establishes (gl/caller_state.c) */
 #define GL_FUNC_ADD 0x8006

@@ -210,6 +210,7 @@ static int enum_need(GLenum e)
         return NEED_GL13;
     case GL_RASTERIZER_DISCARD: case GL_TEXTURE_2D_ARRAY: return NEED_GL30;
     case GL_SAMPLES_PASSED: return STIN_CAP_OCCLUSION_QUERY;
+    case GL_ANY_SAMPLES_PASSED: return NEED_GL33; /* ES 3.0 */
     case GL_TIME_ELAPSED: return STIN_CAP_TIMER_QUERY;
     case GL_PRIMITIVE_RESTART: return NEED_GL31;
     case GL_SAMPLE_MASK: return NEED_GL32;

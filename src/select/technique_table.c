@@ -88,21 +88,22 @@ static const stin__technique_row rows[] = {
          BIT(VBO) | BIT(FRAG_DEPTH), GLSL_ANY, 0, 2, 0, 0, 0},
     {STIN_TECH_TRANSPARENCY_SORTED,    2, 0, STIN_TECH_NONE, 0, 0, 0, 0, 0},
     /* dual depth peeling: depth-peel's needs on GLSL 1.50 (3.2+: the MAX
-     * blend equation) with float colour targets (RG32F min-max, RGBA16F
-     * composites) and occlusion queries (its early stop); the same two
-     * samplers (this pass's min-max, the opaque depth) */
+     * blend equation) with float colour targets it blends into (RG32F
+     * min-max, RGBA16F composites) and an any-samples query (its early
+     * stop); the same two samplers (this pass's min-max, the opaque depth) */
     {STIN_TECH_TRANSPARENCY_DUAL_PEEL, 0,
-     TIER4 | BIT(FLOAT_TEXTURE) | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
-         BIT(MULTITEXTURE) | BIT(OCCLUSION_QUERY), STIN_TECH_LIGHTING_GLSL150, 0, 2, 0, 0, 0},
+     TIER4 | BIT(FLOAT_TEXTURE) | BIT(FLOAT_BLEND) | BIT(DEPTH_TEXTURE) |
+         BIT(PACKED_DEPTH_STENCIL) | BIT(MULTITEXTURE) | BIT(ANY_SAMPLES_QUERY),
+     STIN_TECH_LIGHTING_GLSL150, 0, 2, 0, 0, 0},
     /* the ray-interval walk over peeled layers (csg/interval.c): GLSL 1.50,
      * FBOs, texture arrays (GL 3.0: DEPTH_COMPONENT32F and R8 layers) and a
      * float colour target (R32F) the walk writes and the CPU reads back, an
-     * occlusion query for the overflow;
+     * any-samples query for the overflow;
      * goldfeather's depth write-back (its GLSL 1.50 program) and stencil
      * for the products it hands on; products past its limits go to
      * scs/goldfeather (logged) */
     {STIN_TECH_CSG_INTERVAL,           1, TIER4 | BIT(FLOAT_TEXTURE) | BIT(STENCIL) |
-         BIT(OCCLUSION_QUERY),
+         BIT(ANY_SAMPLES_QUERY),
      STIN_TECH_LIGHTING_GLSL150, 0, 0, 0, 0, 0},
 };
 

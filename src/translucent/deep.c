@@ -231,7 +231,7 @@ void stin__deep_init(stin_context *ctx)
         GL(ctx, BufferData)(GL_SHADER_STORAGE_BUFFER, (GLsizeiptr)sizeof zero, &zero,
                             GL_DYNAMIC_READ);
         GL(ctx, BindBuffer)(GL_SHADER_STORAGE_BUFFER, 0);
-    } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY)) {
+    } else if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_ANY_SAMPLES_QUERY)) {
         GL(ctx, GenQueries)(1, &s->query);
     }
     s->ready = 1;
@@ -341,7 +341,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
         if (stop_early && s->flag)
             GL(ctx, BufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof zero, &zero);
         else if (stop_early) /* a caller's samples query: no early stop */
-            counted = stin__query_begin(ctx, STIN__QUERY_SAMPLES, GL_SAMPLES_PASSED, s->query);
+            counted = stin__any_samples_begin(ctx, s->query);
         draw_transparent(ctx);
         ctx->stats.translucent.deep_layers++;
         ctx->stats.passes++;
@@ -350,8 +350,7 @@ static void peel_face(stin_context *ctx, int face, const float view[16], const f
             GL(ctx, GetBufferSubData)(GL_SHADER_STORAGE_BUFFER, 0, (GLsizeiptr)sizeof drawn,
                                       &drawn);
         } else if (counted) {
-            GL_ENUM(ctx, EndQuery, GL_SAMPLES_PASSED)(GL_SAMPLES_PASSED);
-            GL(ctx, GetQueryObjectuiv)(s->query, GL_QUERY_RESULT, &drawn);
+            drawn = (GLuint)stin__any_samples_end(ctx, s->query);
         }
         if (!drawn) { /* empty, so every deeper layer would be: the lookup stops here */
             s->face_layers[face] = (GLint)k;

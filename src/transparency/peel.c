@@ -164,7 +164,7 @@ void stin__peel_init(stin_context *ctx)
         return;
     }
     STIN__LOCATE(ctx, s->program, s, composite_uniforms);
-    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_OCCLUSION_QUERY))
+    if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_ANY_SAMPLES_QUERY))
         GL(ctx, GenQueries)(1, &s->query);
     s->ready = 1;
 }
@@ -321,19 +321,12 @@ int stin__peel_layer_begin(stin_context *ctx)
 /* Under a caller's samples query the peeling runs to its layer limit. */
 void stin__peel_count_begin(stin_context *ctx)
 {
-    ctx->peel->counting = ctx->peel->query && stin__query_begin(ctx, STIN__QUERY_SAMPLES,
-                                                                GL_SAMPLES_PASSED,
-                                                                ctx->peel->query);
+    ctx->peel->counting = ctx->peel->query && stin__any_samples_begin(ctx, ctx->peel->query);
 }
 
 GLuint stin__peel_count_end(stin_context *ctx)
 {
-    GLuint samples = 1;
-    if (ctx->peel->counting) {
-        GL(ctx, EndQuery)(GL_SAMPLES_PASSED);
-        GL(ctx, GetQueryObjectuiv)(ctx->peel->query, GL_QUERY_RESULT, &samples);
-    }
-    return samples;
+    return ctx->peel->counting ? (GLuint)stin__any_samples_end(ctx, ctx->peel->query) : 1u;
 }
 
 int stin__peel_layer_lights(stin_context *ctx)

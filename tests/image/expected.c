@@ -19,14 +19,12 @@
  * through a depth map of their own), tessellated first where there are
  * tessellation shaders (GL 4.0); scs everywhere (products of non-convex
  * primitives go to goldfeather); dual depth peeling on GL4 (float
- * targets, occlusion queries), depth peeling on GL2 (FBOs, depth textures,
+ * targets it blends into, any-samples queries), depth peeling on GL2 (FBOs, depth textures,
  * packed depth-stencil), sorted on GL1 */
 #define RESERVED STIN_TECH_TRANSLUCENT_OPAQUE, STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS, \
     STIN_TECH_TRANSPARENCY_SORTED
 #define COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_VTF, STIN_TECH_CSG_SCS, \
     STIN_TECH_TRANSPARENCY_DEPTH_PEEL
-#define ES_COLOURED STIN_TECH_TRANSLUCENT_COLOURED, STIN_TECH_DISPLACEMENT_VTF, \
-    STIN_TECH_CSG_OFF, STIN_TECH_TRANSPARENCY_DEPTH_PEEL
 #define DISPLACED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_VTF, \
     STIN_TECH_CSG_SCS, STIN_TECH_TRANSPARENCY_DUAL_PEEL
 #define TESSELLATED STIN_TECH_TRANSLUCENT_DEEP, STIN_TECH_DISPLACEMENT_TESS, \
@@ -40,20 +38,20 @@ static const expected_profile table[] = {
     {"gl33-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, DISPLACED}, {0, 0, 1}},
     {"gl45-core", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {0, 0, 1}},
     /* OpenGL ES (egl only): no fixed function, so no GL1 tier; GLSL ES 1.00
-     * runs the GL2 tier, ES 3.2 the GL4 one. CSG has no depth write-back
-     * below GL4 lighting on ES (glDrawPixels is desktop compatibility). */
+     * runs the GL2 tier, ES 3.2 the GL4 one. CSG writes depth back with a
+     * GLSL ES 3.00 program from ES 3.0 on (glDrawPixels is desktop
+     * compatibility; ES 2.0 has no gl_FragDepth). */
     {"es20", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, STIN_TECH_TRANSLUCENT_OPAQUE,
                              STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_OFF,
                              STIN_TECH_TRANSPARENCY_SORTED}, {0, 1, 0}},
     {"es20-ext", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, STIN_TECH_TRANSLUCENT_COLOURED,
                                  STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_OFF,
                                  STIN_TECH_TRANSPARENCY_DEPTH_PEEL}, {0, 1, 0}},
-    {"es30", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, ES_COLOURED}, {0, 1, 0}},
-    {"es31", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, ES_COLOURED}, {0, 1, 0}},
-    /* no sample-count queries on ES: depth peeling, not dual */
-    {"es32", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, STIN_TECH_TRANSLUCENT_DEEP,
-                             STIN_TECH_DISPLACEMENT_TESS, STIN_TECH_CSG_SCS,
-                             STIN_TECH_TRANSPARENCY_DEPTH_PEEL}, {0, 1, 1}},
+    {"es30", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, COLOURED}, {0, 1, 0}},
+    {"es31", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, COLOURED}, {0, 1, 0}},
+    /* dual peeling's early stop by an any-samples query, its RG32F MIN/MAX
+     * by EXT_float_blend */
+    {"es32", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {0, 1, 1}},
     {"native", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {1, 1, 1}},
 };
 

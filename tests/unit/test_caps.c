@@ -140,6 +140,25 @@ static void test_versions_enable_core_capabilities(void **state)
     c = parse("3.0 Mesa 22.3.6", "1.30", "");
     assert_true(HAS(c, FBO) && HAS(c, VAO) && HAS(c, FLOAT_TEXTURE) && HAS(c, VBO));
     assert_false(HAS(c, DEPTH_CLAMP) || HAS(c, GEOMETRY_SHADER) || HAS(c, TESSELLATION));
+    /* desktop: blending float targets comes with them, "any passed" with counts */
+    assert_true(HAS(c, FLOAT_BLEND) && HAS(c, ANY_SAMPLES_QUERY) && HAS(c, OCCLUSION_QUERY));
+}
+
+/* A mask that hides sample counts (or float targets) on desktop hides the
+ * any-samples queries (or float blending) stin would take from them. */
+static void test_desktop_any_samples_and_float_blend_follow(void **state)
+{
+    stin__caps_input in;
+    stin_caps c;
+    (void)state;
+    memset(&in, 0, sizeof in);
+    in.version = "3.3 Mesa 22.3.6";
+    in.glsl_version = "3.30";
+    in.extensions = "";
+    in.caps_mask = BIT(OCCLUSION_QUERY) | BIT(FLOAT_TEXTURE);
+    assert_int_equal(stin__caps_parse(&in, &c), 1);
+    assert_false(HAS(c, ANY_SAMPLES_QUERY) || HAS(c, FLOAT_BLEND));
+    assert_true(HAS(c, GEOMETRY_SHADER));
 }
 
 /* ---- extensions ---------------------------------------------------------- */
@@ -442,7 +461,7 @@ static void test_detect_without_version_fails(void **state)
 #define DERIVATIVES_EXT "GL_OES_standard_derivatives"
 #define ES30_CORE                                                                        \
     (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) | \
-     BIT(ELEMENT_INDEX_UINT) | BIT(FRAG_DEPTH))
+     BIT(ELEMENT_INDEX_UINT) | BIT(FRAG_DEPTH) | BIT(ANY_SAMPLES_QUERY))
 
 static void test_es_version_strings(void **state)
 {
@@ -489,6 +508,15 @@ static void test_es_core_capabilities_by_version(void **state)
     assert_int_equal(c.present, ES30_CORE | BIT(COMPUTE) | BIT(FLOAT_TEXTURE) |
                                     BIT(GEOMETRY_SHADER) | BIT(TESSELLATION));
     assert_false(HAS(c, FIXED_FUNCTION));
+    /* blending float targets: EXT_float_blend, and only beside rendering them */
+    c = parse("OpenGL ES 3.0 Mesa", "OpenGL ES GLSL ES 3.00",
+              "GL_EXT_color_buffer_float GL_EXT_float_blend");
+    assert_int_equal(c.present, ES30_CORE | BIT(FLOAT_TEXTURE) | BIT(FLOAT_BLEND));
+    c = parse("OpenGL ES 3.2 Mesa", "OpenGL ES GLSL ES 3.20", "GL_EXT_float_blend");
+    assert_false(HAS(c, FLOAT_BLEND));
+    /* any-samples queries but never sample counts on ES */
+    assert_true(HAS(c, ANY_SAMPLES_QUERY));
+    assert_false(HAS(c, OCCLUSION_QUERY));
 }
 
 /* ES 2.0's extensions map to the same bits; desktop names mean nothing on
@@ -502,7 +530,8 @@ static void test_es_extension_names(void **state)
               "GL_EXT_occlusion_query_boolean GL_EXT_shadow_samplers GL_OES_texture_float "
               "GL_EXT_color_buffer_float GL_OES_element_index_uint GL_EXT_frag_depth "
               DERIVATIVES_EXT);
-    /* any-samples queries are not the sample counts OCCLUSION_QUERY means */
+    /* any-samples queries are not the sample counts OCCLUSION_QUERY means,
+     * and ES 2.0's EXT entry points are not loaded: neither bit */
     assert_int_equal(c.present, ES20_CORE | BIT(DEPTH_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
                                     BIT(VAO) | BIT(SHADOW) | BIT(ELEMENT_INDEX_UINT) |
                                     BIT(FRAG_DEPTH));
@@ -613,6 +642,7 @@ int main(void)
         cmocka_unit_test(test_glsl_version_strings),
         cmocka_unit_test(test_glsl_string_on_gl11_context_means_no_glsl),
         cmocka_unit_test(test_glsl_is_clamped_to_the_gl_version),
+        cmocka_unit_test(test_desktop_any_samples_and_float_blend_follow),
         cmocka_unit_test(test_versions_enable_core_capabilities),
         cmocka_unit_test(test_extension_prefix_does_not_match),
         cmocka_unit_test(test_ext_texture_env_combine_alone),

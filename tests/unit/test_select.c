@@ -22,11 +22,11 @@
     (GL13_BITS | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(STENCIL_WRAP) |                   \
      BIT(STENCIL_TWO_SIDE) | BIT(DEPTH_CLAMP))
 #define GL21_BITS (GL14_BITS | BIT(VBO) | BIT(GLSL) | BIT(SEPARATE_STENCIL) | BIT(FBO) |  \
-                   BIT(OCCLUSION_QUERY) | BIT(VERTEX_TEXTURE_FETCH) | BIT(FRAG_DEPTH) |     \
-                   BIT(DERIVATIVES))
+                   BIT(OCCLUSION_QUERY) | BIT(ANY_SAMPLES_QUERY) | BIT(VERTEX_TEXTURE_FETCH) | \
+                   BIT(FRAG_DEPTH) | BIT(DERIVATIVES))
 #define GL33_CORE_BITS                                                                    \
     ((GL21_BITS & ~BIT(FIXED_FUNCTION)) | BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | \
-     BIT(PACKED_DEPTH_STENCIL))
+     BIT(PACKED_DEPTH_STENCIL) | BIT(FLOAT_BLEND))
 #define GL45_CORE_BITS (GL33_CORE_BITS | BIT(TESSELLATION) | BIT(COMPUTE))
 
 static stin_caps caps_with(int gl, int glsl, int core, uint64_t present)
@@ -338,12 +338,17 @@ static void test_transparency_chain(void **state)
     assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_DUAL_PEEL);
     assert_false(c->fell_back);
-    core.present &= ~BIT(OCCLUSION_QUERY); /* its early stop */
+    core.present &= ~BIT(ANY_SAMPLES_QUERY); /* its early stop */
     assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_DEPTH_PEEL);
     assert_true(c->fell_back);
-    assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_OCCLUSION_QUERY)));
-    core.present |= BIT(OCCLUSION_QUERY);
+    assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_ANY_SAMPLES_QUERY)));
+    core.present |= BIT(ANY_SAMPLES_QUERY);
+    core.present &= ~BIT(FLOAT_BLEND); /* its RG32F MIN/MAX blending */
+    assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
+    assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_DEPTH_PEEL);
+    assert_non_null(strstr(c->reason, stin_cap_name(STIN_CAP_FLOAT_BLEND)));
+    core.present |= BIT(FLOAT_BLEND);
     core.present &= ~(BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL));
     assert_int_equal(stin__select(&core, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(c->technique, STIN_TECH_TRANSPARENCY_SORTED);
