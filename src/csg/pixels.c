@@ -89,14 +89,50 @@ static void read_region(stin_context *ctx, const resolve *r, GLenum format, GLen
     }
 }
 
+/* OpenGL ES reads neither float depth nor stencil indices: depth and
+ * stencil come as one GL_UNSIGNED_INT_24_8 word (NV_read_depth_stencil,
+ * which Mesa has on every ES version), depth in the top 24 bits. */
+#define ES_DEPTH_MAX 16777215.0
+
 void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out)
 {
-    read_region(ctx, r, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+    const int *g = ctx->csg->region;
+    int x, y;
+    if (!ctx->caps.es) {
+        read_region(ctx, r, GL_DEPTH_COMPONENT, GL_FLOAT, out);
+        return;
+    }
+    read_region(ctx, r, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, out); /* 4 bytes, as a float */
+    for (y = g[1] - r->y; y < g[1] - r->y + g[3]; y++)
+        for (x = g[0] - r->x; x < g[0] - r->x + g[2]; x++) {
+            float *p = &out[(size_t)y * (size_t)r->w + (size_t)x];
+            uint32_t word;
+            stin__memcopy(&word, p, sizeof word);
+            *p = (float)((double)(word >> 8) / ES_DEPTH_MAX);
+        }
 }
+
+/* On ES a row piece at a time through a word buffer: the stencil array
+ * has a byte a pixel only. */
+#define ES_STENCIL_RUN 256
 
 void stin__csg_read_stencil(stin_context *ctx, const resolve *r)
 {
-    read_region(ctx, r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
+    const int *g = ctx->csg->region;
+    uint32_t words[ES_STENCIL_RUN];
+    int x, y, i, n;
+    if (!ctx->caps.es) {
+        read_region(ctx, r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
+        return;
+    }
+    for (y = g[1]; y < g[1] + g[3]; y++)
+        for (x = g[0]; x < g[0] + g[2]; x += n) {
+            unsigned char *row = r->stencil + (size_t)(y - r->y) * (size_t)r->w + (size_t)(x - r->x);
+            n = g[0] + g[2] - x < ES_STENCIL_RUN ? g[0] + g[2] - x : ES_STENCIL_RUN;
+            GL(ctx, ReadPixels)(x, y, n, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, words);
+            for (i = 0; i < n; i++)
+                row[i] = (unsigned char)(words[i] & 0xffu);
+        }
 }
 
 #define GL_R32F 0x822E

@@ -274,17 +274,21 @@ static void STIN_APIENTRY w_FramebufferTexture2D(GLenum t, GLenum a, GLenum tt, 
     AUDIT(FramebufferTexture2D, tt);
     DRIVER(FramebufferTexture2D)(t, a, tt, x, l);
 }
+/* An argument valid in some of its call's slots only, refused in this one. */
+static void slot_violation(const char *call, const char *lacks)
+{
+    audit.ctx->gl_violations++;
+    stin__log(audit.ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
+              "%s at %s:%d: OpenGL ES %d.%d lacks it (%s)", call, audit.file, audit.line,
+              audit.ctx->caps.gl_major, audit.ctx->caps.gl_minor, lacks);
+}
 static void STIN_APIENTRY w_DrawElements(GLenum m, GLsizei n, GLenum ty, const void *i)
 {
     AUDIT(DrawElements, m);
     if (ty == GL_UNSIGNED_INT && audit.ctx && audit.ctx->caps.es &&
         audit.ctx->caps.gl_major < 3 &&
-        !(audit.ctx->caps.present & STIN_CAP_BIT(STIN_CAP_ELEMENT_INDEX_UINT))) {
-        audit.ctx->gl_violations++;
-        stin__log(audit.ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
-                  "glDrawElements(GL_UNSIGNED_INT) at %s:%d: OpenGL ES 2.0 lacks it (ES 3.0 or "
-                  "OES_element_index_uint)", audit.file, audit.line);
-    }
+        !(audit.ctx->caps.present & STIN_CAP_BIT(STIN_CAP_ELEMENT_INDEX_UINT)))
+        slot_violation("glDrawElements(GL_UNSIGNED_INT)", "ES 3.0 or OES_element_index_uint");
     DRIVER(DrawElements)(m, n, ty, i);
 }
 static void STIN_APIENTRY w_DrawArrays(GLenum m, GLint f, GLsizei n)
@@ -298,6 +302,9 @@ static void STIN_APIENTRY w_ReadPixels(GLint x, GLint y, GLsizei w, GLsizei h, G
     AUDIT(ReadPixels, f);
     if (ty != GL_UNSIGNED_INT_24_8 || !audit.ctx || !audit.ctx->caps.es) /* NV_read_depth_stencil */
         AUDIT(ReadPixels, ty);
+    if (f == GL_DEPTH_COMPONENT && ty == GL_FLOAT && audit.ctx && audit.ctx->caps.es)
+        slot_violation("glReadPixels(GL_DEPTH_COMPONENT, GL_FLOAT)",
+                       "ES reads depth as GL_DEPTH_STENCIL words, NV_read_depth_stencil");
     DRIVER(ReadPixels)(x, y, w, h, f, ty, p);
 }
 static void STIN_APIENTRY w_BlendEquation(GLenum m)
