@@ -225,13 +225,15 @@ bench: deps
 	@$(MAKE) --no-print-directory $(B)/stin-bench
 	$(B)/stin-bench
 
-# Every example scene at every tier the default context runs, into out/.
+# Every example scene at every tier the default context runs, and on the
+# OpenGL ES 3.0 and 3.2 profiles (EGL), into out/.
 demo: deps
 	@$(MAKE) --no-print-directory $(B)/stin-render
 	@mkdir -p out
 	@for s in tests/scenes/*.json; do n=$$(basename $$s .json); \
-	  for t in gl1 gl2 gl4; do \
-	    $(B)/stin-render $$s --tier $$t -o out/$$n-$$t.png > out/$$n-$$t.txt 2>&1 \
+	  for t in gl1 gl2 gl4 es30 es32; do \
+	    case $$t in es*) how="--profile $$t";; *) how="--tier $$t";; esac; \
+	    $(B)/stin-render $$s $$how -o out/$$n-$$t.png > out/$$n-$$t.txt 2>&1 \
 	      && echo "out/$$n-$$t.png" || echo "$$n at $$t: $$(tail -n 1 out/$$n-$$t.txt)"; \
 	  done; done
 
