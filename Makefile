@@ -123,8 +123,9 @@ $(B)/stin-imagetest: $(IMAGETEST_OBJ) $(B)/libstin_reference.a $(B)/libstin_tool
 # ---- unit tests (cmocka, AddressSanitizer + UndefinedBehaviorSanitizer) ----
 SAN_CFLAGS := -std=c99 $(WARN) -g -O1 $(SAN) -D_POSIX_C_SOURCE=200809L -Iinclude -Isrc -I$(B) \
   -Iplatform -Itools/common -Itests/reference -Itests/unit $(shell pkg-config --cflags libcjson 2>/dev/null)
-LIB_UNIT := $(filter-out test_noheap test_scene test_reference,$(patsubst tests/unit/%.c,%,$(wildcard tests/unit/test_*.c)))
+LIB_UNIT := $(filter-out test_noheap test_scene test_reference test_gl_audit,$(patsubst tests/unit/%.c,%,$(wildcard tests/unit/test_*.c)))
 UNIT_BINS := $(LIB_UNIT:%=$(B)/tests/%) $(B)/tests/test_scene $(B)/tests/test_reference $(B)/tests/test_noheap \
+  $(B)/tests/test_gl_audit \
   $(B)/tests/test_fuzz_scene $(B)/tests/test_fuzz_files
 
 # Everything a unit test links is compiled once under the sanitisers into
@@ -148,6 +149,14 @@ $(B)/stin-render-san: $(call san_obj,$(RENDER_SAN_SRC)) $(B)/libstin_san.a
 	$(CXX) $(SAN) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
 FAKE_GL_SRC := tests/unit/fake_gl.c tests/unit/fake_gl_state.c tests/unit/fake_gl_attrib.c
 $(LIB_UNIT:%=$(B)/tests/%): $(B)/tests/%: $(B)/san/tests/unit/%.o $(call san_obj,$(FAKE_GL_SRC)) $(B)/libstin_san.a
+	@mkdir -p $(@D)
+	$(CC) $(SAN) -o $@ $^ -lcmocka
+# The checked build's GL audit: the test is compiled as the checked library
+# is (STIN_GL_CHECK) and linked against it, with the fake GL.
+$(B)/san-checked/tests/unit/test_gl_audit.o: tests/unit/test_gl_audit.c
+	@mkdir -p $(@D)
+	@echo "  CC san  $<"; $(CC) $(SAN_CFLAGS) -DSTIN_GL_CHECK=1 $(DEPFLAGS) -c $< -o $@
+$(B)/tests/test_gl_audit: $(B)/san-checked/tests/unit/test_gl_audit.o $(call san_obj,$(FAKE_GL_SRC)) $(B)/libstin_checked.a
 	@mkdir -p $(@D)
 	$(CC) $(SAN) -o $@ $^ -lcmocka
 $(B)/tests/test_scene: $(call san_obj,tests/unit/test_scene.c $(COMMON_SRC) $(COMMON_CXX) $(PLATFORM_SRC)) $(B)/libstin.a
@@ -216,13 +225,15 @@ bench: deps
 	@$(MAKE) --no-print-directory $(B)/stin-bench
 	$(B)/stin-bench
 
-# Every example scene at every tier the default context runs, into out/.
+# Every example scene at every tier the default context runs, and on the
+# OpenGL ES 3.0 and 3.2 profiles (EGL), into out/.
 demo: deps
 	@$(MAKE) --no-print-directory $(B)/stin-render
 	@mkdir -p out
 	@for s in tests/scenes/*.json; do n=$$(basename $$s .json); \
-	  for t in gl1 gl2 gl4; do \
-	    $(B)/stin-render $$s --tier $$t -o out/$$n-$$t.png > out/$$n-$$t.txt 2>&1 \
+	  for t in gl1 gl2 gl4 es30 es32; do \
+	    case $$t in es*) how="--profile $$t";; *) how="--tier $$t";; esac; \
+	    $(B)/stin-render $$s $$how -o out/$$n-$$t.png > out/$$n-$$t.txt 2>&1 \
 	      && echo "out/$$n-$$t.png" || echo "$$n at $$t: $$(tail -n 1 out/$$n-$$t.txt)"; \
 	  done; done
 

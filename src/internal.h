@@ -41,6 +41,9 @@ struct stin_context {
     stin__selection sel;
     const stin__shadow_technique *shadow; /* the shadows choice's module */
     uint32_t gl_violations;   /* checked build: calls the profile does not allow */
+#if defined(STIN_GL_CHECK) && STIN_GL_CHECK
+    stin__gl gl_driver;       /* the driver's entry points; gl holds the ES audit's wrappers */
+#endif
 
     /* meshes and textures (assets/mesh.c, assets/texture.c) */
     uint32_t creation_serial; /* contexts made in this block so far (kept across them) */

@@ -719,6 +719,31 @@
  * sets aside the vertex array, array buffer, active unit, unit 0's 2D,
  * 2D-array and cube-map textures and the state above for its set-up).
  * Queries touch no GL.
+ * On OpenGL ES (2.0, 3.0-3.2) the contract is the same for the state ES
+ * has. stin_end_frame leaves depth test off, depth mask on, depth func LESS,
+ * blending off with ONE/ZERO and equation ADD, stencil test off with mask
+ * all ones, func ALWAYS/0/all ones and ops KEEP on both faces, front face
+ * CCW, cull face BACK and off, colour mask all on, scissor off, program 0,
+ * unit 0 active with no 2D texture bound, array buffer 0 and vertex array
+ * 0's element buffer 0, and establishes before its first draw depth range
+ * 0..1 (glDepthRangef), sample alpha-to-coverage and coverage off and, on
+ * ES 3.0+, rasterizer discard and fixed-index primitive restart off and no
+ * sampler object on units 0-15 (ES 3.1+: sample mask off). Polygon offset
+ * fill and the stencil clear value are the caller's again; clear colour,
+ * clear depth (glClearDepthf), the polygon offset factor and units, the
+ * scissor box and the stencil contents are overwritten. Set aside and given
+ * back on ES 3.0+: a bound pixel pack or unpack buffer and the 2D-array
+ * textures of units 0-7. GL_FRAMEBUFFER_SRGB exists on ES only with
+ * EXT_sRGB_write_control: with it a data frame turns it off and gives it
+ * back as on desktop GL; without it an sRGB target always encodes (a data
+ * frame into one is encoded too). The desktop states (logic op, polygon
+ * mode and smooth, depth clamp, clip distances, alpha test, stipple,
+ * primitive restart by index, colour clamping, the provoking vertex, query
+ * buffers, samples-passed queries, fixed function) do not exist on ES and
+ * stin neither reads nor sets them there; program pipelines (ES 3.1) and
+ * storage-buffer bindings are not set aside on ES (stin's ES paths bind
+ * neither). Tested on es30 and es32 (tests/image/hostile_test.c, the 18
+ * states ES has, one at a time and all at once, bit for bit).
  *
  * GL ERRORS
  * stin raises no GL error: it asks the driver only for limits that the GL
@@ -2113,9 +2138,9 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * compatibility contexts, on core profiles through an R32F texture the
  * size of the viewport, made at the first frame and kept, and a GLSL 1.50
  * program writing gl_FragDepth (GLSL ES 3.00 on OpenGL ES 3.x, whatever
- * the lighting; ES reads depth back as GL_DEPTH_STENCIL 24_8 words and
- * stencil as indices, so an ES context needs GL_NV_read_depth_stencil and
- * GL_NV_read_stencil); a core context without GL4 lighting, an ES 2.0
+ * the lighting; ES reads depth and stencil back as GL_DEPTH_STENCIL 24_8
+ * words, so an ES context needs GL_NV_read_depth_stencil); a core context
+ * without GL4 lighting, an ES 2.0
  * context, or a frame into a framebuffer without stencil, draws no
  * products: "csg-off" or a FALLBACK warning, logged once; products are
  * still accepted). The frame

@@ -127,9 +127,27 @@ void stin__csg_read_depth(stin_context *ctx, const resolve *r, float *out)
         read_region(ctx, r, GL_DEPTH_COMPONENT, GL_FLOAT, out);
 }
 
+/* On ES a row piece at a time through a word buffer: the stencil array
+ * has a byte a pixel only. */
+#define ES_STENCIL_RUN 256
+
 void stin__csg_read_stencil(stin_context *ctx, const resolve *r)
 {
-    read_region(ctx, r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
+    const int *g = ctx->csg->region;
+    uint32_t words[ES_STENCIL_RUN];
+    int x, y, i, n;
+    if (!ctx->caps.es) {
+        read_region(ctx, r, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE, r->stencil);
+        return;
+    }
+    for (y = g[1]; y < g[1] + g[3]; y++)
+        for (x = g[0]; x < g[0] + g[2]; x += n) {
+            unsigned char *row = r->stencil + (size_t)(y - r->y) * (size_t)r->w + (size_t)(x - r->x);
+            n = g[0] + g[2] - x < ES_STENCIL_RUN ? g[0] + g[2] - x : ES_STENCIL_RUN;
+            GL(ctx, ReadPixels)(x, y, n, 1, GL_DEPTH_STENCIL, GL_UNSIGNED_INT_24_8, words);
+            for (i = 0; i < n; i++)
+                row[i] = (unsigned char)(words[i] & 0xffu);
+        }
 }
 
 #define GL_R32F 0x822E

@@ -174,11 +174,10 @@ void stin__csg_init(stin_context *ctx)
         }
         /* the read-back resolves (light maps', STIN_DEBUG_CSG_READBACK,
          * no GPU resolve) read depth and stencil, which core ES cannot */
-        if (ctx->caps.es && (!stin_query_extension(ctx, "GL_NV_read_depth_stencil") ||
-                             !stin_query_extension(ctx, "GL_NV_read_stencil"))) {
+        if (ctx->caps.es && !stin_query_extension(ctx, "GL_NV_read_depth_stencil")) {
             stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
                          "OpenGL ES reads depth and stencil back only with "
-                         "GL_NV_read_depth_stencil and GL_NV_read_stencil");
+                         "GL_NV_read_depth_stencil");
             return;
         }
         c->depth_prog = stin__program_build(ctx, "gl4/screen.vert", "gl4/csg_depth.frag",

@@ -465,6 +465,7 @@ stin_result stin_create(const stin_desc *desc, void *memory, size_t memory_bytes
                   "stin_create: no current GL context (GL_VERSION unreadable)");
         return r;
     }
+    stin__gl_audit_install(ctx); /* checked build: ES calls' enums audited from here */
     stin__target_init(ctx);
     stin__caller_detect(ctx);
     stin__create_bindings_save(ctx, &bindings);
@@ -488,6 +489,7 @@ void stin_destroy(stin_context *ctx)
     stin__mesh_release_all(ctx);
     stin__texture_release_all(ctx);
     release_gl(ctx);
+    stin__gl_audit_forget(ctx);
 }
 
 stin_desc stin_query_desc(const stin_context *ctx)

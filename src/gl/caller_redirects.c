@@ -64,8 +64,11 @@ void stin__caller_detect(stin_context *ctx)
         h |= STIN__CALLER_PROVOKING;
     if (loaded(ctx, STIN_GLFN_GetQueryiv) && has(ctx, STIN_CAP_ANY_SAMPLES_QUERY))
         h |= STIN__CALLER_QUERIES;
-    if (v >= 30 || stin_query_extension(ctx, "GL_ARB_framebuffer_sRGB") ||
-        stin_query_extension(ctx, "GL_EXT_framebuffer_sRGB"))
+    /* OpenGL ES encodes into sRGB targets always; the enable is
+     * EXT_sRGB_write_control's there */
+    if (ctx->caps.es ? stin_query_extension(ctx, "GL_EXT_sRGB_write_control")
+                     : v >= 30 || stin_query_extension(ctx, "GL_ARB_framebuffer_sRGB") ||
+                           stin_query_extension(ctx, "GL_EXT_framebuffer_sRGB"))
         h |= STIN__CALLER_SRGB;
     ctx->caller_has = h;
 }

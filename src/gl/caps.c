@@ -440,7 +440,7 @@ int stin_query_extension(const stin_context *ctx, const char *name)
         n++;
     if (ctx->caps.gl_major >= 3 && ctx->gl.GetStringi) { /* desktop 3.0+ and ES 3.0+ */
         GLint count = 0, i;
-        ctx->gl.GetIntegerv(GL_NUM_EXTENSIONS, &count);
+        STIN_GL_DRIVER(ctx)->GetIntegerv(GL_NUM_EXTENSIONS, &count);
         for (i = 0; i < count; i++) {
             const char *t = (const char *)ctx->gl.GetStringi(GL_EXTENSIONS, (GLuint)i);
             if (t && stin__token_in_list(t, name, n))

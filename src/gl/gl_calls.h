@@ -63,13 +63,31 @@ int stin__gl_available(const struct stin_context *ctx, stin__glfn fn);
 /* Calls go through GL(ctx, Name)(args). The checked build first verifies that
  * the capability profile allows the entry point. */
 #if defined(STIN_GL_CHECK) && STIN_GL_CHECK
-void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn);
-void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e);
-#define GL(ctx, name) (stin__gl_check_call((ctx), STIN_GLFN_##name), (ctx)->gl.name)
-#define GL_ENUM(ctx, name, e) (stin__gl_check_enum((ctx), STIN_GLFN_##name, (e)), (ctx)->gl.name)
+void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn, const char *file, int line);
+void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e, const char *file,
+                         int line);
+#define GL(ctx, name) \
+    (stin__gl_check_call((ctx), STIN_GLFN_##name, __FILE__, __LINE__), (ctx)->gl.name)
+#define GL_ENUM(ctx, name, e) \
+    (stin__gl_check_enum((ctx), STIN_GLFN_##name, (e), __FILE__, __LINE__), (ctx)->gl.name)
+/* The OpenGL ES audit (gl/gl_audit.c): on an ES context, stin_create puts
+ * wrappers that check each enum argument against the context's ES version
+ * into ctx->gl (the driver's own pointers stay in ctx->gl_driver). */
+void stin__gl_audit_at(struct stin_context *ctx, const char *file, int line);
+void stin__gl_audit_enum_es(struct stin_context *ctx, stin__glfn fn, GLenum e, const char *file,
+                            int line);
+void stin__gl_audit_install(struct stin_context *ctx);
+void stin__gl_audit_forget(struct stin_context *ctx);
+/* The first ES version with enum e (20, 30, 31, 32; 0: desktop GL only);
+ * *cap the capability that brings it earlier, -1 none. */
+int stin__es_enum_version(GLenum e, int *cap);
+#define STIN_GL_DRIVER(ctx) (&(ctx)->gl_driver)
 #else
 #define GL(ctx, name) ((ctx)->gl.name)
 #define GL_ENUM(ctx, name, e) ((void)(e), (ctx)->gl.name)
+#define stin__gl_audit_install(ctx) ((void)(ctx))
+#define stin__gl_audit_forget(ctx) ((void)(ctx))
+#define STIN_GL_DRIVER(ctx) (&(ctx)->gl)
 #endif
 /* Calls whose entry point differs on OpenGL ES (gl/portable_calls.c). */
 void stin__clear_depth(struct stin_context *ctx, double depth);

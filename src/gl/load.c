@@ -156,13 +156,15 @@ int stin__gl_load(stin__gl *gl, stin_get_proc_fn get_proc, void *user,
 
 #if defined(STIN_GL_CHECK) && STIN_GL_CHECK
 
-void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn)
+void stin__gl_check_call(struct stin_context *ctx, stin__glfn fn, const char *file, int line)
 {
     int need = need_of(ctx, fn);
+    stin__gl_audit_at(ctx, file, line);
     if (!ctx->gl_loaded[fn] || !need_present(ctx, need)) {
         ctx->gl_violations++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
-                  "%s called but the profile lacks %s", gl_names[fn], stin__need_name(need));
+                  "%s at %s:%d called but the profile lacks %s", gl_names[fn], file, line,
+                  stin__need_name(need));
     }
 }
 
@@ -220,18 +222,19 @@ static int enum_need(GLenum e)
     }
 }
 
-void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e)
+void stin__gl_check_enum(struct stin_context *ctx, stin__glfn fn, GLenum e, const char *file,
+                         int line)
 {
     int need = enum_need(e);
-    stin__gl_check_call(ctx, fn);
+    stin__gl_check_call(ctx, fn, file, line);
     if (need == -1)
         need = (fn == STIN_GLFN_Enable || fn == STIN_GLFN_Disable) ? STIN_CAP_FIXED_FUNCTION
                                                                    : NEED_CORE;
     if (!need_present(ctx, need)) {
         ctx->gl_violations++;
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, STIN_LOG_GL_ERROR,
-                  "%s(0x%x) needs %s, which the profile lacks", gl_names[fn], (unsigned)e,
-                  stin__need_name(need));
+                  "%s(0x%x) at %s:%d needs %s, which the profile lacks", gl_names[fn],
+                  (unsigned)e, file, line, stin__need_name(need));
     }
 }
 #endif

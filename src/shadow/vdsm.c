@@ -375,7 +375,7 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         if (!v->said_area)
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                       "vdsm: area lights cast hard shadows from their centre in tessellated "
-                      "frames or without their programs");
+                      "frames, without their programs or without glLogicOp (OpenGL ES)");
         v->said_area = 1;
     }
     light_point(l, light);

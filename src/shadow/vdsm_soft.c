@@ -130,7 +130,9 @@ static void receiver_bounds(stin_context *ctx, float lo[3], float hi[3])
 
 int stin__vdsm_soft_available(stin_context *ctx)
 {
-    return !ctx->vdsm->tess_active && build(ctx) && ensure_target(ctx);
+    /* the bits are ORed by glLogicOp, which OpenGL ES does not have */
+    return stin__gl_available(ctx, STIN_GLFN_LogicOp) && !ctx->vdsm->tess_active &&
+           build(ctx) && ensure_target(ctx);
 }
 
 void stin__vdsm_soft_draw(stin_context *ctx, const stin_light_desc *l, const float light[4],

@@ -97,7 +97,7 @@ void stin__dot3_cube_face(int face, uint32_t size, unsigned char *rgba)
 static void env(stin_context *ctx, GLenum pname, GLenum param)
 {
 #if defined(STIN_GL_CHECK) && STIN_GL_CHECK
-    stin__gl_check_enum(ctx, STIN_GLFN_TexEnvi, pname);
+    stin__gl_check_enum(ctx, STIN_GLFN_TexEnvi, pname, __FILE__, __LINE__);
 #endif
     GL_ENUM(ctx, TexEnvi, param)(GL_TEXTURE_ENV, pname, (GLint)param);
 }

@@ -24,8 +24,10 @@ GLuint caller_gl_program(const caller_gl *gl, int core, const char *frag)
     if (!gl->CreateProgram)
         return 0;
     snprintf(vs_src, sizeof vs_src, "#version %s\n%s vec4 p;\nvoid main() { gl_Position = p; }\n",
-             core ? "150" : "110", core ? "in" : "attribute");
-    f[0] = core ? "#version 150\nout vec4 c;\n" : "#version 110\n#define c gl_FragColor\n";
+             core == CALLER_GL_ES ? "300 es" : core ? "150" : "110", core ? "in" : "attribute");
+    f[0] = core == CALLER_GL_ES ? "#version 300 es\nprecision mediump float;\nout vec4 c;\n"
+         : core                 ? "#version 150\nout vec4 c;\n"
+                                : "#version 110\n#define c gl_FragColor\n";
     f[1] = frag;
     p = gl->CreateProgram();
     vs = gl->CreateShader(GL_VERTEX_SHADER);

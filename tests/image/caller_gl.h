@@ -127,6 +127,9 @@ void caller_gl_load(caller_gl *gl, stin_platform *plat);
 /* A linked program writing (r, g, b, 1) at clip-space positions from
  * attribute 0 ("p"): GLSL 1.50 on core contexts, 1.10 otherwise; 0 if the
  * context has no GLSL or linking fails. */
+/* `core` of the program calls: 0 GLSL 1.10, 1 GLSL 1.50 (core profiles),
+ * CALLER_GL_ES GLSL ES 3.00 (OpenGL ES 3.0+). */
+#define CALLER_GL_ES 2
 GLuint caller_gl_flat_program(const caller_gl *gl, int core, float r, float g, float b);
 /* The same vertex shader with a fragment shader of `frag` after the
  * #version line (core: 150, the output "c"; else 110, gl_FragColor). */

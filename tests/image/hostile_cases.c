@@ -603,8 +603,38 @@ const hostile_case hostile_cases[] = {
 
 const size_t hostile_case_count = sizeof hostile_cases / sizeof hostile_cases[0];
 
+/* The cases whose state OpenGL ES has, with the ES version that brings it
+ * (stin.h, GL STATE: "On OpenGL ES"); the others (logic op, polygon mode
+ * and smooth, depth clamp, clip planes, glDepthRange, fixed function,
+ * samples-passed queries, query buffers, colour clamping, the provoking
+ * vertex, program pipelines and storage buffers, which stin does not use
+ * on ES) do not exist there or are not stin's on ES. */
+static const struct {
+    const char *name;
+    int es;
+} es_cases[] = {
+    {"polygon-offset-fill", 20}, {"scissor-16x16", 20}, {"stencil-never", 20},
+    {"depth-greater-no-write", 20}, {"blend-zero-one", 20}, {"cull-front-cw", 20},
+    {"colour-mask", 20}, {"glsl-program", 20}, {"active-unit-3", 20},
+    {"stencil-clear-value", 20}, {"blend-equation-max", 30}, {"rasterizer-discard", 30},
+    {"primitive-restart-fixed", 30}, {"sampler-objects", 30}, {"pixel-unpack-buffer", 30},
+    {"pixel-pack-buffer", 30}, {"2d-array-units", 30}, {"create-bindings", 30}};
+
+static int es_version_of(const hostile_case *c)
+{
+    size_t i;
+    for (i = 0; i < sizeof es_cases / sizeof es_cases[0]; i++)
+        if (!strcmp(es_cases[i].name, c->name))
+            return es_cases[i].es;
+    return 0;
+}
+
 int hostile_applies(const hostile_case *c, const hostile_env *e)
 {
+    if (e->es) {
+        int es = es_version_of(c);
+        return es && e->version >= es && (!c->available || c->available(e));
+    }
     return e->version >= c->version && (!c->compat || e->compat) &&
            (!c->available || c->available(e));
 }
@@ -677,7 +707,7 @@ void hostile_objects_make(hostile_env *e, int core)
         gl->BufferData(GL_ARRAY_BUFFER, 64, NULL, GL_DYNAMIC_DRAW);
         gl->BindBuffer(GL_ARRAY_BUFFER, 0);
     }
-    if (e->version >= 15 && gl->GenQueries && gl->GetQueryiv)
+    if (e->version >= 15 && !e->es && gl->GenQueries && gl->GetQueryiv)
         gl->GenQueries(1, &e->query);
     if (e->version >= 30 && gl->TexImage3D) {
         gl->GenTextures(1, &e->array_texture);
@@ -688,14 +718,15 @@ void hostile_objects_make(hostile_env *e, int core)
     }
     if (e->version >= 30 && gl->GenVertexArrays)
         gl->GenVertexArrays(1, &e->vao);
-    if (e->version >= 33 && gl->GenSamplers) {
+    if ((e->version >= 33 || (e->es && e->version >= 30)) && gl->GenSamplers) {
         gl->GenSamplers(1, &e->sampler);
         gl->SamplerParameteri(e->sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
         gl->SamplerParameteri(e->sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
         gl->SamplerParameteri(e->sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
         gl->SamplerParameteri(e->sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     }
-    make_pipeline(e, core);
+    if (!e->es)
+        make_pipeline(e, core);
     while (gl->GetError() != GL_NO_ERROR) {
     }
 }

@@ -12,6 +12,7 @@ typedef struct hostile_env {
     const caller_gl *gl;
     int version;     /* the profile's GL version, major * 10 + minor */
     int compat;      /* a compatibility context (fixed function) */
+    int es;          /* an OpenGL ES context: version is the ES version */
     int gl1;         /* the frame runs the GL1 tier */
     int fixed_units; /* fixed-function texture units */
     int width, height;

@@ -166,9 +166,10 @@ static void print_frame(const stin_frame_stats *stats, const scene *s, double ms
                st.shadows.volume_gpu_casters);
 }
 
-int main(int argc, char **argv)
+/* One scene (o->scene_path), or none with --caps: the whole run of one. */
+static int render_scene(const options *opt)
 {
-    options o;
+    options o = *opt;
     scene s;
     scene_context sc;
     scene_context_step step;
@@ -191,9 +192,7 @@ int main(int argc, char **argv)
     memset(&s, 0, sizeof s);
     memset(&sc, 0, sizeof sc);
     memset(&img, 0, sizeof img);
-    setvbuf(stdout, NULL, _IOLBF, 0); /* piped output appears as it is printed */
-    if (!render_parse_args(argc, argv, &o))
-        return EXIT_BAD_INPUT; /* its one line says what is wrong; --help lists the options */
+    memset(&log, 0, sizeof log);
     progress_init(&pr, o.progress);
     log.program = "stin-render";
     log.verbose = o.verbose;
@@ -365,5 +364,27 @@ done:
         stin_platform_destroy(plat);
     if (have_scene)
         scene_free(&s);
+    return rc;
+}
+
+int main(int argc, char **argv)
+{
+    static options o;
+    int i, rc = 0;
+    setvbuf(stdout, NULL, _IOLBF, 0); /* piped output appears as it is printed */
+    if (!render_parse_args(argc, argv, &o))
+        return EXIT_BAD_INPUT; /* its one line says what is wrong; --help lists the options */
+    if (o.scene_count <= 1)
+        return render_scene(&o);
+    /* Several scenes: one process (its start-up, mostly the dynamic
+     * linker's, is most of a tiny render's time), a context each. */
+    for (i = 0; i < o.scene_count; i++) {
+        int one;
+        o.scene_path = o.scenes[i];
+        one = render_scene(&o);
+        printf("scene %s: exit %d\n", o.scene_path, one);
+        if (one > rc)
+            rc = one;
+    }
     return rc;
 }

@@ -15,6 +15,9 @@ void render_usage(FILE *f)
     fprintf(f,
             "usage: stin-render SCENE.json -o OUT.png|OUT.exr [options]\n"
             "       stin-render SCENE.json --no-output [options]   render, print statistics only\n"
+            "       stin-render SCENE.json... --no-output [options]  several scenes in one process,\n"
+            "                            each in its own context, a line \"scene FILE: exit N\" after\n"
+            "                            each; exits with the highest code\n"
             "  --tier auto|gl1|gl2|gl4   force a tier (error if the context cannot run it)\n"
             "  --profile NAME            capability profile (see docs/profiles.md):");
     {
@@ -234,12 +237,17 @@ int render_parse_args(int argc, char **argv, options *o)
         } else if (a[0] == '-') {
             fprintf(stderr, "stin-render: unknown option %s\n", a);
             return 0;
-        } else if (!o->scene_path) {
-            o->scene_path = a;
+        } else if (o->scene_count < RENDER_MAX_SCENES) {
+            o->scenes[o->scene_count++] = a;
+            o->scene_path = o->scenes[0];
         } else {
-            fprintf(stderr, "stin-render: more than one scene given ('%s')\n", a);
+            fprintf(stderr, "stin-render: more than %d scenes given ('%s')\n", RENDER_MAX_SCENES, a);
             return 0;
         }
+    }
+    if (o->scene_count > 1 && (!o->no_output || o->caps)) {
+        fprintf(stderr, "stin-render: several scenes render with --no-output only\n");
+        return 0;
     }
     if (!o->scene_path && !o->caps) {
         fprintf(stderr, "stin-render: no scene file given\n");

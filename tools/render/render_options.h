@@ -15,7 +15,12 @@ enum { EXIT_FAILED = 1, EXIT_BAD_INPUT = 2, EXIT_UNSUPPORTED = 3 };
  * shadow volumes on a software rasteriser, and the tool renders three. */
 #define RENDER_MAX_TRIANGLES_DEFAULT (16u << 20)
 
+/* Scenes one run renders in turn (--no-output only beyond the first). */
+#define RENDER_MAX_SCENES 64
+
 typedef struct options {
+    const char *scenes[RENDER_MAX_SCENES]; /* the scene files given, in order */
+    int scene_count;
     const char *scene_path, *output, *profile, *platform, *shadows, *surface, *csg;
     uint64_t debug_flags;
     unsigned debug_outputs;     /* RENDER_DEBUG_* (render_debug.h) */
