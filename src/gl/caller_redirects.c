@@ -64,8 +64,10 @@ void stin__caller_detect(stin_context *ctx)
         h |= STIN__CALLER_PROVOKING;
     if (loaded(ctx, STIN_GLFN_GetQueryiv) && has(ctx, STIN_CAP_OCCLUSION_QUERY))
         h |= STIN__CALLER_QUERIES;
-    if (v >= 30 || stin_query_extension(ctx, "GL_ARB_framebuffer_sRGB") ||
-        stin_query_extension(ctx, "GL_EXT_framebuffer_sRGB"))
+    /* on ES the switch is EXT_sRGB_write_control's (WebGL 2 has none) */
+    if (ctx->caps.es ? stin_query_extension(ctx, "GL_EXT_sRGB_write_control")
+                     : v >= 30 || stin_query_extension(ctx, "GL_ARB_framebuffer_sRGB") ||
+                           stin_query_extension(ctx, "GL_EXT_framebuffer_sRGB"))
         h |= STIN__CALLER_SRGB;
     ctx->caller_has = h;
 }
