@@ -77,7 +77,8 @@ static GLuint texture(GLenum internal, GLenum format, GLenum type)
 }
 
 /* WebGL reads no depth back: a pass samples the depth texture and writes
- * its 24 bits into R, G, B (most significant first). */
+ * its 24 bits into R, G, B (most significant first). The clamp: 1.0 (the
+ * background) times 2^24 - 1, plus a half, rounds to 2^24 in float. */
 static GLuint depth_pack_program(void)
 {
     static const char *vs = "#version 300 es\n"
@@ -93,7 +94,7 @@ static GLuint depth_pack_program(void)
                             "in vec2 uv;\n"
                             "out vec4 color;\n"
                             "void main() {\n"
-                            "  uint d = uint(texture(depth, uv).r * 16777215.0 + 0.5);\n"
+                            "  uint d = min(uint(texture(depth, uv).r * 16777215.0 + 0.5), 16777215u);\n"
                             "  color = vec4(float(d >> 16u), float((d >> 8u) & 255u),\n"
                             "               float(d & 255u), 255.0) / 255.0;\n"
                             "}\n";
