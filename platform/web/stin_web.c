@@ -200,8 +200,8 @@ static void describe_choice(void)
 
 /* A stin context for the scene: tier ("auto", "gl2", "gl4"), the shadow
  * technique by name ("" = stin's choice), the shadow map size (0 = stin's
- * default) and PCF taps a side for every light (0 = the scene's). The log
- * starts over. 1 on success; else web_log says why. */
+ * default) and PCF taps a side for every light (0 leaves the lights' own:
+ * the pack's, or an earlier call's). The log starts over. 1 on success; else web_log says why. */
 EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int map_size,
                                     int pcf_kernel)
 {
