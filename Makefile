@@ -2,7 +2,11 @@
 # stin — build, test, bench, install.
 #   make            libstin.a, libstin_platform.a, stin-render, stin-bench, examples/
 #   make check      install deps if missing, unit tests (ASan+UBSan), image tests per profile,
-#                   the layer rule, the stin-bench --quick smoke; suites run in parallel
+#                   the layer rule, the stin-bench --quick smoke, the browser image tests
+#                   (tests/web/run.sh); suites run in parallel
+#   make web        libstin and its browser front end in WebAssembly (emscripten), the
+#                   pages and the scenes as packs under build/web/ (docs/web.md)
+#   make web-demo   serves the demo page on 127.0.0.1:WEB_PORT (default 8047)
 #   make check-quick  the edit loop: unit tests, one profile per tier on EGL, the CLI and layers
 #   make demo       install deps if missing, render the example scenes at every tier into out/
 #   make bench      run stin-bench (docs/benchmarks.md)
@@ -212,7 +216,7 @@ NPROC := $(shell nproc 2>/dev/null || echo 2)
 JOBS_FLAG = $$(case "$(MAKEFLAGS)" in *jobserver*|*-j*) ;; *) echo -j$(NPROC) ;; esac)
 
 check: deps
-	@$(MAKE) --no-print-directory $(JOBS_FLAG) tests
+	@$(MAKE) --no-print-directory $(JOBS_FLAG) tests web
 	@sh tests/run.sh $(B)
 
 # The edit loop: every unit test, the image tests of three profiles (one a
@@ -325,3 +329,54 @@ $(B)/stin-reference: $(B)/obj/tests/tools/reference_render.o $(B)/libstin_refere
 	$(CC) $(OPT) -o $@ $^ $(REF_LIBS) $(TOOL_LIBS) $(PLATFORM_LIBS)
 
 -include $(shell find $(B) -name '*.d' 2>/dev/null)
+
+# ---- WebAssembly (docs/web.md): libstin and the browser front end compiled
+# with emscripten for WebGL 2, its pages and the repository's scenes as packs
+# under $(B)/web/ ---------------------------------------------------------------
+EMCC ?= emcc
+EMAR ?= emar
+# Debian's emscripten finds Debian's acorn through NODE_PATH and runs under
+# the system python (a python3 first on PATH may lack nothing but is slower)
+WEB_ENV := NODE_PATH=/usr/share/nodejs EMSDK_PYTHON=/usr/bin/python3
+# clang (emcc) warns on partly initialised designated initialisers, gcc not
+WEB_OPT ?= -O1
+WEB_CFLAGS := -std=c99 -pedantic $(WARN) -Wno-missing-field-initializers $(WEB_OPT) -Iinclude -Isrc -I$(B)
+WEB_TOOL_CFLAGS := -std=c99 $(WARN) $(WEB_OPT) -Iinclude -Itools/common $(shell pkg-config --cflags-only-I libcjson 2>/dev/null)
+WEB_FRONT_SRC := platform/web/stin_web.c tools/common/scene_gpu.c tools/common/scene_pack.c tools/common/scene_camera.c
+WEB_LINK := -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web \
+  -sMODULARIZE=1 -sEXPORT_NAME=createStin -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,UTF8ToString,HEAPU8,HEAPF32 \
+  -sEXPORTED_FUNCTIONS=_malloc,_free
+WEB_PAGES := $(wildcard examples/web/*.html examples/web/*.js examples/web/*.css tests/web/*.html) tests/web/test.js
+WEB_SCENES := $(sort $(wildcard tests/scenes/*.json))
+
+$(B)/web/lib/%.o: %.c
+	@mkdir -p $(@D)
+	@echo "  EMCC    $<"; $(WEB_ENV) $(EMCC) $(WEB_CFLAGS) $(DEPFLAGS) -c $< -o $@
+$(B)/web/lib/shaders_embedded.o: $(B)/shaders_embedded.c
+	@mkdir -p $(@D)
+	@echo "  EMCC    $<"; $(WEB_ENV) $(EMCC) $(WEB_CFLAGS) -c $< -o $@
+$(B)/web/libstin.a: $(LIB_SRC:%.c=$(B)/web/lib/%.o) $(B)/web/lib/shaders_embedded.o
+	rm -f $@ && $(WEB_ENV) $(EMAR) rcs $@ $^
+$(B)/web/obj/%.o: %.c
+	@mkdir -p $(@D)
+	@echo "  EMCC    $<"; $(WEB_ENV) $(EMCC) $(WEB_TOOL_CFLAGS) $(DEPFLAGS) -c $< -o $@
+$(B)/web/stin.js: $(WEB_FRONT_SRC:%.c=$(B)/web/obj/%.o) $(B)/web/libstin.a
+	$(WEB_ENV) $(EMCC) $(WEB_OPT) $(WEB_LINK) -o $@ $^
+$(B)/stin-scene-pack: $(B)/obj/tools/pack/main.o $(B)/libstin_tools.a
+	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS)
+$(B)/web/scenes.stamp: $(B)/stin-scene-pack $(WEB_SCENES)
+	@mkdir -p $(B)/web/scenes
+	$(B)/stin-scene-pack $(B)/web/scenes $(WEB_SCENES)
+	@ls $(B)/web/scenes | sed -n 's/\.stinscene$$//p' > $(B)/web/scenes/list.txt
+	@touch $@
+$(B)/web/pages.stamp: $(WEB_PAGES)
+	@mkdir -p $(B)/web
+	cp $(WEB_PAGES) $(B)/web/
+	@touch $@
+
+.PHONY: web web-demo
+web: $(B)/web/stin.js $(B)/web/scenes.stamp $(B)/web/pages.stamp
+# The demo page on 127.0.0.1 (WEB_PORT, default 8047) until interrupted.
+WEB_PORT ?= 8047
+web-demo: web
+	node tests/web/server.js --root $(B)/web --port $(WEB_PORT)

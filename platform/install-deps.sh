@@ -15,11 +15,15 @@ set -u
 # libglfw3-dev: examples/viewer, the interactive viewer (built when present);
 # xvfb + xauth: its test runs it on a virtual display (xvfb-run);
 # imagemagick + twm: the viewer's screenshot with its title bar (import -window root).
+# emscripten: make web, libstin and its browser front end in WebAssembly;
+# chromium: the browser image tests (headless, WebGL 2 on SwiftShader) and
+# the demo page's screenshot (docs/web.md); nodejs runs emscripten and the
+# tests' local server.
 PACKAGES="build-essential pkg-config libegl-dev libgl-dev libosmesa6-dev \
 libegl-mesa0 libgl1-mesa-dri libembree-dev libopenimageio-dev openimageio-tools \
 libassimp-dev libcjson-dev libcmocka-dev clang libclang-rt-dev cmake \
 libopencsg-dev libglew-dev libopenscenegraph-dev assimp-testmodels \
-libglfw3-dev xvfb xauth imagemagick twm"
+libglfw3-dev xvfb xauth imagemagick twm emscripten nodejs chromium"
 
 if ! command -v dpkg >/dev/null 2>&1; then
     echo "install-deps: dpkg not found; install these (Debian names) by hand: $PACKAGES" >&2

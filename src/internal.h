@@ -119,7 +119,11 @@ struct stin_context {
     stin__program programs[STIN__PROG_COUNT];
     uint32_t bound_mesh;      /* mesh slot whose arrays are bound, UINT32_MAX = none */
     unsigned char warned_split_band; /* a split mesh's band was left out (logged once) */
-    GLuint volume_vbo, volume_vao; /* GL4: streamed volume vertices */
+    /* streamed volume vertices (and quads): on GL4 with a vertex array of
+     * its own; on OpenGL ES 3.0+ without (GL2 tier), where WebGL 2 has no
+     * client arrays, with volume_ibo for streamed indices (WebGL binds no
+     * buffer as both vertex and index data) */
+    GLuint volume_vbo, volume_vao, volume_ibo;
     struct {                  /* the displacement choice as the layers below render
                                * read it (stin__selection_hand_down), the frame's
                                * scale as the chunk reads it, and its log

@@ -10,7 +10,7 @@
 #              STIN_TEST_PROFILES (default: every desktop profile of docs/profiles.md),
 #              STIN_TEST_ES_PROFILES (default "es30 es32 es20-ext"; egl only, the scenes below),
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme,
-#              bench and viewer suites (make check-quick), STIN_TEST_JOBS,
+#              bench, viewer and browser (web) suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
 #              DIR/PLATFORM.PROFILE.log (tools/compare-renders.sh diff-readbacks),
 #              STIN_TEST_REFERENCE_CACHE=0: no reference cache, every image
@@ -133,6 +133,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         echo "readme sh tests/cli/test_readme.sh"
         echo "bench sh tests/cli/test_bench.sh $B/stin-bench $OUT/bench-quick.txt"
         echo "viewer sh tests/cli/test_viewer.sh $B/examples/viewer $B/stin-render"
+        echo "web sh tests/web/run.sh $B"
     fi
 } | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
 
@@ -145,7 +146,7 @@ first=${PLATFORMS%% *}
 awk -v first="image:$first:" '{ w = 1 }
      $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
      w >= 5 && index($2, first) == 1 { w += 10 }
-     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "install" || $2 == "viewer" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
+     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
      { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
 

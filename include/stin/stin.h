@@ -622,8 +622,8 @@
  * blend equation ADD (GL 1.4+), polygon mode FILL on both faces, depth range
  * 0..1, logic op, polygon smooth, user clip planes (clip distances) 0-7,
  * sample alpha-to-coverage, alpha-to-one and coverage (GL 1.3+), rasterizer
- * discard (3.0+), primitive restart (3.1+; fixed index 4.3+) and sample mask
- * (3.2+) off, no sampler object on texture units 0-15 (3.3+), and on
+ * discard (3.0+), primitive restart (3.1+; fixed index 4.3+, ES 3.0+ but
+ * not WebGL 2, where it is always on) and sample mask (3.2+) off, no sampler object on texture units 0-15 (3.3+), and on
  * compatibility contexts alpha test and polygon stipple off. So a caller may
  * leave any of it set: the frame's pixels do not change (tests/image
  * hostile_test.c renders under each such state and compares bit for bit).
@@ -989,6 +989,12 @@ typedef struct stin_caps {
      * glDrawBuffer, glLogicOp, client arrays...) count as not loaded there,
      * whatever the driver's get_proc_address returns for them. */
     int es;
+    /* 1 on WebGL (es is 1 too): GL_VERSION names it, "OpenGL ES 3.0 (WebGL
+     * 2.0 ...)" as emscripten reports it. WebGL 2 is ES 3.0 less client
+     * arrays (stin streams through buffers on every ES 3.0+ context) and
+     * with primitive restart at the fixed index always on: it has no such
+     * capability to disable, so a frame leaves it alone there. */
+    int webgl;
     stin_gl_profile profile;
     uint64_t present;             /* STIN_CAP_BIT()s after desc.caps_mask */
     uint64_t hidden;              /* bits the driver has but caps_mask hid */

@@ -16,7 +16,7 @@ enum {
     STIN__CALLER_CLAMP = 8u,         /* GL 3.0, ARB_color_buffer_float */
     STIN__CALLER_PROVOKING = 16u,    /* GL 3.2, ARB/EXT_provoking_vertex */
     STIN__CALLER_QUERIES = 32u,      /* glGetQueryiv: the caller's active queries */
-    STIN__CALLER_SRGB = 64u          /* GL 3.0, ARB/EXT_framebuffer_sRGB */
+    STIN__CALLER_SRGB = 64u          /* GL 3.0, ARB/EXT_framebuffer_sRGB; ES: EXT_sRGB_write_control */
 };
 
 /* Query targets the caller's active queries hold this frame (ctx->queries_busy). */

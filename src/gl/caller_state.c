@@ -31,14 +31,15 @@ static void disable_from(stin_context *ctx, int min_version, const GLenum *caps,
 }
 
 /* OpenGL ES: the same defaults where ES has the state (no logic op,
- * polygon mode or smoothing, clip planes or non-fixed primitive restart). */
+ * polygon mode or smoothing, clip planes or non-fixed primitive restart;
+ * WebGL 2 restarts at the fixed index always). */
 static void es_defaults(stin_context *ctx)
 {
     static const GLenum es20[] = {GL_SAMPLE_ALPHA_TO_COVERAGE, GL_SAMPLE_COVERAGE};
     static const GLenum es30[] = {GL_RASTERIZER_DISCARD, GL_PRIMITIVE_RESTART_FIXED_INDEX};
     static const GLenum es32[] = {GL_SAMPLE_MASK}; /* ES 3.1, audited as GL 3.2 */
     disable_from(ctx, 20, es20, 2);
-    disable_from(ctx, 30, es30, 2);
+    disable_from(ctx, 30, es30, ctx->caps.webgl ? 1 : 2); /* WebGL: always on */
     disable_from(ctx, 32, es32, 1);
     stin__depth_range(ctx, 0.0, 1.0);
 }

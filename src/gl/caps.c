@@ -194,6 +194,20 @@ static int is_es(const char *s)
     return !*p;
 }
 
+/* "OpenGL ES 3.0 (WebGL 2.0 (...))": emscripten's GL_VERSION on WebGL. */
+static int is_webgl(const char *s)
+{
+    static const char key[] = "(WebGL ";
+    size_t i;
+    for (; s && *s; s++) {
+        for (i = 0; key[i] && s[i] == key[i]; i++)
+            ;
+        if (!key[i])
+            return 1;
+    }
+    return 0;
+}
+
 /* The GLSL ES version each ES version ships with: 2.0 -> 1.00, 3.x -> 3.x0. */
 static int es_glsl_cap(int ver)
 {
@@ -232,6 +246,7 @@ int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
     if (!parse_version(in->version, &out->gl_major, &out->gl_minor))
         return 0;
     es = out->es = is_es(in->version);
+    out->webgl = es && is_webgl(in->version);
     ver = out->gl_major * 10 + out->gl_minor;
     if (in->max_gl_version > 0 && ver > in->max_gl_version) {
         ver = in->max_gl_version;

@@ -137,6 +137,9 @@ static int build_lit(stin_context *ctx, const char *dir, int variant, int tess, 
 }
 
 static int gl4(const stin_context *ctx) { return ctx->volume_vao != 0; }
+/* GL2 on OpenGL ES 3.0+: vertices and indices from stin's stream buffers,
+ * never from client memory (WebGL 2 has no client arrays) */
+static int es_streams(const stin_context *ctx) { return !gl4(ctx) && ctx->volume_vbo != 0; }
 
 int stin__glsl_build_lit(stin_context *ctx, int variant, int tess, int layer,
                          const char *frag_defines, stin__program *p, char *msg, size_t size)
@@ -281,6 +284,9 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
         GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, NULL);
         GL(ctx, BindVertexArray)(0);
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+    } else if (ctx->caps.es && ctx->caps.gl_major >= 3) {
+        GL(ctx, GenBuffers)(1, &ctx->volume_vbo);
+        GL(ctx, GenBuffers)(1, &ctx->volume_ibo);
     }
     return STIN_OK;
 }
@@ -298,7 +304,9 @@ void stin__glsl_release(stin_context *ctx)
         GL(ctx, DeleteBuffers)(1, &ctx->volume_vbo);
     if (ctx->volume_vao)
         GL(ctx, DeleteVertexArrays)(1, &ctx->volume_vao);
-    ctx->volume_vbo = ctx->volume_vao = 0;
+    if (ctx->volume_ibo)
+        GL(ctx, DeleteBuffers)(1, &ctx->volume_ibo);
+    ctx->volume_vbo = ctx->volume_vao = ctx->volume_ibo = 0;
 }
 
 /* Packs up to 8 lights: position, direction + cos(cutoff), colour + exponent,
@@ -665,7 +673,7 @@ static void glsl_volume_begin(stin_context *ctx)
     } else {
         int i;
         if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO))
-            GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+            GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
         for (i = 1; i < 4; i++)
             GL(ctx, DisableVertexAttribArray)((GLuint)i);
     }
@@ -678,10 +686,10 @@ static void glsl_volume_draw(stin_context *ctx, const float model[16], const flo
     const stin__displace_locs *dl = &ctx->programs[STIN__PROG_VOLUME].displace;
     GL(ctx, UniformMatrix4fv)(ctx->programs[STIN__PROG_VOLUME].u_model, 1, GL_FALSE, model);
     stin__displace_draw(ctx, dl, NULL); /* volumes are never displaced */
-    if (gl4(ctx))
+    if (ctx->volume_vbo)
         GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)(16u * n), xyzw, GL_STREAM_DRAW);
-    else
-        GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, xyzw);
+    if (!gl4(ctx))
+        GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, ctx->volume_vbo ? NULL : xyzw);
     GL(ctx, DrawArrays)(stin__displace_primitive(dl), 0, (GLsizei)n);
 }
 
@@ -692,6 +700,8 @@ static void glsl_volume_end(stin_context *ctx)
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     } else {
         int i;
+        if (es_streams(ctx))
+            GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
         for (i = 1; i < 4; i++)
             GL(ctx, EnableVertexAttribArray)((GLuint)i);
     }
@@ -803,7 +813,7 @@ static void glsl_blended_one(stin_context *ctx, const stin__draw *d, const stin_
 static void band_indices(stin_context *ctx, const stin__displace_locs *dl, GLenum type,
                          const void *idx, size_t bytes, uint32_t n)
 {
-    if (gl4(ctx)) {
+    if (ctx->volume_vbo) {
         GL(ctx, BufferData)(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)bytes, idx, GL_STREAM_DRAW);
         idx = NULL;
     }
@@ -885,6 +895,8 @@ static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const f
     bind_mesh_arrays(ctx, m, d->mesh_slot);
     if (gl4(ctx))
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, ctx->volume_vbo);
+    else if (es_streams(ctx))
+        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, ctx->volume_ibo);
     else if (m->vbo)
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);
     if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DERIVATIVES)) &&

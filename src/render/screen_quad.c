@@ -29,17 +29,22 @@ static void streamed(stin_context *ctx)
     GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
 }
 
-/* GL2: from client memory; the quad feeds attribute 0 alone, so the mesh
+/* GL2: from client memory (on OpenGL ES 3.0+ through the stream buffer);
+ * the quad feeds attribute 0 alone, so the mesh
  * arrays the GLSL path keeps enabled are off for the draw. */
 static void client_arrays(stin_context *ctx)
 {
     int i;
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_VBO))
-        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
+    if (ctx->volume_vbo) /* OpenGL ES 3.0+: WebGL 2 has no client arrays */
+        GL(ctx, BufferData)(GL_ARRAY_BUFFER, (GLsizeiptr)sizeof quads[0], quads[0], GL_STREAM_DRAW);
     for (i = 1; i < 4; i++)
         GL(ctx, DisableVertexAttribArray)((GLuint)i);
-    GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, quads[0]);
+    GL(ctx, VertexAttribPointer)(0, 4, GL_FLOAT, GL_FALSE, 0, ctx->volume_vbo ? NULL : quads[0]);
     GL(ctx, DrawArrays)(GL_TRIANGLES, 0, 6);
+    if (ctx->volume_vbo)
+        GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, 0);
     for (i = 1; i < 4; i++)
         GL(ctx, EnableVertexAttribArray)((GLuint)i);
 }

@@ -5,6 +5,8 @@
  * overrides at start-up). Prints one line per test: PASS/FAIL/SKIP name: why.
  *
  *   stin-imagetest --profile gl11 --platform egl [--size 256x192] [--out DIR] SCENE...
+ *   stin-imagetest --browser DIR --cases LIST [--size WxH] [--out DIR] SCENE...
+ *       compares a browser's read-backs instead (browser_test.c)
  */
 #include "aov.h"
 #include "compare.h"
@@ -198,6 +200,62 @@ const char *scene_base_name(const char *path)
     return buf;
 }
 
+void render_rows(run *r, stin_tier tier, const char *scene_name, const scene *s,
+                 const image *img, int per_vertex)
+{
+    reference *ref = NULL;
+    ref_hit *hits = NULL;
+    float *refimg = NULL;
+    char err[512], name[192];
+    compare_result cr;
+    compare_tolerance tol = {P_RELATIVE, P_ABSOLUTE, BEAUTY_TOLERANCE, NORMAL_DEGREES};
+    double p_match, b_match;
+    snprintf(name, sizeof name, "%s/%s/position", stin_tier_name(tier), scene_name);
+    ref = reference_create(s, err, sizeof err);
+    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
+    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
+    if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
+        !reference_render(s, ref, r->width, r->height, per_vertex, refimg)) {
+        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
+        goto done;
+    }
+    compare_render(s, img, refimg, hits, &tol, &cr);
+    p_match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) / cr.covered : 0;
+    report(r, p_match >= P_MIN_MATCH && cr.covered ? "PASS" : "FAIL", name,
+           "P matches on %.4f%% of %ld covered pixels (coverage differs on %ld, P on %ld; "
+           "need %.1f%%)", 100.0 * p_match, cr.covered, cr.coverage_mismatch, cr.p_mismatch,
+           100.0 * P_MIN_MATCH);
+    snprintf(name, sizeof name, "%s/%s/normal", stin_tier_name(tier), scene_name);
+    {
+        double n_match = cr.normal_compared ? 1.0 - (double)cr.normal_over / cr.normal_compared : 0;
+        report(r, n_match >= NORMAL_MIN_MATCH ? "PASS" : "FAIL", name,
+               "N within %.1f deg on %.3f%% of %ld pixels (max %.2f deg; need %.1f%%)",
+               NORMAL_DEGREES, 100.0 * n_match, cr.normal_compared, cr.normal_max_deg,
+               100.0 * NORMAL_MIN_MATCH);
+    }
+    snprintf(name, sizeof name, "%s/%s/beauty", stin_tier_name(tier), scene_name);
+    if (!cr.beauty_compared) {
+        report(r, "SKIP", name, "no opaque untextured pixel to compare (textured and "
+                                "transparent surfaces are not in the unshadowed reference)");
+    } else {
+        b_match = 1.0 - (double)cr.beauty_over / cr.beauty_compared;
+        report(r, b_match >= BEAUTY_MIN_MATCH && cr.beauty_mean <= BEAUTY_MAX_MEAN ? "PASS" : "FAIL",
+               name, "%s shading within %.4f on %.3f%% of %ld pixels (max %.4f, mean %.5f; "
+               "need %.1f%% and mean <= 1/255)",
+               per_vertex == 2 ? "per-vertex (single colour)" : per_vertex ? "per-vertex" : "per-pixel", BEAUTY_TOLERANCE, 100.0 * b_match,
+               cr.beauty_compared, cr.beauty_max, cr.beauty_mean, 100.0 * BEAUTY_MIN_MATCH);
+        if (b_match < BEAUTY_MIN_MATCH || cr.beauty_mean > BEAUTY_MAX_MEAN)
+            save_failure(r, stin_tier_name(tier), scene_name, img);
+    }
+    if (p_match < P_MIN_MATCH)
+        save_failure(r, stin_tier_name(tier), scene_name, img);
+done:
+    free(hits);
+    free(refimg);
+    if (ref)
+        reference_destroy(ref);
+}
+
 static void test_scene(run *r, stin_tier tier, const char *path)
 {
     scene s;
@@ -205,17 +263,11 @@ static void test_scene(run *r, stin_tier tier, const char *path)
     stin_desc d;
     log_capture lc;
     stin_context *ctx = NULL;
-    reference *ref = NULL;
-    ref_hit *hits = NULL;
-    float *refimg = NULL;
     image img;
     void *block = NULL;
     char err[512], name[192], scene_name[128];
-    compare_result cr;
-    compare_tolerance tol = {P_RELATIVE, P_ABSOLUTE, BEAUTY_TOLERANCE, NORMAL_DEGREES};
     int have_gpu = 0, per_vertex = 0;
     stin_debug_counters dc;
-    double p_match, b_match;
     size_t size;
 
     memset(&img, 0, sizeof img);
@@ -255,51 +307,8 @@ static void test_scene(run *r, stin_tier tier, const char *path)
     else
         report(r, "PASS", name, "no error logged, no call outside the profile%s",
                dc.checked ? "" : " (unchecked build)");
-
-    ref = reference_create(&s, err, sizeof err);
-    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
-    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
-    if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
-        !reference_render(&s, ref, r->width, r->height, per_vertex, refimg)) {
-        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
-        goto done;
-    }
-    compare_render(&s, &img, refimg, hits, &tol, &cr);
-    p_match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) / cr.covered : 0;
-    snprintf(name, sizeof name, "%s/%s/position", stin_tier_name(tier), scene_name);
-    report(r, p_match >= P_MIN_MATCH && cr.covered ? "PASS" : "FAIL", name,
-           "P matches on %.4f%% of %ld covered pixels (coverage differs on %ld, P on %ld; "
-           "need %.1f%%)", 100.0 * p_match, cr.covered, cr.coverage_mismatch, cr.p_mismatch,
-           100.0 * P_MIN_MATCH);
-    snprintf(name, sizeof name, "%s/%s/normal", stin_tier_name(tier), scene_name);
-    {
-        double n_match = cr.normal_compared ? 1.0 - (double)cr.normal_over / cr.normal_compared : 0;
-        report(r, n_match >= NORMAL_MIN_MATCH ? "PASS" : "FAIL", name,
-               "N within %.1f deg on %.3f%% of %ld pixels (max %.2f deg; need %.1f%%)",
-               NORMAL_DEGREES, 100.0 * n_match, cr.normal_compared, cr.normal_max_deg,
-               100.0 * NORMAL_MIN_MATCH);
-    }
-    snprintf(name, sizeof name, "%s/%s/beauty", stin_tier_name(tier), scene_name);
-    if (!cr.beauty_compared) {
-        report(r, "SKIP", name, "no opaque untextured pixel to compare (textured and "
-                                "transparent surfaces are not in the unshadowed reference)");
-    } else {
-        b_match = 1.0 - (double)cr.beauty_over / cr.beauty_compared;
-        report(r, b_match >= BEAUTY_MIN_MATCH && cr.beauty_mean <= BEAUTY_MAX_MEAN ? "PASS" : "FAIL",
-               name, "%s shading within %.4f on %.3f%% of %ld pixels (max %.4f, mean %.5f; "
-               "need %.1f%% and mean <= 1/255)",
-               per_vertex == 2 ? "per-vertex (single colour)" : per_vertex ? "per-vertex" : "per-pixel", BEAUTY_TOLERANCE, 100.0 * b_match,
-               cr.beauty_compared, cr.beauty_max, cr.beauty_mean, 100.0 * BEAUTY_MIN_MATCH);
-        if (b_match < BEAUTY_MIN_MATCH || cr.beauty_mean > BEAUTY_MAX_MEAN)
-            save_failure(r, stin_tier_name(tier), scene_name, &img);
-    }
-    if (p_match < P_MIN_MATCH)
-        save_failure(r, stin_tier_name(tier), scene_name, &img);
+    render_rows(r, tier, scene_name, &s, &img, per_vertex);
 done:
-    free(hits);
-    free(refimg);
-    if (ref)
-        reference_destroy(ref);
     image_free(&img);
     if (have_gpu)
         scene_gpu_destroy(&g, ctx);
@@ -318,6 +327,7 @@ int main(int argc, char **argv)
     int i, first_scene = argc, t;
     char *displaced;
     const stin_tier tiers[3] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
+    const char *browser_dir = NULL, *browser_cases = "";
     memset(&r, 0, sizeof r);
     r.width = 256;
     r.height = 192;
@@ -326,12 +336,21 @@ int main(int argc, char **argv)
         if (!strcmp(argv[i], "--profile") && i + 1 < argc) r.profile_name = argv[++i];
         else if (!strcmp(argv[i], "--platform") && i + 1 < argc) r.platform_name = argv[++i];
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) r.out_dir = argv[++i];
+        else if (!strcmp(argv[i], "--browser") && i + 1 < argc) browser_dir = argv[++i];
+        else if (!strcmp(argv[i], "--cases") && i + 1 < argc) browser_cases = argv[++i];
         else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &r.width, &r.height) != 2) return 2;
         } else {
             first_scene = i;
             break;
         }
+    }
+    if (browser_dir) { /* read-backs of a browser's frames (browser_test.c) */
+        r.platform_name = "chromium";
+        r.profile_name = "webgl2";
+        for (i = first_scene; i < argc; i++)
+            browser_tests(&r, browser_dir, browser_cases, argv[i]);
+        return 0;
     }
     memset(&pd, 0, sizeof pd);
     if (!r.profile_name || !(r.profile = stin_profile_find(r.profile_name)) ||

@@ -18,6 +18,22 @@ typedef struct run {
 void report(run *r, const char *verdict, const char *name, const char *fmt, ...);
 const char *scene_base_name(const char *path);
 
+struct scene;
+struct image;
+struct capture;
+/* position, normal and beauty of an unshadowed frame's AOV image against the
+ * reference (image_test.c; per_vertex as reference_render takes it). */
+void render_rows(run *r, stin_tier tier, const char *scene_name, const struct scene *s,
+                 const struct image *img, int per_vertex);
+/* volume-vis of a frame drawn elsewhere (shadow_test.c). */
+void shadow_vis_rows(run *r, stin_tier tier, const char *path, const struct capture *cap);
+/* map-pcf-SIZE-kKERNEL of a frame drawn elsewhere (pcf_test.c). */
+void pcf_rows(run *r, stin_tier tier, const char *path, uint32_t size, int kernel,
+              const struct capture *cap);
+/* The browser's read-backs of each case in dir against the reference, the
+ * rows named as the native ones (browser_test.c; tests/web/run.sh). */
+void browser_tests(run *r, const char *dir, const char *cases, const char *path);
+
 /* A frame at a viewport origin inside the framebuffer against the same at
  * (0, 0) (viewport_test.c; csg.json, every tier). */
 void viewport_tests(run *r, stin_tier tier, const char *path);

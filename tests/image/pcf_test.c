@@ -34,6 +34,7 @@ typedef struct pcf_case {
     const char *scene_name;
     const float *ref;
     const ref_hit *hits;
+    int kernel; /* of the render being judged */
 } pcf_case;
 
 
@@ -72,6 +73,39 @@ static double mismatch(const pcf_case *c, const capture *cap, int band, long *co
     return compared ? (double)differ / compared : 1.0;
 }
 
+/* The verdict of one map-pcf render (named as one() names it). */
+static void judge(pcf_case *c, const char *name, uint32_t size, const capture *cap)
+{
+    long compared, shadowed, shadowed_wrong;
+    /* The kernel's penumbra in pixels: on these scenes a 2048 map's texel is
+     * about a quarter of a pixel where the shadows fall, so r texels stay
+     * within the one pixel every edge gets; smaller maps widen it. */
+    double f = mismatch(c, cap, 1 + (c->kernel / 2) * (int)(2048u / size) / 4, &compared,
+                        &shadowed, &shadowed_wrong);
+    if (cap->counters.gl_violations || cap->log_errors)
+        report(c->r, "FAIL", name, "%u profile violations, %u error logs (last: %s)",
+               cap->counters.gl_violations, cap->log_errors, cap->last_error);
+    else if (cap->choice[STIN_FEATURE_SHADOWS].technique != STIN_TECH_SHADOWS_MAP_PCF)
+        report(c->r, "FAIL", name, "not drawn by map-pcf (%s)",
+               stin_technique_name(cap->choice[STIN_FEATURE_SHADOWS].technique));
+    else if (size != 2048 && c->s->lights[0].type == SCENE_LIGHT_POINT)
+        report(c->r, f <= 0.0005 ? "PASS" : "FAIL", name,
+               "face seams: visibility differs on %.3f%% of %ld reachable pixels outside the "
+               "kernel's penumbra band (at most 0.05%%: no tap reads a neighbouring face)",
+               100.0 * f, compared);
+    else if (size != 2048 || !strstr(c->scene_name, "spheres"))
+        printf("INFO %s/%s/%s: visibility differs on %.3f%% of %ld reachable pixels outside the "
+               "penumbra band\n", c->r->platform_name, c->r->profile_name, name, 100.0 * f,
+               compared);
+    else
+        report(c->r,
+               f <= 0.01 && shadowed >= 100 && shadowed_wrong <= shadowed / 50 ? "PASS" : "FAIL",
+               name,
+               "visibility differs on %.3f%% of %ld reachable pixels outside the kernel's "
+               "penumbra band (at most 1%%); of the %ld shadowed ones (at least 100) %ld came out "
+               "lit (at most 2%%)", 100.0 * f, compared, shadowed, shadowed_wrong);
+}
+
 /* extra_mask: capabilities hidden on top of the profile's (the row's name
  * says which: "-no-compare" for SHADOW, "-packed" for depth textures too);
  * debug: STIN_DEBUG_* flags ("-no-derivatives"); 0 for the plain rows. */
@@ -83,8 +117,6 @@ static void one(pcf_case *c, stin_tier tier, uint32_t size, int kernel, uint64_t
     scene copy = *c->s;
     scene_light lights[8];
     char name[256], err[512];
-    long compared, shadowed, shadowed_wrong;
-    double f;
     int i;
     for (i = 0; i < copy.light_count && i < 8; i++) {
         lights[i] = copy.lights[i];
@@ -103,33 +135,8 @@ static void one(pcf_case *c, stin_tier tier, uint32_t size, int kernel, uint64_t
         report(c->r, "FAIL", name, "%s", err);
         return;
     }
-    /* The kernel's penumbra in pixels: on these scenes a 2048 map's texel is
-     * about a quarter of a pixel where the shadows fall, so r texels stay
-     * within the one pixel every edge gets; smaller maps widen it. */
-    f = mismatch(c, &cap, 1 + (kernel / 2) * (int)(2048u / size) / 4, &compared, &shadowed,
-                 &shadowed_wrong);
-    if (cap.counters.gl_violations || cap.log_errors)
-        report(c->r, "FAIL", name, "%u profile violations, %u error logs (last: %s)",
-               cap.counters.gl_violations, cap.log_errors, cap.last_error);
-    else if (cap.choice[STIN_FEATURE_SHADOWS].technique != STIN_TECH_SHADOWS_MAP_PCF)
-        report(c->r, "FAIL", name, "not drawn by map-pcf (%s)",
-               stin_technique_name(cap.choice[STIN_FEATURE_SHADOWS].technique));
-    else if (size != 2048 && c->s->lights[0].type == SCENE_LIGHT_POINT)
-        report(c->r, f <= 0.0005 ? "PASS" : "FAIL", name,
-               "face seams: visibility differs on %.3f%% of %ld reachable pixels outside the "
-               "kernel's penumbra band (at most 0.05%%: no tap reads a neighbouring face)",
-               100.0 * f, compared);
-    else if (size != 2048 || !strstr(c->scene_name, "spheres"))
-        printf("INFO %s/%s/%s: visibility differs on %.3f%% of %ld reachable pixels outside the "
-               "penumbra band\n", c->r->platform_name, c->r->profile_name, name, 100.0 * f,
-               compared);
-    else
-        report(c->r,
-               f <= 0.01 && shadowed >= 100 && shadowed_wrong <= shadowed / 50 ? "PASS" : "FAIL",
-               name,
-               "visibility differs on %.3f%% of %ld reachable pixels outside the kernel's "
-               "penumbra band (at most 1%%); of the %ld shadowed ones (at least 100) %ld came out "
-               "lit (at most 2%%)", 100.0 * f, compared, shadowed, shadowed_wrong);
+    c->kernel = kernel;
+    judge(c, name, size, &cap);
     capture_free(&cap);
 }
 
@@ -208,6 +215,45 @@ void pcf_tests(run *r, stin_tier tier, const char *path)
             one(&c, tier, 2048, 3, depth, STIN_DEBUG_NO_DERIVATIVES, "-packed-no-derivatives");
     }
 done:
+    free(hits);
+    free(refimg);
+    if (ref)
+        reference_destroy(ref);
+    scene_free(&s);
+}
+
+void pcf_rows(run *r, stin_tier tier, const char *path, uint32_t size, int kernel,
+              const capture *cap)
+{
+    scene s;
+    reference *ref = NULL;
+    ref_hit *hits = NULL;
+    float *refimg = NULL;
+    pcf_case c;
+    char err[512], scene_name[128], name[256];
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    snprintf(name, sizeof name, "%s/%s/map-pcf-%u-k%d", stin_tier_name(tier), scene_name, size,
+             kernel);
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        return;
+    }
+    ref = reference_create(&s, err, sizeof err);
+    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
+    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
+    if (!s.light_count || !ref || !hits || !refimg ||
+        !reference_primary(ref, r->width, r->height, hits) ||
+        !reference_render_ex(&s, ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED, refimg)) {
+        report(r, "FAIL", name, "set-up: %s", s.light_count ? err : "no light");
+    } else {
+        c.r = r;
+        c.s = &s;
+        c.scene_name = scene_name;
+        c.ref = refimg;
+        c.hits = hits;
+        c.kernel = kernel;
+        judge(&c, name, size, cap);
+    }
     free(hits);
     free(refimg);
     if (ref)

@@ -449,57 +449,89 @@ static void test_additivity(const shadow_case *c, const capture *all)
     capture_free(&b);
 }
 
+/* Everything a case needs but the render: the scene and its references.
+ * 0 when there is nothing to test (no lights, or a failure reported). */
+typedef struct shadow_set {
+    scene s;
+    reference *ref;
+    ref_hit *hits;
+    float *refimg;
+    char scene_name[128];
+    int loaded;
+} shadow_set;
+
+static void shadow_set_free(shadow_set *set)
+{
+    free(set->hits);
+    free(set->refimg);
+    if (set->ref)
+        reference_destroy(set->ref);
+    if (set->loaded)
+        scene_free(&set->s);
+}
+
+static int shadow_set_up(run *r, stin_tier tier, const char *path, shadow_set *set,
+                         shadow_case *c)
+{
+    char err[512];
+    memset(set, 0, sizeof *set);
+    snprintf(set->scene_name, sizeof set->scene_name, "%s", scene_base_name(path));
+    if (!scene_load(path, &set->s, err, sizeof err))
+        return 0; /* test_scene reported it */
+    set->loaded = 1;
+    c->r = r;
+    c->tier = tier;
+    c->s = &set->s;
+    c->scene_name = set->scene_name;
+    c->samples = set->s.light_count > 0 && set->s.lights[0].radius > 0.0f &&
+                         set->s.lights[0].type != SCENE_LIGHT_DIRECTIONAL
+                     ? 32 /* stin's default desc.shadows.soft_samples */
+                     : 1;
+    if (!set->s.light_count)
+        return 0;
+    set->ref = reference_create(&set->s, err, sizeof err);
+    /* volumes take the terminator rule on every smooth mesh, on every tier */
+    if (set->ref)
+        reference_facet_terminator(set->ref, REFERENCE_FACETS_NONE);
+    set->hits = malloc(sizeof *set->hits * (size_t)r->width * r->height);
+    set->refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
+    if (!set->ref || !set->hits || !set->refimg ||
+        !reference_primary(set->ref, r->width, r->height, set->hits) ||
+        !reference_render_ex(&set->s, set->ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED,
+                             set->refimg)) {
+        char name[256];
+        snprintf(name, sizeof name, "%s/%s/volume", stin_tier_name(tier), set->scene_name);
+        report(r, "FAIL", name, "reference: %s", set->ref ? "render failed" : err);
+        return 0;
+    }
+    c->ref = set->refimg;
+    c->hits = set->hits;
+    c->refr = set->ref;
+    return 1;
+}
+
 void shadow_tests(run *r, stin_tier tier, const char *path)
 {
-    scene s;
-    reference *ref = NULL;
-    ref_hit *hits = NULL;
-    float *refimg = NULL;
-    capture cap;
+    shadow_set set;
     shadow_case c;
-    char err[512], scene_name[128];
-    memset(&cap, 0, sizeof cap);
-    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
-    if (!scene_load(path, &s, err, sizeof err))
-        return; /* test_scene reported it */
-    c.r = r;
-    c.tier = tier;
-    c.s = &s;
-    c.scene_name = scene_name;
-    c.samples = s.light_count > 0 && s.lights[0].radius > 0.0f &&
-                        s.lights[0].type != SCENE_LIGHT_DIRECTIONAL
-                    ? 32 /* stin's default desc.shadows.soft_samples */
-                    : 1;
-    if (!s.light_count)
-        goto done;
-    ref = reference_create(&s, err, sizeof err);
-    /* volumes take the terminator rule on every smooth mesh, on every tier */
-    reference_facet_terminator(ref, REFERENCE_FACETS_NONE);
-    hits = malloc(sizeof *hits * (size_t)r->width * r->height);
-    refimg = malloc(sizeof(float) * REFERENCE_CHANNELS * (size_t)r->width * r->height);
-    if (!ref || !hits || !refimg || !reference_primary(ref, r->width, r->height, hits) ||
-        !reference_render_ex(&s, ref, r->width, r->height, 0, REFERENCE_RENDER_SHADOWED, refimg)) {
-        char name[256];
-        snprintf(name, sizeof name, "%s/%s/volume", stin_tier_name(tier), scene_name);
-        report(r, "FAIL", name, "reference: %s", ref ? "render failed" : err);
-        goto done;
+    capture cap;
+    if (shadow_set_up(r, tier, path, &set, &c) && render(&c, &set.s, 0, 0, &cap, "vis")) {
+        test_clean(&c, &cap);
+        test_visibility(&c, &cap);
+        test_zpass_zfail(&c, &cap);
+        test_two_pass(&c, &cap);
+        test_gpu_extrusion(&c, &cap);
+        test_additivity(&c, &cap);
+        capture_free(&cap);
     }
-    c.ref = refimg;
-    c.hits = hits;
-    c.refr = ref;
-    if (!render(&c, &s, 0, 0, &cap, "vis"))
-        goto done;
-    test_clean(&c, &cap);
-    test_visibility(&c, &cap);
-    test_zpass_zfail(&c, &cap);
-    test_two_pass(&c, &cap);
-    test_gpu_extrusion(&c, &cap);
-    test_additivity(&c, &cap);
-    capture_free(&cap);
-done:
-    free(hits);
-    free(refimg);
-    if (ref)
-        reference_destroy(ref);
-    scene_free(&s);
+    shadow_set_free(&set);
+}
+
+void shadow_vis_rows(run *r, stin_tier tier, const char *path, const capture *cap)
+{
+    shadow_set set;
+    shadow_case c;
+    if (shadow_set_up(r, tier, path, &set, &c))
+        test_visibility(&c, cap);
+    shadow_set_free(&set);
 }

@@ -117,19 +117,16 @@ static int render_read(const scene_gpu *g, stin_context *ctx, stin_platform *p,
 int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *img,
                 double *frame_ms, stin_frame_stats *frame_stats, char *err, size_t err_size)
 {
-    int w = stin_platform_width(p), h = stin_platform_height(p), x, y, c, ok = 0;
+    int w = stin_platform_width(p), h = stin_platform_height(p), ok = 0;
     size_t n = (size_t)w * h;
     uint8_t *beauty = malloc(n * 4), *normal = malloc(n * 4), *vis = malloc(n * 4);
     float *depth = malloc(n * sizeof(float));
     float view[16], proj[16];
-    double inv[16];
     const scene_camera *cam = &g->src->camera;
-    if (!beauty || !normal || !vis || !depth || !image_alloc(img, w, h, AOV_CHANNELS)) {
+    if (!beauty || !normal || !vis || !depth) {
         snprintf(err, err_size, "out of memory");
         goto done;
     }
-    for (c = 0; c < AOV_CHANNELS; c++)
-        snprintf(img->channel_names[c], sizeof img->channel_names[c], "%s", aov_channel_names[c]);
     if (!render_read(g, ctx, p, STIN_OUTPUT_BEAUTY, beauty, frame_ms, err, err_size))
         goto done;
     if (frame_stats)
@@ -146,9 +143,31 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
     if (!render_read(g, ctx, p, STIN_OUTPUT_NORMAL, normal, NULL, err, err_size) ||
         !render_read(g, ctx, p, STIN_OUTPUT_VISIBILITY, vis, NULL, err, err_size))
         goto done;
+    ok = aov_assemble(w, h, beauty, normal, vis, depth, view, proj, cam->eye, img, err, err_size);
+done:
+    free(beauty);
+    free(normal);
+    free(vis);
+    free(depth);
+    return ok;
+}
+
+int aov_assemble(int w, int h, const uint8_t *beauty, const uint8_t *normal, const uint8_t *vis,
+                 const float *depth, const float view[16], const float proj[16],
+                 const float eye[3], image *img, char *err, size_t err_size)
+{
+    int x, y, c;
+    double inv[16];
+    if (!image_alloc(img, w, h, AOV_CHANNELS)) {
+        snprintf(err, err_size, "out of memory");
+        return 0;
+    }
+    for (c = 0; c < AOV_CHANNELS; c++)
+        snprintf(img->channel_names[c], sizeof img->channel_names[c], "%s", aov_channel_names[c]);
     if (!aov_inverse_view_proj(view, proj, inv)) {
         snprintf(err, err_size, "camera matrices are singular");
-        goto done;
+        image_free(img);
+        return 0;
     }
     for (y = 0; y < h; y++)
         for (x = 0; x < w; x++) {
@@ -170,7 +189,7 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
                     double nv = normal[4 * src + c] / 255.0 * 2.0 - 1.0;
                     o[AOV_PX + c] = (float)P[c];
                     o[AOV_NX + c] = (float)nv;
-                    d[c] = P[c] - cam->eye[c];
+                    d[c] = P[c] - eye[c];
                     len += d[c] * d[c];
                     nl += nv * nv;
                     o[AOV_VIS_R + c] = vis[4 * src + c] / 255.0f;
@@ -182,11 +201,5 @@ int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *
                 o[AOV_Z] = (float)sqrt(len);
             }
         }
-    ok = 1;
-done:
-    free(beauty);
-    free(normal);
-    free(vis);
-    free(depth);
-    return ok;
+    return 1;
 }

@@ -34,6 +34,16 @@ extern const char *const aov_channel_names[AOV_CHANNELS];
 int aov_capture(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *img,
                 double *frame_ms, stin_frame_stats *frame_stats, char *err, size_t err_size);
 
+/* The AOV image (allocated here) from one frame's read-backs, rows bottom to
+ * top as GL reads them: RGBA8 beauty, normal (STIN_OUTPUT_NORMAL) and
+ * visibility, depth in [0, 1], the frame's view and projection
+ * (stin_query_frame_projection) and the camera's eye. aov_capture's
+ * assembly, also used for frames read back elsewhere (a browser's). 1 on
+ * success; err says what failed. */
+int aov_assemble(int width, int height, const uint8_t *beauty, const uint8_t *normal,
+                 const uint8_t *vis, const float *depth, const float view[16],
+                 const float proj[16], const float eye[3], image *img, char *err,
+                 size_t err_size);
 /* Depth-buffer unprojection for one pixel centre (x, y from the bottom). */
 void aov_unproject(const double inv_view_proj[16], int width, int height, int x, int y,
                    double depth, double out[3]);

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// The browser side of the image tests (tests/web/run.sh): for each case
+// (?scene=NAME&size=WxH&cases=a,b), a stin context with the case's shadow
+// technique, and per output (beauty with its depth, normal, visibility of
+// light 0) the offscreen read-back posted as RESULT/SCENE-CASE-OUTPUT.rgba,
+// with SCENE-CASE.txt: the frames' status, stin's choice, log and projection.
+'use strict';
+
+// auto: stin's own choice at its best tier (not compared: a scene sweep,
+// STIN_WEB_CASES=auto; the other cases force tier gl2 and the technique).
+const CASES = {
+  auto: { tier: 'auto', shadows: '', size: 0, kernel: 0 },
+  lighting: { shadows: 'shadows-off', size: 0, kernel: 0 },
+  volume: { shadows: 'volume', size: 0, kernel: 0 },
+  'map-pcf-1024-k3': { shadows: 'map-pcf', size: 1024, kernel: 3 },
+};
+
+async function post(where, data) {
+  await fetch(where, { method: 'POST', body: data });
+}
+
+async function runCase(f, scene, name) {
+  const c = CASES[name];
+  const meta = [];
+  await post('/log', `browser: ${scene} ${name}`);
+  if (!f.create(c.tier || 'gl2', c.shadows, c.size, c.kernel)) {
+    meta.push('created 0');
+  } else {
+    meta.push('created 1');
+    const outputs = [['beauty', 0], ['normal', 1], ['vis', 2]];
+    for (const [label, output] of outputs) {
+      await post('/log', `browser: ${scene} ${name} ${label} frame`);
+      const ok = f.frame(output, 1);
+      meta.push(`status ${label} ${f.frameStatus()}`);
+      meta.push(`frame ${label} ${ok}`);
+      await post(`/result/${scene}-${name}-${label}.rgba`, f.read(0));
+      if (output === 0) {
+        meta.push('projection ' + f.projection().join(' '));
+        await post(`/result/${scene}-${name}-depth.rgba`, f.read(1));
+      }
+    }
+  }
+  meta.push('log_errors ' + f.logErrors());
+  for (const line of f.choice().split('\n')) if (line) meta.push('choice ' + line);
+  for (const line of f.log().split('\n')) if (line) meta.push('log ' + line);
+  await post(`/result/${scene}-${name}.txt`, meta.join('\n') + '\n');
+}
+
+(async () => {
+  const q = new URLSearchParams(location.search);
+  const [w, h] = (q.get('size') || '256x192').split('x').map(Number);
+  try {
+    const f = await stinFront('#view', w, h);
+    const gl = document.createElement('canvas').getContext('webgl2');
+    await post('/log', 'browser: ' + (gl ? gl.getParameter(gl.VERSION) : 'no WebGL 2'));
+    for (const scene of (q.get('scenes') || 'four-lights').split(',')) {
+      await f.loadScene(`scenes/${scene}.stinscene`);
+      for (const name of (q.get('cases') || 'lighting,volume,map-pcf-1024-k3').split(','))
+        await runCase(f, scene, name);
+    }
+  } catch (e) {
+    await post('/log', 'browser: ' + e);
+  }
+  await post('/done', '');
+})();
