@@ -8,7 +8,7 @@
 # Usage: tests/run.sh BUILD_DIR
 # Environment: STIN_TEST_PLATFORMS (default "egl osmesa"),
 #              STIN_TEST_PROFILES (default: every desktop profile of docs/profiles.md),
-#              STIN_TEST_ES_PROFILES (default "es30 es32 es20-ext"; egl only, the scenes below),
+#              STIN_TEST_ES_PROFILES (default "es30 es32 es20-ext es20"; egl only, the scenes below),
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme,
 #              bench, viewer and browser (web) suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
@@ -57,8 +57,9 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # (3 s). es32's dual peeling and deep maps (glass-panes, 58 s: both its
 # tiers run) and interval CSG (csg, 117 s) are left to a run by hand.
 # es20-ext (GLSL ES 1.00) runs es30's scenes but csg, and stone-wall's
-# normal/parallax/pom.
-ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext}
+# normal/parallax/pom; es20 (no derivatives, depth textures or 32-bit
+# indices) volumes and map-pcf's packed maps on spheres-18k-spot (6 s).
+ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext es20}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 SCENES=$(ls tests/scenes/*.json)
@@ -112,6 +113,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
                 es32) more=tests/scenes/displace-tess.json ;;
                 es20-ext) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json
                                 tests/scenes/stone-wall.json tests/scenes/displace-plate.json" ;;
+                es20) more=tests/scenes/spheres-18k-spot.json ;;
                 *) more= ;;
             esac
             echo "image:$plat:$prof $B/stin-imagetest --profile $prof --platform $plat --out $OUT" $ES_SCENES $more

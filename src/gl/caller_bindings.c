@@ -71,11 +71,19 @@ static int has_transfer(const stin_context *ctx)
     return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)) != 0;
 }
 
+/* How many of the pixel-store values the context has: OpenGL ES 2.0 has
+ * only the alignment (row length and skips are ES 3.0's). */
+static int store_count(const stin_context *ctx)
+{
+    return ctx->caps.es && ctx->caps.gl_major < 3 ? 1 : STIN__UNPACK_STORE;
+}
+
 static void store_begin(stin_context *ctx, const pixel_store *p, stin__unpack_saved *s)
 {
     int i;
-    for (i = 0; i < STIN__UNPACK_STORE; i++) {
+    for (i = 0; i < STIN__UNPACK_STORE; i++)
         s->store[i] = tight[i];
+    for (i = 0; i < store_count(ctx); i++) {
         GL(ctx, GetIntegerv)(p->store[i], &s->store[i]);
         if (s->store[i] != tight[i])
             GL(ctx, PixelStorei)(p->store[i], tight[i]);
@@ -99,7 +107,7 @@ static void store_begin(stin_context *ctx, const pixel_store *p, stin__unpack_sa
 static void store_end(stin_context *ctx, const pixel_store *p, const stin__unpack_saved *s)
 {
     int i;
-    for (i = 0; i < STIN__UNPACK_STORE; i++)
+    for (i = 0; i < store_count(ctx); i++)
         if (s->store[i] != tight[i])
             GL(ctx, PixelStorei)(p->store[i], s->store[i]);
     if (s->buffer)

@@ -33,8 +33,10 @@ void error_kept_tests(run *r, stin_tier tier, const char *path)
     }
     gl.Enable(0); /* the caller's error: GL_INVALID_ENUM, left pending */
     if (test_context_create(&t, r, &s, tier, STIN_TECH_NONE, 0)) {
+        /* the export's needs (stin.h): otherwise the frame is refused */
+        uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
         test_frame_desc(r, &s, &fd);
-        if (stin_query_caps(t.ctx)->present & STIN_CAP_BIT(STIN_CAP_FBO))
+        if ((stin_query_caps(t.ctx)->present & need) == need)
             fd.export_visibility = STIN_EXPORT_VISIBILITY;
         frame = test_context_frame(&t, &s, &fd, -1);
         test_context_destroy(&t);

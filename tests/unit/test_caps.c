@@ -313,8 +313,9 @@ static void test_missing_entry_points_turn_caps_off(void **state)
     loaded[STIN_GLFN_ClientActiveTexture] = 0;
     loaded[STIN_GLFN_GenerateMipmap] = 0;
     assert_int_equal(stin__caps_parse(&in, &some), 1);
-    assert_int_equal(all.present & ~some.present, /* derivatives are GLSL's */
-                     BIT(GLSL) | BIT(DERIVATIVES) | BIT(VBO) | BIT(MULTITEXTURE) | BIT(FBO));
+    assert_int_equal(all.present & ~some.present, /* derivatives, frag depth are GLSL's */
+                     BIT(GLSL) | BIT(DERIVATIVES) | BIT(FRAG_DEPTH) | BIT(VBO) |
+                         BIT(MULTITEXTURE) | BIT(FBO));
     assert_int_equal(some.hidden, 0); /* not hidden by the mask: absent */
 }
 
