@@ -54,10 +54,11 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # maps on glass-panes (10 s), scs and goldfeather with their GLSL ES 3.00
 # depth write-back on csg (42 s), displacement by vertex textures on
 # displace-plate (2 s), normal/parallax/pom on stone-wall (5 s); on es32
-# tessellated displacement on displace-tess (3 s). es32's dual peeling and deep maps (glass-panes, 58 s: both its
-# tiers run) and interval CSG (csg, 117 s) are left to a run by hand.
-# es20-ext (GLSL ES 1.00) runs es30's scenes but csg; es20 (no derivatives, depth textures or 32-bit
-# indices) volumes and map-pcf's packed maps on spheres-18k-spot (6 s).
+# tessellated displacement on displace-tess (3 s). es32's dual peeling and
+# deep maps (glass-panes, 58 s: both its tiers run) and interval CSG (csg,
+# 117 s) are left to a run by hand. es20-ext (GLSL ES 1.00) runs es30's
+# scenes but csg; es20 (no derivatives, depth textures or 32-bit indices)
+# volumes and map-pcf's packed maps on spheres-18k-spot (6 s).
 ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext es20}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
