@@ -11,6 +11,9 @@ async function stinFront(canvasSelector, width, height) {
     module: m,
     init: c('web_init', 'number', ['string', 'number', 'number']),
     create: c('web_create', 'number', ['string', 'string', 'number', 'number']),
+    // for the next create: a technique forced by name ('' forgets them and the options)
+    force: c('web_force', 'number', ['string']),
+    option: c('web_option', 'number', ['string', 'number']),
     orbit: c('web_orbit', null, ['number', 'number', 'number']),
     frame: c('web_frame', 'number', ['number', 'number']),
     log: () => m.UTF8ToString(m._web_log()),

@@ -42,6 +42,10 @@ static struct web {
     char log[LOG_BYTES];
     char choice[1024];
     char frame_status[128];
+    /* web_force and web_option's settings for the next web_create */
+    stin_technique forced[STIN_FEATURE_COUNT];
+    uint32_t deep_map_size;
+    uint64_t debug_flags;
 } w;
 
 static void *get_proc(void *user, const char *name)
@@ -222,6 +226,11 @@ EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int m
                                                                            : STIN_TIER_AUTO;
     if (shadows[0])
         d.techniques[STIN_FEATURE_SHADOWS] = stin_technique_from_name(shadows);
+    for (i = 0; i < STIN_FEATURE_COUNT; i++)
+        if (w.forced[i] != STIN_TECH_NONE)
+            d.techniques[i] = w.forced[i];
+    d.translucent.deep_map_size = w.deep_map_size;
+    d.debug_flags = w.debug_flags;
     d.shadows.map_size = (uint32_t)map_size;
     for (i = 0; pcf_kernel && i < w.s.light_count; i++)
         w.s.lights[i].pcf_kernel = pcf_kernel;
@@ -243,6 +252,40 @@ EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int m
         return 0;
     }
     w.have_gpu = 1;
+    return 1;
+}
+
+/* Forces a technique by name (its feature's) in the next web_create's
+ * contexts; "" forgets every forced one and the options below. 1 when the
+ * name is a technique. */
+EMSCRIPTEN_KEEPALIVE int web_force(const char *technique)
+{
+    stin_technique t = stin_technique_from_name(technique);
+    int f;
+    if (!technique[0]) {
+        for (f = 0; f < STIN_FEATURE_COUNT; f++)
+            w.forced[f] = STIN_TECH_NONE;
+        w.deep_map_size = 0;
+        w.debug_flags = 0;
+        return 1;
+    }
+    if (t == STIN_TECH_NONE)
+        return 0;
+    w.forced[stin_technique_feature(t)] = t;
+    return 1;
+}
+
+/* A stin_desc field for the next web_create: "deep_map_size"
+ * (translucent.deep_map_size) or "debug" (debug_flags: STIN_DEBUG_* below
+ * 2^53, which a JavaScript number holds exactly). 1 when the name is known. */
+EMSCRIPTEN_KEEPALIVE int web_option(const char *name, double value)
+{
+    if (!strcmp(name, "deep_map_size"))
+        w.deep_map_size = (uint32_t)value;
+    else if (!strcmp(name, "debug"))
+        w.debug_flags = (uint64_t)value;
+    else
+        return 0;
     return 1;
 }
 

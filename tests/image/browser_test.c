@@ -6,12 +6,19 @@
  * SCENE-CASE.txt: the frames' status, stin's choice and log, the frame's
  * projection) become the AOV image of a native capture, and the native
  * rows judge it against the same Embree reference with the same bounds:
- *   lighting         gl-clean, position, normal, beauty (image_test.c)
- *   volume           gl-clean, volume-vis (shadow_test.c)
- *   map-pcf-S-kK     map-pcf-S-kK (pcf_test.c)
- * gl-clean here: stin_create succeeded, every frame returned STIN_OK with
- * WebGL's error flag clear, no error logged, and stin chose the technique
- * the case forced.
+ *   lighting         four-lights: position, normal, beauty (image_test.c)
+ *   volume           four-lights: volume-vis (shadow_test.c)
+ *   map-pcf-S-kK     four-lights: map-pcf-S-kK (pcf_test.c)
+ *   coloured         glass-panes: coloured-transmittance, -between
+ *                    (coloured_test.c)
+ *   depth-peel       glass-panes: peel-beauty (peel_test.c)
+ *   normal, pom      stone-wall: normal-reference, pom-reference
+ *                    (surface_test.c)
+ *   displace         displace-plate: displace position, silhouette
+ *                    (displace_test.c)
+ * and gl-clean for each: stin_create succeeded, every frame returned
+ * STIN_OK with WebGL's error flag clear, no error logged, and stin chose
+ * the technique the case forced.
  */
 #include "aov.h"
 #include "capture.h"
@@ -22,18 +29,48 @@
 #include <stdlib.h>
 #include <string.h>
 
+typedef enum browser_rows {
+    ROWS_LIGHTING,
+    ROWS_VOLUME,
+    ROWS_PCF,
+    ROWS_COLOURED,
+    ROWS_PEEL,
+    ROWS_SURFACE,
+    ROWS_DISPLACE
+} browser_rows;
+
 typedef struct browser_case {
     const char *name;     /* as test.js names it */
-    stin_technique shadows;
+    const char *scene;    /* the scene it is for (tests/web/test.js agrees) */
+    stin_technique tech;  /* the technique it forces: stin must have chosen it */
+    browser_rows rows;
     uint32_t map_size;
     int kernel;
 } browser_case;
 
 static const browser_case cases[] = {
-    {"lighting", STIN_TECH_SHADOWS_OFF, 0, 0},
-    {"volume", STIN_TECH_SHADOWS_VOLUME, 0, 0},
-    {"map-pcf-1024-k3", STIN_TECH_SHADOWS_MAP_PCF, 1024, 3},
+    {"lighting", "four-lights", STIN_TECH_SHADOWS_OFF, ROWS_LIGHTING, 0, 0},
+    {"volume", "four-lights", STIN_TECH_SHADOWS_VOLUME, ROWS_VOLUME, 0, 0},
+    {"map-pcf-1024-k3", "four-lights", STIN_TECH_SHADOWS_MAP_PCF, ROWS_PCF, 1024, 3},
+    {"coloured", "glass-panes", STIN_TECH_TRANSLUCENT_COLOURED, ROWS_COLOURED, 0, 0},
+    {"depth-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DEPTH_PEEL, ROWS_PEEL, 0, 0},
+    {"normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_SURFACE, 0, 0},
+    {"pom", "stone-wall", STIN_TECH_SURFACE_POM, ROWS_SURFACE, 0, 0},
+    {"displace", "displace-plate", STIN_TECH_DISPLACEMENT_VTF, ROWS_DISPLACE, 0, 0},
 };
+
+/* name is one of list's comma-separated words */
+static int in_list(const char *list, const char *name)
+{
+    size_t len = strlen(name);
+    const char *at = list;
+    while ((at = strstr(at, name)) != NULL) {
+        if ((at == list || at[-1] == ',') && (at[len] == '\0' || at[len] == ','))
+            return 1;
+        at += len;
+    }
+    return 0;
+}
 
 static unsigned char *read_all(const char *path, size_t expect)
 {
@@ -50,15 +87,13 @@ static unsigned char *read_all(const char *path, size_t expect)
 }
 
 /* The case's text: 1 when created and every frame succeeded; the frame's
- * projection, stin's shadow technique and the log's errors. */
-static int read_meta(const char *path, float proj[16], stin_technique *shadows, capture *cap,
-                     char *why, size_t why_size)
+ * projection, stin's choice per feature and the log's errors. */
+static int read_meta(const char *path, float proj[16], capture *cap, char *why, size_t why_size)
 {
     FILE *f = fopen(path, "r");
     char line[1024];
     int ok = f != NULL, k;
     snprintf(why, why_size, "%s", f ? "" : "no result from the browser");
-    *shadows = STIN_TECH_NONE;
     while (f && fgets(line, sizeof line, f)) {
         line[strcspn(line, "\n")] = '\0';
         if (!strcmp(line, "created 0")) {
@@ -71,8 +106,15 @@ static int read_meta(const char *path, float proj[16], stin_technique *shadows, 
             char *p = line + 11;
             for (k = 0; k < 16; k++)
                 proj[k] = strtof(p, &p);
-        } else if (!strncmp(line, "choice shadows ", 15)) {
-            *shadows = stin_technique_from_name(line + 15);
+        } else if (!strncmp(line, "choice ", 7)) { /* "choice FEATURE TECHNIQUE[ (fell back)]" */
+            char *feature = line + 7, *tech = strchr(feature, ' ');
+            if (!tech)
+                continue;
+            *tech++ = '\0';
+            tech[strcspn(tech, " ")] = '\0';
+            for (k = 0; k < STIN_FEATURE_COUNT; k++)
+                if (!strcmp(feature, stin_feature_name((stin_feature)k)))
+                    cap->choice[k].technique = stin_technique_from_name(tech);
         } else if (!strncmp(line, "log error: ", 11)) {
             cap->log_errors++;
             snprintf(cap->last_error, sizeof cap->last_error, "%.400s", line + 11);
@@ -83,9 +125,11 @@ static int read_meta(const char *path, float proj[16], stin_technique *shadows, 
     return ok;
 }
 
-/* The AOV image of one case from its files; 0 with why on anything missing. */
+/* The AOV image of one case from its files and its beauty read-back (the
+ * caller frees it); 0 with why on anything missing. */
 static int load_case(run *r, const char *dir, const char *scene_name, const scene *s,
-                     const browser_case *bc, capture *cap, char *why, size_t why_size)
+                     const browser_case *bc, capture *cap, unsigned char **beauty, char *why,
+                     size_t why_size)
 {
     static const char *const outputs[4] = {"beauty", "normal", "vis", "depth"};
     unsigned char *px[4] = {NULL, NULL, NULL, NULL};
@@ -95,14 +139,15 @@ static int load_case(run *r, const char *dir, const char *scene_name, const scen
     stin_technique chosen;
     int ok = 0, k;
     memset(cap, 0, sizeof *cap);
+    *beauty = NULL;
     /* the file's camera; the projection the frame drew with replaces it */
     scene_camera_matrices(&s->camera, r->width, r->height, view, proj);
     snprintf(path, sizeof path, "%s/%s-%s.txt", dir, scene_name, bc->name);
-    if (!depth || !read_meta(path, proj, &chosen, cap, why, why_size))
+    if (!depth || !read_meta(path, proj, cap, why, why_size))
         goto done;
-    cap->choice[STIN_FEATURE_SHADOWS].technique = chosen;
-    if (chosen != bc->shadows) {
-        snprintf(why, why_size, "not drawn by %s (%s)", stin_technique_name(bc->shadows),
+    chosen = cap->choice[stin_technique_feature(bc->tech)].technique;
+    if (chosen != bc->tech) {
+        snprintf(why, why_size, "not drawn by %s (%s)", stin_technique_name(bc->tech),
                  stin_technique_name(chosen));
         goto done;
     }
@@ -118,11 +163,30 @@ static int load_case(run *r, const char *dir, const char *scene_name, const scen
                             px[3][4 * i + 2]) / 16777215.0);
     ok = aov_assemble(r->width, r->height, px[0], px[1], px[2], depth, view, proj, s->camera.eye,
                       &cap->img, why, why_size);
+    if (ok) {
+        *beauty = px[0];
+        px[0] = NULL;
+    }
 done:
     for (k = 0; k < 4; k++)
         free(px[k]);
     free(depth);
     return ok;
+}
+
+/* The native rows of the case's technique on the browser's frame. */
+static void case_rows(run *r, const browser_case *bc, const char *path, const char *scene_name,
+                      const scene *s, const capture *cap, const unsigned char *beauty)
+{
+    switch (bc->rows) {
+    case ROWS_LIGHTING: render_rows(r, STIN_TIER_GL2, scene_name, s, &cap->img, 0); break;
+    case ROWS_VOLUME: shadow_vis_rows(r, STIN_TIER_GL2, path, cap); break;
+    case ROWS_PCF: pcf_rows(r, STIN_TIER_GL2, path, bc->map_size, bc->kernel, cap); break;
+    case ROWS_COLOURED: coloured_frame_rows(r, STIN_TIER_GL2, path, cap); break;
+    case ROWS_PEEL: peel_frame_rows(r, STIN_TIER_GL2, path, beauty, bc->tech); break;
+    case ROWS_SURFACE: surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, cap); break;
+    case ROWS_DISPLACE: displace_frame_rows(r, STIN_TIER_GL2, path, cap); break;
+    }
 }
 
 void browser_tests(run *r, const char *dir, const char *list, const char *path)
@@ -138,12 +202,11 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
     for (i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         const browser_case *bc = &cases[i];
         capture cap;
-        size_t len = strlen(bc->name);
-        const char *at = strstr(list, bc->name);
-        if (!at || (at[len] != '\0' && at[len] != ','))
+        unsigned char *beauty;
+        if (!in_list(list, bc->name) || strcmp(bc->scene, scene_name) != 0)
             continue;
         snprintf(name, sizeof name, "gl2/%s/%s/gl-clean", scene_name, bc->name);
-        if (!load_case(r, dir, scene_name, &s, bc, &cap, why, sizeof why)) {
+        if (!load_case(r, dir, scene_name, &s, bc, &cap, &beauty, why, sizeof why)) {
             report(r, "FAIL", name, "%s", why);
             capture_free(&cap);
             continue;
@@ -153,13 +216,9 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
         else
             report(r, "PASS", name, "created, every frame STIN_OK with WebGL's error flag clear, "
                                     "no error logged, drawn by %s",
-                   stin_technique_name(bc->shadows));
-        if (bc->shadows == STIN_TECH_SHADOWS_OFF)
-            render_rows(r, STIN_TIER_GL2, scene_name, &s, &cap.img, 0);
-        else if (bc->shadows == STIN_TECH_SHADOWS_VOLUME)
-            shadow_vis_rows(r, STIN_TIER_GL2, path, &cap);
-        else
-            pcf_rows(r, STIN_TIER_GL2, path, bc->map_size, bc->kernel, &cap);
+                   stin_technique_name(bc->tech));
+        case_rows(r, bc, path, scene_name, &s, &cap, beauty);
+        free(beauty);
         capture_free(&cap);
     }
     scene_free(&s);

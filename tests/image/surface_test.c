@@ -356,38 +356,36 @@ static int footprint(const scene *s, const reference *ref, const ref_surface *rs
     return 1;
 }
 
-static void test_reference(run *r, stin_tier tier, const scene *s, const char *scene_name,
-                           stin_technique tech, int ref_tech, const char *test, uint64_t debug)
+/* A frame's beauty against the CPU reference on the normal-mapped pixels
+ * (one PASS/FAIL line; the frame drawn here or elsewhere: a browser's). */
+static void reference_rows(run *r, stin_tier tier, const scene *s, stin_technique tech,
+                           int ref_tech, const char *name, const capture *a)
 {
-    char name[256], err[512];
-    capture a;
+    char err[512];
     reference *ref = NULL;
     ref_surface *rs = NULL;
     ref_hit *hits = NULL;
     long n = 0, over = 0;
     double sum = 0, max = 0;
     int x, y, k;
-    snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_name, test);
-    if (!render(r, s, tier, tech, &a, name, debug))
-        return;
     ref = reference_create(s, err, sizeof err);
     rs = ref_surface_create(s);
-    hits = malloc(sizeof *hits * (size_t)a.img.width * a.img.height);
-    if (!ref || !rs || !hits || !reference_primary(ref, a.img.width, a.img.height, hits)) {
+    hits = malloc(sizeof *hits * (size_t)a->img.width * a->img.height);
+    if (!ref || !rs || !hits || !reference_primary(ref, a->img.width, a->img.height, hits)) {
         report(r, "FAIL", name, "reference: %s", ref ? "out of memory" : err);
         goto done;
     }
-    for (y = 0; y < a.img.height; y++)
-        for (x = 0; x < a.img.width; x++) {
-            const ref_hit *h = &hits[(size_t)(a.img.height - 1 - y) * a.img.width + x];
-            const float *p = px(&a.img, x, y);
+    for (y = 0; y < a->img.height; y++)
+        for (x = 0; x < a->img.width; x++) {
+            const ref_hit *h = &hits[(size_t)(a->img.height - 1 - y) * a->img.width + x];
+            const float *p = px(&a->img, x, y);
             ref_footprint fp;
             float want[4];
             double d = 0;
             if (!h->hit || !(p[AOV_Z] > 0) ||
                 s->materials[s->objects[h->object].material].normal < 0)
                 continue;
-            if (!footprint(s, ref, rs, a.img.width, a.img.height, x, a.img.height - 1 - y, h,
+            if (!footprint(s, ref, rs, a->img.width, a->img.height, x, a->img.height - 1 - y, h,
                            tier == STIN_TIER_GL2 ? ref_tech : -1, &fp)) {
                 n++; /* no footprint (a ray along the plane): counted as differing */
                 over++;
@@ -417,7 +415,34 @@ done:
     ref_surface_destroy(rs);
     if (ref)
         reference_destroy(ref);
+}
+
+static void test_reference(run *r, stin_tier tier, const scene *s, const char *scene_name,
+                           stin_technique tech, int ref_tech, const char *test, uint64_t debug)
+{
+    char name[256];
+    capture a;
+    snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_name, test);
+    if (!render(r, s, tier, tech, &a, name, debug))
+        return;
+    reference_rows(r, tier, s, tech, ref_tech, name, &a);
     capture_free(&a);
+}
+
+void surface_frame_rows(run *r, stin_tier tier, const char *path, stin_technique tech,
+                        const capture *cap)
+{
+    scene s;
+    char err[512], name[256];
+    int pom = tech == STIN_TECH_SURFACE_POM;
+    snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_base_name(path),
+             pom ? "pom-reference" : "normal-reference");
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        return;
+    }
+    reference_rows(r, tier, &s, tech, pom ? REF_SURFACE_POM : REF_SURFACE_NORMAL, name, cap);
+    scene_free(&s);
 }
 
 /* ---- parallax-limit ------------------------------------------------------- */

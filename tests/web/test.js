@@ -8,11 +8,19 @@
 
 // auto: stin's own choice at its best tier (not compared: a scene sweep,
 // STIN_WEB_CASES=auto; the other cases force tier gl2 and the technique).
+// force: techniques forced by name; options: web_option's; scenes: the
+// scenes a case is for (none: every scene). browser_test.c's table agrees.
 const CASES = {
   auto: { tier: 'auto', shadows: '', size: 0, kernel: 0 },
-  lighting: { shadows: 'shadows-off', size: 0, kernel: 0 },
-  volume: { shadows: 'volume', size: 0, kernel: 0 },
-  'map-pcf-1024-k3': { shadows: 'map-pcf', size: 1024, kernel: 3 },
+  lighting: { shadows: 'shadows-off', size: 0, kernel: 0, scenes: ['four-lights'] },
+  volume: { shadows: 'volume', size: 0, kernel: 0, scenes: ['four-lights'] },
+  'map-pcf-1024-k3': { shadows: 'map-pcf', size: 1024, kernel: 3, scenes: ['four-lights'] },
+  // coloured_test.c's options: deep's 512 a side on glass-panes, shadows stin's
+  coloured: { shadows: '', force: ['coloured'], options: { deep_map_size: 512 }, scenes: ['glass-panes'] },
+  'depth-peel': { shadows: 'shadows-off', force: ['depth-peel'], scenes: ['glass-panes'] },
+  normal: { shadows: 'shadows-off', force: ['normal'], scenes: ['stone-wall'] },
+  pom: { shadows: 'shadows-off', force: ['pom'], scenes: ['stone-wall'] },
+  displace: { shadows: 'shadows-off', force: ['displace'], scenes: ['displace-plate'] },
 };
 
 async function post(where, data) {
@@ -23,7 +31,10 @@ async function runCase(f, scene, name) {
   const c = CASES[name];
   const meta = [];
   await post('/log', `browser: ${scene} ${name}`);
-  if (!f.create(c.tier || 'gl2', c.shadows, c.size, c.kernel)) {
+  f.force('');
+  for (const t of c.force || []) f.force(t);
+  for (const [k, v] of Object.entries(c.options || {})) f.option(k, v);
+  if (!f.create(c.tier || 'gl2', c.shadows, c.size || 0, c.kernel || 0)) {
     meta.push('created 0');
   } else {
     meta.push('created 1');
@@ -55,8 +66,9 @@ async function runCase(f, scene, name) {
     await post('/log', 'browser: ' + (gl ? gl.getParameter(gl.VERSION) : 'no WebGL 2'));
     for (const scene of (q.get('scenes') || 'four-lights').split(',')) {
       await f.loadScene(`scenes/${scene}.stinscene`);
-      for (const name of (q.get('cases') || 'lighting,volume,map-pcf-1024-k3').split(','))
-        await runCase(f, scene, name);
+      for (const name of (q.get('cases') || 'lighting').split(','))
+        if (CASES[name] && (!CASES[name].scenes || CASES[name].scenes.includes(scene)))
+          await runCase(f, scene, name);
     }
   } catch (e) {
     await post('/log', 'browser: ' + e);
