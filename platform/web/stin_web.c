@@ -9,6 +9,7 @@
  *
  * The page calls the web_* functions (exported; see examples/web/stin.js).
  */
+#include "scene_csg.h"
 #include "scene_gpu.h"
 #include "scene_pack.h"
 #include "stin/stin.h"
@@ -31,6 +32,7 @@ static struct web {
     GLuint pack_program, pack_vao;
     unsigned char *pack;           /* the scene pack (the arrays point into it) */
     scene s;
+    scene_csg_products products;   /* the scene's csg list as stin products */
     float eye[3];                  /* the file's eye, which web_orbit turns about the target */
     scene_gpu g;
     int have_scene, have_gpu;
@@ -46,6 +48,7 @@ static struct web {
     stin_technique forced[STIN_FEATURE_COUNT];
     uint32_t deep_map_size;
     uint64_t debug_flags;
+    int csg_only;                  /* 0: every product; k: product k - 1 alone */
 } w;
 
 static void *get_proc(void *user, const char *name)
@@ -177,9 +180,15 @@ EMSCRIPTEN_KEEPALIVE int web_scene(unsigned char *pack, int size)
     release_context();
     if (w.have_scene)
         scene_pack_release(&w.s);
+    scene_csg_products_free(&w.products);
     free(w.pack);
     w.pack = pack;
     w.have_scene = scene_pack_read(pack, (size_t)size, &w.s, err, sizeof err);
+    if (w.have_scene && !scene_csg_products_build(&w.s, &w.products)) {
+        snprintf(err, sizeof err, "%s: out of memory for its csg list", w.s.path);
+        scene_pack_release(&w.s);
+        w.have_scene = 0;
+    }
     if (!w.have_scene) {
         snprintf(w.log, sizeof w.log, "error: %s\n", err);
         return 0;
@@ -234,7 +243,8 @@ EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int m
     d.shadows.map_size = (uint32_t)map_size;
     for (i = 0; pcf_kernel && i < w.s.light_count; i++)
         w.s.lights[i].pcf_kernel = pcf_kernel;
-    if (!scene_gpu_size_desc_checked(&w.s, &d, err, sizeof err)) {
+    if (!scene_gpu_size_desc_checked(&w.s, &d, err, sizeof err) ||
+        scene_csg_products_check(&w.s, &w.products, &d, err, sizeof err) <= 0) {
         log_line(NULL, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK, err);
         return 0;
     }
@@ -252,6 +262,14 @@ EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int m
         return 0;
     }
     w.have_gpu = 1;
+    /* the csg list's products drawn as products (their objects not alone) */
+    if (w.csg_only > 0 && w.csg_only <= w.products.count) {
+        w.g.csg = &w.products.products[w.csg_only - 1];
+        w.g.csg_count = 1;
+    } else {
+        w.g.csg = w.products.products;
+        w.g.csg_count = w.products.count;
+    }
     return 1;
 }
 
@@ -267,6 +285,7 @@ EMSCRIPTEN_KEEPALIVE int web_force(const char *technique)
             w.forced[f] = STIN_TECH_NONE;
         w.deep_map_size = 0;
         w.debug_flags = 0;
+        w.csg_only = 0;
         return 1;
     }
     if (t == STIN_TECH_NONE)
@@ -275,12 +294,16 @@ EMSCRIPTEN_KEEPALIVE int web_force(const char *technique)
     return 1;
 }
 
-/* A stin_desc field for the next web_create: "deep_map_size"
- * (translucent.deep_map_size) or "debug" (debug_flags: STIN_DEBUG_* below
- * 2^53, which a JavaScript number holds exactly). 1 when the name is known. */
+/* A setting for the next web_create: "deep_map_size"
+ * (translucent.deep_map_size), "debug" (debug_flags: STIN_DEBUG_* below
+ * 2^53, which a JavaScript number holds exactly) or "csg_product" (k >= 0:
+ * the csg list's product k drawn alone, the others' objects not drawn;
+ * -1: every product). 1 when the name is known. */
 EMSCRIPTEN_KEEPALIVE int web_option(const char *name, double value)
 {
-    if (!strcmp(name, "deep_map_size"))
+    if (!strcmp(name, "csg_product"))
+        w.csg_only = value < 0 ? 0 : (int)value + 1;
+    else if (!strcmp(name, "deep_map_size"))
         w.deep_map_size = (uint32_t)value;
     else if (!strcmp(name, "debug"))
         w.debug_flags = (uint64_t)value;

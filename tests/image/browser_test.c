@@ -16,6 +16,8 @@
  *                    (surface_test.c)
  *   displace         displace-plate: displace position, silhouette
  *                    (displace_test.c)
+ *   scs-CASE         csg: csg-scs-CASE P and N of csg.json's product CASE
+ *                    (carved, both, common) alone (csg_test.c)
  * and gl-clean for each: stin_create succeeded, every frame returned
  * STIN_OK with WebGL's error flag clear, no error logged, and stin chose
  * the technique the case forced.
@@ -36,7 +38,8 @@ typedef enum browser_rows {
     ROWS_COLOURED,
     ROWS_PEEL,
     ROWS_SURFACE,
-    ROWS_DISPLACE
+    ROWS_DISPLACE,
+    ROWS_CSG
 } browser_rows;
 
 typedef struct browser_case {
@@ -46,17 +49,21 @@ typedef struct browser_case {
     browser_rows rows;
     uint32_t map_size;
     int kernel;
+    const char *csg;      /* ROWS_CSG: csg_test.c's case (the page draws that product alone) */
 } browser_case;
 
 static const browser_case cases[] = {
-    {"lighting", "four-lights", STIN_TECH_SHADOWS_OFF, ROWS_LIGHTING, 0, 0},
-    {"volume", "four-lights", STIN_TECH_SHADOWS_VOLUME, ROWS_VOLUME, 0, 0},
-    {"map-pcf-1024-k3", "four-lights", STIN_TECH_SHADOWS_MAP_PCF, ROWS_PCF, 1024, 3},
-    {"coloured", "glass-panes", STIN_TECH_TRANSLUCENT_COLOURED, ROWS_COLOURED, 0, 0},
-    {"depth-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DEPTH_PEEL, ROWS_PEEL, 0, 0},
-    {"normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_SURFACE, 0, 0},
-    {"pom", "stone-wall", STIN_TECH_SURFACE_POM, ROWS_SURFACE, 0, 0},
-    {"displace", "displace-plate", STIN_TECH_DISPLACEMENT_VTF, ROWS_DISPLACE, 0, 0},
+    {"lighting", "four-lights", STIN_TECH_SHADOWS_OFF, ROWS_LIGHTING, 0, 0, NULL},
+    {"volume", "four-lights", STIN_TECH_SHADOWS_VOLUME, ROWS_VOLUME, 0, 0, NULL},
+    {"map-pcf-1024-k3", "four-lights", STIN_TECH_SHADOWS_MAP_PCF, ROWS_PCF, 1024, 3, NULL},
+    {"coloured", "glass-panes", STIN_TECH_TRANSLUCENT_COLOURED, ROWS_COLOURED, 0, 0, NULL},
+    {"depth-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DEPTH_PEEL, ROWS_PEEL, 0, 0, NULL},
+    {"normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_SURFACE, 0, 0, NULL},
+    {"pom", "stone-wall", STIN_TECH_SURFACE_POM, ROWS_SURFACE, 0, 0, NULL},
+    {"displace", "displace-plate", STIN_TECH_DISPLACEMENT_VTF, ROWS_DISPLACE, 0, 0, NULL},
+    {"scs-carved", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "carved"},
+    {"scs-both", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "both"},
+    {"scs-common", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "common"},
 };
 
 /* name is one of list's comma-separated words */
@@ -186,6 +193,7 @@ static void case_rows(run *r, const browser_case *bc, const char *path, const ch
     case ROWS_PEEL: peel_frame_rows(r, STIN_TIER_GL2, path, beauty, bc->tech); break;
     case ROWS_SURFACE: surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, cap); break;
     case ROWS_DISPLACE: displace_frame_rows(r, STIN_TIER_GL2, path, cap); break;
+    case ROWS_CSG: csg_frame_rows(r, STIN_TIER_GL2, path, bc->csg, bc->tech, cap); break;
     }
 }
 

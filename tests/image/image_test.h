@@ -41,6 +41,9 @@ void peel_frame_rows(run *r, stin_tier tier, const char *path, const uint8_t *rg
 void surface_frame_rows(run *r, stin_tier tier, const char *path, stin_technique tech,
                         const struct capture *cap);
 void displace_frame_rows(run *r, stin_tier tier, const char *path, const struct capture *cap);
+/* P and N of csg.json's case `name` (carved, both, common) resolved by tech (csg_test.c). */
+void csg_frame_rows(run *r, stin_tier tier, const char *path, const char *name,
+                    stin_technique tech, const struct capture *cap);
 /* The browser's read-backs of each case in dir against the reference, the
  * rows named as the native ones (browser_test.c; tests/web/run.sh). */
 void browser_tests(run *r, const char *dir, const char *cases, const char *path);

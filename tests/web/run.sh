@@ -8,15 +8,15 @@
 # rows' bounds. PASS/FAIL/SKIP lines, then "N passed, N failed, N skipped".
 # Usage: tests/web/run.sh [BUILD_DIR]
 # Environment: STIN_WEB_SCENES (default four-lights,glass-panes,stone-wall,
-# displace-plate), STIN_WEB_CASES (default every compared case; each runs on
+# displace-plate,csg), STIN_WEB_CASES (default every compared case; each runs on
 # its own scene alone, tests/web/test.js; "auto" draws with stin's own
 # choice and is not compared: a sweep of scenes), STIN_WEB_TIMEOUT (seconds,
 # default 240: make check runs it beside other suites), STIN_WEB_OUT (where
 # the read-backs go; default BUILD/test-out/web).
 set -u
 B=${1:-build}
-SCENES=${STIN_WEB_SCENES:-four-lights,glass-panes,stone-wall,displace-plate}
-CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3,coloured,depth-peel,normal,displace}
+SCENES=${STIN_WEB_SCENES:-four-lights,glass-panes,stone-wall,displace-plate,csg}
+CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3,coloured,depth-peel,normal,displace,scs-carved,scs-both,scs-common}
 LIMIT=${STIN_WEB_TIMEOUT:-240}
 OUT=${STIN_WEB_OUT:-$B/test-out/web}
 SIZE=256x192

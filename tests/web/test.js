@@ -21,6 +21,10 @@ const CASES = {
   normal: { shadows: 'shadows-off', force: ['normal'], scenes: ['stone-wall'] },
   pom: { shadows: 'shadows-off', force: ['pom'], scenes: ['stone-wall'] },
   displace: { shadows: 'shadows-off', force: ['displace'], scenes: ['displace-plate'] },
+  // csg.json's csg list: carved, both, common; one product at a time, as csg_test.c draws them
+  'scs-carved': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 0 }, scenes: ['csg'] },
+  'scs-both': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 1 }, scenes: ['csg'] },
+  'scs-common': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 2 }, scenes: ['csg'] },
 };
 
 async function post(where, data) {
