@@ -7,7 +7,13 @@
 (async () => {
   const $ = (id) => document.getElementById(id);
   const canvas = $('view');
-  const f = await stinFront('#view', canvas.width, canvas.height);
+  let f;
+  try {
+    f = await stinFront('#view', canvas.width, canvas.height);
+  } catch (e) { // no WebGL 2: the reason on the page, nothing drawn
+    $('choice').textContent = 'stin does not run here: ' + e.message;
+    return;
+  }
   const view = { yaw: 0, pitch: 0, scale: 1 };
   let pending = false;
 

@@ -44,6 +44,7 @@ static struct web {
     char log[LOG_BYTES];
     char choice[1024];
     char frame_status[128];
+    char init_error[256];
     /* web_force and web_option's settings for the next web_create */
     stin_technique forced[STIN_FEATURE_COUNT];
     uint32_t deep_map_size;
@@ -146,8 +147,14 @@ EMSCRIPTEN_KEEPALIVE int web_init(const char *canvas, int width, int height)
     a.alpha = 0;
     a.preserveDrawingBuffer = 1;
     w.gl = emscripten_webgl_create_context(canvas, &a);
-    if (w.gl <= 0 || emscripten_webgl_make_context_current(w.gl) != EMSCRIPTEN_RESULT_SUCCESS)
+    if (w.gl <= 0 || emscripten_webgl_make_context_current(w.gl) != EMSCRIPTEN_RESULT_SUCCESS) {
+        /* WebGL 1 is not taken instead: stin's GL2 tier on ES needs ES 3.0
+         * here (no client-side arrays, the front end's own GLSL ES 3.00) */
+        snprintf(w.init_error, sizeof w.init_error,
+                 "no WebGL 2 context with depth and stencil on %s: stin's browser front end "
+                 "needs WebGL 2 (OpenGL ES 3.0)", canvas);
         return 0;
+    }
     emscripten_set_canvas_element_size(canvas, width, height);
     w.width = width;
     w.height = height;
@@ -158,8 +165,15 @@ EMSCRIPTEN_KEEPALIVE int web_init(const char *canvas, int width, int height)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     w.pack_program = depth_pack_program();
     glGenVertexArrays(1, &w.pack_vao);
+    if (!ok || !w.pack_program)
+        snprintf(w.init_error, sizeof w.init_error, "%s",
+                 ok ? "the depth read-back program failed to build"
+                    : "the offscreen target (RGBA8, DEPTH24_STENCIL8) is incomplete");
     return ok && w.pack_program;
 }
+
+/* Why web_init returned 0. */
+EMSCRIPTEN_KEEPALIVE const char *web_init_error(void) { return w.init_error; }
 
 static void release_context(void)
 {

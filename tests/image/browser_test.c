@@ -18,6 +18,9 @@
  *                    (displace_test.c)
  *   scs-CASE         csg: csg-scs-CASE P and N of csg.json's product CASE
  *                    (carved, both, common) alone (csg_test.c)
+ *   webgl1           the page refuses 'webgl2' contexts (WebGL 1 alone left):
+ *                    the front end's init must fail, its message naming
+ *                    WebGL 2 (no frames, no gl-clean row)
  * and gl-clean for each: stin_create succeeded, every frame returned
  * STIN_OK with WebGL's error flag clear, no error logged, and stin chose
  * the technique the case forced.
@@ -39,7 +42,8 @@ typedef enum browser_rows {
     ROWS_PEEL,
     ROWS_SURFACE,
     ROWS_DISPLACE,
-    ROWS_CSG
+    ROWS_CSG,
+    ROWS_REFUSAL  /* no frames: the front end's refusal of a context without WebGL 2 */
 } browser_rows;
 
 typedef struct browser_case {
@@ -64,6 +68,7 @@ static const browser_case cases[] = {
     {"scs-carved", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "carved"},
     {"scs-both", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "both"},
     {"scs-common", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "common"},
+    {"webgl1", "four-lights", STIN_TECH_NONE, ROWS_REFUSAL, 0, 0, NULL},
 };
 
 /* name is one of list's comma-separated words */
@@ -181,6 +186,29 @@ done:
     return ok;
 }
 
+/* webgl1: "init 0" and a message naming WebGL 2 (one PASS/FAIL line). */
+static void refusal_row(run *r, const char *dir, const char *scene_name)
+{
+    char path[1024], line[1024], message[600] = "";
+    int init = -1;
+    FILE *f;
+    snprintf(path, sizeof path, "%s/%s-webgl1.txt", dir, scene_name);
+    f = fopen(path, "r");
+    while (f && fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\n")] = '\0';
+        if (!strncmp(line, "init ", 5))
+            init = atoi(line + 5);
+        else if (!strncmp(line, "message ", 8))
+            snprintf(message, sizeof message, "%.500s", line + 8);
+    }
+    if (f)
+        fclose(f);
+    report(r, init == 0 && strstr(message, "needs WebGL 2") ? "PASS" : "FAIL", "webgl1/refused",
+           "no WebGL 2 context (the page refused 'webgl2', WebGL 1 left): front end init %s, "
+           "message \"%s\" (must fail and name WebGL 2)",
+           init < 0 ? "gave no result" : init ? "succeeded" : "failed", message);
+}
+
 /* The native rows of the case's technique on the browser's frame. */
 static void case_rows(run *r, const browser_case *bc, const char *path, const char *scene_name,
                       const scene *s, const capture *cap, const unsigned char *beauty)
@@ -194,6 +222,7 @@ static void case_rows(run *r, const browser_case *bc, const char *path, const ch
     case ROWS_SURFACE: surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, cap); break;
     case ROWS_DISPLACE: displace_frame_rows(r, STIN_TIER_GL2, path, cap); break;
     case ROWS_CSG: csg_frame_rows(r, STIN_TIER_GL2, path, bc->csg, bc->tech, cap); break;
+    case ROWS_REFUSAL: break; /* browser_tests: refusal_row */
     }
 }
 
@@ -213,6 +242,10 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
         unsigned char *beauty;
         if (!in_list(list, bc->name) || strcmp(bc->scene, scene_name) != 0)
             continue;
+        if (bc->rows == ROWS_REFUSAL) {
+            refusal_row(r, dir, scene_name);
+            continue;
+        }
         snprintf(name, sizeof name, "gl2/%s/%s/gl-clean", scene_name, bc->name);
         if (!load_case(r, dir, scene_name, &s, bc, &cap, &beauty, why, sizeof why)) {
             report(r, "FAIL", name, "%s", why);

@@ -16,7 +16,7 @@
 set -u
 B=${1:-build}
 SCENES=${STIN_WEB_SCENES:-four-lights,glass-panes,stone-wall,displace-plate,csg}
-CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3,coloured,depth-peel,normal,displace,scs-carved,scs-both,scs-common}
+CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3,coloured,depth-peel,normal,displace,scs-carved,scs-both,scs-common,webgl1}
 LIMIT=${STIN_WEB_TIMEOUT:-240}
 OUT=${STIN_WEB_OUT:-$B/test-out/web}
 SIZE=256x192

@@ -21,6 +21,8 @@ const CASES = {
   normal: { shadows: 'shadows-off', force: ['normal'], scenes: ['stone-wall'] },
   pom: { shadows: 'shadows-off', force: ['pom'], scenes: ['stone-wall'] },
   displace: { shadows: 'shadows-off', force: ['displace'], scenes: ['displace-plate'] },
+  // a browser without WebGL 2 (refused 'webgl2' contexts): the front end must refuse
+  webgl1: { refusal: true, scenes: ['four-lights'] },
   // csg.json's csg list: carved, both, common; one product at a time, as csg_test.c draws them
   'scs-carved': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 0 }, scenes: ['csg'] },
   'scs-both': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 1 }, scenes: ['csg'] },
@@ -31,9 +33,34 @@ async function post(where, data) {
   await fetch(where, { method: 'POST', body: data });
 }
 
+// The refusal case: a canvas of its own whose 'webgl2' contexts are refused
+// (WebGL 1 stays), as in a browser without WebGL 2; the front end's answer
+// (init 0 and its message, shown on the page) posted as SCENE-webgl1.txt.
+async function refusal(scene) {
+  const canvas = document.createElement('canvas');
+  const get = HTMLCanvasElement.prototype.getContext;
+  const meta = [];
+  canvas.id = 'webgl1';
+  document.body.appendChild(canvas);
+  HTMLCanvasElement.prototype.getContext = function (kind, ...rest) {
+    return /webgl2/.test(kind) ? null : get.call(this, kind, ...rest);
+  };
+  try {
+    await stinFront('#webgl1', 64, 48);
+    meta.push('init 1');
+  } catch (e) {
+    meta.push('init 0', 'message ' + e.message);
+    document.getElementById('message').textContent = e.message;
+  } finally {
+    HTMLCanvasElement.prototype.getContext = get;
+  }
+  await post(`/result/${scene}-webgl1.txt`, meta.join('\n') + '\n');
+}
+
 async function runCase(f, scene, name) {
   const c = CASES[name];
   const meta = [];
+  if (c.refusal) return refusal(scene);
   await post('/log', `browser: ${scene} ${name}`);
   f.force('');
   for (const t of c.force || []) f.force(t);
