@@ -36,6 +36,8 @@
     $('choice').textContent = ok ? f.choice() : 'no stin context: ' + $('tier').value +
       ' with ' + ($('shadows').value || 'auto') + ' shadows is refused here (see the log)';
     $('log').textContent = f.log();
+    const warnings = f.log().split('\n').filter((l) => l.startsWith('warning: '));
+    $('fallbacks').textContent = warnings.length ? warnings.join('\n') : 'none';
     if (ok) redraw();
     else $('time').textContent = '';
   }

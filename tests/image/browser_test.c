@@ -21,6 +21,12 @@
  *   webgl1           the page refuses 'webgl2' contexts (WebGL 1 alone left):
  *                    the front end's init must fail, its message naming
  *                    WebGL 2 (no frames, no gl-clean row)
+ *   sweep            every scene, stin's own choice, a small front end of
+ *                    its own, frames not read back: SCENE/sweep/drawn when
+ *                    created, every frame STIN_OK with WebGL's error flag
+ *                    clear, no error logged, and each feature stin marks
+ *                    fallen back named in its log; the line lists the
+ *                    log's warnings (the fall-backs of what WebGL lacks)
  * and gl-clean for each: stin_create succeeded, every frame returned
  * STIN_OK with WebGL's error flag clear, no error logged, and stin chose
  * the technique the case forced.
@@ -43,12 +49,13 @@ typedef enum browser_rows {
     ROWS_SURFACE,
     ROWS_DISPLACE,
     ROWS_CSG,
-    ROWS_REFUSAL  /* no frames: the front end's refusal of a context without WebGL 2 */
+    ROWS_REFUSAL, /* no frames: the front end's refusal of a context without WebGL 2 */
+    ROWS_SWEEP    /* frames not read back: drawn, or the fall-backs named */
 } browser_rows;
 
 typedef struct browser_case {
     const char *name;     /* as test.js names it */
-    const char *scene;    /* the scene it is for (tests/web/test.js agrees) */
+    const char *scene;    /* the scene it is for (tests/web/test.js agrees); NULL: every one */
     stin_technique tech;  /* the technique it forces: stin must have chosen it */
     browser_rows rows;
     uint32_t map_size;
@@ -69,6 +76,7 @@ static const browser_case cases[] = {
     {"scs-both", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "both"},
     {"scs-common", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "common"},
     {"webgl1", "four-lights", STIN_TECH_NONE, ROWS_REFUSAL, 0, 0, NULL},
+    {"sweep", NULL, STIN_TECH_NONE, ROWS_SWEEP, 0, 0, NULL},
 };
 
 /* name is one of list's comma-separated words */
@@ -209,6 +217,54 @@ static void refusal_row(run *r, const char *dir, const char *scene_name)
            init < 0 ? "gave no result" : init ? "succeeded" : "failed", message);
 }
 
+/* sweep: one PASS/FAIL line from SCENE-sweep.txt. */
+static void sweep_row(run *r, const char *dir, const char *scene_name)
+{
+    char path[1024], line[1024], name[256], named[1024] = "", why[512] = "";
+    char fell[STIN_FEATURE_COUNT][64];
+    int created = -1, frames = 0, k, falls = 0;
+    FILE *f;
+    snprintf(path, sizeof path, "%s/%s-sweep.txt", dir, scene_name);
+    snprintf(name, sizeof name, "%s/sweep/drawn", scene_name);
+    f = fopen(path, "r");
+    while (f && fgets(line, sizeof line, f)) {
+        line[strcspn(line, "\n")] = '\0';
+        if (!strncmp(line, "created ", 8))
+            created = atoi(line + 8);
+        else if (!strncmp(line, "frame ", 6) && (++frames, line[strlen(line) - 1] != '1'))
+            snprintf(why, sizeof why, "%.400s: not STIN_OK, or a WebGL error after it", line);
+        else if (!strncmp(line, "log error: ", 11))
+            snprintf(why, sizeof why, "error logged: %.400s", line + 11);
+        if (!strncmp(line, "choice ", 7) && strstr(line, "(fell back)") && falls < STIN_FEATURE_COUNT)
+            snprintf(fell[falls++], sizeof fell[0], "%.*s", (int)strcspn(line + 7, " "), line + 7);
+        if (!strncmp(line, "log warning: ", 13) && strlen(named) < sizeof named - 1)
+            snprintf(named + strlen(named), sizeof named - strlen(named), "%s%s",
+                     named[0] ? "; " : "", line + 13);
+    }
+    if (f)
+        fclose(f);
+    /* a feature that fell back must be named: "FEATURE: ... falls back" */
+    for (k = 0; k < falls && !why[0]; k++) {
+        int found = 0;
+        f = fopen(path, "r");
+        while (f && fgets(line, sizeof line, f))
+            found |= !strncmp(line, "log ", 4) && strstr(line, fell[k]) != NULL &&
+                     strstr(line, "falls back") != NULL;
+        if (f)
+            fclose(f);
+        if (!found)
+            snprintf(why, sizeof why, "%s fell back and the log does not say why", fell[k]);
+    }
+    if (created != 1 || frames != 3 || why[0])
+        report(r, "FAIL", name, "%s", created < 0  ? "no result from the browser"
+                                       : !created ? "stin_create failed"
+                                       : why[0]   ? why
+                                                  : "not every frame drawn");
+    else
+        report(r, "PASS", name, "drawn: every frame STIN_OK, no WebGL error, no error logged; "
+                                "fall-backs in stin's log: %s", named[0] ? named : "none");
+}
+
 /* The native rows of the case's technique on the browser's frame. */
 static void case_rows(run *r, const browser_case *bc, const char *path, const char *scene_name,
                       const scene *s, const capture *cap, const unsigned char *beauty)
@@ -222,7 +278,8 @@ static void case_rows(run *r, const browser_case *bc, const char *path, const ch
     case ROWS_SURFACE: surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, cap); break;
     case ROWS_DISPLACE: displace_frame_rows(r, STIN_TIER_GL2, path, cap); break;
     case ROWS_CSG: csg_frame_rows(r, STIN_TIER_GL2, path, bc->csg, bc->tech, cap); break;
-    case ROWS_REFUSAL: break; /* browser_tests: refusal_row */
+    case ROWS_REFUSAL: /* browser_tests: refusal_row, sweep_row */
+    case ROWS_SWEEP: break;
     }
 }
 
@@ -240,10 +297,10 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
         const browser_case *bc = &cases[i];
         capture cap;
         unsigned char *beauty;
-        if (!in_list(list, bc->name) || strcmp(bc->scene, scene_name) != 0)
+        if (!in_list(list, bc->name) || (bc->scene && strcmp(bc->scene, scene_name) != 0))
             continue;
-        if (bc->rows == ROWS_REFUSAL) {
-            refusal_row(r, dir, scene_name);
+        if (bc->rows == ROWS_REFUSAL || bc->rows == ROWS_SWEEP) {
+            (bc->rows == ROWS_SWEEP ? sweep_row : refusal_row)(r, dir, scene_name);
             continue;
         }
         snprintf(name, sizeof name, "gl2/%s/%s/gl-clean", scene_name, bc->name);

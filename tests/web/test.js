@@ -6,12 +6,13 @@
 // with SCENE-CASE.txt: the frames' status, stin's choice, log and projection.
 'use strict';
 
-// auto: stin's own choice at its best tier (not compared: a scene sweep,
-// STIN_WEB_CASES=auto; the other cases force tier gl2 and the technique).
-// force: techniques forced by name; options: web_option's; scenes: the
-// scenes a case is for (none: every scene). browser_test.c's table agrees.
+// sweep: every scene with stin's own choice at its best tier, on a small
+// front end of its own (?sweep=WxH, default 128x96), frames not read back:
+// drawn, or the fall-back stin names. The other cases force tier gl2 and
+// their technique: force: techniques by name; options: web_option's;
+// scenes: the scenes a case is for. browser_test.c's table agrees.
 const CASES = {
-  auto: { tier: 'auto', shadows: '', size: 0, kernel: 0 },
+  sweep: { tier: 'auto', shadows: '', sweep: true },
   lighting: { shadows: 'shadows-off', size: 0, kernel: 0, scenes: ['four-lights'] },
   volume: { shadows: 'volume', size: 0, kernel: 0, scenes: ['four-lights'] },
   'map-pcf-1024-k3': { shadows: 'map-pcf', size: 1024, kernel: 3, scenes: ['four-lights'] },
@@ -57,10 +58,10 @@ async function refusal(scene) {
   await post(`/result/${scene}-webgl1.txt`, meta.join('\n') + '\n');
 }
 
-async function runCase(f, scene, name) {
-  const c = CASES[name];
+// One case's context and frames (beauty with its depth, normal, visibility),
+// read back and posted where readBack, and SCENE-NAME.txt.
+async function draw(f, scene, name, c, readBack) {
   const meta = [];
-  if (c.refusal) return refusal(scene);
   await post('/log', `browser: ${scene} ${name}`);
   f.force('');
   for (const t of c.force || []) f.force(t);
@@ -75,6 +76,7 @@ async function runCase(f, scene, name) {
       const ok = f.frame(output, 1);
       meta.push(`status ${label} ${f.frameStatus()}`);
       meta.push(`frame ${label} ${ok}`);
+      if (!readBack) continue;
       await post(`/result/${scene}-${name}-${label}.rgba`, f.read(0));
       if (output === 0) {
         meta.push('projection ' + f.projection().join(' '));
@@ -88,18 +90,38 @@ async function runCase(f, scene, name) {
   await post(`/result/${scene}-${name}.txt`, meta.join('\n') + '\n');
 }
 
+// The sweep's front end, made at its first scene.
+let sweepFront = null;
+
+async function sweep(scene, size) {
+  if (!sweepFront) {
+    const canvas = document.createElement('canvas');
+    canvas.id = 'sweep';
+    document.body.appendChild(canvas);
+    sweepFront = await stinFront('#sweep', size[0], size[1]);
+  }
+  await sweepFront.loadScene(`scenes/${scene}.stinscene`);
+  await draw(sweepFront, scene, 'sweep', CASES.sweep, false);
+}
+
 (async () => {
   const q = new URLSearchParams(location.search);
   const [w, h] = (q.get('size') || '256x192').split('x').map(Number);
+  const small = (q.get('sweep') || '128x96').split('x').map(Number);
+  const names = (q.get('cases') || 'lighting').split(',').filter((n) => CASES[n]);
   try {
     const f = await stinFront('#view', w, h);
     const gl = document.createElement('canvas').getContext('webgl2');
     await post('/log', 'browser: ' + (gl ? gl.getParameter(gl.VERSION) : 'no WebGL 2'));
     for (const scene of (q.get('scenes') || 'four-lights').split(',')) {
-      await f.loadScene(`scenes/${scene}.stinscene`);
-      for (const name of (q.get('cases') || 'lighting').split(','))
-        if (CASES[name] && (!CASES[name].scenes || CASES[name].scenes.includes(scene)))
-          await runCase(f, scene, name);
+      const mine = names.filter((n) => !CASES[n].scenes || CASES[n].scenes.includes(scene));
+      if (mine.some((n) => !CASES[n].sweep && !CASES[n].refusal))
+        await f.loadScene(`scenes/${scene}.stinscene`);
+      for (const name of mine) {
+        if (CASES[name].refusal) await refusal(scene);
+        else if (CASES[name].sweep) await sweep(scene, small);
+        else await draw(f, scene, name, CASES[name], true);
+      }
     }
   } catch (e) {
     await post('/log', 'browser: ' + e);
