@@ -17,6 +17,13 @@
   const view = { yaw: 0, pitch: 0, scale: 1 };
   let pending = false;
 
+  // the log, and its warnings as the fall-backs (some are logged at the first frame)
+  function showLog() {
+    const log = f.log();
+    const warnings = log.split('\n').filter((l) => l.startsWith('warning: '));
+    $('log').textContent = log;
+    $('fallbacks').textContent = warnings.length ? warnings.join('\n') : 'none';
+  }
   function draw() {
     pending = false;
     f.orbit(view.yaw, view.pitch, view.scale);
@@ -24,6 +31,7 @@
     // (a headless screenshot's virtual clock stands still: no time to show)
     const ms = f.frameMs();
     $('time').textContent = !ok ? 'frame failed: ' + f.frameStatus() : ms > 0 ? `frame ${ms.toFixed(1)} ms` : '';
+    showLog();
   }
   function redraw() {
     if (!pending) {
@@ -35,9 +43,7 @@
     const ok = f.create($('tier').value, $('shadows').value, 0, 0);
     $('choice').textContent = ok ? f.choice() : 'no stin context: ' + $('tier').value +
       ' with ' + ($('shadows').value || 'auto') + ' shadows is refused here (see the log)';
-    $('log').textContent = f.log();
-    const warnings = f.log().split('\n').filter((l) => l.startsWith('warning: '));
-    $('fallbacks').textContent = warnings.length ? warnings.join('\n') : 'none';
+    showLog();
     if (ok) redraw();
     else $('time').textContent = '';
   }
