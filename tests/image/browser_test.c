@@ -275,7 +275,9 @@ static void case_rows(run *r, const browser_case *bc, const char *path, const ch
     case ROWS_PCF: pcf_rows(r, STIN_TIER_GL2, path, bc->map_size, bc->kernel, cap); break;
     case ROWS_COLOURED: coloured_frame_rows(r, STIN_TIER_GL2, path, cap); break;
     case ROWS_PEEL: peel_frame_rows(r, STIN_TIER_GL2, path, beauty, bc->tech); break;
-    case ROWS_SURFACE: surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, cap); break;
+    case ROWS_SURFACE: /* ANGLE draws upside down: a quad's derivatives from its lower row */
+        surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, 1, cap);
+        break;
     case ROWS_DISPLACE: displace_frame_rows(r, STIN_TIER_GL2, path, cap); break;
     case ROWS_CSG: csg_frame_rows(r, STIN_TIER_GL2, path, bc->csg, bc->tech, cap); break;
     case ROWS_REFUSAL: /* browser_tests: refusal_row, sweep_row */
