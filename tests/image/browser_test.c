@@ -18,6 +18,7 @@
  *                    (displace_test.c)
  *   scs-CASE         csg: csg-scs-CASE P and N of csg.json's product CASE
  *                    (carved, both, common) alone (csg_test.c)
+ *   goldfeather-CASE csg: csg-CASE P and N, the same products by goldfeather
  *   webgl1           the page refuses 'webgl2' contexts (WebGL 1 alone left):
  *                    the front end's init must fail, its message naming
  *                    WebGL 2 (no frames, no gl-clean row)
@@ -75,6 +76,9 @@ static const browser_case cases[] = {
     {"scs-carved", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "carved"},
     {"scs-both", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "both"},
     {"scs-common", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "common"},
+    {"goldfeather-carved", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "carved"},
+    {"goldfeather-both", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "both"},
+    {"goldfeather-common", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "common"},
     {"webgl1", "four-lights", STIN_TECH_NONE, ROWS_REFUSAL, 0, 0, NULL},
     {"sweep", NULL, STIN_TECH_NONE, ROWS_SWEEP, 0, 0, NULL},
 };

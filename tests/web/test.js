@@ -28,6 +28,9 @@ const CASES = {
   'scs-carved': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 0 }, scenes: ['csg'] },
   'scs-both': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 1 }, scenes: ['csg'] },
   'scs-common': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 2 }, scenes: ['csg'] },
+  'goldfeather-carved': { shadows: 'shadows-off', force: ['goldfeather'], options: { csg_product: 0 }, scenes: ['csg'] },
+  'goldfeather-both': { shadows: 'shadows-off', force: ['goldfeather'], options: { csg_product: 1 }, scenes: ['csg'] },
+  'goldfeather-common': { shadows: 'shadows-off', force: ['goldfeather'], options: { csg_product: 2 }, scenes: ['csg'] },
 };
 
 async function post(where, data) {
