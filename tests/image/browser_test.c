@@ -19,6 +19,11 @@
  *   scs-CASE         csg: csg-scs-CASE P and N of csg.json's product CASE
  *                    (carved, both, common) alone (csg_test.c)
  *   goldfeather-CASE csg: csg-CASE P and N, the same products by goldfeather
+ *   skip-T           a technique of tier gl4 (deep, dual-peel, vdsm,
+ *                    displace-tess, interval) forced at stin's best tier: a
+ *                    SKIP row with stin's refusal naming what WebGL 2 lacks;
+ *                    FAIL if it ran (it would need rows of its own) or
+ *                    stin_create failed without naming it
  *   webgl1           the page refuses 'webgl2' contexts (WebGL 1 alone left):
  *                    the front end's init must fail, its message naming
  *                    WebGL 2 (no frames, no gl-clean row)
@@ -51,7 +56,8 @@ typedef enum browser_rows {
     ROWS_DISPLACE,
     ROWS_CSG,
     ROWS_REFUSAL, /* no frames: the front end's refusal of a context without WebGL 2 */
-    ROWS_SWEEP    /* frames not read back: drawn, or the fall-backs named */
+    ROWS_SWEEP,   /* frames not read back: drawn, or the fall-backs named */
+    ROWS_SKIP     /* a technique WebGL 2 cannot run: stin's refusal, a SKIP with it */
 } browser_rows;
 
 typedef struct browser_case {
@@ -79,6 +85,11 @@ static const browser_case cases[] = {
     {"goldfeather-carved", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "carved"},
     {"goldfeather-both", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "both"},
     {"goldfeather-common", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "common"},
+    {"skip-deep", "glass-panes", STIN_TECH_TRANSLUCENT_DEEP, ROWS_SKIP, 0, 0, NULL},
+    {"skip-dual-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DUAL_PEEL, ROWS_SKIP, 0, 0, NULL},
+    {"skip-vdsm", "four-lights", STIN_TECH_SHADOWS_VDSM, ROWS_SKIP, 0, 0, NULL},
+    {"skip-displace-tess", "displace-tess", STIN_TECH_DISPLACEMENT_TESS, ROWS_SKIP, 0, 0, NULL},
+    {"skip-interval", "csg", STIN_TECH_CSG_INTERVAL, ROWS_SKIP, 0, 0, NULL},
     {"webgl1", "four-lights", STIN_TECH_NONE, ROWS_REFUSAL, 0, 0, NULL},
     {"sweep", NULL, STIN_TECH_NONE, ROWS_SWEEP, 0, 0, NULL},
 };
@@ -269,6 +280,27 @@ static void sweep_row(run *r, const char *dir, const char *scene_name)
                                 "fall-backs in stin's log: %s", named[0] ? named : "none");
 }
 
+/* skip-T: one SKIP line with stin's reason, or a FAIL line. */
+static void skip_row(run *r, const char *dir, const char *scene_name, const browser_case *bc)
+{
+    char path[1024], name[256], why[512];
+    const char *t = stin_technique_name(bc->tech);
+    float proj[16];
+    capture cap;
+    int created;
+    memset(&cap, 0, sizeof cap);
+    snprintf(path, sizeof path, "%s/%s-%s.txt", dir, scene_name, bc->name);
+    snprintf(name, sizeof name, "gl2/%s/%s", scene_name, t);
+    created = read_meta(path, proj, &cap, why, sizeof why);
+    if (!created && strstr(cap.last_error, t) && strstr(cap.last_error, "needs"))
+        report(r, "SKIP", name, "WebGL 2 cannot run it: %s", cap.last_error);
+    else if (created && cap.choice[stin_technique_feature(bc->tech)].technique == bc->tech)
+        report(r, "FAIL", name, "%s runs on WebGL 2 here: it needs browser rows of its own", t);
+    else
+        report(r, "FAIL", name, "forced %s neither ran nor was refused naming it (%s; %s)", t,
+               why[0] ? why : "created", cap.last_error[0] ? cap.last_error : "no error logged");
+}
+
 /* The native rows of the case's technique on the browser's frame. */
 static void case_rows(run *r, const browser_case *bc, const char *path, const char *scene_name,
                       const scene *s, const capture *cap, const unsigned char *beauty)
@@ -284,8 +316,9 @@ static void case_rows(run *r, const browser_case *bc, const char *path, const ch
         break;
     case ROWS_DISPLACE: displace_frame_rows(r, STIN_TIER_GL2, path, cap); break;
     case ROWS_CSG: csg_frame_rows(r, STIN_TIER_GL2, path, bc->csg, bc->tech, cap); break;
-    case ROWS_REFUSAL: /* browser_tests: refusal_row, sweep_row */
-    case ROWS_SWEEP: break;
+    case ROWS_REFUSAL: /* browser_tests: refusal_row, sweep_row, skip_row */
+    case ROWS_SWEEP:
+    case ROWS_SKIP: break;
     }
 }
 
@@ -307,6 +340,10 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
             continue;
         if (bc->rows == ROWS_REFUSAL || bc->rows == ROWS_SWEEP) {
             (bc->rows == ROWS_SWEEP ? sweep_row : refusal_row)(r, dir, scene_name);
+            continue;
+        }
+        if (bc->rows == ROWS_SKIP) {
+            skip_row(r, dir, scene_name, bc);
             continue;
         }
         snprintf(name, sizeof name, "gl2/%s/%s/gl-clean", scene_name, bc->name);
