@@ -342,7 +342,8 @@ WEB_ENV := NODE_PATH=/usr/share/nodejs EMSDK_PYTHON=/usr/bin/python3
 WEB_OPT ?= -O1
 WEB_CFLAGS := -std=c99 -pedantic $(WARN) -Wno-missing-field-initializers $(WEB_OPT) -Iinclude -Isrc -I$(B)
 WEB_TOOL_CFLAGS := -std=c99 $(WARN) $(WEB_OPT) -Iinclude -Itools/common $(shell pkg-config --cflags-only-I libcjson 2>/dev/null)
-WEB_FRONT_SRC := platform/web/stin_web.c tools/common/scene_gpu.c tools/common/scene_pack.c tools/common/scene_camera.c
+WEB_FRONT_SRC := platform/web/stin_web.c tools/common/scene_gpu.c tools/common/scene_pack.c tools/common/scene_camera.c \
+  tools/common/scene_csg.c tools/common/scene_csg_check.c
 WEB_LINK := -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sALLOW_MEMORY_GROWTH=1 -sENVIRONMENT=web \
   -sMODULARIZE=1 -sEXPORT_NAME=createStin -sEXPORTED_RUNTIME_METHODS=ccall,cwrap,UTF8ToString,HEAPU8,HEAPF32 \
   -sEXPORTED_FUNCTIONS=_malloc,_free

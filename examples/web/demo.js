@@ -7,10 +7,23 @@
 (async () => {
   const $ = (id) => document.getElementById(id);
   const canvas = $('view');
-  const f = await stinFront('#view', canvas.width, canvas.height);
+  let f;
+  try {
+    f = await stinFront('#view', canvas.width, canvas.height);
+  } catch (e) { // no WebGL 2: the reason on the page, nothing drawn
+    $('choice').textContent = 'stin does not run here: ' + e.message;
+    return;
+  }
   const view = { yaw: 0, pitch: 0, scale: 1 };
   let pending = false;
 
+  // the log, and its warnings as the fall-backs (some are logged at the first frame)
+  function showLog() {
+    const log = f.log();
+    const warnings = log.split('\n').filter((l) => l.startsWith('warning: '));
+    $('log').textContent = log;
+    $('fallbacks').textContent = warnings.length ? warnings.join('\n') : 'none';
+  }
   function draw() {
     pending = false;
     f.orbit(view.yaw, view.pitch, view.scale);
@@ -18,6 +31,7 @@
     // (a headless screenshot's virtual clock stands still: no time to show)
     const ms = f.frameMs();
     $('time').textContent = !ok ? 'frame failed: ' + f.frameStatus() : ms > 0 ? `frame ${ms.toFixed(1)} ms` : '';
+    showLog();
   }
   function redraw() {
     if (!pending) {
@@ -29,7 +43,7 @@
     const ok = f.create($('tier').value, $('shadows').value, 0, 0);
     $('choice').textContent = ok ? f.choice() : 'no stin context: ' + $('tier').value +
       ' with ' + ($('shadows').value || 'auto') + ' shadows is refused here (see the log)';
-    $('log').textContent = f.log();
+    showLog();
     if (ok) redraw();
     else $('time').textContent = '';
   }

@@ -11,6 +11,9 @@ async function stinFront(canvasSelector, width, height) {
     module: m,
     init: c('web_init', 'number', ['string', 'number', 'number']),
     create: c('web_create', 'number', ['string', 'string', 'number', 'number']),
+    // for the next create: a technique forced by name ('' forgets them and the options)
+    force: c('web_force', 'number', ['string']),
+    option: c('web_option', 'number', ['string', 'number']),
     orbit: c('web_orbit', null, ['number', 'number', 'number']),
     frame: c('web_frame', 'number', ['number', 'number']),
     log: () => m.UTF8ToString(m._web_log()),
@@ -20,8 +23,12 @@ async function stinFront(canvasSelector, width, height) {
     frameMs: () => m._web_frame_ms(),
     width, height,
   };
-  if (!f.init(canvasSelector, width, height))
-    throw new Error('no WebGL 2 context with depth and stencil on ' + canvasSelector);
+  if (!f.init(canvasSelector, width, height)) {
+    // say whether the browser has WebGL at all: WebGL 1 alone is refused, not used
+    const webgl1 = !!document.createElement('canvas').getContext('webgl');
+    throw new Error(m.UTF8ToString(m._web_init_error()) +
+                    (webgl1 ? '; this browser gives WebGL 1 only' : '; this browser gives no WebGL'));
+  }
   // A scene pack fetched from the server, handed over in a block of the wasm heap.
   f.loadScene = async (url) => {
     const r = await fetch(url);

@@ -2145,7 +2145,10 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * size of the viewport, made at the first frame and kept, and a GLSL 1.50
  * program writing gl_FragDepth (GLSL ES 3.00 on OpenGL ES 3.x, whatever
  * the lighting; ES reads depth and stencil back as GL_DEPTH_STENCIL 24_8
- * words, so an ES context needs GL_NV_read_depth_stencil); a core context
+ * words with GL_NV_read_depth_stencil; an ES context without it (WebGL 2)
+ * resolves the camera's products on the GPU alone: they cast no shadow,
+ * scs and goldfeather run to their limits without counting layers, and
+ * STIN_DEBUG_CSG_READBACK makes it "csg-off"); a core context
  * without GL4 lighting, an ES 2.0
  * context, or a frame into a framebuffer without stencil, draws no
  * products: "csg-off" or a FALLBACK warning, logged once; products are

@@ -9,6 +9,7 @@
  *
  * The page calls the web_* functions (exported; see examples/web/stin.js).
  */
+#include "scene_csg.h"
 #include "scene_gpu.h"
 #include "scene_pack.h"
 #include "stin/stin.h"
@@ -31,6 +32,7 @@ static struct web {
     GLuint pack_program, pack_vao;
     unsigned char *pack;           /* the scene pack (the arrays point into it) */
     scene s;
+    scene_csg_products products;   /* the scene's csg list as stin products */
     float eye[3];                  /* the file's eye, which web_orbit turns about the target */
     scene_gpu g;
     int have_scene, have_gpu;
@@ -42,6 +44,12 @@ static struct web {
     char log[LOG_BYTES];
     char choice[1024];
     char frame_status[128];
+    char init_error[256];
+    /* web_force and web_option's settings for the next web_create */
+    stin_technique forced[STIN_FEATURE_COUNT];
+    uint32_t deep_map_size;
+    uint64_t debug_flags;
+    int csg_only;                  /* 0: every product; k: product k - 1 alone */
 } w;
 
 static void *get_proc(void *user, const char *name)
@@ -139,8 +147,14 @@ EMSCRIPTEN_KEEPALIVE int web_init(const char *canvas, int width, int height)
     a.alpha = 0;
     a.preserveDrawingBuffer = 1;
     w.gl = emscripten_webgl_create_context(canvas, &a);
-    if (w.gl <= 0 || emscripten_webgl_make_context_current(w.gl) != EMSCRIPTEN_RESULT_SUCCESS)
+    if (w.gl <= 0 || emscripten_webgl_make_context_current(w.gl) != EMSCRIPTEN_RESULT_SUCCESS) {
+        /* WebGL 1 is not taken instead: stin's GL2 tier on ES needs ES 3.0
+         * here (no client-side arrays, the front end's own GLSL ES 3.00) */
+        snprintf(w.init_error, sizeof w.init_error,
+                 "no WebGL 2 context with depth and stencil on %s: stin's browser front end "
+                 "needs WebGL 2 (OpenGL ES 3.0)", canvas);
         return 0;
+    }
     emscripten_set_canvas_element_size(canvas, width, height);
     w.width = width;
     w.height = height;
@@ -151,8 +165,15 @@ EMSCRIPTEN_KEEPALIVE int web_init(const char *canvas, int width, int height)
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     w.pack_program = depth_pack_program();
     glGenVertexArrays(1, &w.pack_vao);
+    if (!ok || !w.pack_program)
+        snprintf(w.init_error, sizeof w.init_error, "%s",
+                 ok ? "the depth read-back program failed to build"
+                    : "the offscreen target (RGBA8, DEPTH24_STENCIL8) is incomplete");
     return ok && w.pack_program;
 }
+
+/* Why web_init returned 0. */
+EMSCRIPTEN_KEEPALIVE const char *web_init_error(void) { return w.init_error; }
 
 static void release_context(void)
 {
@@ -173,9 +194,15 @@ EMSCRIPTEN_KEEPALIVE int web_scene(unsigned char *pack, int size)
     release_context();
     if (w.have_scene)
         scene_pack_release(&w.s);
+    scene_csg_products_free(&w.products);
     free(w.pack);
     w.pack = pack;
     w.have_scene = scene_pack_read(pack, (size_t)size, &w.s, err, sizeof err);
+    if (w.have_scene && !scene_csg_products_build(&w.s, &w.products)) {
+        snprintf(err, sizeof err, "%s: out of memory for its csg list", w.s.path);
+        scene_pack_release(&w.s);
+        w.have_scene = 0;
+    }
     if (!w.have_scene) {
         snprintf(w.log, sizeof w.log, "error: %s\n", err);
         return 0;
@@ -222,10 +249,16 @@ EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int m
                                                                            : STIN_TIER_AUTO;
     if (shadows[0])
         d.techniques[STIN_FEATURE_SHADOWS] = stin_technique_from_name(shadows);
+    for (i = 0; i < STIN_FEATURE_COUNT; i++)
+        if (w.forced[i] != STIN_TECH_NONE)
+            d.techniques[i] = w.forced[i];
+    d.translucent.deep_map_size = w.deep_map_size;
+    d.debug_flags = w.debug_flags;
     d.shadows.map_size = (uint32_t)map_size;
     for (i = 0; pcf_kernel && i < w.s.light_count; i++)
         w.s.lights[i].pcf_kernel = pcf_kernel;
-    if (!scene_gpu_size_desc_checked(&w.s, &d, err, sizeof err)) {
+    if (!scene_gpu_size_desc_checked(&w.s, &d, err, sizeof err) ||
+        scene_csg_products_check(&w.s, &w.products, &d, err, sizeof err) <= 0) {
         log_line(NULL, STIN_LOG_LEVEL_ERROR, STIN_LOG_FALLBACK, err);
         return 0;
     }
@@ -243,6 +276,53 @@ EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int m
         return 0;
     }
     w.have_gpu = 1;
+    /* the csg list's products drawn as products (their objects not alone) */
+    if (w.csg_only > 0 && w.csg_only <= w.products.count) {
+        w.g.csg = &w.products.products[w.csg_only - 1];
+        w.g.csg_count = 1;
+    } else {
+        w.g.csg = w.products.products;
+        w.g.csg_count = w.products.count;
+    }
+    return 1;
+}
+
+/* Forces a technique by name (its feature's) in the next web_create's
+ * contexts; "" forgets every forced one and the options below. 1 when the
+ * name is a technique. */
+EMSCRIPTEN_KEEPALIVE int web_force(const char *technique)
+{
+    stin_technique t = stin_technique_from_name(technique);
+    int f;
+    if (!technique[0]) {
+        for (f = 0; f < STIN_FEATURE_COUNT; f++)
+            w.forced[f] = STIN_TECH_NONE;
+        w.deep_map_size = 0;
+        w.debug_flags = 0;
+        w.csg_only = 0;
+        return 1;
+    }
+    if (t == STIN_TECH_NONE)
+        return 0;
+    w.forced[stin_technique_feature(t)] = t;
+    return 1;
+}
+
+/* A setting for the next web_create: "deep_map_size"
+ * (translucent.deep_map_size), "debug" (debug_flags: STIN_DEBUG_* below
+ * 2^53, which a JavaScript number holds exactly) or "csg_product" (k >= 0:
+ * the csg list's product k drawn alone, the others' objects not drawn;
+ * -1: every product). 1 when the name is known. */
+EMSCRIPTEN_KEEPALIVE int web_option(const char *name, double value)
+{
+    if (!strcmp(name, "csg_product"))
+        w.csg_only = value < 0 ? 0 : (int)value + 1;
+    else if (!strcmp(name, "deep_map_size"))
+        w.deep_map_size = (uint32_t)value;
+    else if (!strcmp(name, "debug"))
+        w.debug_flags = (uint64_t)value;
+    else
+        return 0;
     return 1;
 }
 

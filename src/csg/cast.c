@@ -249,8 +249,12 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
     total = ctx->staging_bytes > ctx->scratch_bytes ? ctx->staging_bytes : ctx->scratch_bytes;
     rows = total > offset ? (int)((total - offset) / row) : 0;
     rows = rows < rect[3] ? rows : rect[3];
-    if (rows < 1) {
-        if (!c->said_room)
+    if (rows < 1 || ctx->csg->no_readback) { /* a light's resolve is a read-back one */
+        if (!c->said_room && ctx->csg->no_readback)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "CSG products cast no shadow: a light's resolve reads depth and "
+                      "stencil back, which OpenGL ES does only with GL_NV_read_depth_stencil");
+        else if (!c->said_room)
             stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                       "CSG products cast no shadow from a light: a row of its map under them "
                       "needs %lu bytes of staging beside the camera's %lu (raise "

@@ -48,6 +48,9 @@ typedef struct stin__csg_state {
     uint32_t face_count;
     int resolved;             /* this frame's products are in its depth buffer */
     int said_unusable, said_layers, said_planes;
+    /* OpenGL ES without NV_read_depth_stencil (WebGL 2): no depth or stencil
+     * read-back, so only the GPU resolve runs (csg/resolve.c) */
+    int no_readback;
     uint32_t cap_slot;        /* the near-plane cap's mesh (csg/near.c), STIN__NO_SLOT: none */
     float cap_transform[16];  /* this frame's: the cap onto the near plane */
     int cap_usable;

@@ -316,7 +316,7 @@ static void count_others(stin_context *ctx, const stin__path *path, resolve *r,
 static int depth_complexity(stin_context *ctx, const stin__path *path, resolve *r)
 {
     unsigned most = stin__csg_stencil_max(ctx, path, r, 255u);
-    if (most == 255u && !ctx->csg->said_layers) {
+    if (most == 255u && !ctx->csg->said_layers && !ctx->csg->no_readback) {
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "goldfeather: a primitive is 255 or more layers deep; layers past "
                   "255 are not drawn");

@@ -720,6 +720,8 @@ unsigned stin__csg_stencil_max(stin_context *ctx, const stin__path *path, stin__
         resume(ctx, path);
         return bound_of(passed, n, limit);
     }
+    if (ctx->csg->no_readback) /* nothing to count with: the bound itself */
+        return limit;
     stin__csg_read_stencil(ctx, r);
     for (y = 0; y < g.rows; y++)
         for (x = 0; x < g.width; x++) {

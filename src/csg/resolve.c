@@ -27,6 +27,9 @@ static int usable(stin_context *ctx, resolve *r, int gpu)
         why = "the CSG technique is csg-off";
     else if (ctx->target.stencil_bits < 1 || !stin__target_has_stencil(ctx))
         why = "the frame's framebuffer has no stencil buffer";
+    else if (!gpu && ctx->csg->no_readback)
+        why = "the read-back resolve reads depth and stencil, which OpenGL ES does only "
+              "with GL_NV_read_depth_stencil";
     else if (gpu ? !stin__csg_pixels_gpu(ctx, r) : !stin__csg_pixels_at(ctx, 0, r))
         why = gpu ? "the viewport needs more than the texture staging (1 byte a pixel; raise "
                     "desc.max_texture_bytes)"
@@ -173,13 +176,10 @@ void stin__csg_init(stin_context *ctx)
             return;
         }
         /* the read-back resolves (light maps', STIN_DEBUG_CSG_READBACK,
-         * no GPU resolve) read depth and stencil, which core ES cannot */
-        if (ctx->caps.es && !stin_query_extension(ctx, "GL_NV_read_depth_stencil")) {
-            stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                         "OpenGL ES reads depth and stencil back only with "
-                         "GL_NV_read_depth_stencil");
-            return;
-        }
+         * no GPU resolve) read depth and stencil, which core ES cannot: there
+         * the camera's products take the GPU resolve alone (checked below,
+         * once it is built) and cast no shadow (csg/cast.c) */
+        c->no_readback = ctx->caps.es && !stin_query_extension(ctx, "GL_NV_read_depth_stencil");
         c->depth_prog = stin__program_build(ctx, "gl4/screen.vert", "gl4/csg_depth.frag",
                                             NULL, 0, msg, sizeof msg);
         if (!c->depth_prog) {
@@ -195,6 +195,21 @@ void stin__csg_init(stin_context *ctx)
         GL(ctx, GenTextures)(1, &c->depth_tex);
     stin__csg_cap_init(ctx);
     stin__csg_merge_init(ctx);
+    if (c->no_readback && !stin__csg_merge_ready(ctx)) {
+        stin__csg_release(ctx);
+        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
+                     ctx->desc.debug_flags & STIN_DEBUG_CSG_READBACK
+                         ? "STIN_DEBUG_CSG_READBACK reads depth and stencil back, which OpenGL "
+                           "ES does only with GL_NV_read_depth_stencil"
+                         : "its GPU resolve did not build, and OpenGL ES reads depth and "
+                           "stencil back only with GL_NV_read_depth_stencil");
+        return;
+    }
+    if (c->no_readback)
+        stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
+                  "CSG: no GL_NV_read_depth_stencil: products resolve on the GPU alone, "
+                  "cast no shadow, and scs and goldfeather count no layers (they run to "
+                  "their limits)");
 }
 
 void stin__csg_release(stin_context *ctx)

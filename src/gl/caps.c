@@ -281,6 +281,11 @@ int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
     if (!(have & STIN_CAP_BIT(STIN_CAP_GLSL))) /* geometry shaders, derivatives, frag depth are GLSL's */
         have &= ~(STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER) | STIN_CAP_BIT(STIN_CAP_DERIVATIVES) |
                   STIN_CAP_BIT(STIN_CAP_FRAG_DEPTH));
+    /* WebGL hands a query's result over only once control is back in the
+     * browser's event loop: read within the frame it says "nothing passed"
+     * (depth-peel then stopped after one layer and drew no blended draw) */
+    if (out->webgl)
+        have &= ~STIN_CAP_BIT(STIN_CAP_ANY_SAMPLES_QUERY);
     out->hidden = have & in->caps_mask;
     out->present = have & ~in->caps_mask;
     /* desktop answers "any passed" with its sample counts: what hides

@@ -158,6 +158,31 @@ static void opaque_case(deep_case *c, float threshold, float expect, const char 
     capture_free(&cap);
 }
 
+/* The rows of one coloured frame against the reference: transmittance on
+ * the receivers, seams, the seed's values and the transparent surfaces'
+ * bound where the scene has them. */
+static void frame_rows(deep_case *c, const capture *base, int stack, int colour, int panes)
+{
+    char name[256];
+    const char *tier = stin_tier_name(c->tier);
+    c->skip_transparent = 1;
+    snprintf(name, sizeof name, "%s/%s/coloured-transmittance", tier, c->scene_name);
+    deep_test_transmittance(c, base, name);
+    if (!strcmp(c->scene_name, "deep-seams")) {
+        snprintf(name, sizeof name, "%s/%s/coloured-seams", tier, c->scene_name);
+        deep_test_seams(c, base, name);
+    }
+    if (stack || colour) {
+        snprintf(name, sizeof name, "%s/%s/coloured-values", tier, c->scene_name);
+        deep_test_values(c, base, name);
+    }
+    c->skip_transparent = 0;
+    if (stack || colour || panes) {
+        snprintf(name, sizeof name, "%s/%s/coloured-between", tier, c->scene_name);
+        test_between(c, base, name);
+    }
+}
+
 /* The coloured tests of one scene at a GLSL tier. */
 static void glsl_tests(deep_case *c, int stack, int colour, int panes)
 {
@@ -171,22 +196,7 @@ static void glsl_tests(deep_case *c, int stack, int colour, int panes)
         return;
     snprintf(name, sizeof name, "%s/%s/coloured-gl-clean", tier, c->scene_name);
     capture_report_clean(c->r, name, &base);
-    c->skip_transparent = 1;
-    snprintf(name, sizeof name, "%s/%s/coloured-transmittance", tier, c->scene_name);
-    deep_test_transmittance(c, &base, name);
-    if (!strcmp(c->scene_name, "deep-seams")) {
-        snprintf(name, sizeof name, "%s/%s/coloured-seams", tier, c->scene_name);
-        deep_test_seams(c, &base, name);
-    }
-    if (stack || colour) {
-        snprintf(name, sizeof name, "%s/%s/coloured-values", tier, c->scene_name);
-        deep_test_values(c, &base, name);
-    }
-    c->skip_transparent = 0;
-    if (stack || colour || panes) {
-        snprintf(name, sizeof name, "%s/%s/coloured-between", tier, c->scene_name);
-        test_between(c, &base, name);
-    }
+    frame_rows(c, &base, stack, colour, panes);
     capture_free(&base);
     if (stack) {
         snprintf(name, sizeof name, "%s/%s/coloured-shadows-off", tier, c->scene_name);
@@ -204,6 +214,44 @@ static void glsl_tests(deep_case *c, int stack, int colour, int panes)
             capture_free(&cap);
         }
     }
+}
+
+static void case_of(deep_case *c, run *r, stin_tier tier, const scene *s, const char *scene_name,
+                    int stack)
+{
+    memset(c, 0, sizeof *c);
+    c->r = r;
+    c->s = s;
+    c->scene_name = scene_name;
+    c->tier = tier;
+    c->tech = STIN_TECH_TRANSLUCENT_COLOURED;
+    c->tag = "coloured";
+    /* deep's sizes: 2048 a face on deep-stack's one face, 512 elsewhere */
+    c->map_size = stack ? 2048u : 512u;
+    c->band = stack ? 1 : 3;
+}
+
+void coloured_frame_rows(run *r, stin_tier tier, const char *path, const capture *cap)
+{
+    deep_case c;
+    scene s;
+    reference *ref = NULL;
+    char err[512], scene_name[128];
+    int stack;
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    stack = !strcmp(scene_name, "deep-stack");
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", "coloured-reference", "%s: %s", scene_name, err);
+        return;
+    }
+    case_of(&c, r, tier, &s, scene_name, stack);
+    if (!deep_make_reference(&c, &ref, err, sizeof err))
+        report(r, "FAIL", "coloured-reference", "%s/%s: %s", stin_tier_name(tier), scene_name, err);
+    else
+        frame_rows(&c, cap, stack, !strcmp(scene_name, "deep-colour"),
+                   !strcmp(scene_name, "glass-panes"));
+    deep_free_reference(&c, ref);
+    scene_free(&s);
 }
 
 void coloured_tests(run *r, stin_tier tier, const char *path)
@@ -229,16 +277,7 @@ void coloured_tests(run *r, stin_tier tier, const char *path)
         scene_free(&s);
         return;
     }
-    memset(&c, 0, sizeof c);
-    c.r = r;
-    c.s = &s;
-    c.scene_name = scene_name;
-    c.tier = tier;
-    c.tech = STIN_TECH_TRANSLUCENT_COLOURED;
-    c.tag = "coloured";
-    /* deep's sizes: 2048 a face on deep-stack's one face, 512 elsewhere */
-    c.map_size = stack ? 2048u : 512u;
-    c.band = stack ? 1 : 3;
+    case_of(&c, r, tier, &s, scene_name, stack);
     if (!deep_make_reference(&c, &ref, err, sizeof err)) {
         report(r, "FAIL", "coloured-reference", "%s/%s: %s", stin_tier_name(tier), scene_name, err);
     } else {

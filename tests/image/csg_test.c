@@ -506,6 +506,80 @@ static void test_overflow(run *r, const csg_case *c, stin_tier tier, const scene
     capture_free(&two);
 }
 
+static ref_csg_product ref_product_of(const csg_case *c)
+{
+    ref_csg_product rp;
+    rp.objects = c->objects;
+    rp.primitive_count = 2;
+    rp.nodes = c->nodes;
+    rp.node_count = 3;
+    return rp;
+}
+
+/* The case's reference, CSG marked, its primary hits and image; 0 with a
+ * FAIL line under name. The caller frees what is set. */
+static int case_reference(run *r, const scene *s, const ref_csg_product *rp, reference **ref,
+                          ref_hit **hits, float **img, const char *name)
+{
+    char err[512];
+    int w = r->width, h = r->height;
+    *ref = reference_create(s, err, sizeof err);
+    *hits = calloc((size_t)w * h, sizeof **hits);
+    if (*ref && *hits && reference_csg_mark(*ref, rp, 1) &&
+        reference_csg_primary(*ref, rp, 1, w, h, *hits, NULL) &&
+        (*img = reference_image(s, *ref, *hits, w, h)) != NULL)
+        return 1;
+    report(r, "FAIL", name, "reference failed: %s", *ref ? "out of memory or embree" : err);
+    return 0;
+}
+
+/* P and N of a frame (drawn here or elsewhere: a browser's) against the
+ * case's reference image. */
+static void p_n_rows(run *r, const csg_case *c, stin_technique tech, stin_tier tier,
+                     const scene *s, const capture *cap, const float *refimg, const ref_hit *hits)
+{
+    compare_result cr;
+    compare_tolerance tol = {CSG_P_RELATIVE, CSG_P_ABSOLUTE, 1.0, CSG_NORMAL_DEGREES};
+    char name[256];
+    double match;
+    compare_render(s, &cap->img, refimg, hits, &tol, &cr);
+    match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) / cr.covered : 0;
+    case_name(c, tech, tier, "P", name, sizeof name);
+    report(r, cr.covered && match >= CSG_P_MIN_MATCH ? "PASS" : "FAIL", name,
+           "P matches the CSG reference on %.3f%% of %ld covered pixels (coverage differs on "
+           "%ld, P on %ld; need %.1f%%)", 100.0 * match, cr.covered, cr.coverage_mismatch,
+           cr.p_mismatch, 100.0 * CSG_P_MIN_MATCH);
+    case_name(c, tech, tier, "N", name, sizeof name);
+    csg_report_normals(r, name, &cr, CSG_NORMAL_DEGREES, CSG_NORMAL_MIN_MATCH);
+}
+
+void csg_frame_rows(run *r, stin_tier tier, const char *path, const char *case_name_,
+                    stin_technique tech, const capture *cap)
+{
+    const csg_case *c = NULL;
+    reference *ref = NULL;
+    ref_hit *hits = NULL;
+    float *refimg = NULL;
+    ref_csg_product rp;
+    scene s;
+    char err[512];
+    size_t i;
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        if (!strcmp(cases[i].name, case_name_) && !strcmp(cases[i].file, "csg.json"))
+            c = &cases[i];
+    if (!c || !scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", case_name_, "%s", c ? err : "no such case of csg.json");
+        return;
+    }
+    rp = ref_product_of(c);
+    if (case_reference(r, &s, &rp, &ref, &hits, &refimg, case_name_))
+        p_n_rows(r, c, tech, tier, &s, cap, refimg, hits);
+    free(refimg);
+    free(hits);
+    reference_destroy(ref);
+    scene_free(&s);
+}
+
 static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
                      stin_technique tech)
 {
@@ -518,8 +592,6 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     capture_options o;
     scene_gpu_csg product;
     ref_csg_product rp;
-    compare_result cr;
-    compare_tolerance tol = {CSG_P_RELATIVE, CSG_P_ABSOLUTE, 1.0, CSG_NORMAL_DEGREES};
     int w = r->width, h = r->height, have_cap = 0;
     snprintf(path, sizeof path, "%s/%s", dir, c->file);
     case_name(c, tech, tier, "P", name, sizeof name);
@@ -531,10 +603,7 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     product.primitive_count = 2;
     product.nodes = c->nodes;
     product.node_count = 3;
-    rp.objects = c->objects;
-    rp.primitive_count = 2;
-    rp.nodes = c->nodes;
-    rp.node_count = 3;
+    rp = ref_product_of(c);
     memset(&o, 0, sizeof o);
     o.tier = tier;
     o.csg = &product;
@@ -547,25 +616,9 @@ static void run_case(run *r, stin_tier tier, const char *dir, const csg_case *c,
     if (!capture_forced(r, &s, &o, STIN_FEATURE_CSG, tech, &cap, name))
         goto done;
     have_cap = 1;
-    ref = reference_create(&s, err, sizeof err);
-    hits = calloc((size_t)w * h, sizeof *hits);
-    if (!ref || !hits || !reference_csg_mark(ref, &rp, 1) ||
-        !reference_csg_primary(ref, &rp, 1, w, h, hits, NULL) ||
-        !(refimg = reference_image(&s, ref, hits, w, h))) {
-        report(r, "FAIL", name, "reference failed: %s", ref ? "out of memory or embree" : err);
+    if (!case_reference(r, &s, &rp, &ref, &hits, &refimg, name))
         goto done;
-    }
-    compare_render(&s, &cap.img, refimg, hits, &tol, &cr);
-    {
-        double match = cr.covered ? 1.0 - (double)(cr.p_mismatch + cr.coverage_mismatch) /
-                                              cr.covered : 0;
-        report(r, cr.covered && match >= CSG_P_MIN_MATCH ? "PASS" : "FAIL", name,
-               "P matches the CSG reference on %.3f%% of %ld covered pixels (coverage differs on "
-               "%ld, P on %ld; need %.1f%%)", 100.0 * match, cr.covered, cr.coverage_mismatch,
-               cr.p_mismatch, 100.0 * CSG_P_MIN_MATCH);
-    }
-    case_name(c, tech, tier, "N", name, sizeof name);
-    csg_report_normals(r, name, &cr, CSG_NORMAL_DEGREES, CSG_NORMAL_MIN_MATCH);
+    p_n_rows(r, c, tech, tier, &s, &cap, refimg, hits);
     if (c->shadows) {
         static const stin_technique shadow_techniques[] = {
             STIN_TECH_SHADOWS_VOLUME, STIN_TECH_SHADOWS_MAP_PCF, STIN_TECH_SHADOWS_MAP_DEPTH,

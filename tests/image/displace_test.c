@@ -574,6 +574,40 @@ static void tess_tests(disp_case *c)
     capture_free(&cap);
 }
 
+/* A case of "displace" on the scene at path, its rows named after it. */
+static void case_begin(disp_case *c, run *r, stin_tier tier, const char *path)
+{
+    memset(c, 0, sizeof *c);
+    c->r = r;
+    c->tier = tier;
+    c->displacement = STIN_TECH_DISPLACEMENT_VTF;
+    snprintf(c->prefix, sizeof c->prefix, "%s/%s/displace", stin_tier_name(tier),
+             scene_base_name(path));
+}
+
+void displace_frame_rows(run *r, stin_tier tier, const char *path, const capture *cap)
+{
+    disp_case c;
+    scene s;
+    char err[512];
+    case_begin(&c, r, tier, path);
+    c.s = &s;
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", c.prefix, "%s", err);
+        return;
+    }
+    if (coarse_scene(&s))
+        report(r, "SKIP", c.prefix, "a coarse mesh: a tessellation scene (displace-tess, GL4)");
+    else if (!setup(&c, 1, NULL, err, sizeof err))
+        report(r, "FAIL", c.prefix, "reference: %s", err);
+    else {
+        test_position(&c, cap, "position");
+        test_silhouette(&c, cap, "silhouette");
+    }
+    case_free(&c, &s);
+    scene_free(&s);
+}
+
 void displace_tests(run *r, stin_tier tier, const char *path)
 {
     disp_case c;
@@ -581,12 +615,7 @@ void displace_tests(run *r, stin_tier tier, const char *path)
     capture_options o;
     capture cap;
     char err[512], name[256];
-    memset(&c, 0, sizeof c);
-    c.r = r;
-    c.tier = tier;
-    c.displacement = STIN_TECH_DISPLACEMENT_VTF;
-    snprintf(c.prefix, sizeof c.prefix, "%s/%s/displace", stin_tier_name(tier),
-             scene_base_name(path));
+    case_begin(&c, r, tier, path);
     if (tier == STIN_TIER_GL1) {
         report(r, "SKIP", c.prefix, "displace is GLSL only (vertex texture fetch)");
         return;

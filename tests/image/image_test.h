@@ -30,6 +30,22 @@ void shadow_vis_rows(run *r, stin_tier tier, const char *path, const struct capt
 /* map-pcf-SIZE-kKERNEL of a frame drawn elsewhere (pcf_test.c). */
 void pcf_rows(run *r, stin_tier tier, const char *path, uint32_t size, int kernel,
               const struct capture *cap);
+/* Rows of frames drawn elsewhere (a browser's), as the native tests judge
+ * their own: coloured-transmittance and -between (coloured_test.c); the
+ * unshadowed peel-beauty of an RGBA8 beauty, rows bottom to top, drawn by
+ * `chosen` (peel_test.c); normal- or pom-reference by `tech`
+ * (surface_test.c; low: the renderer takes a quad's coarse derivatives at
+ * its lower-left pixel, as ANGLE on SwiftShader does, not its upper-left as
+ * llvmpipe); displace position and silhouette (displace_test.c). */
+void coloured_frame_rows(run *r, stin_tier tier, const char *path, const struct capture *cap);
+void peel_frame_rows(run *r, stin_tier tier, const char *path, const uint8_t *rgba,
+                     stin_technique chosen);
+void surface_frame_rows(run *r, stin_tier tier, const char *path, stin_technique tech,
+                        int low, const struct capture *cap);
+void displace_frame_rows(run *r, stin_tier tier, const char *path, const struct capture *cap);
+/* P and N of csg.json's case `name` (carved, both, common) resolved by tech (csg_test.c). */
+void csg_frame_rows(run *r, stin_tier tier, const char *path, const char *name,
+                    stin_technique tech, const struct capture *cap);
 /* The browser's read-backs of each case in dir against the reference, the
  * rows named as the native ones (browser_test.c; tests/web/run.sh). */
 void browser_tests(run *r, const char *dir, const char *cases, const char *path);

@@ -872,6 +872,39 @@ done:
     scene_free(&s);
 }
 
+void peel_frame_rows(run *r, stin_tier tier, const char *path, const uint8_t *rgba,
+                     stin_technique chosen)
+{
+    scene s;
+    peel_case c;
+    composite_ref unshadowed;
+    frame_out f;
+    char err[512], name[192];
+    memset(&c, 0, sizeof c);
+    memset(&f, 0, sizeof f);
+    memset(&unshadowed, 0, sizeof unshadowed);
+    c.r = r;
+    c.s = &s;
+    c.tier = tier;
+    c.scene_name = scene_base_name(path);
+    snprintf(name, sizeof name, "%s/%s/peel-beauty", stin_tier_name(tier), c.scene_name);
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        return;
+    }
+    c.ref = reference_create(&s, err, sizeof err);
+    f.rgba = (uint8_t *)rgba;
+    f.choice[STIN_FEATURE_TRANSPARENCY].technique = chosen;
+    if (!c.ref || !reference_of(&c, 0, &unshadowed))
+        report(r, "FAIL", name, "reference: %s", c.ref ? "composite failed" : err);
+    else
+        test_beauty(&c, &f, &unshadowed, name);
+    reference_free(&unshadowed);
+    if (c.ref)
+        reference_destroy(c.ref);
+    scene_free(&s);
+}
+
 void peel_tests(run *r, stin_tier tier, const char *path)
 {
     static const char *const beside[] = {"panes", "cross", "sorted"};

@@ -336,18 +336,21 @@ static int uv_at(const scene *s, const reference *ref, const ref_surface *rs, in
  * bottom-up): differences across the 2x2 quad holding it, on the pixel's own
  * triangle (helper pixels extend it), one level of detail per quad taken at
  * its upper-left pixel toward its right and lower neighbours (llvmpipe's
- * rasterizer runs rows top-down; GL allows coarse derivatives). GL4's
- * textureGrad is given the unmoved uv's (surface_frame.glsl: tech < 0); GL2's
- * texture2D differentiates the uv it samples, which pom moves (tech >= 0). */
+ * rasterizer runs rows top-down; GL allows coarse derivatives), or at its
+ * lower-left pixel toward the one above where `low` (ANGLE on SwiftShader,
+ * the browser's, measured: it draws through Vulkan, whose rows go down).
+ * GL4's textureGrad is given the unmoved uv's (surface_frame.glsl:
+ * tech < 0); GL2's texture2D differentiates the uv it samples, which pom
+ * moves (tech >= 0), so at pom's steps the quad's pixel matters. */
 static int footprint(const scene *s, const reference *ref, const ref_surface *rs, int w, int h,
-                     int x, int y, const ref_hit *hit, int tech, ref_footprint *fp)
+                     int x, int y, const ref_hit *hit, int tech, int low, ref_footprint *fp)
 {
     double ul[2], right[2], down[2];
-    double left = (x & ~1) + 0.5, top = (y | 1) + 0.5;
+    double left = (x & ~1) + 0.5, top = low ? (y & ~1) + 0.5 : (y | 1) + 0.5;
     int k;
     if (!uv_at(s, ref, rs, w, h, hit, left, top, tech, ul) ||
         !uv_at(s, ref, rs, w, h, hit, left + 1.0, top, tech, right) ||
-        !uv_at(s, ref, rs, w, h, hit, left, top - 1.0, tech, down))
+        !uv_at(s, ref, rs, w, h, hit, left, low ? top + 1.0 : top - 1.0, tech, down))
         return 0;
     for (k = 0; k < 2; k++) {
         fp->dx[k] = right[k] - ul[k];
@@ -356,39 +359,38 @@ static int footprint(const scene *s, const reference *ref, const ref_surface *rs
     return 1;
 }
 
-static void test_reference(run *r, stin_tier tier, const scene *s, const char *scene_name,
-                           stin_technique tech, int ref_tech, const char *test, uint64_t debug)
+/* A frame's beauty against the CPU reference on the normal-mapped pixels
+ * (one PASS/FAIL line; the frame drawn here or elsewhere: a browser's; low:
+ * footprint's). */
+static void reference_rows(run *r, stin_tier tier, const scene *s, stin_technique tech,
+                           int ref_tech, int low, const char *name, const capture *a)
 {
-    char name[256], err[512];
-    capture a;
+    char err[512];
     reference *ref = NULL;
     ref_surface *rs = NULL;
     ref_hit *hits = NULL;
     long n = 0, over = 0;
     double sum = 0, max = 0;
     int x, y, k;
-    snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_name, test);
-    if (!render(r, s, tier, tech, &a, name, debug))
-        return;
     ref = reference_create(s, err, sizeof err);
     rs = ref_surface_create(s);
-    hits = malloc(sizeof *hits * (size_t)a.img.width * a.img.height);
-    if (!ref || !rs || !hits || !reference_primary(ref, a.img.width, a.img.height, hits)) {
+    hits = malloc(sizeof *hits * (size_t)a->img.width * a->img.height);
+    if (!ref || !rs || !hits || !reference_primary(ref, a->img.width, a->img.height, hits)) {
         report(r, "FAIL", name, "reference: %s", ref ? "out of memory" : err);
         goto done;
     }
-    for (y = 0; y < a.img.height; y++)
-        for (x = 0; x < a.img.width; x++) {
-            const ref_hit *h = &hits[(size_t)(a.img.height - 1 - y) * a.img.width + x];
-            const float *p = px(&a.img, x, y);
+    for (y = 0; y < a->img.height; y++)
+        for (x = 0; x < a->img.width; x++) {
+            const ref_hit *h = &hits[(size_t)(a->img.height - 1 - y) * a->img.width + x];
+            const float *p = px(&a->img, x, y);
             ref_footprint fp;
             float want[4];
             double d = 0;
             if (!h->hit || !(p[AOV_Z] > 0) ||
                 s->materials[s->objects[h->object].material].normal < 0)
                 continue;
-            if (!footprint(s, ref, rs, a.img.width, a.img.height, x, a.img.height - 1 - y, h,
-                           tier == STIN_TIER_GL2 ? ref_tech : -1, &fp)) {
+            if (!footprint(s, ref, rs, a->img.width, a->img.height, x, a->img.height - 1 - y, h,
+                           tier == STIN_TIER_GL2 ? ref_tech : -1, low, &fp)) {
                 n++; /* no footprint (a ray along the plane): counted as differing */
                 over++;
                 continue;
@@ -417,7 +419,34 @@ done:
     ref_surface_destroy(rs);
     if (ref)
         reference_destroy(ref);
+}
+
+static void test_reference(run *r, stin_tier tier, const scene *s, const char *scene_name,
+                           stin_technique tech, int ref_tech, const char *test, uint64_t debug)
+{
+    char name[256];
+    capture a;
+    snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_name, test);
+    if (!render(r, s, tier, tech, &a, name, debug))
+        return;
+    reference_rows(r, tier, s, tech, ref_tech, 0, name, &a);
     capture_free(&a);
+}
+
+void surface_frame_rows(run *r, stin_tier tier, const char *path, stin_technique tech,
+                        int low, const capture *cap)
+{
+    scene s;
+    char err[512], name[256];
+    int pom = tech == STIN_TECH_SURFACE_POM;
+    snprintf(name, sizeof name, "%s/%s/%s", stin_tier_name(tier), scene_base_name(path),
+             pom ? "pom-reference" : "normal-reference");
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", name, "%s", err);
+        return;
+    }
+    reference_rows(r, tier, &s, tech, pom ? REF_SURFACE_POM : REF_SURFACE_NORMAL, low, name, cap);
+    scene_free(&s);
 }
 
 /* ---- parallax-limit ------------------------------------------------------- */

@@ -518,6 +518,14 @@ static void test_es_core_capabilities_by_version(void **state)
     /* any-samples queries but never sample counts on ES */
     assert_true(HAS(c, ANY_SAMPLES_QUERY));
     assert_false(HAS(c, OCCLUSION_QUERY));
+    /* WebGL 2 answers a query only after the frame: no any-samples query,
+     * neither present nor hidden (docs/web.md) */
+    c = parse("OpenGL ES 3.0 (WebGL 2.0 (OpenGL ES 3.0 Chromium))",
+              "OpenGL ES GLSL ES 3.00 (WebGL GLSL ES 3.00 (OpenGL ES GLSL ES 3.0 Chromium))",
+              NULL);
+    assert_int_equal(c.webgl, 1);
+    assert_int_equal(c.present, ES30_CORE & ~BIT(ANY_SAMPLES_QUERY));
+    assert_false(c.hidden & BIT(ANY_SAMPLES_QUERY));
 }
 
 /* ES 2.0's extensions map to the same bits; desktop names mean nothing on

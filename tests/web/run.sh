@@ -7,22 +7,26 @@
 # --browser compares them with the Embree reference under the native es30
 # rows' bounds. PASS/FAIL/SKIP lines, then "N passed, N failed, N skipped".
 # Usage: tests/web/run.sh [BUILD_DIR]
-# Environment: STIN_WEB_SCENES (default four-lights), STIN_WEB_CASES
-# (default lighting,volume,map-pcf-1024-k3; "auto" draws with stin's own
-# choice and is not compared: a sweep of scenes), STIN_WEB_TIMEOUT (seconds,
+# Environment: STIN_WEB_SCENES (default all: every scene pack of
+# BUILD/web/scenes), STIN_WEB_CASES (default every case; a compared case
+# runs on its own scene alone, tests/web/test.js; "sweep" draws every scene
+# with stin's own choice at STIN_WEB_SWEEP_SIZE, default 128x96, not
+# compared: drawn, or the fall-backs named), STIN_WEB_TIMEOUT (seconds,
 # default 240: make check runs it beside other suites), STIN_WEB_OUT (where
 # the read-backs go; default BUILD/test-out/web).
 set -u
 B=${1:-build}
-SCENES=${STIN_WEB_SCENES:-four-lights}
-CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3}
+SCENES=${STIN_WEB_SCENES:-all}
+CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3,coloured,depth-peel,normal,pom,displace,scs-carved,scs-both,scs-common,goldfeather-carved,goldfeather-both,goldfeather-common,skip-deep,skip-dual-peel,skip-vdsm,skip-displace-tess,skip-interval,webgl1,sweep}
+SWEEP=${STIN_WEB_SWEEP_SIZE:-128x96}
 LIMIT=${STIN_WEB_TIMEOUT:-240}
 OUT=${STIN_WEB_OUT:-$B/test-out/web}
 SIZE=256x192
 fail() { echo "FAIL browser: $*"; echo "0 passed, 1 failed, 0 skipped"; exit 1; }
-for f in "$B/web/stin.js" "$B/web/test.html" "$B/stin-imagetest"; do
+for f in "$B/web/stin.js" "$B/web/test.html" "$B/web/scenes/list.txt" "$B/stin-imagetest"; do
     [ -f "$f" ] || fail "$f is missing (make web tests)"
 done
+[ "$SCENES" != all ] || SCENES=$(paste -sd, "$B/web/scenes/list.txt")
 BROWSER=$(command -v chromium || command -v chromium-browser) || fail "no chromium (platform/install-deps.sh installs it)"
 command -v node >/dev/null || fail "no node"
 rm -rf "$OUT"
@@ -48,7 +52,7 @@ env -u GLIBC_TUNABLES setsid timeout "$LIMIT" "$BROWSER" --headless --no-sandbox
     --enable-unsafe-swiftshader --no-first-run --disable-background-networking \
     --disable-component-update --disable-sync --disable-quic --disable-extensions \
     --disable-crash-reporter --enable-logging=stderr --v=0 \
-    --user-data-dir="$OUT/profile" "${url}test.html?size=$SIZE&scenes=$SCENES&cases=$CASES" \
+    --user-data-dir="$OUT/profile" "${url}test.html?size=$SIZE&sweep=$SWEEP&scenes=$SCENES&cases=$CASES" \
     > "$OUT/browser.log" 2>&1 &
 browser=$!
 wait "$server"

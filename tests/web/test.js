@@ -6,24 +6,77 @@
 // with SCENE-CASE.txt: the frames' status, stin's choice, log and projection.
 'use strict';
 
-// auto: stin's own choice at its best tier (not compared: a scene sweep,
-// STIN_WEB_CASES=auto; the other cases force tier gl2 and the technique).
+// sweep: every scene with stin's own choice at its best tier, on a small
+// front end of its own (?sweep=WxH, default 128x96), frames not read back:
+// drawn, or the fall-back stin names. The other cases force tier gl2 and
+// their technique: force: techniques by name; options: web_option's;
+// scenes: the scenes a case is for. browser_test.c's table agrees.
 const CASES = {
-  auto: { tier: 'auto', shadows: '', size: 0, kernel: 0 },
-  lighting: { shadows: 'shadows-off', size: 0, kernel: 0 },
-  volume: { shadows: 'volume', size: 0, kernel: 0 },
-  'map-pcf-1024-k3': { shadows: 'map-pcf', size: 1024, kernel: 3 },
+  sweep: { tier: 'auto', shadows: '', sweep: true },
+  lighting: { shadows: 'shadows-off', size: 0, kernel: 0, scenes: ['four-lights'] },
+  volume: { shadows: 'volume', size: 0, kernel: 0, scenes: ['four-lights'] },
+  'map-pcf-1024-k3': { shadows: 'map-pcf', size: 1024, kernel: 3, scenes: ['four-lights'] },
+  // coloured_test.c's options: deep's 512 a side on glass-panes, shadows stin's
+  coloured: { shadows: '', force: ['coloured'], options: { deep_map_size: 512 }, scenes: ['glass-panes'] },
+  'depth-peel': { shadows: 'shadows-off', force: ['depth-peel'], scenes: ['glass-panes'] },
+  normal: { shadows: 'shadows-off', force: ['normal'], scenes: ['stone-wall'] },
+  pom: { shadows: 'shadows-off', force: ['pom'], scenes: ['stone-wall'] },
+  displace: { shadows: 'shadows-off', force: ['displace'], scenes: ['displace-plate'] },
+  // techniques WebGL 2 cannot run (tier gl4's): forced at stin's best tier, frames not read
+  // back; stin must fall back and say why (a SKIP row with its reason)
+  'skip-deep': { tier: 'auto', shadows: '', force: ['deep'], skip: true, scenes: ['glass-panes'] },
+  'skip-dual-peel': { tier: 'auto', shadows: 'shadows-off', force: ['dual-peel'], skip: true, scenes: ['glass-panes'] },
+  'skip-vdsm': { tier: 'auto', shadows: 'vdsm', skip: true, scenes: ['four-lights'] },
+  'skip-displace-tess': { tier: 'auto', shadows: 'shadows-off', force: ['displace-tess'], skip: true, scenes: ['displace-tess'] },
+  'skip-interval': { tier: 'auto', shadows: 'shadows-off', force: ['interval'], options: { csg_product: 0 }, skip: true, scenes: ['csg'] },
+  // a browser without WebGL 2 (refused 'webgl2' contexts): the front end must refuse
+  webgl1: { refusal: true, scenes: ['four-lights'] },
+  // csg.json's csg list: carved, both, common; one product at a time, as csg_test.c draws them
+  'scs-carved': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 0 }, scenes: ['csg'] },
+  'scs-both': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 1 }, scenes: ['csg'] },
+  'scs-common': { shadows: 'shadows-off', force: ['scs'], options: { csg_product: 2 }, scenes: ['csg'] },
+  'goldfeather-carved': { shadows: 'shadows-off', force: ['goldfeather'], options: { csg_product: 0 }, scenes: ['csg'] },
+  'goldfeather-both': { shadows: 'shadows-off', force: ['goldfeather'], options: { csg_product: 1 }, scenes: ['csg'] },
+  'goldfeather-common': { shadows: 'shadows-off', force: ['goldfeather'], options: { csg_product: 2 }, scenes: ['csg'] },
 };
 
 async function post(where, data) {
   await fetch(where, { method: 'POST', body: data });
 }
 
-async function runCase(f, scene, name) {
-  const c = CASES[name];
+// The refusal case: a canvas of its own whose 'webgl2' contexts are refused
+// (WebGL 1 stays), as in a browser without WebGL 2; the front end's answer
+// (init 0 and its message, shown on the page) posted as SCENE-webgl1.txt.
+async function refusal(scene) {
+  const canvas = document.createElement('canvas');
+  const get = HTMLCanvasElement.prototype.getContext;
+  const meta = [];
+  canvas.id = 'webgl1';
+  document.body.appendChild(canvas);
+  HTMLCanvasElement.prototype.getContext = function (kind, ...rest) {
+    return /webgl2/.test(kind) ? null : get.call(this, kind, ...rest);
+  };
+  try {
+    await stinFront('#webgl1', 64, 48);
+    meta.push('init 1');
+  } catch (e) {
+    meta.push('init 0', 'message ' + e.message);
+    document.getElementById('message').textContent = e.message;
+  } finally {
+    HTMLCanvasElement.prototype.getContext = get;
+  }
+  await post(`/result/${scene}-webgl1.txt`, meta.join('\n') + '\n');
+}
+
+// One case's context and frames (beauty with its depth, normal, visibility),
+// read back and posted where readBack, and SCENE-NAME.txt.
+async function draw(f, scene, name, c, readBack) {
   const meta = [];
   await post('/log', `browser: ${scene} ${name}`);
-  if (!f.create(c.tier || 'gl2', c.shadows, c.size, c.kernel)) {
+  f.force('');
+  for (const t of c.force || []) f.force(t);
+  for (const [k, v] of Object.entries(c.options || {})) f.option(k, v);
+  if (!f.create(c.tier || 'gl2', c.shadows, c.size || 0, c.kernel || 0)) {
     meta.push('created 0');
   } else {
     meta.push('created 1');
@@ -33,6 +86,7 @@ async function runCase(f, scene, name) {
       const ok = f.frame(output, 1);
       meta.push(`status ${label} ${f.frameStatus()}`);
       meta.push(`frame ${label} ${ok}`);
+      if (!readBack) continue;
       await post(`/result/${scene}-${name}-${label}.rgba`, f.read(0));
       if (output === 0) {
         meta.push('projection ' + f.projection().join(' '));
@@ -46,17 +100,38 @@ async function runCase(f, scene, name) {
   await post(`/result/${scene}-${name}.txt`, meta.join('\n') + '\n');
 }
 
+// The sweep's front end, made at its first scene.
+let sweepFront = null;
+
+async function sweep(scene, size) {
+  if (!sweepFront) {
+    const canvas = document.createElement('canvas');
+    canvas.id = 'sweep';
+    document.body.appendChild(canvas);
+    sweepFront = await stinFront('#sweep', size[0], size[1]);
+  }
+  await sweepFront.loadScene(`scenes/${scene}.stinscene`);
+  await draw(sweepFront, scene, 'sweep', CASES.sweep, false);
+}
+
 (async () => {
   const q = new URLSearchParams(location.search);
   const [w, h] = (q.get('size') || '256x192').split('x').map(Number);
+  const small = (q.get('sweep') || '128x96').split('x').map(Number);
+  const names = (q.get('cases') || 'lighting').split(',').filter((n) => CASES[n]);
   try {
     const f = await stinFront('#view', w, h);
     const gl = document.createElement('canvas').getContext('webgl2');
     await post('/log', 'browser: ' + (gl ? gl.getParameter(gl.VERSION) : 'no WebGL 2'));
     for (const scene of (q.get('scenes') || 'four-lights').split(',')) {
-      await f.loadScene(`scenes/${scene}.stinscene`);
-      for (const name of (q.get('cases') || 'lighting,volume,map-pcf-1024-k3').split(','))
-        await runCase(f, scene, name);
+      const mine = names.filter((n) => !CASES[n].scenes || CASES[n].scenes.includes(scene));
+      if (mine.some((n) => !CASES[n].sweep && !CASES[n].refusal))
+        await f.loadScene(`scenes/${scene}.stinscene`);
+      for (const name of mine) {
+        if (CASES[name].refusal) await refusal(scene);
+        else if (CASES[name].sweep) await sweep(scene, small);
+        else await draw(f, scene, name, CASES[name], !CASES[name].skip);
+      }
     }
   } catch (e) {
     await post('/log', 'browser: ' + e);
