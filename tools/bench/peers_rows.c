@@ -36,9 +36,7 @@ static void stin_row(peer_row *r, const bench_env *env, scene *s, int map_size)
     memset(&log, 0, sizeof log);
     log.program = "stin-bench: peers";
     log.verbose = env->b.verbose;
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = env->b.plat;
+    bench_desc_init(&env->b, &d);
     d.log = cli_log_fn;
     d.log_user = &log;
     d.tier = env->o->tier;

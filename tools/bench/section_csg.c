@@ -223,9 +223,7 @@ static int make_context(csg_bench *c, char *err, size_t err_size)
     stin_mesh_desc md;
     size_t size;
     int i;
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = c->env->b.plat;
+    bench_desc_init(&c->env->b, &d);
     d.log = log_errors;
     d.techniques[STIN_FEATURE_CSG] = method_technique[c->method];
     /* the same work as OpenCSG's frame, which shadows nothing (under the
