@@ -379,7 +379,11 @@ int section_csg(bench_env *env, const scene *s, int *ran)
     }
     scene_camera_matrices(&cam, b->width, b->height, c.view, c.proj);
 #ifdef STIN_BENCH_OPENCSG
-    c.opencsg = ocsg_init(why, sizeof why);
+    /* OpenCSG and GLEW load desktop GL: not on an ES context */
+    if (env->caps->es)
+        snprintf(why, sizeof why, "OpenCSG needs desktop GL; this context is OpenGL ES");
+    else
+        c.opencsg = ocsg_init(why, sizeof why);
 #else
     snprintf(why, sizeof why, "stin-bench was built without OpenCSG (libopencsg-dev, "
                               "libglew-dev)");
