@@ -127,7 +127,8 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         esac
     done
     echo "cli sh tests/cli/test_render.sh $B/stin-render"
-    case " $PLATFORMS " in *" egl "*) echo "cli-es sh tests/cli/test_es_render.sh $B/stin-render" ;; esac
+    case " $PLATFORMS " in *" egl "*) echo "cli-es sh tests/cli/test_es_render.sh $B/stin-render"
+                                      echo "bench-es sh tests/cli/test_bench_es.sh $B/stin-bench" ;; esac
     echo "layers sh tests/cli/test_layers.sh $B"
     if [ "${STIN_TEST_QUICK:-0}" != 1 ]; then
         echo "install sh tests/cli/test_install.sh"
@@ -148,7 +149,7 @@ first=${PLATFORMS%% *}
 awk -v first="image:$first:" '{ w = 1 }
      $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
      w >= 5 && index($2, first) == 1 { w += 10 }
-     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
+     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "bench-es" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
      { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
 

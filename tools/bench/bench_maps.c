@@ -56,13 +56,11 @@ static int side_create(setup *u, side *sd, stin_technique shadows, uint32_t map_
     size_t bytes;
     stin_result r;
     stin_choice ch;
-    memset(&desc, 0, sizeof desc);
-    desc.get_proc_address = stin_platform_get_proc_address;
-    desc.get_proc_user = b->plat;
+    bench_desc_init(b, &desc);
     desc.log = cli_log_fn;
     desc.log_user = &u->log;
     desc.tier = STIN_TIER_GL1;
-    desc.caps_mask = u->st->caps_mask;
+    desc.caps_mask |= u->st->caps_mask;
     desc.techniques[STIN_FEATURE_SHADOWS] = shadows;
     desc.shadows.map_size = map_size;
     scene_gpu_size_desc(u->s, &desc);

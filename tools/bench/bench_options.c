@@ -6,6 +6,7 @@
 #include "bench_options.h"
 #include "bench_maps.h"
 #include "bench_shadow.h"
+#include "stin_platform.h"
 
 #include <stddef.h>
 #include <stdlib.h>
@@ -139,6 +140,14 @@ static int set_tier(options *o, const bench_option *opt, const char *arg)
     return bad(opt, arg, "gl1, gl2 or gl4");
 }
 
+static int set_profile(options *o, const bench_option *opt, const char *arg)
+{
+    if (!stin_profile_find(arg))
+        return bad(opt, arg, "a profile of docs/profiles.md (es30, es32, gl21, ...)");
+    o->profile = arg;
+    return 1;
+}
+
 static int set_size(options *o, const bench_option *opt, const char *arg)
 {
     char extra, want[32];
@@ -189,6 +198,8 @@ static const bench_option table[] = {
      "smoke run: every section, tiny size, few frames; given options win"},
     {GENERAL, "--platform", "egl|osmesa", "egl", NULL, set_text, F(platform), 0, 0, 0,
      "context backend"},
+    {GENERAL, "--profile", "NAME", NULL, NULL, set_profile, F(profile), 0, 0, 0,
+     "capability profile (docs/profiles.md; es30, es32: OpenGL ES on egl)"},
     {GENERAL, "--shaders", "DIR", "shaders", NULL, set_text, F(shader_dir), 0, 0, 0,
      "where gl2/ and gl4/ lie for the raw loop"},
     {GENERAL, "--verbose", NULL, NULL, NULL, set_flag, F(verbose), 0, 0, 0,

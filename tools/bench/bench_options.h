@@ -27,6 +27,7 @@ typedef struct section_options {
 
 typedef struct options {
     const char *platform, *shader_dir;
+    const char *profile;    /* NULL: the best compatibility context (every desktop tier) */
     char scene_list[2048];
     const char *scenes[MAX_SCENES];
     int scene_count;

@@ -147,6 +147,7 @@ static int run_pair(pair *p, stin_tier tier, const scene *s, setup_result *out, 
         return 0;
     memset(&cfg, 0, sizeof cfg);
     cfg.tier = tier;
+    cfg.es_glsl = caps->es ? 100 * caps->glsl_major + 10 * caps->glsl_minor : 0;
     cfg.use_vbo = (caps->present & STIN_CAP_BIT(STIN_CAP_VBO)) != 0;
     cfg.separate_specular = (caps->present & STIN_CAP_BIT(STIN_CAP_SEPARATE_SPECULAR)) != 0;
     cfg.shader_dir = b->shader_dir;
@@ -189,9 +190,7 @@ static int one_setup(const bench_settings *b, stin_tier tier, const scene *s, se
     memset(&log, 0, sizeof log);
     log.program = "stin-bench";
     log.verbose = b->verbose;
-    memset(&desc, 0, sizeof desc);
-    desc.get_proc_address = stin_platform_get_proc_address;
-    desc.get_proc_user = b->plat;
+    bench_desc_init(b, &desc);
     desc.log = cli_log_fn;
     desc.log_user = &log;
     desc.tier = tier;
@@ -219,6 +218,15 @@ static int one_setup(const bench_settings *b, stin_tier tier, const scene *s, se
     stin_destroy(p.ctx);
     free(block);
     return ok;
+}
+
+void bench_desc_init(const bench_settings *b, stin_desc *desc)
+{
+    memset(desc, 0, sizeof *desc);
+    desc->get_proc_address = stin_platform_get_proc_address;
+    desc->get_proc_user = b->plat;
+    desc->caps_mask = b->caps_mask;
+    desc->max_gl_version = b->max_gl_version;
 }
 
 int bench_run(const bench_settings *b, stin_tier tier, const scene *s, bench_result *out,

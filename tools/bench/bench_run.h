@@ -21,6 +21,8 @@ typedef struct bench_settings {
     int setups;              /* fresh stin context + raw loop each, >= 1 */
     int verbose;             /* per-run details on stderr */
     const char *shader_dir;  /* for the raw loop's GLSL */
+    uint64_t caps_mask;      /* the --profile's: every stin_desc of the run gets them */
+    int max_gl_version;
 } bench_settings;
 
 typedef struct bench_result {
@@ -29,6 +31,11 @@ typedef struct bench_result {
     double mismatch;         /* worst set-up: fraction of pixels where the images differ */
     int max_diff;            /* worst set-up: largest channel difference, 0..255 */
 } bench_result;
+
+/* A zeroed desc that resolves GL through the run's platform, with the
+ * profile's caps mask and GL version cap (stin_platform.h: the in-process
+ * half of a profile). Every context the bench makes starts from it. */
+void bench_desc_init(const bench_settings *b, stin_desc *desc);
 
 /* Runs the measurement. Returns 1, or 0 with a message in err. */
 int bench_run(const bench_settings *b, stin_tier tier, const scene *s, bench_result *out,

@@ -161,9 +161,8 @@ static int side_create(setup *u, side *sd, stin_tier tier, stin_technique shadow
     stin_desc desc;
     size_t bytes;
     stin_result r;
-    memset(&desc, 0, sizeof desc);
+    bench_desc_init(b, &desc);
     desc.get_proc_address = bench_shadow_get_proc;
-    desc.get_proc_user = b->plat;
     desc.log = cli_log_fn;
     desc.log_user = &u->log;
     desc.tier = tier;

@@ -73,9 +73,7 @@ static int side_create(setup *u, side *sd, const tech_config *c, const scene *s,
     char name[160];
     int k;
     config_name(c, name, sizeof name);
-    memset(&desc, 0, sizeof desc);
-    desc.get_proc_address = stin_platform_get_proc_address;
-    desc.get_proc_user = b->plat;
+    bench_desc_init(b, &desc);
     desc.log = cli_log_fn;
     desc.log_user = &u->log;
     desc.tier = tier;

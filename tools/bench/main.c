@@ -49,7 +49,8 @@ static void free_scenes(scenes *sc)
             scene_free(&sc->own[i]);
 }
 
-/* The default (NULL profile) compatibility context runs all three tiers. */
+/* The default (NULL profile) compatibility context runs all three tiers; a
+ * profile's mask and version cap go into every stin_desc (bench_desc_init). */
 static stin_platform *open_context(const options *o, raw_gl *gl, stin_caps *caps)
 {
     stin_platform_desc pd;
@@ -57,6 +58,7 @@ static stin_platform *open_context(const options *o, raw_gl *gl, stin_caps *caps
     char err[1024];
     memset(&pd, 0, sizeof pd);
     stin_platform_kind_from_name(o->platform, &pd.kind);
+    pd.profile = o->profile ? stin_profile_find(o->profile) : NULL;
     pd.width = o->width;
     pd.height = o->height;
     if (!(plat = stin_platform_create(&pd, err, sizeof err))) {
@@ -66,7 +68,9 @@ static stin_platform *open_context(const options *o, raw_gl *gl, stin_caps *caps
     raw_gl_load(gl, stin_platform_get_proc_address, plat);
     if (raw_gl_missing(gl, RAW_NEED_CORE)) {
         fprintf(stderr, "stin-bench: %s did not load\n", raw_gl_missing(gl, RAW_NEED_CORE));
-    } else if (stin_detect_caps(stin_platform_get_proc_address, plat, 0, 0, caps) != STIN_OK) {
+    } else if (stin_detect_caps(stin_platform_get_proc_address, plat,
+                                pd.profile ? pd.profile->caps_mask : 0,
+                                pd.profile ? pd.profile->max_gl_version : 0, caps) != STIN_OK) {
         fprintf(stderr, "stin-bench: cannot read GL capabilities\n");
     } else {
         return plat;
@@ -94,6 +98,7 @@ int main(int argc, char **argv)
     static options o;
     static scenes sc; /* large: off the stack */
     stin_platform_kind kind;
+    const stin_profile *prof;
     stin_platform *plat;
     raw_gl gl;
     stin_caps caps;
@@ -122,6 +127,10 @@ int main(int argc, char **argv)
     env.b.setups = o.sec[SEC_RAW].setups;
     env.b.verbose = o.verbose;
     env.b.shader_dir = o.shader_dir;
+    if ((prof = o.profile ? stin_profile_find(o.profile) : NULL)) {
+        env.b.caps_mask = prof->caps_mask;
+        env.b.max_gl_version = prof->max_gl_version;
+    }
     env.caps = &caps;
     env.o = &o;
     env.scenes = sc.list;

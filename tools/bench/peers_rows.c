@@ -20,6 +20,9 @@ const char *peer_osg_absent(const bench_env *env)
      * OSMesa context is not current there */
     if (strcmp(env->o->platform, "egl"))
         return "osgShadow draws through libGL, which does not reach an OSMesa context";
+    /* OSG 3.6 is built for desktop GL: its viewer crashes on an ES context */
+    if (env->caps->es)
+        return "osgShadow needs desktop GL; this context is OpenGL ES";
     return NULL;
 #else
     (void)env;
@@ -36,9 +39,7 @@ static void stin_row(peer_row *r, const bench_env *env, scene *s, int map_size)
     memset(&log, 0, sizeof log);
     log.program = "stin-bench: peers";
     log.verbose = env->b.verbose;
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = env->b.plat;
+    bench_desc_init(&env->b, &d);
     d.log = cli_log_fn;
     d.log_user = &log;
     d.tier = env->o->tier;

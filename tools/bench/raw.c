@@ -1,7 +1,8 @@
 /* SPDX-License-Identifier: MIT */
 /* The raw loop's set-up: checks the scene is one it covers, builds stin's
  * vertex layout per mesh in buffer objects (or client arrays, as stin does
- * without them) and dispatches frames to the tier's loop. */
+ * without them, never on OpenGL ES) and dispatches frames to the tier's
+ * loop. */
 #include "raw.h"
 
 #include <stdio.h>
@@ -84,8 +85,14 @@ int raw_create(raw_renderer *r, const raw_gl *gl, const scene *s, const raw_conf
     r->cfg = *cfg;
     r->gl = gl;
     r->s = s;
-    if (cfg->use_vbo)
+    /* ES 3.0 forbids client arrays with a vertex array object bound and
+     * WebGL has none: buffer objects there, as stin draws from */
+    if (cfg->es_glsl)
+        r->cfg.use_vbo = 1;
+    if (r->cfg.use_vbo)
         need |= RAW_NEED_VBO;
+    if (cfg->tier == STIN_TIER_GL1)
+        need |= RAW_NEED_FIXED;
     if (cfg->tier != STIN_TIER_GL1)
         need |= RAW_NEED_GLSL;
     if (cfg->tier == STIN_TIER_GL4)
@@ -111,7 +118,7 @@ int raw_create(raw_renderer *r, const raw_gl *gl, const scene *s, const raw_conf
             raw_destroy(r);
             return 0;
         }
-        if (cfg->use_vbo || cfg->tier == STIN_TIER_GL4)
+        if (r->cfg.use_vbo || cfg->tier == STIN_TIER_GL4)
             upload(r, rm, &s->meshes[i]);
     }
     /* Clear what stin clears: colour, depth, and stencil when there is one. */

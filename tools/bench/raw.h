@@ -21,6 +21,9 @@ typedef struct raw_config {
     int use_vbo;             /* as stin: buffer objects when the context has them */
     int separate_specular;   /* GL1: as stin, when the context has the capability */
     const char *shader_dir;  /* GL2/GL4: the folder holding gl2/ and gl4/ */
+    /* 0: desktop GL; 300, 310 or 320: an OpenGL ES 3.x context, whose GLSL
+     * ES version the sources run as (raw_es.c); buffer objects only there */
+    int es_glsl;
 } raw_config;
 
 typedef struct raw_mesh {
@@ -60,10 +63,17 @@ int raw_glsl_create(raw_renderer *r, char *err, size_t err_size);
 void raw_glsl_frame(const raw_renderer *r, int width, int height);
 void raw_glsl_destroy(raw_renderer *r);
 /* The tier's lit program as stin builds its unshadowed plain one, from the
- * GLSL files under root (raw_program.c), with frag_defines (NULL: none)
- * after lit.frag's #version line. 0 with a message on failure. */
-GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier,
-                        const char *frag_defines, char *err, size_t err_size);
+ * GLSL files under cfg->shader_dir (raw_program.c), with frag_defines (NULL:
+ * none) after lit.frag's #version line (on ES: after the preamble that
+ * replaces it). 0 with a message on failure. */
+GLuint raw_program_link(const raw_gl *gl, const raw_config *cfg, const char *frag_defines,
+                        char *err, size_t err_size);
+/* The lines that replace a source's #version line on ES 3.x (raw_es.c):
+ * into parts (at most RAW_ES_PARTS), version_line holding the first;
+ * gl2_source: a shaders/gl2 file, whose GLSL 1.10 names get mapped. */
+#define RAW_ES_PARTS 3
+int raw_es_preamble(int es_version, int fragment, int gl2_source, char *version_line,
+                    size_t line_size, const char **parts);
 
 /* Interleaved vertex: position, normal, uv, tangent — stin's layout, so that
  * both fetch the same bytes. */

@@ -73,8 +73,10 @@ typedef ptrdiff_t GLsizeiptr;
 #define GL_STENCIL_BUFFER_BIT 0x00000400
 #define GL_COLOR_BUFFER_BIT 0x00004000
 
-/* Which raw paths need an entry point: a missing one fails only those. */
-enum { RAW_NEED_CORE = 1, RAW_NEED_VBO = 2, RAW_NEED_GLSL = 4, RAW_NEED_VAO = 8 };
+/* Which raw paths need an entry point: a missing one fails only those
+ * (FIXED: the GL1 loop's fixed function, which OpenGL ES lacks). */
+enum { RAW_NEED_CORE = 1, RAW_NEED_VBO = 2, RAW_NEED_GLSL = 4, RAW_NEED_VAO = 8,
+       RAW_NEED_FIXED = 16 };
 
 /* X(return type, name without "gl", parameters, need) */
 #define RAW_GL_FUNCS(X)                                                                    \
@@ -90,20 +92,20 @@ enum { RAW_NEED_CORE = 1, RAW_NEED_VBO = 2, RAW_NEED_GLSL = 4, RAW_NEED_VAO = 8 
     X(void, GetIntegerv, (GLenum, GLint *), RAW_NEED_CORE)                                 \
     X(GLenum, GetError, (void), RAW_NEED_CORE)                                             \
     X(void, DrawElements, (GLenum, GLsizei, GLenum, const void *), RAW_NEED_CORE)          \
-    X(void, MatrixMode, (GLenum), RAW_NEED_CORE)                                           \
-    X(void, LoadMatrixf, (const GLfloat *), RAW_NEED_CORE)                                 \
-    X(void, ShadeModel, (GLenum), RAW_NEED_CORE)                                           \
-    X(void, Lightfv, (GLenum, GLenum, const GLfloat *), RAW_NEED_CORE)                     \
-    X(void, Lightf, (GLenum, GLenum, GLfloat), RAW_NEED_CORE)                              \
-    X(void, LightModelfv, (GLenum, const GLfloat *), RAW_NEED_CORE)                        \
-    X(void, LightModeli, (GLenum, GLint), RAW_NEED_CORE)                                   \
-    X(void, Materialfv, (GLenum, GLenum, const GLfloat *), RAW_NEED_CORE)                  \
-    X(void, Materialf, (GLenum, GLenum, GLfloat), RAW_NEED_CORE)                           \
-    X(void, EnableClientState, (GLenum), RAW_NEED_CORE)                                    \
-    X(void, DisableClientState, (GLenum), RAW_NEED_CORE)                                   \
-    X(void, VertexPointer, (GLint, GLenum, GLsizei, const void *), RAW_NEED_CORE)          \
-    X(void, NormalPointer, (GLenum, GLsizei, const void *), RAW_NEED_CORE)                 \
-    X(void, TexCoordPointer, (GLint, GLenum, GLsizei, const void *), RAW_NEED_CORE)        \
+    X(void, MatrixMode, (GLenum), RAW_NEED_FIXED)                                          \
+    X(void, LoadMatrixf, (const GLfloat *), RAW_NEED_FIXED)                                \
+    X(void, ShadeModel, (GLenum), RAW_NEED_FIXED)                                          \
+    X(void, Lightfv, (GLenum, GLenum, const GLfloat *), RAW_NEED_FIXED)                    \
+    X(void, Lightf, (GLenum, GLenum, GLfloat), RAW_NEED_FIXED)                             \
+    X(void, LightModelfv, (GLenum, const GLfloat *), RAW_NEED_FIXED)                       \
+    X(void, LightModeli, (GLenum, GLint), RAW_NEED_FIXED)                                  \
+    X(void, Materialfv, (GLenum, GLenum, const GLfloat *), RAW_NEED_FIXED)                 \
+    X(void, Materialf, (GLenum, GLenum, GLfloat), RAW_NEED_FIXED)                          \
+    X(void, EnableClientState, (GLenum), RAW_NEED_FIXED)                                   \
+    X(void, DisableClientState, (GLenum), RAW_NEED_FIXED)                                  \
+    X(void, VertexPointer, (GLint, GLenum, GLsizei, const void *), RAW_NEED_FIXED)         \
+    X(void, NormalPointer, (GLenum, GLsizei, const void *), RAW_NEED_FIXED)                \
+    X(void, TexCoordPointer, (GLint, GLenum, GLsizei, const void *), RAW_NEED_FIXED)       \
     X(void, GenBuffers, (GLsizei, GLuint *), RAW_NEED_VBO)                                 \
     X(void, DeleteBuffers, (GLsizei, const GLuint *), RAW_NEED_VBO)                        \
     X(void, BindBuffer, (GLenum, GLuint), RAW_NEED_VBO)                                    \

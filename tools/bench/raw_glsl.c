@@ -43,7 +43,7 @@ int raw_glsl_create(raw_renderer *r, char *err, size_t err_size)
     raw_program *p = &r->prog;
     char defines[256];
     specialise(r->s, defines, sizeof defines);
-    if (!(p->name = raw_program_link(gl, r->cfg.shader_dir, r->cfg.tier, defines, err, err_size)))
+    if (!(p->name = raw_program_link(gl, &r->cfg, defines, err, err_size)))
         return 0;
 #define LOC(field) p->field = gl->GetUniformLocation(p->name, #field)
     LOC(u_model);

@@ -88,15 +88,17 @@ static int built(const raw_gl *gl, GLuint obj, int program, const char *what, ch
 
 /* The file up to its marker, each chunk, the rest: as stin composes its lit
  * shaders. chunks is NULL-terminated, or NULL for a plain file; defines (or
- * NULL) go in after the file's #version line. */
-static GLuint compile(const raw_gl *gl, GLenum type, const char *root, const char *dir,
+ * NULL) go in after the file's #version line, which on ES gives way to the
+ * GLSL ES preamble. */
+static GLuint compile(const raw_gl *gl, GLenum type, const raw_config *cfg, const char *dir,
                       const char *name, const char *const *chunks, const char *defines,
                       char *err, size_t err_size)
 {
+    const char *root = cfg->shader_dir;
     char *src = read_shader(root, dir, name, 0, err, err_size), *texts[MAX_CHUNKS] = {NULL};
-    char what[PATH_SIZE];
-    const GLchar *parts[MAX_CHUNKS + 4];
-    GLint lengths[MAX_CHUNKS + 4];
+    char what[PATH_SIZE], version[32];
+    const GLchar *parts[MAX_CHUNKS + RAW_ES_PARTS + 4];
+    GLint lengths[MAX_CHUNKS + RAW_ES_PARTS + 4];
     const char *marker = NULL, *rest;
     GLsizei count = 0;
     GLuint sh = 0;
@@ -108,11 +110,20 @@ static GLuint compile(const raw_gl *gl, GLenum type, const char *root, const cha
         goto done;
     }
     rest = src;
-    if (defines) {
+    if (defines || cfg->es_glsl) {
         const char *eol = strchr(src, '\n');
         rest = eol ? eol + 1 : src + strlen(src);
-        parts[count] = src;
-        lengths[count++] = (GLint)(rest - src);
+        if (cfg->es_glsl) { /* the ES preamble stands in for the #version line */
+            count = raw_es_preamble(cfg->es_glsl, type == GL_FRAGMENT_SHADER,
+                                    !strcmp(dir, "gl2"), version, sizeof version, parts);
+            for (i = 0; i < count; i++)
+                lengths[i] = -1;
+        } else {
+            parts[count] = src;
+            lengths[count++] = (GLint)(rest - src);
+        }
+    }
+    if (defines) {
         parts[count] = defines;
         lengths[count++] = -1;
     }
@@ -141,17 +152,17 @@ done:
     return sh;
 }
 
-GLuint raw_program_link(const raw_gl *gl, const char *root, stin_tier tier,
-                        const char *frag_defines, char *err, size_t err_size)
+GLuint raw_program_link(const raw_gl *gl, const raw_config *cfg, const char *frag_defines,
+                        char *err, size_t err_size)
 {
-    const char *dir = tier == STIN_TIER_GL4 ? "gl4" : "gl2";
+    const char *dir = cfg->tier == STIN_TIER_GL4 ? "gl4" : "gl2";
     char what[64];
     GLuint vs, fs, p;
-    if (!(vs = compile(gl, GL_VERTEX_SHADER, root, dir, "lit.vert",
-                       tier == STIN_TIER_GL4 ? vertex_chunks_gl4 : vertex_chunks_gl2, NULL,
+    if (!(vs = compile(gl, GL_VERTEX_SHADER, cfg, dir, "lit.vert",
+                       cfg->tier == STIN_TIER_GL4 ? vertex_chunks_gl4 : vertex_chunks_gl2, NULL,
                        err, err_size)))
         return 0;
-    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, root, dir, "lit.frag", plain_chunks, frag_defines,
+    if (!(fs = compile(gl, GL_FRAGMENT_SHADER, cfg, dir, "lit.frag", plain_chunks, frag_defines,
                        err, err_size))) {
         gl->DeleteShader(vs);
         return 0;

@@ -223,9 +223,7 @@ static int make_context(csg_bench *c, char *err, size_t err_size)
     stin_mesh_desc md;
     size_t size;
     int i;
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = c->env->b.plat;
+    bench_desc_init(&c->env->b, &d);
     d.log = log_errors;
     d.techniques[STIN_FEATURE_CSG] = method_technique[c->method];
     /* the same work as OpenCSG's frame, which shadows nothing (under the
@@ -381,7 +379,11 @@ int section_csg(bench_env *env, const scene *s, int *ran)
     }
     scene_camera_matrices(&cam, b->width, b->height, c.view, c.proj);
 #ifdef STIN_BENCH_OPENCSG
-    c.opencsg = ocsg_init(why, sizeof why);
+    /* OpenCSG and GLEW load desktop GL: not on an ES context */
+    if (env->caps->es)
+        snprintf(why, sizeof why, "OpenCSG needs desktop GL; this context is OpenGL ES");
+    else
+        c.opencsg = ocsg_init(why, sizeof why);
 #else
     snprintf(why, sizeof why, "stin-bench was built without OpenCSG (libopencsg-dev, "
                               "libglew-dev)");

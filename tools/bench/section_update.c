@@ -72,9 +72,7 @@ static int open_case(update_bench *u, const bench_env *env, stin_tier tier, cons
     }
     for (k = 0; k < 3 * (int)u->pose[1].vertex_count; k++)
         u->pose[1].positions[k] *= 1.1f;
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = env->b.plat;
+    bench_desc_init(&env->b, &d);
     d.tier = tier;
     d.max_meshes = 4;
     d.max_vertices = u->pose[0].vertex_count;
