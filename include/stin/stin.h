@@ -2145,14 +2145,15 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * size of the viewport, made at the first frame and kept, and a GLSL 1.50
  * program writing gl_FragDepth (GLSL ES 3.00 on OpenGL ES 3.x, whatever
  * the lighting; ES reads depth and stencil back as GL_DEPTH_STENCIL 24_8
- * words with GL_NV_read_depth_stencil; an ES context without it (WebGL 2)
+ * words with GL_NV_read_depth_stencil; an ES context without it (WebGL 2),
+ * and OpenGL ES 2.0 (no program writes read-back depth again there),
  * resolves the camera's products on the GPU alone: they cast no shadow,
  * scs and goldfeather run to their limits without counting layers, and
- * STIN_DEBUG_CSG_READBACK makes it "csg-off"); a core context
- * without GL4 lighting, an ES 2.0
- * context, or a frame into a framebuffer without stencil, draws no
- * products: "csg-off" or a FALLBACK warning, logged once; products are
- * still accepted). The frame
+ * STIN_DEBUG_CSG_READBACK makes it "csg-off"; the GPU resolve needs depth
+ * textures, packed depth-stencil and fragment depth writes, so bare ES 2.0
+ * has "csg-off"); a desktop core context without GL4 lighting, or a frame
+ * into a framebuffer without stencil, draws no products: "csg-off" or a
+ * FALLBACK warning, logged once; products are still accepted). The frame
  * plan resolves every product of the frame after the target's clear and
  * before the ambient pass, in the frame's own depth and stencil buffers:
  * per term, per literal, per layer of that primitive's front faces (back

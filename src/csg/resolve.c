@@ -160,6 +160,8 @@ void stin__csg_init(stin_context *ctx)
 {
     stin__csg_state *c = ctx->csg;
     char msg[160], why[200];
+    const char *gpu_alone = "OpenGL ES reads depth and stencil back only with "
+                            "GL_NV_read_depth_stencil";
     /* GLSL ES 3.00 has gl_FragDepth and texelFetch: the depth program
      * builds on every ES 3.x context, whichever lighting it chose */
     int gl4 = ctx->sel.choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_GLSL150 ||
@@ -167,14 +169,20 @@ void stin__csg_init(stin_context *ctx)
     c->cap_slot = STIN__NO_SLOT;
     if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF)
         return;
-    if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION))) {
-        if (!gl4) {
-            stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                         "goldfeather and scs write depth with glDrawPixels (compatibility "
-                         "profile) or a GLSL 1.50 / GLSL ES 3.00 program (GL4 lighting, "
-                         "OpenGL ES 3.0+)");
-            return;
-        }
+    if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)) && !gl4 && !ctx->caps.es) {
+        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
+                     "goldfeather and scs write depth with glDrawPixels (compatibility "
+                     "profile) or a GLSL 1.50 / GLSL ES 3.00 program (GL4 lighting, "
+                     "OpenGL ES 3.0+)");
+        return;
+    }
+    if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION)) && !gl4) {
+        /* OpenGL ES 2.0: no program writes read-back depth again (GLSL ES
+         * 1.00 has no texelFetch, ES 2.0 no float textures): as without
+         * the read-back, the camera's products take the GPU resolve alone */
+        c->no_readback = 1;
+        gpu_alone = "OpenGL ES 2.0 writes no read-back depth again";
+    } else if (!(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION))) {
         /* the read-back resolves (light maps', STIN_DEBUG_CSG_READBACK,
          * no GPU resolve) read depth and stencil, which core ES cannot: there
          * the camera's products take the GPU resolve alone (checked below,
@@ -197,19 +205,19 @@ void stin__csg_init(stin_context *ctx)
     stin__csg_merge_init(ctx);
     if (c->no_readback && !stin__csg_merge_ready(ctx)) {
         stin__csg_release(ctx);
-        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF,
-                     ctx->desc.debug_flags & STIN_DEBUG_CSG_READBACK
-                         ? "STIN_DEBUG_CSG_READBACK reads depth and stencil back, which OpenGL "
-                           "ES does only with GL_NV_read_depth_stencil"
-                         : "its GPU resolve did not build, and OpenGL ES reads depth and "
-                           "stencil back only with GL_NV_read_depth_stencil");
+        stin__formatf(why, sizeof why, "%s, and %s",
+                      ctx->desc.debug_flags & STIN_DEBUG_CSG_READBACK
+                          ? "STIN_DEBUG_CSG_READBACK resolves by read-back"
+                          : "its GPU resolve did not build",
+                      gpu_alone);
+        stin__demote(ctx, STIN_FEATURE_CSG, STIN_TECH_CSG_OFF, why);
         return;
     }
     if (c->no_readback)
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "CSG: no GL_NV_read_depth_stencil: products resolve on the GPU alone, "
-                  "cast no shadow, and scs and goldfeather count no layers (they run to "
-                  "their limits)");
+                  "CSG: %s: products resolve on the GPU alone, cast no shadow, and scs and "
+                  "goldfeather count no layers (they run to their limits)",
+                  gpu_alone);
 }
 
 void stin__csg_release(stin_context *ctx)

@@ -108,3 +108,21 @@ void capture_report_clean(struct run *r, const char *name, const capture *cap)
     else
         report(r, "PASS", name, "no error logged, no call outside the profile");
 }
+
+int capture_csg_gpu_alone(const capture *cap)
+{
+    return strstr(cap->fallbacks, "products resolve on the GPU alone") != NULL;
+}
+
+int capture_report_gpu_alone(struct run *r, const char *name, const capture *cap,
+                             const char *what)
+{
+    if (!capture_csg_gpu_alone(cap))
+        return 0;
+    if (strncmp(r->profile_name, "es", 2) == 0)
+        report(r, "SKIP", name, "%s: the products resolve on the GPU alone here (no depth "
+               "read-back on this OpenGL ES context)", what);
+    else
+        report(r, "FAIL", name, "the products resolve on the GPU alone on a desktop context");
+    return 1;
+}

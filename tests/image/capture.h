@@ -56,9 +56,19 @@ void capture_free(capture *c);
  * itself). */
 void capture_log_fn(void *user, stin_log_level level, stin_log_item item, const char *msg);
 
+/* 1 where the render's log says its CSG products resolve on the GPU alone
+ * (OpenGL ES without a depth read-back: stin.h, "goldfeather"): no
+ * read-back resolve, no shadow cast by a product, no layer counted. */
+int capture_csg_gpu_alone(const capture *cap);
+/* Where cap's products resolve on the GPU alone: `name` reports SKIP with
+ * `what` on an OpenGL ES profile and FAIL elsewhere (desktop GL always
+ * reads depth back), and 1 is returned; else 0 and nothing reported. */
+struct run;
+int capture_report_gpu_alone(struct run *r, const char *name, const capture *cap,
+                             const char *what);
+
 /* The gl-clean verdict of a render: no GL error, no call outside the
  * profile, no error logged; one PASS/FAIL line under `name`. */
-struct run;
 void capture_report_clean(struct run *r, const char *name, const capture *cap);
 
 #endif

@@ -300,6 +300,8 @@ static void sequence_check(run *r, const scene *s, capture_options *o, const cap
     unsigned runs = checked->stats.csg.scs_runs, every, least = sh == CYCLE_SHAPE ? 2u : 1u;
     unsigned most = sh == CYCLE_SHAPE ? 0xffffffffu : 1u;
     int same;
+    if (capture_report_gpu_alone(r, name, checked, "scs counts no runs"))
+        return;
     o->debug_flags = STIN_DEBUG_CSG_SCS_NO_EARLY_STOP;
     if (!capture_forced(r, s, o, STIN_FEATURE_CSG, STIN_TECH_CSG_SCS, &all, name))
         return;
