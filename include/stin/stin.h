@@ -515,8 +515,9 @@
  *   an area light, on GLSL tiers): the mask and vdsm's position buffer stay
  *   single-sampled, one surface a pixel, the one at its centre. Where the
  *   target is multisampled the lit pass also reads the depth the mask was
- *   decided against (the mask's own, or vdsm's position buffer's) on one
- *   more texture unit (the one after displacement's), and where the
+ *   decided against (the mask's own, or vdsm's position buffer's, where
+ *   CSG products' faces write theirs as draws do) on one more texture
+ *   unit (the one after displacement's), and where the
  *   fragment's depth is not within 16 steps of 24 bits of it, the fragment
  *   belongs to a surface that covers some samples but not the centre (a
  *   silhouette): it reads the neighbouring texel (of the 3 x 3) whose depth

@@ -52,7 +52,8 @@
 /* Of the silhouette band where the cavity is left out (the casting rows):
  * measured 0 of 695 on the GLSL tiers, 19 (0.03) on GL1 (per-vertex
  * shading along the product's outline); a halo along its lower outline
- * over its own shadow is 0.2 of the band (vdsm's there: open, docs/testing.md). */
+ * over its own shadow is 0.2 of the band (vdsm's before its position
+ * buffer took the products' depth). */
 #define MSAA_CSG_CAST_MAX_BAND_SHARE 0.05
 
 /* One row: the CSG technique and the shadows technique the product casts
@@ -291,13 +292,9 @@ static void refused(run *r, const csg_run *c, stin_tier tier)
  * interval; gl33-core's GL4 goldfeather; gl21's GL2 goldfeather and scs,
  * and its GL1 goldfeather (and the row at the centre) and scs through the
  * read-back resolve, and its refusal without packed depth-stencil. GL1 has
- * no PCF: volumes there; every GL1 row leaves the cavity out (ref_build).
- * Then on gl45-core the product casting under vdsm, here: on
- * csg-cast.json it leaves a halo along the product's lower outline. */
+ * no PCF: volumes there; every GL1 row leaves the cavity out (ref_build). */
 static int resolve_cases(const run *r, stin_tier tier, msaa_csg_case out[4])
 {
-    static const msaa_csg_case vdsm = {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_VDSM, 0,
-                                       "cast-vdsm"};
     static const stin_technique gl4[] = {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_CSG_SCS,
                                          STIN_TECH_CSG_INTERVAL};
     int i, n = 0;
@@ -314,20 +311,22 @@ static int resolve_cases(const run *r, stin_tier tier, msaa_csg_case out[4])
         out[i].cavity_out = 0;
         out[i].row = NULL;
     }
-    if (tier == STIN_TIER_GL4 && n == 3) /* gl33-core's vdsm casts no product (GL 4.3) */
-        out[n++] = vdsm;
     return n;
 }
 
 /* The rows of each profile on msaa/csg-cast.json: the product casting
  * under the tier's shadows techniques but map-pcf (the resolves' rows
- * cast under it) and vdsm (above), through goldfeather: volumes (through
- * the screen mask: two lights) on the GLSL tiers, GL1's volumes and two
- * maps on gl21's GL1 tier. Volumes do not shadow a product's faces by the
- * product (their cast map), and GL1's reference shades the cavity with the
- * ball's outward normals: the cavity is left out. */
+ * cast under it), through goldfeather: vdsm on gl45-core (gl33-core's
+ * casts no product: GL 4.3) and volumes (both through the screen mask:
+ * two lights) on the GLSL tiers, GL1's volumes and two maps on gl21's GL1
+ * tier. Volumes do not shadow a product's faces by the product (their
+ * cast map), and GL1's reference shades the cavity with the ball's
+ * outward normals: the cavity is left out (vdsm's own shadow in it is
+ * csg_cast_test.c's). */
 static int cast_cases(const run *r, stin_tier tier, msaa_csg_case out[4])
 {
+    static const msaa_csg_case vdsm = {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_VDSM, 1,
+                                       "cast-vdsm"};
     static const msaa_csg_case volume = {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_VOLUME,
                                          1, "cast-volume"};
     static const msaa_csg_case gl1[] = {
@@ -335,8 +334,12 @@ static int cast_cases(const run *r, stin_tier tier, msaa_csg_case out[4])
         {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_MAP_DEPTH, 1, "cast-map-depth"},
         {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_MAP_COMBINE, 1, "cast-map-combine"},
     };
-    if ((tier == STIN_TIER_GL4 &&
-         (!strcmp(r->profile_name, "gl45-core") || !strcmp(r->profile_name, "gl33-core"))) ||
+    if (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl45-core")) {
+        out[0] = vdsm;
+        out[1] = volume;
+        return 2;
+    }
+    if ((tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl33-core")) ||
         (tier == STIN_TIER_GL2 && !strcmp(r->profile_name, "gl21"))) {
         out[0] = volume;
         return 1;
