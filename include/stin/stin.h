@@ -502,15 +502,22 @@
  * - "map-pcf", "map-depth", "map-combine", "deep", "coloured": looked up
  *   in the lit pass at the fragment's own surface point (the pixel centre
  *   on that surface), so a sample never takes another surface's. (Tested
- *   for map-pcf, deep and coloured; the fixed-function maps drawn in the
- *   frame's own buffer, without FBOs, are not tested into a multisampled
- *   default framebuffer.)
+ *   for map-pcf, map-combine, deep and coloured, and map-depth under CSG
+ *   products; the fixed-function maps drawn in the frame's own buffer,
+ *   without FBOs, are not tested into a multisampled default framebuffer.)
+ *   map-depth's side test (shadow/map_facing.c) is the exception: where a
+ *   fragment's pixel centre lies beyond its surface's edge as the light
+ *   sees it (an outline over the background or over another surface), the
+ *   side map there holds "neither side" (0.5) and the fragment is lit at
+ *   half strength: a dim rim one pixel wide (measured 101 of 711
+ *   silhouette-band pixels, up to 0.11, tests/image/msaa_test.c; open).
  * - "vdsm", and "volume" through the screen mask (two or more lights, or
  *   an area light, on GLSL tiers): the mask and vdsm's position buffer stay
  *   single-sampled, one surface a pixel, the one at its centre. Where the
  *   target is multisampled the lit pass also reads the depth the mask was
- *   decided against (the mask's own, or vdsm's position buffer's) on one
- *   more texture unit (the one after displacement's), and where the
+ *   decided against (the mask's own, or vdsm's position buffer's, where
+ *   CSG products' faces write theirs as draws do) on one more texture
+ *   unit (the one after displacement's), and where the
  *   fragment's depth is not within 16 steps of 24 bits of it, the fragment
  *   belongs to a surface that covers some samples but not the centre (a
  *   silhouette): it reads the neighbouring texel (of the 3 x 3) whose depth

@@ -343,16 +343,24 @@ static void release_gl(stin_context *ctx)
     stin__times_release(ctx);
 }
 
-/* Selection and every module's GL set-up. */
+/* Selection and every module's GL set-up. The caller's framebuffer
+ * binding survives it: the modules bind their own targets and leave 0
+ * bound, and a fixed-function frame's glPopAttrib gives the read buffer
+ * of the binding at its push back to the frame's target (GL_FRONT into
+ * an FBO: GL_INVALID_OPERATION). */
 static stin_result set_up(stin_context *ctx)
 {
     char msg[256];
+    GLint fb[2] = {0, 0};
+    int fbo = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
     stin_result r = stin__select(&ctx->caps, ctx->desc.tier, ctx->desc.techniques, &ctx->sel,
                                  msg, sizeof msg);
     if (r != STIN_OK) {
         stin__log(ctx, STIN_LOG_LEVEL_ERROR, ctx->sel.failure, "stin_create: %s", msg);
         return r;
     }
+    if (fbo)
+        stin__framebuffer_save(ctx, fb);
     ctx->shadow = stin__shadow_technique_of(ctx->sel.choice[STIN_FEATURE_SHADOWS].technique);
     stin__selection_hand_down(ctx); /* before the first program is built */
     stin__hooks_install_paths(ctx); /* the lighting path builds the features' chunks in */
@@ -360,13 +368,9 @@ static stin_result set_up(stin_context *ctx)
     if (r == STIN_OK)
         r = init_shadows(ctx);
     if (r == STIN_OK) {
-        GLint fb[2] = {0, 0};
-        int fbo = (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
-        if (fbo) /* the caller's binding survives the translucent maps' set-up */
-            stin__framebuffer_save(ctx, fb);
         stin__deep_init(ctx);
         stin__coloured_init(ctx);
-        if (fbo)
+        if (fbo) /* before the choices that look at the bound framebuffer */
             stin__framebuffer_restore(ctx, fb);
         stin__peel_init(ctx);
         stin__displace_init(ctx);
@@ -379,6 +383,8 @@ static stin_result set_up(stin_context *ctx)
     }
     if (r != STIN_OK)
         release_gl(ctx); /* nothing half-made stays behind */
+    if (fbo)
+        stin__framebuffer_restore(ctx, fb);
     return r;
 }
 

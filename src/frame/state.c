@@ -16,9 +16,34 @@ static int uses_fixed_function(const stin_context *ctx)
     return stin__path_of(ctx) == stin__fixed_path();
 }
 
+static int has_fbo(const stin_context *ctx)
+{
+    return (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_FBO)) != 0;
+}
+
+/* GL_PIXEL_MODE_BIT's read buffer is the bound read framebuffer's: the pop
+ * sets the pushed one on whatever is bound then. Popped on the frame's
+ * target it would be the caller's binding's (GL_FRONT or GL_BACK into a
+ * framebuffer object: GL_INVALID_OPERATION, the target's read buffer
+ * lost), so it is popped on the bindings it was pushed on. */
+static void pop_attrib(stin_context *ctx)
+{
+    GLint frame[2];
+    if (!has_fbo(ctx)) {
+        GL(ctx, PopAttrib)();
+        return;
+    }
+    stin__framebuffer_save(ctx, frame);
+    stin__framebuffer_restore(ctx, ctx->caller.pushed_fbo);
+    GL(ctx, PopAttrib)();
+    stin__framebuffer_restore(ctx, frame); /* the header: the frame's binding stays */
+}
+
 void stin__state_save(stin_context *ctx)
 {
     int fixed = uses_fixed_function(ctx);
+    if (fixed && has_fbo(ctx))
+        stin__framebuffer_save(ctx, ctx->caller.pushed_fbo);
     if (fixed)
         GL(ctx, PushAttrib)(FIXED_FUNCTION_BITS);
     stin__caller_frame_begin(ctx, &ctx->caller);
@@ -36,7 +61,7 @@ void stin__state_restore(stin_context *ctx)
     stin__displace_frame_end(ctx);
     if (fixed) {
         stin__caller_state_fixed_end(ctx);
-        GL(ctx, PopAttrib)();
+        pop_attrib(ctx);
         GL(ctx, AlphaFunc)(GL_ALWAYS, 0.0f); /* colour-buffer group: not pushed */
         stin__caller_state_defaults(ctx); /* the pop gave back the caller's enables */
     }

@@ -45,6 +45,7 @@ typedef struct stin__caller_frame {
     int srgb; /* GL_FRAMEBUFFER_SRGB, turned off for a data output's frame */
     GLint clear_stencil;
     GLint arrays[STIN__CALLER_ARRAY_UNITS]; /* each unit's 2D-array binding */
+    GLint pushed_fbo[2]; /* draw and read bindings at the GL1 tier's attribute push */
 } stin__caller_frame;
 
 /* At stin_create, after detection: ctx->caller_has. */

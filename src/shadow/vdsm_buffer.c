@@ -185,9 +185,12 @@ void stin__vdsm_buffer_draw(stin_context *ctx)
 /* After the CSG resolve (frame/frame.c): the products' surfaces into the position
  * buffer too. The buffer was drawn before the frame's target (a light
  * pre-pass): the products' faces are drawn over it, depth LEQUAL against
- * the draws there without writing depth, each fragment kept only where it
- * lies on the resolved surface (the shader's test against the resolve's
- * depth texture, within the face's band: render/resolved.h). */
+ * the draws there, each fragment kept only where it lies on the resolved
+ * surface (the shader's test against the resolve's depth texture, within
+ * the face's band: render/resolved.h). They write depth as the draws do:
+ * into a multisampled target the lit pass finds a fragment's own texel by
+ * this depth (render/screen_mask.c), and a product's pixel left at the
+ * depth behind it sent its outline to the neighbour below (a halo). */
 void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
 {
     struct stin__vdsm_state *v = ctx->vdsm;
@@ -207,7 +210,6 @@ void stin__vdsm_buffer_csg(stin_context *ctx, const stin__path *path)
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, v->fbo);
     ps.depth_test = 1;
     ps.depth_func = GL_LEQUAL;
-    ps.depth_write = 0;
     stin__pass_apply(ctx, &ps);
     use_position_program(ctx);
     GL(ctx, Uniform1i)(v->pos_csg_depth, 0);

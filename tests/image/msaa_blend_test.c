@@ -36,6 +36,12 @@
  * of 1,325 beyond. */
 #define BLEND_MAX_BAND_OVER 6
 #define BLEND_MIN_BAND 300
+/* Of the pixels away from every edge: measured 0 of 16,653 on every row.
+ * The translucent shadows decide most of them: with the panes casting
+ * opaque shadows ("opaque" in deep's or coloured's place) 2,262 differ
+ * (and 102 of the band), so a transmittance that is wrong away from the
+ * silhouettes fails too, not only a halo. */
+#define BLEND_MAX_ELSEWHERE_OVER 20
 
 typedef struct blend_case {
     stin_tier tier;
@@ -210,7 +216,7 @@ static void one_case(run *r, const scene *s, const blend_case *bc, const float p
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
     band_result b;
-    int got;
+    int got, pass;
     snprintf(name, sizeof name, "%s/msaa-blend-%s-%s", stin_tier_name(bc->tier),
              stin_technique_name(bc->transparency), stin_technique_name(bc->translucent));
     got = rgba ? msaa_render(r, s, &tech, rgba, why, sizeof why) : 0;
@@ -223,14 +229,16 @@ static void one_case(run *r, const scene *s, const blend_case *bc, const float p
         ref_free(m);
     } else {
         compare_band(m, rgba, r->width, &b);
-        report(r, b.over <= BLEND_MAX_BAND_OVER && b.band >= BLEND_MIN_BAND ? "PASS" : "FAIL",
-               name,
+        pass = b.over <= BLEND_MAX_BAND_OVER && b.band >= BLEND_MIN_BAND &&
+               b.compared_over <= BLEND_MAX_ELSEWHERE_OVER;
+        report(r, pass ? "PASS" : "FAIL", name,
                "%d samples: %ld of %ld silhouette-band pixels beyond %.2f of the reference "
                "at the samples (max %.3f; at most %d); inner edges %ld of %ld; elsewhere "
-               "%ld of %ld; %ld near shadow edges left out",
+               "%ld of %ld (at most %d); %ld near shadow edges left out",
                n, b.over, b.band, BLEND_TOLERANCE, b.band_max, BLEND_MAX_BAND_OVER,
-               b.inner_over, b.inner, b.compared_over, b.compared, b.left_out);
-        if (b.over > BLEND_MAX_BAND_OVER)
+               b.inner_over, b.inner, b.compared_over, b.compared, BLEND_MAX_ELSEWHERE_OVER,
+               b.left_out);
+        if (!pass)
             msaa_save_pair(r, name, rgba, m->colour, m->w, m->h);
     }
     free(rgba);

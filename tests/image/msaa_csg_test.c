@@ -10,7 +10,10 @@
  * (csg/merge.c): a snap that tests the face's depth at the pixel centre
  * against the resolved one drops the samples of the triangle that does not
  * cover the centre, a line along every triangle edge inside the product,
- * which shows on the pixels away from any change of object.
+ * which shows on the pixels away from any change of object. Then
+ * msaa/csg-cast.json (the product hovering over its own shadow, as
+ * msaa/halo.json's ball) under the other shadows techniques: the product
+ * casting, and the halo check along its outline over that shadow.
  */
 #include "msaa_common.h"
 #include "reference_csg.h"
@@ -46,6 +49,23 @@
  * too, 278 (0.20). */
 #define MSAA_CSG_MAX_BAND_SHARE 0.15
 
+/* Of the silhouette band where the cavity is left out (the casting rows):
+ * measured 0 of 695 on the GLSL tiers, 19 (0.03) on GL1 (per-vertex
+ * shading along the product's outline); a halo along its lower outline
+ * over its own shadow is 0.2 of the band (vdsm's before its position
+ * buffer took the products' depth). */
+#define MSAA_CSG_CAST_MAX_BAND_SHARE 0.05
+
+/* One row: the CSG technique and the shadows technique the product casts
+ * under; cavity_out: leave the subtracted primitive's inside out (see
+ * leave_out_cavity), and hold the band to MSAA_CSG_CAST_MAX_BAND_SHARE;
+ * row: the name after msaa-csg- (NULL: the CSG technique's). */
+typedef struct msaa_csg_case {
+    stin_technique csg, shadows;
+    int cavity_out;
+    const char *row;
+} msaa_csg_case;
+
 typedef struct csg_run {
     const scene *s;
     scene_csg_products prods;
@@ -55,8 +75,8 @@ typedef struct csg_run {
 /* One frame of the scene's product at its own size into the platform's
  * target: 1, 0 on failure (why), -1 where the tier or technique does not
  * run here (why). */
-static int render(run *r, const csg_run *c, stin_tier tier, stin_technique csg, uint64_t flags,
-                  uint8_t *rgba, char *why, size_t why_size)
+static int render(run *r, const csg_run *c, stin_tier tier, const msaa_csg_case *mc,
+                  uint64_t flags, uint8_t *rgba, char *why, size_t why_size)
 {
     stin_desc d;
     stin_context *ctx = NULL;
@@ -66,10 +86,8 @@ static int render(run *r, const csg_run *c, stin_tier tier, stin_technique csg, 
     int ok = 0;
     stin_result res;
     test_desc(r, tier, &d);
-    /* GL1 has no PCF: volumes there (its rows leave the cavity out: ref_build) */
-    d.techniques[STIN_FEATURE_SHADOWS] =
-        tier == STIN_TIER_GL1 ? STIN_TECH_SHADOWS_VOLUME : STIN_TECH_SHADOWS_MAP_PCF;
-    d.techniques[STIN_FEATURE_CSG] = csg;
+    d.techniques[STIN_FEATURE_SHADOWS] = mc->shadows;
+    d.techniques[STIN_FEATURE_CSG] = mc->csg;
     d.debug_flags = flags;
     scene_gpu_size_desc(c->s, &d);
     size = stin_memory_size(&d);
@@ -77,13 +95,15 @@ static int render(run *r, const csg_run *c, stin_tier tier, stin_technique csg, 
     if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {
         free(block);
         snprintf(why, why_size, "%s with %s does not run on this tier here",
-                 stin_technique_name(csg),
-                 stin_technique_name(d.techniques[STIN_FEATURE_SHADOWS]));
+                 stin_technique_name(mc->csg), stin_technique_name(mc->shadows));
         return -1;
     }
-    if (stin_query_choice(ctx, STIN_FEATURE_CSG).technique != csg) {
-        snprintf(why, why_size, "%s falls back here (%s)", stin_technique_name(csg),
-                 stin_query_choice(ctx, STIN_FEATURE_CSG).reason);
+    if (stin_query_choice(ctx, STIN_FEATURE_CSG).technique != mc->csg ||
+        stin_query_choice(ctx, STIN_FEATURE_SHADOWS).technique != mc->shadows) {
+        snprintf(why, why_size, "%s with %s falls back here (%s; %s)",
+                 stin_technique_name(mc->csg), stin_technique_name(mc->shadows),
+                 stin_query_choice(ctx, STIN_FEATURE_CSG).reason,
+                 stin_query_choice(ctx, STIN_FEATURE_SHADOWS).reason);
         ok = -1;
     } else if (!scene_gpu_create(&g, c->s, ctx, why, why_size)) {
         ok = 0;
@@ -164,33 +184,53 @@ static int ref_build(csg_run *c, const float pos[][2], int n, int per_vertex, ch
     return ok;
 }
 
+/* The band comparison, the cavity left out where the row asks (on a copy:
+ * the other rows keep it). */
+static void compare(csg_run *c, const msaa_csg_case *mc, const uint8_t *rgba, int stride,
+                    msaa_band *b)
+{
+    size_t px = (size_t)c->m.w * c->m.h;
+    unsigned char *kept = mc->cavity_out ? malloc(px) : NULL;
+    if (kept) {
+        memcpy(kept, c->m.centre_differs, px);
+        leave_out_cavity(c);
+    }
+    msaa_compare_band(&c->m, rgba, stride, MSAA_CSG_TOLERANCE, b);
+    if (kept) {
+        memcpy(c->m.centre_differs, kept, px);
+        free(kept);
+    }
+}
+
 /* flags: STIN_DEBUG_CSG_SNAP_AT_CENTRE for the row that must fail. */
-static void one_case(run *r, const csg_run *c, stin_tier tier, stin_technique csg,
+static void one_case(run *r, csg_run *c, stin_tier tier, const msaa_csg_case *mc,
                      uint64_t flags)
 {
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
     msaa_band b;
     int got, pass;
-    double share;
+    double share, most = mc->cavity_out ? MSAA_CSG_CAST_MAX_BAND_SHARE : MSAA_CSG_MAX_BAND_SHARE;
     snprintf(name, sizeof name, "%s/msaa-csg-%s%s", stin_tier_name(tier),
-             stin_technique_name(csg), flags ? "-at-centre-fails" : "");
-    got = rgba ? render(r, c, tier, csg, flags, rgba, why, sizeof why) : 0;
+             mc->row ? mc->row : stin_technique_name(mc->csg),
+             flags ? "-at-centre-fails" : "");
+    got = rgba ? render(r, c, tier, mc, flags, rgba, why, sizeof why) : 0;
     if (got < 0) {
         report(r, "SKIP", name, "%s", why);
     } else if (!got) {
         report(r, "FAIL", name, "%s", why);
     } else {
-        msaa_compare_band(&c->m, rgba, r->width, MSAA_CSG_TOLERANCE, &b);
+        compare(c, mc, rgba, r->width, &b);
         share = b.band ? (double)b.over / (double)b.band : 1.0;
         pass = b.compared > 1000 && b.band > 100 && b.compared_over <= MSAA_CSG_MAX_OVER &&
-               share <= MSAA_CSG_MAX_BAND_SHARE;
+               share <= most;
         report(r, pass != !!flags ? "PASS" : "FAIL", name,
-               "%d samples: %ld of %ld pixels away from edges beyond %.2f of the reference at "
-               "the samples (max %.3f; at most %d); silhouette band: %ld of %ld (%.2f; at most "
-               "%.2f)%s", c->m.n, b.compared_over, b.compared, MSAA_CSG_TOLERANCE,
-               b.compared_max, MSAA_CSG_MAX_OVER, b.over, b.band, share,
-               MSAA_CSG_MAX_BAND_SHARE, flags ? " (must fail: the snap at the centre)" : "");
+               "%d samples, %s, %s: %ld of %ld pixels away from edges beyond %.2f of the "
+               "reference at the samples (max %.3f; at most %d); silhouette band: %ld of %ld "
+               "(%.2f; at most %.2f)%s", c->m.n, stin_technique_name(mc->csg),
+               stin_technique_name(mc->shadows), b.compared_over, b.compared,
+               MSAA_CSG_TOLERANCE, b.compared_max, MSAA_CSG_MAX_OVER, b.over, b.band, share,
+               most, flags ? " (must fail: the snap at the centre)" : "");
         if (pass == !!flags)
             msaa_save_pair(r, name, rgba, c->m.colour, c->m.w, c->m.h);
     }
@@ -246,76 +286,118 @@ static void refused(run *r, const csg_run *c, stin_tier tier)
     test_context_destroy(&tc);
 }
 
-/* The techniques each profile runs (each a distinct resolve; the budget
- * of make check's time allows no more): gl45-core's GL4 goldfeather (and
- * the row at the centre that must fail), scs and interval; gl33-core's
- * GL4 goldfeather; gl21's GL2 goldfeather and scs, and its GL1 goldfeather
- * (and the row at the centre) and scs through the read-back resolve, and
- * its refusal without packed depth-stencil. */
-static int cases_here(const run *r, stin_tier tier, stin_technique out[4])
+/* The rows of each profile on msaa/csg.json (each a distinct resolve; the
+ * budget of make check's time allows no more): gl45-core's GL4
+ * goldfeather (and the row at the centre that must fail), scs and
+ * interval; gl33-core's GL4 goldfeather; gl21's GL2 goldfeather and scs,
+ * and its GL1 goldfeather (and the row at the centre) and scs through the
+ * read-back resolve, and its refusal without packed depth-stencil. GL1 has
+ * no PCF: volumes there; every GL1 row leaves the cavity out (ref_build). */
+static int resolve_cases(const run *r, stin_tier tier, msaa_csg_case out[4])
 {
-    int n = 0;
-    if (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl45-core")) {
-        out[n++] = STIN_TECH_CSG_GOLDFEATHER;
-        out[n++] = STIN_TECH_CSG_SCS;
-        out[n++] = STIN_TECH_CSG_INTERVAL;
-    } else if (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl33-core")) {
-        out[n++] = STIN_TECH_CSG_GOLDFEATHER;
-    } else if (tier != STIN_TIER_GL4 && !strcmp(r->profile_name, "gl21")) {
-        out[n++] = STIN_TECH_CSG_GOLDFEATHER;
-        out[n++] = STIN_TECH_CSG_SCS;
+    static const stin_technique gl4[] = {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_CSG_SCS,
+                                         STIN_TECH_CSG_INTERVAL};
+    int i, n = 0;
+    if (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl45-core"))
+        n = 3;
+    else if (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl33-core"))
+        n = 1;
+    else if (tier != STIN_TIER_GL4 && !strcmp(r->profile_name, "gl21"))
+        n = 2;
+    for (i = 0; i < n; i++) {
+        out[i].csg = gl4[i];
+        out[i].shadows = tier == STIN_TIER_GL1 ? STIN_TECH_SHADOWS_VOLUME
+                                                : STIN_TECH_SHADOWS_MAP_PCF;
+        out[i].cavity_out = 0;
+        out[i].row = NULL;
     }
     return n;
 }
 
-void msaa_csg_tests(run *r, stin_tier tier, const char *path)
+/* The rows of each profile on msaa/csg-cast.json: the product casting
+ * under the tier's shadows techniques but map-pcf (the resolves' rows
+ * cast under it), through goldfeather: vdsm on gl45-core (gl33-core's
+ * casts no product: GL 4.3) and volumes (both through the screen mask:
+ * two lights) on the GLSL tiers, GL1's volumes and two maps on gl21's GL1
+ * tier. Volumes do not shadow a product's faces by the product (their
+ * cast map), and GL1's reference shades the cavity with the ball's
+ * outward normals: the cavity is left out (vdsm's own shadow in it is
+ * csg_cast_test.c's). */
+static int cast_cases(const run *r, stin_tier tier, msaa_csg_case out[4])
 {
-    char file[1024], err[512] = "", name[64];
-    const char *slash = strrchr(path, '/');
+    static const msaa_csg_case vdsm = {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_VDSM, 1,
+                                       "cast-vdsm"};
+    static const msaa_csg_case volume = {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_VOLUME,
+                                         1, "cast-volume"};
+    static const msaa_csg_case gl1[] = {
+        {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_VOLUME, 1, "cast-volume"},
+        {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_MAP_DEPTH, 1, "cast-map-depth"},
+        {STIN_TECH_CSG_GOLDFEATHER, STIN_TECH_SHADOWS_MAP_COMBINE, 1, "cast-map-combine"},
+    };
+    if (tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl45-core")) {
+        out[0] = vdsm;
+        out[1] = volume;
+        return 2;
+    }
+    if ((tier == STIN_TIER_GL4 && !strcmp(r->profile_name, "gl33-core")) ||
+        (tier == STIN_TIER_GL2 && !strcmp(r->profile_name, "gl21"))) {
+        out[0] = volume;
+        return 1;
+    }
+    if (tier == STIN_TIER_GL1 && !strcmp(r->profile_name, "gl21")) {
+        memcpy(out, gl1, sizeof gl1);
+        return 3;
+    }
+    return 0;
+}
+
+/* One scene's rows into the 4x target; extras: the GL1 refusal and the
+ * rows at the centre that must fail. */
+static void scene_rows(run *r, stin_tier tier, const char *path, const char *file,
+                       const msaa_csg_case *cases, int count, int extras)
+{
+    char err[512] = "", name[64];
     float pos[MSAA_MAX_SAMPLES][2];
-    stin_technique techs[4];
-    int i, n, count = cases_here(r, tier, techs);
-    int gl1 = tier == STIN_TIER_GL1 && !strcmp(r->profile_name, "gl21");
+    int i, n;
     scene s;
     csg_run c;
-    if (strcmp(scene_base_name(path), "csg") || (!count && !gl1))
-        return;
     snprintf(name, sizeof name, "%s/msaa-csg", stin_tier_name(tier));
-    snprintf(file, sizeof file, "%.*smsaa/csg.json", slash ? (int)(slash - path + 1) : 0, path);
-    if (!scene_load(file, &s, err, sizeof err)) {
-        report(r, "FAIL", name, "%s", err);
+    n = msaa_open(r, path, file, MSAA_CSG_SAMPLES, name, &s, pos);
+    if (!n)
         return;
-    }
     memset(&c, 0, sizeof c);
     c.s = &s;
-    if (s.width > r->width || s.height > r->height) {
-        report(r, "SKIP", name, "the run's %dx%d is smaller than the scene's %dx%d", r->width,
-               r->height, s.width, s.height);
-    } else if (!scene_csg_products_build(&s, &c.prods) || c.prods.count < 1) {
-        report(r, "FAIL", name, "the scene's csg list did not build");
-    } else if (!stin_platform_set_samples(r->plat, MSAA_CSG_SAMPLES, err, sizeof err)) {
-        report(r, "SKIP", name, "%s", err);
+    if (!scene_csg_products_build(&s, &c.prods) || c.prods.count < 1) {
+        report(r, "FAIL", name, "%s: the scene's csg list did not build", file);
     } else {
-        n = msaa_sample_positions(r, pos);
-        if (gl1)
+        if (extras && tier == STIN_TIER_GL1)
             refused(r, &c, tier);
-        if (!n)
-            report(r, "SKIP", name, "the context cannot say where its samples lie "
-                                    "(glGetMultisamplefv: GL 3.2 or ARB_texture_multisample)");
-        else if (!ref_build(&c, (const float(*)[2])pos, n,
-                            tier == STIN_TIER_GL1 ? msaa_gl1_per_vertex(r, &s) : 0, err,
-                            sizeof err))
+        if (!ref_build(&c, (const float(*)[2])pos, n,
+                       tier == STIN_TIER_GL1 ? msaa_gl1_per_vertex(r, &s) : 0, err, sizeof err))
             report(r, "FAIL", name, "reference: %s", err);
         else
             for (i = 0; i < count; i++) {
-                one_case(r, &c, tier, techs[i], 0);
-                if (i == 0 && (tier == STIN_TIER_GL1 || !strcmp(r->profile_name, "gl45-core")))
-                    one_case(r, &c, tier, techs[i], STIN_DEBUG_CSG_SNAP_AT_CENTRE);
+                one_case(r, &c, tier, &cases[i], 0);
+                if (extras && i == 0 &&
+                    (tier == STIN_TIER_GL1 || !strcmp(r->profile_name, "gl45-core")))
+                    one_case(r, &c, tier, &cases[i], STIN_DEBUG_CSG_SNAP_AT_CENTRE);
             }
-        if (!stin_platform_set_samples(r->plat, 0, err, sizeof err))
-            report(r, "FAIL", name, "back to the default framebuffer: %s", err);
     }
     msaa_ref_free(&c.m);
     scene_csg_products_free(&c.prods);
-    scene_free(&s);
+    msaa_close(r, name, &s);
+}
+
+void msaa_csg_tests(run *r, stin_tier tier, const char *path)
+{
+    msaa_csg_case cases[4];
+    int count;
+    if (strcmp(scene_base_name(path), "csg"))
+        return;
+    count = resolve_cases(r, tier, cases);
+    if (count)
+        scene_rows(r, tier, path, "csg.json", cases, count, 1);
+    count = cast_cases(r, tier, cases);
+    if (count)
+        scene_rows(r, tier, path, "csg-cast.json", cases, count, 0);
 }

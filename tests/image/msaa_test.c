@@ -147,12 +147,16 @@ static void at_count(run *r, const scene *s, stin_tier tier, int asked, const ms
         report(r, "FAIL", name, "back to the default framebuffer: %s", err);
 }
 
+/* GL1's map-depth is not here: its side test lights a fragment whose
+ * pixel centre lies beyond its surface's edge (as the light sees it) at
+ * half strength, a rim this check finds (docs/testing.md; open). */
 void msaa_tests(run *r, stin_tier tier, const char *path)
 {
     static const msaa_case cases[] = {
         {STIN_TIER_GL4, STIN_TECH_SHADOWS_VDSM},    {STIN_TIER_GL4, STIN_TECH_SHADOWS_VOLUME},
         {STIN_TIER_GL4, STIN_TECH_SHADOWS_MAP_PCF}, {STIN_TIER_GL2, STIN_TECH_SHADOWS_VOLUME},
         {STIN_TIER_GL2, STIN_TECH_SHADOWS_MAP_PCF}, {STIN_TIER_GL1, STIN_TECH_SHADOWS_VOLUME},
+        {STIN_TIER_GL1, STIN_TECH_SHADOWS_MAP_COMBINE},
     };
     char file[1024], err[512], name[64];
     const char *slash = strrchr(path, '/');
