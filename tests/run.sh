@@ -53,9 +53,9 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # tests there), depth peeling with its any-samples early stop and coloured
 # maps on glass-panes (10 s), scs and goldfeather with their GLSL ES 3.00
 # depth write-back on csg (42 s), displacement by vertex textures on
-# displace-plate (2 s); on es32 tessellated displacement on displace-tess
-# (3 s). es32's dual peeling and deep maps (glass-panes, 58 s: both its
-# tiers run) and interval CSG (csg, 117 s) are left to a run by hand.
+# displace-plate (2 s); on es32 dual peeling and deep maps on glass-panes
+# and interval CSG on csg (both its tiers run), tessellated displacement on
+# displace-tess (3 s).
 # es20-ext (GLSL ES 1.00) runs es30's scenes but csg, and stone-wall's
 # normal/parallax/pom; es20 (no derivatives, depth textures or 32-bit
 # indices) volumes and map-pcf's packed maps on spheres-18k-spot (6 s).
@@ -110,7 +110,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         for prof in $ES_PROFILES; do
             case $prof in
                 es30) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-plate.json" ;;
-                es32) more=tests/scenes/displace-tess.json ;;
+                es32) more="tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-tess.json" ;;
                 es20-ext) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json
                                 tests/scenes/stone-wall.json tests/scenes/displace-plate.json" ;;
                 es20) more=tests/scenes/spheres-18k-spot.json ;;
@@ -140,7 +140,8 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 } | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
 
 # Started longest first (measured: gl45-core, gl33-core and gl21 take most
-# of the run; the command-line, bench, install and viewer checks next), so that the
+# of the run; the command-line, bench, install and viewer checks and the
+# es30 and es32 suites, 50-80 s each, next), so that the
 # parallel run ends together. gl45-core and gl33-core of the first platform
 # go before the second's: two suites that run the same scenes side by side
 # would both compute every reference the cache could have shared.
@@ -148,7 +149,8 @@ first=${PLATFORMS%% *}
 awk -v first="image:$first:" '{ w = 1 }
      $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
      w >= 5 && index($2, first) == 1 { w += 10 }
-     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
+     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 }
+     $2 ~ /:es3[02]$/ { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
      { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
 
