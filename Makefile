@@ -107,8 +107,25 @@ $(B)/libstin_reference.a: $(REF_OBJ)
 
 
 # ---- tools -----------------------------------------------------------------
-$(B)/stin-render: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/render/*.c))) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
-	$(CC) $(OPT) -o $@ $^ $(TOOL_LIBS) $(PLATFORM_LIBS)
+# stin-render loads OpenImageIO at its first image file (image_io_lazy.c):
+# linked in, it cost every start 0.55 CPU s, and most runs touch no file.
+ifeq ($(OIIO),no)
+RENDER_IMAGE_IO :=
+RENDER_LIBS := $(TOOL_LIBS)
+else
+RENDER_IMAGE_IO := $(B)/obj/tools/common/lazy/image_io_lazy.o $(B)/libstin_image_io.so
+RENDER_LIBS := $(filter-out -lOpenImageIO -lOpenImageIO_Util,$(TOOL_LIBS))
+endif
+$(B)/stin-render: $(patsubst %.c,$(B)/obj/%.o,$(sort $(wildcard tools/render/*.c))) $(RENDER_IMAGE_IO) $(B)/libstin_tools.a $(B)/libstin_platform.a $(B)/libstin.a
+	$(CC) $(OPT) -o $@ $(filter-out %.so,$^) $(RENDER_LIBS) $(PLATFORM_LIBS)
+$(B)/pic/%.o: %.c
+	@mkdir -p $(@D)
+	@echo "  CC pic  $<"; $(CC) $(TOOL_CFLAGS) -fPIC $(DEPFLAGS) -c $< -o $@
+$(B)/pic/%.o: %.cpp
+	@mkdir -p $(@D)
+	@echo "  CXX pic $<"; $(CXX) $(TOOL_CXXFLAGS) -fPIC $(DEPFLAGS) -c $< -o $@
+$(B)/libstin_image_io.so: $(B)/pic/tools/common/image_io.o $(B)/pic/tools/common/image_buffer.o
+	$(CXX) -shared -o $@ $^ -lOpenImageIO -lOpenImageIO_Util
 # tests/image/readback_log.c: every read-back hashed into STIN_READBACK_LOG
 READBACK_WRAP := -Wl,--wrap=stin_platform_read_color,--wrap=stin_platform_read_depth
 # tests/image/gl_errors.c: every public call that takes a context, so that a

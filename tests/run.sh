@@ -54,11 +54,11 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # maps on glass-panes (10 s), scs and goldfeather with their GLSL ES 3.00
 # depth write-back on csg (42 s), displacement by vertex textures on
 # displace-plate (2 s), normal/parallax/pom on stone-wall (5 s); on es32
-# tessellated displacement on displace-tess (3 s). es32's dual peeling and
-# deep maps (glass-panes, 58 s: both its tiers run) and interval CSG (csg,
-# 117 s) are left to a run by hand. es20-ext (GLSL ES 1.00) runs es30's
-# scenes, csg by the GPU resolve alone (35 s); es20 (no derivatives, depth textures or 32-bit indices)
-# volumes and map-pcf's packed maps on spheres-18k-spot (6 s).
+# dual peeling and deep maps on glass-panes and interval CSG on csg (both
+# its tiers run), tessellated displacement on displace-tess (3 s).
+# es20-ext (GLSL ES 1.00) runs es30's scenes, csg by the GPU resolve alone
+# (35 s); es20 (no derivatives, depth textures or 32-bit indices) volumes
+# and map-pcf's packed maps on spheres-18k-spot (6 s).
 ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext es20}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
@@ -110,7 +110,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         for prof in $ES_PROFILES; do
             case $prof in
                 es30) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-plate.json tests/scenes/stone-wall.json" ;;
-                es32) more=tests/scenes/displace-tess.json ;;
+                es32) more="tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-tess.json" ;;
                 es20-ext) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json
                                 tests/scenes/stone-wall.json tests/scenes/displace-plate.json
                                 tests/scenes/csg.json" ;;
@@ -142,7 +142,8 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
 } | awk '{ printf "%03d %s\n", NR, $0 }' > "$SUITES/list"
 
 # Started longest first (measured: gl45-core, gl33-core and gl21 take most
-# of the run; the command-line, bench, install and viewer checks next), so that the
+# of the run; the command-line, bench, install and viewer checks and the
+# es30 and es32 suites, 50-80 s each, next), so that the
 # parallel run ends together. gl45-core and gl33-core of the first platform
 # go before the second's: two suites that run the same scenes side by side
 # would both compute every reference the cache could have shared.
@@ -150,7 +151,8 @@ first=${PLATFORMS%% *}
 awk -v first="image:$first:" '{ w = 1 }
      $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
      w >= 5 && index($2, first) == 1 { w += 10 }
-     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "bench-es" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
+     $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "bench-es" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 }
+     $2 ~ /:es3[02]$/ { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
      { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
 

@@ -24,6 +24,71 @@ void capture_log_fn(void *user, stin_log_level level, stin_log_item item, const 
     snprintf(c->last_error, sizeof c->last_error, "%s", msg);
 }
 
+void capture_desc(stin_platform *plat, const stin_profile *profile, const scene *s,
+                  const capture_options *o, capture *log_into, stin_desc *d)
+{
+    memset(d, 0, sizeof *d);
+    d->get_proc_address = stin_platform_get_proc_address;
+    d->get_proc_user = plat;
+    d->log = capture_log_fn;
+    d->log_user = log_into;
+    d->tier = o->tier;
+    d->caps_mask = profile->caps_mask | o->extra_mask;
+    d->max_gl_version = profile->max_gl_version;
+    d->techniques[STIN_FEATURE_SHADOWS] = o->shadows;
+    d->techniques[STIN_FEATURE_SURFACE] = o->surface;
+    d->techniques[STIN_FEATURE_DISPLACEMENT] = o->displacement;
+    d->techniques[STIN_FEATURE_CSG] = o->csg_technique;
+    d->displacement.guard_band = o->guard_band;
+    d->displacement.tess_pixels = o->tess_pixels;
+    d->techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] =
+        o->translucent != STIN_TECH_NONE ? o->translucent : STIN_TECH_TRANSLUCENT_SOLID;
+    d->translucent.deep_layers = o->deep_layers;
+    d->translucent.deep_map_size = o->deep_map_size;
+    d->translucent.deep_mono = o->deep_mono;
+    d->translucent.opaque_threshold = o->opaque_threshold;
+    d->debug_flags = o->debug_flags;
+    d->shadows.map_size = o->shadow_map_size;
+    scene_gpu_size_desc(s, d);
+    if (o->csg_capacity)
+        d->csg.max_primitives = d->csg.max_terms = d->csg.max_literals = o->csg_capacity;
+}
+
+/* capture_options.visibility_only: the visibility frame, its depth for P
+ * and the background (the beauty frame's, for a full capture). */
+static int visibility_frame(const scene_gpu *g, stin_context *ctx, stin_platform *p, image *img,
+                            char *err, size_t err_size)
+{
+    int w = stin_platform_width(p), h = stin_platform_height(p), ok = 0;
+    size_t n = (size_t)w * h;
+    uint8_t *zero = calloc(n, 4), *vis = malloc(n * 4);
+    float *depth = malloc(n * sizeof(float));
+    float view[16], proj[16];
+    stin_result r;
+    if (!zero || !vis || !depth) {
+        snprintf(err, err_size, "out of memory");
+        goto done;
+    }
+    r = scene_gpu_frame(g, ctx, w, h, STIN_OUTPUT_VISIBILITY, stin_platform_framebuffer(p));
+    if (r != STIN_OK) {
+        snprintf(err, err_size, "frame failed: %s", stin_result_name(r));
+        goto done;
+    }
+    scene_camera_matrices(&g->src->camera, w, h, view, proj);
+    stin_query_frame_projection(ctx, proj);
+    if (!stin_platform_read_data(p, vis) || !stin_platform_read_depth(p, depth)) {
+        snprintf(err, err_size, "read-back failed");
+        goto done;
+    }
+    ok = aov_assemble(w, h, zero, zero, vis, depth, view, proj, g->src->camera.eye, img, err,
+                      err_size);
+done:
+    free(zero);
+    free(vis);
+    free(depth);
+    return ok;
+}
+
 int capture_render(stin_platform *plat, const stin_profile *profile, const scene *s,
                    const capture_options *o, capture *out, char *err, size_t err_size)
 {
@@ -39,31 +104,7 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     if (keyed && capture_cache_find(&key, out))
         return 1;
     memset(out, 0, sizeof *out);
-    memset(&d, 0, sizeof d);
-    d.get_proc_address = stin_platform_get_proc_address;
-    d.get_proc_user = plat;
-    d.log = capture_log_fn;
-    d.log_user = out;
-    d.tier = o->tier;
-    d.caps_mask = profile->caps_mask | o->extra_mask;
-    d.max_gl_version = profile->max_gl_version;
-    d.techniques[STIN_FEATURE_SHADOWS] = o->shadows;
-    d.techniques[STIN_FEATURE_SURFACE] = o->surface;
-    d.techniques[STIN_FEATURE_DISPLACEMENT] = o->displacement;
-    d.techniques[STIN_FEATURE_CSG] = o->csg_technique;
-    d.displacement.guard_band = o->guard_band;
-    d.displacement.tess_pixels = o->tess_pixels;
-    d.techniques[STIN_FEATURE_TRANSLUCENT_SHADOWS] =
-        o->translucent != STIN_TECH_NONE ? o->translucent : STIN_TECH_TRANSLUCENT_SOLID;
-    d.translucent.deep_layers = o->deep_layers;
-    d.translucent.deep_map_size = o->deep_map_size;
-    d.translucent.deep_mono = o->deep_mono;
-    d.translucent.opaque_threshold = o->opaque_threshold;
-    d.debug_flags = o->debug_flags;
-    d.shadows.map_size = o->shadow_map_size;
-    scene_gpu_size_desc(s, &d);
-    if (o->csg_capacity)
-        d.csg.max_primitives = d.csg.max_terms = d.csg.max_literals = o->csg_capacity;
+    capture_desc(plat, profile, s, o, out, &d);
     size = stin_memory_size(&d);
     block = malloc(size);
     if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {
@@ -82,7 +123,8 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     have_gpu = 1;
     g.csg = o->csg;
     g.csg_count = o->csg_count;
-    if (!aov_capture(&g, ctx, plat, &out->img, NULL, NULL, err, err_size))
+    if (o->visibility_only ? !visibility_frame(&g, ctx, plat, &out->img, err, err_size)
+                           : !aov_capture(&g, ctx, plat, &out->img, NULL, NULL, err, err_size))
         goto done;
     out->counters = stin_debug_query_counters(ctx);
     out->stats = stin_query_frame_stats(ctx);

@@ -32,6 +32,10 @@ typedef struct capture_options {
     uint32_t deep_layers, deep_map_size; /* stin_desc's; 0 = stin's defaults */
     int deep_mono;
     float opaque_threshold; /* stin_desc.translucent.opaque_threshold; 0 = stin's default */
+    /* 1: the visibility frame alone, for rows that read only vis, P, Z and
+     * the statistics (no beauty or normal frame: R G B A and N hold nothing;
+     * P, Z and the background come from that frame's depth) */
+    int visibility_only;
 } capture_options;
 
 typedef struct capture {
@@ -51,6 +55,11 @@ typedef struct capture {
 int capture_render(stin_platform *plat, const stin_profile *profile, const scene *s,
                    const capture_options *o, capture *out, char *err, size_t err_size);
 void capture_free(capture *c);
+/* The desc capture_render creates its context from, logging into log_into
+ * (capture_log_fn): for a test that keeps one such context for several
+ * frames. */
+void capture_desc(stin_platform *plat, const stin_profile *profile, const scene *s,
+                  const capture_options *o, capture *log_into, stin_desc *d);
 /* A stin_log_fn recording into the capture passed as log_user: its error
  * count and last error, and the fallbacks' text (for contexts a test makes
  * itself). */

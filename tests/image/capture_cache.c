@@ -71,6 +71,7 @@ int capture_cache_key(const stin_platform *plat, const stin_profile *profile, co
     ref_hash_u64(&h, o->deep_map_size);
     ref_hash_u64(&h, (uint64_t)o->deep_mono);
     ref_hash_bytes(&h, &o->opaque_threshold, sizeof o->opaque_threshold);
+    ref_hash_u64(&h, (uint64_t)o->visibility_only);
     ref_hash_u64(&h, (uint64_t)(o->csg ? o->csg_count : 0));
     for (i = 0; o->csg && i < o->csg_count; i++) {
         const scene_gpu_csg *p = &o->csg[i];

@@ -1,6 +1,7 @@
 /* SPDX-License-Identifier: MIT */
 #include "test_context.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -130,6 +131,43 @@ int capture_forced(run *r, const scene *s, const capture_options *o, stin_featur
         report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(want),
                out->choice[feature].reason);
         capture_free(out);
+        return 0;
+    }
+    return 1;
+}
+
+int test_context_forced(test_context *t, run *r, const scene *s, const capture_options *o,
+                        stin_feature feature, stin_technique want, capture *log,
+                        const char *name)
+{
+    stin_desc d;
+    size_t size;
+    char err[512];
+    memset(t, 0, sizeof *t);
+    memset(log, 0, sizeof *log);
+    capture_desc(r->plat, r->profile, s, o, log, &d);
+    size = stin_memory_size(&d);
+    t->block = malloc(size);
+    if (!t->block || stin_create(&d, t->block, size, &t->ctx) != STIN_OK) {
+        snprintf(err, sizeof err, "stin_create: %.*s", (int)sizeof err - 14, log->last_error);
+        report(r, strstr(err, " needs ") ? "SKIP" : "FAIL", name, "render failed: %s", err);
+        free(t->block);
+        memset(t, 0, sizeof *t);
+        return 0;
+    }
+    if (!scene_gpu_create(&t->g, s, t->ctx, err, sizeof err)) {
+        report(r, "FAIL", name, "render failed: %s", err);
+        stin_destroy(t->ctx);
+        free(t->block);
+        memset(t, 0, sizeof *t);
+        return 0;
+    }
+    t->g.csg = o->csg;
+    t->g.csg_count = o->csg_count;
+    if (want && stin_query_choice(t->ctx, feature).technique != want) {
+        report(r, "SKIP", name, "%s does not run here (%s)", stin_technique_name(want),
+               stin_query_choice(t->ctx, feature).reason);
+        test_context_destroy(t);
         return 0;
     }
     return 1;

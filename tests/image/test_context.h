@@ -47,5 +47,11 @@ stin_result test_context_frame(test_context *t, const scene *s, const stin_frame
  * FAIL; nothing is left to free then. */
 int capture_forced(run *r, const scene *s, const capture_options *o, stin_feature feature,
                    stin_technique want, capture *out, const char *name);
+/* capture_forced's context without its frames: made from capture_desc for
+ * o, with the same SKIP and FAIL lines (`log` keeps its log), for a test
+ * that draws only the frames it reads. 1 when `feature` runs `want`. */
+int test_context_forced(test_context *t, run *r, const scene *s, const capture_options *o,
+                        stin_feature feature, stin_technique want, capture *log,
+                        const char *name);
 
 #endif

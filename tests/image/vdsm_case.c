@@ -213,8 +213,8 @@ long vdsm_mismatches(const vdsm_case *c, const capture *cap, long *compared, lon
 }
 
 
-int vdsm_render_sized(const vdsm_case *c, uint64_t debug, uint32_t map_size, capture *out,
-                        const char *test)
+static int render(const vdsm_case *c, uint64_t debug, uint32_t map_size, int visibility_only,
+                  capture *out, const char *test)
 {
     capture_options o;
     char err[512], name[256];
@@ -223,6 +223,7 @@ int vdsm_render_sized(const vdsm_case *c, uint64_t debug, uint32_t map_size, cap
     o.shadows = STIN_TECH_SHADOWS_VDSM;
     o.debug_flags = debug;
     o.shadow_map_size = map_size;
+    o.visibility_only = visibility_only;
     if (capture_render(c->r->plat, c->r->profile, c->s, &o, out, err, sizeof err))
         return 1;
     vdsm_name(c, test, name, sizeof name);
@@ -233,7 +234,13 @@ int vdsm_render_sized(const vdsm_case *c, uint64_t debug, uint32_t map_size, cap
 
 int vdsm_render(const vdsm_case *c, uint64_t debug, capture *out, const char *test)
 {
-    return vdsm_render_sized(c, debug, 0, out, test);
+    return render(c, debug, 0, 0, out, test);
+}
+
+int vdsm_render_mask(const vdsm_case *c, uint64_t debug, uint32_t map_size, capture *out,
+                     const char *test)
+{
+    return render(c, debug, map_size, 1, out, test);
 }
 
 /* The reference of a case: 0 (reported under `test`) when it cannot be made. */

@@ -52,11 +52,14 @@ int vdsm_on_shadow_edge(const vdsm_case *c, int x, int y);
  * reference shadow edge. Compared: covered pixels whose P matches. */
 long vdsm_mismatches(const vdsm_case *c, const capture *cap, long *compared, long *ambig,
                      long *isolated, long *on_edge);
-/* The vdsm render with these debug flags (and pyramid size; 0 default); 0
- * and a FAIL under `test` when it fails. */
-int vdsm_render_sized(const vdsm_case *c, uint64_t debug, uint32_t map_size, capture *out,
-                      const char *test);
+/* The vdsm render with these debug flags; 0 and a FAIL under `test` when
+ * it fails. */
 int vdsm_render(const vdsm_case *c, uint64_t debug, capture *out, const char *test);
+/* The same as a visibility frame alone (capture_options.visibility_only),
+ * with a pyramid size (0: the default): for the rows that compare two
+ * renders' masks and statistics, which need neither beauty nor normals. */
+int vdsm_render_mask(const vdsm_case *c, uint64_t debug, uint32_t map_size, capture *out,
+                     const char *test);
 /* The reference of a case: 0 (reported under `test`) when it cannot be
  * made; close it either way. */
 int vdsm_case_open(vdsm_case *c, run *r, const scene *s, const char *scene_name,
