@@ -152,7 +152,7 @@ awk -v first="image:$first:" '{ w = 1 }
      $2 ~ /:gl45-core$/ { w = 6 } $2 ~ /:gl33-core$/ { w = 5 } $2 ~ /:gl21$/ { w = 4 }
      w >= 5 && index($2, first) == 1 { w += 10 }
      $2 == "cli" || $2 == "cli-es" || $2 == "bench" || $2 == "bench-es" || $2 == "install" || $2 == "viewer" || $2 == "web" { w = 3 }
-     $2 ~ /:es3[02]$/ { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
+     $2 ~ /:es(3[02]|20-ext)$/ { w = 3 } $2 ~ /^image:/ && w == 1 { w = 2 }
      { print w, $0 }' "$SUITES/list" | sort -s -k1,1nr | cut -d" " -f2- > "$SUITES/schedule"
 xargs -P "$JOBS" -L 1 sh "$0" --suite "$SUITES" < "$SUITES/schedule"
 
