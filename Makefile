@@ -386,6 +386,8 @@ $(B)/web/scenes.stamp: $(B)/stin-scene-pack $(WEB_SCENES)
 	@mkdir -p $(B)/web/scenes
 	$(B)/stin-scene-pack $(B)/web/scenes $(WEB_SCENES)
 	@ls $(B)/web/scenes | sed -n 's/\.stinscene$$//p' > $(B)/web/scenes/list.txt
+	@mkdir -p $(B)/web/scenes/variants
+	$(B)/stin-scene-pack --variants $(B)/web/scenes/variants tests/scenes/stone-wall.json
 	@touch $@
 $(B)/web/pages.stamp: $(WEB_PAGES)
 	@mkdir -p $(B)/web

@@ -14,6 +14,12 @@
  *   depth-peel       glass-panes: peel-beauty (peel_test.c)
  *   normal, pom      stone-wall: normal-reference, pom-reference
  *                    (surface_test.c)
+ *   parallax-down    stone-wall seen straight down (its pack
+ *                    stone-wall.parallax-down, tools/common/scene_variant.h):
+ *                    parallax-down against the case parallax-down-normal
+ *                    (the same view by normal mapping), which has gl-clean alone
+ *   parallax-limit   stone-wall's parallax-limit view (uv-gradient albedo):
+ *                    parallax-limit against the reference (surface_test.c)
  *   displace         displace-plate: displace position, silhouette
  *                    (displace_test.c)
  *   scs-CASE         csg: csg-scs-CASE P and N of csg.json's product CASE
@@ -41,6 +47,7 @@
 #include "capture.h"
 #include "image_test.h"
 #include "scene.h"
+#include "scene_variant.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -53,6 +60,9 @@ typedef enum browser_rows {
     ROWS_COLOURED,
     ROWS_PEEL,
     ROWS_SURFACE,
+    ROWS_DOWN,    /* against the frame of the case its `csg` field names */
+    ROWS_LIMIT,
+    ROWS_PAIR,    /* a frame another case compares with: gl-clean alone */
     ROWS_DISPLACE,
     ROWS_CSG,
     ROWS_REFUSAL, /* no frames: the front end's refusal of a context without WebGL 2 */
@@ -67,7 +77,8 @@ typedef struct browser_case {
     browser_rows rows;
     uint32_t map_size;
     int kernel;
-    const char *csg;      /* ROWS_CSG: csg_test.c's case (the page draws that product alone) */
+    const char *csg;      /* ROWS_CSG: csg_test.c's case (the page draws that product alone);
+                             ROWS_DOWN: the case it is compared with */
 } browser_case;
 
 static const browser_case cases[] = {
@@ -78,6 +89,9 @@ static const browser_case cases[] = {
     {"depth-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DEPTH_PEEL, ROWS_PEEL, 0, 0, NULL},
     {"normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_SURFACE, 0, 0, NULL},
     {"pom", "stone-wall", STIN_TECH_SURFACE_POM, ROWS_SURFACE, 0, 0, NULL},
+    {"parallax-down", "stone-wall", STIN_TECH_SURFACE_PARALLAX, ROWS_DOWN, 0, 0, "parallax-down-normal"},
+    {"parallax-down-normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_PAIR, 0, 0, NULL},
+    {"parallax-limit", "stone-wall", STIN_TECH_SURFACE_PARALLAX, ROWS_LIMIT, 0, 0, NULL},
     {"displace", "displace-plate", STIN_TECH_DISPLACEMENT_VTF, ROWS_DISPLACE, 0, 0, NULL},
     {"scs-carved", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "carved"},
     {"scs-both", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "both"},
@@ -93,6 +107,15 @@ static const browser_case cases[] = {
     {"webgl1", "four-lights", STIN_TECH_NONE, ROWS_REFUSAL, 0, 0, NULL},
     {"sweep", NULL, STIN_TECH_NONE, ROWS_SWEEP, 0, 0, NULL},
 };
+
+/* The view of the scene (scene_variant.h) the case's page drew, packed of
+ * its own (tests/web/test.js), or NULL: the scene file's. */
+static const char *case_variant(const browser_case *bc)
+{
+    return bc->rows == ROWS_LIMIT ? "parallax-limit"
+         : bc->rows == ROWS_DOWN || bc->rows == ROWS_PAIR ? "parallax-down"
+                                                            : NULL;
+}
 
 /* name is one of list's comma-separated words */
 static int in_list(const char *list, const char *name)
@@ -301,10 +324,33 @@ static void skip_row(run *r, const char *dir, const char *scene_name, const brow
                why[0] ? why : "created", cap.last_error[0] ? cap.last_error : "no error logged");
 }
 
-/* The native rows of the case's technique on the browser's frame. */
-static void case_rows(run *r, const browser_case *bc, const char *path, const char *scene_name,
-                      const scene *s, const capture *cap, const unsigned char *beauty)
+/* parallax-down against its pair's frame (the same view, normal mapping). */
+static void down_rows(run *r, const char *dir, const char *scene_name, const scene *s,
+                      const browser_case *bc, const capture *cap)
 {
+    char name[256], why[512];
+    const browser_case *pair = NULL;
+    unsigned char *beauty = NULL;
+    capture other;
+    size_t i;
+    snprintf(name, sizeof name, "gl2/%s/parallax-down", scene_name);
+    for (i = 0; i < sizeof cases / sizeof cases[0]; i++)
+        if (!strcmp(cases[i].name, bc->csg))
+            pair = &cases[i];
+    if (pair && load_case(r, dir, scene_name, s, pair, &other, &beauty, why, sizeof why))
+        surface_down_rows(r, name, cap, &other);
+    else
+        report(r, "FAIL", name, "%s: %s", bc->csg, pair ? why : "no such case");
+    free(beauty);
+    capture_free(&other);
+}
+
+/* The native rows of the case's technique on the browser's frame. */
+static void case_rows(run *r, const browser_case *bc, const char *dir, const char *path,
+                      const char *scene_name, const scene *s, const capture *cap,
+                      const unsigned char *beauty)
+{
+    char name[256];
     switch (bc->rows) {
     case ROWS_LIGHTING: render_rows(r, STIN_TIER_GL2, scene_name, s, &cap->img, 0); break;
     case ROWS_VOLUME: shadow_vis_rows(r, STIN_TIER_GL2, path, cap); break;
@@ -314,6 +360,12 @@ static void case_rows(run *r, const browser_case *bc, const char *path, const ch
     case ROWS_SURFACE: /* ANGLE draws upside down: a quad's derivatives from its lower row */
         surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, 1, cap);
         break;
+    case ROWS_DOWN: down_rows(r, dir, scene_name, s, bc, cap); break;
+    case ROWS_LIMIT:
+        snprintf(name, sizeof name, "gl2/%s/parallax-limit", scene_name);
+        surface_limit_rows(r, name, s, s->objects[scene_variant_parallax_object(s)].material, cap);
+        break;
+    case ROWS_PAIR: break; /* down_rows reads it */
     case ROWS_DISPLACE: displace_frame_rows(r, STIN_TIER_GL2, path, cap); break;
     case ROWS_CSG: csg_frame_rows(r, STIN_TIER_GL2, path, bc->csg, bc->tech, cap); break;
     case ROWS_REFUSAL: /* browser_tests: refusal_row, sweep_row, skip_row */
@@ -324,7 +376,7 @@ static void case_rows(run *r, const browser_case *bc, const char *path, const ch
 
 void browser_tests(run *r, const char *dir, const char *list, const char *path)
 {
-    scene s;
+    scene s, view;
     char err[512], scene_name[128], name[256], why[512];
     size_t i;
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
@@ -347,9 +399,15 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
             continue;
         }
         snprintf(name, sizeof name, "gl2/%s/%s/gl-clean", scene_name, bc->name);
-        if (!load_case(r, dir, scene_name, &s, bc, &cap, &beauty, why, sizeof why)) {
+        view = s;
+        if (case_variant(bc) && !scene_variant_make(&s, case_variant(bc), &view)) {
+            report(r, "FAIL", name, "no %s view of the scene", case_variant(bc));
+            continue;
+        }
+        if (!load_case(r, dir, scene_name, &view, bc, &cap, &beauty, why, sizeof why)) {
             report(r, "FAIL", name, "%s", why);
             capture_free(&cap);
+            scene_variant_free(&view, &s);
             continue;
         }
         if (cap.log_errors)
@@ -358,9 +416,10 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
             report(r, "PASS", name, "created, every frame STIN_OK with WebGL's error flag clear, "
                                     "no error logged, drawn by %s",
                    stin_technique_name(bc->tech));
-        case_rows(r, bc, path, scene_name, &s, &cap, beauty);
+        case_rows(r, bc, dir, path, scene_name, &view, &cap, beauty);
         free(beauty);
         capture_free(&cap);
+        scene_variant_free(&view, &s);
     }
     scene_free(&s);
 }

@@ -43,6 +43,14 @@ void peel_frame_rows(run *r, stin_tier tier, const char *path, const uint8_t *rg
 void surface_frame_rows(run *r, stin_tier tier, const char *path, stin_technique tech,
                         int low, const struct capture *cap);
 void displace_frame_rows(run *r, stin_tier tier, const char *path, const struct capture *cap);
+/* parallax-down: a parallax frame against a normal-mapping one of the
+ * parallax-down view; parallax-limit: a parallax frame of the parallax-limit
+ * scene g (its material mi's uv shift) against the reference (surface_test.c;
+ * the views in tools/common/scene_variant.h). */
+void surface_down_rows(run *r, const char *name, const struct capture *parallax,
+                       const struct capture *normal);
+void surface_limit_rows(run *r, const char *name, const struct scene *g, int mi,
+                        const struct capture *a);
 /* P and N of csg.json's case `name` (carved, both, common) resolved by tech (csg_test.c). */
 void csg_frame_rows(run *r, stin_tier tier, const char *path, const char *name,
                     stin_technique tech, const struct capture *cap);

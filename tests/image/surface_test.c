@@ -42,6 +42,7 @@
 #include "image_test.h"
 #include "reference.h"
 #include "reference_surface.h"
+#include "scene_variant.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -59,12 +60,11 @@
 #define SURF_REF_TOLERANCE (8.0 / 255.0)
 #define SURF_REF_MIN_MATCH 0.99
 #define SURF_REF_MAX_MEAN (1.0 / 255.0)
-/* parallax-limit: the height scale is raised so that the 8-bit read-back of
- * the uv (1/256 uv a channel, 0.016 scene units across the 4-unit wall) is
- * small against |h'| (up to scale / 2); pixels whose hit uv lies within the
- * margin of the gradient's repeat seam (where bilinear and mip filtering mix
- * both ends) are left out */
-#define SURF_LIMIT_SCALE 0.3f
+/* parallax-limit: the height scale is raised (SCENE_VARIANT_LIMIT_SCALE) so
+ * that the 8-bit read-back of the uv (1/256 uv a channel, 0.016 scene units
+ * across the 4-unit wall) is small against |h'| (up to scale / 2); pixels
+ * whose hit uv lies within the margin of the gradient's repeat seam (where
+ * bilinear and mip filtering mix both ends) are left out */
 #define SURF_LIMIT_UV_LSB (1.0 / 256.0)
 #define SURF_LIMIT_MARGIN 0.12
 #define SURF_LIMIT_MIN_MATCH 0.90
@@ -252,61 +252,30 @@ static void test_flat(run *r, stin_tier tier, const scene *s, const char *scene_
 
 /* ---- parallax-down -------------------------------------------------------- */
 
-/* The first normal-mapped object's centre and world normal (its mesh's first
- * vertex normal through the transform). */
-static int mapped_object(const scene *s, float centre[3], float normal[3])
+void surface_down_rows(run *r, const char *name, const capture *parallax, const capture *normal)
 {
-    int o, k;
-    for (o = 0; o < s->object_count; o++) {
-        const scene_material *m = &s->materials[s->objects[o].material];
-        const scene_mesh *me = &s->meshes[s->objects[o].mesh];
-        const float *x = s->objects[o].transform;
-        float len;
-        if (m->normal < 0 || !me->vertex_count)
-            continue;
-        for (k = 0; k < 3; k++) {
-            centre[k] = x[12 + k];
-            normal[k] = x[k] * me->normals[0] + x[4 + k] * me->normals[1] + x[8 + k] * me->normals[2];
-        }
-        len = sqrtf(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
-        for (k = 0; k < 3; k++)
-            normal[k] /= len;
-        return 1;
-    }
-    return 0;
+    long cnt, over;
+    double max;
+    diff(parallax, normal, SURF_DOWN_TOLERANCE, &cnt, &over, &max);
+    report(r, cnt && !over ? "PASS" : "FAIL", name,
+           "seen straight down (0.25-degree lens, |V.xy| < 0.003), parallax equals normal mapping within 2/255: "
+           "%ld of %ld pixels over (max %.5f)", over, cnt, max);
 }
 
 static void test_down(run *r, stin_tier tier, const scene *s, const char *scene_name)
 {
     char name[256];
-    scene down = *s;
-    float c[3], n[3];
+    scene down;
     capture a, b;
-    long cnt, over;
-    double max;
-    int k;
     snprintf(name, sizeof name, "%s/%s/parallax-down", stin_tier_name(tier), scene_name);
-    if (!mapped_object(s, c, n)) {
+    if (!scene_variant_down(s, &down)) {
         report(r, "SKIP", name, "no normal-mapped object");
         return;
     }
-    for (k = 0; k < 3; k++) {
-        down.camera.eye[k] = c[k] + 160.0f * n[k];
-        down.camera.target[k] = c[k];
-    }
-    down.camera.up[0] = fabsf(n[1]) > 0.9f ? 1.0f : 0.0f;
-    down.camera.up[1] = fabsf(n[1]) > 0.9f ? 0.0f : 1.0f;
-    down.camera.up[2] = 0.0f;
-    down.camera.fovy_deg = 0.25f;
-    down.camera.near_plane = 150.0f;
-    down.camera.far_plane = 170.0f;
     if (!render(r, &down, tier, STIN_TECH_SURFACE_PARALLAX, &a, name, 0))
         return;
     if (render(r, &down, tier, STIN_TECH_SURFACE_NORMAL, &b, name, 0)) {
-        diff(&a, &b, SURF_DOWN_TOLERANCE, &cnt, &over, &max);
-        report(r, cnt && !over ? "PASS" : "FAIL", name,
-               "seen straight down (0.25-degree lens, |V.xy| < 0.003), parallax equals normal mapping within 2/255: "
-               "%ld of %ld pixels over (max %.5f)", over, cnt, max);
+        surface_down_rows(r, name, &a, &b);
         capture_free(&b);
     }
     capture_free(&a);
@@ -451,141 +420,49 @@ void surface_frame_rows(run *r, stin_tier tier, const char *path, stin_technique
 
 /* ---- parallax-limit ------------------------------------------------------- */
 
-/* The first object with both a normal and a height map: its index, or -1. */
-static int parallax_object(const scene *s)
-{
-    int o;
-    for (o = 0; o < s->object_count; o++) {
-        const scene_material *m = &s->materials[s->objects[o].material];
-        if (m->normal >= 0 && m->height >= 0 && s->meshes[s->objects[o].mesh].uvs)
-            return o;
-    }
-    return -1;
-}
-
-/* A unit vector in the plane of n (for the grazing camera and light). */
-static void in_plane(const float n[3], float t[3], float b[3])
-{
-    float up[3] = {0, 1, 0}, len;
-    int k;
-    if (fabsf(n[1]) > 0.9f) {
-        up[0] = 1;
-        up[1] = 0;
-    }
-    t[0] = n[1] * up[2] - n[2] * up[1];
-    t[1] = n[2] * up[0] - n[0] * up[2];
-    t[2] = n[0] * up[1] - n[1] * up[0];
-    len = sqrtf(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
-    for (k = 0; k < 3; k++)
-        t[k] /= len;
-    b[0] = n[1] * t[2] - n[2] * t[1];
-    b[1] = n[2] * t[0] - n[0] * t[2];
-    b[2] = n[0] * t[1] - n[1] * t[0];
-}
-
 static int near_seam(double x, double margin)
 {
     double f = x - floor(x);
     return f < margin || f > 1.0 - margin;
 }
 
-static void test_parallax_limit(run *r, stin_tier tier, const scene *s, const char *scene_name)
+void surface_limit_rows(run *r, const char *name, const scene *g, int mi, const capture *a)
 {
-    char name[256], err[512];
-    scene g = *s;
-    scene_texture *tex = NULL;
-    scene_material *mat = NULL;
-    capture a;
-    reference *ref = NULL;
-    ref_surface *rs = NULL;
-    ref_hit *hits = NULL;
-    float c[3], n[3], t[3], b[3];
-    const double bias = 0.5 * SURF_LIMIT_SCALE, e = SURF_LIMIT_UV_LSB;
-    const double tol_h = SURF_LIMIT_SCALE / 255.0;
+    char err[512];
+    reference *ref;
+    ref_surface *rs;
+    ref_hit *hits;
+    const double bias = 0.5 * SCENE_VARIANT_LIMIT_SCALE, e = SURF_LIMIT_UV_LSB;
+    const double tol_h = SCENE_VARIANT_LIMIT_SCALE / 255.0;
     long cnt = 0, over = 0, agree = 0, unl_over = 0;
     double max_ratio = 0, max_tight = 0, max_excess = -1e30, max_tol = 0, max_unl = 0, min_vz = 1, max_shift = 0;
-    int o, mi, x, y, i, k, captured = 0;
-    snprintf(name, sizeof name, "%s/%s/parallax-limit", stin_tier_name(tier), scene_name);
-    o = parallax_object(s);
-    if (o < 0 || !mapped_object(s, c, n)) {
-        report(r, "SKIP", name, "no object with normal and height maps");
-        return;
-    }
-    mi = s->objects[o].material;
-    tex = calloc((size_t)s->texture_count + 1, sizeof *tex);
-    mat = calloc((size_t)s->material_count, sizeof *mat);
-    if (!tex || !mat)
-        goto oom;
-    /* the albedo: a 256 x 256 gradient whose texel (i, j) is (i, j, 0): the
-     * bilinear sample at any uv away from the repeat seam is exactly
-     * ((u * 256 - 0.5) / 255, (v * 256 - 0.5) / 255), at every mip level */
-    memcpy(tex, s->textures, sizeof *tex * (size_t)s->texture_count);
-    tex[s->texture_count].kind = SCENE_TEXTURE_ALBEDO;
-    snprintf(tex[s->texture_count].name, sizeof tex[s->texture_count].name, "uv-gradient");
-    tex[s->texture_count].width = tex[s->texture_count].height = 256;
-    tex[s->texture_count].rgba = malloc(4 * 256 * 256);
-    if (!tex[s->texture_count].rgba)
-        goto oom;
-    for (y = 0; y < 256; y++)
-        for (x = 0; x < 256; x++) {
-            uint8_t *q = tex[s->texture_count].rgba + 4 * (256 * y + x);
-            q[0] = (uint8_t)x;
-            q[1] = (uint8_t)y;
-            q[2] = 0;
-            q[3] = 255;
-        }
-    memcpy(mat, s->materials, sizeof *mat * (size_t)s->material_count);
-    mat[mi].albedo = s->texture_count;
-    for (k = 0; k < 4; k++)
-        mat[mi].color[k] = 1.0f;
-    for (k = 0; k < 3; k++)
-        mat[mi].specular[k] = 0.0f;
-    mat[mi].height_scale = SURF_LIMIT_SCALE;
-    mat[mi].self_shadow = 0;
-    g.textures = tex;
-    g.texture_count = s->texture_count + 1;
-    g.materials = mat;
-    g.light_count = 0; /* beauty = ambient 1 * albedo: the sampled uv */
-    for (k = 0; k < 3; k++)
-        g.ambient[k] = 1.0f;
-    in_plane(n, t, b);
-    for (k = 0; k < 3; k++) { /* grazing: V.z from ~0.2 to ~0.45 over the object */
-        g.camera.eye[k] = c[k] + 5.0f * t[k] + 1.5f * n[k];
-        g.camera.target[k] = c[k];
-        g.camera.up[k] = b[k];
-    }
-    g.camera.fovy_deg = 40.0f;
-    g.camera.near_plane = 0.5f;
-    g.camera.far_plane = 30.0f;
-    if (!render(r, &g, tier, STIN_TECH_SURFACE_PARALLAX, &a, name, 0))
-        goto done;
-    captured = 1;
-    ref = reference_create(&g, err, sizeof err);
-    rs = ref_surface_create(&g);
-    hits = malloc(sizeof *hits * (size_t)a.img.width * a.img.height);
-    if (!ref || !rs || !hits || !reference_primary(ref, a.img.width, a.img.height, hits)) {
+    int x, y, i, k;
+    ref = reference_create(g, err, sizeof err);
+    rs = ref_surface_create(g);
+    hits = malloc(sizeof *hits * (size_t)a->img.width * a->img.height);
+    if (!ref || !rs || !hits || !reference_primary(ref, a->img.width, a->img.height, hits)) {
         report(r, "FAIL", name, "reference: %s", ref ? "out of memory" : err);
         goto done;
     }
-    for (y = 0; y < a.img.height; y++)
-        for (x = 0; x < a.img.width; x++) {
-            const ref_hit *h = &hits[(size_t)(a.img.height - 1 - y) * a.img.width + x];
-            const float *p = px(&a.img, x, y);
+    for (y = 0; y < a->img.height; y++)
+        for (x = 0; x < a->img.width; x++) {
+            const ref_hit *h = &hits[(size_t)(a->img.height - 1 - y) * a->img.width + x];
+            const float *p = px(&a->img, x, y);
             double hp, vt[3], duv[2], off[2], q[2], shift, tol = 0, lim, vxy, dev;
-            if (!h->hit || !(p[AOV_Z] > 0) || s->objects[h->object].material != mi ||
+            if (!h->hit || !(p[AOV_Z] > 0) || g->objects[h->object].material != mi ||
                 near_seam(h->uv[0], SURF_LIMIT_MARGIN) || near_seam(h->uv[1], SURF_LIMIT_MARGIN) ||
-                !ref_surface_parallax_terms(&g, rs, h, -1.0f, &hp, vt))
+                !ref_surface_parallax_terms(g, rs, h, -1.0f, &hp, vt))
                 continue;
             for (k = 0; k < 2; k++) { /* the sampled uv, unwrapped to the hit's period */
                 double us = (p[AOV_R + k] * 255.0 + 0.5) / 256.0;
                 us += floor(h->uv[k] - us + 0.5);
                 duv[k] = us - h->uv[k];
             }
-            if (!ref_surface_uv_to_plane(&g, rs, h, duv, off))
+            if (!ref_surface_uv_to_plane(g, rs, h, duv, off))
                 continue;
             for (i = 0; i < 2; i++) { /* 8-bit uv error (+-e, +-e) in scene units */
                 double qe[2] = {e, i ? -e : e};
-                ref_surface_uv_to_plane(&g, rs, h, qe, q);
+                ref_surface_uv_to_plane(g, rs, h, qe, q);
                 if (sqrt(q[0] * q[0] + q[1] * q[1]) > tol)
                     tol = sqrt(q[0] * q[0] + q[1] * q[1]);
             }
@@ -627,23 +504,36 @@ static void test_parallax_limit(run *r, stin_tier tier, const scene *s, const ch
                "|shift| - |h'| %.4f, max |shift| %.4f; tol = 1/256 uv a channel in scene units + "
                "scale/255, up to %.4f); shift equals V.xy h' within tol on %.2f%% (need %.0f%%); "
                "the unlimited V.xy h' / V.z would exceed the bound on %ld pixels (up to %.2f |h'|)",
-               SURF_LIMIT_SCALE, min_vz, cnt - over, cnt, over, max_tight, max_ratio, max_excess, max_shift,
+               SCENE_VARIANT_LIMIT_SCALE, min_vz, cnt - over, cnt, over, max_tight, max_ratio, max_excess, max_shift,
                max_tol, 100.0 * match, 100.0 * SURF_LIMIT_MIN_MATCH, unl_over, max_unl);
     }
-    goto done;
-oom:
-    report(r, "FAIL", name, "out of memory");
 done:
     free(hits);
     ref_surface_destroy(rs);
     if (ref)
         reference_destroy(ref);
-    if (captured)
+}
+
+static void test_parallax_limit(run *r, stin_tier tier, const scene *s, const char *scene_name)
+{
+    char name[256];
+    scene g;
+    capture a;
+    int mi;
+    snprintf(name, sizeof name, "%s/%s/parallax-limit", stin_tier_name(tier), scene_name);
+    if (scene_variant_parallax_object(s) < 0) {
+        report(r, "SKIP", name, "no object with normal and height maps");
+        return;
+    }
+    if (!scene_variant_limit(s, &g, &mi)) {
+        report(r, "FAIL", name, "out of memory");
+        return;
+    }
+    if (render(r, &g, tier, STIN_TECH_SURFACE_PARALLAX, &a, name, 0)) {
+        surface_limit_rows(r, name, &g, mi, &a);
         capture_free(&a);
-    if (tex)
-        free(tex[s->texture_count].rgba);
-    free(tex);
-    free(mat);
+    }
+    scene_variant_free(&g, s);
 }
 
 /* ---- pom-self-shadow ------------------------------------------------------ */
@@ -662,8 +552,8 @@ static void test_pom_shadow(run *r, stin_tier tier, const scene *s, const char *
     long cnt = 0, agree = 0, agree_off = 0, gl_dark = 0, ref_dark = 0;
     int o, mi, x, y, k, have_on = 0, have_off = 0;
     snprintf(name, sizeof name, "%s/%s/pom-self-shadow", stin_tier_name(tier), scene_name);
-    o = parallax_object(s);
-    if (o < 0 || !mapped_object(s, c, n)) {
+    o = scene_variant_parallax_object(s);
+    if (o < 0 || !scene_variant_mapped(s, c, n)) {
         report(r, "SKIP", name, "no object with normal and height maps");
         return;
     }
@@ -680,7 +570,7 @@ static void test_pom_shadow(run *r, stin_tier tier, const scene *s, const char *
     for (k = 0; k < 3; k++)
         mat[mi].specular[k] = 0.0f;
     mat[mi].self_shadow = 1;
-    in_plane(n, t, b);
+    scene_variant_plane(n, t, b);
     /* a grazing white directional light (L.N = SURF_SHADOW_LIGHT_Z), from
      * above and the side: brick ledges shadow the mortar under them */
     for (k = 0; k < 3; k++)

@@ -10,7 +10,8 @@
 // front end of its own (?sweep=WxH, default 128x96), frames not read back:
 // drawn, or the fall-back stin names. The other cases force tier gl2 and
 // their technique: force: techniques by name; options: web_option's;
-// scenes: the scenes a case is for. browser_test.c's table agrees.
+// scenes: the scenes a case is for; variant: a view of the scene packed of its
+// own. browser_test.c's table agrees.
 const CASES = {
   sweep: { tier: 'auto', shadows: '', sweep: true },
   lighting: { shadows: 'shadows-off', size: 0, kernel: 0, scenes: ['four-lights'] },
@@ -21,6 +22,11 @@ const CASES = {
   'depth-peel': { shadows: 'shadows-off', force: ['depth-peel'], scenes: ['glass-panes'] },
   normal: { shadows: 'shadows-off', force: ['normal'], scenes: ['stone-wall'] },
   pom: { shadows: 'shadows-off', force: ['pom'], scenes: ['stone-wall'] },
+  // surface_test.c's views of stone-wall (variant: its pack scenes/variants/SCENE.VARIANT):
+  // parallax and normal mapping seen straight down; parallax's uv shift through a uv gradient
+  'parallax-down': { shadows: 'shadows-off', force: ['parallax'], variant: 'parallax-down', scenes: ['stone-wall'] },
+  'parallax-down-normal': { shadows: 'shadows-off', force: ['normal'], variant: 'parallax-down', scenes: ['stone-wall'] },
+  'parallax-limit': { shadows: 'shadows-off', force: ['parallax'], variant: 'parallax-limit', scenes: ['stone-wall'] },
   displace: { shadows: 'shadows-off', force: ['displace'], scenes: ['displace-plate'] },
   // techniques WebGL 2 cannot run (tier gl4's): forced at stin's best tier, frames not read
   // back; stin must fall back and say why (a SKIP row with its reason)
@@ -125,12 +131,15 @@ async function sweep(scene, size) {
     await post('/log', 'browser: ' + (gl ? gl.getParameter(gl.VERSION) : 'no WebGL 2'));
     for (const scene of (q.get('scenes') || 'four-lights').split(',')) {
       const mine = names.filter((n) => !CASES[n].scenes || CASES[n].scenes.includes(scene));
-      if (mine.some((n) => !CASES[n].sweep && !CASES[n].refusal))
-        await f.loadScene(`scenes/${scene}.stinscene`);
+      let loaded = null; // the pack in f: a case's variant loads its own
       for (const name of mine) {
-        if (CASES[name].refusal) await refusal(scene);
-        else if (CASES[name].sweep) await sweep(scene, small);
-        else await draw(f, scene, name, CASES[name], !CASES[name].skip);
+        const c = CASES[name];
+        const pack = c.variant ? `scenes/variants/${scene}.${c.variant}` : `scenes/${scene}`;
+        if (!c.sweep && !c.refusal && loaded !== pack) await f.loadScene(`${pack}.stinscene`);
+        if (!c.sweep && !c.refusal) loaded = pack;
+        if (c.refusal) await refusal(scene);
+        else if (c.sweep) await sweep(scene, small);
+        else await draw(f, scene, name, c, !c.skip);
       }
     }
   } catch (e) {
