@@ -7,6 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+void msaa_ref_init(msaa_ref *m, const scene *s)
+{
+    memset(m, 0, sizeof *m);
+    m->w = s->width;
+    m->h = s->height;
+}
+
 int msaa_ref_alloc(msaa_ref *m, int n)
 {
     size_t px = (size_t)m->w * m->h;

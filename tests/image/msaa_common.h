@@ -23,6 +23,8 @@ typedef struct msaa_ref {
                                     * centre, has another visibility there */
 } msaa_ref;
 
+/* m emptied, sized to the scene (no arrays yet). */
+void msaa_ref_init(msaa_ref *m, const scene *s);
 /* m->w, m->h set: the arrays for n samples (1, or 0 out of memory). */
 int msaa_ref_alloc(msaa_ref *m, int n);
 /* m->hits filled (sample k's image at hits + k w h): each sample shaded

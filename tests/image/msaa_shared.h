@@ -20,7 +20,7 @@ int msaa_sample_positions(run *r, float pos[][2]);
 /* Techniques a frame forces; STIN_TECH_NONE leaves the feature's default. */
 typedef struct msaa_techniques {
     stin_tier tier;
-    stin_technique shadows, transparency, translucent;
+    stin_technique shadows, transparency, translucent, surface;
 } msaa_techniques;
 
 /* One frame of the scene at its own size into the platform's target, read

@@ -76,13 +76,12 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int asked, int
 {
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
-    msaa_techniques tech = {mc->tier, mc->shadows, STIN_TECH_NONE, STIN_TECH_NONE};
+    msaa_techniques tech = {mc->tier, mc->shadows, STIN_TECH_NONE, STIN_TECH_NONE,
+                            STIN_TECH_NONE};
     msaa_ref m;
     msaa_band b;
     int got;
-    memset(&m, 0, sizeof m);
-    m.w = s->width;
-    m.h = s->height;
+    msaa_ref_init(&m, s);
     if (asked == MSAA_SAMPLES)
         snprintf(name, sizeof name, "%s/msaa-%s", stin_tier_name(mc->tier),
                  stin_technique_name(mc->shadows));
