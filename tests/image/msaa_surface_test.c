@@ -2,8 +2,8 @@
 /*
  * Multisampled targets (issue 39), surface detail: msaa/wall.json (a
  * normal- and height-mapped panel at slants against the background) drawn
- * by normal mapping and parallax occlusion mapping on GL2 and GL4 into a
- * 4x target, shadows off (the surface reference is unshadowed). The
+ * by normal mapping, parallax (offset limiting) and parallax occlusion
+ * mapping on GL2 and GL4 into a 4x target, shadows off (the surface reference is unshadowed). The
  * reference takes each sample's surface to the pixel centre on its plane
  * (where multisampling shades, once a pixel) and shades it there as
  * surface_test.c does (stin's mip chains at the pixel's footprint), the
@@ -141,6 +141,8 @@ void msaa_surface_tests(run *r, stin_tier tier, const char *path)
         return;
     one_case(r, &s, tier, STIN_TECH_SURFACE_NORMAL, REF_SURFACE_NORMAL, (const float(*)[2])pos,
              n);
+    one_case(r, &s, tier, STIN_TECH_SURFACE_PARALLAX, REF_SURFACE_PARALLAX,
+             (const float(*)[2])pos, n);
     one_case(r, &s, tier, STIN_TECH_SURFACE_POM, REF_SURFACE_POM, (const float(*)[2])pos, n);
     msaa_close(r, name, &s);
 }
