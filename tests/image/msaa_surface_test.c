@@ -3,9 +3,9 @@
  * Multisampled targets (issue 39), surface detail: msaa/wall.json (a
  * normal- and height-mapped panel at slants against the background) drawn
  * by normal mapping, parallax (offset limiting) and parallax occlusion
- * mapping on GL2 and GL4 into a 4x target, shadows off (the surface reference is unshadowed). The
- * reference takes each sample's surface to the pixel centre on its plane
- * (where multisampling shades, once a pixel) and shades it there as
+ * mapping on GL2 and GL4 into a 4x target, shadows off (the surface
+ * reference is unshadowed). The reference takes each sample's surface to
+ * the pixel centre on its plane (where multisampling shades, once a pixel) and shades it there as
  * surface_test.c does (stin's mip chains at the pixel's footprint), the
  * background elsewhere, box-filtered as the resolve. The silhouette band
  * (msaa_compare_band) catches an outline shaded at the wrong uv or a
