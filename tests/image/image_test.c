@@ -382,6 +382,7 @@ int main(int argc, char **argv)
         for (i = first_scene; i < argc; i++) {
             if (displaced && displaced[i]) {
                 displace_tests(&r, tiers[t], argv[i]);
+                msaa_displace_tests(&r, tiers[t], argv[i]);
                 continue;
             }
             test_scene(&r, tiers[t], argv[i]);

@@ -213,7 +213,7 @@ static void one_case(run *r, const scene *s, const blend_case *bc, const float p
                      blend_ref *m)
 {
     msaa_techniques tech = {bc->tier, STIN_TECH_SHADOWS_VOLUME, bc->transparency,
-                            bc->translucent, STIN_TECH_NONE};
+                            bc->translucent, STIN_TECH_NONE, STIN_TECH_NONE};
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
     band_result b;

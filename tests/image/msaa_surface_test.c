@@ -28,10 +28,21 @@
 #define SURF_MSAA_MAX_BAND_OVER 3
 #define SURF_MSAA_MAX_OVER_FRACTION 0.01
 
+typedef struct surf_row {
+    const scene *s;
+    stin_tier tier;
+    int ref_tech;
+    const float (*pos)[2];
+} surf_row;
+
 /* Each sample shaded at its surface's point at the pixel centre. */
-static int ref_build(const scene *s, stin_tier tier, int ref_tech, const float pos[][2],
-                     msaa_ref *m, char *err, size_t err_size)
+static int ref_build(const void *ctx, msaa_ref *m, char *err, size_t err_size)
 {
+    const surf_row *sr = ctx;
+    const scene *s = sr->s;
+    stin_tier tier = sr->tier;
+    int ref_tech = sr->ref_tech;
+    const float(*pos)[2] = sr->pos;
     reference *ref = reference_create(s, err, err_size);
     ref_surface *rs = ref_surface_create(s);
     size_t px = (size_t)m->w * m->h, i;
@@ -87,39 +98,18 @@ static int ref_build(const scene *s, stin_tier tier, int ref_tech, const float p
 static void one_case(run *r, const scene *s, stin_tier tier, stin_technique surface,
                      int ref_tech, const float pos[][2], int n)
 {
+    static const msaa_bounds bounds = {SURF_MSAA_TOLERANCE, SURF_MSAA_MAX_BAND_OVER,
+                                       SURF_MSAA_MAX_OVER_FRACTION};
     msaa_techniques tech = {tier, STIN_TECH_SHADOWS_OFF, STIN_TECH_NONE, STIN_TECH_NONE,
-                            surface};
-    uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
-    char name[128], why[512] = "";
-    msaa_band b;
-    msaa_ref m;
-    int got;
-    msaa_ref_init(&m, s);
-    m.n = n;
+                            surface, STIN_TECH_NONE};
+    surf_row sr;
+    char name[128];
+    sr.s = s;
+    sr.tier = tier;
+    sr.ref_tech = ref_tech;
+    sr.pos = pos;
     snprintf(name, sizeof name, "%s/msaa-%s", stin_tier_name(tier), stin_technique_name(surface));
-    got = rgba ? msaa_render(r, s, &tech, rgba, why, sizeof why) : 0;
-    if (got < 0) {
-        report(r, "SKIP", name, "%s", why);
-    } else if (!got) {
-        report(r, "FAIL", name, "%s", why);
-    } else if (!ref_build(s, tier, ref_tech, pos, &m, why, sizeof why)) {
-        report(r, "FAIL", name, "%s", why);
-    } else {
-        int pass;
-        msaa_compare_band(&m, rgba, r->width, SURF_MSAA_TOLERANCE, &b);
-        pass = b.over <= SURF_MSAA_MAX_BAND_OVER && b.band > 100 &&
-               b.compared_over <= SURF_MSAA_MAX_OVER_FRACTION * b.compared;
-        report(r, pass ? "PASS" : "FAIL", name,
-               "%d samples: %ld of %ld silhouette-band pixels beyond %.3f of the reference at "
-               "the samples (max %.3f; at most %d); elsewhere %ld of %ld (max %.3f; at most "
-               "%.0f%%)",
-               n, b.over, b.band, SURF_MSAA_TOLERANCE, b.band_max, SURF_MSAA_MAX_BAND_OVER,
-               b.compared_over, b.compared, b.compared_max, 100.0 * SURF_MSAA_MAX_OVER_FRACTION);
-        if (!pass)
-            msaa_save_pair(r, name, rgba, m.colour, m.w, m.h);
-    }
-    msaa_ref_free(&m);
-    free(rgba);
+    msaa_row(r, s, &tech, name, n, ref_build, &sr, &bounds);
 }
 
 /* From stone-wall: GL2 on gl21, GL4 on the core profiles (one run a tier). */

@@ -29,9 +29,6 @@
  * the ball's outline over its shadow is 40 or more. */
 #define MSAA_MAX_BAND_OVER 3
 
-/* See ref_build; msaa/halo-soft.json's rows measured the same with 512. */
-#define MSAA_AREA_SAMPLES 64
-
 typedef struct msaa_case {
     stin_tier tier;
     stin_technique shadows;
@@ -53,38 +50,13 @@ static int facets_of(stin_tier tier, stin_technique t)
     return t == STIN_TECH_SHADOWS_VOLUME ? REFERENCE_FACETS_OPEN : REFERENCE_FACETS_NONE;
 }
 
-static int ref_build(const scene *s, stin_tier tier, stin_technique t, int per_vertex,
-                     const float pos[][2], int n, msaa_ref *m, char *err, size_t err_size)
-{
-    reference *ref = reference_create(s, err, err_size);
-    size_t px = (size_t)m->w * m->h;
-    int k, ok = ref != NULL;
-    ok = msaa_ref_alloc(m, n) && ok;
-    if (ok) {
-        reference_facet_terminator(ref, facets_of(tier, t));
-        /* an area light: 64 directions tell the penumbra (left out of the
-         * check) from umbra and light at an eighth of the default's cost */
-        reference_set_area_samples(ref, MSAA_AREA_SAMPLES);
-    }
-    for (k = 0; ok && k < n; k++)
-        ok = reference_primary_at(ref, m->w, m->h, pos[k][0], pos[k][1],
-                                  m->hits + px * (size_t)k);
-    if (ok)
-        msaa_ref_shade(s, ref, per_vertex, 1, m);
-    if (ref)
-        reference_destroy(ref);
-    if (!ok && err[0] == '\0')
-        snprintf(err, err_size, "reference failed");
-    return ok;
-}
-
 static void one_case(run *r, const scene *s, const msaa_case *mc, int asked, int per_vertex,
                      const float pos[][2], int n)
 {
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
     msaa_techniques tech = {mc->tier, mc->shadows, STIN_TECH_NONE, STIN_TECH_NONE,
-                            STIN_TECH_NONE};
+                            STIN_TECH_NONE, STIN_TECH_NONE};
     msaa_ref m;
     msaa_band b;
     int got;
@@ -101,7 +73,8 @@ static void one_case(run *r, const scene *s, const msaa_case *mc, int asked, int
         report(r, "SKIP", name, "%s", why);
     } else if (!got) {
         report(r, "FAIL", name, "%s", why);
-    } else if (!ref_build(s, mc->tier, mc->shadows, per_vertex, pos, n, &m, why, sizeof why)) {
+    } else if (!msaa_ref_build(s, facets_of(mc->tier, mc->shadows), per_vertex, pos, n,
+                                       &m, why, sizeof why)) {
         report(r, "FAIL", name, "reference: %s", why);
     } else {
         msaa_compare_band(&m, rgba, r->width, MSAA_TOLERANCE, &b);
