@@ -556,6 +556,18 @@
  *   a multisampled target without one gets the composite over every
  *   sample, as before. "sorted" blends per sample; deep's light-space
  *   layers do not depend on the target.
+ * - surface ("normal", "parallax", "pom") and displacement ("displace",
+ *   "displace-tess"): shaded once a pixel a surface at the pixel centre as
+ *   any fragment (the uv moved there; displaced vertices give each sample
+ *   its coverage and depth); their own passes read no single-sampled
+ *   screen buffer, so their outlines are antialiased. Tested
+ *   (tests/image/msaa_surface_test.c, msaa_displace_test.c: 2-3 of
+ *   897-980 silhouette-band pixels beyond the bound), as are area lights
+ *   under vdsm, volume and map-pcf (msaa_test.c: 0 of 642). GL2's pom
+ *   takes its texture level from derivatives of the uv it moved, so it
+ *   follows the rasteriser's 2x2 quads (llvmpipe's multisampled path
+ *   differences at a quad's lower-left pixel, its single-sampled one at
+ *   the upper-left).
  * - CSG products (the GPU resolve: GLSL tiers with FBOs and packed
  *   depth-stencil textures, every CSG technique): the resolve runs
  *   single-sampled (one depth a pixel, at its centre) in its work buffer,

@@ -382,6 +382,7 @@ int main(int argc, char **argv)
         for (i = first_scene; i < argc; i++) {
             if (displaced && displaced[i]) {
                 displace_tests(&r, tiers[t], argv[i]);
+                msaa_displace_tests(&r, tiers[t], argv[i]);
                 continue;
             }
             test_scene(&r, tiers[t], argv[i]);
@@ -410,6 +411,7 @@ int main(int argc, char **argv)
             msaa_tests(&r, tiers[t], argv[i]);
             msaa_csg_tests(&r, tiers[t], argv[i]);
             msaa_blend_tests(&r, tiers[t], argv[i]);
+            msaa_surface_tests(&r, tiers[t], argv[i]);
             error_kept_tests(&r, tiers[t], argv[i]);
             srgb_tests(&r, tiers[t], argv[i]);
         }

@@ -176,6 +176,14 @@ void msaa_csg_tests(run *r, stin_tier tier, const char *path);
  * positions, at silhouettes (msaa_blend_test.c; from shadow-overlap, on
  * msaa/glass.json beside it). */
 void msaa_blend_tests(run *r, stin_tier tier, const char *path);
+/* Normal mapping and pom into a 4x target against the surface reference at
+ * its sample positions, at silhouettes (msaa_surface_test.c; from
+ * stone-wall, on msaa/wall.json beside it). */
+void msaa_surface_tests(run *r, stin_tier tier, const char *path);
+/* displace and displace-tess into a 4x target against the displaced
+ * reference at its sample positions, at silhouettes (msaa_displace_test.c;
+ * from displace-plate, on msaa/displace.json beside it). */
+void msaa_displace_tests(run *r, stin_tier tier, const char *path);
 /* Frames into an sRGB colour target against the encoded reference, per
  * shadow technique, on four-lights under gl21, gl33-core and gl45-core
  * (srgb_test.c). */

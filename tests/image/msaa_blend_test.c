@@ -3,7 +3,8 @@
  * Blended draws and translucent shadows into a multisampled target (issue
  * 39): msaa/glass.json (two coloured panes over a floor, an opaque pillar
  * in front of one) drawn into the platform's 4x framebuffer object with
- * each peel ("depth-peel", "dual-peel") and each translucent-shadows
+ * each peel ("depth-peel", "dual-peel"), the sorted transparency (whole
+ * objects back to front, blended per sample) and each translucent-shadows
  * technique ("deep", "coloured"; volumes for the opaque pillar), against
  * the reference camera composite lit through the lights' transmittance
  * (reference_composite_at) at the target's own sample positions
@@ -212,7 +213,7 @@ static void one_case(run *r, const scene *s, const blend_case *bc, const float p
                      blend_ref *m)
 {
     msaa_techniques tech = {bc->tier, STIN_TECH_SHADOWS_VOLUME, bc->transparency,
-                            bc->translucent};
+                            bc->translucent, STIN_TECH_NONE, STIN_TECH_NONE};
     char name[128], why[512] = "";
     uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
     band_result b;
@@ -260,6 +261,8 @@ void msaa_blend_tests(run *r, stin_tier tier, const char *path)
         {STIN_TIER_GL4, STIN_TECH_TRANSPARENCY_DEPTH_PEEL, STIN_TECH_TRANSLUCENT_DEEP},
         {STIN_TIER_GL4, STIN_TECH_TRANSPARENCY_DUAL_PEEL, STIN_TECH_TRANSLUCENT_COLOURED},
         {STIN_TIER_GL2, STIN_TECH_TRANSPARENCY_DEPTH_PEEL, STIN_TECH_TRANSLUCENT_COLOURED},
+        {STIN_TIER_GL4, STIN_TECH_TRANSPARENCY_SORTED, STIN_TECH_TRANSLUCENT_DEEP},
+        {STIN_TIER_GL2, STIN_TECH_TRANSPARENCY_SORTED, STIN_TECH_TRANSLUCENT_COLOURED},
     };
     float pos[MSAA_MAX_SAMPLES][2];
     char name[64];

@@ -7,6 +7,13 @@
 #include <stdlib.h>
 #include <string.h>
 
+void msaa_ref_init(msaa_ref *m, const scene *s)
+{
+    memset(m, 0, sizeof *m);
+    m->w = s->width;
+    m->h = s->height;
+}
+
 int msaa_ref_alloc(msaa_ref *m, int n)
 {
     size_t px = (size_t)m->w * m->h;
@@ -69,6 +76,29 @@ void msaa_ref_free(msaa_ref *m)
     free(m->colour);
     free(m->vis);
     free(m->centre_differs);
+}
+
+int msaa_ref_build(const scene *s, int facets, int per_vertex, const float pos[][2], int n,
+                   msaa_ref *m, char *err, size_t err_size)
+{
+    reference *ref = reference_create(s, err, err_size);
+    size_t px = (size_t)m->w * m->h;
+    int k, ok = ref != NULL;
+    ok = msaa_ref_alloc(m, n) && ok;
+    if (ok) {
+        reference_facet_terminator(ref, facets);
+        reference_set_area_samples(ref, 64);
+    }
+    for (k = 0; ok && k < n; k++)
+        ok = reference_primary_at(ref, m->w, m->h, pos[k][0], pos[k][1],
+                                  m->hits + px * (size_t)k);
+    if (ok)
+        msaa_ref_shade(s, ref, per_vertex, 1, m);
+    if (ref)
+        reference_destroy(ref);
+    if (!ok && err[0] == '\0')
+        snprintf(err, err_size, "reference failed");
+    return ok;
 }
 
 static int object_at(const msaa_ref *m, int k, int x, int y)
@@ -145,4 +175,39 @@ void msaa_compare_band(const msaa_ref *m, const uint8_t *rgba, int stride, doubl
                 b->compared_max = fmax(b->compared_max, d);
             }
         }
+}
+
+void msaa_report_band(run *r, const char *name, const msaa_ref *m, const uint8_t *rgba,
+                      const msaa_bounds *bd)
+{
+    msaa_band b;
+    int pass;
+    msaa_compare_band(m, rgba, r->width, bd->tolerance, &b);
+    pass = b.over <= bd->max_band_over && b.band > 100 &&
+           b.compared_over <= bd->max_over_fraction * (double)b.compared;
+    report(r, pass ? "PASS" : "FAIL", name,
+           "%d samples: %ld of %ld silhouette-band pixels beyond %.3f of the reference at the "
+           "samples (max %.3f; at most %d); elsewhere %ld of %ld (max %.3f; at most %.0f%%)",
+           m->n, b.over, b.band, bd->tolerance, b.band_max, bd->max_band_over, b.compared_over,
+           b.compared, b.compared_max, 100.0 * bd->max_over_fraction);
+    if (!pass)
+        msaa_save_pair(r, name, rgba, m->colour, m->w, m->h);
+}
+
+void msaa_row(run *r, const scene *s, const msaa_techniques *t, const char *name, int n,
+              msaa_ref_fn build, const void *ctx, const msaa_bounds *bd)
+{
+    uint8_t *rgba = malloc((size_t)r->width * r->height * 4);
+    char why[512] = "";
+    msaa_ref m;
+    msaa_ref_init(&m, s);
+    m.n = n;
+    if (msaa_render_reported(r, s, t, rgba, name)) {
+        if (build(ctx, &m, why, sizeof why))
+            msaa_report_band(r, name, &m, rgba, bd);
+        else
+            report(r, "FAIL", name, "reference: %s", why);
+    }
+    msaa_ref_free(&m);
+    free(rgba);
 }

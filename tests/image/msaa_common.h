@@ -23,6 +23,8 @@ typedef struct msaa_ref {
                                     * centre, has another visibility there */
 } msaa_ref;
 
+/* m emptied, sized to the scene (no arrays yet). */
+void msaa_ref_init(msaa_ref *m, const scene *s);
 /* m->w, m->h set: the arrays for n samples (1, or 0 out of memory). */
 int msaa_ref_alloc(msaa_ref *m, int n);
 /* m->hits filled (sample k's image at hits + k w h): each sample shaded
@@ -36,6 +38,13 @@ int msaa_ref_alloc(msaa_ref *m, int n);
 void msaa_ref_shade(const scene *s, const reference *ref, int per_vertex, int at_centre,
                     msaa_ref *m);
 void msaa_ref_free(msaa_ref *m);
+/* m sized (msaa_ref_init): the reference of s (facets: reference.h's
+ * terminator rule) cast and shaded (at_centre 1) at the n sample positions;
+ * an area light integrated over 64 directions, enough to tell the
+ * penumbra (left out of the band) from umbra and light at an eighth of
+ * the default's cost. 1, or 0 (err). */
+int msaa_ref_build(const scene *s, int facets, int per_vertex, const float pos[][2], int n,
+                   msaa_ref *m, char *err, size_t err_size);
 
 typedef struct msaa_band {
     long band, over, compared, compared_over;
@@ -46,5 +55,26 @@ typedef struct msaa_band {
  * pixels by a shadow edge left out (the shadow tests' business). */
 void msaa_compare_band(const msaa_ref *m, const uint8_t *rgba, int stride, double tolerance,
                        msaa_band *b);
+
+/* A row's bounds: a pixel is over beyond tolerance (max channel); at most
+ * max_band_over of the band (which must hold more than 100) and
+ * max_over_fraction of the rest. */
+typedef struct msaa_bounds {
+    double tolerance;
+    int max_band_over;
+    double max_over_fraction;
+} msaa_bounds;
+
+/* The frame against m under bd: one PASS/FAIL line as `name`, the pair
+ * saved on failure. */
+void msaa_report_band(run *r, const char *name, const msaa_ref *m, const uint8_t *rgba,
+                      const msaa_bounds *bd);
+
+/* Builds a row's reference into m (sized, m->n set): 1, or 0 (err). */
+typedef int (*msaa_ref_fn)(const void *ctx, msaa_ref *m, char *err, size_t err_size);
+/* One row as `name`: the frame of t (SKIP or FAIL where it did not
+ * render), its reference from build over n samples, compared under bd. */
+void msaa_row(run *r, const scene *s, const msaa_techniques *t, const char *name, int n,
+              msaa_ref_fn build, const void *ctx, const msaa_bounds *bd);
 
 #endif

@@ -27,16 +27,18 @@ int msaa_sample_positions(run *r, float pos[][2])
  * refused a forced technique or chose another for it. */
 static int create(test_context *tc, run *r, const scene *s, const msaa_techniques *t)
 {
-    const stin_feature features[3] = {STIN_FEATURE_SHADOWS, STIN_FEATURE_TRANSPARENCY,
-                                      STIN_FEATURE_TRANSLUCENT_SHADOWS};
-    const stin_technique want[3] = {t->shadows, t->transparency, t->translucent};
+    const stin_feature features[5] = {STIN_FEATURE_SHADOWS, STIN_FEATURE_TRANSPARENCY,
+                                      STIN_FEATURE_TRANSLUCENT_SHADOWS, STIN_FEATURE_SURFACE,
+                                      STIN_FEATURE_DISPLACEMENT};
+    const stin_technique want[5] = {t->shadows, t->transparency, t->translucent, t->surface,
+                                    t->displacement};
     stin_desc d;
     size_t size;
     char err[256];
     int i, ok;
     memset(tc, 0, sizeof *tc);
     test_desc(r, t->tier, &d);
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < 5; i++)
         d.techniques[features[i]] = want[i];
     scene_gpu_size_desc(s, &d);
     size = stin_memory_size(&d);
@@ -47,7 +49,7 @@ static int create(test_context *tc, run *r, const scene *s, const msaa_technique
         return 0;
     }
     ok = 1;
-    for (i = 0; i < 3; i++)
+    for (i = 0; i < 5; i++)
         ok = ok && (want[i] == STIN_TECH_NONE ||
                     stin_query_choice(tc->ctx, features[i]).technique == want[i]);
     if (!ok || !scene_gpu_create(&tc->g, s, tc->ctx, err, sizeof err)) {
@@ -67,9 +69,11 @@ int msaa_render(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba,
     stin_result res;
     if (!create(&tc, r, s, t)) {
         snprintf(why, why_size, "%s does not run on this tier here",
-                 stin_technique_name(t->transparency != STIN_TECH_NONE   ? t->transparency
-                                     : t->translucent != STIN_TECH_NONE ? t->translucent
-                                                                        : t->shadows));
+                 stin_technique_name(t->displacement != STIN_TECH_NONE   ? t->displacement
+                                     : t->surface != STIN_TECH_NONE      ? t->surface
+                                     : t->transparency != STIN_TECH_NONE ? t->transparency
+                                     : t->translucent != STIN_TECH_NONE  ? t->translucent
+                                                                         : t->shadows));
         return -1;
     }
     memset(&fd, 0, sizeof fd);
@@ -90,6 +94,16 @@ int msaa_render(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba,
         return 0;
     }
     return 1;
+}
+
+int msaa_render_reported(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba,
+                         const char *name)
+{
+    char why[512] = "out of memory";
+    int got = rgba ? msaa_render(r, s, t, rgba, why, sizeof why) : 0;
+    if (got <= 0)
+        report(r, got < 0 ? "SKIP" : "FAIL", name, "%s", why);
+    return got > 0;
 }
 
 void msaa_save_pair(run *r, const char *name, const uint8_t *rgba, const float *colour, int w,

@@ -20,7 +20,7 @@ int msaa_sample_positions(run *r, float pos[][2]);
 /* Techniques a frame forces; STIN_TECH_NONE leaves the feature's default. */
 typedef struct msaa_techniques {
     stin_tier tier;
-    stin_technique shadows, transparency, translucent;
+    stin_technique shadows, transparency, translucent, surface, displacement;
 } msaa_techniques;
 
 /* One frame of the scene at its own size into the platform's target, read
@@ -29,6 +29,11 @@ typedef struct msaa_techniques {
  * not run on this tier here; 0 (why) on failure. */
 int msaa_render(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba, char *why,
                 size_t why_size);
+
+/* msaa_render into rgba (NULL: out of memory) reported as `name` where it
+ * did not render (SKIP, FAIL): 1 rendered, else 0. */
+int msaa_render_reported(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba,
+                         const char *name);
 
 /* Writes the frame (left) beside the reference colour (right: w x h x 3,
  * bottom row first) as OUT/PLATFORM-PROFILE-NAME.png, where --out was given. */

@@ -43,6 +43,7 @@
 #include "reference.h"
 #include "reference_surface.h"
 #include "scene_variant.h"
+#include "surface_footprint.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -311,8 +312,8 @@ static int uv_at(const scene *s, const reference *ref, const ref_surface *rs, in
  * GL4's textureGrad is given the unmoved uv's (surface_frame.glsl:
  * tech < 0); GL2's texture2D differentiates the uv it samples, which pom
  * moves (tech >= 0), so at pom's steps the quad's pixel matters. */
-static int footprint(const scene *s, const reference *ref, const ref_surface *rs, int w, int h,
-                     int x, int y, const ref_hit *hit, int tech, int low, ref_footprint *fp)
+int surface_footprint(const scene *s, const reference *ref, const ref_surface *rs, int w, int h,
+                      int x, int y, const ref_hit *hit, int tech, int low, ref_footprint *fp)
 {
     double ul[2], right[2], down[2];
     double left = (x & ~1) + 0.5, top = low ? (y & ~1) + 0.5 : (y | 1) + 0.5;
@@ -358,8 +359,9 @@ static void reference_rows(run *r, stin_tier tier, const scene *s, stin_techniqu
             if (!h->hit || !(p[AOV_Z] > 0) ||
                 s->materials[s->objects[h->object].material].normal < 0)
                 continue;
-            if (!footprint(s, ref, rs, a->img.width, a->img.height, x, a->img.height - 1 - y, h,
-                           tier == STIN_TIER_GL2 ? ref_tech : -1, low, &fp)) {
+            if (!surface_footprint(s, ref, rs, a->img.width, a->img.height, x,
+                                   a->img.height - 1 - y, h,
+                                   tier == STIN_TIER_GL2 ? ref_tech : -1, low, &fp)) {
                 n++; /* no footprint (a ray along the plane): counted as differing */
                 over++;
                 continue;
