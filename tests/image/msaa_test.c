@@ -129,18 +129,21 @@ static void at_count(run *r, const scene *s, stin_tier tier, int asked, const ms
 
 /* Area-light shadows (msaa/halo-soft.json): the techniques that honour a
  * light's radius (soft_test.c), GL4 on gl45-core alone (gl33-core runs
- * the same programs) and GL2 on gl21. */
+ * the same programs), GL2 and GL1 on gl21. GL1's volumes (points over
+ * the light's ball, pass by pass) count in the frame's own stencil:
+ * measured 0 of 642 band pixels over; a single-sampled frame resolved
+ * against the same reference puts 171 over (max 0.28). */
 static void soft_rows(run *r, stin_tier tier, const char *path)
 {
     static const msaa_case soft[] = {
         {STIN_TIER_GL4, STIN_TECH_SHADOWS_VDSM},    {STIN_TIER_GL4, STIN_TECH_SHADOWS_VOLUME},
         {STIN_TIER_GL4, STIN_TECH_SHADOWS_MAP_PCF}, {STIN_TIER_GL2, STIN_TECH_SHADOWS_VOLUME},
-        {STIN_TIER_GL2, STIN_TECH_SHADOWS_MAP_PCF},
+        {STIN_TIER_GL2, STIN_TECH_SHADOWS_MAP_PCF}, {STIN_TIER_GL1, STIN_TECH_SHADOWS_VOLUME},
     };
     float pos[MSAA_MAX_SAMPLES][2];
     char name[64];
     scene s;
-    if (tier == STIN_TIER_GL1 || !strcmp(r->profile_name, "gl33-core"))
+    if (!strcmp(r->profile_name, "gl33-core"))
         return;
     snprintf(name, sizeof name, "%s/msaa-soft", stin_tier_name(tier));
     if (!msaa_open(r, path, "halo-soft.json", MSAA_SAMPLES, name, &s, pos))
