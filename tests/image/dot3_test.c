@@ -248,44 +248,61 @@ static int has_normal_map(const scene *s)
     return 0;
 }
 
+int dot3_flat_scenes(const scene *s, scene *flat, scene *plain)
+{
+    scene_texture *tex = calloc((size_t)s->texture_count + 1, sizeof *tex);
+    scene_material *mat = calloc((size_t)s->material_count + 1, sizeof *mat);
+    int i, ok = tex && mat;
+    *flat = *plain = *s;
+    flat->textures = tex;
+    plain->materials = mat;
+    if (!ok)
+        return 0;
+    memcpy(tex, s->textures, sizeof *tex * (size_t)s->texture_count);
+    for (i = 0; i < s->texture_count; i++)
+        if (tex[i].kind == SCENE_TEXTURE_NORMAL) {
+            size_t k, count = (size_t)tex[i].width * (size_t)tex[i].height;
+            tex[i].rgba = malloc(4 * count);
+            if (!tex[i].rgba)
+                return 0;
+            for (k = 0; k < count; k++) {
+                tex[i].rgba[4 * k] = tex[i].rgba[4 * k + 1] = 128;
+                tex[i].rgba[4 * k + 2] = tex[i].rgba[4 * k + 3] = 255;
+            }
+        }
+    memcpy(mat, s->materials, sizeof *mat * (size_t)s->material_count);
+    for (i = 0; i < s->material_count; i++)
+        mat[i].normal = -1;
+    return 1;
+}
+
+void dot3_flat_free(scene *flat, scene *plain, const scene *s)
+{
+    int i;
+    if (flat->textures)
+        for (i = 0; i < s->texture_count; i++)
+            if (flat->textures[i].rgba != s->textures[i].rgba)
+                free(flat->textures[i].rgba);
+    free(flat->textures);
+    free(plain->materials);
+}
+
 static void test_flat(run *r, stin_tier tier, const scene *s, const char *scene_name)
 {
     const stin_technique shadows[2] = {STIN_TECH_SHADOWS_OFF, STIN_TECH_SHADOWS_VOLUME};
     char name[200], why[256], detail[512] = "";
-    scene flat = *s, plain = *s;
-    scene_texture *tex = calloc((size_t)s->texture_count + 1, sizeof *tex);
-    scene_material *mat = calloc((size_t)s->material_count + 1, sizeof *mat);
-    int i, sh, ok = 1, all_clean = 1;
+    scene flat, plain;
+    int sh, ok = 1, all_clean = 1, made = dot3_flat_scenes(s, &flat, &plain);
     size_t used = 0;
     test_name(name, sizeof name, tier, scene_name, "dot3-flat");
     if (!dot3_selected(r, tier, why, sizeof why)) {
         report(r, "SKIP", name, "%s", why);
         goto done;
     }
-    if (!tex || !mat) {
+    if (!made) {
         report(r, "FAIL", name, "out of memory");
         goto done;
     }
-    /* flat: every normal map (128,128,255); plain: no normal maps */
-    memcpy(tex, s->textures, sizeof *tex * (size_t)s->texture_count);
-    for (i = 0; i < s->texture_count; i++)
-        if (tex[i].kind == SCENE_TEXTURE_NORMAL) {
-            size_t k, count = (size_t)tex[i].width * (size_t)tex[i].height;
-            tex[i].rgba = malloc(4 * count);
-            if (!tex[i].rgba) {
-                report(r, "FAIL", name, "out of memory");
-                goto done;
-            }
-            for (k = 0; k < count; k++) {
-                tex[i].rgba[4 * k] = tex[i].rgba[4 * k + 1] = 128;
-                tex[i].rgba[4 * k + 2] = tex[i].rgba[4 * k + 3] = 255;
-            }
-        }
-    flat.textures = tex;
-    memcpy(mat, s->materials, sizeof *mat * (size_t)s->material_count);
-    for (i = 0; i < s->material_count; i++)
-        mat[i].normal = -1;
-    plain.materials = mat;
     for (sh = 0; sh < 2; sh++) {
         capture a, b;
         capture_options o;
@@ -341,12 +358,7 @@ static void test_flat(run *r, stin_tier tier, const scene *s, const char *scene_
            "of covered pixels, mean <= 1/255: %s", DOT3_FLAT_TOLERANCE, 100.0 * DOT3_FLAT_MIN_MATCH,
            detail);
 done:
-    if (tex)
-        for (i = 0; i < s->texture_count; i++)
-            if (tex[i].rgba != s->textures[i].rgba)
-                free(tex[i].rgba);
-    free(tex);
-    free(mat);
+    dot3_flat_free(&flat, &plain, s);
 }
 
 void dot3_tests(run *r, stin_tier tier, const char *path)

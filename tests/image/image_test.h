@@ -5,6 +5,7 @@
 #define STIN_TESTS_IMAGE_TEST_H
 
 #include "stin/stin.h"
+#include "scene.h"
 #include "stin_platform.h"
 
 typedef struct run {
@@ -98,6 +99,11 @@ void vdsm_growth_tests(run *r);
 /* DOT3 bump mapping of one scene at one tier, plus a built-in analytic scene
  * on the first call per tier (dot3_test.c). */
 void dot3_tests(run *r, stin_tier tier, const char *path);
+/* s with every normal map flat (128,128,255) into flat, and without normal
+ * maps into plain, which DOT3 and per-vertex lighting draw alike (the rest
+ * shared with s): 1, or 0 out of memory; dot3_flat_free either way. */
+int dot3_flat_scenes(const scene *s, scene *flat, scene *plain);
+void dot3_flat_free(scene *flat, scene *plain, const scene *s);
 /* GLSL surface detail (normal, parallax, pom) of one scene at one tier, and
  * the shaders/gl2 version check once (surface_test.c). */
 void surface_tests(run *r, stin_tier tier, const char *path);
