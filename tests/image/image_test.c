@@ -412,6 +412,7 @@ int main(int argc, char **argv)
             msaa_csg_tests(&r, tiers[t], argv[i]);
             msaa_blend_tests(&r, tiers[t], argv[i]);
             msaa_surface_tests(&r, tiers[t], argv[i]);
+            msaa_outline_tests(&r, tiers[t], argv[i]);
             error_kept_tests(&r, tiers[t], argv[i]);
             srgb_tests(&r, tiers[t], argv[i]);
         }

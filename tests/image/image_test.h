@@ -190,6 +190,10 @@ void msaa_surface_tests(run *r, stin_tier tier, const char *path);
  * reference at its sample positions, at silhouettes (msaa_displace_test.c;
  * from displace-plate, on msaa/displace.json beside it). */
 void msaa_displace_tests(run *r, stin_tier tier, const char *path);
+/* The deferred outline into a 4x target: its pixels the single-sampled
+ * target's, the frame under it the reference at the samples
+ * (msaa_outline_test.c; from shadow-overlap, on msaa/halo.json). */
+void msaa_outline_tests(run *r, stin_tier tier, const char *path);
 /* Frames into an sRGB colour target against the encoded reference, per
  * shadow technique, on four-lights under gl21, gl33-core and gl45-core
  * (srgb_test.c). */

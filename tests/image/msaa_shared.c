@@ -64,6 +64,13 @@ static int create(test_context *tc, run *r, const scene *s, const msaa_technique
 int msaa_render(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba, char *why,
                 size_t why_size)
 {
+    static const float none[4] = {0, 0, 0, 0};
+    return msaa_render_outlined(r, s, t, 0.0f, none, rgba, why, why_size);
+}
+
+int msaa_render_outlined(run *r, const scene *s, const msaa_techniques *t, float step,
+                         const float color[4], uint8_t *rgba, char *why, size_t why_size)
+{
     test_context tc;
     stin_frame_desc fd;
     stin_result res;
@@ -83,6 +90,8 @@ int msaa_render(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba,
     fd.framebuffer = stin_platform_framebuffer(r->plat);
     memcpy(fd.clear_color, s->background, sizeof fd.clear_color);
     memcpy(fd.ambient, s->ambient, sizeof fd.ambient);
+    fd.outline_step = step;
+    memcpy(fd.outline_color, color, sizeof fd.outline_color);
     res = test_context_frame(&tc, s, &fd, -1);
     test_context_destroy(&tc);
     if (res != STIN_OK) {

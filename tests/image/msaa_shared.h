@@ -29,6 +29,10 @@ typedef struct msaa_techniques {
  * not run on this tier here; 0 (why) on failure. */
 int msaa_render(run *r, const scene *s, const msaa_techniques *t, uint8_t *rgba, char *why,
                 size_t why_size);
+/* msaa_render with the deferred outline (stin_frame_desc.outline_step,
+ * outline_color; step 0: none). */
+int msaa_render_outlined(run *r, const scene *s, const msaa_techniques *t, float step,
+                         const float color[4], uint8_t *rgba, char *why, size_t why_size);
 
 /* msaa_render into rgba (NULL: out of memory) reported as `name` where it
  * did not render (SKIP, FAIL): 1 rendered, else 0. */
