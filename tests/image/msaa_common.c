@@ -46,7 +46,7 @@ void msaa_ref_shade(const scene *s, const reference *ref, int per_vertex, int at
             int x = (int)(i % (size_t)m->w), y = (int)(i / (size_t)m->w);
             ref_hit c = hk[i];
             float rgba[4], *v = &m->vis[px * (size_t)k + i];
-            *v = visibility_code(s, ref, &hk[i]);
+            *v = m->unshadowed ? 0.0f : visibility_code(s, ref, &hk[i]);
             if (at_centre && hk[i].hit &&
                 reference_hit_on_plane(ref, m->w, m->h, &hk[i], x + 0.5, y + 0.5, &c)) {
                 /* the plane's own normals: turned back where the hit's
@@ -59,10 +59,13 @@ void msaa_ref_shade(const scene *s, const reference *ref, int per_vertex, int at
                 if (at_centre == MSAA_AT_CENTRE_INSIDE &&
                     (c.u < 0.0f || c.v < 0.0f || c.u + c.v > 1.0f))
                     c = hk[i];
-                if (visibility_code(s, ref, &c) != *v)
+                if (!m->unshadowed && visibility_code(s, ref, &c) != *v)
                     m->centre_differs[i] = 1;
             }
-            reference_shade_passes(s, ref, &c, per_vertex, rgba);
+            if (m->unshadowed)
+                reference_shade(s, ref, &c, per_vertex, rgba);
+            else
+                reference_shade_passes(s, ref, &c, per_vertex, rgba);
             m->colour[3 * i] += rgba[0] / (float)m->n;
             m->colour[3 * i + 1] += rgba[1] / (float)m->n;
             m->colour[3 * i + 2] += rgba[2] / (float)m->n;

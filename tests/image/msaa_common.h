@@ -21,6 +21,7 @@ typedef struct msaa_ref {
     float *vis;      /* n x w x h: every light's visibility at each sample */
     unsigned char *centre_differs; /* w x h: a sample's surface, taken on to the pixel
                                     * centre, has another visibility there */
+    int unshadowed; /* set before shading: the lights unshadowed (shadows off) */
 } msaa_ref;
 
 /* m emptied, sized to the scene (no arrays yet). */
