@@ -556,14 +556,15 @@
  *   a multisampled target without one gets the composite over every
  *   sample, as before. "sorted" blends per sample; deep's light-space
  *   layers do not depend on the target.
- * - surface ("normal", "parallax", "pom") and displacement ("displace",
- *   "displace-tess"): shaded once a pixel a surface at the pixel centre as
- *   any fragment (the uv moved there; displaced vertices give each sample
- *   its coverage and depth); their own passes read no single-sampled
- *   screen buffer, so their outlines are antialiased. Tested
- *   (tests/image/msaa_surface_test.c, msaa_displace_test.c: 2-3 of
- *   897-980 silhouette-band pixels beyond the bound), as are area lights
- *   under vdsm, volume and map-pcf (msaa_test.c: 0 of 642). GL2's pom
+ * - surface ("normal", "parallax", "pom", GL1's "dot3") and displacement
+ *   ("displace", "displace-tess"): shaded once a pixel a surface at the
+ *   pixel centre as any fragment (the uv moved there; displaced vertices
+ *   give each sample its coverage and depth); their own passes read no
+ *   single-sampled screen buffer, so their outlines are antialiased.
+ *   Tested (tests/image/msaa_surface_test.c, msaa_displace_test.c: 2-3 of
+ *   897-1,006 silhouette-band pixels beyond the bound; GL2's displace with
+ *   shadows off), as are area lights under vdsm, volume and map-pcf, and
+ *   GL1's volume (msaa_test.c: 0 of 642). GL2's pom
  *   takes its texture level from derivatives of the uv it moved, so it
  *   follows the rasteriser's 2x2 quads (llvmpipe's multisampled path
  *   differences at a quad's lower-left pixel, its single-sampled one at
@@ -620,7 +621,10 @@
  *   what it needs), the product dropped (stin_frame_stats.csg.dropped);
  *   render those into a single-sampled target.
  * The visibility export's map and the outline are drawn from the
- * single-sampled mask and buffers: one value a pixel.
+ * single-sampled mask and buffers: one value a pixel. The outline's screen
+ * pass blends over every sample, so it lies over the antialiased frame on
+ * the pixels it marks in a single-sampled target (tested:
+ * tests/image/msaa_outline_test.c, 0 of 698 band pixels beyond 0.03).
  * Tested (tests/image/msaa_test.c) at 4 samples for vdsm, volume and
  * map-pcf on GL4, volume and map-pcf on GL2, volume on GL1; at 2 and 8
  * samples, where GL_MAX_SAMPLES has them, for vdsm, GL2's map-pcf and
