@@ -952,7 +952,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(FRAG_DEPTH, "fragment depth writes", 20, "")                                        \
     X(DERIVATIVES, "fragment derivatives (dFdx, dFdy)", 20, "")                           \
     X(ANY_SAMPLES_QUERY, "any-samples-passed queries", 15, "GL_ARB_occlusion_query")      \
-    X(FLOAT_BLEND, "blending into float targets", 30, "GL_ARB_texture_float")
+    X(FLOAT_BLEND, "blending into float targets", 30, "GL_ARB_texture_float")          \
+    X(GLSL_150, "GLSL 1.50 shaders (GLSL ES 3.00 on ES)", 32, "")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
