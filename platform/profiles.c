@@ -31,8 +31,8 @@
      BIT(STENCIL_TWO_SIDE) | BIT(DEPTH_CLAMP) | BIT(VBO))
 /* GL 2.1 class: no VAO or float textures (GL 3.0), nothing of GL 3.2+. */
 #define GL21_HIDE                                                                 \
-    (BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) |   \
-     BIT(COMPUTE) | BIT(TIMER_QUERY) | BIT(TRANSFORM_FEEDBACK))
+    (BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | BIT(GLSL_150) |       \
+     BIT(TESSELLATION) | BIT(COMPUTE) | BIT(TIMER_QUERY) | BIT(TRANSFORM_FEEDBACK))
 /* GL 3.3 class: the 4.x features Mesa still lists as extensions. */
 #define GL33_HIDE (BIT(TESSELLATION) | BIT(COMPUTE) | BIT(TRANSFORM_FEEDBACK))
 

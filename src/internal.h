@@ -121,7 +121,7 @@ struct stin_context {
     unsigned char warned_split_band; /* a split mesh's band was left out (logged once) */
     /* streamed volume vertices (and quads): on GL4 with a vertex array of
      * its own; on OpenGL ES 3.0+ without (GL2 tier), where WebGL 2 has no
-     * client arrays, with volume_ibo for streamed indices (WebGL binds no
+     * client arrays; volume_ibo streams indices on both (WebGL binds no
      * buffer as both vertex and index data) */
     GLuint volume_vbo, volume_vao, volume_ibo;
     struct {                  /* the displacement choice as the layers below render

@@ -33,22 +33,28 @@
  *   STIN_TIER_GL2  GLSL 1.10/1.20 on a GL 2.x (or compatibility) context.
  *                  Per-pixel lighting.
  *   STIN_TIER_GL4  GLSL 1.50+ on a GL 3.2+ context (core or compatibility),
- *                  geometry shaders available. Per-pixel lighting.
- * OpenGL ES (caps.es): no fixed function, so never GL1. GL2 on ES 2.0 and
- * 3.0/3.1 (the GLSL 1.10 sources run as GLSL ES 1.00 on ES 2.0 and as GLSL
- * ES 3.x0 on ES 3.x, under a version and precision preamble), GL4 on ES 3.2
- * (the GLSL 1.50 sources as GLSL ES 3.20). Measured on Mesa 22.3 llvmpipe
- * against the same reference and bounds as desktop: per-pixel lighting,
- * stencil volumes (z-fail with the far plane at infinity: ES has no depth
- * clamp) and map-pcf on ES 3.0 and 3.2; volumes extruded by a geometry
- * shader and vdsm on ES 3.2; on bare ES 2.0 (no derivatives, depth textures
- * or 32-bit indices) the GL2 tier with the shaders' derivative-free paths
- * (STIN_CAP_DERIVATIVES) and map-pcf's depth packed into RGBA8. Not yet on
- * ES: CSG below GL4 lighting (no depth write-back without glDrawPixels),
- * dual peeling and interval CSG (they count samples; ES queries answer
- * "any"), deep's and vdsm's storage-buffer paths (COMPUTE stays off),
- * vdsm's transform-feedback culling pass (it culls in its geometry shader
- * instead): each falls back, logged.
+ *                  or GLSL ES 3.00+ on OpenGL ES 3.0+ (STIN_CAP_GLSL_150).
+ *                  Per-pixel lighting. vdsm, GPU-extruded volumes and
+ *                  tessellated displacement need their stages as well
+ *                  (geometry shaders, tessellation): without them the
+ *                  tier's chains fall back (volumes, vertex textures).
+ * OpenGL ES (caps.es): no fixed function, so never GL1. GL2 on ES 2.0 (the
+ * GLSL 1.10 sources as GLSL ES 1.00 under a version and precision
+ * preamble), GL4 on ES 3.0 and later (the GLSL 1.50 sources as the
+ * context's GLSL ES 3.x0; GL2 below it when forced, its sources as GLSL ES
+ * 3.x0). ES 3.0 and 3.1 (WebGL 2 too) run the GL4 tier without a geometry
+ * stage: volumes built on the CPU instead of vdsm, deep shadow maps, dual
+ * peeling where float targets blend (EXT_float_blend) and any-samples
+ * queries answer within the frame (not WebGL), vertex-texture
+ * displacement; ES 3.2 adds vdsm, GPU-extruded volumes and tessellated
+ * displacement. Measured on Mesa 22.3 llvmpipe against the same reference
+ * and bounds as desktop (docs/profiles.md). On bare ES 2.0 (no derivatives,
+ * depth textures or 32-bit indices) the GL2 tier takes the shaders'
+ * derivative-free paths (STIN_CAP_DERIVATIVES) and map-pcf's depth packed
+ * into RGBA8. Not on ES: CSG on bare ES 2.0 (no depth textures), deep's and
+ * vdsm's storage-buffer paths (COMPUTE stays off), vdsm's
+ * transform-feedback culling pass (it culls in its geometry shader
+ * instead), soft vdsm (no logic op: hard shadows): each falls back, logged.
  * desc.tier = STIN_TIER_AUTO picks the highest tier the context runs. Any other
  * value forces that tier; if the context (after desc.caps_mask) cannot run it,
  * stin_create fails with STIN_ERROR_UNSUPPORTED and logs the missing
@@ -956,7 +962,8 @@ typedef void (*stin_log_fn)(void *user, stin_log_level level, stin_log_item item
     X(FRAG_DEPTH, "fragment depth writes", 20, "")                                        \
     X(DERIVATIVES, "fragment derivatives (dFdx, dFdy)", 20, "")                           \
     X(ANY_SAMPLES_QUERY, "any-samples-passed queries", 15, "GL_ARB_occlusion_query")      \
-    X(FLOAT_BLEND, "blending into float targets", 30, "GL_ARB_texture_float")
+    X(FLOAT_BLEND, "blending into float targets", 30, "GL_ARB_texture_float")          \
+    X(GLSL_150, "GLSL 1.50 shaders (GLSL ES 3.00 on ES)", 32, "")
 
 typedef enum stin_cap {
 #define STIN_X_(id, name, ver, exts) STIN_CAP_##id,
@@ -984,7 +991,8 @@ typedef struct stin_caps {
      *           OES_standard_derivatives (without it the shaders take their
      *           derivative-free paths: see DERIVATIVES below), FRAG_DEPTH
      *           only with EXT_frag_depth;
-     *   ES 3.0: + DERIVATIVES, VAO, depth textures, shadow compare, packed depth-stencil,
+     *   ES 3.0: + GLSL_150 (GLSL ES 3.00), DERIVATIVES, VAO, depth textures,
+     *           shadow compare, packed depth-stencil,
      *           fragment depth writes, float textures (counted only with EXT_color_buffer_float:
      *           stin renders into them), ANY_SAMPLES_QUERY
      *           (GL_ANY_SAMPLES_PASSED), FLOAT_BLEND (by EXT_float_blend,

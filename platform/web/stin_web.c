@@ -47,7 +47,7 @@ static struct web {
     char init_error[256];
     /* web_force and web_option's settings for the next web_create */
     stin_technique forced[STIN_FEATURE_COUNT];
-    uint32_t deep_map_size;
+    uint32_t deep_map_size, deep_layers;
     uint64_t debug_flags;
     int csg_only;                  /* 0: every product; k: product k - 1 alone */
 } w;
@@ -253,6 +253,7 @@ EMSCRIPTEN_KEEPALIVE int web_create(const char *tier, const char *shadows, int m
         if (w.forced[i] != STIN_TECH_NONE)
             d.techniques[i] = w.forced[i];
     d.translucent.deep_map_size = w.deep_map_size;
+    d.translucent.deep_layers = w.deep_layers;
     d.debug_flags = w.debug_flags;
     d.shadows.map_size = (uint32_t)map_size;
     for (i = 0; pcf_kernel && i < w.s.light_count; i++)
@@ -297,7 +298,7 @@ EMSCRIPTEN_KEEPALIVE int web_force(const char *technique)
     if (!technique[0]) {
         for (f = 0; f < STIN_FEATURE_COUNT; f++)
             w.forced[f] = STIN_TECH_NONE;
-        w.deep_map_size = 0;
+        w.deep_map_size = w.deep_layers = 0;
         w.debug_flags = 0;
         w.csg_only = 0;
         return 1;
@@ -309,7 +310,8 @@ EMSCRIPTEN_KEEPALIVE int web_force(const char *technique)
 }
 
 /* A setting for the next web_create: "deep_map_size"
- * (translucent.deep_map_size), "debug" (debug_flags: STIN_DEBUG_* below
+ * (translucent.deep_map_size), "deep_layers" (translucent.deep_layers),
+ * "debug" (debug_flags: STIN_DEBUG_* below
  * 2^53, which a JavaScript number holds exactly) or "csg_product" (k >= 0:
  * the csg list's product k drawn alone, the others' objects not drawn;
  * -1: every product). 1 when the name is known. */
@@ -319,6 +321,8 @@ EMSCRIPTEN_KEEPALIVE int web_option(const char *name, double value)
         w.csg_only = value < 0 ? 0 : (int)value + 1;
     else if (!strcmp(name, "deep_map_size"))
         w.deep_map_size = (uint32_t)value;
+    else if (!strcmp(name, "deep_layers"))
+        w.deep_layers = (uint32_t)value;
     else if (!strcmp(name, "debug"))
         w.debug_flags = (uint64_t)value;
     else

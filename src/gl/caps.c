@@ -270,16 +270,20 @@ int stin__caps_parse(const stin__caps_input *in, stin_caps *out)
     have = es ? es_bits(in, ver) : desktop_bits(in, ver);
     /* Capabilities that are not a plain version-or-extension rule. */
     have &= ~(STIN_CAP_BIT(STIN_CAP_GLSL) | STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER) |
-              STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION) | STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH));
+              STIN_CAP_BIT(STIN_CAP_GLSL_150) | STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION) | STIN_CAP_BIT(STIN_CAP_VERTEX_TEXTURE_FETCH));
     if (ver >= 20 && glsl >= (es ? 10 : 11)) /* GLSL ES 1.00 reads 1.0 */
         have |= STIN_CAP_BIT(STIN_CAP_GLSL);
     if (ver >= 32 && glsl >= (es ? 32 : 15))
         have |= STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER);
+    /* the GL4 tier's sources: #version 150, or GLSL ES 3.00 and later */
+    if (ver >= (es ? 30 : 32) && glsl >= (es ? 30 : 15))
+        have |= STIN_CAP_BIT(STIN_CAP_GLSL_150);
     if (!in->core_profile && !es)
         have |= STIN_CAP_BIT(STIN_CAP_FIXED_FUNCTION);
     have &= ~caps_missing_entry_points(in->loaded, es);
     if (!(have & STIN_CAP_BIT(STIN_CAP_GLSL))) /* geometry shaders, derivatives, frag depth are GLSL's */
-        have &= ~(STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER) | STIN_CAP_BIT(STIN_CAP_DERIVATIVES) |
+        have &= ~(STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER) | STIN_CAP_BIT(STIN_CAP_GLSL_150) |
+                  STIN_CAP_BIT(STIN_CAP_DERIVATIVES) |
                   STIN_CAP_BIT(STIN_CAP_FRAG_DEPTH));
     /* WebGL hands a query's result over only once control is back in the
      * browser's event loop: read within the frame it says "nothing passed"

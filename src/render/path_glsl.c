@@ -277,6 +277,7 @@ stin_result stin__glsl_init(stin_context *ctx, stin_tier tier, char *msg, size_t
         build_tessellated(ctx, dir);
     if (tier == STIN_TIER_GL4) { /* core profiles have no client arrays: stream volumes */
         GL(ctx, GenBuffers)(1, &ctx->volume_vbo);
+        GL(ctx, GenBuffers)(1, &ctx->volume_ibo);
         GL(ctx, GenVertexArrays)(1, &ctx->volume_vao);
         GL(ctx, BindVertexArray)(ctx->volume_vao);
         GL(ctx, BindBuffer)(GL_ARRAY_BUFFER, ctx->volume_vbo);
@@ -893,9 +894,7 @@ static void glsl_terminator_band(stin_context *ctx, const stin__draw *d, const f
     stin__displace_draw(ctx, &p->displace, d);
     ctx->bound_mesh = 0xffffffffu;
     bind_mesh_arrays(ctx, m, d->mesh_slot);
-    if (gl4(ctx))
-        GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, ctx->volume_vbo);
-    else if (es_streams(ctx))
+    if (gl4(ctx) || es_streams(ctx))
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, ctx->volume_ibo);
     else if (m->vbo)
         GL(ctx, BindBuffer)(GL_ELEMENT_ARRAY_BUFFER, 0);

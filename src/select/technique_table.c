@@ -12,7 +12,9 @@
  * GLSL ES 1.00, which every ES 2.0+ context takes: stin__needs_here drops
  * FIXED_FUNCTION from a need that has GLSL beside it there. */
 #define TIER2 (BIT(GLSL) | BIT(FIXED_FUNCTION))
-#define TIER4 (BIT(GLSL) | BIT(GEOMETRY_SHADER) | BIT(VBO) | BIT(VAO) | BIT(FBO))
+/* The GL4 tier's sources are GLSL 1.50 (GLSL ES 3.00 and later on ES);
+ * what needs a geometry stage (vdsm) says so in its own row. */
+#define TIER4 (BIT(GLSL) | BIT(GLSL_150) | BIT(VBO) | BIT(VAO) | BIT(FBO))
 /* What volumes' own depth map needs (shadow/cast_map.c, on GLSL lighting). */
 #define CAST_MAP (BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW))
 
@@ -29,8 +31,8 @@ static const stin__technique_row rows[] = {
      * position buffer's facet normals are screen derivatives (no vertex
      * normal can stand in for the exact facet) */
     {STIN_TECH_SHADOWS_VDSM,           0,
-     TIER4 | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) | BIT(DERIVATIVES),
-     STIN_TECH_LIGHTING_GLSL150, 0, 1, 0, 0, 0},
+     TIER4 | BIT(GEOMETRY_SHADER) | BIT(FLOAT_TEXTURE) | BIT(PACKED_DEPTH_STENCIL) |
+         BIT(DERIVATIVES), STIN_TECH_LIGHTING_GLSL150, 0, 1, 0, 0, 0},
     /* a spare unit holds the screen mask (several lights per lit pass) */
     {STIN_TECH_SHADOWS_VOLUME,         1, BIT(STENCIL), STIN_TECH_NONE, 0, 0, 0, 1, 0},
     /* without shadow compare the lit programs compare, without depth

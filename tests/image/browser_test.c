@@ -11,6 +11,10 @@
  *   map-pcf-S-kK     four-lights: map-pcf-S-kK (pcf_test.c)
  *   coloured         glass-panes: coloured-transmittance, -between
  *                    (coloured_test.c)
+ *   deep             glass-panes at tier gl4 (WebGL 2's default):
+ *                    deep-transmittance, deep-own-layer (deep_test.c)
+ *   lighting-gl4, volume-gl4, pom-gl4  lighting, volume and pom at tier
+ *                    gl4: its GLSL ES 3.00 programs, the same rows
  *   depth-peel       glass-panes: peel-beauty (peel_test.c)
  *   normal, pom      stone-wall: normal-reference, pom-reference
  *                    (surface_test.c)
@@ -25,7 +29,7 @@
  *   scs-CASE         csg: csg-scs-CASE P and N of csg.json's product CASE
  *                    (carved, both, common) alone (csg_test.c)
  *   goldfeather-CASE csg: csg-CASE P and N, the same products by goldfeather
- *   skip-T           a technique of tier gl4 (deep, dual-peel, vdsm,
+ *   skip-T           a technique WebGL 2 cannot run (dual-peel, vdsm,
  *                    displace-tess, interval) forced at stin's best tier: a
  *                    SKIP row with stin's refusal naming what WebGL 2 lacks;
  *                    FAIL if it ran (it would need rows of its own) or
@@ -39,7 +43,8 @@
  *                    clear, no error logged, and each feature stin marks
  *                    fallen back named in its log; the line lists the
  *                    log's warnings (the fall-backs of what WebGL lacks)
- * and gl-clean for each: stin_create succeeded, every frame returned
+ * The cases run at tier gl2 unless they name gl4; their rows carry the
+ * tier. And gl-clean for each: stin_create succeeded, every frame returned
  * STIN_OK with WebGL's error flag clear, no error logged, and stin chose
  * the technique the case forced.
  */
@@ -58,6 +63,7 @@ typedef enum browser_rows {
     ROWS_VOLUME,
     ROWS_PCF,
     ROWS_COLOURED,
+    ROWS_DEEP,
     ROWS_PEEL,
     ROWS_SURFACE,
     ROWS_DOWN,    /* against the frame of the case its `csg` field names */
@@ -79,33 +85,37 @@ typedef struct browser_case {
     int kernel;
     const char *csg;      /* ROWS_CSG: csg_test.c's case (the page draws that product alone);
                              ROWS_DOWN: the case it is compared with */
+    stin_tier tier;       /* the tier test.js forces (its rows', and their names') */
 } browser_case;
 
 static const browser_case cases[] = {
-    {"lighting", "four-lights", STIN_TECH_SHADOWS_OFF, ROWS_LIGHTING, 0, 0, NULL},
-    {"volume", "four-lights", STIN_TECH_SHADOWS_VOLUME, ROWS_VOLUME, 0, 0, NULL},
-    {"map-pcf-1024-k3", "four-lights", STIN_TECH_SHADOWS_MAP_PCF, ROWS_PCF, 1024, 3, NULL},
-    {"coloured", "glass-panes", STIN_TECH_TRANSLUCENT_COLOURED, ROWS_COLOURED, 0, 0, NULL},
-    {"depth-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DEPTH_PEEL, ROWS_PEEL, 0, 0, NULL},
-    {"normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_SURFACE, 0, 0, NULL},
-    {"pom", "stone-wall", STIN_TECH_SURFACE_POM, ROWS_SURFACE, 0, 0, NULL},
-    {"parallax-down", "stone-wall", STIN_TECH_SURFACE_PARALLAX, ROWS_DOWN, 0, 0, "parallax-down-normal"},
-    {"parallax-down-normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_PAIR, 0, 0, NULL},
-    {"parallax-limit", "stone-wall", STIN_TECH_SURFACE_PARALLAX, ROWS_LIMIT, 0, 0, NULL},
-    {"displace", "displace-plate", STIN_TECH_DISPLACEMENT_VTF, ROWS_DISPLACE, 0, 0, NULL},
-    {"scs-carved", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "carved"},
-    {"scs-both", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "both"},
-    {"scs-common", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "common"},
-    {"goldfeather-carved", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "carved"},
-    {"goldfeather-both", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "both"},
-    {"goldfeather-common", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "common"},
-    {"skip-deep", "glass-panes", STIN_TECH_TRANSLUCENT_DEEP, ROWS_SKIP, 0, 0, NULL},
-    {"skip-dual-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DUAL_PEEL, ROWS_SKIP, 0, 0, NULL},
-    {"skip-vdsm", "four-lights", STIN_TECH_SHADOWS_VDSM, ROWS_SKIP, 0, 0, NULL},
-    {"skip-displace-tess", "displace-tess", STIN_TECH_DISPLACEMENT_TESS, ROWS_SKIP, 0, 0, NULL},
-    {"skip-interval", "csg", STIN_TECH_CSG_INTERVAL, ROWS_SKIP, 0, 0, NULL},
-    {"webgl1", "four-lights", STIN_TECH_NONE, ROWS_REFUSAL, 0, 0, NULL},
-    {"sweep", NULL, STIN_TECH_NONE, ROWS_SWEEP, 0, 0, NULL},
+    {"lighting", "four-lights", STIN_TECH_SHADOWS_OFF, ROWS_LIGHTING, 0, 0, NULL, STIN_TIER_GL2},
+    {"volume", "four-lights", STIN_TECH_SHADOWS_VOLUME, ROWS_VOLUME, 0, 0, NULL, STIN_TIER_GL2},
+    {"map-pcf-1024-k3", "four-lights", STIN_TECH_SHADOWS_MAP_PCF, ROWS_PCF, 1024, 3, NULL, STIN_TIER_GL2},
+    {"coloured", "glass-panes", STIN_TECH_TRANSLUCENT_COLOURED, ROWS_COLOURED, 0, 0, NULL, STIN_TIER_GL2},
+    {"deep", "glass-panes", STIN_TECH_TRANSLUCENT_DEEP, ROWS_DEEP, 0, 0, NULL, STIN_TIER_GL4},
+    {"lighting-gl4", "four-lights", STIN_TECH_SHADOWS_OFF, ROWS_LIGHTING, 0, 0, NULL, STIN_TIER_GL4},
+    {"volume-gl4", "four-lights", STIN_TECH_SHADOWS_VOLUME, ROWS_VOLUME, 0, 0, NULL, STIN_TIER_GL4},
+    {"pom-gl4", "stone-wall", STIN_TECH_SURFACE_POM, ROWS_SURFACE, 0, 0, NULL, STIN_TIER_GL4},
+    {"depth-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DEPTH_PEEL, ROWS_PEEL, 0, 0, NULL, STIN_TIER_GL2},
+    {"normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_SURFACE, 0, 0, NULL, STIN_TIER_GL2},
+    {"pom", "stone-wall", STIN_TECH_SURFACE_POM, ROWS_SURFACE, 0, 0, NULL, STIN_TIER_GL2},
+    {"parallax-down", "stone-wall", STIN_TECH_SURFACE_PARALLAX, ROWS_DOWN, 0, 0, "parallax-down-normal", STIN_TIER_GL2},
+    {"parallax-down-normal", "stone-wall", STIN_TECH_SURFACE_NORMAL, ROWS_PAIR, 0, 0, NULL, STIN_TIER_GL2},
+    {"parallax-limit", "stone-wall", STIN_TECH_SURFACE_PARALLAX, ROWS_LIMIT, 0, 0, NULL, STIN_TIER_GL2},
+    {"displace", "displace-plate", STIN_TECH_DISPLACEMENT_VTF, ROWS_DISPLACE, 0, 0, NULL, STIN_TIER_GL2},
+    {"scs-carved", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "carved", STIN_TIER_GL2},
+    {"scs-both", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "both", STIN_TIER_GL2},
+    {"scs-common", "csg", STIN_TECH_CSG_SCS, ROWS_CSG, 0, 0, "common", STIN_TIER_GL2},
+    {"goldfeather-carved", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "carved", STIN_TIER_GL2},
+    {"goldfeather-both", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "both", STIN_TIER_GL2},
+    {"goldfeather-common", "csg", STIN_TECH_CSG_GOLDFEATHER, ROWS_CSG, 0, 0, "common", STIN_TIER_GL2},
+    {"skip-dual-peel", "glass-panes", STIN_TECH_TRANSPARENCY_DUAL_PEEL, ROWS_SKIP, 0, 0, NULL, STIN_TIER_GL2},
+    {"skip-vdsm", "four-lights", STIN_TECH_SHADOWS_VDSM, ROWS_SKIP, 0, 0, NULL, STIN_TIER_GL2},
+    {"skip-displace-tess", "displace-tess", STIN_TECH_DISPLACEMENT_TESS, ROWS_SKIP, 0, 0, NULL, STIN_TIER_GL2},
+    {"skip-interval", "csg", STIN_TECH_CSG_INTERVAL, ROWS_SKIP, 0, 0, NULL, STIN_TIER_GL2},
+    {"webgl1", "four-lights", STIN_TECH_NONE, ROWS_REFUSAL, 0, 0, NULL, STIN_TIER_GL2},
+    {"sweep", NULL, STIN_TECH_NONE, ROWS_SWEEP, 0, 0, NULL, STIN_TIER_GL2},
 };
 
 /* The view of the scene (scene_variant.h) the case's page drew, packed of
@@ -281,13 +291,14 @@ static void sweep_row(run *r, const char *dir, const char *scene_name)
     }
     if (f)
         fclose(f);
-    /* a feature that fell back must be named: "FEATURE: ... falls back" */
+    /* a feature that fell back must be named: "FEATURE: ... falls back", or
+     * stin_create's choice "FEATURE: TECHNIQUE (fallback: WHY)" */
     for (k = 0; k < falls && !why[0]; k++) {
         int found = 0;
         f = fopen(path, "r");
         while (f && fgets(line, sizeof line, f))
             found |= !strncmp(line, "log ", 4) && strstr(line, fell[k]) != NULL &&
-                     strstr(line, "falls back") != NULL;
+                 (strstr(line, "falls back") != NULL || strstr(line, "(fallback: ") != NULL);
         if (f)
             fclose(f);
         if (!found)
@@ -351,14 +362,16 @@ static void case_rows(run *r, const browser_case *bc, const char *dir, const cha
                       const unsigned char *beauty)
 {
     char name[256];
+    stin_tier tier = bc->tier;
     switch (bc->rows) {
-    case ROWS_LIGHTING: render_rows(r, STIN_TIER_GL2, scene_name, s, &cap->img, 0); break;
-    case ROWS_VOLUME: shadow_vis_rows(r, STIN_TIER_GL2, path, cap); break;
-    case ROWS_PCF: pcf_rows(r, STIN_TIER_GL2, path, bc->map_size, bc->kernel, cap); break;
-    case ROWS_COLOURED: coloured_frame_rows(r, STIN_TIER_GL2, path, cap); break;
-    case ROWS_PEEL: peel_frame_rows(r, STIN_TIER_GL2, path, beauty, bc->tech); break;
+    case ROWS_LIGHTING: render_rows(r, tier, scene_name, s, &cap->img, 0); break;
+    case ROWS_VOLUME: shadow_vis_rows(r, tier, path, cap); break;
+    case ROWS_PCF: pcf_rows(r, tier, path, bc->map_size, bc->kernel, cap); break;
+    case ROWS_COLOURED: coloured_frame_rows(r, tier, path, cap); break;
+    case ROWS_DEEP: deep_frame_rows(r, tier, path, cap); break;
+    case ROWS_PEEL: peel_frame_rows(r, tier, path, beauty, bc->tech); break;
     case ROWS_SURFACE: /* ANGLE draws upside down: a quad's derivatives from its lower row */
-        surface_frame_rows(r, STIN_TIER_GL2, path, bc->tech, 1, cap);
+        surface_frame_rows(r, tier, path, bc->tech, 1, cap);
         break;
     case ROWS_DOWN: down_rows(r, dir, scene_name, s, bc, cap); break;
     case ROWS_LIMIT:
@@ -398,7 +411,8 @@ void browser_tests(run *r, const char *dir, const char *list, const char *path)
             skip_row(r, dir, scene_name, bc);
             continue;
         }
-        snprintf(name, sizeof name, "gl2/%s/%s/gl-clean", scene_name, bc->name);
+        snprintf(name, sizeof name, "%s/%s/%s/gl-clean", stin_tier_name(bc->tier),
+                 scene_name, bc->name);
         view = s;
         if (case_variant(bc) && !scene_variant_make(&s, case_variant(bc), &view)) {
             report(r, "FAIL", name, "no %s view of the scene", case_variant(bc));

@@ -246,7 +246,8 @@ void choice_tests(run *r, stin_tier tier, const char *path)
     char err[512], scene_name[128], name[256];
     int k, w = r->width, h = r->height;
     snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
-    if (tier != STIN_TIER_GL4 || !chosen_scene(scene_name))
+    if (tier != STIN_TIER_GL4 || !chosen_scene(scene_name) ||
+        !vdsm_runs_here(r, scene_name, "choice"))
         return;
     if (!scene_load(path, &s, err, sizeof err))
         return; /* test_scene reported it */

@@ -219,16 +219,7 @@ static void glsl_tests(deep_case *c, int stack, int colour, int panes)
 static void case_of(deep_case *c, run *r, stin_tier tier, const scene *s, const char *scene_name,
                     int stack)
 {
-    memset(c, 0, sizeof *c);
-    c->r = r;
-    c->s = s;
-    c->scene_name = scene_name;
-    c->tier = tier;
-    c->tech = STIN_TECH_TRANSLUCENT_COLOURED;
-    c->tag = "coloured";
-    /* deep's sizes: 2048 a face on deep-stack's one face, 512 elsewhere */
-    c->map_size = stack ? 2048u : 512u;
-    c->band = stack ? 1 : 3;
+    deep_case_init(c, r, tier, s, scene_name, STIN_TECH_TRANSLUCENT_COLOURED, stack);
 }
 
 void coloured_frame_rows(run *r, stin_tier tier, const char *path, const capture *cap)

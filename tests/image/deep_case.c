@@ -251,6 +251,20 @@ int deep_render(const deep_case *c, const scene *s, const capture_options *o, ca
     return 1;
 }
 
+void deep_case_init(deep_case *c, run *r, stin_tier tier, const scene *s, const char *scene_name,
+                    stin_technique t, int stack)
+{
+    memset(c, 0, sizeof *c);
+    c->r = r;
+    c->s = s;
+    c->scene_name = scene_name;
+    c->tier = tier;
+    c->tech = t;
+    c->tag = t == STIN_TECH_TRANSLUCENT_DEEP ? "deep" : "coloured";
+    c->map_size = stack ? 2048u : 512u;
+    c->band = stack ? 1 : 3;
+}
+
 void deep_options(const deep_case *c, capture_options *o)
 {
     memset(o, 0, sizeof *o);

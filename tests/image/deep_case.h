@@ -31,6 +31,12 @@ typedef struct deep_case {
     int skip_transparent; /* 1: pixels of transparent surfaces are not compared */
 } deep_case;
 
+/* c for scene s at tier: technique t (its tag), deep's sizes (2048
+ * texels a face on deep-stack's one face, `stack`, with a one-pixel band;
+ * 512 elsewhere, whose texels span up to about three pixels here), every
+ * layer (layers 0: the default). */
+void deep_case_init(deep_case *c, run *r, stin_tier tier, const scene *s, const char *scene_name,
+                    stin_technique t, int stack);
 /* The reference's pixel and the capture's (x, y from the bottom). */
 const float *deep_ref_px(const deep_case *c, int x, int y);
 const float *deep_gl_px(const deep_case *c, const capture *cap, int x, int y);

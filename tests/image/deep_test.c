@@ -359,6 +359,31 @@ static void window_tests(deep_case *c)
     capture_free(&cap);
 }
 
+void deep_frame_rows(run *r, stin_tier tier, const char *path, const capture *cap)
+{
+    deep_case c;
+    scene s;
+    reference *ref = NULL;
+    char err[512], scene_name[128], name[256];
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    if (!scene_load(path, &s, err, sizeof err)) {
+        report(r, "FAIL", "deep-reference", "%s: %s", scene_name, err);
+        return;
+    }
+    deep_case_init(&c, r, tier, &s, scene_name, STIN_TECH_TRANSLUCENT_DEEP, 0);
+    c.layers = 6; /* deep_tests' on glass-panes */
+    if (!deep_make_reference(&c, &ref, err, sizeof err)) {
+        report(r, "FAIL", "deep-reference", "%s/%s: %s", stin_tier_name(tier), scene_name, err);
+    } else {
+        snprintf(name, sizeof name, "%s/%s/deep-transmittance", stin_tier_name(tier), scene_name);
+        deep_test_transmittance(&c, cap, name);
+        snprintf(name, sizeof name, "%s/%s/deep-own-layer", stin_tier_name(tier), scene_name);
+        deep_test_own_layer(&c, cap, name);
+    }
+    deep_free_reference(&c, ref);
+    scene_free(&s);
+}
+
 void deep_tests(run *r, stin_tier tier, const char *path)
 {
     deep_case c;
@@ -382,17 +407,7 @@ void deep_tests(run *r, stin_tier tier, const char *path)
         scene_free(&s);
         return;
     }
-    memset(&c, 0, sizeof c);
-    c.r = r;
-    c.s = &s;
-    c.scene_name = scene_name;
-    c.tier = tier;
-    c.tech = STIN_TECH_TRANSLUCENT_DEEP;
-    c.tag = "deep";
-    /* 2048 a face once (the spot light's one face); 512 elsewhere, whose
-     * texels span up to about three pixels here */
-    c.map_size = stack ? 2048u : 512u;
-    c.band = stack ? 1 : 3;
+    deep_case_init(&c, r, tier, &s, scene_name, STIN_TECH_TRANSLUCENT_DEEP, stack);
     /* glass-panes' panes are boxes: up to six surfaces along a ray */
     c.layers = stack || colour || omni || window ? 0 : 6;
     if (!deep_make_reference(&c, &ref, err, sizeof err))

@@ -48,8 +48,10 @@ static const expected_profile table[] = {
     {"es20-ext", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, STIN_TECH_TRANSLUCENT_COLOURED,
                                  STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS,
                                  STIN_TECH_TRANSPARENCY_DEPTH_PEEL}, {0, 1, 0}},
-    {"es30", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, COLOURED}, {0, 1, 0}},
-    {"es31", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, COLOURED}, {0, 1, 0}},
+    /* ES 3.0 and 3.1 run the GL4 tier's GLSL ES 3.00 programs without a
+     * geometry stage: volumes instead of vdsm, vertex-texture displacement */
+    {"es30", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, DISPLACED}, {0, 1, 1}},
+    {"es31", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, DISPLACED}, {0, 1, 1}},
     /* dual peeling's early stop by an any-samples query, its RG32F MIN/MAX
      * by EXT_float_blend */
     {"es32", STIN_TIER_GL4, {LIGHT_150, VDSM, POM, TESSELLATED}, {0, 1, 1}},

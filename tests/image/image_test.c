@@ -327,7 +327,7 @@ int main(int argc, char **argv)
     int i, first_scene = argc, t;
     char *displaced;
     const stin_tier tiers[3] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
-    const char *browser_dir = NULL, *browser_cases = "";
+    const char *browser_dir = NULL, *browser_cases = "", *only_tiers = NULL;
     memset(&r, 0, sizeof r);
     r.width = 256;
     r.height = 192;
@@ -338,6 +338,7 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--out") && i + 1 < argc) r.out_dir = argv[++i];
         else if (!strcmp(argv[i], "--browser") && i + 1 < argc) browser_dir = argv[++i];
         else if (!strcmp(argv[i], "--cases") && i + 1 < argc) browser_cases = argv[++i];
+        else if (!strcmp(argv[i], "--tiers") && i + 1 < argc) only_tiers = argv[++i];
         else if (!strcmp(argv[i], "--size") && i + 1 < argc) {
             if (sscanf(argv[++i], "%dx%d", &r.width, &r.height) != 2) return 2;
         } else {
@@ -357,7 +358,7 @@ int main(int argc, char **argv)
         !(e = expected_find(r.profile_name)) ||
         !stin_platform_kind_from_name(r.platform_name, &pd.kind)) {
         fprintf(stderr, "usage: stin-imagetest --profile NAME --platform egl|osmesa "
-                        "[--size WxH] [--out DIR] SCENE...\n");
+                        "[--size WxH] [--out DIR] [--tiers gl1,gl2,gl4] SCENE...\n");
         return 2;
     }
     pd.width = r.width;
@@ -374,6 +375,9 @@ int main(int argc, char **argv)
     for (i = first_scene; displaced && i < argc; i++)
         displaced[i] = (char)displace_scene(argv[i]);
     for (t = 0; t < 3; t++) {
+        /* --tiers: a suite of some tiers alone (the selection row runs in each) */
+        if (only_tiers && !strstr(only_tiers, stin_tier_name(tiers[t])))
+            continue;
         if (!e->tier_runs[t]) {
             test_refusal(&r, tiers[t]);
             continue;

@@ -39,6 +39,9 @@ void pcf_rows(run *r, stin_tier tier, const char *path, uint32_t size, int kerne
  * its lower-left pixel, as ANGLE on SwiftShader does, not its upper-left as
  * llvmpipe); displace position and silhouette (displace_test.c). */
 void coloured_frame_rows(run *r, stin_tier tier, const char *path, const struct capture *cap);
+/* deep-transmittance and deep-own-layer of glass-panes' frame drawn
+ * elsewhere with deep_tests' options (deep_test.c). */
+void deep_frame_rows(run *r, stin_tier tier, const char *path, const struct capture *cap);
 void peel_frame_rows(run *r, stin_tier tier, const char *path, const uint8_t *rgba,
                      stin_technique chosen);
 void surface_frame_rows(run *r, stin_tier tier, const char *path, stin_technique tech,

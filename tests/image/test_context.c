@@ -80,6 +80,44 @@ void test_context_destroy(test_context *t)
     memset(t, 0, sizeof *t);
 }
 
+typedef struct refusal_log {
+    char *why;
+    size_t size;
+} refusal_log;
+
+static void keep_error(void *user, stin_log_level level, stin_log_item item, const char *msg)
+{
+    refusal_log *l = user;
+    (void)item;
+    if (level == STIN_LOG_LEVEL_ERROR)
+        snprintf(l->why, l->size, "%s", msg);
+}
+
+int technique_refused(const run *r, stin_tier tier, stin_feature feature, stin_technique want,
+                      char *why, size_t why_size)
+{
+    refusal_log l;
+    stin_context *ctx = NULL;
+    stin_result res;
+    stin_desc d;
+    void *block;
+    size_t size;
+    l.why = why;
+    l.size = why_size;
+    snprintf(why, why_size, "out of memory");
+    test_desc(r, tier, &d);
+    d.techniques[feature] = want;
+    d.log = keep_error;
+    d.log_user = &l;
+    size = stin_memory_size(&d);
+    block = malloc(size);
+    res = block ? stin_create(&d, block, size, &ctx) : STIN_ERROR_OUT_OF_MEMORY;
+    if (ctx)
+        stin_destroy(ctx);
+    free(block);
+    return res == STIN_ERROR_UNSUPPORTED;
+}
+
 void test_frame_desc(const run *r, const scene *s, stin_frame_desc *fd)
 {
     memset(fd, 0, sizeof *fd);

@@ -32,6 +32,12 @@ int test_context_create_translucent(test_context *t, const run *r, const scene *
                                     stin_tier tier, stin_technique shadows,
                                     stin_technique translucent);
 void test_context_destroy(test_context *t);
+/* 1 where stin_create refuses `want` forced at `tier` on the run's context
+ * (why: its reason, the capability it names), else 0: how a family of
+ * rows learns once that its technique does not run here (vdsm on ES 3.0,
+ * which has the GL4 tier but no geometry shaders). */
+int technique_refused(const run *r, stin_tier tier, stin_feature feature, stin_technique want,
+                      char *why, size_t why_size);
 
 /* The scene camera's frame into the platform's framebuffer at the run's
  * size, the scene's ambient, cleared to 0. */

@@ -2,6 +2,7 @@
 /* The VDSM image tests' shared case (vdsm_case.h). */
 #include "vdsm_case.h"
 #include "aov.h"
+#include "test_context.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -241,6 +242,21 @@ int vdsm_render_mask(const vdsm_case *c, uint64_t debug, uint32_t map_size, capt
                      const char *test)
 {
     return render(c, debug, map_size, 1, out, test);
+}
+
+int vdsm_runs_here(run *r, const char *scene_name, const char *test)
+{
+    static int refused = -1; /* one profile a run */
+    static char why[512];
+    char name[256];
+    if (refused < 0)
+        refused = technique_refused(r, STIN_TIER_GL4, STIN_FEATURE_SHADOWS,
+                                    STIN_TECH_SHADOWS_VDSM, why, sizeof why);
+    if (refused) {
+        snprintf(name, sizeof name, "gl4/%s/vdsm-%s", scene_name, test);
+        report(r, "SKIP", name, "vdsm does not run here (%s)", why);
+    }
+    return !refused;
 }
 
 /* The reference of a case: 0 (reported under `test`) when it cannot be made. */

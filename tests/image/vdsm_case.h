@@ -60,6 +60,10 @@ int vdsm_render(const vdsm_case *c, uint64_t debug, capture *out, const char *te
  * renders' masks and statistics, which need neither beauty nor normals. */
 int vdsm_render_mask(const vdsm_case *c, uint64_t debug, uint32_t map_size, capture *out,
                      const char *test);
+/* 1 where the run's context runs vdsm; else 0 and one SKIP line
+ * "gl4/<scene>/vdsm-<test>" naming what it lacks (asked of stin once a run:
+ * ES 3.0 and 3.1 have the GL4 tier without geometry shaders). */
+int vdsm_runs_here(run *r, const char *scene_name, const char *test);
 /* The reference of a case: 0 (reported under `test`) when it cannot be
  * made; close it either way. */
 int vdsm_case_open(vdsm_case *c, run *r, const scene *s, const char *scene_name,

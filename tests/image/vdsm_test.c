@@ -360,12 +360,14 @@ void vdsm_tests(run *r, stin_tier tier, const char *path)
     char err[512], scene_name[128];
     if (tier != STIN_TIER_GL4)
         return;
+    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
+    if (!vdsm_runs_here(r, scene_name, "tests"))
+        return;
     if (!box_done) {
         box_done = 1;
         test_two_sided(r);
     }
     vdsm_seed_tests(r, tier);
-    snprintf(scene_name, sizeof scene_name, "%s", scene_base_name(path));
     if (!scene_load(path, &s, err, sizeof err))
         return; /* test_scene reported it */
     /* the tests below prove the exact segment to one point: an area light

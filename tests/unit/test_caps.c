@@ -462,7 +462,7 @@ static void test_detect_without_version_fails(void **state)
 #define DERIVATIVES_EXT "GL_OES_standard_derivatives"
 #define ES30_CORE                                                                        \
     (ES20_CORE | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) | \
-     BIT(ELEMENT_INDEX_UINT) | BIT(FRAG_DEPTH) | BIT(ANY_SAMPLES_QUERY))
+     BIT(ELEMENT_INDEX_UINT) | BIT(FRAG_DEPTH) | BIT(ANY_SAMPLES_QUERY) | BIT(GLSL_150))
 
 static void test_es_version_strings(void **state)
 {

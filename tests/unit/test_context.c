@@ -399,7 +399,7 @@ static void test_forcing_gl4_on_gl21_is_unsupported(void **state)
     assert_null(f.ctx);
     assert_int_equal(f.log.items[STIN_LOG_TIER_UNSUPPORTED], 1);
     assert_true(fake_log_has(&f.log, STIN_LOG_TIER_UNSUPPORTED,
-                             stin_cap_name(STIN_CAP_GEOMETRY_SHADER)));
+                             stin_cap_name(STIN_CAP_GLSL_150)));
     assert_int_equal(fake_gl.programs_created, 0);
     fixture_free(&f);
 }

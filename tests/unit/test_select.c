@@ -26,7 +26,7 @@
                    BIT(FRAG_DEPTH) | BIT(DERIVATIVES))
 #define GL33_CORE_BITS                                                                    \
     ((GL21_BITS & ~BIT(FIXED_FUNCTION)) | BIT(FLOAT_TEXTURE) | BIT(VAO) | BIT(GEOMETRY_SHADER) | \
-     BIT(PACKED_DEPTH_STENCIL) | BIT(FLOAT_BLEND))
+     BIT(GLSL_150) | BIT(PACKED_DEPTH_STENCIL) | BIT(FLOAT_BLEND))
 #define GL45_CORE_BITS (GL33_CORE_BITS | BIT(TESSELLATION) | BIT(COMPUTE))
 
 static stin_caps caps_with(int gl, int glsl, int core, uint64_t present)
@@ -99,7 +99,7 @@ static void test_tier_supported_names_missing_capabilities(void **state)
     assert_string_equal(missing, "GLSL 1.10 shaders");
     assert_false(stin_tier_supported(&gl11, STIN_TIER_GL4, missing, sizeof missing));
     assert_string_equal(missing, "vertex buffer objects, GLSL 1.10 shaders, framebuffer objects, "
-                                 "vertex array objects, geometry shaders (GLSL 1.50)");
+                                 "vertex array objects, GLSL 1.50 shaders (GLSL ES 3.00 on ES)");
     /* Core profiles run neither fixed-function tier. */
     assert_false(stin_tier_supported(&gl33, STIN_TIER_GL1, missing, sizeof missing));
     assert_string_equal(missing, stin_cap_name(STIN_CAP_FIXED_FUNCTION));
@@ -135,7 +135,7 @@ static void test_forcing_a_tier_above_the_caps_fails(void **state)
 
     assert_int_equal(stin__select(&gl21, STIN_TIER_GL4, NULL, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
-    assert_non_null(strstr(msg, "geometry shaders (GLSL 1.50)"));
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_GLSL_150)));
     assert_non_null(strstr(msg, "vertex array objects"));
     assert_null(strstr(msg, "GLSL 1.10 shaders")); /* it has those */
 }
@@ -170,6 +170,8 @@ static void test_hiding_a_capability_lowers_the_tier(void **state)
 {
     stin_caps c = caps_with(45, 45, 0, (GL45_CORE_BITS | BIT(FIXED_FUNCTION)) & ~BIT(GEOMETRY_SHADER));
     (void)state;
+    assert_int_equal(stin_best_tier(&c), STIN_TIER_GL4); /* only vdsm needs the geometry stage */
+    c.present &= ~BIT(GLSL_150);
     assert_int_equal(stin_best_tier(&c), STIN_TIER_GL2);
     c.present &= ~BIT(GLSL);
     assert_int_equal(stin_best_tier(&c), STIN_TIER_GL1);
@@ -384,7 +386,7 @@ static void test_forced_technique_above_the_tier(void **state)
                      STIN_ERROR_UNSUPPORTED);
     assert_non_null(strstr(msg, "glsl150-per-pixel"));
     assert_non_null(strstr(msg, "gl4"));
-    assert_non_null(strstr(msg, "geometry shaders (GLSL 1.50)"));
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_GLSL_150)));
     /* The tier name is its own word, not run together with the capability list. */
     tier = strstr(msg, "gl4");
     assert_non_null(tier);
@@ -667,7 +669,7 @@ static void test_texture_unit_budget(void **state)
      BIT(SEPARATE_STENCIL) | BIT(VBO) | BIT(GLSL) | BIT(FBO))
 #define ES30_BITS                                                                         \
     (ES20_BITS | BIT(VAO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW) | BIT(PACKED_DEPTH_STENCIL) |  \
-     BIT(VERTEX_TEXTURE_FETCH) | BIT(DERIVATIVES))
+     BIT(VERTEX_TEXTURE_FETCH) | BIT(DERIVATIVES) | BIT(GLSL_150))
 #define ES32_BITS                                                                         \
     (ES30_BITS | BIT(COMPUTE) | BIT(GEOMETRY_SHADER) | BIT(TESSELLATION) | BIT(FLOAT_TEXTURE))
 
@@ -678,8 +680,9 @@ static stin_caps es_caps(int version, uint64_t present)
     return c;
 }
 
-/* GLSL ES 1.00 runs the GLSL 1.10 sources: ES 2.0 and 3.0 take the GL2
- * tier without fixed function; ES 3.2 (geometry shaders) the GL4 tier. */
+/* GLSL ES 1.00 runs the GLSL 1.10 sources: ES 2.0 takes the GL2 tier
+ * without fixed function; ES 3.0 on the GL4 tier (GLSL ES 3.00), whose
+ * vdsm needs ES 3.2's geometry shaders. */
 static void test_es_tiers(void **state)
 {
     stin_caps es20 = es_caps(20, ES20_BITS), es30 = es_caps(30, ES30_BITS);
@@ -688,7 +691,7 @@ static void test_es_tiers(void **state)
     char missing[256];
     (void)state;
     assert_int_equal(stin_best_tier(&es20), STIN_TIER_GL2);
-    assert_int_equal(stin_best_tier(&es30), STIN_TIER_GL2);
+    assert_int_equal(stin_best_tier(&es30), STIN_TIER_GL4);
     assert_int_equal(stin_best_tier(&es32), STIN_TIER_GL4);
     assert_true(stin_tier_supported(&es32, STIN_TIER_GL2, NULL, 0));
     assert_false(stin_tier_supported(&desktop, STIN_TIER_GL2, missing, sizeof missing));
@@ -696,8 +699,10 @@ static void test_es_tiers(void **state)
     /* no fixed function on ES: the GL1 tier is refused, naming it */
     assert_false(stin_tier_supported(&es32, STIN_TIER_GL1, missing, sizeof missing));
     assert_string_equal(missing, stin_cap_name(STIN_CAP_FIXED_FUNCTION));
-    assert_false(stin_tier_supported(&es30, STIN_TIER_GL4, missing, sizeof missing));
-    assert_string_equal(missing, stin_cap_name(STIN_CAP_GEOMETRY_SHADER));
+    assert_true(stin_tier_supported(&es30, STIN_TIER_GL2, NULL, 0));
+    assert_false(stin_tier_supported(&es20, STIN_TIER_GL4, missing, sizeof missing));
+    assert_string_equal(missing, "vertex array objects, " /* ES 2.0 has no GLSL ES 3.00 */
+                                 "GLSL 1.50 shaders (GLSL ES 3.00 on ES)");
 }
 
 static void test_es_auto_selection(void **state)
@@ -714,8 +719,14 @@ static void test_es_auto_selection(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_SURFACE].technique, STIN_TECH_SURFACE_POM);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_OFF);
     assert_int_equal(stin__select(&es30, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
-    assert_int_equal(sel.tier, STIN_TIER_GL2);
-    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL110);
+    assert_int_equal(sel.tier, STIN_TIER_GL4);
+    assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL150);
+    /* no geometry stage: volumes (extruded on the CPU) instead of vdsm */
+    assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VOLUME);
+    assert_non_null(strstr(sel.choice[STIN_FEATURE_SHADOWS].reason,
+                           stin_cap_name(STIN_CAP_GEOMETRY_SHADER)));
+    assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique,
+                     STIN_TECH_DISPLACEMENT_VTF);
     assert_int_equal(stin__select(&es32, STIN_TIER_AUTO, NULL, &sel, msg, sizeof msg), STIN_OK);
     assert_int_equal(sel.tier, STIN_TIER_GL4);
     assert_int_equal(sel.choice[STIN_FEATURE_LIGHTING].technique, STIN_TECH_LIGHTING_GLSL150);
@@ -742,7 +753,7 @@ static void test_es_forced_above_the_context(void **state)
     assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_FIXED_FUNCTION)));
     assert_int_equal(stin__select(&es20, STIN_TIER_GL4, NULL, &sel, msg, sizeof msg),
                      STIN_ERROR_UNSUPPORTED);
-    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_GEOMETRY_SHADER)));
+    assert_non_null(strstr(msg, stin_cap_name(STIN_CAP_GLSL_150)));
     for (i = 0; i < sizeof fixed / sizeof fixed[0]; i++) {
         for (f = 0; f < STIN_FEATURE_COUNT; f++)
             forced[f] = STIN_TECH_NONE;

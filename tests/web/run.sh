@@ -18,7 +18,7 @@
 set -u
 B=${1:-build}
 SCENES=${STIN_WEB_SCENES:-all}
-CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3,coloured,depth-peel,normal,pom,parallax-down,parallax-down-normal,displace,scs-carved,scs-both,scs-common,goldfeather-carved,goldfeather-both,goldfeather-common,skip-deep,skip-dual-peel,skip-vdsm,skip-displace-tess,skip-interval,webgl1,sweep}
+CASES=${STIN_WEB_CASES:-lighting,volume,map-pcf-1024-k3,coloured,deep,lighting-gl4,volume-gl4,pom-gl4,depth-peel,normal,pom,parallax-down,parallax-down-normal,displace,scs-carved,scs-both,scs-common,goldfeather-carved,goldfeather-both,goldfeather-common,skip-dual-peel,skip-vdsm,skip-displace-tess,skip-interval,webgl1,sweep}
 SWEEP=${STIN_WEB_SWEEP_SIZE:-128x96}
 LIMIT=${STIN_WEB_TIMEOUT:-240}
 OUT=${STIN_WEB_OUT:-$B/test-out/web}

@@ -8,7 +8,7 @@
 
 // sweep: every scene with stin's own choice at its best tier, on a small
 // front end of its own (?sweep=WxH, default 128x96), frames not read back:
-// drawn, or the fall-back stin names. The other cases force tier gl2 and
+// drawn, or the fall-back stin names. The other cases force tier gl2 (or the one they name) and
 // their technique: force: techniques by name; options: web_option's;
 // scenes: the scenes a case is for; variant: a view of the scene packed of its
 // own. browser_test.c's table agrees.
@@ -19,6 +19,11 @@ const CASES = {
   'map-pcf-1024-k3': { shadows: 'map-pcf', size: 1024, kernel: 3, scenes: ['four-lights'] },
   // coloured_test.c's options: deep's 512 a side on glass-panes, shadows stin's
   coloured: { shadows: '', force: ['coloured'], options: { deep_map_size: 512 }, scenes: ['glass-panes'] },
+  // tier gl4, WebGL 2's default: deep_test.c's options on glass-panes (512 a face, six layers)
+  deep: { tier: 'gl4', shadows: '', force: ['deep'], options: { deep_map_size: 512, deep_layers: 6 }, scenes: ['glass-panes'] },
+  'lighting-gl4': { tier: 'gl4', shadows: 'shadows-off', size: 0, kernel: 0, scenes: ['four-lights'] },
+  'volume-gl4': { tier: 'gl4', shadows: 'volume', size: 0, kernel: 0, scenes: ['four-lights'] },
+  'pom-gl4': { tier: 'gl4', shadows: 'shadows-off', force: ['pom'], scenes: ['stone-wall'] },
   'depth-peel': { shadows: 'shadows-off', force: ['depth-peel'], scenes: ['glass-panes'] },
   normal: { shadows: 'shadows-off', force: ['normal'], scenes: ['stone-wall'] },
   pom: { shadows: 'shadows-off', force: ['pom'], scenes: ['stone-wall'] },
@@ -28,9 +33,8 @@ const CASES = {
   'parallax-down-normal': { shadows: 'shadows-off', force: ['normal'], variant: 'parallax-down', scenes: ['stone-wall'] },
   'parallax-limit': { shadows: 'shadows-off', force: ['parallax'], variant: 'parallax-limit', scenes: ['stone-wall'] },
   displace: { shadows: 'shadows-off', force: ['displace'], scenes: ['displace-plate'] },
-  // techniques WebGL 2 cannot run (tier gl4's): forced at stin's best tier, frames not read
+  // techniques WebGL 2 cannot run: forced at stin's best tier, frames not read
   // back; stin must fall back and say why (a SKIP row with its reason)
-  'skip-deep': { tier: 'auto', shadows: '', force: ['deep'], skip: true, scenes: ['glass-panes'] },
   'skip-dual-peel': { tier: 'auto', shadows: 'shadows-off', force: ['dual-peel'], skip: true, scenes: ['glass-panes'] },
   'skip-vdsm': { tier: 'auto', shadows: 'vdsm', skip: true, scenes: ['four-lights'] },
   'skip-displace-tess': { tier: 'auto', shadows: 'shadows-off', force: ['displace-tess'], skip: true, scenes: ['displace-tess'] },
