@@ -300,9 +300,11 @@
  * caster. So map-depth draws a second pass per map, without polygon offset
  * (which would push a steep front face behind the back face under it near
  * the light's silhouette), writing by two-sided lighting which side of the
- * nearest surface the light sees into a LUMINANCE8 side map, and draws each
- * lit pass twice with face culling, once per side the eye sees, the side map
- * on the texture unit after the depth compare's (NEAREST): a fragment is lit
+ * nearest surface the light sees into two LUMINANCE8 side maps (one lit
+ * where the light sees front faces, one where it sees back faces, both lit
+ * where it sees no surface, as the depth map is), and draws each lit pass
+ * twice with face culling, once per side the eye sees, that side's map on
+ * the texture unit after the depth compare's (NEAREST): a fragment is lit
  * only where the eye and the light see the same side, as volumes and the
  * test reference decide. Within about a texel of the light's silhouette (the
  * terminator) the side map may name the neighbouring facet's side. Without
@@ -367,7 +369,7 @@
  * lights are hard-shadowed by maps. Each of the
  * desc.max_lights light slots holds a map of shadows.map_size squared texels
  * (4 bytes each), made at stin_create: size max_lights to the scene.
- * map-depth's side test adds a byte a texel to each slot (and to the six
+ * map-depth's side test adds two bytes a texel to each slot (and to the six
  * point-light faces), and with FBOs one RGBA8 colour and one 24-bit depth
  * texture of the map's size that its side passes share.
  * Volumes: silhouettes from the adjacency built at
@@ -508,15 +510,14 @@
  * - "map-pcf", "map-depth", "map-combine", "deep", "coloured": looked up
  *   in the lit pass at the fragment's own surface point (the pixel centre
  *   on that surface), so a sample never takes another surface's. (Tested
- *   for map-pcf, map-combine, deep and coloured, and map-depth under CSG
- *   products; the fixed-function maps drawn in the frame's own buffer,
- *   without FBOs, are not tested into a multisampled default framebuffer.)
- *   map-depth's side test (shadow/map_facing.c) is the exception: where a
- *   fragment's pixel centre lies beyond its surface's edge as the light
- *   sees it (an outline over the background or over another surface), the
- *   side map there holds "neither side" (0.5) and the fragment is lit at
- *   half strength: a dim rim one pixel wide (measured 101 of 711
- *   silhouette-band pixels, up to 0.11, tests/image/msaa_test.c; open).
+ *   for map-pcf, map-depth, map-combine, deep and coloured; the
+ *   fixed-function maps drawn in the frame's own buffer, without FBOs, are
+ *   not tested into a multisampled default framebuffer.) Where that point
+ *   lies beyond its surface's edge as the light sees it (the pixel centre
+ *   past an outline), map-depth's depth map holds no surface there and its
+ *   side test (shadow/map_facing.c) counts no surface as lit from either
+ *   side, so the fragment is lit as the reference lights it (it was lit at
+ *   half strength before: a dim rim, 101 of 711 silhouette-band pixels).
  * - "vdsm", and "volume" through the screen mask (two or more lights, or
  *   an area light, on GLSL tiers): the mask and vdsm's position buffer stay
  *   single-sampled, one surface a pixel, the one at its centre. Where the

@@ -7,20 +7,31 @@
  * nearest caster and passes the depth test, lit. So each map gets a side
  * pass: by two-sided lighting (emission only: white on front faces, black on
  * back faces as the light's rasteriser sees them) it writes which side of
- * the nearest surface faces the light, copied into a LUMINANCE8 texture per
- * slot. It has a depth buffer of its own (with FBOs) and no polygon offset:
- * a slope-scaled offset pushes a steep front face behind the back face under
- * it near the light's silhouette and would name the wrong side there. The lit
- * pass is drawn once per side the eye sees (face culling): eye-front
- * fragments are multiplied by that texture (MODULATE), eye-back ones by one
- * minus it (BLEND, black environment colour). A fragment is lit only where
- * the side the eye sees is the side the light sees, the rule of the
- * reference. A draw mirrored by its transform flips both rasterisers alike;
- * a mirrored camera (det(projection * view) > 0) swaps the culled faces.
- * GL 1.1 means only, on a texture unit after the depth compare; without a
- * spare unit the test is left out (logged). With the terminator test
- * (shadow/map_terminator.c) the side map is drawn from the faces a
- * second-depth map keeps, lit by the light (INTENSITY8: the side in alpha). */
+ * the nearest surface faces the light, copied into two textures per slot.
+ * It has a depth buffer of its own (with FBOs) and no polygon offset: a
+ * slope-scaled offset pushes a steep front face behind the back face under
+ * it near the light's silhouette and would name the wrong side there. The
+ * lit pass is drawn once per side the eye sees (face culling): eye-front
+ * fragments are multiplied by one map (MODULATE), eye-back ones by the
+ * other. A fragment is lit only where the side the eye sees is the side the
+ * light sees, the rule of the reference. Texels no surface covers are lit
+ * in both maps, as the depth test lights them: a fragment reads one only
+ * beside its surface's outline as the light sees it, where the light's
+ * rasteriser left the texel out, or beyond it where a multisampled target
+ * shades a fragment at its pixel centre outside its surface (one map with
+ * a third value there, 0.5, lit a rim at half strength). The pass is
+ * cleared to white and copied as it is (facing: 1 front, 0 back, 1 none);
+ * then a quad on the far plane, depth GREATER, turns each texel a surface
+ * covers into one minus itself (blend ONE_MINUS_DST_COLOR, ZERO) and the
+ * second copy is taken (facing_back: 0 front, 1 back, 1 none). No pixel
+ * transfer scale: Mesa's CopyTexSubImage through one reads zeros from a
+ * window's framebuffer. A draw mirrored by its transform flips both
+ * rasterisers alike; a mirrored camera (det(projection * view) > 0) swaps
+ * the culled faces. GL 1.1 means only, on a texture unit after the depth
+ * compare; without a spare unit the test is left out (logged). With the
+ * terminator test (shadow/map_terminator.c) the side map is drawn from the
+ * faces a second-depth map keeps, lit by the light (facing is INTENSITY8:
+ * the solids read their side in alpha). */
 #include "shadow/map_fixed_private.h"
 
 static void create_facing_texture(stin_context *ctx, GLuint *t, uint32_t size, GLenum format)
@@ -55,24 +66,69 @@ void stin__map_facing_init(stin_context *ctx, int units_after)
 
 void stin__map_facing_create(stin_context *ctx, uint32_t slot)
 {
-    if (ctx->map_fixed->facing_test)
-        create_facing_texture(ctx, &ctx->map_fixed->facing[slot], ctx->map_fixed->size,
-                              ctx->map_fixed->terminator ? GL_INTENSITY8 : GL_LUMINANCE8);
+    struct stin__map_fixed_state *m = ctx->map_fixed;
+    if (!m->facing_test)
+        return;
+    /* the terminator test's solids read their side in alpha */
+    create_facing_texture(ctx, &m->facing[slot], m->size,
+                          m->terminator ? GL_INTENSITY8 : GL_LUMINANCE8);
+    create_facing_texture(ctx, &m->facing_back[slot], m->size, GL_LUMINANCE8);
 }
 
 void stin__map_facing_release(stin_context *ctx)
 {
     struct stin__map_fixed_state *m = ctx->map_fixed;
     uint32_t i;
-    for (i = 0; i < STIN__MAP_SLOTS; i++)
+    for (i = 0; i < STIN__MAP_SLOTS; i++) {
         if (m->facing[i])
             GL(ctx, DeleteTextures)(1, &m->facing[i]);
+        if (m->facing_back[i])
+            GL(ctx, DeleteTextures)(1, &m->facing_back[i]);
+    }
     if (m->facing_fbo)
         GL(ctx, DeleteFramebuffers)(1, &m->facing_fbo);
     if (m->facing_color)
         GL(ctx, DeleteTextures)(1, &m->facing_color);
     if (m->facing_depth)
         GL(ctx, DeleteTextures)(1, &m->facing_depth);
+}
+
+/* The side pass's colour into texture t. */
+static void copy_side(stin_context *ctx, GLuint t, int x, int y)
+{
+    const struct stin__map_fixed_state *m = ctx->map_fixed;
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, t);
+    GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, x, y, (GLsizei)m->used, (GLsizei)m->used);
+}
+
+/* Each texel a surface covers (its depth under the clear's 1) into one
+ * minus its colour; those none covers stay white. ps: the pass's state
+ * (viewport, scissor); the matrices are left at identity (the map's
+ * callers load their own). */
+static void invert_covered(stin_context *ctx, stin__pass_state ps)
+{
+    static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    static const float corner[6][3] = {{-1, -1, 1}, {1, -1, 1}, {1, 1, 1},
+                                       {-1, -1, 1}, {1, 1, 1},  {-1, 1, 1}};
+    int i;
+    ps.depth_test = 1;
+    ps.depth_func = GL_GREATER; /* window depth 1 against the clear's 1: fails */
+    ps.depth_write = 0;
+    ps.blend = 1;
+    ps.blend_src = GL_ONE_MINUS_DST_COLOR;
+    ps.blend_dst = GL_ZERO;
+    ps.cull = 0;
+    ps.stencil_test = 0;
+    stin__pass_apply(ctx, &ps);
+    GL(ctx, MatrixMode)(GL_PROJECTION);
+    GL(ctx, LoadMatrixf)(identity);
+    GL(ctx, MatrixMode)(GL_MODELVIEW);
+    GL(ctx, LoadMatrixf)(identity);
+    GL(ctx, Color4f)(1.0f, 1.0f, 1.0f, 1.0f);
+    GL(ctx, Begin)(GL_TRIANGLES);
+    for (i = 0; i < 6; i++)
+        GL(ctx, Vertex3fv)(corner[i]);
+    GL(ctx, End)();
 }
 
 /* Emission only, white in front and black behind: the colour is the side,
@@ -111,7 +167,7 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const stin_light_de
     ps.color_only = 0;
     stin__pass_apply(ctx, &ps);
     stin__clear_depth(ctx, 1.0);
-    GL(ctx, ClearColor)(0.5f, 0.5f, 0.5f, 1.0f); /* texels no surface covers: neither side */
+    GL(ctx, ClearColor)(1.0f, 1.0f, 1.0f, 1.0f); /* no surface: lit in both copies */
     GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_COLOR_BUFFER_BIT);
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL_DISABLE(ctx, GL_TEXTURE_2D);
@@ -131,8 +187,9 @@ void stin__map_facing_draw(stin_context *ctx, uint32_t slot, const stin_light_de
     else
         stin__fixed_path()->depth(ctx, view, proj, 0, 0.0f);
     side_colours(ctx, 0);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing[slot]);
-    GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, 0, 0, x, y, (GLsizei)m->used, (GLsizei)m->used);
+    copy_side(ctx, m->facing[slot], x, y);
+    invert_covered(ctx, ps);
+    copy_side(ctx, m->facing_back[slot], x, y);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
     ctx->stats.passes++;
 }
@@ -144,6 +201,7 @@ void stin__map_facing_bind(stin_context *ctx, uint32_t slot)
     GL_ENABLE(ctx, GL_TEXTURE_2D);
     GL(ctx, BindTexture)(GL_TEXTURE_2D, m->facing[slot]);
     stin__map_texgen(ctx, m->texgen[slot], 0);
+    m->slot = slot;
     GL(ctx, ActiveTexture)(GL_TEXTURE0);
 }
 
@@ -163,22 +221,20 @@ static int camera_mirrored(const stin_context *ctx)
 void stin__map_facing_shade(stin_context *ctx, const stin__path *path, const stin_light_desc *l,
                             stin__shade_fn shade)
 {
-    static const float black[4] = {0, 0, 0, 0};
-    GLenum unit = (GLenum)(GL_TEXTURE0 + (GLenum)ctx->map_fixed->unit + 1u);
+    const struct stin__map_fixed_state *m = ctx->map_fixed;
+    GLenum unit = (GLenum)(GL_TEXTURE0 + (GLenum)m->unit + 1u);
     int mirrored = camera_mirrored(ctx), side;
-    if (!ctx->map_fixed->facing_test) {
+    if (!m->facing_test) {
         shade(ctx, path, l, 1.0f);
         return;
     }
     for (side = 0; side < 2; side++) { /* 0: the eye sees front faces, 1: back faces */
         GL(ctx, ActiveTexture)(unit);
-        if (ctx->map_fixed->terminator) {
+        if (m->terminator) {
             stin__map_terminator_side(ctx, side);
-        } else if (side == 0) {
+        } else { /* the colour times the map of the eye's side */
+            GL(ctx, BindTexture)(GL_TEXTURE_2D, side ? m->facing_back[m->slot] : m->facing[m->slot]);
             GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-        } else { /* colour * (1 - side) + black * side */
-            GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_BLEND);
-            GL(ctx, TexEnvfv)(GL_TEXTURE_ENV, GL_TEXTURE_ENV_COLOR, black);
         }
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
         ctx->lit_cull = (side == 0) != mirrored ? GL_BACK : GL_FRONT;

@@ -14,9 +14,13 @@ struct stin__map_fixed_state {
     GLuint depth_scratch; /* map-combine with FBOs: the depth buffer of its pass */
     GLuint face_mask;     /* 1 inside a face's 90-degree square, 0 outside */
     /* map-depth's side maps: per slot, which side of the nearest surface the
-     * light sees (LUMINANCE8: 1 front, 0 back), copied from the colour of a
-     * pass of their own (with FBOs: facing_fbo, RGBA8 colour and a depth) */
+     * light sees, copied from the colour of a pass of their own (with FBOs:
+     * facing_fbo, RGBA8 colour and a depth): facing, lit where the eye sees
+     * a front face (LUMINANCE8, INTENSITY8 with the terminator test: 1
+     * front or no surface, 0 back), and facing_back, lit where it sees a
+     * back face (LUMINANCE8: 1 back or no surface, 0 front) */
     GLuint facing[STIN__MAP_SLOTS];
+    GLuint facing_back[STIN__MAP_SLOTS];
     GLuint facing_fbo, facing_color, facing_depth;
     int facing_test;      /* 1: the lit passes test the side (a unit was spare) */
     /* 1: the terminator test (shadow/map_terminator.c; FBOs, and a unit

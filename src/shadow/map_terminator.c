@@ -118,10 +118,10 @@ static void receiver_units(stin_context *ctx, int solid)
 {
     struct stin__map_fixed_state *m = ctx->map_fixed;
     int back = m->eye_back;
-    /* the facet: the colour times the side (back: 1 - side), alpha kept */
-    const stin__combine_stage facet = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
-                                       {GL_SRC_COLOR, back ? GL_ONE_MINUS_SRC_COLOR : GL_SRC_COLOR},
-                                       GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_ALPHA, 0}};
+    /* the facet: the colour times the map of the eye's side, alpha kept */
+    static const stin__combine_stage facet = {GL_MODULATE, {GL_PREVIOUS, GL_TEXTURE},
+                                              {GL_SRC_COLOR, GL_SRC_COLOR}, GL_REPLACE,
+                                              {GL_PREVIOUS, 0}, {GL_SRC_ALPHA, 0}};
     static const stin__combine_stage side = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
                                              GL_MODULATE, {GL_TEXTURE, GL_PREVIOUS},
                                              {GL_SRC_ALPHA, GL_SRC_ALPHA}};
@@ -130,6 +130,7 @@ static void receiver_units(stin_context *ctx, int solid)
     static const stin__combine_stage lifted = {GL_REPLACE, {GL_PREVIOUS, 0}, {GL_SRC_COLOR, 0},
                                                GL_ADD, {GL_PREVIOUS, GL_TEXTURE},
                                                {GL_SRC_ALPHA, GL_SRC_ALPHA}};
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, back ? m->facing_back[m->slot] : m->facing[m->slot]);
     stin__combine_set(ctx, solid ? &side : &facet);
     GL(ctx, TexEnvi)(GL_TEXTURE_ENV, GL_ALPHA_SCALE, solid ? SIDE_SCALE : 1);
     GL(ctx, ActiveTexture)((GLenum)(GL_TEXTURE0 + (GLenum)m->unit + 2u));
