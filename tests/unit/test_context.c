@@ -589,9 +589,10 @@ static void test_link_failure_on_gl21_falls_back_to_fixed_function(void **state)
 }
 
 /* ---- destroy ------------------------------------------------------------- */
-/* per_context: the GL4 path's streaming buffer and VAO for shadow volumes,
- * and on GL4 goldfeather's depth texture; the meshes: the caller's three
- * and goldfeather's near-plane cap (stin's own) */
+/* per_context: the GL4 path's VAO for shadow volumes with its two
+ * streaming buffers (vertices, indices: 2 per_context buffers), and on GL4
+ * goldfeather's depth texture; the meshes: the caller's three and
+ * goldfeather's near-plane cap (stin's own) */
 static void check_destroy_balances(fake_gl_profile_id id, unsigned buffers_per_mesh,
                                    unsigned vaos_per_mesh, unsigned programs, unsigned per_context)
 {
@@ -607,7 +608,7 @@ static void check_destroy_balances(fake_gl_profile_id id, unsigned buffers_per_m
     run_frame(f.ctx, a);
     stin_destroy_mesh(f.ctx, b);
     make_quad(f.ctx);
-    assert_int_equal(fake_gl.buffers_created, 4 * buffers_per_mesh + per_context);
+    assert_int_equal(fake_gl.buffers_created, 4 * buffers_per_mesh + 2 * per_context);
     assert_int_equal(fake_gl.vertex_arrays_created, 4 * vaos_per_mesh + per_context);
     assert_int_equal(fake_gl.textures_created, 2 + per_context);
     assert_int_equal(fake_gl.programs_created, programs);
