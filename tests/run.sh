@@ -58,7 +58,8 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # its tiers run), tessellated displacement on displace-tess (3 s).
 # es20-ext (GLSL ES 1.00) runs es30's scenes, csg by the GPU resolve alone
 # (35 s); es20 (no derivatives, depth textures or 32-bit indices) volumes
-# and map-pcf's packed maps on spheres-18k-spot (6 s).
+# and map-pcf's packed maps on spheres-18k-spot (6 s), and csg by the packed
+# GPU resolve (its result packed into RGBA8: 30 s more).
 ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext es20}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
@@ -114,7 +115,7 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
                 es20-ext) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json
                                 tests/scenes/stone-wall.json tests/scenes/displace-plate.json
                                 tests/scenes/csg.json" ;;
-                es20) more=tests/scenes/spheres-18k-spot.json ;;
+                es20) more="tests/scenes/spheres-18k-spot.json tests/scenes/csg.json" ;;
                 *) more= ;;
             esac
             tiers=

@@ -50,9 +50,9 @@
  * displacement. Measured on Mesa 22.3 llvmpipe against the same reference
  * and bounds as desktop (docs/profiles.md). On bare ES 2.0 (no derivatives,
  * depth textures or 32-bit indices) the GL2 tier takes the shaders'
- * derivative-free paths (STIN_CAP_DERIVATIVES) and map-pcf's depth packed
- * into RGBA8. Not on ES: CSG on bare ES 2.0 (no depth textures), deep's and
- * vdsm's storage-buffer paths (COMPUTE stays off), vdsm's
+ * derivative-free paths (STIN_CAP_DERIVATIVES), map-pcf's depth packed
+ * into RGBA8 and CSG's packed GPU resolve (GOLDFEATHER below). Not on ES:
+ * deep's and vdsm's storage-buffer paths (COMPUTE stays off), vdsm's
  * transform-feedback culling pass (it culls in its geometry shader
  * instead), soft vdsm (no logic op: hard shadows): each falls back, logged.
  * desc.tier = STIN_TIER_AUTO picks the highest tier the context runs. Any other
@@ -244,8 +244,8 @@
  * needs a highp fragment float (24-bit significand; ES 2.0 parts without
  * GL_FRAGMENT_PRECISION_HIGH round it). Displaced draws are drawn into
  * packed maps like any caster; CSG products are not yet (their resolve
- * writes depth only: they cast nothing there; on ES 2.0 there is no CSG
- * below GL4 lighting anyway);
+ * writes depth only: they cast nothing there; on ES 2.0 products resolve
+ * on the GPU alone and cast no shadow anyway);
  * point lights get six 90-degree maps drawn before their pass into one
  * atlas (3 x 2 faces, one sampler; the face size halved while three faces
  * exceed GL_MAX_TEXTURE_SIZE), each face with only the casters whose bounds
@@ -2181,9 +2181,11 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * and OpenGL ES 2.0 (no program writes read-back depth again there),
  * resolves the camera's products on the GPU alone: they cast no shadow,
  * scs and goldfeather run to their limits without counting layers, and
- * STIN_DEBUG_CSG_READBACK makes it "csg-off"; the GPU resolve needs depth
- * textures, packed depth-stencil and fragment depth writes, so bare ES 2.0
- * has "csg-off"); a desktop core context without GL4 lighting, or a frame
+ * STIN_DEBUG_CSG_READBACK makes it "csg-off"; the GPU resolve's work
+ * buffer needs depth textures, packed depth-stencil and fragment depth
+ * writes, so bare ES 2.0 takes the packed resolve below, and a frame there
+ * that keeps its contents or is multisampled draws no products, logged
+ * once); a desktop core context without GL4 lighting, or a frame
  * into a framebuffer without stencil, draws no products: "csg-off" or a
  * FALLBACK warning, logged once; products are still accepted). The frame
  * plan resolves every product of the frame after the target's clear and
@@ -2400,7 +2402,24 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * window rectangle, so the clears, draws and quads of that term or
  * candidate are scissored to it, and the CPU resolve reads back only that
  * rectangle (into its place in the viewport-sized staging).
- * Programs: three, made at stin_create; GL memory: two textures, 8 bytes a
+ * Packed: without depth textures (bare OpenGL ES 2.0, no read-back either;
+ * its FBOs cannot pair depth and stencil renderbuffers on Mesa, which
+ * answers GL_FRAMEBUFFER_UNSUPPORTED) the resolve works in the frame's own
+ * depth and stencil, just cleared, with the frame's colour as scratch: each
+ * candidate is found there as in place, then taken by its own faces, depth
+ * EQUAL on it, writing their window depth packed into 24 bits of RGBA8
+ * (as map-pcf's packed maps) where nearer than the result so far, and the
+ * colour of the candidate's rectangle is copied into the result texture
+ * (RGBA8, 4 bytes a pixel; glCopyTexSubImage2D, no read-back). At the end
+ * the frame's colour, depth and stencil are cleared again as the target's
+ * clear left them and the faces snapped onto the unpacked result, as
+ * above (stin_frame_stats.csg.packed; no in-place or direct variant). A
+ * frame that keeps its contents, or a multisampled framebuffer, has no
+ * cleared buffers to work in: its products are not drawn (logged once).
+ * Measured on csg.json (es20): P and N as es20-ext's but one pixel of one
+ * case (eye-cavity's coverage); P 100.000% on carved and both.
+ * Programs: three (two packed), made at stin_create; GL memory: two
+ * textures (one packed, 4 bytes a pixel), 8 bytes a
  * pixel for 24-bit depth (16 for 32-bit float), made at the first frame
  * with a product, grown, never shrunk, freed at stin_destroy
  * (stin_frame_stats.csg.gpu_resolves, csg.gpu_bytes), and into a
@@ -2629,7 +2648,8 @@ typedef struct stin_csg_stats {
     uint32_t grouped;
     /* 1 when the frame's resolve kept its candidates and result on the GPU
      * (no read-backs), 0 when it read them back; and that resolve's GL
-     * memory (two depth textures at the viewport's window size) */
+     * memory (two depth textures at the viewport's window size; the packed
+     * resolve's one RGBA8 texture) */
     uint32_t gpu_resolves;
     uint64_t gpu_bytes;
     /* 1 when the frame's GPU resolve ran in place (one scs term in the
@@ -2637,6 +2657,10 @@ typedef struct stin_csg_stats {
      * candidate by snapping its faces straight into the frame's depth (no
      * result buffer or merge) */
     uint32_t in_place, direct;
+    /* 1 when the frame's GPU resolve was the packed one (no depth textures:
+     * bare OpenGL ES 2.0; the frame's own buffers as its work, the result
+     * packed into an RGBA8 texture) */
+    uint32_t packed;
     /* maps (a spot or directional light's, a point light's face) that
      * products were resolved into from the light: they cast into it; and the
      * resolves those took: one a map, more where the products' rectangle of

@@ -309,8 +309,9 @@ void stin__csg_merge_release(struct stin_context *ctx);
 int stin__csg_merge_ready(const struct stin_context *ctx);
 int stin__csg_merge_begin(struct stin_context *ctx);
 /* The work and result framebuffers (depth-stencil textures at the
- * viewport's window size, FBO and packed depth-stencil caps); 0 when
- * incomplete (logged once). */
+ * viewport's window size, FBO and packed depth-stencil caps; the packed
+ * resolve's result alone, RGBA8, no framebuffer); 0 when incomplete
+ * (logged once). */
 int stin__csg_merge_targets(struct stin_context *ctx);
 void stin__csg_merge_snap(struct stin_context *ctx);
 GLuint stin__csg_merge_result(struct stin_context *ctx);
@@ -344,6 +345,21 @@ int stin__csg_direct_fits(const struct stin_context *ctx);
 int stin__csg_direct_begin(struct stin_context *ctx);
 void stin__csg_direct_end(struct stin_context *ctx);
 void stin__csg_merge_result_ready(struct stin_context *ctx);
+/* The packed GPU resolve, where no depth texture exists (bare OpenGL ES
+ * 2.0: no depth textures, packed depth-stencil or fragment depth; an FBO's
+ * depth and stencil renderbuffers apart are GL_FRAMEBUFFER_UNSUPPORTED on
+ * Mesa): the frame's own depth and stencil, just cleared, are the work; each
+ * candidate is taken by its own faces, depth EQUAL on it, writing their
+ * window depth packed into the frame's colour where nearer than the result
+ * so far (an RGBA8 texture, the colour copied into it after each take).
+ * packed: this context resolves so; begin: the result grown and cleared to
+ * the far plane (0: not a frame it fits, logged once: a caller's contents
+ * kept, a multisampled framebuffer); end: the frame's buffers cleared again
+ * as the target's clear left them, then the faces snapped onto the result
+ * (its depth, not its colour, in the frame). */
+int stin__csg_packed(const struct stin_context *ctx);
+int stin__csg_packed_begin(struct stin_context *ctx);
+void stin__csg_packed_end(struct stin_context *ctx);
 /* The side of face draw d its pass culls (csg/csg.c). */
 GLenum stin__csg_face_hidden(const stin__draw *d);
 

@@ -32,6 +32,10 @@ typedef struct stin__csg_merge_state {
      * frame, grown, never shrunk); ids_done: this resolve's are drawn */
     GLuint id_fbo, id_texture;
     int id_width, id_height, ids_done, said_ids_failed;
+    /* the packed resolve (no depth textures: bare OpenGL ES 2.0): the
+     * frame's own buffers are the work, the result is texture[RESULT]
+     * (RGBA8, a window depth packed), no framebuffer of its own */
+    int packed, said_packed;
 } stin__csg_merge_state;
 
 /* The frame's products, laid out by stin__csg_state_place behind the

@@ -36,7 +36,15 @@
  * A multisampled frame takes neither: the result stays one depth a pixel,
  * and the final snap (face_ids, then the snap with SNAP_SLOPE and the
  * neighbours) keeps each face on the samples it covers (stin.h,
- * MULTISAMPLED TARGETS). */
+ * MULTISAMPLED TARGETS).
+ * Packed (no depth textures, no read-back: bare OpenGL ES 2.0, whose FBOs
+ * cannot pair depth and stencil renderbuffers on Mesa) the frame's own
+ * buffers, just cleared, are the work and its colour is scratch: the kill
+ * quads lie on the far plane (csg_far.vert: no gl_FragDepth); a candidate
+ * is taken by its faces, depth EQUAL on it, writing pack_depth(z) where
+ * nearer than the result texture (RGBA8), and the region's colour is
+ * copied into that texture; at the end the frame is cleared again as the
+ * target's clear left it and the faces snapped onto the unpacked result. */
 #include "csg/csg_private.h"
 
 #define GL_DEPTH32F_STENCIL8 0x8CAD
@@ -108,13 +116,26 @@ void stin__csg_merge_init(stin_context *ctx)
     int gl4;
     stin__memzero(m, sizeof *m);
     if (ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_OFF ||
-        !glsl_tier(ctx, &gl4) || (ctx->caps.present & need) != need)
+        !glsl_tier(ctx, &gl4))
         return; /* the CPU resolve */
-    m->merge_prog = build(ctx, gl4, "screen.vert", "csg_merge.frag", msg, sizeof msg);
-    if (m->merge_prog)
-        m->kill_prog = build(ctx, gl4, "screen.vert", "csg_kill.frag", msg, sizeof msg);
-    if (m->kill_prog) /* the volume program's vertices: the lit passes' depth */
-        m->snap_prog = build(ctx, gl4, "volume.vert", "csg_snap.frag", msg, sizeof msg);
+    /* no read-back and no depth texture (bare OpenGL ES 2.0): packed */
+    m->packed = ctx->csg->no_readback && !gl4 &&
+                !(ctx->caps.present & STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE));
+    if (!m->packed && (ctx->caps.present & need) != need)
+        return;
+    if (m->packed) {
+        static const char *const chunks[] = {"gl2/pack_depth.glsl", NULL};
+        m->kill_prog = build(ctx, 0, "csg_far.vert", "csg_kill.frag", msg, sizeof msg);
+        if (m->kill_prog)
+            m->snap_prog = stin__program_build(ctx, "gl2/volume.vert", "gl2/csg_snap.frag",
+                                               chunks, 0, msg, sizeof msg);
+    } else {
+        m->merge_prog = build(ctx, gl4, "screen.vert", "csg_merge.frag", msg, sizeof msg);
+        if (m->merge_prog)
+            m->kill_prog = build(ctx, gl4, "screen.vert", "csg_kill.frag", msg, sizeof msg);
+        if (m->kill_prog) /* the volume program's vertices: the lit passes' depth */
+            m->snap_prog = build(ctx, gl4, "volume.vert", "csg_snap.frag", msg, sizeof msg);
+    }
     if (!m->snap_prog) {
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                   "CSG: the GPU resolve's programs failed to build (%s); products resolve "
@@ -122,7 +143,8 @@ void stin__csg_merge_init(stin_context *ctx)
         stin__csg_merge_release(ctx);
         return;
     }
-    STIN__LOCATE(ctx, m->merge_prog, m, merge_uniforms);
+    if (m->merge_prog)
+        STIN__LOCATE(ctx, m->merge_prog, m, merge_uniforms);
     STIN__LOCATE(ctx, m->snap_prog, m, snap_uniforms);
     stin__displace_locate(ctx, m->snap_prog, 0, &m->snap_displace);
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_ANY_SAMPLES_QUERY))
@@ -187,8 +209,23 @@ int stin__csg_merge_targets(stin_context *ctx)
     const int *vp = ctx->frame.viewport;
     int w = vp[0] + vp[2], h = vp[1] + vp[3], i;
     GLenum type, format = depth_format(ctx, &type), status = GL_FRAMEBUFFER_COMPLETE;
+    if (m->packed) /* RGBA8, no framebuffer: the colour is copied in */
+        format = GL_RGBA8;
     if (w <= m->width && h <= m->height && format == m->format)
         return 1;
+    if (m->packed) {
+        if (!m->texture[0])
+            GL(ctx, GenTextures)(2, m->texture);
+        m->width = w > m->width ? w : m->width;
+        m->height = h > m->height ? h : m->height;
+        m->format = format;
+        m->bytes = (size_t)m->width * (size_t)m->height * 4u;
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+        stin__rt_texture(ctx, m->texture[STIN__CSG_MERGE_RESULT], GL_RGBA8, GL_RGBA,
+                         GL_UNSIGNED_BYTE, m->width, m->height);
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+        return 1;
+    }
     if (!m->fbo[0]) {
         GL(ctx, GenFramebuffers)(2, m->fbo);
         GL(ctx, GenTextures)(2, m->texture);
@@ -403,18 +440,24 @@ static void snap_band_for(stin_context *ctx, const stin__draw *d)
     GL(ctx, Uniform4fv)(m->snap_params, 1, params);
 }
 
+/* How snap_faces draws: the snap, the id pass (colour written, no depth
+ * test), the packed resolve's take (colour written where the faces lie on
+ * the candidate's depth, depth EQUAL, none written). */
+enum { SNAP_FACES, SNAP_IDS, SNAP_TAKE };
+
 /* d's faces but `culled` into the bound framebuffer, depth LESS, where
  * they lie on the bound texture's depth; within the resolve's region where
- * `region` asks (the work texture outside it holds older candidates); ids:
- * the id pass (colour written, no depth test). */
+ * `region` asks (the work texture outside it holds older candidates); how:
+ * SNAP_*. */
 static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, int region,
-                       int ids)
+                       int how)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     stin__pass_state ps = stin__pass_defaults;
-    ps.depth_test = (unsigned char)!ids;
-    ps.depth_func = GL_LESS; /* under what the buffer holds nearer */
-    ps.color_write = (unsigned char)ids;
+    ps.depth_test = (unsigned char)(how != SNAP_IDS);
+    ps.depth_func = how == SNAP_TAKE ? GL_EQUAL : GL_LESS; /* under what the buffer holds nearer */
+    ps.depth_write = (unsigned char)(how != SNAP_TAKE);
+    ps.color_write = (unsigned char)(how != SNAP_FACES);
     ps.cull = 1;
     ps.cull_face = culled;
     if (region)
@@ -479,7 +522,7 @@ static GLuint face_ids(stin_context *ctx)
         for (i = 0; i < ctx->csg->face_count; i++) {
             snap_samples(ctx, 0.0f, 0.0f, i + 1u, 0.0f);
             snap_faces(ctx, &ctx->csg->faces[i], stin__csg_face_hidden(&ctx->csg->faces[i]), 0,
-                       1);
+                       SNAP_IDS);
         }
         snap_end(ctx, 0);
         m->ids_done = 1;
@@ -504,27 +547,39 @@ void stin__csg_merge_snap(stin_context *ctx)
             snap_samples(ctx, SNAP_SLOPE, 1.0f, i + 1u, 1.0f);
         else
             snap_samples(ctx, 0.0f, 0.0f, 0u, 0.0f);
-        snap_faces(ctx, &ctx->csg->faces[i], stin__csg_face_hidden(&ctx->csg->faces[i]), 0, 0);
+        snap_faces(ctx, &ctx->csg->faces[i], stin__csg_face_hidden(&ctx->csg->faces[i]), 0,
+                   SNAP_FACES);
     }
     snap_end(ctx, ids);
 }
 
 /* The direct resolve's take: the surface's faces on the work texture's
- * depth (what keep_where left of the candidate) into the frame. */
+ * depth (what keep_where left of the candidate) into the frame; the packed
+ * resolve's: on the frame's depth (the work), nearer than the result,
+ * packed into the frame's colour, then copied into the result. */
 static void snap_surface(stin_context *ctx, const stin__csg_surface *s)
 {
+    stin__csg_merge_state *m = &ctx->csg->merge;
+    int how = m->packed ? SNAP_TAKE : SNAP_FACES;
     uint32_t i;
-    snap_begin(ctx, ctx->csg->merge.texture[STIN__CSG_MERGE_WORK], 0); /* never multisampled */
-    snap_samples(ctx, 0.0f, 0.0f, 0u, 0.0f);
+    snap_begin(ctx, m->texture[m->packed ? STIN__CSG_MERGE_RESULT : STIN__CSG_MERGE_WORK],
+               0); /* never multisampled */
+    snap_samples(ctx, 0.0f, m->packed ? -1.0f : 0.0f, 0u, 0.0f);
     if (s->cap)
-        snap_faces(ctx, s->cap, s->cap_culled, 1, 0);
+        snap_faces(ctx, s->cap, s->cap_culled, 1, how);
     for (i = 0; !s->cap && i < s->count; i++) {
         uint32_t lit = ctx->csg->literals[s->t->first + (s->list ? s->list[i] : s->first + i)];
         const stin__draw *d =
             &ctx->csg->primitives[s->p->first_primitive + STIN__CSG_PRIMITIVE_OF(lit)];
-        snap_faces(ctx, d, stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), 1, 0);
+        snap_faces(ctx, d, stin__csg_culled_face(d, (int)STIN__CSG_COMPLEMENTED(lit)), 1, how);
     }
     snap_end(ctx, 0);
+    if (m->packed) { /* the region's colour: the result there (unit 0 active) */
+        const int *g = ctx->csg->region;
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[STIN__CSG_MERGE_RESULT]);
+        GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, g[0], g[1], g[0], g[1], g[2], g[3]);
+        stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    }
 }
 
 int stin__csg_direct_fits(const stin_context *ctx)
@@ -557,6 +612,64 @@ void stin__csg_direct_end(stin_context *ctx)
     ctx->csg->result_pending = 1;
     if (!ctx->target.separate_read) /* as in place */
         stin__csg_merge_result_ready(ctx);
+}
+
+int stin__csg_packed(const stin_context *ctx)
+{
+    return ctx->csg->merge.packed && stin__csg_merge_ready(ctx);
+}
+
+/* The whole framebuffer as the target's clear left it (frame/frame.c's
+ * stage_target): colour `rgba`, depth far, stencil 0. */
+static void clear_frame(stin_context *ctx, const float rgba[4])
+{
+    stin__pass_apply(ctx, &stin__pass_defaults); /* writes on, no scissor */
+    GL(ctx, ClearColor)(rgba[0], rgba[1], rgba[2], rgba[3]);
+    stin__clear_depth(ctx, 1.0);
+    GL(ctx, ClearStencil)(0);
+    GL(ctx, Clear)(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
+int stin__csg_packed_begin(stin_context *ctx)
+{
+    static const float far[4] = {1.0f, 1.0f, 1.0f, 1.0f}; /* pack_depth(1) */
+    stin__csg_merge_state *m = &ctx->csg->merge;
+    const int *vp = ctx->frame.viewport;
+    GLint bits[3] = {0, 0, 0};
+    const char *why = ctx->frame.keep_contents ? "the frame keeps its contents"
+                      : ctx->target.multisampled ? "the framebuffer is multisampled"
+                                                 : NULL;
+    GL(ctx, GetIntegerv)(GL_RED_BITS, &bits[0]); /* ES 2.0 asks the bound framebuffer */
+    GL(ctx, GetIntegerv)(GL_GREEN_BITS, &bits[1]);
+    GL(ctx, GetIntegerv)(GL_BLUE_BITS, &bits[2]);
+    if (!why && (bits[0] < 8 || bits[1] < 8 || bits[2] < 8))
+        why = "the frame's colour has under 8 bits a channel (the result's 24 bits go there)";
+    if (why) {
+        if (!m->said_packed)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "CSG products are not drawn: %s, and without depth textures the "
+                      "resolve works in the frame's own buffers, just cleared",
+                      why);
+        m->said_packed = 1;
+        return 0;
+    }
+    if (!stin__csg_merge_targets(ctx))
+        return 0;
+    clear_frame(ctx, far);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, m->texture[STIN__CSG_MERGE_RESULT]);
+    GL(ctx, CopyTexSubImage2D)(GL_TEXTURE_2D, 0, vp[0], vp[1], vp[0], vp[1], vp[2], vp[3]);
+    stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
+    ctx->csg->resolve_fbo = ctx->draw_fbo;
+    ctx->stats.csg.gpu_resolves = 1;
+    ctx->stats.csg.gpu_bytes = m->bytes;
+    ctx->stats.csg.packed = 1;
+    return 1;
+}
+
+void stin__csg_packed_end(stin_context *ctx)
+{
+    clear_frame(ctx, ctx->frame.clear_color);
+    ctx->csg->result_pending = 0; /* the result is the packed texture */
 }
 
 /* ---- the steps ---------------------------------------------------------- */
@@ -654,6 +767,12 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
     }
     if (ctx->csg->in_place) /* the candidate is the result */
         return 1;
+    if (m->packed) { /* in the frame's own buffers: no framebuffer to bind */
+        if (surface)
+            snap_surface(ctx, surface);
+        resume(ctx, path);
+        return surface != NULL;
+    }
     /* a direct resolve has no result: every candidate it takes names its
      * faces (interval's, which do not, never runs direct) */
     direct = ctx->csg->direct && surface;

@@ -79,6 +79,16 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
         return 0;
     ctx->csg->resolve_fbo = ctx->draw_fbo;
     stin__csg_region_reset(ctx);
+    if (gpu && stin__csg_packed(ctx)) { /* no depth textures: nothing else runs */
+        if (!stin__csg_packed_begin(ctx))
+            return 0;
+        stin__csg_resolve_pixels(ctx, path, &r);
+        stin__csg_packed_end(ctx);
+        ctx->csg->resolved = ctx->csg->merged = 1;
+        stin__csg_faces(ctx);
+        stin__csg_merge_snap(ctx);
+        return 1;
+    }
     if (gpu && stin__csg_in_place_fits(ctx) && stin__csg_in_place_begin(ctx)) {
         stin__csg_resolve_pixels(ctx, path, &r);
         stin__csg_in_place_end(ctx);
@@ -115,7 +125,7 @@ int stin__csg_resolve(stin_context *ctx, const stin__path *path)
 GLuint stin__csg_depth_texture(stin_context *ctx, int origin[2])
 {
     resolve r;
-    if (!ctx->csg->resolved)
+    if (!ctx->csg->resolved || ctx->csg->merge.packed) /* packed: no depth to sample */
         return 0;
     origin[0] = origin[1] = 0;
     if (ctx->csg->merged) {

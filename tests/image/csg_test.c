@@ -46,9 +46,11 @@
  *               snapped into the frame's depth), and the image equal to
  *               the work buffer's merge and snap (STIN_DEBUG_CSG_NO_IN_PLACE)
  *               on all but 0.05% of the covered pixels (gpu-resolve's
- *               bound);
+ *               bound); SKIP under the packed resolve (no variants);
  *   direct      (goldfeather, GLSL tiers) its GPU resolve direct
- *               (csg.direct = 1), whose image gpu-resolve checks;
+ *               (csg.direct = 1), whose image gpu-resolve checks; without
+ *               depth textures (bare OpenGL ES 2.0) packed instead
+ *               (csg.packed = 1), whose image P and N check;
  *   gl-clean    no GL error, no call outside the profile, no logged error.
  * Every case runs under goldfeather, scs ("csg-scs-") and interval
  * ("csg-interval-"; GL4 only, SKIP elsewhere). Under interval also:
@@ -287,6 +289,11 @@ static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene
         report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
         return;
     }
+    if (cap->stats.csg.packed) { /* direct's test checks it ran */
+        report(r, "SKIP", name, "the packed resolve (no depth textures) has no in-place or "
+               "work-buffer variant");
+        return;
+    }
     o.debug_flags |= STIN_DEBUG_CSG_NO_IN_PLACE;
     if (!render(r, s, &o, &merged, name))
         return;
@@ -312,18 +319,25 @@ static void test_in_place(run *r, const csg_case *c, stin_tier tier, const scene
 static void test_direct(run *r, const csg_case *c, stin_tier tier, const capture *cap)
 {
     char name[256];
+    unsigned packed;
     case_name(c, STIN_TECH_CSG_GOLDFEATHER, tier, "direct", name, sizeof name);
     if (tier == STIN_TIER_GL1) {
         report(r, "SKIP", name, "the GL1 tier resolves with read-backs (no GLSL)");
         return;
     }
+    /* without depth textures (bare OpenGL ES 2.0) the packed resolve instead */
+    packed = !(cap->caps_present & STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE));
     report(r,
-           cap->stats.csg.direct == 1 && cap->stats.csg.in_place == 0 &&
-                   cap->stats.csg.gpu_resolves == 1
+           cap->stats.csg.direct == !packed && cap->stats.csg.packed == packed &&
+                   cap->stats.csg.in_place == 0 && cap->stats.csg.gpu_resolves == 1
                ? "PASS"
                : "FAIL",
-           name, "direct: %u (want 1), in place: %u (want 0), GPU resolve: %u (want 1)",
-           cap->stats.csg.direct, cap->stats.csg.in_place, cap->stats.csg.gpu_resolves);
+           name,
+           "direct: %u (want %u), packed: %u (want %u: %s), in place: %u (want 0), GPU "
+           "resolve: %u (want 1)",
+           cap->stats.csg.direct, !packed, cap->stats.csg.packed, packed,
+           packed ? "no depth textures" : "depth textures", cap->stats.csg.in_place,
+           cap->stats.csg.gpu_resolves);
 }
 
 /* The ordinary render's P against the union's. */

@@ -40,10 +40,11 @@ static const expected_profile table[] = {
     /* OpenGL ES (egl only): no fixed function, so no GL1 tier; GLSL ES 1.00
      * runs the GL2 tier, ES 3.2 the GL4 one. CSG writes depth back with a
      * GLSL ES 3.00 program from ES 3.0 on (glDrawPixels is desktop
-     * compatibility); on ES 2.0 its GPU resolve alone runs, where depth
-     * textures are (es20-ext). */
+     * compatibility); on ES 2.0 its GPU resolve alone runs, in a work
+     * buffer where depth textures are (es20-ext), else in the frame's own
+     * buffers with the result packed into colour (es20). */
     {"es20", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, STIN_TECH_TRANSLUCENT_OPAQUE,
-                             STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_OFF,
+                             STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS,
                              STIN_TECH_TRANSPARENCY_SORTED}, {0, 1, 0}},
     {"es20-ext", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, STIN_TECH_TRANSLUCENT_COLOURED,
                                  STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS,
