@@ -55,7 +55,8 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # depth write-back on csg (42 s), displacement by vertex textures on
 # displace-plate (2 s), normal/parallax/pom on stone-wall (5 s); on es32
 # dual peeling and deep maps on glass-panes and interval CSG on csg (both
-# its tiers run), tessellated displacement on displace-tess (3 s).
+# its tiers run), tessellated displacement on displace-tess (3 s), area
+# lights on shadow-soft (soft vdsm by image atomics: 8 s).
 # es20-ext (GLSL ES 1.00) runs es30's scenes, csg by the GPU resolve alone
 # (35 s); es20 (no derivatives, depth textures or 32-bit indices) volumes
 # and map-pcf's packed maps on spheres-18k-spot (6 s), and csg by the packed
@@ -111,7 +112,8 @@ export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1}
         for prof in $ES_PROFILES; do
             case $prof in
                 es30) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-plate.json tests/scenes/stone-wall.json" ;;
-                es32) more="tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-tess.json" ;;
+                es32) more="tests/scenes/glass-panes.json tests/scenes/csg.json tests/scenes/displace-tess.json
+                             tests/scenes/shadow-soft.json" ;;
                 es20-ext) more="tests/scenes/spheres-18k-sun.json tests/scenes/glass-panes.json
                                 tests/scenes/stone-wall.json tests/scenes/displace-plate.json
                                 tests/scenes/csg.json" ;;

@@ -54,7 +54,8 @@
  * into RGBA8 and CSG's packed GPU resolve (GOLDFEATHER below). Not on ES:
  * deep's and vdsm's storage-buffer paths (COMPUTE stays off), vdsm's
  * transform-feedback culling pass (it culls in its geometry shader
- * instead), soft vdsm (no logic op: hard shadows): each falls back, logged.
+ * instead): each falls back, logged. Soft vdsm (area lights) ORs its bits by
+ * image atomics there (no logic op), on ES 3.2; below it, hard shadows.
  * desc.tier = STIN_TIER_AUTO picks the highest tier the context runs. Any other
  * value forces that tier; if the context (after desc.caps_mask) cannot run it,
  * stin_create fails with STIN_ERROR_UNSUPPORTED and logs the missing
@@ -148,7 +149,9 @@
  * the hard shadow), one bit each, ORed over every casting triangle
  * (glLogicOp into an RG32UI texture the size of the position buffer, 8
  * bytes a pixel of GL memory, made with its two programs at the first area
- * light); the light's visibility is the share of bits left clear. Each
+ * light; OpenGL ES has no logic op, so on ES 3.2 imageAtomicOr into an
+ * R32UI image twice as wide, the same bytes, the same bits: below ES 3.2
+ * the light's shadow is hard, logged); the light's visibility is the share of bits left clear. Each
  * triangle covers a screen rectangle holding its whole penumbra, at its
  * nearest depth, tested against the visible surface's; EP keeps a closed
  * mesh's triangles that face away from any point of the light; SM and DC
@@ -663,6 +666,8 @@
  * buffer on the generic transform feedback buffer binding, and none on
  * binding 0 of the bound feedback object, which is object 0 where the
  * context has feedback objects (GL 4.0).
+ * Under vdsm with an area light on OpenGL ES 3.2 it leaves image unit 0
+ * with no texture (the soft pass ORs its bits by image atomics there).
  * The viewport and the framebuffer binding stay as the frame set them; the
  * caller's matrices (GL1 matrix stacks) are restored. Clear colour, clear
  * depth and the polygon offset factor and units are overwritten, and so are

@@ -12,9 +12,12 @@
 // vdsm_soft_resolve.frag turns the unset bits into the visibility. The
 // disc's points (a Vogel spiral) turn by an angle per pixel, so the
 // penumbra takes many levels rather than 64 copies of the hard shadow.
-// The bits are two words (x: points 0-31, y: 32-63).
+// The bits are two words (x: points 0-31, y: 32-63). OpenGL ES has no
+// logic op: with STIN_SOFT_IMAGE (GLSL ES 3.20) they are ORed by image
+// atomics into u_words, a pixel's two words side by side, and no colour is
+// written.
 // The rectangles' depth test writes no depth: it may run first (vdsm.frag).
-#ifdef GL_ARB_shader_image_load_store
+#if defined(GL_ARB_shader_image_load_store) || defined(STIN_SOFT_IMAGE)
 layout(early_fragment_tests) in;
 #endif
 flat in vec3 f_v0;
@@ -24,7 +27,11 @@ uniform sampler2D u_position;
 uniform sampler2D u_normal;
 uniform vec4 u_light; // the disc's centre (w 1)
 uniform float u_radius;
+#ifdef STIN_SOFT_IMAGE
+layout(r32ui, binding = 0) uniform highp uimage2D u_words;
+#else
 out uvec4 frag_color;
+#endif
 
 const int SAMPLES = 64;
 
@@ -87,5 +94,12 @@ void main()
     }
     if (bits == uvec2(0u))
         discard;
+#ifdef STIN_SOFT_IMAGE
+    if (bits.x != 0u)
+        imageAtomicOr(u_words, ivec2(px.x * 2, px.y), bits.x);
+    if (bits.y != 0u)
+        imageAtomicOr(u_words, ivec2(px.x * 2 + 1, px.y), bits.y);
+#else
     frag_color = uvec4(bits, 0u, 0u);
+#endif
 }

@@ -110,6 +110,7 @@ static const es_enum es_enums[] = {
     E(0x881A, "GL_RGBA16F", 30, -1), E(0x140B, "GL_HALF_FLOAT", 30, -1),
     E(0x8D70, "GL_RGBA32UI", 30, -1), E(0x823C, "GL_RG32UI", 30, -1),
     E(0x8D99, "GL_RGBA_INTEGER", 30, -1), E(0x8228, "GL_RG_INTEGER", 30, -1),
+    E(0x8236, "GL_R32UI", 30, -1), E(0x8D94, "GL_RED_INTEGER", 30, -1),
     E(0x8C43, "GL_SRGB8_ALPHA8", 30, -1), E(0x8049, "GL_INTENSITY", ES_NEVER, -1),
     E(0x804B, "GL_INTENSITY8", ES_NEVER, -1), E(0x80E1, "GL_BGRA", ES_NEVER, -1),
     E(0x8367, "GL_UNSIGNED_INT_8_8_8_8_REV", ES_NEVER, -1),
@@ -118,6 +119,8 @@ static const es_enum es_enums[] = {
     E(0x8CE2, "GL_COLOR_ATTACHMENT2", 30, -1), E(0x8CE3, "GL_COLOR_ATTACHMENT3", 30, -1),
     /* blending */
     E(0x8007, "GL_MIN", 30, -1), E(0x8008, "GL_MAX", 30, -1),
+    /* image access (the barrier bits are no enums: glMemoryBarrier is ES 3.1) */
+    E(0x88BA, "GL_READ_WRITE", 31, -1),
     /* queried state and limits */
     E(0x84E2, "GL_MAX_TEXTURE_UNITS", ES_NEVER, -1), E(0x0D32, "GL_MAX_CLIP_PLANES", ES_NEVER, -1),
     E(0x0D31, "GL_MAX_LIGHTS", ES_NEVER, -1), E(0x8824, "GL_MAX_DRAW_BUFFERS", 30, -1),
@@ -252,6 +255,19 @@ static void STIN_APIENTRY w_TexImage3D(GLenum t, GLint l, GLint ifmt, GLsizei w,
     AUDIT(TexImage3D, ty);
     DRIVER(TexImage3D)(t, l, ifmt, w, h, d, b, f, ty, px);
 }
+static void STIN_APIENTRY w_TexStorage2D(GLenum t, GLsizei n, GLenum ifmt, GLsizei w, GLsizei h)
+{
+    AUDIT(TexStorage2D, t);
+    AUDIT(TexStorage2D, ifmt);
+    DRIVER(TexStorage2D)(t, n, ifmt, w, h);
+}
+static void STIN_APIENTRY w_BindImageTexture(GLuint u, GLuint x, GLint l, GLboolean layered,
+                                             GLint layer, GLenum access, GLenum f)
+{
+    AUDIT(BindImageTexture, access);
+    AUDIT(BindImageTexture, f);
+    DRIVER(BindImageTexture)(u, x, l, layered, layer, access, f);
+}
 static void STIN_APIENTRY w_PixelStorei(GLenum p, GLint v)
 {
     AUDIT(PixelStorei, p);
@@ -348,6 +364,7 @@ void stin__gl_audit_install(stin_context *ctx)
     WRAP(BindFramebuffer) WRAP(FramebufferTexture2D) WRAP(DrawElements) WRAP(DrawArrays)
     WRAP(ReadPixels) WRAP(BlendEquation) WRAP(BeginQuery) WRAP(EndQuery) WRAP(ReadBuffer)
     WRAP(CreateShader) WRAP(BindBufferBase) WRAP(PatchParameteri)
+    WRAP(TexStorage2D) WRAP(BindImageTexture)
 #undef WRAP
     audit.ctx = ctx;
 }

@@ -17,7 +17,7 @@
  * that ES never has (glClearDepth, glPolygonMode...), NEED_ES an ES 2.0
  * entry point stin calls only on ES (glClearDepthf: gl/portable_calls.c). */
 enum { NEED_CORE = STIN_CAP_COUNT, NEED_GL12, NEED_GL13, NEED_GL14, NEED_GL30, NEED_GL31, NEED_GL32,
-       NEED_GL33, NEED_GL43, NEED_CHECKED, NEED_DESKTOP, NEED_ES, NEED_COUNT };
+       NEED_GL33, NEED_GL42, NEED_GL43, NEED_CHECKED, NEED_DESKTOP, NEED_ES, NEED_COUNT };
 
 typedef enum stin__glfn {
 #define STIN_X_(ret, name, params, need, alt) STIN_GLFN_##name,

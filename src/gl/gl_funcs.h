@@ -219,6 +219,12 @@
       STIN_CAP_COMPUTE, "")                                                                 \
     X(void, MemoryBarrier, (GLbitfield barriers), STIN_CAP_COMPUTE, "")                   \
     X(void, ClearBufferData, (GLenum target, GLenum ifmt, GLenum fmt, GLenum type,         \
-                              const void *d), STIN_CAP_COMPUTE, "")
+                              const void *d), STIN_CAP_COMPUTE, "")                         \
+    /* vdsm's area lights on OpenGL ES: their bits ORed by image atomics (GL 4.2, ES     \
+     * 3.1: images bind only immutable textures there) */                                 \
+    X(void, TexStorage2D, (GLenum target, GLsizei levels, GLenum ifmt, GLsizei w,          \
+                           GLsizei h), NEED_GL42, "")                                       \
+    X(void, BindImageTexture, (GLuint unit, GLuint tex, GLint level, GLboolean layered,    \
+                               GLint layer, GLenum access, GLenum format), NEED_GL42, "")
 
 #endif

@@ -313,6 +313,10 @@ typedef void GLvoid;
 #define GL_R32UI 0x8236
 #define GL_RED_INTEGER 0x8D94
 #define GL_DYNAMIC_COPY 0x88EA
+/* vdsm's area lights on OpenGL ES (ES 3.1): their bits ORed by image atomics */
+#define GL_READ_WRITE 0x88BA
+#define GL_TEXTURE_FETCH_BARRIER_BIT 0x00000008
+#define GL_FRAMEBUFFER_BARRIER_BIT 0x00000400
 /* deep shadow maps' layers */
 #define GL_TEXTURE_2D_ARRAY 0x8C1A
 #define GL_PROXY_TEXTURE_2D_ARRAY 0x8C1B

@@ -30,10 +30,10 @@ int stin__glfn_need(stin__glfn fn) { return (unsigned)fn < STIN_GLFN_COUNT ? gl_
 
 /* Per NEED_* from NEED_CORE: the desktop GL version, and the OpenGL ES
  * version with the same entry points and enums (-1: never). */
-static const int need_versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 43, 11,
-                                                         11, -1};
-static const int need_es_versions[NEED_COUNT - NEED_CORE] = {20, 30, 20, 20, 30, 30, 32, 30, 30,
-                                                            20, -1, 20};
+static const int need_versions[NEED_COUNT - NEED_CORE] = {11, 12, 13, 14, 30, 31, 32, 33, 42, 43,
+                                                         11, 11, -1};
+static const int need_es_versions[NEED_COUNT - NEED_CORE] = {20, 30, 20, 20, 30, 30, 32, 30, 31,
+                                                            30, 20, -1, 20};
 
 int stin__need_version(int need)
 {
@@ -50,7 +50,8 @@ int stin__need_version_in(int need, int es)
 const char *stin__need_name(int need)
 {
     static const char *const names[NEED_COUNT - NEED_CORE] = {
-        "GL 1.1", "GL 1.2", "GL 1.3", "GL 1.4", "GL 3.0", "GL 3.1", "GL 3.2", "GL 3.3", "GL 4.3",
+        "GL 1.1", "GL 1.2", "GL 1.3", "GL 1.4", "GL 3.0", "GL 3.1", "GL 3.2", "GL 3.3", "GL 4.2",
+        "GL 4.3",
         "its version or extension", "desktop GL (not OpenGL ES)", "OpenGL ES"};
     return need >= NEED_CORE && need < NEED_COUNT ? names[need - NEED_CORE]
                                                   : stin_cap_name((stin_cap)need);
@@ -58,11 +59,16 @@ const char *stin__need_name(int need)
 
 /* What fn needs on this context: the query object calls are audited as
  * occlusion queries on desktop (GL 1.5 brought both), but ES 3.0 has the
- * objects without sample counts (primitive and any-samples queries). */
+ * objects without sample counts (primitive and any-samples queries).
+ * glMemoryBarrier is audited with the compute paths that call it on
+ * desktop (ARB_compute_shader may bring them below GL 4.2), but ES 3.1 has
+ * it in core for vdsm's image atomics (COMPUTE stays off there). */
 static int need_of(const stin_context *ctx, stin__glfn fn)
 {
     if (ctx->caps.es && gl_needs[fn] == STIN_CAP_OCCLUSION_QUERY)
         return NEED_GL30;
+    if (ctx->caps.es && fn == STIN_GLFN_MemoryBarrier)
+        return NEED_GL42;
     return gl_needs[fn];
 }
 

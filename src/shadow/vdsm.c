@@ -375,7 +375,8 @@ static int vdsm_mask(stin_context *ctx, const stin__path *path, uint32_t li, int
         if (!v->said_area)
             stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
                       "vdsm: area lights cast hard shadows from their centre in tessellated "
-                      "frames, without their programs or without glLogicOp (OpenGL ES)");
+                      "frames, without their programs, or without glLogicOp and image atomics "
+                      "(OpenGL ES below 3.2)");
         v->said_area = 1;
     }
     light_point(l, light);

@@ -105,11 +105,14 @@ typedef struct stin__vdsm_cull {
 } stin__vdsm_cull;
 
 /* Area lights (shadow/vdsm_soft.c): the 64-segment program and its
- * resolve, built at the first area light, and the bits' RG32UI target. */
+ * resolve, built at the first area light, and the bits' RG32UI target (on
+ * OpenGL ES: an R32UI image twice as wide, cleared through fbo, ORed into
+ * with depth_fbo bound). */
 typedef struct stin__vdsm_soft {
-    GLuint prog, resolve_prog, fbo, bits;
+    GLuint prog, resolve_prog, fbo, bits, depth_fbo;
     int width, height;      /* allocated texels (the position buffer's) */
     int built;              /* tried: prog is 0 where that failed */
+    int image;              /* the bits are ORed by image atomics, not glLogicOp */
     stin__vdsm_polygon_locs poly;
     GLint radius, lo, hi, resolve_bits;
 } stin__vdsm_soft;

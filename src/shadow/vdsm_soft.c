@@ -5,7 +5,9 @@
  * that holds its whole penumbra (vdsm_soft.geom), tested at its nearest
  * depth against the visible surface's; there the fragment stage tests the
  * pixel's segments against it (vdsm_soft.frag) and the pass ORs the bits
- * over every triangle into an RG32UI texture (glLogicOp); a screen
+ * over every triangle into an RG32UI texture (glLogicOp; OpenGL ES has
+ * none, so there ES 3.2's image atomics OR them into an R32UI image, a
+ * pixel's two words side by side); a screen
  * pass then multiplies the light's mask channel (the facing pass's 1 or 0)
  * by the share of the segments no triangle met (vdsm_soft_resolve.frag).
  * The disc's points turn per pixel, so the penumbra takes many levels. The
@@ -29,11 +31,40 @@ void stin__vdsm_soft_release(stin_context *ctx)
     stin__vdsm_delete_programs(ctx, &s->prog, &s->resolve_prog, &s->resolve_prog);
     if (s->fbo)
         GL(ctx, DeleteFramebuffers)(1, &s->fbo);
+    if (s->depth_fbo)
+        GL(ctx, DeleteFramebuffers)(1, &s->depth_fbo);
     if (s->bits)
         GL(ctx, DeleteTextures)(1, &s->bits);
-    s->fbo = s->bits = 0;
+    s->fbo = s->bits = s->depth_fbo = 0;
     s->width = s->height = 0;
     s->built = 0;
+}
+
+/* Whether the bits can be ORed: by glLogicOp, or where OpenGL ES lacks it
+ * by GLSL ES 3.20's imageAtomicOr on r32ui images (ES 3.1 has it only with
+ * OES_shader_image_atomic, not asked for). */
+static int can_or(stin_context *ctx)
+{
+    if (stin__gl_available(ctx, STIN_GLFN_LogicOp))
+        return 1;
+    return ctx->caps.es && ctx->caps.glsl_major * 10 + ctx->caps.glsl_minor >= 32 &&
+           stin__gl_available(ctx, STIN_GLFN_TexStorage2D) &&
+           stin__gl_available(ctx, STIN_GLFN_BindImageTexture) &&
+           stin__gl_available(ctx, STIN_GLFN_MemoryBarrier);
+}
+
+/* One of the programs, its fragment stage told where the bits are ORed
+ * by image atomics. */
+static GLuint program(stin_context *ctx, const char *vert, const char *geom, const char *frag,
+                      char *msg, size_t size)
+{
+    stin__program_source src;
+    stin__memzero(&src, sizeof src);
+    src.vert = vert;
+    src.geom = geom;
+    src.frag = frag;
+    src.frag_defines = ctx->vdsm->soft.image ? "#define STIN_SOFT_IMAGE 1\n" : NULL;
+    return stin__program_build_source(ctx, &src, msg, size);
 }
 
 /* The programs, once; 0 where they do not build (logged once). */
@@ -44,13 +75,13 @@ static int build(stin_context *ctx)
     if (s->built)
         return s->prog != 0;
     s->built = 1;
+    s->image = !stin__gl_available(ctx, STIN_GLFN_LogicOp);
     msg[0] = '\0';
-    s->prog = stin__vdsm_program(ctx, "gl4/vdsm.vert", "gl4/vdsm_soft.geom", "gl4/vdsm_soft.frag",
-                                 NULL, 0, msg, sizeof msg);
+    s->prog = program(ctx, "gl4/vdsm.vert", "gl4/vdsm_soft.geom", "gl4/vdsm_soft.frag", msg,
+                      sizeof msg);
     if (s->prog)
-        s->resolve_prog = stin__vdsm_program(ctx, "gl4/screen.vert", NULL,
-                                             "gl4/vdsm_soft_resolve.frag", NULL, 0, msg,
-                                             sizeof msg);
+        s->resolve_prog = program(ctx, "gl4/screen.vert", NULL, "gl4/vdsm_soft_resolve.frag",
+                                  msg, sizeof msg);
     if (!s->resolve_prog) {
         stin__vdsm_delete_programs(ctx, &s->prog, &s->resolve_prog, &s->resolve_prog);
         stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_SHADER_COMPILE,
@@ -63,6 +94,30 @@ static int build(stin_context *ctx)
     STIN__LOCATE(ctx, s->prog, s, soft_uniforms);
     s->resolve_bits = GL(ctx, GetUniformLocation)(s->resolve_prog, "u_bits");
     return 1;
+}
+
+/* OpenGL ES: the bits' image, immutable (ES binds no other texture as an
+ * image), so a new one at each size; fbo clears it, depth_fbo (the position
+ * buffer's depth alone: the image is twice as wide) takes the pass that ORs
+ * into it. */
+static GLenum image_target(stin_context *ctx)
+{
+    struct stin__vdsm_state *v = ctx->vdsm;
+    stin__vdsm_soft *s = &v->soft;
+    GLenum status;
+    GL(ctx, DeleteTextures)(1, &s->bits);
+    GL(ctx, GenTextures)(1, &s->bits);
+    if (!s->depth_fbo)
+        GL(ctx, GenFramebuffers)(1, &s->depth_fbo);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, s->bits);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    GL(ctx, TexParameteri)(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GL(ctx, TexStorage2D)(GL_TEXTURE_2D, 1, GL_R32UI, 2 * v->width, v->height);
+    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+    status = stin__rt_attach(ctx, s->fbo, s->bits, 0, 0);
+    return status == GL_FRAMEBUFFER_COMPLETE
+               ? stin__rt_attach_depth_only(ctx, s->depth_fbo, v->depth, 0)
+               : status;
 }
 
 /* The bits' texture and framebuffer the size of the position buffer; 0 if
@@ -79,14 +134,14 @@ static int ensure_target(stin_context *ctx)
         GL(ctx, GenTextures)(1, &s->bits);
     }
     stin__bind_unit(ctx, 0, GL_TEXTURE_2D, 0);
-    stin__rt_texture(ctx, s->bits, GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT, v->width,
-                     v->height);
-    GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
-    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->fbo);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, s->bits,
-                                  0);
-    GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, v->depth, 0);
-    status = GL(ctx, CheckFramebufferStatus)(GL_FRAMEBUFFER);
+    if (s->image) {
+        status = image_target(ctx);
+    } else {
+        stin__rt_texture(ctx, s->bits, GL_RG32UI, GL_RG_INTEGER, GL_UNSIGNED_INT, v->width,
+                         v->height);
+        GL(ctx, BindTexture)(GL_TEXTURE_2D, 0);
+        status = stin__rt_attach(ctx, s->fbo, s->bits, v->depth, 0);
+    }
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, stin__mask_target_of(ctx).fbo);
     s->width = v->width;
     s->height = v->height;
@@ -130,9 +185,33 @@ static void receiver_bounds(stin_context *ctx, float lo[3], float hi[3])
 
 int stin__vdsm_soft_available(stin_context *ctx)
 {
-    /* the bits are ORed by glLogicOp, which OpenGL ES does not have */
-    return stin__gl_available(ctx, STIN_GLFN_LogicOp) && !ctx->vdsm->tess_active &&
-           build(ctx) && ensure_target(ctx);
+    return can_or(ctx) && !ctx->vdsm->tess_active && build(ctx) && ensure_target(ctx);
+}
+
+/* The OR over the triangles begins: glLogicOp, or the bits' image bound
+ * for the atomics, the depth test against the position buffer's depth. */
+static void or_begin(stin_context *ctx)
+{
+    stin__vdsm_soft *s = &ctx->vdsm->soft;
+    if (!s->image) {
+        GL(ctx, Enable)(GL_COLOR_LOGIC_OP);
+        GL(ctx, LogicOp)(GL_OR);
+        return;
+    }
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, s->depth_fbo);
+    GL(ctx, BindImageTexture)(0, s->bits, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+}
+
+/* The OR ends: the atomics' writes made visible to the resolve's fetches
+ * and to the next light's clear. */
+static void or_end(stin_context *ctx)
+{
+    if (!ctx->vdsm->soft.image) {
+        GL(ctx, Disable)(GL_COLOR_LOGIC_OP);
+        return;
+    }
+    GL(ctx, MemoryBarrier)(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    GL(ctx, BindImageTexture)(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
 }
 
 void stin__vdsm_soft_draw(stin_context *ctx, const stin_light_desc *l, const float light[4],
@@ -156,10 +235,11 @@ void stin__vdsm_soft_draw(stin_context *ctx, const stin_light_desc *l, const flo
     ps.depth_func = GL_LEQUAL;
     ps.offset_factor = 0.0f;
     ps.offset_units = -4.0f;
+    if (s->image)
+        ps.scissor = 0; /* the clear reaches both words of every pixel */
     stin__pass_apply(ctx, &ps);
     GL(ctx, ClearBufferuiv)(GL_COLOR, 0, zero);
-    GL(ctx, Enable)(GL_COLOR_LOGIC_OP);
-    GL(ctx, LogicOp)(GL_OR);
+    or_begin(ctx);
     GL(ctx, UseProgram)(s->prog);
     stin__vdsm_polygon_uniforms(ctx, &s->poly, light);
     GL(ctx, Uniform1f)(s->radius, l->radius);
@@ -167,7 +247,7 @@ void stin__vdsm_soft_draw(stin_context *ctx, const stin_light_desc *l, const flo
     GL(ctx, Uniform3fv)(s->lo, 1, lo);
     GL(ctx, Uniform3fv)(s->hi, 1, hi);
     stin__vdsm_draw_casters(ctx, &s->poly);
-    GL(ctx, Disable)(GL_COLOR_LOGIC_OP);
+    or_end(ctx);
     ctx->stats.passes++;
     /* the mask channel times the share of segments no triangle met */
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, mask_fbo);

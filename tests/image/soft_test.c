@@ -146,8 +146,6 @@ static void one_technique(const soft_case *c, stin_technique t)
     long n = 0;
     double sum = 0;
     const char *why = not_soft_yet(t);
-    if (!why && t == STIN_TECH_SHADOWS_VDSM && c->r->profile->es)
-        why = "vdsm ORs its area-light masks with glLogicOp, which OpenGL ES has not";
     snprintf(name, sizeof name, "%s/%s/soft-%s", stin_tier_name(c->tier), c->scene_name,
              stin_technique_name(t));
     memset(&o, 0, sizeof o);

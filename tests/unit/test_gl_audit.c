@@ -3,7 +3,7 @@
  * on an ES 2.0 context a desktop-only enum (GL_DEPTH_CLAMP), an ES 3.0 one
  * (shadow compare, without EXT_shadow_samplers) and an ES 3.2 one are each
  * a GL-audit violation naming the call site; ES 2.0 enums are not, and ES
- * 3.2 takes what ES 3.0 lacked. Linked against libstin_checked.a and
+ * 3.2 takes what ES 3.0 lacked (ES 3.1's image calls too). Linked against libstin_checked.a and
  * compiled with STIN_GL_CHECK, so that GL() here is the library's. */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -99,6 +99,25 @@ static void test_es32_takes_es3_enums(void **state)
     done(ctx);
 }
 
+/* vdsm's area lights on ES 3.2 OR their bits by image atomics: the image
+ * calls and their enums are ES 3.1, glMemoryBarrier there without COMPUTE. */
+static void test_es_image_atomics(void **state)
+{
+    stin_context *ctx = es_context("OpenGL ES 3.2 Mesa 22.3.6", "OpenGL ES GLSL ES 3.20", "");
+    (void)state;
+    GL(ctx, TexStorage2D)(GL_TEXTURE_2D, 1, GL_R32UI, 2, 1);
+    GL(ctx, BindImageTexture)(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    GL(ctx, MemoryBarrier)(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+    assert_int_equal(ctx->gl_violations, 0);
+    done(ctx);
+    ctx = es_context("OpenGL ES 3.0 Mesa 22.3.6", "OpenGL ES GLSL ES 3.00", "");
+    GL(ctx, BindImageTexture)(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_R32UI);
+    assert_int_equal(ctx->gl_violations, 2); /* the call and GL_READ_WRITE */
+    GL(ctx, MemoryBarrier)(GL_TEXTURE_FETCH_BARRIER_BIT);
+    assert_int_equal(ctx->gl_violations, 3);
+    done(ctx);
+}
+
 static void test_es_enum_table(void **state)
 {
     int cap;
@@ -118,6 +137,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_es20_desktop_enum_fails),
         cmocka_unit_test(test_es32_takes_es3_enums),
+        cmocka_unit_test(test_es_image_atomics),
         cmocka_unit_test(test_es_enum_table),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
