@@ -247,8 +247,8 @@
  * needs a highp fragment float (24-bit significand; ES 2.0 parts without
  * GL_FRAGMENT_PRECISION_HIGH round it). Displaced draws are drawn into
  * packed maps like any caster; CSG products are not yet (their resolve
- * writes depth only: they cast nothing there; on ES 2.0 products resolve
- * on the GPU alone and cast no shadow anyway);
+ * writes depth only: they cast nothing there; bare ES 2.0's packed GPU
+ * resolve has no depth texture to resolve them from a light anyway);
  * point lights get six 90-degree maps drawn before their pass into one
  * atlas (3 x 2 faces, one sampler; the face size halved while three faces
  * exceed GL_MAX_TEXTURE_SIZE), each face with only the casters whose bounds
@@ -2184,9 +2184,13 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * the lighting; ES reads depth and stencil back as GL_DEPTH_STENCIL 24_8
  * words with GL_NV_read_depth_stencil; an ES context without it (WebGL 2),
  * and OpenGL ES 2.0 (no program writes read-back depth again there),
- * resolves the camera's products on the GPU alone: they cast no shadow,
- * scs and goldfeather run to their limits without counting layers, and
- * STIN_DEBUG_CSG_READBACK makes it "csg-off"; the GPU resolve's work
+ * resolves the camera's products on the GPU alone, and a light's map
+ * resolves them so too (map-pcf, and volumes' map where shadow compare
+ * is: the direct GPU resolve from the light, each candidate's faces drawn
+ * into the map with its polygon offset; none under interval, nor where
+ * the GPU resolve is packed), scs and goldfeather run to their limits
+ * without counting layers, and STIN_DEBUG_CSG_READBACK makes it
+ * "csg-off"; the GPU resolve's work
  * buffer needs depth textures, packed depth-stencil and fragment depth
  * writes, so bare ES 2.0 takes the packed resolve below, and a frame there
  * that keeps its contents or is multisampled draws no products, logged

@@ -15,7 +15,19 @@
  * a product's silhouette does not count as slope), the steeper axis,
  * times factor, plus units times 2^-24. The CPU copies follow the camera's
  * in the staging, so a point light's faces, drawn mid-frame, leave the
- * camera's resolve intact. */
+ * camera's resolve intact. Without depth read-back (OpenGL ES without
+ * GL_NV_read_depth_stencil: WebGL 2, es20-ext) the rectangle is resolved
+ * on the GPU alone instead, in one go: csg/merge.c's direct resolve in the
+ * cast's own depth-stencil framebuffer, each candidate's faces drawn into
+ * the map on its depth, depth LESS, with the light's glPolygonOffset as
+ * the ordinary casters get it (the snap's band widened by that offset,
+ * which gl_FragCoord.z carries: on llvmpipe without the widening the
+ * sloped faces fell outside the band and cast nothing). Nothing is kept
+ * for cast_again (the GL1 maps', which never run there), interval's walk
+ * is no one face set to snap (it casts nothing there, logged), and the
+ * packed resolve (bare ES 2.0) has no depth texture to resolve in. The
+ * camera's resolve is left alone: its result texture and work buffer are
+ * not touched. */
 #include "csg/csg_private.h"
 
 /* A light's map resolve, kept for the passes that draw the products'
@@ -223,6 +235,19 @@ static void surface_pass(stin_context *ctx, const stin__pass_state *base)
     ctx->bound_mesh = 0xffffffffu;
 }
 
+/* The bound framebuffer's depth and stencil cleared within rect (far, 0),
+ * ps (colour writes off) scissored to it and applied. */
+static void clear_rect(stin_context *ctx, stin__pass_state *ps, const int rect[4])
+{
+    ps->color_write = 0;
+    ps->scissor = 1;
+    stin__memcopy(ps->scissor_box, rect, sizeof ps->scissor_box);
+    stin__pass_apply(ctx, ps);
+    stin__clear_depth(ctx, 1.0);
+    GL(ctx, ClearStencil)(0);
+    GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+}
+
 /* What a run of bands does with each resolved band. */
 typedef struct cast_job {
     const stin__path *path;
@@ -249,12 +274,8 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
     total = ctx->staging_bytes > ctx->scratch_bytes ? ctx->staging_bytes : ctx->scratch_bytes;
     rows = total > offset ? (int)((total - offset) / row) : 0;
     rows = rows < rect[3] ? rows : rect[3];
-    if (rows < 1 || ctx->csg->no_readback) { /* a light's resolve is a read-back one */
-        if (!c->said_room && ctx->csg->no_readback)
-            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
-                      "CSG products cast no shadow: a light's resolve reads depth and "
-                      "stencil back, which OpenGL ES does only with GL_NV_read_depth_stencil");
-        else if (!c->said_room)
+    if (rows < 1) {
+        if (!c->said_room)
             stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
                       "CSG products cast no shadow from a light: a row of its map under them "
                       "needs %lu bytes of staging beside the camera's %lu (raise "
@@ -285,13 +306,7 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
             GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, c->fbo);
             r->bits = 8;
         }
-        ps.color_write = 0;
-        ps.scissor = 1;
-        stin__memcopy(ps.scissor_box, band, sizeof ps.scissor_box);
-        stin__pass_apply(ctx, &ps);
-        stin__clear_depth(ctx, 1.0);
-        GL(ctx, ClearStencil)(0);
-        GL(ctx, Clear)(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
+        clear_rect(ctx, &ps, band);
         if (job->path == stin__fixed_path()) {
             GL(ctx, MatrixMode)(GL_PROJECTION);
             GL(ctx, LoadMatrixf)(ctx->projection);
@@ -316,6 +331,53 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
     }
     stin__pass_apply(ctx, &base);
     return bands;
+}
+
+/* Without depth read-back (OpenGL ES without GL_NV_read_depth_stencil):
+ * the products' rectangle resolved on the GPU alone, in one go, in the
+ * cast's own depth-stencil framebuffer, each candidate's faces snapped
+ * into the map with the light's offset (csg/merge.c's direct resolve).
+ * Returns 1 when it ran (0: logged why not). */
+static int run_gpu(stin_context *ctx, const cast_job *job, const int rect[4])
+{
+    stin__csg_cast_state *c = ctx->csg->cast;
+    stin__pass_state ps = stin__pass_defaults, base = *stin__pass_current(ctx);
+    stin__csg_pixels r;
+    const char *why = NULL;
+    int side = job->map_vp[0] + job->map_vp[2] > job->map_vp[1] + job->map_vp[3]
+                   ? job->map_vp[0] + job->map_vp[2]
+                   : job->map_vp[1] + job->map_vp[3];
+    camera_light(ctx, job->view, job->proj, job->map_vp, rect);
+    if (job->path != stin__glsl_path() || job->in_place || !stin__csg_direct_cast_fits(ctx))
+        why = ctx->sel.choice[STIN_FEATURE_CSG].technique == STIN_TECH_CSG_INTERVAL
+                  ? "under interval: a light's resolve on the GPU alone snaps each candidate's "
+                    "faces into the map, and interval's layers are no one face set"
+                  : "from a light here: OpenGL ES reads depth and stencil back only with "
+                    "GL_NV_read_depth_stencil, and the GPU resolve from a light needs depth "
+                    "textures";
+    else if (!stin__csg_pixels_gpu(ctx, &r))
+        why = "from a light: the map's rectangle under them needs more than the texture "
+              "staging (1 byte a pixel; raise desc.max_texture_bytes)";
+    else if (!own_target(ctx, side))
+        why = "from a light: its resolve on the GPU alone needs a packed depth-stencil "
+              "framebuffer";
+    if (why) {
+        if (!c->said_room)
+            stin__log(ctx, STIN_LOG_LEVEL_WARNING, STIN_LOG_FALLBACK,
+                      "CSG products cast no shadow %s", why);
+        c->said_room = 1;
+        GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, job->target);
+        return 0;
+    }
+    r.bits = 8;
+    clear_rect(ctx, &ps, rect);
+    stin__csg_direct_cast_begin(ctx, c->fbo, c->depth_stencil, c->size, job->target,
+                                job->factor, job->units);
+    stin__csg_resolve_pixels(ctx, job->path, &r);
+    stin__csg_direct_cast_end(ctx, job->target);
+    stin__pass_apply(ctx, &base);
+    ctx->stats.csg.cast_bands++;
+    return 1;
 }
 
 /* The light's camera and the products' rectangle of its map; 0 when the
@@ -360,9 +422,11 @@ int stin__csg_cast(stin_context *ctx, const stin__path *path, const float view[1
     job.surface = 0;
     job.offset = camera_bytes(ctx); /* before the camera is the light's */
     camera_save(ctx, &saved);
-    if (light_rect(ctx, view, proj, map_vp, rect))
-        bands = run_bands(ctx, &job, rect);
-    if (bands) {
+    if (light_rect(ctx, view, proj, map_vp, rect)) /* on the GPU alone: nothing kept */
+        bands = ctx->csg->no_readback ? run_gpu(ctx, &job, rect) : run_bands(ctx, &job, rect);
+    if (bands && ctx->csg->no_readback) {
+        ctx->stats.csg.cast_maps++;
+    } else if (bands) {
         stin__memcopy(c->view, view, sizeof c->view);
         stin__memcopy(c->light_projection, proj, sizeof c->light_projection);
         stin__memcopy(c->rect, rect, sizeof c->rect);
@@ -372,7 +436,7 @@ int stin__csg_cast(stin_context *ctx, const stin__path *path, const float view[1
         ctx->stats.csg.cast_maps++;
     }
     finish(ctx, &saved, &job);
-    return c->valid;
+    return bands > 0;
 }
 
 void stin__csg_cast_again(stin_context *ctx, const int map_vp[4], GLuint target, int in_place)

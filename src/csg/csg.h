@@ -179,7 +179,8 @@ void stin__csg_upload_result(struct stin_context *ctx, const stin__csg_pixels *r
  * surface seen from the light, pushed back by the light's slope-scaled
  * offset (factor, units as glPolygonOffset), goes into the map's depth.
  * Returns 1 when it drew any. The rectangle goes in bands of the rows the
- * staging holds. cast_again writes the same surface unbiased into the
+ * staging holds (without depth read-back, in one: the direct GPU resolve,
+ * the map's faces with its offset). cast_again writes the same surface unbiased into the
  * framebuffer `target` (bound; in_place as for cast; viewport map_vp) and
  * draws the primitives there depth EQUAL with the fixed path's current
  * colour state (map-combine's ramp, map-depth's side colours): from the
@@ -344,6 +345,16 @@ void stin__csg_in_place_end(struct stin_context *ctx);
 int stin__csg_direct_fits(const struct stin_context *ctx);
 int stin__csg_direct_begin(struct stin_context *ctx);
 void stin__csg_direct_end(struct stin_context *ctx);
+/* The direct resolve from a light (csg/cast.c, on the GPU alone): fits
+ * where the GPU resolve runs unpacked and not interval; begin: work
+ * framebuffer `work` (depth-stencil texture `texture`, size x size,
+ * cleared) bound as the resolve's, each candidate's faces snapped into the
+ * map's framebuffer `target` with its polygon offset (factor, units); end:
+ * `target` bound again. The frame's own resolve is left as it was. */
+int stin__csg_direct_cast_fits(const struct stin_context *ctx);
+void stin__csg_direct_cast_begin(struct stin_context *ctx, GLuint work, GLuint texture,
+                                 int size, GLuint target, float factor, float units);
+void stin__csg_direct_cast_end(struct stin_context *ctx, GLuint target);
 void stin__csg_merge_result_ready(struct stin_context *ctx);
 /* The packed GPU resolve, where no depth texture exists (bare OpenGL ES
  * 2.0: no depth textures, packed depth-stencil or fragment depth; an FBO's

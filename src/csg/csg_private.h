@@ -36,6 +36,13 @@ typedef struct stin__csg_merge_state {
      * frame's own buffers are the work, the result is texture[RESULT]
      * (RGBA8, a window depth packed), no framebuffer of its own */
     int packed, said_packed;
+    /* a direct resolve's take: the framebuffer each candidate's faces are
+     * snapped into (the frame's, or a light's map: csg/cast.c), the work
+     * texture they are kept on (texel = window pixel) and its size, and
+     * the polygon offset (factor, units) they take there (a map's; 0, 0) */
+    GLuint direct_target, direct_work;
+    int direct_width, direct_height;
+    float direct_offset[2];
 } stin__csg_merge_state;
 
 /* The frame's products, laid out by stin__csg_state_place behind the

@@ -33,6 +33,10 @@
  * final snap (on llvmpipe the merge quads and the final snap cost the
  * small products most of their frame; docs/benchmarks.md). Both copy the
  * frame's depth into the result texture only when a pass asks for it.
+ * Without depth read-back a light's map resolves its products direct too
+ * (csg/cast.c): in the cast's own work framebuffer, each candidate's faces
+ * taken into the map with the light's polygon offset, the band widened by
+ * it; the frame's work and result textures are left as they were.
  * A multisampled frame takes neither: the result stays one depth a pixel,
  * and the final snap (face_ids, then the snap with SNAP_SLOPE and the
  * neighbours) keeps each face on the samples it covers (stin.h,
@@ -70,6 +74,7 @@
  * change (|dz/dx| + |dz/dy|); each kept fragment still writes its own
  * per-sample depth, depth LESS. */
 #define SNAP_SLOPE 1.0f
+#define DEPTH_UNIT (1.0f / 16777216.0f) /* 24-bit depth's step: glPolygonOffset's r */
 
 static const unsigned thresholds[STIN__CSG_MERGE_THRESHOLDS] = {
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 32, 64, 128, 255};
@@ -430,13 +435,16 @@ void stin__csg_snap_band(const stin_context *ctx, const stin__draw *d, float ban
     band[1] = near_cut ? NEAR_CUT_BAND * reach : 0.0f;
 }
 
-static void snap_band_for(stin_context *ctx, const stin__draw *d)
+/* take: a direct resolve's take, whose texture is the direct work's and
+ * whose band grows by the offset's units (u_samples.x: its factor). */
+static void snap_band_for(stin_context *ctx, const stin__draw *d, int take)
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     float params[4];
     stin__csg_snap_band(ctx, d, params);
-    params[2] = 1.0f / (float)m->width;
-    params[3] = 1.0f / (float)m->height;
+    params[0] += take ? m->direct_offset[1] * DEPTH_UNIT : 0.0f;
+    params[2] = 1.0f / (float)(take ? m->direct_width : m->width);
+    params[3] = 1.0f / (float)(take ? m->direct_height : m->height);
     GL(ctx, Uniform4fv)(m->snap_params, 1, params);
 }
 
@@ -454,6 +462,7 @@ static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, in
 {
     stin__csg_merge_state *m = &ctx->csg->merge;
     stin__pass_state ps = stin__pass_defaults;
+    int take;
     ps.depth_test = (unsigned char)(how != SNAP_IDS);
     ps.depth_func = how == SNAP_TAKE ? GL_EQUAL : GL_LESS; /* under what the buffer holds nearer */
     ps.depth_write = (unsigned char)(how != SNAP_TAKE);
@@ -462,8 +471,14 @@ static void snap_faces(stin_context *ctx, const stin__draw *d, GLenum culled, in
     ps.cull_face = culled;
     if (region)
         stin__csg_region_keep_to(ctx, &ps);
+    take = how == SNAP_FACES && region; /* a direct resolve's take */
+    if (take && (m->direct_offset[0] != 0.0f || m->direct_offset[1] != 0.0f)) {
+        ps.polygon_offset = 1;
+        ps.offset_factor = m->direct_offset[0];
+        ps.offset_units = m->direct_offset[1];
+    }
     stin__pass_apply(ctx, &ps);
-    snap_band_for(ctx, d);
+    snap_band_for(ctx, d, take);
     stin__glsl_submit_geometry(ctx, m->snap_model, &m->snap_displace, d);
     ctx->stats.passes++;
 }
@@ -562,9 +577,10 @@ static void snap_surface(stin_context *ctx, const stin__csg_surface *s)
     stin__csg_merge_state *m = &ctx->csg->merge;
     int how = m->packed ? SNAP_TAKE : SNAP_FACES;
     uint32_t i;
-    snap_begin(ctx, m->texture[m->packed ? STIN__CSG_MERGE_RESULT : STIN__CSG_MERGE_WORK],
-               0); /* never multisampled */
-    snap_samples(ctx, 0.0f, m->packed ? -1.0f : 0.0f, 0u, 0.0f);
+    /* never multisampled; a map's offset widens the band by its slope part */
+    snap_begin(ctx, m->packed ? m->texture[STIN__CSG_MERGE_RESULT] : m->direct_work, 0);
+    snap_samples(ctx, m->packed ? 0.0f : m->direct_offset[0], m->packed ? -1.0f : 0.0f, 0u,
+                 0.0f);
     if (s->cap)
         snap_faces(ctx, s->cap, s->cap_culled, 1, how);
     for (i = 0; !s->cap && i < s->count; i++) {
@@ -596,10 +612,43 @@ int stin__csg_direct_begin(stin_context *ctx)
     ctx->csg->resolve_fbo = m->fbo[STIN__CSG_MERGE_WORK];
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, ctx->csg->resolve_fbo);
     ctx->csg->direct = 1;
+    m->direct_target = ctx->draw_fbo;
+    m->direct_work = m->texture[STIN__CSG_MERGE_WORK];
+    m->direct_width = m->width;
+    m->direct_height = m->height;
+    m->direct_offset[0] = m->direct_offset[1] = 0.0f;
     ctx->stats.csg.gpu_resolves = 1;
     ctx->stats.csg.gpu_bytes = m->bytes;
     ctx->stats.csg.direct = 1;
     return 1;
+}
+
+int stin__csg_direct_cast_fits(const stin_context *ctx)
+{
+    return stin__csg_merge_ready(ctx) && !ctx->csg->merge.packed &&
+           ctx->sel.choice[STIN_FEATURE_CSG].technique != STIN_TECH_CSG_INTERVAL;
+}
+
+void stin__csg_direct_cast_begin(stin_context *ctx, GLuint work, GLuint texture, int size,
+                                 GLuint target, float factor, float units)
+{
+    stin__csg_merge_state *m = &ctx->csg->merge;
+    ctx->csg->resolve_fbo = work;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, work);
+    ctx->csg->direct = 1;
+    m->direct_target = target;
+    m->direct_work = texture;
+    m->direct_width = m->direct_height = size;
+    m->direct_offset[0] = factor;
+    m->direct_offset[1] = units;
+}
+
+void stin__csg_direct_cast_end(stin_context *ctx, GLuint target)
+{
+    ctx->csg->direct = 0;
+    ctx->csg->resolve_fbo = ctx->draw_fbo;
+    ctx->csg->merge.direct_offset[0] = ctx->csg->merge.direct_offset[1] = 0.0f;
+    GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER, target);
 }
 
 void stin__csg_direct_end(stin_context *ctx)
@@ -777,7 +826,7 @@ int stin__csg_candidate_take(stin_context *ctx, const stin__path *path, stin__cs
      * faces (interval's, which do not, never runs direct) */
     direct = ctx->csg->direct && surface;
     GL(ctx, BindFramebuffer)(GL_FRAMEBUFFER,
-                             direct ? ctx->draw_fbo : m->fbo[STIN__CSG_MERGE_RESULT]);
+                             direct ? m->direct_target : m->fbo[STIN__CSG_MERGE_RESULT]);
     if (counted)
         GL_ENUM(ctx, BeginQuery, target)(target, q);
     if (direct)

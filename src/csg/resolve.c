@@ -196,7 +196,7 @@ void stin__csg_init(stin_context *ctx)
         /* the read-back resolves (light maps', STIN_DEBUG_CSG_READBACK,
          * no GPU resolve) read depth and stencil, which core ES cannot: there
          * the camera's products take the GPU resolve alone (checked below,
-         * once it is built) and cast no shadow (csg/cast.c) */
+         * once it is built), and so do the lights' maps (csg/cast.c) */
         c->no_readback = ctx->caps.es && !stin_query_extension(ctx, "GL_NV_read_depth_stencil");
         c->depth_prog = stin__program_build(ctx, "gl4/screen.vert", "gl4/csg_depth.frag",
                                             NULL, 0, msg, sizeof msg);
@@ -225,8 +225,9 @@ void stin__csg_init(stin_context *ctx)
     }
     if (c->no_readback)
         stin__log(ctx, STIN_LOG_LEVEL_INFO, STIN_LOG_FALLBACK,
-                  "CSG: %s: products resolve on the GPU alone, cast no shadow, and scs and "
-                  "goldfeather count no layers (they run to their limits)",
+                  "CSG: %s: products resolve on the GPU alone (from the lights too, where "
+                  "depth textures are), and scs and goldfeather count no layers (they run "
+                  "to their limits)",
                   gpu_alone);
 }
 

@@ -433,6 +433,11 @@ void stin__cast_map_mark(stin_context *ctx)
     stin__lit_program_forget(ctx);
     GL(ctx, UniformMatrix4fv)(p->u_view_proj, 1, GL_FALSE, ctx->view_proj);
     test_uniforms(ctx, p);
+    /* the height map's sampler off the map's unit even where no receiver
+     * is displaced: WebGL refuses a draw whose sampler2D and
+     * sampler2DShadow share a unit */
+    if (p->displace.map >= 0)
+        GL(ctx, Uniform1i)(p->displace.map, ctx->sel.displace_unit);
     ctx->bound_mesh = 0xffffffffu;
     stin__cast_map_receivers(ctx, p);
     ctx->bound_mesh = 0xffffffffu;
