@@ -7,8 +7,19 @@
  *   cc egl_app_shader.c $(pkg-config --cflags --libs stin) -lEGL -lm */
 #include "example_egl.h"
 
+/* The shaders' first lines: GLSL 1.20, or GLSL ES 1.00 (OpenGL ES 2.0 and
+ * 3.0) with the fragment stage's default precision, which ES asks for. */
+static const char desktop_version[] = "#version 120\n";
+static const char es_version[] = "#version 100\n";
+static const char es_fragment_version[] = "#version 100\n"
+                                          "#ifdef GL_FRAGMENT_PRECISION_HIGH\n"
+                                          "precision highp float;\n"
+                                          "#else\n"
+                                          "precision mediump float;\n"
+                                          "#endif\n";
+static int on_es; /* the context is OpenGL ES (set by main) */
+
 static const char vertex_shader[] =
-    "#version 120\n"
     "attribute vec3 position;\n"
     "attribute vec3 normal;\n"
     "uniform mat4 view_proj;\n"
@@ -41,7 +52,7 @@ typedef void(APIENTRYP draw_elements_fn)(GLenum mode, GLsizei count, GLenum type
 
 static GLuint build_program(void)
 {
-    const char *frag[3];
+    const char *vert[2], *frag[3];
     GLuint p, vs, fs;
     GLint ok = 0;
     LOAD(create_shader_fn, glCreateShader);
@@ -52,13 +63,15 @@ static GLuint build_program(void)
     LOAD(PFNGLBINDATTRIBLOCATIONPROC, glBindAttribLocation);
     LOAD(PFNGLLINKPROGRAMPROC, glLinkProgram);
     LOAD(PFNGLGETPROGRAMIVPROC, glGetProgramiv);
-    frag[0] = "#version 120\n";
-    frag[1] = stin_visibility_glsl(); /* right after #version */
+    vert[0] = on_es ? es_version : desktop_version;
+    vert[1] = vertex_shader;
+    frag[0] = on_es ? es_fragment_version : desktop_version;
+    frag[1] = stin_visibility_glsl(); /* right after #version (and ES's precision) */
     frag[2] = fragment_main;
     p = glCreateProgram();
     vs = glCreateShader(GL_VERTEX_SHADER);
     fs = glCreateShader(GL_FRAGMENT_SHADER);
-    glShaderSource(vs, 1, (const GLchar *const[]){vertex_shader}, NULL);
+    glShaderSource(vs, 2, vert, NULL);
     glShaderSource(fs, 3, frag, NULL);
     glCompileShader(vs);
     glCompileShader(fs);
@@ -107,6 +120,7 @@ static void draw_mesh(const float *pos, const float *nrm, uint32_t vertices, con
     }
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buf[1]);
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, (GLsizeiptr)(indices * sizeof *idx), idx, GL_STREAM_DRAW);
+    /* 32-bit indices: OES_element_index_uint on ES 2.0 */
     glDrawElements(GL_TRIANGLES, (GLsizei)indices, GL_UNSIGNED_INT, NULL);
     glDisableVertexAttribArray(0);
     glDisableVertexAttribArray(1);
@@ -162,12 +176,12 @@ int main(int argc, char **argv)
 {
     example_egl e;
     int failed;
-    if (argc != 2) {
-        fprintf(stderr, "usage: egl_app_shader OUT.ppm\n");
+    const char *out = NULL;
+    if (example_egl_args(&e, argc, argv, &out))
         return 2;
-    }
     if (example_egl_open(&e, "egl_app_shader"))
         return 2;
+    on_es = e.es != 0;
     failed = example_render(get_proc, NULL, e.fbo, app_pass);
-    return example_egl_close(&e, argv[1]) || failed;
+    return example_egl_close(&e, out) || failed;
 }

@@ -9,12 +9,11 @@ int main(int argc, char **argv)
 {
     example_egl e;
     int failed;
-    if (argc != 2) {
-        fprintf(stderr, "usage: egl_shadow OUT.ppm\n");
+    const char *out = NULL;
+    if (example_egl_args(&e, argc, argv, &out))
         return 2;
-    }
     if (example_egl_open(&e, "egl_shadow"))
         return 2;
     failed = example_render(get_proc, NULL, e.fbo, NULL);
-    return example_egl_close(&e, argv[1]) || failed;
+    return example_egl_close(&e, out) || failed;
 }

@@ -151,14 +151,13 @@ static int run_frames(uint32_t framebuffer)
 int main(int argc, char **argv)
 {
     example_egl e;
+    const char *out = NULL;
     int failed;
     (void)example_render; /* example_scene.h's one-frame scene: not this one */
-    if (argc != 2) {
-        fprintf(stderr, "usage: skinned OUT.ppm\n");
+    if (example_egl_args(&e, argc, argv, &out))
         return 2;
-    }
     if (example_egl_open(&e, "skinned"))
         return 2;
     failed = run_frames(e.fbo);
-    return example_egl_close(&e, argv[1]) || failed;
+    return example_egl_close(&e, out) || failed;
 }

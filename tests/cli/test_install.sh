@@ -59,11 +59,28 @@ for ex in osmesa_shadow:-lOSMesa egl_shadow:-lEGL egl_app_shader:-lEGL skinned:-
     if ! cc -std=c99 -D_POSIX_C_SOURCE=200809L -Wall -Wextra -Werror -pedantic \
         "examples/${name}.c" $flags ${ex#*:} -lm -o "$dir/$name" > "$dir/log" 2>&1; then
         echo "FAIL example-$name: does not build: $(tail -n 1 "$dir/log")"
-    elif ! "$dir/$name" "$dir/$name.ppm" > "$dir/log" 2>&1; then
-        echo "SKIP example-$name: no context here: $(tail -n 1 "$dir/log")"
-    else
-        "$dir/check" "$dir/$name.ppm" | sed -e "s|$dir/||" -e 's#^\(PASS\|FAIL\) #\1 example-#'
+        continue
     fi
+    # the EGL examples on OpenGL ES 2.0 and 3.0 too (--es; Mesa gives its
+    # latest ES for any version asked, so the override pins the one asked)
+    runs=-
+    case $name in egl_*|skinned) runs="- 2 3" ;; esac
+    for es in $runs; do
+        if [ "$es" = - ]; then
+            pic=$name.ppm
+            set -- "$dir/$name" "$dir/$pic"
+        else
+            pic=$name-es$es.ppm
+            set -- MESA_GLES_VERSION_OVERRIDE=$es.0 "$dir/$name" --es "$es" "$dir/$pic"
+        fi
+        if ! env "$@" > "$dir/log" 2>&1; then
+            echo "SKIP example-$pic: no context here: $(tail -n 1 "$dir/log")"
+        elif [ "$es" != - ] && ! grep -q "^context: OpenGL ES $es\.0" "$dir/log"; then
+            echo "FAIL example-$pic: not an OpenGL ES $es.0 context: $(head -n 1 "$dir/log")"
+        else
+            "$dir/check" "$dir/$pic" | sed -e "s|$dir/||" -e 's#^\(PASS\|FAIL\) #\1 example-#'
+        fi
+    done
 done
 
 make -s --no-print-directory uninstall DESTDIR="$dir" PREFIX=$prefix > "$dir/log" 2>&1
