@@ -8,7 +8,7 @@
 # Usage: tests/run.sh BUILD_DIR
 # Environment: STIN_TEST_PLATFORMS (default "egl osmesa"),
 #              STIN_TEST_PROFILES (default: every desktop profile of docs/profiles.md),
-#              STIN_TEST_ES_PROFILES (default "es30 es32 es20-ext es20"; egl only, the scenes below),
+#              STIN_TEST_ES_PROFILES (default "es30 es32 es20-ext es20 es31"; egl only, the scenes below),
 #              STIN_TEST_QUICK=1 leaves out the install, licence, readme,
 #              bench, viewer and browser (web) suites (make check-quick), STIN_TEST_JOBS,
 #              STIN_READBACK_DIR: every image suite hashes its read-backs into
@@ -60,8 +60,10 @@ PROFILES=${STIN_TEST_PROFILES:-gl11 gl13-combine gl14-shadow gl21 gl33-core gl45
 # es20-ext (GLSL ES 1.00) runs es30's scenes, csg by the GPU resolve alone
 # (35 s); es20 (no derivatives, depth textures or 32-bit indices) volumes
 # and map-pcf's packed maps on spheres-18k-spot (6 s), and csg by the packed
-# GPU resolve (its result packed into RGBA8: 30 s more).
-ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext es20}
+# GPU resolve (its result packed into RGBA8: 30 s more). es31 (GLSL ES
+# 3.10; es30's choices) lighting, volumes, map-pcf and the application's
+# visibility map on four-lights (19 s).
+ES_PROFILES=${STIN_TEST_ES_PROFILES:-es30 es32 es20-ext es20 es31}
 ES_SCENES="tests/scenes/four-lights.json"
 JOBS=${STIN_TEST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 SCENES=$(ls tests/scenes/*.json)

@@ -2793,8 +2793,10 @@ typedef struct stin_visibility_map {
 stin_result stin_query_visibility_map(const stin_context *ctx, stin_visibility_map *out);
 
 /* A GLSL chunk for the application's fragment shaders, for GLSL 1.10 to 4.60
- * on core and compatibility contexts: paste it after the #version line
- * (before any use). It declares
+ * on core and compatibility contexts and GLSL ES 1.00 to 3.20 on OpenGL ES
+ * and WebGL: paste it after the #version line (on ES after the program's
+ * default float precision; the chunk's own uniforms and texel address are
+ * highp where the fragment stage has it), before any use. It declares
  *   uniform sampler2D stin_visibility_map;
  *   uniform vec4 stin_visibility_layout;   tile width, tile height, 1 / map
  *                                          width, 1 / map height

@@ -9,14 +9,28 @@
 #else
 #define STIN_VISIBILITY_FETCH(s, uv) texture2D(s, uv)
 #endif
-uniform sampler2D stin_visibility_map;
-uniform vec4 stin_visibility_layout; // tile width, tile height, 1 / map width, 1 / map height
-uniform float stin_visibility_lights;
-uniform float stin_visibility_transmittance; // the first transmittance tile (0: none)
+// On ES the texel address is highp where the fragment stage has it,
+// whatever default the program declared: mediump's 11 bits are off by a
+// texel at 2,048. Samplers default to lowp there. Desktop GLSL before 1.30
+// has no precision qualifiers.
+#if defined(GL_ES) && defined(GL_FRAGMENT_PRECISION_HIGH)
+#define STIN_VISIBILITY_P highp
+#elif defined(GL_ES)
+#define STIN_VISIBILITY_P mediump
+#else
+#define STIN_VISIBILITY_P
+#endif
+uniform STIN_VISIBILITY_P sampler2D stin_visibility_map;
+// tile width, tile height, 1 / map width, 1 / map height
+uniform STIN_VISIBILITY_P vec4 stin_visibility_layout;
+uniform STIN_VISIBILITY_P float stin_visibility_lights;
+// the first transmittance tile (0: none)
+uniform STIN_VISIBILITY_P float stin_visibility_transmittance;
 
-vec4 stin_visibility_tile(float tile)
+vec4 stin_visibility_tile(STIN_VISIBILITY_P float tile)
 {
-    vec2 origin = vec2(mod(tile, 2.0), floor(tile / 2.0)) * stin_visibility_layout.xy;
+    STIN_VISIBILITY_P vec2 origin =
+        vec2(mod(tile, 2.0), floor(tile / 2.0)) * stin_visibility_layout.xy;
     return STIN_VISIBILITY_FETCH(stin_visibility_map,
                                  (origin + gl_FragCoord.xy) * stin_visibility_layout.zw);
 }

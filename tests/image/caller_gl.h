@@ -6,6 +6,8 @@
 
 #include "stin_platform.h"
 
+#include <stdint.h>
+
 #include <GL/gl.h>
 #include <GL/glext.h>
 
@@ -77,6 +79,13 @@
     X(void, DisableVertexAttribArray, (GLuint i))                                         \
     X(void, DrawArrays, (GLenum mode, GLint first, GLsizei count))                        \
     X(void, BindFramebuffer, (GLenum target, GLuint fb))                                  \
+    X(void, GenFramebuffers, (GLsizei n, GLuint *fb))                                     \
+    X(void, DeleteFramebuffers, (GLsizei n, const GLuint *fb))                            \
+    X(void, FramebufferTexture2D, (GLenum target, GLenum attachment, GLenum textarget,    \
+                                   GLuint texture, GLint level))                          \
+    X(GLenum, CheckFramebufferStatus, (GLenum target))                                    \
+    X(void, ReadPixels, (GLint x, GLint y, GLsizei w, GLsizei h, GLenum fmt, GLenum type, \
+                         void *pixels))                                                   \
     X(void, Viewport, (GLint x, GLint y, GLsizei w, GLsizei h))                           \
     X(void, Clear, (GLbitfield mask))                                                     \
     X(void, ClearColor, (GLfloat r, GLfloat g, GLfloat b, GLfloat a))                     \
@@ -124,18 +133,29 @@ typedef struct caller_gl {
 
 /* Resolves every entry point the driver has (missing ones stay NULL). */
 void caller_gl_load(caller_gl *gl, stin_platform *plat);
-/* A linked program writing (r, g, b, 1) at clip-space positions from
- * attribute 0 ("p"): GLSL 1.50 on core contexts, 1.10 otherwise; 0 if the
- * context has no GLSL or linking fails. */
-/* `core` of the program calls: 0 GLSL 1.10, 1 GLSL 1.50 (core profiles),
- * CALLER_GL_ES GLSL ES 3.00 (OpenGL ES 3.0+). */
+/* `core` of the program calls, the application's shading language: 0 GLSL
+ * 1.10, 1 GLSL 1.50 (core profiles), CALLER_GL_ES GLSL ES 3.00 (OpenGL ES
+ * 3.0+), CALLER_GL_ES2 GLSL ES 1.00 (OpenGL ES 2.0). The ES dialects declare
+ * highp floats where the fragment stage has them, else mediump. */
 #define CALLER_GL_ES 2
+#define CALLER_GL_ES2 3
+/* The dialect of a context made for profile p. */
+int caller_gl_dialect(const stin_profile *p);
+/* A linked program writing (r, g, b, 1) at clip-space positions from
+ * attribute 0 ("p"); 0 if the context has no GLSL or linking fails. */
 GLuint caller_gl_flat_program(const caller_gl *gl, int core, float r, float g, float b);
 /* The same vertex shader with a fragment shader of `frag` after the
- * #version line (core: 150, the output "c"; else 110, gl_FragColor). */
+ * #version line and the dialect's preamble; it writes its colour to "c". */
 GLuint caller_gl_program(const caller_gl *gl, int core, const char *frag);
-/* A vertex buffer, and on core contexts a vertex array object (else 0). */
+/* A vertex buffer, and where the dialect has them (1.50, ES 3.00) a vertex
+ * array object (else 0). */
 void caller_gl_buffers(const caller_gl *gl, int core, GLuint *vbo, GLuint *vao);
+/* Level 0 of an RGBA8 GL_TEXTURE_2D of w x h texels into `into` (RGBA,
+ * rows bottom first): glGetTexImage on desktop GL, on ES (which has none)
+ * glReadPixels from a framebuffer the texture is attached to; the
+ * framebuffer binding is given back. 0 where neither can. */
+int caller_gl_read_texture(const caller_gl *gl, int core, GLuint texture, int w, int h,
+                           uint8_t *into);
 /* Deletes what is not 0 of a program, buffer and vertex array; all 0 after. */
 void caller_gl_delete(const caller_gl *gl, GLuint *program, GLuint *vbo, GLuint *vao);
 

@@ -186,7 +186,7 @@ void composite_tests(run *r, stin_tier tier, const char *path)
     hits = malloc(sizeof *hits * (size_t)r->width * r->height);
     ref = reference_create(&s, err, sizeof err);
     c.hits = hits;
-    c.program = caller_gl_flat_program(&gl, r->profile->core, 1.0f, 0.0f, 1.0f);
+    c.program = caller_gl_flat_program(&gl, caller_gl_dialect(r->profile), 1.0f, 0.0f, 1.0f);
     snprintf(name, sizeof name, "%s/four-lights/composite", stin_tier_name(tier));
     if ((r->profile->max_gl_version > 0 && r->profile->max_gl_version < 20) || !c.program ||
         !gl.GenBuffers) {
@@ -194,7 +194,7 @@ void composite_tests(run *r, stin_tier tier, const char *path)
     } else if (!c.rgba || !hits || !ref || !reference_primary(ref, r->width, r->height, hits)) {
         report(r, "FAIL", name, "reference: %s", ref ? "primary rays failed" : err);
     } else {
-        caller_gl_buffers(&gl, r->profile->core, &c.vbo, &c.vao);
+        caller_gl_buffers(&gl, caller_gl_dialect(r->profile), &c.vbo, &c.vao);
         for (t = 0; t < 2; t++) {
             stin_technique chosen;
             if (!test_context_create(&c.t, r, &s, tier, techniques[t], 0))

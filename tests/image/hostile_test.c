@@ -493,7 +493,7 @@ void hostile_tests(run *r, stin_tier tier, const char *path)
             env_extensions(&h);
             destroy(&h);
         }
-        hostile_objects_make(&h.env, r->profile->es ? CALLER_GL_ES : r->profile->core);
+        hostile_objects_make(&h.env, caller_gl_dialect(r->profile));
         run_technique(&h, STIN_TECH_NONE, all);
         for (i = 0; all && i < sizeof others / sizeof others[0]; i++)
             run_technique(&h, others[i], 0);

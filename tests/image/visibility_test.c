@@ -14,7 +14,9 @@
  *     the covered pixels (a loose bound: the exact agreement is the first
  *     check; this one catches a map that is right about nothing, e.g. all
  *     lit), and "off" exports 1 everywhere;
- * and without framebuffer objects the export is refused as documented.
+ * and without framebuffer objects or packed depth-stencil (bare OpenGL ES
+ * 2.0) the export is refused as documented. On ES the application's
+ * program is GLSL ES 1.00 or 3.00 with its own default precision.
  * On glass-panes (coloured transparent panes over a floor; the tier's
  * translucent-shadows technique: deep on GL4, coloured on GL2), per light:
  *   - the map has transmittance tiles (stin_visibility_map.transmittance_tile)
@@ -116,12 +118,8 @@ static int export_frame(vis_run *v, stin_export ex, uint8_t *into)
     if (v->info.lights != (uint32_t)v->s->light_count ||
         v->info.tile_width != (uint32_t)v->r->width || bytes > (size_t)v->r->width * v->r->height * 16)
         return 0;
-    if (v->gl->ActiveTexture)
-        v->gl->ActiveTexture(GL_TEXTURE0);
-    v->gl->BindTexture(GL_TEXTURE_2D, v->info.texture);
-    v->gl->GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, into);
-    v->gl->BindTexture(GL_TEXTURE_2D, 0);
-    return 1;
+    return caller_gl_read_texture(v->gl, caller_gl_dialect(v->r->profile), v->info.texture,
+                                  (int)v->info.width, (int)v->info.height, into);
 }
 
 static int read_frame(vis_run *v, stin_output out, stin_export ex, int first, uint8_t *into)
@@ -382,7 +380,8 @@ static void check_transmittance(vis_run *v, stin_tier tier, const char *scene_na
     test_context_destroy(&v->t);
 }
 
-/* Without framebuffer objects: refused, and nothing to query. */
+/* Without framebuffer objects or packed depth-stencil: refused, and nothing
+ * to query. */
 static void check_refusal(vis_run *v, const char *name)
 {
     stin_frame_desc fd;
@@ -396,7 +395,8 @@ static void check_refusal(vis_run *v, const char *name)
                    stin_query_visibility_map(v->t.ctx, &m) == STIN_ERROR_INVALID_STATE
                ? "PASS"
                : "FAIL",
-           name, "without framebuffer objects the export is refused (result %d)", (int)res);
+           name, "without framebuffer objects or packed depth-stencil the export is refused "
+                 "(result %d)", (int)res);
 }
 
 static const char app_shader[] =
@@ -414,7 +414,7 @@ static const char mistyped_shader[] =
 static void check_mistyped(vis_run *v, const char *name)
 {
     const caller_gl *gl = v->gl;
-    GLuint program = caller_gl_program(gl, v->r->profile->core, mistyped_shader);
+    GLuint program = caller_gl_program(gl, caller_gl_dialect(v->r->profile), mistyped_shader);
     GLint bound = -1;
     stin_result res;
     if (!program || !export_frame(v, STIN_EXPORT_VISIBILITY, v->map)) {
@@ -443,6 +443,9 @@ static void run_techniques(vis_run *v, stin_tier tier, const char *scene_name)
     static const stin_technique shadows[] = {
         STIN_TECH_SHADOWS_VDSM,      STIN_TECH_SHADOWS_VOLUME,      STIN_TECH_SHADOWS_MAP_PCF,
         STIN_TECH_SHADOWS_MAP_DEPTH, STIN_TECH_SHADOWS_MAP_COMBINE, STIN_TECH_SHADOWS_OFF};
+    /* the screen mask the tiles are drawn in (bare OpenGL ES 2.0 lacks the second) */
+    const uint64_t export_needs =
+        STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_PACKED_DEPTH_STENCIL);
     size_t i;
     int mistyped = 0;
     char name[160];
@@ -453,7 +456,7 @@ static void run_techniques(vis_run *v, stin_tier tier, const char *scene_name)
                  stin_technique_name(shadows[i]));
         v->failures[0] = '\0';
         v->failed = 0;
-        if (!(stin_query_caps(v->t.ctx)->present & STIN_CAP_BIT(STIN_CAP_FBO))) {
+        if ((stin_query_caps(v->t.ctx)->present & export_needs) != export_needs) {
             check_refusal(v, name);
         } else {
             check_technique(v, name, shadows[i] == STIN_TECH_SHADOWS_OFF,
@@ -484,11 +487,6 @@ void visibility_tests(run *r, stin_tier tier, const char *path)
         return;
     memset(&v, 0, sizeof v);
     snprintf(name, sizeof name, "%s/%s/visibility-map", stin_tier_name(tier), base);
-    if (r->profile->es) {
-        report(r, "SKIP", name, "the application's program is GLSL 1.10: no OpenGL ES "
-                                "variant of it yet");
-        return;
-    }
     if (!scene_load(path, &s, err, sizeof err)) {
         report(r, "FAIL", name, "%s", err);
         return;
@@ -508,8 +506,9 @@ void visibility_tests(run *r, stin_tier tier, const char *path)
              !(ref = reference_create(&s, err, sizeof err)) ||
              !reference_primary(ref, r->width, r->height, hits))
         report(r, "FAIL", name, "reference: %s", ref ? "primary rays failed" : err);
-    else if (!gl.GetTexImage)
-        report(r, "SKIP", name, "the test reads the map back with glGetTexImage");
+    else if (!gl.GetTexImage && !gl.GenFramebuffers)
+        report(r, "SKIP", name, "the test reads the map back with glGetTexImage or a "
+                                "framebuffer object");
     else {
         char *frag = malloc(strlen(chunk) + sizeof app_shader);
         v.hits = hits;
@@ -518,10 +517,10 @@ void visibility_tests(run *r, stin_tier tier, const char *path)
             gl.CreateProgram && gl.GenBuffers) {
             strcpy(frag, chunk);
             strcat(frag, app_shader);
-            v.program = caller_gl_program(&gl, r->profile->core, frag);
+            v.program = caller_gl_program(&gl, caller_gl_dialect(r->profile), frag);
             if (!v.program)
                 report(r, "FAIL", name, "the application's program with the chunk did not link");
-            caller_gl_buffers(&gl, r->profile->core, &v.vbo, &v.vao);
+            caller_gl_buffers(&gl, caller_gl_dialect(r->profile), &v.vbo, &v.vao);
         }
         free(frag);
         if (!strcmp(base, "glass-panes"))
