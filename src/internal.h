@@ -83,6 +83,9 @@ struct stin_context {
     stin__pass_state pass;    /* what GL holds, when pass_known */
     int pass_known;
     GLenum lit_cull;          /* face the lit passes cull (0: none): map-depth's facing test */
+    /* glPolygonOffset's r in the depth textures drawn into (0: 24-bit
+     * depth's 2^-24), measured where they are unsized (gl/render_target.c) */
+    float depth_texture_unit;
     /* before each lit draw (NULL: none): a shadow test that differs by
      * receiver (map-depth's terminator test: solids and the rest) */
     void (*lit_draw)(stin_context *ctx, const stin__draw *d);

@@ -1177,8 +1177,9 @@ const char *stin_feature_name(stin_feature f);
  * map-pcf test, its bound at those shadows' edges; logged once a light,
  * "volume: displaced casters cast through map-pcf (SIZE) for light N"),
  * and is lit and receives every shadow at its displaced depth. That map
- * needs framebuffer objects, depth textures and shadow compare: where the
- * context lacks one, "displace" conflicts with "volume" (the technique
+ * needs framebuffer objects and depth textures (without shadow compare,
+ * OpenGL ES 2.0, its test compares in the shader as map-pcf's does): where
+ * the context lacks one, "displace" conflicts with "volume" (the technique
  * table's conflict, lifted by those capabilities): with volumes chosen
  * displacement is "displacement-off" (logged fallback) and materials get
  * their surface chain; forcing "displace" makes the shadow chain skip
@@ -1981,7 +1982,9 @@ typedef struct stin_light_desc {
                              * negligible); shadow passes are scissored to it. 0 = unbounded */
     float shadow_offset[2]; /* shadow-map polygon offset (factor, units), finite;
                              * default (1.1, 4.0) when both are 0, unless
-                             * shadow_offset_exact */
+                             * shadow_offset_exact; units are steps of 24-bit
+                             * depth (2^-24) whatever the maps' own depth (ES
+                             * 2.0's depth textures: 32 bits on Mesa) */
     int shadow_offset_exact; /* 1: shadow_offset as given, (0, 0) too: no offset
                               * (shows acne; for tests) */
     uint32_t pcf_kernel;    /* map-pcf: 1, 3 or 5 taps a side (each the hardware's 2x2
@@ -2185,9 +2188,9 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * words with GL_NV_read_depth_stencil; an ES context without it (WebGL 2),
  * and OpenGL ES 2.0 (no program writes read-back depth again there),
  * resolves the camera's products on the GPU alone, and a light's map
- * resolves them so too (map-pcf, and volumes' map where shadow compare
- * is: the direct GPU resolve from the light, each candidate's faces drawn
- * into the map with its polygon offset; none under interval, nor where
+ * resolves them so too (map-pcf's and volumes' maps: the direct GPU
+ * resolve from the light, each candidate's faces drawn into the map with
+ * its polygon offset; none under interval, nor where
  * the GPU resolve is packed), scs and goldfeather run to their limits
  * without counting layers, and STIN_DEBUG_CSG_READBACK makes it
  * "csg-off"; the GPU resolve's work
@@ -2270,7 +2273,7 @@ stin_result stin_csg_measure(const stin_csg_desc *desc, uint32_t *scratch,
  * products cast through map-pcf (SIZE) for light N"; the map made at
  * stin_create where CSG is chosen). A product's volume
  * would need its resolved silhouette, so volumes on the GLSL tiers (with
- * framebuffer objects, depth textures and shadow compare) cast products
+ * framebuffer objects and depth textures) cast products
  * through a map of their own: per light, just before its volumes are
  * counted, the products are resolved from the light into one depth atlas
  * (3 x 2 cells of shadows.map_size texels a side, halved while three

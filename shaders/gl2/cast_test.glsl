@@ -6,12 +6,15 @@
 // face f in column f mod 3, row f / 3, picked by the major axis from the
 // light); a (2r+1)^2 kernel of the hardware's 2x2 compare, kept half a
 // texel inside the cell, each tap against the receiver's own plane there
-// (receiver-plane bias from the screen derivatives of v_world).
+// (receiver-plane bias from the screen derivatives of v_world). The tap,
+// pcf_tap(at, z, texel), and the map's sampler u_shadow_map come before this
+// chunk, as map-pcf's: the sampler's compare (pcf_tap_compare.glsl), or the
+// shader's where depth textures cannot compare (pcf_tap_depth.glsl: OpenGL
+// ES 2.0 with OES_depth_texture).
 uniform mat4 u_cast_matrix[6]; // world -> [0,1] atlas space, per cell
 uniform vec4 u_cast_params;    // x, w: a texel's width and height in [0,1]; y: kernel radius
 uniform vec3 u_cast_light;     // a point light's position
 uniform int u_cast_faces;
-uniform sampler2DShadow u_cast_map;
 
 float cast_visibility()
 {
@@ -52,7 +55,7 @@ float cast_visibility()
     for (int y = -r; y <= r; y++)
         for (int x = -r; x <= r; x++) {
             vec2 at = clamp(t.xy + vec2(float(x), float(y)) * texel, lo, hi);
-            sum += shadow2D(u_cast_map, vec3(at, t.z + dot(at - t.xy, dz))).r;
+            sum += pcf_tap(at, t.z + dot(at - t.xy, dz), texel);
             n += 1.0;
         }
     return sum / n;

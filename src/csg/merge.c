@@ -74,7 +74,6 @@
  * change (|dz/dx| + |dz/dy|); each kept fragment still writes its own
  * per-sample depth, depth LESS. */
 #define SNAP_SLOPE 1.0f
-#define DEPTH_UNIT (1.0f / 16777216.0f) /* 24-bit depth's step: glPolygonOffset's r */
 
 static const unsigned thresholds[STIN__CSG_MERGE_THRESHOLDS] = {
     1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 32, 64, 128, 255};
@@ -442,7 +441,8 @@ static void snap_band_for(stin_context *ctx, const stin__draw *d, int take)
     stin__csg_merge_state *m = &ctx->csg->merge;
     float params[4];
     stin__csg_snap_band(ctx, d, params);
-    params[0] += take ? m->direct_offset[1] * DEPTH_UNIT : 0.0f;
+    /* the offset's units in the map's own depth step (glPolygonOffset's r) */
+    params[0] += take ? m->direct_offset[1] * stin__rt_depth_unit(ctx) : 0.0f;
     params[2] = 1.0f / (float)(take ? m->direct_width : m->width);
     params[3] = 1.0f / (float)(take ? m->direct_height : m->height);
     GL(ctx, Uniform4fv)(m->snap_params, 1, params);

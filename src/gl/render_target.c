@@ -36,6 +36,25 @@ void stin__rt_shadow_map(stin_context *ctx, GLuint tex, int w, int h)
     level0(ctx, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, w, h);
 }
 
+void stin__rt_depth_measure(stin_context *ctx)
+{
+    GLint bits = 0;
+    float unit = 1.0f;
+    if (ctx->depth_texture_unit > 0.0f || !ctx->caps.es || ctx->caps.gl_major >= 3)
+        return; /* no query of core profiles; ES 3.0's depth textures are sized */
+    GL(ctx, GetIntegerv)(GL_DEPTH_BITS, &bits);
+    if (bits < 8 || bits > 32)
+        bits = 24;
+    while (bits-- > 0)
+        unit *= 0.5f;
+    ctx->depth_texture_unit = unit;
+}
+
+float stin__rt_depth_unit(const stin_context *ctx)
+{
+    return ctx->depth_texture_unit > 0.0f ? ctx->depth_texture_unit : STIN__DEPTH24_UNIT;
+}
+
 GLuint stin__rt_depth_renderbuffer(stin_context *ctx, int w, int h)
 {
     GLuint rb = 0;

@@ -20,6 +20,16 @@ void stin__rt_texture(struct stin_context *ctx, GLuint tex, GLenum internal, GLe
  * bound. */
 void stin__rt_shadow_map(struct stin_context *ctx, GLuint tex, int w, int h);
 
+/* 24-bit depth's step: glPolygonOffset's r in the sized depth textures. */
+#define STIN__DEPTH24_UNIT (1.0f / 16777216.0f)
+/* With a framebuffer bound whose depth attachment is an unsized depth
+ * texture (OpenGL ES 2.0's OES_depth_texture, which takes the bits the
+ * driver gives: Mesa 32), measures them once (GL_DEPTH_BITS). */
+void stin__rt_depth_measure(struct stin_context *ctx);
+/* glPolygonOffset's r in the depth textures stin draws into: the depth one
+ * offset unit moves there (2^-24 unless measured otherwise). */
+float stin__rt_depth_unit(const struct stin_context *ctx);
+
 /* A new w x h depth renderbuffer (DEPTH_COMPONENT16 on ES 2.0, 24
  * elsewhere): the depth test beside a colour target that holds the depth
  * itself (map-pcf's packed maps); GL_RENDERBUFFER left unbound. */

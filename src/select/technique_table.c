@@ -15,8 +15,9 @@
 /* The GL4 tier's sources are GLSL 1.50 (GLSL ES 3.00 and later on ES);
  * what needs a geometry stage (vdsm) says so in its own row. */
 #define TIER4 (BIT(GLSL) | BIT(GLSL_150) | BIT(VBO) | BIT(VAO) | BIT(FBO))
-/* What volumes' own depth map needs (shadow/cast_map.c, on GLSL lighting). */
-#define CAST_MAP (BIT(FBO) | BIT(DEPTH_TEXTURE) | BIT(SHADOW))
+/* What volumes' own depth map needs (shadow/cast_map.c, on GLSL lighting:
+ * without shadow compare its test compares in the shader). */
+#define CAST_MAP (BIT(FBO) | BIT(DEPTH_TEXTURE))
 
 /* Techniques that only run on top of one lighting technique: DOT3 and the
  * fixed maps are texture-environment set-ups of the fixed-function passes;
@@ -67,7 +68,7 @@ static const stin__technique_row rows[] = {
      * stage (after tessellation where there is one); volumes' silhouettes
      * would be the undisplaced mesh's, so beside volumes the displaced draws
      * cast through volumes' depth map (shadow/cast_map.c), which needs
-     * depth textures and shadow compare in a framebuffer object */
+     * depth textures in a framebuffer object */
     {STIN_TECH_DISPLACEMENT_TESS,      0, TIER4 | BIT(VERTEX_TEXTURE_FETCH) | BIT(TESSELLATION),
      STIN_TECH_LIGHTING_GLSL150, STIN__TECH_BIT(STIN_TECH_SHADOWS_VOLUME), 0, 1, 0, CAST_MAP},
     {STIN_TECH_DISPLACEMENT_VTF,       1, BIT(GLSL) | BIT(VERTEX_TEXTURE_FETCH), GLSL_ANY,

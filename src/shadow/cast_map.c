@@ -37,7 +37,7 @@ static const stin__uniform_name mark_uniforms[] = {
     STIN__UNIFORM(mark_program, u_params, "u_cast_params"),
     STIN__UNIFORM(mark_program, u_light, "u_cast_light"),
     STIN__UNIFORM(mark_program, u_faces, "u_cast_faces"),
-    STIN__UNIFORM(mark_program, u_map, "u_cast_map"),
+    STIN__UNIFORM(mark_program, u_map, "u_shadow_map"), /* map-pcf's tap chunk's */
 };
 
 static int has(const stin_context *ctx, uint64_t need)
@@ -45,8 +45,9 @@ static int has(const stin_context *ctx, uint64_t need)
     return (ctx->caps.present & need) == need;
 }
 
-/* The map needs a framebuffer object, depth textures and shadow compare.
- * The fixed-function path's marking pass needs a second texture unit (the
+/* The map needs a framebuffer object and depth textures; without shadow
+ * compare (OpenGL ES 2.0's OES_depth_texture) the GLSL test compares in
+ * the shader, as map-pcf's lit programs do there. The fixed-function path's marking pass needs a second texture unit (the
  * geometry pass turns unit 0's texture off); there, without framebuffer
  * objects, the map is drawn in the frame's own buffer (its stencil for the
  * products' resolve) and copied out, as depth or as map-combine's ramp. */
@@ -54,11 +55,17 @@ static int maps_here(const stin_context *ctx)
 {
     uint64_t compare = STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_SHADOW);
     if (stin__path_of(ctx) == stin__glsl_path())
-        return has(ctx, compare | STIN_CAP_BIT(STIN_CAP_FBO));
+        return has(ctx, STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) | STIN_CAP_BIT(STIN_CAP_FBO));
     if (!has(ctx, STIN_CAP_BIT(STIN_CAP_MULTITEXTURE) | STIN_CAP_BIT(STIN_CAP_STENCIL)))
         return 0;
     return has(ctx, compare) || (has(ctx, STIN_CAP_BIT(STIN_CAP_TEXTURE_ENV_COMBINE)) &&
                                  ctx->caps.max_texture_units >= 3); /* the map and the ramp */
+}
+
+/* The map compares by its sampler (ARB_shadow, ES 3.0), else by its test. */
+static int compares(const stin_context *ctx)
+{
+    return has(ctx, STIN_CAP_BIT(STIN_CAP_SHADOW));
 }
 
 /* The programs with the map test: volumes' marking pass (tessellated:
@@ -68,13 +75,16 @@ enum { MARK, MARK_TESS, MASK };
 static int build_test(stin_context *ctx, int kind, mark_program *p, char *msg, size_t size)
 {
     const char *dir = ctx->sel.tier == STIN_TIER_GL4 ? "gl4/" : "gl2/";
-    char vert[40], frag[40], chunk[40];
-    const char *chunks[2];
+    char vert[40], frag[40], chunk[40], tap[40];
+    const char *chunks[3];
     stin__formatf(vert, sizeof vert, "%s%s", dir, kind == MASK ? "screen.vert" : "cast_mark.vert");
     stin__formatf(frag, sizeof frag, "%s%s", dir, kind == MASK ? "cast_mask.frag" : "cast_mark.frag");
+    stin__formatf(tap, sizeof tap, "%s%s", dir,
+                  compares(ctx) ? "pcf_tap_compare.glsl" : "pcf_tap_depth.glsl");
     stin__formatf(chunk, sizeof chunk, "%scast_test.glsl", dir);
-    chunks[0] = chunk;
-    chunks[1] = NULL;
+    chunks[0] = tap;
+    chunks[1] = chunk;
+    chunks[2] = NULL;
     p->name = stin__program_build(ctx, vert, frag, chunks, kind == MARK_TESS, msg, size);
     if (!p->name)
         return 0;
@@ -99,8 +109,13 @@ static void make_map(stin_context *ctx)
     if (ctx->caps.present & STIN_CAP_BIT(STIN_CAP_MULTITEXTURE))
         GL(ctx, ActiveTexture)(GL_TEXTURE0);
     GL(ctx, GenTextures)(1, &m->texture);
-    stin__rt_shadow_map(ctx, m->texture, (int)(STIN__ATLAS_COLUMNS * size),
-                        (int)(STIN__ATLAS_ROWS * size));
+    if (m->fixed || compares(ctx))
+        stin__rt_shadow_map(ctx, m->texture, (int)(STIN__ATLAS_COLUMNS * size),
+                            (int)(STIN__ATLAS_ROWS * size));
+    else /* read as numbers (NEAREST), unsized: OES_depth_texture's only form */
+        stin__rt_texture(ctx, m->texture, GL_DEPTH_COMPONENT, GL_DEPTH_COMPONENT,
+                         GL_UNSIGNED_INT, (int)(STIN__ATLAS_COLUMNS * size),
+                         (int)(STIN__ATLAS_ROWS * size));
     if (m->fixed) /* the compare's result in alpha too, for the alpha test */
         GL_ENUM(ctx, TexParameteri, GL_DEPTH_TEXTURE_MODE)(GL_TEXTURE_2D, GL_DEPTH_TEXTURE_MODE,
                                                            GL_INTENSITY);
@@ -111,6 +126,8 @@ static void make_map(stin_context *ctx)
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, m->texture,
                                   0);
     stin__no_colour_buffers(ctx); /* depth only */
+    if (!m->fixed && !compares(ctx))
+        stin__rt_depth_measure(ctx); /* the unsized texture's bits: the offset's step */
     stin__framebuffer_restore(ctx, caller_fbo);
 }
 
@@ -210,8 +227,8 @@ static void say(stin_context *ctx, uint32_t li, int screen, int products, int di
                      "a GLSL depth map to cast them"
             : stin__path_of(ctx) == stin__glsl_path()
                 ? "into shadow volumes (a product's volume needs its resolved silhouette, not "
-                  "its primitives'; a depth map to cast them needs framebuffer objects, depth "
-                  "textures and shadow compare)"
+                  "its primitives'; a depth map to cast them needs framebuffer objects and depth "
+                  "textures)"
                 : "into shadow volumes (a product's volume needs its resolved silhouette, not "
                   "its primitives'; a depth map to cast them on GL1 needs multitexture and "
                   "either depth textures with shadow compare or texture_env_combine)";
@@ -247,7 +264,7 @@ static int draw_cell(stin_context *ctx, const stin__path *path, const stin_light
     GL(ctx, Viewport)(rect[0], rect[1], rect[2], rect[3]);
     ps.depth_test = 1;
     ps.color_write = 0;
-    ps.polygon_offset = (unsigned char)stin__map_offset(l, &factor, &units);
+    ps.polygon_offset = (unsigned char)stin__map_offset(ctx, l, &factor, &units);
     ps.offset_factor = factor;
     ps.offset_units = units;
     stin__pass_apply(ctx, &ps);

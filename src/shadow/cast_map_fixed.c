@@ -135,7 +135,7 @@ static int products(stin_context *ctx, const stin_light_desc *l, const int map_v
     stin__memcopy(ps->scissor_box, map_vp, sizeof ps->scissor_box);
     if (!ramp) {
         ps->color_write = 0;
-        ps->polygon_offset = (unsigned char)stin__map_offset(l, &ps->offset_factor,
+        ps->polygon_offset = (unsigned char)stin__map_offset(ctx, l, &ps->offset_factor,
                                                              &ps->offset_units);
     }
     GL(ctx, Viewport)(map_vp[0], map_vp[1], map_vp[2], map_vp[3]);

@@ -66,8 +66,10 @@ void stin__map_ramp_texgen(stin_context *ctx, float n, float f)
 void stin__map_ramp_plane(const stin_light_desc *l, const float view[16], const float proj[16],
                           float n, float f, uint32_t texels, float plane[4])
 {
-    float unused_factor, unused_units;
-    int off = !stin__map_offset(l, &unused_factor, &unused_units), c;
+    /* the light asks for no offset (stin__map_offset's 0) */
+    int off = l->shadow_offset_exact && l->shadow_offset[0] == 0.0f &&
+              l->shadow_offset[1] == 0.0f,
+        c;
     float texel = 2.0f / (proj[0] * (float)texels);
     int ortho = proj[15] != 0.0f;
     float slope = off ? 0.0f : SLOPE_BIAS * texel;

@@ -169,17 +169,19 @@ static void fixed_release(stin_context *ctx)
 
 /* ---- rendering the maps -------------------------------------------------- */
 
-int stin__map_offset(const stin_light_desc *l, float *factor, float *units)
+int stin__map_offset(const stin_context *ctx, const stin_light_desc *l, float *factor,
+                     float *units)
 {
     *factor = l->shadow_offset[0];
     *units = l->shadow_offset[1];
-    if (l->shadow_offset_exact)
-        return *factor != 0.0f || *units != 0.0f;
-    if (*factor == 0.0f && *units == 0.0f) {
+    if (!l->shadow_offset_exact && *factor == 0.0f && *units == 0.0f) {
         *factor = 1.1f;
         *units = 4.0f;
     }
-    return 1;
+    /* 4 units of 2^-32 would be no offset at all: flat faces facing the
+     * light shadowed themselves in stripes (es20-ext, 32-bit maps) */
+    *units *= STIN__DEPTH24_UNIT / stin__rt_depth_unit(ctx);
+    return *factor != 0.0f || *units != 0.0f;
 }
 
 static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const float view[16],
@@ -207,7 +209,7 @@ static void render_one(stin_context *ctx, uint32_t slot, uint32_t li, const floa
     }
     if (!combine(ctx)) {
         ps.color_write = 0;
-        ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor, &ps.offset_units);
+        ps.polygon_offset = (unsigned char)stin__map_offset(ctx, l, &ps.offset_factor, &ps.offset_units);
     }
     if (ctx->map_fixed->terminator)
         stin__map_terminator_lift(ctx, slot, proj, n, f,

@@ -163,6 +163,8 @@ static void attach_map(stin_context *ctx, GLuint texture)
     if (!m->packed) {
         GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, texture,
                                       0);
+        if (texture && !m->compare)
+            stin__rt_depth_measure(ctx); /* the unsized texture's bits: the offset's step */
         return;
     }
     GL(ctx, FramebufferTexture2D)(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture,
@@ -187,7 +189,7 @@ static uint32_t draw_map(stin_context *ctx, const map_target *t, const stin_ligh
     GL(ctx, Viewport)(t->rect[0], t->rect[1], t->rect[2], t->rect[3]);
     ps.depth_test = 1;
     ps.color_write = (unsigned char)m->packed;
-    ps.polygon_offset = (unsigned char)stin__map_offset(l, &ps.offset_factor, &ps.offset_units);
+    ps.polygon_offset = (unsigned char)stin__map_offset(ctx, l, &ps.offset_factor, &ps.offset_units);
     stin__pass_apply(ctx, &ps);
     if (t->clear) {
         stin__clear_depth(ctx, 1.0);

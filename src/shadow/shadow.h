@@ -205,9 +205,11 @@ void stin__volume_projection(stin_context *ctx);
 /* Screen rectangle a light of finite range can touch; 0 when unbounded. */
 int stin__light_scissor(const stin_context *ctx, const stin_light_desc *l, int out[4]);
 /* The slope-scaled polygon offset of a light's map pass (its shadow_offset,
- * default 1.1 / 4); returns 0 where the light asks for none
+ * default 1.1 / 4, its units in 24-bit depth's steps: scaled to the maps'
+ * own step, stin__rt_depth_unit); returns 0 where the light asks for none
  * (shadow_offset_exact with both 0). */
-int stin__map_offset(const stin_light_desc *l, float *factor, float *units);
+int stin__map_offset(const stin_context *ctx, const stin_light_desc *l, float *factor,
+                     float *units);
 
 /* map-depth's side test (shadow/map_facing.c). init decides it (a unit
  * after the depth compare's, `units_after` more kept for later units) and

@@ -67,10 +67,10 @@
  *               peels and walk from the light), gl45-core.
  * Contexts without a technique report SKIP with the reason. Without depth
  * read-back (es20-ext, WebGL 2) the maps resolve the products on the GPU
- * alone and the rows hold them to the same bounds; volumes there cast none
- * without shadow compare (es20-ext: SKIP, held to the non-casting
- * reference); bare es20 (the packed resolve: no depth texture to resolve
- * in from a light) SKIPs with the GPU-alone reason.
+ * alone and the rows hold them to the same bounds, volumes' through their
+ * map compared in the shader on es20-ext (no shadow compare); bare es20
+ * (the packed resolve: no depth texture to resolve in from a light) SKIPs
+ * with the GPU-alone reason.
  */
 #include "aov.h"
 #include "capture.h"
@@ -212,13 +212,13 @@ int csg_volume_casts(const capture *one)
     return (one->caps_present & STIN_CAP_BIT(STIN_CAP_STENCIL)) != 0;
 }
 
-/* Volumes' map on the GLSL tiers needs framebuffer objects, depth
- * textures and shadow compare (shadow/cast_map.c): es20-ext has no shadow
- * compare, so there volumes cast no product. */
+/* Volumes' map on the GLSL tiers needs framebuffer objects and depth
+ * textures (shadow/cast_map.c; es20-ext, without shadow compare, compares
+ * in the shader): bare es20 has no depth textures, so there volumes cast
+ * no product. */
 static int volume_map_here(const capture *one)
 {
-    uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE) |
-                    STIN_CAP_BIT(STIN_CAP_SHADOW);
+    uint64_t need = STIN_CAP_BIT(STIN_CAP_FBO) | STIN_CAP_BIT(STIN_CAP_DEPTH_TEXTURE);
     return one->choice[STIN_FEATURE_LIGHTING].technique == STIN_TECH_LIGHTING_FIXED ||
            (one->caps_present & need) == need;
 }

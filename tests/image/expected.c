@@ -42,13 +42,13 @@ static const expected_profile table[] = {
      * GLSL ES 3.00 program from ES 3.0 on (glDrawPixels is desktop
      * compatibility); on ES 2.0 its GPU resolve alone runs, in a work
      * buffer where depth textures are (es20-ext), else in the frame's own
-     * buffers with the result packed into colour (es20). */
+     * buffers with the result packed into colour (es20). Volumes' own map
+     * for displaced draws compares in the shader on es20-ext (no shadow
+     * samplers), so it displaces beside them as gl21 does. */
     {"es20", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, STIN_TECH_TRANSLUCENT_OPAQUE,
                              STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS,
                              STIN_TECH_TRANSPARENCY_SORTED}, {0, 1, 0}},
-    {"es20-ext", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, STIN_TECH_TRANSLUCENT_COLOURED,
-                                 STIN_TECH_DISPLACEMENT_OFF, STIN_TECH_CSG_SCS,
-                                 STIN_TECH_TRANSPARENCY_DEPTH_PEEL}, {0, 1, 0}},
+    {"es20-ext", STIN_TIER_GL2, {LIGHT_110, VOLUME, POM, COLOURED}, {0, 1, 0}},
     /* ES 3.0 and 3.1 run the GL4 tier's GLSL ES 3.00 programs without a
      * geometry stage: volumes instead of vdsm, vertex-texture displacement */
     {"es30", STIN_TIER_GL4, {LIGHT_150, VOLUME, POM, DISPLACED}, {0, 1, 1}},

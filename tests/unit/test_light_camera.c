@@ -184,24 +184,31 @@ static void test_spot_fits_the_draws(void **state)
 
 /* The map passes' polygon offset: (0, 0) means the default unless the light
  * asks for its offset exactly, where (0, 0) turns it off and other values
- * are used as given. */
+ * are used as given; its units are 24-bit depth's steps, scaled where the
+ * maps' depth textures measured other bits (OpenGL ES 2.0: Mesa's 32). */
 static void test_map_offset_default_and_exact(void **state)
 {
     stin_light_desc l;
     float factor, units;
     (void)state;
     memset(&l, 0, sizeof l);
-    assert_int_equal(stin__map_offset(&l, &factor, &units), 1);
+    assert_int_equal(stin__map_offset(ctx, &l, &factor, &units), 1);
     assert_true(factor == 1.1f && units == 4.0f);
     l.shadow_offset[0] = 2.0f;
     l.shadow_offset[1] = 3.0f;
-    assert_int_equal(stin__map_offset(&l, &factor, &units), 1);
+    assert_int_equal(stin__map_offset(ctx, &l, &factor, &units), 1);
     assert_true(factor == 2.0f && units == 3.0f);
+    ctx->depth_texture_unit = 1.0f / 4294967296.0f; /* 32-bit maps: 256 steps a 24-bit one */
+    assert_int_equal(stin__map_offset(ctx, &l, &factor, &units), 1);
+    assert_true(factor == 2.0f && units == 768.0f);
+    assert_true(stin__rt_depth_unit(ctx) == 1.0f / 4294967296.0f);
+    ctx->depth_texture_unit = 0.0f;
+    assert_true(stin__rt_depth_unit(ctx) == STIN__DEPTH24_UNIT);
     l.shadow_offset_exact = 1;
-    assert_int_equal(stin__map_offset(&l, &factor, &units), 1);
+    assert_int_equal(stin__map_offset(ctx, &l, &factor, &units), 1);
     assert_true(factor == 2.0f && units == 3.0f);
     l.shadow_offset[0] = l.shadow_offset[1] = 0.0f;
-    assert_int_equal(stin__map_offset(&l, &factor, &units), 0);
+    assert_int_equal(stin__map_offset(ctx, &l, &factor, &units), 0);
     assert_true(factor == 0.0f && units == 0.0f);
 }
 

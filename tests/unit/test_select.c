@@ -490,17 +490,17 @@ static void test_every_technique_has_a_row_and_a_rank(void **state)
  * with 1 unit map-pcf itself cannot be forced. Units are placed after
  * the albedo (unit 0) in feature order. */
 /* displace conflicts with volume (CPU silhouettes of the undisplaced mesh)
- * where volumes have no depth map to cast displaced draws through (FBOs,
- * depth textures, shadow compare: the conflict's lifting capabilities):
- * with them both run by default and may be forced together; without
- * shadow compare, beside auto volumes it steps down (logged reason),
+ * where volumes have no depth map to cast displaced draws through (FBOs and
+ * depth textures: the conflict's lifting capabilities; without shadow
+ * compare the map's test compares in the shader): with them both run by
+ * default and may be forced together; without depth textures, beside auto
+ * volumes it steps down (logged reason),
  * forcing it moves the shadow chain past volume, forcing both is refused;
  * hidden vertex textures step it down with the capability named. */
 static void test_displacement_beside_volumes(void **state)
 {
     stin_caps gl21 = caps_with(21, 12, 0, GL21_BITS), gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
-    /* no shadow compare (lifts nothing) and no depth textures (map-pcf packs
-     * its depth into colour) */
+    /* no depth textures (lifts nothing; map-pcf packs its depth into colour) */
     stin_caps no_map = caps_with(21, 12, 0, GL21_BITS & ~(BIT(SHADOW) | BIT(DEPTH_TEXTURE)));
     stin_technique forced[STIN_FEATURE_COUNT];
     stin__selection sel;
@@ -555,8 +555,9 @@ static void test_displacement_beside_volumes(void **state)
 }
 
 /* A shadows set-up failure under vdsm walks the table's chain down: to
- * volume beside displacement where volumes cast it through their map, past
- * it (a conflict) where shadow compare is missing, past map-pcf where it
+ * volume beside displacement where volumes cast it through their map (with
+ * or without shadow compare), past it (a conflict) where depth textures are
+ * missing, past map-pcf where it
  * lacks a capability or its sampler does not fit after the surface's
  * units, past the fixed-function maps always (GLSL lighting), to off at
  * the end. */
@@ -571,9 +572,9 @@ static void test_fallback_walks_the_chain(void **state)
     assert_int_equal(sel.choice[STIN_FEATURE_SHADOWS].technique, STIN_TECH_SHADOWS_VDSM);
     assert_int_equal(sel.choice[STIN_FEATURE_DISPLACEMENT].technique, STIN_TECH_DISPLACEMENT_TESS);
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
-    gl45.present &= ~BIT(SHADOW); /* map-pcf compares in its shader (ES 2.0) */
-    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
-    gl45.present &= ~BIT(DEPTH_TEXTURE); /* packed into colour (bare ES 2.0) */
+    gl45.present &= ~BIT(SHADOW); /* volumes' map compares in its shader (ES 2.0) */
+    assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_VOLUME);
+    gl45.present &= ~BIT(DEPTH_TEXTURE); /* map-pcf's packed into colour (bare ES 2.0) */
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_MAP_PCF);
     gl45.present &= ~BIT(FBO);
     assert_int_equal(stin__fallback(&gl45, &sel, STIN_FEATURE_SHADOWS), STIN_TECH_SHADOWS_OFF);
@@ -589,11 +590,11 @@ static void test_fallback_walks_the_chain(void **state)
 }
 
 /* Which other choice displacement conflicts with, from either row, on a
- * context without what lifts the conflict (shadow compare); none with it. */
+ * context without what lifts the conflict (depth textures); none with it. */
 static void test_choice_conflict(void **state)
 {
     stin_caps gl45 = caps_with(45, 45, 1, GL45_CORE_BITS);
-    stin_caps no_map = caps_with(45, 45, 1, GL45_CORE_BITS & ~BIT(SHADOW));
+    stin_caps no_map = caps_with(45, 45, 1, GL45_CORE_BITS & ~BIT(DEPTH_TEXTURE));
     stin__selection sel;
     char msg[256];
     (void)state;
