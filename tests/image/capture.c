@@ -108,7 +108,10 @@ int capture_render(stin_platform *plat, const stin_profile *profile, const scene
     size = stin_memory_size(&d);
     block = malloc(size);
     if (!block || stin_create(&d, block, size, &ctx) != STIN_OK) {
-        snprintf(err, err_size, "stin_create: %s", out->last_error);
+        /* stin's own error line names stin_create already */
+        snprintf(err, err_size, "%s%s",
+                 strncmp(out->last_error, "stin_create:", 12) ? "stin_create: " : "",
+                 out->last_error);
         goto done;
     }
     out->caps_present = stin_query_caps(ctx)->present;
