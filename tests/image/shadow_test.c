@@ -372,8 +372,11 @@ static void test_gpu_extrusion(const shadow_case *c, const capture *gpu)
         if (c->tier == STIN_TIER_GL4 && (gpu->caps_present & STIN_CAP_BIT(STIN_CAP_GEOMETRY_SHADER)))
             report(c->r, "FAIL", name, "tier gl4 with geometry shaders built every volume on the CPU");
         else
-            report(c->r, "SKIP", name, "volumes are extruded on the GPU at tier gl4 only (geometry "
-                                       "shaders)");
+            report(c->r, "SKIP", name, "%s",
+                   c->tier != STIN_TIER_GL4
+                       ? "volumes are extruded on the GPU at tier gl4 only (geometry shaders)"
+                       : "no geometry shaders here (as on OpenGL ES 3.0 and 3.1): volumes are "
+                         "built on the CPU");
         return;
     }
     if (!render(c, c->s, STIN_DEBUG_VOLUME_CPU, 0, &cpu, "gpu-extrusion"))
