@@ -19,7 +19,7 @@
 #              after the run).
 set -u
 # One suite (xargs runs this script again with --suite): its output, exit
-# status and wall seconds into SUITES/NNN.*. Dispatched before the set-up
+# status, wall and CPU seconds into SUITES/NNN.*. Dispatched before the set-up
 # below, which would take "--suite" for the build directory: its redirection
 # into a directory that does not exist ends the shell (dash, bash --posix).
 run_suite() {
@@ -31,6 +31,13 @@ run_suite() {
     echo $? > "$dir/$num.rc"
     end=$(date +%s.%N)
     echo "$start $end" | awk '{ printf "%.1f\n", $2 - $1 }' > "$dir/$num.seconds"
+    # CPU seconds (user + system of the suite's processes: a loaded machine
+    # stretches the wall seconds, hardly these): times' second line, the
+    # children's, written by this shell itself (a pipeline's subshell has
+    # no children of its own)
+    times > "$dir/$num.times"
+    sed -n 2p "$dir/$num.times" | tr 'ms' '  ' |
+        awk '{ printf "%.1f\n", 60 * $1 + $2 + 60 * $3 + $4 }' > "$dir/$num.cpu"
 }
 if [ "${1:-}" = --suite ]; then
     shift
@@ -188,9 +195,9 @@ while read -r num name _; do
     grep -E '^(#|    )' "$tmp" | grep -iE 'error|fail|assert' | head -n 20 | sed 's/^/    /'
 done < "$SUITES/list"
 
-echo "slowest suites (wall seconds, $JOBS at a time):"
+echo "slowest suites (wall seconds, $JOBS at a time; CPU seconds, user + system):"
 while read -r num name _; do
-    echo "$(cat "$SUITES/$num.seconds" 2>/dev/null || echo 0) $name"
+    echo "$(cat "$SUITES/$num.seconds" 2>/dev/null || echo 0) (cpu $(cat "$SUITES/$num.cpu" 2>/dev/null || echo 0)) $name"
 done < "$SUITES/list" | sort -rn | head -n 10 | sed 's/^/  /'
 
 if [ -n "$CACHE" ]; then
