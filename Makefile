@@ -313,8 +313,8 @@ clean:
 # The loader's sources without GL, and stin (built for the fuzzer) for the
 # csg products' checks (stin_csg_measure): no GL call is made, no platform.
 FUZZ_SRC := $(addprefix tools/common/,image_buffer.c isolate.c name_table.c one_line.c scene_camera.c scene_csg.c \
-  scene_csg_check.c scene_entries.c scene_json.c scene_json_util.c scene_mesh_file.c scene_model_check.c \
-  scene_model_import.c scene_model_materials.c scene_model_wire.c scene_primitives.c scene_texture.c)
+  scene_csg_check.c scene_entries.c scene_import_memo.c scene_json.c scene_json_util.c scene_mesh_file.c \
+  scene_model_check.c scene_model_import.c scene_model_materials.c scene_model_wire.c scene_primitives.c scene_texture.c)
 FUZZ_LIBS := -lOpenImageIO -lOpenImageIO_Util -lassimp -lcjson -lstdc++ -lm
 FUZZ_CXX ?= clang++
 FUZZ_SECONDS ?= 60

@@ -329,6 +329,9 @@ int main(int argc, char **argv)
     const stin_tier tiers[3] = {STIN_TIER_GL1, STIN_TIER_GL2, STIN_TIER_GL4};
     const char *browser_dir = NULL, *browser_cases = "", *only_tiers = NULL;
     memset(&r, 0, sizeof r);
+    /* every scene is loaded again by each test file and tier: its model and
+     * image files are decoded (a fork of this large process) once */
+    scene_import_memo = 1;
     r.width = 256;
     r.height = 192;
     r.platform_name = "egl";

@@ -8,6 +8,7 @@
 #include <cmocka.h>
 
 #include <dirent.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -678,20 +679,29 @@ static void test_write_failures(void **state)
     image_free(&img);
 }
 
+/* A scene file at path: a quad whose albedo is the picture file pic (a
+ * name beside it). */
+static void write_texture_scene(const char *path, const char *pic)
+{
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fprintf(f,
+            "{\"camera\": {\"eye\": [0, 0, 3], \"target\": [0, 0, 0]},\n"
+            " \"meshes\": {\"quad\": {\"primitive\": \"plane\"}},\n"
+            " \"textures\": {\"pic\": {\"file\": \"%s\"}},\n"
+            " \"materials\": {\"m\": {\"albedo\": \"pic\"}},\n"
+            " \"objects\": [{\"mesh\": \"quad\", \"material\": \"m\"}]}\n",
+            pic);
+    fclose(f);
+}
+
 /* A file texture next to a scene file: relative path, rows flipped to
  * bottom-to-top, grey PNG expanded to RGBA. */
 static void test_file_texture(void **state)
 {
-    static const char *json =
-        "{\"camera\": {\"eye\": [0, 0, 3], \"target\": [0, 0, 0]},\n"
-        " \"meshes\": {\"quad\": {\"primitive\": \"plane\"}},\n"
-        " \"textures\": {\"pic\": {\"file\": \"pic.png\"}},\n"
-        " \"materials\": {\"m\": {\"albedo\": \"pic\"}},\n"
-        " \"objects\": [{\"mesh\": \"quad\", \"material\": \"m\"}]}\n";
     image img;
     scene s;
     char path[400], err[512];
-    FILE *f;
     (void)state;
     assert_true(image_alloc(&img, 1, 2, 1));
     strcpy(img.channel_names[0], "Y");
@@ -700,10 +710,7 @@ static void test_file_texture(void **state)
     assert_true(image_write(path, &img, 0, err, sizeof err));
     image_free(&img);
     snprintf(path, sizeof path, "%s/tex.json", tmp_dir);
-    f = fopen(path, "w");
-    assert_non_null(f);
-    fputs(json, f);
-    fclose(f);
+    write_texture_scene(path, "pic.png");
     if (!scene_load(path, &s, err, sizeof err))
         fail_msg("%s", err);
     assert_int_equal(s.texture_count, 1);
@@ -712,6 +719,74 @@ static void test_file_texture(void **state)
     assert_memory_equal(s.textures[0].rgba, "\0\0\0\377\377\377\377\377", 8);
     assert_int_equal(s.lights == NULL && s.light_count == 0, 1);
     scene_free(&s);
+}
+
+/* A 1 x 2 grey picture: top, and 1 - top below it. */
+static void write_pic(const char *path, float top)
+{
+    image img;
+    char err[512];
+    assert_true(image_alloc(&img, 1, 2, 1));
+    strcpy(img.channel_names[0], "Y");
+    img.pixels[0] = top; /* top row in the file */
+    img.pixels[1] = 1.0f - top;
+    assert_true(image_write(path, &img, 0, err, sizeof err));
+    image_free(&img);
+}
+
+static void load_top(const char *json_path, unsigned char expect)
+{
+    scene s;
+    char err[512];
+    if (!scene_load(json_path, &s, err, sizeof err))
+        fail_msg("%s", err);
+    assert_int_equal(s.texture_count, 1);
+    assert_int_equal(s.textures[0].rgba[4], expect); /* the file's top row, last in rgba */
+    scene_free(&s);
+}
+
+/* scene_import_memo: an unchanged file's bytes come from the memo (a file
+ * rewritten with its size and time kept still reads as before, proving no
+ * decoder ran), a changed time decodes it again. */
+static void test_import_memo(void **state)
+{
+    char pic[400], other[400], path[400], bytes[4096];
+    struct stat first, again;
+    struct timespec times[2];
+    size_t n;
+    FILE *f;
+    (void)state;
+    snprintf(pic, sizeof pic, "%s/memo.png", tmp_dir);
+    snprintf(other, sizeof other, "%s/memo-swapped.png", tmp_dir);
+    snprintf(path, sizeof path, "%s/memo.json", tmp_dir);
+    write_texture_scene(path, "memo.png");
+    write_pic(pic, 1.0f);
+    write_pic(other, 0.0f); /* the rows swapped: the same size */
+    assert_int_equal(stat(pic, &first), 0);
+    scene_import_memo = 1;
+    load_top(path, 255);
+    /* the swapped picture's bytes written over the file in place (the same
+     * inode and size), its times put back */
+    f = fopen(other, "rb");
+    assert_non_null(f);
+    n = fread(bytes, 1, sizeof bytes, f);
+    fclose(f);
+    assert_int_equal(n, (size_t)first.st_size);
+    f = fopen(pic, "r+b");
+    assert_non_null(f);
+    assert_int_equal(fwrite(bytes, 1, n, f), n);
+    fclose(f);
+    times[0] = first.st_atim;
+    times[1] = first.st_mtim;
+    assert_int_equal(utimensat(AT_FDCWD, pic, times, 0), 0);
+    assert_int_equal(stat(pic, &again), 0);
+    assert_true(again.st_ino == first.st_ino && again.st_size == first.st_size);
+    load_top(path, 255); /* the memo's bytes: no decoder read the new file */
+    times[1].tv_sec += 10;
+    assert_int_equal(utimensat(AT_FDCWD, pic, times, 0), 0);
+    load_top(path, 0); /* changed: decoded again */
+    scene_import_memo = 0;
+    load_top(path, 0);
 }
 
 static void test_compare(void **state)
@@ -918,6 +993,7 @@ int main(void)
         cmocka_unit_test(test_png_round_trip),
         cmocka_unit_test(test_write_failures),
         cmocka_unit_test(test_file_texture),
+        cmocka_unit_test(test_import_memo),
         cmocka_unit_test(test_compare),
         cmocka_unit_test(test_csg_list),
         cmocka_unit_test(test_csg_checked),

@@ -126,6 +126,11 @@ typedef struct scene {
 /* Loads a scene file. On error returns 0, writes "FILE: problem" into err and
  * leaves *out empty (nothing to free). */
 int scene_load(const char *path, scene *out, char *err, size_t err_size);
+/* 1: model and image files are decoded once per process and their bytes
+ * kept (scene_import_memo.c): a process that loads the same scenes many
+ * times (stin-imagetest) forks a decoder once per file instead of once per
+ * load. Off (0) by default. */
+extern int scene_import_memo;
 void scene_free(scene *s);
 
 /* View and projection (column-major, GL conventions: right-handed eye space

@@ -10,6 +10,7 @@
 #include <cJSON.h>
 
 #include "image_io.h"
+#include "isolate.h"
 #include "scene.h"
 
 /* Largest magnitude any number in a scene file may have; bigger values are
@@ -76,6 +77,12 @@ int scene_resolve_path(const char *scene_file, const char *rel, char *out, size_
 /* The limit in force, SCENE_IMPORT_SECONDS unless a test or the fuzzer
  * shortens it. */
 extern unsigned scene_import_seconds;
+/* Runs work (a decoder of the file at path) in a child under those limits,
+ * as isolate_run; where scene_import_memo is set, a file decoded before
+ * whose device, inode, size and modification time are unchanged gets a copy
+ * of the bytes it gave then, and no child. */
+int scene_import(isolate_work work, const char *path, unsigned char **out, size_t *out_size,
+                 char *why, size_t why_size);
 
 /* Fails (reason in why) unless path names a regular file: a device or FIFO
  * would feed a decoder forever. */

@@ -4,7 +4,6 @@
  * (scene_model_wire.c). */
 #include "scene_internal.h"
 #include "scene_model.h"
-#include "isolate.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -20,8 +19,7 @@ int scene_model_load(const char *path, scene_model *out, char *why, size_t why_s
     if (!scene_check_regular_file(path, why, why_size) || !scene_model_precheck(path, why, why_size))
         return 0;
     /* assimp can crash or loop on hostile files; the child takes the hit. */
-    if (!isolate_run(scene_model_import_work, (void *)path, scene_import_seconds,
-                     SCENE_IMPORT_BYTES_MAX, &bytes, &size, why, why_size))
+    if (!scene_import(scene_model_import_work, path, &bytes, &size, why, why_size))
         return 0;
     ok = scene_model_read(bytes, size, out, why, why_size);
     free(bytes);

@@ -241,8 +241,7 @@ static int load_file(scene_parser *p, const cJSON *json, const char *where, scen
     if (!scene_resolve_path(p->file, rel, full, sizeof full))
         return scene_fail(p, path, "path too long");
     if (!scene_check_regular_file(full, why, sizeof why) ||
-        !isolate_run(decode_work, full, scene_import_seconds, SCENE_IMPORT_BYTES_MAX, &bytes,
-                     &size, why, sizeof why))
+        !scene_import(decode_work, full, &bytes, &size, why, sizeof why))
         return scene_fail(p, path, "cannot read '%s': %s", rel, why);
     if (size >= sizeof wh)
         memcpy(wh, bytes, sizeof wh);
