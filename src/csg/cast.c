@@ -13,7 +13,8 @@
  * offset, which the ordinary casters get from glPolygonOffset, is added on
  * the CPU: per axis the flatter of the two one-sided depth differences (so
  * a product's silhouette does not count as slope), the steeper axis,
- * times factor, plus units times 2^-24. The CPU copies follow the camera's
+ * times factor, plus units times the map's depth step (glPolygonOffset's r:
+ * stin__rt_depth_unit). The CPU copies follow the camera's
  * in the staging, so a point light's faces, drawn mid-frame, leave the
  * camera's resolve intact. Without depth read-back (OpenGL ES without
  * GL_NV_read_depth_stencil: WebGL 2, es20-ext) the rectangle is resolved
@@ -47,7 +48,6 @@ typedef struct stin__csg_cast_state {
 
 size_t stin__csg_cast_state_bytes(void) { return sizeof(stin__csg_cast_state); }
 
-#define DEPTH_UNIT (1.0f / 16777216.0f) /* 24-bit depth's step: glPolygonOffset's r */
 
 typedef struct camera_saved {
     float view[16], projection[16], view_proj[16], cap_transform[16];
@@ -184,8 +184,9 @@ static float slope_at(const float *d, int w, int h, int x, int y)
     return m[0] > m[1] ? m[0] : m[1];
 }
 
-/* candidate = result pushed back by the offset where the products are. */
-static void bias(stin__csg_pixels *r, float factor, float units)
+/* candidate = result pushed back by the offset where the products are;
+ * unit: the depth one of the offset's units moves in the map. */
+static void bias(stin__csg_pixels *r, float factor, float units, float unit)
 {
     int x, y;
     for (y = 0; y < r->h; y++)
@@ -193,7 +194,7 @@ static void bias(stin__csg_pixels *r, float factor, float units)
             size_t i = (size_t)y * (size_t)r->w + (size_t)x;
             float d = r->result[i];
             if (d < 1.0f) {
-                d += factor * slope_at(r->result, r->w, r->h, x, y) + units * DEPTH_UNIT;
+                d += factor * slope_at(r->result, r->w, r->h, x, y) + units * unit;
                 d = d < 1.0f ? d : 1.0f;
             }
             r->candidate[i] = d;
@@ -318,7 +319,7 @@ static int run_bands(stin_context *ctx, const cast_job *job, const int rect[4])
             stin__pass_apply(ctx, &ps);
             GL(ctx, Clear)(GL_STENCIL_BUFFER_BIT);
         }
-        bias(r, job->factor, job->units);
+        bias(r, job->factor, job->units, stin__rt_depth_unit(ctx));
         biased = *r;
         biased.result = r->candidate;
         /* in place, over what the resolve's passes left: the band was
